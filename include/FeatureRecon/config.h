@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_CONFIG_H
+#define FEATURERECON_CONFIG_H
+
+#include <FeatureRecon/version.h>
+
+#include <cstdint>
+#include <functional>
+
+namespace FeatureRecon {
+
+/// Progress callback shared by every options struct: called with the fraction done in [0, 1];
+/// returning false asks the algorithm to stop early (its result then says `interrupted`).
+using Progress_callback = std::function<bool(double)>;
+
+/// Outcome of an algorithm run.
+enum class Status {
+  success,           ///< the run completed on non-degenerate input
+  degenerate_input,  ///< the run completed; the input was empty or lower-dimensional (documented per algorithm)
+  interrupted        ///< the progress callback returned false; the result is partial
+};
+
+namespace internal {
+/// Calls `progress` if set; returns false when the caller asked to stop.
+inline bool report_progress(const Progress_callback& progress, double fraction) {
+  return !progress || progress(fraction);
+}
+}  // namespace internal
+
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_CONFIG_H

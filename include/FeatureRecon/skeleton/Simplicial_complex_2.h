@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_SIMPLICIAL_COMPLEX_2_H
+#define FEATURERECON_SKELETON_SIMPLICIAL_COMPLEX_2_H
+
+#include <FeatureRecon/assertions.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// Index of a vertex of a complex; 32 bits keep large Rips complexes small in memory.
+using Vertex_index = std::uint32_t;
+using Edge = std::array<Vertex_index, 2>;
+using Triangle = std::array<Vertex_index, 3>;
+
+/// A weighted graph on the vertices 0..number_of_vertices-1: the 1-skeleton of a complex.
+/// \note Canonical form (what every builder of this library returns, and what `is_canonical()` checks):
+/// every edge has `e[0] < e[1]`, edges are sorted lexicographically without repetition,
+/// `edge_lengths` is empty (all lengths 1) or aligned with `edges` with finite values >= 0.
+struct Proximity_graph {
+  std::size_t number_of_vertices = 0;  ///< vertices are 0..number_of_vertices-1
+  std::vector<Edge> edges;             ///< sorted pairs (u, v), u < v
+  std::vector<double> edge_lengths;    ///< aligned with `edges`; empty means every length is 1
+
+  std::size_t number_of_edges() const { return edges.size(); }
+  double length(std::size_t e) const { return edge_lengths.empty() ? 1.0 : edge_lengths[e]; }
+
+  /// Index of edge (u, v) (either order) or -1; O(log m).
+  std::int64_t find_edge(Vertex_index u, Vertex_index v) const {
+    if (u > v) std::swap(u, v);
+    const Edge key{u, v};
+    const auto it = std::lower_bound(edges.begin(), edges.end(), key);
+    return (it != edges.end() && *it == key) ? static_cast<std::int64_t>(it - edges.begin()) : -1;
+  }
+};
+
+/// A simplicial 2-complex: a proximity graph plus triangles. Every face of a triangle is in `edges`.
+/// \note Canonical form: that of Proximity_graph, and every triangle has `t[0] < t[1] < t[2]`,
+/// triangles sorted lexicographically without repetition.
+struct Simplicial_complex_2 : Proximity_graph {
+  std::vector<Triangle> triangles;  ///< sorted triples (a, b, c), a < b < c
+  std::size_t number_of_triangles() const { return triangles.size(); }
+};
+
+namespace internal {
+inline void sort_unique_edges(std::vector<Edge>& edges, std::vector<double>* lengths) {
+  if (lengths == nullptr || lengths->empty()) {
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return;
+  }
+  std::vector<std::size_t> order(edges.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return edges[a] < edges[b] || (edges[a] == edges[b] && a < b);
+  });
+  std::vector<Edge> e;
+  std::vector<double> l;
+  e.reserve(edges.size());
+  l.reserve(edges.size());
+  for (std::size_t i : order) {
+    if (!e.empty() && e.back() == edges[i]) continue;  // keep the first occurrence's length
+    e.push_back(edges[i]);
+    l.push_back((*lengths)[i]);
+  }
+  edges.swap(e);
+  lengths->swap(l);
+}
+}  // namespace internal
+
+/// Builds a canonical complex from unordered edges and triangles, adding the edges of every
+/// triangle (lengths of added edges: `implied_edge_length`) and removing repetitions.
+/// \param lengths empty, or aligned with `edges`.
+/// \throws std::invalid_argument naming the index of an edge or triangle with a vertex out of range,
+/// a repeated vertex, or a negative or non-finite length.
+inline Simplicial_complex_2 make_simplicial_complex_2(std::size_t number_of_vertices, std::vector<Edge> edges,
+                                                      std::vector<Triangle> triangles,
+                                                      std::vector<double> lengths = {},
+                                                      double implied_edge_length = 1.0) {
+  const char* fn = "make_simplicial_complex_2";
+  if (number_of_vertices > std::numeric_limits<Vertex_index>::max())
+    FeatureRecon::internal::throw_invalid_argument(fn, "too many vertices (", number_of_vertices, ")");
+  if (!lengths.empty() && lengths.size() != edges.size())
+    FeatureRecon::internal::throw_invalid_argument(fn, "lengths has ", lengths.size(), " entries for ",
+                                                   edges.size(), " edges");
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    Edge& e = edges[i];
+    if (e[0] >= number_of_vertices || e[1] >= number_of_vertices)
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", i, " (", e[0], ", ", e[1],
+                                                     ") has a vertex index out of range [0, ",
+                                                     number_of_vertices, ")");
+    if (e[0] == e[1])
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", i, " is a loop at vertex ", e[0]);
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+    if (!lengths.empty() && !(std::isfinite(lengths[i]) && lengths[i] >= 0))
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", i, " has length ", lengths[i],
+                                                     " (must be finite and >= 0)");
+  }
+  const bool weighted = !lengths.empty() || (implied_edge_length != 1.0 && !triangles.empty());
+  if (weighted && lengths.empty()) lengths.assign(edges.size(), 1.0);
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    Triangle& t = triangles[i];
+    for (Vertex_index v : t)
+      if (v >= number_of_vertices)
+        FeatureRecon::internal::throw_invalid_argument(fn, "triangle ", i, " has vertex index ", v,
+                                                       " out of range [0, ", number_of_vertices, ")");
+    std::sort(t.begin(), t.end());
+    if (t[0] == t[1] || t[1] == t[2])
+      FeatureRecon::internal::throw_invalid_argument(fn, "triangle ", i, " repeats vertex ", t[1]);
+    for (const Edge& f : {Edge{t[0], t[1]}, Edge{t[1], t[2]}, Edge{t[0], t[2]}}) {
+      edges.push_back(f);
+      if (weighted) lengths.push_back(implied_edge_length);
+    }
+  }
+  Simplicial_complex_2 k;
+  k.number_of_vertices = number_of_vertices;
+  internal::sort_unique_edges(edges, weighted ? &lengths : nullptr);
+  k.edges = std::move(edges);
+  k.edge_lengths = std::move(lengths);
+  std::sort(triangles.begin(), triangles.end());
+  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+  k.triangles = std::move(triangles);
+  return k;
+}
+
+/// True when `g` is in the canonical form documented at Proximity_graph (and, for a complex,
+/// every triangle is sorted, unique and has its three edges). O(m log m).
+inline bool is_canonical(const Proximity_graph& g) {
+  if (!g.edge_lengths.empty() && g.edge_lengths.size() != g.edges.size()) return false;
+  for (std::size_t i = 0; i < g.edges.size(); ++i) {
+    const Edge& e = g.edges[i];
+    if (!(e[0] < e[1] && e[1] < g.number_of_vertices)) return false;
+    if (i > 0 && !(g.edges[i - 1] < e)) return false;
+    if (!g.edge_lengths.empty() && !(std::isfinite(g.edge_lengths[i]) && g.edge_lengths[i] >= 0)) return false;
+  }
+  return true;
+}
+
+inline bool is_canonical(const Simplicial_complex_2& k) {
+  if (!is_canonical(static_cast<const Proximity_graph&>(k))) return false;
+  for (std::size_t i = 0; i < k.triangles.size(); ++i) {
+    const Triangle& t = k.triangles[i];
+    if (!(t[0] < t[1] && t[1] < t[2] && t[2] < k.number_of_vertices)) return false;
+    if (i > 0 && !(k.triangles[i - 1] < t)) return false;
+    if (k.find_edge(t[0], t[1]) < 0 || k.find_edge(t[1], t[2]) < 0 || k.find_edge(t[0], t[2]) < 0) return false;
+  }
+  return true;
+}
+
+/// Connected components of the graph: a label per vertex in 0..count-1, numbered in the order of
+/// their smallest vertex. O(n + m).
+struct Connected_components {
+  std::vector<std::uint32_t> label;  ///< component of each vertex
+  std::size_t count = 0;             ///< number of components (isolated vertices included)
+};
+
+inline Connected_components connected_components(const Proximity_graph& g) {
+  std::vector<std::uint32_t> parent(g.number_of_vertices);
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<std::uint32_t>(i);
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Edge& e : g.edges) {
+    std::uint32_t a = find(e[0]), b = find(e[1]);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // root = smallest vertex
+  }
+  Connected_components cc;
+  cc.label.assign(g.number_of_vertices, 0);
+  std::vector<std::uint32_t> id(g.number_of_vertices, std::numeric_limits<std::uint32_t>::max());
+  for (std::size_t v = 0; v < g.number_of_vertices; ++v) {
+    const std::uint32_t r = find(static_cast<std::uint32_t>(v));
+    if (id[r] == std::numeric_limits<std::uint32_t>::max()) id[r] = static_cast<std::uint32_t>(cc.count++);
+    cc.label[v] = id[r];
+  }
+  return cc;
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_SIMPLICIAL_COMPLEX_2_H

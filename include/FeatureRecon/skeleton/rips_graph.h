@@ -1,0 +1,520 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_RIPS_GRAPH_H
+#define FEATURERECON_SKELETON_RIPS_GRAPH_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/point_traits.h>
+#include <FeatureRecon/skeleton/Simplicial_complex_2.h>
+#include <FeatureRecon/skeleton/internal/exact_distance.h>
+#include <FeatureRecon/skeleton/skeleton_options.h>
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
+
+#include <Eigen/Core>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/graph/properties.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// Points as a dense row-major n x d matrix of doubles (the form every neighbour search works on).
+struct Point_matrix {
+  std::size_t rows = 0;       ///< number of points
+  std::size_t dimension = 0;  ///< coordinates per point
+  std::vector<double> data;   ///< row-major coordinates
+  const double* row(std::size_t i) const { return data.data() + i * dimension; }
+};
+
+/// Copies the coordinates of `points` through `traits` into a Point_matrix.
+/// \throws std::invalid_argument naming the first point whose dimension differs from the first point's,
+/// that has dimension 0, or that has a NaN or infinite coordinate.
+template <class PointRange, class Traits = Point_coordinate_traits<
+                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Point_matrix make_point_matrix(const PointRange& points, const Traits& traits = Traits(),
+                               const char* caller = "make_point_matrix") {
+  static_assert(FeatureRecon::internal::Is_point_coordinate_traits<Traits>::value,
+                "FeatureRecon: Traits must model PointCoordinateTraits (doc/concepts/PointCoordinateTraits.h)");
+  Point_matrix m;
+  std::size_t i = 0;
+  for (const auto& p : points) {
+    const std::size_t d = traits.dimension(p);
+    if (i == 0) {
+      if (d == 0) FeatureRecon::internal::throw_invalid_argument(caller, "point 0 has dimension 0");
+      m.dimension = d;
+    } else if (d != m.dimension) {
+      FeatureRecon::internal::throw_invalid_argument(caller, "point ", i, " has dimension ", d,
+                                                     " but point 0 has dimension ", m.dimension);
+    }
+    for (std::size_t c = 0; c < d; ++c) {
+      const double x = traits.coordinate(p, c);
+      if (!std::isfinite(x))
+        FeatureRecon::internal::throw_invalid_argument(caller, "point ", i, " has a non-finite coordinate ", c,
+                                                       " (", x, ")");
+      m.data.push_back(x);
+    }
+    ++i;
+  }
+  m.rows = i;
+  return m;
+}
+
+namespace internal {
+
+/// \cond
+using Kd_kernel = CGAL::Simple_cartesian<double>;
+using Kd_point = Kd_kernel::Point_3;
+using Kd_traits = CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Kd_point>::type,
+                                              CGAL::Search_traits_3<Kd_kernel>>;
+using Kd_tree = CGAL::Kd_tree<Kd_traits>;
+
+/// kd-tree over the first three coordinates (zero-padded) of a matrix of dimension <= 3.
+struct Kd_index {
+  std::vector<Kd_point> points;
+  std::vector<std::uint32_t> keys;
+  std::unique_ptr<Kd_tree> tree;
+  explicit Kd_index(const Point_matrix& m) {
+    points.reserve(m.rows);
+    for (std::size_t i = 0; i < m.rows; ++i) {
+      const double* r = m.row(i);
+      points.emplace_back(r[0], m.dimension > 1 ? r[1] : 0.0, m.dimension > 2 ? r[2] : 0.0);
+    }
+    keys.resize(m.rows);
+    for (std::size_t i = 0; i < m.rows; ++i) keys[i] = static_cast<std::uint32_t>(i);
+    tree = std::make_unique<Kd_tree>(keys.begin(), keys.end(), Kd_tree::Splitter(),
+                                     Kd_traits(CGAL::make_property_map(points)));
+    tree->build();
+  }
+  /// Candidates within (slightly more than) r of point i.
+  void ball(std::uint32_t i, double r, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    const double slack = 1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z()));
+    CGAL::Fuzzy_sphere<Kd_traits> query(i, r + slack, 0.0, tree->traits());
+    tree->search(std::back_inserter(out), query);
+  }
+};
+
+/// Squared norms and a block of Gram products: all-pairs distances with Eigen, blockwise.
+struct Brute_force_index {
+  const Point_matrix& m;
+  Eigen::MatrixXd centred;  // d x n
+  Eigen::VectorXd norms;
+  explicit Brute_force_index(const Point_matrix& pm) : m(pm) {
+    centred.resize(static_cast<Eigen::Index>(m.dimension), static_cast<Eigen::Index>(m.rows));
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.dimension));
+    for (std::size_t i = 0; i < m.rows; ++i)
+      for (std::size_t c = 0; c < m.dimension; ++c) mean[c] += m.row(i)[c];
+    if (m.rows > 0) mean /= static_cast<double>(m.rows);
+    for (std::size_t i = 0; i < m.rows; ++i)
+      for (std::size_t c = 0; c < m.dimension; ++c) centred(c, i) = m.row(i)[c] - mean[c];
+    norms = centred.colwise().squaredNorm().transpose();
+  }
+  /// Calls visit(i, j, approximate squared distance, error bound) for every i in [b, e) and every j.
+  template <class Visit>
+  void block(std::size_t b, std::size_t e, Visit visit) const {
+    const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
+    const Eigen::MatrixXd gram = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() * centred;
+    const double eps = std::numeric_limits<double>::epsilon();
+    for (Eigen::Index r = 0; r < nb; ++r) {
+      const std::size_t i = b + static_cast<std::size_t>(r);
+      for (std::size_t j = 0; j < m.rows; ++j) {
+        const double ni = norms[static_cast<Eigen::Index>(i)], nj = norms[static_cast<Eigen::Index>(j)];
+        const double d2 = ni + nj - 2 * gram(r, static_cast<Eigen::Index>(j));
+        visit(i, j, d2, 8 * (m.dimension + 4) * eps * (ni + nj) + 1e-300);
+      }
+    }
+  }
+};
+
+inline bool use_kd_tree(const Point_matrix& m, Neighbor_search s, const char* fn) {
+  if (s == Neighbor_search::kd_tree && m.dimension > 3)
+    FeatureRecon::internal::throw_invalid_argument(fn, "the kd-tree search supports dimension <= 3, got ",
+                                                   m.dimension);
+  return s == Neighbor_search::kd_tree || (s == Neighbor_search::automatic && m.dimension <= 3);
+}
+
+inline void add_edge_lengths(const Point_matrix& m, Proximity_graph& g) {
+  g.edge_lengths.resize(g.edges.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    const double* p = m.row(g.edges[e][0]);
+    const double* q = m.row(g.edges[e][1]);
+    double s = 0;
+    for (std::size_t c = 0; c < m.dimension; ++c) s += (p[c] - q[c]) * (p[c] - q[c]);
+    g.edge_lengths[e] = std::sqrt(s);
+  }
+}
+/// \endcond
+
+}  // namespace internal
+
+/// Rips graph of the rows of a Point_matrix (see the range version of build_rips_graph()).
+inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
+                                        const Proximity_graph_options& options = {}) {
+  const char* fn = "build_rips_graph";
+  if (!(std::isfinite(radius) && radius >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
+  Proximity_graph g;
+  g.number_of_vertices = m.rows;
+  if (m.rows > std::numeric_limits<Vertex_index>::max())
+    FeatureRecon::internal::throw_invalid_argument(fn, "too many points (", m.rows, ")");
+  const std::size_t n = m.rows;
+  const std::size_t report_every = std::max<std::size_t>(1, n / 100);
+  if (internal::use_kd_tree(m, options.search, fn)) {
+    if (n == 0) return g;
+    internal::Kd_index index(m);
+    std::vector<std::uint32_t> found;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (i % report_every == 0 &&
+          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(i) / n))
+        break;
+      index.ball(i, radius, found);
+      std::sort(found.begin(), found.end());
+      for (std::uint32_t j : found)
+        if (j > i && internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius))
+          g.edges.push_back(Edge{i, j});
+    }
+  } else {
+    internal::Brute_force_index index(m);
+    const std::size_t block = 256;
+    const double r2 = radius * radius;
+    for (std::size_t b = 0; b < n; b += block) {
+      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) break;
+      index.block(b, std::min(n, b + block), [&](std::size_t i, std::size_t j, double d2, double err) {
+        if (j > i && d2 <= r2 * (1 + 1e-12) + err &&
+            internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius))
+          g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
+      });
+    }
+  }
+  internal::add_edge_lengths(m, g);
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  return g;
+}
+
+/// Symmetrised k-nearest-neighbour graph of the rows of a Point_matrix (see the range version of build_knn_graph()).
+inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
+                                       const Proximity_graph_options& options = {}) {
+  const char* fn = "build_knn_graph";
+  if (k < 1) FeatureRecon::internal::throw_invalid_argument(fn, "k must be >= 1, got ", k);
+  const std::size_t n = m.rows;
+  Proximity_graph g;
+  g.number_of_vertices = n;
+  if (n > std::numeric_limits<Vertex_index>::max())
+    FeatureRecon::internal::throw_invalid_argument(fn, "too many points (", n, ")");
+  const std::size_t kk = std::min(k, n == 0 ? 0 : n - 1);
+  const std::size_t report_every = std::max<std::size_t>(1, n / 100);
+  std::vector<std::uint32_t> cand;
+  // Orders candidates j of point i by exact distance, then index.
+  auto select = [&](std::size_t i) {
+    auto closer = [&](std::uint32_t a, std::uint32_t b) {
+      const int c = internal::compare_squared_distances(m.row(i), m.row(a), m.row(b), m.dimension);
+      return c < 0 || (c == 0 && a < b);
+    };
+    if (cand.size() > kk) std::nth_element(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(kk), cand.end(), closer);
+    for (std::size_t t = 0; t < std::min(kk, cand.size()); ++t) {
+      const Vertex_index a = static_cast<Vertex_index>(i), b = cand[t];
+      g.edges.push_back(a < b ? Edge{a, b} : Edge{b, a});
+    }
+  };
+  if (kk == 0) return g;
+  if (internal::use_kd_tree(m, options.search, fn)) {
+    internal::Kd_index index(m);
+    using Knn = CGAL::Orthogonal_k_neighbor_search<internal::Kd_traits>;
+    using Distance = Knn::Distance;
+    Distance dist(index.tree->traits().point_property_map());
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (i % report_every == 0 &&
+          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(i) / n))
+        break;
+      // The (k+1)-th nearest (the point itself included) bounds the k-th neighbour's distance; a ball of
+      // that radius holds every point tied with it, so ties are broken by index, not by the tree.
+      Knn search(*index.tree, index.points[i], static_cast<unsigned>(kk + 1), 0.0, true, dist);
+      double far = 0;
+      for (const auto& nb : search) far = std::max(far, nb.second);
+      index.ball(i, std::sqrt(far), cand);
+      cand.erase(std::remove(cand.begin(), cand.end(), i), cand.end());
+      select(i);
+    }
+  } else {
+    internal::Brute_force_index index(m);
+    const std::size_t block = 256;
+    std::vector<std::pair<double, std::uint32_t>> row;
+    std::vector<double> errs;
+    for (std::size_t b = 0; b < n; b += block) {
+      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) break;
+      std::size_t current = b;
+      row.clear();
+      errs.clear();
+      auto flush = [&](std::size_t i) {
+        // Candidates: every j whose approximate distance is within the error of the k-th smallest.
+        std::vector<std::pair<double, std::uint32_t>> sorted_row = row;
+        std::nth_element(sorted_row.begin(), sorted_row.begin() + static_cast<std::ptrdiff_t>(kk - 1), sorted_row.end());
+        const double kth = sorted_row[kk - 1].first;
+        double max_err = 0;
+        for (double e : errs) max_err = std::max(max_err, e);
+        cand.clear();
+        for (const auto& [d2, j] : row)
+          if (d2 <= kth + 2 * max_err) cand.push_back(j);
+        select(i);
+      };
+      index.block(b, std::min(n, b + block), [&](std::size_t i, std::size_t j, double d2, double err) {
+        if (i != current) {
+          flush(current);
+          current = i;
+          row.clear();
+          errs.clear();
+        }
+        if (j != i) {
+          row.emplace_back(d2, static_cast<std::uint32_t>(j));
+          errs.push_back(err);
+        }
+      });
+      flush(current);
+    }
+  }
+  internal::sort_unique_edges(g.edges, nullptr);
+  internal::add_edge_lengths(m, g);
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  return g;
+}
+
+/// Rips (r-neighbourhood) graph of points: an edge between every two points at distance <= radius
+/// (inclusive, decided exactly on the double coordinates), weighted by the Euclidean distance.
+///
+/// Candidates come from a CGAL kd-tree (dimension <= 3) or from blocked all-pairs distances with Eigen
+/// (higher dimension), and every candidate is decided by an exact predicate. Duplicate points are joined
+/// by edges of length 0.
+/// \tparam PointRange a range of points; \tparam Traits a model of PointCoordinateTraits.
+/// \pre radius is finite and >= 0 (checked; throws). All points have the same positive dimension and finite
+///      coordinates (checked; throws, naming the point).
+/// \returns a canonical Proximity_graph on the points' indices.
+template <class PointRange, class Traits = Point_coordinate_traits<
+                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Proximity_graph build_rips_graph(const PointRange& points, double radius,
+                                 const Proximity_graph_options& options = {}, const Traits& traits = Traits()) {
+  const char* fn = "build_rips_graph";
+  if (!(std::isfinite(radius) && radius >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
+  const Point_matrix m = make_point_matrix(points, traits, fn);
+  return build_rips_graph(m, radius, options);
+}
+
+/// Symmetrised k-nearest-neighbour graph: i and j are joined when j is among the k nearest neighbours of
+/// i or i among those of j. Nearest is decided exactly; equal distances are ordered by index, so grids
+/// and duplicates give a deterministic graph. Edge lengths are Euclidean distances.
+/// \pre k >= 1 (checked; throws). Points as for build_rips_graph(). With n <= k every pair is joined.
+template <class PointRange, class Traits = Point_coordinate_traits<
+                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Proximity_graph build_knn_graph(const PointRange& points, std::size_t k, const Proximity_graph_options& options = {},
+                                const Traits& traits = Traits()) {
+  const char* fn = "build_knn_graph";
+  if (k < 1) FeatureRecon::internal::throw_invalid_argument(fn, "k must be >= 1, got ", k);
+  const Point_matrix m = make_point_matrix(points, traits, fn);
+  return build_knn_graph(m, k, options);
+}
+
+namespace internal {
+/// \cond
+template <class Matrix, class = void>
+struct Is_eigen_like : std::false_type {};
+template <class Matrix>
+struct Is_eigen_like<Matrix, std::void_t<decltype(std::declval<const Matrix&>().rows()),
+                                         decltype(std::declval<const Matrix&>()(0, 0))>> : std::true_type {};
+
+/// Checks a dense distance matrix and returns it as a flat row-major vector.
+template <class Matrix>
+std::vector<double> checked_distance_matrix(const Matrix& D, std::size_t& n, const char* fn) {
+  std::vector<double> a;
+  if constexpr (Is_eigen_like<Matrix>::value) {
+    n = static_cast<std::size_t>(D.rows());
+    if (static_cast<std::size_t>(D.cols()) != n)
+      FeatureRecon::internal::throw_invalid_argument(fn, "the distance matrix is ", D.rows(), " x ", D.cols(),
+                                                     ", not square");
+    a.resize(n * n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) a[i * n + j] = static_cast<double>(D(i, j));
+  } else {
+    n = static_cast<std::size_t>(std::distance(std::begin(D), std::end(D)));
+    a.reserve(n * n);
+    std::size_t i = 0;
+    for (const auto& row : D) {
+      const std::size_t len = static_cast<std::size_t>(std::distance(std::begin(row), std::end(row)));
+      if (len != n)
+        FeatureRecon::internal::throw_invalid_argument(fn, "row ", i, " of the distance matrix has ", len,
+                                                       " entries, expected ", n);
+      for (const auto& x : row) a.push_back(static_cast<double>(x));
+      ++i;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double x = a[i * n + j];
+      if (!std::isfinite(x) || x < 0)
+        FeatureRecon::internal::throw_invalid_argument(fn, "entry (", i, ", ", j, ") of the distance matrix is ",
+                                                       x, " (must be finite and >= 0)");
+      if (i == j && x != 0)
+        FeatureRecon::internal::throw_invalid_argument(fn, "diagonal entry (", i, ", ", i, ") is ", x,
+                                                       " (must be 0)");
+      if (j > i && x != a[j * n + i])
+        FeatureRecon::internal::throw_invalid_argument(fn, "the distance matrix is not symmetric at (", i, ", ",
+                                                       j, "): ", x, " vs ", a[j * n + i]);
+    }
+  return a;
+}
+/// \endcond
+}  // namespace internal
+
+/// Rips graph of a dense distance matrix: i and j are joined when D(i, j) <= radius (inclusive).
+/// \tparam Matrix an Eigen-like matrix (`rows()`, `cols()`, `D(i, j)`) or a range of rows.
+/// \pre D is square, symmetric, with a zero diagonal and finite entries >= 0; radius is finite and >= 0
+///      (all checked; throws naming the offending entry).
+template <class Matrix>
+Proximity_graph build_rips_graph_from_distance_matrix(const Matrix& D, double radius) {
+  const char* fn = "build_rips_graph_from_distance_matrix";
+  if (!(std::isfinite(radius) && radius >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
+  std::size_t n = 0;
+  const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
+  Proximity_graph g;
+  g.number_of_vertices = n;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (a[i * n + j] <= radius) {
+        g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
+        g.edge_lengths.push_back(a[i * n + j]);
+      }
+  return g;
+}
+
+/// Symmetrised k-nearest-neighbour graph of a dense distance matrix (ties broken by index).
+/// \pre as build_rips_graph_from_distance_matrix(), and k >= 1 (checked; throws).
+template <class Matrix>
+Proximity_graph build_knn_graph_from_distance_matrix(const Matrix& D, std::size_t k) {
+  const char* fn = "build_knn_graph_from_distance_matrix";
+  if (k < 1) FeatureRecon::internal::throw_invalid_argument(fn, "k must be >= 1, got ", k);
+  std::size_t n = 0;
+  const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
+  Proximity_graph g;
+  g.number_of_vertices = n;
+  const std::size_t kk = std::min(k, n == 0 ? 0 : n - 1);
+  std::vector<std::uint32_t> cand;
+  for (std::size_t i = 0; i < n && kk > 0; ++i) {
+    cand.clear();
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i) cand.push_back(static_cast<std::uint32_t>(j));
+    std::nth_element(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(kk - 1), cand.end(),
+                     [&](std::uint32_t x, std::uint32_t y) {
+                       return a[i * n + x] < a[i * n + y] || (a[i * n + x] == a[i * n + y] && x < y);
+                     });
+    for (std::size_t t = 0; t < kk; ++t) {
+      const Vertex_index u = static_cast<Vertex_index>(i), v = cand[t];
+      g.edges.push_back(u < v ? Edge{u, v} : Edge{v, u});
+    }
+  }
+  internal::sort_unique_edges(g.edges, nullptr);
+  g.edge_lengths.resize(g.edges.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e) g.edge_lengths[e] = a[g.edges[e][0] * n + g.edges[e][1]];
+  return g;
+}
+
+/// Proximity graph from a user's Boost.Graph graph (VertexListGraph and EdgeListGraph, undirected or
+/// directed; parallel edges keep the first weight seen, self-loops are dropped).
+/// \param weight a readable property map from edge descriptors to lengths.
+/// \pre every weight is finite and >= 0 (checked; throws naming the edge in edges(graph) order).
+template <class Graph, class WeightMap>
+Proximity_graph proximity_graph_from_boost_graph(const Graph& graph, WeightMap weight) {
+  const char* fn = "proximity_graph_from_boost_graph";
+  Proximity_graph g;
+  g.number_of_vertices = static_cast<std::size_t>(num_vertices(graph));
+  const auto index = get(boost::vertex_index, graph);
+  std::vector<double> lengths;
+  std::size_t k = 0;
+  for (auto [it, end] = edges(graph); it != end; ++it, ++k) {
+    const auto u = static_cast<Vertex_index>(get(index, source(*it, graph)));
+    const auto v = static_cast<Vertex_index>(get(index, target(*it, graph)));
+    const double w = static_cast<double>(get(weight, *it));
+    if (!(std::isfinite(w) && w >= 0))
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", k, " (", u, ", ", v, ") has weight ", w,
+                                                     " (must be finite and >= 0)");
+    if (u == v) continue;
+    g.edges.push_back(u < v ? Edge{u, v} : Edge{v, u});
+    lengths.push_back(w);
+  }
+  internal::sort_unique_edges(g.edges, &lengths);
+  g.edge_lengths = std::move(lengths);
+  return g;
+}
+
+/// The flag (clique) complex of a proximity graph up to dimension 2: its vertices, edges and every
+/// triangle whose three edges are in the graph. With a Rips graph this is the Rips 2-complex.
+/// O(sum of squared degrees) time; triangles come out sorted.
+/// \pre g is canonical (checked; throws).
+inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Progress_callback& progress = {}) {
+  const char* fn = "build_flag_complex_2";
+  if (!is_canonical(g))
+    FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph)");
+  Simplicial_complex_2 k;
+  static_cast<Proximity_graph&>(k) = g;
+  const std::size_t n = g.number_of_vertices;
+  // Forward adjacency: for each u, its neighbours v > u in increasing order (edges are sorted).
+  std::vector<std::size_t> first(n + 1, 0);
+  for (const Edge& e : g.edges) ++first[e[0] + 1];
+  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+  const std::size_t report_every = std::max<std::size_t>(1, n / 100);
+  for (std::size_t u = 0; u < n; ++u) {
+    if (u % report_every == 0 && !FeatureRecon::internal::report_progress(progress, static_cast<double>(u) / n))
+      break;
+    for (std::size_t a = first[u]; a < first[u + 1]; ++a) {
+      const Vertex_index v = g.edges[a].at(1);
+      // Intersect N+(u) after v with N+(v).
+      std::size_t p = a + 1, q = first[v];
+      while (p < first[u + 1] && q < first[v + 1]) {
+        const Vertex_index x = g.edges[p][1], y = g.edges[q][1];
+        if (x < y) {
+          ++p;
+        } else if (y < x) {
+          ++q;
+        } else {
+          k.triangles.push_back(Triangle{static_cast<Vertex_index>(u), v, x});
+          ++p;
+          ++q;
+        }
+      }
+    }
+  }
+  (void)FeatureRecon::internal::report_progress(progress, 1.0);
+  return k;
+}
+
+/// One call: the Rips 2-complex of points at scale `radius` (build_rips_graph() then build_flag_complex_2()).
+template <class PointRange, class Traits = Point_coordinate_traits<
+                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radius,
+                                          const Proximity_graph_options& options = {},
+                                          const Traits& traits = Traits()) {
+  return build_flag_complex_2(build_rips_graph(points, radius, options, traits));
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_RIPS_GRAPH_H

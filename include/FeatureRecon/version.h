@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_VERSION_H
+#define FEATURERECON_VERSION_H
+
+#define FEATURERECON_VERSION_MAJOR 0
+#define FEATURERECON_VERSION_MINOR 1
+#define FEATURERECON_VERSION_PATCH 0
+#define FEATURERECON_VERSION_STRING "0.1.0"
+
+#endif  // FEATURERECON_VERSION_H

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include "cli_common.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace FeatureRecon {
+namespace cli {
+
+Arguments::Arguments(const std::vector<std::string>& args, const std::vector<std::string>& flags,
+                     const std::vector<std::string>& valued, std::size_t max_positional) {
+  auto known = [](const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+  };
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() > 2 && a.compare(0, 2, "--") == 0) {
+      std::string name = a.substr(2), value;
+      const std::size_t eq = name.find('=');
+      const bool inline_value = eq != std::string::npos;
+      if (inline_value) {
+        value = name.substr(eq + 1);
+        name = name.substr(0, eq);
+      }
+      if (m_values.count(name)) throw Usage_error("option --" + name + " given twice");
+      if (known(flags, name)) {
+        if (inline_value) throw Usage_error("option --" + name + " takes no value");
+        m_values[name] = "";
+      } else if (known(valued, name)) {
+        if (!inline_value) {
+          if (i + 1 >= args.size()) throw Usage_error("option --" + name + " needs a value");
+          value = args[++i];
+        }
+        m_values[name] = value;
+      } else {
+        throw Usage_error("unknown option '" + a + "'");
+      }
+    } else {
+      if (m_positional.size() >= max_positional) throw Usage_error("unexpected argument '" + a + "'");
+      m_positional.push_back(a);
+    }
+  }
+}
+
+std::string Arguments::get(const std::string& name) const {
+  const auto it = m_values.find(name);
+  if (it == m_values.end()) throw Usage_error("missing required option --" + name);
+  return it->second;
+}
+
+std::string Arguments::get_or(const std::string& name, const std::string& fallback) const {
+  const auto it = m_values.find(name);
+  return it == m_values.end() ? fallback : it->second;
+}
+
+double Arguments::get_double(const std::string& name) const {
+  const std::string s = get(name);
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end != '\0' || !std::isfinite(x))
+    throw Usage_error("--" + name + " must be a finite number, got '" + s + "'");
+  return x;
+}
+
+double Arguments::get_positive_double(const std::string& name) const {
+  const double x = get_double(name);
+  if (!(x > 0)) throw Usage_error("--" + name + " must be > 0, got '" + get(name) + "'");
+  return x;
+}
+
+long long Arguments::get_int(const std::string& name) const {
+  const std::string s = get(name);
+  char* end = nullptr;
+  errno = 0;
+  const long long x = std::strtoll(s.c_str(), &end, 10);
+  if (s.empty() || *end != '\0' || errno == ERANGE) throw Usage_error("--" + name + " must be an integer, got '" + s + "'");
+  return x;
+}
+
+Progress::Progress(std::string stage, bool quiet)
+    : m_stage(std::move(stage)), m_quiet(quiet), m_tty(isatty(STDERR_FILENO) != 0),
+      m_start(std::chrono::steady_clock::now()), m_last(m_start) {
+  if (!m_quiet && !m_tty) std::fprintf(stderr, "%s ...\n", m_stage.c_str());
+}
+
+bool Progress::operator()(double fraction) {
+  if (m_quiet || !m_tty) return true;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - m_last < std::chrono::milliseconds(200) && fraction < 1.0) return true;
+  m_last = now;
+  std::fprintf(stderr, "\r%s: %3d%%", m_stage.c_str(), static_cast<int>(std::lround(100 * fraction)));
+  std::fflush(stderr);
+  return true;
+}
+
+double Progress::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+}
+
+void Progress::done(const std::string& details) {
+  if (m_finished) return;
+  m_finished = true;
+  if (m_quiet) return;
+  std::fprintf(stderr, "%s%s: done%s%s%s in %.2f s\n", m_tty ? "\r" : "", m_stage.c_str(), details.empty() ? "" : " (",
+               details.c_str(), details.empty() ? "" : ")", seconds());
+}
+
+std::string json_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+}  // namespace cli
+}  // namespace FeatureRecon

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SRC_CLI_CLI_COMMON_H
+#define FEATURERECON_SRC_CLI_CLI_COMMON_H
+
+// Argument parsing and progress display shared by the subcommands of `featurerecon`.
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace FeatureRecon {
+namespace cli {
+
+/// A bad command line: printed with a pointer to --help, exit status 2.
+class Usage_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Parsed `--name value` and `--flag` arguments of one subcommand.
+class Arguments {
+ public:
+  /// \param flags options without a value; \param valued options with one value.
+  Arguments(const std::vector<std::string>& args, const std::vector<std::string>& flags,
+            const std::vector<std::string>& valued, std::size_t max_positional = 0);
+  bool has(const std::string& name) const { return m_values.count(name) != 0; }
+  std::string get(const std::string& name) const;  ///< throws Usage_error if missing
+  std::string get_or(const std::string& name, const std::string& fallback) const;
+  double get_double(const std::string& name) const;           ///< finite number
+  double get_positive_double(const std::string& name) const;  ///< finite number > 0
+  long long get_int(const std::string& name) const;
+  const std::vector<std::string>& positional() const { return m_positional; }
+
+ private:
+  std::map<std::string, std::string> m_values;
+  std::vector<std::string> m_positional;
+};
+
+/// Progress of one stage on standard error: a live percentage on a terminal, and a closing line with the
+/// elapsed time (unless quiet). Usable as a Progress_callback.
+class Progress {
+ public:
+  Progress(std::string stage, bool quiet);
+  bool operator()(double fraction);
+  /// Prints "stage: done (details) in S s".
+  void done(const std::string& details = "");
+  double seconds() const;
+
+ private:
+  std::string m_stage;
+  bool m_quiet, m_tty, m_finished = false;
+  std::chrono::steady_clock::time_point m_start, m_last;
+};
+
+/// Formats a double for JSON (17 significant digits; non-finite as null).
+std::string json_number(double x);
+
+}  // namespace cli
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SRC_CLI_CLI_COMMON_H

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// The featurerecon command-line program: dispatches to the subcommands.
+
+#include <FeatureRecon/version.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "io/featurerecon_io.h"
+
+namespace FeatureRecon {
+namespace cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> list = {
+      {"rips", "Rips 2-complex of points with the geodesic function, in the exchange format",
+       "usage: featurerecon rips --points FILE (--radius R | --knn K) --out COMPLEX [--search auto|kd-tree|brute-force] [--quiet]\n"
+       "\n"
+       "Builds the proximity graph of the points (every pair at distance <= R, or the symmetrised K nearest\n"
+       "neighbours), its Rips 2-complex (every 3-clique is a triangle) and the geodesic function: the\n"
+       "shortest-path distance to a base point, the vertex farthest from an arbitrary start, in every\n"
+       "connected component. Writes the complex with f = that function.\n"
+       "\n"
+       "  --points FILE    one point per line, whitespace-separated coordinates, any dimension; '#' comments\n"
+       "  --radius R       neighbourhood radius (>= 0, inclusive)\n"
+       "  --knn K          number of nearest neighbours (>= 1), symmetrised\n"
+       "  --out COMPLEX    output: first line 'n m', n lines 'x y z f' (first three coordinates, zero-padded),\n"
+       "                   m lines of 2 or 3 vertex indices (edges not implied by a triangle, then triangles)\n"
+       "  --search S       neighbour search: auto (kd-tree up to 3D, brute force above), kd-tree, brute-force\n"
+       "  --quiet          no progress on standard error\n",
+       run_rips},
+      {"reeb", "Reeb graph of the function of a complex file",
+       "usage: featurerecon reeb --complex COMPLEX [--json] [--quiet]\n"
+       "\n"
+       "Computes the augmented Reeb graph of the PL function f of the complex (ties broken by vertex index)\n"
+       "and reports the Reeb graph (critical nodes only).\n"
+       "\n"
+       "  --complex FILE   a complex in the exchange format (see 'featurerecon rips --help')\n"
+       "  --json           print one JSON object: vertices, edges, triangles, nodes, arcs, loops (first Betti\n"
+       "                   number of the Reeb graph), minima, maxima, up_forks, down_forks, components,\n"
+       "                   augmented_arcs, seconds (Reeb graph time only)\n"
+       "  --quiet          no progress on standard error\n",
+       run_reeb},
+  };
+  return list;
+}
+
+}  // namespace cli
+}  // namespace FeatureRecon
+
+namespace {
+void print_main_help() {
+  std::printf("featurerecon %s: feature-aware sampling and reconstruction\n\n", FEATURERECON_VERSION_STRING);
+  std::printf("usage: featurerecon COMMAND [OPTIONS]   (featurerecon COMMAND --help for its options)\n\ncommands:\n");
+  for (const auto& c : FeatureRecon::cli::commands()) std::printf("  %-10s %s\n", c.name, c.summary);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace FeatureRecon::cli;
+  if (argc < 2) {
+    print_main_help();
+    return 2;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    print_main_help();
+    return 0;
+  }
+  if (name == "--version") {
+    std::printf("featurerecon %s\n", FEATURERECON_VERSION_STRING);
+    return 0;
+  }
+  for (const Command& c : commands()) {
+    if (name != c.name) continue;
+    std::vector<std::string> args(argv + 2, argv + argc);
+    for (const std::string& a : args)
+      if (a == "--help" || a == "-h") {
+        std::fputs(c.help, stdout);
+        return 0;
+      }
+    try {
+      return c.run(args);
+    } catch (const Usage_error& e) {
+      std::fprintf(stderr, "featurerecon %s: error: %s\nTry 'featurerecon %s --help'.\n", c.name, e.what(), c.name);
+      return 2;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "featurerecon %s: error: %s\n", c.name, e.what());
+      return 1;
+    }
+  }
+  std::fprintf(stderr, "featurerecon: unknown command '%s'\nTry 'featurerecon --help'.\n", name.c_str());
+  return 2;
+}

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include "featurerecon_io.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace FeatureRecon {
+namespace io {
+namespace {
+
+std::string where(const std::string& path, std::size_t line) {
+  return path + ":" + std::to_string(line) + ": ";
+}
+
+/// Splits a line at whitespace, dropping a '#' comment.
+std::vector<std::string> tokens(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream is(line.substr(0, line.find('#')));
+  std::string t;
+  while (is >> t) out.push_back(t);
+  return out;
+}
+
+double parse_double(const std::string& t, const std::string& path, std::size_t line, const char* what) {
+  const char* s = t.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(s, &end);
+  if (end == s || *end != '\0')
+    throw Input_error(where(path, line) + "'" + t + "' is not a number (" + what + ")");
+  if (!std::isfinite(x)) throw Input_error(where(path, line) + what + " is not finite ('" + t + "')");
+  return x;
+}
+
+unsigned long long parse_index(const std::string& t, const std::string& path, std::size_t line, const char* what) {
+  const char* s = t.c_str();
+  char* end = nullptr;
+  errno = 0;
+  if (t.empty() || t[0] == '-' || t[0] == '+')
+    throw Input_error(where(path, line) + "'" + t + "' is not a non-negative integer (" + what + ")");
+  const unsigned long long x = std::strtoull(s, &end, 10);
+  if (end == s || *end != '\0' || errno == ERANGE)
+    throw Input_error(where(path, line) + "'" + t + "' is not a non-negative integer (" + what + ")");
+  return x;
+}
+
+std::ifstream open_input(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Input_error(path + ": cannot open for reading");
+  return in;
+}
+
+}  // namespace
+
+Point_file read_points(const std::string& path) {
+  std::ifstream in = open_input(path);
+  Point_file pf;
+  std::string line;
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::vector<std::string> t = tokens(line);
+    if (t.empty()) continue;
+    if (pf.dimension == 0) pf.dimension = t.size();
+    if (t.size() != pf.dimension)
+      throw Input_error(where(path, number) + "point has " + std::to_string(t.size()) + " coordinates, the first point has " +
+                        std::to_string(pf.dimension));
+    for (const std::string& s : t) pf.coordinates.push_back(parse_double(s, path, number, "coordinate"));
+    pf.lines.push_back(number);
+  }
+  return pf;
+}
+
+Complex_file read_complex(const std::string& path) {
+  std::ifstream in = open_input(path);
+  Complex_file cf;
+  std::string line;
+  std::size_t number = 0;
+  auto next = [&](std::vector<std::string>& t) {
+    while (std::getline(in, line)) {
+      ++number;
+      t = tokens(line);
+      if (!t.empty()) return true;
+    }
+    return false;
+  };
+  std::vector<std::string> t;
+  if (!next(t)) throw Input_error(path + ": empty file (expected a header line 'n m')");
+  if (t.size() != 2) throw Input_error(where(path, number) + "header must be 'n m' (two integers)");
+  const unsigned long long n = parse_index(t[0], path, number, "number of vertices");
+  const unsigned long long m = parse_index(t[1], path, number, "number of simplices");
+  if (n >= std::numeric_limits<skeleton::Vertex_index>::max())
+    throw Input_error(where(path, number) + "too many vertices (" + t[0] + ")");
+  cf.simplices_listed = m;
+  cf.positions.reserve(n);
+  cf.values.reserve(n);
+  for (unsigned long long i = 0; i < n; ++i) {
+    if (!next(t))
+      throw Input_error(path + ": unexpected end of file after " + std::to_string(i) + " of " + std::to_string(n) +
+                        " vertex lines");
+    if (t.size() != 4)
+      throw Input_error(where(path, number) + "vertex " + std::to_string(i) + " must be 'x y z f' (4 numbers), got " +
+                        std::to_string(t.size()));
+    cf.positions.push_back({parse_double(t[0], path, number, "x"), parse_double(t[1], path, number, "y"),
+                            parse_double(t[2], path, number, "z")});
+    cf.values.push_back(parse_double(t[3], path, number, "f"));
+  }
+  std::vector<skeleton::Edge> edges;
+  std::vector<skeleton::Triangle> triangles;
+  for (unsigned long long i = 0; i < m; ++i) {
+    if (!next(t))
+      throw Input_error(path + ": unexpected end of file after " + std::to_string(i) + " of " + std::to_string(m) +
+                        " simplex lines");
+    if (t.size() != 2 && t.size() != 3)
+      throw Input_error(where(path, number) + "simplex " + std::to_string(i) + " must list 2 or 3 vertex indices, got " +
+                        std::to_string(t.size()));
+    std::array<skeleton::Vertex_index, 3> v{};
+    for (std::size_t c = 0; c < t.size(); ++c) {
+      const unsigned long long x = parse_index(t[c], path, number, "vertex index");
+      if (x >= n)
+        throw Input_error(where(path, number) + "vertex index " + t[c] + " out of range [0, " + std::to_string(n) + ")");
+      v[c] = static_cast<skeleton::Vertex_index>(x);
+    }
+    if (v[0] == v[1] || (t.size() == 3 && (v[1] == v[2] || v[0] == v[2])))
+      throw Input_error(where(path, number) + "simplex " + std::to_string(i) + " repeats a vertex");
+    if (t.size() == 2)
+      edges.push_back({v[0], v[1]});
+    else
+      triangles.push_back({v[0], v[1], v[2]});
+  }
+  if (next(t)) throw Input_error(where(path, number) + "unexpected content after the " + std::to_string(m) + " simplices");
+  cf.complex = skeleton::make_simplicial_complex_2(n, std::move(edges), std::move(triangles));
+  return cf;
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    out << text;
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error(path + ": write failed");
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot move the written file into place");
+  }
+}
+
+void write_complex(const std::string& path, const skeleton::Simplicial_complex_2& k,
+                   const std::vector<std::array<double, 3>>& positions, const std::vector<double>& values) {
+  if (positions.size() != k.number_of_vertices || values.size() != k.number_of_vertices)
+    throw std::invalid_argument("write_complex: positions and values must have one entry per vertex");
+  // Edges implied by a triangle are not listed.
+  std::vector<char> implied(k.edges.size(), 0);
+  for (const skeleton::Triangle& t : k.triangles)
+    for (const skeleton::Edge& e : {skeleton::Edge{t[0], t[1]}, skeleton::Edge{t[1], t[2]}, skeleton::Edge{t[0], t[2]}})
+      implied[static_cast<std::size_t>(k.find_edge(e[0], e[1]))] = 1;
+  std::size_t free_edges = 0;
+  for (char c : implied) free_edges += c ? 0 : 1;
+  std::string s;
+  s.reserve(64 * k.number_of_vertices + 24 * (free_edges + k.triangles.size()));
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%zu %zu\n", k.number_of_vertices, free_edges + k.triangles.size());
+  s += buf;
+  for (std::size_t v = 0; v < k.number_of_vertices; ++v) {
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g\n", positions[v][0], positions[v][1], positions[v][2],
+                  values[v]);
+    s += buf;
+  }
+  for (std::size_t e = 0; e < k.edges.size(); ++e)
+    if (!implied[e]) {
+      std::snprintf(buf, sizeof buf, "%u %u\n", k.edges[e][0], k.edges[e][1]);
+      s += buf;
+    }
+  for (const skeleton::Triangle& t : k.triangles) {
+    std::snprintf(buf, sizeof buf, "%u %u %u\n", t[0], t[1], t[2]);
+    s += buf;
+  }
+  write_text_file(path, s);
+}
+
+}  // namespace io
+}  // namespace FeatureRecon

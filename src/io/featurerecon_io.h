@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SRC_IO_FEATURERECON_IO_H
+#define FEATURERECON_SRC_IO_FEATURERECON_IO_H
+
+// File formats of the featurerecon program (compiled once in src/, never needed by the headers).
+
+#include <FeatureRecon/skeleton/Simplicial_complex_2.h>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace FeatureRecon {
+namespace io {
+
+/// A malformed or unreadable input file; the message names the file and the line.
+class Input_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Points of any dimension, one per line, whitespace-separated coordinates; '#' starts a comment,
+/// blank lines are skipped. Throws Input_error naming the line of a bad number, a non-finite value or a
+/// line whose dimension differs from the first point's.
+struct Point_file {
+  std::size_t dimension = 0;
+  std::vector<double> coordinates;  ///< row-major, dimension per point
+  std::vector<std::size_t> lines;   ///< source line of each point
+  std::size_t size() const { return dimension == 0 ? 0 : coordinates.size() / dimension; }
+};
+Point_file read_points(const std::string& path);
+
+/// The complex exchange format: first line `n m`; then n lines `x y z f`; then m lines of 2 or 3
+/// zero-based vertex indices (edges and triangles; the edges of a triangle are implied). '#' comments
+/// and blank lines are allowed anywhere.
+struct Complex_file {
+  skeleton::Simplicial_complex_2 complex;       ///< canonical
+  std::vector<std::array<double, 3>> positions;  ///< x y z of each vertex
+  std::vector<double> values;                    ///< f of each vertex
+  std::size_t simplices_listed = 0;              ///< m of the header
+};
+Complex_file read_complex(const std::string& path);
+
+/// Writes the exchange format atomically (a temporary file renamed into place): edges that are a face of
+/// a listed triangle are not listed (they are implied). Throws std::runtime_error if it cannot write.
+void write_complex(const std::string& path, const skeleton::Simplicial_complex_2& k,
+                   const std::vector<std::array<double, 3>>& positions, const std::vector<double>& values);
+
+/// Writes `text` to `path` atomically.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace io
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SRC_IO_FEATURERECON_IO_H

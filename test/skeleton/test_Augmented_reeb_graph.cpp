@@ -1,0 +1,287 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+#include <FeatureRecon/skeleton/geodesic_function.h>
+#include <FeatureRecon/skeleton/rips_graph.h>
+#include <FeatureRecon/skeleton/simplicial_complex_from_mesh.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+
+#include "skeleton_test_utilities.h"
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+using namespace FeatureRecon::test;
+
+namespace {
+
+Reeb_graph reeb(const Complex_with_function& c) { return compute_augmented_reeb_graph(c.complex, c.f).reeb_graph(); }
+
+/// Checks the structural invariants of an augmented Reeb graph and its Reeb graph.
+void expect_invariants(const Simplicial_complex_2& K, const std::vector<double>& f) {
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, f);
+  const Reeb_graph R = A.reeb_graph();
+  ASSERT_EQ(A.number_of_nodes(), K.number_of_vertices);
+  for (const auto& a : A.arcs()) EXPECT_LT(A.rank()[a.lower], A.rank()[a.upper]);
+  // Every vertex is a critical node or interior to exactly one arc; interiors increase along the arc.
+  std::vector<int> seen(K.number_of_vertices, 0);
+  for (const auto& node : R.nodes) ++seen[node.vertex];
+  for (const auto& arc : R.arcs) {
+    Vertex_index prev = R.nodes[arc.lower].vertex;
+    for (Vertex_index v : arc.vertices) {
+      ++seen[v];
+      EXPECT_LT(A.rank()[prev], A.rank()[v]);
+      prev = v;
+    }
+    EXPECT_LT(A.rank()[prev], A.rank()[R.nodes[arc.upper].vertex]);
+  }
+  for (std::size_t v = 0; v < K.number_of_vertices; ++v) EXPECT_EQ(seen[v], 1) << "vertex " << v;
+  // Components of the Reeb graph are those of the complex; loops never exceed b1 of the 1-skeleton.
+  EXPECT_EQ(R.components, connected_components(K).count);
+  EXPECT_LE(R.loops(), K.number_of_edges() + R.components - K.number_of_vertices);
+  // Degrees: sum of up-degrees = sum of down-degrees = number of augmented arcs.
+  std::size_t up = 0, down = 0;
+  for (Vertex_index v = 0; v < K.number_of_vertices; ++v) {
+    up += A.up_degree(v);
+    down += A.down_degree(v);
+  }
+  EXPECT_EQ(up, A.number_of_arcs());
+  EXPECT_EQ(down, A.number_of_arcs());
+}
+
+}  // namespace
+
+TEST(AugmentedReebGraph, YGraph) {
+  // Stem 0-1-2, arms 2-3-4 and 2-5-6; f = height; 3 and 5 tie (broken by index).
+  const auto c = make(7, {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {2, 5}, {5, 6}}, {}, {0, 1, 2, 3, 4, 3, 4});
+  const Reeb_graph R = reeb(c);
+  ASSERT_EQ(R.nodes.size(), 4u);
+  EXPECT_EQ(R.arcs.size(), 3u);
+  EXPECT_EQ(R.loops(), 0u);
+  EXPECT_EQ(R.count(minimum), 1u);
+  EXPECT_EQ(R.count(maximum), 2u);
+  EXPECT_EQ(R.count(up_fork), 1u);
+  EXPECT_EQ(R.count(down_fork), 0u);
+  EXPECT_EQ(R.nodes[1].vertex, 2u);
+  EXPECT_EQ(R.nodes[1].type, unsigned(up_fork));
+  // Arcs with their interior vertices.
+  ASSERT_EQ(R.arcs[0].vertices, std::vector<Vertex_index>({1}));
+  std::vector<std::vector<Vertex_index>> arms{R.arcs[1].vertices, R.arcs[2].vertices};
+  std::sort(arms.begin(), arms.end());
+  EXPECT_EQ(arms, (std::vector<std::vector<Vertex_index>>{{3}, {5}}));
+}
+
+TEST(AugmentedReebGraph, Circle) {
+  const Reeb_graph R = reeb(circle(12));
+  ASSERT_EQ(R.nodes.size(), 2u);
+  EXPECT_EQ(R.arcs.size(), 2u);
+  EXPECT_EQ(R.loops(), 1u);
+  EXPECT_EQ(R.nodes[0].type, unsigned(minimum | up_fork));
+  EXPECT_EQ(R.nodes[1].type, unsigned(maximum | down_fork));
+  EXPECT_EQ(R.arcs[0].vertices.size() + R.arcs[1].vertices.size(), 10u);
+}
+
+TEST(AugmentedReebGraph, FigureEight) {
+  // Lower square 0-1-2-3 (0 bottom, 2 top), upper square 2-4-5-6 (2 bottom, 5 top).
+  const auto c = make(7, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {2, 4}, {4, 5}, {5, 6}, {6, 2}}, {},
+                      {0, 1, 2, 1.5, 3, 4, 3.5});
+  const Reeb_graph R = reeb(c);
+  EXPECT_EQ(R.loops(), 2u);
+  ASSERT_EQ(R.nodes.size(), 3u);
+  EXPECT_EQ(R.nodes[1].type, unsigned(up_fork | down_fork));
+  EXPECT_EQ(R.arcs.size(), 4u);
+}
+
+TEST(AugmentedReebGraph, UprightTorusHasOneLoop) {
+  const auto c = upright_torus(24, 12);
+  const Reeb_graph R = reeb(c);
+  EXPECT_EQ(R.loops(), 1u);  // the horizontal class of the torus must not appear
+  EXPECT_EQ(R.nodes.size(), 4u);
+  EXPECT_EQ(R.arcs.size(), 4u);
+  EXPECT_EQ(R.count(minimum), 1u);
+  EXPECT_EQ(R.count(maximum), 1u);
+  EXPECT_EQ(R.count(up_fork), 1u);
+  EXPECT_EQ(R.count(down_fork), 1u);
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)), brute_force_reeb_arcs(c.complex, c.f));
+  expect_invariants(c.complex, c.f);
+}
+
+TEST(AugmentedReebGraph, LargerTorusGrid) {
+  const auto c = upright_torus(200, 100);
+  const Reeb_graph R = reeb(c);
+  EXPECT_EQ(R.loops(), 1u);
+  EXPECT_EQ(R.nodes.size(), 4u);
+}
+
+TEST(AugmentedReebGraph, Cylinder) {
+  const auto c = cylinder(16, 6);
+  const Reeb_graph R = reeb(c);
+  EXPECT_EQ(R.loops(), 0u);
+  ASSERT_EQ(R.nodes.size(), 2u);
+  EXPECT_EQ(R.arcs.size(), 1u);
+  EXPECT_EQ(R.nodes[0].type, unsigned(minimum));
+  EXPECT_EQ(R.nodes[1].type, unsigned(maximum));
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)), brute_force_reeb_arcs(c.complex, c.f));
+}
+
+TEST(AugmentedReebGraph, NonManifoldMixAgainstBruteForce) {
+  // A book of three triangles on edge 0-1, a dangling path 4-5-6, a bow-tie at 6, an isolated vertex 11,
+  // and a second component (triangle 12-13-14 with dangling edge 14-15).
+  const std::vector<Edge> edges{{4, 5}, {5, 6}, {14, 15}};
+  const std::vector<Triangle> tris{{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {6, 7, 8}, {6, 9, 10}, {12, 13, 14}};
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 60; ++trial) {
+    std::vector<double> f(16);
+    for (double& x : f) x = trial % 2 ? std::uniform_real_distribution<double>(0, 1)(rng)
+                                      : static_cast<double>(std::uniform_int_distribution<int>(0, 3)(rng));
+    const auto c = make(16, edges, tris, f);
+    const Augmented_reeb_graph A = compute_augmented_reeb_graph(c.complex, c.f);
+    EXPECT_EQ(arc_multiset(A), brute_force_reeb_arcs(c.complex, c.f)) << "trial " << trial;
+    const Reeb_graph R = A.reeb_graph();
+    EXPECT_EQ(R.components, 3u);
+    EXPECT_EQ(R.loops(), 0u);  // every piece is contractible
+    expect_invariants(c.complex, c.f);
+  }
+}
+
+TEST(AugmentedReebGraph, RandomRipsComplexesAgainstBruteForce) {
+  const std::vector<std::vector<std::array<double, 4>>> shapes{figure_eight_segments(), tree_segments(), grid_segments()};
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 24; ++trial) {
+    const auto s = sample_segments(shapes[trial % 3], 0.45, 0.12, 100 + trial);
+    const Simplicial_complex_2 K = build_rips_complex_2(s.points, 0.9);
+    std::vector<double> f;
+    switch (trial % 4) {
+      case 0: f = compute_geodesic_function(K).values; break;
+      case 1: for (const auto& p : s.points) f.push_back(p[1] + 0.3 * p[0]); break;
+      case 2: for (std::size_t i = 0; i < s.points.size(); ++i) f.push_back(std::uniform_real_distribution<double>()(rng)); break;
+      default: for (std::size_t i = 0; i < s.points.size(); ++i) f.push_back(std::uniform_int_distribution<int>(0, 5)(rng));
+    }
+    EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(K, f)), brute_force_reeb_arcs(K, f)) << "trial " << trial;
+    expect_invariants(K, f);
+  }
+}
+
+TEST(AugmentedReebGraph, ConstantFunctionUsesIndexOrder) {
+  auto c = circle(9);
+  std::fill(c.f.begin(), c.f.end(), 2.5);
+  const Reeb_graph R = reeb(c);
+  EXPECT_EQ(R.loops(), 1u);
+  EXPECT_EQ(R.nodes.front().vertex, 0u);  // the smallest index is the minimum
+  EXPECT_EQ(R.nodes.back().vertex, 8u);
+  auto t = upright_torus(10, 6);
+  std::fill(t.f.begin(), t.f.end(), 0.0);
+  EXPECT_EQ(reeb(t).loops(), 1u);
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(t.complex, t.f)), brute_force_reeb_arcs(t.complex, t.f));
+}
+
+TEST(AugmentedReebGraph, SymmetricTiesAreDeterministic) {
+  const auto c = upright_torus(16, 8, 0.0);  // exactly symmetric height: many equal values
+  const Augmented_reeb_graph a = compute_augmented_reeb_graph(c.complex, c.f);
+  const Augmented_reeb_graph b = compute_augmented_reeb_graph(c.complex, c.f);
+  ASSERT_EQ(a.number_of_arcs(), b.number_of_arcs());
+  for (std::size_t i = 0; i < a.number_of_arcs(); ++i) {
+    EXPECT_EQ(a.arcs()[i].lower, b.arcs()[i].lower);
+    EXPECT_EQ(a.arcs()[i].upper, b.arcs()[i].upper);
+  }
+  EXPECT_EQ(arc_multiset(a), brute_force_reeb_arcs(c.complex, c.f));
+  EXPECT_EQ(a.reeb_graph().loops(), 1u);
+}
+
+TEST(AugmentedReebGraph, EmptyAndSingleVertex) {
+  const Augmented_reeb_graph empty = compute_augmented_reeb_graph(Simplicial_complex_2{}, std::vector<double>{});
+  EXPECT_EQ(empty.status(), Status::degenerate_input);
+  EXPECT_EQ(empty.number_of_nodes(), 0u);
+  const Reeb_graph R0 = empty.reeb_graph();
+  EXPECT_EQ(R0.nodes.size(), 0u);
+  EXPECT_EQ(R0.components, 0u);
+  EXPECT_EQ(R0.loops(), 0u);
+
+  const auto one = make(1, {}, {}, {3.0});
+  const Reeb_graph R1 = reeb(one);
+  ASSERT_EQ(R1.nodes.size(), 1u);
+  EXPECT_EQ(R1.nodes[0].type, unsigned(minimum | maximum));
+  EXPECT_EQ(R1.arcs.size(), 0u);
+  EXPECT_EQ(R1.components, 1u);
+
+  // Isolated vertices and a single edge.
+  const auto few = make(4, {{1, 2}}, {}, {0, 0, 0, 0});
+  const Reeb_graph R2 = reeb(few);
+  EXPECT_EQ(R2.components, 3u);
+  EXPECT_EQ(R2.arcs.size(), 1u);
+}
+
+TEST(AugmentedReebGraph, BadInputThrows) {
+  const auto c = circle(6);
+  EXPECT_THROW(compute_augmented_reeb_graph(c.complex, std::vector<double>(5, 0.0)), std::invalid_argument);
+  std::vector<double> f = c.f;
+  f[3] = std::numeric_limits<double>::quiet_NaN();
+  try {
+    compute_augmented_reeb_graph(c.complex, f);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 3"), std::string::npos) << e.what();
+  }
+  f[3] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(compute_augmented_reeb_graph(c.complex, f), std::invalid_argument);
+  Simplicial_complex_2 bad = c.complex;
+  bad.triangles.push_back({0, 2, 4});  // its edges are missing
+  EXPECT_THROW(compute_augmented_reeb_graph(bad, c.f), std::invalid_argument);
+  bad = c.complex;
+  std::swap(bad.edges[0], bad.edges[1]);  // unsorted
+  EXPECT_THROW(compute_augmented_reeb_graph(bad, c.f), std::invalid_argument);
+  // Builder errors name the simplex.
+  try {
+    make_simplicial_complex_2(3, {{0, 1}, {1, 7}}, {});
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("edge 1"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(make_simplicial_complex_2(3, {}, {{0, 1, 1}}), std::invalid_argument);
+  EXPECT_THROW(make_simplicial_complex_2(3, {{2, 2}}, {}), std::invalid_argument);
+}
+
+TEST(AugmentedReebGraph, ProgressCanInterrupt) {
+  const auto c = upright_torus(100, 100);
+  Reeb_graph_options options;
+  int calls = 0;
+  options.progress = [&](double) { return ++calls < 2; };
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(c.complex, c.f, options);
+  EXPECT_EQ(A.status(), Status::interrupted);
+  EXPECT_LT(A.number_of_arcs(), compute_augmented_reeb_graph(c.complex, c.f).number_of_arcs());
+  for (const auto& a : A.arcs()) EXPECT_NE(a.lower, a.upper);  // only closed arcs are kept
+}
+
+TEST(AugmentedReebGraph, SurfaceMeshWithVertexPropertyMap) {
+  using K = CGAL::Simple_cartesian<double>;
+  using Mesh = CGAL::Surface_mesh<K::Point_3>;
+  // A tetrahedron's surface (a sphere): a single arc; and a square with a hole? Keep to the sphere + tube.
+  Mesh mesh;
+  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({1, 0, 0.2}), v2 = mesh.add_vertex({0, 1, 0.5}),
+             v3 = mesh.add_vertex({0, 0, 1});
+  mesh.add_face(v0, v2, v1);
+  mesh.add_face(v0, v1, v3);
+  mesh.add_face(v1, v2, v3);
+  mesh.add_face(v2, v0, v3);
+  auto height = mesh.add_property_map<Mesh::Vertex_index, double>("v:height", 0.0).first;
+  for (auto v : mesh.vertices()) height[v] = mesh.point(v).z();
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(mesh, height);
+  const Reeb_graph R = A.reeb_graph();
+  EXPECT_EQ(R.nodes.size(), 2u);
+  EXPECT_EQ(R.arcs.size(), 1u);
+  EXPECT_EQ(R.loops(), 0u);
+  EXPECT_EQ(R.nodes[0].vertex, static_cast<Vertex_index>(v0.idx()));
+  // A quad face is rejected with its index.
+  Mesh quad;
+  const auto a = quad.add_vertex({0, 0, 0}), b = quad.add_vertex({1, 0, 0}), c = quad.add_vertex({1, 1, 0}),
+             d = quad.add_vertex({0, 1, 0});
+  quad.add_face(a, b, c, d);
+  auto h2 = quad.add_property_map<Mesh::Vertex_index, double>("v:h", 0.0).first;
+  EXPECT_THROW(compute_augmented_reeb_graph(quad, h2), std::invalid_argument);
+}

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/geodesic_function.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+
+namespace {
+/// Floyd-Warshall distances (oracle on small graphs).
+std::vector<std::vector<double>> all_pairs(const Proximity_graph& g) {
+  const std::size_t n = g.number_of_vertices;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<std::vector<double>> d(n, std::vector<double>(n, inf));
+  for (std::size_t i = 0; i < n; ++i) d[i][i] = 0;
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    auto [u, v] = g.edges[e];
+    d[u][v] = d[v][u] = std::min(d[u][v], g.length(e));
+  }
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) d[i][j] = std::min(d[i][j], d[i][k] + d[k][j]);
+  return d;
+}
+
+Proximity_graph random_graph(std::size_t n, double p, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  Proximity_graph g;
+  g.number_of_vertices = n;
+  for (Vertex_index i = 0; i < n; ++i)
+    for (Vertex_index j = i + 1; j < n; ++j)
+      if (u(rng) < p) {
+        g.edges.push_back({i, j});
+        g.edge_lengths.push_back(std::floor(u(rng) * 4));  // small integers: many ties, some zero lengths
+      }
+  return g;
+}
+}  // namespace
+
+TEST(GeodesicFunction, MatchesAllPairsOracleWithFarthestBase) {
+  for (std::uint32_t seed = 1; seed <= 30; ++seed) {
+    const Proximity_graph g = random_graph(25, 0.09, seed);
+    const auto d = all_pairs(g);
+    const Geodesic_result r = compute_geodesic_function(g);
+    const Connected_components cc = connected_components(g);
+    ASSERT_EQ(r.base_points.size(), cc.count);
+    for (std::size_t c = 0; c < cc.count; ++c) {
+      // Start: smallest vertex of the component; base: farthest from it, smallest index on ties.
+      std::size_t start = 0;
+      while (cc.label[start] != c) ++start;
+      std::size_t base = start;
+      for (std::size_t v = 0; v < g.number_of_vertices; ++v)
+        if (cc.label[v] == c && d[start][v] > d[start][base]) base = v;
+      EXPECT_EQ(r.base_points[c], base) << "seed " << seed << " component " << c;
+      for (std::size_t v = 0; v < g.number_of_vertices; ++v)
+        if (cc.label[v] == c) EXPECT_DOUBLE_EQ(r.values[v], d[base][v]);
+    }
+  }
+}
+
+TEST(GeodesicFunction, UserBasePointsAndComponents) {
+  Proximity_graph g;
+  g.number_of_vertices = 6;
+  g.edges = {{0, 1}, {1, 2}, {3, 4}};
+  g.edge_lengths = {1.0, 2.0, 5.0};
+  Geodesic_options o;
+  o.base_points = {1};
+  const Geodesic_result r = compute_geodesic_function(g, o);
+  // Component {0,1,2}: the given base 1; {3,4}: 4, farthest from 3; {5}: itself.
+  EXPECT_EQ(r.base_points, (std::vector<std::size_t>{1, 4, 5}));
+  EXPECT_EQ(r.values, (std::vector<double>{1, 0, 2, 5, 0, 0}));
+  o.base_points = {9};
+  try {
+    compute_geodesic_function(g, o);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("base point 0 is vertex 9"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GeodesicFunction, DegenerateInputs) {
+  EXPECT_EQ(compute_geodesic_function(Proximity_graph{}).status, Status::degenerate_input);
+  Proximity_graph one;
+  one.number_of_vertices = 1;
+  const auto r = compute_geodesic_function(one);
+  EXPECT_EQ(r.values, std::vector<double>{0.0});
+  EXPECT_EQ(r.base_points, std::vector<std::size_t>{0});
+  // Unweighted path: lengths 1, base is the far end.
+  Proximity_graph path;
+  path.number_of_vertices = 4;
+  path.edges = {{0, 1}, {1, 2}, {2, 3}};
+  EXPECT_EQ(compute_geodesic_function(path).values, (std::vector<double>{3, 2, 1, 0}));
+  // All-zero lengths (duplicates): constant 0, base = smallest index.
+  Proximity_graph zero = path;
+  zero.edge_lengths = {0, 0, 0};
+  const auto z = compute_geodesic_function(zero);
+  EXPECT_EQ(z.values, (std::vector<double>{0, 0, 0, 0}));
+  EXPECT_EQ(z.base_points, std::vector<std::size_t>{0});
+}
+
+TEST(GeodesicFunction, InterruptAndNonCanonical) {
+  Geodesic_options o;
+  o.progress = [](double) { return false; };
+  Proximity_graph path;
+  path.number_of_vertices = 3;
+  path.edges = {{0, 1}, {1, 2}};
+  EXPECT_EQ(compute_geodesic_function(path, o).status, Status::interrupted);
+  path.edge_lengths = {1.0, -2.0};
+  EXPECT_THROW(compute_geodesic_function(path), std::invalid_argument);
+}

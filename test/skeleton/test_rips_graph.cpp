@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/rips_graph.h>
+
+#include <CGAL/Epick_d.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <boost/graph/adjacency_list.hpp>
+
+#include <Eigen/Core>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+
+namespace {
+
+using Coords = std::vector<std::vector<double>>;
+
+Coords random_points(std::size_t n, std::size_t d, std::uint32_t seed, double scale = 1.0) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, scale);
+  Coords p(n, std::vector<double>(d));
+  for (auto& x : p)
+    for (double& c : x) c = u(rng);
+  return p;
+}
+
+double dist(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s);
+}
+
+/// All pairs within r (brute force, doubles: exact on the integer grids used with it).
+std::vector<Edge> brute_rips(const Coords& p, double r) {
+  std::vector<Edge> e;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      if (dist(p[i], p[j]) <= r) e.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
+  return e;
+}
+
+/// Symmetrised kNN with ties by index (brute force).
+std::vector<Edge> brute_knn(const Coords& p, std::size_t k) {
+  std::vector<Edge> e;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::vector<std::pair<double, std::size_t>> d;
+    for (std::size_t j = 0; j < p.size(); ++j)
+      if (j != i) d.emplace_back(dist(p[i], p[j]), j);
+    std::sort(d.begin(), d.end());
+    for (std::size_t t = 0; t < std::min(k, d.size()); ++t) {
+      const auto a = static_cast<Vertex_index>(std::min(i, d[t].second)), b = static_cast<Vertex_index>(std::max(i, d[t].second));
+      e.push_back({a, b});
+    }
+  }
+  std::sort(e.begin(), e.end());
+  e.erase(std::unique(e.begin(), e.end()), e.end());
+  return e;
+}
+
+/// Brute-force 3-cliques.
+std::vector<Triangle> brute_triangles(const Proximity_graph& g) {
+  std::vector<Triangle> t;
+  const std::size_t n = g.number_of_vertices;
+  for (Vertex_index a = 0; a < n; ++a)
+    for (Vertex_index b = a + 1; b < n; ++b)
+      for (Vertex_index c = b + 1; c < n; ++c)
+        if (g.find_edge(a, b) >= 0 && g.find_edge(b, c) >= 0 && g.find_edge(a, c) >= 0) t.push_back({a, b, c});
+  return t;
+}
+
+}  // namespace
+
+TEST(RipsGraph, MatchesBruteForceInEveryDimensionAndSearch) {
+  for (std::size_t d : {1u, 2u, 3u, 5u, 12u}) {
+    const Coords p = random_points(300, d, static_cast<std::uint32_t>(d));
+    const double r = 0.12 * std::sqrt(static_cast<double>(d));
+    const auto expected = brute_rips(p, r);
+    for (Neighbor_search s : {Neighbor_search::automatic, Neighbor_search::brute_force, Neighbor_search::kd_tree}) {
+      if (s == Neighbor_search::kd_tree && d > 3) {
+        Proximity_graph_options o;
+        o.search = s;
+        EXPECT_THROW(build_rips_graph(p, r, o), std::invalid_argument);
+        continue;
+      }
+      Proximity_graph_options o;
+      o.search = s;
+      const Proximity_graph g = build_rips_graph(p, r, o);
+      EXPECT_EQ(g.edges, expected) << "d = " << d;
+      ASSERT_EQ(g.edge_lengths.size(), g.edges.size());
+      for (std::size_t e = 0; e < g.edges.size(); ++e)
+        EXPECT_NEAR(g.edge_lengths[e], dist(p[g.edges[e][0]], p[g.edges[e][1]]), 1e-12);
+      EXPECT_TRUE(is_canonical(g));
+    }
+  }
+}
+
+TEST(RipsGraph, RadiusIsInclusiveOnGrids) {
+  // Unit grid 6x6 in 2D: at r = 1 exactly the 4-neighbours, at r = sqrt(2) (rounded down) still only them,
+  // at the next double above sqrt(2) the diagonals join.
+  Coords p;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) p.push_back({double(i), double(j)});
+  for (Neighbor_search s : {Neighbor_search::kd_tree, Neighbor_search::brute_force}) {
+    Proximity_graph_options o;
+    o.search = s;
+    EXPECT_EQ(build_rips_graph(p, 1.0, o).number_of_edges(), 60u);
+    EXPECT_EQ(build_rips_graph(p, std::nextafter(1.0, 0.0), o).number_of_edges(), 0u);
+    const double s2 = std::sqrt(2.0);  // rounded: the exact test decides on which side of sqrt(2) it lies
+    const bool s2_at_least = CGAL::Exact_rational(s2) * CGAL::Exact_rational(s2) >= CGAL::Exact_rational(2);
+    EXPECT_EQ(build_rips_graph(p, s2, o).number_of_edges(), s2_at_least ? 110u : 60u);
+    EXPECT_EQ(build_rips_graph(p, std::nextafter(s2, 2.0), o).number_of_edges(), 110u);
+  }
+}
+
+TEST(RipsGraph, DegenerateInputs) {
+  EXPECT_EQ(build_rips_graph(Coords{}, 1.0).number_of_vertices, 0u);
+  const Proximity_graph one = build_rips_graph(Coords{{1, 2, 3}}, 1.0);
+  EXPECT_EQ(one.number_of_vertices, 1u);
+  EXPECT_EQ(one.number_of_edges(), 0u);
+  // Duplicates are joined at length 0, even with radius 0.
+  const Coords dup{{1, 1}, {1, 1}, {1, 1}, {5, 5}};
+  const Proximity_graph g0 = build_rips_graph(dup, 0.0);
+  EXPECT_EQ(g0.edges, (std::vector<Edge>{{0, 1}, {0, 2}, {1, 2}}));
+  EXPECT_EQ(g0.edge_lengths, (std::vector<double>{0, 0, 0}));
+  // Collinear points: a path.
+  Coords line;
+  for (int i = 0; i < 10; ++i) line.push_back({double(i), 2.0 * i, 0.0});
+  EXPECT_EQ(build_rips_graph(line, std::sqrt(5.0) + 1e-9).number_of_edges(), 9u);
+  // Points on a circle (cocircular): a cycle with chords only at the chosen radius.
+  Coords circle;
+  for (int i = 0; i < 12; ++i) circle.push_back({std::cos(i * M_PI / 6), std::sin(i * M_PI / 6)});
+  const Simplicial_complex_2 k = build_rips_complex_2(circle, 0.6);
+  EXPECT_EQ(k.number_of_edges(), 12u);
+  EXPECT_EQ(k.number_of_triangles(), 0u);
+}
+
+TEST(RipsGraph, BadInputNamesThePoint) {
+  Coords p = random_points(5, 3, 1);
+  p[3][1] = std::numeric_limits<double>::quiet_NaN();
+  try {
+    build_rips_graph(p, 1.0);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("point 3"), std::string::npos) << e.what();
+  }
+  p[3][1] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(build_knn_graph(p, 2), std::invalid_argument);
+  Coords mixed{{0, 0}, {1, 1, 1}};
+  try {
+    build_rips_graph(mixed, 1.0);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("point 1"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(build_rips_graph(random_points(3, 2, 1), -1.0), std::invalid_argument);
+  EXPECT_THROW(build_rips_graph(random_points(3, 2, 1), std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+  EXPECT_THROW(build_knn_graph(random_points(3, 2, 1), 0), std::invalid_argument);
+}
+
+TEST(KnnGraph, MatchesBruteForceWithTiesByIndex) {
+  // Integer grid with duplicates: many equal distances.
+  Coords p;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 5; ++j) p.push_back({double(i), double(j)});
+  p.push_back({3, 2});
+  p.push_back({3, 2});
+  for (std::size_t k : {1u, 2u, 4u, 7u}) {
+    for (Neighbor_search s : {Neighbor_search::kd_tree, Neighbor_search::brute_force}) {
+      Proximity_graph_options o;
+      o.search = s;
+      EXPECT_EQ(build_knn_graph(p, k, o).edges, brute_knn(p, k)) << "k = " << k;
+    }
+  }
+  for (std::size_t d : {2u, 3u, 8u}) {
+    const Coords q = random_points(200, d, 40 + static_cast<std::uint32_t>(d));
+    EXPECT_EQ(build_knn_graph(q, 6).edges, brute_knn(q, 6)) << "d = " << d;
+  }
+  // n <= k: the complete graph.
+  EXPECT_EQ(build_knn_graph(random_points(4, 2, 3), 10).number_of_edges(), 6u);
+  EXPECT_EQ(build_knn_graph(Coords{{0.0, 0.0}}, 3).number_of_edges(), 0u);
+  EXPECT_EQ(build_knn_graph(Coords{}, 3).number_of_vertices, 0u);
+}
+
+TEST(RipsGraph, KernelsAndUserPointTypes) {
+  const Coords p = random_points(80, 3, 5);
+  const auto expected = build_rips_graph(p, 0.3).edges;
+  std::vector<CGAL::Epick::Point_3> epick;
+  std::vector<CGAL::Epeck::Point_3> epeck;
+  std::vector<CGAL::Epick_d<CGAL::Dynamic_dimension_tag>::Point_d> dyn;
+  std::vector<std::array<double, 3>> arr;
+  std::vector<Eigen::Vector3d> eig;
+  for (const auto& x : p) {
+    epick.emplace_back(x[0], x[1], x[2]);
+    epeck.emplace_back(x[0], x[1], x[2]);
+    dyn.emplace_back(x.begin(), x.end());
+    arr.push_back({x[0], x[1], x[2]});
+    eig.emplace_back(x[0], x[1], x[2]);
+  }
+  EXPECT_EQ(build_rips_graph(epick, 0.3).edges, expected);
+  EXPECT_EQ(build_rips_graph(epeck, 0.3).edges, expected);
+  EXPECT_EQ(build_rips_graph(dyn, 0.3).edges, expected);
+  EXPECT_EQ(build_rips_graph(arr, 0.3).edges, expected);
+  EXPECT_EQ(build_rips_graph(eig, 0.3).edges, expected);
+  // 2D CGAL points.
+  std::vector<CGAL::Epick::Point_2> p2;
+  Coords c2;
+  for (const auto& x : p) {
+    p2.emplace_back(x[0], x[1]);
+    c2.push_back({x[0], x[1]});
+  }
+  EXPECT_EQ(build_rips_graph(p2, 0.2).edges, build_rips_graph(c2, 0.2).edges);
+  // A user's own point type with its own traits.
+  struct My_point {
+    float xyz[3];
+  };
+  struct My_traits {
+    using Point = My_point;
+    std::size_t dimension(const My_point&) const { return 3; }
+    double coordinate(const My_point& p, std::size_t i) const { return p.xyz[i]; }
+  };
+  std::vector<My_point> mine;
+  Coords as_float;
+  for (const auto& x : p) {
+    mine.push_back({{float(x[0]), float(x[1]), float(x[2])}});
+    as_float.push_back({double(float(x[0])), double(float(x[1])), double(float(x[2]))});
+  }
+  EXPECT_EQ(build_rips_graph(mine, 0.3, {}, My_traits{}).edges, build_rips_graph(as_float, 0.3).edges);
+}
+
+TEST(DistanceMatrix, RipsAndKnnMatchPoints) {
+  const Coords p = random_points(60, 4, 8);
+  std::vector<std::vector<double>> D(p.size(), std::vector<double>(p.size()));
+  Eigen::MatrixXd M(p.size(), p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < p.size(); ++j) M(i, j) = D[i][j] = dist(p[i], p[j]);
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(D, 0.5).edges, brute_rips(p, 0.5));
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(M, 0.5).edges, brute_rips(p, 0.5));
+  EXPECT_EQ(build_knn_graph_from_distance_matrix(D, 5).edges, brute_knn(p, 5));
+  // Inclusive radius.
+  std::vector<std::vector<double>> E{{0, 1, 2}, {1, 0, 1}, {2, 1, 0}};
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(E, 1.0).number_of_edges(), 2u);
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(E, 2.0).number_of_edges(), 3u);
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(std::vector<std::vector<double>>{}, 1.0).number_of_vertices, 0u);
+}
+
+TEST(DistanceMatrix, BadMatricesNameTheEntry) {
+  auto expect_message = [](const std::vector<std::vector<double>>& D, const std::string& part) {
+    try {
+      build_rips_graph_from_distance_matrix(D, 1.0);
+      ADD_FAILURE() << "expected an exception for " << part;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  expect_message({{0, 1, 2}, {1, 0, 1}, {2, 1.5, 0}}, "not symmetric at (1, 2)");
+  expect_message({{0, -1}, {-1, 0}}, "entry (0, 1)");
+  expect_message({{0, 1}, {1, 0.5}}, "diagonal entry (1, 1)");
+  expect_message({{0, 1}, {1}}, "row 1");
+  expect_message({{0, std::nan("")}, {std::nan(""), 0}}, "entry (0, 1)");
+  Eigen::MatrixXd M(2, 3);
+  M.setZero();
+  EXPECT_THROW(build_rips_graph_from_distance_matrix(M, 1.0), std::invalid_argument);
+}
+
+TEST(BoostGraphInput, WeightedGraphBecomesCanonical) {
+  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                  boost::property<boost::edge_weight_t, double>>;
+  G g(5);
+  add_edge(3, 1, 2.0, g);
+  add_edge(0, 1, 1.0, g);
+  add_edge(1, 0, 7.0, g);  // parallel: first weight kept
+  add_edge(4, 4, 1.0, g);  // self-loop dropped
+  const Proximity_graph p = proximity_graph_from_boost_graph(g, get(boost::edge_weight, g));
+  EXPECT_EQ(p.number_of_vertices, 5u);
+  EXPECT_EQ(p.edges, (std::vector<Edge>{{0, 1}, {1, 3}}));
+  EXPECT_EQ(p.edge_lengths, (std::vector<double>{1.0, 2.0}));
+  add_edge(2, 3, -1.0, g);
+  try {
+    proximity_graph_from_boost_graph(g, get(boost::edge_weight, g));
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("edge 4"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FlagComplex, TrianglesAreTheThreeCliques) {
+  for (std::uint32_t seed : {1u, 2u, 3u}) {
+    const Coords p = random_points(120, 2, seed);
+    const Proximity_graph g = build_rips_graph(p, 0.15);
+    const Simplicial_complex_2 k = build_flag_complex_2(g);
+    EXPECT_EQ(k.triangles, brute_triangles(g));
+    EXPECT_TRUE(is_canonical(k));
+    EXPECT_EQ(k.edges, g.edges);
+  }
+  Proximity_graph bad;
+  bad.number_of_vertices = 2;
+  bad.edges = {{1, 0}};
+  EXPECT_THROW(build_flag_complex_2(bad), std::invalid_argument);
+}
+
+TEST(RipsGraph, SameInputSameOutput) {
+  const Coords p = random_points(500, 3, 77);
+  const Proximity_graph a = build_rips_graph(p, 0.1), b = build_rips_graph(p, 0.1);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.edge_lengths, b.edge_lengths);
+}
