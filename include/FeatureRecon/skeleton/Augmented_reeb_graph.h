@@ -167,10 +167,10 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   if (static_cast<std::size_t>(std::distance(std::begin(f), std::end(f))) != n)
     FeatureRecon::internal::throw_invalid_argument(fn, "f has ", std::distance(std::begin(f), std::end(f)),
                                                    " values for ", n, " vertices");
-  if (!is_canonical(K))
+  if (!internal::has_canonical_order(K))
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "the complex is not canonical (unsorted, repeated or out-of-range simplices, or a triangle "
-            "without its edges); build it with make_simplicial_complex_2()");
+        fn, "the complex is not canonical (unsorted, repeated or out-of-range simplices); build it with "
+            "make_simplicial_complex_2()");
   if (K.number_of_edges() + K.number_of_triangles() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) ||
       n >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
     FeatureRecon::internal::throw_invalid_argument(fn, "the complex is too large (", K.number_of_edges(),
@@ -224,28 +224,57 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     if (u > v) std::swap(u, v);
     const auto b = K.edges.begin() + first_edge[u], e = K.edges.begin() + first_edge[u + 1];
     const auto it = std::lower_bound(b, e, Edge{u, v});
-    FEATURERECON_assertion(it != e && (*it)[1] == v);
+    if (it == e || (*it)[1] != v)
+      FeatureRecon::internal::throw_invalid_argument(fn, "the complex is not canonical: edge (", u, ", ", v,
+                                                     ") of a triangle is missing");
     return static_cast<std::uint32_t>(it - K.edges.begin());
   };
 
-  // Per triangle, vertices by rank: a < b < c, and its edges ab, bc, ac.
+  // Sweep numbering: edges and triangles are renumbered by the rank of their lowest vertex, so that the
+  // level-set nodes alive at one time sit close together in memory (this matters for large complexes).
+  std::vector<std::uint32_t> edge_new(E), tri_new(T);
+  {
+    std::uint32_t c = 0;
+    for (std::size_t step = 0; step < n; ++step)
+      for (const std::uint32_t* e = up_edges.begin(R.m_order[step]); e != up_edges.end(R.m_order[step]); ++e)
+        edge_new[*e] = c++;
+    for (std::uint32_t& e : up_edges.items) e = edge_new[e];
+    for (std::uint32_t& e : down_edges.items) e = edge_new[e];
+  }
+
+  // Per triangle (in sweep numbering), with its vertices by rank a < b < c: its edges ab, bc, ac and the
+  // ranks of b and c (the deletion times of its lower and upper halves).
   struct Tri {
-    std::uint32_t ab, bc, ac;
+    std::uint32_t ab, bc, ac, rank_b, rank_c;
   };
   std::vector<Tri> tri(T);
-  std::vector<std::array<Vertex_index, 3>> sorted(T);
-  for (std::size_t t = 0; t < T; ++t) {
-    std::array<Vertex_index, 3> s = K.triangles[t];
-    std::sort(s.begin(), s.end(), [&](Vertex_index x, Vertex_index y) { return rank[x] < rank[y]; });
-    sorted[t] = s;
-    tri[t] = Tri{edge_id(s[0], s[1]), edge_id(s[1], s[2]), edge_id(s[0], s[2])};
-  }
   internal::Buckets<std::uint32_t> by_min, by_mid, by_max;
-  by_min.build(n, T, [&](std::size_t t) { return sorted[t][0]; });
-  by_mid.build(n, T, [&](std::size_t t) { return sorted[t][1]; });
-  by_max.build(n, T, [&](std::size_t t) { return sorted[t][2]; });
-  sorted.clear();
-  sorted.shrink_to_fit();
+  {
+    std::vector<std::array<Vertex_index, 3>> sorted(T);
+    for (std::size_t t = 0; t < T; ++t) {
+      std::array<Vertex_index, 3> s = K.triangles[t];
+      std::sort(s.begin(), s.end(), [&](Vertex_index x, Vertex_index y) { return rank[x] < rank[y]; });
+      sorted[t] = s;
+    }
+    by_min.build(n, T, [&](std::size_t t) { return sorted[t][0]; });
+    std::uint32_t c = 0;
+    for (std::size_t step = 0; step < n; ++step)
+      for (const std::uint32_t* t = by_min.begin(R.m_order[step]); t != by_min.end(R.m_order[step]); ++t)
+        tri_new[*t] = c++;
+    for (std::size_t t = 0; t < T; ++t) {
+      const std::array<Vertex_index, 3>& s = sorted[t];
+      tri[tri_new[t]] = Tri{edge_new[edge_id(s[0], s[1])], edge_new[edge_id(s[1], s[2])],
+                            edge_new[edge_id(s[0], s[2])], rank[s[1]], rank[s[2]]};
+    }
+    by_mid.build(n, T, [&](std::size_t t) { return sorted[t][1]; });
+    by_max.build(n, T, [&](std::size_t t) { return sorted[t][2]; });
+    for (auto* b : {&by_min, &by_mid, &by_max})
+      for (std::uint32_t& t : b->items) t = tri_new[t];
+  }
+  edge_new.clear();
+  edge_new.shrink_to_fit();
+  tri_new.clear();
+  tri_new.shrink_to_fit();
 
   // Link-cut forest: nodes [0, E) are level-set vertices (edges of K), nodes [E, E+T) are level-set
   // edges (one per triangle: its lower half, then its upper half). Key of a level-set edge = rank of
@@ -257,28 +286,69 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   std::vector<std::int32_t> arc_of_root(E + T, -1);
   std::vector<std::uint32_t> stamp(E + T, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
 
+  // Number of forest edges at each level-set vertex: a vertex without any is its own tree, which lets
+  // most links skip the connectivity query (every edge of K starts isolated).
+  std::vector<std::uint32_t> forest_degree(E, 0);
   auto remove_level_edge = [&](std::uint32_t t) {
     if (!in_tree[t]) return;
-    const std::int32_t x = static_cast<std::int32_t>(E + t);
-    forest.cut(x, ends[t][0]);
-    forest.cut(x, ends[t][1]);
+    const std::int32_t p = ends[t][0], q = ends[t][1];
+    forest.cut_middle(static_cast<std::int32_t>(E + t), p, q);
+    --forest_degree[p];
+    --forest_degree[q];
     in_tree[t] = 0;
   };
   auto insert_level_edge = [&](std::uint32_t t, std::int32_t p, std::int32_t q, LCT::Key key) {
     const std::int32_t x = static_cast<std::int32_t>(E + t);
     forest.set_key(x, key);
     ends[t] = {p, q};
-    if (forest.connected(p, q)) {
-      const std::int32_t m = forest.path_min(p, q);
-      if (forest.key(m) >= key) return;  // the new edge closes a cycle and dies first: not in the forest
-      remove_level_edge(static_cast<std::uint32_t>(m - static_cast<std::int32_t>(E)));
+    if (forest_degree[p] != 0 && forest_degree[q] == 0) std::swap(p, q);
+    if (forest_degree[p] == 0) {
+      // p is a tree of its own: hang x below q and p below x.
+      forest.attach_isolated(x, q);
+      forest.attach_isolated(p, x);
+    } else {
+      std::int32_t m = forest.connected_path_min(p, q);
+      if (m != LCT::null) {
+        if (forest.key(m) >= key) return;  // the new edge closes a cycle and dies first: not in the forest
+        remove_level_edge(static_cast<std::uint32_t>(m - static_cast<std::int32_t>(E)));
+        forest.evert(p);
+      }
+      // p is now the root of its tree (and a splay root): hang x below q and p below x.
+      forest.attach_isolated(x, q);
+      forest.attach_root(p, x);
     }
-    forest.link(x, p);
-    forest.link(x, q);
+    ++forest_degree[p];
+    ++forest_degree[q];
     in_tree[t] = 1;
   };
 
-  std::vector<std::uint32_t> closing;  // arcs ending at the current vertex
+  // Groups the edges [eb, ee) of the star of a vertex into classes joined by the given triangles (whose two
+  // edges at the vertex are ab/ac for triangles above it, bc/ac for triangles below it); one edge per class
+  // goes to group_representatives.
+  std::vector<std::int32_t> slot(E, -1), group_parent;
+  std::vector<std::uint32_t> group_representatives;
+  auto group_edges = [&](const std::uint32_t* eb, const std::uint32_t* ee, const std::uint32_t* tb,
+                         const std::uint32_t* te, bool below_vertex) {
+    const std::size_t k = static_cast<std::size_t>(ee - eb);
+    group_parent.resize(k);
+    for (std::size_t i = 0; i < k; ++i) {
+      slot[eb[i]] = static_cast<std::int32_t>(i);
+      group_parent[i] = static_cast<std::int32_t>(i);
+    }
+    auto find = [&](std::int32_t i) {
+      while (group_parent[i] != i) i = group_parent[i] = group_parent[group_parent[i]];
+      return i;
+    };
+    for (const std::uint32_t* t = tb; t != te; ++t) {
+      const Tri& tr = tri[*t];
+      const std::int32_t i = find(slot[below_vertex ? tr.bc : tr.ab]), j = find(slot[tr.ac]);
+      if (i != j) group_parent[std::max(i, j)] = std::min(i, j);
+    }
+    group_representatives.clear();
+    for (std::size_t i = 0; i < k; ++i)
+      if (find(static_cast<std::int32_t>(i)) == static_cast<std::int32_t>(i)) group_representatives.push_back(eb[i]);
+  };
+
   for (std::size_t step = 0; step < n; ++step) {
     if ((step & 4095) == 0 &&
         !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(step) / n)) {
@@ -287,9 +357,11 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     }
     const Vertex_index x = R.m_order[step];
     const std::uint32_t below = static_cast<std::uint32_t>(2 * step + 1), above = below + 1;
-    // 1. The level-set components just below x that x touches: each is an arc ending at x.
-    for (const std::uint32_t* e = down_edges.begin(x); e != down_edges.end(x); ++e) {
-      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(*e));
+    // 1. The level-set components just below x that x touches: each is an arc ending at x. Edges into x
+    //    joined by a triangle (a, b, x) are in one component: only one root query per such group.
+    group_edges(down_edges.begin(x), down_edges.end(x), by_max.begin(x), by_max.end(x), true);
+    for (const std::uint32_t e : group_representatives) {
+      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(e));
       if (stamp[r] == below) continue;
       stamp[r] = below;
       const std::int32_t a = arc_of_root[r];
@@ -304,17 +376,17 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     //    at c), lower halves (ab, ac) of triangles with x at the bottom (deleted at b).
     for (const std::uint32_t* t = by_mid.begin(x); t != by_mid.end(x); ++t) {
       const Tri& tr = tri[*t];
-      insert_level_edge(*t, static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac),
-                        rank[upper_of(tr.ac)]);
+      insert_level_edge(*t, static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), tr.rank_c);
     }
     for (const std::uint32_t* t = by_min.begin(x); t != by_min.end(x); ++t) {
       const Tri& tr = tri[*t];
-      insert_level_edge(*t, static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac),
-                        rank[upper_of(tr.ab)]);
+      insert_level_edge(*t, static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), tr.rank_b);
     }
-    // 4. The components just above x that contain an edge leaving x: each starts an arc at x.
-    for (const std::uint32_t* e = up_edges.begin(x); e != up_edges.end(x); ++e) {
-      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(*e));
+    // 4. The components just above x that contain an edge leaving x: each starts an arc at x. Edges out
+    //    of x joined by a triangle (x, b, c) are in one component.
+    group_edges(up_edges.begin(x), up_edges.end(x), by_min.begin(x), by_min.end(x), false);
+    for (const std::uint32_t e : group_representatives) {
+      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(e));
       if (stamp[r] == above) continue;
       stamp[r] = above;
       arc_of_root[r] = static_cast<std::int32_t>(R.m_arcs.size());

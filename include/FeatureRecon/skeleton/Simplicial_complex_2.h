@@ -154,6 +154,25 @@ inline bool is_canonical(const Simplicial_complex_2& k) {
   return true;
 }
 
+namespace internal {
+/// The O(m) part of is_canonical(): sorted, unique, in-range simplices (not that triangles' edges exist).
+inline bool has_canonical_order(const Simplicial_complex_2& k) {
+  const Proximity_graph& g = k;
+  if (!g.edge_lengths.empty() && g.edge_lengths.size() != g.edges.size()) return false;
+  for (std::size_t i = 0; i < g.edges.size(); ++i) {
+    const Edge& e = g.edges[i];
+    if (!(e[0] < e[1] && e[1] < g.number_of_vertices)) return false;
+    if (i > 0 && !(g.edges[i - 1] < e)) return false;
+  }
+  for (std::size_t i = 0; i < k.triangles.size(); ++i) {
+    const Triangle& t = k.triangles[i];
+    if (!(t[0] < t[1] && t[1] < t[2] && t[2] < k.number_of_vertices)) return false;
+    if (i > 0 && !(k.triangles[i - 1] < t)) return false;
+  }
+  return true;
+}
+}  // namespace internal
+
 /// Connected components of the graph: a label per vertex in 0..count-1, numbered in the order of
 /// their smallest vertex. O(n + m).
 struct Connected_components {

@@ -38,6 +38,7 @@ class Link_cut_tree {
     Node& nx = m_nodes[x];
     FEATURERECON_precondition(nx.parent == null && nx.child[0] == null && nx.child[1] == null);
     nx.key = key;
+    nx.min_key = key;
     nx.min_node = x;
   }
 
@@ -89,13 +90,64 @@ class Link_cut_tree {
     return m_nodes[y].min_node;
   }
 
+  /// One pass for "are x and y connected, and if so which node has the minimum key on the path x..y":
+  /// returns that node, or null when x and y are in different trees (x is then the root of its tree).
+  /// \pre x != y.
+  std::int32_t connected_path_min(std::int32_t x, std::int32_t y) {
+    evert(x);
+    access(y);
+    std::int32_t r = y;
+    for (;;) {
+      push(r);
+      if (m_nodes[r].child[0] == null) break;
+      r = m_nodes[r].child[0];
+    }
+    splay(r);  // keeps the amortised bound of the walk; r is now the root of the splay tree of path root..y
+    // Not connected: x's tree was not touched since evert(x), so x is still its root and a splay root.
+    return r == x ? m_nodes[r].min_node : null;
+  }
+
+  /// Makes x, a node without any link, a child of y. O(1).
+  void attach_isolated(std::int32_t x, std::int32_t y) {
+    FEATURERECON_precondition(m_nodes[x].parent == null && m_nodes[x].child[0] == null && m_nodes[x].child[1] == null);
+    m_nodes[x].parent = y;
+  }
+
+  /// Makes x, the root of its tree and a splay root (as left by evert(x)), a child of y. O(1).
+  void attach_root(std::int32_t x, std::int32_t y) {
+    FEATURERECON_precondition(m_nodes[x].parent == null);
+    m_nodes[x].parent = y;
+  }
+
+  /// Removes a node t whose only two tree edges are t-x and t-y, without re-rooting: one access and two
+  /// splays. O(log n) amortised.
+  void cut_middle(std::int32_t t, std::int32_t x, std::int32_t y) {
+    access(t);
+    // t's left splay subtree is the path above t: detaching it cuts t from its parent (x, y or none).
+    Node& nt = m_nodes[t];
+    if (nt.child[0] != null) {
+      m_nodes[nt.child[0]].parent = null;
+      nt.child[0] = null;
+      pull(t);
+    }
+    // A neighbour below t tops its own preferred path (t has no preferred child after access), so once
+    // splayed its parent pointer is the path-parent t.
+    for (const std::int32_t u : {x, y}) {
+      splay(u);
+      if (m_nodes[u].parent == t) m_nodes[u].parent = null;
+    }
+    FEATURERECON_assertion(m_nodes[t].child[0] == null && m_nodes[t].child[1] == null);
+  }
+
  private:
-  struct Node {
+  struct alignas(32) Node {
     std::int32_t parent = null;
     std::int32_t child[2] = {null, null};
     std::int32_t min_node = null;
     Key key = infinite_key;
-    std::uint8_t reversed = 0;
+    Key min_key = infinite_key;  // key of min_node, kept here to save a dependent load in pull()
+    std::uint32_t reversed = 0;
+    std::uint32_t padding = 0;  // 32 bytes: a node never straddles a cache line
   };
 
   bool is_splay_root(std::int32_t x) const {
@@ -119,15 +171,13 @@ class Link_cut_tree {
     Key best_key = nx.key;
     for (int c = 0; c < 2; ++c) {
       const std::int32_t ch = nx.child[c];
-      if (ch != null) {
-        const std::int32_t m = m_nodes[ch].min_node;
-        if (m_nodes[m].key < best_key) {
-          best_key = m_nodes[m].key;
-          best = m;
-        }
+      if (ch != null && m_nodes[ch].min_key < best_key) {
+        best_key = m_nodes[ch].min_key;
+        best = m_nodes[ch].min_node;
       }
     }
     nx.min_node = best;
+    nx.min_key = best_key;
   }
 
   void rotate(std::int32_t x) {
@@ -144,8 +194,7 @@ class Link_cut_tree {
     m_nodes[p].parent = x;
     m_nodes[p].child[dx] = b;
     if (b != null) m_nodes[b].parent = p;
-    pull(p);
-    pull(x);
+    pull(p);  // x is pulled once, at the end of splay()
   }
 
   void splay(std::int32_t x) {
@@ -165,6 +214,7 @@ class Link_cut_tree {
       }
       rotate(x);
     }
+    pull(x);
   }
 
   void access(std::int32_t x) {

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Augmented Reeb graph build: FeatureRecon vs VTK's vtkReebGraph (triangles only) on the same complexes:
+// upright torus grids with a tilted height (100k, 400k, 4M triangles) and the Rips complex of the first
+// 30,000 Chicago GPS points at r = 12 m with the geodesic function.
+#include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+#include <FeatureRecon/skeleton/geodesic_function.h>
+#include <FeatureRecon/skeleton/rips_graph.h>
+
+#include <benchmark/benchmark.h>
+
+#ifdef FEATURERECON_WITH_VTK
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkEdgeListIterator.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkReebGraph.h>
+#endif
+
+#include <map>
+#include <memory>
+
+#include "bench_common.h"
+
+namespace {
+using namespace FeatureRecon;
+namespace sk = FeatureRecon::skeleton;
+
+struct Input {
+  sk::Simplicial_complex_2 complex;
+  std::vector<double> f;
+  std::vector<std::array<double, 3>> positions;
+};
+
+/// Inputs by name, built once per process.
+const Input& input(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<Input>> cache;
+  auto& slot = cache[name];
+  if (slot) return *slot;
+  slot = std::make_unique<Input>();
+  if (name == "chicago30k") {
+    const auto points = bench::chicago_points(30000);
+    slot->complex = sk::build_rips_complex_2(points, 12.0);
+    slot->f = sk::compute_geodesic_function(slot->complex).values;
+    for (const auto& p : points) slot->positions.push_back({p[0], p[1], 0.0});
+  } else {
+    const std::size_t kt = std::stoul(name.substr(5));  // "torusN": N thousand triangles
+    const std::size_t nu = kt == 100 ? 250 : kt == 400 ? 500 : 2000, nv = kt == 100 ? 200 : kt == 400 ? 400 : 1000;
+    bench::Torus t = bench::torus_grid(nu, nv);
+    slot->complex = std::move(t.complex);
+    slot->f = std::move(t.f);
+    slot->positions = std::move(t.positions);
+  }
+  return *slot;
+}
+
+void report(benchmark::State& state, const Input& in, std::size_t nodes, std::size_t arcs, std::size_t loops) {
+  state.counters["triangles"] = static_cast<double>(in.complex.number_of_triangles());
+  state.counters["nodes"] = static_cast<double>(nodes);
+  state.counters["arcs"] = static_cast<double>(arcs);
+  state.counters["loops"] = static_cast<double>(loops);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * in.complex.number_of_triangles()));
+}
+
+void BM_reeb_featurerecon(benchmark::State& state, const std::string& name) {
+  const Input& in = input(name);
+  sk::Reeb_graph R;
+  for (auto _ : state) {
+    const sk::Augmented_reeb_graph A = sk::compute_augmented_reeb_graph(in.complex, in.f);
+    R = A.reeb_graph();
+    benchmark::DoNotOptimize(R);
+  }
+  report(state, in, R.nodes.size(), R.arcs.size(), R.loops());
+}
+
+#ifdef FEATURERECON_WITH_VTK
+void BM_reeb_vtk(benchmark::State& state, const std::string& name) {
+  const Input& in = input(name);
+  vtkNew<vtkPolyData> mesh;
+  vtkNew<vtkPoints> pts;
+  for (const auto& p : in.positions) pts->InsertNextPoint(p[0], p[1], p[2]);
+  mesh->SetPoints(pts);
+  vtkNew<vtkCellArray> cells;
+  for (const auto& t : in.complex.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    cells->InsertNextCell(3, ids);
+  }
+  mesh->SetPolys(cells);
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetNumberOfTuples(static_cast<vtkIdType>(in.f.size()));
+  for (std::size_t i = 0; i < in.f.size(); ++i) scalars->SetValue(static_cast<vtkIdType>(i), in.f[i]);
+  mesh->GetPointData()->SetScalars(scalars);
+  std::size_t nodes = 0, arcs = 0, loops = 0;
+  for (auto _ : state) {
+    vtkNew<vtkReebGraph> graph;
+    if (graph->Build(mesh, scalars) < 0) state.SkipWithError("vtkReebGraph::Build failed");
+    nodes = static_cast<std::size_t>(graph->GetNumberOfVertices());
+    arcs = static_cast<std::size_t>(graph->GetNumberOfEdges());
+    // loops = arcs - nodes + components
+    std::vector<vtkIdType> parent(nodes);
+    for (std::size_t i = 0; i < nodes; ++i) parent[i] = static_cast<vtkIdType>(i);
+    auto find = [&](vtkIdType x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    std::size_t components = nodes;
+    vtkNew<vtkEdgeListIterator> it;
+    graph->GetEdges(it);
+    while (it->HasNext()) {
+      const vtkEdgeType e = it->Next();
+      const vtkIdType a = find(e.Source), b = find(e.Target);
+      if (a != b) {
+        parent[a] = b;
+        --components;
+      }
+    }
+    loops = arcs + components - nodes;
+  }
+  report(state, in, nodes, arcs, loops);
+}
+#endif
+
+void register_all() {
+  for (const std::string name : {"torus100", "torus400", "torus4000", "chicago30k"}) {
+    benchmark::RegisterBenchmark(("reeb/featurerecon/" + name).c_str(), BM_reeb_featurerecon, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->MinTime(1.0);
+#ifdef FEATURERECON_WITH_VTK
+    if (name != "torus4000")  // hours with VTK
+      benchmark::RegisterBenchmark(("reeb/vtk/" + name).c_str(), BM_reeb_vtk, name)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+#endif
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

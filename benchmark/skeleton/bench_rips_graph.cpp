@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Rips 2-complex construction: FeatureRecon (build_rips_graph + build_flag_complex_2) vs GUDHI
+// (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius.
+#include <FeatureRecon/skeleton/rips_graph.h>
+
+#include <benchmark/benchmark.h>
+
+#ifdef FEATURERECON_WITH_GUDHI
+#include <gudhi/Rips_complex.h>
+#include <gudhi/Simplex_tree.h>
+#include <gudhi/distance_functions.h>
+#endif
+
+#include <map>
+#include <memory>
+#include <random>
+
+#include "bench_common.h"
+
+namespace {
+using namespace FeatureRecon;
+namespace sk = FeatureRecon::skeleton;
+
+struct Case {
+  std::vector<std::vector<double>> points;
+  double radius = 0;
+};
+
+const Case& get_case(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<Case>> cache;
+  auto& slot = cache[name];
+  if (slot) return *slot;
+  slot = std::make_unique<Case>();
+  if (name == "chicago20k_r20") {
+    for (const auto& p : bench::chicago_points(20000)) slot->points.push_back({p[0], p[1]});
+    slot->radius = 20.0;
+  } else if (name == "chicago118k_r4") {
+    for (const auto& p : bench::chicago_points()) slot->points.push_back({p[0], p[1]});
+    slot->radius = 4.0;
+  } else if (name == "uniform3d_50k") {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 50000; ++i) slot->points.push_back({u(rng), u(rng), u(rng)});
+    slot->radius = 0.04;
+  } else if (name == "gaussian50d_5k") {
+    std::mt19937 rng(2);
+    std::normal_distribution<double> g(0, 1);
+    for (int i = 0; i < 5000; ++i) {
+      std::vector<double> p(50);
+      for (double& x : p) x = g(rng);
+      slot->points.push_back(p);
+    }
+    slot->radius = 6.5;
+  }
+  return *slot;
+}
+
+void BM_rips_featurerecon(benchmark::State& state, const std::string& name) {
+  const Case& c = get_case(name);
+  std::size_t simplices = 0;
+  for (auto _ : state) {
+    const sk::Simplicial_complex_2 k = sk::build_flag_complex_2(sk::build_rips_graph(c.points, c.radius));
+    simplices = k.number_of_vertices + k.number_of_edges() + k.number_of_triangles();
+    benchmark::DoNotOptimize(k);
+  }
+  state.counters["simplices"] = static_cast<double>(simplices);
+}
+
+#ifdef FEATURERECON_WITH_GUDHI
+void BM_rips_gudhi(benchmark::State& state, const std::string& name) {
+  const Case& c = get_case(name);
+  std::size_t simplices = 0;
+  for (auto _ : state) {
+    Gudhi::rips_complex::Rips_complex<double> rips(c.points, c.radius, Gudhi::Euclidean_distance());
+    Gudhi::Simplex_tree<> st;
+    rips.create_complex(st, 2);
+    simplices = st.num_simplices();
+    benchmark::DoNotOptimize(st);
+  }
+  state.counters["simplices"] = static_cast<double>(simplices);
+}
+#endif
+
+void register_all() {
+  for (const std::string name : {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k"}) {
+    benchmark::RegisterBenchmark(("rips/featurerecon/" + name).c_str(), BM_rips_featurerecon, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->MinTime(1.0);
+#ifdef FEATURERECON_WITH_GUDHI
+    benchmark::RegisterBenchmark(("rips/gudhi/" + name).c_str(), BM_rips_gudhi, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+#endif
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
