@@ -55,3 +55,21 @@ file(READ ${WORK}/fig8_bf.txt b)
 if(NOT a STREQUAL b)
   message(SEND_ERROR "kd-tree and brute-force searches wrote different complexes")
 endif()
+
+# Same input, same bytes.
+expect(rips_again 0 "wrote" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --out ${WORK}/fig8_again.txt --quiet)
+file(READ ${WORK}/fig8_again.txt c)
+if(NOT a STREQUAL c)
+  message(SEND_ERROR "two runs on the same input wrote different complexes")
+endif()
+
+# Empty input is not an error.
+file(WRITE ${WORK}/empty.xyz "# no points\n")
+expect(rips_empty 0 "wrote .*empty.txt: 0 vertices" rips --points ${WORK}/empty.xyz --radius 1 --out ${WORK}/empty.txt --quiet)
+expect(reeb_empty 0 "\"vertices\": 0,.*\"nodes\": 0,.*\"components\": 0" reeb --complex ${WORK}/empty.txt --json)
+# One point in 5 dimensions, then duplicates.
+file(WRITE ${WORK}/one.xyz "1 2 3 4 5\n")
+expect(rips_one 0 "1 vertices, 0 edges.*dimension 5" rips --points ${WORK}/one.xyz --radius 1 --out ${WORK}/one.txt --quiet)
+expect(reeb_one 0 "\"nodes\": 1,.*\"minima\": 1, \"maxima\": 1" reeb --complex ${WORK}/one.txt --json)
+file(WRITE ${WORK}/dup.xyz "0 0\n0 0\n0 0\n3 0\n")
+expect(rips_dup 0 "4 vertices, 3 edges, 1 triangles, 2 components" rips --points ${WORK}/dup.xyz --radius 0 --out ${WORK}/dup.txt --quiet)

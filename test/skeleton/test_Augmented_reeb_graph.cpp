@@ -285,3 +285,43 @@ TEST(AugmentedReebGraph, SurfaceMeshWithVertexPropertyMap) {
   auto h2 = quad.add_property_map<Mesh::Vertex_index, double>("v:h", 0.0).first;
   EXPECT_THROW(compute_augmented_reeb_graph(quad, h2), std::invalid_argument);
 }
+
+TEST(AugmentedReebGraph, DuplicatedPointsKeepTheLoops) {
+  // Every point of a noisy figure-eight twice: duplicates are joined at length 0, so the geodesic function has
+  // ties everywhere; the Reeb graph still has the two loops.
+  const auto s = sample_segments(figure_eight_segments(), 0.3, 0.05, 21);
+  std::vector<std::array<double, 2>> doubled;
+  for (const auto& p : s.points) {
+    doubled.push_back(p);
+    doubled.push_back(p);
+  }
+  const Simplicial_complex_2 K1 = build_rips_complex_2(s.points, 0.7);
+  const Simplicial_complex_2 K2 = build_rips_complex_2(doubled, 0.7);
+  const auto f1 = compute_geodesic_function(K1).values;
+  const auto f2 = compute_geodesic_function(K2).values;
+  EXPECT_EQ(compute_augmented_reeb_graph(K1, f1).reeb_graph().loops(), 2u);
+  EXPECT_EQ(compute_augmented_reeb_graph(K2, f2).reeb_graph().loops(), 2u);
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(K2, f2)), brute_force_reeb_arcs(K2, f2));
+}
+
+TEST(AugmentedReebGraph, CollinearAndGridPointClouds) {
+  // A line of points (a path): one arc. A 6x6 unit grid at r = 1 (4-neighbour graph, no triangles): the geodesic
+  // function from a corner has many ties; every square of the grid is a loop of the 1-skeleton, and with the
+  // Manhattan distance each square has a unique top and bottom, so the Reeb graph keeps all 25 of them.
+  std::vector<std::array<double, 2>> line, grid;
+  for (int i = 0; i < 20; ++i) line.push_back({double(i), 0.0});
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) grid.push_back({double(i), double(j)});
+  const Simplicial_complex_2 KL = build_rips_complex_2(line, 1.0);
+  const Reeb_graph RL = compute_augmented_reeb_graph(KL, compute_geodesic_function(KL).values).reeb_graph();
+  EXPECT_EQ(RL.arcs.size(), 1u);
+  EXPECT_EQ(RL.loops(), 0u);
+  const Simplicial_complex_2 KG = build_rips_complex_2(grid, 1.0);
+  ASSERT_EQ(KG.number_of_triangles(), 0u);
+  const auto fg = compute_geodesic_function(KG).values;
+  EXPECT_EQ(compute_augmented_reeb_graph(KG, fg).reeb_graph().loops(), 25u);
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(KG, fg)), brute_force_reeb_arcs(KG, fg));
+  // With the diagonals (r = 1.5) every square is filled: a contractible complex, no loop.
+  const Simplicial_complex_2 KD = build_rips_complex_2(grid, 1.5);
+  EXPECT_EQ(compute_augmented_reeb_graph(KD, compute_geodesic_function(KD).values).reeb_graph().loops(), 0u);
+}
