@@ -189,10 +189,13 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     }
   }
   const std::vector<double>& val = R.m_values;
-  R.m_order.resize(n);
-  std::iota(R.m_order.begin(), R.m_order.end(), Vertex_index(0));
-  std::sort(R.m_order.begin(), R.m_order.end(),
-            [&](Vertex_index a, Vertex_index b) { return val[a] < val[b] || (val[a] == val[b] && a < b); });
+  {
+    std::vector<std::pair<double, Vertex_index>> keyed(n);  // contiguous keys sort faster than indirection
+    for (std::size_t i = 0; i < n; ++i) keyed[i] = {val[i], static_cast<Vertex_index>(i)};
+    std::sort(keyed.begin(), keyed.end());
+    R.m_order.resize(n);
+    for (std::size_t i = 0; i < n; ++i) R.m_order[i] = keyed[i].second;
+  }
   R.m_rank.resize(n);
   for (std::size_t i = 0; i < n; ++i) R.m_rank[R.m_order[i]] = static_cast<Vertex_index>(i);
   const std::vector<Vertex_index>& rank = R.m_rank;
@@ -204,14 +207,9 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
 
   // Per vertex: edges whose lower / upper end it is (by rank).
   const std::size_t E = K.number_of_edges(), T = K.number_of_triangles();
-  auto lower_of = [&](std::size_t e) {
-    const Edge& ed = K.edges[e];
-    return rank[ed[0]] < rank[ed[1]] ? ed[0] : ed[1];
-  };
-  auto upper_of = [&](std::size_t e) {
-    const Edge& ed = K.edges[e];
-    return rank[ed[0]] < rank[ed[1]] ? ed[1] : ed[0];
-  };
+  // Buckets are keyed by sweep step (rank), not by vertex: the sweep then reads them sequentially.
+  auto lower_of = [&](std::size_t e) { return std::min(rank[K.edges[e][0]], rank[K.edges[e][1]]); };
+  auto upper_of = [&](std::size_t e) { return std::max(rank[K.edges[e][0]], rank[K.edges[e][1]]); };
   internal::Buckets<std::uint32_t> up_edges, down_edges;
   up_edges.build(n, E, lower_of);
   down_edges.build(n, E, upper_of);
@@ -236,7 +234,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   {
     std::uint32_t c = 0;
     for (std::size_t step = 0; step < n; ++step)
-      for (const std::uint32_t* e = up_edges.begin(R.m_order[step]); e != up_edges.end(R.m_order[step]); ++e)
+      for (const std::uint32_t* e = up_edges.begin(step); e != up_edges.end(step); ++e)
         edge_new[*e] = c++;
     for (std::uint32_t& e : up_edges.items) e = edge_new[e];
     for (std::uint32_t& e : down_edges.items) e = edge_new[e];
@@ -256,18 +254,18 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
       std::sort(s.begin(), s.end(), [&](Vertex_index x, Vertex_index y) { return rank[x] < rank[y]; });
       sorted[t] = s;
     }
-    by_min.build(n, T, [&](std::size_t t) { return sorted[t][0]; });
+    by_min.build(n, T, [&](std::size_t t) { return rank[sorted[t][0]]; });
     std::uint32_t c = 0;
     for (std::size_t step = 0; step < n; ++step)
-      for (const std::uint32_t* t = by_min.begin(R.m_order[step]); t != by_min.end(R.m_order[step]); ++t)
+      for (const std::uint32_t* t = by_min.begin(step); t != by_min.end(step); ++t)
         tri_new[*t] = c++;
     for (std::size_t t = 0; t < T; ++t) {
       const std::array<Vertex_index, 3>& s = sorted[t];
       tri[tri_new[t]] = Tri{edge_new[edge_id(s[0], s[1])], edge_new[edge_id(s[1], s[2])],
                             edge_new[edge_id(s[0], s[2])], rank[s[1]], rank[s[2]]};
     }
-    by_mid.build(n, T, [&](std::size_t t) { return sorted[t][1]; });
-    by_max.build(n, T, [&](std::size_t t) { return sorted[t][2]; });
+    by_mid.build(n, T, [&](std::size_t t) { return rank[sorted[t][1]]; });
+    by_max.build(n, T, [&](std::size_t t) { return rank[sorted[t][2]]; });
     for (auto* b : {&by_min, &by_mid, &by_max})
       for (std::uint32_t& t : b->items) t = tri_new[t];
   }
@@ -359,7 +357,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     const std::uint32_t below = static_cast<std::uint32_t>(2 * step + 1), above = below + 1;
     // 1. The level-set components just below x that x touches: each is an arc ending at x. Edges into x
     //    joined by a triangle (a, b, x) are in one component: only one root query per such group.
-    group_edges(down_edges.begin(x), down_edges.end(x), by_max.begin(x), by_max.end(x), true);
+    group_edges(down_edges.begin(step), down_edges.end(step), by_max.begin(step), by_max.end(step), true);
     for (const std::uint32_t e : group_representatives) {
       const std::int32_t r = forest.find_root(static_cast<std::int32_t>(e));
       if (stamp[r] == below) continue;
@@ -370,21 +368,21 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     }
     // 2. Level-set edges deleted at x: lower halves of triangles with x in the middle, upper halves
     //    of triangles with x on top.
-    for (const std::uint32_t* t = by_mid.begin(x); t != by_mid.end(x); ++t) remove_level_edge(*t);
-    for (const std::uint32_t* t = by_max.begin(x); t != by_max.end(x); ++t) remove_level_edge(*t);
+    for (const std::uint32_t* t = by_mid.begin(step); t != by_mid.end(step); ++t) remove_level_edge(*t);
+    for (const std::uint32_t* t = by_max.begin(step); t != by_max.end(step); ++t) remove_level_edge(*t);
     // 3. Level-set edges born at x: upper halves (bc, ac) of triangles with x in the middle (deleted
     //    at c), lower halves (ab, ac) of triangles with x at the bottom (deleted at b).
-    for (const std::uint32_t* t = by_mid.begin(x); t != by_mid.end(x); ++t) {
+    for (const std::uint32_t* t = by_mid.begin(step); t != by_mid.end(step); ++t) {
       const Tri& tr = tri[*t];
       insert_level_edge(*t, static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), tr.rank_c);
     }
-    for (const std::uint32_t* t = by_min.begin(x); t != by_min.end(x); ++t) {
+    for (const std::uint32_t* t = by_min.begin(step); t != by_min.end(step); ++t) {
       const Tri& tr = tri[*t];
       insert_level_edge(*t, static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), tr.rank_b);
     }
     // 4. The components just above x that contain an edge leaving x: each starts an arc at x. Edges out
     //    of x joined by a triangle (x, b, c) are in one component.
-    group_edges(up_edges.begin(x), up_edges.end(x), by_min.begin(x), by_min.end(x), false);
+    group_edges(up_edges.begin(step), up_edges.end(step), by_min.begin(step), by_min.end(step), false);
     for (const std::uint32_t e : group_representatives) {
       const std::int32_t r = forest.find_root(static_cast<std::int32_t>(e));
       if (stamp[r] == above) continue;

@@ -128,17 +128,19 @@ struct Brute_force_index {
       for (std::size_t c = 0; c < m.dimension; ++c) centred(c, i) = m.row(i)[c] - mean[c];
     norms = centred.colwise().squaredNorm().transpose();
   }
-  /// Calls visit(i, j, approximate squared distance, error bound) for every i in [b, e) and every j.
+  /// Calls visit(i, j, approximate squared distance, error bound) for every i in [b, e) and every j >= from.
   template <class Visit>
-  void block(std::size_t b, std::size_t e, Visit visit) const {
+  void block(std::size_t b, std::size_t e, std::size_t from, Visit visit) const {
     const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
-    const Eigen::MatrixXd gram = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() * centred;
+    const Eigen::Index nc = static_cast<Eigen::Index>(m.rows - from);
+    const Eigen::MatrixXd gram = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() *
+                                 centred.middleCols(static_cast<Eigen::Index>(from), nc);
     const double eps = std::numeric_limits<double>::epsilon();
     for (Eigen::Index r = 0; r < nb; ++r) {
       const std::size_t i = b + static_cast<std::size_t>(r);
-      for (std::size_t j = 0; j < m.rows; ++j) {
+      for (std::size_t j = from; j < m.rows; ++j) {
         const double ni = norms[static_cast<Eigen::Index>(i)], nj = norms[static_cast<Eigen::Index>(j)];
-        const double d2 = ni + nj - 2 * gram(r, static_cast<Eigen::Index>(j));
+        const double d2 = ni + nj - 2 * gram(r, static_cast<Eigen::Index>(j - from));
         visit(i, j, d2, 8 * (m.dimension + 4) * eps * (ni + nj) + 1e-300);
       }
     }
@@ -198,7 +200,7 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
     const double r2 = radius * radius;
     for (std::size_t b = 0; b < n; b += block) {
       if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) break;
-      index.block(b, std::min(n, b + block), [&](std::size_t i, std::size_t j, double d2, double err) {
+      index.block(b, std::min(n, b + block), b, [&](std::size_t i, std::size_t j, double d2, double err) {
         if (j > i && d2 <= r2 * (1 + 1e-12) + err &&
             internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius))
           g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
@@ -276,7 +278,7 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
           if (d2 <= kth + 2 * max_err) cand.push_back(j);
         select(i);
       };
-      index.block(b, std::min(n, b + block), [&](std::size_t i, std::size_t j, double d2, double err) {
+      index.block(b, std::min(n, b + block), 0, [&](std::size_t i, std::size_t j, double d2, double err) {
         if (i != current) {
           flush(current);
           current = i;
