@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Large_array_allocator.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/internal/Link_cut_tree.h>
 #include <FeatureRecon/skeleton/skeleton_options.h>
@@ -126,16 +127,16 @@ namespace internal {
 /// Compressed lists: for each key 0..n-1 the values pushed with it, in push order.
 template <class T>
 struct Buckets {
-  std::vector<std::size_t> offset;
-  std::vector<T> items;
+  FeatureRecon::internal::Large_vector<std::size_t> offset;
+  FeatureRecon::internal::Large_vector<T> items;
   template <class KeyOf>
-  void build(std::size_t n, std::size_t count, KeyOf key_of, const std::vector<T>* values = nullptr) {
+  void build(std::size_t n, std::size_t count, KeyOf key_of) {
     offset.assign(n + 1, 0);
     for (std::size_t i = 0; i < count; ++i) ++offset[key_of(i) + 1];
     for (std::size_t k = 0; k < n; ++k) offset[k + 1] += offset[k];
     items.resize(count);
-    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
-    for (std::size_t i = 0; i < count; ++i) items[fill[key_of(i)]++] = values ? (*values)[i] : static_cast<T>(i);
+    FeatureRecon::internal::Large_vector<std::size_t> fill(offset.begin(), offset.end() - 1);
+    for (std::size_t i = 0; i < count; ++i) items[fill[key_of(i)]++] = static_cast<T>(i);
   }
   const T* begin(std::size_t k) const { return items.data() + offset[k]; }
   const T* end(std::size_t k) const { return items.data() + offset[k + 1]; }
@@ -190,7 +191,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   }
   const std::vector<double>& val = R.m_values;
   {
-    std::vector<std::pair<double, Vertex_index>> keyed(n);  // contiguous keys sort faster than indirection
+    FeatureRecon::internal::Large_vector<std::pair<double, Vertex_index>> keyed(n);  // contiguous keys sort faster than indirection
     for (std::size_t i = 0; i < n; ++i) keyed[i] = {val[i], static_cast<Vertex_index>(i)};
     std::sort(keyed.begin(), keyed.end());
     R.m_order.resize(n);
@@ -215,7 +216,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   down_edges.build(n, E, upper_of);
 
   // Edge lookup: edges starting at u (smaller index) are contiguous.
-  std::vector<std::size_t> first_edge(n + 1, 0);
+  FeatureRecon::internal::Large_vector<std::size_t> first_edge(n + 1, 0);
   for (const Edge& e : K.edges) ++first_edge[e[0] + 1];
   for (std::size_t v = 0; v < n; ++v) first_edge[v + 1] += first_edge[v];
   auto edge_id = [&](Vertex_index u, Vertex_index v) -> std::uint32_t {
@@ -230,7 +231,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
 
   // Sweep numbering: edges and triangles are renumbered by the rank of their lowest vertex, so that the
   // level-set nodes alive at one time sit close together in memory (this matters for large complexes).
-  std::vector<std::uint32_t> edge_new(E), tri_new(T);
+  FeatureRecon::internal::Large_vector<std::uint32_t> edge_new(E), tri_new(T);
   {
     std::uint32_t c = 0;
     for (std::size_t step = 0; step < n; ++step)
@@ -245,10 +246,10 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   struct Tri {
     std::uint32_t ab, bc, ac, rank_b, rank_c;
   };
-  std::vector<Tri> tri(T);
+  FeatureRecon::internal::Large_vector<Tri> tri(T);
   internal::Buckets<std::uint32_t> by_min, by_mid, by_max;
   {
-    std::vector<std::array<Vertex_index, 3>> sorted(T);
+    FeatureRecon::internal::Large_vector<std::array<Vertex_index, 3>> sorted(T);
     for (std::size_t t = 0; t < T; ++t) {
       std::array<Vertex_index, 3> s = K.triangles[t];
       std::sort(s.begin(), s.end(), [&](Vertex_index x, Vertex_index y) { return rank[x] < rank[y]; });
@@ -279,14 +280,14 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   // the vertex at which it is deleted.
   using LCT = internal::Link_cut_tree;
   LCT forest(E + T);
-  std::vector<std::uint8_t> in_tree(T, 0);
-  std::vector<std::array<std::int32_t, 2>> ends(T);
-  std::vector<std::int32_t> arc_of_root(E + T, -1);
-  std::vector<std::uint32_t> stamp(E + T, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
+  FeatureRecon::internal::Large_vector<std::uint8_t> in_tree(T, 0);
+  FeatureRecon::internal::Large_vector<std::array<std::int32_t, 2>> ends(T);
+  FeatureRecon::internal::Large_vector<std::int32_t> arc_of_root(E + T, -1);
+  FeatureRecon::internal::Large_vector<std::uint32_t> stamp(E + T, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
 
   // Number of forest edges at each level-set vertex: a vertex without any is its own tree, which lets
   // most links skip the connectivity query (every edge of K starts isolated).
-  std::vector<std::uint32_t> forest_degree(E, 0);
+  FeatureRecon::internal::Large_vector<std::uint32_t> forest_degree(E, 0);
   auto remove_level_edge = [&](std::uint32_t t) {
     if (!in_tree[t]) return;
     const std::int32_t p = ends[t][0], q = ends[t][1];
@@ -323,7 +324,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   // Groups the edges [eb, ee) of the star of a vertex into classes joined by the given triangles (whose two
   // edges at the vertex are ab/ac for triangles above it, bc/ac for triangles below it); one edge per class
   // goes to group_representatives.
-  std::vector<std::int32_t> slot(E, -1), group_parent;
+  FeatureRecon::internal::Large_vector<std::int32_t> slot(E, -1);
+  std::vector<std::int32_t> group_parent;
   std::vector<std::uint32_t> group_representatives;
   auto group_edges = [&](const std::uint32_t* eb, const std::uint32_t* ee, const std::uint32_t* tb,
                          const std::uint32_t* te, bool below_vertex) {

@@ -4,6 +4,7 @@
 #define FEATURERECON_SKELETON_INTERNAL_LINK_CUT_TREE_H
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/Large_array_allocator.h>
 
 #include <cstdint>
 #include <limits>
@@ -228,7 +229,7 @@ class Link_cut_tree {
     splay(x);
   }
 
-  std::vector<Node> m_nodes;
+  FeatureRecon::internal::Large_vector<Node> m_nodes;
   std::vector<std::int32_t> m_stack;
 };
 /// \endcond
