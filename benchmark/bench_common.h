@@ -6,6 +6,8 @@
 
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 
+#include <benchmark/benchmark.h>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -73,6 +75,16 @@ inline std::vector<std::array<double, 2>> chicago_points(std::size_t max_points 
     std::exit(1);
   }
   return p;
+}
+
+/// main() of a benchmark program whose benchmarks are registered at run time by `register_all`.
+inline int run_benchmarks(int argc, char** argv, void (*register_all)()) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
 }
 
 }  // namespace bench

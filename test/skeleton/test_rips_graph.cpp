@@ -312,3 +312,30 @@ TEST(RipsGraph, SameInputSameOutput) {
   EXPECT_EQ(a.edges, b.edges);
   EXPECT_EQ(a.edge_lengths, b.edge_lengths);
 }
+
+TEST(EveryEntryPoint, EmptyAndTiedInputs) {
+  // Empty graph and complex.
+  const Simplicial_complex_2 empty = build_flag_complex_2(Proximity_graph{});
+  EXPECT_EQ(empty.number_of_vertices, 0u);
+  EXPECT_TRUE(empty.triangles.empty());
+  EXPECT_EQ(make_simplicial_complex_2(0, {}, {}).number_of_vertices, 0u);
+  // Distance matrices with duplicates (zero off the diagonal) and all-equal distances: ties by index.
+  const std::vector<std::vector<double>> dup{{0, 0, 1}, {0, 0, 1}, {1, 1, 0}};
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(dup, 0.0).edges, (std::vector<Edge>{{0, 1}}));
+  std::vector<std::vector<double>> equal(5, std::vector<double>(5, 2.0));
+  for (int i = 0; i < 5; ++i) equal[i][i] = 0;
+  // Each vertex picks the two smallest other indices: 0->{1,2}, 1->{0,2}, 2->{0,1}, 3->{0,1}, 4->{0,1}.
+  EXPECT_EQ(build_knn_graph_from_distance_matrix(equal, 2).edges,
+            (std::vector<Edge>{{0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {1, 4}}));
+  EXPECT_EQ(build_knn_graph_from_distance_matrix(std::vector<std::vector<double>>{{0}}, 2).number_of_edges(), 0u);
+  // Points: all the same (a single cluster of duplicates) gives the complete graph at any radius and k.
+  const Coords same(6, std::vector<double>{1.5, -2.0, 3.0});
+  EXPECT_EQ(build_rips_graph(same, 0.0).number_of_edges(), 15u);
+  EXPECT_EQ(build_flag_complex_2(build_rips_graph(same, 0.0)).number_of_triangles(), 20u);
+  EXPECT_EQ(build_knn_graph(same, 2).edges, brute_knn(same, 2));
+  // An empty Boost graph.
+  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                  boost::property<boost::edge_weight_t, double>>;
+  const G g0;
+  EXPECT_EQ(proximity_graph_from_boost_graph(g0, get(boost::edge_weight, g0)).number_of_vertices, 0u);
+}

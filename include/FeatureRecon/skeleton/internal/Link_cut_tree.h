@@ -55,14 +55,7 @@ class Link_cut_tree {
   /// Root of the represented tree of x (does not change the represented tree).
   std::int32_t find_root(std::int32_t x) {
     access(x);
-    std::int32_t r = x;
-    for (;;) {
-      push(r);
-      if (m_nodes[r].child[0] == null) break;
-      r = m_nodes[r].child[0];
-    }
-    splay(r);
-    return r;
+    return splay_leftmost(x);
   }
 
   bool connected(std::int32_t x, std::int32_t y) { return x == y || find_root(x) == find_root(y); }
@@ -97,13 +90,7 @@ class Link_cut_tree {
   std::int32_t connected_path_min(std::int32_t x, std::int32_t y) {
     evert(x);
     access(y);
-    std::int32_t r = y;
-    for (;;) {
-      push(r);
-      if (m_nodes[r].child[0] == null) break;
-      r = m_nodes[r].child[0];
-    }
-    splay(r);  // keeps the amortised bound of the walk; r is now the root of the splay tree of path root..y
+    const std::int32_t r = splay_leftmost(y);  // the root of y's tree, now the root of the splay of path root..y
     // Not connected: x's tree was not touched since evert(x), so x is still its root and a splay root.
     return r == x ? m_nodes[r].min_node : null;
   }
@@ -150,6 +137,19 @@ class Link_cut_tree {
     std::uint32_t reversed = 0;
     std::uint32_t padding = 0;  // 32 bytes: a node never straddles a cache line
   };
+
+  /// The leftmost node of the splay tree rooted at x (the shallowest node of its path), splayed to the
+  /// root: the splay keeps the walk amortised O(log n).
+  std::int32_t splay_leftmost(std::int32_t x) {
+    std::int32_t r = x;
+    for (;;) {
+      push(r);
+      if (m_nodes[r].child[0] == null) break;
+      r = m_nodes[r].child[0];
+    }
+    splay(r);
+    return r;
+  }
 
   bool is_splay_root(std::int32_t x) const {
     const std::int32_t p = m_nodes[x].parent;
