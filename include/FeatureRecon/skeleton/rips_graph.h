@@ -113,11 +113,14 @@ struct Kd_index {
   }
 };
 
-/// Squared norms and a block of Gram products: all-pairs distances with Eigen, blockwise.
+/// All-pairs squared distances with Eigen, blockwise, from a single-precision Gram matrix (twice the SIMD
+/// width of double). Each value comes with a rigorous bound on its error, covering the rounding of the
+/// centred coordinates to float and the float products, so that candidates can be filtered safely and then
+/// decided exactly on the original doubles.
 struct Brute_force_index {
   const Point_matrix& m;
-  Eigen::MatrixXd centred;  // d x n
-  Eigen::VectorXd norms;
+  Eigen::MatrixXf centred;  // d x n, coordinates minus their mean, rounded to float
+  Eigen::VectorXd norms;    // squared norms of the float columns, in double
   explicit Brute_force_index(const Point_matrix& pm) : m(pm) {
     centred.resize(static_cast<Eigen::Index>(m.dimension), static_cast<Eigen::Index>(m.rows));
     Eigen::VectorXd mean = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.dimension));
@@ -125,23 +128,27 @@ struct Brute_force_index {
       for (std::size_t c = 0; c < m.dimension; ++c) mean[c] += m.row(i)[c];
     if (m.rows > 0) mean /= static_cast<double>(m.rows);
     for (std::size_t i = 0; i < m.rows; ++i)
-      for (std::size_t c = 0; c < m.dimension; ++c) centred(c, i) = m.row(i)[c] - mean[c];
-    norms = centred.colwise().squaredNorm().transpose();
+      for (std::size_t c = 0; c < m.dimension; ++c) centred(c, i) = static_cast<float>(m.row(i)[c] - mean[c]);
+    norms = centred.cast<double>().colwise().squaredNorm().transpose();
   }
   /// Calls visit(i, j, approximate squared distance, error bound) for every i in [b, e) and every j >= from.
   template <class Visit>
   void block(std::size_t b, std::size_t e, std::size_t from, Visit visit) const {
     const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
     const Eigen::Index nc = static_cast<Eigen::Index>(m.rows - from);
-    const Eigen::MatrixXd gram = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() *
+    const Eigen::MatrixXf gram = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() *
                                  centred.middleCols(static_cast<Eigen::Index>(from), nc);
-    const double eps = std::numeric_limits<double>::epsilon();
+    // |error| <= d u (|p|^2 + |q|^2) for the float dot product plus 4 u (|p|^2 + |q|^2) for rounding the
+    // coordinates to float (u = 2^-24); doubled for safety.
+    const double u = std::numeric_limits<float>::epsilon() / 2;
+    const double factor = 2 * (static_cast<double>(m.dimension) + 8) * u;
     for (Eigen::Index r = 0; r < nb; ++r) {
       const std::size_t i = b + static_cast<std::size_t>(r);
+      const double ni = norms[static_cast<Eigen::Index>(i)];
       for (std::size_t j = from; j < m.rows; ++j) {
-        const double ni = norms[static_cast<Eigen::Index>(i)], nj = norms[static_cast<Eigen::Index>(j)];
-        const double d2 = ni + nj - 2 * gram(r, static_cast<Eigen::Index>(j - from));
-        visit(i, j, d2, 8 * (m.dimension + 4) * eps * (ni + nj) + 1e-300);
+        const double nj = norms[static_cast<Eigen::Index>(j)];
+        const double d2 = ni + nj - 2 * static_cast<double>(gram(r, static_cast<Eigen::Index>(j - from)));
+        visit(i, j, d2, factor * (ni + nj) + 1e-300);
       }
     }
   }
