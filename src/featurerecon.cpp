@@ -35,7 +35,7 @@ const std::vector<Command>& commands() {
        "  --quiet          no progress on standard error\n",
        run_rips},
       {"reeb", "Reeb graph of the function of a complex file",
-       "usage: featurerecon reeb --complex COMPLEX [--json] [--quiet]\n"
+       "usage: featurerecon reeb --complex COMPLEX [--json [--persistence]] [--quiet]\n"
        "\n"
        "Computes the augmented Reeb graph of the PL function f of the complex (ties broken by vertex index)\n"
        "and reports the Reeb graph (critical nodes only).\n"
@@ -44,6 +44,9 @@ const std::vector<Command>& commands() {
        "  --json           print one JSON object: vertices, edges, triangles, nodes, arcs, loops (first Betti\n"
        "                   number of the Reeb graph), minima, maxima, up_forks, down_forks, components,\n"
        "                   augmented_arcs, seconds (Reeb graph time only)\n"
+       "  --persistence    with --json, also branch_pairs (minimum with the down-fork where its branch ends, and\n"
+       "                   maximum with its up-fork) and loop_pairs (essential down-fork with the up-fork at the\n"
+       "                   bottom of its thinnest loop), each a list of [birth, death] function values\n"
        "  --quiet          no progress on standard error\n",
        run_reeb},
   };

@@ -4,6 +4,7 @@
 
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
+#include <FeatureRecon/skeleton/reeb_graph_persistence.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
 #include <chrono>
@@ -81,7 +82,8 @@ int run_rips(const std::vector<std::string>& argv) {
 }
 
 int run_reeb(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"json", "quiet"}, {"complex"});
+  const Arguments args(argv, {"json", "quiet", "persistence"}, {"complex"});
+  if (args.has("persistence") && !args.has("json")) throw Usage_error("--persistence goes with --json");
   const io::Complex_file cf = io::read_complex(args.get("complex"));
   const bool quiet = args.has("quiet") || args.has("json");
   Progress progress("reeb graph", quiet);
@@ -100,8 +102,23 @@ int run_reeb(const std::vector<std::string>& argv) {
        << ", \"arcs\": " << R.arcs.size() << ", \"loops\": " << R.loops() << ", \"minima\": " << R.count(minimum)
        << ", \"maxima\": " << R.count(maximum) << ", \"up_forks\": " << R.count(up_fork)
        << ", \"down_forks\": " << R.count(down_fork) << ", \"components\": " << R.components
-       << ", \"augmented_arcs\": " << augmented.number_of_arcs() << ", \"seconds\": " << json_number(seconds)
-       << "}\n";
+       << ", \"augmented_arcs\": " << augmented.number_of_arcs() << ", \"seconds\": " << json_number(seconds);
+    if (args.has("persistence")) {
+      const Reeb_graph_persistence P = compute_reeb_graph_persistence(R);
+      auto list = [&os](const char* name, std::initializer_list<const std::vector<Reeb_persistence_pair>*> parts) {
+        os << ", \"" << name << "\": [";
+        bool first = true;
+        for (const auto* part : parts)
+          for (const Reeb_persistence_pair& p : *part) {
+            os << (first ? "" : ", ") << "[" << json_number(p.birth) << ", " << json_number(p.death) << "]";
+            first = false;
+          }
+        os << "]";
+      };
+      list("branch_pairs", {&P.sublevel_branches, &P.superlevel_branches});
+      list("loop_pairs", {&P.loops});
+    }
+    os << "}\n";
   } else {
     os << "complex: " << K.number_of_vertices << " vertices, " << K.number_of_edges() << " edges, "
        << K.number_of_triangles() << " triangles\n"

@@ -73,3 +73,7 @@ expect(rips_one 0 "1 vertices, 0 edges.*dimension 5" rips --points ${WORK}/one.x
 expect(reeb_one 0 "\"nodes\": 1,.*\"minima\": 1, \"maxima\": 1" reeb --complex ${WORK}/one.txt --json)
 file(WRITE ${WORK}/dup.xyz "0 0\n0 0\n0 0\n3 0\n")
 expect(rips_dup 0 "4 vertices, 3 edges, 1 triangles, 2 components" rips --points ${WORK}/dup.xyz --radius 0 --out ${WORK}/dup.txt --quiet)
+
+# Persistence pairs: the figure-eight has two loops, each a [birth, death] pair with birth > death.
+expect(reeb_persistence 0 "\"loops\": 2,.*\"branch_pairs\": \\[.*\"loop_pairs\": \\[\\[[-0-9.e]+, [-0-9.e]+\\], \\[[-0-9.e]+, [-0-9.e]+\\]\\]}" reeb --complex ${WORK}/fig8.txt --json --persistence)
+expect(persistence_without_json 2 "--persistence goes with --json" reeb --complex ${WORK}/fig8.txt --persistence)

@@ -35,6 +35,11 @@ inline Complex_with_function make(std::size_t n, std::vector<Edge> e, std::vecto
   return {skeleton::make_simplicial_complex_2(n, std::move(e), std::move(t)), std::move(f)};
 }
 
+/// The Reeb graph of a complex with a function.
+inline skeleton::Reeb_graph reeb_graph_of(const Complex_with_function& c) {
+  return skeleton::compute_augmented_reeb_graph(c.complex, c.f).reeb_graph();
+}
+
 /// A polygon with k vertices on the unit circle, f = height (plus a tilt to avoid symmetric ties).
 inline Complex_with_function circle(std::size_t k) {
   std::vector<Edge> e;
