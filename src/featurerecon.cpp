@@ -49,6 +49,19 @@ const std::vector<Command>& commands() {
        "                   bottom of its thinnest loop), each a list of [birth, death] function values\n"
        "  --quiet          no progress on standard error\n",
        run_reeb},
+      {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
+       "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"
+       "                                 [--bearing 45] [--crop-to-tracks TRACKS [--crop-radius 25]]\n"
+       "\n"
+       "Samples both maps every INTERVAL metres (per component, breadth-first from the point at half its edge\n"
+       "length), matches ground-truth samples to reconstruction samples at most THRESHOLD metres away whose\n"
+       "direction-insensitive bearings differ by less than BEARING degrees (greedy over the 10 nearest), and\n"
+       "prints JSON: precision, recall, f_score and the counts.\n"
+       "\n"
+       "  GT_*, REC_*      vertex files 'id,x,y' and edge files 'id,v1,v2[,flag]' (metres; edges undirected)\n"
+       "  --crop-to-tracks keep only ground-truth edges whose samples all lie within --crop-radius (default 25 m)\n"
+       "                   of some point of TRACKS (lines 'trip_id x y t')\n",
+       run_evaluate_map},
   };
   return list;
 }

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace FeatureRecon {
@@ -137,6 +138,78 @@ Complex_file read_complex(const std::string& path) {
   if (next(t)) throw Input_error(where(path, number) + "unexpected content after the " + std::to_string(m) + " simplices");
   cf.complex = skeleton::make_simplicial_complex_2(n, std::move(edges), std::move(triangles));
   return cf;
+}
+
+namespace {
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == ',') {
+      out.push_back(cur);
+      cur.clear();
+    } else if (c != ' ' && c != '\t' && c != '\r') {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+}  // namespace
+
+Map_file read_map(const std::string& vertices_path, const std::string& edges_path) {
+  Map_file m;
+  std::map<long long, std::uint32_t> index;
+  {
+    std::ifstream in = open_input(vertices_path);
+    std::string line;
+    std::size_t number = 0;
+    while (std::getline(in, line)) {
+      ++number;
+      const std::string body = line.substr(0, line.find('#'));
+      if (body.find_first_not_of(" \t\r") == std::string::npos) continue;
+      const std::vector<std::string> t = split_csv(body);
+      if (t.size() < 3) throw Input_error(where(vertices_path, number) + "expected 'id,x,y'");
+      const long long id = static_cast<long long>(parse_double(t[0], vertices_path, number, "vertex id"));
+      if (index.count(id)) throw Input_error(where(vertices_path, number) + "vertex id " + t[0] + " repeated");
+      index[id] = static_cast<std::uint32_t>(m.positions.size());
+      m.positions.push_back({parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
+    }
+  }
+  std::ifstream in = open_input(edges_path);
+  std::string line;
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::string body = line.substr(0, line.find('#'));
+    if (body.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const std::vector<std::string> t = split_csv(body);
+    if (t.size() < 3) throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]'");
+    std::array<std::uint32_t, 2> e{};
+    for (int k = 0; k < 2; ++k) {
+      const long long id = static_cast<long long>(parse_double(t[1 + k], edges_path, number, "vertex id"));
+      const auto it = index.find(id);
+      if (it == index.end()) throw Input_error(where(edges_path, number) + "unknown vertex id " + t[1 + k]);
+      e[k] = it->second;
+    }
+    m.edges.push_back(e);
+  }
+  return m;
+}
+
+std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
+  std::ifstream in = open_input(path);
+  std::vector<std::array<double, 2>> p;
+  std::string line;
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::vector<std::string> t = tokens(line);
+    if (t.empty()) continue;
+    if (t.size() < 3) throw Input_error(where(path, number) + "expected 'trip_id x y [t]'");
+    p.push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y")});
+  }
+  return p;
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

@@ -48,6 +48,18 @@ Complex_file read_complex(const std::string& path);
 void write_complex(const std::string& path, const skeleton::Simplicial_complex_2& k,
                    const std::vector<std::array<double, 3>>& positions, const std::vector<double>& values);
 
+/// A road map in the map-construction benchmark's format: a vertex file of lines `id,x,y` and an edge file
+/// of lines `id,v1,v2[,flag]` (v1, v2 are vertex ids). Returns positions and edges by vertex index.
+/// Throws Input_error naming the file and line of a malformed line, a repeated vertex id or an unknown one.
+struct Map_file {
+  std::vector<std::array<double, 2>> positions;
+  std::vector<std::array<std::uint32_t, 2>> edges;
+};
+Map_file read_map(const std::string& vertices_path, const std::string& edges_path);
+
+/// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y).
+std::vector<std::array<double, 2>> read_track_points(const std::string& path);
+
 /// Writes `text` to `path` atomically.
 void write_text_file(const std::string& path, const std::string& text);
 

@@ -77,3 +77,14 @@ expect(rips_dup 0 "4 vertices, 3 edges, 1 triangles, 2 components" rips --points
 # Persistence pairs: the figure-eight has two loops, each a [birth, death] pair with birth > death.
 expect(reeb_persistence 0 "\"loops\": 2,.*\"branch_pairs\": \\[.*\"loop_pairs\": \\[\\[[-0-9.e]+, [-0-9.e]+\\], \\[[-0-9.e]+, [-0-9.e]+\\]\\]}" reeb --complex ${WORK}/fig8.txt --json --persistence)
 expect(persistence_without_json 2 "--persistence goes with --json" reeb --complex ${WORK}/fig8.txt --persistence)
+
+# evaluate-map on the shipped reference maps reproduces the published score (james vs crp, 15 m: F = .641).
+set(M ${DATA}/chicago_maps/chicago)
+expect(evaluate_map 0 "\"precision\": 0\\.93[0-9]*, \"recall\": 0\\.48[0-9]*, \"f_score\": 0\\.64[0-9]*" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt)
+expect(evaluate_map_args 2 "expected four files" evaluate-map ${M}_gt_crp_vertices.txt)
+expect(evaluate_map_crop_radius 2 "--crop-radius goes with --crop-to-tracks" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-radius 10)
+file(WRITE ${WORK}/bad_edges.txt "1,1,99999\n")
+expect(evaluate_map_bad 1 "bad_edges.txt:1: unknown vertex id 99999" evaluate-map ${M}_gt_crp_vertices.txt ${WORK}/bad_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt)
+# Cropping to traces: a tracks file covering nothing removes every ground-truth edge.
+file(WRITE ${WORK}/far_tracks.txt "0 0 0 0\n")
+expect(evaluate_map_crop 0 "\"ground_truth_edges\": 0,.*\"ground_truth_edges_before_crop\": 1182" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/far_tracks.txt)

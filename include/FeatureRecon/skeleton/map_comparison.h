@@ -1,0 +1,291 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_MAP_COMPARISON_H
+#define FEATURERECON_SKELETON_MAP_COMPARISON_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/skeleton/Simplicial_complex_2.h>
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_2.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// A graph embedded in the plane (a road map): vertex positions and undirected edges.
+struct Embedded_graph_2 {
+  std::vector<std::array<double, 2>> positions;  ///< vertex coordinates (metres)
+  std::vector<Edge> edges;                        ///< undirected; repeated and reversed pairs are merged
+};
+
+/// Options of compare_maps() (the graph-sampling metric of Biagioni and Eriksson, global variant).
+struct Map_comparison_options {
+  double match_distance = 15.0;  ///< samples match when at most this far apart (m); default 15
+  double interval = 5.0;         ///< distance between samples along edges (m); default 5
+  double bearing_limit = 45.0;   ///< samples match when their direction-insensitive bearings differ by less (deg)
+  std::size_t candidates = 10;   ///< nearest reconstruction samples considered per ground-truth sample; default 10
+};
+
+/// Result of compare_maps().
+struct Map_comparison_result {
+  std::size_t ground_truth_samples = 0;     ///< |H|
+  std::size_t reconstruction_samples = 0;   ///< |G|
+  std::size_t matched = 0;                  ///< m
+  double precision = 0;                     ///< m / |G| (0 when G is empty)
+  double recall = 0;                        ///< m / |H| (0 when H is empty)
+  double f_score = 0;                       ///< 2m / (|G| + |H|)
+};
+
+/// A sample of a map: position and the bearing of its edge in [0, 360) degrees.
+struct Map_sample {
+  std::array<double, 2> position;
+  double bearing;
+};
+
+namespace internal {
+inline double bearing_of(const std::array<double, 2>& a, const std::array<double, 2>& b) {
+  const double deg = std::atan2(b[0] - a[0], b[1] - a[1]) * 180.0 / std::acos(-1.0);  // from north, clockwise
+  return deg < 0 ? deg + 360.0 : deg;
+}
+/// Direction-insensitive bearing difference in [0, 90].
+inline double bearing_difference(double a, double b) {
+  const double d = std::abs(a - b);
+  return std::min({d, std::abs(180.0 - d), std::abs(360.0 - d)});
+}
+}  // namespace internal
+
+/// Samples a map every `interval` metres: per connected component, a breadth-first walk over the edges from
+/// a root at half the component's cumulative edge length (edges in breadth-first order from the component's
+/// smallest vertex), the leftover offset carried across vertices. Each sample keeps its edge's bearing.
+/// \pre interval > 0 and finite (checked; throws); edge indices in range (checked; throws naming the edge).
+inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double interval) {
+  const char* fn = "sample_map";
+  if (!(interval > 0 && std::isfinite(interval)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "interval must be > 0, got ", interval);
+  const std::size_t n = g.positions.size();
+  std::vector<Edge> edges;
+  for (std::size_t k = 0; k < g.edges.size(); ++k) {
+    Edge e = g.edges[k];
+    if (e[0] >= n || e[1] >= n)
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", k, " has a vertex out of range [0, ", n, ")");
+    if (e[0] == e[1]) continue;
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+    edges.push_back(e);
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  auto length = [&](std::size_t e) {
+    const auto& a = g.positions[edges[e][0]];
+    const auto& b = g.positions[edges[e][1]];
+    return std::hypot(b[0] - a[0], b[1] - a[1]);
+  };
+  std::vector<std::vector<std::size_t>> incident(n);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    incident[edges[e][0]].push_back(e);
+    incident[edges[e][1]].push_back(e);
+  }
+  std::vector<Map_sample> samples;
+  std::vector<char> edge_done(edges.size(), 0), vertex_seen(n, 0);
+  // A walk step: traverse edge e from vertex `from`, first sample at `offset` metres along it.
+  struct Step {
+    std::size_t edge;
+    Vertex_index from;
+    double offset;
+  };
+  auto walk = [&](const Step& s, std::deque<Step>& queue) {
+    const Edge& ed = edges[s.edge];
+    const Vertex_index to = ed[0] == s.from ? ed[1] : ed[0];
+    const auto& a = g.positions[s.from];
+    const auto& b = g.positions[to];
+    const double len = length(s.edge), bearing = internal::bearing_of(a, b);
+    double t = s.offset;
+    for (; t <= len; t += interval) {
+      const double u = len > 0 ? t / len : 0.0;
+      samples.push_back({{a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])}, bearing});
+    }
+    const double carry = t - len;  // leftover to the next sample, carried across the vertex
+    for (const std::size_t f : incident[to])
+      if (!edge_done[f]) {
+        edge_done[f] = 1;
+        queue.push_back({f, to, carry});
+      }
+  };
+  for (Vertex_index start = 0; start < n; ++start) {
+    if (vertex_seen[start] || incident[start].empty()) continue;
+    // The component's edges in breadth-first order from its smallest vertex.
+    std::vector<std::size_t> order;
+    std::deque<Vertex_index> bfs{start};
+    vertex_seen[start] = 1;
+    std::vector<char> listed(edges.size(), 0);
+    while (!bfs.empty()) {
+      const Vertex_index v = bfs.front();
+      bfs.pop_front();
+      for (const std::size_t e : incident[v]) {
+        if (!listed[e]) {
+          listed[e] = 1;
+          order.push_back(e);
+        }
+        const Vertex_index w = edges[e][0] == v ? edges[e][1] : edges[e][0];
+        if (!vertex_seen[w]) {
+          vertex_seen[w] = 1;
+          bfs.push_back(w);
+        }
+      }
+    }
+    double total = 0;
+    for (const std::size_t e : order) total += length(e);
+    // Root: the point at half the cumulative length; walk both ways from it.
+    double acc = 0;
+    std::size_t root_edge = order.front();
+    double root_t = 0;
+    for (const std::size_t e : order) {
+      if (acc + length(e) >= total / 2) {
+        root_edge = e;
+        root_t = total / 2 - acc;
+        break;
+      }
+      acc += length(e);
+    }
+    edge_done[root_edge] = 1;
+    const Edge& re = edges[root_edge];
+    const double len = length(root_edge);
+    std::deque<Step> queue;
+    // Two half-edges from the root: towards e[1] starting at the root, towards e[0] one interval back.
+    {
+      const auto& a = g.positions[re[0]];
+      const auto& b = g.positions[re[1]];
+      const double bearing = internal::bearing_of(a, b);
+      double t = root_t;
+      for (; t <= len; t += interval) {
+        const double u = len > 0 ? t / len : 0.0;
+        samples.push_back({{a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])}, bearing});
+      }
+      const double carry_forward = t - len;
+      double s = root_t - interval;
+      for (; s >= 0; s -= interval) {
+        const double u = len > 0 ? s / len : 0.0;
+        samples.push_back({{a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])}, bearing});
+      }
+      const double carry_backward = -s;
+      for (const std::size_t f : incident[re[1]])
+        if (!edge_done[f]) {
+          edge_done[f] = 1;
+          queue.push_back({f, re[1], carry_forward});
+        }
+      for (const std::size_t f : incident[re[0]])
+        if (!edge_done[f]) {
+          edge_done[f] = 1;
+          queue.push_back({f, re[0], carry_backward});
+        }
+    }
+    while (!queue.empty()) {
+      const Step s = queue.front();
+      queue.pop_front();
+      walk(s, queue);
+    }
+  }
+  return samples;
+}
+
+/// Compares a reconstructed map with a ground truth by the graph-sampling metric: both maps are sampled
+/// (sample_map()); each ground-truth sample h takes the nearest of its `candidates` nearest reconstruction
+/// samples whose bearing differs by less than the limit; pairs are then accepted greedily by increasing
+/// distance up to `match_distance`, a ground-truth sample whose partner was taken looking again among its
+/// nearest available ones. precision = m/|G|, recall = m/|H|, F = 2m/(|G| + |H|).
+/// \pre positive, finite options (checked; throws).
+inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, const Embedded_graph_2& reconstruction,
+                                          const Map_comparison_options& options = {}) {
+  const char* fn = "compare_maps";
+  if (!(options.match_distance > 0 && std::isfinite(options.match_distance)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "match_distance must be > 0, got ", options.match_distance);
+  if (!(options.bearing_limit > 0) || options.candidates < 1)
+    FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be > 0 and candidates >= 1");
+  const std::vector<Map_sample> H = sample_map(ground_truth, options.interval);
+  const std::vector<Map_sample> G = sample_map(reconstruction, options.interval);
+  Map_comparison_result r;
+  r.ground_truth_samples = H.size();
+  r.reconstruction_samples = G.size();
+  if (!H.empty() && !G.empty()) {
+    using K = CGAL::Simple_cartesian<double>;
+    using Point = K::Point_2;
+    using Traits = CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type,
+                                               CGAL::Search_traits_2<K>>;
+    using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
+    std::vector<Point> gp;
+    for (const Map_sample& s : G) gp.emplace_back(s.position[0], s.position[1]);
+    std::vector<std::uint32_t> keys(G.size());
+    std::iota(keys.begin(), keys.end(), 0u);
+    typename Knn::Tree tree(keys.begin(), keys.end(), typename Knn::Tree::Splitter(),
+                            Traits(CGAL::make_property_map(gp)));
+    tree.build();
+    typename Knn::Distance dist(tree.traits().point_property_map());
+    std::vector<char> taken(G.size(), 0);
+    // Nearest admissible (bearing) available partner among the k nearest, or none.
+    auto best_partner = [&](std::size_t h, double& d) -> std::int64_t {
+      const Point q(H[h].position[0], H[h].position[1]);
+      Knn search(tree, q, static_cast<unsigned>(options.candidates), 0.0, true, dist);
+      for (const auto& nb : search) {
+        const std::uint32_t g = nb.first;
+        if (taken[g]) continue;
+        if (internal::bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
+          d = std::sqrt(nb.second);
+          return g;
+        }
+      }
+      return -1;
+    };
+    struct Candidate {
+      double distance;
+      std::size_t h;
+      std::int64_t g;
+    };
+    auto later = [](const Candidate& a, const Candidate& b) {
+      return a.distance > b.distance || (a.distance == b.distance && a.h > b.h);
+    };
+    std::vector<Candidate> heap;
+    for (std::size_t h = 0; h < H.size(); ++h) {
+      double d = 0;
+      const std::int64_t g = best_partner(h, d);
+      if (g >= 0) heap.push_back({d, h, g});
+    }
+    std::make_heap(heap.begin(), heap.end(), later);
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), later);
+      Candidate c = heap.back();
+      heap.pop_back();
+      if (c.distance > options.match_distance) break;
+      if (!taken[c.g]) {
+        taken[c.g] = 1;
+        ++r.matched;
+        continue;
+      }
+      double d = 0;
+      const std::int64_t g = best_partner(c.h, d);
+      if (g >= 0) {
+        heap.push_back({d, c.h, g});
+        std::push_heap(heap.begin(), heap.end(), later);
+      }
+    }
+  }
+  const double m = static_cast<double>(r.matched);
+  r.precision = G.empty() ? 0.0 : m / static_cast<double>(G.size());
+  r.recall = H.empty() ? 0.0 : m / static_cast<double>(H.size());
+  r.f_score = (G.size() + H.size()) == 0 ? 0.0 : 2 * m / static_cast<double>(G.size() + H.size());
+  return r;
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_MAP_COMPARISON_H

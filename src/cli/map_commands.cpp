@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Subcommand evaluate-map: the graph-sampling metric of a reconstructed road map against a ground truth.
+
+#include <FeatureRecon/skeleton/map_comparison.h>
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Search_traits_2.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <cstdio>
+#include <sstream>
+
+#include "../io/featurerecon_io.h"
+#include "cli_common.h"
+#include "commands.h"
+
+namespace FeatureRecon {
+namespace cli {
+
+using namespace FeatureRecon::skeleton;
+
+namespace {
+Embedded_graph_2 to_graph(const io::Map_file& m) {
+  Embedded_graph_2 g;
+  g.positions = m.positions;
+  for (const auto& e : m.edges) g.edges.push_back({e[0], e[1]});
+  return g;
+}
+
+/// Keeps the edges all of whose samples (every `interval` metres, endpoints included) lie within `radius` of
+/// some trace point.
+Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std::array<double, 2>>& tracks,
+                                double radius, double interval) {
+  using K = CGAL::Simple_cartesian<double>;
+  using Tree = CGAL::Kd_tree<CGAL::Search_traits_2<K>>;
+  std::vector<K::Point_2> pts;
+  for (const auto& p : tracks) pts.emplace_back(p[0], p[1]);
+  Tree tree(pts.begin(), pts.end());
+  tree.build();
+  auto covered = [&](double x, double y) {
+    const CGAL::Fuzzy_sphere<CGAL::Search_traits_2<K>> ball(K::Point_2(x, y), radius, 0.0);
+    std::vector<K::Point_2> found;
+    tree.search(std::back_inserter(found), ball);
+    return !found.empty();
+  };
+  Embedded_graph_2 out;
+  out.positions = g.positions;
+  for (const Edge& e : g.edges) {
+    const auto& a = g.positions[e[0]];
+    const auto& b = g.positions[e[1]];
+    const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+    bool keep = true;
+    for (double t = 0; keep && t <= len + interval; t += interval) {
+      const double u = len > 0 ? std::min(1.0, t / len) : 0.0;
+      keep = covered(a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]));
+    }
+    if (keep) out.edges.push_back(e);
+  }
+  return out;
+}
+}  // namespace
+
+int run_evaluate_map(const std::vector<std::string>& argv) {
+  const Arguments args(argv, {}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius"}, 4);
+  if (args.positional().size() != 4)
+    throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
+  Map_comparison_options options;
+  if (args.has("threshold")) options.match_distance = args.get_positive_double("threshold");
+  if (args.has("interval")) options.interval = args.get_positive_double("interval");
+  if (args.has("bearing")) options.bearing_limit = args.get_positive_double("bearing");
+  if (args.has("crop-radius") && !args.has("crop-to-tracks")) throw Usage_error("--crop-radius goes with --crop-to-tracks");
+  const auto& p = args.positional();
+  Embedded_graph_2 gt = to_graph(io::read_map(p[0], p[1]));
+  const Embedded_graph_2 rec = to_graph(io::read_map(p[2], p[3]));
+  std::size_t gt_edges_before = gt.edges.size();
+  if (args.has("crop-to-tracks")) {
+    const double radius = args.has("crop-radius") ? args.get_positive_double("crop-radius") : 25.0;
+    gt = crop_to_tracks(gt, io::read_track_points(args.get("crop-to-tracks")), radius, options.interval);
+  }
+  const Map_comparison_result r = compare_maps(gt, rec, options);
+  std::ostringstream os;
+  os << "{\"precision\": " << json_number(r.precision) << ", \"recall\": " << json_number(r.recall)
+     << ", \"f_score\": " << json_number(r.f_score) << ", \"matched\": " << r.matched
+     << ", \"ground_truth_samples\": " << r.ground_truth_samples
+     << ", \"reconstruction_samples\": " << r.reconstruction_samples << ", \"ground_truth_edges\": " << gt.edges.size()
+     << ", \"ground_truth_edges_before_crop\": " << gt_edges_before << ", \"threshold\": "
+     << json_number(options.match_distance) << ", \"interval\": " << json_number(options.interval)
+     << ", \"bearing\": " << json_number(options.bearing_limit) << "}\n";
+  std::fputs(os.str().c_str(), stdout);
+  return 0;
+}
+
+}  // namespace cli
+}  // namespace FeatureRecon

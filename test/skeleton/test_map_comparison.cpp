@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/map_comparison.h>
+
+#include <gtest/gtest.h>
+
+#include "io/featurerecon_io.h"
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+
+namespace {
+Embedded_graph_2 grid_map(int n, double spacing, double dx = 0, double dy = 0) {
+  Embedded_graph_2 g;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) g.positions.push_back({i * spacing + dx, j * spacing + dy});
+  for (Vertex_index i = 0; i < Vertex_index(n); ++i)
+    for (Vertex_index j = 0; j < Vertex_index(n); ++j) {
+      if (i + 1 < Vertex_index(n)) g.edges.push_back({i * n + j, (i + 1) * n + j});
+      if (j + 1 < Vertex_index(n)) g.edges.push_back({i * n + j, i * n + j + 1});
+    }
+  return g;
+}
+
+Embedded_graph_2 load(const std::string& name) {
+  const std::string dir = std::string(FEATURERECON_TEST_DATA_DIR) + "/chicago_maps/chicago_";
+  const io::Map_file m = io::read_map(dir + name + "_vertices.txt", dir + name + "_edges.txt");
+  Embedded_graph_2 g;
+  g.positions = m.positions;
+  for (const auto& e : m.edges) g.edges.push_back({e[0], e[1]});
+  return g;
+}
+}  // namespace
+
+TEST(MapComparison, SamplingSpacingAndCounts) {
+  // A single 100 m segment: 21 samples every 5 m (root at its middle), bearing 90 degrees (east).
+  Embedded_graph_2 seg;
+  seg.positions = {{0, 0}, {100, 0}};
+  seg.edges = {{0, 1}, {1, 0}, {0, 0}};  // the repeated reversed edge and the self-loop are ignored
+  const auto s = sample_map(seg, 5.0);
+  EXPECT_EQ(s.size(), 21u);
+  for (const auto& x : s) {
+    const double rem = std::fmod(x.position[0], 5.0);
+    EXPECT_LT(std::min(rem, 5.0 - rem), 1e-9) << x.position[0];
+  }
+  EXPECT_DOUBLE_EQ(s[0].bearing, 90.0);
+  // A grid of 4x4 blocks of 100 m: total length 4000 m, about one sample per 5 m.
+  const auto g = sample_map(grid_map(5, 100.0), 5.0);
+  EXPECT_NEAR(static_cast<double>(g.size()), 800.0, 40.0);
+  EXPECT_THROW(sample_map(seg, 0.0), std::invalid_argument);
+  Embedded_graph_2 bad = seg;
+  bad.edges = {{0, 5}};
+  EXPECT_THROW(sample_map(bad, 5.0), std::invalid_argument);
+}
+
+TEST(MapComparison, IdenticalShiftedAndPerpendicularMaps) {
+  const Embedded_graph_2 a = grid_map(5, 100.0);
+  const Map_comparison_result same = compare_maps(a, a);
+  EXPECT_EQ(same.matched, same.ground_truth_samples);
+  EXPECT_DOUBLE_EQ(same.precision, 1.0);
+  EXPECT_DOUBLE_EQ(same.recall, 1.0);
+  EXPECT_DOUBLE_EQ(same.f_score, 1.0);
+  // Shifted diagonally by 20 m: every sample is more than 15 m from the other map's parallel streets.
+  EXPECT_EQ(compare_maps(a, grid_map(5, 100.0, 20.0, 20.0)).matched, 0u);
+  // Shifted by 10 m: within the threshold.
+  EXPECT_GT(compare_maps(a, grid_map(5, 100.0, 10.0, 0.0)).recall, 0.8);
+  // Same place, perpendicular direction: a north-south segment against an east-west one crossing it.
+  Embedded_graph_2 ns, ew;
+  ns.positions = {{0, -50}, {0, 50}};
+  ns.edges = {{0, 1}};
+  ew.positions = {{-50, 0}, {50, 0}};
+  ew.edges = {{0, 1}};
+  EXPECT_EQ(compare_maps(ns, ew).matched, 0u);
+  // Half the map: recall about one half, precision 1.
+  Embedded_graph_2 half = a;
+  half.edges.resize(a.edges.size() / 2);
+  const Map_comparison_result h = compare_maps(a, half);
+  EXPECT_NEAR(h.precision, 1.0, 0.02);
+  EXPECT_NEAR(h.recall, 0.5, 0.05);
+  // Empty reconstruction.
+  const Map_comparison_result none = compare_maps(a, Embedded_graph_2{});
+  EXPECT_EQ(none.matched, 0u);
+  EXPECT_EQ(none.precision, 0.0);
+  EXPECT_EQ(none.f_score, 0.0);
+  Map_comparison_options bad;
+  bad.match_distance = -1;
+  EXPECT_THROW(compare_maps(a, a, bad), std::invalid_argument);
+}
+
+TEST(MapComparison, ReproducesPublishedChicagoScores) {
+  // Graph-sampling scores of two published maps against the map-matched OSM ground truth (test data README).
+  const Embedded_graph_2 gt = load("gt_crp");
+  struct Row {
+    const char* map;
+    double threshold, p, r, f;
+  };
+  const Row rows[] = {{"james", 10, .887, .465, .610},   {"james", 15, .931, .489, .641},
+                      {"james", 25, .967, .508, .666},   {"kharita", 10, .643, .707, .674},
+                      {"kharita", 15, .706, .777, .740}, {"kharita", 25, .735, .808, .770}};
+  for (const Row& row : rows) {
+    Map_comparison_options o;
+    o.match_distance = row.threshold;
+    const Map_comparison_result r = compare_maps(gt, load(row.map), o);
+    EXPECT_NEAR(r.precision, row.p, 0.01) << row.map << " at " << row.threshold << " m";
+    EXPECT_NEAR(r.recall, row.r, 0.01) << row.map << " at " << row.threshold << " m";
+    EXPECT_NEAR(r.f_score, row.f, 0.01) << row.map << " at " << row.threshold << " m";
+  }
+}
