@@ -2,20 +2,75 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 // From unorganised points to a Reeb graph, stage by stage: Rips graph, Rips 2-complex, geodesic function,
 // augmented Reeb graph, Reeb graph. Input: a noisy figure-eight (generated; argv[1] may name a point file
-// with "x y" lines instead).
+// with "x y" lines instead, argv[2] the radius). With --svg FILE it also draws the points and the Reeb graph
+// (each arc through the positions of its input vertices, nodes coloured by type): doc/images/.
 
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <random>
+#include <string>
 #include <vector>
+
+namespace {
+/// Writes the points and the Reeb graph as an SVG picture (y up).
+void write_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
+               const FeatureRecon::skeleton::Reeb_graph& reeb) {
+  namespace sk = FeatureRecon::skeleton;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const auto& p : points) {
+    x0 = std::min(x0, p[0]);
+    y0 = std::min(y0, p[1]);
+    x1 = std::max(x1, p[0]);
+    y1 = std::max(y1, p[1]);
+  }
+  const double scale = 560.0 / std::max({x1 - x0, y1 - y0, 1e-9}), margin = 20, top = 44;
+  const double width = std::max(700.0, 2 * margin + (x1 - x0) * scale);
+  const double left = (width - (x1 - x0) * scale) / 2;
+  auto X = [&](double x) { return left + (x - x0) * scale; };
+  auto Y = [&](double y) { return top + (y1 - y) * scale; };
+  std::ofstream out(path);
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
+      << top + margin + (y1 - y0) * scale << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for (const auto& p : points)
+    out << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"1.6\" fill=\"#bbbbbb\"/>\n";
+  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  std::size_t k = 0;
+  for (const auto& arc : reeb.arcs) {
+    out << "<polyline fill=\"none\" stroke-width=\"2.5\" stroke=\"" << colours[k++ % 8] << "\" points=\"";
+    std::vector<sk::Vertex_index> chain{reeb.nodes[arc.lower].vertex};
+    chain.insert(chain.end(), arc.vertices.begin(), arc.vertices.end());
+    chain.push_back(reeb.nodes[arc.upper].vertex);
+    for (const sk::Vertex_index v : chain) out << X(points[v][0]) << "," << Y(points[v][1]) << " ";
+    out << "\"/>\n";
+  }
+  for (const auto& node : reeb.nodes) {
+    const char* fill = (node.type & sk::minimum) ? "#000000" : (node.type & sk::maximum) ? "#ffffff"
+                       : (node.type & sk::down_fork) ? "#d62728" : "#2ca02c";
+    out << "<circle cx=\"" << X(points[node.vertex][0]) << "\" cy=\"" << Y(points[node.vertex][1])
+        << "\" r=\"6\" stroke=\"black\" stroke-width=\"1.5\" fill=\"" << fill << "\"/>\n";
+  }
+  out << "<text x=\"" << margin << "\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">Reeb graph of the geodesic"
+      << " function: " << reeb.nodes.size() << " nodes, " << reeb.arcs.size() << " arcs, " << reeb.loops()
+      << " loops</text>\n<text x=\"" << margin
+      << "\" y=\"33\" font-family=\"sans-serif\" font-size=\"12\">arcs through their input points; nodes: black minimum, white maximum, green up-fork,"
+      << " red down-fork</text>\n</svg>\n";
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   namespace sk = FeatureRecon::skeleton;
+  std::string svg;
+  if (argc > 2 && std::strcmp(argv[argc - 2], "--svg") == 0) {
+    svg = argv[argc - 1];
+    argc -= 2;
+  }
   std::vector<std::array<double, 2>> points;
   double radius = 0.6;
   if (argc > 1) {
@@ -60,5 +115,6 @@ int main(int argc, char** argv) {
   }
   for (const auto& arc : reeb.arcs)
     std::printf("  arc %zu -> %zu through %zu vertices\n", arc.lower, arc.upper, arc.vertices.size());
+  if (!svg.empty()) write_svg(svg, points, reeb);
   return 0;
 }
