@@ -54,6 +54,7 @@ struct Reeb_graph {
     Vertex_index vertex = 0;  ///< input vertex whose image is this node
     double value = 0;         ///< f(vertex)
     unsigned type = regular;  ///< Node_type flags
+    std::vector<Vertex_index> members;  ///< other input vertices identified with this node (after simplification)
   };
   struct Arc {
     std::size_t lower = 0;                ///< index into `nodes`

@@ -43,16 +43,11 @@ struct Reeb_graph_persistence {
   std::vector<Reeb_persistence_pair> essential;
 };
 
-/// Persistence of the branch and loop features of a Reeb graph, computed on the graph itself.
-///
-/// Method: branches by two union-find sweeps (up for minima, down for maxima; elder rule), O(n log n) with
-/// n nodes and arcs. A loop is born at a down-fork whose lower arcs are already connected below it; it is
-/// paired with the highest up-fork s' such that the two branches are connected in the part of the graph
-/// between f(s') and the fork: a maximin (widest) path search in the sublevel graph, O(n log n) per loop.
-/// Nodes with several arcs below or above (degenerate forks) act as chains of binary forks, as in a
-/// simulation of simplicity; node order is the graph's (f, vertex index) order.
-/// \pre R's nodes are in increasing (value, vertex) order, as reeb_graph() returns them (checked; throws).
-inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R) {
+namespace internal {
+/// compute_reeb_graph_persistence(), optionally also giving for each loop (in the order of `loops`) the arcs of
+/// its thin cycle.
+inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
+                                                     std::vector<std::vector<std::size_t>>* loop_cycles) {
   const char* fn = "compute_reeb_graph_persistence";
   const std::size_t n = R.nodes.size();
   for (std::size_t i = 1; i < n; ++i) {
@@ -66,11 +61,11 @@ inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R
     if (!(R.arcs[k].lower < R.arcs[k].upper && R.arcs[k].upper < n))
       FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " does not go up between valid nodes");
 
-  // Adjacency: for each node, the other ends of its arcs below and above (multi-arcs repeated).
-  std::vector<std::vector<std::size_t>> below(n), above(n);
-  for (const auto& a : R.arcs) {
-    below[a.upper].push_back(a.lower);
-    above[a.lower].push_back(a.upper);
+  // Adjacency: for each node, (other end, arc) of its arcs below and above (multi-arcs repeated).
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> below(n), above(n);
+  for (std::size_t k = 0; k < R.arcs.size(); ++k) {
+    below[R.arcs[k].upper].push_back({R.arcs[k].lower, k});
+    above[R.arcs[k].lower].push_back({R.arcs[k].upper, k});
   }
   for (std::size_t v = 0; v < n; ++v) {
     std::sort(below[v].begin(), below[v].end());
@@ -92,16 +87,16 @@ inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   std::iota(extreme.begin(), extreme.end(), std::size_t(0));  // lowest node of the component
   struct Loop_birth {
-    std::size_t fork, branch;
-    std::vector<std::size_t> others;  // lower ends of the fork's earlier arcs
+    std::size_t fork, branch, arc;
+    std::vector<std::pair<std::size_t, std::size_t>> others;  // (lower end, arc) of the fork's earlier arcs
   };
   std::vector<Loop_birth> loop_births;
   for (std::size_t v = 0; v < n; ++v) {
-    std::vector<std::size_t> earlier;
-    for (const std::size_t u : below[v]) {
+    std::vector<std::pair<std::size_t, std::size_t>> earlier;
+    for (const auto& [u, arc] : below[v]) {
       const std::size_t ru = find(u), rv = find(v);
       if (ru == rv) {
-        loop_births.push_back({v, u, earlier});
+        loop_births.push_back({v, u, arc, earlier});
       } else if (!earlier.empty()) {
         // v already belongs to a component from below: the younger minimum dies here.
         const bool u_younger = extreme[ru] > extreme[rv];
@@ -110,7 +105,7 @@ inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R
       } else {
         parent[rv] = ru;  // v joins its first component below
       }
-      earlier.push_back(u);
+      earlier.push_back({u, arc});
     }
   }
   // Essential pairs: per component, global minimum (the root's extreme) with its highest node.
@@ -128,7 +123,7 @@ inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R
     const std::size_t v = k;
     bool joined = false;
     for (auto it = above[v].rbegin(); it != above[v].rend(); ++it) {
-      const std::size_t u = *it;
+      const std::size_t u = it->first;
       const std::size_t ru = find(u), rv = find(v);
       if (ru == rv) continue;  // an essential up-fork: paired from the loop side
       if (joined) {
@@ -144,40 +139,69 @@ inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R
 
   // Loops: for the cycle born at fork s through its arc from `branch`, the best bottom is the maximin value
   // over paths from `branch` to one of the fork's earlier lower ends, inside the nodes below s.
-  std::vector<std::size_t> best(n, 0), seen_stamp(n, 0), target_stamp(n, 0);
+  std::vector<std::size_t> best(n, 0), seen_stamp(n, 0), target_stamp(n, 0), via_arc(n, 0), target_arc(n, 0);
   std::size_t stamp = 0;
   for (const Loop_birth& lb : loop_births) {
     ++stamp;
-    for (const std::size_t t : lb.others) target_stamp[t] = stamp;
+    for (const auto& [t, arc] : lb.others) {
+      target_stamp[t] = stamp;
+      target_arc[t] = arc;
+    }
     // Widest path: pop the node with the largest bottleneck (the lowest node index on its path).
     std::priority_queue<std::pair<std::size_t, std::size_t>> heap;  // (bottleneck, node)
     heap.push({lb.branch, lb.branch});
     best[lb.branch] = lb.branch;
     seen_stamp[lb.branch] = stamp;
-    std::size_t bottom = std::numeric_limits<std::size_t>::max();
+    std::size_t bottom = std::numeric_limits<std::size_t>::max(), reached = 0;
     while (!heap.empty()) {
       const auto [b, x] = heap.top();
       heap.pop();
       if (b != best[x]) continue;
       if (target_stamp[x] == stamp) {
         bottom = b;
+        reached = x;
         break;
       }
       for (const auto* nbrs : {&below[x], &above[x]})
-        for (const std::size_t y : *nbrs) {
+        for (const auto& [y, arc] : *nbrs) {
           if (y >= lb.fork) continue;  // only the sublevel set strictly below the fork
           const std::size_t by = std::min(b, y);
           if (seen_stamp[y] != stamp || by > best[y]) {
             seen_stamp[y] = stamp;
             best[y] = by;
+            via_arc[y] = arc;
             heap.push({by, y});
           }
         }
     }
     FEATURERECON_assertion(bottom != std::numeric_limits<std::size_t>::max());
     P.loops.push_back(pair_of(lb.fork, bottom));
+    if (loop_cycles != nullptr) {
+      // The thin cycle: the fork's arc from `branch`, the widest path back to `branch`, the earlier arc.
+      std::vector<std::size_t> cycle{lb.arc, target_arc[reached]};
+      for (std::size_t x = reached; x != lb.branch;) {
+        const std::size_t arc = via_arc[x];
+        cycle.push_back(arc);
+        x = R.arcs[arc].lower == x ? R.arcs[arc].upper : R.arcs[arc].lower;
+      }
+      loop_cycles->push_back(std::move(cycle));
+    }
   }
   return P;
+}
+}  // namespace internal
+
+/// Persistence of the branch and loop features of a Reeb graph, computed on the graph itself.
+///
+/// Method: branches by two union-find sweeps (up for minima, down for maxima; elder rule), O(n log n) with
+/// n nodes and arcs. A loop is born at a down-fork whose lower arcs are already connected below it; it is
+/// paired with the highest up-fork s' such that the two branches are connected in the part of the graph
+/// between f(s') and the fork: a maximin (widest) path search in the sublevel graph, O(n log n) per loop.
+/// Nodes with several arcs below or above (degenerate forks) act as chains of binary forks, as in a
+/// simulation of simplicity; node order is the graph's (f, vertex index) order.
+/// \pre R's nodes are in increasing (value, vertex) order, as reeb_graph() returns them (checked; throws).
+inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R) {
+  return internal::reeb_graph_persistence(R, nullptr);
 }
 
 }  // namespace skeleton

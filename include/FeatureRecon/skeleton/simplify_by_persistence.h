@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_SIMPLIFY_BY_PERSISTENCE_H
+#define FEATURERECON_SKELETON_SIMPLIFY_BY_PERSISTENCE_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+#include <FeatureRecon/skeleton/reeb_graph_persistence.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// Result of simplify_by_persistence().
+struct Reeb_simplification_result {
+  /// The simplified Reeb graph. Every input vertex is in exactly one place: a node's `vertex`, a node's
+  /// `members`, or an arc's `vertices`.
+  Reeb_graph graph;
+  std::size_t removed_branches = 0;  ///< branch features of persistence <= delta that were merged away
+  std::size_t removed_loops = 0;     ///< loop features of persistence <= delta that were merged away
+};
+
+namespace internal {
+/// \cond
+struct Simplification_complex {
+  std::vector<double> values;  // originals first, then helper vertices
+  std::vector<Edge> edges;
+  std::vector<Triangle> triangles;
+};
+/// \endcond
+}  // namespace internal
+
+/// Removes every branch and loop feature of persistence at most `delta` from the Reeb graph of A, by the
+/// merges of dissertation Ch. 5.3.1: a branch's monotone path is glued by function value onto a path into
+/// its sibling component; the two sides of a thin loop are glued into one monotone arc. All merges are applied
+/// together (the transitive closure of the identifications), so features of persistence above 2 delta survive
+/// and the diagrams move by at most 2 delta (branches) and 6 delta (loops).
+///
+/// Method: the quotient is computed as a Reeb graph. Each merging path gets a spine, a path with one vertex
+/// per function value on it, and every edge of the merging path a strip of triangles to the spine segment of
+/// its values; the level set of the resulting 2-complex at any height joins all points of the merging path at
+/// that height, so its Reeb graph, with arcs of zero height contracted, is the quotient.
+/// \pre delta >= 0 and finite (checked; throws).
+inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta) {
+  const char* fn = "simplify_by_persistence";
+  if (!(delta >= 0 && std::isfinite(delta)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
+  const Reeb_graph R = A.reeb_graph();
+  std::vector<std::vector<std::size_t>> cycles;
+  const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles);
+  const std::size_t n = A.number_of_nodes();
+  internal::Simplification_complex Y;
+  Y.values = A.values();
+  std::vector<double>& val = Y.values;
+  auto less = [&](std::size_t a, std::size_t b) { return val[a] < val[b] || (val[a] == val[b] && a < b); };
+
+  // The graph of R as a 1-complex on the input vertices: each arc a chain through its vertices. Parallel arcs
+  // without interior vertices get a helper midpoint.
+  std::vector<std::vector<Vertex_index>> chain(R.arcs.size());
+  std::set<Edge> present;
+  auto key = [](Vertex_index a, Vertex_index b) { return a < b ? Edge{a, b} : Edge{b, a}; };
+  for (std::size_t k = 0; k < R.arcs.size(); ++k) {
+    std::vector<Vertex_index>& c = chain[k];
+    c.push_back(R.nodes[R.arcs[k].lower].vertex);
+    c.insert(c.end(), R.arcs[k].vertices.begin(), R.arcs[k].vertices.end());
+    c.push_back(R.nodes[R.arcs[k].upper].vertex);
+    if (c.size() == 2 && present.count(key(c[0], c[1]))) {
+      const Vertex_index mid = static_cast<Vertex_index>(val.size());
+      val.push_back(0.5 * (val[c[0]] + val[c[1]]));
+      c.insert(c.begin() + 1, mid);
+    }
+    for (std::size_t i = 0; i + 1 < c.size(); ++i) {
+      present.insert(key(c[i], c[i + 1]));
+      Y.edges.push_back(key(c[i], c[i + 1]));
+    }
+  }
+
+  // Node adjacency of R with arcs.
+  const std::size_t nn = R.nodes.size();
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adj(nn);  // (other node, arc)
+  for (std::size_t k = 0; k < R.arcs.size(); ++k) {
+    adj[R.arcs[k].lower].push_back({R.arcs[k].upper, k});
+    adj[R.arcs[k].upper].push_back({R.arcs[k].lower, k});
+  }
+  // Breadth-first search from `start` inside the nodes accepted by `inside`; returns the predecessor arcs.
+  const std::size_t none = std::numeric_limits<std::size_t>::max();
+  auto bfs = [&](std::size_t start, auto inside, std::vector<std::size_t>& pred_arc) {
+    pred_arc.assign(nn, none);
+    std::vector<char> seen(nn, 0);
+    std::vector<std::size_t> order{start};
+    seen[start] = 1;
+    for (std::size_t i = 0; i < order.size(); ++i)
+      for (const auto& [y, arc] : adj[order[i]])
+        if (!seen[y] && inside(y)) {
+          seen[y] = 1;
+          pred_arc[y] = arc;
+          order.push_back(y);
+        }
+    return order;  // the nodes reached
+  };
+  auto other_end = [&](std::size_t arc, std::size_t node) {
+    return R.arcs[arc].lower == node ? R.arcs[arc].upper : R.arcs[arc].lower;
+  };
+  // Appends to `edges` the input-vertex edges of a node path given as a sequence of arcs walked from `from`,
+  // stopping after the first vertex v with stop(v) (if any).
+  auto walk = [&](std::size_t from, const std::vector<std::size_t>& arcs, auto stop, std::vector<Edge>& edges) {
+    std::size_t node = from;
+    for (const std::size_t arc : arcs) {
+      std::vector<Vertex_index> c = chain[arc];
+      if (R.arcs[arc].lower != node) std::reverse(c.begin(), c.end());
+      for (std::size_t i = 0; i + 1 < c.size(); ++i) {
+        edges.push_back(key(c[i], c[i + 1]));
+        if (stop(c[i + 1])) return;
+      }
+      node = other_end(arc, node);
+    }
+  };
+  auto path_arcs = [&](std::size_t target, const std::vector<std::size_t>& pred_arc) {
+    std::vector<std::size_t> arcs;  // from the BFS start to target
+    for (std::size_t x = target; pred_arc[x] != none; x = other_end(pred_arc[x], x)) arcs.push_back(pred_arc[x]);
+    std::reverse(arcs.begin(), arcs.end());
+    return arcs;
+  };
+
+  std::vector<std::vector<Edge>> merging_sets;
+  Reeb_simplification_result result;
+  // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork).
+  auto merge_branch = [&](const Reeb_persistence_pair& pair, bool down) {
+    const std::size_t e = pair.birth_node, s = pair.death_node;
+    auto side = [&](std::size_t y) { return down ? y < s : y > s; };
+    std::vector<std::size_t> pred;
+    const std::vector<std::size_t> c2 = bfs(e, side, pred);
+    std::vector<char> in_c2(nn, 0);
+    for (const std::size_t x : c2) in_c2[x] = 1;
+    // pi2: from the fork through an arc into C2, then to the extreme e.
+    std::vector<Edge> edges;
+    std::size_t alpha = none, beta = none, best_extreme = none;
+    std::vector<std::size_t> beta_pred;
+    for (const auto& [y, arc] : adj[s]) {
+      if (!side(y)) continue;
+      if (in_c2[y]) {
+        if (alpha == none) alpha = arc;
+        continue;
+      }
+      // A sibling branch: keep the one whose component reaches farthest (the elder extreme).
+      std::vector<std::size_t> pr;
+      const std::vector<std::size_t> comp = bfs(y, side, pr);
+      const std::size_t ext = down ? *std::min_element(comp.begin(), comp.end())
+                                   : *std::max_element(comp.begin(), comp.end());
+      if (best_extreme == none || (down ? ext < best_extreme : ext > best_extreme)) {
+        best_extreme = ext;
+        beta = arc;
+        beta_pred = std::move(pr);
+      }
+    }
+    if (alpha == none || beta == none) return;  // cannot happen for a valid pair
+    {
+      std::vector<std::size_t> arcs{alpha};
+      const std::size_t u = other_end(alpha, s);
+      std::vector<std::size_t> pr;
+      bfs(u, side, pr);
+      const std::vector<std::size_t> rest = path_arcs(e, pr);
+      arcs.insert(arcs.end(), rest.begin(), rest.end());
+      walk(s, arcs, [](Vertex_index) { return false; }, edges);
+    }
+    {
+      // pi1: from the fork through the sibling branch towards its extreme, until the level of e is reached.
+      std::vector<std::size_t> arcs{beta};
+      const std::vector<std::size_t> rest = path_arcs(best_extreme, beta_pred);
+      arcs.insert(arcs.end(), rest.begin(), rest.end());
+      const Vertex_index ev = R.nodes[e].vertex;
+      walk(s, arcs, [&](Vertex_index v) { return down ? !less(ev, v) : !less(v, ev); }, edges);
+    }
+    merging_sets.push_back(std::move(edges));
+    ++result.removed_branches;
+  };
+  for (const auto& p : P.sublevel_branches)
+    if (p.persistence() <= delta) merge_branch(p, true);
+  for (const auto& p : P.superlevel_branches)
+    if (p.persistence() <= delta) merge_branch(p, false);
+  for (std::size_t i = 0; i < P.loops.size(); ++i) {
+    if (P.loops[i].persistence() > delta) continue;
+    std::vector<Edge> edges;
+    for (const std::size_t arc : cycles[i])
+      for (std::size_t j = 0; j + 1 < chain[arc].size(); ++j) edges.push_back(key(chain[arc][j], chain[arc][j + 1]));
+    merging_sets.push_back(std::move(edges));
+    ++result.removed_loops;
+  }
+
+  // Spines and strips.
+  for (std::vector<Edge>& edges : merging_sets) {
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::vector<double> levels;
+    for (const Edge& e : edges) {
+      levels.push_back(val[e[0]]);
+      levels.push_back(val[e[1]]);
+    }
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+    const Vertex_index first = static_cast<Vertex_index>(val.size());
+    for (const double l : levels) val.push_back(l);
+    for (std::size_t i = 0; i + 1 < levels.size(); ++i)
+      Y.edges.push_back({static_cast<Vertex_index>(first + i), static_cast<Vertex_index>(first + i + 1)});
+    auto spine = [&](double l) {
+      return static_cast<Vertex_index>(first + (std::lower_bound(levels.begin(), levels.end(), l) - levels.begin()));
+    };
+    for (const Edge& e : edges) {
+      Vertex_index a = e[0], b = e[1];
+      if (less(b, a)) std::swap(a, b);
+      const Vertex_index lo = spine(val[a]), hi = spine(val[b]);
+      for (Vertex_index s = lo; s < hi; ++s) Y.triangles.push_back({a, s, static_cast<Vertex_index>(s + 1)});
+      Y.triangles.push_back({a, b, hi});
+    }
+  }
+
+  // The Reeb graph of the glued complex, with zero-height arcs contracted.
+  const Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
+  const Augmented_reeb_graph AY = compute_augmented_reeb_graph(K, val);
+  const std::size_t m = val.size();
+  std::vector<std::size_t> parent(m);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& a : AY.arcs())
+    if (val[a.lower] == val[a.upper]) parent[find(a.lower)] = find(a.upper);
+  // Classes, their representative (smallest input vertex, else smallest helper) and members.
+  std::vector<std::size_t> rep(m, none);
+  for (std::size_t v = 0; v < m; ++v) {
+    const std::size_t r = find(v);
+    if (rep[r] == none || v < rep[r]) rep[r] = v;  // inputs (< n) come first
+  }
+  std::vector<std::size_t> classes;
+  for (std::size_t v = 0; v < m; ++v)
+    if (find(v) == v) classes.push_back(v);
+  std::sort(classes.begin(), classes.end(), [&](std::size_t a, std::size_t b) {
+    return val[a] < val[b] || (val[a] == val[b] && rep[a] < rep[b]);
+  });
+  std::vector<std::size_t> class_index(m, none);
+  for (std::size_t i = 0; i < classes.size(); ++i) class_index[classes[i]] = i;
+  const std::size_t nc = classes.size();
+  std::vector<std::vector<std::size_t>> up(nc);
+  std::vector<std::size_t> down_degree(nc, 0);
+  for (const auto& a : AY.arcs()) {
+    if (val[a.lower] == val[a.upper]) continue;
+    const std::size_t cl = class_index[find(a.lower)], cu = class_index[find(a.upper)];
+    up[cl].push_back(cu);
+    ++down_degree[cu];
+  }
+  std::vector<std::vector<Vertex_index>> inputs_of(nc);
+  for (std::size_t v = 0; v < n; ++v) inputs_of[class_index[find(v)]].push_back(static_cast<Vertex_index>(v));
+  Reeb_graph& G = result.graph;
+  std::vector<std::size_t> node_of(nc, none);
+  for (std::size_t c = 0; c < nc; ++c) {
+    const unsigned t = node_type_from_degrees(down_degree[c], up[c].size());
+    if (t == regular) continue;
+    node_of[c] = G.nodes.size();
+    Reeb_graph::Node node;
+    node.vertex = static_cast<Vertex_index>(rep[classes[c]]);
+    node.value = val[classes[c]];
+    node.type = t;
+    for (const Vertex_index v : inputs_of[c])
+      if (v != node.vertex) node.members.push_back(v);
+    FEATURERECON_assertion(node.vertex < n);
+    G.nodes.push_back(std::move(node));
+  }
+  for (std::size_t c = 0; c < nc; ++c) {
+    if (node_of[c] == none) continue;
+    for (std::size_t next : up[c]) {
+      Reeb_graph::Arc arc;
+      arc.lower = node_of[c];
+      while (node_of[next] == none) {
+        arc.vertices.insert(arc.vertices.end(), inputs_of[next].begin(), inputs_of[next].end());
+        next = up[next].front();
+      }
+      arc.upper = node_of[next];
+      G.arcs.push_back(std::move(arc));
+    }
+  }
+  std::vector<std::size_t> cp(G.nodes.size());
+  std::iota(cp.begin(), cp.end(), std::size_t(0));
+  auto cfind = [&](std::size_t x) {
+    while (cp[x] != x) x = cp[x] = cp[cp[x]];
+    return x;
+  };
+  G.components = G.nodes.size();
+  for (const auto& a : G.arcs) {
+    const std::size_t r = cfind(a.lower), s = cfind(a.upper);
+    if (r != s) {
+      cp[r] = s;
+      --G.components;
+    }
+  }
+  return result;
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_SIMPLIFY_BY_PERSISTENCE_H

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/simplify_by_persistence.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "hera_bottleneck.h"
+#include "skeleton_test_utilities.h"
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+using namespace FeatureRecon::test;
+
+namespace {
+std::vector<std::pair<double, double>> diagram(const std::vector<Reeb_persistence_pair>& v) {
+  std::vector<std::pair<double, double>> d;
+  for (const auto& p : v)
+    if (p.birth != p.death) d.emplace_back(p.birth, p.death);  // tied values give points on the diagonal
+  return d;
+}
+std::size_t count_above(const std::vector<Reeb_persistence_pair>& v, double t) {
+  return static_cast<std::size_t>(std::count_if(v.begin(), v.end(), [t](const auto& p) { return p.persistence() > t; }));
+}
+
+/// A random connected graph (a random tree plus extra edges) with a random function; integer values on odd seeds
+/// (many ties).
+Complex_with_function random_graph(std::mt19937& rng, bool ties) {
+  const int n = std::uniform_int_distribution<int>(2, 40)(rng);
+  std::vector<Edge> edges;
+  for (int v = 1; v < n; ++v)
+    edges.push_back({static_cast<Vertex_index>(std::uniform_int_distribution<int>(0, v - 1)(rng)), static_cast<Vertex_index>(v)});
+  const int extra = std::uniform_int_distribution<int>(0, n / 2 + 1)(rng);
+  for (int k = 0; k < extra; ++k) {
+    const auto a = static_cast<Vertex_index>(std::uniform_int_distribution<int>(0, n - 1)(rng));
+    const auto b = static_cast<Vertex_index>(std::uniform_int_distribution<int>(0, n - 1)(rng));
+    if (a != b) edges.push_back({a, b});
+  }
+  std::vector<Triangle> triangles;
+  if (n >= 3 && std::uniform_int_distribution<int>(0, 3)(rng) == 0) triangles.push_back({0, 1, 2});
+  std::vector<double> f(static_cast<std::size_t>(n));
+  for (double& x : f) x = ties ? std::uniform_int_distribution<int>(0, 6)(rng) : std::uniform_real_distribution<double>(0, 1)(rng);
+  return make(static_cast<std::size_t>(n), edges, triangles, f);
+}
+
+/// Every input vertex is exactly once in the graph: a node's vertex or members, or an arc's vertices.
+void expect_partition(const Reeb_graph& G, std::size_t n, const std::string& what) {
+  std::vector<int> seen(n, 0);
+  for (const auto& node : G.nodes) {
+    ASSERT_LT(node.vertex, n) << what;
+    ++seen[node.vertex];
+    for (Vertex_index v : node.members) ++seen[v];
+  }
+  for (const auto& arc : G.arcs)
+    for (Vertex_index v : arc.vertices) ++seen[v];
+  for (std::size_t v = 0; v < n; ++v) EXPECT_EQ(seen[v], 1) << what << ": vertex " << v;
+}
+}  // namespace
+
+TEST(SimplifyByPersistence, GuaranteeOnRandomGraphs) {
+  std::mt19937 rng(2026);
+  std::size_t removed = 0, loops_removed = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    const auto c = random_graph(rng, trial % 2 == 1);
+    const double delta = std::uniform_real_distribution<double>(0, trial % 2 ? 3.0 : 0.5)(rng);
+    const Augmented_reeb_graph A = compute_augmented_reeb_graph(c.complex, c.f);
+    const Reeb_graph_persistence before = compute_reeb_graph_persistence(A.reeb_graph());
+    const Reeb_simplification_result S = simplify_by_persistence(A, delta);
+    const std::string what = "trial " + std::to_string(trial) + " delta " + std::to_string(delta);
+    expect_partition(S.graph, c.complex.number_of_vertices, what);
+    const Reeb_graph_persistence after = compute_reeb_graph_persistence(S.graph);
+    removed += S.removed_branches + S.removed_loops;
+    loops_removed += S.removed_loops;
+    // Features of persistence above 2 delta survive; the diagrams move by at most 2 delta (branches), 6 delta (loops).
+    EXPECT_GE(count_above(after.sublevel_branches, 0.0), count_above(before.sublevel_branches, 2 * delta)) << what;
+    EXPECT_GE(count_above(after.superlevel_branches, 0.0), count_above(before.superlevel_branches, 2 * delta)) << what;
+    EXPECT_GE(count_above(after.loops, 0.0), count_above(before.loops, 2 * delta)) << what;
+    EXPECT_LE(hera_bottleneck(diagram(before.sublevel_branches), diagram(after.sublevel_branches)), 2 * delta + 1e-9) << what;
+    EXPECT_LE(hera_bottleneck(diagram(before.superlevel_branches), diagram(after.superlevel_branches)), 2 * delta + 1e-9) << what;
+    EXPECT_LE(hera_bottleneck(diagram(before.loops), diagram(after.loops)), 6 * delta + 1e-9) << what;
+    EXPECT_EQ(S.graph.components, A.reeb_graph().components) << what;
+    // Exactly the features of persistence <= delta were merged away (so the test fails if nothing is done).
+    const std::size_t n_before = before.sublevel_branches.size() + before.superlevel_branches.size() + before.loops.size();
+    const std::size_t n_after = after.sublevel_branches.size() + after.superlevel_branches.size() + after.loops.size();
+    EXPECT_EQ(n_after + S.removed_branches + S.removed_loops, n_before) << what;
+    EXPECT_EQ(S.removed_loops, before.loops.size() - count_above(before.loops, delta)) << what;
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(removed, 1000u);  // the property was exercised
+  EXPECT_GT(loops_removed, 100u);
+}
+
+TEST(SimplifyByPersistence, RemovesSmallFeaturesOnly) {
+  // A figure-eight-like graph with a short spur: delta between the spur and the loops removes the spur only.
+  // Loop 0-1-3-2 (bottom 0, top 3, height 4), spur 1-5 (f 1 -> 1.3, persistence 0.3 as a superlevel branch).
+  const auto g = make(6, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}, {1, 5}}, {}, {0, 1, 2, 4, 6, 1.3});
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+  const Reeb_simplification_result S = simplify_by_persistence(A, 0.5);
+  EXPECT_EQ(S.removed_branches, 1u);
+  EXPECT_EQ(S.removed_loops, 0u);
+  EXPECT_EQ(S.graph.loops(), 1u);
+  EXPECT_EQ(S.graph.count(maximum), 1u);
+  expect_partition(S.graph, 6, "spur");
+  // A large delta removes the loop too: a single arc.
+  const Reeb_simplification_result T = simplify_by_persistence(A, 10.0);
+  EXPECT_EQ(T.graph.loops(), 0u);
+  EXPECT_EQ(T.graph.nodes.size(), 2u);
+  EXPECT_EQ(T.graph.arcs.size(), 1u);
+  expect_partition(T.graph, 6, "all");
+  // delta = 0 changes nothing.
+  const Reeb_simplification_result Z = simplify_by_persistence(A, 0.0);
+  EXPECT_EQ(Z.graph.nodes.size(), A.reeb_graph().nodes.size());
+  EXPECT_EQ(Z.graph.arcs.size(), A.reeb_graph().arcs.size());
+  EXPECT_THROW(simplify_by_persistence(A, -1.0), std::invalid_argument);
+}
