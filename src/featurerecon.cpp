@@ -35,15 +35,18 @@ const std::vector<Command>& commands() {
        "  --quiet          no progress on standard error\n",
        run_rips},
       {"reeb", "Reeb graph of the function of a complex file",
-       "usage: featurerecon reeb --complex COMPLEX [--json [--persistence]] [--quiet]\n"
+       "usage: featurerecon reeb --complex COMPLEX [--simplify DELTA] [--json [--persistence]] [--quiet]\n"
        "\n"
        "Computes the augmented Reeb graph of the PL function f of the complex (ties broken by vertex index)\n"
        "and reports the Reeb graph (critical nodes only).\n"
        "\n"
        "  --complex FILE   a complex in the exchange format (see 'featurerecon rips --help')\n"
+       "  --simplify DELTA remove every branch and loop of persistence <= DELTA by merging (dissertation 5.3);\n"
+       "                   the counts then describe the simplified graph (JSON adds removed_branches,\n"
+       "                   removed_loops); features above 2 DELTA survive\n"
        "  --json           print one JSON object: vertices, edges, triangles, nodes, arcs, loops (first Betti\n"
        "                   number of the Reeb graph), minima, maxima, up_forks, down_forks, components,\n"
-       "                   augmented_arcs, seconds (Reeb graph time only)\n"
+       "                   augmented_arcs, seconds (Reeb graph time only; with --simplify, simplification included)\n"
        "  --persistence    with --json, also branch_pairs (minimum with the down-fork where its branch ends, and\n"
        "                   maximum with its up-fork) and loop_pairs (essential down-fork with the up-fork at the\n"
        "                   bottom of its thinnest loop), each a list of [birth, death] function values\n"

@@ -5,6 +5,7 @@
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
+#include <FeatureRecon/skeleton/simplify_by_persistence.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
 #include <chrono>
@@ -82,7 +83,12 @@ int run_rips(const std::vector<std::string>& argv) {
 }
 
 int run_reeb(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"json", "quiet", "persistence"}, {"complex"});
+  const Arguments args(argv, {"json", "quiet", "persistence"}, {"complex", "simplify"});
+  double delta = -1;
+  if (args.has("simplify")) {
+    delta = args.get_double("simplify");
+    if (delta < 0) throw Usage_error("--simplify must be >= 0, got '" + args.get("simplify") + "'");
+  }
   if (args.has("persistence") && !args.has("json")) throw Usage_error("--persistence goes with --json");
   const io::Complex_file cf = io::read_complex(args.get("complex"));
   const bool quiet = args.has("quiet") || args.has("json");
@@ -91,7 +97,16 @@ int run_reeb(const std::vector<std::string>& argv) {
   options.progress = std::ref(progress);
   const auto t0 = std::chrono::steady_clock::now();
   const Augmented_reeb_graph augmented = compute_augmented_reeb_graph(cf.complex, cf.values, options);
-  const Reeb_graph R = augmented.reeb_graph();
+  std::size_t removed_branches = 0, removed_loops = 0;
+  Reeb_graph R;
+  if (delta >= 0) {
+    Reeb_simplification_result S = simplify_by_persistence(augmented, delta);
+    R = std::move(S.graph);
+    removed_branches = S.removed_branches;
+    removed_loops = S.removed_loops;
+  } else {
+    R = augmented.reeb_graph();
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.done();
   const Simplicial_complex_2& K = cf.complex;
@@ -103,6 +118,9 @@ int run_reeb(const std::vector<std::string>& argv) {
        << ", \"maxima\": " << R.count(maximum) << ", \"up_forks\": " << R.count(up_fork)
        << ", \"down_forks\": " << R.count(down_fork) << ", \"components\": " << R.components
        << ", \"augmented_arcs\": " << augmented.number_of_arcs() << ", \"seconds\": " << json_number(seconds);
+    if (delta >= 0)
+      os << ", \"simplified_by\": " << json_number(delta) << ", \"removed_branches\": " << removed_branches
+         << ", \"removed_loops\": " << removed_loops;
     if (args.has("persistence")) {
       const Reeb_graph_persistence P = compute_reeb_graph_persistence(R);
       auto list = [&os](const char* name, std::initializer_list<const std::vector<Reeb_persistence_pair>*> parts) {

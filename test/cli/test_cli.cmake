@@ -88,3 +88,8 @@ expect(evaluate_map_bad 1 "bad_edges.txt:1: unknown vertex id 99999" evaluate-ma
 # Cropping to traces: a tracks file covering nothing removes every ground-truth edge.
 file(WRITE ${WORK}/far_tracks.txt "0 0 0 0\n")
 expect(evaluate_map_crop 0 "\"ground_truth_edges\": 0,.*\"ground_truth_edges_before_crop\": 1182" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/far_tracks.txt)
+
+# Simplification: the figure-eight keeps its two loops at delta = 1 and loses them at delta = 20.
+expect(reeb_simplify 0 "\"loops\": 2,.*\"removed_loops\": 0" reeb --complex ${WORK}/fig8.txt --json --simplify 1)
+expect(reeb_simplify_all 0 "\"loops\": 0,.*\"removed_loops\": 2" reeb --complex ${WORK}/fig8.txt --json --simplify 20)
+expect(reeb_simplify_negative 2 "--simplify must be >= 0" reeb --complex ${WORK}/fig8.txt --simplify -1)
