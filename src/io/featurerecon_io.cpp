@@ -157,33 +157,33 @@ std::vector<std::string> split_csv(const std::string& line) {
 }
 }  // namespace
 
-Map_file read_map(const std::string& vertices_path, const std::string& edges_path) {
-  Map_file m;
-  std::map<long long, std::uint32_t> index;
-  {
-    std::ifstream in = open_input(vertices_path);
-    std::string line;
-    std::size_t number = 0;
-    while (std::getline(in, line)) {
-      ++number;
-      const std::string body = line.substr(0, line.find('#'));
-      if (body.find_first_not_of(" \t\r") == std::string::npos) continue;
-      const std::vector<std::string> t = split_csv(body);
-      if (t.size() < 3) throw Input_error(where(vertices_path, number) + "expected 'id,x,y'");
-      const long long id = static_cast<long long>(parse_double(t[0], vertices_path, number, "vertex id"));
-      if (index.count(id)) throw Input_error(where(vertices_path, number) + "vertex id " + t[0] + " repeated");
-      index[id] = static_cast<std::uint32_t>(m.positions.size());
-      m.positions.push_back({parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
-    }
-  }
-  std::ifstream in = open_input(edges_path);
+namespace {
+/// Calls row(fields, line number) for every non-blank line of a comma-separated file ('#' comments).
+template <class Row>
+void for_each_csv_row(const std::string& path, Row row) {
+  std::ifstream in = open_input(path);
   std::string line;
   std::size_t number = 0;
   while (std::getline(in, line)) {
     ++number;
     const std::string body = line.substr(0, line.find('#'));
     if (body.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::vector<std::string> t = split_csv(body);
+    row(split_csv(body), number);
+  }
+}
+}  // namespace
+
+Map_file read_map(const std::string& vertices_path, const std::string& edges_path) {
+  Map_file m;
+  std::map<long long, std::uint32_t> index;
+  for_each_csv_row(vertices_path, [&](const std::vector<std::string>& t, std::size_t number) {
+    if (t.size() < 3) throw Input_error(where(vertices_path, number) + "expected 'id,x,y'");
+    const long long id = static_cast<long long>(parse_double(t[0], vertices_path, number, "vertex id"));
+    if (index.count(id)) throw Input_error(where(vertices_path, number) + "vertex id " + t[0] + " repeated");
+    index[id] = static_cast<std::uint32_t>(m.positions.size());
+    m.positions.push_back({parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
+  });
+  for_each_csv_row(edges_path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3) throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]'");
     std::array<std::uint32_t, 2> e{};
     for (int k = 0; k < 2; ++k) {
@@ -193,7 +193,7 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
       e[k] = it->second;
     }
     m.edges.push_back(e);
-  }
+  });
   return m;
 }
 

@@ -25,6 +25,11 @@ template <class FunctionRange>
 Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K, const FunctionRange& f,
                                                   const Reeb_graph_options& options = {});
 
+struct Reeb_graph;
+namespace internal {
+std::size_t count_components(const Reeb_graph& G);
+}  // namespace internal
+
 /// Criticality of a node of a Reeb graph, as a bit set: a node can carry several flags (degenerate
 /// nodes, e.g. an isolated vertex is a minimum and a maximum; a node with two arcs below and two
 /// above is a down-fork and an up-fork). A regular node (one arc below, one above) has no flag.
@@ -423,6 +428,27 @@ inline void Augmented_reeb_graph::finish() {
   for (std::size_t i = 0; i < m_arcs.size(); ++i) m_up_arcs[fill[m_arcs[i].lower]++] = i;
 }
 
+namespace internal {
+/// Number of connected components of a Reeb graph (union-find over its nodes).
+inline std::size_t count_components(const Reeb_graph& G) {
+  std::vector<std::size_t> parent(G.nodes.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::size_t components = G.nodes.size();
+  for (const Reeb_graph::Arc& a : G.arcs) {
+    const std::size_t r = find(a.lower), s = find(a.upper);
+    if (r != s) {
+      parent[r] = s;
+      --components;
+    }
+  }
+  return components;
+}
+}  // namespace internal
+
 inline Reeb_graph Augmented_reeb_graph::reeb_graph() const {
   Reeb_graph G;
   const std::size_t n = number_of_nodes();
@@ -446,21 +472,7 @@ inline Reeb_graph Augmented_reeb_graph::reeb_graph() const {
       G.arcs.push_back(std::move(arc));
     }
   }
-  // Components of the Reeb graph (union-find over its nodes).
-  std::vector<std::size_t> parent(G.nodes.size());
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  G.components = G.nodes.size();
-  for (const Reeb_graph::Arc& a : G.arcs) {
-    const std::size_t r = find(a.lower), s = find(a.upper);
-    if (r != s) {
-      parent[r] = s;
-      --G.components;
-    }
-  }
+  G.components = internal::count_components(G);
   return G;
 }
 

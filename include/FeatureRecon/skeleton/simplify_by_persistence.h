@@ -287,20 +287,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_g
       G.arcs.push_back(std::move(arc));
     }
   }
-  std::vector<std::size_t> cp(G.nodes.size());
-  std::iota(cp.begin(), cp.end(), std::size_t(0));
-  auto cfind = [&](std::size_t x) {
-    while (cp[x] != x) x = cp[x] = cp[cp[x]];
-    return x;
-  };
-  G.components = G.nodes.size();
-  for (const auto& a : G.arcs) {
-    const std::size_t r = cfind(a.lower), s = cfind(a.upper);
-    if (r != s) {
-      cp[r] = s;
-      --G.components;
-    }
-  }
+  G.components = internal::count_components(G);
   return result;
 }
 
