@@ -5,6 +5,7 @@
 #include <CGAL/Epick_d.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <boost/graph/adjacency_list.hpp>
 
@@ -338,4 +339,37 @@ TEST(EveryEntryPoint, EmptyAndTiedInputs) {
                                   boost::property<boost::edge_weight_t, double>>;
   const G g0;
   EXPECT_EQ(proximity_graph_from_boost_graph(g0, get(boost::edge_weight, g0)).number_of_vertices, 0u);
+}
+
+// The same point set through every kernel: Simple_cartesian<double>, Epick and Epeck, in 2D and 3D.
+template <class Point>
+class RipsGraphKernels : public ::testing::Test {};
+using Kernel_points = ::testing::Types<CGAL::Simple_cartesian<double>::Point_2, CGAL::Epick::Point_2, CGAL::Epeck::Point_2,
+                                       CGAL::Simple_cartesian<double>::Point_3, CGAL::Epick::Point_3, CGAL::Epeck::Point_3>;
+TYPED_TEST_SUITE(RipsGraphKernels, Kernel_points);
+
+TYPED_TEST(RipsGraphKernels, SameGraphAsBruteForceOnAGridWithTies) {
+  using Point = TypeParam;
+  constexpr int dim = CGAL::Ambient_dimension<Point>::value;
+  // A 5x5(x2) integer grid with a duplicate: many equal distances, points exactly at the radius.
+  std::vector<Point> points;
+  Coords coords;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      for (int k = 0; k < (dim == 3 ? 2 : 1); ++k) {
+        if constexpr (dim == 2) {
+          points.emplace_back(i, j);
+          coords.push_back({double(i), double(j)});
+        } else {
+          points.emplace_back(i, j, k);
+          coords.push_back({double(i), double(j), double(k)});
+        }
+      }
+  points.push_back(points[7]);
+  coords.push_back(coords[7]);
+  for (double r : {0.0, 1.0, std::sqrt(2.0), 2.0}) {
+    EXPECT_EQ(build_rips_graph(points, r).edges, build_rips_graph(coords, r).edges) << "r = " << r;
+    EXPECT_EQ(build_rips_graph(points, r).edges, brute_rips(coords, r)) << "r = " << r;
+  }
+  EXPECT_EQ(build_knn_graph(points, 4).edges, brute_knn(coords, 4));
 }
