@@ -38,7 +38,7 @@ struct Simplification_complex {
 /// \endcond
 }  // namespace internal
 
-/// Removes every branch and loop feature of persistence at most `delta` from the Reeb graph of A, by the
+/// Removes every branch and loop feature of persistence at most `delta` from a Reeb graph, by the
 /// merges of dissertation Ch. 5.3.1: a branch's monotone path is glued by function value onto a path into
 /// its sibling component; the two sides of a thin loop are glued into one monotone arc. All merges are applied
 /// together (the transitive closure of the identifications), so features of persistence above 2 delta survive
@@ -48,17 +48,23 @@ struct Simplification_complex {
 /// per function value on it, and every edge of the merging path a strip of triangles to the spine segment of
 /// its values; the level set of the resulting 2-complex at any height joins all points of the merging path at
 /// that height, so its Reeb graph, with arcs of zero height contracted, is the quotient.
-/// \pre delta >= 0 and finite (checked; throws).
-inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta) {
+/// This overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
+/// regular nodes (e.g. after repair_reeb_graph()), which the result absorbs into arcs.
+/// \pre delta >= 0 and finite (checked; throws); every vertex of R indexes `values` (checked; throws).
+inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, const std::vector<double>& values,
+                                                          double delta) {
   const char* fn = "simplify_by_persistence";
   if (!(delta >= 0 && std::isfinite(delta)))
     FeatureRecon::internal::throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
-  const Reeb_graph R = A.reeb_graph();
+  for (std::size_t i = 0; i < R.nodes.size(); ++i)
+    if (R.nodes[i].vertex >= values.size())
+      FeatureRecon::internal::throw_invalid_argument(fn, "node ", i, " has vertex ", R.nodes[i].vertex,
+                                                     " out of range [0, ", values.size(), ")");
   std::vector<std::vector<std::size_t>> cycles;
   const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles);
-  const std::size_t n = A.number_of_nodes();
+  const std::size_t n = values.size();
   internal::Simplification_complex Y;
-  Y.values = A.values();
+  Y.values = values;
   std::vector<double>& val = Y.values;
   auto less = [&](std::size_t a, std::size_t b) { return val[a] < val[b] || (val[a] == val[b] && a < b); };
 
@@ -82,6 +88,10 @@ inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_g
       Y.edges.push_back(key(c[i], c[i + 1]));
     }
   }
+
+  // Members of a node (input vertices identified with it) stay with it: a horizontal edge to the node's vertex.
+  for (const auto& node : R.nodes)
+    for (const Vertex_index v : node.members) Y.edges.push_back(key(node.vertex, v));
 
   // Node adjacency of R with arcs.
   const std::size_t nn = R.nodes.size();
@@ -289,6 +299,11 @@ inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_g
   }
   G.components = internal::count_components(G);
   return result;
+}
+
+/// simplify_by_persistence() of the Reeb graph of A.
+inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta) {
+  return simplify_by_persistence(A.reeb_graph(), A.values(), delta);
 }
 
 }  // namespace skeleton

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_REPAIR_REEB_GRAPH_H
+#define FEATURERECON_SKELETON_REPAIR_REEB_GRAPH_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// Result of repair_reeb_graph().
+struct Reeb_repair_result {
+  Reeb_graph graph;         ///< the graph with the new arcs; may contain regular nodes (simplify next)
+  std::size_t joined = 0;   ///< number of arcs added
+};
+
+/// Graph fixing of dissertation Ch. 3.3.2: joins pairs of degree-1 nodes whose input points are at most
+/// `max_distance` apart (the input distance, not the distance in the complex), closest pairs first, each node at
+/// most once. A joined pair gets a new arc (no interior vertices) from the lower node to the higher one. The new
+/// features are not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and
+/// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes.
+/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
+/// \pre max_distance >= 0 and finite (checked; throws).
+template <class Distance>
+Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance) {
+  const char* fn = "repair_reeb_graph";
+  if (!(max_distance >= 0 && std::isfinite(max_distance)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
+  Reeb_repair_result result;
+  result.graph = R;
+  Reeb_graph& G = result.graph;
+  std::vector<std::size_t> degree(G.nodes.size(), 0);
+  for (const auto& a : G.arcs) {
+    ++degree[a.lower];
+    ++degree[a.upper];
+  }
+  std::vector<std::size_t> ends;
+  for (std::size_t i = 0; i < G.nodes.size(); ++i)
+    if (degree[i] == 1) ends.push_back(i);
+  std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
+  for (std::size_t a = 0; a < ends.size(); ++a)
+    for (std::size_t b = a + 1; b < ends.size(); ++b) {
+      const double d = static_cast<double>(distance(G.nodes[ends[a]].vertex, G.nodes[ends[b]].vertex));
+      if (d <= max_distance) candidates.emplace_back(d, ends[a], ends[b]);
+    }
+  std::sort(candidates.begin(), candidates.end());
+  for (const auto& [d, x, y] : candidates) {
+    if (degree[x] != 1 || degree[y] != 1) continue;
+    Reeb_graph::Arc arc;
+    arc.lower = std::min(x, y);  // nodes are in increasing (value, vertex) order
+    arc.upper = std::max(x, y);
+    G.arcs.push_back(std::move(arc));
+    ++degree[x];
+    ++degree[y];
+    ++result.joined;
+  }
+  // Types and components of the new graph.
+  std::vector<std::size_t> down(G.nodes.size(), 0), up(G.nodes.size(), 0);
+  for (const auto& a : G.arcs) {
+    ++up[a.lower];
+    ++down[a.upper];
+  }
+  for (std::size_t i = 0; i < G.nodes.size(); ++i) G.nodes[i].type = node_type_from_degrees(down[i], up[i]);
+  G.components = internal::count_components(G);
+  return result;
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_REPAIR_REEB_GRAPH_H
