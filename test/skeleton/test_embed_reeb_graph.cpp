@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/embed_reeb_graph.h>
+#include <FeatureRecon/skeleton/geodesic_function.h>
+#include <FeatureRecon/skeleton/rips_graph.h>
+#include <FeatureRecon/skeleton/simplify_by_persistence.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+
+namespace {
+/// A noisy circle of radius 10 (400 points) in R^d: the plane spanned by two random orthonormal directions.
+Point_matrix circle_in(std::size_t d, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  Eigen::MatrixXd frame = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(d), 2);
+  if (d == 2) {
+    frame.setIdentity();
+  } else {
+    for (Eigen::Index r = 0; r < frame.rows(); ++r) frame(r, 0) = g(rng), frame(r, 1) = g(rng);
+    frame = Eigen::HouseholderQR<Eigen::MatrixXd>(frame).householderQ() * Eigen::MatrixXd::Identity(frame.rows(), 2);
+  }
+  Point_matrix m;
+  m.rows = 400;
+  m.dimension = d;
+  std::normal_distribution<double> noise(0.0, 0.05);
+  for (int i = 0; i < 400; ++i) {
+    const double a = 2 * std::acos(-1.0) * i / 400;
+    const Eigen::VectorXd x = frame * Eigen::Vector2d(10 * std::cos(a) + noise(rng), 10 * std::sin(a) + noise(rng));
+    for (Eigen::Index c = 0; c < x.size(); ++c) m.data.push_back(x[c]);
+  }
+  return m;
+}
+
+double norm3(const std::array<double, 3>& p) { return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]); }
+}  // namespace
+
+TEST(EmbedReebGraph, CirclePolylinesStayOnTheCircle) {
+  for (std::size_t d : {2u, 50u}) {
+    const Point_matrix m = circle_in(d, 5);
+    const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(m, 0.8));
+    const auto f = compute_geodesic_function(K).values;
+    const Reeb_graph G = simplify_by_persistence(compute_augmented_reeb_graph(K, f), 1.0).graph;
+    EXPECT_EQ(G.loops(), 1u) << "d = " << d;
+    const std::vector<std::array<double, 3>> xyz = project_to_3d(m);
+    const Reeb_graph_embedding E = embed_reeb_graph(G, xyz, f, d);
+    EXPECT_EQ(E.dimension, std::min<std::size_t>(d, 3));
+    ASSERT_EQ(E.arc_polylines.size(), G.arcs.size());
+    std::size_t points = 0;
+    for (std::size_t k = 0; k < G.arcs.size(); ++k) {
+      const auto& line = E.arc_polylines[k];
+      EXPECT_EQ(line.front(), E.node_positions[G.arcs[k].lower]);
+      EXPECT_EQ(line.back(), E.node_positions[G.arcs[k].upper]);
+      for (const auto& p : line) {
+        // The circle's centre is the origin in 2D and the projected mean in 50D; centroids of level-set pieces
+        // lie a little inside the circle (chords), never far.
+        EXPECT_NEAR(norm3(p), 10.0, 0.6) << "d = " << d;
+        ++points;
+      }
+    }
+    EXPECT_GT(points, 40u);  // pieces, not just the nodes
+  }
+}
+
+TEST(EmbedReebGraph, ProjectionKeepsDistancesOfPlanarData) {
+  const Point_matrix m = circle_in(50, 9);
+  const auto xyz = project_to_3d(m);
+  for (std::size_t i = 0; i < 400; i += 37)
+    for (std::size_t j = i + 1; j < 400; j += 53) {
+      double d50 = 0;
+      for (std::size_t c = 0; c < 50; ++c) d50 += (m.row(i)[c] - m.row(j)[c]) * (m.row(i)[c] - m.row(j)[c]);
+      double d3 = 0;
+      for (int c = 0; c < 3; ++c) d3 += (xyz[i][c] - xyz[j][c]) * (xyz[i][c] - xyz[j][c]);
+      EXPECT_NEAR(std::sqrt(d3), std::sqrt(d50), 1e-9);
+    }
+  EXPECT_EQ(project_to_3d(m), xyz);  // deterministic, signs included
+}
+
+TEST(EmbedReebGraph, BadInput) {
+  Reeb_graph G;
+  G.nodes = {{7, 0.0, minimum | maximum, {}}};
+  EXPECT_THROW(embed_reeb_graph(G, {{0, 0, 0}}, {0.0}, 2), std::invalid_argument);
+  Embedding_options o;
+  o.smoothing_weight = 2;
+  EXPECT_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o), std::invalid_argument);
+}
