@@ -52,6 +52,18 @@ const std::vector<Command>& commands() {
        "                   bottom of its thinnest loop), each a list of [birth, death] function values\n"
        "  --quiet          no progress on standard error\n",
        run_reeb},
+      {"skeleton", "Skeleton graph of points or GPS tracks (Rips, geodesic, Reeb graph, simplification, embedding)",
+       "usage: featurerecon skeleton (--points FILE | --tracks FILE) --radius R [--delta D] [--repair DIST]\n"
+       "                             [--sample-spacing S] --out-vertices V --out-edges E [--quiet]\n"
+       "\n"
+       "Rips 2-complex at radius R, geodesic function, Reeb graph, removal of features of persistence <= D\n"
+       "(default: R), optional repair of gaps up to DIST then a second simplification, embedding; writes the\n"
+       "skeleton as a road map (V: 'id,x,y', E: 'id,v1,v2'; arcs as polylines) and prints a JSON summary.\n"
+       "\n"
+       "  --points FILE    one point per line (any dimension; the map gets the first two coordinates)\n"
+       "  --tracks FILE    GPS tracks, lines 'trip_id x y t' (their points)\n"
+       "  --sample-spacing S  thin the points first: keep a point when no kept point is closer than S\n",
+       run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"
        "                                 [--bearing 45] [--crop-to-tracks TRACKS [--crop-radius 25]]\n"

@@ -3,12 +3,17 @@
 // Subcommands of the skeleton subsystem: rips, reeb.
 
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+#include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
 #include <FeatureRecon/skeleton/simplify_by_persistence.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
+#include <boost/graph/connected_components.hpp>
+
 #include <chrono>
+#include <cmath>
+#include <map>
 #include <cstdio>
 #include <sstream>
 
@@ -147,6 +152,116 @@ int run_reeb(const std::vector<std::string>& argv) {
        << "time: " << seconds << " s\n";
   }
   std::fputs(os.str().c_str(), stdout);
+  return 0;
+}
+
+namespace {
+/// Greedy thinning in input order: a point is kept when no kept point lies within `spacing` (hash grid).
+std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
+  std::vector<std::size_t> kept;
+  if (spacing <= 0) {
+    for (std::size_t i = 0; i < m.rows; ++i) kept.push_back(i);
+    return kept;
+  }
+  std::map<std::vector<long long>, std::vector<std::size_t>> grid;
+  std::vector<long long> cell(m.dimension);
+  for (std::size_t i = 0; i < m.rows; ++i) {
+    for (std::size_t c = 0; c < m.dimension; ++c) cell[c] = static_cast<long long>(std::floor(m.row(i)[c] / spacing));
+    bool close = false;
+    // Neighbouring cells (3^d; used for GPS in 2D).
+    std::vector<long long> probe(cell);
+    const std::size_t combos = static_cast<std::size_t>(std::pow(3.0, static_cast<double>(m.dimension)));
+    for (std::size_t k = 0; k < combos && !close; ++k) {
+      std::size_t r = k;
+      for (std::size_t c = 0; c < m.dimension; ++c, r /= 3) probe[c] = cell[c] + static_cast<long long>(r % 3) - 1;
+      const auto it = grid.find(probe);
+      if (it == grid.end()) continue;
+      for (const std::size_t j : it->second) {
+        double s = 0;
+        for (std::size_t c = 0; c < m.dimension; ++c) s += (m.row(i)[c] - m.row(j)[c]) * (m.row(i)[c] - m.row(j)[c]);
+        if (s < spacing * spacing) {
+          close = true;
+          break;
+        }
+      }
+    }
+    if (!close) {
+      grid[cell].push_back(i);
+      kept.push_back(i);
+    }
+  }
+  return kept;
+}
+}  // namespace
+
+int run_skeleton(const std::vector<std::string>& argv) {
+  const Arguments args(argv, {"quiet"},
+                       {"points", "tracks", "radius", "delta", "repair", "sample-spacing", "out-vertices", "out-edges"});
+  if (args.has("points") == args.has("tracks")) throw Usage_error("give exactly one of --points FILE and --tracks FILE");
+  const double radius = args.get_positive_double("radius");
+  const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
+  Skeleton_options options;
+  options.delta = args.has("delta") ? args.get_double("delta") : radius;
+  if (options.delta < 0) throw Usage_error("--delta must be >= 0");
+  options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
+  if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
+  const double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
+  if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
+  const bool quiet = args.has("quiet");
+  Point_matrix all;
+  if (args.has("points")) {
+    const io::Point_file pf = io::read_points(args.get("points"));
+    all.rows = pf.size();
+    all.dimension = pf.dimension;
+    all.data = pf.coordinates;
+  } else {
+    const auto t = io::read_track_points(args.get("tracks"));
+    all.rows = t.size();
+    all.dimension = 2;
+    for (const auto& p : t) all.data.insert(all.data.end(), p.begin(), p.end());
+  }
+  const std::vector<std::size_t> kept = thin_points(all, spacing);
+  Point_matrix m;
+  m.rows = kept.size();
+  m.dimension = all.dimension;
+  for (const std::size_t i : kept) m.data.insert(m.data.end(), all.row(i), all.row(i) + all.dimension);
+  Progress progress("skeleton", quiet);
+  options.progress = std::ref(progress);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Reeb_skeleton s = extract_reeb_skeleton(m, radius, options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  progress.done();
+  // Map output: nodes first, then the interior points of every arc's polyline.
+  std::vector<std::array<double, 2>> pos;
+  std::vector<std::array<std::uint32_t, 2>> map_edges;
+  for (auto v : boost::make_iterator_range(vertices(s.graph))) pos.push_back({s.graph[v].position[0], s.graph[v].position[1]});
+  for (auto e : boost::make_iterator_range(edges(s.graph))) {
+    const auto& line = s.graph[e].polyline;
+    const bool forward = line.front() == s.graph[source(e, s.graph)].position;
+    std::uint32_t prev = static_cast<std::uint32_t>(forward ? source(e, s.graph) : target(e, s.graph));
+    for (std::size_t k = 1; k + 1 < line.size(); ++k) {
+      pos.push_back({line[k][0], line[k][1]});
+      const std::uint32_t cur = static_cast<std::uint32_t>(pos.size() - 1);
+      map_edges.push_back({prev, cur});
+      prev = cur;
+    }
+    map_edges.push_back({prev, static_cast<std::uint32_t>(forward ? target(e, s.graph) : source(e, s.graph))});
+  }
+  io::write_map(out_v, out_e, pos, map_edges);
+  std::size_t components = 0;
+  {
+    std::vector<int> comp(num_vertices(s.graph));
+    if (!comp.empty()) components = static_cast<std::size_t>(boost::connected_components(s.graph, comp.data()));
+  }
+  std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
+              "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
+              "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
+              "\"seconds\": %s, \"vertices_file\": \"%s\", \"edges_file\": \"%s\"}\n",
+              all.rows, m.rows, json_number(radius).c_str(), json_number(options.delta).c_str(),
+              json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles,
+              num_vertices(s.graph), num_edges(s.graph), num_edges(s.graph) + components - num_vertices(s.graph),
+              components, s.removed_branches, s.removed_loops, s.repaired, json_number(seconds).c_str(), out_v.c_str(),
+              out_e.c_str());
   return 0;
 }
 

@@ -212,6 +212,22 @@ std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
   return p;
 }
 
+void write_map(const std::string& vertices_path, const std::string& edges_path,
+               const std::vector<std::array<double, 2>>& positions, const std::vector<std::array<std::uint32_t, 2>>& edges) {
+  std::string v, e;
+  char buf[128];
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%zu,%.6f,%.6f\n", i, positions[i][0], positions[i][1]);
+    v += buf;
+  }
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%zu,%u,%u\n", i, edges[i][0], edges[i][1]);
+    e += buf;
+  }
+  write_text_file(vertices_path, v);
+  write_text_file(edges_path, e);
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {

@@ -93,3 +93,8 @@ expect(evaluate_map_crop 0 "\"ground_truth_edges\": 0,.*\"ground_truth_edges_bef
 expect(reeb_simplify 0 "\"loops\": 2,.*\"removed_loops\": 0" reeb --complex ${WORK}/fig8.txt --json --simplify 1)
 expect(reeb_simplify_all 0 "\"loops\": 0,.*\"removed_loops\": 2" reeb --complex ${WORK}/fig8.txt --json --simplify 20)
 expect(reeb_simplify_negative 2 "--simplify must be >= 0" reeb --complex ${WORK}/fig8.txt --simplify -1)
+
+# skeleton: the figure-eight sample gives a graph with two loops, written as a road map that evaluate-map reads.
+expect(skeleton 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/sk_v.txt --out-edges ${WORK}/sk_e.txt --quiet)
+expect(skeleton_self_score 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 1)
+expect(skeleton_source 2 "exactly one of --points FILE and --tracks FILE" skeleton --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)

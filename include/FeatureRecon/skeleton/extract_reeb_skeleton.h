@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_EXTRACT_REEB_SKELETON_H
+#define FEATURERECON_SKELETON_EXTRACT_REEB_SKELETON_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+#include <FeatureRecon/skeleton/embed_reeb_graph.h>
+#include <FeatureRecon/skeleton/geodesic_function.h>
+#include <FeatureRecon/skeleton/repair_reeb_graph.h>
+#include <FeatureRecon/skeleton/rips_graph.h>
+#include <FeatureRecon/skeleton/simplify_by_persistence.h>
+
+#include <boost/graph/adjacency_list.hpp>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// Vertex bundle of a skeleton graph: a node of the Reeb graph.
+struct Skeleton_node {
+  std::array<double, 3> position{};    ///< centroid of its points (projected to 3D above 3D)
+  double value = 0;                    ///< function value (geodesic distance)
+  unsigned type = regular;             ///< Node_type flags
+  std::vector<Vertex_index> members;   ///< input points mapped to the node
+};
+
+/// Edge bundle of a skeleton graph: an arc of the Reeb graph.
+struct Skeleton_arc {
+  std::vector<std::array<double, 3>> polyline;  ///< from the lower node to the upper node
+  std::vector<Vertex_index> members;            ///< input points mapped into the arc, in increasing function value
+};
+
+/// The skeleton graph: nodes and arcs of the simplified Reeb graph with their embedding (parallel arcs allowed).
+using Skeleton_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, Skeleton_node, Skeleton_arc>;
+
+/// Options of extract_reeb_skeleton().
+struct Skeleton_options {
+  double delta = 0;            ///< persistence threshold of the simplification (function unit); default 0
+  double repair_distance = 0;  ///< join degree-1 nodes at most this far apart in input space, then simplify again;
+                               ///< 0 (default): no repair
+  Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips graph
+  Embedding_options embedding;                          ///< how arcs are drawn
+  Progress_callback progress;  ///< called with the fraction done; returning false stops (status interrupted)
+};
+
+/// Result of extract_reeb_skeleton(): the skeleton and what the stages produced.
+struct Reeb_skeleton {
+  Skeleton_graph graph;            ///< the skeleton; its members partition the input points
+  std::size_t dimension = 0;       ///< embedding dimension: min(input dimension, 3)
+  std::size_t rips_edges = 0;      ///< size of the Rips complex
+  std::size_t rips_triangles = 0;  ///< size of the Rips complex
+  std::size_t removed_branches = 0, removed_loops = 0, repaired = 0;  ///< what simplification and repair did
+  Status status = Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
+};
+
+/// Builds the skeleton graph from a Reeb graph, its input points' values and an embedding (the last stage).
+inline Skeleton_graph make_skeleton_graph(const Reeb_graph& G, const Reeb_graph_embedding& E) {
+  Skeleton_graph g(G.nodes.size());
+  for (std::size_t i = 0; i < G.nodes.size(); ++i) {
+    Skeleton_node& s = g[i];
+    s.position = E.node_positions[i];
+    s.value = G.nodes[i].value;
+    s.type = G.nodes[i].type;
+    s.members.push_back(G.nodes[i].vertex);
+    s.members.insert(s.members.end(), G.nodes[i].members.begin(), G.nodes[i].members.end());
+  }
+  for (std::size_t k = 0; k < G.arcs.size(); ++k)
+    add_edge(G.arcs[k].lower, G.arcs[k].upper, Skeleton_arc{E.arc_polylines[k], G.arcs[k].vertices}, g);
+  return g;
+}
+
+/// One call from points to a skeleton graph (dissertation Ch. 3): Rips 2-complex at `rips_radius`, geodesic
+/// function, augmented Reeb graph, simplification of features of persistence <= delta, optional repair and a
+/// second simplification, embedding. Each stage is also callable alone (see doc/skeleton.md).
+/// \pre rips_radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
+inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double rips_radius,
+                                           const Skeleton_options& options = {}) {
+  const char* fn = "extract_reeb_skeleton";
+  if (!(options.delta >= 0 && std::isfinite(options.delta)) ||
+      !(options.repair_distance >= 0 && std::isfinite(options.repair_distance)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "delta and repair_distance must be finite and >= 0");
+  Reeb_skeleton result;
+  result.dimension = std::min<std::size_t>(points.dimension, 3);
+  if (points.rows == 0) {
+    result.status = Status::degenerate_input;
+    return result;
+  }
+  auto stage = [&](double a, double b) -> Progress_callback {
+    if (!options.progress) return {};
+    return [&options, a, b](double t) { return options.progress(a + (b - a) * t); };
+  };
+  Proximity_graph_options po;
+  po.search = options.search;
+  po.progress = stage(0.0, 0.4);
+  const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(points, rips_radius, po), stage(0.4, 0.5));
+  result.rips_edges = K.number_of_edges();
+  result.rips_triangles = K.number_of_triangles();
+  Geodesic_options go;
+  go.progress = stage(0.5, 0.6);
+  const Geodesic_result geo = compute_geodesic_function(K, go);
+  Reeb_graph_options ro;
+  ro.progress = stage(0.6, 0.9);
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, geo.values, ro);
+  if (geo.status == Status::interrupted || A.status() == Status::interrupted) {
+    result.status = Status::interrupted;
+    return result;
+  }
+  Reeb_simplification_result S = simplify_by_persistence(A, options.delta);
+  result.removed_branches = S.removed_branches;
+  result.removed_loops = S.removed_loops;
+  if (options.repair_distance > 0) {
+    auto distance = [&points](Vertex_index a, Vertex_index b) {
+      double s = 0;
+      for (std::size_t c = 0; c < points.dimension; ++c) s += (points.row(a)[c] - points.row(b)[c]) * (points.row(a)[c] - points.row(b)[c]);
+      return std::sqrt(s);
+    };
+    const Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance);
+    result.repaired = fixed.joined;
+    S = simplify_by_persistence(fixed.graph, A.values(), options.delta);
+    result.removed_branches += S.removed_branches;
+    result.removed_loops += S.removed_loops;
+  }
+  const Reeb_graph_embedding E =
+      embed_reeb_graph(S.graph, project_to_3d(points), A.values(), points.dimension, options.embedding);
+  result.graph = make_skeleton_graph(S.graph, E);
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  return result;
+}
+
+/// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.
+template <class PointRange, class Traits = Point_coordinate_traits<
+                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Reeb_skeleton extract_reeb_skeleton(const PointRange& points, double rips_radius, const Skeleton_options& options = {},
+                                    const Traits& traits = Traits()) {
+  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), rips_radius, options);
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_EXTRACT_REEB_SKELETON_H
