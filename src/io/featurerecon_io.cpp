@@ -57,24 +57,31 @@ std::ifstream open_input(const std::string& path) {
   return in;
 }
 
-}  // namespace
-
-Point_file read_points(const std::string& path) {
+/// Calls row(tokens, line number) for every line with tokens of a whitespace-separated file ('#' comments).
+template <class Row>
+void for_each_token_row(const std::string& path, Row row) {
   std::ifstream in = open_input(path);
-  Point_file pf;
   std::string line;
   std::size_t number = 0;
   while (std::getline(in, line)) {
     ++number;
     const std::vector<std::string> t = tokens(line);
-    if (t.empty()) continue;
+    if (!t.empty()) row(t, number);
+  }
+}
+
+}  // namespace
+
+Point_file read_points(const std::string& path) {
+  Point_file pf;
+  for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (pf.dimension == 0) pf.dimension = t.size();
     if (t.size() != pf.dimension)
       throw Input_error(where(path, number) + "point has " + std::to_string(t.size()) + " coordinates, the first point has " +
                         std::to_string(pf.dimension));
     for (const std::string& s : t) pf.coordinates.push_back(parse_double(s, path, number, "coordinate"));
     pf.lines.push_back(number);
-  }
+  });
   return pf;
 }
 
@@ -198,17 +205,11 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
 }
 
 std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
-  std::ifstream in = open_input(path);
   std::vector<std::array<double, 2>> p;
-  std::string line;
-  std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const std::vector<std::string> t = tokens(line);
-    if (t.empty()) continue;
+  for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3) throw Input_error(where(path, number) + "expected 'trip_id x y [t]'");
     p.push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y")});
-  }
+  });
   return p;
 }
 
