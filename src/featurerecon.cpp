@@ -54,7 +54,8 @@ const std::vector<Command>& commands() {
        run_reeb},
       {"skeleton", "Skeleton graph of points or GPS tracks (Rips, geodesic, Reeb graph, simplification, embedding)",
        "usage: featurerecon skeleton (--points FILE | --tracks FILE) --radius R [--delta D] [--repair DIST]\n"
-       "                             [--sample-spacing S] --out-vertices V --out-edges E [--quiet]\n"
+       "                             [--sample-spacing S] --out-vertices V --out-edges E\n"
+       "                             [--graphml F] [--geojson F] [--ply F] [--svg F] [--quiet]\n"
        "\n"
        "Rips 2-complex at radius R, geodesic function, Reeb graph, removal of features of persistence <= D\n"
        "(default: R), optional repair of gaps up to DIST then a second simplification, embedding; writes the\n"
@@ -62,7 +63,8 @@ const std::vector<Command>& commands() {
        "\n"
        "  --points FILE    one point per line (any dimension; the map gets the first two coordinates)\n"
        "  --tracks FILE    GPS tracks, lines 'trip_id x y t' (their points)\n"
-       "  --sample-spacing S  thin the points first: keep a point when no kept point is closer than S\n",
+       "  --sample-spacing S  thin the points first: keep a point when no kept point is closer than S\n"
+       "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), an SVG picture\n",
        run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "../io/featurerecon_io.h"
+#include "../io/skeleton_io.h"
 #include "cli_common.h"
 #include "commands.h"
 
@@ -196,7 +197,8 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet"},
-                       {"points", "tracks", "radius", "delta", "repair", "sample-spacing", "out-vertices", "out-edges"});
+                       {"points", "tracks", "radius", "delta", "repair", "sample-spacing", "out-vertices", "out-edges",
+                        "graphml", "geojson", "ply", "svg"});
   if (args.has("points") == args.has("tracks")) throw Usage_error("give exactly one of --points FILE and --tracks FILE");
   const double radius = args.get_positive_double("radius");
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
@@ -248,6 +250,14 @@ int run_skeleton(const std::vector<std::string>& argv) {
     map_edges.push_back({prev, static_cast<std::uint32_t>(forward ? target(e, s.graph) : source(e, s.graph))});
   }
   io::write_map(out_v, out_e, pos, map_edges);
+  if (args.has("graphml")) io::write_skeleton_graphml(args.get("graphml"), s.graph);
+  if (args.has("geojson")) io::write_skeleton_geojson(args.get("geojson"), s.graph);
+  if (args.has("ply")) io::write_skeleton_ply(args.get("ply"), s.graph);
+  if (args.has("svg")) {
+    std::vector<std::array<double, 2>> xy;
+    for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
+    io::write_skeleton_svg(args.get("svg"), xy, s.graph);
+  }
   std::size_t components = 0;
   {
     std::vector<int> comp(num_vertices(s.graph));

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include "skeleton_io.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "featurerecon_io.h"
+
+namespace FeatureRecon {
+namespace io {
+namespace {
+using skeleton::Skeleton_graph;
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6f", x);
+  return buf;
+}
+
+const char* type_name(unsigned t) {
+  using namespace skeleton;
+  if ((t & minimum) && (t & maximum)) return "isolated";
+  if (t & minimum) return (t & up_fork) ? "minimum+up-fork" : "minimum";
+  if (t & maximum) return (t & down_fork) ? "maximum+down-fork" : "maximum";
+  if ((t & up_fork) && (t & down_fork)) return "up-fork+down-fork";
+  if (t & up_fork) return "up-fork";
+  if (t & down_fork) return "down-fork";
+  return "regular";
+}
+}  // namespace
+
+void write_skeleton_graphml(const std::string& path, const Skeleton_graph& g) {
+  std::ostringstream os;
+  os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<graphml xmlns=\"http://graphml.graphdrawing.org/xmlns\">\n"
+        "  <key id=\"x\" for=\"node\" attr.name=\"x\" attr.type=\"double\"/>\n"
+        "  <key id=\"y\" for=\"node\" attr.name=\"y\" attr.type=\"double\"/>\n"
+        "  <key id=\"z\" for=\"node\" attr.name=\"z\" attr.type=\"double\"/>\n"
+        "  <key id=\"value\" for=\"node\" attr.name=\"value\" attr.type=\"double\"/>\n"
+        "  <key id=\"type\" for=\"node\" attr.name=\"type\" attr.type=\"string\"/>\n"
+        "  <key id=\"polyline\" for=\"edge\" attr.name=\"polyline\" attr.type=\"string\"/>\n"
+        "  <key id=\"members\" for=\"edge\" attr.name=\"members\" attr.type=\"int\"/>\n"
+        "  <graph id=\"skeleton\" edgedefault=\"undirected\">\n";
+  for (auto v : boost::make_iterator_range(vertices(g))) {
+    const auto& n = g[v];
+    os << "    <node id=\"n" << v << "\"><data key=\"x\">" << number(n.position[0]) << "</data><data key=\"y\">"
+       << number(n.position[1]) << "</data><data key=\"z\">" << number(n.position[2]) << "</data><data key=\"value\">"
+       << number(n.value) << "</data><data key=\"type\">" << type_name(n.type) << "</data></node>\n";
+  }
+  std::size_t k = 0;
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    os << "    <edge id=\"e" << k++ << "\" source=\"n" << source(e, g) << "\" target=\"n" << target(e, g)
+       << "\"><data key=\"polyline\">";
+    bool first = true;
+    for (const auto& p : g[e].polyline) {
+      os << (first ? "" : ";") << number(p[0]) << " " << number(p[1]) << " " << number(p[2]);
+      first = false;
+    }
+    os << "</data><data key=\"members\">" << g[e].members.size() << "</data></edge>\n";
+  }
+  os << "  </graph>\n</graphml>\n";
+  write_text_file(path, os.str());
+}
+
+void write_skeleton_geojson(const std::string& path, const Skeleton_graph& g) {
+  std::ostringstream os;
+  os << "{\"type\": \"FeatureCollection\", \"features\": [\n";
+  bool first = true;
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    os << (first ? "" : ",\n") << "{\"type\": \"Feature\", \"geometry\": {\"type\": \"LineString\", \"coordinates\": [";
+    first = false;
+    bool p0 = true;
+    for (const auto& p : g[e].polyline) {
+      os << (p0 ? "" : ", ") << "[" << number(p[0]) << ", " << number(p[1]) << "]";
+      p0 = false;
+    }
+    os << "]}, \"properties\": {\"kind\": \"arc\", \"members\": " << g[e].members.size() << "}}";
+  }
+  for (auto v : boost::make_iterator_range(vertices(g))) {
+    const auto& n = g[v];
+    os << (first ? "" : ",\n") << "{\"type\": \"Feature\", \"geometry\": {\"type\": \"Point\", \"coordinates\": ["
+       << number(n.position[0]) << ", " << number(n.position[1]) << "]}, \"properties\": {\"kind\": \"node\", \"type\": \""
+       << type_name(n.type) << "\", \"value\": " << number(n.value) << "}}";
+    first = false;
+  }
+  os << "\n]}\n";
+  write_text_file(path, os.str());
+}
+
+void write_skeleton_ply(const std::string& path, const Skeleton_graph& g) {
+  std::vector<std::array<double, 3>> pts;
+  std::vector<std::array<std::size_t, 2>> segs;
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    const auto& line = g[e].polyline;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      pts.push_back(line[i]);
+      if (i > 0) segs.push_back({pts.size() - 2, pts.size() - 1});
+    }
+  }
+  std::ostringstream os;
+  os << "ply\nformat ascii 1.0\ncomment FeatureRecon skeleton: arcs as polylines\nelement vertex " << pts.size()
+     << "\nproperty double x\nproperty double y\nproperty double z\nelement edge " << segs.size()
+     << "\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+  for (const auto& p : pts) os << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
+  for (const auto& s : segs) os << s[0] << " " << s[1] << "\n";
+  write_text_file(path, os.str());
+}
+
+void write_skeleton_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
+                        const Skeleton_graph& g) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  auto extend = [&](double x, double y) {
+    x0 = std::min(x0, x);
+    y0 = std::min(y0, y);
+    x1 = std::max(x1, x);
+    y1 = std::max(y1, y);
+  };
+  for (const auto& p : points) extend(p[0], p[1]);
+  for (auto v : boost::make_iterator_range(vertices(g))) extend(g[v].position[0], g[v].position[1]);
+  if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
+  const double scale = 1000.0 / std::max({x1 - x0, y1 - y0, 1e-9}), margin = 10;
+  auto X = [&](double x) { return number(margin + (x - x0) * scale); };
+  auto Y = [&](double y) { return number(margin + (y1 - y) * scale); };
+  std::ostringstream os;
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(2 * margin + (x1 - x0) * scale)
+     << "\" height=\"" << number(2 * margin + (y1 - y0) * scale) << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for (const auto& p : points) os << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"1\" fill=\"#c0c0c0\"/>\n";
+  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  std::size_t k = 0;
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    os << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << colours[k++ % 8] << "\" points=\"";
+    for (const auto& p : g[e].polyline) os << X(p[0]) << "," << Y(p[1]) << " ";
+    os << "\"/>\n";
+  }
+  for (auto v : boost::make_iterator_range(vertices(g)))
+    os << "<circle cx=\"" << X(g[v].position[0]) << "\" cy=\"" << Y(g[v].position[1])
+       << "\" r=\"3\" fill=\"black\"/>\n";
+  os << "</svg>\n";
+  write_text_file(path, os.str());
+}
+
+}  // namespace io
+}  // namespace FeatureRecon

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SRC_IO_SKELETON_IO_H
+#define FEATURERECON_SRC_IO_SKELETON_IO_H
+
+// Writers of a skeleton graph: GraphML, GeoJSON (2D), PLY polylines (3D) and an SVG picture with the input points.
+
+#include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace FeatureRecon {
+namespace io {
+
+/// GraphML: nodes with x, y, z, value and type; edges with the polyline as "x y z;x y z;..." and the member count.
+void write_skeleton_graphml(const std::string& path, const skeleton::Skeleton_graph& g);
+/// GeoJSON FeatureCollection: one LineString per arc (its polyline, x y) and one Point per node (properties type
+/// and value). Coordinates are written as given (e.g. UTM metres).
+void write_skeleton_geojson(const std::string& path, const skeleton::Skeleton_graph& g);
+/// ASCII PLY: the polyline points as vertices and consecutive pairs as edges (3D).
+void write_skeleton_ply(const std::string& path, const skeleton::Skeleton_graph& g);
+/// SVG picture: the input points (grey) and the skeleton (arcs as coloured polylines, nodes by type), in x y.
+void write_skeleton_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
+                        const skeleton::Skeleton_graph& g);
+
+}  // namespace io
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SRC_IO_SKELETON_IO_H
