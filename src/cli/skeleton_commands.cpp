@@ -5,11 +5,14 @@
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
+#include <FeatureRecon/skeleton/gps_traces.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
 #include <FeatureRecon/skeleton/simplify_by_persistence.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
 #include <boost/graph/connected_components.hpp>
+
+#include <Eigen/Core>
 
 #include <chrono>
 #include <cmath>
@@ -197,42 +200,124 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet"},
-                       {"points", "tracks", "radius", "delta", "repair", "sample-spacing", "out-vertices", "out-edges",
-                        "graphml", "geojson", "ply", "svg"});
-  if (args.has("points") == args.has("tracks")) throw Usage_error("give exactly one of --points FILE and --tracks FILE");
-  const double radius = args.get_positive_double("radius");
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "prune", "level-width", "smoothing",
+                        "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
+  const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
+                     int(args.has("graph"));
+  if (inputs != 1)
+    throw Usage_error("give exactly one of --points FILE, --tracks FILE, --distance-matrix FILE and --graph FILE");
+  if (args.has("graph") && args.has("radius"))
+    throw Usage_error("--radius does not apply to --graph (the graph's edges are used as they are)");
+  if (!args.has("tracks") && !args.has("graph") && !args.has("radius"))
+    throw Usage_error("--radius R is required with --points and --distance-matrix");
+  // With --tracks every unset parameter is derived from the data (the median step between fixes).
+  std::vector<Gps_trip> trips;
+  double median_step = 0;
+  if (args.has("tracks")) {
+    for (const auto& trip : io::read_track_trips(args.get("tracks"))) {
+      trips.emplace_back();
+      for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
+    }
+    median_step = median_gps_step(trips);
+  }
+  const double radius = args.has("radius") ? args.get_positive_double("radius")
+                        : args.has("tracks") ? std::min(50.0, std::max(10.0, median_step))
+                                             : 0.0;
+  const bool gps = args.has("tracks");
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
   Skeleton_options options;
-  options.delta = args.has("delta") ? args.get_double("delta") : radius;
+  options.delta = args.has("delta") ? args.get_double("delta") : gps ? 3 * radius : radius;
   if (options.delta < 0) throw Usage_error("--delta must be >= 0");
-  options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
+  options.repair_distance = args.has("repair") ? args.get_double("repair") : gps ? 2.5 * radius : 0.0;
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
-  const double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
+  options.embedding.level_width = args.has("level-width") ? args.get_double("level-width") : 0.0;
+  if (!(options.embedding.level_width >= 0)) throw Usage_error("--level-width must be >= 0");
+  if (args.has("smoothing")) {
+    const long long it = args.get_int("smoothing");
+    if (it < 0) throw Usage_error("--smoothing must be an integer >= 0");
+    options.embedding.smoothing_iterations = static_cast<std::size_t>(it);
+  }
+  options.prune_height = args.has("prune") ? args.get_double("prune") : gps ? 5 * radius : 0.0;
+  if (!(options.prune_height >= 0)) throw Usage_error("--prune must be >= 0");
+  double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
   if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
   const bool quiet = args.has("quiet");
-  Point_matrix all;
-  if (args.has("points")) {
-    const io::Point_file pf = io::read_points(args.get("points"));
-    all.rows = pf.size();
-    all.dimension = pf.dimension;
-    all.data = pf.coordinates;
-  } else {
-    const auto t = io::read_track_points(args.get("tracks"));
-    all.rows = t.size();
-    all.dimension = 2;
-    for (const auto& p : t) all.data.insert(all.data.end(), p.begin(), p.end());
-  }
-  const std::vector<std::size_t> kept = thin_points(all, spacing);
+  if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density")))
+    throw Usage_error("--link-gap, --heading-tolerance and --min-density apply to --tracks only");
+  if ((args.has("graph") || args.has("distance-matrix")) && args.has("sample-spacing"))
+    throw Usage_error("--sample-spacing applies to --points and --tracks only");
   Point_matrix m;
-  m.rows = kept.size();
-  m.dimension = all.dimension;
-  for (const std::size_t i : kept) m.data.insert(m.data.end(), all.row(i), all.row(i) + all.dimension);
+  std::size_t input_points = 0;
   Progress progress("skeleton", quiet);
   options.progress = std::ref(progress);
   const auto t0 = std::chrono::steady_clock::now();
-  const Reeb_skeleton s = extract_reeb_skeleton(m, radius, options);
+  Reeb_skeleton s;
+  std::string gps_json;
+  std::size_t sampled = 0;
+  if (args.has("points")) {
+    const io::Point_file pf = io::read_points(args.get("points"));
+    Point_matrix all;
+    all.rows = pf.size();
+    all.dimension = pf.dimension;
+    all.data = pf.coordinates;
+    input_points = all.rows;
+    const std::vector<std::size_t> kept = thin_points(all, spacing);
+    m.rows = kept.size();
+    m.dimension = all.dimension;
+    for (const std::size_t i : kept) m.data.insert(m.data.end(), all.row(i), all.row(i) + all.dimension);
+    s = extract_reeb_skeleton(m, radius, options);
+  } else if (args.has("distance-matrix")) {
+    const io::Point_file pf = io::read_points(args.get("distance-matrix"));
+    if (pf.dimension != pf.size())
+      throw Usage_error(args.get("distance-matrix") + ": a distance matrix needs n rows of n numbers; got " +
+                        std::to_string(pf.size()) + " rows of " + std::to_string(pf.dimension));
+    Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> D(
+        pf.coordinates.data(), static_cast<Eigen::Index>(pf.size()), static_cast<Eigen::Index>(pf.size()));
+    input_points = pf.size();
+    s = extract_reeb_skeleton_from_distance_matrix(D, radius, options);
+    m.dimension = 3;
+    m.rows = 0;  // no coordinates to draw: the SVG shows the skeleton only
+    sampled = pf.size();
+  } else if (args.has("graph")) {
+    const io::Complex_file cf = io::read_complex(args.get("graph"));
+    Proximity_graph g;
+    g.number_of_vertices = cf.complex.number_of_vertices;
+    g.edges = cf.complex.edges;
+    for (const Edge& e : g.edges) {
+      const auto &a = cf.positions[e[0]], &b = cf.positions[e[1]];
+      g.edge_lengths.push_back(std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                         (a[2] - b[2]) * (a[2] - b[2])));
+    }
+    m.rows = cf.positions.size();
+    m.dimension = 3;
+    for (const auto& p : cf.positions) m.data.insert(m.data.end(), p.begin(), p.end());
+    input_points = m.rows;
+    s = extract_reeb_skeleton(g, m, options);
+  } else {
+    Gps_trace_options go;
+    go.sample_spacing = spacing;
+    go.max_link_gap = args.has("link-gap") ? args.get_double("link-gap") : 0.0;
+    go.heading_tolerance = args.has("heading-tolerance") ? args.get_double("heading-tolerance") : 30.0;
+    go.min_relative_density = args.has("min-density") ? args.get_double("min-density") : 0.15;
+    if (!(go.min_relative_density >= 0 && go.min_relative_density <= 1))
+      throw Usage_error("--min-density must be in [0, 1]");
+    if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
+      throw Usage_error("--heading-tolerance must be in [0, 180] degrees");
+    const Gps_trace_sample sample = sample_gps_traces(trips, radius, go);
+    input_points = sample.fixes;
+    spacing = sample.sample_spacing;
+    m = sample.points;
+    const Proximity_graph g = build_gps_trace_graph(sample, radius, go.heading_tolerance);
+    s = extract_reeb_skeleton(g, m, options);
+    gps_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
+               ", \"link_gap\": " + json_number(sample.max_link_gap) + ", \"min_density\": " +
+               json_number(go.min_relative_density) + ", \"dropped_sparse\": " + std::to_string(sample.dropped) + ", \"prune\": " +
+               json_number(options.prune_height) + ", \"trip_links\": " +
+               std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.done();
+  if (m.rows > 0) sampled = m.rows;
   // Map output: nodes first, then the interior points of every arc's polyline.
   std::vector<std::array<double, 2>> pos;
   std::vector<std::array<std::uint32_t, 2>> map_edges;
@@ -266,11 +351,11 @@ int run_skeleton(const std::vector<std::string>& argv) {
   std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
               "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
               "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
-              "\"seconds\": %s, \"vertices_file\": \"%s\", \"edges_file\": \"%s\"}\n",
-              all.rows, m.rows, json_number(radius).c_str(), json_number(options.delta).c_str(),
+              "\"level_width\": %s%s, \"seconds\": %s, \"vertices_file\": \"%s\", \"edges_file\": \"%s\"}\n",
+              input_points, sampled, json_number(radius).c_str(), json_number(options.delta).c_str(),
               json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles,
               num_vertices(s.graph), num_edges(s.graph), num_edges(s.graph) + components - num_vertices(s.graph),
-              components, s.removed_branches, s.removed_loops, s.repaired, json_number(seconds).c_str(), out_v.c_str(),
+              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(), gps_json.c_str(), json_number(seconds).c_str(), out_v.c_str(),
               out_e.c_str());
   return 0;
 }

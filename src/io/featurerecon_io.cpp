@@ -213,6 +213,19 @@ std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
   return p;
 }
 
+std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path) {
+  std::vector<std::vector<std::array<double, 3>>> trips;
+  std::map<std::string, std::size_t> index;
+  for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
+    if (t.size() < 3) throw Input_error(where(path, number) + "expected 'trip_id x y [t]'");
+    const auto it = index.emplace(t[0], trips.size()).first;
+    if (it->second == trips.size()) trips.emplace_back();
+    trips[it->second].push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y"),
+                                 t.size() > 3 ? parse_double(t[3], path, number, "t") : static_cast<double>(number)});
+  });
+  return trips;
+}
+
 void write_map(const std::string& vertices_path, const std::string& edges_path,
                const std::vector<std::array<double, 2>>& positions, const std::vector<std::array<std::uint32_t, 2>>& edges) {
   std::string v, e;

@@ -60,6 +60,10 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
 /// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y).
 std::vector<std::array<double, 2>> read_track_points(const std::string& path);
 
+/// GPS tracks grouped by trip: trips in order of first appearance, each a list of (x, y, t) in file order.
+/// A missing t is the line number (file order). Trip ids are any token.
+std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path);
+
 /// Writes a road map in the benchmark's format (vertices `id,x,y`, edges `id,v1,v2`), each file atomically.
 void write_map(const std::string& vertices_path, const std::string& edges_path,
                const std::vector<std::array<double, 2>>& positions, const std::vector<std::array<std::uint32_t, 2>>& edges);

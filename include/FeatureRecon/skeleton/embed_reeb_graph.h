@@ -66,18 +66,46 @@ inline std::vector<std::array<double, 3>> project_to_3d(const Point_matrix& m) {
   return out;
 }
 
-/// Embeds a Reeb graph (dissertation Ch. 3.3.1): a node sits at the centroid of its points (its vertex and
-/// members); an arc becomes a polyline from its lower node through the centroids of its level-set pieces (its
-/// points cut into bins of function value) to its upper node, then smoothed by Laplacian rounds with fixed ends.
-/// \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param values f per point.
-/// \pre every vertex of G indexes positions and values (checked; throws); level_width >= 0, weight in [0, 1]
-///      (checked; throws).
-inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const std::vector<std::array<double, 3>>& positions,
+namespace internal {
+
+/// Adjacency of a proximity graph in compressed rows (both directions).
+struct Adjacency {
+  std::vector<std::size_t> offsets;
+  std::vector<Vertex_index> targets;
+};
+
+inline Adjacency make_adjacency(const Proximity_graph& g) {
+  Adjacency a;
+  a.offsets.assign(g.number_of_vertices + 1, 0);
+  for (const auto& e : g.edges) {
+    ++a.offsets[e[0] + 1];
+    ++a.offsets[e[1] + 1];
+  }
+  for (std::size_t i = 0; i < g.number_of_vertices; ++i) a.offsets[i + 1] += a.offsets[i];
+  a.targets.resize(a.offsets.back());
+  std::vector<std::size_t> fill(a.offsets.begin(), a.offsets.end() - 1);
+  for (const auto& e : g.edges) {
+    a.targets[fill[e[0]]++] = e[1];
+    a.targets[fill[e[1]]++] = e[0];
+  }
+  return a;
+}
+
+inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacency* adjacency,
+                                             const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,
-                                             const Embedding_options& options = {}) {
+                                             const Embedding_options& options) {
   const char* fn = "embed_reeb_graph";
   if (positions.size() != values.size())
     FeatureRecon::internal::throw_invalid_argument(fn, "positions and values differ in size");
+  if (adjacency != nullptr && adjacency->offsets.size() != positions.size() + 1)
+    FeatureRecon::internal::throw_invalid_argument(fn, "the graph has ", adjacency->offsets.size() - 1,
+                                                   " vertices but there are ", positions.size(), " positions");
   if (!(options.level_width >= 0) || !(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "level_width must be >= 0 and smoothing_weight in [0, 1]");
   auto check = [&](Vertex_index v) {
@@ -102,34 +130,127 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const std::vec
     first = false;
   }
   const double width = options.level_width > 0 ? options.level_width : (fmax > fmin ? (fmax - fmin) / 64 : 1.0);
-  for (const auto& arc : G.arcs) {
-    std::vector<std::array<double, 3>> line{E.node_positions[arc.lower]};
-    // Level-set pieces: consecutive points (in f order) within one bin of width `width`.
-    std::size_t i = 0;
-    while (i < arc.vertices.size()) {
-      check(arc.vertices[i]);
-      const double bin = std::floor(values[arc.vertices[i]] / width);
-      std::array<double, 3> c{0.0, 0.0, 0.0};
-      std::size_t count = 0;
-      for (; i < arc.vertices.size() && std::floor(values[arc.vertices[i]] / width) == bin; ++i, ++count) {
-        check(arc.vertices[i]);
-        for (int k = 0; k < 3; ++k) c[k] += positions[arc.vertices[i]][k];
+  // Local index of each input vertex in the arc being drawn (stamped by arc), its bin, and a union-find.
+  std::vector<std::size_t> stamp(adjacency != nullptr ? positions.size() : 0, static_cast<std::size_t>(-1));
+  std::vector<std::size_t> local(stamp.size()), parent, run_of, size;
+  for (std::size_t a = 0; a < G.arcs.size(); ++a) {
+    const auto& arc = G.arcs[a];
+    const auto& vs = arc.vertices;
+    for (const Vertex_index v : vs) check(v);
+    // Runs of consecutive points (in f order) within one bin of width `width`.
+    run_of.assign(vs.size(), 0);
+    std::size_t runs = 0;
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      if (i > 0 && std::floor(values[vs[i]] / width) != std::floor(values[vs[i - 1]] / width)) ++runs;
+      run_of[i] = runs;
+    }
+    if (!vs.empty()) ++runs;
+    // Level-set pieces: connected components of a run in the graph (one piece per run without a graph).
+    parent.resize(vs.size());
+    for (std::size_t i = 0; i < vs.size(); ++i) parent[i] = i;
+    if (adjacency != nullptr) {
+      for (std::size_t i = 0; i < vs.size(); ++i) {
+        stamp[vs[i]] = a;
+        local[vs[i]] = i;
       }
-      for (int k = 0; k < 3; ++k) c[k] /= static_cast<double>(count);
+      for (std::size_t i = 0; i < vs.size(); ++i)
+        for (std::size_t k = adjacency->offsets[vs[i]]; k < adjacency->offsets[vs[i] + 1]; ++k) {
+          const Vertex_index w = adjacency->targets[k];
+          if (stamp[w] != a || run_of[local[w]] != run_of[i]) continue;
+          const std::size_t x = find_root(parent, i), y = find_root(parent, local[w]);
+          if (x != y) parent[std::max(x, y)] = std::min(x, y);  // root = smallest index: deterministic
+        }
+    } else {
+      for (std::size_t i = 1; i < vs.size(); ++i)
+        if (run_of[i] == run_of[i - 1]) parent[i] = parent[i - 1];
+    }
+    size.assign(vs.size(), 0);
+    for (std::size_t i = 0; i < vs.size(); ++i) ++size[find_root(parent, i)];
+    std::vector<std::array<double, 3>> line{E.node_positions[arc.lower]};
+    std::size_t i = 0;
+    while (i < vs.size()) {
+      // The largest piece of the run (ties: the one holding the earliest point) carries the polyline.
+      std::size_t j = i, best = find_root(parent, i);
+      for (; j < vs.size() && run_of[j] == run_of[i]; ++j)
+        if (size[find_root(parent, j)] > size[best]) best = find_root(parent, j);
+      std::array<double, 3> c{0.0, 0.0, 0.0};
+      for (std::size_t t = i; t < j; ++t)
+        if (find_root(parent, t) == best)
+          for (int k = 0; k < 3; ++k) c[k] += positions[vs[t]][k];
+      for (int k = 0; k < 3; ++k) c[k] /= static_cast<double>(size[best]);
       line.push_back(c);
+      i = j;
     }
     line.push_back(E.node_positions[arc.upper]);
     for (std::size_t it = 0; it < options.smoothing_iterations && line.size() > 2; ++it) {
       std::vector<std::array<double, 3>> next = line;
-      for (std::size_t j = 1; j + 1 < line.size(); ++j)
+      for (std::size_t t = 1; t + 1 < line.size(); ++t)
         for (int k = 0; k < 3; ++k)
-          next[j][k] = (1 - options.smoothing_weight) * line[j][k] +
-                       options.smoothing_weight * 0.5 * (line[j - 1][k] + line[j + 1][k]);
+          next[t][k] = (1 - options.smoothing_weight) * line[t][k] +
+                       options.smoothing_weight * 0.5 * (line[t - 1][k] + line[t + 1][k]);
       line.swap(next);
     }
     E.arc_polylines.push_back(std::move(line));
   }
   return E;
+}
+
+}  // namespace internal
+
+/// Classical multidimensional scaling of a dense distance matrix (row-major n x n) into at most 3 dimensions:
+/// the eigenvectors of the double-centred squared distances for the three largest eigenvalues, scaled by their
+/// square roots (negative eigenvalues give 0). Deterministic signs as in project_to_3d(). O(n^3) (Eigen).
+inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
+  std::vector<std::array<double, 3>> out(n, {0.0, 0.0, 0.0});
+  if (n == 0) return out;
+  const Eigen::Index N = static_cast<Eigen::Index>(n);
+  Eigen::MatrixXd B(N, N);
+  for (Eigen::Index i = 0; i < N; ++i)
+    for (Eigen::Index j = 0; j < N; ++j) {
+      const double d = D[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)];
+      B(i, j) = -0.5 * d * d;
+    }
+  const Eigen::VectorXd row_mean = B.rowwise().mean();
+  const double mean = row_mean.mean();
+  for (Eigen::Index i = 0; i < N; ++i)
+    for (Eigen::Index j = 0; j < N; ++j) B(i, j) += mean - row_mean[i] - row_mean[j];
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B);  // ascending eigenvalues
+  for (int c = 0; c < 3 && c < N; ++c) {
+    const double lambda = eig.eigenvalues()[N - 1 - c];
+    if (!(lambda > 0)) break;
+    Eigen::VectorXd v = eig.eigenvectors().col(N - 1 - c);
+    Eigen::Index k = 0;
+    v.cwiseAbs().maxCoeff(&k);
+    if (v[k] < 0) v = -v;
+    for (Eigen::Index i = 0; i < N; ++i) out[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = v[i] * std::sqrt(lambda);
+  }
+  return out;
+}
+
+/// Embeds a Reeb graph (dissertation Ch. 3.3.1): a node sits at the centroid of its points (its vertex and
+/// members); an arc becomes a polyline from its lower node through the centroids of its level-set pieces (its
+/// points cut into bins of function value) to its upper node, then smoothed by Laplacian rounds with fixed ends.
+/// Without a graph, all of an arc's points in one bin form one piece.
+/// \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param values f per point.
+/// \pre every vertex of G indexes positions and values (checked; throws); level_width >= 0, weight in [0, 1]
+///      (checked; throws).
+inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const std::vector<std::array<double, 3>>& positions,
+                                             const std::vector<double>& values, std::size_t dimension,
+                                             const Embedding_options& options = {}) {
+  return internal::embed_reeb_graph(G, nullptr, positions, values, dimension, options);
+}
+
+/// embed_reeb_graph() where a level-set piece is a connected component, in `graph` (the 1-skeleton of the complex
+/// the Reeb graph was computed on), of an arc's points in one bin. When simplification merged several pieces into
+/// one arc (a removed branch or the two sides of a thin loop), the polyline goes through the largest piece, so
+/// removed features do not pull it off the surviving path.
+/// \pre graph.number_of_vertices == positions.size() (checked; throws).
+inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Proximity_graph& graph,
+                                             const std::vector<std::array<double, 3>>& positions,
+                                             const std::vector<double>& values, std::size_t dimension,
+                                             const Embedding_options& options = {}) {
+  const internal::Adjacency adjacency = internal::make_adjacency(graph);
+  return internal::embed_reeb_graph(G, &adjacency, positions, values, dimension, options);
 }
 
 }  // namespace skeleton

@@ -14,6 +14,7 @@
 
 #include <boost/graph/adjacency_list.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -43,6 +44,9 @@ struct Skeleton_options {
   double delta = 0;            ///< persistence threshold of the simplification (function unit); default 0
   double repair_distance = 0;  ///< join degree-1 nodes at most this far apart in input space, then simplify again;
                                ///< 0 (default): no repair
+  /// Remove connected components of height (range of f) at most this after simplification and repair; their
+  /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all.
+  double prune_height = 0;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips graph
   Embedding_options embedding;                          ///< how arcs are drawn
   Progress_callback progress;  ///< called with the fraction done; returning false stops (status interrupted)
@@ -55,6 +59,9 @@ struct Reeb_skeleton {
   std::size_t rips_edges = 0;      ///< size of the Rips complex
   std::size_t rips_triangles = 0;  ///< size of the Rips complex
   std::size_t removed_branches = 0, removed_loops = 0, repaired = 0;  ///< what simplification and repair did
+  std::size_t pruned_components = 0;                       ///< components removed (Skeleton_options::prune_height)
+  std::vector<Vertex_index> pruned_points;                 ///< their input points (sorted)
+  double level_width = 0;          ///< level width the embedding used
   Status status = Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
 };
 
@@ -74,37 +81,47 @@ inline Skeleton_graph make_skeleton_graph(const Reeb_graph& G, const Reeb_graph_
   return g;
 }
 
-/// One call from points to a skeleton graph (dissertation Ch. 3): Rips 2-complex at `rips_radius`, geodesic
-/// function, augmented Reeb graph, simplification of features of persistence <= delta, optional repair and a
-/// second simplification, embedding. Each stage is also callable alone (see doc/skeleton.md).
-/// \pre rips_radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
-inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double rips_radius,
-                                           const Skeleton_options& options = {}) {
-  const char* fn = "extract_reeb_skeleton";
+namespace internal {
+
+inline double median_edge_length(const Proximity_graph& g) {
+  if (g.edges.empty()) return 0;
+  std::vector<double> l(g.edges.size());
+  for (std::size_t e = 0; e < l.size(); ++e) l[e] = g.length(e);
+  std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
+  return l[l.size() / 2];
+}
+
+inline void check_skeleton_options(const Skeleton_options& options, const char* fn) {
   if (!(options.delta >= 0 && std::isfinite(options.delta)) ||
-      !(options.repair_distance >= 0 && std::isfinite(options.repair_distance)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "delta and repair_distance must be finite and >= 0");
+      !(options.repair_distance >= 0 && std::isfinite(options.repair_distance)) || !(options.prune_height >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "delta, repair_distance and prune_height must be finite and >= 0");
+}
+
+/// The stages after the proximity graph; `distance` measures input space for the repair.
+template <class Distance>
+Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const std::vector<std::array<double, 3>>& positions,
+                                  std::size_t dimension, const Distance& distance, const Skeleton_options& options,
+                                  double progress_start) {
   Reeb_skeleton result;
-  result.dimension = std::min<std::size_t>(points.dimension, 3);
-  if (points.rows == 0) {
+  result.dimension = std::min<std::size_t>(dimension, 3);
+  if (graph.number_of_vertices == 0) {
     result.status = Status::degenerate_input;
     return result;
   }
   auto stage = [&](double a, double b) -> Progress_callback {
     if (!options.progress) return {};
+    a = progress_start + (1 - progress_start) * a;
+    b = progress_start + (1 - progress_start) * b;
     return [&options, a, b](double t) { return options.progress(a + (b - a) * t); };
   };
-  Proximity_graph_options po;
-  po.search = options.search;
-  po.progress = stage(0.0, 0.4);
-  const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(points, rips_radius, po), stage(0.4, 0.5));
+  const Simplicial_complex_2 K = build_flag_complex_2(graph, stage(0.0, 0.2));
   result.rips_edges = K.number_of_edges();
   result.rips_triangles = K.number_of_triangles();
   Geodesic_options go;
-  go.progress = stage(0.5, 0.6);
+  go.progress = stage(0.2, 0.35);
   const Geodesic_result geo = compute_geodesic_function(K, go);
   Reeb_graph_options ro;
-  ro.progress = stage(0.6, 0.9);
+  ro.progress = stage(0.35, 0.85);
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, geo.values, ro);
   if (geo.status == Status::interrupted || A.status() == Status::interrupted) {
     result.status = Status::interrupted;
@@ -114,22 +131,83 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   result.removed_branches = S.removed_branches;
   result.removed_loops = S.removed_loops;
   if (options.repair_distance > 0) {
-    auto distance = [&points](Vertex_index a, Vertex_index b) {
-      double s = 0;
-      for (std::size_t c = 0; c < points.dimension; ++c) s += (points.row(a)[c] - points.row(b)[c]) * (points.row(a)[c] - points.row(b)[c]);
-      return std::sqrt(s);
-    };
     const Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance);
     result.repaired = fixed.joined;
     S = simplify_by_persistence(fixed.graph, A.values(), options.delta);
     result.removed_branches += S.removed_branches;
     result.removed_loops += S.removed_loops;
   }
-  const Reeb_graph_embedding E =
-      embed_reeb_graph(S.graph, project_to_3d(points), A.values(), points.dimension, options.embedding);
+  if (options.prune_height > 0) {
+    Reeb_prune_result pruned = prune_reeb_graph_components(S.graph, options.prune_height);
+    S.graph = std::move(pruned.graph);
+    result.pruned_components = pruned.removed_components;
+    result.pruned_points = std::move(pruned.removed_vertices);
+  }
+  Embedding_options eo = options.embedding;
+  if (eo.level_width == 0) eo.level_width = median_edge_length(K);
+  result.level_width = eo.level_width;
+  const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, positions, A.values(), dimension, eo);
   result.graph = make_skeleton_graph(S.graph, E);
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
+}
+
+inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Vertex_index b) {
+  double s = 0;
+  for (std::size_t c = 0; c < points.dimension; ++c)
+    s += (points.row(a)[c] - points.row(b)[c]) * (points.row(a)[c] - points.row(b)[c]);
+  return std::sqrt(s);
+}
+
+}  // namespace internal
+
+/// One call from points to a skeleton graph (dissertation Ch. 3): Rips 2-complex at `rips_radius`, geodesic
+/// function, augmented Reeb graph, simplification of features of persistence <= delta, optional repair and a
+/// second simplification, embedding. Each stage is also callable alone (see doc/skeleton.md).
+/// The automatic level width of the embedding is the median edge length of the complex.
+/// \pre rips_radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
+inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double rips_radius,
+                                           const Skeleton_options& options = {}) {
+  internal::check_skeleton_options(options, "extract_reeb_skeleton");
+  Proximity_graph_options po;
+  po.search = options.search;
+  if (options.progress) po.progress = [&options](double t) { return options.progress(0.3 * t); };
+  const Proximity_graph g = build_rips_graph(points, rips_radius, po);
+  return internal::skeleton_from_graph(
+      g, project_to_3d(points), points.dimension,
+      [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3);
+}
+
+/// The skeleton of a proximity graph whose vertices have coordinates (any dimension; projected to 3D by PCA
+/// for the embedding above 3D): the stages of extract_reeb_skeleton() after the Rips graph. The graph's edge
+/// lengths drive the geodesic function; the coordinates, the repair distance and the embedding.
+/// \pre coordinates.rows == graph.number_of_vertices (checked; throws).
+inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const Point_matrix& coordinates,
+                                           const Skeleton_options& options = {}) {
+  internal::check_skeleton_options(options, "extract_reeb_skeleton");
+  if (coordinates.rows != graph.number_of_vertices)
+    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "the graph has ", graph.number_of_vertices,
+                                                   " vertices but coordinates has ", coordinates.rows, " rows");
+  return internal::skeleton_from_graph(
+      graph, project_to_3d(coordinates), coordinates.dimension,
+      [&coordinates](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(coordinates, a, b); },
+      options, 0.0);
+}
+
+/// The skeleton of a dense distance matrix: Rips graph at `rips_radius` on the matrix, then the stages of
+/// extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses classical MDS into 3D
+/// (O(n^3)). \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
+template <class Matrix>
+Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double rips_radius,
+                                                         const Skeleton_options& options = {}) {
+  const char* fn = "extract_reeb_skeleton_from_distance_matrix";
+  internal::check_skeleton_options(options, fn);
+  std::size_t n = 0;
+  const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
+  const Proximity_graph g = build_rips_graph_from_distance_matrix(D, rips_radius);
+  return internal::skeleton_from_graph(
+      g, classical_mds_3d(a, n), std::min<std::size_t>(n, 3),
+      [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.0);
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.

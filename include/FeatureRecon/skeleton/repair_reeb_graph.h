@@ -71,6 +71,69 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
   return result;
 }
 
+/// Result of prune_reeb_graph_components().
+struct Reeb_prune_result {
+  Reeb_graph graph;                   ///< the graph without the pruned components
+  std::size_t removed_components = 0;
+  std::vector<Vertex_index> removed_vertices;  ///< input vertices of the removed components (sorted)
+};
+
+/// Removes every connected component of height (maximum minus minimum of f over its nodes) at most
+/// `max_height`: the essential 0-dimensional features of persistence <= max_height, which simplification keeps
+/// (a component is never merged into another). Small isolated pieces of noise go; nodes keep their order.
+/// \pre max_height >= 0 (checked; throws).
+inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height) {
+  if (!(max_height >= 0))
+    FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components", "max_height must be >= 0");
+  std::vector<std::size_t> parent(R.nodes.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto find = [&parent](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& a : R.arcs) {
+    const std::size_t x = find(a.lower), y = find(a.upper);
+    if (x != y) parent[std::max(x, y)] = std::min(x, y);
+  }
+  std::vector<double> low(R.nodes.size(), 0), high(R.nodes.size(), 0);
+  std::vector<bool> seen(R.nodes.size(), false);
+  for (std::size_t i = 0; i < R.nodes.size(); ++i) {
+    const std::size_t c = find(i);
+    if (!seen[c]) {
+      seen[c] = true;
+      low[c] = high[c] = R.nodes[i].value;
+    }
+    low[c] = std::min(low[c], R.nodes[i].value);
+    high[c] = std::max(high[c], R.nodes[i].value);
+  }
+  Reeb_prune_result result;
+  std::vector<std::size_t> index(R.nodes.size(), static_cast<std::size_t>(-1));
+  for (std::size_t i = 0; i < R.nodes.size(); ++i) {
+    const std::size_t c = find(i);
+    if (high[c] - low[c] <= max_height) {
+      if (c == i) ++result.removed_components;
+      result.removed_vertices.push_back(R.nodes[i].vertex);
+      result.removed_vertices.insert(result.removed_vertices.end(), R.nodes[i].members.begin(), R.nodes[i].members.end());
+      continue;
+    }
+    index[i] = result.graph.nodes.size();
+    result.graph.nodes.push_back(R.nodes[i]);
+  }
+  for (const auto& a : R.arcs) {
+    if (index[a.lower] == static_cast<std::size_t>(-1)) {
+      result.removed_vertices.insert(result.removed_vertices.end(), a.vertices.begin(), a.vertices.end());
+      continue;
+    }
+    Reeb_graph::Arc b = a;
+    b.lower = index[a.lower];
+    b.upper = index[a.upper];
+    result.graph.arcs.push_back(std::move(b));
+  }
+  std::sort(result.removed_vertices.begin(), result.removed_vertices.end());
+  result.graph.components = R.components - result.removed_components;
+  return result;
+}
+
 }  // namespace skeleton
 }  // namespace FeatureRecon
 

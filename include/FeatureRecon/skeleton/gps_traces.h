@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_GPS_TRACES_H
+#define FEATURERECON_SKELETON_GPS_TRACES_H
+
+// GPS traces as input of the skeleton pipeline (dissertation Ch. 3.4, road maps): densify each trip along its
+// segments, sample the result at a spacing (greedy, in trip order, so deterministic), and build the proximity
+// graph of the samples from Rips edges plus links between consecutive samples of a trip.
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/skeleton/Simplicial_complex_2.h>
+#include <FeatureRecon/skeleton/rips_graph.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// One GPS fix: planar position (metres) and time (seconds; only the order matters).
+struct Gps_fix {
+  double x = 0, y = 0, time = 0;
+};
+
+/// A trip: fixes of one vehicle; sample_gps_traces() sorts them by time (stable, so equal times keep file order).
+using Gps_trip = std::vector<Gps_fix>;
+
+/// Options of sample_gps_traces(). A value of 0 asks for the automatic rule given on the field; the values used
+/// are returned in Gps_trace_sample.
+struct Gps_trace_options {
+  /// Minimum distance between two samples (greedy thinning in trip order). 0: half the Rips radius.
+  double sample_spacing = 0;
+  /// Consecutive fixes of a trip at most this far apart are linked: points are inserted along the segment every
+  /// half sample spacing, and consecutive samples become graph edges. 0: four times the median step of the data,
+  /// at least twice the Rips radius. Negative: no linking.
+  double max_link_gap = 0;
+  /// Rips edges join samples whose travel directions (modulo 180 degrees) differ by at most this angle. Samples
+  /// of crossing streets then touch only where vehicles turn. 180 (default): directions are ignored.
+  double heading_tolerance = 180;
+  /// Drops samples that stand for fewer trace points than this fraction of the most any sample within
+  /// `density_radius` stands for: scattered fixes (multipath next to tall buildings) away from the dense band of
+  /// the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all.
+  double min_relative_density = 0;
+  /// Radius of the local maximum above. 0: twice the Rips radius.
+  double density_radius = 0;
+};
+
+/// Samples of GPS traces with the parameters used.
+struct Gps_trace_sample {
+  Point_matrix points;                       ///< sample positions (dimension 2)
+  std::vector<double> headings;              ///< travel direction of each sample in [0, 180) degrees
+  std::vector<std::uint32_t> weights;        ///< trace points (fixes and inserted points) each sample stands for
+  std::vector<Edge> trip_links;              ///< consecutive samples of a trip (sorted, unique, u < v)
+  std::vector<std::uint32_t> sample_of_fix;  ///< per input fix (trips concatenated in order): its sample
+  std::size_t fixes = 0;                     ///< number of input fixes
+  double sample_spacing = 0;                 ///< value used
+  double max_link_gap = 0;                   ///< value used (negative: no linking)
+  double median_step = 0;                    ///< median distance between consecutive fixes of a trip
+  double density_radius = 0;                 ///< value used
+  std::size_t dropped = 0;                   ///< samples dropped as sparse (their fixes map to no sample: -1)
+};
+
+namespace internal {
+
+inline double heading_difference(double a, double b) {
+  const double d = std::fabs(a - b);
+  return std::min(d, 180.0 - d);
+}
+
+struct Cell_hash {
+  std::size_t operator()(const std::array<std::int64_t, 2>& c) const {
+    return static_cast<std::size_t>(c[0] * 73856093LL ^ c[1] * 19349663LL);
+  }
+};
+
+/// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius; re-indexes.
+inline void drop_sparse_samples(Gps_trace_sample& S, double fraction) {
+  const double R = S.density_radius, R2 = R * R;
+  std::unordered_map<std::array<std::int64_t, 2>, std::vector<std::uint32_t>, Cell_hash> grid;
+  auto cell_of = [R](double x, double y) {
+    return std::array<std::int64_t, 2>{static_cast<std::int64_t>(std::floor(x / R)),
+                                       static_cast<std::int64_t>(std::floor(y / R))};
+  };
+  for (std::uint32_t i = 0; i < S.points.rows; ++i) grid[cell_of(S.points.row(i)[0], S.points.row(i)[1])].push_back(i);
+  const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> new_index(S.points.rows, none);
+  Gps_trace_sample T;
+  T.points.dimension = 2;
+  for (std::uint32_t i = 0; i < S.points.rows; ++i) {
+    const double x = S.points.row(i)[0], y = S.points.row(i)[1];
+    const auto c = cell_of(x, y);
+    std::uint32_t heaviest = 0;
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = grid.find({c[0] + dx, c[1] + dy});
+        if (it == grid.end()) continue;
+        for (const std::uint32_t j : it->second) {
+          const double ex = S.points.row(j)[0] - x, ey = S.points.row(j)[1] - y;
+          if (ex * ex + ey * ey <= R2) heaviest = std::max(heaviest, S.weights[j]);
+        }
+      }
+    if (static_cast<double>(S.weights[i]) < fraction * static_cast<double>(heaviest)) continue;
+    new_index[i] = static_cast<std::uint32_t>(T.headings.size());
+    T.points.data.push_back(x);
+    T.points.data.push_back(y);
+    T.headings.push_back(S.headings[i]);
+    T.weights.push_back(S.weights[i]);
+  }
+  S.dropped = S.points.rows - T.headings.size();
+  S.points = std::move(T.points);
+  S.points.rows = T.headings.size();
+  S.headings = std::move(T.headings);
+  S.weights = std::move(T.weights);
+  for (auto& s : S.sample_of_fix) s = new_index[s];
+  std::vector<Edge> links;
+  for (const Edge& e : S.trip_links)
+    if (new_index[e[0]] != none && new_index[e[1]] != none)
+      links.push_back({std::min(new_index[e[0]], new_index[e[1]]), std::max(new_index[e[0]], new_index[e[1]])});
+  S.trip_links = std::move(links);
+}
+
+}  // namespace internal
+
+/// Median distance between consecutive fixes (by time) of the trips: the scale the automatic parameters of
+/// the GPS pipeline derive from (0 when no trip has two fixes). Non-finite values are skipped.
+inline double median_gps_step(const std::vector<Gps_trip>& trips) {
+  std::vector<double> steps;
+  for (const Gps_trip& trip : trips) {
+    std::vector<std::size_t> o(trip.size());
+    for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
+    std::stable_sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return trip[a].time < trip[b].time; });
+    for (std::size_t i = 1; i < o.size(); ++i) {
+      const double d = std::hypot(trip[o[i]].x - trip[o[i - 1]].x, trip[o[i]].y - trip[o[i - 1]].y);
+      if (std::isfinite(d)) steps.push_back(d);
+    }
+  }
+  if (steps.empty()) return 0;
+  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+  return steps[steps.size() / 2];
+}
+
+/// Densifies and samples GPS traces (see Gps_trace_options). Each sample carries the direction of the segment it
+/// came from; a trace point joins the first earlier sample within the spacing whose direction differs by at most
+/// the heading tolerance, so opposite sides of a crossing stay apart when directions are used.
+/// \param rips_radius the radius the samples will be joined at (for the automatic rules).
+/// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
+///         or non-finite rips_radius, or a negative sample spacing.
+inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
+                                          const Gps_trace_options& options = {}) {
+  const char* fn = "sample_gps_traces";
+  if (!(rips_radius > 0 && std::isfinite(rips_radius)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ", rips_radius);
+  if (!(options.sample_spacing >= 0 && std::isfinite(options.sample_spacing)) || !std::isfinite(options.max_link_gap))
+    FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing must be finite and >= 0, max_link_gap finite");
+  if (!(options.heading_tolerance >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees");
+  Gps_trace_sample S;
+  S.points.dimension = 2;
+  // Sorted copies of the trips; the median step.
+  std::vector<std::vector<std::size_t>> order(trips.size());
+  for (std::size_t t = 0; t < trips.size(); ++t) {
+    for (std::size_t i = 0; i < trips[t].size(); ++i) {
+      const Gps_fix& f = trips[t][i];
+      if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.time))
+        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " has a non-finite value");
+    }
+    order[t].resize(trips[t].size());
+    for (std::size_t i = 0; i < order[t].size(); ++i) order[t][i] = i;
+    std::stable_sort(order[t].begin(), order[t].end(),
+                     [&](std::size_t a, std::size_t b) { return trips[t][a].time < trips[t][b].time; });
+    S.fixes += trips[t].size();
+  }
+  S.median_step = median_gps_step(trips);
+  S.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : rips_radius / 2;
+  S.max_link_gap = options.max_link_gap != 0 ? options.max_link_gap : std::max(4 * S.median_step, 2 * rips_radius);
+  const double insert_step = S.sample_spacing / 2;
+  const double spacing2 = S.sample_spacing * S.sample_spacing;
+  const double cell = S.sample_spacing;
+  std::unordered_map<std::array<std::int64_t, 2>, std::vector<std::uint32_t>, internal::Cell_hash> grid;
+  auto cell_of = [cell](double x, double y) {
+    return std::array<std::int64_t, 2>{static_cast<std::int64_t>(std::floor(x / cell)),
+                                       static_cast<std::int64_t>(std::floor(y / cell))};
+  };
+  // The sample a trace point joins (creating one if none is close): first in creation order.
+  auto join = [&](double x, double y, double heading) -> std::uint32_t {
+    const auto c = cell_of(x, y);
+    std::uint32_t best = std::numeric_limits<std::uint32_t>::max();
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = grid.find({c[0] + dx, c[1] + dy});
+        if (it == grid.end()) continue;
+        for (const std::uint32_t s : it->second) {
+          if (s >= best) break;  // cells hold samples in creation order
+          const double ex = S.points.data[2 * s] - x, ey = S.points.data[2 * s + 1] - y;
+          if (ex * ex + ey * ey < spacing2 &&
+              internal::heading_difference(S.headings[s], heading) <= options.heading_tolerance)
+            best = s;
+        }
+      }
+    if (best == std::numeric_limits<std::uint32_t>::max()) {
+      best = static_cast<std::uint32_t>(S.headings.size());
+      S.points.data.push_back(x);
+      S.points.data.push_back(y);
+      S.headings.push_back(heading);
+      S.weights.push_back(0);
+      grid[c].push_back(best);
+    }
+    ++S.weights[best];
+    return best;
+  };
+  auto heading_of = [](double dx, double dy) {
+    if (dx == 0 && dy == 0) return 0.0;
+    double h = std::atan2(dy, dx) * 180.0 / 3.14159265358979323846;
+    if (h < 0) h += 180;
+    if (h >= 180) h -= 180;
+    return h;
+  };
+  S.sample_of_fix.assign(S.fixes, 0);
+  std::size_t first_fix = 0;
+  for (std::size_t t = 0; t < trips.size(); ++t) {
+    const auto& o = order[t];
+    std::uint32_t previous = std::numeric_limits<std::uint32_t>::max();
+    auto link = [&](std::uint32_t s) {
+      if (previous != std::numeric_limits<std::uint32_t>::max() && previous != s)
+        S.trip_links.push_back({std::min(previous, s), std::max(previous, s)});
+      previous = s;
+    };
+    for (std::size_t i = 0; i < o.size(); ++i) {
+      const Gps_fix& f = trips[t][o[i]];
+      // Direction: of the segment to the next fix (the previous one at the end of the trip).
+      double dx = 0, dy = 0;
+      if (i + 1 < o.size()) {
+        dx = trips[t][o[i + 1]].x - f.x;
+        dy = trips[t][o[i + 1]].y - f.y;
+      } else if (i > 0) {
+        dx = f.x - trips[t][o[i - 1]].x;
+        dy = f.y - trips[t][o[i - 1]].y;
+      }
+      const double h = heading_of(dx, dy);
+      const std::uint32_t s = join(f.x, f.y, h);
+      S.sample_of_fix[first_fix + o[i]] = s;
+      if (i > 0) {
+        const Gps_fix& p = trips[t][o[i - 1]];
+        if (!(S.max_link_gap > 0 && std::hypot(f.x - p.x, f.y - p.y) <= S.max_link_gap))
+          previous = std::numeric_limits<std::uint32_t>::max();  // a gap: the trip restarts here
+      }
+      link(s);
+      if (i + 1 < o.size() && S.max_link_gap > 0) {
+        const double d = std::hypot(dx, dy);
+        if (d <= S.max_link_gap && d > insert_step) {
+          const std::size_t n = static_cast<std::size_t>(std::floor(d / insert_step));
+          for (std::size_t j = 1; j < n; ++j) {
+            const double u = static_cast<double>(j) / static_cast<double>(n);
+            link(join(f.x + u * dx, f.y + u * dy, h));
+          }
+        }
+      }
+    }
+    first_fix += trips[t].size();
+  }
+  S.points.rows = S.headings.size();
+  S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
+  if (options.min_relative_density > 0 && S.points.rows > 0) internal::drop_sparse_samples(S, options.min_relative_density);
+  std::sort(S.trip_links.begin(), S.trip_links.end());
+  S.trip_links.erase(std::unique(S.trip_links.begin(), S.trip_links.end()), S.trip_links.end());
+  return S;
+}
+
+/// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose headings
+/// differ by at most `heading_tolerance` degrees, plus the trip links; lengths are Euclidean.
+inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double rips_radius,
+                                             double heading_tolerance = 180,
+                                             const Proximity_graph_options& options = {}) {
+  Proximity_graph rips = build_rips_graph(S.points, rips_radius, options);
+  std::vector<Edge> edges;
+  edges.reserve(rips.edges.size() + S.trip_links.size());
+  for (const Edge& e : rips.edges)
+    if (heading_tolerance >= 90 || internal::heading_difference(S.headings[e[0]], S.headings[e[1]]) <= heading_tolerance)
+      edges.push_back(e);
+  edges.insert(edges.end(), S.trip_links.begin(), S.trip_links.end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  Proximity_graph g;
+  g.number_of_vertices = S.points.rows;
+  g.edges = std::move(edges);
+  for (const Edge& e : g.edges)
+    g.edge_lengths.push_back(std::hypot(S.points.row(e[0])[0] - S.points.row(e[1])[0],
+                                        S.points.row(e[0])[1] - S.points.row(e[1])[1]));
+  return g;
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_GPS_TRACES_H
