@@ -4,6 +4,10 @@
 
 #include <boost/graph/connected_components.hpp>
 
+#include <Eigen/Core>
+
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "skeleton_test_utilities.h"
@@ -80,4 +84,65 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   Skeleton_options bad;
   bad.delta = -1;
   EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad), std::invalid_argument);
+}
+
+TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
+  const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
+  const std::size_t n = eight.points.size();
+  Eigen::MatrixXd D(n, n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      D(i, j) = std::hypot(eight.points[i][0] - eight.points[j][0], eight.points[i][1] - eight.points[j][1]);
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Reeb_skeleton from_points = extract_reeb_skeleton(eight.points, 0.7, o);
+  const Reeb_skeleton from_matrix = extract_reeb_skeleton_from_distance_matrix(D, 0.7, o);
+  EXPECT_EQ(from_matrix.rips_edges, from_points.rips_edges);
+  EXPECT_EQ(from_matrix.rips_triangles, from_points.rips_triangles);
+  EXPECT_EQ(num_vertices(from_matrix.graph), num_vertices(from_points.graph));
+  EXPECT_EQ(num_edges(from_matrix.graph), num_edges(from_points.graph));
+  EXPECT_EQ(loops_of(from_matrix.graph), 2u);
+  expect_members_partition(from_matrix.graph, n);
+  // Classical MDS of planar distances recovers them (up to rounding).
+  std::vector<double> flat(n * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) flat[i * n + j] = D(i, j);
+  const auto mds = classical_mds_3d(flat, n);
+  for (std::size_t i = 0; i < n; i += 7)
+    for (std::size_t j = 0; j < n; j += 5)
+      EXPECT_NEAR(std::hypot(mds[i][0] - mds[j][0], mds[i][1] - mds[j][1]) + std::fabs(mds[i][2] - mds[j][2]), D(i, j), 1e-6);
+  // The same Rips graph handed over as a graph with coordinates.
+  const Point_matrix m = make_point_matrix(eight.points);
+  const Reeb_skeleton from_graph = extract_reeb_skeleton(build_rips_graph(m, 0.7), m, o);
+  EXPECT_EQ(num_edges(from_graph.graph), num_edges(from_points.graph));
+  EXPECT_EQ(loops_of(from_graph.graph), 2u);
+  // Bad input: a matrix that is not symmetric, coordinates that do not match the graph.
+  Eigen::MatrixXd bad = D;
+  bad(0, 1) += 1;
+  EXPECT_THROW(extract_reeb_skeleton_from_distance_matrix(bad, 0.7, o), std::invalid_argument);
+  Point_matrix short_m = m;
+  short_m.rows -= 1;
+  EXPECT_THROW(extract_reeb_skeleton(build_rips_graph(m, 0.7), short_m, o), std::invalid_argument);
+}
+
+TEST(ExtractReebSkeleton, StubsAtTheBasePointAreTrimmedOnLoops) {
+  // A noisy circle: with trimming (default) the skeleton is one cycle without spurs; without it, the global
+  // minimum and maximum each hang off the cycle on a short spur.
+  std::vector<std::array<double, 2>> pts;
+  for (int i = 0; i < 200; ++i) {
+    const double a = 2 * 3.14159265358979323846 * i / 200;
+    pts.push_back({5 * std::cos(a) + 0.02 * std::sin(7.0 * i), 5 * std::sin(a) + 0.02 * std::cos(5.0 * i)});
+  }
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Reeb_skeleton trimmed = extract_reeb_skeleton(pts, 0.7, o);
+  EXPECT_EQ(loops_of(trimmed.graph), 1u);
+  for (auto v : boost::make_iterator_range(vertices(trimmed.graph))) EXPECT_EQ(degree(v, trimmed.graph), 2u);
+  expect_members_partition(trimmed.graph, pts.size());
+  o.trim_stubs = false;
+  const Reeb_skeleton raw = extract_reeb_skeleton(pts, 0.7, o);
+  std::size_t leaves = 0;
+  for (auto v : boost::make_iterator_range(vertices(raw.graph))) leaves += degree(v, raw.graph) == 1 ? 1 : 0;
+  EXPECT_EQ(leaves, 2u);
+  EXPECT_EQ(trimmed.trimmed_stubs, 2u);
 }

@@ -68,3 +68,61 @@ TEST(RepairReebGraph, ClosesABrokenCircleIntoALoop) {
   EXPECT_EQ(T.graph.loops(), 0u);
   EXPECT_THROW(repair_reeb_graph(A.reeb_graph(), -1.0, pts), std::invalid_argument);
 }
+
+namespace {
+/// A "lollipop": a stub 0-1-2 from the minimum (f = 0, 0.1, 0.2) into a cycle 2..9 (f rising to 1 at vertex 6),
+/// plus a separate short path 10-11 (f = 5, 5.3).
+Complex_with_function lollipop() {
+  std::vector<Edge> e{{0, 1}, {1, 2}};
+  std::vector<double> f{0.0, 0.1, 0.2};
+  const double up[] = {0.4, 0.6, 0.8, 1.0, 0.7, 0.5, 0.3};  // vertices 3..9
+  for (double x : up) f.push_back(x);
+  for (Vertex_index v = 2; v < 9; ++v) e.push_back({v, Vertex_index(v + 1)});
+  e.push_back({9, 2});
+  e.push_back({10, 11});
+  f.push_back(5.0);
+  f.push_back(5.3);
+  return make(12, e, {}, f);
+}
+}  // namespace
+
+TEST(TrimEssentialStubs, ContractsTheSpurAtTheMinimumOnly) {
+  const Reeb_graph R = reeb_graph_of(lollipop());
+  ASSERT_EQ(R.loops(), 1u);
+  // Stub height 0.2: kept at 0.1, contracted at 0.2 (inclusive). The maximum (vertex 6) closes the loop (degree 2):
+  // not a stub. The path 10-11 has no fork: untouched.
+  EXPECT_EQ(trim_essential_stubs(R, 0.1).trimmed, 0u);
+  const Reeb_trim_result t = trim_essential_stubs(R, 0.2);
+  EXPECT_EQ(t.trimmed, 1u);
+  EXPECT_EQ(t.graph.nodes.size(), R.nodes.size() - 1);
+  EXPECT_EQ(t.graph.arcs.size(), R.arcs.size() - 1);
+  EXPECT_EQ(t.graph.loops(), 1u);
+  EXPECT_EQ(t.graph.components, 2u);
+  // The fork (vertex 2) became the minimum of its component and holds the stub's points.
+  const auto fork = std::find_if(t.graph.nodes.begin(), t.graph.nodes.end(), [](const auto& n) { return n.vertex == 2; });
+  ASSERT_NE(fork, t.graph.nodes.end());
+  EXPECT_TRUE(fork->type & minimum);
+  std::vector<Vertex_index> m = fork->members;
+  std::sort(m.begin(), m.end());
+  EXPECT_EQ(m, (std::vector<Vertex_index>{0, 1}));
+  EXPECT_THROW(trim_essential_stubs(R, -1), std::invalid_argument);
+}
+
+TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
+  const Reeb_graph R = reeb_graph_of(lollipop());
+  ASSERT_EQ(R.components, 2u);
+  EXPECT_EQ(prune_reeb_graph_components(R, 0.29).removed_components, 0u);  // 10-11 has height 0.3
+  const Reeb_prune_result p = prune_reeb_graph_components(R, 0.3);
+  EXPECT_EQ(p.removed_components, 1u);
+  EXPECT_EQ(p.removed_vertices, (std::vector<Vertex_index>{10, 11}));
+  EXPECT_EQ(p.graph.components, 1u);
+  EXPECT_EQ(p.graph.loops(), 1u);
+  for (const auto& a : p.graph.arcs) {
+    EXPECT_LT(a.lower, p.graph.nodes.size());
+    EXPECT_LT(a.upper, p.graph.nodes.size());
+  }
+  // Everything goes at a large height; nothing at 0 (no single-vertex component here).
+  EXPECT_EQ(prune_reeb_graph_components(R, 10).graph.nodes.size(), 0u);
+  EXPECT_EQ(prune_reeb_graph_components(R, 0).removed_components, 0u);
+  EXPECT_THROW(prune_reeb_graph_components(R, -1), std::invalid_argument);
+}

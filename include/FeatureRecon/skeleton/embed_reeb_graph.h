@@ -96,42 +96,47 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
   return x;
 }
 
-inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacency* adjacency,
-                                             const std::vector<std::array<double, 3>>& positions,
-                                             const std::vector<double>& values, std::size_t dimension,
-                                             const Embedding_options& options) {
+/// Node positions and arc polylines in the space of P (any dimension), flat row-major.
+struct Flat_embedding {
+  std::vector<std::vector<double>> nodes;  ///< per node, P.dimension coordinates
+  std::vector<std::vector<double>> arcs;   ///< per arc, P.dimension coordinates per polyline vertex
+};
+
+inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency, const Point_matrix& P,
+                                 const std::vector<double>& values, const Embedding_options& options) {
   const char* fn = "embed_reeb_graph";
-  if (positions.size() != values.size())
-    FeatureRecon::internal::throw_invalid_argument(fn, "positions and values differ in size");
-  if (adjacency != nullptr && adjacency->offsets.size() != positions.size() + 1)
+  const std::size_t d = P.dimension;
+  if (P.rows != values.size())
+    FeatureRecon::internal::throw_invalid_argument(fn, "positions and values differ in size (", P.rows, " vs ",
+                                                   values.size(), ")");
+  if (adjacency != nullptr && adjacency->offsets.size() != P.rows + 1)
     FeatureRecon::internal::throw_invalid_argument(fn, "the graph has ", adjacency->offsets.size() - 1,
-                                                   " vertices but there are ", positions.size(), " positions");
+                                                   " vertices but there are ", P.rows, " positions");
   if (!(options.level_width >= 0) || !(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "level_width must be >= 0 and smoothing_weight in [0, 1]");
   auto check = [&](Vertex_index v) {
-    if (v >= positions.size())
-      FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " out of range [0, ", positions.size(), ")");
+    if (v >= P.rows)
+      FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " out of range [0, ", P.rows, ")");
   };
-  Reeb_graph_embedding E;
-  E.dimension = std::min<std::size_t>(dimension, 3);
+  Flat_embedding E;
   double fmin = 0, fmax = 0;
   bool first = true;
   for (const auto& node : G.nodes) {
     check(node.vertex);
-    std::array<double, 3> c = positions[node.vertex];
+    std::vector<double> c(P.row(node.vertex), P.row(node.vertex) + d);
     for (const Vertex_index v : node.members) {
       check(v);
-      for (int k = 0; k < 3; ++k) c[k] += positions[v][k];
+      for (std::size_t k = 0; k < d; ++k) c[k] += P.row(v)[k];
     }
-    for (int k = 0; k < 3; ++k) c[k] /= static_cast<double>(1 + node.members.size());
-    E.node_positions.push_back(c);
+    for (std::size_t k = 0; k < d; ++k) c[k] /= static_cast<double>(1 + node.members.size());
+    E.nodes.push_back(std::move(c));
     fmin = first ? node.value : std::min(fmin, node.value);
     fmax = first ? node.value : std::max(fmax, node.value);
     first = false;
   }
   const double width = options.level_width > 0 ? options.level_width : (fmax > fmin ? (fmax - fmin) / 64 : 1.0);
-  // Local index of each input vertex in the arc being drawn (stamped by arc), its bin, and a union-find.
-  std::vector<std::size_t> stamp(adjacency != nullptr ? positions.size() : 0, static_cast<std::size_t>(-1));
+  // Local index of each input vertex in the arc being drawn (stamped by arc), its run, and a union-find.
+  std::vector<std::size_t> stamp(adjacency != nullptr ? P.rows : 0, static_cast<std::size_t>(-1));
   std::vector<std::size_t> local(stamp.size()), parent, run_of, size;
   for (std::size_t a = 0; a < G.arcs.size(); ++a) {
     const auto& arc = G.arcs[a];
@@ -144,7 +149,6 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacenc
       if (i > 0 && std::floor(values[vs[i]] / width) != std::floor(values[vs[i - 1]] / width)) ++runs;
       run_of[i] = runs;
     }
-    if (!vs.empty()) ++runs;
     // Level-set pieces: connected components of a run in the graph (one piece per run without a graph).
     parent.resize(vs.size());
     for (std::size_t i = 0; i < vs.size(); ++i) parent[i] = i;
@@ -166,35 +170,56 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacenc
     }
     size.assign(vs.size(), 0);
     for (std::size_t i = 0; i < vs.size(); ++i) ++size[find_root(parent, i)];
-    std::vector<std::array<double, 3>> line{E.node_positions[arc.lower]};
+    std::vector<double> line(E.nodes[arc.lower]);
     std::size_t i = 0;
     while (i < vs.size()) {
       // The largest piece of the run (ties: the one holding the earliest point) carries the polyline.
       std::size_t j = i, best = find_root(parent, i);
       for (; j < vs.size() && run_of[j] == run_of[i]; ++j)
         if (size[find_root(parent, j)] > size[best]) best = find_root(parent, j);
-      std::array<double, 3> c{0.0, 0.0, 0.0};
+      const std::size_t at = line.size();
+      line.resize(at + d, 0.0);
       for (std::size_t t = i; t < j; ++t)
         if (find_root(parent, t) == best)
-          for (int k = 0; k < 3; ++k) c[k] += positions[vs[t]][k];
-      for (int k = 0; k < 3; ++k) c[k] /= static_cast<double>(size[best]);
-      line.push_back(c);
+          for (std::size_t k = 0; k < d; ++k) line[at + k] += P.row(vs[t])[k];
+      for (std::size_t k = 0; k < d; ++k) line[at + k] /= static_cast<double>(size[best]);
       i = j;
     }
-    line.push_back(E.node_positions[arc.upper]);
-    for (std::size_t it = 0; it < options.smoothing_iterations && line.size() > 2; ++it) {
-      std::vector<std::array<double, 3>> next = line;
-      for (std::size_t t = 1; t + 1 < line.size(); ++t)
-        for (int k = 0; k < 3; ++k)
-          next[t][k] = (1 - options.smoothing_weight) * line[t][k] +
-                       options.smoothing_weight * 0.5 * (line[t - 1][k] + line[t + 1][k]);
+    line.insert(line.end(), E.nodes[arc.upper].begin(), E.nodes[arc.upper].end());
+    const std::size_t n = d == 0 ? 0 : line.size() / d;
+    for (std::size_t it = 0; it < options.smoothing_iterations && n > 2; ++it) {
+      std::vector<double> next = line;
+      for (std::size_t t = 1; t + 1 < n; ++t)
+        for (std::size_t k = 0; k < d; ++k)
+          next[t * d + k] = (1 - options.smoothing_weight) * line[t * d + k] +
+                            options.smoothing_weight * 0.5 * (line[(t - 1) * d + k] + line[(t + 1) * d + k]);
       line.swap(next);
     }
-    E.arc_polylines.push_back(std::move(line));
+    E.arcs.push_back(std::move(line));
   }
   return E;
 }
 
+inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacency* adjacency,
+                                             const std::vector<std::array<double, 3>>& positions,
+                                             const std::vector<double>& values, std::size_t dimension,
+                                             const Embedding_options& options) {
+  Point_matrix P;
+  P.rows = positions.size();
+  P.dimension = 3;
+  P.data.reserve(3 * positions.size());
+  for (const auto& p : positions) P.data.insert(P.data.end(), p.begin(), p.end());
+  const Flat_embedding F = embed_flat(G, adjacency, P, values, options);
+  Reeb_graph_embedding E;
+  E.dimension = std::min<std::size_t>(dimension, 3);
+  for (const auto& n : F.nodes) E.node_positions.push_back({n[0], n[1], n[2]});
+  for (const auto& a : F.arcs) {
+    std::vector<std::array<double, 3>> line;
+    for (std::size_t t = 0; t + 2 < a.size(); t += 3) line.push_back({a[t], a[t + 1], a[t + 2]});
+    E.arc_polylines.push_back(std::move(line));
+  }
+  return E;
+}
 }  // namespace internal
 
 /// Classical multidimensional scaling of a dense distance matrix (row-major n x n) into at most 3 dimensions:
@@ -238,6 +263,29 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const std::vec
                                              const std::vector<double>& values, std::size_t dimension,
                                              const Embedding_options& options = {}) {
   return internal::embed_reeb_graph(G, nullptr, positions, values, dimension, options);
+}
+
+/// A Reeb graph drawn in the space of its input points (any dimension), flat row-major coordinates.
+struct Reeb_graph_input_embedding {
+  std::size_t dimension = 0;                        ///< dimension of the input points
+  std::vector<std::vector<double>> node_positions;  ///< per node, `dimension` coordinates
+  std::vector<std::vector<double>> arc_polylines;   ///< per arc, `dimension` coordinates per polyline vertex
+};
+
+/// embed_reeb_graph() in the input space itself (no projection): the same centroids of level-set pieces and the
+/// same smoothing, in any dimension. Used to measure how far arcs are from a true graph in R^d.
+/// \pre graph.number_of_vertices == points.rows == values.size() (checked; throws).
+inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_graph& G, const Proximity_graph& graph,
+                                                                  const Point_matrix& points,
+                                                                  const std::vector<double>& values,
+                                                                  const Embedding_options& options = {}) {
+  const internal::Adjacency adjacency = internal::make_adjacency(graph);
+  internal::Flat_embedding F = internal::embed_flat(G, &adjacency, points, values, options);
+  Reeb_graph_input_embedding E;
+  E.dimension = points.dimension;
+  E.node_positions = std::move(F.nodes);
+  E.arc_polylines = std::move(F.arcs);
+  return E;
 }
 
 /// embed_reeb_graph() where a level-set piece is a connected component, in `graph` (the 1-skeleton of the complex

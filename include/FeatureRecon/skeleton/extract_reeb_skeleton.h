@@ -28,12 +28,16 @@ struct Skeleton_node {
   double value = 0;                    ///< function value (geodesic distance)
   unsigned type = regular;             ///< Node_type flags
   std::vector<Vertex_index> members;   ///< input points mapped to the node
+  std::vector<double> input_position;  ///< above 3D: the centroid in input space (empty up to 3D: = position)
 };
 
 /// Edge bundle of a skeleton graph: an arc of the Reeb graph.
 struct Skeleton_arc {
   std::vector<std::array<double, 3>> polyline;  ///< from the lower node to the upper node
   std::vector<Vertex_index> members;            ///< input points mapped into the arc, in increasing function value
+  /// Above 3D: the polyline in input space, row-major (input dimension per vertex); its PCA projection is
+  /// `polyline`. Empty up to 3D, where `polyline` is in input space.
+  std::vector<double> input_polyline;
 };
 
 /// The skeleton graph: nodes and arcs of the simplified Reeb graph with their embedding (parallel arcs allowed).
@@ -47,6 +51,10 @@ struct Skeleton_options {
   /// Remove connected components of height (range of f) at most this after simplification and repair; their
   /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all.
   double prune_height = 0;
+  /// Contract the spurs at the global minimum and maximum of each component when their height is at most delta
+  /// (trim_essential_stubs()): on a loop the base point of the geodesic function otherwise stays a short spur.
+  /// Default true.
+  bool trim_stubs = true;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips graph
   Embedding_options embedding;                          ///< how arcs are drawn
   Progress_callback progress;  ///< called with the fraction done; returning false stops (status interrupted)
@@ -59,6 +67,7 @@ struct Reeb_skeleton {
   std::size_t rips_edges = 0;      ///< size of the Rips complex
   std::size_t rips_triangles = 0;  ///< size of the Rips complex
   std::size_t removed_branches = 0, removed_loops = 0, repaired = 0;  ///< what simplification and repair did
+  std::size_t trimmed_stubs = 0;                           ///< spurs at essential extrema contracted
   std::size_t pruned_components = 0;                       ///< components removed (Skeleton_options::prune_height)
   std::vector<Vertex_index> pruned_points;                 ///< their input points (sorted)
   double level_width = 0;          ///< level width the embedding used
@@ -99,9 +108,9 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
 
 /// The stages after the proximity graph; `distance` measures input space for the repair.
 template <class Distance>
-Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const std::vector<std::array<double, 3>>& positions,
-                                  std::size_t dimension, const Distance& distance, const Skeleton_options& options,
-                                  double progress_start) {
+Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matrix& coordinates,
+                                  const Distance& distance, const Skeleton_options& options, double progress_start) {
+  const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
   if (graph.number_of_vertices == 0) {
@@ -137,6 +146,11 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const std::vecto
     result.removed_branches += S.removed_branches;
     result.removed_loops += S.removed_loops;
   }
+  if (options.trim_stubs) {
+    Reeb_trim_result trimmed = trim_essential_stubs(S.graph, options.delta);
+    S.graph = std::move(trimmed.graph);
+    result.trimmed_stubs = trimmed.trimmed;
+  }
   if (options.prune_height > 0) {
     Reeb_prune_result pruned = prune_reeb_graph_components(S.graph, options.prune_height);
     S.graph = std::move(pruned.graph);
@@ -146,8 +160,14 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const std::vecto
   Embedding_options eo = options.embedding;
   if (eo.level_width == 0) eo.level_width = median_edge_length(K);
   result.level_width = eo.level_width;
-  const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, positions, A.values(), dimension, eo);
+  const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, project_to_3d(coordinates), A.values(), dimension, eo);
   result.graph = make_skeleton_graph(S.graph, E);
+  if (dimension > 3) {
+    Reeb_graph_input_embedding I = embed_reeb_graph_in_input_space(S.graph, K, coordinates, A.values(), eo);
+    for (std::size_t i = 0; i < I.node_positions.size(); ++i) result.graph[i].input_position = std::move(I.node_positions[i]);
+    std::size_t k = 0;
+    for (auto e : boost::make_iterator_range(edges(result.graph))) result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);
+  }
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
 }
@@ -174,7 +194,7 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   if (options.progress) po.progress = [&options](double t) { return options.progress(0.3 * t); };
   const Proximity_graph g = build_rips_graph(points, rips_radius, po);
   return internal::skeleton_from_graph(
-      g, project_to_3d(points), points.dimension,
+      g, points,
       [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3);
 }
 
@@ -189,7 +209,7 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
     FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "the graph has ", graph.number_of_vertices,
                                                    " vertices but coordinates has ", coordinates.rows, " rows");
   return internal::skeleton_from_graph(
-      graph, project_to_3d(coordinates), coordinates.dimension,
+      graph, coordinates,
       [&coordinates](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(coordinates, a, b); },
       options, 0.0);
 }
@@ -205,8 +225,12 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   const Proximity_graph g = build_rips_graph_from_distance_matrix(D, rips_radius);
+  Point_matrix mds;
+  mds.rows = n;
+  mds.dimension = 3;
+  for (const auto& p : classical_mds_3d(a, n)) mds.data.insert(mds.data.end(), p.begin(), p.end());
   return internal::skeleton_from_graph(
-      g, classical_mds_3d(a, n), std::min<std::size_t>(n, 3),
+      g, mds,
       [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.0);
 }
 

@@ -134,6 +134,90 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
   return result;
 }
 
+/// Result of trim_essential_stubs().
+struct Reeb_trim_result {
+  Reeb_graph graph;          ///< the graph with the stubs contracted into their forks
+  std::size_t trimmed = 0;   ///< number of stubs contracted
+};
+
+/// Contracts, in every component, the arc from the global minimum (and the one to the global maximum) into the
+/// fork at its other end when that arc is a stub: the extremum has degree 1, the fork degree >= 3, and the arc's
+/// height is at most `max_height`. Simplification never removes these arcs (the global extrema are an essential
+/// pair), so on a loop the base point of the geodesic function and the farthest point stay as spurs of height
+/// about half the Rips radius. Contracting them moves the essential pair by at most `max_height` and leaves every
+/// other feature as it is; the stub's points join the fork node's members.
+/// \pre max_height >= 0 (checked; throws).
+inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height) {
+  if (!(max_height >= 0))
+    FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0");
+  Reeb_trim_result result;
+  const std::size_t n = R.nodes.size();
+  std::vector<std::vector<std::size_t>> incident(n);
+  for (std::size_t a = 0; a < R.arcs.size(); ++a) {
+    incident[R.arcs[a].lower].push_back(a);
+    incident[R.arcs[a].upper].push_back(a);
+  }
+  // Components (union-find on nodes), their lowest and highest node (nodes are sorted by (value, vertex)).
+  std::vector<std::size_t> parent(n);
+  for (std::size_t i = 0; i < n; ++i) parent[i] = i;
+  auto find = [&parent](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& a : R.arcs) {
+    const std::size_t x = find(a.lower), y = find(a.upper);
+    if (x != y) parent[std::max(x, y)] = std::min(x, y);
+  }
+  const std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> lowest(n, none), highest(n, none);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t c = find(i);
+    if (lowest[c] == none) lowest[c] = i;
+    highest[c] = i;
+  }
+  std::vector<bool> drop_node(n, false), drop_arc(R.arcs.size(), false);
+  std::vector<Reeb_graph::Node> nodes = R.nodes;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (lowest[c] == none) continue;
+    for (const std::size_t e : {lowest[c], highest[c]}) {
+      if (incident[e].size() != 1 || lowest[c] == highest[c]) continue;
+      const std::size_t a = incident[e][0];
+      const std::size_t fork = R.arcs[a].lower == e ? R.arcs[a].upper : R.arcs[a].lower;
+      if (drop_node[fork] || incident[fork].size() < 3) continue;
+      if (std::fabs(R.nodes[fork].value - R.nodes[e].value) > max_height) continue;
+      auto& m = nodes[fork].members;
+      m.push_back(R.nodes[e].vertex);
+      m.insert(m.end(), R.nodes[e].members.begin(), R.nodes[e].members.end());
+      m.insert(m.end(), R.arcs[a].vertices.begin(), R.arcs[a].vertices.end());
+      drop_node[e] = true;
+      drop_arc[a] = true;
+      ++result.trimmed;
+    }
+  }
+  std::vector<std::size_t> index(n, none);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!drop_node[i]) {
+      index[i] = result.graph.nodes.size();
+      result.graph.nodes.push_back(std::move(nodes[i]));
+    }
+  for (std::size_t a = 0; a < R.arcs.size(); ++a)
+    if (!drop_arc[a]) {
+      Reeb_graph::Arc b = R.arcs[a];
+      b.lower = index[b.lower];
+      b.upper = index[b.upper];
+      result.graph.arcs.push_back(std::move(b));
+    }
+  std::vector<std::size_t> down(result.graph.nodes.size(), 0), up(result.graph.nodes.size(), 0);
+  for (const auto& a : result.graph.arcs) {
+    ++up[a.lower];
+    ++down[a.upper];
+  }
+  for (std::size_t i = 0; i < result.graph.nodes.size(); ++i)
+    result.graph.nodes[i].type = node_type_from_degrees(down[i], up[i]);
+  result.graph.components = R.components;
+  return result;
+}
+
 }  // namespace skeleton
 }  // namespace FeatureRecon
 

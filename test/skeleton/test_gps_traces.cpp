@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
+#include <FeatureRecon/skeleton/gps_traces.h>
+
+#include <boost/graph/connected_components.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+
+namespace {
+/// A trip along a straight line from (x0, y0) in direction (dx, dy), `n` fixes `step` apart, 3 s apart.
+Gps_trip straight(double x0, double y0, double dx, double dy, int n, double step, double t0 = 0) {
+  Gps_trip t;
+  for (int i = 0; i < n; ++i) t.push_back({x0 + i * step * dx, y0 + i * step * dy, t0 + 3.0 * i});
+  return t;
+}
+double dist(const Gps_trace_sample& S, std::size_t a, std::size_t b) {
+  return std::hypot(S.points.row(a)[0] - S.points.row(b)[0], S.points.row(a)[1] - S.points.row(b)[1]);
+}
+}  // namespace
+
+TEST(GpsTraces, SpacingLinksAndDerivedParameters) {
+  // Two trips east along y = 0 and y = 3 (fixes 30 m apart) with radius 20: median step 30, spacing 10, link gap
+  // max(120, 40) = 120; every segment is densified, so samples cover the line and consecutive ones are linked.
+  std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 11, 30), straight(0, 3, 1, 0, 11, 30, 100)};
+  const Gps_trace_sample S = sample_gps_traces(trips, 20.0);
+  EXPECT_EQ(S.fixes, 22u);
+  EXPECT_DOUBLE_EQ(S.median_step, 30.0);
+  EXPECT_DOUBLE_EQ(S.sample_spacing, 10.0);
+  EXPECT_DOUBLE_EQ(S.max_link_gap, 120.0);
+  ASSERT_GT(S.points.rows, 25u);
+  for (std::size_t a = 0; a < S.points.rows; ++a)
+    for (std::size_t b = a + 1; b < S.points.rows; ++b) EXPECT_GE(dist(S, a, b), S.sample_spacing) << a << " " << b;
+  // Every fix is within the spacing of its sample; every link joins samples at most a spacing plus a step apart.
+  std::size_t k = 0;
+  for (const auto& trip : trips)
+    for (const auto& f : trip) {
+      const std::uint32_t s = S.sample_of_fix[k++];
+      EXPECT_LT(std::hypot(S.points.row(s)[0] - f.x, S.points.row(s)[1] - f.y), S.sample_spacing);
+    }
+  for (const Edge& e : S.trip_links) {
+    EXPECT_LT(e[0], e[1]);
+    EXPECT_LE(dist(S, e[0], e[1]), 2 * S.sample_spacing);
+  }
+  // The weights count every trace point (fixes and inserted points) once.
+  std::size_t total = 0;
+  for (const auto w : S.weights) total += w;
+  EXPECT_GT(total, S.fixes);
+  // The graph: Rips edges plus links, one component, deterministic.
+  const Proximity_graph g = build_gps_trace_graph(S, 20.0);
+  EXPECT_EQ(connected_components(g).count, 1u);
+  const Gps_trace_sample again = sample_gps_traces(trips, 20.0);
+  EXPECT_EQ(again.points.data, S.points.data);
+  EXPECT_EQ(again.trip_links, S.trip_links);
+}
+
+TEST(GpsTraces, TimeOrderGapsAndHeadings) {
+  // Fixes given out of time order are sorted: the result equals the sorted trip's.
+  Gps_trip sorted = straight(0, 0, 1, 0, 6, 25), shuffled{sorted[3], sorted[0], sorted[5], sorted[1], sorted[4], sorted[2]};
+  EXPECT_EQ(sample_gps_traces({shuffled}, 20.0).points.data, sample_gps_traces({sorted}, 20.0).points.data);
+  // A gap longer than the link gap splits the trip: no link across it, no inserted points in it.
+  Gps_trip gap = straight(0, 0, 1, 0, 4, 20);
+  const Gps_trip far = straight(1000, 0, 1, 0, 4, 20, 100);
+  gap.insert(gap.end(), far.begin(), far.end());
+  Gps_trace_options o;
+  o.max_link_gap = 50;
+  const Gps_trace_sample S = sample_gps_traces({gap}, 20.0, o);
+  for (const Edge& e : S.trip_links) EXPECT_LT(dist(S, e[0], e[1]), 100.0);
+  for (std::size_t i = 0; i < S.points.rows; ++i) EXPECT_TRUE(S.points.row(i)[0] <= 60 || S.points.row(i)[0] >= 1000);
+  // No linking at all with a negative gap.
+  o.max_link_gap = -1;
+  EXPECT_TRUE(sample_gps_traces({gap}, 20.0, o).trip_links.empty());
+  // Crossing streets: with a heading tolerance of 30 degrees, no Rips edge joins an east-west sample to a
+  // north-south one; without it, some do.
+  std::vector<Gps_trip> cross{straight(-100, 0, 1, 0, 9, 25), straight(0, -100, 0, 1, 9, 25, 100)};
+  Gps_trace_options h;
+  h.heading_tolerance = 30;
+  const Gps_trace_sample C = sample_gps_traces(cross, 20.0, h);
+  auto crossing_edges = [&](const Proximity_graph& g) {
+    std::size_t n = 0;
+    for (const Edge& e : g.edges) n += skeleton::internal::heading_difference(C.headings[e[0]], C.headings[e[1]]) > 30 ? 1 : 0;
+    return n;
+  };
+  EXPECT_EQ(crossing_edges(build_gps_trace_graph(C, 20.0, 30)), 0u);
+  EXPECT_GT(crossing_edges(build_gps_trace_graph(C, 20.0, 180)), 0u);
+}
+
+TEST(GpsTraces, SparseSamplesNextToADenseStreetAreDropped) {
+  // Twenty trips along y = 0, one stray trip 30 m off it, and one lone trip 500 m away.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.1 * k, 1, 0, 9, 25, 100.0 * k));
+  trips.push_back(straight(0, 30, 1, 0, 9, 25, 5000));
+  trips.push_back(straight(0, 500, 1, 0, 9, 25, 6000));
+  Gps_trace_options o;
+  o.min_relative_density = 0.15;
+  const Gps_trace_sample S = sample_gps_traces(trips, 20.0, o);
+  EXPECT_DOUBLE_EQ(S.density_radius, 40.0);
+  EXPECT_GT(S.dropped, 0u);
+  bool lone = false;
+  for (std::size_t i = 0; i < S.points.rows; ++i) {
+    EXPECT_FALSE(std::fabs(S.points.row(i)[1] - 30) < 5) << "stray sample " << i << " kept";
+    lone = lone || S.points.row(i)[1] > 400;
+  }
+  EXPECT_TRUE(lone);  // a street alone keeps its samples
+  // Fixes of dropped samples map to no sample.
+  std::size_t unmapped = 0;
+  for (const auto s : S.sample_of_fix) unmapped += s == std::numeric_limits<std::uint32_t>::max() ? 1 : 0;
+  EXPECT_GT(unmapped, 0u);
+  for (const Edge& e : S.trip_links) EXPECT_LT(e[1], S.points.rows);
+}
+
+TEST(GpsTraces, DegenerateAndBadInput) {
+  EXPECT_EQ(sample_gps_traces({}, 10.0).points.rows, 0u);
+  const Gps_trace_sample one = sample_gps_traces({{{5, 5, 0}}}, 10.0);
+  EXPECT_EQ(one.points.rows, 1u);
+  EXPECT_DOUBLE_EQ(one.median_step, 0.0);
+  // Repeated fixes (a parked car) give one sample.
+  EXPECT_EQ(sample_gps_traces({{{5, 5, 0}, {5, 5, 1}, {5, 5, 2}}}, 10.0).points.rows, 1u);
+  EXPECT_THROW(sample_gps_traces({{{0, 0, 0}}}, 0.0), std::invalid_argument);
+  try {
+    sample_gps_traces({{{0, 0, 0}}, {{0, 0, 0}, {std::nan(""), 0, 1}}}, 10.0);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("trip 1, fix 1"), std::string::npos) << e.what();
+  }
+  Gps_trace_options bad;
+  bad.sample_spacing = -1;
+  EXPECT_THROW(sample_gps_traces({}, 10.0, bad), std::invalid_argument);
+}
+
+TEST(GpsTraces, SkeletonOfABlock) {
+  // Three trips drive once around a 200 x 100 m block (fixes 25 m apart): the skeleton is one loop, no spur. With a
+  // heading tolerance the corners connect through the turning trips' links.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 3; ++k) {
+    const double o = 2.0 * k;
+    Gps_trip t;
+    auto leg = [&](const Gps_trip& l) { t.insert(t.end(), l.begin(), l.end() - 1); };
+    leg(straight(0, o, 1, 0, 9, 25));
+    leg(straight(200, o, 0, 1, 5, 25));
+    leg(straight(200, 100 + o, -1, 0, 9, 25));
+    leg(straight(0, 100 + o, 0, -1, 5, 25));
+    leg(straight(0, o, 1, 0, 3, 25));  // past the start, so the trip turns at every corner
+    for (std::size_t i = 0; i < t.size(); ++i) t[i].time = 1000.0 * k + 3.0 * static_cast<double>(i);
+    trips.push_back(t);
+  }
+  Gps_trace_options go;
+  go.heading_tolerance = 30;
+  const Gps_trace_sample S = sample_gps_traces(trips, 25.0, go);
+  Skeleton_options so;
+  so.delta = 75;
+  const Reeb_skeleton s = extract_reeb_skeleton(build_gps_trace_graph(S, 25.0, 30), S.points, so);
+  std::vector<int> comp(num_vertices(s.graph));
+  const int c = boost::connected_components(s.graph, comp.data());
+  EXPECT_EQ(c, 1);
+  EXPECT_EQ(num_edges(s.graph) + static_cast<std::size_t>(c) - num_vertices(s.graph), 1u);
+  for (auto v : boost::make_iterator_range(vertices(s.graph))) EXPECT_EQ(degree(v, s.graph), 2u);
+}
