@@ -47,33 +47,43 @@ inline Torus torus_grid(std::size_t nu, std::size_t nv) {
   return t;
 }
 
-/// The Chicago GPS points (x y, UTM metres) in file order, from the shared data or the bundled copy.
-inline std::vector<std::array<double, 2>> chicago_points(std::size_t max_points = 0) {
-  std::vector<std::array<double, 2>> p;
-  std::string path = std::string(FEATURERECON_SHARED_DATA_DIR) + "/gps/chicago/tracks.txt";
-  std::ifstream in(path);
-  std::string command;
-  FILE* pipe = nullptr;
-  std::string line;
+/// The Chicago GPS fixes (trip, x, y, t; UTM metres, seconds) in file order, from the shared data or the
+/// bundled copy.
+struct Gps_row {
+  long trip;
+  double x, y, t;
+};
+inline std::vector<Gps_row> chicago_rows(std::size_t max_rows = 0) {
+  std::vector<Gps_row> rows;
+  const std::string path = std::string(FEATURERECON_SHARED_DATA_DIR) + "/gps/chicago/tracks.txt";
   auto take = [&](const std::string& l) {
     if (l.empty() || l[0] == '#') return;
     std::istringstream is(l);
-    double id, x, y;
-    if (is >> id >> x >> y) p.push_back({x, y});
+    Gps_row r{};
+    if (is >> r.trip >> r.x >> r.y >> r.t) rows.push_back(r);
   };
+  std::ifstream in(path);
   if (in) {
-    while (std::getline(in, line) && (max_points == 0 || p.size() < max_points)) take(line);
+    std::string line;
+    while (std::getline(in, line) && (max_rows == 0 || rows.size() < max_rows)) take(line);
   } else {
-    command = "gzip -dc '" + std::string(FEATURERECON_DATA_DIR) + "/gps/chicago/tracks.txt.gz'";
-    pipe = popen(command.c_str(), "r");
+    const std::string command = "gzip -dc '" + std::string(FEATURERECON_DATA_DIR) + "/gps/chicago/tracks.txt.gz'";
+    FILE* pipe = popen(command.c_str(), "r");
     char buf[256];
-    while (pipe && std::fgets(buf, sizeof buf, pipe) && (max_points == 0 || p.size() < max_points)) take(buf);
+    while (pipe && std::fgets(buf, sizeof buf, pipe) && (max_rows == 0 || rows.size() < max_rows)) take(buf);
     if (pipe) pclose(pipe);
   }
-  if (p.empty()) {
+  if (rows.empty()) {
     std::fprintf(stderr, "cannot read the Chicago tracks (%s)\n", path.c_str());
     std::exit(1);
   }
+  return rows;
+}
+
+/// The Chicago GPS points (x y, UTM metres) in file order.
+inline std::vector<std::array<double, 2>> chicago_points(std::size_t max_points = 0) {
+  std::vector<std::array<double, 2>> p;
+  for (const Gps_row& r : chicago_rows(max_points)) p.push_back({r.x, r.y});
   return p;
 }
 

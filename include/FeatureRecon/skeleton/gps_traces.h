@@ -78,28 +78,76 @@ struct Cell_hash {
   }
 };
 
+/// Buckets of sample indices on a square grid over a bounding box: a dense array of cells when there are at
+/// most 2^24 of them, a hash map otherwise (sparse data over a huge extent).
+class Planar_grid {
+ public:
+  Planar_grid(double xmin, double ymin, double xmax, double ymax, double cell) : m_cell(cell) {
+    m_x0 = std::floor(xmin / cell);
+    m_y0 = std::floor(ymin / cell);
+    const double w = std::floor(xmax / cell) - m_x0 + 1, h = std::floor(ymax / cell) - m_y0 + 1;
+    if (w * h <= double(1 << 24) && w >= 1 && h >= 1) {
+      m_w = static_cast<std::int64_t>(w);
+      m_h = static_cast<std::int64_t>(h);
+      m_dense.resize(static_cast<std::size_t>(m_w * m_h));
+    }
+  }
+  std::array<std::int64_t, 2> cell_of(double x, double y) const {
+    return {static_cast<std::int64_t>(std::floor(x / m_cell) - m_x0),
+            static_cast<std::int64_t>(std::floor(y / m_cell) - m_y0)};
+  }
+  const std::vector<std::uint32_t>* find(std::int64_t i, std::int64_t j) const {
+    if (!m_dense.empty()) {
+      if (i < 0 || j < 0 || i >= m_w || j >= m_h) return nullptr;
+      const auto& b = m_dense[static_cast<std::size_t>(j * m_w + i)];
+      return b.empty() ? nullptr : &b;
+    }
+    const auto it = m_sparse.find({i, j});
+    return it == m_sparse.end() ? nullptr : &it->second;
+  }
+  void push(const std::array<std::int64_t, 2>& c, std::uint32_t id) {
+    if (!m_dense.empty())
+      m_dense[static_cast<std::size_t>(c[1] * m_w + c[0])].push_back(id);
+    else
+      m_sparse[c].push_back(id);
+  }
+
+ private:
+  double m_cell, m_x0 = 0, m_y0 = 0;
+  std::int64_t m_w = 0, m_h = 0;
+  std::vector<std::vector<std::uint32_t>> m_dense;
+  std::unordered_map<std::array<std::int64_t, 2>, std::vector<std::uint32_t>, Cell_hash> m_sparse;
+};
+
+inline std::array<double, 4> bounding_box(const Point_matrix& m) {
+  std::array<double, 4> b{0, 0, 0, 0};
+  for (std::size_t i = 0; i < m.rows; ++i) {
+    const double x = m.row(i)[0], y = m.row(i)[1];
+    if (i == 0) b = {x, y, x, y};
+    b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
+  }
+  return b;
+}
+
 /// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius; re-indexes.
 inline void drop_sparse_samples(Gps_trace_sample& S, double fraction) {
   const double R = S.density_radius, R2 = R * R;
-  std::unordered_map<std::array<std::int64_t, 2>, std::vector<std::uint32_t>, Cell_hash> grid;
-  auto cell_of = [R](double x, double y) {
-    return std::array<std::int64_t, 2>{static_cast<std::int64_t>(std::floor(x / R)),
-                                       static_cast<std::int64_t>(std::floor(y / R))};
-  };
-  for (std::uint32_t i = 0; i < S.points.rows; ++i) grid[cell_of(S.points.row(i)[0], S.points.row(i)[1])].push_back(i);
+  const std::array<double, 4> box = bounding_box(S.points);
+  Planar_grid grid(box[0], box[1], box[2], box[3], R);
+  for (std::uint32_t i = 0; i < S.points.rows; ++i) grid.push(grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]), i);
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> new_index(S.points.rows, none);
   Gps_trace_sample T;
   T.points.dimension = 2;
   for (std::uint32_t i = 0; i < S.points.rows; ++i) {
     const double x = S.points.row(i)[0], y = S.points.row(i)[1];
-    const auto c = cell_of(x, y);
+    const auto c = grid.cell_of(x, y);
     std::uint32_t heaviest = 0;
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const auto it = grid.find({c[0] + dx, c[1] + dy});
-        if (it == grid.end()) continue;
-        for (const std::uint32_t j : it->second) {
+        const std::vector<std::uint32_t>* bucket = grid.find(c[0] + dx, c[1] + dy);
+        if (bucket == nullptr) continue;
+        for (const std::uint32_t j : *bucket) {
           const double ex = S.points.row(j)[0] - x, ey = S.points.row(j)[1] - y;
           if (ex * ex + ey * ey <= R2) heaviest = std::max(heaviest, S.weights[j]);
         }
@@ -181,20 +229,25 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   const double insert_step = S.sample_spacing / 2;
   const double spacing2 = S.sample_spacing * S.sample_spacing;
   const double cell = S.sample_spacing;
-  std::unordered_map<std::array<std::int64_t, 2>, std::vector<std::uint32_t>, internal::Cell_hash> grid;
-  auto cell_of = [cell](double x, double y) {
-    return std::array<std::int64_t, 2>{static_cast<std::int64_t>(std::floor(x / cell)),
-                                       static_cast<std::int64_t>(std::floor(y / cell))};
-  };
+  Point_matrix fixes;
+  fixes.dimension = 2;
+  for (const Gps_trip& trip : trips)
+    for (const Gps_fix& f : trip) {
+      fixes.data.push_back(f.x);
+      fixes.data.push_back(f.y);
+      ++fixes.rows;
+    }
+  const std::array<double, 4> box = internal::bounding_box(fixes);  // inserted points lie inside it too
+  internal::Planar_grid grid(box[0], box[1], box[2], box[3], cell);
   // The sample a trace point joins (creating one if none is close): first in creation order.
   auto join = [&](double x, double y, double heading) -> std::uint32_t {
-    const auto c = cell_of(x, y);
+    const auto c = grid.cell_of(x, y);
     std::uint32_t best = std::numeric_limits<std::uint32_t>::max();
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const auto it = grid.find({c[0] + dx, c[1] + dy});
-        if (it == grid.end()) continue;
-        for (const std::uint32_t s : it->second) {
+        const std::vector<std::uint32_t>* bucket = grid.find(c[0] + dx, c[1] + dy);
+        if (bucket == nullptr) continue;
+        for (const std::uint32_t s : *bucket) {
           if (s >= best) break;  // cells hold samples in creation order
           const double ex = S.points.data[2 * s] - x, ey = S.points.data[2 * s + 1] - y;
           if (ex * ex + ey * ey < spacing2 &&
@@ -208,7 +261,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       S.points.data.push_back(y);
       S.headings.push_back(heading);
       S.weights.push_back(0);
-      grid[c].push_back(best);
+      grid.push(c, best);
     }
     ++S.weights[best];
     return best;
