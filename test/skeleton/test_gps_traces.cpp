@@ -84,11 +84,24 @@ TEST(GpsTraces, TimeOrderGapsAndHeadings) {
   const Gps_trace_sample C = sample_gps_traces(cross, 20.0, h);
   auto crossing_edges = [&](const Proximity_graph& g) {
     std::size_t n = 0;
-    for (const Edge& e : g.edges) n += skeleton::internal::heading_difference(C.headings[e[0]], C.headings[e[1]]) > 30 ? 1 : 0;
+    for (const Edge& e : g.edges)
+      n += skeleton::internal::heading_difference(C.headings[e[0]], C.headings[e[1]], C.directed) > 30 ? 1 : 0;
     return n;
   };
   EXPECT_EQ(crossing_edges(build_gps_trace_graph(C, 20.0, 30)), 0u);
   EXPECT_GT(crossing_edges(build_gps_trace_graph(C, 20.0, 180)), 0u);
+  // Opposite directions on one street 3 m apart: directed samples stay apart (two lines, no Rips edge between
+  // them); undirected ones are shared.
+  std::vector<Gps_trip> two_way{straight(0, 0, 1, 0, 9, 25), straight(200, 3, -1, 0, 9, 25, 100)};
+  const Gps_trace_sample T = sample_gps_traces(two_way, 20.0, h);
+  EXPECT_TRUE(T.directed);
+  for (std::size_t i = 0; i < T.points.rows; ++i) EXPECT_TRUE(T.headings[i] == 0 || T.headings[i] == 180) << T.headings[i];
+  const Proximity_graph directed_graph = build_gps_trace_graph(T, 20.0, 30);
+  EXPECT_EQ(connected_components(directed_graph).count, 2u);
+  h.directed = false;
+  const Gps_trace_sample U = sample_gps_traces(two_way, 20.0, h);
+  EXPECT_LT(U.points.rows, T.points.rows);
+  EXPECT_EQ(connected_components(build_gps_trace_graph(U, 20.0, 30)).count, 1u);
 }
 
 TEST(GpsTraces, SparseSamplesNextToADenseStreetAreDropped) {

@@ -42,6 +42,9 @@ struct Gps_trace_options {
   /// Rips edges join samples whose travel directions (modulo 180 degrees) differ by at most this angle. Samples
   /// of crossing streets then touch only where vehicles turn. 180 (default): directions are ignored.
   double heading_tolerance = 180;
+  /// Headings are driving directions in [0, 360) (true, default: opposite carriageways of a divided road and the
+  /// two directions of a street stay apart under a heading tolerance), or undirected lines in [0, 180) (false).
+  bool directed = true;
   /// Drops samples that stand for fewer trace points than this fraction of the most any sample within
   /// `density_radius` stands for: scattered fixes (multipath next to tall buildings) away from the dense band of
   /// the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all.
@@ -53,7 +56,8 @@ struct Gps_trace_options {
 /// Samples of GPS traces with the parameters used.
 struct Gps_trace_sample {
   Point_matrix points;                       ///< sample positions (dimension 2)
-  std::vector<double> headings;              ///< travel direction of each sample in [0, 180) degrees
+  std::vector<double> headings;              ///< travel direction of each sample: [0, 360) degrees, or [0, 180)
+  bool directed = true;                      ///< which of the two (Gps_trace_options::directed)
   std::vector<std::uint32_t> weights;        ///< trace points (fixes and inserted points) each sample stands for
   std::vector<Edge> trip_links;              ///< consecutive samples of a trip (sorted, unique, u < v)
   std::vector<std::uint32_t> sample_of_fix;  ///< per input fix (trips concatenated in order): its sample
@@ -67,9 +71,10 @@ struct Gps_trace_sample {
 
 namespace internal {
 
-inline double heading_difference(double a, double b) {
+/// Angle between two headings in degrees: directions in [0, 360) when `directed`, else lines in [0, 180).
+inline double heading_difference(double a, double b, bool directed = false) {
   const double d = std::fabs(a - b);
-  return std::min(d, 180.0 - d);
+  return directed ? std::min(d, 360.0 - d) : std::min(d, 180.0 - d);
 }
 
 struct Cell_hash {
@@ -251,7 +256,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
           if (s >= best) break;  // cells hold samples in creation order
           const double ex = S.points.data[2 * s] - x, ey = S.points.data[2 * s + 1] - y;
           if (ex * ex + ey * ey < spacing2 &&
-              internal::heading_difference(S.headings[s], heading) <= options.heading_tolerance)
+              internal::heading_difference(S.headings[s], heading, options.directed) <= options.heading_tolerance)
             best = s;
         }
       }
@@ -266,11 +271,13 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     ++S.weights[best];
     return best;
   };
-  auto heading_of = [](double dx, double dy) {
+  S.directed = options.directed;
+  const double period = options.directed ? 360.0 : 180.0;
+  auto heading_of = [period](double dx, double dy) {
     if (dx == 0 && dy == 0) return 0.0;
     double h = std::atan2(dy, dx) * 180.0 / 3.14159265358979323846;
-    if (h < 0) h += 180;
-    if (h >= 180) h -= 180;
+    while (h < 0) h += period;
+    while (h >= period) h -= period;
     return h;
   };
   S.sample_of_fix.assign(S.fixes, 0);
@@ -325,7 +332,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
 }
 
 /// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose headings
-/// differ by at most `heading_tolerance` degrees, plus the trip links; lengths are Euclidean.
+/// differ by at most `heading_tolerance` degrees (directed or not, as sampled), plus the trip links; lengths are
+/// Euclidean.
 inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double rips_radius,
                                              double heading_tolerance = 180,
                                              const Proximity_graph_options& options = {}) {
@@ -333,7 +341,8 @@ inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double r
   std::vector<Edge> edges;
   edges.reserve(rips.edges.size() + S.trip_links.size());
   for (const Edge& e : rips.edges)
-    if (heading_tolerance >= 90 || internal::heading_difference(S.headings[e[0]], S.headings[e[1]]) <= heading_tolerance)
+    if (heading_tolerance >= (S.directed ? 180 : 90) ||
+        internal::heading_difference(S.headings[e[0]], S.headings[e[1]], S.directed) <= heading_tolerance)
       edges.push_back(e);
   edges.insert(edges.end(), S.trip_links.begin(), S.trip_links.end());
   std::sort(edges.begin(), edges.end());
