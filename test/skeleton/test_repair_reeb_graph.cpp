@@ -126,3 +126,55 @@ TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   EXPECT_EQ(prune_reeb_graph_components(R, 0).removed_components, 0u);
   EXPECT_THROW(prune_reeb_graph_components(R, -1), std::invalid_argument);
 }
+
+TEST(ConnectDeadEnds, ClosesATJunctionGap) {
+  // A horizontal path 0..10 (vertices 0..10 at (i, 0)) and a vertical one (vertices 11..19 at (5, 1.5 + i))
+  // that stops 1.5 short of it; f = x + y (the first path) and a separate rising f on the second.
+  Line pts;
+  std::vector<Edge> edges;
+  std::vector<double> f;
+  for (int i = 0; i <= 10; ++i) {
+    pts.p.push_back({double(i), 0.0});
+    f.push_back(double(i));
+    if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
+  }
+  for (int i = 0; i < 9; ++i) {
+    pts.p.push_back({5.0, 1.5 + i});
+    f.push_back(6.5 + i);
+    if (i > 0) edges.push_back({Vertex_index(10 + i), Vertex_index(11 + i)});
+  }
+  const Complex_with_function c = make(pts.p.size(), edges, {}, f);
+  const Reeb_graph R = reeb_graph_of(c);
+  ASSERT_EQ(R.components, 2u);
+  // 1.4 is too short; 1.5 reaches vertex 5 (at (5, 0)), an interior vertex of the horizontal arc: it is split.
+  EXPECT_EQ(connect_dead_ends(R, c.f, 1.4, pts).connected, 0u);
+  const Reeb_dead_end_result joined = connect_dead_ends(R, c.f, 1.5, pts);
+  EXPECT_EQ(joined.connected, 1u);
+  const Reeb_graph& G = joined.graph;
+  EXPECT_EQ(G.components, 1u);
+  EXPECT_EQ(G.loops(), 0u);
+  std::size_t degree_three = 0;
+  std::vector<std::size_t> degree(G.nodes.size(), 0);
+  for (const auto& a : G.arcs) {
+    ++degree[a.lower];
+    ++degree[a.upper];
+    EXPECT_LT(a.lower, a.upper);
+    for (const Vertex_index v : a.vertices) {
+      EXPECT_GE(c.f[v], G.nodes[a.lower].value);
+      EXPECT_LE(c.f[v], G.nodes[a.upper].value);
+    }
+  }
+  for (std::size_t i = 0; i < G.nodes.size(); ++i) {
+    if (i > 0) EXPECT_LE(G.nodes[i - 1].value, G.nodes[i].value);
+    if (degree[i] == 3) {
+      ++degree_three;
+      EXPECT_EQ(G.nodes[i].vertex, 5u);
+    }
+  }
+  EXPECT_EQ(degree_three, 1u);
+  // The dead end of the horizontal path at vertex 0 or 10 has nothing else in reach; the result is the same
+  // whatever order the ends come in (deterministic), and simplification accepts it.
+  const Reeb_graph S = simplify_by_persistence(G, c.f, 0.5).graph;
+  EXPECT_EQ(S.components, 1u);
+  EXPECT_THROW(connect_dead_ends(R, c.f, -1, pts), std::invalid_argument);
+}

@@ -48,6 +48,9 @@ struct Skeleton_options {
   double delta = 0;            ///< persistence threshold of the simplification (function unit); default 0
   double repair_distance = 0;  ///< join degree-1 nodes at most this far apart in input space, then simplify again;
                                ///< 0 (default): no repair
+  /// With a repair distance: also join each remaining degree-1 node to the closest point of another arc within
+  /// that distance, splitting the arc (connect_dead_ends(): T junctions with a gap). Default true.
+  bool connect_dead_ends = true;
   /// Remove connected components of height (range of f) at most this after simplification and repair; their
   /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all.
   double prune_height = 0;
@@ -67,6 +70,7 @@ struct Reeb_skeleton {
   std::size_t rips_edges = 0;      ///< size of the Rips complex
   std::size_t rips_triangles = 0;  ///< size of the Rips complex
   std::size_t removed_branches = 0, removed_loops = 0, repaired = 0;  ///< what simplification and repair did
+  std::size_t connected_dead_ends = 0;                     ///< arcs added by connect_dead_ends()
   std::size_t trimmed_stubs = 0;                           ///< spurs at essential extrema contracted
   std::size_t pruned_components = 0;                       ///< components removed (Skeleton_options::prune_height)
   std::vector<Vertex_index> pruned_points;                 ///< their input points (sorted)
@@ -142,7 +146,13 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   if (options.repair_distance > 0) {
     const Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance);
     result.repaired = fixed.joined;
-    S = simplify_by_persistence(fixed.graph, A.values(), options.delta);
+    Reeb_graph joined = fixed.graph;
+    if (options.connect_dead_ends) {
+      Reeb_dead_end_result ends = connect_dead_ends(joined, A.values(), options.repair_distance, distance);
+      result.connected_dead_ends = ends.connected;
+      joined = std::move(ends.graph);
+    }
+    S = simplify_by_persistence(joined, A.values(), options.delta);
     result.removed_branches += S.removed_branches;
     result.removed_loops += S.removed_loops;
   }

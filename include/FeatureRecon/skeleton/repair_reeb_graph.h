@@ -71,6 +71,125 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
   return result;
 }
 
+/// Result of connect_dead_ends().
+struct Reeb_dead_end_result {
+  Reeb_graph graph;              ///< the graph with the new arcs (and nodes where arcs were split)
+  std::size_t connected = 0;     ///< number of arcs added
+};
+
+/// The other half of graph fixing: a degree-1 node whose input point is at most `max_distance` from a point of
+/// another part of the graph (a node, or an interior vertex of an arc that does not end at this node) gets an arc
+/// to the closest such point (ties: smallest vertex index), splitting that arc there: a street that stops short
+/// of the street it meets (a T junction with a gap). Dead ends are taken in node order and see the arcs added
+/// before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends
+/// and n input vertices in the graph. \param values f of every input vertex (for the new nodes).
+/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
+/// \pre max_distance >= 0 and finite (checked; throws).
+template <class Distance>
+Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values, double max_distance,
+                                       Distance distance) {
+  const char* fn = "connect_dead_ends";
+  if (!(max_distance >= 0 && std::isfinite(max_distance)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
+  for (const auto& a : R.arcs)
+    for (const Vertex_index v : a.vertices)
+      if (v >= values.size())
+        FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has no value (", values.size(), " values)");
+  Reeb_dead_end_result result;
+  Reeb_graph G = R;
+  auto degrees = [&G]() {
+    std::vector<std::size_t> d(G.nodes.size(), 0);
+    for (const auto& a : G.arcs) ++d[a.lower], ++d[a.upper];
+    return d;
+  };
+  std::vector<std::size_t> degree = degrees();
+  std::vector<Vertex_index> ends;  // by input vertex: node indices change when arcs split
+  for (std::size_t i = 0; i < G.nodes.size(); ++i)
+    if (degree[i] == 1) ends.push_back(G.nodes[i].vertex);
+  for (const Vertex_index end_vertex : ends) {
+    std::size_t u = 0;
+    while (u < G.nodes.size() && G.nodes[u].vertex != end_vertex) ++u;
+    degree = degrees();
+    if (u == G.nodes.size() || degree[u] != 1) continue;
+    // The arc at u and its other end are excluded (joining them would make a tiny loop).
+    std::size_t own = 0;
+    while (G.arcs[own].lower != u && G.arcs[own].upper != u) ++own;
+    const std::size_t neighbour = G.arcs[own].lower == u ? G.arcs[own].upper : G.arcs[own].lower;
+    double best = max_distance;
+    std::size_t best_node = G.nodes.size(), best_arc = G.arcs.size(), best_position = 0;
+    Vertex_index best_vertex = 0;
+    bool found = false;
+    auto consider = [&](Vertex_index v, std::size_t node, std::size_t arc, std::size_t position) {
+      const double d = static_cast<double>(distance(end_vertex, v));
+      if (d < best || (d == best && found && v < best_vertex) || (d == best && !found)) {
+        best = d;
+        best_vertex = v;
+        best_node = node;
+        best_arc = arc;
+        best_position = position;
+        found = true;
+      }
+    };
+    for (std::size_t i = 0; i < G.nodes.size(); ++i)
+      if (i != u && i != neighbour) consider(G.nodes[i].vertex, i, G.arcs.size(), 0);
+    for (std::size_t a = 0; a < G.arcs.size(); ++a)
+      if (a != own)
+        for (std::size_t k = 0; k < G.arcs[a].vertices.size(); ++k) consider(G.arcs[a].vertices[k], G.nodes.size(), a, k);
+    if (!found) continue;
+    std::size_t target = best_node;
+    if (best_arc < G.arcs.size()) {
+      // Split the arc at its vertex: a new (regular, then fork) node.
+      Reeb_graph::Node n;
+      n.vertex = best_vertex;
+      n.value = values[best_vertex];
+      Reeb_graph::Arc upper_part;
+      upper_part.lower = G.nodes.size();
+      upper_part.upper = G.arcs[best_arc].upper;
+      upper_part.vertices.assign(G.arcs[best_arc].vertices.begin() + static_cast<std::ptrdiff_t>(best_position) + 1,
+                                 G.arcs[best_arc].vertices.end());
+      G.arcs[best_arc].vertices.resize(best_position);
+      G.arcs[best_arc].upper = G.nodes.size();
+      G.nodes.push_back(std::move(n));
+      G.arcs.push_back(std::move(upper_part));
+      target = G.nodes.size() - 1;
+    }
+    Reeb_graph::Arc link;
+    link.lower = u;
+    link.upper = target;
+    G.arcs.push_back(std::move(link));
+    ++result.connected;
+  }
+  // Nodes back in (value, vertex) order, arcs oriented upwards and sorted, types and components.
+  std::vector<std::size_t> order(G.nodes.size()), index(G.nodes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&G](std::size_t a, std::size_t b) {
+    return G.nodes[a].value < G.nodes[b].value || (G.nodes[a].value == G.nodes[b].value && G.nodes[a].vertex < G.nodes[b].vertex);
+  });
+  Reeb_graph& H = result.graph;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    index[order[i]] = i;
+    H.nodes.push_back(std::move(G.nodes[order[i]]));
+  }
+  for (auto& a : G.arcs) {
+    a.lower = index[a.lower];
+    a.upper = index[a.upper];
+    if (a.lower > a.upper) std::swap(a.lower, a.upper);  // only new links (no interior vertices) can be reversed
+  }
+  std::sort(G.arcs.begin(), G.arcs.end(), [](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) {
+    const Vertex_index fa = a.vertices.empty() ? 0 : a.vertices.front(), fb = b.vertices.empty() ? 0 : b.vertices.front();
+    return std::tie(a.lower, a.upper, fa) < std::tie(b.lower, b.upper, fb);
+  });
+  H.arcs = std::move(G.arcs);
+  std::vector<std::size_t> down(H.nodes.size(), 0), up(H.nodes.size(), 0);
+  for (const auto& a : H.arcs) {
+    ++up[a.lower];
+    ++down[a.upper];
+  }
+  for (std::size_t i = 0; i < H.nodes.size(); ++i) H.nodes[i].type = node_type_from_degrees(down[i], up[i]);
+  H.components = internal::count_components(H);
+  return result;
+}
+
 /// Result of prune_reeb_graph_components().
 struct Reeb_prune_result {
   Reeb_graph graph;                   ///< the graph without the pruned components
