@@ -41,7 +41,7 @@ const Gps_case& chicago_tracks() {
   }
   c->radius = std::min(50.0, std::max(10.0, sk::median_gps_step(c->trips)));
   c->trace.heading_tolerance = 30;
-  c->trace.min_relative_density = 0.15;
+  c->trace.min_relative_density = 0.1;
   c->skeleton.delta = 3 * c->radius;
   c->skeleton.repair_distance = 2.5 * c->radius;
   c->skeleton.prune_height = 5 * c->radius;

@@ -59,6 +59,21 @@ bool operator!=(const Large_array_allocator<T>&, const Large_array_allocator<U>&
 
 template <class T>
 using Large_vector = std::vector<T, Large_array_allocator<T>>;
+
+/// Reserves exactly n elements in a std::vector and advises the 2 MiB-aligned part of the new buffer as huge
+/// pages before anything touches it (for public result arrays that must stay std::vector).
+template <class T>
+void reserve_huge(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::size_t huge_page = std::size_t(2) << 20;
+  const std::size_t bytes = v.capacity() * sizeof(T);
+  if (bytes < 2 * huge_page) return;
+  const std::size_t begin = (reinterpret_cast<std::size_t>(v.data()) + huge_page - 1) / huge_page * huge_page;
+  const std::size_t end = (reinterpret_cast<std::size_t>(v.data()) + bytes) / huge_page * huge_page;
+  if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#endif
+}
 /// \endcond
 
 }  // namespace internal

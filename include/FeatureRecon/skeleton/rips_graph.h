@@ -4,6 +4,7 @@
 #define FEATURERECON_SKELETON_RIPS_GRAPH_H
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/Large_array_allocator.h>
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/point_traits.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
@@ -482,33 +483,47 @@ inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const
   if (!is_canonical(g))
     FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph)");
   Simplicial_complex_2 k;
-  static_cast<Proximity_graph&>(k) = g;
+  k.number_of_vertices = g.number_of_vertices;
+  FeatureRecon::internal::reserve_huge(k.edges, g.edges.size());
+  k.edges.assign(g.edges.begin(), g.edges.end());
+  FeatureRecon::internal::reserve_huge(k.edge_lengths, g.edge_lengths.size());
+  k.edge_lengths.assign(g.edge_lengths.begin(), g.edge_lengths.end());
   const std::size_t n = g.number_of_vertices;
   // Forward adjacency: for each u, its neighbours v > u in increasing order (edges are sorted).
   std::vector<std::size_t> first(n + 1, 0);
   for (const Edge& e : g.edges) ++first[e[0] + 1];
   for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
   const std::size_t report_every = std::max<std::size_t>(1, n / 100);
-  for (std::size_t u = 0; u < n; ++u) {
-    if (u % report_every == 0 && !FeatureRecon::internal::report_progress(progress, static_cast<double>(u) / n))
-      break;
-    for (std::size_t a = first[u]; a < first[u + 1]; ++a) {
-      const Vertex_index v = g.edges[a].at(1);
-      // Intersect N+(u) after v with N+(v).
-      std::size_t p = a + 1, q = first[v];
-      while (p < first[u + 1] && q < first[v + 1]) {
-        const Vertex_index x = g.edges[p][1], y = g.edges[q][1];
-        if (x < y) {
-          ++p;
-        } else if (y < x) {
-          ++q;
-        } else {
-          k.triangles.push_back(Triangle{static_cast<Vertex_index>(u), v, x});
-          ++p;
-          ++q;
+  // Two passes (count, then fill one exact huge-page buffer): cheaper than growing a vector of millions of
+  // triangles on machines where first-touch page faults are expensive.
+  for (int pass = 0; pass < 2; ++pass) {
+    std::size_t count = 0;
+    for (std::size_t u = 0; u < n; ++u) {
+      if (pass == 1 && u % report_every == 0 &&
+          !FeatureRecon::internal::report_progress(progress, static_cast<double>(u) / n))
+        break;
+      for (std::size_t a = first[u]; a < first[u + 1]; ++a) {
+        const Vertex_index v = g.edges[a].at(1);
+        // Intersect N+(u) after v with N+(v).
+        std::size_t p = a + 1, q = first[v];
+        while (p < first[u + 1] && q < first[v + 1]) {
+          const Vertex_index x = g.edges[p][1], y = g.edges[q][1];
+          if (x < y) {
+            ++p;
+          } else if (y < x) {
+            ++q;
+          } else {
+            if (pass == 1)
+              k.triangles.push_back(Triangle{static_cast<Vertex_index>(u), v, x});
+            else
+              ++count;
+            ++p;
+            ++q;
+          }
         }
       }
     }
+    if (pass == 0) FeatureRecon::internal::reserve_huge(k.triangles, count);
   }
   (void)FeatureRecon::internal::report_progress(progress, 1.0);
   return k;
