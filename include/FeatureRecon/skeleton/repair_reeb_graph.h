@@ -14,6 +14,19 @@
 namespace FeatureRecon {
 namespace skeleton {
 
+namespace internal {
+/// Recomputes every node's type from its arcs and the number of components.
+inline void refresh_node_types(Reeb_graph& G) {
+  std::vector<std::size_t> down(G.nodes.size(), 0), up(G.nodes.size(), 0);
+  for (const auto& a : G.arcs) {
+    ++up[a.lower];
+    ++down[a.upper];
+  }
+  for (std::size_t i = 0; i < G.nodes.size(); ++i) G.nodes[i].type = node_type_from_degrees(down[i], up[i]);
+  G.components = count_components(G);
+}
+}  // namespace internal
+
 /// Result of repair_reeb_graph().
 struct Reeb_repair_result {
   Reeb_graph graph;         ///< the graph with the new arcs; may contain regular nodes (simplify next)
@@ -61,13 +74,7 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
     ++result.joined;
   }
   // Types and components of the new graph.
-  std::vector<std::size_t> down(G.nodes.size(), 0), up(G.nodes.size(), 0);
-  for (const auto& a : G.arcs) {
-    ++up[a.lower];
-    ++down[a.upper];
-  }
-  for (std::size_t i = 0; i < G.nodes.size(); ++i) G.nodes[i].type = node_type_from_degrees(down[i], up[i]);
-  G.components = internal::count_components(G);
+  internal::refresh_node_types(G);
   return result;
 }
 
@@ -180,13 +187,7 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
     return std::tie(a.lower, a.upper, fa) < std::tie(b.lower, b.upper, fb);
   });
   H.arcs = std::move(G.arcs);
-  std::vector<std::size_t> down(H.nodes.size(), 0), up(H.nodes.size(), 0);
-  for (const auto& a : H.arcs) {
-    ++up[a.lower];
-    ++down[a.upper];
-  }
-  for (std::size_t i = 0; i < H.nodes.size(); ++i) H.nodes[i].type = node_type_from_degrees(down[i], up[i]);
-  H.components = internal::count_components(H);
+  internal::refresh_node_types(H);
   return result;
 }
 
@@ -326,14 +327,7 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
       b.upper = index[b.upper];
       result.graph.arcs.push_back(std::move(b));
     }
-  std::vector<std::size_t> down(result.graph.nodes.size(), 0), up(result.graph.nodes.size(), 0);
-  for (const auto& a : result.graph.arcs) {
-    ++up[a.lower];
-    ++down[a.upper];
-  }
-  for (std::size_t i = 0; i < result.graph.nodes.size(); ++i)
-    result.graph.nodes[i].type = node_type_from_degrees(down[i], up[i]);
-  result.graph.components = R.components;
+  internal::refresh_node_types(result.graph);
   return result;
 }
 
