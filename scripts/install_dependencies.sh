@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config gzip
   libcgal-dev libboost-graph-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
   libgtest-dev libbenchmark-dev
-  libgudhi-dev libhera-dev
+  libgudhi-dev libhera-dev doxygen
 )
 if [ "${FEATURERECON_WITH_VTK:-0}" = 1 ]; then packages+=(libvtk9-dev); fi
 missing=()

@@ -2,11 +2,10 @@
 // Documentation only: the concept PointCoordinateTraits, as a pseudo-class.
 
 /// \ingroup Concepts
-/// \cgalConcept
 /// The concept PointCoordinateTraits gives the skeleton subsystem (build_rips_graph(), build_knn_graph(),
 /// make_point_matrix()) access to the Cartesian coordinates of a user's point type of any dimension.
 ///
-/// \cgalHasModel FeatureRecon::Point_coordinate_traits<P> for CGAL points of any kernel (Point_2, Point_3,
+/// Models: FeatureRecon::Point_coordinate_traits<P> for CGAL points of any kernel (Point_2, Point_3,
 /// Epick_d / Epeck_d Point_d, fixed or dynamic dimension: through `dimension()` and `cartesian(i)`) and for
 /// indexable ranges of numbers (std::vector<double>, std::array<double, N>, Eigen vectors).
 ///

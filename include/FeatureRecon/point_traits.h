@@ -35,7 +35,7 @@ struct Is_indexable_range<P, std::void_t<decltype(std::declval<const P&>().size(
 /// Users with another point type write a traits class with the same two members.
 template <class Point_>
 struct Point_coordinate_traits {
-  using Point = Point_;
+  using Point = Point_;  ///< the user's point type
   static_assert(internal::Has_cartesian<Point>::value || internal::Is_indexable_range<Point>::value,
                 "FeatureRecon: no default PointCoordinateTraits for this point type; pass a traits class "
                 "with dimension(p) and coordinate(p, i) (see doc/concepts/PointCoordinateTraits.h)");

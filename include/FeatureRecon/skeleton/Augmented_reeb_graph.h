@@ -55,12 +55,14 @@ inline unsigned node_type_from_degrees(std::size_t down_degree, std::size_t up_d
 /// \note `lower`/`upper` of an arc are node indices with value(lower) < value(upper) in the
 /// simulation-of-simplicity order (f, then vertex index); an arc may join the same two nodes as another.
 struct Reeb_graph {
+  /// A critical node: the image of one input vertex, with the vertices simplification identified with it.
   struct Node {
     Vertex_index vertex = 0;  ///< input vertex whose image is this node
     double value = 0;         ///< f(vertex)
     unsigned type = regular;  ///< Node_type flags
     std::vector<Vertex_index> members;  ///< other input vertices identified with this node (after simplification)
   };
+  /// An arc between two nodes, with the regular input vertices mapped into it.
   struct Arc {
     std::size_t lower = 0;                ///< index into `nodes`
     std::size_t upper = 0;                ///< index into `nodes`
@@ -90,7 +92,9 @@ class Augmented_reeb_graph {
 
   Augmented_reeb_graph() = default;
 
+  /// Number of nodes: every input vertex has one.
   std::size_t number_of_nodes() const { return m_values.size(); }
+  /// Number of arcs.
   std::size_t number_of_arcs() const { return m_arcs.size(); }
   /// Arcs sorted by (rank of lower, rank of upper).
   const std::vector<Arc>& arcs() const { return m_arcs; }
@@ -100,8 +104,9 @@ class Augmented_reeb_graph {
   const std::vector<Vertex_index>& order() const { return m_order; }
   /// Position of each vertex in order().
   const std::vector<Vertex_index>& rank() const { return m_rank; }
-  /// Number of arcs below / above the image of v.
+  /// Number of arcs below the image of v.
   std::size_t down_degree(Vertex_index v) const { return m_down_degree[v]; }
+  /// Number of arcs above the image of v.
   std::size_t up_degree(Vertex_index v) const { return m_up_offset[v + 1] - m_up_offset[v]; }
   /// Node_type flags of the image of v.
   unsigned type(Vertex_index v) const { return node_type_from_degrees(down_degree(v), up_degree(v)); }
@@ -166,6 +171,7 @@ struct Buckets {
 ///      naming the first bad index).
 /// \returns the augmented Reeb graph; `status()` is `degenerate_input` for an empty complex and
 ///      `interrupted` when the progress callback returned false.
+/// \param options progress callback (return false to stop: the result then has Status::interrupted).
 template <class FunctionRange>
 Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K, const FunctionRange& f,
                                                   const Reeb_graph_options& options) {

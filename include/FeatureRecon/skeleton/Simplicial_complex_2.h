@@ -29,7 +29,8 @@ struct Proximity_graph {
   std::vector<Edge> edges;             ///< sorted pairs (u, v), u < v
   std::vector<double> edge_lengths;    ///< aligned with `edges`; empty means every length is 1
 
-  std::size_t number_of_edges() const { return edges.size(); }
+  std::size_t number_of_edges() const { return edges.size(); }  ///< number of edges
+  /// Length of edge e (1 when the graph is unweighted).
   double length(std::size_t e) const { return edge_lengths.empty() ? 1.0 : edge_lengths[e]; }
 
   /// Index of edge (u, v) (either order) or -1; O(log m).
@@ -46,7 +47,7 @@ struct Proximity_graph {
 /// triangles sorted lexicographically without repetition.
 struct Simplicial_complex_2 : Proximity_graph {
   std::vector<Triangle> triangles;  ///< sorted triples (a, b, c), a < b < c
-  std::size_t number_of_triangles() const { return triangles.size(); }
+  std::size_t number_of_triangles() const { return triangles.size(); }  ///< number of triangles
 };
 
 namespace internal {

@@ -69,7 +69,9 @@ struct Reeb_skeleton {
   std::size_t dimension = 0;       ///< embedding dimension: min(input dimension, 3)
   std::size_t rips_edges = 0;      ///< size of the Rips complex
   std::size_t rips_triangles = 0;  ///< size of the Rips complex
-  std::size_t removed_branches = 0, removed_loops = 0, repaired = 0;  ///< what simplification and repair did
+  std::size_t removed_branches = 0;  ///< branches removed by the simplifications
+  std::size_t removed_loops = 0;     ///< loops removed by the simplifications
+  std::size_t repaired = 0;          ///< arcs added by repair_reeb_graph()
   std::size_t connected_dead_ends = 0;                     ///< arcs added by connect_dead_ends()
   std::size_t trimmed_stubs = 0;                           ///< spurs at essential extrema contracted
   std::size_t pruned_components = 0;                       ///< components removed (Skeleton_options::prune_height)

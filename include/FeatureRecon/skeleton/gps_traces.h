@@ -24,7 +24,9 @@ namespace skeleton {
 
 /// One GPS fix: planar position (metres) and time (seconds; only the order matters).
 struct Gps_fix {
-  double x = 0, y = 0, time = 0;
+  double x = 0;     ///< easting (metres)
+  double y = 0;     ///< northing (metres)
+  double time = 0;  ///< seconds
 };
 
 /// A trip: fixes of one vehicle; sample_gps_traces() sorts them by time (stable, so equal times keep file order).

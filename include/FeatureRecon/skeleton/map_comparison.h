@@ -49,8 +49,8 @@ struct Map_comparison_result {
 
 /// A sample of a map: position and the bearing of its edge in [0, 360) degrees.
 struct Map_sample {
-  std::array<double, 2> position;
-  double bearing;
+  std::array<double, 2> position;  ///< metres
+  double bearing;                  ///< degrees in [0, 360)
 };
 
 namespace internal {

@@ -194,7 +194,7 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
 /// Result of prune_reeb_graph_components().
 struct Reeb_prune_result {
   Reeb_graph graph;                   ///< the graph without the pruned components
-  std::size_t removed_components = 0;
+  std::size_t removed_components = 0;          ///< number of components removed
   std::vector<Vertex_index> removed_vertices;  ///< input vertices of the removed components (sorted)
 };
 

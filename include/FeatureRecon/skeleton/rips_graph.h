@@ -43,7 +43,7 @@ struct Point_matrix {
   std::size_t rows = 0;       ///< number of points
   std::size_t dimension = 0;  ///< coordinates per point
   std::vector<double> data;   ///< row-major coordinates
-  const double* row(std::size_t i) const { return data.data() + i * dimension; }
+  const double* row(std::size_t i) const { return data.data() + i * dimension; }  ///< coordinates of point i
 };
 
 /// Copies the coordinates of `points` through `traits` into a Point_matrix.
