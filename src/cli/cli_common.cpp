@@ -85,12 +85,16 @@ long long Arguments::get_int(const std::string& name) const {
 
 Progress::Progress(std::string stage, bool quiet)
     : m_stage(std::move(stage)), m_quiet(quiet), m_tty(isatty(STDERR_FILENO) != 0),
-      m_start(std::chrono::steady_clock::now()), m_last(m_start) {
-  if (!m_quiet && !m_tty) std::fprintf(stderr, "%s ...\n", m_stage.c_str());
-}
+      m_start(std::chrono::steady_clock::now()), m_last(m_start) {}
 
 bool Progress::operator()(double fraction) {
-  if (m_quiet || !m_tty) return true;
+  if (m_quiet) return true;
+  if (!m_tty) {
+    // Not a terminal: one line when the work starts (not before: input errors come first).
+    if (!m_announced) std::fprintf(stderr, "%s ...\n", m_stage.c_str());
+    m_announced = true;
+    return true;
+  }
   const auto now = std::chrono::steady_clock::now();
   if (now - m_last < std::chrono::milliseconds(200) && fraction < 1.0) return true;
   m_last = now;

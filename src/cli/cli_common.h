@@ -52,7 +52,7 @@ class Progress {
 
  private:
   std::string m_stage;
-  bool m_quiet, m_tty, m_finished = false;
+  bool m_quiet, m_tty, m_finished = false, m_announced = false;
   std::chrono::steady_clock::time_point m_start, m_last;
 };
 
