@@ -4,6 +4,10 @@
 
 #include <boost/graph/connected_components.hpp>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+
 #include <Eigen/Core>
 
 #include <cmath>
@@ -145,4 +149,27 @@ TEST(ExtractReebSkeleton, StubsAtTheBasePointAreTrimmedOnLoops) {
   for (auto v : boost::make_iterator_range(vertices(raw.graph))) leaves += degree(v, raw.graph) == 1 ? 1 : 0;
   EXPECT_EQ(leaves, 2u);
   EXPECT_EQ(trimmed.trimmed_stubs, 2u);
+}
+
+// The pipeline through every kernel's points: the same skeleton as from std::array points.
+template <class Point>
+class ExtractReebSkeletonKernels : public ::testing::Test {};
+using Skeleton_kernel_points = ::testing::Types<CGAL::Simple_cartesian<double>::Point_2, CGAL::Epick::Point_2,
+                                                CGAL::Epeck::Point_2>;
+TYPED_TEST_SUITE(ExtractReebSkeletonKernels, Skeleton_kernel_points);
+
+TYPED_TEST(ExtractReebSkeletonKernels, SameSkeletonAsPlainArrays) {
+  const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
+  std::vector<TypeParam> points;
+  for (const auto& p : eight.points) points.emplace_back(p[0], p[1]);
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Reeb_skeleton a = extract_reeb_skeleton(eight.points, 0.7, o);
+  const Reeb_skeleton b = extract_reeb_skeleton(points, 0.7, o);
+  EXPECT_EQ(b.rips_edges, a.rips_edges);
+  EXPECT_EQ(b.rips_triangles, a.rips_triangles);
+  ASSERT_EQ(num_vertices(b.graph), num_vertices(a.graph));
+  ASSERT_EQ(num_edges(b.graph), num_edges(a.graph));
+  for (std::size_t v = 0; v < num_vertices(a.graph); ++v) EXPECT_EQ(b.graph[v].position, a.graph[v].position);
+  EXPECT_EQ(loops_of(b.graph), 2u);
 }
