@@ -308,7 +308,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     --forest_degree[q];
     in_tree[t] = 0;
   };
-  auto insert_level_edge = [&](std::uint32_t t, std::int32_t p, std::int32_t q, LCT::Key key) {
+  auto insert_level_edge = [&](std::uint32_t t, std::int32_t p, std::int32_t q, LCT::Key key,
+                               bool known_disconnected) {
     const std::int32_t x = static_cast<std::int32_t>(E + t);
     forest.set_key(x, key);
     ends[t] = {p, q};
@@ -317,6 +318,10 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
       // p is a tree of its own: hang x below q and p below x.
       forest.attach_isolated(x, q);
       forest.attach_isolated(p, x);
+    } else if (known_disconnected) {
+      forest.evert(p);
+      forest.attach_isolated(x, q);
+      forest.attach_root(p, x);
     } else {
       std::int32_t m = forest.connected_path_min(p, q);
       if (m != LCT::null) {
@@ -338,7 +343,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   // goes to group_representatives.
   FeatureRecon::internal::Large_vector<std::int32_t> slot(E, -1);
   std::vector<std::int32_t> group_parent;
-  std::vector<std::uint32_t> group_representatives;
+  std::vector<std::uint32_t> group_representatives, lower_halves;
   auto group_edges = [&](const std::uint32_t* eb, const std::uint32_t* ee, const std::uint32_t* tb,
                          const std::uint32_t* te, bool below_vertex) {
     const std::size_t k = static_cast<std::size_t>(ee - eb);
@@ -384,15 +389,39 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     //    of triangles with x on top.
     for (const std::uint32_t* t = by_mid.begin(step); t != by_mid.end(step); ++t) remove_level_edge(*t);
     for (const std::uint32_t* t = by_max.begin(step); t != by_max.end(step); ++t) remove_level_edge(*t);
-    // 3. Level-set edges born at x: upper halves (bc, ac) of triangles with x in the middle (deleted
-    //    at c), lower halves (ab, ac) of triangles with x at the bottom (deleted at b).
+    // 3. Level-set edges born at x. First the lower halves (ab, ac) of triangles with x at the bottom
+    //    (deleted at b): both ends are edges of K born at x, still isolated, so their maximum spanning forest
+    //    is local to the star of x: Kruskal by decreasing deletion time with a union-find over the new edges.
+    //    A half it rejects closes a cycle of halves that live at least as long, so the global forest would
+    //    reject it too: it never enters the link-cut tree (in dense Rips complexes most halves are rejected).
+    {
+      const std::uint32_t* eb = up_edges.begin(step);
+      const std::size_t k = static_cast<std::size_t>(up_edges.end(step) - eb);
+      group_parent.resize(k);
+      for (std::size_t i = 0; i < k; ++i) {
+        slot[eb[i]] = static_cast<std::int32_t>(i);
+        group_parent[i] = static_cast<std::int32_t>(i);
+      }
+      auto find = [&](std::int32_t i) {
+        while (group_parent[i] != i) i = group_parent[i] = group_parent[group_parent[i]];
+        return i;
+      };
+      lower_halves.assign(by_min.begin(step), by_min.end(step));
+      std::sort(lower_halves.begin(), lower_halves.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return tri[a].rank_b > tri[b].rank_b || (tri[a].rank_b == tri[b].rank_b && a < b);
+      });
+      for (const std::uint32_t t : lower_halves) {
+        const Tri& tr = tri[t];
+        const std::int32_t i = find(slot[tr.ab]), j = find(slot[tr.ac]);
+        if (i == j) continue;
+        group_parent[std::max(i, j)] = std::min(i, j);
+        insert_level_edge(t, static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), tr.rank_b, true);
+      }
+    }
+    //    Then the upper halves (bc, ac) of triangles with x in the middle (deleted at c).
     for (const std::uint32_t* t = by_mid.begin(step); t != by_mid.end(step); ++t) {
       const Tri& tr = tri[*t];
-      insert_level_edge(*t, static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), tr.rank_c);
-    }
-    for (const std::uint32_t* t = by_min.begin(step); t != by_min.end(step); ++t) {
-      const Tri& tr = tri[*t];
-      insert_level_edge(*t, static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), tr.rank_b);
+      insert_level_edge(*t, static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), tr.rank_c, false);
     }
     // 4. The components just above x that contain an edge leaving x: each starts an arc at x. Edges out
     //    of x joined by a triangle (x, b, c) are in one component.
