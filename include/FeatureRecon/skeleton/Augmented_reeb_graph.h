@@ -344,18 +344,23 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   FeatureRecon::internal::Large_vector<std::int32_t> slot(E, -1);
   std::vector<std::int32_t> group_parent;
   std::vector<std::uint32_t> group_representatives, lower_halves;
-  auto group_edges = [&](const std::uint32_t* eb, const std::uint32_t* ee, const std::uint32_t* tb,
-                         const std::uint32_t* te, bool below_vertex) {
+  // Union-find over the edges [eb, ee) of a star: slot[e] is the edge's index there.
+  auto reset_groups = [&](const std::uint32_t* eb, const std::uint32_t* ee) {
     const std::size_t k = static_cast<std::size_t>(ee - eb);
     group_parent.resize(k);
     for (std::size_t i = 0; i < k; ++i) {
       slot[eb[i]] = static_cast<std::int32_t>(i);
       group_parent[i] = static_cast<std::int32_t>(i);
     }
-    auto find = [&](std::int32_t i) {
-      while (group_parent[i] != i) i = group_parent[i] = group_parent[group_parent[i]];
-      return i;
-    };
+    return k;
+  };
+  auto find = [&](std::int32_t i) {
+    while (group_parent[i] != i) i = group_parent[i] = group_parent[group_parent[i]];
+    return i;
+  };
+  auto group_edges = [&](const std::uint32_t* eb, const std::uint32_t* ee, const std::uint32_t* tb,
+                         const std::uint32_t* te, bool below_vertex) {
+    const std::size_t k = reset_groups(eb, ee);
     for (const std::uint32_t* t = tb; t != te; ++t) {
       const Tri& tr = tri[*t];
       const std::int32_t i = find(slot[below_vertex ? tr.bc : tr.ab]), j = find(slot[tr.ac]);
@@ -395,17 +400,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     //    A half it rejects closes a cycle of halves that live at least as long, so the global forest would
     //    reject it too: it never enters the link-cut tree (in dense Rips complexes most halves are rejected).
     {
-      const std::uint32_t* eb = up_edges.begin(step);
-      const std::size_t k = static_cast<std::size_t>(up_edges.end(step) - eb);
-      group_parent.resize(k);
-      for (std::size_t i = 0; i < k; ++i) {
-        slot[eb[i]] = static_cast<std::int32_t>(i);
-        group_parent[i] = static_cast<std::int32_t>(i);
-      }
-      auto find = [&](std::int32_t i) {
-        while (group_parent[i] != i) i = group_parent[i] = group_parent[group_parent[i]];
-        return i;
-      };
+      reset_groups(up_edges.begin(step), up_edges.end(step));
       lower_halves.assign(by_min.begin(step), by_min.end(step));
       std::sort(lower_halves.begin(), lower_halves.end(), [&](std::uint32_t a, std::uint32_t b) {
         return tri[a].rank_b > tri[b].rank_b || (tri[a].rank_b == tri[b].rank_b && a < b);

@@ -25,6 +25,22 @@ inline void refresh_node_types(Reeb_graph& G) {
   for (std::size_t i = 0; i < G.nodes.size(); ++i) G.nodes[i].type = node_type_from_degrees(down[i], up[i]);
   G.components = count_components(G);
 }
+
+/// Component of each node: the smallest node index in it (union-find over the arcs).
+inline std::vector<std::size_t> node_components(const Reeb_graph& G) {
+  std::vector<std::size_t> parent(G.nodes.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto find = [&parent](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& a : G.arcs) {
+    const std::size_t x = find(a.lower), y = find(a.upper);
+    if (x != y) parent[std::max(x, y)] = std::min(x, y);
+  }
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = find(i);
+  return parent;
+}
 }  // namespace internal
 
 /// Result of repair_reeb_graph().
@@ -205,16 +221,8 @@ struct Reeb_prune_result {
 inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
     FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components", "max_height must be >= 0");
-  std::vector<std::size_t> parent(R.nodes.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  auto find = [&parent](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const auto& a : R.arcs) {
-    const std::size_t x = find(a.lower), y = find(a.upper);
-    if (x != y) parent[std::max(x, y)] = std::min(x, y);
-  }
+  const std::vector<std::size_t> component = internal::node_components(R);
+  auto find = [&component](std::size_t x) { return component[x]; };
   std::vector<double> low(R.nodes.size(), 0), high(R.nodes.size(), 0);
   std::vector<bool> seen(R.nodes.size(), false);
   for (std::size_t i = 0; i < R.nodes.size(); ++i) {
@@ -278,16 +286,8 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
     incident[R.arcs[a].upper].push_back(a);
   }
   // Components (union-find on nodes), their lowest and highest node (nodes are sorted by (value, vertex)).
-  std::vector<std::size_t> parent(n);
-  for (std::size_t i = 0; i < n; ++i) parent[i] = i;
-  auto find = [&parent](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const auto& a : R.arcs) {
-    const std::size_t x = find(a.lower), y = find(a.upper);
-    if (x != y) parent[std::max(x, y)] = std::min(x, y);
-  }
+  const std::vector<std::size_t> component = internal::node_components(R);
+  auto find = [&component](std::size_t x) { return component[x]; };
   const std::size_t none = static_cast<std::size_t>(-1);
   std::vector<std::size_t> lowest(n, none), highest(n, none);
   for (std::size_t i = 0; i < n; ++i) {
