@@ -234,6 +234,14 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   bad.triangles.push_back({0, 2, 4});  // its edges are missing
   EXPECT_THROW(compute_augmented_reeb_graph(bad, c.f), std::invalid_argument);
   bad = c.complex;
+  bad.triangles.push_back({0, 1, 2});  // edges 01 and 12 exist, 02 does not: the message names it
+  try {
+    compute_augmented_reeb_graph(bad, c.f);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("edge (0, 2)"), std::string::npos) << e.what();
+  }
+  bad = c.complex;
   std::swap(bad.edges[0], bad.edges[1]);  // unsorted
   EXPECT_THROW(compute_augmented_reeb_graph(bad, c.f), std::invalid_argument);
   // Builder errors name the simplex.

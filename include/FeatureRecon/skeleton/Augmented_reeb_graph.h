@@ -218,157 +218,185 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     return R;
   }
 
-  // Per vertex: edges whose lower / upper end it is (by rank).
+  // Per vertex: edges whose lower / upper end it is (by rank). Buckets are keyed by sweep step (rank), not by
+  // vertex: the sweep then reads them sequentially. The edges leaving a vertex are listed by decreasing rank
+  // of their upper end (the order of the local Kruskal below).
   const std::size_t E = K.number_of_edges(), T = K.number_of_triangles();
-  // Buckets are keyed by sweep step (rank), not by vertex: the sweep then reads them sequentially.
   auto lower_of = [&](std::size_t e) { return std::min(rank[K.edges[e][0]], rank[K.edges[e][1]]); };
   auto upper_of = [&](std::size_t e) { return std::max(rank[K.edges[e][0]], rank[K.edges[e][1]]); };
   internal::Buckets<std::uint32_t> up_edges, down_edges;
-  up_edges.build(n, E, lower_of);
   down_edges.build(n, E, upper_of);
+  up_edges.offset.assign(n + 1, 0);
+  for (std::size_t e = 0; e < E; ++e) ++up_edges.offset[lower_of(e) + 1];
+  for (std::size_t step = 0; step < n; ++step) up_edges.offset[step + 1] += up_edges.offset[step];
+  up_edges.items.resize(E);
+  {
+    FeatureRecon::internal::Large_vector<std::size_t> fill(up_edges.offset.begin(), up_edges.offset.end() - 1);
+    for (std::size_t step = n; step-- > 0;)
+      for (const std::uint32_t* e = down_edges.begin(step); e != down_edges.end(step); ++e)
+        up_edges.items[fill[lower_of(*e)]++] = *e;
+  }
 
-  // Edge lookup: edges starting at u (smaller index) are contiguous.
+  // Sweep numbering: edges are renumbered in the order of up_edges, so that the level-set nodes alive at one
+  // time sit close together in memory (this matters for large complexes).
+  FeatureRecon::internal::Large_vector<std::uint32_t> edge_new(E);
+  for (std::size_t i = 0; i < E; ++i) edge_new[up_edges.items[i]] = static_cast<std::uint32_t>(i);
+  for (std::uint32_t& e : up_edges.items) e = edge_new[e];
+  for (std::uint32_t& e : down_edges.items) e = edge_new[e];
+
+  // Visits the triangles u < v < w in their canonical (sorted) order with the sweep numbers of their edges
+  // uv, vw, uw, found by a merge walk over the sorted edge list (edges starting at u are contiguous).
   FeatureRecon::internal::Large_vector<std::size_t> first_edge(n + 1, 0);
   for (const Edge& e : K.edges) ++first_edge[e[0] + 1];
   for (std::size_t v = 0; v < n; ++v) first_edge[v + 1] += first_edge[v];
-  auto edge_id = [&](Vertex_index u, Vertex_index v) -> std::uint32_t {
-    if (u > v) std::swap(u, v);
-    const auto b = K.edges.begin() + first_edge[u], e = K.edges.begin() + first_edge[u + 1];
-    const auto it = std::lower_bound(b, e, Edge{u, v});
-    if (it == e || (*it)[1] != v)
+  auto seek = [&](std::size_t i, Vertex_index u, Vertex_index v) {
+    const std::size_t end = first_edge[u + 1];
+    while (i < end && K.edges[i][1] < v) ++i;
+    if (i == end || K.edges[i][1] != v)
       FeatureRecon::internal::throw_invalid_argument(fn, "the complex is not canonical: edge (", u, ", ", v,
                                                      ") of a triangle is missing");
-    return static_cast<std::uint32_t>(it - K.edges.begin());
+    return i;
+  };
+  auto for_each_triangle = [&](auto&& visit) {
+    constexpr Vertex_index none = std::numeric_limits<Vertex_index>::max();
+    Vertex_index u = none, v = none;
+    std::size_t uv = 0, uw = 0, vw = 0;
+    for (const Triangle& t : K.triangles) {
+      if (t[0] != u) {
+        u = t[0];
+        v = none;
+        uv = first_edge[u];
+      }
+      if (t[1] != v) {
+        v = t[1];
+        uv = seek(uv, u, v);
+        uw = uv;
+        vw = first_edge[v];
+      }
+      uw = seek(uw, u, t[2]);
+      vw = seek(vw, v, t[2]);
+      visit(t, edge_new[uv], edge_new[vw], edge_new[uw]);
+    }
   };
 
-  // Sweep numbering: edges and triangles are renumbered by the rank of their lowest vertex, so that the
-  // level-set nodes alive at one time sit close together in memory (this matters for large complexes).
-  FeatureRecon::internal::Large_vector<std::uint32_t> edge_new(E), tri_new(T);
-  {
-    std::uint32_t c = 0;
-    for (std::size_t step = 0; step < n; ++step)
-      for (const std::uint32_t* e = up_edges.begin(step); e != up_edges.end(step); ++e)
-        edge_new[*e] = c++;
-    for (std::uint32_t& e : up_edges.items) e = edge_new[e];
-    for (std::uint32_t& e : down_edges.items) e = edge_new[e];
-  }
-
-  // Per triangle (in sweep numbering), with its vertices by rank a < b < c: its edges ab, bc, ac and the
-  // ranks of b and c (the deletion times of its lower and upper halves).
+  // Per triangle, with its vertices by rank a < b < c: its edges ab, bc, ac. The deletion times of its lower
+  // and upper halves, the ranks of b and c, are the upper ends of ab and ac. Triangles are sorted by their
+  // edge ab in sweep numbering (a counting sort): by the rank of a, then by decreasing rank of b. The lower
+  // halves born at one step are then contiguous and in the order of the local Kruskal below.
   struct Tri {
-    std::uint32_t ab, bc, ac, rank_b, rank_c;
+    std::uint32_t ab, bc, ac;
+  };
+  FeatureRecon::internal::Large_vector<Vertex_index> upper_rank(E);  // by sweep number
+  for (std::size_t e = 0; e < E; ++e) upper_rank[edge_new[e]] = upper_of(e);
+  auto roles = [&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
+    const Vertex_index ru = rank[t[0]], rv = rank[t[1]], rw = rank[t[2]];
+    if (ru < rv) {
+      if (rv < rw) return Tri{uv, vw, uw};  // u v w
+      if (ru < rw) return Tri{uw, vw, uv};  // u w v
+      return Tri{uw, uv, vw};               // w u v
+    }
+    if (ru < rw) return Tri{uv, uw, vw};    // v u w
+    if (rv < rw) return Tri{vw, uw, uv};    // v w u
+    return Tri{vw, uv, uw};                 // w v u
   };
   FeatureRecon::internal::Large_vector<Tri> tri(T);
-  internal::Buckets<std::uint32_t> by_min, by_mid, by_max;
+  FeatureRecon::internal::Large_vector<std::size_t> by_min(n + 1);  // triangles [by_min[s], by_min[s + 1]) have a at step s
+  internal::Buckets<std::uint32_t> by_mid;                          // triangles by the step of b
   {
-    FeatureRecon::internal::Large_vector<std::array<Vertex_index, 3>> sorted(T);
-    for (std::size_t t = 0; t < T; ++t) {
-      std::array<Vertex_index, 3> s = K.triangles[t];
-      std::sort(s.begin(), s.end(), [&](Vertex_index x, Vertex_index y) { return rank[x] < rank[y]; });
-      sorted[t] = s;
-    }
-    by_min.build(n, T, [&](std::size_t t) { return rank[sorted[t][0]]; });
-    std::uint32_t c = 0;
-    for (std::size_t step = 0; step < n; ++step)
-      for (const std::uint32_t* t = by_min.begin(step); t != by_min.end(step); ++t)
-        tri_new[*t] = c++;
-    for (std::size_t t = 0; t < T; ++t) {
-      const std::array<Vertex_index, 3>& s = sorted[t];
-      tri[tri_new[t]] = Tri{edge_new[edge_id(s[0], s[1])], edge_new[edge_id(s[1], s[2])],
-                            edge_new[edge_id(s[0], s[2])], rank[s[1]], rank[s[2]]};
-    }
-    by_mid.build(n, T, [&](std::size_t t) { return rank[sorted[t][1]]; });
-    by_max.build(n, T, [&](std::size_t t) { return rank[sorted[t][2]]; });
-    for (auto* b : {&by_min, &by_mid, &by_max})
-      for (std::uint32_t& t : b->items) t = tri_new[t];
+    FeatureRecon::internal::Large_vector<std::size_t> first_tri(E + 1, 0);
+    for_each_triangle([&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
+      ++first_tri[roles(t, uv, vw, uw).ab + 1];
+    });
+    for (std::size_t e = 0; e < E; ++e) first_tri[e + 1] += first_tri[e];
+    for (std::size_t step = 0; step <= n; ++step) by_min[step] = first_tri[up_edges.offset[step]];
+    for_each_triangle([&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
+      const Tri r = roles(t, uv, vw, uw);
+      tri[first_tri[r.ab]++] = r;
+    });
+    by_mid.build(n, T, [&](std::size_t t) { return upper_rank[tri[t].ab]; });
   }
   edge_new.clear();
   edge_new.shrink_to_fit();
-  tri_new.clear();
-  tri_new.shrink_to_fit();
 
-  // Link-cut forest: nodes [0, E) are level-set vertices (edges of K), nodes [E, E+T) are level-set
-  // edges (one per triangle: its lower half, then its upper half). Key of a level-set edge = rank of
-  // the vertex at which it is deleted.
+  // Link-cut forest: nodes [0, E) are level-set vertices (edges of K); nodes [E, 2E) are a pool for the
+  // level-set edges in the forest (a triangle's lower half, then its upper half), recycled when they
+  // leave it: a forest on at most E vertices has fewer than E edges, so the pool never runs dry, and the
+  // nodes in use stay few and hot in cache. Key of a level-set edge = rank of the vertex at which it is
+  // deleted. Every tree root is a level-set vertex.
   using LCT = internal::Link_cut_tree;
-  LCT forest(E + T);
-  FeatureRecon::internal::Large_vector<std::uint8_t> in_tree(T, 0);
-  FeatureRecon::internal::Large_vector<std::array<std::int32_t, 2>> ends(T);
-  FeatureRecon::internal::Large_vector<std::int32_t> arc_of_root(E + T, -1);
-  FeatureRecon::internal::Large_vector<std::uint32_t> stamp(E + T, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
+  LCT forest(2 * E);
+  // Per pool node E + i: the ends of its level-set edge and its place in the list of the forest edges deleted
+  // at its key (doubly linked: an edge also leaves the forest early when a longer-lived one replaces it).
+  struct Forest_edge {
+    std::int32_t ends[2];
+    std::int32_t prev, next;
+  };
+  FeatureRecon::internal::Large_vector<Forest_edge> forest_edge(E);
+  FeatureRecon::internal::Large_vector<std::int32_t> deleted_at(n, LCT::null);  // head of each step's list
+  auto edge_of = [&](std::int32_t x) -> Forest_edge& { return forest_edge[static_cast<std::size_t>(x) - E]; };
+  std::vector<std::int32_t> free_nodes;
+  free_nodes.reserve(E);
+  for (std::size_t i = E; i-- > 0;) free_nodes.push_back(static_cast<std::int32_t>(E + i));
+  FeatureRecon::internal::Large_vector<std::int32_t> arc_of_root(E, -1);
+  FeatureRecon::internal::Large_vector<std::uint32_t> stamp(E, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
 
   // Number of forest edges at each level-set vertex: a vertex without any is its own tree, which lets
   // most links skip the connectivity query (every edge of K starts isolated).
   FeatureRecon::internal::Large_vector<std::uint32_t> forest_degree(E, 0);
-  auto remove_level_edge = [&](std::uint32_t t) {
-    if (!in_tree[t]) return;
-    const std::int32_t p = ends[t][0], q = ends[t][1];
-    forest.cut_middle(static_cast<std::int32_t>(E + t), p, q);
-    --forest_degree[p];
-    --forest_degree[q];
-    in_tree[t] = 0;
+  auto remove_forest_edge = [&](std::int32_t x) {
+    Forest_edge& fe = edge_of(x);
+    forest.cut_middle(x, fe.ends[0], fe.ends[1]);
+    --forest_degree[fe.ends[0]];
+    --forest_degree[fe.ends[1]];
+    if (fe.prev != LCT::null) edge_of(fe.prev).next = fe.next;
+    else deleted_at[forest.key(x)] = fe.next;
+    if (fe.next != LCT::null) edge_of(fe.next).prev = fe.prev;
+    free_nodes.push_back(x);
   };
-  auto insert_level_edge = [&](std::uint32_t t, std::int32_t p, std::int32_t q, LCT::Key key,
-                               bool known_disconnected) {
-    const std::int32_t x = static_cast<std::int32_t>(E + t);
-    forest.set_key(x, key);
-    ends[t] = {p, q};
+  auto insert_level_edge = [&](std::int32_t p, std::int32_t q, LCT::Key key, bool known_disconnected) {
     if (forest_degree[p] != 0 && forest_degree[q] == 0) std::swap(p, q);
-    if (forest_degree[p] == 0) {
-      // p is a tree of its own: hang x below q and p below x.
-      forest.attach_isolated(x, q);
-      forest.attach_isolated(p, x);
-    } else if (known_disconnected) {
-      forest.evert(p);
-      forest.attach_isolated(x, q);
-      forest.attach_root(p, x);
-    } else {
-      std::int32_t m = forest.connected_path_min(p, q);
+    if (forest_degree[p] != 0 && !known_disconnected) {
+      const std::int32_t m = forest.connected_path_min(p, q);
       if (m != LCT::null) {
         if (forest.key(m) >= key) return;  // the new edge closes a cycle and dies first: not in the forest
-        remove_level_edge(static_cast<std::uint32_t>(m - static_cast<std::int32_t>(E)));
+        remove_forest_edge(m);
         forest.evert(p);
       }
-      // p is now the root of its tree (and a splay root): hang x below q and p below x.
-      forest.attach_isolated(x, q);
-      forest.attach_root(p, x);
+    } else if (forest_degree[p] != 0) {
+      forest.evert(p);
     }
+    FEATURERECON_assertion(!free_nodes.empty());
+    const std::int32_t x = free_nodes.back();
+    free_nodes.pop_back();
+    forest.set_key(x, key);
+    const std::int32_t head = deleted_at[key];
+    edge_of(x) = Forest_edge{{p, q}, LCT::null, head};
+    if (head != LCT::null) edge_of(head).prev = x;
+    deleted_at[key] = x;
+    // p is a tree of its own or the root of its tree (and a splay root): hang x below q and p below x.
+    forest.attach_isolated(x, q);
+    if (forest_degree[p] == 0) forest.attach_isolated(p, x);
+    else forest.attach_root(p, x);
     ++forest_degree[p];
     ++forest_degree[q];
-    in_tree[t] = 1;
   };
 
-  // Groups the edges [eb, ee) of the star of a vertex into classes joined by the given triangles (whose two
-  // edges at the vertex are ab/ac for triangles above it, bc/ac for triangles below it); one edge per class
-  // goes to group_representatives.
+  // Union-find over the up-edges of the current vertex, joined by the lower halves born there: slot[e] is
+  // the edge's index in the vertex's up_edges.
   FeatureRecon::internal::Large_vector<std::int32_t> slot(E, -1);
   std::vector<std::int32_t> group_parent;
-  std::vector<std::uint32_t> group_representatives, lower_halves;
-  // Union-find over the edges [eb, ee) of a star: slot[e] is the edge's index there.
-  auto reset_groups = [&](const std::uint32_t* eb, const std::uint32_t* ee) {
-    const std::size_t k = static_cast<std::size_t>(ee - eb);
-    group_parent.resize(k);
-    for (std::size_t i = 0; i < k; ++i) {
-      slot[eb[i]] = static_cast<std::int32_t>(i);
-      group_parent[i] = static_cast<std::int32_t>(i);
-    }
-    return k;
-  };
   auto find = [&](std::int32_t i) {
     while (group_parent[i] != i) i = group_parent[i] = group_parent[group_parent[i]];
     return i;
   };
-  auto group_edges = [&](const std::uint32_t* eb, const std::uint32_t* ee, const std::uint32_t* tb,
-                         const std::uint32_t* te, bool below_vertex) {
-    const std::size_t k = reset_groups(eb, ee);
-    for (const std::uint32_t* t = tb; t != te; ++t) {
-      const Tri& tr = tri[*t];
-      const std::int32_t i = find(slot[below_vertex ? tr.bc : tr.ab]), j = find(slot[tr.ac]);
-      if (i != j) group_parent[std::max(i, j)] = std::min(i, j);
-    }
-    group_representatives.clear();
-    for (std::size_t i = 0; i < k; ++i)
-      if (find(static_cast<std::int32_t>(i)) == static_cast<std::int32_t>(i)) group_representatives.push_back(eb[i]);
+  // Union-find over the edges of K, joining two edges into the same vertex c by the upper halves with c on
+  // top (the "fan" of c below the sweep level). At step c its classes are the down-edges of c joined by
+  // triangles with c on top: the parts of the star below c that lie in one level-set component.
+  FeatureRecon::internal::Large_vector<std::uint32_t> fan_parent(E);
+  std::iota(fan_parent.begin(), fan_parent.end(), std::uint32_t(0));
+  auto fan_find = [&](std::uint32_t i) {
+    while (fan_parent[i] != i) i = fan_parent[i] = fan_parent[fan_parent[i]];
+    return i;
   };
 
   for (std::size_t step = 0; step < n; ++step) {
@@ -380,49 +408,56 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     const Vertex_index x = R.m_order[step];
     const std::uint32_t below = static_cast<std::uint32_t>(2 * step + 1), above = below + 1;
     // 1. The level-set components just below x that x touches: each is an arc ending at x. Edges into x
-    //    joined by a triangle (a, b, x) are in one component: only one root query per such group.
-    group_edges(down_edges.begin(step), down_edges.end(step), by_max.begin(step), by_max.end(step), true);
-    for (const std::uint32_t e : group_representatives) {
-      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(e));
+    //    in one fan class are in one component: one root query per class.
+    for (const std::uint32_t* e = down_edges.begin(step); e != down_edges.end(step); ++e) {
+      if (fan_find(*e) != *e) continue;
+      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(*e));
+      FEATURERECON_assertion(static_cast<std::size_t>(r) < E);
       if (stamp[r] == below) continue;
       stamp[r] = below;
       const std::int32_t a = arc_of_root[r];
       FEATURERECON_assertion(a >= 0 && R.m_arcs[a].upper == R.m_arcs[a].lower);
       R.m_arcs[a].upper = x;
     }
-    // 2. Level-set edges deleted at x: lower halves of triangles with x in the middle, upper halves
-    //    of triangles with x on top.
-    for (const std::uint32_t* t = by_mid.begin(step); t != by_mid.end(step); ++t) remove_level_edge(*t);
-    for (const std::uint32_t* t = by_max.begin(step); t != by_max.end(step); ++t) remove_level_edge(*t);
+    // 2. Level-set edges deleted at x (the forest's): lower halves of triangles with x in the middle, upper
+    //    halves of triangles with x on top.
+    while (deleted_at[step] != LCT::null) remove_forest_edge(deleted_at[step]);
     // 3. Level-set edges born at x. First the lower halves (ab, ac) of triangles with x at the bottom
     //    (deleted at b): both ends are edges of K born at x, still isolated, so their maximum spanning forest
     //    is local to the star of x: Kruskal by decreasing deletion time with a union-find over the new edges.
     //    A half it rejects closes a cycle of halves that live at least as long, so the global forest would
     //    reject it too: it never enters the link-cut tree (in dense Rips complexes most halves are rejected).
-    {
-      reset_groups(up_edges.begin(step), up_edges.end(step));
-      lower_halves.assign(by_min.begin(step), by_min.end(step));
-      std::sort(lower_halves.begin(), lower_halves.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return tri[a].rank_b > tri[b].rank_b || (tri[a].rank_b == tri[b].rank_b && a < b);
-      });
-      for (const std::uint32_t t : lower_halves) {
-        const Tri& tr = tri[t];
-        const std::int32_t i = find(slot[tr.ab]), j = find(slot[tr.ac]);
-        if (i == j) continue;
-        group_parent[std::max(i, j)] = std::min(i, j);
-        insert_level_edge(t, static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), tr.rank_b, true);
-      }
+    const std::uint32_t* const up_begin = up_edges.begin(step);
+    const std::size_t k = static_cast<std::size_t>(up_edges.end(step) - up_begin);
+    group_parent.resize(k);
+    for (std::size_t i = 0; i < k; ++i) {
+      slot[up_begin[i]] = static_cast<std::int32_t>(i);
+      group_parent[i] = static_cast<std::int32_t>(i);
     }
-    //    Then the upper halves (bc, ac) of triangles with x in the middle (deleted at c).
+    for (std::size_t t = by_min[step]; t != by_min[step + 1]; ++t) {
+      const Tri& tr = tri[t];
+      const std::int32_t i = find(slot[tr.ab]), j = find(slot[tr.ac]);
+      if (i == j) continue;
+      group_parent[std::max(i, j)] = std::min(i, j);
+      insert_level_edge(static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ab], true);
+    }
+    //    Then the upper halves (bc, ac) of triangles with x in the middle (deleted at c). Both ends are edges
+    //    of K into c, and so are the ends of every upper half with c on top. Those halves all live until c,
+    //    so two edges that such halves already joined are connected by a path that lives at least as long as
+    //    the new half: the forest rejects it (a tie), and the fan union-find skips the query.
     for (const std::uint32_t* t = by_mid.begin(step); t != by_mid.end(step); ++t) {
       const Tri& tr = tri[*t];
-      insert_level_edge(*t, static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), tr.rank_c, false);
+      const std::uint32_t i = fan_find(tr.bc), j = fan_find(tr.ac);
+      if (i == j) continue;
+      fan_parent[std::max(i, j)] = std::min(i, j);
+      insert_level_edge(static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ac], false);
     }
     // 4. The components just above x that contain an edge leaving x: each starts an arc at x. Edges out
-    //    of x joined by a triangle (x, b, c) are in one component.
-    group_edges(up_edges.begin(step), up_edges.end(step), by_min.begin(step), by_min.end(step), false);
-    for (const std::uint32_t e : group_representatives) {
-      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(e));
+    //    of x joined by a triangle (x, b, c), one class of the Kruskal above, are in one component.
+    for (std::size_t i = 0; i < k; ++i) {
+      if (find(static_cast<std::int32_t>(i)) != static_cast<std::int32_t>(i)) continue;
+      const std::int32_t r = forest.find_root(static_cast<std::int32_t>(up_begin[i]));
+      FEATURERECON_assertion(static_cast<std::size_t>(r) < E);
       if (stamp[r] == above) continue;
       stamp[r] = above;
       arc_of_root[r] = static_cast<std::int32_t>(R.m_arcs.size());

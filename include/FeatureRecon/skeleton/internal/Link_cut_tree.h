@@ -34,10 +34,11 @@ class Link_cut_tree {
 
   std::size_t size() const { return m_nodes.size(); }
 
-  /// Sets the key of an isolated node (no links).
+  /// Sets the key of an isolated node (no links); a node cut loose by cut_middle() can be reused this way.
   void set_key(std::int32_t x, Key key) {
     Node& nx = m_nodes[x];
     FEATURERECON_precondition(nx.parent == null && nx.child[0] == null && nx.child[1] == null);
+    nx.reversed = 0;
     nx.key = key;
     nx.min_key = key;
     nx.min_node = x;
