@@ -168,6 +168,31 @@ TEST(AugmentedReebGraph, RandomRipsComplexesAgainstBruteForce) {
   }
 }
 
+// Dense complexes: most triangles are redundant for the level-set connectivity, so this exercises the two
+// union-finds that keep halves out of the link-cut tree (the local Kruskal and the fan of the top vertex),
+// with tied values, duplicated points and points on a line.
+TEST(AugmentedReebGraph, DenseRipsComplexesAgainstBruteForce) {
+  std::mt19937 rng(29);
+  std::size_t triangles = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 5 + static_cast<int>(rng() % 56);
+    const double r = 0.15 + static_cast<double>(rng() % 100) / 300.0;
+    std::vector<std::array<double, 2>> p(static_cast<std::size_t>(n));
+    for (auto& q : p) {
+      q = {static_cast<double>(rng() % 1000) / 1000.0, static_cast<double>(rng() % 1000) / 1000.0};
+      if (rng() % 4 == 0) q[1] = 0.5;                                    // on a line
+      if (rng() % 8 == 0) q = p[static_cast<std::size_t>(rng() % static_cast<unsigned>(n))];  // a duplicate
+    }
+    const Simplicial_complex_2 K = build_rips_complex_2(p, r);
+    std::vector<double> f(p.size());
+    const int levels = 2 + static_cast<int>(rng() % 10);
+    for (double& x : f) x = trial % 3 == 0 ? std::uniform_real_distribution<double>()(rng) : static_cast<double>(rng() % levels);
+    triangles += K.number_of_triangles();
+    ASSERT_EQ(arc_multiset(compute_augmented_reeb_graph(K, f)), brute_force_reeb_arcs(K, f)) << "trial " << trial;
+  }
+  EXPECT_GT(triangles, 100000u);  // dense enough to matter
+}
+
 TEST(AugmentedReebGraph, ConstantFunctionUsesIndexOrder) {
   auto c = circle(9);
   std::fill(c.f.begin(), c.f.end(), 2.5);

@@ -161,7 +161,10 @@ struct Buckets {
 /// from the triangles it crosses. Its connectivity is maintained as a maximum spanning forest keyed by
 /// deletion time in a link-cut tree, which makes every deletion final (an offline dynamic-connectivity
 /// structure). Each component of the level set is an arc of the augmented Reeb graph; an arc ends at the
-/// first vertex whose star touches it. O((n + m) log m) time for m simplices, O(n + m) memory. Any
+/// first vertex whose star touches it. Two union-finds keep most triangles out of the link-cut tree: a
+/// local Kruskal over the lower halves born at a vertex, and the "fan" of each vertex c (edges of K into c
+/// joined by upper halves with c on top, which all live until c) for the upper halves. O((n + m) log m)
+/// time for m simplices, O(n + m) memory. Any
 /// simplicial 2-complex is handled: dangling edges, non-manifold vertices and edges, isolated vertices,
 /// several components.
 ///
