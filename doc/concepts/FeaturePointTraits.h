@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Documentation only: the concept FeaturePointTraits, as a pseudo-class.
+
+/// \ingroup Concepts
+/// The concept FeaturePointTraits tells the samplers (weighted_sample_elimination(), sampling_quality(), ...)
+/// how to read a sample from an item of the input range: a position (a CGAL 2D or 3D point of any kernel)
+/// and a feature of any type, with a feature distance.
+///
+/// Models: FeatureRecon::Point_traits (positions only), FeatureRecon::Point_with_normal_traits (normals,
+/// oriented or unoriented), FeatureRecon::Grey_pixel_traits and FeatureRecon::Rgb_pixel_traits (pixels),
+/// FeatureRecon::Property_map_traits (users' own structs through accessors). FeatureRecon::Default_traits_t
+/// picks Point_traits for `Point_2`/`Point_3` items and Point_with_normal_traits for
+/// `std::pair<Point_3, Vector_3>` items.
+///
+/// The samplers check a traits class at compile time (a static_assert naming this concept).
+class FeaturePointTraits {
+ public:
+  typedef unspecified_type Kernel;   ///< a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...)
+  typedef unspecified_type FT;       ///< Kernel::FT
+  typedef unspecified_type Point;    ///< Kernel::Point_2 or Kernel::Point_3
+  typedef unspecified_type Feature;  ///< any copyable type
+  typedef unspecified_type Item;     ///< the value type of the input range
+  static constexpr int dimension = 2;  ///< 2 or 3, the dimension of Point
+
+  /// Functor `Point operator()(const Item&) const` (may return a reference).
+  typedef unspecified_type Construct_point;
+  /// Functor `Feature operator()(const Item&) const` (may return a reference).
+  typedef unspecified_type Construct_feature;
+  /// Functor `FT operator()(const Feature& a, const Feature& b) const` returning the **squared** feature
+  /// distance |eta_a - eta_b|^2: >= 0, symmetric, 0 for equal features. (Squared, so that models with exact
+  /// number types need no square root; the bilateral metrics take squared distances.)
+  typedef unspecified_type Compute_feature_distance;
+
+  Construct_point construct_point_object() const;                    ///< the functor
+  Construct_feature construct_feature_object() const;                ///< the functor
+  Compute_feature_distance compute_feature_distance_object() const;  ///< the functor
+};
+
+/// \ingroup Concepts
+/// The concept BilateralMetric: the bilateral distance xi of two samples from their squared spatial and
+/// squared feature distances. Models: FeatureRecon::sampling::Gaussian_bilateral_metric (Eqn 2.4) and
+/// FeatureRecon::sampling::Exponential_bilateral_metric (Eqn 2.5).
+///
+/// Every model must satisfy xi >= |dp| / spatial_scale(): the samplers search neighbours spatially within
+/// r * spatial_scale() for a bilateral radius r, and would miss neighbours of a metric that broke the bound.
+class BilateralMetric {
+ public:
+  /// xi from |p_a - p_b|^2 and the squared feature distance; >= 0 and symmetric.
+  double operator()(double squared_position_distance, double squared_feature_distance) const;
+  /// The scale s of the lower bound xi >= |dp| / s (sigma_position for the ready models).
+  double spatial_scale() const;
+};

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_INTERNAL_UNIFORM_GRID_H
+#define FEATURERECON_INTERNAL_UNIFORM_GRID_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+namespace FeatureRecon {
+namespace internal {
+
+/// \cond
+/// Points of dimension D (2 or 3, doubles) bucketed in cubic cells of side >= `cell`: the candidates within
+/// distance `cell` of a point are in the 3^D cells around its cell. Cells are keyed by packed integer
+/// coordinates relative to the bounding box (the side grows when the box holds more than 2^21 cells per
+/// axis). Within a cell, points keep their input order, so every traversal is deterministic.
+template <int D>
+class Uniform_grid {
+ public:
+  using Point = std::array<double, D>;
+
+  Uniform_grid(const std::vector<Point>& points, double cell) : m_points(&points) {
+    const std::size_t n = points.size();
+    if (n == 0) return;
+    m_low = points[0];
+    Point high = points[0];
+    for (const Point& p : points)
+      for (int k = 0; k < D; ++k) {
+        m_low[k] = std::min(m_low[k], p[k]);
+        high[k] = std::max(high[k], p[k]);
+      }
+    double extent = 0;
+    for (int k = 0; k < D; ++k) extent = std::max(extent, high[k] - m_low[k]);
+    m_cell = std::max({cell, extent / double(1 << 20), std::numeric_limits<double>::min()});
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+    for (std::size_t i = 0; i < n; ++i) keyed[i] = {key(cell_of(points[i])), static_cast<std::uint32_t>(i)};
+    std::sort(keyed.begin(), keyed.end());
+    m_items.resize(n);
+    m_cells.reserve(n / 2 + 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      m_items[i] = keyed[i].second;
+      if (i == 0 || keyed[i].first != keyed[i - 1].first) {
+        m_cells.emplace(keyed[i].first, m_offsets.size());
+        m_offsets.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+    m_offsets.push_back(static_cast<std::uint32_t>(n));
+  }
+
+  double cell_size() const { return m_cell; }
+
+  /// Calls f(j) for every point j in the 3^D cells around p (a superset of the points within cell_size()).
+  template <class F>
+  void for_each_candidate(const Point& p, F&& f) const {
+    if (m_offsets.empty()) return;
+    const std::array<std::int64_t, D> c = cell_of(p);
+    std::array<std::int64_t, D> q;
+    visit<0>(c, q, f);
+  }
+
+ private:
+  template <int K, class F>
+  void visit(const std::array<std::int64_t, D>& c, std::array<std::int64_t, D>& q, F& f) const {
+    for (std::int64_t d = -1; d <= 1; ++d) {
+      q[K] = c[K] + d;
+      if constexpr (K + 1 < D) {
+        visit<K + 1>(c, q, f);
+      } else {
+        bool inside = true;
+        for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < (std::int64_t(1) << 21);
+        if (!inside) continue;
+        const auto it = m_cells.find(key(q));
+        if (it == m_cells.end()) continue;
+        for (std::uint32_t i = m_offsets[it->second]; i < m_offsets[it->second + 1]; ++i) f(m_items[i]);
+      }
+    }
+  }
+  std::array<std::int64_t, D> cell_of(const Point& p) const {
+    std::array<std::int64_t, D> c;
+    for (int k = 0; k < D; ++k)
+      c[k] = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell)),
+                                    (std::int64_t(1) << 21) - 1);
+    return c;
+  }
+  static std::uint64_t key(const std::array<std::int64_t, D>& c) {
+    std::uint64_t k = 0;
+    for (int i = 0; i < D; ++i) k = (k << 21) | static_cast<std::uint64_t>(c[i]);
+    return k;
+  }
+
+  const std::vector<Point>* m_points;
+  Point m_low{};
+  double m_cell = 1;
+  std::vector<std::uint32_t> m_items, m_offsets;
+  std::unordered_map<std::uint64_t, std::size_t> m_cells;
+};
+/// \endcond
+
+}  // namespace internal
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_INTERNAL_UNIFORM_GRID_H

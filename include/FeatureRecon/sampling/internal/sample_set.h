@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SAMPLING_INTERNAL_SAMPLE_SET_H
+#define FEATURERECON_SAMPLING_INTERNAL_SAMPLE_SET_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/sampling_options.h>
+#include <FeatureRecon/traits.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <vector>
+
+namespace FeatureRecon {
+namespace sampling {
+namespace internal {
+
+/// \cond
+/// The items of a sampler's input as doubles (positions) and the traits' features, checked once.
+template <class Traits>
+struct Sample_set {
+  static constexpr int D = Traits::dimension;
+  using Point = std::array<double, D>;
+  using Feature = typename Traits::Feature;
+  std::vector<Point> positions;
+  std::vector<Feature> features;
+  typename Traits::Compute_feature_distance feature_distance;
+
+  template <class ItemRange>
+  Sample_set(const ItemRange& items, const Traits& traits, const char* fn)
+      : feature_distance(traits.compute_feature_distance_object()) {
+    static_assert(FeatureRecon::internal::Is_feature_point_traits<Traits>::value,
+                  "FeatureRecon: the traits class is not a model of FeaturePointTraits (see "
+                  "doc/concepts/FeaturePointTraits.h)");
+    static_assert(D == 2 || D == 3, "FeatureRecon: the samplers take 2D or 3D positions");
+    const auto construct_point = traits.construct_point_object();
+    const auto construct_feature = traits.construct_feature_object();
+    std::size_t i = 0;
+    for (const auto& item : items) {
+      const auto p = construct_point(item);
+      Point q;
+      for (int k = 0; k < D; ++k) {
+        q[k] = CGAL::to_double(p[k]);
+        if (!std::isfinite(q[k]))
+          FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a non-finite coordinate (", q[k], ")");
+      }
+      positions.push_back(q);
+      features.push_back(construct_feature(item));
+      ++i;
+    }
+  }
+  std::size_t size() const { return positions.size(); }
+  double squared_distance(std::size_t i, std::size_t j) const {
+    double s = 0;
+    for (int k = 0; k < D; ++k) {
+      const double d = positions[i][k] - positions[j][k];
+      s += d * d;
+    }
+    return s;
+  }
+  double squared_feature_distance(std::size_t i, std::size_t j) const {
+    return CGAL::to_double(feature_distance(features[i], features[j]));
+  }
+};
+
+/// Checks the sigmas of the bilateral distance.
+inline void check_sigmas(double sigma_position, double sigma_feature, const char* fn) {
+  if (!(std::isfinite(sigma_position) && sigma_position > 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "sigma_position must be finite and > 0, got ", sigma_position);
+  if (!(sigma_feature > 0))  // infinity allowed
+    FeatureRecon::internal::throw_invalid_argument(fn, "sigma_feature must be > 0 (infinity for Euclidean), got ",
+                                                   sigma_feature);
+}
+
+/// Calls f(metric) with the metric the options describe.
+template <class Options, class F>
+decltype(auto) with_metric(const Options& o, F&& f) {
+  if (o.form == Bilateral_form::exponential) return f(Exponential_bilateral_metric{o.sigma_position, o.sigma_feature});
+  return f(Gaussian_bilateral_metric{o.sigma_position, o.sigma_feature});
+}
+
+/// k nearest neighbours (excluding the point itself) of some 3D points, by a CGAL kd-tree.
+struct Knn_3 {
+  using K = CGAL::Simple_cartesian<double>;
+  using Search_traits = CGAL::Search_traits_3<K>;
+  using Search = CGAL::Orthogonal_k_neighbor_search<Search_traits>;
+  typename Search::Tree tree;
+  explicit Knn_3(const std::vector<std::array<double, 3>>& p) {
+    std::vector<K::Point_3> q;
+    q.reserve(p.size());
+    for (const auto& x : p) q.emplace_back(x[0], x[1], x[2]);
+    tree.insert(q.begin(), q.end());
+    tree.build();
+  }
+  /// Squared distances and points of the k nearest other points of x (x itself, at distance 0, is skipped once).
+  std::vector<std::pair<double, K::Point_3>> query(const std::array<double, 3>& x, unsigned k) const {
+    Search s(tree, K::Point_3(x[0], x[1], x[2]), k + 1);
+    std::vector<std::pair<double, K::Point_3>> out;
+    bool skipped = false;
+    for (const auto& r : s) {
+      if (!skipped && r.second == 0) {
+        skipped = true;
+        continue;
+      }
+      out.push_back({r.second, r.first});
+    }
+    if (out.size() > k) out.resize(k);
+    return out;
+  }
+};
+
+/// Intrinsic dimension of 3D positions: 2 when at least half of up to 1000 evenly spread probes have a flat
+/// neighbourhood (smallest eigenvalue of the covariance of 16 neighbours below 2 % of the trace), else 3.
+inline int estimate_intrinsic_dimension(const std::vector<std::array<double, 3>>& p, const Knn_3& knn) {
+  const std::size_t n = p.size(), probes = std::min<std::size_t>(n, 1000);
+  if (n < 8) return 2;
+  std::size_t flat = 0;
+  for (std::size_t s = 0; s < probes; ++s) {
+    const std::size_t i = s * n / probes;
+    const auto nb = knn.query(p[i], 16);
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& r : nb) mean += Eigen::Vector3d(r.second.x(), r.second.y(), r.second.z());
+    mean /= double(nb.size());
+    Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+    for (const auto& r : nb) {
+      const Eigen::Vector3d d = Eigen::Vector3d(r.second.x(), r.second.y(), r.second.z()) - mean;
+      c += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(c, Eigen::EigenvaluesOnly);
+    const double trace = es.eigenvalues().sum();
+    if (trace <= 0 || es.eigenvalues()[0] < 0.02 * trace) ++flat;
+  }
+  return 2 * flat >= probes ? 2 : 3;
+}
+
+/// Area of a sampled surface: the sum over the points of the area of the disc reaching their 8th nearest
+/// neighbour, divided by 8 (unbiased for uniform samples).
+inline double estimate_surface_area(const std::vector<std::array<double, 3>>& p, const Knn_3& knn) {
+  double a = 0;
+  for (const auto& x : p) {
+    const auto nb = knn.query(x, 8);
+    if (!nb.empty()) a += 3.14159265358979323846 * nb.back().first / 8.0;
+  }
+  return a;
+}
+
+/// Measure of the bounding box (area or volume), at least the smallest positive double.
+template <int D>
+double bounding_box_measure(const std::vector<std::array<double, D>>& p) {
+  if (p.empty()) return 0;
+  std::array<double, D> lo = p[0], hi = p[0];
+  for (const auto& x : p)
+    for (int k = 0; k < D; ++k) {
+      lo[k] = std::min(lo[k], x[k]);
+      hi[k] = std::max(hi[k], x[k]);
+    }
+  double m = 1;
+  for (int k = 0; k < D; ++k) m *= hi[k] - lo[k];
+  return m;
+}
+
+/// Affine dimension of the positions (0 for one position, 1 collinear, 2 coplanar, else D), decided by Epick's
+/// exact orientation predicates on the positions as doubles, and the longest distance from the first point
+/// (for collinear input: at least half the length of the segment they span).
+template <int D>
+int affine_dimension(const std::vector<std::array<double, D>>& p) {
+  using Epick = CGAL::Epick;
+  if (p.empty()) return 0;
+  auto P2 = [&](std::size_t i) { return Epick::Point_2(p[i][0], p[i][1]); };
+  auto P3 = [&](std::size_t i) { return Epick::Point_3(p[i][0], p[i][1], D == 3 ? p[i][D - 1] : 0.0); };
+  std::size_t b = p.size();
+  for (std::size_t i = 1; i < p.size() && b == p.size(); ++i)
+    if (p[i] != p[0]) b = i;
+  if (b == p.size()) return 0;
+  std::size_t c = p.size();
+  for (std::size_t i = b + 1; i < p.size() && c == p.size(); ++i) {
+    if constexpr (D == 2) {
+      if (!CGAL::collinear(P2(0), P2(b), P2(i))) c = i;
+    } else {
+      if (!CGAL::collinear(P3(0), P3(b), P3(i))) c = i;
+    }
+  }
+  if (c == p.size()) return 1;
+  if constexpr (D == 2) {
+    return 2;
+  } else {
+    for (std::size_t i = c + 1; i < p.size(); ++i)
+      if (!CGAL::coplanar(P3(0), P3(b), P3(c), P3(i))) return 3;
+    return 2;
+  }
+}
+
+/// Length of the segment spanned by collinear positions (two sweeps of farthest points).
+template <int D>
+double collinear_length(const std::vector<std::array<double, D>>& p) {
+  auto farthest = [&](const std::array<double, D>& a) {
+    std::size_t best = 0;
+    double d = -1;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double s = 0;
+      for (int k = 0; k < D; ++k) s += (p[i][k] - a[k]) * (p[i][k] - a[k]);
+      if (s > d) {
+        d = s;
+        best = i;
+      }
+    }
+    return std::make_pair(best, std::sqrt(d));
+  };
+  if (p.empty()) return 0;
+  return farthest(p[farthest(p[0]).first]).second;
+}
+
+/// r_max of Yuksel (2015): the radius of the densest packing of `count` discs (hexagonal) or balls (FCC).
+inline double packing_radius(double measure, std::size_t count, int intrinsic_dimension) {
+  if (intrinsic_dimension == 2) return std::sqrt(measure / (2 * std::sqrt(3.0) * double(count)));
+  return std::cbrt(measure / (4 * std::sqrt(2.0) * double(count)));
+}
+/// \endcond
+
+}  // namespace internal
+}  // namespace sampling
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SAMPLING_INTERNAL_SAMPLE_SET_H

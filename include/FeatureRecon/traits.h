@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_TRAITS_H
+#define FEATURERECON_TRAITS_H
+
+// Ready-made models of the concept FeaturePointTraits (doc/concepts/FeaturePointTraits.h): a sample is a
+// position (a CGAL 2D or 3D point of the user's kernel) plus a feature of any type with a feature distance.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <type_traits>
+#include <utility>
+
+namespace FeatureRecon {
+
+/// The feature of a sample without one (plain Euclidean sampling).
+struct No_feature {};
+
+/// Positions only: `Item` is the kernel's `Point_2` or `Point_3`; every feature distance is zero.
+/// \tparam Point_ `K::Point_2` or `K::Point_3` of a CGAL kernel K.
+template <class Point_>
+struct Point_traits {
+  using Point = Point_;                                              ///< the position type
+  using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;        ///< the point's CGAL kernel
+  using FT = typename Kernel::FT;                                    ///< the kernel's number type
+  using Feature = No_feature;                                        ///< no feature
+  using Item = Point;                                                ///< the input range's value type
+  static constexpr int dimension = Point::Ambient_dimension::value;  ///< 2 or 3
+  /// The position of an item.
+  struct Construct_point {
+    const Point& operator()(const Item& i) const { return i; }  ///< the item itself
+  };
+  /// The (empty) feature of an item.
+  struct Construct_feature {
+    Feature operator()(const Item&) const { return {}; }  ///< no feature
+  };
+  /// Squared feature distance: always zero.
+  struct Compute_feature_distance {
+    FT operator()(const Feature&, const Feature&) const { return FT(0); }  ///< zero
+  };
+  Construct_point construct_point_object() const { return {}; }                    ///< functor
+  Construct_feature construct_feature_object() const { return {}; }                ///< functor
+  Compute_feature_distance compute_feature_distance_object() const { return {}; }  ///< functor
+};
+
+/// How normals are compared by Point_with_normal_traits.
+enum class Normal_orientation {
+  oriented,   ///< |n_i - n_j|^2: opposite normals (the two sides of a thin wall) are far apart (the default)
+  unoriented  ///< min(|n_i - n_j|^2, |n_i + n_j|^2): a normal and its opposite are the same feature
+};
+
+/// Point with normal: `Item` is `std::pair<Point_3, Vector_3>`; the feature is the normal, compared by the
+/// squared distance of the unit normals (so it lies in [0, 4]). Normals need not be unit length; a zero
+/// normal is rejected by the samplers (checked; throws).
+/// \tparam K a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...).
+template <class K>
+struct Point_with_normal_traits {
+  using Kernel = K;                                ///< the CGAL kernel
+  using FT = typename K::FT;                       ///< the kernel's number type
+  using Point = typename K::Point_3;               ///< the position type
+  using Feature = typename K::Vector_3;            ///< the normal
+  using Item = std::pair<Point, Feature>;          ///< the input range's value type
+  static constexpr int dimension = 3;              ///< positions are 3D
+  Normal_orientation orientation = Normal_orientation::oriented;  ///< how normals are compared
+  /// The position of an item.
+  struct Construct_point {
+    const Point& operator()(const Item& i) const { return i.first; }  ///< `i.first`
+  };
+  /// The normal of an item.
+  struct Construct_feature {
+    const Feature& operator()(const Item& i) const { return i.second; }  ///< `i.second`
+  };
+  /// Squared distance of the two normals scaled to unit length, in [0, 4] (oriented) or [0, 2] (unoriented).
+  struct Compute_feature_distance {
+    Normal_orientation orientation = Normal_orientation::oriented;  ///< how normals are compared
+    /// \pre a and b are non-zero.
+    FT operator()(const Feature& a, const Feature& b) const {
+      // |a/|a| - b/|b||^2 = 2 - 2 cos; computed in doubles (a square root is needed for the cosine).
+      const double la = CGAL::to_double(a.squared_length()), lb = CGAL::to_double(b.squared_length());
+      const double dot = CGAL::to_double(a * b);
+      double c = dot / std::sqrt(la * lb);
+      c = c > 1 ? 1 : (c < -1 ? -1 : c);
+      if (orientation == Normal_orientation::unoriented && c < 0) c = -c;
+      return FT(2 - 2 * c);
+    }
+  };
+  Construct_point construct_point_object() const { return {}; }      ///< functor
+  Construct_feature construct_feature_object() const { return {}; }  ///< functor
+  /// Functor comparing normals as set by `orientation`.
+  Compute_feature_distance compute_feature_distance_object() const { return {orientation}; }
+};
+
+/// A pixel of a grey image: integer column and row, value in [0, 255] (or any scale: the distance is the
+/// squared difference of the values divided by 255^2).
+struct Grey_pixel {
+  int column = 0;           ///< x, from the left
+  int row = 0;              ///< y, from the top
+  std::uint8_t value = 0;   ///< grey value
+};
+
+/// A pixel of an RGB image.
+struct Rgb_pixel {
+  int column = 0;                       ///< x, from the left
+  int row = 0;                          ///< y, from the top
+  std::array<std::uint8_t, 3> rgb{};    ///< red, green, blue
+};
+
+/// Pixels of a grey or RGB image as samples: the position is the pixel centre (column + 1/2, row + 1/2) in
+/// pixel units; the feature is the colour, compared by the mean squared channel difference scaled to [0, 1].
+/// \tparam Pixel_ Grey_pixel or Rgb_pixel.
+/// \tparam K the kernel of the positions (default Epick).
+template <class Pixel_, class K = CGAL::Epick>
+struct Pixel_traits {
+  using Kernel = K;                         ///< the CGAL kernel
+  using FT = typename K::FT;                ///< the kernel's number type
+  using Point = typename K::Point_2;        ///< the pixel centre
+  using Item = Pixel_;                      ///< Grey_pixel or Rgb_pixel
+  using Feature = std::array<std::uint8_t, std::is_same<Pixel_, Rgb_pixel>::value ? 3 : 1>;  ///< channels
+  static constexpr int dimension = 2;       ///< positions are 2D
+  /// The pixel centre.
+  struct Construct_point {
+    Point operator()(const Item& p) const { return Point(p.column + 0.5, p.row + 0.5); }  ///< centre
+  };
+  /// The colour channels.
+  struct Construct_feature {
+    Feature operator()(const Item& p) const {  ///< channels
+      if constexpr (std::is_same<Pixel_, Rgb_pixel>::value)
+        return p.rgb;
+      else
+        return Feature{p.value};
+    }
+  };
+  /// Mean squared channel difference, each channel scaled to [0, 1].
+  struct Compute_feature_distance {
+    FT operator()(const Feature& a, const Feature& b) const {  ///< in [0, 1]
+      int s = 0;
+      for (std::size_t c = 0; c < a.size(); ++c) {
+        const int d = int(a[c]) - int(b[c]);
+        s += d * d;
+      }
+      return FT(s) / FT(255 * 255 * static_cast<int>(a.size()));
+    }
+  };
+  Construct_point construct_point_object() const { return {}; }                    ///< functor
+  Construct_feature construct_feature_object() const { return {}; }                ///< functor
+  Compute_feature_distance compute_feature_distance_object() const { return {}; }  ///< functor
+};
+
+/// Grey pixels (Epick positions).
+using Grey_pixel_traits = Pixel_traits<Grey_pixel>;
+/// RGB pixels (Epick positions).
+using Rgb_pixel_traits = Pixel_traits<Rgb_pixel>;
+
+/// Users' own item types: the position and the feature are read through property maps (any callable
+/// `item -> value`, including CGAL/Boost property maps wrapped in a lambda) and features are compared by a
+/// user functor returning the squared feature distance.
+/// \tparam K a CGAL kernel. \tparam Dimension 2 or 3.
+/// \tparam Item_ the range's value type. \tparam PointMap callable `const Item& -> Point`.
+/// \tparam FeatureMap callable `const Item& -> Feature`.
+/// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, >= 0, symmetric, 0 on equal
+///         features.
+template <class K, int Dimension, class Item_, class PointMap, class FeatureMap, class FeatureDistance>
+struct Property_map_traits {
+  static_assert(Dimension == 2 || Dimension == 3, "FeatureRecon: Property_map_traits: Dimension is 2 or 3");
+  using Kernel = K;                                                                      ///< the kernel
+  using FT = typename K::FT;                                                             ///< number type
+  using Point = std::conditional_t<Dimension == 2, typename K::Point_2, typename K::Point_3>;  ///< position
+  using Item = Item_;                                                                    ///< value type
+  using Feature = std::decay_t<decltype(std::declval<const FeatureMap&>()(std::declval<const Item&>()))>;  ///< feature
+  static constexpr int dimension = Dimension;                                            ///< 2 or 3
+  PointMap point_map;                 ///< item -> position
+  FeatureMap feature_map;             ///< item -> feature
+  FeatureDistance feature_distance;   ///< squared feature distance
+  /// The position of an item, through the point map.
+  struct Construct_point {
+    const PointMap* map;                                               ///< the traits' map
+    Point operator()(const Item& i) const { return Point((*map)(i)); }  ///< position
+  };
+  /// The feature of an item, through the feature map.
+  struct Construct_feature {
+    const FeatureMap* map;                                        ///< the traits' map
+    Feature operator()(const Item& i) const { return (*map)(i); }  ///< feature
+  };
+  /// The user's squared feature distance.
+  struct Compute_feature_distance {
+    const FeatureDistance* distance;  ///< the traits' functor
+    FT operator()(const Feature& a, const Feature& b) const { return FT((*distance)(a, b)); }  ///< distance
+  };
+  Construct_point construct_point_object() const { return {&point_map}; }                        ///< functor
+  Construct_feature construct_feature_object() const { return {&feature_map}; }                  ///< functor
+  Compute_feature_distance compute_feature_distance_object() const { return {&feature_distance}; }  ///< functor
+};
+
+/// Makes a Property_map_traits, deducing the map types.
+template <class K, int Dimension, class Item, class PointMap, class FeatureMap, class FeatureDistance>
+Property_map_traits<K, Dimension, Item, PointMap, FeatureMap, FeatureDistance> make_property_map_traits(
+    PointMap point_map, FeatureMap feature_map, FeatureDistance feature_distance) {
+  return {point_map, feature_map, feature_distance};
+}
+
+namespace internal {
+template <class T, class = void>
+struct Is_feature_point_traits : std::false_type {};
+template <class T>
+struct Is_feature_point_traits<
+    T, std::void_t<typename T::Kernel, typename T::FT, typename T::Point, typename T::Feature, typename T::Item,
+                   decltype(T::dimension), decltype(std::declval<const T&>().construct_point_object()),
+                   decltype(std::declval<const T&>().construct_feature_object()),
+                   decltype(std::declval<const T&>().compute_feature_distance_object())>> : std::true_type {};
+
+template <class Item, class = void>
+struct Default_traits {
+  static_assert(sizeof(Item) == 0,
+                "FeatureRecon: no default FeaturePointTraits for this item type; pass a traits class (see "
+                "doc/concepts/FeaturePointTraits.h), e.g. make_property_map_traits()");
+};
+template <class P>
+struct Default_traits<P, std::enable_if_t<std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_2>::value ||
+                                          std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_3>::value>> {
+  using type = Point_traits<P>;
+};
+template <class P, class V>
+struct Default_traits<std::pair<P, V>,
+                      std::enable_if_t<std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_3>::value &&
+                                       std::is_same<V, typename CGAL::Kernel_traits<P>::Kernel::Vector_3>::value>> {
+  using type = Point_with_normal_traits<typename CGAL::Kernel_traits<P>::Kernel>;
+};
+}  // namespace internal
+
+/// The traits used when none is given: Point_traits for CGAL `Point_2`/`Point_3` items,
+/// Point_with_normal_traits for `std::pair<Point_3, Vector_3>` items.
+template <class ItemRange>
+using Default_traits_t =
+    typename internal::Default_traits<std::decay_t<decltype(*std::begin(std::declval<const ItemRange&>()))>>::type;
+
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_TRAITS_H

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Traits models, bilateral metrics and the spacing statistics of sample sets.
+#include <FeatureRecon/sampling/sampling_quality.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using K = CGAL::Epick;
+using Point_2 = K::Point_2;
+using Point_3 = K::Point_3;
+using Vector_3 = K::Vector_3;
+
+TEST(BilateralMetric, GaussianAndExponentialForms) {
+  const Gaussian_bilateral_metric g{2.0, 0.5};
+  EXPECT_DOUBLE_EQ(g(4.0, 0.25), std::sqrt(2.0));  // sqrt(4/4 + 0.25/0.25)
+  const Exponential_bilateral_metric e{2.0, 0.5};
+  EXPECT_DOUBLE_EQ(e(4.0, 0.25), std::exp(1.0));  // 2/2 * exp(0.25/0.25)
+  // sigma_feature = infinity is the scaled Euclidean distance, whatever the features.
+  EXPECT_DOUBLE_EQ((Gaussian_bilateral_metric{2.0}(9.0, 100.0)), 1.5);
+  EXPECT_DOUBLE_EQ((Exponential_bilateral_metric{2.0}(9.0, 100.0)), 1.5);
+  // The documented lower bound xi >= |dp| / sigma_position, which the samplers' spatial searches rely on.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 10);
+  for (int i = 0; i < 1000; ++i) {
+    const double d2 = u(rng), f2 = u(rng), sp = 0.1 + u(rng), sf = 0.1 + u(rng);
+    EXPECT_GE((Gaussian_bilateral_metric{sp, sf}(d2, f2)), std::sqrt(d2) / sp * (1 - 1e-15));
+    EXPECT_GE((Exponential_bilateral_metric{sp, sf}(d2, f2)), std::sqrt(d2) / sp * (1 - 1e-15));
+  }
+}
+
+TEST(FeaturePointTraits, ReadyModels) {
+  static_assert(std::is_same<Default_traits_t<std::vector<Point_2>>, Point_traits<Point_2>>::value);
+  static_assert(std::is_same<Default_traits_t<std::vector<std::pair<Point_3, Vector_3>>>, Point_with_normal_traits<K>>::value);
+  static_assert(FeatureRecon::internal::Is_feature_point_traits<Rgb_pixel_traits>::value);
+  static_assert(!FeatureRecon::internal::Is_feature_point_traits<Point_2>::value);
+
+  Point_with_normal_traits<K> oriented;
+  const auto d = oriented.compute_feature_distance_object();
+  EXPECT_NEAR(CGAL::to_double(d(Vector_3(0, 0, 2), Vector_3(0, 0, -1))), 4.0, 1e-12);  // two sides of a wall
+  EXPECT_NEAR(CGAL::to_double(d(Vector_3(0, 0, 1), Vector_3(3, 0, 0))), 2.0, 1e-12);   // perpendicular
+  EXPECT_NEAR(CGAL::to_double(d(Vector_3(1, 1, 0), Vector_3(2, 2, 0))), 0.0, 1e-12);   // lengths do not matter
+  Point_with_normal_traits<K> unoriented{Normal_orientation::unoriented};
+  const auto du = unoriented.compute_feature_distance_object();
+  EXPECT_NEAR(CGAL::to_double(du(Vector_3(0, 0, 2), Vector_3(0, 0, -1))), 0.0, 1e-12);
+  EXPECT_NEAR(CGAL::to_double(du(Vector_3(0, 0, 1), Vector_3(3, 0, 0))), 2.0, 1e-12);
+
+  const Rgb_pixel black{4, 7, {0, 0, 0}}, white{5, 7, {255, 255, 255}}, red{0, 0, {255, 0, 0}};
+  const Rgb_pixel_traits rgb;
+  EXPECT_EQ(rgb.construct_point_object()(black), Point_2(4.5, 7.5));
+  const auto fd = rgb.compute_feature_distance_object();
+  const auto f = rgb.construct_feature_object();
+  EXPECT_DOUBLE_EQ(CGAL::to_double(fd(f(black), f(white))), 1.0);
+  EXPECT_DOUBLE_EQ(CGAL::to_double(fd(f(black), f(red))), 1.0 / 3.0);
+  const Grey_pixel_traits grey;
+  EXPECT_DOUBLE_EQ(CGAL::to_double(grey.compute_feature_distance_object()(grey.construct_feature_object()(Grey_pixel{0, 0, 0}),
+                                                                        grey.construct_feature_object()(Grey_pixel{0, 0, 255}))),
+                   1.0);
+
+  // A user's struct through property maps.
+  struct Sample {
+    double x, y, temperature;
+  };
+  const auto traits = make_property_map_traits<K, 2, Sample>(
+      [](const Sample& s) { return Point_2(s.x, s.y); }, [](const Sample& s) { return s.temperature; },
+      [](double a, double b) { return (a - b) * (a - b); });
+  const Sample a{1, 2, 10}, b{1, 2, 13};
+  EXPECT_EQ(traits.construct_point_object()(a), Point_2(1, 2));
+  EXPECT_DOUBLE_EQ(CGAL::to_double(traits.compute_feature_distance_object()(traits.construct_feature_object()(a),
+                                                                           traits.construct_feature_object()(b))),
+                   9.0);
+}
+
+std::vector<Point_2> white_noise(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point_2> p;
+  for (std::size_t i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng));
+  return p;
+}
+
+TEST(SamplingQuality, WhiteNoiseOnTheTorus) {
+  // Reference (design notes, PSA tool, 4096 points, 10 sets): average minimum distance 0.466, rho 0.009.
+  double amd = 0, rho = 0;
+  for (unsigned s = 0; s < 10; ++s) {
+    Sampling_quality_options o;
+    o.periodic = true;
+    const Sampling_quality q = sampling_quality(white_noise(4096, s), o);
+    EXPECT_EQ(q.status, Status::success);
+    amd += q.average_minimum_distance / 10;
+    rho += q.relative_radius / 10;
+  }
+  EXPECT_NEAR(amd, 0.466, 0.006);
+  EXPECT_LT(rho, 0.03);
+}
+
+TEST(SamplingQuality, HexagonalLatticeHasRelativeRadiusOne) {
+  std::vector<Point_2> p;
+  for (int r = 0; r < 30; ++r)
+    for (int c = 0; c < 30; ++c) p.emplace_back(c + 0.5 * (r % 2), r * std::sqrt(3.0) / 2);
+  Sampling_quality_options o;
+  o.domain_measure = double(p.size()) * std::sqrt(3.0) / 2;  // a hexagonal cell per point
+  const Sampling_quality q = sampling_quality(p, o);
+  EXPECT_NEAR(q.hexagonal_distance, 1.0, 1e-12);
+  EXPECT_NEAR(q.relative_radius, 1.0, 1e-9);
+  EXPECT_NEAR(q.average_minimum_distance, 1.0, 1e-9);
+  // Exact predicates kernels work the same way.
+  std::vector<CGAL::Epeck::Point_2> e;
+  for (const Point_2& x : p) e.emplace_back(x.x(), x.y());
+  EXPECT_NEAR(sampling_quality(e, o).relative_radius, 1.0, 1e-9);
+}
+
+TEST(SamplingQuality, FccLatticeInThreeDimensions) {
+  std::vector<Point_3> p;  // FCC with nearest distance 1: cubic cell of side sqrt(2) with 4 points
+  const double a = std::sqrt(2.0);
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k) {
+        p.emplace_back(i * a, j * a, k * a);
+        p.emplace_back((i + 0.5) * a, (j + 0.5) * a, k * a);
+        p.emplace_back((i + 0.5) * a, j * a, (k + 0.5) * a);
+        p.emplace_back(i * a, (j + 0.5) * a, (k + 0.5) * a);
+      }
+  Sampling_quality_options o;
+  o.domain_measure = double(p.size()) / std::sqrt(2.0);
+  const Sampling_quality q = sampling_quality(p, o);
+  EXPECT_NEAR(q.relative_radius, 1.0, 1e-9);
+}
+
+TEST(SamplingQuality, BilateralDistancesSeparateFeatures) {
+  // Two interleaved grids with opposite normals: spatially 0.5 apart, bilaterally far.
+  std::vector<std::pair<Point_3, Vector_3>> p;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      p.push_back({Point_3(i, j, 0), Vector_3(0, 0, 1)});
+      p.push_back({Point_3(i + 0.5, j, 0), Vector_3(0, 0, -1)});
+    }
+  Sampling_quality_options o;
+  o.domain_measure = 100;
+  o.intrinsic_dimension = 2;
+  EXPECT_NEAR(sampling_quality(p, o).minimum_distance, 0.5, 1e-12);
+  o.sigma_feature = 0.1;  // feature term 4 / 0.01: the nearest neighbour has the same normal, at distance 1
+  EXPECT_NEAR(sampling_quality(p, o).minimum_distance, 1.0, 1e-12);
+}
+
+TEST(SamplingQuality, DegenerateAndBadInput) {
+  EXPECT_EQ(sampling_quality(std::vector<Point_2>{}).status, Status::degenerate_input);
+  EXPECT_EQ(sampling_quality(std::vector<Point_2>{Point_2(1, 1)}).status, Status::degenerate_input);
+  EXPECT_EQ(sampling_quality(std::vector<Point_2>{Point_2(0, 0), Point_2(1, 1), Point_2(2, 2)}).status,
+            Status::degenerate_input);  // collinear: zero area
+  std::vector<Point_2> p = white_noise(10, 1);
+  p[3] = Point_2(std::numeric_limits<double>::quiet_NaN(), 0);
+  try {
+    sampling_quality(p);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("item 3"), std::string::npos) << e.what();
+  }
+  Sampling_quality_options o;
+  o.sigma_position = 0;
+  EXPECT_THROW(sampling_quality(white_noise(10, 1), o), std::invalid_argument);
+}
+}  // namespace
