@@ -100,6 +100,75 @@ class Uniform_grid {
   std::vector<std::uint32_t> m_items, m_offsets;
   std::unordered_map<std::uint64_t, std::size_t> m_cells;
 };
+
+/// Points of dimension D inserted one by one (indices into a fixed array of positions) into cubic cells of
+/// side >= `cell`, for dart throwing: the candidates within distance `cell` of a point are in the 3^D cells
+/// around it. Only inserted points are visited, so a large cell costs nothing for the points never inserted.
+template <int D>
+class Dynamic_grid {
+ public:
+  using Point = std::array<double, D>;
+
+  Dynamic_grid(const std::vector<Point>& points, double cell) : m_points(&points) {
+    if (points.empty()) return;
+    m_low = points[0];
+    Point high = points[0];
+    for (const Point& p : points)
+      for (int k = 0; k < D; ++k) {
+        m_low[k] = std::min(m_low[k], p[k]);
+        high[k] = std::max(high[k], p[k]);
+      }
+    double extent = 0;
+    for (int k = 0; k < D; ++k) extent = std::max(extent, high[k] - m_low[k]);
+    m_cell = std::max({cell, extent / double(1 << 20), std::numeric_limits<double>::min()});
+  }
+
+  void insert(std::uint32_t i) { m_cells[key(cell_of((*m_points)[i]))].push_back(i); }
+
+  /// Calls f(j) for every inserted point j in the 3^D cells around p, in insertion order per cell.
+  template <class F>
+  void for_each_candidate(const Point& p, F&& f) const {
+    if (m_cells.empty()) return;
+    const std::array<std::int64_t, D> c = cell_of(p);
+    std::array<std::int64_t, D> q;
+    visit<0>(c, q, f);
+  }
+
+ private:
+  template <int K, class F>
+  void visit(const std::array<std::int64_t, D>& c, std::array<std::int64_t, D>& q, F& f) const {
+    for (std::int64_t d = -1; d <= 1; ++d) {
+      q[K] = c[K] + d;
+      if constexpr (K + 1 < D) {
+        visit<K + 1>(c, q, f);
+      } else {
+        bool inside = true;
+        for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < (std::int64_t(1) << 21);
+        if (!inside) continue;
+        const auto it = m_cells.find(key(q));
+        if (it == m_cells.end()) continue;
+        for (const std::uint32_t i : it->second) f(i);
+      }
+    }
+  }
+  std::array<std::int64_t, D> cell_of(const Point& p) const {
+    std::array<std::int64_t, D> c;
+    for (int k = 0; k < D; ++k)
+      c[k] = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell)),
+                                    (std::int64_t(1) << 21) - 1);
+    return c;
+  }
+  static std::uint64_t key(const std::array<std::int64_t, D>& c) {
+    std::uint64_t k = 0;
+    for (int i = 0; i < D; ++i) k = (k << 21) | static_cast<std::uint64_t>(c[i]);
+    return k;
+  }
+
+  const std::vector<Point>* m_points;
+  Point m_low{};
+  double m_cell = 1;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_cells;
+};
 /// \endcond
 
 }  // namespace internal

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace FeatureRecon {
 namespace sampling {
@@ -88,8 +89,23 @@ struct Dart_throwing_options {
   double sigma_position = 1;                                        ///< spatial scale of the metric; default 1
   double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
   Bilateral_form form = Bilateral_form::gaussian;                   ///< form of the bilateral distance
+  /// Per-item radius r(s) in bilateral units (adaptive sampling), aligned with the items; two items conflict
+  /// when xi < max(r(s), r(t)). Default empty: the uniform radius passed to the call.
+  std::vector<double> radii;
+  /// Visiting order: items by decreasing priority (ties by index), aligned with the items. Default empty: a
+  /// random order drawn from `seed`.
+  std::vector<double> priority;
+  /// Stop after this many consecutive rejected items. Default 0: visit every item once, which makes the result
+  /// maximal on the discrete domain (every rejected item conflicts with a kept one).
+  std::size_t max_consecutive_failures = 0;
   std::uint64_t seed = 0;       ///< the random visiting order (ignored when `priority` is given)
-  Progress_callback progress;   ///< fraction of the items visited; returning false stops (the samples so far are output)
+  Progress_callback progress;   ///< fraction of the items visited; returning false stops (nothing is output)
+};
+
+/// Options of bilateral_dart_throwing_count().
+struct Dart_throwing_count_options {
+  Dart_throwing_options darts;  ///< metric, order and seed of every throw (`radii` must be empty)
+  std::size_t max_iterations = 60;  ///< bisection steps on the radius; default 60
 };
 
 }  // namespace sampling

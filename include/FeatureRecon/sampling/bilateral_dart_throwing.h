@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SAMPLING_BILATERAL_DART_THROWING_H
+#define FEATURERECON_SAMPLING_BILATERAL_DART_THROWING_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/internal/sample_set.h>
+#include <FeatureRecon/sampling/sampling_options.h>
+#include <FeatureRecon/sampling/weighted_sample_elimination.h>
+#include <FeatureRecon/traits.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace FeatureRecon {
+namespace sampling {
+
+namespace internal {
+/// \cond
+/// The visiting order of dart throwing: by decreasing priority (ties by index) or a seeded permutation.
+inline std::vector<std::uint32_t> dart_order(std::size_t n, const Dart_throwing_options& o) {
+  if (o.priority.empty()) return seeded_permutation(n, o.seed);
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), std::uint32_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return o.priority[a] > o.priority[b]; });
+  return order;
+}
+
+inline void check_dart_options(const Dart_throwing_options& o, std::size_t n, const char* fn) {
+  check_sigmas(o.sigma_position, o.sigma_feature, fn);
+  if (!o.radii.empty() && o.radii.size() != n)
+    FeatureRecon::internal::throw_invalid_argument(fn, "radii has ", o.radii.size(), " values for ", n, " items");
+  for (std::size_t i = 0; i < o.radii.size(); ++i)
+    if (!(std::isfinite(o.radii[i]) && o.radii[i] > 0))
+      FeatureRecon::internal::throw_invalid_argument(fn, "radii[", i, "] must be finite and > 0, got ", o.radii[i]);
+  if (!o.priority.empty() && o.priority.size() != n)
+    FeatureRecon::internal::throw_invalid_argument(fn, "priority has ", o.priority.size(), " values for ", n,
+                                                   " items");
+  for (std::size_t i = 0; i < o.priority.size(); ++i)
+    if (std::isnan(o.priority[i]))
+      FeatureRecon::internal::throw_invalid_argument(fn, "priority[", i, "] is NaN");
+}
+
+/// One pass of dart throwing over the items in `order`; returns the accepted items in acceptance order, or
+/// nothing with `interrupted` set.
+template <class Traits>
+std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radius, const Dart_throwing_options& o,
+                                       const std::vector<std::uint32_t>& order, bool& interrupted) {
+  constexpr int D = Traits::dimension;
+  const std::size_t n = S.size();
+  std::vector<std::uint32_t> accepted;
+  const double largest = o.radii.empty() ? radius : *std::max_element(o.radii.begin(), o.radii.end());
+  interrupted = false;
+  with_metric(o, [&](const auto& metric) {
+    FeatureRecon::internal::Dynamic_grid<D> grid(S.positions, largest * metric.spatial_scale());
+    const double reach2 = [&] {
+      const double r = largest * metric.spatial_scale();
+      return r * r;
+    }();
+    std::size_t failures = 0;
+    for (std::size_t step = 0; step < n; ++step) {
+      if ((step & 65535) == 0 && !FeatureRecon::internal::report_progress(o.progress, double(step) / double(n))) {
+        interrupted = true;
+        accepted.clear();
+        return;
+      }
+      const std::uint32_t i = order[step];
+      const double ri = o.radii.empty() ? radius : o.radii[i];
+      bool conflict = false;
+      grid.for_each_candidate(S.positions[i], [&](std::uint32_t j) {
+        if (conflict) return;
+        const double d2 = S.squared_distance(i, j);
+        if (!(d2 < reach2)) return;
+        const double rj = o.radii.empty() ? radius : o.radii[j];
+        conflict = metric(d2, S.squared_feature_distance(i, j)) < std::max(ri, rj);
+      });
+      if (conflict) {
+        if (o.max_consecutive_failures != 0 && ++failures >= o.max_consecutive_failures) break;
+        continue;
+      }
+      failures = 0;
+      grid.insert(i);
+      accepted.push_back(i);
+    }
+  });
+  return accepted;
+}
+/// \endcond
+}  // namespace internal
+
+/// Bilateral dart throwing on a discrete domain (a point cloud, the pixels of an image): the items are
+/// visited in a random order (or by a given priority) and an item is kept when no kept item lies within
+/// bilateral distance r of it (dissertation Sec. 2.2.2: only the distance changes, so uniform and adaptive
+/// radii combine with it). Visiting every item once makes the result maximal on the domain. With
+/// `options.radii` the radius varies per item and two items conflict when xi < max(r(s), r(t)).
+///
+/// Neighbours are searched in a uniform grid of side r_largest sigma_position (every metric here satisfies
+/// xi >= |dp| / sigma_position). O(n k) time for k items per grid neighbourhood.
+///
+/// \tparam ItemRange a forward range of `Traits::Item`. \tparam OutputIterator accepts std::size_t.
+/// \tparam Traits a model of FeaturePointTraits (default: Default_traits_t<ItemRange>).
+/// \param items the input samples. \param radius the conflict radius in bilateral units (> 0, checked; throws;
+///   ignored when `options.radii` is set). \param selected receives the kept indices in increasing order.
+/// \param options metric, per-item radii, priority, seed, early stop, progress. \param traits accessors.
+/// \returns the advanced iterator, the number kept, the radius and the status (`degenerate_input` for an empty
+///   input; `interrupted`, with nothing written, when the callback stopped).
+/// \throws std::invalid_argument naming the argument: radius <= 0, radii or priority of the wrong size or with
+///   bad values (naming the index), non-finite coordinates (naming the item), bad sigmas.
+/// \note Conflicts are strict (xi < r): two items at distance exactly r may both be kept. The same input and
+///   seed give the same output.
+/// \sa bilateral_dart_throwing_count(), weighted_sample_elimination().
+template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
+Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, double radius,
+                                                        OutputIterator selected,
+                                                        const Dart_throwing_options& options = {},
+                                                        const Traits& traits = Traits()) {
+  const char* fn = "bilateral_dart_throwing";
+  if (options.radii.empty() && !(std::isfinite(radius) && radius > 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
+  const internal::Sample_set<Traits> S(items, traits, fn);
+  internal::check_dart_options(options, S.size(), fn);
+  Sampling_result<OutputIterator> result{selected, 0, radius, Status::success};
+  if (S.size() == 0) {
+    result.status = Status::degenerate_input;
+    return result;
+  }
+  bool interrupted = false;
+  std::vector<std::uint32_t> kept =
+      internal::throw_darts(S, radius, options, internal::dart_order(S.size(), options), interrupted);
+  if (interrupted) {
+    result.status = Status::interrupted;
+    return result;
+  }
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  std::sort(kept.begin(), kept.end());
+  for (const std::uint32_t i : kept) *result.out++ = i;
+  result.selected = kept.size();
+  return result;
+}
+
+/// Bilateral dart throwing with a target count: bisects the uniform radius until a maximal throw (same order
+/// every time) keeps exactly `count` items. When no radius gives exactly `count` (the count is a step
+/// function of the radius), the throw at the smallest radius that keeps more than `count` is cut to its first
+/// `count` accepted items, which still respect that radius but are no longer maximal.
+/// \param count the number of items to keep, 0 <= count <= number of items (checked; throws).
+/// \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set.
+/// \throws std::invalid_argument as bilateral_dart_throwing(), and when `options.darts.radii` is set.
+template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
+Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& items, std::size_t count,
+                                                              OutputIterator selected,
+                                                              const Dart_throwing_count_options& options = {},
+                                                              const Traits& traits = Traits()) {
+  const char* fn = "bilateral_dart_throwing_count";
+  const internal::Sample_set<Traits> S(items, traits, fn);
+  const std::size_t n = S.size();
+  internal::check_dart_options(options.darts, n, fn);
+  if (!options.darts.radii.empty())
+    FeatureRecon::internal::throw_invalid_argument(fn, "per-item radii cannot be combined with a target count");
+  if (count > n)
+    FeatureRecon::internal::throw_invalid_argument(fn, "count (", count, ") exceeds the number of items (", n, ")");
+  Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
+  if (n == 0) {
+    result.status = Status::degenerate_input;
+    return result;
+  }
+  if (count == 0) return result;
+  const std::vector<std::uint32_t> order = internal::dart_order(n, options.darts);
+  Dart_throwing_options quiet = options.darts;
+  quiet.progress = nullptr;
+  // Bracket: at `low` the throw keeps more than `count` items (or everything), at `high` at most `count`.
+  // Twice the largest distance from item 0 bounds the radius that keeps a single item (for the Gaussian
+  // form, a metric; for the exponential form a heuristic start: the bisection only needs a bracket).
+  const double high_start = internal::with_metric(quiet, [&](const auto& m) {
+    double r = 0;
+    for (std::size_t i = 0; i < n; ++i) r = std::max(r, m(S.squared_distance(0, i), S.squared_feature_distance(0, i)));
+    return 2 * r;
+  });
+  double high = high_start;
+  double low = 0;
+  bool interrupted = false;
+  std::vector<std::uint32_t> best;  // the throw at `low` (more than count items) or an exact hit
+  double best_radius = 0;
+  for (std::size_t it = 0; it < options.max_iterations; ++it) {
+    if (!FeatureRecon::internal::report_progress(options.darts.progress, double(it) / double(options.max_iterations))) {
+      result.status = Status::interrupted;
+      return result;
+    }
+    const double mid = low == 0 ? high / 2 : 0.5 * (low + high);
+    if (!(mid > low && mid < high)) break;
+    std::vector<std::uint32_t> kept = internal::throw_darts(S, mid, quiet, order, interrupted);
+    if (kept.size() == count) {
+      best = std::move(kept);
+      best_radius = mid;
+      break;
+    }
+    if (kept.size() > count) {
+      low = mid;
+      best = std::move(kept);
+      best_radius = mid;
+    } else {
+      high = mid;
+    }
+  }
+  if (best.size() < count) {
+    // No radius keeps `count` items (duplicates: a repeated position conflicts at any radius > 0; or all items
+    // at one position): the first `count` items of the visiting order, at radius 0.
+    best.assign(order.begin(), order.end());
+    best_radius = 0;
+    result.status = Status::degenerate_input;
+  }
+  best.resize(count);  // the first `count` accepted items when the hit was not exact
+  std::sort(best.begin(), best.end());
+  (void)FeatureRecon::internal::report_progress(options.darts.progress, 1.0);
+  for (const std::uint32_t i : best) *result.out++ = i;
+  result.selected = best.size();
+  result.radius = best_radius;
+  return result;
+}
+
+}  // namespace sampling
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SAMPLING_BILATERAL_DART_THROWING_H

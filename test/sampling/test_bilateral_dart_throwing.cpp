@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Bilateral dart throwing on discrete domains: the Poisson-disk and maximality properties by brute force,
+// adaptive radii, priorities, the target-count mode, thin walls, degenerate and bad input.
+#include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/sampling_quality.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iterator>
+#include <random>
+#include <vector>
+
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using K = CGAL::Epick;
+using Point_2 = K::Point_2;
+using Point_3 = K::Point_3;
+using Vector_3 = K::Vector_3;
+
+std::vector<Point_2> white_noise(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point_2> p;
+  for (std::size_t i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng));
+  return p;
+}
+
+template <class Range>
+std::vector<std::size_t> darts(const Range& items, double r, const Dart_throwing_options& o = {}) {
+  std::vector<std::size_t> kept;
+  const auto res = bilateral_dart_throwing(items, r, std::back_inserter(kept), o);
+  EXPECT_EQ(res.selected, kept.size());
+  EXPECT_TRUE(std::is_sorted(kept.begin(), kept.end()));
+  return kept;
+}
+
+TEST(BilateralDartThrowing, PoissonDiskAndMaximalByBruteForce) {
+  const std::vector<Point_2> p = white_noise(3000, 1);
+  const double r = 0.04;
+  const auto kept = darts(p, r);
+  std::vector<bool> is_kept(p.size(), false);
+  for (std::size_t i : kept) is_kept[i] = true;
+  for (std::size_t a = 0; a < kept.size(); ++a)
+    for (std::size_t b = a + 1; b < kept.size(); ++b)
+      ASSERT_GE(std::sqrt(CGAL::squared_distance(p[kept[a]], p[kept[b]])), r);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (is_kept[i]) continue;
+    bool covered = false;
+    for (std::size_t k : kept) covered = covered || std::sqrt(CGAL::squared_distance(p[i], p[k])) < r;
+    ASSERT_TRUE(covered) << "item " << i << " could have been kept: not maximal";
+  }
+}
+
+TEST(BilateralDartThrowing, MaximalThrowReachesRelativeRadius) {
+  // Maximal dart throwing: rho = r / d_hex(N) near 0.75 when the domain is densely sampled.
+  const std::vector<Point_2> p = white_noise(100000, 2);
+  const double r = 0.02;
+  const auto kept = darts(p, r);
+  const double d_hex = std::sqrt(2.0 / (std::sqrt(3.0) * double(kept.size())));
+  EXPECT_GE(r / d_hex, 0.74) << kept.size() << " samples";
+  std::vector<Point_2> s;
+  for (std::size_t i : kept) s.push_back(p[i]);
+  Sampling_quality_options q;
+  q.domain_measure = 1;
+  EXPECT_GE(sampling_quality(s, q).relative_radius, 0.74);
+}
+
+TEST(BilateralDartThrowing, SeedsPrioritiesAndAdaptiveRadii) {
+  const std::vector<Point_2> p = white_noise(4000, 3);
+  Dart_throwing_options o;
+  o.seed = 5;
+  EXPECT_EQ(darts(p, 0.05, o), darts(p, 0.05, o));
+  o.seed = 6;
+  const auto other = darts(p, 0.05, o);
+  o.seed = 5;
+  EXPECT_NE(darts(p, 0.05, o), other);
+  // Priority: the highest-priority item is always kept, and the order no longer depends on the seed.
+  o.priority.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) o.priority[i] = p[i].x();
+  const auto by_priority = darts(p, 0.05, o);
+  const std::size_t top = std::max_element(o.priority.begin(), o.priority.end()) - o.priority.begin();
+  EXPECT_TRUE(std::binary_search(by_priority.begin(), by_priority.end(), top));
+  o.seed = 99;
+  EXPECT_EQ(darts(p, 0.05, o), by_priority);
+  // Adaptive radii: a radius twice as large on the right half gives about four times fewer samples there.
+  Dart_throwing_options a;
+  for (const Point_2& q : p) a.radii.push_back(q.x() < 0.5 ? 0.03 : 0.06);
+  std::size_t left = 0, right = 0;
+  for (std::size_t i : darts(p, 1.0, a)) (p[i].x() < 0.5 ? left : right)++;
+  EXPECT_GT(double(left), 2.5 * double(right)) << left << " vs " << right;
+}
+
+TEST(BilateralDartThrowing, TargetCount) {
+  const std::vector<Point_2> p = white_noise(5000, 4);
+  for (std::size_t count : {1u, 17u, 500u, 1200u}) {
+    std::vector<std::size_t> kept;
+    const auto r = bilateral_dart_throwing_count(p, count, std::back_inserter(kept));
+    ASSERT_EQ(kept.size(), count);
+    EXPECT_GT(r.radius, 0);
+    for (std::size_t a = 0; a < kept.size(); ++a)
+      for (std::size_t b = a + 1; b < kept.size(); ++b)
+        ASSERT_GE(std::sqrt(CGAL::squared_distance(p[kept[a]], p[kept[b]])), r.radius);
+  }
+}
+
+TEST(BilateralDartThrowing, ThinWallKeepsBothSheets) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::pair<Point_3, Vector_3>> wall;
+  for (int i = 0; i < 6000; ++i) {
+    const bool top = i % 2 == 1;
+    wall.push_back({Point_3(u(rng), u(rng), top ? 0.01 : 0.0), Vector_3(0, 0, top ? 1 : -1)});
+  }
+  auto sheets = [&](const std::vector<std::size_t>& kept) {
+    std::size_t top = 0;
+    for (std::size_t i : kept) top += wall[i].second.z() > 0;
+    return std::make_pair(kept.size() - top, top);
+  };
+  Dart_throwing_options o;
+  o.sigma_feature = 0.1;
+  const auto [b0, b1] = sheets(darts(wall, 0.05, o));
+  o.sigma_feature = std::numeric_limits<double>::infinity();
+  const auto [e0, e1] = sheets(darts(wall, 0.05, o));
+  // Bilateral: each sheet is a maximal set on its own, as large as the Euclidean set of both sheets together.
+  EXPECT_GT(double(std::min(b0, b1)), 0.8 * double(e0 + e1));
+  // Euclidean: the sheets share one set, so each keeps only about half of what it needs.
+  EXPECT_LT(double(std::max(e0, e1)), 0.7 * double(b0 + b1) / 2);
+}
+
+TEST(BilateralDartThrowing, DegenerateInputs) {
+  std::vector<std::size_t> kept;
+  EXPECT_EQ(bilateral_dart_throwing(std::vector<Point_2>{}, 1.0, std::back_inserter(kept)).status,
+            Status::degenerate_input);
+  EXPECT_EQ(darts(std::vector<Point_2>{Point_2(0, 0)}, 1.0), (std::vector<std::size_t>{0}));
+  // Duplicates conflict at any radius: one item per position.
+  std::vector<Point_2> dup;
+  for (int c = 0; c < 5; ++c)
+    for (int i = 0; i < 4; ++i) dup.emplace_back(i, 0);
+  EXPECT_EQ(darts(dup, 0.5).size(), 4u);
+  const auto r = bilateral_dart_throwing_count(std::vector<Point_2>(6, Point_2(1, 1)), 3, std::back_inserter(kept));
+  EXPECT_EQ(r.status, Status::degenerate_input);
+  EXPECT_EQ(r.selected, 3u);
+  // A grid: exact distances equal to the radius do not conflict (strict test), so r = 1 keeps every pixel.
+  std::vector<Point_2> grid;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) grid.emplace_back(i, j);
+  EXPECT_EQ(darts(grid, 1.0).size(), 100u);
+  EXPECT_LT(darts(grid, 1.5).size(), 60u);
+}
+
+TEST(BilateralDartThrowing, BadInputNamesTheProblem) {
+  const std::vector<Point_2> p = white_noise(10, 1);
+  std::vector<std::size_t> kept;
+  EXPECT_THROW(bilateral_dart_throwing(p, 0.0, std::back_inserter(kept)), std::invalid_argument);
+  Dart_throwing_options o;
+  o.radii.assign(9, 1.0);
+  try {
+    bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("radii has 9 values for 10 items"), std::string::npos) << e.what();
+  }
+  o.radii.assign(10, 1.0);
+  o.radii[4] = -1;
+  try {
+    bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("radii[4]"), std::string::npos) << e.what();
+  }
+  o = {};
+  o.priority.assign(10, 0.0);
+  o.priority[2] = std::nan("");
+  EXPECT_THROW(bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o), std::invalid_argument);
+  EXPECT_THROW(bilateral_dart_throwing_count(p, 11, std::back_inserter(kept)), std::invalid_argument);
+  EXPECT_TRUE(kept.empty());
+}
+}  // namespace
