@@ -104,6 +104,44 @@ const std::vector<Command>& commands() {
        "  --crop-to-tracks keep only ground-truth edges whose samples all lie within --crop-radius (default 25 m)\n"
        "                   of some point of TRACKS (lines 'trip_id x y t')\n",
        run_evaluate_map},
+      {"sample", "Feature-aware downsampling of a point cloud (bilateral blue noise on points with normals)",
+       "usage: featurerecon sample --input FILE (--count M | --radius R) [--method elimination|darts]\n"
+       "                           [--sigma-position S] [--sigma-feature S] [--unoriented] [--seed N]\n"
+       "                           [--normal-neighbors K] --out FILE [--quiet]\n"
+       "\n"
+       "Keeps a subset of the points (every attribute of a kept point is kept) with blue-noise spacing in the\n"
+       "bilateral distance xi = sqrt(|dp|^2 / S_p^2 + |dn|^2 / S_f^2) of positions and unit normals, so creases\n"
+       "and both sides of thin walls keep their samples. Without --sigma-feature the spacing is Euclidean.\n"
+       "Prints JSON: points, kept, radius, relative_radius (rho on the input's surface or volume), seconds.\n"
+       "\n"
+       "  --input FILE        PLY, OFF (vertices; NOFF with normals) or XYZ (x y z [nx ny nz]); normals are\n"
+       "                      estimated (jet fitting, MST orientation, K neighbours) when absent and needed\n"
+       "  --count M           exact number of points to keep (elimination), or the target of the dart radius\n"
+       "  --radius R          elimination: r_max (default from the area or volume); darts: the conflict radius\n"
+       "  --method M          elimination (weighted sample elimination, exact count; default) or darts (maximal\n"
+       "                      bilateral dart throwing at R, or at the radius giving M points)\n"
+       "  --sigma-position S  spatial scale of the bilateral distance (default 1)\n"
+       "  --sigma-feature S   normal scale (unit normals: |dn|^2 in [0, 4]); default infinity (Euclidean)\n"
+       "  --unoriented        compare normals up to sign (default: oriented, opposite sides are far apart)\n"
+       "  --seed N            ties and visiting order; the same seed gives the same output (default 0)\n"
+       "  --out FILE          PLY, OFF or XYZ by extension, with normals when there are any\n"
+       "  --quiet             no progress on standard error\n",
+       run_sample},
+      {"sample-stats", "Spacing statistics of a sample set (relative radius, average minimum distance)",
+       "usage: featurerecon sample-stats --input FILE [--domain-measure A] [--intrinsic-dimension 2|3]\n"
+       "                                 [--periodic] [--sigma-position S] [--sigma-feature S]\n"
+       "\n"
+       "Prints JSON: samples, hexagonal_distance d_hex (nearest distance of the densest packing of the samples:\n"
+       "hexagonal in 2D, FCC in 3D), minimum_distance, relative_radius rho = d_min / d_hex and\n"
+       "average_minimum_distance (mean nearest-neighbour distance / d_hex; about 0.466 for white noise).\n"
+       "\n"
+       "  --input FILE             PLY, OFF or XYZ point cloud, or a text file of 2D or 3D points (x y [z])\n"
+       "  --domain-measure A       area or volume of the domain (default: estimated surface area or bounding\n"
+       "                           volume for clouds; bounding box for text points; 1 with --periodic)\n"
+       "  --intrinsic-dimension D  2 (surfaces, images) or 3 (volumes)\n"
+       "  --periodic               distances on the unit torus (positions modulo 1)\n"
+       "  --sigma-feature S        bilateral distances with the normals of a cloud (default: Euclidean)\n",
+       run_sample_stats},
   };
   return list;
 }

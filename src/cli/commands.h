@@ -24,6 +24,8 @@ int run_rips(const std::vector<std::string>& args);
 int run_reeb(const std::vector<std::string>& args);
 int run_evaluate_map(const std::vector<std::string>& args);
 int run_skeleton(const std::vector<std::string>& args);
+int run_sample(const std::vector<std::string>& args);
+int run_sample_stats(const std::vector<std::string>& args);
 
 }  // namespace cli
 }  // namespace FeatureRecon

@@ -7,6 +7,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
 
+#include "sampling/sampling_test_utilities.h"
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -14,10 +16,7 @@
 namespace {
 using namespace FeatureRecon;
 using namespace FeatureRecon::sampling;
-using K = CGAL::Epick;
-using Point_2 = K::Point_2;
-using Point_3 = K::Point_3;
-using Vector_3 = K::Vector_3;
+using namespace FeatureRecon::test;
 
 TEST(BilateralMetric, GaussianAndExponentialForms) {
   const Gaussian_bilateral_metric g{2.0, 0.5};
@@ -77,14 +76,6 @@ TEST(FeaturePointTraits, ReadyModels) {
   EXPECT_DOUBLE_EQ(CGAL::to_double(traits.compute_feature_distance_object()(traits.construct_feature_object()(a),
                                                                            traits.construct_feature_object()(b))),
                    9.0);
-}
-
-std::vector<Point_2> white_noise(std::size_t n, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Point_2> p;
-  for (std::size_t i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng));
-  return p;
 }
 
 TEST(SamplingQuality, WhiteNoiseOnTheTorus) {

@@ -8,6 +8,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
 
+#include "sampling/sampling_test_utilities.h"
+
 #include <cmath>
 #include <iterator>
 #include <random>
@@ -17,18 +19,7 @@
 namespace {
 using namespace FeatureRecon;
 using namespace FeatureRecon::sampling;
-using K = CGAL::Epick;
-using Point_2 = K::Point_2;
-using Point_3 = K::Point_3;
-using Vector_3 = K::Vector_3;
-
-std::vector<Point_2> white_noise(std::size_t n, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Point_2> p;
-  for (std::size_t i = 0; i < n; ++i) p.emplace_back(u(rng), u(rng));
-  return p;
-}
+using namespace FeatureRecon::test;
 
 template <class Range, class Traits = Default_traits_t<Range>>
 std::vector<std::size_t> eliminate(const Range& items, std::size_t count, const Elimination_options& o = {},

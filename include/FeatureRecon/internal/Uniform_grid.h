@@ -16,18 +16,17 @@ namespace FeatureRecon {
 namespace internal {
 
 /// \cond
-/// Points of dimension D (2 or 3, doubles) bucketed in cubic cells of side >= `cell`: the candidates within
-/// distance `cell` of a point are in the 3^D cells around its cell. Cells are keyed by packed integer
-/// coordinates relative to the bounding box (the side grows when the box holds more than 2^21 cells per
-/// axis). Within a cell, points keep their input order, so every traversal is deterministic.
+/// The frame of a grid over points of dimension D (2 or 3, doubles): cubic cells of side >= `cell` keyed by
+/// packed integer coordinates relative to the bounding box (the side grows when the box holds more than 2^20
+/// cells per axis, so keys fit 21 bits per axis).
 template <int D>
-class Uniform_grid {
+class Grid_frame {
  public:
   using Point = std::array<double, D>;
+  using Cell = std::array<std::int64_t, D>;
 
-  Uniform_grid(const std::vector<Point>& points, double cell) : m_points(&points) {
-    const std::size_t n = points.size();
-    if (n == 0) return;
+  Grid_frame(const std::vector<Point>& points, double cell) {
+    if (points.empty()) return;
     m_low = points[0];
     Point high = points[0];
     for (const Point& p : points)
@@ -38,8 +37,57 @@ class Uniform_grid {
     double extent = 0;
     for (int k = 0; k < D; ++k) extent = std::max(extent, high[k] - m_low[k]);
     m_cell = std::max({cell, extent / double(1 << 20), std::numeric_limits<double>::min()});
+  }
+  double cell_size() const { return m_cell; }
+  Cell cell_of(const Point& p) const {
+    Cell c;
+    for (int k = 0; k < D; ++k)
+      c[k] = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell)), kLimit - 1);
+    return c;
+  }
+  static std::uint64_t key(const Cell& c) {
+    std::uint64_t k = 0;
+    for (int i = 0; i < D; ++i) k = (k << 21) | static_cast<std::uint64_t>(c[i]);
+    return k;
+  }
+  /// Calls f(key) for each of the 3^D cells around p that lies inside the key range.
+  template <class F>
+  void for_each_neighbor_key(const Point& p, F&& f) const {
+    const Cell c = cell_of(p);
+    Cell q;
+    visit<0>(c, q, f);
+  }
+
+ private:
+  static constexpr std::int64_t kLimit = std::int64_t(1) << 21;
+  template <int K, class F>
+  void visit(const Cell& c, Cell& q, F& f) const {
+    for (std::int64_t d = -1; d <= 1; ++d) {
+      q[K] = c[K] + d;
+      if constexpr (K + 1 < D) {
+        visit<K + 1>(c, q, f);
+      } else {
+        bool inside = true;
+        for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < kLimit;
+        if (inside) f(key(q));
+      }
+    }
+  }
+  Point m_low{};
+  double m_cell = 1;
+};
+
+/// All points bucketed at once: the candidates within distance `cell` of a point are in the 3^D cells around
+/// its cell. Within a cell, points keep their input order, so every traversal is deterministic.
+template <int D>
+class Uniform_grid {
+ public:
+  using Point = std::array<double, D>;
+
+  Uniform_grid(const std::vector<Point>& points, double cell) : m_frame(points, cell) {
+    const std::size_t n = points.size();
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
-    for (std::size_t i = 0; i < n; ++i) keyed[i] = {key(cell_of(points[i])), static_cast<std::uint32_t>(i)};
+    for (std::size_t i = 0; i < n; ++i) keyed[i] = {m_frame.key(m_frame.cell_of(points[i])), static_cast<std::uint32_t>(i)};
     std::sort(keyed.begin(), keyed.end());
     m_items.resize(n);
     m_cells.reserve(n / 2 + 1);
@@ -53,120 +101,50 @@ class Uniform_grid {
     m_offsets.push_back(static_cast<std::uint32_t>(n));
   }
 
-  double cell_size() const { return m_cell; }
+  double cell_size() const { return m_frame.cell_size(); }
 
   /// Calls f(j) for every point j in the 3^D cells around p (a superset of the points within cell_size()).
   template <class F>
   void for_each_candidate(const Point& p, F&& f) const {
-    if (m_offsets.empty()) return;
-    const std::array<std::int64_t, D> c = cell_of(p);
-    std::array<std::int64_t, D> q;
-    visit<0>(c, q, f);
+    if (m_cells.empty()) return;
+    m_frame.for_each_neighbor_key(p, [&](std::uint64_t k) {
+      const auto it = m_cells.find(k);
+      if (it == m_cells.end()) return;
+      for (std::uint32_t i = m_offsets[it->second]; i < m_offsets[it->second + 1]; ++i) f(m_items[i]);
+    });
   }
 
  private:
-  template <int K, class F>
-  void visit(const std::array<std::int64_t, D>& c, std::array<std::int64_t, D>& q, F& f) const {
-    for (std::int64_t d = -1; d <= 1; ++d) {
-      q[K] = c[K] + d;
-      if constexpr (K + 1 < D) {
-        visit<K + 1>(c, q, f);
-      } else {
-        bool inside = true;
-        for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < (std::int64_t(1) << 21);
-        if (!inside) continue;
-        const auto it = m_cells.find(key(q));
-        if (it == m_cells.end()) continue;
-        for (std::uint32_t i = m_offsets[it->second]; i < m_offsets[it->second + 1]; ++i) f(m_items[i]);
-      }
-    }
-  }
-  std::array<std::int64_t, D> cell_of(const Point& p) const {
-    std::array<std::int64_t, D> c;
-    for (int k = 0; k < D; ++k)
-      c[k] = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell)),
-                                    (std::int64_t(1) << 21) - 1);
-    return c;
-  }
-  static std::uint64_t key(const std::array<std::int64_t, D>& c) {
-    std::uint64_t k = 0;
-    for (int i = 0; i < D; ++i) k = (k << 21) | static_cast<std::uint64_t>(c[i]);
-    return k;
-  }
-
-  const std::vector<Point>* m_points;
-  Point m_low{};
-  double m_cell = 1;
+  Grid_frame<D> m_frame;
   std::vector<std::uint32_t> m_items, m_offsets;
   std::unordered_map<std::uint64_t, std::size_t> m_cells;
 };
 
-/// Points of dimension D inserted one by one (indices into a fixed array of positions) into cubic cells of
-/// side >= `cell`, for dart throwing: the candidates within distance `cell` of a point are in the 3^D cells
-/// around it. Only inserted points are visited, so a large cell costs nothing for the points never inserted.
+/// Points inserted one by one (indices into a fixed array of positions), for dart throwing: only inserted
+/// points are visited, so a large cell costs nothing for the points never inserted.
 template <int D>
 class Dynamic_grid {
  public:
   using Point = std::array<double, D>;
 
-  Dynamic_grid(const std::vector<Point>& points, double cell) : m_points(&points) {
-    if (points.empty()) return;
-    m_low = points[0];
-    Point high = points[0];
-    for (const Point& p : points)
-      for (int k = 0; k < D; ++k) {
-        m_low[k] = std::min(m_low[k], p[k]);
-        high[k] = std::max(high[k], p[k]);
-      }
-    double extent = 0;
-    for (int k = 0; k < D; ++k) extent = std::max(extent, high[k] - m_low[k]);
-    m_cell = std::max({cell, extent / double(1 << 20), std::numeric_limits<double>::min()});
-  }
+  Dynamic_grid(const std::vector<Point>& points, double cell) : m_points(&points), m_frame(points, cell) {}
 
-  void insert(std::uint32_t i) { m_cells[key(cell_of((*m_points)[i]))].push_back(i); }
+  void insert(std::uint32_t i) { m_cells[m_frame.key(m_frame.cell_of((*m_points)[i]))].push_back(i); }
 
   /// Calls f(j) for every inserted point j in the 3^D cells around p, in insertion order per cell.
   template <class F>
   void for_each_candidate(const Point& p, F&& f) const {
     if (m_cells.empty()) return;
-    const std::array<std::int64_t, D> c = cell_of(p);
-    std::array<std::int64_t, D> q;
-    visit<0>(c, q, f);
+    m_frame.for_each_neighbor_key(p, [&](std::uint64_t k) {
+      const auto it = m_cells.find(k);
+      if (it == m_cells.end()) return;
+      for (const std::uint32_t i : it->second) f(i);
+    });
   }
 
  private:
-  template <int K, class F>
-  void visit(const std::array<std::int64_t, D>& c, std::array<std::int64_t, D>& q, F& f) const {
-    for (std::int64_t d = -1; d <= 1; ++d) {
-      q[K] = c[K] + d;
-      if constexpr (K + 1 < D) {
-        visit<K + 1>(c, q, f);
-      } else {
-        bool inside = true;
-        for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < (std::int64_t(1) << 21);
-        if (!inside) continue;
-        const auto it = m_cells.find(key(q));
-        if (it == m_cells.end()) continue;
-        for (const std::uint32_t i : it->second) f(i);
-      }
-    }
-  }
-  std::array<std::int64_t, D> cell_of(const Point& p) const {
-    std::array<std::int64_t, D> c;
-    for (int k = 0; k < D; ++k)
-      c[k] = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell)),
-                                    (std::int64_t(1) << 21) - 1);
-    return c;
-  }
-  static std::uint64_t key(const std::array<std::int64_t, D>& c) {
-    std::uint64_t k = 0;
-    for (int i = 0; i < D; ++i) k = (k << 21) | static_cast<std::uint64_t>(c[i]);
-    return k;
-  }
-
   const std::vector<Point>* m_points;
-  Point m_low{};
-  double m_cell = 1;
+  Grid_frame<D> m_frame;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_cells;
 };
 /// \endcond

@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// featurerecon sample, sample-stats: feature-aware downsampling of point clouds and spacing statistics.
+#include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/sampling_quality.h>
+#include <FeatureRecon/sampling/weighted_sample_elimination.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "io/featurerecon_io.h"
+#include "io/point_cloud_io.h"
+
+namespace FeatureRecon {
+namespace cli {
+namespace {
+using K = CGAL::Epick;
+using Pwn = std::pair<K::Point_3, K::Vector_3>;
+namespace fs = FeatureRecon::sampling;
+
+bool is_point_cloud_file(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  std::string e = dot == std::string::npos ? "" : path.substr(dot + 1);
+  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e == "ply" || e == "off" || e == "xyz";
+}
+
+bool ends_with_xyz(const std::string& path) {
+  return path.size() >= 4 && (path.compare(path.size() - 4, 4, ".xyz") == 0 || path.compare(path.size() - 4, 4, ".XYZ") == 0);
+}
+
+double sigma_feature_of(const Arguments& args) {
+  return args.has("sigma-feature") ? args.get_positive_double("sigma-feature") : std::numeric_limits<double>::infinity();
+}
+
+/// Intrinsic dimension and measure of a 3D cloud, as the elimination derives them.
+std::pair<int, double> domain_of(const std::vector<std::array<double, 3>>& p) {
+  const fs::internal::Knn_3 knn(p);
+  const int dim = fs::internal::estimate_intrinsic_dimension(p, knn);
+  return {dim, dim == 2 ? fs::internal::estimate_surface_area(p, knn) : fs::internal::bounding_box_measure<3>(p)};
+}
+}  // namespace
+
+int run_sample(const std::vector<std::string>& argv) {
+  const Arguments args(argv, {"unoriented", "quiet"},
+                       {"input", "count", "radius", "method", "sigma-position", "sigma-feature", "seed", "out",
+                        "normal-neighbors"});
+  const std::string input = args.get("input"), output = args.get("out");
+  const std::string method = args.get_or("method", "elimination");
+  if (method != "elimination" && method != "darts")
+    throw Usage_error("--method must be elimination or darts, got '" + method + "'");
+  if (!args.has("count") && !args.has("radius")) throw Usage_error("give --count M (exact count) or --radius R");
+  if (method == "elimination" && !args.has("count")) throw Usage_error("--method elimination needs --count M");
+  long long count = 0;
+  if (args.has("count")) {
+    count = args.get_int("count");
+    if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
+  }
+  const double radius = args.has("radius") ? args.get_positive_double("radius") : 0.0;
+  const double sigma_position = args.has("sigma-position") ? args.get_positive_double("sigma-position") : 1.0;
+  const double sigma_feature = sigma_feature_of(args);
+  const long long seed = args.has("seed") ? args.get_int("seed") : 0;
+  if (seed < 0) throw Usage_error("--seed must be >= 0");
+  const long long neighbors = args.has("normal-neighbors") ? args.get_int("normal-neighbors") : 18;
+  if (neighbors < 3) throw Usage_error("--normal-neighbors must be >= 3");
+  const bool quiet = args.has("quiet");
+
+  io::Point_cloud cloud = io::read_point_cloud(input);
+  if (count > static_cast<long long>(cloud.points.size()))
+    throw Usage_error("--count " + std::to_string(count) + " exceeds the " + std::to_string(cloud.points.size()) +
+                      " points of " + input);
+  std::string normals = cloud.has_normals() ? "file" : "none";
+  if (!cloud.has_normals() && std::isfinite(sigma_feature)) {
+    Progress p("estimating normals", quiet);
+    io::estimate_normals(cloud, static_cast<unsigned>(neighbors));
+    p.done(std::to_string(cloud.points.size()) + " points");
+    normals = "estimated";
+  }
+  std::vector<Pwn> items;
+  items.reserve(cloud.points.size());
+  for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+    const auto& p = cloud.points[i];
+    const auto n = cloud.has_normals() ? cloud.normals[i] : std::array<double, 3>{0, 0, 1};
+    items.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2])});
+  }
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (std::isfinite(sigma_feature) && items[i].second.squared_length() == 0)
+      throw io::Input_error(input + ": point " + std::to_string(i) + " has a zero normal");
+  FeatureRecon::Point_with_normal_traits<K> traits;
+  if (args.has("unoriented")) traits.orientation = FeatureRecon::Normal_orientation::unoriented;
+
+  Progress progress("sampling", quiet);
+  std::vector<std::size_t> kept;
+  double used_radius = 0;
+  if (method == "elimination") {
+    fs::Elimination_options o;
+    o.sigma_position = sigma_position;
+    o.sigma_feature = sigma_feature;
+    o.max_radius = radius;
+    o.seed = static_cast<std::uint64_t>(seed);
+    o.progress = std::ref(progress);
+    used_radius = fs::weighted_sample_elimination(items, static_cast<std::size_t>(count), std::back_inserter(kept), o, traits).radius;
+  } else if (args.has("radius")) {
+    fs::Dart_throwing_options o;
+    o.sigma_position = sigma_position;
+    o.sigma_feature = sigma_feature;
+    o.seed = static_cast<std::uint64_t>(seed);
+    o.progress = std::ref(progress);
+    used_radius = fs::bilateral_dart_throwing(items, radius, std::back_inserter(kept), o, traits).radius;
+    if (args.has("count") && kept.size() > static_cast<std::size_t>(count)) kept.resize(static_cast<std::size_t>(count));
+  } else {
+    fs::Dart_throwing_count_options o;
+    o.darts.sigma_position = sigma_position;
+    o.darts.sigma_feature = sigma_feature;
+    o.darts.seed = static_cast<std::uint64_t>(seed);
+    o.darts.progress = std::ref(progress);
+    used_radius = fs::bilateral_dart_throwing_count(items, static_cast<std::size_t>(count), std::back_inserter(kept), o, traits).radius;
+  }
+  progress.done(std::to_string(kept.size()) + " of " + std::to_string(items.size()) + " points kept");
+  const double seconds = progress.seconds();
+  io::write_point_cloud(output, cloud, kept);
+
+  // Spacing of the result on the input's domain (surface area or volume as the elimination estimates it).
+  const auto [dimension, measure] = domain_of(cloud.points);
+  fs::Sampling_quality_options q;
+  q.intrinsic_dimension = dimension;
+  q.domain_measure = measure;
+  std::vector<K::Point_3> kept_points;
+  for (const std::size_t i : kept) kept_points.push_back(items[i].first);
+  const fs::Sampling_quality quality = fs::sampling_quality(kept_points, q);
+  double bilateral_rho = quality.relative_radius;
+  if (std::isfinite(sigma_feature)) {  // the same statistic in the metric the sampler used
+    std::vector<Pwn> kept_items;
+    for (const std::size_t i : kept) kept_items.push_back(items[i]);
+    q.sigma_position = sigma_position;
+    q.sigma_feature = sigma_feature;
+    bilateral_rho = fs::sampling_quality(kept_items, q, traits).relative_radius;
+  }
+  std::ostringstream os;
+  os << "{\"input\": \"" << input << "\", \"points\": " << items.size() << ", \"kept\": " << kept.size()
+     << ", \"method\": \"" << method << "\", \"radius\": " << json_number(used_radius)
+     << ", \"sigma_position\": " << json_number(sigma_position) << ", \"sigma_feature\": " << json_number(sigma_feature)
+     << ", \"normals\": \"" << normals << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
+     << "\", \"seed\": " << seed << ", \"intrinsic_dimension\": " << dimension
+     << ", \"domain_measure\": " << json_number(measure) << ", \"relative_radius\": " << json_number(quality.relative_radius)
+     << ", \"bilateral_relative_radius\": " << json_number(bilateral_rho)
+     << ", \"average_minimum_distance\": " << json_number(quality.average_minimum_distance)
+     << ", \"seconds\": " << json_number(seconds) << ", \"output\": \"" << output << "\"}\n";
+  std::fputs(os.str().c_str(), stdout);
+  return 0;
+}
+
+int run_sample_stats(const std::vector<std::string>& argv) {
+  const Arguments args(argv, {"periodic"},
+                       {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature"});
+  const std::string input = args.get("input");
+  fs::Sampling_quality_options o;
+  if (args.has("domain-measure")) o.domain_measure = args.get_positive_double("domain-measure");
+  if (args.has("intrinsic-dimension")) {
+    const long long d = args.get_int("intrinsic-dimension");
+    if (d != 2 && d != 3) throw Usage_error("--intrinsic-dimension must be 2 or 3");
+    o.intrinsic_dimension = static_cast<int>(d);
+  }
+  o.periodic = args.has("periodic");
+  if (args.has("sigma-position")) o.sigma_position = args.get_positive_double("sigma-position");
+  o.sigma_feature = sigma_feature_of(args);
+  fs::Sampling_quality q;
+  std::size_t dimension = 0;
+  // PLY and OFF are point clouds; text files (.xyz included) have 2, 3 or 6 (x y z nx ny nz) columns.
+  io::Point_file text;
+  const bool cloud_format = is_point_cloud_file(input) && !ends_with_xyz(input);
+  if (!cloud_format) text = io::read_points(input);
+  if (cloud_format || text.dimension == 6) {
+    const io::Point_cloud cloud = io::read_point_cloud(input);
+    dimension = 3;
+    if (o.intrinsic_dimension == 0 && o.domain_measure == 0 && !o.periodic) {
+      const auto [d, m] = domain_of(cloud.points);
+      o.intrinsic_dimension = d;
+      o.domain_measure = m;
+    }
+    if (std::isfinite(o.sigma_feature) && !cloud.has_normals())
+      throw Usage_error("--sigma-feature needs normals in " + input);
+    std::vector<Pwn> items;
+    for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+      const auto& p = cloud.points[i];
+      const auto n = cloud.has_normals() ? cloud.normals[i] : std::array<double, 3>{0, 0, 1};
+      items.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2])});
+    }
+    q = fs::sampling_quality(items, o);
+  } else {
+    const io::Point_file& f = text;
+    dimension = f.dimension;
+    if (f.dimension == 2) {
+      std::vector<K::Point_2> p;
+      for (std::size_t i = 0; i < f.size(); ++i) p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
+      q = fs::sampling_quality(p, o);
+    } else if (f.dimension == 3) {
+      std::vector<K::Point_3> p;
+      for (std::size_t i = 0; i < f.size(); ++i)
+        p.emplace_back(f.coordinates[3 * i], f.coordinates[3 * i + 1], f.coordinates[3 * i + 2]);
+      q = fs::sampling_quality(p, o);
+    } else {
+      throw io::Input_error(input + ": expected 2 or 3 coordinates per line (or x y z nx ny nz), got " +
+                            std::to_string(f.dimension));
+    }
+  }
+  std::ostringstream os;
+  os << "{\"input\": \"" << input << "\", \"samples\": " << q.samples << ", \"dimension\": " << dimension
+     << ", \"intrinsic_dimension\": " << (o.intrinsic_dimension == 0 ? int(dimension) : o.intrinsic_dimension)
+     << ", \"domain_measure\": " << json_number(o.domain_measure) << ", \"periodic\": " << (o.periodic ? "true" : "false")
+     << ", \"hexagonal_distance\": " << json_number(q.hexagonal_distance)
+     << ", \"minimum_distance\": " << json_number(q.minimum_distance)
+     << ", \"relative_radius\": " << json_number(q.relative_radius)
+     << ", \"average_minimum_distance\": " << json_number(q.average_minimum_distance)
+     << ", \"degenerate\": " << (q.status == Status::degenerate_input ? "true" : "false") << "}\n";
+  std::fputs(os.str().c_str(), stdout);
+  return 0;
+}
+
+}  // namespace cli
+}  // namespace FeatureRecon

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SRC_IO_POINT_CLOUD_IO_H
+#define FEATURERECON_SRC_IO_POINT_CLOUD_IO_H
+
+// 3D point clouds with optional normals: PLY (ASCII or binary), OFF (vertices; NOFF for normals) and XYZ
+// (x y z [nx ny nz] per line), through CGAL's point-set I/O.
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace FeatureRecon {
+namespace io {
+
+struct Point_cloud {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<double, 3>> normals;  ///< empty when the file has none
+  bool has_normals() const { return !normals.empty(); }
+};
+
+/// Reads PLY, OFF or XYZ by extension (case-insensitive). Normals are read when the file has them (PLY
+/// properties nx ny nz, an NOFF header, six numbers per XYZ line). Throws Input_error naming the file and
+/// the problem (unknown extension, unreadable, empty, non-finite coordinates with the point's index).
+Point_cloud read_point_cloud(const std::string& path);
+
+/// Writes the points `indices` of `cloud` (with normals when it has them) as PLY (ASCII), OFF (NOFF with
+/// normals) or XYZ by the extension of `path`, with 17 significant digits.
+void write_point_cloud(const std::string& path, const Point_cloud& cloud, const std::vector<std::size_t>& indices);
+
+/// Estimates unit normals (jet fitting over `neighbors` nearest neighbours, then orientation along a
+/// minimum spanning tree, CGAL); normals that cannot be oriented keep the fitted direction.
+void estimate_normals(Point_cloud& cloud, unsigned neighbors = 18);
+
+}  // namespace io
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SRC_IO_POINT_CLOUD_IO_H
