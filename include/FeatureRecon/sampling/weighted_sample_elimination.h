@@ -194,7 +194,15 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           if (!(xi < two_r)) return;
           const double d = std::max(xi, r_min);
           pairs.emplace_back(static_cast<std::uint32_t>(i), j);
-          pair_weight.push_back(std::pow(1 - d / two_r, options.alpha));
+          const double base = 1 - d / two_r;
+          double w;
+          if (options.alpha == 8) {  // the default: three multiplications instead of pow
+            const double b2 = base * base, b4 = b2 * b2;
+            w = b4 * b4;
+          } else {
+            w = std::pow(base, options.alpha);
+          }
+          pair_weight.push_back(w);
         });
       }
     });

@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Exact-count and radius sampling of point sets (issue 4, section 5): FeatureRecon's weighted sample
+// elimination and dart throwing (Euclidean and bilateral) against GUDHI's choose_n_farthest_points and
+// sparsify_point_set (2D) and CGAL's grid, hierarchy and WLOP simplification (points with normals on the
+// surface of a cube, whose edges are creases). Every benchmark reports the output size and its relative
+// radius rho = d_min / d_hex.
+#include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/sampling_quality.h>
+#include <FeatureRecon/sampling/weighted_sample_elimination.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/grid_simplify_point_set.h>
+#include <CGAL/hierarchy_simplify_point_set.h>
+#include <CGAL/property_map.h>
+#include <CGAL/wlop_simplify_and_regularize_point_set.h>
+#include <benchmark/benchmark.h>
+
+#include <iterator>
+#include <map>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "bench_common.h"
+#ifdef FEATURERECON_WITH_GUDHI
+#include "sampling/gudhi_subsampling_peer.h"
+#endif
+
+namespace {
+using namespace FeatureRecon;
+namespace fs = FeatureRecon::sampling;
+using K = CGAL::Epick;
+using Pwn = std::pair<K::Point_3, K::Vector_3>;
+
+double uniform01(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
+
+const std::vector<K::Point_2>& square(std::size_t n) {
+  static std::map<std::size_t, std::vector<K::Point_2>> cache;
+  auto& p = cache[n];
+  if (p.empty()) {
+    std::mt19937_64 rng(1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = uniform01(rng);
+      p.emplace_back(x, uniform01(rng));
+    }
+  }
+  return p;
+}
+
+/// n points on the surface of the unit cube with their face normals (12 crease edges).
+const std::vector<Pwn>& cube(std::size_t n) {
+  static std::map<std::size_t, std::vector<Pwn>> cache;
+  auto& p = cache[n];
+  if (p.empty()) {
+    std::mt19937_64 rng(2);
+    for (std::size_t i = 0; i < n; ++i) {
+      const int face = int(rng() % 6), axis = face / 2;
+      double c[3] = {uniform01(rng), uniform01(rng), uniform01(rng)};
+      c[axis] = face % 2;
+      double nv[3] = {0, 0, 0};
+      nv[axis] = face % 2 ? 1 : -1;
+      p.push_back({K::Point_3(c[0], c[1], c[2]), K::Vector_3(nv[0], nv[1], nv[2])});
+    }
+  }
+  return p;
+}
+
+double rho_2d(const std::vector<K::Point_2>& s) {
+  fs::Sampling_quality_options o;
+  o.domain_measure = 1;
+  return fs::sampling_quality(s, o).relative_radius;
+}
+double rho_cube(const std::vector<K::Point_3>& s) {
+  fs::Sampling_quality_options o;
+  o.domain_measure = 6;
+  o.intrinsic_dimension = 2;
+  return fs::sampling_quality(s, o).relative_radius;
+}
+
+void BM_elimination_2d(benchmark::State& state) {
+  const auto& p = square(std::size_t(state.range(0)));
+  const std::size_t m = std::size_t(state.range(1));
+  std::vector<std::size_t> kept;
+  for (auto _ : state) {
+    kept.clear();
+    fs::Elimination_options o;
+    o.domain_measure = 1;
+    fs::weighted_sample_elimination(p, m, std::back_inserter(kept), o);
+  }
+  std::vector<K::Point_2> s;
+  for (std::size_t i : kept) s.push_back(p[i]);
+  state.counters["kept"] = double(kept.size());
+  state.counters["rho"] = rho_2d(s);
+}
+
+void BM_darts_2d(benchmark::State& state) {
+  const auto& p = square(std::size_t(state.range(0)));
+  const double r = double(state.range(1)) / 1000.0;
+  std::vector<std::size_t> kept;
+  for (auto _ : state) {
+    kept.clear();
+    fs::bilateral_dart_throwing(p, r, std::back_inserter(kept));
+  }
+  std::vector<K::Point_2> s;
+  for (std::size_t i : kept) s.push_back(p[i]);
+  state.counters["kept"] = double(kept.size());
+  state.counters["rho"] = rho_2d(s);
+}
+
+void BM_elimination_cube(benchmark::State& state) {
+  const auto& p = cube(200000);
+  const bool bilateral = state.range(0) != 0;
+  std::vector<std::size_t> kept;
+  for (auto _ : state) {
+    kept.clear();
+    fs::Elimination_options o;
+    o.domain_measure = 6;
+    o.intrinsic_dimension = 2;
+    if (bilateral) o.sigma_feature = 0.5;
+    fs::weighted_sample_elimination(p, 10000, std::back_inserter(kept), o);
+  }
+  std::vector<K::Point_3> s;
+  for (std::size_t i : kept) s.push_back(p[i].first);
+  state.counters["kept"] = double(kept.size());
+  state.counters["rho"] = rho_cube(s);
+}
+
+std::vector<K::Point_3> cube_points() {
+  std::vector<K::Point_3> q;
+  for (const Pwn& x : cube(200000)) q.push_back(x.first);
+  return q;
+}
+
+void BM_cgal_grid(benchmark::State& state) {
+  std::vector<K::Point_3> q;
+  for (auto _ : state) {
+    state.PauseTiming();
+    q = cube_points();
+    state.ResumeTiming();
+    q.erase(CGAL::grid_simplify_point_set(q, 0.0245), q.end());
+  }
+  state.counters["kept"] = double(q.size());
+  state.counters["rho"] = rho_cube(q);
+}
+
+void BM_cgal_hierarchy(benchmark::State& state) {
+  std::vector<K::Point_3> q;
+  for (auto _ : state) {
+    state.PauseTiming();
+    q = cube_points();
+    state.ResumeTiming();
+    q.erase(CGAL::hierarchy_simplify_point_set(q, CGAL::parameters::size(20).maximum_variation(0.33)), q.end());
+  }
+  state.counters["kept"] = double(q.size());
+  state.counters["rho"] = rho_cube(q);
+}
+
+void BM_cgal_wlop(benchmark::State& state) {
+  std::vector<K::Point_3> q = cube_points();  // WLOP shuffles its input
+  std::vector<K::Point_3> out;
+  for (auto _ : state) {
+    out.clear();
+    CGAL::wlop_simplify_and_regularize_point_set<CGAL::Sequential_tag>(q, std::back_inserter(out),
+                                                                       CGAL::parameters::select_percentage(5.0));
+  }
+  state.counters["kept"] = double(out.size());
+  state.counters["rho"] = rho_cube(out);
+}
+
+#ifdef FEATURERECON_WITH_GUDHI
+std::vector<std::array<double, 2>> square_arrays(std::size_t n) {
+  std::vector<std::array<double, 2>> a;
+  for (const auto& x : square(n)) a.push_back({x.x(), x.y()});
+  return a;
+}
+std::vector<K::Point_2> to_points(const std::vector<std::array<double, 2>>& a) {
+  std::vector<K::Point_2> p;
+  for (const auto& x : a) p.emplace_back(x[0], x[1]);
+  return p;
+}
+void BM_gudhi_farthest(benchmark::State& state) {
+  const auto a = square_arrays(std::size_t(state.range(0)));
+  std::vector<std::array<double, 2>> out;
+  for (auto _ : state) out = bench::gudhi_choose_n_farthest_points(a, std::size_t(state.range(1)));
+  state.counters["kept"] = double(out.size());
+  state.counters["rho"] = rho_2d(to_points(out));
+}
+void BM_gudhi_sparsify(benchmark::State& state) {
+  const auto a = square_arrays(std::size_t(state.range(0)));
+  std::vector<std::array<double, 2>> out;
+  for (auto _ : state) out = bench::gudhi_sparsify_point_set(a, double(state.range(1)) / 1000.0);
+  state.counters["kept"] = double(out.size());
+  state.counters["rho"] = rho_2d(to_points(out));
+}
+#endif
+
+void register_all() {
+  auto ms = [](benchmark::internal::Benchmark* b) { return b->Unit(benchmark::kMillisecond)->UseRealTime(); };
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d", BM_elimination_2d))
+      ->Args({50000, 10000})->Args({500000, 100000})->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d", BM_darts_2d))
+      ->Args({100000, 20})->Args({1000000, 10})->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_euclidean", BM_elimination_cube))
+      ->Arg(0)->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_bilateral", BM_elimination_cube))
+      ->Arg(1)->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/cgal/grid_cube200k", BM_cgal_grid))->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/cgal/hierarchy_cube200k", BM_cgal_hierarchy))->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/cgal/wlop_cube200k", BM_cgal_wlop))->Iterations(1);
+#ifdef FEATURERECON_WITH_GUDHI
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d", BM_gudhi_farthest))
+      ->Args({50000, 10000})->Iterations(3);
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/sparsify_point_set_2d", BM_gudhi_sparsify))
+      ->Args({100000, 20})->Args({1000000, 10})->Iterations(3);
+#endif
+}
+}  // namespace
+
+int main(int argc, char** argv) { return FeatureRecon::bench::run_benchmarks(argc, argv, register_all); }
