@@ -91,8 +91,8 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///
 /// r_max is in units of the bilateral distance (see Elimination_options::max_radius for the default from
 /// the domain measure). Neighbours are found in a uniform grid of side 2 r_max sigma_position, which is
-/// enough because every metric here satisfies xi >= |dp| / sigma_position. O(n k + n log n) time for k
-/// neighbours per item, O(n k) memory.
+/// enough because every metric here satisfies xi >= |dp| / sigma_position. O(n k log n) time for k
+/// neighbours per item, O(n k) memory (4 bytes per neighbour).
 ///
 /// \tparam ItemRange a forward range of `Traits::Item`.
 /// \tparam OutputIterator accepts std::size_t (indices into `items`).
@@ -179,75 +179,66 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     const double r_min = options.weight_limiting
                              ? two_r * 0.65 * (1 - std::pow(double(count) / double(n), 1.5))
                              : 0.0;
-    // Neighbour lists with weights (CSR), each pair found once from its smaller index.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    std::vector<double> pair_weight;
+    // Neighbour lists (CSR, ids only: 4 bytes per neighbour; the weights are recomputed when an item goes,
+    // which costs less than storing them on this scale). Two passes over the grid: count, then fill.
+    bool interrupted = false;
     internal::with_metric(options, [&](const auto& metric) {
-      const FeatureRecon::internal::Uniform_grid<D> grid(S.positions, two_r * metric.spatial_scale());
       const double spatial = two_r * metric.spatial_scale(), spatial2 = spatial * spatial;
-      for (std::size_t i = 0; i < n; ++i) {
+      // Weight of the pair (i, j), or a negative number when j is not within 2 r_max of i.
+      auto pair_weight = [&](std::size_t i, std::size_t j) {
+        const double d2 = S.squared_distance(i, j);
+        if (!(d2 < spatial2)) return -1.0;
+        const double xi = metric(d2, S.squared_feature_distance(i, j));
+        if (!(xi < two_r)) return -1.0;
+        const double base = 1 - std::max(xi, r_min) / two_r;
+        if (options.alpha == 8) {  // the default: three multiplications instead of pow
+          const double b2 = base * base, b4 = b2 * b2;
+          return b4 * b4;
+        }
+        return std::pow(base, options.alpha);
+      };
+      const FeatureRecon::internal::Uniform_grid<D> grid(S.positions, spatial);
+      std::vector<std::size_t> offset(n + 1, 0);
+      for (std::size_t i = 0; i < n; ++i)
         grid.for_each_candidate(S.positions[i], [&](std::uint32_t j) {
-          if (j <= i) return;
-          const double d2 = S.squared_distance(i, j);
-          if (!(d2 < spatial2)) return;
-          const double xi = metric(d2, S.squared_feature_distance(i, j));
-          if (!(xi < two_r)) return;
-          const double d = std::max(xi, r_min);
-          pairs.emplace_back(static_cast<std::uint32_t>(i), j);
-          const double base = 1 - d / two_r;
-          double w;
-          if (options.alpha == 8) {  // the default: three multiplications instead of pow
-            const double b2 = base * base, b4 = b2 * b2;
-            w = b4 * b4;
-          } else {
-            w = std::pow(base, options.alpha);
-          }
-          pair_weight.push_back(w);
+          if (j != i && pair_weight(i, j) >= 0) ++offset[i + 1];
+        });
+      for (std::size_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
+      std::vector<std::uint32_t> neighbor(offset[n]);
+      std::vector<double> weight(n, 0.0);
+      for (std::size_t i = 0; i < n; ++i) {
+        std::size_t k = offset[i];
+        grid.for_each_candidate(S.positions[i], [&](std::uint32_t j) {
+          if (j == i) return;
+          const double w = pair_weight(i, j);
+          if (w < 0) return;
+          neighbor[k++] = j;
+          weight[i] += w;
         });
       }
-    });
-    std::vector<std::size_t> offset(n + 1, 0);
-    for (const auto& p : pairs) {
-      ++offset[p.first + 1];
-      ++offset[p.second + 1];
-    }
-    for (std::size_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
-    std::vector<std::uint32_t> neighbor(offset[n]);
-    std::vector<double> weight_of(offset[n]), weight(n, 0.0);
-    {
-      std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
-      for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const auto [a, b] = pairs[k];
-        neighbor[fill[a]] = b;
-        weight_of[fill[a]++] = pair_weight[k];
-        neighbor[fill[b]] = a;
-        weight_of[fill[b]++] = pair_weight[k];
-      }
-    }
-    pairs.clear();
-    pairs.shrink_to_fit();
-    pair_weight.clear();
-    pair_weight.shrink_to_fit();
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t k = offset[i]; k < offset[i + 1]; ++k) weight[i] += weight_of[k];
 
-    const std::vector<std::uint32_t> priority = internal::seeded_permutation(n, options.seed);
-    internal::Elimination_heap heap(weight, priority);
-    const std::size_t eliminations = n - count;
-    for (std::size_t e = 0; e < eliminations; ++e) {
-      if ((e & 16383) == 0 &&
-          !FeatureRecon::internal::report_progress(options.progress, double(e) / double(eliminations))) {
-        result.status = Status::interrupted;
-        return result;
+      const std::vector<std::uint32_t> priority = internal::seeded_permutation(n, options.seed);
+      internal::Elimination_heap heap(weight, priority);
+      const std::size_t eliminations = n - count;
+      for (std::size_t e = 0; e < eliminations; ++e) {
+        if ((e & 16383) == 0 &&
+            !FeatureRecon::internal::report_progress(options.progress, double(e) / double(eliminations))) {
+          interrupted = true;
+          return;
+        }
+        const std::uint32_t x = heap.pop();
+        removed[x] = 1;
+        for (std::size_t k = offset[x]; k < offset[x + 1]; ++k) {
+          const std::uint32_t y = neighbor[k];
+          if (removed[y]) continue;
+          weight[y] -= pair_weight(y, x);
+          heap.decreased(y);
+        }
       }
-      const std::uint32_t x = heap.pop();
-      removed[x] = 1;
-      for (std::size_t k = offset[x]; k < offset[x + 1]; ++k) {
-        const std::uint32_t y = neighbor[k];
-        if (removed[y]) continue;
-        weight[y] -= weight_of[k];
-        heap.decreased(y);
-      }
+    });
+    if (interrupted) {
+      result.status = Status::interrupted;
+      return result;
     }
   } else if (count < n) {
     // r_max = 0 (all items at one position, or a zero measure): no neighbourhoods; keep a seeded choice.
