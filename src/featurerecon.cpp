@@ -129,7 +129,7 @@ const std::vector<Command>& commands() {
        run_sample},
       {"sample-stats", "Spacing statistics of a sample set (relative radius, average minimum distance)",
        "usage: featurerecon sample-stats --input FILE [--domain-measure A] [--intrinsic-dimension 2|3]\n"
-       "                                 [--periodic] [--sigma-position S] [--sigma-feature S]\n"
+       "                                 [--periodic [--spectrum CSV]] [--sigma-position S] [--sigma-feature S]\n"
        "\n"
        "Prints JSON: samples, hexagonal_distance d_hex (nearest distance of the densest packing of the samples:\n"
        "hexagonal in 2D, FCC in 3D), minimum_distance, relative_radius rho = d_min / d_hex and\n"
@@ -139,7 +139,10 @@ const std::vector<Command>& commands() {
        "  --domain-measure A       area or volume of the domain (default: estimated surface area or bounding\n"
        "                           volume for clouds; bounding box for text points; 1 with --periodic)\n"
        "  --intrinsic-dimension D  2 (surfaces, images) or 3 (volumes)\n"
-       "  --periodic               distances on the unit torus (positions modulo 1)\n"
+       "  --periodic               distances on the unit torus (positions modulo 1); for 2D samples also the\n"
+       "                           effective Nyquist frequency (where the radially averaged periodogram first\n"
+       "                           reaches 0.1, in units of sqrt(N)/2) and the oscillation (its largest value after)\n"
+       "  --spectrum CSV           with --periodic: write frequency, radial_power, anisotropy_db per annulus\n"
        "  --sigma-feature S        bilateral distances with the normals of a cloud (default: Euclidean)\n",
        run_sample_stats},
   };

@@ -162,7 +162,9 @@ int run_sample(const std::vector<std::string>& argv) {
 
 int run_sample_stats(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"periodic"},
-                       {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature"});
+                       {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature", "spectrum"});
+  if (args.has("spectrum") && !args.has("periodic"))
+    throw Usage_error("--spectrum needs --periodic (2D samples on the unit torus)");
   const std::string input = args.get("input");
   fs::Sampling_quality_options o;
   if (args.has("domain-measure")) o.domain_measure = args.get_positive_double("domain-measure");
@@ -175,6 +177,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   if (args.has("sigma-position")) o.sigma_position = args.get_positive_double("sigma-position");
   o.sigma_feature = sigma_feature_of(args);
   fs::Sampling_quality q;
+  fs::Sampling_spectrum spectrum;
+  bool has_spectrum = false;
   std::size_t dimension = 0;
   // PLY and OFF are point clouds; text files (.xyz included) have 2, 3 or 6 (x y z nx ny nz) columns.
   io::Point_file text;
@@ -204,6 +208,18 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       std::vector<K::Point_2> p;
       for (std::size_t i = 0; i < f.size(); ++i) p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
       q = fs::sampling_quality(p, o);
+      if (o.periodic) {
+        spectrum = fs::sampling_spectrum(p);
+        has_spectrum = true;
+        if (args.has("spectrum")) {
+          std::ostringstream csv;
+          csv << "frequency,radial_power,anisotropy_db\n";
+          for (std::size_t b = 0; b < spectrum.frequency.size(); ++b)
+            csv << json_number(spectrum.frequency[b]) << ',' << json_number(spectrum.radial_power[b]) << ','
+                << json_number(spectrum.anisotropy[b]) << '\n';
+          io::write_text_file(args.get("spectrum"), csv.str());
+        }
+      }
     } else if (f.dimension == 3) {
       std::vector<K::Point_3> p;
       for (std::size_t i = 0; i < f.size(); ++i)
@@ -222,7 +238,11 @@ int run_sample_stats(const std::vector<std::string>& argv) {
      << ", \"minimum_distance\": " << json_number(q.minimum_distance)
      << ", \"relative_radius\": " << json_number(q.relative_radius)
      << ", \"average_minimum_distance\": " << json_number(q.average_minimum_distance)
-     << ", \"degenerate\": " << (q.status == Status::degenerate_input ? "true" : "false") << "}\n";
+     << ", \"degenerate\": " << (q.status == Status::degenerate_input ? "true" : "false");
+  if (has_spectrum)
+    os << ", \"effective_nyquist\": " << json_number(spectrum.effective_nyquist)
+       << ", \"oscillation\": " << json_number(spectrum.oscillation);
+  os << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;
 }
