@@ -8,6 +8,7 @@ packages=(
   libgudhi-dev libhera-dev doxygen
 )
 if [ "${FEATURERECON_WITH_VTK:-0}" = 1 ]; then packages+=(libvtk9-dev); fi
+if [ "${FEATURERECON_WITH_OPEN3D:-0}" = 1 ]; then packages+=(libopen3d-dev); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -4,7 +4,7 @@
 # Filter with FILTER='regex' (default: everything). Run on an otherwise idle machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-FEATURERECON_WITH_VTK=1 bash scripts/install_dependencies.sh
+FEATURERECON_WITH_VTK=1 FEATURERECON_WITH_OPEN3D=1 bash scripts/install_dependencies.sh
 if ! command -v /usr/bin/time > /dev/null; then apt-get install -y -q time > /dev/null; fi
 BUILD_DIR=${BUILD_DIR:-build-bench} bash scripts/build.sh -DFEATURERECON_BUILD_TESTS=OFF \
   -DFEATURERECON_BUILD_EXAMPLES=OFF -DFEATURERECON_BUILD_TOOLS=OFF -DFEATURERECON_BUILD_BENCHMARKS=ON

@@ -17,6 +17,7 @@
 #include <benchmark/benchmark.h>
 
 #include <iterator>
+#include <stdexcept>
 #include <map>
 #include <random>
 #include <utility>
@@ -26,6 +27,10 @@
 #ifdef FEATURERECON_WITH_GUDHI
 #include "sampling/gudhi_subsampling_peer.h"
 #endif
+#ifdef FEATURERECON_WITH_OPEN3D
+#include "sampling/open3d_peer.h"
+#endif
+#include <CGAL/IO/polygon_soup_io.h>
 
 namespace {
 using namespace FeatureRecon;
@@ -195,6 +200,88 @@ void BM_gudhi_sparsify(benchmark::State& state) {
 }
 #endif
 
+/// fandisk as a triangle soup (from ../shared/data), with its area.
+struct Soup {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  double area = 0;
+};
+const Soup& fandisk() {
+  static Soup s;
+  if (!s.vertices.empty()) return s;
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  if (!CGAL::IO::read_polygon_soup(FEATURERECON_SHARED_DATA_DIR "/meshes/fandisk.off", points, polygons))
+    throw std::runtime_error("cannot read fandisk.off from ../shared/data/meshes");
+  for (const auto& p : points) s.vertices.push_back({p.x(), p.y(), p.z()});
+  for (const auto& f : polygons) {
+    s.triangles.push_back({int(f[0]), int(f[1]), int(f[2])});
+    s.area += std::sqrt(K::Triangle_3(points[f[0]], points[f[1]], points[f[2]]).squared_area());
+  }
+  return s;
+}
+
+/// As Open3D does it: count x init_factor area-uniform samples of the mesh, then exact-count elimination.
+void BM_fandisk_featurerecon(benchmark::State& state) {
+  const Soup& m = fandisk();
+  const std::size_t count = std::size_t(state.range(0));
+  std::vector<K::Point_3> out;
+  for (auto _ : state) {
+    std::mt19937_64 rng(3);
+    std::vector<double> cumulative;
+    double total = 0;
+    for (const auto& t : m.triangles) {
+      const K::Point_3 a(m.vertices[t[0]][0], m.vertices[t[0]][1], m.vertices[t[0]][2]),
+          b(m.vertices[t[1]][0], m.vertices[t[1]][1], m.vertices[t[1]][2]),
+          c(m.vertices[t[2]][0], m.vertices[t[2]][1], m.vertices[t[2]][2]);
+      cumulative.push_back(total += std::sqrt(K::Triangle_3(a, b, c).squared_area()));
+    }
+    std::vector<K::Point_3> dense;
+    for (std::size_t i = 0; i < 5 * count; ++i) {
+      const std::size_t k = std::min<std::size_t>(
+          m.triangles.size() - 1,
+          std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin()));
+      double u = uniform01(rng), v = uniform01(rng);
+      if (u + v > 1) {
+        u = 1 - u;
+        v = 1 - v;
+      }
+      const auto& t = m.triangles[k];
+      std::array<double, 3> p;
+      for (int d = 0; d < 3; ++d)
+        p[d] = m.vertices[t[0]][d] + u * (m.vertices[t[1]][d] - m.vertices[t[0]][d]) + v * (m.vertices[t[2]][d] - m.vertices[t[0]][d]);
+      dense.emplace_back(p[0], p[1], p[2]);
+    }
+    fs::Elimination_options o;
+    o.intrinsic_dimension = 2;
+    o.domain_measure = total;
+    std::vector<std::size_t> kept;
+    fs::weighted_sample_elimination(dense, count, std::back_inserter(kept), o);
+    out.clear();
+    for (std::size_t i : kept) out.push_back(dense[i]);
+  }
+  fs::Sampling_quality_options q;
+  q.intrinsic_dimension = 2;
+  q.domain_measure = m.area;
+  state.counters["kept"] = double(out.size());
+  state.counters["rho"] = fs::sampling_quality(out, q).relative_radius;
+}
+
+#ifdef FEATURERECON_WITH_OPEN3D
+void BM_fandisk_open3d(benchmark::State& state) {
+  const Soup& m = fandisk();
+  std::vector<std::array<double, 3>> out;
+  for (auto _ : state) out = bench::open3d_poisson_disk(m.vertices, m.triangles, std::size_t(state.range(0)), 5);
+  std::vector<K::Point_3> p;
+  for (const auto& x : out) p.emplace_back(x[0], x[1], x[2]);
+  fs::Sampling_quality_options q;
+  q.intrinsic_dimension = 2;
+  q.domain_measure = m.area;
+  state.counters["kept"] = double(p.size());
+  state.counters["rho"] = fs::sampling_quality(p, q).relative_radius;
+}
+#endif
+
 void register_all() {
   auto ms = [](benchmark::internal::Benchmark* b) { return b->Unit(benchmark::kMillisecond)->UseRealTime(); };
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d", BM_elimination_2d))
@@ -208,6 +295,12 @@ void register_all() {
   ms(benchmark::RegisterBenchmark("sampling/cgal/grid_cube200k", BM_cgal_grid))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/hierarchy_cube200k", BM_cgal_hierarchy))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/wlop_cube200k", BM_cgal_wlop))->Iterations(1);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/fandisk_poisson_disk", BM_fandisk_featurerecon))
+      ->Arg(10000)->Arg(50000)->MinTime(1.0);
+#ifdef FEATURERECON_WITH_OPEN3D
+  ms(benchmark::RegisterBenchmark("sampling/open3d/fandisk_poisson_disk", BM_fandisk_open3d))
+      ->Arg(10000)->Arg(50000)->MinTime(1.0);
+#endif
 #ifdef FEATURERECON_WITH_GUDHI
   ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d", BM_gudhi_farthest))
       ->Args({50000, 10000})->Iterations(3);
