@@ -108,6 +108,18 @@ struct Dart_throwing_count_options {
   std::size_t max_iterations = 60;  ///< bisection steps on the radius; default 60
 };
 
+/// Options of continuous_bilateral_dart_throwing().
+struct Continuous_dart_throwing_options {
+  double sigma_position = 1;                                        ///< spatial scale of the metric; default 1
+  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
+  Bilateral_form form = Bilateral_form::gaussian;                   ///< form of the bilateral distance
+  /// Stop after this many consecutive rejected darts (the set is then close to maximal); default 10000.
+  std::size_t max_consecutive_failures = 10000;
+  std::size_t max_samples = 0;  ///< stop after this many accepted samples; default 0: no limit
+  std::uint64_t seed = 0;       ///< the random darts
+  Progress_callback progress;   ///< called every 65536 darts with the fraction of the failure budget used; false stops (samples so far are kept)
+};
+
 }  // namespace sampling
 }  // namespace FeatureRecon
 

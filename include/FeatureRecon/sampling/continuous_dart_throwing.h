@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SAMPLING_CONTINUOUS_DART_THROWING_H
+#define FEATURERECON_SAMPLING_CONTINUOUS_DART_THROWING_H
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/internal/sample_set.h>
+#include <FeatureRecon/sampling/sampling_options.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace FeatureRecon {
+namespace sampling {
+
+/// A sample of a continuous domain: its position and the feature there.
+template <class Feature>
+struct Continuous_sample {
+  std::array<double, 2> position;  ///< (x, y)
+  Feature feature;                 ///< the feature function's value at the position
+};
+
+/// Result of continuous_bilateral_dart_throwing().
+template <class Feature>
+struct Continuous_sampling_result {
+  std::vector<Continuous_sample<Feature>> samples;  ///< in acceptance order
+  std::size_t darts = 0;                            ///< darts thrown
+  Status status = Status::success;                  ///< degenerate_input for an empty box; interrupted when stopped
+};
+
+/// Bilateral dart throwing in a continuous 2D domain (dissertation Sec. 2.2.2): uniform random darts in the
+/// box [x0, x1) x [y0, y1); the feature at a dart comes from `feature_at` (for an image, the interpolated
+/// colour); a dart is kept when no kept sample is within bilateral distance r. Stops after
+/// `max_consecutive_failures` rejections in a row (then the set is close to maximal: rho about 0.75 for
+/// Euclidean darts) or `max_samples` samples. Kept samples sit in a hash grid of side r sigma_position.
+/// \tparam FeatureFunction callable `(double x, double y) -> Feature`.
+/// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, the squared feature distance.
+/// \param box {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1, finite (checked; throws).
+/// \param radius the conflict radius in bilateral units (> 0, checked; throws).
+/// \note Random numbers come from std::mt19937_64 turned into doubles by bit manipulation, so the same seed
+///   gives the same samples on every platform.
+template <class FeatureFunction, class FeatureDistance>
+auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double radius, FeatureFunction feature_at,
+                                        FeatureDistance feature_distance,
+                                        const Continuous_dart_throwing_options& options = {}) {
+  using Feature = std::decay_t<decltype(feature_at(0.0, 0.0))>;
+  const char* fn = "continuous_bilateral_dart_throwing";
+  for (int k = 0; k < 4; ++k)
+    if (!std::isfinite(box[std::size_t(k)]))
+      FeatureRecon::internal::throw_invalid_argument(fn, "box[", k, "] is not finite (", box[std::size_t(k)], ")");
+  if (!(box[0] <= box[2] && box[1] <= box[3]))
+    FeatureRecon::internal::throw_invalid_argument(fn, "box must be {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1");
+  if (!(std::isfinite(radius) && radius > 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
+  internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
+  if (options.max_consecutive_failures == 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_consecutive_failures must be >= 1");
+  Continuous_sampling_result<Feature> result;
+  if (box[0] == box[2] || box[1] == box[3]) {
+    result.status = Status::degenerate_input;
+    return result;
+  }
+  std::mt19937_64 rng(options.seed);
+  auto uniform = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  // The grid needs all positions up front: it only uses them for its frame, so pass the box corners.
+  std::vector<std::array<double, 2>> positions{{box[0], box[1]}, {box[2], box[3]}};
+  internal::with_metric(options, [&](const auto& metric) {
+    const double reach = radius * metric.spatial_scale(), reach2 = reach * reach;
+    FeatureRecon::internal::Dynamic_grid<2> grid(positions, reach);
+    std::size_t failures = 0;
+    while (failures < options.max_consecutive_failures &&
+           (options.max_samples == 0 || result.samples.size() < options.max_samples)) {
+      if ((result.darts & 65535) == 0 && result.darts != 0 &&
+          !FeatureRecon::internal::report_progress(options.progress,
+                                                   double(failures) / double(options.max_consecutive_failures))) {
+        result.status = Status::interrupted;
+        return;
+      }
+      ++result.darts;
+      const std::array<double, 2> p{box[0] + (box[2] - box[0]) * uniform(), box[1] + (box[3] - box[1]) * uniform()};
+      const Feature f = feature_at(p[0], p[1]);
+      bool conflict = false;
+      grid.for_each_candidate(p, [&](std::uint32_t j) {
+        if (conflict) return;
+        const auto& q = positions[j];
+        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+        if (!(d2 < reach2)) return;
+        conflict = metric(d2, double(feature_distance(f, result.samples[j - 2].feature))) < radius;
+      });
+      if (conflict) {
+        ++failures;
+        continue;
+      }
+      failures = 0;
+      positions.push_back(p);
+      grid.insert(static_cast<std::uint32_t>(positions.size() - 1));
+      result.samples.push_back({p, f});
+    }
+  });
+  if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  return result;
+}
+
+}  // namespace sampling
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SAMPLING_CONTINUOUS_DART_THROWING_H

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Dart throwing in a continuous 2D domain with a feature function (an "image" given as a function).
+#include <FeatureRecon/sampling/continuous_dart_throwing.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace {
+using namespace FeatureRecon::sampling;
+
+double grey_step(double x, double) { return x < 0.5 ? 0.0 : 1.0; }
+double squared(double a, double b) { return (a - b) * (a - b); }
+
+TEST(ContinuousDartThrowing, PoissonDiskAndNearlyMaximal) {
+  Continuous_dart_throwing_options o;
+  o.seed = 3;
+  const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.02, grey_step, squared, o);
+  const auto& s = r.samples;
+  ASSERT_GT(s.size(), 1000u);
+  double d_min = 1;
+  for (std::size_t a = 0; a < s.size(); ++a)
+    for (std::size_t b = a + 1; b < s.size(); ++b)
+      d_min = std::min(d_min, std::hypot(s[a].position[0] - s[b].position[0], s[a].position[1] - s[b].position[1]));
+  EXPECT_GE(d_min, 0.02);
+  const double d_hex = std::sqrt(2.0 / (std::sqrt(3.0) * double(s.size())));
+  EXPECT_GE(0.02 / d_hex, 0.74) << s.size() << " samples";  // near-maximal Poisson disk
+  for (const auto& x : s) EXPECT_EQ(x.feature, grey_step(x.position[0], x.position[1]));
+  // Same seed, same samples; another seed, others.
+  const auto again = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.02, grey_step, squared, o);
+  ASSERT_EQ(again.samples.size(), s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) EXPECT_EQ(again.samples[i].position, s[i].position);
+  o.seed = 4;
+  EXPECT_NE(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.02, grey_step, squared, o).samples[0].position,
+            s[0].position);
+}
+
+TEST(ContinuousDartThrowing, BilateralDistancePacksBothSidesOfAnEdge) {
+  // Across the step x = 0.5 the grey values differ by 1: with sigma_feature 0.1 the two sides never conflict,
+  // so samples sit closer than r across the edge; the Euclidean throw never allows that.
+  auto cross_pairs = [](const Continuous_sampling_result<double>& r) {
+    std::size_t close = 0;
+    for (const auto& a : r.samples)
+      for (const auto& b : r.samples)
+        if (a.position[0] < 0.5 && b.position[0] >= 0.5 &&
+            std::hypot(a.position[0] - b.position[0], a.position[1] - b.position[1]) < 0.03)
+          ++close;
+    return close;
+  };
+  Continuous_dart_throwing_options o;
+  o.max_consecutive_failures = 3000;
+  EXPECT_EQ(cross_pairs(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.03, grey_step, squared, o)), 0u);
+  o.sigma_feature = 0.1;
+  EXPECT_GT(cross_pairs(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.03, grey_step, squared, o)), 5u);
+}
+
+TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
+  Continuous_dart_throwing_options o;
+  o.max_samples = 25;
+  EXPECT_EQ(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.01, grey_step, squared, o).samples.size(), 25u);
+  const auto flat = continuous_bilateral_dart_throwing({0, 0, 1, 0}, 0.01, grey_step, squared);
+  EXPECT_EQ(flat.status, FeatureRecon::Status::degenerate_input);
+  EXPECT_TRUE(flat.samples.empty());
+  // A radius larger than the box: exactly one sample.
+  EXPECT_EQ(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 5.0, grey_step, squared).samples.size(), 1u);
+  EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.0, grey_step, squared), std::invalid_argument);
+  EXPECT_THROW(continuous_bilateral_dart_throwing({1, 0, 0, 1}, 0.1, grey_step, squared), std::invalid_argument);
+  EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, std::nan(""), 1}, 0.1, grey_step, squared),
+               std::invalid_argument);
+  Continuous_dart_throwing_options stop;
+  stop.progress = [](double) { return false; };
+  stop.max_consecutive_failures = 1000000;
+  EXPECT_EQ(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.05, grey_step, squared, stop).status,
+            FeatureRecon::Status::interrupted);
+}
+}  // namespace
