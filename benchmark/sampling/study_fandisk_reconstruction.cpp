@@ -6,7 +6,9 @@
 // reconstruction and the original mesh, near the creases (within 2 sample spacings of a sharp edge) and
 // elsewhere, in units of the sample spacing h = sqrt(area / M). Prints a Markdown table.
 //
-// usage: study_fandisk_reconstruction [MESH.off] [DENSE_POINTS]   (defaults: ../shared/data/meshes/fandisk.off, 200000)
+// usage: study_fandisk_reconstruction [MESH.off] [DENSE_POINTS] [SVG_DIRECTORY]
+//   (defaults: ../shared/data/meshes/fandisk.off, 200000; with a directory, the 10 % bilateral and Euclidean
+//   samplings are drawn there as fandisk_sampling_{bilateral,euclidean}.svg, samples near creases in red)
 #include <FeatureRecon/sampling/weighted_sample_elimination.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -177,6 +179,34 @@ int main(int argc, char** argv) {
         return p;
       });
     });
+    if (argc > 3 && fraction == 0.10)
+      for (std::size_t k = 0; k < 2; ++k) {  // runs[0] bilateral, runs[1] Euclidean
+        const std::string out = std::string(argv[3]) + "/fandisk_sampling_" + (k == 0 ? "bilateral" : "euclidean") + ".svg";
+        std::FILE* f = std::fopen(out.c_str(), "w");
+        if (!f) continue;
+        // Orthographic view: rotate about z by 30 degrees, then about x by -60 degrees.
+        auto project = [](const Point& p) {
+          const double c = std::cos(0.52), s = std::sin(0.52), x = c * p.x() - s * p.y(), y = s * p.x() + c * p.y();
+          const double ca = std::cos(-1.05), sa = std::sin(-1.05);
+          return std::array<double, 2>{x, ca * y - sa * p.z()};
+        };
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        for (const Point& p : runs[k].points) {
+          const auto q = project(p);
+          for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], q[d]), hi[d] = std::max(hi[d], q[d]);
+        }
+        const double scale = 700 / std::max(hi[0] - lo[0], hi[1] - lo[1]);
+        std::fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+                     (hi[0] - lo[0]) * scale + 20, (hi[1] - lo[1]) * scale + 20);
+        for (const Point& p : runs[k].points) {
+          const auto q = project(p);
+          const bool near_crease = !creases.empty() && std::sqrt(crease_tree.squared_distance(p)) < 2 * h;
+          std::fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"1.1\" fill=\"%s\"/>\n", (q[0] - lo[0]) * scale + 10,
+                       (hi[1] - q[1]) * scale + 10, near_crease ? "#d62728" : "#1f3b73");
+        }
+        std::fprintf(f, "</svg>\n");
+        std::fclose(f);
+      }
     for (const Run& r : runs) {
       std::vector<std::array<std::size_t, 3>> faces_out;
       CGAL::advancing_front_surface_reconstruction(r.points.begin(), r.points.end(), std::back_inserter(faces_out));
