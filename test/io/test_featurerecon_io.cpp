@@ -6,13 +6,22 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "io/featurerecon_io.h"
 
 using namespace FeatureRecon;
 
 namespace {
+/// A scratch file private to this test and process (tests run in parallel processes sharing TempDir()).
+std::string temp_path(const std::string& name) {
+  const ::testing::TestInfo* t = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "/featurerecon_" + t->test_suite_name() + "_" + t->name() + "_" +
+         std::to_string(::getpid()) + "_" + name;
+}
+
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
+  const std::string path = temp_path(name);
   std::ofstream(path) << text;
   return path;
 }
@@ -40,7 +49,7 @@ TEST(ExchangeFormat, RoundTripKeepsComplexAndValues) {
   EXPECT_EQ(c.complex.number_of_edges(), 4u);  // 3 implied + 1
   EXPECT_EQ(c.complex.number_of_triangles(), 1u);
   EXPECT_EQ(c.values, (std::vector<double>{0.5, 1, 2, -1e-3}));
-  const std::string out = ::testing::TempDir() + "/roundtrip.txt";
+  const std::string out = temp_path("roundtrip.txt");
   io::write_complex(out, c.complex, c.positions, c.values);
   const io::Complex_file d = io::read_complex(out);
   EXPECT_EQ(d.complex.edges, c.complex.edges);
