@@ -57,12 +57,7 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
                                   const Traits& traits = Traits()) {
   const char* fn = "sampling_quality";
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
-  if (!(options.domain_measure >= 0 && std::isfinite(options.domain_measure)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ",
-                                                   options.domain_measure);
-  if (options.intrinsic_dimension != 0 && options.intrinsic_dimension != 2 && options.intrinsic_dimension != 3)
-    FeatureRecon::internal::throw_invalid_argument(fn, "intrinsic_dimension must be 0 (automatic), 2 or 3, got ",
-                                                   options.intrinsic_dimension);
+  internal::check_domain(options.domain_measure, options.intrinsic_dimension, fn);
   internal::Sample_set<Traits> S(items, traits, fn);
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();

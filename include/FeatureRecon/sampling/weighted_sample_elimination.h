@@ -123,12 +123,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
   if (!(options.max_radius >= 0 && std::isfinite(options.max_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_radius must be finite and >= 0, got ", options.max_radius);
-  if (!(options.domain_measure >= 0 && std::isfinite(options.domain_measure)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ",
-                                                   options.domain_measure);
-  if (options.intrinsic_dimension != 0 && options.intrinsic_dimension != 2 && options.intrinsic_dimension != 3)
-    FeatureRecon::internal::throw_invalid_argument(fn, "intrinsic_dimension must be 0 (automatic), 2 or 3, got ",
-                                                   options.intrinsic_dimension);
+  internal::check_domain(options.domain_measure, options.intrinsic_dimension, fn);
   if (!(options.alpha > 0 && std::isfinite(options.alpha)))
     FeatureRecon::internal::throw_invalid_argument(fn, "alpha must be finite and > 0, got ", options.alpha);
   const internal::Sample_set<Traits> S(items, traits, fn);

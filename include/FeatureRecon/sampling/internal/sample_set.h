@@ -83,6 +83,15 @@ inline void check_sigmas(double sigma_position, double sigma_feature, const char
                                                    sigma_feature);
 }
 
+/// Checks a domain measure (>= 0, 0 meaning automatic) and an intrinsic dimension (0, 2 or 3).
+inline void check_domain(double measure, int intrinsic_dimension, const char* fn) {
+  if (!(measure >= 0 && std::isfinite(measure)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ", measure);
+  if (intrinsic_dimension != 0 && intrinsic_dimension != 2 && intrinsic_dimension != 3)
+    FeatureRecon::internal::throw_invalid_argument(fn, "intrinsic_dimension must be 0 (automatic), 2 or 3, got ",
+                                                   intrinsic_dimension);
+}
+
 /// Calls f(metric) with the metric the options describe.
 template <class Options, class F>
 decltype(auto) with_metric(const Options& o, F&& f) {
