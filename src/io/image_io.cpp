@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include "io/image_io.h"
+
+#include <png.h>
+
+#include <algorithm>
+#include <cctype>
+#include <csetjmp>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <jpeglib.h>
+
+#include "io/featurerecon_io.h"
+
+namespace FeatureRecon {
+namespace io {
+namespace {
+std::string extension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  std::string e = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return e;
+}
+[[noreturn]] void fail(const std::string& path, const std::string& what) { throw Input_error(path + ": " + what); }
+
+struct File {
+  std::FILE* f;
+  File(const std::string& path, const char* mode) : f(std::fopen(path.c_str(), mode)) {}
+  ~File() {
+    if (f) std::fclose(f);
+  }
+};
+
+Image read_png(const std::string& path) {
+  png_image img;
+  std::fill(reinterpret_cast<char*>(&img), reinterpret_cast<char*>(&img) + sizeof img, 0);
+  img.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&img, path.c_str())) fail(path, std::string("not a readable PNG (") + img.message + ")");
+  const bool colour = (img.format & PNG_FORMAT_FLAG_COLOR) != 0;
+  img.format = colour ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;  // 8-bit, alpha composited away by libpng
+  Image out;
+  out.width = int(img.width);
+  out.height = int(img.height);
+  out.channels = colour ? 3 : 1;
+  out.data.resize(PNG_IMAGE_SIZE(img));
+  if (!png_image_finish_read(&img, nullptr, out.data.data(), 0, nullptr)) {
+    const std::string message = img.message;
+    png_image_free(&img);
+    fail(path, "PNG decoding failed (" + message + ")");
+  }
+  return out;
+}
+
+void write_png(const std::string& path, const Image& image) {
+  png_image img;
+  std::fill(reinterpret_cast<char*>(&img), reinterpret_cast<char*>(&img) + sizeof img, 0);
+  img.version = PNG_IMAGE_VERSION;
+  img.width = png_uint_32(image.width);
+  img.height = png_uint_32(image.height);
+  img.format = image.channels == 3 ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;
+  if (!png_image_write_to_file(&img, path.c_str(), 0, image.data.data(), 0, nullptr))
+    fail(path, std::string("cannot write PNG (") + img.message + ")");
+}
+
+struct Jpeg_error {
+  jpeg_error_mgr base;
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+void jpeg_fail(j_common_ptr info) {
+  Jpeg_error* e = reinterpret_cast<Jpeg_error*>(info->err);
+  (*info->err->format_message)(info, e->message);
+  std::longjmp(e->jump, 1);
+}
+
+Image read_jpeg(const std::string& path) {
+  File file(path, "rb");
+  if (!file.f) fail(path, "cannot open");
+  jpeg_decompress_struct info;
+  Jpeg_error error;
+  info.err = jpeg_std_error(&error.base);
+  error.base.error_exit = jpeg_fail;
+  Image out;
+  if (setjmp(error.jump)) {
+    jpeg_destroy_decompress(&info);
+    fail(path, std::string("not a readable JPEG (") + error.message + ")");
+  }
+  jpeg_create_decompress(&info);
+  jpeg_stdio_src(&info, file.f);
+  jpeg_read_header(&info, TRUE);
+  if (info.jpeg_color_space == JCS_CMYK || info.jpeg_color_space == JCS_YCCK) {
+    jpeg_destroy_decompress(&info);
+    fail(path, "CMYK JPEG images are not supported");
+  }
+  info.out_color_space = info.num_components == 1 ? JCS_GRAYSCALE : JCS_RGB;
+  jpeg_start_decompress(&info);
+  out.width = int(info.output_width);
+  out.height = int(info.output_height);
+  out.channels = int(info.output_components);
+  out.data.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels));
+  while (info.output_scanline < info.output_height) {
+    JSAMPROW row = out.data.data() + std::size_t(info.output_scanline) * std::size_t(out.width) * std::size_t(out.channels);
+    jpeg_read_scanlines(&info, &row, 1);
+  }
+  jpeg_finish_decompress(&info);
+  jpeg_destroy_decompress(&info);
+  return out;
+}
+
+void write_jpeg(const std::string& path, const Image& image) {
+  File file(path, "wb");
+  if (!file.f) fail(path, "cannot write");
+  jpeg_compress_struct info;
+  Jpeg_error error;
+  info.err = jpeg_std_error(&error.base);
+  error.base.error_exit = jpeg_fail;
+  if (setjmp(error.jump)) {
+    jpeg_destroy_compress(&info);
+    fail(path, std::string("cannot write JPEG (") + error.message + ")");
+  }
+  jpeg_create_compress(&info);
+  jpeg_stdio_dest(&info, file.f);
+  info.image_width = JDIMENSION(image.width);
+  info.image_height = JDIMENSION(image.height);
+  info.input_components = image.channels;
+  info.in_color_space = image.channels == 3 ? JCS_RGB : JCS_GRAYSCALE;
+  jpeg_set_defaults(&info);
+  jpeg_set_quality(&info, 95, TRUE);
+  jpeg_start_compress(&info, TRUE);
+  while (info.next_scanline < info.image_height) {
+    JSAMPROW row = const_cast<JSAMPROW>(image.data.data() + std::size_t(info.next_scanline) * std::size_t(image.width) *
+                                                              std::size_t(image.channels));
+    jpeg_write_scanlines(&info, &row, 1);
+  }
+  jpeg_finish_compress(&info);
+  jpeg_destroy_compress(&info);
+}
+
+/// PGM/PPM, binary (P5/P6) or ASCII (P2/P3), maximum value up to 255 (values are rescaled to 0..255).
+Image read_pnm(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open");
+  auto token = [&]() {
+    std::string t;
+    char c;
+    while (in.get(c)) {
+      if (c == '#') {
+        std::string comment;
+        std::getline(in, comment);
+        continue;
+      }
+      if (std::isspace(static_cast<unsigned char>(c))) {
+        if (!t.empty()) break;
+        continue;
+      }
+      t.push_back(c);
+    }
+    return t;
+  };
+  const std::string magic = token();
+  if (magic != "P2" && magic != "P3" && magic != "P5" && magic != "P6")
+    fail(path, "not a PGM/PPM file (magic '" + magic + "', expected P2, P3, P5 or P6)");
+  Image out;
+  out.channels = (magic == "P3" || magic == "P6") ? 3 : 1;
+  long max_value = 0;
+  try {
+    out.width = std::stoi(token());
+    out.height = std::stoi(token());
+    max_value = std::stol(token());
+  } catch (const std::exception&) {
+    fail(path, "bad PGM/PPM header");
+  }
+  if (out.width <= 0 || out.height <= 0 || max_value <= 0 || max_value > 255)
+    fail(path, "unsupported PGM/PPM header (size " + std::to_string(out.width) + "x" + std::to_string(out.height) +
+                   ", maximum value " + std::to_string(max_value) + "; 8-bit only)");
+  const std::size_t n = std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels);
+  out.data.resize(n);
+  if (magic == "P5" || magic == "P6") {
+    if (!in.read(reinterpret_cast<char*>(out.data.data()), std::streamsize(n))) fail(path, "truncated pixel data");
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string t = token();
+      if (t.empty()) fail(path, "truncated pixel data (value " + std::to_string(i) + ")");
+      const long v = std::stol(t);
+      if (v < 0 || v > max_value) fail(path, "pixel value " + t + " out of range");
+      out.data[i] = std::uint8_t(v);
+    }
+  }
+  if (max_value != 255)
+    for (auto& v : out.data) v = std::uint8_t((long(v) * 255 + max_value / 2) / max_value);
+  return out;
+}
+
+void write_pnm(const std::string& path, const Image& image, bool colour) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) fail(path, "cannot write");
+  out << (colour ? "P6" : "P5") << '\n' << image.width << ' ' << image.height << "\n255\n";
+  if (colour && image.channels == 1) {
+    for (const std::uint8_t v : image.data) out.put(char(v)).put(char(v)).put(char(v));
+  } else if (!colour && image.channels == 3) {
+    for (std::size_t i = 0; i < image.data.size(); i += 3)
+      out.put(char((299 * image.data[i] + 587 * image.data[i + 1] + 114 * image.data[i + 2] + 500) / 1000));
+  } else {
+    out.write(reinterpret_cast<const char*>(image.data.data()), std::streamsize(image.data.size()));
+  }
+}
+}  // namespace
+
+Image read_image(const std::string& path) {
+  const std::string e = extension(path);
+  if (e == "png") return read_png(path);
+  if (e == "jpg" || e == "jpeg") return read_jpeg(path);
+  if (e == "pgm" || e == "ppm" || e == "pnm") return read_pnm(path);
+  fail(path, "unknown image format '." + e + "' (expected .png, .jpg, .jpeg, .pgm or .ppm)");
+}
+
+void write_image(const std::string& path, const Image& image) {
+  if (!(image.channels == 1 || image.channels == 3) || image.width <= 0 || image.height <= 0 ||
+      image.data.size() != std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels))
+    fail(path, "malformed image (size or channels)");
+  const std::string e = extension(path);
+  if (e == "png") return write_png(path, image);
+  if (e == "jpg" || e == "jpeg") return write_jpeg(path, image);
+  if (e == "pgm") return write_pnm(path, image, false);
+  if (e == "ppm") return write_pnm(path, image, true);
+  fail(path, "unknown image format '." + e + "' (expected .png, .jpg, .jpeg, .pgm or .ppm)");
+}
+
+}  // namespace io
+}  // namespace FeatureRecon

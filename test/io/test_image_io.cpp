@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Image files: PNG, JPEG, PGM and PPM round trips, ASCII PNM, and errors that name the file.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "io/featurerecon_io.h"
+#include "io/image_io.h"
+
+using namespace FeatureRecon;
+
+namespace {
+std::string scratch(const std::string& name) {
+  const ::testing::TestInfo* t = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "/featurerecon_" + t->name() + "_" + std::to_string(::getpid()) + "_" + name;
+}
+
+io::Image gradient(int channels, int cx = 7, int cy = 11) {
+  io::Image im;
+  im.width = 37;
+  im.height = 21;
+  im.channels = channels;
+  for (int r = 0; r < im.height; ++r)
+    for (int c = 0; c < im.width; ++c)
+      for (int k = 0; k < channels; ++k) im.data.push_back(std::uint8_t((cx * c + cy * r + 80 * k) % 256));
+  return im;
+}
+}  // namespace
+
+TEST(ImageIo, LosslessRoundTrips) {
+  for (const int channels : {1, 3})
+    for (const std::string ext : {"png", "pgm", "ppm"}) {
+      if ((ext == "pgm" && channels == 3) || (ext == "ppm" && channels == 1)) continue;
+      const io::Image a = gradient(channels);
+      const std::string path = scratch("g." + ext);
+      io::write_image(path, a);
+      const io::Image b = io::read_image(path);
+      EXPECT_EQ(b.width, a.width);
+      EXPECT_EQ(b.height, a.height);
+      EXPECT_EQ(b.channels, a.channels) << ext;
+      EXPECT_EQ(b.data, a.data) << ext << " " << channels;
+    }
+}
+
+TEST(ImageIo, JpegIsCloseAndAsciiPnmReads) {
+  const io::Image a = gradient(3, 2, 3);  // smooth (no wrap-around edges): what JPEG is made for
+  const std::string path = scratch("g.JPG");  // extensions are case-insensitive
+  io::write_image(path, a);
+  const io::Image b = io::read_image(path);
+  ASSERT_EQ(b.data.size(), a.data.size());
+  double error = 0;
+  for (std::size_t i = 0; i < a.data.size(); ++i) error += std::abs(int(a.data[i]) - int(b.data[i]));
+  EXPECT_LT(error / double(a.data.size()), 5.0);  // quality 95 with chroma subsampling: 3.1 measured
+  // ASCII PGM with a comment and a maximum value of 15 (rescaled to 0..255).
+  const std::string pgm = scratch("a.pgm");
+  std::ofstream(pgm) << "P2\n# a comment\n3 2\n15\n0 15 5\n10 1 15\n";
+  const io::Image c = io::read_image(pgm);
+  EXPECT_EQ(c.width, 3);
+  EXPECT_EQ(c.channels, 1);
+  EXPECT_EQ(c.at(1, 0), 255);
+  EXPECT_EQ(c.at(2, 0), 85);
+  EXPECT_EQ(c.at(0, 1), 170);
+}
+
+TEST(ImageIo, ErrorsNameTheFile) {
+  const std::string bad = scratch("bad.png");
+  std::ofstream(bad) << "not a png";
+  try {
+    io::read_image(bad);
+    FAIL() << "expected an error";
+  } catch (const io::Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.png: not a readable PNG"), std::string::npos) << e.what();
+  }
+  const std::string jpg = scratch("bad.jpg");
+  std::ofstream(jpg) << "not a jpeg";
+  EXPECT_THROW(io::read_image(jpg), io::Input_error);
+  EXPECT_THROW(io::read_image(scratch("x.gif")), io::Input_error);
+  EXPECT_THROW(io::read_image(scratch("missing.pgm")), io::Input_error);
+  const std::string truncated = scratch("t.pgm");
+  std::ofstream(truncated) << "P5\n4 4\n255\nab";
+  EXPECT_THROW(io::read_image(truncated), io::Input_error);
+}
