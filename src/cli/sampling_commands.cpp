@@ -28,17 +28,6 @@ using K = CGAL::Epick;
 using Pwn = std::pair<K::Point_3, K::Vector_3>;
 namespace fs = FeatureRecon::sampling;
 
-bool is_point_cloud_file(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot + 1);
-  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return e == "ply" || e == "off" || e == "xyz";
-}
-
-bool ends_with_xyz(const std::string& path) {
-  return path.size() >= 4 && (path.compare(path.size() - 4, 4, ".xyz") == 0 || path.compare(path.size() - 4, 4, ".XYZ") == 0);
-}
-
 double sigma_feature_of(const Arguments& args) {
   return args.has("sigma-feature") ? args.get_positive_double("sigma-feature") : std::numeric_limits<double>::infinity();
 }
@@ -182,7 +171,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   std::size_t dimension = 0;
   // PLY and OFF are point clouds; text files (.xyz included) have 2, 3 or 6 (x y z nx ny nz) columns.
   io::Point_file text;
-  const bool cloud_format = is_point_cloud_file(input) && !ends_with_xyz(input);
+  const std::string extension = io::file_extension(input);
+  const bool cloud_format = extension == "ply" || extension == "off";
   if (!cloud_format) text = io::read_points(input);
   if (cloud_format || text.dimension == 6) {
     const io::Point_cloud cloud = io::read_point_cloud(input);

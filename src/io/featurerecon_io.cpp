@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 #include "featurerecon_io.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -291,6 +292,14 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
     s += buf;
   }
   write_text_file(path, s);
+}
+
+std::string file_extension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string e = path.substr(dot + 1);
+  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e;
 }
 
 }  // namespace io

@@ -68,6 +68,9 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
 void write_map(const std::string& vertices_path, const std::string& edges_path,
                const std::vector<std::array<double, 2>>& positions, const std::vector<std::array<std::uint32_t, 2>>& edges);
 
+/// The extension of a file name, lower case, without the dot ("" when there is none).
+std::string file_extension(const std::string& path);
+
 /// Writes `text` to `path` atomically.
 void write_text_file(const std::string& path, const std::string& text);
 

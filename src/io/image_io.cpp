@@ -19,12 +19,6 @@
 namespace FeatureRecon {
 namespace io {
 namespace {
-std::string extension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot + 1);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
-}
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw Input_error(path + ": " + what); }
 
 struct File {
@@ -211,7 +205,7 @@ void write_pnm(const std::string& path, const Image& image, bool colour) {
 }  // namespace
 
 Image read_image(const std::string& path) {
-  const std::string e = extension(path);
+  const std::string e = file_extension(path);
   if (e == "png") return read_png(path);
   if (e == "jpg" || e == "jpeg") return read_jpeg(path);
   if (e == "pgm" || e == "ppm" || e == "pnm") return read_pnm(path);
@@ -222,7 +216,7 @@ void write_image(const std::string& path, const Image& image) {
   if (!(image.channels == 1 || image.channels == 3) || image.width <= 0 || image.height <= 0 ||
       image.data.size() != std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels))
     fail(path, "malformed image (size or channels)");
-  const std::string e = extension(path);
+  const std::string e = file_extension(path);
   if (e == "png") return write_png(path, image);
   if (e == "jpg" || e == "jpeg") return write_jpeg(path, image);
   if (e == "pgm") return write_pnm(path, image, false);

@@ -27,12 +27,6 @@ using Pwn = std::pair<K::Point_3, K::Vector_3>;
 using Point_map = CGAL::First_of_pair_property_map<Pwn>;
 using Normal_map = CGAL::Second_of_pair_property_map<Pwn>;
 
-std::string extension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  std::string e = dot == std::string::npos ? "" : path.substr(dot + 1);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
-}
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw Input_error(path + ": " + what); }
 
@@ -70,7 +64,7 @@ bool file_has_normals(const std::string& path, const std::string& ext) {
 }  // namespace
 
 Point_cloud read_point_cloud(const std::string& path) {
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "off" && ext != "xyz")
     fail(path, "unknown point-cloud format '." + ext + "' (expected .ply, .off or .xyz)");
   const bool normals = file_has_normals(path, ext);
@@ -96,7 +90,7 @@ Point_cloud read_point_cloud(const std::string& path) {
 }
 
 void write_point_cloud(const std::string& path, const Point_cloud& cloud, const std::vector<std::size_t>& indices) {
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "off" && ext != "xyz")
     throw Input_error(path + ": unknown point-cloud format '." + ext + "' (expected .ply, .off or .xyz)");
   std::vector<Pwn> pwn;

@@ -162,8 +162,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   internal::check_dart_options(options.darts, n, fn);
   if (!options.darts.radii.empty())
     FeatureRecon::internal::throw_invalid_argument(fn, "per-item radii cannot be combined with a target count");
-  if (count > n)
-    FeatureRecon::internal::throw_invalid_argument(fn, "count (", count, ") exceeds the number of items (", n, ")");
+  internal::check_count(count, n, fn);
   Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
   if (n == 0) {
     result.status = Status::degenerate_input;

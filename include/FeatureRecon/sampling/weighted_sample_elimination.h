@@ -129,8 +129,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   const internal::Sample_set<Traits> S(items, traits, fn);
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();
-  if (count > n)
-    FeatureRecon::internal::throw_invalid_argument(fn, "count (", count, ") exceeds the number of items (", n, ")");
+  internal::check_count(count, n, fn);
   Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
   if (n == 0) {
     result.status = Status::degenerate_input;

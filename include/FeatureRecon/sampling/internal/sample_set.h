@@ -92,6 +92,12 @@ inline void check_domain(double measure, int intrinsic_dimension, const char* fn
                                                    intrinsic_dimension);
 }
 
+/// Checks an exact output count against the number of items.
+inline void check_count(std::size_t count, std::size_t n, const char* fn) {
+  if (count > n)
+    FeatureRecon::internal::throw_invalid_argument(fn, "count (", count, ") exceeds the number of items (", n, ")");
+}
+
 /// Calls f(metric) with the metric the options describe.
 template <class Options, class F>
 decltype(auto) with_metric(const Options& o, F&& f) {
