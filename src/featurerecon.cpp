@@ -129,7 +129,8 @@ const std::vector<Command>& commands() {
        run_sample},
       {"sample-stats", "Spacing statistics of a sample set (relative radius, average minimum distance)",
        "usage: featurerecon sample-stats --input FILE [--domain-measure A] [--intrinsic-dimension 2|3]\n"
-       "                                 [--periodic [--spectrum CSV]] [--sigma-position S] [--sigma-feature S]\n"
+       "                                 [--periodic [--spectrum CSV] [--max-frequency F]] [--sigma-position S]\n"
+       "                                 [--sigma-feature S] [--quiet]\n"
        "\n"
        "Prints JSON: samples, hexagonal_distance d_hex (nearest distance of the densest packing of the samples:\n"
        "hexagonal in 2D, FCC in 3D), minimum_distance, relative_radius rho = d_min / d_hex and\n"
@@ -140,10 +141,13 @@ const std::vector<Command>& commands() {
        "                           volume for clouds; bounding box for text points; 1 with --periodic)\n"
        "  --intrinsic-dimension D  2 (surfaces, images) or 3 (volumes)\n"
        "  --periodic               distances on the unit torus (positions modulo 1); for 2D samples also the\n"
-       "                           effective Nyquist frequency (where the radially averaged periodogram first\n"
-       "                           reaches 0.1, in units of sqrt(N)/2) and the oscillation (its largest value after)\n"
+       "                           effective Nyquist frequency and the oscillation of Heck, Schloemer and Deussen\n"
+       "                           (frequencies in units of sqrt(N)/2: a square lattice has nu_eff = 1)\n"
+       "  --max-frequency F        with --periodic: periodogram up to |f_x|, |f_y| <= F (default 6 sqrt(N), which\n"
+       "                           holds the oscillation band; the time grows as N F^2)\n"
        "  --spectrum CSV           with --periodic: write frequency, radial_power, anisotropy_db per annulus\n"
-       "  --sigma-feature S        bilateral distances with the normals of a cloud (default: Euclidean)\n",
+       "  --sigma-feature S        bilateral distances with the normals of a cloud (default: Euclidean)\n"
+       "  --quiet                  no progress on standard error\n",
        run_sample_stats},
   };
   return list;

@@ -150,10 +150,18 @@ int run_sample(const std::vector<std::string>& argv) {
 }
 
 int run_sample_stats(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"periodic"},
-                       {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature", "spectrum"});
+  const Arguments args(argv, {"periodic", "quiet"},
+                       {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature", "spectrum",
+                        "max-frequency"});
   if (args.has("spectrum") && !args.has("periodic"))
     throw Usage_error("--spectrum needs --periodic (2D samples on the unit torus)");
+  fs::Sampling_spectrum_options spectrum_options;
+  if (args.has("max-frequency")) {
+    if (!args.has("periodic")) throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
+    const long long f = args.get_int("max-frequency");
+    if (f < 1) throw Usage_error("--max-frequency must be >= 1");
+    spectrum_options.max_frequency = static_cast<std::size_t>(f);
+  }
   const std::string input = args.get("input");
   fs::Sampling_quality_options o;
   if (args.has("domain-measure")) o.domain_measure = args.get_positive_double("domain-measure");
@@ -199,7 +207,10 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       for (std::size_t i = 0; i < f.size(); ++i) p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
       q = fs::sampling_quality(p, o);
       if (o.periodic) {
-        spectrum = fs::sampling_spectrum(p);
+        Progress progress("spectrum", args.has("quiet"));
+        spectrum_options.progress = std::ref(progress);
+        spectrum = fs::sampling_spectrum(p, spectrum_options);
+        progress.done(std::to_string(spectrum.radial_power.size()) + " annuli");
         has_spectrum = true;
         if (args.has("spectrum")) {
           std::ostringstream csv;
@@ -231,7 +242,9 @@ int run_sample_stats(const std::vector<std::string>& argv) {
      << ", \"degenerate\": " << (q.status == Status::degenerate_input ? "true" : "false");
   if (has_spectrum)
     os << ", \"effective_nyquist\": " << json_number(spectrum.effective_nyquist)
-       << ", \"oscillation\": " << json_number(spectrum.oscillation);
+       << ", \"oscillation\": " << json_number(spectrum.oscillation)
+       << ", \"oscillation_band\": [" << json_number(spectrum.oscillation_from) << ", "
+       << json_number(spectrum.oscillation_to) << "]";
   os << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;

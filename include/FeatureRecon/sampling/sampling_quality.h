@@ -9,8 +9,11 @@
 #include <FeatureRecon/sampling/sampling_options.h>
 #include <FeatureRecon/traits.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <vector>
 
@@ -132,51 +135,99 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
 
 /// Options of sampling_spectrum().
 struct Sampling_spectrum_options {
-  /// Largest integer frequency per axis of the periodogram. Default 0: 2 sqrt(N) (rounded up), which covers
-  /// the first peak of any blue-noise set.
+  /// Largest integer frequency per axis of the periodogram. Default 0: 6 sqrt(N) (rounded up), that is 12 in
+  /// units of sqrt(N)/2, which holds the oscillation band of Heck et al. (10 units from where the power first
+  /// reaches 1) for every set whose power reaches 1 below 2 units (any blue-noise set).
   std::size_t max_frequency = 0;
-  double threshold = 0.1;  ///< power level that ends the zero region (-10 dB) for the effective Nyquist frequency
+  /// Level of the mean power over a disc of frequencies that ends the zero region (Heck et al.: 0.1, -10 dB).
+  double threshold = 0.1;
   Progress_callback progress;  ///< fraction of the samples transformed; returning false stops (empty result)
 };
 
 /// Fourier statistics of a 2D sample set on the unit torus (positions modulo 1), as the point-set analysis
-/// of Lagae and Dutré (2008) and Heck, Schlömer and Deussen (2013) defines them.
+/// of Lagae and Dutre (2008) and Heck, Schloemer and Deussen (2013) defines them. Frequencies are in units of
+/// nu_N = sqrt(N)/2, the Nyquist frequency of a square lattice of N points (the point-set analysis tool's unit).
 struct Sampling_spectrum {
   std::size_t samples = 0;              ///< N
-  std::vector<double> frequency;        ///< annulus k (k = 0, 1, ...): integer radius k, in units of nu_N = sqrt(N)/2
+  std::vector<double> frequency;        ///< annulus k (k = 0, 1, ...): integer radius k, in units of nu_N
   std::vector<double> radial_power;     ///< radially averaged periodogram per annulus (white noise: 1)
   std::vector<double> anisotropy;       ///< 10 log10(variance / mean^2) of the periodogram in each annulus (dB)
-  /// Effective Nyquist frequency, in units of nu_N: where the radial power first reaches `threshold`
-  /// (interpolated linearly between annuli; the zero region below it).
+  std::vector<std::size_t> annulus_size;  ///< number of integer frequencies f with round(|f|) = k
+  /// Effective Nyquist frequency nu_eff (Heck et al.): half the radius nu* of the largest disc of frequencies,
+  /// centred on 0 and without the DC term, whose mean power stays below `threshold`, taken below the first
+  /// radius of at least one unit where that mean exceeds 0.5 (interpolated between annuli). In units of nu_N,
+  /// so a square lattice has nu_eff = 1 and white noise nu_eff = 0.
   double effective_nyquist = 0;
-  double oscillation = 0;  ///< the largest radial power beyond the effective Nyquist frequency (its first peak)
+  /// Oscillation Omega (Heck et al.): 10 times the root mean square of P - 1 over the ring of frequencies from
+  /// `oscillation_from` (the first annulus after DC where the radial power reaches 0.98) to `oscillation_to`
+  /// (10 units further, or the end of the spectrum when that comes first), weighted by area. A sampling that
+  /// is flat beyond its zero region has Omega near 0; a lattice-like one has large Omega.
+  double oscillation = 0;
+  double oscillation_from = 0;  ///< start of the oscillation band, units of nu_N
+  double oscillation_to = 0;    ///< end of the oscillation band, units of nu_N
   Status status = Status::success;  ///< degenerate_input for fewer than two samples; interrupted when stopped
 };
 
 namespace internal {
 /// \cond
-/// Effective Nyquist frequency (the first crossing of the threshold after the DC annulus, interpolated) and
-/// oscillation (the largest radial power from there on) of a radial spectrum.
+inline void check_spectrum_threshold(double threshold, const char* fn) {
+  if (!(threshold > 0 && threshold < 0.5))  // 0.5 is the level that ends the search for the zero region
+    FeatureRecon::internal::throw_invalid_argument(fn, "threshold must lie in (0, 0.5), got ", threshold);
+}
+
+/// Effective Nyquist frequency and oscillation (Heck, Schloemer and Deussen 2013) from the radial power and
+/// the annulus sizes.
 inline void finish_spectrum(Sampling_spectrum& s, double threshold) {
   const std::size_t bins = s.radial_power.size();
   const double nu = std::sqrt(double(s.samples)) / 2;
-  s.effective_nyquist = 0;
-  s.oscillation = 0;
-  if (bins == 0 || nu == 0) return;
-  std::size_t cross = bins;
+  s.effective_nyquist = s.oscillation = s.oscillation_from = s.oscillation_to = 0;
+  if (bins < 2 || nu == 0 || s.annulus_size.size() != bins) return;
+  // disc[k]: mean power over the frequencies of annuli 1..k, the disc of radius k + 1/2 without DC.
+  std::vector<double> disc(bins, 0.0);
+  double power = 0, count = 0;
+  for (std::size_t b = 1; b < bins; ++b) {
+    power += s.radial_power[b] * double(s.annulus_size[b]);
+    count += double(s.annulus_size[b]);
+    disc[b] = count > 0 ? power / count : 0.0;
+  }
+  // The first disc of radius >= 1 unit with mean power above 0.5, then down to the last one below threshold.
+  std::size_t high = bins;
   for (std::size_t b = 1; b < bins; ++b)
-    if (s.radial_power[b] >= threshold) {
-      cross = b;
+    if (double(b) + 0.5 >= nu && disc[b] > 0.5) {
+      high = b;
       break;
     }
-  if (cross == bins) {
-    s.effective_nyquist = double(bins - 1) / nu;
-    return;
+  double radius = 0;  // nu* in integer frequency
+  if (high == bins) {
+    radius = double(bins) - 0.5;  // the whole spectrum is quiet: a lower bound
+  } else {
+    std::size_t b = high;
+    while (b > 0 && disc[b] >= threshold) --b;
+    if (b > 0) {
+      // disc[b] < threshold <= disc[b + 1]: interpolate the radius between b + 1/2 and b + 3/2.
+      const double t = (threshold - disc[b]) / (disc[b + 1] - disc[b]);
+      radius = double(b) + 0.5 + std::min(1.0, std::max(0.0, t));
+    }
   }
-  const double p0 = cross > 1 ? s.radial_power[cross - 1] : 0.0, p1 = s.radial_power[cross];
-  const double t = p1 > p0 ? (threshold - p0) / (p1 - p0) : 1.0;
-  s.effective_nyquist = (double(cross) - 1 + std::min(1.0, std::max(0.0, t))) / nu;
-  for (std::size_t b = cross; b < bins; ++b) s.oscillation = std::max(s.oscillation, s.radial_power[b]);
+  s.effective_nyquist = radius / nu / 2;
+  // Oscillation over the ring from the first annulus reaching 0.98 to 10 units beyond it.
+  std::size_t from = bins;
+  for (std::size_t b = 1; b < bins; ++b)
+    if (s.radial_power[b] >= 0.98) {
+      from = b;
+      break;
+    }
+  if (from == bins) return;
+  const std::size_t to = std::min(bins - 1, from + static_cast<std::size_t>(std::ceil(10 * nu)));
+  double deviation = 0, area = 0;
+  for (std::size_t b = from; b <= to; ++b) {
+    const double d = s.radial_power[b] - 1, a = double(s.annulus_size[b]);
+    deviation += d * d * a;
+    area += a;
+  }
+  s.oscillation = area > 0 ? 10 * std::sqrt(deviation / area) : 0.0;
+  s.oscillation_from = double(from) / nu;
+  s.oscillation_to = double(to) / nu;
 }
 /// \endcond
 }  // namespace internal
@@ -188,6 +239,7 @@ inline void finish_spectrum(Sampling_spectrum& s, double threshold) {
 /// \throws std::invalid_argument when the spectra are empty or differ in size or number of annuli.
 inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spectrum>& spectra, double threshold = 0.1) {
   const char* fn = "average_sampling_spectra";
+  internal::check_spectrum_threshold(threshold, fn);
   if (spectra.empty()) FeatureRecon::internal::throw_invalid_argument(fn, "no spectra");
   Sampling_spectrum a = spectra[0];
   for (std::size_t k = 1; k < spectra.size(); ++k) {
@@ -213,14 +265,13 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 /// Nyquist frequency and the oscillation. O(N F^2) time.
 /// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
-/// \throws std::invalid_argument for non-finite coordinates (naming the item) or a threshold <= 0.
+/// \throws std::invalid_argument for non-finite coordinates (naming the item) or a threshold outside (0, 0.5).
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spectrum_options& options = {},
                                     const Traits& traits = Traits()) {
   const char* fn = "sampling_spectrum";
   static_assert(Traits::dimension == 2, "FeatureRecon: sampling_spectrum takes 2D positions");
-  if (!(options.threshold > 0 && std::isfinite(options.threshold)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "threshold must be finite and > 0, got ", options.threshold);
+  internal::check_spectrum_threshold(options.threshold, fn);
   const internal::Sample_set<Traits> S(items, traits, fn);
   const std::size_t n = S.size();
   Sampling_spectrum result;
@@ -230,38 +281,31 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
     return result;
   }
   const long F = options.max_frequency != 0 ? static_cast<long>(options.max_frequency)
-                                             : static_cast<long>(std::ceil(2 * std::sqrt(double(n))));
+                                             : static_cast<long>(std::ceil(6 * std::sqrt(double(n))));
   const long W = 2 * F + 1;
-  // Real and imaginary parts of sum_k exp(-2 pi i (fx x + fy y)) for fy >= 0 (P(-f) = P(f)).
-  std::vector<double> re(std::size_t(W * (F + 1)), 0.0), im(re.size(), 0.0);
-  const std::size_t width = static_cast<std::size_t>(W), height = static_cast<std::size_t>(F + 1);
-  std::vector<double> ex_re(width), ex_im(width), ey_re(height), ey_im(height);
+  // S(fx, fy) = sum_k exp(-2 pi i fx x_k) exp(-2 pi i fy y_k) for fy >= 0 (P(-f) = P(f)) is the product
+  // Ex^T Ey of the per-sample exponentials: blocks of samples go through Eigen's blocked matrix product.
+  using Complex_matrix = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic>;
+  Complex_matrix sums = Complex_matrix::Zero(W, F + 1);
+  const std::size_t block = 256;
+  Complex_matrix ex(static_cast<Eigen::Index>(block), W), ey(static_cast<Eigen::Index>(block), F + 1);
   const double two_pi = 6.283185307179586476925;
-  for (std::size_t k = 0; k < n; ++k) {
-    if ((k & 255) == 0 && !FeatureRecon::internal::report_progress(options.progress, double(k) / double(n))) {
+  for (std::size_t k0 = 0; k0 < n; k0 += block) {
+    if (!FeatureRecon::internal::report_progress(options.progress, double(k0) / double(n))) {
       result.status = Status::interrupted;
-      result.frequency.clear();
       return result;
     }
-    const double x = S.positions[k][0] - std::floor(S.positions[k][0]);
-    const double y = S.positions[k][1] - std::floor(S.positions[k][1]);
-    for (long f = -F; f <= F; ++f) {  // direct evaluation: no drift of a recurrence over large F
-      ex_re[std::size_t(f + F)] = std::cos(two_pi * double(f) * x);
-      ex_im[std::size_t(f + F)] = -std::sin(two_pi * double(f) * x);
+    const std::size_t m = std::min(block, n - k0);
+    for (std::size_t j = 0; j < m; ++j) {
+      const auto& p = S.positions[k0 + j];
+      const double x = p[0] - std::floor(p[0]), y = p[1] - std::floor(p[1]);
+      const Eigen::Index r = static_cast<Eigen::Index>(j);
+      for (long f = -F; f <= F; ++f)  // direct evaluation: no drift of a recurrence over large F
+        ex(r, f + F) = std::polar(1.0, -two_pi * double(f) * x);
+      for (long f = 0; f <= F; ++f) ey(r, f) = std::polar(1.0, -two_pi * double(f) * y);
     }
-    for (long f = 0; f <= F; ++f) {
-      ey_re[std::size_t(f)] = std::cos(two_pi * double(f) * y);
-      ey_im[std::size_t(f)] = -std::sin(two_pi * double(f) * y);
-    }
-    for (long fy = 0; fy <= F; ++fy) {
-      const double a = ey_re[std::size_t(fy)], b = ey_im[std::size_t(fy)];
-      double* r = re.data() + fy * W;
-      double* i = im.data() + fy * W;
-      for (long fx = 0; fx < W; ++fx) {
-        r[fx] += ex_re[std::size_t(fx)] * a - ex_im[std::size_t(fx)] * b;
-        i[fx] += ex_re[std::size_t(fx)] * b + ex_im[std::size_t(fx)] * a;
-      }
-    }
+    const Eigen::Index rows = static_cast<Eigen::Index>(m);
+    sums.noalias() += ex.topRows(rows).transpose() * ey.topRows(rows);
   }
   // Radial statistics over annuli |f| in [k - 1/2, k + 1/2).
   const std::size_t bins = std::size_t(F) + 1;
@@ -271,8 +315,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
       const std::size_t b = std::size_t(std::lround(std::sqrt(double(fx * fx + fy * fy))));
       if (b >= bins) continue;
       const long sy = fy < 0 ? -fy : fy, sx = fy < 0 ? -fx : fx;  // P(-f) = P(f)
-      const std::size_t c = std::size_t(sy * W + sx + F);
-      const double p = (re[c] * re[c] + im[c] * im[c]) / double(n);
+      const double p = std::norm(sums(sx + F, sy)) / double(n);
       sum[b] += p;
       sum2[b] += p * p;
       count[b] += 1;
@@ -284,6 +327,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
     result.frequency.push_back(double(b) / nu);
     result.radial_power.push_back(mean);
     result.anisotropy.push_back(mean > 0 && var > 0 ? 10 * std::log10(var / (mean * mean)) : 0.0);
+    result.annulus_size.push_back(static_cast<std::size_t>(count[b]));
   }
   internal::finish_spectrum(result, options.threshold);
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
