@@ -149,6 +149,35 @@ const std::vector<Command>& commands() {
        "  --sigma-feature S        bilateral distances with the normals of a cloud (default: Euclidean)\n"
        "  --quiet                  no progress on standard error\n",
        run_sample_stats},
+      {"sample-image", "Feature-aware blue-noise sampling of a picture (pixels or the continuous image)",
+       "usage: featurerecon sample-image --input IMAGE (--count M | --radius R)\n"
+       "                                 [--method elimination|darts|continuous] [--sigma-feature S] [--grey]\n"
+       "                                 [--seed N] [--out FILE] [--svg FILE] [--picture FILE] [--mosaic FILE]\n"
+       "                                 [--quiet]\n"
+       "\n"
+       "Blue-noise samples of an image in the bilateral distance xi = sqrt(|dp|^2 + |dc|^2 / S^2) of positions\n"
+       "(pixels) and colours (mean squared channel difference, channels in [0, 1]): with --sigma-feature the\n"
+       "samples crowd along edges and thin lines; without it the spacing is uniform. Prints JSON: samples,\n"
+       "radius, relative_radius (rho on the image rectangle), seconds.\n"
+       "\n"
+       "  --input IMAGE      PNG, JPEG, PGM or PPM (grey or RGB)\n"
+       "  --method M         elimination (weighted sample elimination of pixels, exact count; default), darts\n"
+       "                     (maximal dart throwing over the pixels at R, or at the radius giving M samples) or\n"
+       "                     continuous (darts anywhere in the image rectangle, colours interpolated bilinearly;\n"
+       "                     needs R, M caps the count)\n"
+       "  --count M          number of samples\n"
+       "  --radius R         conflict radius in pixels (darts, continuous); r_max for elimination\n"
+       "  --sigma-feature S  colour scale (colour distances lie in [0, 1]); default infinity (Euclidean)\n"
+       "  --grey             sample the luma of a colour image\n"
+       "  --seed N           the same seed gives the same samples (default 0)\n"
+       "  --out FILE         samples as text: 'x y value' or 'x y r g b' (pixels; channels in [0, 1]); .csv\n"
+       "                     adds a header and commas\n"
+       "  --svg FILE         the samples as dots of their colour\n"
+       "  --picture FILE     the same as a PNG, JPEG, PGM or PPM of the input's size\n"
+       "  --mosaic FILE      every pixel in the colour of its nearest sample (a Voronoi mosaic; PNG, JPEG, PGM\n"
+       "                     or PPM); the JSON then has mosaic_psnr_db against the input\n"
+       "  --quiet            no progress on standard error\n",
+       run_sample_image},
   };
   return list;
 }

@@ -1,0 +1,324 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// featurerecon sample-image: feature-aware blue-noise sampling of a picture, on its pixels or on the
+// continuous image with interpolated colours.
+#include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/continuous_dart_throwing.h>
+#include <FeatureRecon/sampling/image_domain.h>
+#include <FeatureRecon/sampling/sampling_quality.h>
+#include <FeatureRecon/sampling/weighted_sample_elimination.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_2.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "io/featurerecon_io.h"
+#include "io/image_io.h"
+
+namespace FeatureRecon {
+namespace cli {
+namespace {
+namespace fs = FeatureRecon::sampling;
+
+/// A kept sample: position in pixels and colour channels in [0, 1].
+struct Image_sample {
+  double x = 0, y = 0;
+  std::array<double, 3> colour{};
+};
+
+/// Luma (ITU-R BT.601) of an RGB image, rounded to 8 bits.
+io::Image to_grey(const io::Image& image) {
+  if (image.channels == 1) return image;
+  io::Image g;
+  g.width = image.width;
+  g.height = image.height;
+  g.channels = 1;
+  g.data.resize(std::size_t(image.width) * std::size_t(image.height));
+  for (std::size_t i = 0; i < g.data.size(); ++i) {
+    const double y = 0.299 * image.data[3 * i] + 0.587 * image.data[3 * i + 1] + 0.114 * image.data[3 * i + 2];
+    g.data[i] = static_cast<std::uint8_t>(std::lround(y));
+  }
+  return g;
+}
+
+struct Sampler_settings {
+  std::string method;
+  long long count = 0;  // 0: none given
+  double radius = 0;    // 0: none given
+  double sigma_feature = std::numeric_limits<double>::infinity();
+  std::uint64_t seed = 0;
+};
+
+/// Runs the chosen sampler on the pixels (elimination, darts) or the continuous image (continuous).
+/// \tparam Pixel Grey_pixel or Rgb_pixel; \tparam C its channel count.
+template <class Pixel, std::size_t C>
+std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_settings& s, Progress& progress,
+                                       double& used_radius) {
+  std::vector<Image_sample> out;
+  if (s.method == "continuous") {
+    const fs::Bilinear_image<C> domain(image.width, image.height, image.data);
+    fs::Continuous_dart_throwing_options o;
+    o.sigma_feature = s.sigma_feature;
+    o.seed = s.seed;
+    o.max_samples = static_cast<std::size_t>(s.count);
+    o.progress = std::ref(progress);
+    const auto r = fs::continuous_bilateral_dart_throwing(domain.box(), s.radius, domain,
+                                                          fs::Mean_squared_channel_distance(), o);
+    used_radius = s.radius;
+    for (const auto& k : r.samples) {
+      Image_sample x{k.position[0], k.position[1], {}};
+      for (std::size_t c = 0; c < 3; ++c) x.colour[c] = k.feature[C == 3 ? c : 0];
+      out.push_back(x);
+    }
+    return out;
+  }
+  const std::vector<Pixel> pixels = fs::image_pixels<Pixel>(image.width, image.height, image.data);
+  const Pixel_traits<Pixel> traits;
+  std::vector<std::size_t> kept;
+  if (s.method == "elimination") {
+    fs::Elimination_options o;
+    o.sigma_feature = s.sigma_feature;
+    o.max_radius = s.radius;
+    o.seed = s.seed;
+    o.progress = std::ref(progress);
+    used_radius = fs::weighted_sample_elimination(pixels, static_cast<std::size_t>(s.count), std::back_inserter(kept), o,
+                                                  traits).radius;
+  } else if (s.radius > 0) {
+    fs::Dart_throwing_options o;
+    o.sigma_feature = s.sigma_feature;
+    o.seed = s.seed;
+    o.progress = std::ref(progress);
+    used_radius = fs::bilateral_dart_throwing(pixels, s.radius, std::back_inserter(kept), o, traits).radius;
+    if (s.count > 0 && kept.size() > static_cast<std::size_t>(s.count)) kept.resize(static_cast<std::size_t>(s.count));
+  } else {
+    fs::Dart_throwing_count_options o;
+    o.darts.sigma_feature = s.sigma_feature;
+    o.darts.seed = s.seed;
+    o.darts.progress = std::ref(progress);
+    used_radius = fs::bilateral_dart_throwing_count(pixels, static_cast<std::size_t>(s.count), std::back_inserter(kept),
+                                                    o, traits).radius;
+  }
+  for (const std::size_t i : kept) {
+    const Pixel& p = pixels[i];
+    Image_sample x{p.column + 0.5, p.row + 0.5, {}};
+    for (std::size_t c = 0; c < 3; ++c) {
+      if constexpr (C == 3)
+        x.colour[c] = p.rgb[c] / 255.0;
+      else
+        x.colour[c] = p.value / 255.0;
+    }
+    out.push_back(x);
+  }
+  return out;
+}
+
+std::uint8_t to_byte(double v) { return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255)); }
+
+/// Text samples: "x y value" (grey) or "x y r g b", channels in [0, 1]; with .csv a header and commas.
+void write_samples(const std::string& path, const std::vector<Image_sample>& samples, std::size_t channels) {
+  const bool csv = io::file_extension(path) == "csv";
+  const char sep = csv ? ',' : ' ';
+  std::ostringstream os;
+  if (csv) os << (channels == 1 ? "x,y,value\n" : "x,y,r,g,b\n");
+  for (const Image_sample& s : samples) {
+    os << json_number(s.x) << sep << json_number(s.y);
+    for (std::size_t c = 0; c < channels; ++c) os << sep << json_number(s.colour[c]);
+    os << '\n';
+  }
+  io::write_text_file(path, os.str());
+}
+
+/// Background of the dot pictures: a mid grey, so that white and black samples both show.
+constexpr double dot_background = 0.55;
+
+/// SVG: each sample a dot of its colour on grey, in pixel coordinates.
+void write_samples_svg(const std::string& path, const std::vector<Image_sample>& samples, int width, int height,
+                       double dot) {
+  std::ostringstream os;
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+     << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#8c8c8c\"/>\n";
+  char colour[8];
+  for (const Image_sample& s : samples) {
+    std::snprintf(colour, sizeof colour, "#%02x%02x%02x", to_byte(s.colour[0]), to_byte(s.colour[1]), to_byte(s.colour[2]));
+    os << "<circle cx=\"" << json_number(s.x) << "\" cy=\"" << json_number(s.y) << "\" r=\"" << json_number(dot)
+       << "\" fill=\"" << colour << "\"/>\n";
+  }
+  os << "</svg>\n";
+  io::write_text_file(path, os.str());
+}
+
+/// Raster picture (PNG, JPEG, PGM/PPM) of the same dots at the input's size, anti-aliased by 4 x 4
+/// supersampling of each pixel's coverage.
+void write_samples_raster(const std::string& path, const std::vector<Image_sample>& samples, int width, int height,
+                          double dot) {
+  io::Image picture;
+  picture.width = width;
+  picture.height = height;
+  picture.channels = 3;
+  std::vector<double> rgb(std::size_t(width) * std::size_t(height) * 3, dot_background);
+  for (const Image_sample& s : samples) {
+    const int c0 = std::max(0, static_cast<int>(std::floor(s.x - dot))), c1 = std::min(width - 1, static_cast<int>(s.x + dot));
+    const int r0 = std::max(0, static_cast<int>(std::floor(s.y - dot))), r1 = std::min(height - 1, static_cast<int>(s.y + dot));
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) {
+        int inside = 0;
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b) {
+            const double dx = c + (a + 0.5) / 4 - s.x, dy = r + (b + 0.5) / 4 - s.y;
+            inside += dx * dx + dy * dy <= dot * dot;
+          }
+        const double w = inside / 16.0;
+        double* p = &rgb[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
+        for (std::size_t k = 0; k < 3; ++k) p[k] = (1 - w) * p[k] + w * s.colour[k];
+      }
+  }
+  picture.data.resize(rgb.size());
+  for (std::size_t i = 0; i < rgb.size(); ++i) picture.data[i] = to_byte(rgb[i]);
+  io::write_image(path, picture);
+}
+
+/// Voronoi mosaic (PNG, JPEG, PGM/PPM): every pixel takes the colour of its nearest sample (ties: the lower
+/// sample index), the simplest reconstruction of the image from its samples. Returns it.
+io::Image make_mosaic(const std::vector<Image_sample>& samples, int width, int height) {
+  using K = CGAL::Simple_cartesian<double>;
+  using Point = K::Point_2;
+  using Traits = CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type,
+                                             CGAL::Search_traits_2<K>>;
+  using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  io::Image picture;
+  picture.width = width;
+  picture.height = height;
+  picture.channels = 3;
+  picture.data.assign(std::size_t(width) * std::size_t(height) * 3, 255);
+  if (!samples.empty()) {
+    std::vector<Point> points;
+    for (const Image_sample& x : samples) points.emplace_back(x.x, x.y);
+    std::vector<std::uint32_t> keys(samples.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = static_cast<std::uint32_t>(i);
+    typename Knn::Tree tree(keys.begin(), keys.end(), typename Knn::Tree::Splitter(),
+                            Traits(CGAL::make_property_map(points)));
+    tree.build();
+    typename Knn::Distance distance(tree.traits().point_property_map());
+    for (int r = 0; r < height; ++r)
+      for (int c = 0; c < width; ++c) {
+        const Point q(c + 0.5, r + 0.5);
+        Knn search(tree, q, 4, 0.0, true, distance);
+        std::uint32_t best = 0;
+        double best_d = std::numeric_limits<double>::infinity();
+        for (const auto& nb : search)  // the nearest, ties by index
+          if (nb.second < best_d || (nb.second == best_d && nb.first < best)) {
+            best = nb.first;
+            best_d = nb.second;
+          }
+        std::uint8_t* p = &picture.data[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
+        for (std::size_t k = 0; k < 3; ++k) p[k] = to_byte(samples[best].colour[k]);
+      }
+  }
+  return picture;
+}
+
+/// Peak signal-to-noise ratio (dB) of an RGB picture against the image (grey images compared on channel 0 of
+/// the picture); infinity when they are equal.
+double psnr(const io::Image& image, const io::Image& picture) {
+  double sum = 0;
+  const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < image.channels; ++c) {
+      const double d = double(image.data[i * std::size_t(image.channels) + std::size_t(c)]) - double(picture.data[3 * i + std::size_t(c)]);
+      sum += d * d;
+    }
+  const double mse = sum / double(n * std::size_t(image.channels));
+  return mse == 0 ? std::numeric_limits<double>::infinity() : 10 * std::log10(255.0 * 255.0 / mse);
+}
+}  // namespace
+
+int run_sample_image(const std::vector<std::string>& argv) {
+  const Arguments args(argv, {"grey", "quiet"},
+                       {"input", "count", "radius", "method", "sigma-feature", "seed", "out", "svg", "picture", "mosaic"});
+  const std::string input = args.get("input");
+  Sampler_settings s;
+  s.method = args.get_or("method", "elimination");
+  if (s.method != "elimination" && s.method != "darts" && s.method != "continuous")
+    throw Usage_error("--method must be elimination, darts or continuous, got '" + s.method + "'");
+  if (args.has("count")) {
+    s.count = args.get_int("count");
+    if (s.count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(s.count));
+  }
+  if (args.has("radius")) s.radius = args.get_positive_double("radius");
+  if (s.method == "elimination" && s.count == 0) throw Usage_error("--method elimination needs --count M");
+  if (s.method == "darts" && s.count == 0 && s.radius == 0) throw Usage_error("--method darts needs --count M or --radius R");
+  if (s.method == "continuous" && s.radius == 0)
+    throw Usage_error("--method continuous needs --radius R (pixels); --count M then caps the number of samples");
+  if (args.has("sigma-feature")) s.sigma_feature = args.get_positive_double("sigma-feature");
+  const long long seed = args.has("seed") ? args.get_int("seed") : 0;
+  if (seed < 0) throw Usage_error("--seed must be >= 0");
+  s.seed = static_cast<std::uint64_t>(seed);
+  if (!args.has("out") && !args.has("svg") && !args.has("picture") && !args.has("mosaic"))
+    throw Usage_error("give at least one of --out FILE, --svg FILE, --picture FILE, --mosaic FILE");
+
+  io::Image image = io::read_image(input);
+  if (args.has("grey")) image = to_grey(image);
+  const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+  if (s.method != "continuous" && s.count > static_cast<long long>(pixels))
+    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) + " pixels of " +
+                      input);
+
+  Progress progress("sampling", args.has("quiet"));
+  double used_radius = 0;
+  const std::vector<Image_sample> samples =
+      image.channels == 3 ? sample_image<Rgb_pixel, 3>(image, s, progress, used_radius)
+                          : sample_image<Grey_pixel, 1>(image, s, progress, used_radius);
+  progress.done(std::to_string(samples.size()) + " samples");
+  const double seconds = progress.seconds();
+
+  // Spacing on the image rectangle.
+  std::vector<CGAL::Epick::Point_2> positions;
+  for (const Image_sample& x : samples) positions.emplace_back(x.x, x.y);
+  fs::Sampling_quality_options q;
+  q.domain_measure = double(pixels);
+  q.intrinsic_dimension = 2;
+  const fs::Sampling_quality quality = samples.size() >= 2 ? fs::sampling_quality(positions, q)
+                                                           : fs::Sampling_quality();
+  const double d_hex = samples.empty() ? 1.0 : std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(samples.size())));
+  const double dot = 0.3 * d_hex;
+  if (args.has("out")) write_samples(args.get("out"), samples, std::size_t(image.channels));
+  if (args.has("svg")) write_samples_svg(args.get("svg"), samples, image.width, image.height, dot);
+  if (args.has("picture")) write_samples_raster(args.get("picture"), samples, image.width, image.height, dot);
+  double mosaic_psnr = std::numeric_limits<double>::quiet_NaN();
+  if (args.has("mosaic")) {
+    const io::Image mosaic = make_mosaic(samples, image.width, image.height);
+    mosaic_psnr = psnr(image, mosaic);
+    io::write_image(args.get("mosaic"), mosaic);
+  }
+
+  std::ostringstream os;
+  os << "{\"input\": \"" << input << "\", \"width\": " << image.width << ", \"height\": " << image.height
+     << ", \"channels\": " << image.channels << ", \"method\": \"" << s.method << "\", \"samples\": " << samples.size()
+     << ", \"radius\": " << json_number(used_radius) << ", \"sigma_feature\": " << json_number(s.sigma_feature)
+     << ", \"seed\": " << seed << ", \"relative_radius\": " << json_number(quality.relative_radius)
+     << ", \"average_minimum_distance\": " << json_number(quality.average_minimum_distance)
+     << ", \"seconds\": " << json_number(seconds);
+  if (args.has("mosaic")) os << ", \"mosaic_psnr_db\": " << json_number(mosaic_psnr);
+  os << "}\n";
+  std::fputs(os.str().c_str(), stdout);
+  return 0;
+}
+
+}  // namespace cli
+}  // namespace FeatureRecon
