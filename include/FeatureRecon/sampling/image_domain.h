@@ -38,6 +38,7 @@ inline void check_image(int width, int height, std::size_t channels, std::size_t
 
 /// The pixels of an 8-bit image as sampler items, rows from the top, channels interleaved.
 /// \tparam Pixel Grey_pixel (1 channel) or Rgb_pixel (3 channels).
+/// \param width columns (>= 0). \param height rows (>= 0).
 /// \param data width * height * channels values (checked; throws std::invalid_argument naming the sizes).
 template <class Pixel>
 std::vector<Pixel> image_pixels(int width, int height, const std::vector<std::uint8_t>& data) {
@@ -72,6 +73,7 @@ class Bilinear_image {
  public:
   using Feature = std::array<double, Channels>;  ///< the interpolated channels, each in [0, 1]
 
+  /// \param width columns (>= 0). \param height rows (>= 0).
   /// \param data width * height * Channels values, rows from the top, channels interleaved (checked; throws
   ///   std::invalid_argument naming the sizes). An empty image (width or height 0) has an empty box.
   Bilinear_image(int width, int height, std::vector<std::uint8_t> data)
@@ -85,6 +87,7 @@ class Bilinear_image {
   std::array<double, 4> box() const { return {0.0, 0.0, double(m_width), double(m_height)}; }
 
   /// The colour at (x, y). \pre the image is not empty and x, y are finite.
+  /// \param x column coordinate in pixels. \param y row coordinate in pixels (down).
   Feature operator()(double x, double y) const {
     const double u = clamp(x - 0.5, m_width), v = clamp(y - 0.5, m_height);
     const int c0 = static_cast<int>(std::floor(u)), r0 = static_cast<int>(std::floor(v));
@@ -112,7 +115,7 @@ class Bilinear_image {
 /// same scale as Pixel_traits' feature distance, so one sigma_feature means the same for pixels and for the
 /// continuous image).
 struct Mean_squared_channel_distance {
-  /// The distance. \tparam C the number of channels.
+  /// The distance. \tparam C the number of channels. \param a one colour. \param b the other.
   template <std::size_t C>
   double operator()(const std::array<double, C>& a, const std::array<double, C>& b) const {
     double s = 0;
