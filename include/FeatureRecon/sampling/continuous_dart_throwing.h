@@ -6,6 +6,7 @@
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/internal/box.h>
 #include <FeatureRecon/sampling/internal/sample_set.h>
 #include <FeatureRecon/sampling/sampling_options.h>
 
@@ -51,11 +52,7 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
                                         const Continuous_dart_throwing_options& options = {}) {
   using Feature = std::decay_t<decltype(feature_at(0.0, 0.0))>;
   const char* fn = "continuous_bilateral_dart_throwing";
-  for (int k = 0; k < 4; ++k)
-    if (!std::isfinite(box[std::size_t(k)]))
-      FeatureRecon::internal::throw_invalid_argument(fn, "box[", k, "] is not finite (", box[std::size_t(k)], ")");
-  if (!(box[0] <= box[2] && box[1] <= box[3]))
-    FeatureRecon::internal::throw_invalid_argument(fn, "box must be {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1");
+  internal::check_box(box, fn);
   if (!(std::isfinite(radius) && radius > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);

@@ -1,0 +1,528 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SAMPLING_LLOYD_RELAXATION_H
+#define FEATURERECON_SAMPLING_LLOYD_RELAXATION_H
+
+/// \file
+/// Lloyd relaxation towards a centroidal Voronoi tessellation (dissertation Sec. 2.1.2) of a box with a pixel
+/// density: Voronoi cells from CGAL's Delaunay_triangulation_2 (exact predicates), clipped to the box, with
+/// the density integrated exactly over the part of every pixel each cell covers. A constant density gives
+/// plain Lloyd relaxation; the darkness of an image gives adaptive (weighted) Lloyd stippling (Secord 2002).
+/// Stages: clipped_voronoi_cells() (the cells), Pixel_density::integrate() (their moments), lloyd_step()
+/// (one iteration), lloyd_relaxation() (iterations with stopping rules and per-iteration statistics).
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/point_traits.h>
+#include <FeatureRecon/sampling/internal/box.h>
+#include <FeatureRecon/sampling/pixel_density.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace FeatureRecon {
+namespace sampling {
+
+/// A convex polygon, counter-clockwise (CGAL's orientation), vertices not repeated.
+using Polygon_2d = std::vector<std::array<double, 2>>;
+
+/// Statistics of one Lloyd iteration, taken at the sites before they move.
+struct Lloyd_iteration_statistics {
+  std::size_t iteration = 0;  ///< 1 for the first iteration
+  /// CVT energy sum_i integral over cell i of rho(x) |x - p_i|^2 (decreases monotonically under Lloyd).
+  double energy = 0;
+  double max_move = 0;   ///< largest distance a site moved in this iteration (pixels)
+  double mean_move = 0;  ///< mean distance the sites moved (pixels)
+  /// Relative radius rho = d_min / d_hex of the sites over the box (d_hex = sqrt(2 A / (sqrt(3) N))), from the
+  /// shortest Delaunay edge: the packing quality for a constant density (1 for the hexagonal lattice).
+  double relative_radius = 0;
+  /// Oscillation of the sites' spectrum (Heck et al., positions scaled to the unit square), measured when
+  /// the caller's on_iteration callback computes it; NaN otherwise. See sampling_spectrum().
+  double oscillation = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// Why lloyd_relaxation() stopped.
+enum class Lloyd_stop {
+  iteration_cap,     ///< max_iterations were done
+  energy_tolerance,  ///< the relative energy decrease fell below energy_tolerance
+  move_tolerance,    ///< the largest move fell below move_tolerance
+  callback,          ///< on_iteration returned false (early stopping on the caller's quality rule)
+  interrupted        ///< the progress callback returned false
+};
+
+/// Options of lloyd_relaxation().
+struct Lloyd_options {
+  std::size_t max_iterations = 100;  ///< iteration cap; default 100
+  /// Stop when (E_prev - E) / E_prev < energy_tolerance after an iteration; default 0 (never).
+  double energy_tolerance = 0;
+  /// Stop when no site moved farther than this (pixels); default 0 (never).
+  double move_tolerance = 0;
+  /// Called after each iteration with its statistics and the sites after the move (it may fill in the
+  /// oscillation, which lloyd_relaxation() stores in the history); returning false stops there. Lloyd drifts
+  /// towards a lattice, so blue-noise users stop early on rho or the oscillation. Default: none.
+  std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, 2>>&)> on_iteration;
+  Progress_callback progress;  ///< fraction of max_iterations done; returning false stops (sites so far kept)
+};
+
+/// Result of lloyd_step().
+struct Lloyd_step_result {
+  std::vector<std::array<double, 2>> centroids;  ///< per site: the centroid of its cell (the site itself when the cell has no mass)
+  std::vector<double> mass;                      ///< per site: the density integral over its cell
+  double energy = 0;           ///< CVT energy of the sites given to the step
+  double minimum_distance = 0;  ///< shortest distance between two sites at distinct positions (infinity for fewer than two)
+  std::size_t duplicates = 0;  ///< sites at the position of a lower-indexed site (their cells are empty)
+};
+
+/// Result of lloyd_relaxation().
+struct Lloyd_result {
+  std::vector<std::array<double, 2>> sites;           ///< final positions, in input order
+  std::vector<double> mass;                           ///< density mass of each site's cell at the last iteration
+  std::vector<Lloyd_iteration_statistics> history;    ///< one entry per iteration done
+  Lloyd_stop stop = Lloyd_stop::iteration_cap;        ///< why it stopped
+  /// degenerate_input for no sites, an empty box or a density that is zero everywhere (nothing moves);
+  /// interrupted when the progress callback stopped it.
+  Status status = Status::success;
+};
+
+namespace internal {
+/// \cond
+struct Voronoi_builder {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
+  struct Face_data {
+    std::array<double, 2> circumcenter;  // the Voronoi vertex
+    bool inside;                         // it lies in the box
+    // Per edge i (opposite vertex i): the density integrals along its Voronoi edge, walked counter-clockwise
+    // around the lower-ranked of its two sites (see rank_less).
+    std::array<Density_moments, 3> edge;
+  };
+  using Fb = CGAL::Triangulation_face_base_with_info_2<Face_data, K>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using Dt = CGAL::Delaunay_triangulation_2<K, Tds>;
+  static constexpr std::uint32_t dummy = std::numeric_limits<std::uint32_t>::max();
+
+  Dt dt;
+  std::vector<std::uint32_t> owner;  // per site: the lowest index at the same position (itself if unique)
+  std::size_t duplicates = 0;
+  std::size_t sites = 0;
+  std::array<double, 4> frame{0, 0, 0, 0};
+  std::vector<Dt::Vertex_handle> vertex;  // per site (owners only)
+  std::size_t rebuilds = 0, flip_updates = 0;  // how each triangulation was made (for benchmarks and tests)
+  double minimum_distance = std::numeric_limits<double>::infinity();
+
+  // The Delaunay triangulation of the sites with four far corners, so every site is interior and its cell
+  // bounded; the corners are 3 max(width, height) outside the box, farther from any box point than every
+  // site, so the cells restricted to the box are those of the sites alone. When the previous call had the
+  // same number of sites, no duplicates and the same box, the sites are moved in place: if every triangle
+  // keeps its orientation (exact predicate) the triangulation stays valid and Lawson flips (exact, perturbed
+  // in-circle test, as CGAL's insertion) make it Delaunay again; otherwise it is rebuilt.
+  void build(const std::vector<std::array<double, 2>>& points, const std::array<double, 4>& box) {
+    if (!(sites == points.size() && duplicates == 0 && box == frame && sites != 0 && move(points))) rebuild(points, box);
+    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+      // The vertices in rank order, so the rounded circumcentre does not depend on how the face stores them.
+      std::array<Dt::Vertex_handle, 3> v{f->vertex(0), f->vertex(1), f->vertex(2)};
+      std::sort(v.begin(), v.end(), [](Dt::Vertex_handle a, Dt::Vertex_handle b) { return rank_less(a, b); });
+      const auto c = CGAL::circumcenter(v[0]->point(), v[1]->point(), v[2]->point());
+      f->info().circumcenter = {c.x(), c.y()};
+      f->info().inside = c.x() >= box[0] && c.x() <= box[2] && c.y() >= box[1] && c.y() <= box[3];
+    }
+    double shortest = std::numeric_limits<double>::infinity();
+    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+      const auto a = e->first->vertex(Dt::cw(e->second)), b = e->first->vertex(Dt::ccw(e->second));
+      if (a->info() == dummy || b->info() == dummy) continue;
+      shortest = std::min(shortest, CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
+    }
+    minimum_distance = std::sqrt(shortest);
+  }
+
+  void rebuild(const std::vector<std::array<double, 2>>& points, const std::array<double, 4>& box) {
+    ++rebuilds;
+    dt.clear();
+    frame = box;
+    sites = points.size();
+    const std::size_t n = points.size();
+    const double reach = 3 * std::max({box[2] - box[0], box[3] - box[1], 1.0});
+    std::vector<std::pair<K::Point_2, std::uint32_t>> input;
+    input.reserve(n + 4);
+    for (std::size_t i = 0; i < n; ++i) input.emplace_back(K::Point_2(points[i][0], points[i][1]), std::uint32_t(i));
+    const double xs[2] = {box[0] - reach, box[2] + reach}, ys[2] = {box[1] - reach, box[3] + reach};
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) input.emplace_back(K::Point_2(xs[a], ys[b]), dummy);
+    dt.insert(input.begin(), input.end());
+    owner.resize(n);
+    std::iota(owner.begin(), owner.end(), std::uint32_t(0));
+    duplicates = n + 4 - dt.number_of_vertices();
+    if (duplicates != 0) {
+      // Equal positions share one vertex, whose info is whichever copy came last: give the cell to the lowest
+      // index (a symbolic tie-break); the other copies get empty cells.
+      std::vector<std::uint32_t> order(n);
+      std::iota(order.begin(), order.end(), std::uint32_t(0));
+      std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return points[a] != points[b] ? points[a] < points[b] : a < b;
+      });
+      for (std::size_t k = 1; k < n; ++k)
+        if (points[order[k]] == points[order[k - 1]]) owner[order[k]] = owner[order[k - 1]];
+      for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+        if (v->info() != dummy) v->info() = owner[v->info()];
+    }
+    vertex.assign(n, Dt::Vertex_handle());
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+      if (v->info() != dummy) vertex[v->info()] = v;
+  }
+
+  // Moves every vertex to its site's new position. Vertices of triangles that would lose their
+  // counter-clockwise orientation (exact predicate) keep their old position for the flips and are moved
+  // afterwards one by one with CGAL's move_if_no_collision. False (the caller rebuilds) when more than an
+  // eighth of the vertices would need that, or when a move collides with another site.
+  bool move(const std::vector<std::array<double, 2>>& points) {
+    const std::size_t n = points.size();
+    std::vector<K::Point_2> old(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      old[i] = vertex[i]->point();
+      vertex[i]->set_point(K::Point_2(points[i][0], points[i][1]));
+    }
+    const auto orientation = dt.geom_traits().orientation_2_object();
+    std::vector<std::uint32_t> held;
+    std::vector<char> is_held(n, 0);
+    for (bool inverted = true; inverted;) {
+      inverted = false;
+      for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+        if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) == CGAL::POSITIVE)
+          continue;
+        inverted = true;
+        for (int k = 0; k < 3; ++k) {
+          const std::uint32_t i = f->vertex(k)->info();
+          if (i == dummy || is_held[i]) continue;
+          is_held[i] = 1;
+          held.push_back(i);
+          vertex[i]->set_point(old[i]);
+        }
+      }
+      if (held.size() > n / 8) return false;
+    }
+    // Lawson flips until every edge is locally Delaunay (passes over the faces in container order; flips
+    // reuse the two faces, so the iterators stay valid).
+    for (bool flipped = true; flipped;) {
+      flipped = false;
+      for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+        for (int i = 0; i < 3; ++i) {
+          const auto g = f->neighbor(i);
+          // Each edge once, chosen by the indices of its ends (never by address: the flips, and with them
+          // the rounding of the circumcentres, must not depend on where the faces live).
+          if (dt.is_infinite(g) || !(f->vertex(Dt::ccw(i))->info() < f->vertex(Dt::cw(i))->info())) continue;
+          if (dt.side_of_oriented_circle(g, f->vertex(i)->point(), true) == CGAL::ON_POSITIVE_SIDE) {
+            dt.flip(f, i);
+            flipped = true;
+          }
+        }
+    }
+    std::sort(held.begin(), held.end());  // a fixed order: the result does not depend on the face order
+    for (const std::uint32_t i : held)
+      if (dt.move_if_no_collision(vertex[i], K::Point_2(points[i][0], points[i][1])) != vertex[i]) return false;
+    ++flip_updates;
+    return true;
+  }
+
+  // The cell of a vertex (a convex polygon, counter-clockwise), clipped to the box; empty when it misses it.
+  // A total order of the vertices that does not depend on memory: site index, then (for the far corners,
+  // which share one index) coordinates. Every rounded quantity is computed in an order fixed by it, because
+  // the faces' layout is not fixed: CGAL's vertex moves order faces by handle.
+  static bool rank_less(Dt::Vertex_handle a, Dt::Vertex_handle b) {
+    if (a->info() != b->info()) return a->info() < b->info();
+    return a->point() < b->point();
+  }
+
+  // The incident face of v from which its Voronoi cell is walked: the one whose counter-clockwise-next edge
+  // around v goes to the lowest-ranked neighbour.
+  Dt::Face_circulator first_face(Dt::Vertex_handle v) const {
+    auto f = dt.incident_faces(v), end = f, best = f;
+    Dt::Vertex_handle lowest = f->vertex(Dt::cw(f->index(v)));
+    while (++f != end) {
+      const Dt::Vertex_handle w = f->vertex(Dt::cw(f->index(v)));
+      if (rank_less(w, lowest)) {
+        lowest = w;
+        best = f;
+      }
+    }
+    return best;
+  }
+
+  void cell(Dt::Vertex_handle v, const std::array<double, 4>& box, Polygon_2d& out, Polygon_2d& scratch) const {
+    out.clear();
+    auto f = first_face(v), end = f;
+    bool inside = true;
+    do {
+      inside = inside && f->info().inside;
+      out.push_back(f->info().circumcenter);
+    } while (++f != end);
+    if (!inside) clip(box, out, scratch);
+  }
+
+  // Sutherland-Hodgman against the four sides of the box (convex polygon, so the result is one polygon).
+  static void clip(const std::array<double, 4>& box, Polygon_2d& poly, Polygon_2d& scratch) {
+    for (int side = 0; side < 4 && !poly.empty(); ++side) {
+      const int axis = side & 1;                // 0: x, 1: y
+      const bool lower = side < 2;              // keep coordinate >= box[axis] or <= box[2 + axis]
+      const double bound = lower ? box[std::size_t(axis)] : box[std::size_t(2 + axis)];
+      auto in = [&](const std::array<double, 2>& p) { return lower ? p[axis] >= bound : p[axis] <= bound; };
+      scratch.clear();
+      const std::size_t n = poly.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto& a = poly[i];
+        const auto& b = poly[(i + 1) % n];
+        const bool ia = in(a), ib = in(b);
+        if (ia) scratch.push_back(a);
+        if (ia != ib) {
+          const double t = (bound - a[axis]) / (b[axis] - a[axis]);
+          std::array<double, 2> p;
+          p[axis] = bound;
+          p[1 - axis] = a[1 - axis] + t * (b[1 - axis] - a[1 - axis]);
+          scratch.push_back(p);
+        }
+      }
+      std::swap(poly, scratch);
+    }
+  }
+};
+
+// Reads 2D sites through PointCoordinateTraits and checks that they lie in the box.
+template <class PointRange, class Traits>
+std::vector<std::array<double, 2>> read_sites(const PointRange& points, const std::array<double, 4>& box,
+                                              const Traits& traits, const char* fn) {
+  std::vector<std::array<double, 2>> sites;
+  std::size_t i = 0;
+  for (const auto& p : points) {
+    if (traits.dimension(p) != 2)
+      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has ", traits.dimension(p),
+                                                     " coordinates, expected 2");
+    const std::array<double, 2> q{traits.coordinate(p, 0), traits.coordinate(p, 1)};
+    if (!(std::isfinite(q[0]) && std::isfinite(q[1])))
+      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a non-finite coordinate");
+    if (!(q[0] >= box[0] && q[0] <= box[2] && q[1] >= box[1] && q[1] <= box[3]))
+      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " (", q[0], ", ", q[1], ") lies outside the box [",
+                                                     box[0], ", ", box[2], "] x [", box[1], ", ", box[3], "]");
+    sites.push_back(q);
+    ++i;
+  }
+  return sites;
+}
+
+// One Lloyd step on checked sites. A cell whose Voronoi vertices all lie in the box (an interior cell) is
+// integrated edge by edge: each Voronoi edge between two interior cells once, added to one and subtracted
+// from the other; the cells that touch the box are clipped and integrated whole.
+inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>>& sites, const Pixel_density& density,
+                                         Voronoi_builder& voronoi) {
+  using Dt = Voronoi_builder::Dt;
+  Lloyd_step_result r;
+  const std::size_t n = sites.size();
+  r.centroids = sites;
+  r.mass.assign(n, 0.0);
+  r.minimum_distance = std::numeric_limits<double>::infinity();
+  if (n == 0) return r;
+  const auto box = density.box();
+  voronoi.build(sites, box);
+  r.duplicates = voronoi.duplicates;
+  r.minimum_distance = voronoi.minimum_distance;
+  std::vector<char> interior(n, 0);
+  for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v)
+    if (v->info() != Voronoi_builder::dummy) interior[v->info()] = 1;
+  for (auto f = voronoi.dt.finite_faces_begin(); f != voronoi.dt.finite_faces_end(); ++f)
+    if (!f->info().inside)
+      for (int k = 0; k < 3; ++k)
+        if (f->vertex(k)->info() != Voronoi_builder::dummy) interior[f->vertex(k)->info()] = 0;
+  // Each Voronoi edge next to an interior cell, integrated once, counter-clockwise around its lower-ranked
+  // site: stored in both faces of the Delaunay edge.
+  for (auto e = voronoi.dt.finite_edges_begin(); e != voronoi.dt.finite_edges_end(); ++e) {
+    const auto f = e->first;
+    const int i = e->second;
+    const auto g = f->neighbor(i);
+    if (voronoi.dt.is_infinite(g)) continue;
+    const auto va = f->vertex(Dt::ccw(i)), vb = f->vertex(Dt::cw(i));
+    const std::uint32_t a = va->info(), b = vb->info();
+    const bool ia = a != Voronoi_builder::dummy && interior[a], ib = b != Voronoi_builder::dummy && interior[b];
+    if (!ia && !ib) continue;
+    // Around a counter-clockwise, g comes just before f: the edge runs c(g) -> c(f) on a's cell.
+    const bool from_a = Voronoi_builder::rank_less(va, vb);
+    const auto& p = (from_a ? g : f)->info().circumcenter;
+    const auto& q = (from_a ? f : g)->info().circumcenter;
+    Density_moments m;
+    density.integrate_segment(p[0], p[1], q[0], q[1], m);
+    f->info().edge[std::size_t(i)] = m;
+    g->info().edge[std::size_t(voronoi.dt.mirror_index(f, i))] = m;
+  }
+  // Interior cells: their edges summed in a fixed order (from first_face, counter-clockwise). The cells are
+  // visited in the triangulation's order, which is local in space (the order of the sums is per cell).
+  std::vector<Density_moments> moments(n);
+  for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
+    const std::uint32_t i = v->info();
+    if (i == Voronoi_builder::dummy || !interior[i]) continue;
+    auto f = voronoi.first_face(v), end = f;
+    do {
+      // The edge between this face and the next one counter-clockwise: to w = vertex(cw(index(v))).
+      const int iv = f->index(v);
+      const Density_moments& m = f->info().edge[std::size_t(Dt::ccw(iv))];
+      if (Voronoi_builder::rank_less(v, f->vertex(Dt::cw(iv))))
+        moments[i] += m;
+      else
+        moments[i] -= m;
+    } while (++f != end);
+  }
+  Polygon_2d cell, scratch;
+  for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
+    const std::uint32_t i = v->info();
+    if (i == Voronoi_builder::dummy || interior[i]) continue;
+    voronoi.cell(v, box, cell, scratch);
+    moments[i] = density.integrate(cell);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (voronoi.owner[i] != i) continue;  // a duplicate: empty cell, stays
+    const Density_moments& m = moments[i];
+    const auto& p = sites[i];
+    r.mass[i] = m.mass;
+    // integral of rho |x - p|^2 = M2 - 2 p . M1 + |p|^2 M0; clamped at 0 against rounding.
+    r.energy += std::max(0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
+    if (m.mass > 0) {
+      // The centroid lies in the convex cell, inside the box; clamp against rounding.
+      r.centroids[i] = {std::min(std::max(m.moment_x / m.mass, box[0]), box[2]),
+                        std::min(std::max(m.moment_y / m.mass, box[1]), box[3])};
+    }
+  }
+  return r;
+}
+/// \endcond
+}  // namespace internal
+
+/// The Voronoi cells of the sites clipped to the box [x0, x1] x [y0, y1], from CGAL's Delaunay_triangulation_2
+/// (exact predicates; the Voronoi vertices are the circumcentres, computed in double). Sites at the position
+/// of a lower-indexed site get an empty cell (ties go to the lowest index).
+/// \tparam PointRange a range of 2D points. \tparam Traits a model of PointCoordinateTraits.
+/// \param points the sites, inside the box.
+/// \param box {x0, y0, x1, y1}, finite with x0 <= x1 and y0 <= y1 (checked; throws).
+/// \param traits reads the sites' coordinates.
+/// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+std::vector<Polygon_2d> clipped_voronoi_cells(const PointRange& points, const std::array<double, 4>& box,
+                                              const Traits& traits = Traits()) {
+  const char* fn = "clipped_voronoi_cells";
+  const auto b = internal::check_box(box, fn);
+  const auto sites = internal::read_sites(points, b, traits, fn);
+  std::vector<Polygon_2d> cells(sites.size());
+  if (sites.empty()) return cells;
+  internal::Voronoi_builder voronoi;
+  voronoi.build(sites, b);
+  Polygon_2d scratch;
+  for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v)
+    if (v->info() != internal::Voronoi_builder::dummy) voronoi.cell(v, b, cells[v->info()], scratch);
+  return cells;
+}
+
+/// One Lloyd iteration: the centroid of every site's Voronoi cell (clipped to the density's box) under the
+/// pixel density, the cell masses and the CVT energy of the given sites.
+/// \tparam PointRange a range of 2D points. \tparam Traits a model of PointCoordinateTraits.
+/// \param points the sites, inside the density's box.
+/// \param density the density and its box.
+/// \param traits reads the sites' coordinates.
+/// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+Lloyd_step_result lloyd_step(const PointRange& points, const Pixel_density& density, const Traits& traits = Traits()) {
+  const auto sites = internal::read_sites(points, density.box(), traits, "lloyd_step");
+  internal::Voronoi_builder voronoi;
+  return internal::lloyd_step_impl(sites, density, voronoi);
+}
+
+/// Lloyd relaxation of the sites under the pixel density: each iteration moves every site to the centroid of
+/// its Voronoi cell (clipped to the density's box, density integrated exactly per pixel). Stops at
+/// max_iterations, when the relative energy decrease or the largest move falls below its tolerance, or when
+/// on_iteration returns false. Deterministic: the same sites give bit-identical output. O(N log N + C) per
+/// iteration for N sites whose cell boundaries cross C pixel sides.
+/// \tparam PointRange a range of 2D points (the initial sites, for example from dart throwing).
+/// \tparam Traits a model of PointCoordinateTraits.
+/// \param points the initial sites, inside the density's box.
+/// \param density the density and its box.
+/// \param options iteration cap, tolerances, per-iteration callback and progress.
+/// \param traits reads the sites' coordinates.
+/// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box,
+///   or for a negative or non-finite tolerance.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& density, const Lloyd_options& options = {},
+                              const Traits& traits = Traits()) {
+  const char* fn = "lloyd_relaxation";
+  if (!(std::isfinite(options.energy_tolerance) && options.energy_tolerance >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance must be finite and >= 0, got ",
+                                                   options.energy_tolerance);
+  if (!(std::isfinite(options.move_tolerance) && options.move_tolerance >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "move_tolerance must be finite and >= 0, got ",
+                                                   options.move_tolerance);
+  Lloyd_result result;
+  result.sites = internal::read_sites(points, density.box(), traits, fn);
+  const std::size_t n = result.sites.size();
+  result.mass.assign(n, 0.0);
+  if (n == 0 || density.width() == 0 || density.height() == 0 || !(density.total_mass() > 0)) {
+    result.status = Status::degenerate_input;
+    return result;
+  }
+  const double area = double(density.width()) * double(density.height());
+  const double hexagonal = std::sqrt(2 * area / (std::sqrt(3.0) * double(n)));
+  internal::Voronoi_builder voronoi;
+  double previous_energy = std::numeric_limits<double>::infinity();
+  for (std::size_t it = 0; it < options.max_iterations; ++it) {
+    if (!FeatureRecon::internal::report_progress(options.progress, double(it) / double(options.max_iterations))) {
+      result.stop = Lloyd_stop::interrupted;
+      result.status = Status::interrupted;
+      return result;
+    }
+    Lloyd_step_result step = internal::lloyd_step_impl(result.sites, density, voronoi);
+    Lloyd_iteration_statistics s;
+    s.iteration = it + 1;
+    s.energy = step.energy;
+    s.relative_radius = n < 2 ? 0.0 : std::isinf(step.minimum_distance) ? 0.0 : step.minimum_distance / hexagonal;
+    if (step.duplicates != 0) s.relative_radius = 0;
+    double total_move = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d = std::hypot(step.centroids[i][0] - result.sites[i][0], step.centroids[i][1] - result.sites[i][1]);
+      s.max_move = std::max(s.max_move, d);
+      total_move += d;
+    }
+    s.mean_move = total_move / double(n);
+    result.sites = std::move(step.centroids);
+    result.mass = std::move(step.mass);
+    bool go_on = true;
+    if (options.on_iteration) go_on = options.on_iteration(s, result.sites);
+    result.history.push_back(s);
+    if (!go_on) {
+      result.stop = Lloyd_stop::callback;
+      break;
+    }
+    if (s.max_move <= options.move_tolerance && options.move_tolerance > 0) {
+      result.stop = Lloyd_stop::move_tolerance;
+      break;
+    }
+    if (options.energy_tolerance > 0 && std::isfinite(previous_energy) && previous_energy > 0 &&
+        (previous_energy - s.energy) / previous_energy < options.energy_tolerance) {
+      result.stop = Lloyd_stop::energy_tolerance;
+      break;
+    }
+    previous_energy = s.energy;
+  }
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  return result;
+}
+
+}  // namespace sampling
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SAMPLING_LLOYD_RELAXATION_H

@@ -1,0 +1,338 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Continuous Lloyd relaxation: exact pixel-density integrals (against per-pixel clipping), clipped Voronoi
+// cells (against brute-force nearest sites), Lloyd steps (fixed points, energy monotone, degenerate sites).
+#include <FeatureRecon/sampling/lloyd_relaxation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using P2 = std::array<double, 2>;
+
+// Area, first and second moments of a polygon (shoelace formulas), counter-clockwise.
+Density_moments polygon_moments(const Polygon_2d& poly) {
+  Density_moments m;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& a = poly[i];
+    const auto& b = poly[(i + 1) % n];
+    const double c = a[0] * b[1] - b[0] * a[1];
+    m.mass += c / 2;
+    m.moment_x += (a[0] + b[0]) * c / 6;
+    m.moment_y += (a[1] + b[1]) * c / 6;
+    m.moment_2 += (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] + b[1] * b[1]) * c / 12;
+  }
+  return m;
+}
+
+// The oracle: clip the polygon to every pixel and weight the pixel's piece by its density.
+Density_moments brute_force_moments(const Polygon_2d& poly, const Pixel_density& d) {
+  Density_moments total;
+  for (int row = 0; row < d.height(); ++row)
+    for (int column = 0; column < d.width(); ++column) {
+      Polygon_2d piece = poly, scratch;
+      sampling::internal::Voronoi_builder::clip({double(column), double(row), column + 1.0, row + 1.0}, piece, scratch);
+      if (piece.size() < 3) continue;
+      Density_moments m = polygon_moments(piece);
+      const double r = d.value(column, row);
+      total.mass += r * m.mass;
+      total.moment_x += r * m.moment_x;
+      total.moment_y += r * m.moment_y;
+      total.moment_2 += r * m.moment_2;
+    }
+  return total;
+}
+
+Pixel_density random_density(int w, int h, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> v(std::size_t(w * h));
+  for (auto& x : v) x = u(rng) < 0.2 ? 0.0 : u(rng) * 10;
+  return Pixel_density(w, h, v);
+}
+
+void expect_moments_near(const Density_moments& a, const Density_moments& b, double scale) {
+  EXPECT_NEAR(a.mass, b.mass, 1e-10 * scale);
+  EXPECT_NEAR(a.moment_x, b.moment_x, 1e-9 * scale);
+  EXPECT_NEAR(a.moment_y, b.moment_y, 1e-9 * scale);
+  EXPECT_NEAR(a.moment_2, b.moment_2, 1e-8 * scale);
+}
+
+TEST(PixelDensity, ExactOnRandomPolygonsAgainstPerPixelClipping) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int w = 1 + int(rng() % 9), h = 1 + int(rng() % 7);
+    const Pixel_density d = random_density(w, h, rng);
+    // A random convex polygon: the clipped Voronoi cell of a random site among random sites.
+    std::uniform_real_distribution<double> ux(0, w), uy(0, h);
+    std::vector<P2> sites(2 + rng() % 6);
+    for (auto& s : sites) s = {ux(rng), uy(rng)};
+    const auto cells = clipped_voronoi_cells(sites, d.box());
+    for (const auto& cell : cells) {
+      ASSERT_GE(cell.size(), 3u);
+      expect_moments_near(d.integrate(cell), brute_force_moments(cell, d), double(w * h) * 100);
+    }
+    // A triangle with vertices on pixel corners and sides (exact grid hits).
+    const Polygon_2d tri{{0.0, 0.0}, {double(w), 0.0}, {double(rng() % (w + 1)), double(h)}};
+    expect_moments_near(d.integrate(tri), brute_force_moments(tri, d), double(w * h) * 100);
+  }
+}
+
+TEST(PixelDensity, ClockwiseGivesNegativeAndUniformMatchesShoelace) {
+  const Pixel_density d = Pixel_density::uniform(5, 4);
+  const Polygon_2d quad{{0.5, 0.25}, {4.75, 1.0}, {3.0, 3.9}, {1.0, 3.0}};
+  const Density_moments m = d.integrate(quad), exact = polygon_moments(quad);
+  expect_moments_near(m, exact, 100);
+  const Polygon_2d reversed(quad.rbegin(), quad.rend());
+  EXPECT_NEAR(d.integrate(reversed).mass, -exact.mass, 1e-12);
+  EXPECT_DOUBLE_EQ(d.total_mass(), 20.0);
+  EXPECT_NEAR(d.integrate({{0, 0}, {5, 0}, {5, 4}, {0, 4}}).mass, 20.0, 1e-12);
+}
+
+TEST(PixelDensity, BadValuesNamed) {
+  try {
+    Pixel_density(2, 2, {1, 1, -1, 1});
+    FAIL() << "negative density accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("values[2] (column 0, row 1)"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(Pixel_density(2, 2, {1, 1, 1}), std::invalid_argument);
+  EXPECT_THROW(Pixel_density(1, 1, {std::nan("")}), std::invalid_argument);
+}
+
+// Every cell holds exactly the box points whose nearest site is its own (ties aside).
+void check_cells(const std::vector<P2>& sites, const std::array<double, 4>& box, std::mt19937_64& rng) {
+  const auto cells = clipped_voronoi_cells(sites, box);
+  ASSERT_EQ(cells.size(), sites.size());
+  double area = 0;
+  for (const auto& c : cells) area += c.size() >= 3 ? polygon_moments(c).mass : 0.0;
+  EXPECT_NEAR(area, (box[2] - box[0]) * (box[3] - box[1]), 1e-9 * (box[2] - box[0]) * (box[3] - box[1]));
+  auto inside = [](const Polygon_2d& c, const P2& q) {
+    if (c.size() < 3) return false;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const auto& a = c[i];
+      const auto& b = c[(i + 1) % c.size()];
+      if ((b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) < -1e-9) return false;
+    }
+    return true;
+  };
+  std::uniform_real_distribution<double> ux(box[0], box[2]), uy(box[1], box[3]);
+  for (int k = 0; k < 300; ++k) {
+    const P2 q{ux(rng), uy(rng)};
+    std::size_t best = 0;
+    double bd = 1e300, second = 1e300;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      const double d = std::hypot(q[0] - sites[i][0], q[1] - sites[i][1]);
+      if (d < bd) {
+        second = bd;
+        bd = d;
+        best = i;
+      } else if (d < second && sites[i] != sites[best]) {
+        second = d;
+      }
+    }
+    if (second - bd < 1e-7) continue;  // a tie: either cell may hold it
+    EXPECT_TRUE(inside(cells[best], q)) << "point (" << q[0] << ", " << q[1] << ") not in the cell of site " << best;
+  }
+}
+
+TEST(ClippedVoronoiCells, MatchBruteForceOnRandomAndDegenerateSites) {
+  std::mt19937_64 rng(3);
+  const std::array<double, 4> box{0, 0, 10, 6};
+  std::uniform_real_distribution<double> ux(0, 10), uy(0, 6);
+  std::vector<P2> random(50);
+  for (auto& s : random) s = {ux(rng), uy(rng)};
+  check_cells(random, box, rng);
+  check_cells({{3.0, 2.0}}, box, rng);                                       // one site: the whole box
+  check_cells({{1.0, 1.0}, {2.0, 2.0}, {3.0, 3.0}, {4.0, 4.0}}, box, rng);  // collinear: parallel strips
+  std::vector<P2> grid;                                                      // cocircular everywhere
+  for (int i = 0; i <= 10; i += 2)
+    for (int j = 0; j <= 6; j += 2) grid.push_back({double(i), double(j)});  // including the box corners
+  check_cells(grid, box, rng);
+  check_cells({{5.0, 3.0}, {5.0, 3.0}, {2.0, 1.0}, {5.0, 3.0}}, box, rng);  // duplicates
+  const auto cells = clipped_voronoi_cells(std::vector<P2>{{5.0, 3.0}, {2.0, 1.0}, {5.0, 3.0}}, box);
+  EXPECT_GE(cells[0].size(), 3u);
+  EXPECT_TRUE(cells[2].empty()) << "the higher-indexed copy owns the cell";
+  EXPECT_TRUE(clipped_voronoi_cells(std::vector<P2>{}, box).empty());
+  // CGAL points through the default traits.
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const auto cgal = clipped_voronoi_cells(std::vector<K::Point_2>{{1, 1}, {9, 5}}, box);
+  EXPECT_NEAR(polygon_moments(cgal[0]).mass + polygon_moments(cgal[1]).mass, 60.0, 1e-9);
+}
+
+TEST(ClippedVoronoiCells, BadSitesNamed) {
+  const std::array<double, 4> box{0, 0, 4, 4};
+  try {
+    (void)clipped_voronoi_cells(std::vector<P2>{{1, 1}, {2, 2}, {4.5, 1}}, box);
+    FAIL() << "site outside the box accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("site 2 (4.5, 1) lies outside the box"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)clipped_voronoi_cells(std::vector<P2>{{1, std::nan("")}}, box), std::invalid_argument);
+  EXPECT_THROW((void)clipped_voronoi_cells(std::vector<P2>{{1, 1}}, {0, 0, -1, 4}), std::invalid_argument);
+  EXPECT_THROW((void)clipped_voronoi_cells(std::vector<std::vector<double>>{{1, 1, 1}}, box), std::invalid_argument);
+}
+
+TEST(LloydStep, FixedPointsAndKnownCentroids) {
+  // A square grid of sites at pixel-cell centres is a CVT of the constant density: nothing moves.
+  const Pixel_density d = Pixel_density::uniform(8, 6);
+  std::vector<P2> grid;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j) grid.push_back({2.0 * i + 1, 2.0 * j + 1});
+  const auto s = lloyd_step(grid, d);
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    EXPECT_NEAR(s.centroids[i][0], grid[i][0], 1e-12);
+    EXPECT_NEAR(s.centroids[i][1], grid[i][1], 1e-12);
+    EXPECT_NEAR(s.mass[i], 4.0, 1e-12);
+  }
+  // The integral of x^2 + y^2 over [-1, 1]^2 is 8/3 per cell.
+  EXPECT_NEAR(s.energy, 12 * 8.0 / 3.0, 1e-9);
+  EXPECT_NEAR(s.minimum_distance, 2.0, 1e-12);
+  // One site goes to the density's centre of mass; a density only in the right column pulls it there.
+  std::vector<double> v(8 * 6, 0.0);
+  for (int row = 0; row < 6; ++row) v[std::size_t(row * 8 + 7)] = 1;
+  const auto one = lloyd_step(std::vector<P2>{{1.0, 1.0}}, Pixel_density(8, 6, v));
+  EXPECT_NEAR(one.centroids[0][0], 7.5, 1e-12);
+  EXPECT_NEAR(one.centroids[0][1], 3.0, 1e-12);
+  // A site whose cell has no mass stays.
+  const auto two = lloyd_step(std::vector<P2>{{1.0, 1.0}, {7.0, 3.0}}, Pixel_density(8, 6, v));
+  EXPECT_EQ(two.centroids[0], (P2{1.0, 1.0}));
+  EXPECT_EQ(two.mass[0], 0.0);
+}
+
+TEST(LloydStep, SharedEdgesAndFlipUpdatesMatchWholeCells) {
+  // The step integrates interior cells edge by edge and updates the triangulation by flips; both must give
+  // what whole clipped cells on a fresh triangulation give (brute force over pixels).
+  std::mt19937_64 rng(21);
+  const int w = 30, h = 20;
+  const Pixel_density d = random_density(w, h, rng);
+  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
+  std::vector<P2> sites(120);
+  for (auto& s : sites) s = {ux(rng), uy(rng)};
+  sampling::internal::Voronoi_builder voronoi;
+  for (int it = 0; it < 12; ++it) {
+    const auto step = sampling::internal::lloyd_step_impl(sites, d, voronoi);
+    const auto cells = clipped_voronoi_cells(sites, d.box());
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      const Density_moments m = brute_force_moments(cells[i], d);
+      ASSERT_NEAR(step.mass[i], m.mass, 1e-9 * w * h) << "iteration " << it << " site " << i;
+      if (m.mass > 0) {
+        EXPECT_NEAR(step.centroids[i][0], m.moment_x / m.mass, 1e-8);
+        EXPECT_NEAR(step.centroids[i][1], m.moment_y / m.mass, 1e-8);
+      }
+    }
+    sites = step.centroids;
+  }
+  EXPECT_EQ(voronoi.rebuilds + voronoi.flip_updates, 12u);
+  EXPECT_GE(voronoi.flip_updates, 5u) << "relaxed sites move without inverting triangles";
+}
+
+TEST(LloydRelaxation, EnergyDecreasesAndSpacingImproves) {
+  std::mt19937_64 rng(11);
+  const int w = 64, h = 48;
+  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
+  std::vector<P2> sites(300);
+  for (auto& s : sites) s = {ux(rng), uy(rng)};
+  Lloyd_options options;
+  options.max_iterations = 40;
+  const auto r = lloyd_relaxation(sites, Pixel_density::uniform(w, h), options);
+  ASSERT_EQ(r.history.size(), 40u);
+  EXPECT_EQ(r.stop, Lloyd_stop::iteration_cap);
+  for (std::size_t k = 1; k < r.history.size(); ++k)
+    EXPECT_LE(r.history[k].energy, r.history[k - 1].energy * (1 + 1e-12)) << "iteration " << k + 1;
+  EXPECT_LT(r.history.front().relative_radius, 0.1);  // white noise
+  EXPECT_GT(r.history.back().relative_radius, 0.6);   // relaxed
+  double mass = 0;
+  for (double m : r.mass) mass += m;
+  EXPECT_NEAR(mass, double(w * h), 1e-8 * w * h);
+  // Bit-identical on a second run.
+  const auto again = lloyd_relaxation(sites, Pixel_density::uniform(w, h), options);
+  EXPECT_EQ(again.sites, r.sites);
+}
+
+TEST(LloydRelaxation, AdaptiveDensityConcentratesSites) {
+  // Left half density 9, right half 1. A CVT's site density follows rho^(d / (d + 2)) (Gersho), so the
+  // energy is lowest with about 9^(1/2) = 3 times as many sites on the left. Lloyd only descends: from
+  // uniform sites it stalls in a local minimum with fewer on the left (a brute-force Lloyd on 6 x 6
+  // subpixels stalls at 116 of 200 as well); from sites drawn at the 3 : 1 ratio it stays there and reaches
+  // a lower energy.
+  const int w = 40, h = 40;
+  std::vector<double> v(std::size_t(w * h));
+  for (int row = 0; row < h; ++row)
+    for (int column = 0; column < w; ++column) v[std::size_t(row * w + column)] = column < w / 2 ? 9 : 1;
+  const Pixel_density d(w, h, v);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 40), left_x(0, 20), right_x(20, 40);
+  std::vector<P2> uniform(200), drawn(200);
+  for (auto& s : uniform) s = {u(rng), u(rng)};
+  for (std::size_t i = 0; i < 200; ++i) drawn[i] = {i < 150 ? left_x(rng) : right_x(rng), u(rng)};
+  Lloyd_options options;
+  options.max_iterations = 200;
+  const auto from_uniform = lloyd_relaxation(uniform, d, options);
+  const auto from_drawn = lloyd_relaxation(drawn, d, options);
+  auto left = [](const std::vector<P2>& sites) {
+    int n = 0;
+    for (const auto& s : sites) n += s[0] < 20;
+    return n;
+  };
+  EXPECT_GT(left(from_uniform.sites), left(uniform));  // sites move towards the dense half
+  EXPECT_GE(left(from_drawn.sites), 140);
+  EXPECT_LE(left(from_drawn.sites), 160);
+  EXPECT_LT(from_drawn.history.back().energy, 0.95 * from_uniform.history.back().energy);
+}
+
+TEST(LloydRelaxation, StoppingRulesAndDegenerateInput) {
+  const Pixel_density d = Pixel_density::uniform(10, 10);
+  std::vector<P2> sites{{1, 1}, {1.5, 1}, {2, 8}, {9, 9}, {5, 5}, {5, 5}};  // with a duplicate
+  Lloyd_options options;
+  options.max_iterations = 500;
+  options.move_tolerance = 1e-6;
+  const auto moved = lloyd_relaxation(sites, d, options);
+  EXPECT_EQ(moved.stop, Lloyd_stop::move_tolerance);
+  EXPECT_LT(moved.history.size(), 500u);
+  EXPECT_NE(moved.sites[4], moved.sites[5]) << "duplicates separate";
+  EXPECT_EQ(moved.history.front().relative_radius, 0.0);
+  options.move_tolerance = 0;
+  options.energy_tolerance = 1e-3;
+  const auto energy = lloyd_relaxation(sites, d, options);
+  EXPECT_EQ(energy.stop, Lloyd_stop::energy_tolerance);
+  options.energy_tolerance = 0;
+  options.on_iteration = [](Lloyd_iteration_statistics& s, const std::vector<P2>& p) {
+    s.oscillation = double(p.size());
+    return s.iteration < 3;
+  };
+  const auto early = lloyd_relaxation(sites, d, options);
+  EXPECT_EQ(early.stop, Lloyd_stop::callback);
+  ASSERT_EQ(early.history.size(), 3u);
+  EXPECT_EQ(early.history[2].oscillation, 6.0);
+  options.on_iteration = nullptr;
+  options.progress = [](double f) { return f < 0.01; };
+  EXPECT_EQ(lloyd_relaxation(sites, d, options).status, Status::interrupted);
+  EXPECT_EQ(lloyd_relaxation(std::vector<P2>{}, d).status, Status::degenerate_input);
+  const auto blank = lloyd_relaxation(sites, Pixel_density(10, 10, std::vector<double>(100, 0.0)));
+  EXPECT_EQ(blank.status, Status::degenerate_input);
+  EXPECT_EQ(blank.sites, sites);
+  options.progress = nullptr;
+  options.energy_tolerance = -1;
+  EXPECT_THROW((void)lloyd_relaxation(sites, d, options), std::invalid_argument);
+  // Collinear sites: the cells are vertical strips, whose centroids stay on the line.
+  const auto strips = lloyd_step(std::vector<P2>{{0.0, 5.0}, {1.0, 5.0}, {2.0, 5.0}, {3.0, 5.0}, {4.0, 5.0}}, d);
+  const double expected[5] = {0.25, 1.0, 2.0, 3.0, 6.75};
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_NEAR(strips.centroids[i][0], expected[i], 1e-12);
+    EXPECT_NEAR(strips.centroids[i][1], 5.0, 1e-12);
+    EXPECT_NEAR(strips.mass[i], 10 * (i == 0 ? 0.5 : i == 4 ? 6.5 : 1.0), 1e-12);
+  }
+}
+
+}  // namespace
