@@ -237,7 +237,6 @@ struct Voronoi_builder {
     return true;
   }
 
-  // The cell of a vertex (a convex polygon, counter-clockwise), clipped to the box; empty when it misses it.
   // A total order of the vertices that does not depend on memory: site index, then (for the far corners,
   // which share one index) coordinates. Every rounded quantity is computed in an order fixed by it, because
   // the faces' layout is not fixed: CGAL's vertex moves order faces by handle.
@@ -261,6 +260,8 @@ struct Voronoi_builder {
     return best;
   }
 
+  // The cell of a vertex (a convex polygon, counter-clockwise, from first_face), clipped to the box; empty
+  // when it misses the box.
   void cell(Dt::Vertex_handle v, const std::array<double, 4>& box, Polygon_2d& out, Polygon_2d& scratch) const {
     out.clear();
     auto f = first_face(v), end = f;
@@ -364,12 +365,19 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
     f->info().edge[std::size_t(i)] = m;
     g->info().edge[std::size_t(voronoi.dt.mirror_index(f, i))] = m;
   }
-  // Interior cells: their edges summed in a fixed order (from first_face, counter-clockwise). The cells are
-  // visited in the triangulation's order, which is local in space (the order of the sums is per cell).
+  // Interior cells: their edges summed in a fixed order (from first_face, counter-clockwise); the others:
+  // clipped and integrated whole. The cells are visited in the triangulation's order, which is local in
+  // space (the order of the sums is per cell).
   std::vector<Density_moments> moments(n);
+  Polygon_2d cell, scratch;
   for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
     const std::uint32_t i = v->info();
-    if (i == Voronoi_builder::dummy || !interior[i]) continue;
+    if (i == Voronoi_builder::dummy) continue;
+    if (!interior[i]) {
+      voronoi.cell(v, box, cell, scratch);
+      moments[i] = density.integrate(cell);
+      continue;
+    }
     auto f = voronoi.first_face(v), end = f;
     do {
       // The edge between this face and the next one counter-clockwise: to w = vertex(cw(index(v))).
@@ -380,13 +388,6 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
       else
         moments[i] -= m;
     } while (++f != end);
-  }
-  Polygon_2d cell, scratch;
-  for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
-    const std::uint32_t i = v->info();
-    if (i == Voronoi_builder::dummy || interior[i]) continue;
-    voronoi.cell(v, box, cell, scratch);
-    moments[i] = density.integrate(cell);
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (voronoi.owner[i] != i) continue;  // a duplicate: empty cell, stays
