@@ -232,10 +232,19 @@ struct Default_traits<std::pair<P, V>,
                                        std::is_same<V, typename CGAL::Kernel_traits<P>::Kernel::Vector_3>::value>> {
   using type = Point_with_normal_traits<typename CGAL::Kernel_traits<P>::Kernel>;
 };
+template <>
+struct Default_traits<Grey_pixel> {
+  using type = Grey_pixel_traits;
+};
+template <>
+struct Default_traits<Rgb_pixel> {
+  using type = Rgb_pixel_traits;
+};
 }  // namespace internal
 
 /// The traits used when none is given: Point_traits for CGAL `Point_2`/`Point_3` items,
-/// Point_with_normal_traits for `std::pair<Point_3, Vector_3>` items.
+/// Point_with_normal_traits for `std::pair<Point_3, Vector_3>` items, Pixel_traits for Grey_pixel and
+/// Rgb_pixel items.
 template <class ItemRange>
 using Default_traits_t =
     typename internal::Default_traits<std::decay_t<decltype(*std::begin(std::declval<const ItemRange&>()))>>::type;

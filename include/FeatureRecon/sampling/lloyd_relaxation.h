@@ -16,6 +16,7 @@
 #include <FeatureRecon/point_traits.h>
 #include <FeatureRecon/sampling/internal/box.h>
 #include <FeatureRecon/sampling/pixel_density.h>
+#include <FeatureRecon/sampling/sampling_options.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -39,30 +40,6 @@ namespace sampling {
 
 /// A convex polygon, counter-clockwise (CGAL's orientation), vertices not repeated.
 using Polygon_2d = std::vector<std::array<double, 2>>;
-
-/// Statistics of one Lloyd iteration, taken at the sites before they move.
-struct Lloyd_iteration_statistics {
-  std::size_t iteration = 0;  ///< 1 for the first iteration
-  /// CVT energy sum_i integral over cell i of rho(x) |x - p_i|^2 (decreases monotonically under Lloyd).
-  double energy = 0;
-  double max_move = 0;   ///< largest distance a site moved in this iteration (pixels)
-  double mean_move = 0;  ///< mean distance the sites moved (pixels)
-  /// Relative radius rho = d_min / d_hex of the sites over the box (d_hex = sqrt(2 A / (sqrt(3) N))), from the
-  /// shortest Delaunay edge: the packing quality for a constant density (1 for the hexagonal lattice).
-  double relative_radius = 0;
-  /// Oscillation of the sites' spectrum (Heck et al., positions scaled to the unit square), measured when
-  /// the caller's on_iteration callback computes it; NaN otherwise. See sampling_spectrum().
-  double oscillation = std::numeric_limits<double>::quiet_NaN();
-};
-
-/// Why lloyd_relaxation() stopped.
-enum class Lloyd_stop {
-  iteration_cap,     ///< max_iterations were done
-  energy_tolerance,  ///< the relative energy decrease fell below energy_tolerance
-  move_tolerance,    ///< the largest move fell below move_tolerance
-  callback,          ///< on_iteration returned false (early stopping on the caller's quality rule)
-  interrupted        ///< the progress callback returned false
-};
 
 /// Options of lloyd_relaxation().
 struct Lloyd_options {

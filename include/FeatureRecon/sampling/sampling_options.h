@@ -62,6 +62,32 @@ struct Sampling_result {
   Status status = Status::success;  ///< degenerate_input for an empty input; interrupted when stopped
 };
 
+/// Statistics of one Lloyd iteration, taken at the sites before they move.
+struct Lloyd_iteration_statistics {
+  std::size_t iteration = 0;  ///< 1 for the first iteration
+  /// CVT energy: sum_i integral (or sum) over cell i of rho(x) d(x, p_i)^2, with d the Euclidean or the
+  /// bilateral distance (decreases monotonically under Euclidean Lloyd).
+  double energy = 0;
+  double max_move = 0;   ///< largest distance a site moved in this iteration (units of the positions)
+  double mean_move = 0;  ///< mean distance the sites moved (units of the positions)
+  /// Relative radius rho = d_min / d_hex of the sites over the domain (in 2D d_hex = sqrt(2 A / (sqrt(3) N))
+  /// for area A; on surfaces the same with the surface area; in volumes d_fcc = cbrt(sqrt(2) V / N)): the
+  /// packing quality for a constant density (1 for the hexagonal lattice).
+  double relative_radius = 0;
+  /// Oscillation of the sites' spectrum (Heck et al., positions scaled to the unit square), measured when
+  /// the caller's on_iteration callback computes it; NaN otherwise. See sampling_spectrum().
+  double oscillation = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// Why lloyd_relaxation() stopped.
+enum class Lloyd_stop {
+  iteration_cap,     ///< max_iterations were done
+  energy_tolerance,  ///< the relative energy decrease fell below energy_tolerance
+  move_tolerance,    ///< the largest move fell below move_tolerance
+  callback,          ///< on_iteration returned false (early stopping on the caller's quality rule)
+  interrupted        ///< the progress callback returned false
+};
+
 /// Options of weighted_sample_elimination().
 struct Elimination_options {
   double sigma_position = 1;                                        ///< spatial scale of the metric; default 1

@@ -1,0 +1,456 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SAMPLING_DISCRETE_LLOYD_H
+#define FEATURERECON_SAMPLING_DISCRETE_LLOYD_H
+
+/// \file
+/// Discrete bilateral Lloyd relaxation (dissertation Sec. 2.1.2 and 2.2.2): the domain is a set of items
+/// (pixels, points with normals, users' items through FeaturePointTraits) with a density; every item goes to
+/// the site nearest in the bilateral distance xi (ties to the lowest site index), sites move to the
+/// density-weighted centroid of their items' positions (Eqn 2.2), and their features are re-sampled at the
+/// new position from the nearest item; optionally the site snaps to that item (the closest domain point to
+/// the centroid, the equation after 2.2). Stages: bilateral_voronoi_assignment() (the discrete bilateral
+/// Voronoi sets), discrete_lloyd_step() (one iteration), discrete_bilateral_lloyd() (iterations with the
+/// stopping rules and per-iteration statistics of lloyd_relaxation()).
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/sampling/internal/ring_grid.h>
+#include <FeatureRecon/sampling/internal/sample_set.h>
+#include <FeatureRecon/sampling/sampling_options.h>
+#include <FeatureRecon/traits.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace FeatureRecon {
+namespace sampling {
+
+/// A site of a bilateral sampling: a position (not necessarily an item's) and a feature.
+/// \tparam Traits a model of FeaturePointTraits (it gives the dimension and the feature type).
+template <class Traits>
+struct Bilateral_site {
+  std::array<double, Traits::dimension> position;  ///< the position, in the items' coordinates
+  typename Traits::Feature feature;                ///< the feature (of the item nearest to the position)
+};
+
+/// How a site's feature follows its move.
+enum class Site_update {
+  nearest_item,  ///< the site keeps the centroid; its feature is that of the item nearest to it (the default)
+  snap_to_item   ///< the site moves to the item nearest to the centroid and takes its feature (Eqn after 2.2)
+};
+
+/// Options of discrete_bilateral_lloyd() and its stages.
+/// \tparam Dimension the items' dimension (2 or 3), the dimension of the positions on_iteration sees.
+template <int Dimension>
+struct Discrete_lloyd_options {
+  double sigma_position = 1;                                        ///< spatial scale of xi; default 1
+  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
+  Bilateral_form form = Bilateral_form::gaussian;                   ///< form of xi
+  /// Density rho of each item (>= 0, finite), aligned with the items: the weight in the centroids and the
+  /// energy (for stippling, the darkness). Default empty: 1 for every item.
+  std::vector<double> density;
+  Site_update update = Site_update::nearest_item;  ///< how features follow the sites
+  std::size_t max_iterations = 50;  ///< iteration cap; default 50
+  /// Stop when (E_prev - E) / E_prev < energy_tolerance after an iteration; default 0 (never). The bilateral
+  /// energy need not decrease monotonically (features change with the positions); a rise also stops it then.
+  double energy_tolerance = 0;
+  double move_tolerance = 0;  ///< stop when no site moved farther than this (units of the positions); default 0
+  /// Area (2D items, surfaces) or volume of the domain for the relative radius; default 0: the bounding box of
+  /// 2D items widened by one item spacing (so a W x H image of pixels has area W H), the estimated surface area
+  /// of 3D items.
+  double domain_measure = 0;
+  /// Called after each iteration with its statistics and the sites' positions after the move; returning
+  /// false stops there (early stopping on rho or on an oscillation the callback computes). Default: none.
+  std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)> on_iteration;
+  Progress_callback progress;  ///< fraction of max_iterations done; returning false stops (sites so far kept)
+};
+
+/// The discrete bilateral Voronoi sets of some sites: bilateral_voronoi_assignment().
+struct Bilateral_assignment {
+  std::vector<std::uint32_t> site;  ///< per item: the index of its site (nearest in xi, ties to the lowest index)
+  std::vector<double> mass;         ///< per site: the density of its items
+  double energy = 0;                ///< sum over items of rho(x) xi(x, site)^2
+};
+
+/// Result of discrete_lloyd_step().
+template <class Traits>
+struct Discrete_lloyd_step_result {
+  std::vector<Bilateral_site<Traits>> sites;  ///< the moved sites (a site without mass stays where it was)
+  Bilateral_assignment assignment;            ///< the assignment of the sites given to the step
+  double max_move = 0;                        ///< largest move
+  double mean_move = 0;                       ///< mean move
+};
+
+/// Result of discrete_bilateral_lloyd().
+template <class Traits>
+struct Discrete_lloyd_result {
+  std::vector<Bilateral_site<Traits>> sites;         ///< final sites, in input order
+  std::vector<std::uint32_t> assignment;             ///< per item: its site at the last iteration
+  std::vector<double> mass;                          ///< per site: the density of its items at the last iteration
+  std::vector<Lloyd_iteration_statistics> history;   ///< one entry per iteration done
+  Lloyd_stop stop = Lloyd_stop::iteration_cap;       ///< why it stopped
+  /// degenerate_input for no items or no sites (nothing moves); interrupted when the progress callback stopped it.
+  Status status = Status::success;
+};
+
+namespace internal {
+/// \cond
+// The items of a relaxation as positions and features, with a grid for nearest-item queries.
+template <class Traits>
+class Item_domain {
+ public:
+  static constexpr int D = Traits::dimension;
+  using Point = std::array<double, D>;
+  using Site = Bilateral_site<Traits>;
+
+  template <class ItemRange>
+  Item_domain(const ItemRange& items, const Traits& traits, double domain_measure, const char* fn)
+      : S(items, traits, fn), measure(domain_measure) {
+    if (!(domain_measure >= 0) || !std::isfinite(domain_measure))
+      FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ", domain_measure);
+    if (S.size() > std::numeric_limits<std::uint32_t>::max() - 1)
+      FeatureRecon::internal::throw_invalid_argument(fn, "too many items (", S.size(), ")");
+    if (S.size() == 0) return;
+    lo = hi = S.positions[0];
+    for (const auto& p : S.positions)
+      for (int k = 0; k < D; ++k) {
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
+      }
+    item_grid = Ring_grid<D>(lo, hi, double(S.size()));
+    item_grid.assign(S.positions);
+  }
+
+  std::size_t items() const { return S.size(); }
+
+  static void check_sites(const std::vector<Site>& sites, const char* fn) {
+    if (sites.size() > std::numeric_limits<std::uint32_t>::max() - 1)
+      FeatureRecon::internal::throw_invalid_argument(fn, "too many sites (", sites.size(), ")");
+    for (std::size_t i = 0; i < sites.size(); ++i)
+      for (int k = 0; k < D; ++k)
+        if (!std::isfinite(sites[i].position[k]))
+          FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a non-finite coordinate (",
+                                                         sites[i].position[k], ")");
+  }
+
+  // The item nearest to x (Euclidean; ties to the lowest index). \pre items() > 0.
+  std::uint32_t nearest_item(const Point& x) const {
+    double best;
+    return item_grid.nearest(x, 1.0, [&](std::uint32_t j) { return std::sqrt(squared(x, S.positions[j])); }, best);
+  }
+
+  static std::vector<Point> positions_of(const std::vector<Site>& sites, Point& flo, Point& fhi) {
+    std::vector<Point> positions(sites.size());
+    for (std::size_t s = 0; s < sites.size(); ++s) {
+      positions[s] = sites[s].position;
+      for (int k = 0; k < D; ++k) {
+        flo[k] = std::min(flo[k], positions[s][k]);
+        fhi[k] = std::max(fhi[k], positions[s][k]);
+      }
+    }
+    return positions;
+  }
+
+  // Shortest distance between two sites at distinct positions (infinity for fewer than two distinct) and
+  // whether two sites coincide.
+  static double minimum_distance(const std::vector<Site>& sites, bool& coincide) {
+    coincide = false;
+    if (sites.size() < 2) return std::numeric_limits<double>::infinity();
+    Point flo = sites[0].position, fhi = flo;
+    const std::vector<Point> positions = positions_of(sites, flo, fhi);
+    Ring_grid<D> grid(flo, fhi, double(sites.size()));
+    grid.assign(positions);
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t s = 0; s < sites.size(); ++s) {
+      double best;
+      grid.nearest(positions[s], 1.0, [&](std::uint32_t j) {
+        if (j == s) return std::numeric_limits<double>::infinity();
+        const double d = std::sqrt(squared(positions[s], positions[j]));
+        if (d == 0) coincide = true;
+        return d == 0 ? std::numeric_limits<double>::infinity() : d;
+      }, best);
+      shortest = std::min(shortest, best);
+    }
+    return shortest;
+  }
+
+  // d_hex = sqrt(2 A / (sqrt(3) n)) for n sites on the domain's area (2D, or the surface of 3D items).
+  double packing_distance(std::size_t n) const {
+    if (n == 0 || S.size() == 0) return 0;
+    double m = measure;
+    if (m == 0) {
+      if constexpr (D == 2) {
+        const double spacing = std::sqrt(std::max(bounding_box_measure<2>(S.positions), 0.0) / double(S.size()));
+        m = (hi[0] - lo[0] + spacing) * (hi[1] - lo[1] + spacing);
+      } else {
+        Knn_3 knn(S.positions);
+        m = estimate_surface_area(S.positions, knn);
+      }
+    }
+    return std::sqrt(2 * m / (std::sqrt(3.0) * double(n)));
+  }
+
+  // rho of the sites: minimum distance over the packing distance (0 when two coincide).
+  double relative_radius(const std::vector<Site>& sites, double packing) const {
+    bool coincide = false;
+    const double shortest = minimum_distance(sites, coincide);
+    return (coincide || std::isinf(shortest) || packing == 0) ? 0.0 : shortest / packing;
+  }
+
+  static double squared(const Point& a, const Point& b) {
+    double s = 0;
+    for (int k = 0; k < D; ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
+    return s;
+  }
+
+  Sample_set<Traits> S;
+  double measure = 0;
+  Point lo{}, hi{};
+  Ring_grid<D> item_grid;
+};
+
+// The domain, its density and the metric of one discrete Lloyd run.
+template <class Traits>
+class Discrete_lloyd_engine : public Item_domain<Traits> {
+ public:
+  static constexpr int D = Traits::dimension;
+  using Base = Item_domain<Traits>;
+  using Point = std::array<double, D>;
+  using Site = Bilateral_site<Traits>;
+  using Base::S;
+
+  template <class ItemRange>
+  Discrete_lloyd_engine(const ItemRange& items, const Discrete_lloyd_options<D>& o, const Traits& traits, const char* fn)
+      : Base(items, traits, o.domain_measure, fn), options(o) {
+    check_sigmas(o.sigma_position, o.sigma_feature, fn);
+    if (!o.density.empty() && o.density.size() != S.size())
+      FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ", S.size(),
+                                                     " items");
+    for (std::size_t i = 0; i < o.density.size(); ++i)
+      if (!(o.density[i] >= 0 && std::isfinite(o.density[i])))
+        FeatureRecon::internal::throw_invalid_argument(fn, "density[", i, "] must be finite and >= 0, got ",
+                                                       o.density[i]);
+    if (!(o.energy_tolerance >= 0) || !(o.move_tolerance >= 0))
+      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be >= 0, got ",
+                                                     o.energy_tolerance, " and ", o.move_tolerance);
+  }
+
+  double density(std::size_t i) const { return options.density.empty() ? 1.0 : options.density[i]; }
+
+  Bilateral_assignment assign(const std::vector<Site>& sites) const {
+    Bilateral_assignment a;
+    a.site.assign(S.size(), 0);
+    a.mass.assign(sites.size(), 0.0);
+    if (sites.empty() || S.size() == 0) return a;
+    Point flo = this->lo, fhi = this->hi;
+    const std::vector<Point> positions = Base::positions_of(sites, flo, fhi);
+    Ring_grid<D> grid(flo, fhi, double(sites.size()));
+    grid.assign(positions);
+    with_metric(options, [&](const auto& metric) {
+      const double scale = metric.spatial_scale();
+      for (std::size_t i = 0; i < S.size(); ++i) {
+        const Point& x = S.positions[i];
+        double best;
+        const std::uint32_t s = grid.nearest(x, scale, [&](std::uint32_t j) {
+          return metric(Base::squared(x, positions[j]),
+                        double(CGAL::to_double(S.feature_distance(S.features[i], sites[j].feature))));
+        }, best);
+        a.site[i] = s;
+        a.mass[s] += density(i);
+        a.energy += density(i) * best * best;
+      }
+    });
+    return a;
+  }
+
+  Discrete_lloyd_step_result<Traits> step(const std::vector<Site>& sites) const {
+    Discrete_lloyd_step_result<Traits> r;
+    r.assignment = assign(sites);
+    std::vector<std::array<double, D>> sum(sites.size(), std::array<double, D>{});
+    for (std::size_t i = 0; i < S.size(); ++i) {
+      const double w = density(i);
+      auto& acc = sum[r.assignment.site[i]];
+      for (int k = 0; k < D; ++k) acc[k] += w * S.positions[i][k];
+    }
+    r.sites = sites;
+    double total_move = 0;
+    for (std::size_t s = 0; s < sites.size(); ++s) {
+      const double m = r.assignment.mass[s];
+      if (!(m > 0)) continue;  // no item or no mass: the site stays
+      Point c;
+      for (int k = 0; k < D; ++k) c[k] = sum[s][k] / m;
+      const std::uint32_t near = this->nearest_item(c);
+      if (options.update == Site_update::snap_to_item) c = S.positions[near];
+      const double move = std::sqrt(Base::squared(c, sites[s].position));
+      r.max_move = std::max(r.max_move, move);
+      total_move += move;
+      r.sites[s].position = c;
+      r.sites[s].feature = S.features[near];
+    }
+    r.mean_move = sites.empty() ? 0.0 : total_move / double(sites.size());
+    return r;
+  }
+
+  const Discrete_lloyd_options<D>& options;
+};
+/// \endcond
+}  // namespace internal
+
+namespace internal {
+/// \cond
+template <class I>
+bool is_index(I i, std::size_t n) {
+  if constexpr (std::is_signed<I>::value)
+    if (i < 0) return false;
+  return static_cast<std::size_t>(i) < n;
+}
+/// \endcond
+}  // namespace internal
+
+/// The sites at some items: position and feature of items[indices[k]] (for starting from the output of
+/// bilateral_dart_throwing() or weighted_sample_elimination()).
+/// \param items the domain. \param indices indices into it (checked; throws naming the first bad one).
+/// \param traits a model of FeaturePointTraits.
+template <class ItemRange, class IndexRange, class Traits = Default_traits_t<ItemRange>>
+std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const IndexRange& indices,
+                                                   const Traits& traits = Traits()) {
+  const internal::Sample_set<Traits> S(items, traits, "sites_at_items");
+  std::vector<Bilateral_site<Traits>> sites;
+  std::size_t k = 0;
+  for (const auto i : indices) {
+    if (!internal::is_index(i, S.size()))
+      FeatureRecon::internal::throw_invalid_argument("sites_at_items", "indices[", k, "] = ", i,
+                                                     " is not an item index (", S.size(), " items)");
+    sites.push_back({S.positions[std::size_t(i)], S.features[std::size_t(i)]});
+    ++k;
+  }
+  return sites;
+}
+
+/// Stage 1: the discrete bilateral Voronoi sets (dissertation Sec. 2.2.2): every item goes to the site of
+/// smallest xi (ties to the lowest site index); a grid of the sites is searched in rings until xi's spatial
+/// lower bound |dp| / sigma_position rules out the rest, so the result is that of the brute-force search.
+/// \param items the domain. \param sites the sites (finite positions, checked; throws).
+/// \param options metric and density (the iteration settings are not used). \param traits FeaturePointTraits.
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+Bilateral_assignment bilateral_voronoi_assignment(const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,
+                                                  const Discrete_lloyd_options<Traits::dimension>& options = {},
+                                                  const Traits& traits = Traits()) {
+  const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, "bilateral_voronoi_assignment");
+  engine.check_sites(sites, "bilateral_voronoi_assignment");
+  return engine.assign(sites);
+}
+
+/// Stage 2: one discrete bilateral Lloyd iteration: the assignment, then every site with mass moves to the
+/// density-weighted centroid of its items' positions (Eqn 2.2) and takes the feature of the item nearest to
+/// it (or snaps to that item, Site_update::snap_to_item). Same arguments as bilateral_voronoi_assignment().
+/// \param items the domain. \param sites the sites. \param options metric, density and update rule.
+/// \param traits FeaturePointTraits.
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+Discrete_lloyd_step_result<Traits> discrete_lloyd_step(const ItemRange& items,
+                                                       const std::vector<Bilateral_site<Traits>>& sites,
+                                                       const Discrete_lloyd_options<Traits::dimension>& options = {},
+                                                       const Traits& traits = Traits()) {
+  const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, "discrete_lloyd_step");
+  engine.check_sites(sites, "discrete_lloyd_step");
+  return engine.step(sites);
+}
+
+/// Discrete bilateral Lloyd relaxation (dissertation Sec. 2.2.2): discrete_lloyd_step() until a stopping
+/// rule holds (iteration cap, relative energy decrease, largest move, the on_iteration callback), with the
+/// energy, the moves and the relative radius of every iteration (Lloyd drifts towards a lattice: stop early on
+/// rho or the oscillation through on_iteration). Deterministic: no randomness beyond the starting sites (use
+/// a seeded sampler for those); ties go to the lowest index. With an infinite sigma_feature it is discrete
+/// (Euclidean, weighted) Lloyd, i.e. weighted k-means of the items' positions.
+/// \param items the domain: a range of items read through the traits (positions finite, checked).
+/// \param sites the starting sites, e.g. sites_at_items() of a dart-throwing result (finite, checked).
+/// \param options metric, density, update rule, stopping rules, callbacks (checked; throws naming the field).
+/// \param traits a model of FeaturePointTraits.
+/// \return the sites, the last assignment and the history. No items or no sites: degenerate_input, sites
+///   returned unchanged.
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, std::vector<Bilateral_site<Traits>> sites,
+                                                       const Discrete_lloyd_options<Traits::dimension>& options = {},
+                                                       const Traits& traits = Traits()) {
+  const char* fn = "discrete_bilateral_lloyd";
+  const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, fn);
+  engine.check_sites(sites, fn);
+  Discrete_lloyd_result<Traits> result;
+  if (engine.items() == 0 || sites.empty()) {
+    result.sites = std::move(sites);
+    result.assignment.assign(engine.items(), 0);
+    result.mass.assign(result.sites.size(), 0.0);
+    result.status = Status::degenerate_input;
+    return result;
+  }
+  const double packing = engine.packing_distance(sites.size());
+  double previous_energy = std::numeric_limits<double>::infinity();
+  for (std::size_t it = 0;; ++it) {
+    if (it == options.max_iterations) {
+      result.stop = Lloyd_stop::iteration_cap;
+      break;
+    }
+    if (!FeatureRecon::internal::report_progress(options.progress, double(it) / double(options.max_iterations))) {
+      result.stop = Lloyd_stop::interrupted;
+      result.status = Status::interrupted;
+      break;
+    }
+    auto step = engine.step(sites);
+    Lloyd_iteration_statistics s;
+    s.iteration = it + 1;
+    s.energy = step.assignment.energy;
+    s.max_move = step.max_move;
+    s.mean_move = step.mean_move;
+    s.relative_radius = engine.relative_radius(sites, packing);
+    result.assignment = std::move(step.assignment.site);
+    result.mass = std::move(step.assignment.mass);
+    sites = std::move(step.sites);
+    const bool keep_going = !options.on_iteration || [&] {
+      std::vector<std::array<double, Traits::dimension>> positions(sites.size());
+      for (std::size_t k = 0; k < sites.size(); ++k) positions[k] = sites[k].position;
+      return options.on_iteration(s, positions);
+    }();
+    result.history.push_back(s);
+    if (!keep_going) {
+      result.stop = Lloyd_stop::callback;
+      break;
+    }
+    if (options.move_tolerance > 0 && s.max_move <= options.move_tolerance) {
+      result.stop = Lloyd_stop::move_tolerance;
+      break;
+    }
+    if (options.energy_tolerance > 0 && std::isfinite(previous_energy) &&
+        (previous_energy - s.energy) < options.energy_tolerance * previous_energy) {
+      result.stop = Lloyd_stop::energy_tolerance;
+      break;
+    }
+    previous_energy = s.energy;
+  }
+  if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  result.sites = std::move(sites);
+  return result;
+}
+
+/// discrete_bilateral_lloyd() started at some items (indices into `items`, e.g. a sampler's output).
+/// \param items the domain. \param initial indices of the starting items (checked).
+/// \param options as for discrete_bilateral_lloyd(). \param traits FeaturePointTraits.
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, const std::vector<std::size_t>& initial,
+                                                       const Discrete_lloyd_options<Traits::dimension>& options = {},
+                                                       const Traits& traits = Traits()) {
+  return discrete_bilateral_lloyd(items, sites_at_items(items, initial, traits), options, traits);
+}
+
+}  // namespace sampling
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SAMPLING_DISCRETE_LLOYD_H

@@ -1,0 +1,317 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Discrete bilateral Lloyd: the bilateral Voronoi assignment against brute force (both forms, ties), steps
+// against weighted k-means, monotone Euclidean energy, feature update and snapping, stopping rules,
+// degenerate sites and domains, bad input.
+#include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/discrete_lloyd.h>
+#include <FeatureRecon/sampling/image_domain.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sampling/sampling_test_utilities.h"
+
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using Site = Bilateral_site<Grey_pixel_traits>;
+
+// A grey image with a vertical step (dark left of `edge`, bright right) plus seeded noise of +-noise.
+std::vector<Grey_pixel> step_image(int w, int h, int edge, int noise, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<std::uint8_t> v(std::size_t(w * h));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const int base = c < edge ? 40 : 210;
+      const int n = noise == 0 ? 0 : int(rng() % std::uint64_t(2 * noise + 1)) - noise;
+      v[std::size_t(r * w + c)] = static_cast<std::uint8_t>(base + n);
+    }
+  return image_pixels<Grey_pixel>(w, h, v);
+}
+
+std::vector<Site> random_sites(std::size_t n, int w, int h, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Site> s(n);
+  for (auto& x : s) {
+    x.position = {u() * w, u() * h};
+    x.feature = {static_cast<std::uint8_t>(rng() % 256)};
+  }
+  return s;
+}
+
+// Brute-force assignment: every site, smallest xi, ties to the lowest index.
+template <class Metric>
+std::vector<std::uint32_t> brute_force(const std::vector<Grey_pixel>& px, const std::vector<Site>& sites, Metric m) {
+  std::vector<std::uint32_t> out;
+  const Grey_pixel_traits t;
+  for (const auto& p : px) {
+    const double x = p.column + 0.5, y = p.row + 0.5;
+    double best = std::numeric_limits<double>::infinity();
+    std::uint32_t arg = 0;
+    for (std::size_t j = 0; j < sites.size(); ++j) {
+      const double dx = x - sites[j].position[0], dy = y - sites[j].position[1];
+      const double xi = m(dx * dx + dy * dy, t.compute_feature_distance_object()({p.value}, sites[j].feature));
+      if (xi < best) {
+        best = xi;
+        arg = static_cast<std::uint32_t>(j);
+      }
+    }
+    out.push_back(arg);
+  }
+  return out;
+}
+
+TEST(Discrete_lloyd, AssignmentMatchesBruteForceInBothForms) {
+  const auto px = step_image(37, 23, 15, 30, 1);
+  for (const std::size_t n : {1u, 2u, 7u, 60u}) {
+    const auto sites = random_sites(n, 37, 23, unsigned(n));
+    for (const double sf : {std::numeric_limits<double>::infinity(), 0.3, 0.02}) {
+      Discrete_lloyd_options<2> o;
+      o.sigma_position = 1.5;
+      o.sigma_feature = sf;
+      o.form = Bilateral_form::gaussian;
+      EXPECT_EQ(bilateral_voronoi_assignment(px, sites, o).site,
+                brute_force(px, sites, Gaussian_bilateral_metric{1.5, sf}))
+          << n << " sites, sigma_feature " << sf;
+      o.form = Bilateral_form::exponential;
+      EXPECT_EQ(bilateral_voronoi_assignment(px, sites, o).site,
+                brute_force(px, sites, Exponential_bilateral_metric{1.5, sf}))
+          << n << " sites, sigma_feature " << sf << " (exponential)";
+    }
+  }
+}
+
+TEST(Discrete_lloyd, TiesGoToTheLowestSiteIndex) {
+  // Sites symmetric about pixel columns: the pixels on the bisector are equidistant from two sites.
+  const auto px = step_image(9, 9, 100, 0, 0);
+  std::vector<Site> sites{{{6.5, 4.5}, {40}}, {{2.5, 4.5}, {40}}, {{4.5, 0.5}, {40}}, {{2.5, 4.5}, {40}}};
+  const auto a = bilateral_voronoi_assignment(px, sites);
+  EXPECT_EQ(a.site, brute_force(px, sites, Gaussian_bilateral_metric{}));
+  // The pixel centre (4.5, 4.5) is at distance 2 from sites 0, 1, 2 and 3: site 0 wins.
+  EXPECT_EQ(a.site[4 * 9 + 4], 0u);
+  // Site 3 duplicates site 1: it never gets a pixel.
+  EXPECT_EQ(a.mass[3], 0.0);
+  EXPECT_GT(a.mass[1], 0.0);
+}
+
+TEST(Discrete_lloyd, EuclideanStepIsWeightedKMeans) {
+  const auto px = step_image(30, 20, 12, 20, 3);
+  const auto sites = random_sites(9, 30, 20, 4);
+  Discrete_lloyd_options<2> o;
+  for (const auto& p : px) o.density.push_back(1.0 + p.value / 50.0);
+  const auto step = discrete_lloyd_step(px, sites, o);
+  const auto a = brute_force(px, sites, Gaussian_bilateral_metric{});
+  ASSERT_EQ(step.assignment.site, a);
+  for (std::size_t s = 0; s < sites.size(); ++s) {
+    double m = 0, x = 0, y = 0;
+    for (std::size_t i = 0; i < px.size(); ++i)
+      if (a[i] == s) {
+        m += o.density[i];
+        x += o.density[i] * (px[i].column + 0.5);
+        y += o.density[i] * (px[i].row + 0.5);
+      }
+    ASSERT_GT(m, 0);
+    EXPECT_NEAR(step.sites[s].position[0], x / m, 1e-9);
+    EXPECT_NEAR(step.sites[s].position[1], y / m, 1e-9);
+    EXPECT_NEAR(step.assignment.mass[s], m, 1e-9);
+    // The feature is that of the pixel containing the centroid.
+    const int c = int(std::floor(x / m)), r = int(std::floor(y / m));
+    EXPECT_EQ(step.sites[s].feature[0], px[std::size_t(r * 30 + c)].value);
+  }
+}
+
+TEST(Discrete_lloyd, EuclideanEnergyDecreasesAndSitesSpreadOut) {
+  std::vector<std::uint8_t> flat(64 * 64, 128);
+  const auto px = image_pixels<Grey_pixel>(64, 64, flat);
+  // Start from uniformly random (clumpy) sites.
+  std::vector<Site> sites = random_sites(40, 64, 64, 5);
+  Discrete_lloyd_options<2> o;
+  o.max_iterations = 40;
+  const auto r = discrete_bilateral_lloyd(px, sites, o);
+  ASSERT_EQ(r.history.size(), 40u);
+  for (std::size_t i = 1; i < r.history.size(); ++i)
+    EXPECT_LE(r.history[i].energy, r.history[i - 1].energy * (1 + 1e-12)) << "iteration " << i + 1;
+  EXPECT_LT(r.history.back().energy, 0.7 * r.history.front().energy);
+  EXPECT_LT(r.history.front().relative_radius, 0.3);  // random sites clump
+  EXPECT_GT(r.history.back().relative_radius, 0.6);  // evenly spread over the image
+  for (const double m : r.mass) EXPECT_GT(m, 40.0);  // every cell holds a fair share of the 4096 pixels
+  EXPECT_EQ(r.stop, Lloyd_stop::iteration_cap);
+  EXPECT_EQ(r.status, Status::success);
+}
+
+TEST(Discrete_lloyd, BilateralCellsRespectTheEdge) {
+  const auto px = step_image(48, 32, 20, 8, 6);
+  // Start from darts on the pixels.
+  std::vector<std::size_t> start;
+  Dart_throwing_count_options d;
+  d.darts.seed = 11;
+  bilateral_dart_throwing_count(px, 40, std::back_inserter(start), d, Grey_pixel_traits());
+  Discrete_lloyd_options<2> o;
+  o.max_iterations = 15;
+  o.sigma_feature = 0.05;  // colour differences of 170/255 cost 13 pixels
+  const auto r = discrete_bilateral_lloyd(px, start, o);
+  std::size_t crossing = 0;
+  for (std::size_t i = 0; i < px.size(); ++i) {
+    const bool dark_pixel = px[i].value < 128, dark_site = r.sites[r.assignment[i]].feature[0] < 128;
+    crossing += dark_pixel != dark_site;
+  }
+  EXPECT_EQ(crossing, 0u);
+  // Sites keep the feature of the nearest pixel (ties to the lowest index).
+  for (const auto& s : r.sites) {
+    std::size_t near = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      const double dx = px[i].column + 0.5 - s.position[0], dy = px[i].row + 0.5 - s.position[1];
+      if (dx * dx + dy * dy < best) {
+        best = dx * dx + dy * dy;
+        near = i;
+      }
+    }
+    EXPECT_EQ(s.feature[0], px[near].value);
+  }
+  // Euclidean cells do cross the edge.
+  o.sigma_feature = std::numeric_limits<double>::infinity();
+  const auto e = discrete_bilateral_lloyd(px, start, o);
+  std::size_t e_crossing = 0;
+  for (std::size_t i = 0; i < px.size(); ++i)
+    e_crossing += (px[i].value < 128) != (e.sites[e.assignment[i]].feature[0] < 128);
+  EXPECT_GT(e_crossing, 0u);
+}
+
+TEST(Discrete_lloyd, SnapKeepsSitesOnItems) {
+  const auto px = step_image(25, 25, 10, 10, 7);
+  Discrete_lloyd_options<2> o;
+  o.update = Site_update::snap_to_item;
+  o.sigma_feature = 0.2;
+  o.max_iterations = 8;
+  const auto r = discrete_bilateral_lloyd(px, random_sites(12, 25, 25, 8), o);
+  for (const auto& s : r.sites) {
+    EXPECT_EQ(s.position[0] - std::floor(s.position[0]), 0.5);
+    EXPECT_EQ(s.position[1] - std::floor(s.position[1]), 0.5);
+  }
+}
+
+TEST(Discrete_lloyd, DeterministicAndStoppingRules) {
+  const auto px = step_image(40, 30, 17, 25, 9);
+  const auto sites = random_sites(25, 40, 30, 10);
+  Discrete_lloyd_options<2> o;
+  o.sigma_feature = 0.1;
+  o.max_iterations = 30;
+  const auto a = discrete_bilateral_lloyd(px, sites, o), b = discrete_bilateral_lloyd(px, sites, o);
+  ASSERT_EQ(a.sites.size(), b.sites.size());
+  for (std::size_t i = 0; i < a.sites.size(); ++i) EXPECT_EQ(a.sites[i].position, b.sites[i].position);
+  EXPECT_EQ(a.assignment, b.assignment);
+
+  o.move_tolerance = 0.05;
+  const auto m = discrete_bilateral_lloyd(px, sites, o);
+  EXPECT_EQ(m.stop, Lloyd_stop::move_tolerance);
+  EXPECT_LE(m.history.back().max_move, 0.05);
+  for (std::size_t i = 0; i + 1 < m.history.size(); ++i) EXPECT_GT(m.history[i].max_move, 0.05);
+
+  o.move_tolerance = 0;
+  std::size_t calls = 0;
+  o.on_iteration = [&](Lloyd_iteration_statistics& s, const std::vector<std::array<double, 2>>& p) {
+    EXPECT_EQ(p.size(), sites.size());
+    s.oscillation = 42;
+    return ++calls < 3;
+  };
+  const auto c = discrete_bilateral_lloyd(px, sites, o);
+  EXPECT_EQ(c.stop, Lloyd_stop::callback);
+  ASSERT_EQ(c.history.size(), 3u);
+  EXPECT_EQ(c.history[2].oscillation, 42);
+  o.on_iteration = nullptr;
+  o.progress = [](double f) { return f < 0.1; };
+  const auto i = discrete_bilateral_lloyd(px, sites, o);
+  EXPECT_EQ(i.status, Status::interrupted);
+  EXPECT_EQ(i.history.size(), 3u);  // stopped before the 4th iteration (3/30 >= 0.1)
+}
+
+TEST(Discrete_lloyd, DegenerateInput) {
+  const std::vector<Grey_pixel> none;
+  const auto px = step_image(5, 4, 2, 0, 0);
+  const auto r0 = discrete_bilateral_lloyd(none, random_sites(3, 5, 4, 1));
+  EXPECT_EQ(r0.status, Status::degenerate_input);
+  EXPECT_EQ(r0.sites.size(), 3u);
+  const auto r1 = discrete_bilateral_lloyd(px, std::vector<Site>{});
+  EXPECT_EQ(r1.status, Status::degenerate_input);
+  // One site goes to the centroid of the whole image.
+  const auto one = discrete_bilateral_lloyd(px, std::vector<Site>{{{0.5, 0.5}, {0}}});
+  EXPECT_DOUBLE_EQ(one.sites[0].position[0], 2.5);
+  EXPECT_DOUBLE_EQ(one.sites[0].position[1], 2.0);
+  // Every site on the same pixel: the lowest index takes everything, the others stay.
+  std::vector<Site> same(4, Site{{1.5, 1.5}, {40}});
+  const auto s = discrete_lloyd_step(px, same);
+  EXPECT_EQ(s.assignment.mass[0], 20.0);
+  for (std::size_t k = 1; k < 4; ++k) EXPECT_EQ(s.sites[k].position, same[k].position);
+  // One pixel.
+  const auto single = image_pixels<Grey_pixel>(1, 1, {7});
+  const auto r2 = discrete_bilateral_lloyd(single, random_sites(2, 1, 1, 2));
+  EXPECT_EQ(r2.assignment, std::vector<std::uint32_t>(1, r2.assignment[0]));
+  // Zero density: nothing moves.
+  Discrete_lloyd_options<2> o;
+  o.density.assign(px.size(), 0.0);
+  const auto sites = random_sites(3, 5, 4, 3);
+  const auto z = discrete_lloyd_step(px, sites, o);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(z.sites[k].position, sites[k].position);
+}
+
+TEST(Discrete_lloyd, PointsWithNormalsIn3D) {
+  // Two parallel sheets 0.1 apart with opposite normals: bilateral cells never mix the sheets.
+  using K = test::K;
+  std::vector<std::pair<K::Point_3, K::Vector_3>> items;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) {
+      items.push_back({K::Point_3(i / 29.0, j / 29.0, 0), K::Vector_3(0, 0, 1)});
+      items.push_back({K::Point_3(i / 29.0, j / 29.0, 0.1), K::Vector_3(0, 0, -1)});
+    }
+  std::vector<std::size_t> start;
+  for (std::size_t k = 0; k < 40; ++k) start.push_back((k * 977) % items.size());
+  Discrete_lloyd_options<3> o;
+  o.sigma_feature = 0.2;
+  o.max_iterations = 10;
+  const auto r = discrete_bilateral_lloyd(items, start, o);
+  for (std::size_t i = 0; i < items.size(); ++i)
+    EXPECT_EQ(items[i].second.z(), r.sites[r.assignment[i]].feature.z()) << "item " << i;
+  EXPECT_GT(r.history.back().relative_radius, 0.0);
+}
+
+TEST(Discrete_lloyd, BadInputNamesTheProblem) {
+  const auto px = step_image(6, 6, 3, 0, 0);
+  const auto sites = random_sites(3, 6, 6, 1);
+  auto expect_message = [](auto&& f, const std::string& part) {
+    try {
+      f();
+      ADD_FAILURE() << "no exception; expected one mentioning " << part;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  Discrete_lloyd_options<2> o;
+  o.density.assign(5, 1.0);
+  expect_message([&] { discrete_bilateral_lloyd(px, sites, o); }, "density has 5 values for 36 items");
+  o.density.assign(36, 1.0);
+  o.density[17] = -1;
+  expect_message([&] { discrete_lloyd_step(px, sites, o); }, "density[17]");
+  o.density.clear();
+  o.sigma_feature = 0;
+  expect_message([&] { bilateral_voronoi_assignment(px, sites, o); }, "sigma_feature");
+  o.sigma_feature = 1;
+  auto bad = sites;
+  bad[2].position[1] = std::nan("");
+  expect_message([&] { discrete_bilateral_lloyd(px, bad, o); }, "site 2");
+  expect_message([&] { sites_at_items(px, std::vector<int>{0, 5, 36}); }, "indices[2] = 36");
+  expect_message([&] { sites_at_items(px, std::vector<int>{-1}); }, "indices[0] = -1");
+  o.domain_measure = -1;
+  expect_message([&] { discrete_bilateral_lloyd(px, sites, o); }, "domain_measure");
+}
+
+}  // namespace
