@@ -183,13 +183,35 @@ class Item_domain {
     return shortest;
   }
 
+  // The spacing h of the items read as a grid filling their bounding box widened by h: the root of
+  // prod_k (extent_k + h) = n h^D (h = 1 for a W x H image of pixels); 0 for one item or one position.
+  double grid_spacing() const {
+    const double n = double(S.size());
+    double e_max = 0;
+    for (int k = 0; k < D; ++k) e_max = std::max(e_max, hi[k] - lo[k]);
+    if (!(n > 1) || !(e_max > 0)) return 0;
+    // f(h) = sum log(e_k + h) - D log h - log n decreases from +inf to -log n < 0.
+    auto f = [&](double h) {
+      double v = -D * std::log(h) - std::log(n);
+      for (int k = 0; k < D; ++k) v += std::log(hi[k] - lo[k] + h);
+      return v;
+    };
+    double a = 0, b = e_max;
+    while (f(b) > 0) b *= 2;
+    for (int it = 0; it < 200 && b - a > 1e-15 * b; ++it) {
+      const double m = 0.5 * (a + b);
+      (m > 0 && f(m) > 0 ? a : b) = m;
+    }
+    return b;
+  }
+
   // d_hex = sqrt(2 A / (sqrt(3) n)) for n sites on the domain's area (2D, or the surface of 3D items).
   double packing_distance(std::size_t n) const {
     if (n == 0 || S.size() == 0) return 0;
     double m = measure;
     if (m == 0) {
       if constexpr (D == 2) {
-        const double spacing = std::sqrt(std::max(bounding_box_measure<2>(S.positions), 0.0) / double(S.size()));
+        const double spacing = grid_spacing();
         m = (hi[0] - lo[0] + spacing) * (hi[1] - lo[1] + spacing);
       } else {
         Knn_3 knn(S.positions);

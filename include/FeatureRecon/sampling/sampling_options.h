@@ -79,13 +79,14 @@ struct Lloyd_iteration_statistics {
   double oscillation = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// Why lloyd_relaxation() stopped.
+/// Why an iterative sampler (lloyd_relaxation(), discrete_bilateral_lloyd(), kernel_relaxation()) stopped.
 enum class Lloyd_stop {
   iteration_cap,     ///< max_iterations were done
   energy_tolerance,  ///< the relative energy decrease fell below energy_tolerance
   move_tolerance,    ///< the largest move fell below move_tolerance
   callback,          ///< on_iteration returned false (early stopping on the caller's quality rule)
-  interrupted        ///< the progress callback returned false
+  interrupted,       ///< the progress callback returned false
+  no_descent         ///< kernel_relaxation(): no step along the gradient lowered the energy (a local minimum)
 };
 
 /// Options of weighted_sample_elimination().

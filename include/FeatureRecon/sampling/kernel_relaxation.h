@@ -1,0 +1,501 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SAMPLING_KERNEL_RELAXATION_H
+#define FEATURERECON_SAMPLING_KERNEL_RELAXATION_H
+
+/// \file
+/// Kernel relaxation of a bilateral sampling (dissertation Sec. 2.1.2 and 2.2.2, "Kernel function"): the global
+/// Gaussian energy over the bilateral distances of the sites,
+///
+///     E = (1/N) sum_i sum_{j != i} s_ij^k exp(-xi_ij^2 / (tau^2 s_ij^2)),
+///     xi_ij^2 = |dp|^2 / sigma_p^2 + |deta|^2 / sigma_eta^2,
+///
+/// is lowered by gradient steps on the positions with its closed-form gradient
+/// dE/dp_i = (2/N) sum_j s_ij^k exp(...) * (-2 (p_i - p_j) / (sigma_p^2 tau^2 s_ij^2)). Pairs farther apart
+/// than `cutoff` kernel widths are ignored and the kernel is shifted to vanish there, so E is continuous. A
+/// step is kept only when it lowers E with the features and scales held (then the next is longer), otherwise
+/// it is halved and tried again. Features follow the positions: after each step every site takes the feature
+/// of the item nearest to it. s_ij = min(s_i, s_j) is 1 for a constant density and adapts the kernel width to
+/// a density (stippling); the factor s_ij^k (k the intrinsic dimension) balances the pressure between regions
+/// of different scale, so the number of sites per area follows the density. In a box the sites are clamped to
+/// it and mirrored ghost sites across its faces stand for the missing neighbours outside, so the sites do not
+/// pile up on the boundary. Start from dart throwing (sites_at_items() of bilateral_dart_throwing_count()), as
+/// the dissertation does: the energy then falls quickly. When sites snap to items (point clouds on surfaces)
+/// each keeps a free position within half an item spacing of its item, so small steps add up; the caller sees
+/// the items' positions. Stages: kernel_energy() (energy and gradient) and kernel_relaxation() (the
+/// iterations).
+
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/sampling/discrete_lloyd.h>
+#include <FeatureRecon/sampling/internal/ring_grid.h>
+#include <FeatureRecon/sampling/internal/sample_set.h>
+#include <FeatureRecon/sampling/sampling_options.h>
+#include <FeatureRecon/traits.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace FeatureRecon {
+namespace sampling {
+
+/// Where the sites of kernel_relaxation() may go.
+enum class Kernel_constraint {
+  /// The bounding box of the items widened by half an item spacing (for a W x H image of pixels: [0, W] x
+  /// [0, H]): sites are clamped to it and see mirrored ghosts across its faces. For images and volumes.
+  bounding_box,
+  /// Every site moves to the item nearest to its new position (sites stay on the items: surfaces given by
+  /// point clouds, subsets of the input).
+  snap_to_item
+};
+
+/// Options of kernel_relaxation() and kernel_energy().
+/// \tparam Dimension the items' dimension (2 or 3), the dimension of the positions on_iteration sees.
+template <int Dimension>
+struct Kernel_relaxation_options {
+  double sigma_position = 1;                                        ///< spatial scale of xi; default 1
+  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
+  /// tau, the kernel width in units of xi (the spatial width is tau sigma_position). Default 0:
+  /// d_hex / (2 sigma_position) with d_hex = sqrt(2 A / (sqrt(3) N)), the spacing of N sites on a hexagonal
+  /// lattice over the domain's area A (measured on 200 sites from dart throwing and from white noise, 100
+  /// steps: rho 0.85 and 0.81 at d_hex / 2, 0.69 and 0.65 at d_hex, 0.79 and 0.73 at 0.3 d_hex).
+  double kernel_width = 0;
+  double cutoff = 3;  ///< pairs farther apart than cutoff kernel widths are ignored (exp(-9) ~ 1e-4); default 3
+  /// Density rho of each item (>= 0, finite), aligned with the items. A site takes the scale
+  /// s = (mean rho / rho)^(1/k) of the item nearest to it, clamped to [1/8, 8] (k = 2 for images and surfaces,
+  /// 3 for volumes), so sites crowd where rho is high (stippling: the darkness). Default empty: s = 1.
+  std::vector<double> density;
+  /// Where sites may go. Default: bounding_box for 2D items, snap_to_item for 3D items (surfaces).
+  Kernel_constraint constraint = Dimension == 2 ? Kernel_constraint::bounding_box : Kernel_constraint::snap_to_item;
+  std::size_t max_iterations = 100;  ///< iteration cap (accepted steps); default 100
+  /// The first step length as a fraction of the distance to the neighbours (a single pair at distance d, close
+  /// enough for the kernel to be ~1, moves apart by step * d); doubled or halved by the step control; default 0.25.
+  double initial_step = 0.25;
+  /// Stop when an accepted step lowers E by less than this fraction of E; default 1e-6.
+  double energy_tolerance = 1e-6;
+  double move_tolerance = 0;  ///< stop when no site moved farther than this (units of the positions); default 0
+  /// Area (2D items, surfaces) or volume of the domain for the default kernel width and the relative radius;
+  /// default 0: as discrete_bilateral_lloyd() estimates it.
+  double domain_measure = 0;
+  /// Called after each accepted step with its statistics and the sites' positions after the move; returning
+  /// false stops there. Default: none.
+  std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)> on_iteration;
+  Progress_callback progress;  ///< fraction of max_iterations done; returning false stops (sites so far kept)
+};
+
+/// The kernel energy of some sites and its gradient: kernel_energy().
+/// \tparam Dimension the dimension of the positions.
+template <int Dimension>
+struct Kernel_energy {
+  double energy = 0;                                    ///< E (including the ghost pairs in a box)
+  std::vector<std::array<double, Dimension>> gradient;  ///< dE/dp_i per site, features and scales held fixed
+  std::size_t pairs = 0;                                ///< ordered pairs within the cut-off (ghosts included)
+};
+
+/// Result of kernel_relaxation().
+template <class Traits>
+struct Kernel_relaxation_result {
+  std::vector<Bilateral_site<Traits>> sites;        ///< final sites, in input order (features follow)
+  std::vector<Lloyd_iteration_statistics> history;  ///< one entry per accepted step, taken before it
+  Lloyd_stop stop = Lloyd_stop::iteration_cap;      ///< why it stopped
+  double kernel_width = 0;                          ///< tau used (units of xi)
+  double step = 0;                                  ///< the step length the control ended with
+  /// degenerate_input for no items or fewer than two sites (nothing moves); interrupted when stopped.
+  Status status = Status::success;
+};
+
+namespace internal {
+/// \cond
+template <class Traits>
+class Kernel_engine : public Item_domain<Traits> {
+ public:
+  static constexpr int D = Traits::dimension;
+  using Base = Item_domain<Traits>;
+  using Point = std::array<double, D>;
+  using Site = Bilateral_site<Traits>;
+  using Base::S;
+
+  template <class ItemRange>
+  Kernel_engine(const ItemRange& items, const Kernel_relaxation_options<D>& o, const Traits& traits, std::size_t sites,
+                const char* fn)
+      : Base(items, traits, o.domain_measure, fn), options(o) {
+    check_sigmas(o.sigma_position, o.sigma_feature, fn);
+    if (!(o.kernel_width >= 0) || !std::isfinite(o.kernel_width))
+      FeatureRecon::internal::throw_invalid_argument(fn, "kernel_width must be finite and >= 0, got ", o.kernel_width);
+    if (!(o.cutoff > 0) || !std::isfinite(o.cutoff))
+      FeatureRecon::internal::throw_invalid_argument(fn, "cutoff must be finite and > 0, got ", o.cutoff);
+    if (!(o.initial_step > 0) || !std::isfinite(o.initial_step))
+      FeatureRecon::internal::throw_invalid_argument(fn, "initial_step must be finite and > 0, got ", o.initial_step);
+    if (!(o.energy_tolerance >= 0) || !(o.move_tolerance >= 0))
+      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be >= 0, got ",
+                                                     o.energy_tolerance, " and ", o.move_tolerance);
+    if (!o.density.empty() && o.density.size() != S.size())
+      FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ", S.size(),
+                                                     " items");
+    double total = 0;
+    for (std::size_t i = 0; i < o.density.size(); ++i) {
+      if (!(o.density[i] >= 0 && std::isfinite(o.density[i])))
+        FeatureRecon::internal::throw_invalid_argument(fn, "density[", i, "] must be finite and >= 0, got ",
+                                                       o.density[i]);
+      total += o.density[i];
+    }
+    if (!o.density.empty() && !(total > 0))
+      FeatureRecon::internal::throw_invalid_argument(fn, "density is 0 on every item");
+    mean_density = o.density.empty() ? 1.0 : total / double(o.density.size());
+    intrinsic = (D == 3 && o.constraint == Kernel_constraint::bounding_box) ? 3 : 2;
+    if (S.size() == 0) return;
+    // The box: the items' bounding box widened by half the item spacing on every side.
+    box_lo = this->lo;
+    box_hi = this->hi;
+    if (D == 3 && o.constraint == Kernel_constraint::snap_to_item) {
+      double area = o.domain_measure;
+      if (area == 0 && S.size() > 1) {
+        if constexpr (D == 3) {
+          Knn_3 knn(S.positions);
+          area = estimate_surface_area(S.positions, knn);
+        }
+      }
+      spacing = std::sqrt(area / double(S.size()));
+      packing = sites == 0 ? 0.0 : std::sqrt(2 * area / (std::sqrt(3.0) * double(sites)));
+    } else {
+      spacing = this->grid_spacing();
+      packing = this->packing_distance(sites);
+    }
+    for (int k = 0; k < D; ++k) {
+      box_lo[k] -= spacing / 2;
+      box_hi[k] += spacing / 2;
+    }
+    tau = o.kernel_width > 0 ? o.kernel_width : packing / (2 * o.sigma_position);
+    if (!(tau > 0)) tau = std::max(spacing, 1e-300) / o.sigma_position;
+  }
+
+  // The scale of a site at item `near`.
+  double scale_at(std::uint32_t near) const {
+    if (options.density.empty()) return 1.0;
+    const double rho = options.density[near];
+    if (!(rho > 0)) return 8.0;
+    return std::min(8.0, std::max(0.125, std::pow(mean_density / rho, 1.0 / intrinsic)));
+  }
+
+  // Features and scales of sites at these positions (the constraint applied first).
+  // The constraint and the features: clamps to the box, or (snapping) keeps each site within half an item
+  // spacing of its item, the item nearest to it unless a lower-index site took that one (then the nearest
+  // free item; with more sites than items the extra ones share). Features and scales are those of the items.
+  // With snapping `item` receives each site's item (the position reported to the caller).
+  void settle(std::vector<Site>& sites, std::vector<double>& scales, std::vector<std::uint32_t>& item) const {
+    scales.resize(sites.size());
+    item.resize(sites.size());
+    const bool snap = options.constraint == Kernel_constraint::snap_to_item;
+    std::vector<char> taken(snap ? S.size() : 0, 0);
+    std::size_t free_items = S.size();
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      auto& p = sites[i].position;
+      if (!snap)
+        for (int k = 0; k < D; ++k) p[k] = std::min(box_hi[k], std::max(box_lo[k], p[k]));
+      std::uint32_t near = this->nearest_item(p);
+      if (snap) {
+        if (taken[near] && free_items > 0) {
+          double best;
+          near = this->item_grid.nearest(p, 1.0, [&](std::uint32_t j) {
+            return taken[j] ? std::numeric_limits<double>::max() : std::sqrt(Base::squared(p, S.positions[j]));
+          }, best);
+        }
+        if (!taken[near]) --free_items;
+        taken[near] = 1;
+        const double d = std::sqrt(Base::squared(p, S.positions[near])), limit = spacing / 2;
+        const double t = d > limit ? limit / d : 1.0;
+        for (int k = 0; k < D; ++k) p[k] = S.positions[near][k] + t * (p[k] - S.positions[near][k]);
+      }
+      item[i] = near;
+      sites[i].feature = S.features[near];
+      scales[i] = scale_at(near);
+    }
+  }
+
+  // E and (optionally) its gradient, features and scales fixed.
+  Kernel_energy<D> energy(const std::vector<Site>& sites, const std::vector<double>& scales, bool gradient) const {
+    Kernel_energy<D> out;
+    const std::size_t n = sites.size();
+    if (gradient) out.gradient.assign(n, Point{});
+    if (n == 0) return out;
+    const double w0 = tau * options.sigma_position;  // spatial width at scale 1
+    double s_max = 0;
+    for (const double s : scales) s_max = std::max(s_max, s);
+    // Real sites, then ghosts (mirror images across the box faces of the sites near them).
+    std::vector<Point> q;
+    std::vector<std::uint32_t> source;
+    q.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      q.push_back(sites[i].position);
+      source.push_back(static_cast<std::uint32_t>(i));
+    }
+    if (options.constraint == Kernel_constraint::bounding_box) {
+      for (std::size_t j = 0; j < n; ++j) {
+        const double reach = options.cutoff * w0 * scales[j];
+        for (int k = 0; k < D; ++k)
+          for (const double face : {box_lo[k], box_hi[k]}) {
+            const double x = sites[j].position[k];
+            if (std::abs(x - face) < reach) {
+              Point g = sites[j].position;
+              g[k] = 2 * face - x;
+              q.push_back(g);
+              source.push_back(static_cast<std::uint32_t>(j));
+            }
+          }
+      }
+    }
+    Point flo = q[0], fhi = q[0];
+    for (const auto& p : q)
+      for (int k = 0; k < D; ++k) {
+        flo[k] = std::min(flo[k], p[k]);
+        fhi[k] = std::max(fhi[k], p[k]);
+      }
+    double volume = 1;
+    for (int k = 0; k < D; ++k) volume *= std::max(fhi[k] - flo[k], options.cutoff * w0);
+    Ring_grid<D> grid(flo, fhi, std::max(1.0, volume / std::pow(options.cutoff * w0, D)));
+    grid.assign(q);
+    const double inv_sp2 = 1.0 / (options.sigma_position * options.sigma_position);
+    const bool features = !std::isinf(options.sigma_feature);
+    const double inv_sf2 = features ? 1.0 / (options.sigma_feature * options.sigma_feature) : 0.0;
+    const double inv_tau2 = 1.0 / (tau * tau);
+    const double cutoff2 = options.cutoff * options.cutoff;
+    double total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point& p = sites[i].position;
+      const double radius = options.cutoff * w0 * scales[i];
+      Point g{};
+      double row = 0;
+      grid.for_each_within(p, radius, [&](std::uint32_t t) {
+        if (t == i) return;
+        const std::uint32_t j = source[t];
+        const double s = std::min(scales[i], scales[j]);
+        double d2 = 0;
+        for (int k = 0; k < D; ++k) d2 += (p[k] - q[t][k]) * (p[k] - q[t][k]);
+        const double w = options.cutoff * w0 * s;
+        if (d2 > w * w) return;
+        const double f2 =
+            features ? double(CGAL::to_double(S.feature_distance(sites[i].feature, sites[j].feature))) * inv_sf2 : 0.0;
+        const double a = inv_tau2 / (s * s);
+        const double weight = std::pow(s, intrinsic);
+        // The kernel minus its value at the cut-off distance (same features), so E is continuous.
+        const double e = weight * std::exp(-(d2 * inv_sp2 + f2) * a);
+        row += e - weight * std::exp(-(cutoff2 + f2 * a));
+        ++out.pairs;
+        if (gradient) {
+          const double c = -2 * e * inv_sp2 * inv_tau2 / (s * s);
+          for (int k = 0; k < D; ++k) g[k] += c * (p[k] - q[t][k]);
+        }
+      });
+      total += row;
+      if (gradient)
+        for (int k = 0; k < D; ++k) out.gradient[i][k] = 2 * g[k] / double(n);
+    }
+    out.energy = total / double(n);
+    return out;
+  }
+
+  const Kernel_relaxation_options<D>& options;
+  double mean_density = 1;
+  int intrinsic = 2;
+  Point box_lo{}, box_hi{};
+  double spacing = 0;  // of the items
+  double packing = 0;
+  double tau = 1;
+};
+/// \endcond
+}  // namespace internal
+
+/// Stage 1: the kernel energy E of some sites and its gradient with respect to the positions (features and
+/// scales held at their values: they are piecewise constant in the positions). The sites are used as given
+/// (not clamped, features not refreshed).
+/// \param items the domain (for the kernel width, the box and the density). \param sites the sites (finite,
+/// checked). \param options metric, kernel width, cut-off, density, constraint. \param traits FeaturePointTraits.
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+Kernel_energy<Traits::dimension> kernel_energy(const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,
+                                               const Kernel_relaxation_options<Traits::dimension>& options = {},
+                                               const Traits& traits = Traits()) {
+  const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), "kernel_energy");
+  engine.check_sites(sites, "kernel_energy");
+  std::vector<double> scales(sites.size(), 1.0);
+  if (engine.items() > 0)
+    for (std::size_t i = 0; i < sites.size(); ++i) scales[i] = engine.scale_at(engine.nearest_item(sites[i].position));
+  return engine.energy(sites, scales, true);
+}
+
+/// Kernel relaxation (dissertation Sec. 2.2.2): gradient steps on the kernel energy with step control, features
+/// following the positions, until a stopping rule holds (iteration cap, relative energy decrease, largest move,
+/// no descent, the on_iteration callback). Each site moves by -step (w_i^2 N / 4) dE/dp_i (w_i its spatial
+/// kernel width), a descent direction that moves an isolated close pair apart by about step times its
+/// distance; a step that does not lower E is halved (up to 30 times, then the run stops with no_descent), an
+/// accepted one makes the next 1.25 times longer. Deterministic: no randomness beyond the starting sites.
+/// \param items the domain: a range of items read through the traits (positions finite, checked).
+/// \param sites the starting sites, e.g. sites_at_items() of a dart-throwing result (finite, checked).
+/// \param options metric, kernel, density, constraint, step control, stopping rules (checked; throws naming
+///   the field).
+/// \param traits a model of FeaturePointTraits.
+/// \return the sites and the history. No items or fewer than two sites: degenerate_input, sites unchanged.
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::vector<Bilateral_site<Traits>> sites,
+                                                   const Kernel_relaxation_options<Traits::dimension>& options = {},
+                                                   const Traits& traits = Traits()) {
+  constexpr int D = Traits::dimension;
+  const char* fn = "kernel_relaxation";
+  const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), fn);
+  engine.check_sites(sites, fn);
+  Kernel_relaxation_result<Traits> result;
+  result.kernel_width = engine.tau;
+  result.step = options.initial_step;
+  if (engine.items() == 0 || sites.size() < 2) {
+    result.sites = std::move(sites);
+    result.status = Status::degenerate_input;
+    return result;
+  }
+  const double w0 = engine.tau * options.sigma_position;
+  // Coincident sites have no gradient between them: every copy after the first (in index order) moves by
+  // w0 / 100 along a direction fixed by its index (golden-angle spiral), then the energy separates them.
+  {
+    std::vector<std::uint32_t> order(sites.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return sites[a].position != sites[b].position ? sites[a].position < sites[b].position : a < b;
+    });
+    std::vector<std::array<double, D>> original(sites.size());
+    for (std::size_t i = 0; i < sites.size(); ++i) original[i] = sites[i].position;
+    for (std::size_t k = 1; k < order.size(); ++k) {
+      if (original[order[k]] != original[order[k - 1]]) continue;
+      const double a = 2.399963229728653 * double(order[k]);  // golden angle
+      const double z = D == 3 ? std::cos(0.5 * a) : 0.0, r = std::sqrt(1 - z * z);
+      sites[order[k]].position[0] += w0 / 100 * r * std::cos(a);
+      sites[order[k]].position[1] += w0 / 100 * r * std::sin(a);
+      if constexpr (D == 3) sites[order[k]].position[2] += w0 / 100 * z;
+    }
+  }
+  std::vector<double> scales;
+  std::vector<std::uint32_t> item;
+  engine.settle(sites, scales, item);
+  auto current = engine.energy(sites, scales, true);
+  double step = options.initial_step;
+  std::vector<Bilateral_site<Traits>> trial;
+  std::vector<double> trial_scales;
+  std::vector<std::uint32_t> trial_item;
+  std::vector<Bilateral_site<Traits>> frozen;
+  // Whether features or scales can change with the positions (else one energy pass per step).
+  const bool refresh = !std::isinf(options.sigma_feature) || !options.density.empty();
+  const bool snap = options.constraint == Kernel_constraint::snap_to_item;
+  // The sites as the caller sees them: snapped to their items.
+  auto reported = [&](const std::vector<Bilateral_site<Traits>>& free, const std::vector<std::uint32_t>& at) {
+    std::vector<Bilateral_site<Traits>> out = free;
+    if (snap)
+      for (std::size_t i = 0; i < out.size(); ++i) out[i].position = engine.S.positions[at[i]];
+    return out;
+  };
+  for (std::size_t it = 0;; ++it) {
+    if (it == options.max_iterations) {
+      result.stop = Lloyd_stop::iteration_cap;
+      break;
+    }
+    if (!FeatureRecon::internal::report_progress(options.progress, double(it) / double(options.max_iterations))) {
+      result.stop = Lloyd_stop::interrupted;
+      result.status = Status::interrupted;
+      break;
+    }
+    bool accepted = false;
+    Kernel_energy<D> next;
+    double max_move = 0, total_move = 0, decrease = 0;
+    for (int attempt = 0; attempt < 30 && !accepted; ++attempt) {
+      trial = sites;
+      for (std::size_t i = 0; i < sites.size(); ++i) {
+        const double w = w0 * scales[i];
+        const double f = step * w * w * double(sites.size()) / 4;
+        double len = 0;
+        std::array<double, D> d;
+        for (int k = 0; k < D; ++k) {
+          d[k] = -f * current.gradient[i][k];
+          len += d[k] * d[k];
+        }
+        len = std::sqrt(len);
+        const double cap = w;  // never more than a kernel width per step
+        const double shrink = len > cap ? cap / len : 1.0;
+        for (int k = 0; k < D; ++k) trial[i].position[k] += shrink * d[k];
+      }
+      engine.settle(trial, trial_scales, trial_item);
+      // The step must lower E with the features and scales it started from (E jumps where a site's nearest
+      // item changes); they are refreshed after it.
+      frozen = trial;
+      for (std::size_t i = 0; i < sites.size(); ++i) frozen[i].feature = sites[i].feature;
+      auto probe = engine.energy(frozen, scales, !refresh);
+      if (probe.energy < current.energy) {
+        accepted = true;
+        decrease = current.energy - probe.energy;
+        next = refresh ? engine.energy(trial, trial_scales, true) : std::move(probe);
+      } else {
+        step /= 2;
+      }
+    }
+    if (!accepted) {
+      result.stop = Lloyd_stop::no_descent;
+      break;
+    }
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      const double m = std::sqrt(internal::Item_domain<Traits>::squared(trial[i].position, sites[i].position));
+      max_move = std::max(max_move, m);
+      total_move += m;
+    }
+    Lloyd_iteration_statistics s;
+    s.iteration = it + 1;
+    s.energy = current.energy;
+    s.max_move = max_move;
+    s.mean_move = total_move / double(sites.size());
+    s.relative_radius = engine.relative_radius(snap ? reported(sites, item) : sites, engine.packing);
+    const double previous = current.energy;  // the step lowered it by `decrease`
+    sites.swap(trial);
+    scales.swap(trial_scales);
+    item.swap(trial_item);
+    current = std::move(next);
+    step = std::min(step * 1.25, 4.0);
+    const bool keep_going = !options.on_iteration || [&] {
+      std::vector<std::array<double, D>> positions(sites.size());
+      for (std::size_t k = 0; k < sites.size(); ++k) positions[k] = snap ? engine.S.positions[item[k]] : sites[k].position;
+      return options.on_iteration(s, positions);
+    }();
+    result.history.push_back(s);
+    if (!keep_going) {
+      result.stop = Lloyd_stop::callback;
+      break;
+    }
+    if (options.move_tolerance > 0 && s.max_move <= options.move_tolerance) {
+      result.stop = Lloyd_stop::move_tolerance;
+      break;
+    }
+    if (options.energy_tolerance > 0 && decrease < options.energy_tolerance * previous) {
+      result.stop = Lloyd_stop::energy_tolerance;
+      break;
+    }
+  }
+  if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  result.sites = reported(sites, item);
+  result.step = step;
+  return result;
+}
+
+/// kernel_relaxation() started at some items (indices into `items`, e.g. bilateral_dart_throwing_count()'s
+/// output).
+/// \param items the domain. \param initial indices of the starting items (checked).
+/// \param options as for kernel_relaxation(). \param traits FeaturePointTraits.
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, const std::vector<std::size_t>& initial,
+                                                   const Kernel_relaxation_options<Traits::dimension>& options = {},
+                                                   const Traits& traits = Traits()) {
+  return kernel_relaxation(items, sites_at_items(items, initial, traits), options, traits);
+}
+
+}  // namespace sampling
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SAMPLING_KERNEL_RELAXATION_H

@@ -1,0 +1,336 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+// Kernel relaxation: the closed-form gradient against finite differences (box ghosts, bilateral features,
+// adaptive scales), monotone energy and rising relative radius from white noise and from darts, the box
+// boundary, features following the positions, adaptive density, snapping to items in 3D, coincident and
+// degenerate starts, determinism, bad input.
+#include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/image_domain.h>
+#include <FeatureRecon/sampling/kernel_relaxation.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sampling/sampling_test_utilities.h"
+
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using Site = Bilateral_site<Grey_pixel_traits>;
+
+std::vector<Grey_pixel> image(int w, int h, const std::function<int(int, int)>& value) {
+  std::vector<std::uint8_t> v(std::size_t(w * h));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) v[std::size_t(r * w + c)] = static_cast<std::uint8_t>(value(c, r));
+  return image_pixels<Grey_pixel>(w, h, v);
+}
+
+std::vector<Site> random_sites(std::size_t n, const std::vector<Grey_pixel>& px, int w, int h, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Site> s(n);
+  for (auto& x : s) {
+    x.position = {u() * w, u() * h};
+    const int c = std::min(w - 1, int(x.position[0])), r = std::min(h - 1, int(x.position[1]));
+    x.feature = {px[std::size_t(r * w + c)].value};
+  }
+  return s;
+}
+
+// Central differences of kernel_energy() against its gradient, every coordinate of every site.
+template <class Items, class Sites, class Options>
+void expect_gradient(const Items& items, const Sites& sites, const Options& o) {
+  const auto e = kernel_energy(items, sites, o);
+  ASSERT_EQ(e.gradient.size(), sites.size());
+  ASSERT_GT(e.pairs, sites.size());
+  double largest = 0;
+  for (const auto& g : e.gradient)
+    for (const double x : g) largest = std::max(largest, std::abs(x));
+  const double h = 1e-6;
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    for (std::size_t k = 0; k < sites[i].position.size(); ++k) {
+      auto plus = sites, minus = sites;
+      plus[i].position[k] += h;
+      minus[i].position[k] -= h;
+      const double fd = (kernel_energy(items, plus, o).energy - kernel_energy(items, minus, o).energy) / (2 * h);
+      EXPECT_NEAR(e.gradient[i][k], fd, 1e-6 * largest + 1e-12) << "site " << i << " coordinate " << k;
+    }
+}
+
+TEST(Kernel_relaxation, GradientMatchesFiniteDifferences) {
+  const auto px = image(24, 20, [](int c, int r) { return c < 11 ? 30 : 200 + (r % 3); });
+  const auto sites = random_sites(25, px, 24, 20, 3);
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = 4.0;  // wide: many pairs and ghosts within the cut-off
+  o.cutoff = 50;         // nothing cut: the energy is smooth
+  expect_gradient(px, sites, o);
+  o.sigma_feature = 0.3;  // bilateral: features held fixed
+  expect_gradient(px, sites, o);
+  o.sigma_position = 2;
+  o.kernel_width = 2.0;
+  o.density.assign(px.size(), 1.0);
+  for (std::size_t i = 0; i < px.size(); ++i) o.density[i] = px[i].value < 100 ? 4.0 : 1.0;  // adaptive scales
+  expect_gradient(px, sites, o);
+  // Ghosts count: a single site near a face feels its mirror image.
+  Kernel_relaxation_options<2> one;
+  one.kernel_width = 3;
+  const std::vector<Site> lone{{{1.0, 10.0}, {30}}, {{20.0, 10.0}, {30}}};
+  const auto e = kernel_energy(px, lone, one);
+  // Site 0 at x = 1: its ghost across x = 0 at distance 2; site 1 at x = 20, ghost across x = 24 at distance 8
+  // (within 3 * 3 = 9); the pair itself is 19 apart (cut off at 9); y faces are 10 away (cut off).
+  EXPECT_NEAR(e.energy, (std::exp(-4.0 / 9) + std::exp(-64.0 / 9) - 2 * std::exp(-9.0)) / 2, 1e-15);
+  EXPECT_EQ(e.pairs, 2u);
+  EXPECT_LT(e.gradient[0][0], 0);  // the energy falls as site 0 moves away from the face at x = 0
+  EXPECT_GT(e.gradient[1][0], 0);  // and as site 1 moves away from the face at x = 24
+  EXPECT_EQ(e.gradient[0][1], 0.0);
+}
+
+TEST(Kernel_relaxation, EnergyFallsAndSitesSpreadFromWhiteNoise) {
+  const auto px = image(64, 64, [](int, int) { return 128; });
+  const auto start = random_sites(150, px, 64, 64, 7);
+  Kernel_relaxation_options<2> o;
+  o.max_iterations = 60;
+  o.energy_tolerance = 0;
+  const auto r = kernel_relaxation(px, start, o);
+  ASSERT_GE(r.history.size(), 30u);
+  for (std::size_t i = 1; i < r.history.size(); ++i)
+    EXPECT_LT(r.history[i].energy, r.history[i - 1].energy) << "iteration " << i + 1;
+  EXPECT_LT(r.history.front().relative_radius, 0.2);
+  Kernel_relaxation_options<2> probe = o;
+  const double final_energy = kernel_energy(px, r.sites, probe).energy;
+  EXPECT_LT(final_energy, 0.5 * r.history.front().energy);  // white noise has many close pairs
+  // Spread: the relative radius of the final sites.
+  double dmin = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < r.sites.size(); ++i)
+    for (std::size_t j = i + 1; j < r.sites.size(); ++j) {
+      const double dx = r.sites[i].position[0] - r.sites[j].position[0];
+      const double dy = r.sites[i].position[1] - r.sites[j].position[1];
+      dmin = std::min(dmin, std::sqrt(dx * dx + dy * dy));
+    }
+  const double d_hex = std::sqrt(2 * 64.0 * 64.0 / (std::sqrt(3.0) * 150));
+  EXPECT_GT(dmin / d_hex, 0.6);
+  // Inside the box [0, 64]^2, and not piled up on its faces: the band within d_hex / 4 of a face holds about
+  // its share of the area (~3%), far from all sites.
+  std::size_t band = 0;
+  for (const auto& s : r.sites) {
+    for (const double x : s.position) {
+      EXPECT_GE(x, 0.0);
+      EXPECT_LE(x, 64.0);
+    }
+    const double m = std::min({s.position[0], s.position[1], 64 - s.position[0], 64 - s.position[1]});
+    band += m < d_hex / 4;
+  }
+  EXPECT_LE(band, 15u);
+}
+
+TEST(Kernel_relaxation, RelaxesDartThrowing) {
+  const auto px = image(80, 60, [](int, int) { return 90; });
+  std::vector<std::size_t> start;
+  Dart_throwing_count_options d;
+  d.darts.seed = 5;
+  bilateral_dart_throwing_count(px, 200, std::back_inserter(start), d);
+  Kernel_relaxation_options<2> o;
+  o.max_iterations = 40;
+  std::vector<double> rho;
+  o.on_iteration = [&](Lloyd_iteration_statistics& s, const std::vector<std::array<double, 2>>&) {
+    rho.push_back(s.relative_radius);
+    return true;
+  };
+  const auto r = kernel_relaxation(px, start, o);
+  ASSERT_FALSE(rho.empty());
+  EXPECT_EQ(r.status, Status::success);
+  // Darts on pixels start around 0.5-0.7; the relaxation pushes rho up.
+  EXPECT_GT(rho.back(), rho.front());
+  EXPECT_GT(rho.back(), 0.8);
+}
+
+TEST(Kernel_relaxation, FeaturesFollowAndEdgesAttract) {
+  // Dark left of column 30, bright right: with a small sigma_feature, pairs across the edge hardly repel.
+  const auto px = image(60, 40, [](int c, int) { return c < 30 ? 20 : 235; });
+  const auto start = random_sites(120, px, 60, 40, 9);
+  Kernel_relaxation_options<2> o;
+  o.max_iterations = 50;
+  const auto euclidean = kernel_relaxation(px, start, o);
+  o.sigma_feature = 0.2;
+  const auto bilateral = kernel_relaxation(px, start, o);
+  auto min_across = [&](const auto& sites) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& a : sites)
+      for (const auto& b : sites)
+        if (a.position[0] < 30 && b.position[0] >= 30)
+          best = std::min(best, std::hypot(a.position[0] - b.position[0], a.position[1] - b.position[1]));
+    return best;
+  };
+  // Pairs across the edge hardly repel, so sites crowd against it from both sides as against a free face.
+  auto near_edge = [&](const auto& sites) {
+    std::size_t n = 0;
+    for (const auto& a : sites) n += std::abs(a.position[0] - 30) < 1.0;
+    return n;
+  };
+  EXPECT_GE(near_edge(bilateral.sites), 2 * near_edge(euclidean.sites));  // 8 and 3 here
+  EXPECT_LT(min_across(bilateral.sites), 0.85 * min_across(euclidean.sites));  // 3.1 and 4.0
+  for (const auto* r : {&euclidean, &bilateral})
+    for (const auto& s : r->sites) {
+      const int c = std::min(59, int(s.position[0]));
+      const int want = c < 30 ? 20 : 235;
+      if (std::abs(s.position[0] - 30) > 1e-9) {
+        EXPECT_EQ(int(s.feature[0]), want) << s.position[0];
+      }
+    }
+}
+
+TEST(Kernel_relaxation, DensityAdaptsTheSpacing) {
+  // Density 4 on the left half, 1 on the right: the left half ends with about four times the sites.
+  const auto px = image(64, 32, [](int, int) { return 0; });
+  Kernel_relaxation_options<2> o;
+  o.density.resize(px.size());
+  for (std::size_t i = 0; i < px.size(); ++i) o.density[i] = px[i].column < 32 ? 4.0 : 1.0;
+  o.max_iterations = 500;  // sites migrate slowly across the domain from white noise
+  o.energy_tolerance = 0;
+  const auto r = kernel_relaxation(px, random_sites(160, px, 64, 32, 21), o);
+  std::size_t left = 0;
+  for (const auto& s : r.sites) left += s.position[0] < 32;
+  const double ratio = double(left) / double(r.sites.size() - left);
+  EXPECT_GT(ratio, 2.5);
+  EXPECT_LT(ratio, 6.0);
+}
+
+TEST(Kernel_relaxation, SnapsToItemsOnSurfaces) {
+  // A 40 x 40 grid of points with normals on the plane z = 0: snapped sites are distinct items.
+  using K = test::K;
+  std::vector<std::pair<K::Point_3, K::Vector_3>> items;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j) items.push_back({K::Point_3(i, j, 0), K::Vector_3(0, 0, 1)});
+  std::vector<std::size_t> start;
+  for (std::size_t k = 0; k < 60; ++k) start.push_back((k * 7919) % 400);  // crowded in the first 10 rows
+  start.push_back(start[0]);                                              // and one duplicate
+  Kernel_relaxation_options<3> o;
+  EXPECT_EQ(o.constraint, Kernel_constraint::snap_to_item);
+  o.max_iterations = 80;
+  const auto r = kernel_relaxation(items, start, o);
+  std::set<std::array<double, 3>> distinct;
+  for (const auto& s : r.sites) {
+    distinct.insert(s.position);
+    EXPECT_EQ(s.position[0], std::round(s.position[0]));
+    EXPECT_EQ(s.position[2], 0.0);
+  }
+  EXPECT_EQ(distinct.size(), r.sites.size());
+  ASSERT_FALSE(r.history.empty());
+  EXPECT_GT(r.history.back().relative_radius, r.history.front().relative_radius);
+}
+
+TEST(Kernel_relaxation, DeterministicAndStoppingRules) {
+  const auto px = image(40, 40, [](int c, int r) { return (c * 7 + r * 3) % 256; });
+  const auto start = random_sites(60, px, 40, 40, 2);
+  Kernel_relaxation_options<2> o;
+  o.sigma_feature = 0.5;
+  o.max_iterations = 20;
+  o.energy_tolerance = 0;
+  const auto a = kernel_relaxation(px, start, o), b = kernel_relaxation(px, start, o);
+  ASSERT_EQ(a.sites.size(), b.sites.size());
+  for (std::size_t i = 0; i < a.sites.size(); ++i) {
+    EXPECT_EQ(a.sites[i].position, b.sites[i].position);
+    EXPECT_EQ(a.sites[i].feature, b.sites[i].feature);
+  }
+  EXPECT_EQ(a.stop, Lloyd_stop::iteration_cap);
+  EXPECT_EQ(a.history.size(), 20u);
+  o.energy_tolerance = 1e-2;
+  const auto t = kernel_relaxation(px, start, o);
+  EXPECT_EQ(t.stop, Lloyd_stop::energy_tolerance);
+  EXPECT_LT(t.history.size(), 20u);
+  o.energy_tolerance = 0;
+  o.move_tolerance = 0.05;
+  o.max_iterations = 500;
+  o.sigma_feature = std::numeric_limits<double>::infinity();  // bilateral sites may jitter as features flip
+  const auto m = kernel_relaxation(px, start, o);
+  EXPECT_EQ(m.stop, Lloyd_stop::move_tolerance);
+  EXPECT_LE(m.history.back().max_move, 0.05);
+  o.move_tolerance = 0;
+  o.on_iteration = [](Lloyd_iteration_statistics& s, const std::vector<std::array<double, 2>>&) {
+    return s.iteration < 3;
+  };
+  const auto c = kernel_relaxation(px, start, o);
+  EXPECT_EQ(c.stop, Lloyd_stop::callback);
+  EXPECT_EQ(c.history.size(), 3u);
+  o.on_iteration = nullptr;
+  o.progress = [](double f) { return f < 0.01; };
+  const auto p = kernel_relaxation(px, start, o);
+  EXPECT_EQ(p.stop, Lloyd_stop::interrupted);
+  EXPECT_EQ(p.status, Status::interrupted);
+}
+
+TEST(Kernel_relaxation, DegenerateStarts) {
+  const auto px = image(16, 16, [](int, int) { return 50; });
+  Kernel_relaxation_options<2> o;
+  // No items, no sites, one site: nothing to do.
+  EXPECT_EQ(kernel_relaxation(std::vector<Grey_pixel>{}, random_sites(3, px, 16, 16, 1), o).status,
+            Status::degenerate_input);
+  EXPECT_EQ(kernel_relaxation(px, std::vector<Site>{}, o).status, Status::degenerate_input);
+  const auto one = kernel_relaxation(px, random_sites(1, px, 16, 16, 1), o);
+  EXPECT_EQ(one.status, Status::degenerate_input);
+  EXPECT_EQ(one.sites.size(), 1u);
+  // Every site at the same point: they separate (deterministically) and spread.
+  std::vector<Site> same(12, Site{{8.0, 8.0}, {50}});
+  o.max_iterations = 200;
+  const auto r = kernel_relaxation(px, same, o);
+  EXPECT_EQ(r.status, Status::success);
+  double dmin = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < r.sites.size(); ++i)
+    for (std::size_t j = i + 1; j < r.sites.size(); ++j)
+      dmin = std::min(dmin, std::hypot(r.sites[i].position[0] - r.sites[j].position[0],
+                                       r.sites[i].position[1] - r.sites[j].position[1]));
+  EXPECT_GT(dmin, 2.0);  // d_hex = 4.9 for 12 sites on 16 x 16
+  // A single pixel: sites collapse onto its box and stop without descent or stay.
+  const auto tiny = image(1, 1, [](int, int) { return 9; });
+  const auto t = kernel_relaxation(tiny, std::vector<Site>(3, Site{{0.5, 0.5}, {9}}), o);
+  for (const auto& s : t.sites)
+    for (const double x : s.position) EXPECT_TRUE(x >= 0 && x <= 1) << x;
+}
+
+TEST(Kernel_relaxation, BadInputNamesTheProblem) {
+  const auto px = image(6, 6, [](int, int) { return 1; });
+  const auto sites = random_sites(3, px, 6, 6, 1);
+  auto expect_message = [](auto&& f, const std::string& part) {
+    try {
+      f();
+      ADD_FAILURE() << "no exception; expected one mentioning " << part;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = -1;
+  expect_message([&] { kernel_relaxation(px, sites, o); }, "kernel_width");
+  o.kernel_width = 0;
+  o.cutoff = 0;
+  expect_message([&] { kernel_energy(px, sites, o); }, "cutoff");
+  o.cutoff = 3;
+  o.initial_step = std::nan("");
+  expect_message([&] { kernel_relaxation(px, sites, o); }, "initial_step");
+  o.initial_step = 0.25;
+  o.density.assign(36, 0.0);
+  expect_message([&] { kernel_relaxation(px, sites, o); }, "density is 0 on every item");
+  o.density[4] = -2;
+  expect_message([&] { kernel_relaxation(px, sites, o); }, "density[4]");
+  o.density.assign(7, 1.0);
+  expect_message([&] { kernel_relaxation(px, sites, o); }, "density has 7 values for 36 items");
+  o.density.clear();
+  o.sigma_position = 0;
+  expect_message([&] { kernel_relaxation(px, sites, o); }, "sigma_position");
+  o.sigma_position = 1;
+  auto bad = sites;
+  bad[1].position[0] = std::numeric_limits<double>::infinity();
+  expect_message([&] { kernel_relaxation(px, bad, o); }, "site 1");
+  expect_message([&] { kernel_relaxation(px, std::vector<std::size_t>{0, 99}, o); }, "indices[1] = 99");
+}
+
+}  // namespace
