@@ -178,6 +178,33 @@ const std::vector<Command>& commands() {
        "                     or PPM); the JSON then has mosaic_psnr_db against the input\n"
        "  --quiet            no progress on standard error\n",
        run_sample_image},
+      {"stipple", "Stippling: dots following a picture's darkness, coloured from a small palette",
+       "usage: featurerecon stipple IMAGE --count N [--method lloyd|bilateral-lloyd|darts|kernel]\n"
+       "                           [--sigma-feature S] [--iterations K] [--palette C] [--gamma G] [--grey]\n"
+       "                           [--seed N] (--out FILE.svg | --png FILE.png) [--quiet]\n"
+       "\n"
+       "N dots whose density follows the darkness (1 - luma)^G of the picture, each in the palette colour nearest\n"
+       "to the pixel under it. Prints JSON: dots, iterations, stop, dot_radius, seconds.\n"
+       "\n"
+       "  IMAGE              PNG, JPEG, PGM or PPM (grey or RGB)\n"
+       "  --method M         lloyd: Euclidean adaptive Lloyd (exact Voronoi cells of CGAL's Delaunay\n"
+       "                     triangulation, density integrated per pixel; the reference; default);\n"
+       "                     bilateral-lloyd: discrete Lloyd on the pixels in the bilateral distance, the\n"
+       "                     colour as the feature (dots keep to their side of an edge); darts: bilateral dart\n"
+       "                     throwing with radii following the density; kernel: darts relaxed by the bilateral\n"
+       "                     Gaussian kernel energy\n"
+       "  --count N          number of dots\n"
+       "  --sigma-feature S  colour scale of the bilateral methods, positions in units of the mean dot spacing\n"
+       "                     (colour distances lie in [0, 1]; smaller keeps edges sharper); default 0.3\n"
+       "  --iterations K     Lloyd iterations (default 50) or kernel steps (default 100)\n"
+       "  --palette C        colours of an RGB picture's dots: k-means of its colours (default 6; grey: black)\n"
+       "  --gamma G          density exponent (default 1; larger leaves light areas emptier)\n"
+       "  --grey             stipple the luma of a colour picture in black\n"
+       "  --seed N           the same seed gives the same dots (default 0)\n"
+       "  --out FILE.svg     the dots as an SVG picture on white\n"
+       "  --png FILE.png     the same as a PNG (or JPEG, PGM, PPM) of the input's size\n"
+       "  --quiet            no progress on standard error\n",
+       run_stipple},
   };
   return list;
 }

@@ -27,6 +27,7 @@ int run_skeleton(const std::vector<std::string>& args);
 int run_sample(const std::vector<std::string>& args);
 int run_sample_stats(const std::vector<std::string>& args);
 int run_sample_image(const std::vector<std::string>& args);
+int run_stipple(const std::vector<std::string>& args);
 
 }  // namespace cli
 }  // namespace FeatureRecon

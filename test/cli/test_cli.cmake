@@ -258,6 +258,32 @@ if(NOT rgb_field_count EQUAL 5)
 endif()
 expect(sample_image_grey 0 "\"channels\": 1," sample-image --input ${WORK}/tiny.ppm --grey --count 5 --out ${WORK}/g.txt --quiet)
 expect(sample_image_bad_method 2 "--method must be elimination, darts or continuous" sample-image --input ${WORK}/line.pgm --method lloyd --count 5 --out ${WORK}/x.txt)
+# stipple: every method gives the asked number of dots, the same seed the same picture; bad arguments explained.
+expect(stipple_help 0 "usage: featurerecon stipple IMAGE --count N" stipple --help)
+foreach(method lloyd bilateral-lloyd darts kernel)
+  expect(stipple_${method} 0 "\"channels\": 1, \"method\": \"${method}\", \"dots\": 40, \"palette\": 1,"
+         stipple ${WORK}/line.pgm --count 40 --method ${method} --iterations 10 --out ${WORK}/st_${method}.svg
+         --png ${WORK}/st_${method}.png --quiet)
+  expect_count(${WORK}/st_${method}.svg "<circle" 40)
+endforeach()
+expect(stipple_again 0 "\"dots\": 40" stipple ${WORK}/line.pgm --count 40 --method kernel --iterations 10
+       --out ${WORK}/st_kernel2.svg --quiet)
+file(READ ${WORK}/st_kernel.svg k1)
+file(READ ${WORK}/st_kernel2.svg k2)
+if(NOT k1 STREQUAL k2)
+  message(SEND_ERROR "stipple: the same seed gave different dots")
+endif()
+expect(stipple_rgb 0 "\"channels\": 3,.*\"dots\": 6, \"palette\": 3," stipple ${WORK}/tiny.ppm --count 6 --palette 3
+       --method bilateral-lloyd --out ${WORK}/st_rgb.svg --quiet)
+expect_count(${WORK}/st_rgb.svg "<g fill=" 3)
+expect(stipple_no_image 2 "give the picture to stipple" stipple --count 5 --out ${WORK}/x.svg)
+expect(stipple_bad_method 2 "--method must be lloyd, bilateral-lloyd, darts or kernel, got 'cvt'" stipple ${WORK}/line.pgm
+       --count 5 --method cvt --out ${WORK}/x.svg)
+expect(stipple_needs_count 2 "missing required option --count" stipple ${WORK}/line.pgm --out ${WORK}/x.svg)
+expect(stipple_svg_only 2 "--out writes an SVG picture" stipple ${WORK}/line.pgm --count 5 --out ${WORK}/x.txt)
+expect(stipple_too_many 2 "--count 5000 exceeds the 2304 pixels" stipple ${WORK}/line.pgm --count 5000 --out ${WORK}/x.svg)
+file(WRITE ${WORK}/white.pgm "P2\n2 2\n255\n255 255 255 255\n")
+expect(stipple_white 2 "white everywhere: nothing to stipple" stipple ${WORK}/white.pgm --count 2 --out ${WORK}/x.svg)
 expect(sample_image_continuous_radius 2 "--method continuous needs --radius R" sample-image --input ${WORK}/line.pgm --method continuous --count 5 --out ${WORK}/x.txt)
 expect(sample_image_too_many 2 "--count 13 exceeds the 12 pixels" sample-image --input ${WORK}/tiny.ppm --count 13 --out ${WORK}/x.txt)
 expect(sample_image_no_output 2 "give at least one of --out" sample-image --input ${WORK}/line.pgm --count 5)
