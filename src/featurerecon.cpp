@@ -205,6 +205,36 @@ const std::vector<Command>& commands() {
        "  --png FILE.png     the same as a PNG (or JPEG, PGM, PPM) of the input's size\n"
        "  --quiet            no progress on standard error\n",
        run_stipple},
+      {"bilateral-filter", "Bilateral filter of a picture on sampled taps, with PSNR and SSIM against the exact one",
+       "usage: featurerecon bilateral-filter IMAGE [--sampling uniform|bilateral|exact] [--mode local|global]\n"
+       "                                    [--budget B] [--sigma-spatial S] [--sigma-range S] [--radius R]\n"
+       "                                    [--sampling-sigma S] [--no-compensation] [--candidates C] [--grey]\n"
+       "                                    [--seed N] --out FILE.png [--exact-out FILE.png] [--quiet]\n"
+       "\n"
+       "The bilateral filter (spatial Gaussian S over a (2R+1)^2 window, range Gaussian on colours in [0, 1])\n"
+       "evaluated on blue-noise taps, each reading the pixel it falls in. Prints JSON: taps_per_kernel_pixel,\n"
+       "sampling_radius, psnr_db and ssim against the exact filter (psnr_db null when equal), seconds of the\n"
+       "sampled filter and exact_seconds of the exact one.\n"
+       "\n"
+       "  IMAGE              PNG, JPEG, PGM or PPM (grey or RGB)\n"
+       "  --sampling M       uniform: Euclidean Poisson-disk taps; bilateral: Poisson-disk in the bilateral\n"
+       "                     distance with the colour as the feature (taps crowd at edges, both sides sampled;\n"
+       "                     default); exact: every pixel of the window\n"
+       "  --mode M           global: one pattern for the picture, each pixel uses the taps in its window\n"
+       "                     (default); local: a pattern per pixel, drawn in its window\n"
+       "  --budget B         taps per kernel pixel, in (0, 16] (default 0.5)\n"
+       "  --sigma-spatial S  spatial sigma in pixels (default 3)\n"
+       "  --sigma-range S    range sigma on colours in [0, 1] (default 0.1)\n"
+       "  --radius R         window half-width in pixels (default ceil(2 sigma-spatial))\n"
+       "  --sampling-sigma S colour scale of the bilateral sampling distance (default: the range sigma)\n"
+       "  --no-compensation  do not weight bilateral taps by their inverse density\n"
+       "  --candidates C     candidate darts per tap, 2 to 64 (default 4)\n"
+       "  --grey             filter the luma of a colour picture\n"
+       "  --seed N           the same seed gives the same taps (default 0)\n"
+       "  --out FILE         the sampled filter's picture (PNG, JPEG, PGM or PPM)\n"
+       "  --exact-out FILE   the exact filter's picture\n"
+       "  --quiet            no progress on standard error\n",
+       run_bilateral_filter},
   };
   return list;
 }

@@ -28,6 +28,7 @@ int run_sample(const std::vector<std::string>& args);
 int run_sample_stats(const std::vector<std::string>& args);
 int run_sample_image(const std::vector<std::string>& args);
 int run_stipple(const std::vector<std::string>& args);
+int run_bilateral_filter(const std::vector<std::string>& args);
 
 }  // namespace cli
 }  // namespace FeatureRecon

@@ -42,21 +42,6 @@ struct Image_sample {
   std::array<double, 3> colour{};
 };
 
-/// Luma (ITU-R BT.601) of an RGB image, rounded to 8 bits.
-io::Image to_grey(const io::Image& image) {
-  if (image.channels == 1) return image;
-  io::Image g;
-  g.width = image.width;
-  g.height = image.height;
-  g.channels = 1;
-  g.data.resize(std::size_t(image.width) * std::size_t(image.height));
-  for (std::size_t i = 0; i < g.data.size(); ++i) {
-    const double y = 0.299 * image.data[3 * i] + 0.587 * image.data[3 * i + 1] + 0.114 * image.data[3 * i + 2];
-    g.data[i] = static_cast<std::uint8_t>(std::lround(y));
-  }
-  return g;
-}
-
 struct Sampler_settings {
   std::string method;
   long long count = 0;  // 0: none given
@@ -273,7 +258,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
     throw Usage_error("give at least one of --out FILE, --svg FILE, --picture FILE, --mosaic FILE");
 
   io::Image image = io::read_image(input);
-  if (args.has("grey")) image = to_grey(image);
+  if (args.has("grey")) image = io::to_grey(image);
   const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
   if (s.method != "continuous" && s.count > static_cast<long long>(pixels))
     throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) + " pixels of " +

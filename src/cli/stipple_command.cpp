@@ -354,17 +354,7 @@ int run_stipple(const std::vector<std::string>& argv) {
     throw Usage_error("--out writes an SVG picture: give a file ending in .svg, got '" + args.get("out") + "'");
 
   io::Image image = io::read_image(input);
-  if (args.has("grey") && image.channels == 3) {
-    io::Image g;
-    g.width = image.width;
-    g.height = image.height;
-    g.channels = 1;
-    g.data.resize(std::size_t(image.width) * std::size_t(image.height));
-    for (std::size_t i = 0; i < g.data.size(); ++i)
-      g.data[i] = static_cast<std::uint8_t>(
-          std::lround(0.299 * image.data[3 * i] + 0.587 * image.data[3 * i + 1] + 0.114 * image.data[3 * i + 2]));
-    image = std::move(g);
-  }
+  if (args.has("grey")) image = io::to_grey(image);
   const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
   if (s.count > pixels)
     throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) + " pixels of " + input);

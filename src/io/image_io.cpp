@@ -5,6 +5,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <csetjmp>
 #include <cstdio>
@@ -222,6 +223,20 @@ void write_image(const std::string& path, const Image& image) {
   if (e == "pgm") return write_pnm(path, image, false);
   if (e == "ppm") return write_pnm(path, image, true);
   fail(path, "unknown image format '." + e + "' (expected .png, .jpg, .jpeg, .pgm or .ppm)");
+}
+
+Image to_grey(const Image& image) {
+  if (image.channels == 1) return image;
+  Image g;
+  g.width = image.width;
+  g.height = image.height;
+  g.channels = 1;
+  g.data.resize(std::size_t(image.width) * std::size_t(image.height));
+  for (std::size_t i = 0; i < g.data.size(); ++i) {
+    const double y = 0.299 * image.data[3 * i] + 0.587 * image.data[3 * i + 1] + 0.114 * image.data[3 * i + 2];
+    g.data[i] = static_cast<std::uint8_t>(std::lround(y));
+  }
+  return g;
 }
 
 }  // namespace io

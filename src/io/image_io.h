@@ -31,6 +31,9 @@ Image read_image(const std::string& path);
 /// Writes PNG, JPEG (quality 95), PGM (grey) or PPM (RGB; grey is expanded) by extension. Throws Input_error.
 void write_image(const std::string& path, const Image& image);
 
+/// Luma (ITU-R BT.601: 0.299 R + 0.587 G + 0.114 B) of an RGB image rounded to 8 bits; a grey image as it is.
+Image to_grey(const Image& image);
+
 }  // namespace io
 }  // namespace FeatureRecon
 

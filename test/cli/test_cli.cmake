@@ -284,6 +284,40 @@ expect(stipple_svg_only 2 "--out writes an SVG picture" stipple ${WORK}/line.pgm
 expect(stipple_too_many 2 "--count 5000 exceeds the 2304 pixels" stipple ${WORK}/line.pgm --count 5000 --out ${WORK}/x.svg)
 file(WRITE ${WORK}/white.pgm "P2\n2 2\n255\n255 255 255 255\n")
 expect(stipple_white 2 "white everywhere: nothing to stipple" stipple ${WORK}/white.pgm --count 2 --out ${WORK}/x.svg)
+# bilateral-filter: every sampling and mode meets the budget and writes a picture of the input's size; the same
+# seed gives the same picture; the exact filter scores null PSNR (equal) and SSIM 1; bad arguments explained.
+expect(bilateral_filter_help 0 "usage: featurerecon bilateral-filter IMAGE" bilateral-filter --help)
+foreach(sampling uniform bilateral)
+  foreach(mode local global)
+    expect(bilateral_filter_${sampling}_${mode} 0
+           "\"channels\": 1, \"sampling\": \"${sampling}\", \"mode\": \"${mode}\", \"budget\": 0.5, \"taps_per_kernel_pixel\": 0\\.(49|50|51).*\"psnr_db\": ([0-9.]+|null), \"ssim\": (0\\.9|1)"
+           bilateral-filter ${WORK}/line.pgm --sampling ${sampling} --mode ${mode} --budget 0.5 --out ${WORK}/bf_${sampling}_${mode}.pgm
+           --quiet)
+    file(READ ${WORK}/bf_${sampling}_${mode}.pgm header LIMIT 9)
+    if(NOT header MATCHES "^P5\n48 48")
+      message(SEND_ERROR "bilateral-filter ${sampling} ${mode}: the picture is not a 48 x 48 PGM: '${header}'")
+    endif()
+  endforeach()
+endforeach()
+expect(bilateral_filter_again 0 "\"budget\": 0.5" bilateral-filter ${WORK}/line.pgm --mode local --out ${WORK}/bf_again.pgm --budget 0.5 --quiet)
+file(READ ${WORK}/bf_bilateral_local.pgm b1 HEX)
+file(READ ${WORK}/bf_again.pgm b2 HEX)
+if(NOT b1 STREQUAL b2)
+  message(SEND_ERROR "bilateral-filter: the same seed gave a different picture")
+endif()
+expect(bilateral_filter_exact 0 "\"sampling\": \"exact\",.*\"taps_per_kernel_pixel\": 1,.*\"psnr_db\": null, \"ssim\": 1,"
+       bilateral-filter ${WORK}/tiny.ppm --sampling exact --out ${WORK}/bf_exact.png --exact-out ${WORK}/bf_exact2.ppm --quiet)
+expect(bilateral_filter_rgb 0 "\"channels\": 3,.*\"radius\": 2," bilateral-filter ${WORK}/tiny.ppm --sigma-spatial 1
+       --sigma-range 0.3 --budget 2 --out ${WORK}/bf_rgb.png --quiet)
+expect(bilateral_filter_no_image 2 "give the picture to filter" bilateral-filter --out ${WORK}/x.png)
+expect(bilateral_filter_bad_sampling 2 "--sampling must be uniform, bilateral or exact, got 'random'"
+       bilateral-filter ${WORK}/line.pgm --sampling random --out ${WORK}/x.png)
+expect(bilateral_filter_bad_mode 2 "--mode must be local or global, got 'tiled'" bilateral-filter ${WORK}/line.pgm --mode tiled --out ${WORK}/x.png)
+expect(bilateral_filter_budget 2 "--budget must be in \\(0, 16\\] taps per kernel pixel, got 20" bilateral-filter ${WORK}/line.pgm --budget 20 --out ${WORK}/x.png)
+expect(bilateral_filter_zero_budget 2 "--budget must be > 0" bilateral-filter ${WORK}/line.pgm --budget 0 --out ${WORK}/x.png)
+expect(bilateral_filter_needs_out 2 "give --out FILE.png" bilateral-filter ${WORK}/line.pgm)
+expect(bilateral_filter_out_format 2 "pictures are written as PNG, JPEG, PGM or PPM, got '.*x.svg'" bilateral-filter ${WORK}/line.pgm --out ${WORK}/x.svg)
+expect(bilateral_filter_missing 1 "no_such.png" bilateral-filter ${WORK}/no_such.png --out ${WORK}/x.png)
 expect(sample_image_continuous_radius 2 "--method continuous needs --radius R" sample-image --input ${WORK}/line.pgm --method continuous --count 5 --out ${WORK}/x.txt)
 expect(sample_image_too_many 2 "--count 13 exceeds the 12 pixels" sample-image --input ${WORK}/tiny.ppm --count 13 --out ${WORK}/x.txt)
 expect(sample_image_no_output 2 "give at least one of --out" sample-image --input ${WORK}/line.pgm --count 5)
