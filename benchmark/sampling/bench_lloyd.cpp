@@ -61,9 +61,10 @@ void BM_Lloyd_iteration(benchmark::State& state) {
   const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)));
   fs::internal::Voronoi_builder voronoi;
   Sites sites = s.sites;
-  sites = fs::internal::lloyd_step_impl(sites, s.density, voronoi).centroids;
+  const unsigned threads = unsigned(state.range(2));
+  sites = fs::internal::lloyd_step_impl(sites, s.density, voronoi, threads).centroids;
   for (auto _ : state) {
-    auto step = fs::internal::lloyd_step_impl(sites, s.density, voronoi);
+    auto step = fs::internal::lloyd_step_impl(sites, s.density, voronoi, threads);
     benchmark::DoNotOptimize(step.energy);
     sites = std::move(step.centroids);
   }
@@ -86,6 +87,9 @@ void sizes(benchmark::internal::Benchmark* b) {
 }  // namespace
 
 BENCHMARK(BM_Delaunay_build)->Name("sampling/lloyd/delaunay_build")->Apply(sizes);
-BENCHMARK(BM_Lloyd_iteration)->Name("sampling/lloyd/iteration")->Apply(sizes);
+// Threads integrating the cells: 1, and 0 = every core (2 on the reference machine).
+BENCHMARK(BM_Lloyd_iteration)->Name("sampling/lloyd/iteration")->ArgNames({"sites", "side", "threads"})
+    ->Args({10000, 256, 1})->Args({10000, 1024, 1})->Args({100000, 1024, 1})
+    ->Args({10000, 256, 0})->Args({10000, 1024, 0})->Args({100000, 1024, 0})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Lloyd_first_iteration)->Name("sampling/lloyd/first_iteration")->Apply(sizes);
 BENCHMARK_MAIN();

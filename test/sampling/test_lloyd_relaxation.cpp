@@ -221,7 +221,7 @@ TEST(LloydStep, SharedEdgesAndFlipUpdatesMatchWholeCells) {
   for (auto& s : sites) s = {ux(rng), uy(rng)};
   sampling::internal::Voronoi_builder voronoi;
   for (int it = 0; it < 12; ++it) {
-    const auto step = sampling::internal::lloyd_step_impl(sites, d, voronoi);
+    const auto step = sampling::internal::lloyd_step_impl(sites, d, voronoi, 1);
     const auto cells = clipped_voronoi_cells(sites, d.box());
     for (std::size_t i = 0; i < sites.size(); ++i) {
       const Density_moments m = brute_force_moments(cells[i], d);
@@ -235,6 +235,32 @@ TEST(LloydStep, SharedEdgesAndFlipUpdatesMatchWholeCells) {
   }
   EXPECT_EQ(voronoi.rebuilds + voronoi.flip_updates, 12u);
   EXPECT_GE(voronoi.flip_updates, 5u) << "relaxed sites move without inverting triangles";
+}
+
+TEST(LloydStep, ThreadsDoNotChangeABit) {
+  // Enough sites for the parallel split (several thousand edges): 1, 2 and 3 threads, fresh and flip-updated
+  // triangulations, give identical centroids, masses and energies.
+  std::mt19937_64 rng(5);
+  const Pixel_density d = random_density(120, 90, rng);
+  std::vector<P2> sites;
+  for (int k = 0; k < 3000; ++k) sites.push_back({120 * double(rng() >> 11) * 0x1.0p-53, 90 * double(rng() >> 11) * 0x1.0p-53});
+  std::vector<sampling::Lloyd_step_result> results;
+  for (unsigned threads : {1u, 2u, 3u}) {
+    sampling::internal::Voronoi_builder voronoi;
+    auto first = sampling::internal::lloyd_step_impl(sites, d, voronoi, threads);
+    results.push_back(sampling::internal::lloyd_step_impl(first.centroids, d, voronoi, threads));
+    EXPECT_EQ(voronoi.flip_updates, 1u);
+  }
+  for (std::size_t k = 1; k < results.size(); ++k) {
+    EXPECT_EQ(results[k].centroids, results[0].centroids) << k;
+    EXPECT_EQ(results[k].mass, results[0].mass) << k;
+    EXPECT_EQ(results[k].energy, results[0].energy) << k;
+  }
+  sampling::Lloyd_options one, all;
+  one.max_iterations = all.max_iterations = 3;
+  one.threads = 1;
+  all.threads = 0;
+  EXPECT_EQ(lloyd_relaxation(sites, d, one).sites, lloyd_relaxation(sites, d, all).sites);
 }
 
 TEST(LloydRelaxation, EnergyDecreasesAndSpacingImproves) {

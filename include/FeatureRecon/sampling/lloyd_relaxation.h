@@ -13,6 +13,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/parallel.h>
 #include <FeatureRecon/point_traits.h>
 #include <FeatureRecon/sampling/internal/box.h>
 #include <FeatureRecon/sampling/pixel_density.h>
@@ -53,6 +54,8 @@ struct Lloyd_options {
   /// towards a lattice, so blue-noise users stop early on rho or the oscillation. Default: none.
   std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, 2>>&)> on_iteration;
   Progress_callback progress;  ///< fraction of max_iterations done; returning false stops (sites so far kept)
+  /// Threads integrating the cells (the results do not depend on it); default 0: the hardware's concurrency.
+  unsigned threads = 0;
 };
 
 /// Result of lloyd_step().
@@ -303,7 +306,7 @@ std::vector<std::array<double, 2>> read_sites(const PointRange& points, const st
 // integrated edge by edge: each Voronoi edge between two interior cells once, added to one and subtracted
 // from the other; the cells that touch the box are clipped and integrated whole.
 inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>>& sites, const Pixel_density& density,
-                                         Voronoi_builder& voronoi) {
+                                         Voronoi_builder& voronoi, unsigned threads) {
   using Dt = Voronoi_builder::Dt;
   Lloyd_step_result r;
   const std::size_t n = sites.size();
@@ -323,7 +326,15 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
       for (int k = 0; k < 3; ++k)
         if (f->vertex(k)->info() != Voronoi_builder::dummy) interior[f->vertex(k)->info()] = 0;
   // Each Voronoi edge next to an interior cell, integrated once, counter-clockwise around its lower-ranked
-  // site: stored in both faces of the Delaunay edge.
+  // site: stored in both faces of the Delaunay edge. The integrals (the bulk of the work) run in parallel,
+  // each into its own slot, so the result does not depend on the number of threads.
+  struct Edge_task {
+    Dt::Face_handle f, g;
+    int i;
+    const std::array<double, 2>*p, *q;
+  };
+  std::vector<Edge_task> edges;
+  edges.reserve(3 * n);
   for (auto e = voronoi.dt.finite_edges_begin(); e != voronoi.dt.finite_edges_end(); ++e) {
     const auto f = e->first;
     const int i = e->second;
@@ -335,37 +346,60 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
     if (!ia && !ib) continue;
     // Around a counter-clockwise, g comes just before f: the edge runs c(g) -> c(f) on a's cell.
     const bool from_a = Voronoi_builder::rank_less(va, vb);
-    const auto& p = (from_a ? g : f)->info().circumcenter;
-    const auto& q = (from_a ? f : g)->info().circumcenter;
-    Density_moments m;
-    density.integrate_segment(p[0], p[1], q[0], q[1], m);
-    f->info().edge[std::size_t(i)] = m;
-    g->info().edge[std::size_t(voronoi.dt.mirror_index(f, i))] = m;
+    edges.push_back({f, g, i, &(from_a ? g : f)->info().circumcenter, &(from_a ? f : g)->info().circumcenter});
   }
-  // Interior cells: their edges summed in a fixed order (from first_face, counter-clockwise); the others:
-  // clipped and integrated whole. The cells are visited in the triangulation's order, which is local in
-  // space (the order of the sums is per cell).
-  std::vector<Density_moments> moments(n);
-  Polygon_2d cell, scratch;
-  for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
-    const std::uint32_t i = v->info();
-    if (i == Voronoi_builder::dummy) continue;
-    if (!interior[i]) {
+  // The cells that touch the box, clipped (sequentially: the clipping walks the triangulation's circulators).
+  std::vector<std::uint32_t> boundary;
+  std::vector<Polygon_2d> boundary_cells;
+  std::vector<Dt::Vertex_handle> inner;
+  inner.reserve(n);
+  {
+    Polygon_2d cell, scratch;
+    for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
+      const std::uint32_t i = v->info();
+      if (i == Voronoi_builder::dummy) continue;
+      if (interior[i]) {
+        inner.push_back(v);
+        continue;
+      }
       voronoi.cell(v, box, cell, scratch);
-      moments[i] = density.integrate(cell);
-      continue;
+      boundary.push_back(i);
+      boundary_cells.push_back(cell);
     }
-    auto f = voronoi.first_face(v), end = f;
-    do {
-      // The edge between this face and the next one counter-clockwise: to w = vertex(cw(index(v))).
-      const int iv = f->index(v);
-      const Density_moments& m = f->info().edge[std::size_t(Dt::ccw(iv))];
-      if (Voronoi_builder::rank_less(v, f->vertex(Dt::cw(iv))))
-        moments[i] += m;
-      else
-        moments[i] -= m;
-    } while (++f != end);
   }
+  std::vector<Density_moments> moments(n);
+  const std::size_t work = edges.size() + boundary.size();
+  FeatureRecon::internal::parallel_blocks(work, threads, 2048, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if (k < edges.size()) {
+        // Every face slot belongs to one edge: the threads write disjoint memory.
+        const Edge_task& t = edges[k];
+        Density_moments m;
+        density.integrate_segment((*t.p)[0], (*t.p)[1], (*t.q)[0], (*t.q)[1], m);
+        t.f->info().edge[std::size_t(t.i)] = m;
+        t.g->info().edge[std::size_t(voronoi.dt.mirror_index(t.f, t.i))] = m;
+      } else {
+        moments[boundary[k - edges.size()]] = density.integrate(boundary_cells[k - edges.size()]);
+      }
+    }
+  });
+  // Interior cells: their edges summed in a fixed order (from first_face, counter-clockwise), in parallel.
+  FeatureRecon::internal::parallel_blocks(inner.size(), threads, 2048, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const Dt::Vertex_handle v = inner[k];
+      Density_moments& sum = moments[v->info()];
+      auto f = voronoi.first_face(v), stop = f;
+      do {
+        // The edge between this face and the next one counter-clockwise: to w = vertex(cw(index(v))).
+        const int iv = f->index(v);
+        const Density_moments& m = f->info().edge[std::size_t(Dt::ccw(iv))];
+        if (Voronoi_builder::rank_less(v, f->vertex(Dt::cw(iv))))
+          sum += m;
+        else
+          sum -= m;
+      } while (++f != stop);
+    }
+  });
   for (std::size_t i = 0; i < n; ++i) {
     if (voronoi.owner[i] != i) continue;  // a duplicate: empty cell, stays
     const Density_moments& m = moments[i];
@@ -409,7 +443,8 @@ std::vector<Polygon_2d> clipped_voronoi_cells(const PointRange& points, const st
 }
 
 /// One Lloyd iteration: the centroid of every site's Voronoi cell (clipped to the density's box) under the
-/// pixel density, the cell masses and the CVT energy of the given sites.
+/// pixel density, the cell masses and the CVT energy of the given sites. The cells are integrated on the
+/// hardware's threads; the result is the same bit for bit on any number of threads.
 /// \tparam PointRange a range of 2D points. \tparam Traits a model of PointCoordinateTraits.
 /// \param points the sites, inside the density's box.
 /// \param density the density and its box.
@@ -419,7 +454,7 @@ template <class PointRange, class Traits = Point_coordinate_traits<typename std:
 Lloyd_step_result lloyd_step(const PointRange& points, const Pixel_density& density, const Traits& traits = Traits()) {
   const auto sites = internal::read_sites(points, density.box(), traits, "lloyd_step");
   internal::Voronoi_builder voronoi;
-  return internal::lloyd_step_impl(sites, density, voronoi);
+  return internal::lloyd_step_impl(sites, density, voronoi, 0);
 }
 
 /// Lloyd relaxation of the sites under the pixel density: each iteration moves every site to the centroid of
@@ -463,7 +498,7 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
       result.status = Status::interrupted;
       return result;
     }
-    Lloyd_step_result step = internal::lloyd_step_impl(result.sites, density, voronoi);
+    Lloyd_step_result step = internal::lloyd_step_impl(result.sites, density, voronoi, options.threads);
     Lloyd_iteration_statistics s;
     s.iteration = it + 1;
     s.energy = step.energy;
