@@ -22,8 +22,10 @@
 /// mean over the windows (global: the whole image) meets it. Bilateral patterns are denser near edges; with
 /// `compensate_density` each tap is weighted by the inverse of the density a saturated pattern has at its
 /// pixel relative to a flat image (its exclusion area in the stacked space over the flat one), so that the
-/// estimator tends to the exact filter as the budget grows. Windows without a tap of positive weight keep the
-/// input pixel.
+/// estimator tends to the exact filter as the budget grows. Every output pixel also reads its own pixel,
+/// exactly (weight 1), and the sampled taps stand for 1 / density pixels each (a Horvitz-Thompson estimate of
+/// the rest of the window; taps falling in the centre pixel are not counted twice): a pixel whose window has
+/// no similar tap keeps about its own value instead of taking its neighbours'.
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
@@ -84,8 +86,8 @@ struct Sampled_bilateral_filter_options {
 struct Bilateral_filter_result {
   /// The filtered image, width * height * channels values on the 0..255 scale, unrounded, rows from the top.
   std::vector<float> values;
-  std::size_t taps = 0;                ///< taps evaluated over all output pixels (with multiplicity)
-  double taps_per_kernel_pixel = 0;    ///< taps over the in-image pixels of all windows (1 for the exact filter)
+  std::size_t taps = 0;                ///< sampled taps over all output pixels (with multiplicity)
+  double taps_per_kernel_pixel = 0;    ///< sampled taps over the in-image pixels of all windows (the centre pixel read besides them is not counted; 1 for the exact filter)
   double sampling_radius = 0;          ///< the dart radius in xi units (pixels); 0 for the exact filter
   Status status = Status::success;     ///< degenerate_input for an empty image; interrupted when stopped
 };
@@ -612,16 +614,20 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
     }
   }
   for (std::size_t q = 0; q < F.pixels(); ++q) first[q + 1] = first[q] + (first[q + 1] > 0 ? 1 : 0);
+  // The centre pixel enters exactly (weight 1); the other taps stand for 1 / density pixels each.
+  const double per_tap = pattern.pixels.empty() ? 0 : double(F.pixels()) / double(pattern.pixels.size());
   internal::filter_pixels(F, options.progress, result, [&](int x, int y, std::size_t p, internal::Tap_sum& sum) {
     std::size_t taps = 0;
+    sum.add(F, p, 1.0);
     const int x0 = x - std::min(F.R, x), x1 = x + std::min(F.R, F.w - 1 - x);
     for (int yy = y - std::min(F.R, y); yy <= y + std::min(F.R, F.h - 1 - y); ++yy) {
       const std::size_t row = std::size_t(yy) * std::size_t(F.w);
       for (std::uint32_t k = first[row + std::size_t(x0)]; k < first[row + std::size_t(x1) + 1]; ++k) {
         const std::size_t q = holds[k];
-        const double w = double(weight[k]) * double(F.spatial_weight(int(q - row) - x, yy - y));
-        sum.add(F, q, w * double(F.range[std::size_t(F.d2(p, q))]));
         taps += count[k];
+        if (q == p) continue;
+        const double w = per_tap * double(weight[k]) * double(F.spatial_weight(int(q - row) - x, yy - y));
+        sum.add(F, q, w * double(F.range[std::size_t(F.d2(p, q))]));
       }
     }
     return taps;
@@ -691,12 +697,16 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
         uniform_taps[s].push_back({int(q % std::uint32_t(open.w)) - F.R, int(q / std::uint32_t(open.w)) - F.R});
       });
   }
+  const double per_tap = 1 / options.budget;
   internal::filter_pixels(F, options.progress, result, [&](int x, int y, std::size_t p, internal::Tap_sum& sum) {
     std::size_t taps = 0;
+    sum.add(F, p, 1.0);  // the centre pixel exactly; the other taps stand for 1 / budget pixels each
     auto add = [&](std::uint32_t q) {
-      const int dx = int(q % std::uint32_t(F.w)) - x, dy = int(q / std::uint32_t(F.w)) - y;
-      sum.add(F, q, double(comp[q]) * double(F.spatial_weight(dx, dy)) * double(F.range[std::size_t(F.d2(p, q))]));
       ++taps;
+      if (q == p) return;
+      const int dx = int(q % std::uint32_t(F.w)) - x, dy = int(q / std::uint32_t(F.w)) - y;
+      sum.add(F, q, per_tap * double(comp[q]) * double(F.spatial_weight(dx, dy)) *
+                        double(F.range[std::size_t(F.d2(p, q))]));
     };
     const std::size_t s = internal::local_set(options.seed, p, pool.sets());
     if (factor == 0) {
