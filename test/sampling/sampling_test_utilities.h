@@ -5,7 +5,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <gtest/gtest.h>
+
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace FeatureRecon {
@@ -25,6 +29,17 @@ inline std::vector<Point_2> white_noise(std::size_t n, unsigned seed) {
     p.emplace_back(x, u());
   }
   return p;
+}
+
+/// Runs f, which must throw std::invalid_argument with `part` in its message.
+template <class F>
+void expect_invalid_argument(F&& f, const std::string& part) {
+  try {
+    f();
+    ADD_FAILURE() << "no exception; expected one mentioning " << part;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
 }
 }  // namespace test
 }  // namespace FeatureRecon

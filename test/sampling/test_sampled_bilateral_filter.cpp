@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "sampling/sampling_test_utilities.h"
+
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -62,12 +64,7 @@ std::vector<double> brute_force(int w, int h, int c, const Bytes& d, double ss, 
 
 template <class F>
 void expect_invalid(F f, const std::string& part) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception, expected one naming '" << part << "'";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
+  FeatureRecon::test::expect_invalid_argument(f, part);
 }
 
 Sampled_bilateral_filter_options sampled(Tap_mode mode, Tap_sampling sampling, double budget, std::uint64_t seed = 1) {

@@ -442,19 +442,9 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
       return options.on_iteration(s, positions);
     }();
     result.history.push_back(s);
-    if (!keep_going) {
-      result.stop = Lloyd_stop::callback;
+    if (internal::iteration_stops(keep_going, s.max_move, options.move_tolerance, previous_energy,
+                                  previous_energy - s.energy, options.energy_tolerance, result.stop))
       break;
-    }
-    if (options.move_tolerance > 0 && s.max_move <= options.move_tolerance) {
-      result.stop = Lloyd_stop::move_tolerance;
-      break;
-    }
-    if (options.energy_tolerance > 0 && std::isfinite(previous_energy) &&
-        (previous_energy - s.energy) < options.energy_tolerance * previous_energy) {
-      result.stop = Lloyd_stop::energy_tolerance;
-      break;
-    }
     previous_energy = s.energy;
   }
   if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);

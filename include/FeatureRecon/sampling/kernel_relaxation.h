@@ -465,18 +465,9 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
       return options.on_iteration(s, positions);
     }();
     result.history.push_back(s);
-    if (!keep_going) {
-      result.stop = Lloyd_stop::callback;
+    if (internal::iteration_stops(keep_going, s.max_move, options.move_tolerance, previous, decrease,
+                                  options.energy_tolerance, result.stop))
       break;
-    }
-    if (options.move_tolerance > 0 && s.max_move <= options.move_tolerance) {
-      result.stop = Lloyd_stop::move_tolerance;
-      break;
-    }
-    if (options.energy_tolerance > 0 && decrease < options.energy_tolerance * previous) {
-      result.stop = Lloyd_stop::energy_tolerance;
-      break;
-    }
   }
   if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   result.sites = reported(sites, item);

@@ -516,19 +516,9 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
     bool go_on = true;
     if (options.on_iteration) go_on = options.on_iteration(s, result.sites);
     result.history.push_back(s);
-    if (!go_on) {
-      result.stop = Lloyd_stop::callback;
+    if (internal::iteration_stops(go_on, s.max_move, options.move_tolerance, previous_energy,
+                                  previous_energy - s.energy, options.energy_tolerance, result.stop))
       break;
-    }
-    if (s.max_move <= options.move_tolerance && options.move_tolerance > 0) {
-      result.stop = Lloyd_stop::move_tolerance;
-      break;
-    }
-    if (options.energy_tolerance > 0 && std::isfinite(previous_energy) && previous_energy > 0 &&
-        (previous_energy - s.energy) / previous_energy < options.energy_tolerance) {
-      result.stop = Lloyd_stop::energy_tolerance;
-      break;
-    }
     previous_energy = s.energy;
   }
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);

@@ -494,6 +494,68 @@ inline Bilateral_filter_result bilateral_filter(int width, int height, int chann
   return result;
 }
 
+namespace internal {
+/// \cond
+/// bilateral_tap_pattern() on a checked image.
+inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_filter_options& options) {
+  Tap_pattern pattern;
+  pattern.width = F.w;
+  pattern.height = F.h;
+  if (F.pixels() == 0) {
+    pattern.status = Status::degenerate_input;
+    return pattern;
+  }
+  const double factor = feature_factor(options);
+  const std::size_t target = std::max<std::size_t>(1, std::size_t(std::llround(options.budget * double(F.pixels()))));
+  const std::size_t m = std::size_t(std::ceil(options.candidates_per_tap * double(target)));
+  std::vector<std::array<double, 2>> cand(m);
+  std::vector<std::uint32_t> cand_pixel(m);
+  Unit_random random(options.seed);
+  for (std::size_t k = 0; k < m; ++k) {
+    const double x = std::min(double(F.w) * random(), std::nextafter(double(F.w), 0.0));
+    const double y = std::min(double(F.h) * random(), std::nextafter(double(F.h), 0.0));
+    cand[k] = {x, y};
+    cand_pixel[k] = std::uint32_t(y) * std::uint32_t(F.w) + std::uint32_t(x);
+  }
+  // Euclidean darts over 4 candidates per tap keep about 0.46 / r^2 per unit area.
+  double r = std::sqrt(0.46 * double(F.pixels()) / double(target));
+  std::vector<std::uint32_t> kept;
+  Radius_search search;  // counts at search.lo reach the target, at search.hi not
+  for (int step = 0; step < 40; ++step) {
+    if (!FeatureRecon::internal::report_progress(options.progress, 0.05 * step / 40)) {
+      pattern.status = Status::interrupted;
+      return pattern;
+    }
+    kept = global_darts(F, cand, cand_pixel, r, factor);
+    const double c = double(kept.size());
+    if (c >= double(target) && c <= 1.01 * double(target) + 1) break;
+    r = search.next(r, c, 1.005 * double(target), c >= double(target));
+  }
+  if (kept.size() < target) {  // fall back to the largest radius known to keep enough
+    r = search.lo;
+    if (r > 0) kept = global_darts(F, cand, cand_pixel, r, factor);
+    if (r == 0 || kept.size() < target) {  // r -> 0 keeps every candidate, m >= target
+      kept.resize(m);
+      for (std::size_t k = 0; k < m; ++k) kept[k] = std::uint32_t(k);
+    }
+  }
+  kept.resize(target);
+  const std::vector<float> comp =
+      options.compensate_density ? density_compensation(F, r, factor) : std::vector<float>(F.pixels(), 1.0f);
+  std::stable_sort(kept.begin(), kept.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return cand_pixel[a] < cand_pixel[b]; });
+  pattern.positions.reserve(target);
+  for (std::uint32_t k : kept) {
+    pattern.positions.push_back(cand[k]);
+    pattern.pixels.push_back(cand_pixel[k]);
+    pattern.weights.push_back(comp[cand_pixel[k]]);
+  }
+  pattern.radius = r;
+  return pattern;
+}
+/// \endcond
+}  // namespace internal
+
 /// The global tap pattern of sampled_bilateral_filter() (its first stage in global mode): round(budget * n)
 /// taps for an n-pixel image, uniform (Euclidean) or bilateral Poisson-disk by dart throwing over
 /// candidates_per_tap times as many uniform random candidates, with the radius set by secant steps so that
@@ -509,77 +571,17 @@ inline Tap_pattern bilateral_tap_pattern(int width, int height, int channels, co
   const char* fn = "bilateral_tap_pattern";
   const internal::Filter_image F(width, height, channels, data, options.kernel, fn);
   internal::check_sampled_options(options, fn);
-  Tap_pattern pattern;
-  pattern.width = width;
-  pattern.height = height;
-  if (F.pixels() == 0) {
-    pattern.status = Status::degenerate_input;
-    return pattern;
-  }
-  const double factor = internal::feature_factor(options);
-  const std::size_t target = std::max<std::size_t>(1, std::size_t(std::llround(options.budget * double(F.pixels()))));
-  const std::size_t m = std::size_t(std::ceil(options.candidates_per_tap * double(target)));
-  std::vector<std::array<double, 2>> cand(m);
-  std::vector<std::uint32_t> cand_pixel(m);
-  internal::Unit_random random(options.seed);
-  for (std::size_t k = 0; k < m; ++k) {
-    const double x = std::min(double(F.w) * random(), std::nextafter(double(F.w), 0.0));
-    const double y = std::min(double(F.h) * random(), std::nextafter(double(F.h), 0.0));
-    cand[k] = {x, y};
-    cand_pixel[k] = std::uint32_t(y) * std::uint32_t(F.w) + std::uint32_t(x);
-  }
-  // Euclidean darts over 4 candidates per tap keep about 0.46 / r^2 per unit area.
-  double r = std::sqrt(0.46 * double(F.pixels()) / double(target));
-  std::vector<std::uint32_t> kept;
-  internal::Radius_search search;  // counts at search.lo reach the target, at search.hi not
-  for (int step = 0; step < 40; ++step) {
-    if (!FeatureRecon::internal::report_progress(options.progress, 0.05 * step / 40)) {
-      pattern.status = Status::interrupted;
-      return pattern;
-    }
-    kept = internal::global_darts(F, cand, cand_pixel, r, factor);
-    const double c = double(kept.size());
-    if (c >= double(target) && c <= 1.01 * double(target) + 1) break;
-    r = search.next(r, c, 1.005 * double(target), c >= double(target));
-  }
-  if (kept.size() < target) {  // fall back to the largest radius known to keep enough
-    r = search.lo;
-    if (r > 0) kept = internal::global_darts(F, cand, cand_pixel, r, factor);
-    if (r == 0 || kept.size() < target) {  // r -> 0 keeps every candidate, m >= target
-      kept.resize(m);
-      for (std::size_t k = 0; k < m; ++k) kept[k] = std::uint32_t(k);
-    }
-  }
-  kept.resize(target);
-  const std::vector<float> comp =
-      options.compensate_density ? internal::density_compensation(F, r, factor) : std::vector<float>(F.pixels(), 1.0f);
-  std::stable_sort(kept.begin(), kept.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return cand_pixel[a] < cand_pixel[b]; });
-  pattern.positions.reserve(target);
-  for (std::uint32_t k : kept) {
-    pattern.positions.push_back(cand[k]);
-    pattern.pixels.push_back(cand_pixel[k]);
-    pattern.weights.push_back(comp[cand_pixel[k]]);
-  }
-  pattern.radius = r;
-  return pattern;
+  return internal::tap_pattern(F, options);
 }
 
-/// The bilateral filter on a global tap pattern (the second stage of the global mode): each output pixel
-/// sums the taps of `pattern` inside its window, weighted by the kernel and the taps' weights.
-/// \param width, height, channels, data the image. \param pattern a pattern of this image's size (checked).
-/// \param options the kernel and the progress callback (the sampling fields are not used).
-/// \throws std::invalid_argument for a pattern of another size or with inconsistent arrays, and as
-///   bilateral_filter().
-inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, int channels,
-                                                        const std::vector<std::uint8_t>& data,
-                                                        const Tap_pattern& pattern,
-                                                        const Sampled_bilateral_filter_options& options) {
-  const char* fn = "sampled_bilateral_filter";
-  const internal::Filter_image F(width, height, channels, data, options.kernel, fn);
-  if (pattern.width != width || pattern.height != height)
+namespace internal {
+/// \cond
+/// The second stage of the global mode on a checked image.
+inline Bilateral_filter_result filter_on_pattern(const Filter_image& F, const Tap_pattern& pattern,
+                                                const Progress_callback& progress, const char* fn) {
+  if (pattern.width != F.w || pattern.height != F.h)
     FeatureRecon::internal::throw_invalid_argument(fn, "pattern is ", pattern.width, " x ", pattern.height,
-                                                   ", the image ", width, " x ", height);
+                                                   ", the image ", F.w, " x ", F.h);
   if (pattern.pixels.size() != pattern.weights.size())
     FeatureRecon::internal::throw_invalid_argument(fn, "pattern has ", pattern.pixels.size(), " pixels and ",
                                                    pattern.weights.size(), " weights");
@@ -616,7 +618,7 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
   for (std::size_t q = 0; q < F.pixels(); ++q) first[q + 1] = first[q] + (first[q + 1] > 0 ? 1 : 0);
   // The centre pixel enters exactly (weight 1); the other taps stand for 1 / density pixels each.
   const double per_tap = pattern.pixels.empty() ? 0 : double(F.pixels()) / double(pattern.pixels.size());
-  internal::filter_pixels(F, options.progress, result, [&](int x, int y, std::size_t p, internal::Tap_sum& sum) {
+  filter_pixels(F, progress, result, [&](int x, int y, std::size_t p, Tap_sum& sum) {
     std::size_t taps = 0;
     sum.add(F, p, 1.0);
     const int x0 = x - std::min(F.R, x), x1 = x + std::min(F.R, F.w - 1 - x);
@@ -633,6 +635,23 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
     return taps;
   });
   return result;
+}
+/// \endcond
+}  // namespace internal
+
+/// The bilateral filter on a global tap pattern (the second stage of the global mode): each output pixel
+/// sums the taps of `pattern` inside its window, weighted by the kernel and the taps' weights.
+/// \param width, height, channels, data the image. \param pattern a pattern of this image's size (checked).
+/// \param options the kernel and the progress callback (the sampling fields are not used).
+/// \throws std::invalid_argument for a pattern of another size or with inconsistent arrays, and as
+///   bilateral_filter().
+inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, int channels,
+                                                        const std::vector<std::uint8_t>& data,
+                                                        const Tap_pattern& pattern,
+                                                        const Sampled_bilateral_filter_options& options) {
+  const char* fn = "sampled_bilateral_filter";
+  const internal::Filter_image F(width, height, channels, data, options.kernel, fn);
+  return internal::filter_on_pattern(F, pattern, options.progress, fn);
 }
 
 /// The bilateral filter evaluated on sampled taps (dissertation Sec. 2.2.3), in the mode and with the
@@ -662,16 +681,14 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
   if (options.mode == Tap_mode::global) {
     Sampled_bilateral_filter_options first_stage = options;
     first_stage.progress = [&](double f) { return FeatureRecon::internal::report_progress(options.progress, 0.5 * f); };
-    const Tap_pattern pattern = bilateral_tap_pattern(width, height, channels, data, first_stage);
+    const Tap_pattern pattern = internal::tap_pattern(F, first_stage);
     if (pattern.status == Status::interrupted) {
       result.status = Status::interrupted;
       return result;
     }
-    Sampled_bilateral_filter_options second_stage = options;
-    second_stage.progress = [&](double f) {
+    return internal::filter_on_pattern(F, pattern, [&](double f) {
       return FeatureRecon::internal::report_progress(options.progress, 0.5 + 0.5 * f);
-    };
-    return sampled_bilateral_filter(width, height, channels, data, pattern, second_stage);
+    }, fn);
   }
   const double factor = internal::feature_factor(options);
   const double kernel_pixels = double(F.side) * double(F.side);

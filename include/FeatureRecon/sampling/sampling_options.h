@@ -89,6 +89,32 @@ enum class Lloyd_stop {
   no_descent         ///< kernel_relaxation(): no step along the gradient lowered the energy (a local minimum)
 };
 
+namespace internal {
+/// \cond
+/// The stopping rules of the iterative samplers, checked after an iteration in this order: the answer of
+/// on_iteration (false stops), the largest move (at most move_tolerance, when that is > 0), the energy
+/// decrease (below energy_tolerance times the previous energy, when that tolerance is > 0 and the previous
+/// energy is finite and positive). Sets `stop` and returns true when the run ends.
+inline bool iteration_stops(bool keep_going, double max_move, double move_tolerance, double previous_energy,
+                            double decrease, double energy_tolerance, Lloyd_stop& stop) {
+  if (!keep_going) {
+    stop = Lloyd_stop::callback;
+    return true;
+  }
+  if (move_tolerance > 0 && max_move <= move_tolerance) {
+    stop = Lloyd_stop::move_tolerance;
+    return true;
+  }
+  if (energy_tolerance > 0 && std::isfinite(previous_energy) && previous_energy > 0 &&
+      decrease < energy_tolerance * previous_energy) {
+    stop = Lloyd_stop::energy_tolerance;
+    return true;
+  }
+  return false;
+}
+/// \endcond
+}  // namespace internal
+
 /// Options of weighted_sample_elimination().
 struct Elimination_options {
   double sigma_position = 1;                                        ///< spatial scale of the metric; default 1
