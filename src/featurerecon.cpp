@@ -56,7 +56,7 @@ const std::vector<Command>& commands() {
        "usage: featurerecon skeleton (--points FILE | --tracks FILE | --distance-matrix FILE | --graph FILE)\n"
        "                             [--radius R] [--delta D] [--repair DIST] [--prune H] [--sample-spacing S]\n"
        "                             [--link-gap G] [--heading-tolerance A] [--undirected] [--min-density F]\n"
-       "                             [--density-radius DR]\n"
+       "                             [--density-radius DR] [--density-heading-tolerance DA]\n"
        "                             [--level-width W] [--smoothing N] --out-vertices V --out-edges E\n"
        "                             [--graphml F] [--geojson F] [--ply F] [--svg F] [--quiet]\n"
        "\n"
@@ -72,7 +72,7 @@ const std::vector<Command>& commands() {
        "                   per direction), consecutive samples of a trip are graph edges, and sparse samples are\n"
        "                   dropped. Unset values derive from the median step M between fixes: R = M (clamped to\n"
        "                   [10, 50]), S = R/2, G = max(4M, 2R), D = 3R, DIST = 2.5R, H = 5R, A = 30, F = 0.1,\n"
-       "                   DR = 2R\n"
+       "                   DR = 2R, DA = 45\n"
        "  --distance-matrix FILE  n lines of n distances (symmetric, zero diagonal); needs --radius; embedded by\n"
        "                   classical MDS (O(n^3))\n"
        "  --graph FILE     a graph in the complex exchange format ('n m', n lines 'x y z f' (f unused), m lines of\n"
@@ -86,7 +86,8 @@ const std::vector<Command>& commands() {
        "  --link-gap G     link consecutive fixes at most G apart (negative: no linking)\n"
        "  --heading-tolerance A  Rips edges only between samples whose driving directions differ by <= A degrees\n"
        "  --undirected     compare directions modulo 180 degrees (both ways of a street together)\n"
-       "  --min-density F  drop samples standing for fewer fixes than F times the most within DR\n"
+       "  --min-density F  drop samples standing for fewer fixes than F times the most within DR travelling within\n"
+       "                   DA degrees of the same direction (a quiet carriageway beside a busy one stays)\n"
        "  --level-width W  level-set slab width of the embedding (default: median edge length)\n"
        "  --smoothing N    Laplacian smoothing rounds of each arc (default 10)\n"
        "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), an SVG picture\n",
@@ -94,6 +95,7 @@ const std::vector<Command>& commands() {
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"
        "                                 [--bearing 45] [--crop-to-tracks TRACKS [--crop-radius 25]]\n"
+       "                                 [--samples-out CSV] [--svg PICTURE] [--explain]\n"
        "\n"
        "Samples both maps every INTERVAL metres (per component, breadth-first from the point at half its edge\n"
        "length), matches ground-truth samples to reconstruction samples at most THRESHOLD metres away whose\n"
@@ -102,7 +104,14 @@ const std::vector<Command>& commands() {
        "\n"
        "  GT_*, REC_*      vertex files 'id,x,y' and edge files 'id,v1,v2[,flag]' (metres; edges undirected)\n"
        "  --crop-to-tracks keep only ground-truth edges whose samples all lie within --crop-radius (default 25 m)\n"
-       "                   of some point of TRACKS (lines 'trip_id x y t')\n",
+       "                   of some point of TRACKS (lines 'trip_id x y t')\n"
+       "  --samples-out    write every sample: 'map,index,x,y,bearing,partner' (partner -1: unmatched)\n"
+       "  --svg            picture of the match: truth green (matched) or red (missed), reconstruction blue\n"
+       "                   (matched) or orange (spurious)\n"
+       "  --explain        add why samples went unmatched, for the truth ('missed') and the reconstruction\n"
+       "                   ('spurious'): 'taken' (an aligned sample within THRESHOLD was matched to another:\n"
+       "                   a parallel line in one map only), 'offset' (nearest aligned one 1-2 THRESHOLD away),\n"
+       "                   'crossing' (only non-aligned samples within 2 THRESHOLD), 'absent' (nothing there)\n",
        run_evaluate_map},
       {"sample", "Feature-aware downsampling of a point cloud (bilateral blue noise on points with normals)",
        "usage: featurerecon sample --input FILE (--count M | --radius R) [--method elimination|darts]\n"

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "../io/featurerecon_io.h"
+#include "../io/skeleton_io.h"
 #include "cli_common.h"
 #include "commands.h"
 
@@ -63,7 +64,7 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
 }  // namespace
 
 int run_evaluate_map(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius"}, 4);
+  const Arguments args(argv, {"explain"}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg"}, 4);
   if (args.positional().size() != 4)
     throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
   Map_comparison_options options;
@@ -79,7 +80,10 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     const double radius = args.has("crop-radius") ? args.get_positive_double("crop-radius") : 25.0;
     gt = crop_to_tracks(gt, io::read_track_points(args.get("crop-to-tracks")), radius, options.interval);
   }
+  options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain");
   const Map_comparison_result r = compare_maps(gt, rec, options);
+  if (args.has("samples-out")) io::write_map_comparison_csv(args.get("samples-out"), r);
+  if (args.has("svg")) io::write_map_comparison_svg(args.get("svg"), r);
   std::ostringstream os;
   os << "{\"precision\": " << json_number(r.precision) << ", \"recall\": " << json_number(r.recall)
      << ", \"f_score\": " << json_number(r.f_score) << ", \"matched\": " << r.matched
@@ -87,7 +91,17 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
      << ", \"reconstruction_samples\": " << r.reconstruction_samples << ", \"ground_truth_edges\": " << gt.edges.size()
      << ", \"ground_truth_edges_before_crop\": " << gt_edges_before << ", \"threshold\": "
      << json_number(options.match_distance) << ", \"interval\": " << json_number(options.interval)
-     << ", \"bearing\": " << json_number(options.bearing_limit) << "}\n";
+     << ", \"bearing\": " << json_number(options.bearing_limit);
+  if (args.has("explain")) {
+    const Unmatched_samples_breakdown b = explain_unmatched_samples(r, options);
+    auto counts = [&os](const char* name, const Unmatched_sample_counts& c) {
+      os << ", \"" << name << "\": {\"taken\": " << c.taken << ", \"offset\": " << c.offset
+         << ", \"crossing\": " << c.crossing << ", \"absent\": " << c.absent << "}";
+    };
+    counts("missed", b.missed);
+    counts("spurious", b.spurious);
+  }
+  os << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;
 }

@@ -200,7 +200,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "prune", "level-width", "smoothing",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "prune", "level-width", "smoothing",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -243,9 +243,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
   const bool quiet = args.has("quiet");
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
-               args.has("density-radius") || args.has("undirected")))
-    throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density and --density-radius apply to "
-                      "--tracks only");
+               args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected")))
+    throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius and "
+                      "--density-heading-tolerance apply to --tracks only");
   if ((args.has("graph") || args.has("distance-matrix")) && args.has("sample-spacing"))
     throw Usage_error("--sample-spacing applies to --points and --tracks only");
   Point_matrix m;
@@ -302,6 +302,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
     go.heading_tolerance = args.has("heading-tolerance") ? args.get_double("heading-tolerance") : 30.0;
     go.density_radius = args.has("density-radius") ? args.get_positive_double("density-radius") : 0.0;
     go.min_relative_density = args.has("min-density") ? args.get_double("min-density") : 0.1;
+    if (args.has("density-heading-tolerance")) go.density_heading_tolerance = args.get_double("density-heading-tolerance");
+    if (!(go.density_heading_tolerance >= 0 && go.density_heading_tolerance <= 180))
+      throw Usage_error("--density-heading-tolerance must be in [0, 180] degrees");
     go.directed = !args.has("undirected");
     if (!(go.min_relative_density >= 0 && go.min_relative_density <= 1))
       throw Usage_error("--min-density must be in [0, 1]");
@@ -316,6 +319,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     gps_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
                ", \"link_gap\": " + json_number(sample.max_link_gap) + ", \"min_density\": " +
                json_number(go.min_relative_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
+               ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                ", \"directed\": " + (go.directed ? "true" : "false") + ", \"dropped_sparse\": " + std::to_string(sample.dropped) + ", \"prune\": " +
                json_number(options.prune_height) + ", \"trip_links\": " +
                std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance);

@@ -6,6 +6,7 @@
 // Writers of a skeleton graph: GraphML, GeoJSON (2D), PLY polylines (3D) and an SVG picture with the input points.
 
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
+#include <FeatureRecon/skeleton/map_comparison.h>
 
 #include <array>
 #include <string>
@@ -24,6 +25,14 @@ void write_skeleton_ply(const std::string& path, const skeleton::Skeleton_graph&
 /// SVG picture: the input points (grey) and the skeleton (arcs as coloured polylines, nodes by type), in x y.
 void write_skeleton_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
                         const skeleton::Skeleton_graph& g);
+
+/// SVG picture of a map comparison (needs a result computed with keep_samples): ground-truth samples green when
+/// matched and red when missed, reconstruction samples blue when matched and orange when spurious; a thin line
+/// joins each matched pair.
+void write_map_comparison_svg(const std::string& path, const skeleton::Map_comparison_result& r);
+/// CSV of a map comparison (needs keep_samples): 'map,index,x,y,bearing,partner' with map 'truth' or
+/// 'reconstruction' and partner the index of the matched sample in the other map, or -1.
+void write_map_comparison_csv(const std::string& path, const skeleton::Map_comparison_result& r);
 
 }  // namespace io
 }  // namespace FeatureRecon

@@ -128,6 +128,33 @@ TEST(GpsTraces, SparseSamplesNextToADenseStreetAreDropped) {
   for (const Edge& e : S.trip_links) EXPECT_LT(e[1], S.points.rows);
 }
 
+TEST(GpsTraces, AQuietCarriagewayBesideABusyOneIsKept) {
+  // A divided road: forty trips east along y = 0 and two trips west along y = 18. Compared with every sample within
+  // the density radius, the westbound samples weigh 1/20 of their busy neighbours and are dropped as scatter;
+  // compared only with samples travelling their way (the default 45 degrees), they are a street of their own.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 40; ++k) trips.push_back(straight(0, 0.05 * k, 1, 0, 13, 25, 100.0 * k));
+  for (int k = 0; k < 2; ++k) trips.push_back(straight(300, 18 + 0.5 * k, -1, 0, 13, 25, 9000.0 + 100 * k));
+  auto westbound = [](const Gps_trace_sample& S) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < S.points.rows; ++i) n += S.points.row(i)[1] > 9 ? 1 : 0;
+    return n;
+  };
+  Gps_trace_options o;
+  o.heading_tolerance = 30;
+  o.min_relative_density = 0.1;
+  const Gps_trace_sample kept = sample_gps_traces(trips, 20.0, o);
+  EXPECT_DOUBLE_EQ(kept.density_heading_tolerance, 45.0);
+  EXPECT_GT(westbound(kept), 20u);
+  EXPECT_EQ(kept.dropped, 0u);
+  o.density_heading_tolerance = 180;
+  const Gps_trace_sample all = sample_gps_traces(trips, 20.0, o);
+  EXPECT_EQ(westbound(all), 0u);
+  EXPECT_GT(all.dropped, 20u);
+  o.density_heading_tolerance = -1;
+  EXPECT_THROW(sample_gps_traces(trips, 20.0, o), std::invalid_argument);
+}
+
 TEST(GpsTraces, DegenerateAndBadInput) {
   EXPECT_EQ(sample_gps_traces({}, 10.0).points.rows, 0u);
   const Gps_trace_sample one = sample_gps_traces({{{5, 5, 0}}}, 10.0);

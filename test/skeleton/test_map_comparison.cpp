@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "io/featurerecon_io.h"
 
 using namespace FeatureRecon;
@@ -85,6 +87,71 @@ TEST(MapComparison, IdenticalShiftedAndPerpendicularMaps) {
   Map_comparison_options bad;
   bad.match_distance = -1;
   EXPECT_THROW(compare_maps(a, a, bad), std::invalid_argument);
+}
+
+TEST(MapComparison, KeptSamplesShowWhatMatched) {
+  // A 300 m street against a reconstruction of its first 150 m plus a parallel 150 m line 40 m away: the kept
+  // samples say which truth samples were missed (the second half) and which reconstruction samples are spurious
+  // (the far line); partners are one to one, within the threshold and agree with the counts.
+  Embedded_graph_2 truth, rec;
+  truth.positions = {{0, 0}, {300, 0}};
+  truth.edges = {{0, 1}};
+  rec.positions = {{0, 2}, {150, 2}, {0, 40}, {150, 40}};
+  rec.edges = {{0, 1}, {2, 3}};
+  Map_comparison_options o;
+  EXPECT_TRUE(compare_maps(truth, rec, o).ground_truth_partner.empty());  // nothing kept unless asked
+  o.keep_samples = true;
+  const Map_comparison_result r = compare_maps(truth, rec, o);
+  ASSERT_EQ(r.ground_truth_sample_list.size(), r.ground_truth_samples);
+  ASSERT_EQ(r.reconstruction_sample_list.size(), r.reconstruction_samples);
+  ASSERT_EQ(r.ground_truth_partner.size(), r.ground_truth_samples);
+  std::vector<char> used(r.reconstruction_samples, 0);
+  std::size_t matched = 0;
+  for (std::size_t h = 0; h < r.ground_truth_partner.size(); ++h) {
+    const std::int64_t g = r.ground_truth_partner[h];
+    const auto& p = r.ground_truth_sample_list[h].position;
+    if (g < 0) {
+      EXPECT_GT(p[0], 140.0) << "truth sample " << h << " on the reconstructed half was missed";
+      continue;
+    }
+    ++matched;
+    EXPECT_FALSE(used[static_cast<std::size_t>(g)]) << "reconstruction sample " << g << " matched twice";
+    used[static_cast<std::size_t>(g)] = 1;
+    const auto& q = r.reconstruction_sample_list[static_cast<std::size_t>(g)].position;
+    EXPECT_LE(std::hypot(p[0] - q[0], p[1] - q[1]), o.match_distance);
+    EXPECT_LT(q[1], 10.0) << "a sample of the far line matched";
+  }
+  EXPECT_EQ(matched, r.matched);
+  EXPECT_NEAR(r.recall, 0.5, 0.03);
+  EXPECT_NEAR(r.precision, 0.5, 0.03);
+}
+
+TEST(MapComparison, UnmatchedSamplesAreExplained) {
+  // Truth: two parallel streets 10 m apart (y = 0 and y = 10, x in [0, 300]). Reconstruction: one line along y = 0
+  // for x in [0, 300] (the second street is 'taken'), a line 20 m off the truth for x in [400, 500] next to a truth
+  // street there ('offset'), a north-south line crossing the truth at x = 250 ('crossing'), and a line far away
+  // ('absent'). Truth x in [600, 700] has no reconstruction near it ('absent').
+  Embedded_graph_2 truth, rec;
+  truth.positions = {{0, 0}, {300, 0}, {0, 10}, {300, 10}, {400, 0}, {500, 0}, {600, 0}, {700, 0}};
+  truth.edges = {{0, 1}, {2, 3}, {4, 5}, {6, 7}};
+  rec.positions = {{0, 0}, {300, 0}, {400, 20}, {500, 20}, {250, -40}, {250, 40}, {0, 1000}, {100, 1000}};
+  rec.edges = {{0, 1}, {2, 3}, {4, 5}, {6, 7}};
+  Map_comparison_options o;
+  EXPECT_THROW(explain_unmatched_samples(compare_maps(truth, rec, o), o), std::invalid_argument);
+  o.keep_samples = true;
+  const Map_comparison_result r = compare_maps(truth, rec, o);
+  const Unmatched_samples_breakdown b = explain_unmatched_samples(r, o);
+  const Unmatched_sample_counts& m = b.missed;
+  const Unmatched_sample_counts& s = b.spurious;
+  EXPECT_EQ(m.taken + m.offset + m.crossing + m.absent, r.ground_truth_samples - r.matched);
+  EXPECT_EQ(s.taken + s.offset + s.crossing + s.absent, r.reconstruction_samples - r.matched);
+  EXPECT_NEAR(static_cast<double>(m.taken), 61, 2);   // the y = 10 street
+  EXPECT_NEAR(static_cast<double>(m.offset), 21, 2);  // x in [400, 500]
+  EXPECT_NEAR(static_cast<double>(m.absent), 21, 2);  // x in [600, 700]
+  EXPECT_EQ(s.taken, 0u);
+  EXPECT_NEAR(static_cast<double>(s.offset), 21, 2);
+  EXPECT_GE(s.crossing, 5u);  // the crossing line's samples near the streets (the rest are 'absent')
+  EXPECT_NEAR(static_cast<double>(s.absent), 21 + 17 - static_cast<double>(s.crossing), 3);
 }
 
 TEST(MapComparison, ReproducesPublishedChicagoScores) {

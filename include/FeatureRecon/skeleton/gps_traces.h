@@ -53,6 +53,11 @@ struct Gps_trace_options {
   double min_relative_density = 0;
   /// Radius of the local maximum above. 0: twice the Rips radius.
   double density_radius = 0;
+  /// A sample is compared only with samples whose travel directions differ from its own by at most this angle
+  /// (degrees; directed as sampled): the lightly used carriageway of a divided road next to a busy opposite one,
+  /// or a side street crossing a main road, is not mistaken for scatter. 180 or more: all samples within
+  /// `density_radius` (directions ignored). Default 45.
+  double density_heading_tolerance = 45;
 };
 
 /// Samples of GPS traces with the parameters used.
@@ -68,6 +73,7 @@ struct Gps_trace_sample {
   double max_link_gap = 0;                   ///< value used (negative: no linking)
   double median_step = 0;                    ///< median distance between consecutive fixes of a trip
   double density_radius = 0;                 ///< value used
+  double density_heading_tolerance = 0;      ///< value used
   std::size_t dropped = 0;                   ///< samples dropped as sparse (their fixes map to no sample: -1)
 };
 
@@ -136,8 +142,9 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
   return b;
 }
 
-/// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius; re-indexes.
-inline void drop_sparse_samples(Gps_trace_sample& S, double fraction) {
+/// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius that travels within
+/// `heading_tolerance` degrees of the same direction; re-indexes.
+inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double heading_tolerance) {
   const double R = S.density_radius, R2 = R * R;
   const std::array<double, 4> box = bounding_box(S.points);
   Planar_grid grid(box[0], box[1], box[2], box[3], R);
@@ -156,7 +163,9 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction) {
         if (bucket == nullptr) continue;
         for (const std::uint32_t j : *bucket) {
           const double ex = S.points.row(j)[0] - x, ey = S.points.row(j)[1] - y;
-          if (ex * ex + ey * ey <= R2) heaviest = std::max(heaviest, S.weights[j]);
+          if (ex * ex + ey * ey <= R2 &&
+              heading_difference(S.headings[i], S.headings[j], S.directed) <= heading_tolerance)
+            heaviest = std::max(heaviest, S.weights[j]);
         }
       }
     if (static_cast<double>(S.weights[i]) < fraction * static_cast<double>(heaviest)) continue;
@@ -214,6 +223,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing must be finite and >= 0, max_link_gap finite");
   if (!(options.heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees");
+  if (!(options.density_heading_tolerance >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "density_heading_tolerance must be >= 0 degrees, got ",
+                                                   options.density_heading_tolerance);
   Gps_trace_sample S;
   S.points.dimension = 2;
   // Sorted copies of the trips; the median step.
@@ -327,7 +339,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   }
   S.points.rows = S.headings.size();
   S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
-  if (options.min_relative_density > 0 && S.points.rows > 0) internal::drop_sparse_samples(S, options.min_relative_density);
+  S.density_heading_tolerance = options.density_heading_tolerance;
+  if (options.min_relative_density > 0 && S.points.rows > 0)
+    internal::drop_sparse_samples(S, options.min_relative_density, options.density_heading_tolerance);
   std::sort(S.trip_links.begin(), S.trip_links.end());
   S.trip_links.erase(std::unique(S.trip_links.begin(), S.trip_links.end()), S.trip_links.end());
   return S;

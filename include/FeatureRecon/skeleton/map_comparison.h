@@ -15,9 +15,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 #include <vector>
 
 namespace FeatureRecon {
@@ -35,6 +37,13 @@ struct Map_comparison_options {
   double interval = 5.0;         ///< distance between samples along edges (m); default 5
   double bearing_limit = 45.0;   ///< samples match when their direction-insensitive bearings differ by less (deg)
   std::size_t candidates = 10;   ///< nearest reconstruction samples considered per ground-truth sample; default 10
+  bool keep_samples = false;     ///< also return both sample sets with their match flags (for diagnosis)
+};
+
+/// A sample of a map: position and the bearing of its edge in [0, 360) degrees.
+struct Map_sample {
+  std::array<double, 2> position;  ///< metres
+  double bearing;                  ///< degrees in [0, 360)
 };
 
 /// Result of compare_maps().
@@ -45,12 +54,12 @@ struct Map_comparison_result {
   double precision = 0;                     ///< m / |G| (0 when G is empty)
   double recall = 0;                        ///< m / |H| (0 when H is empty)
   double f_score = 0;                       ///< 2m / (|G| + |H|)
-};
-
-/// A sample of a map: position and the bearing of its edge in [0, 360) degrees.
-struct Map_sample {
-  std::array<double, 2> position;  ///< metres
-  double bearing;                  ///< degrees in [0, 360)
+  /// With Map_comparison_options::keep_samples: the ground-truth samples H (sample_map() order), else empty.
+  std::vector<Map_sample> ground_truth_sample_list;
+  /// With keep_samples: the reconstruction samples G, else empty.
+  std::vector<Map_sample> reconstruction_sample_list;
+  /// With keep_samples: for each sample of H, the index in G of its partner, or -1 when unmatched.
+  std::vector<std::int64_t> ground_truth_partner;
 };
 
 namespace internal {
@@ -231,6 +240,7 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
     tree.build();
     typename Knn::Distance dist(tree.traits().point_property_map());
     std::vector<char> taken(G.size(), 0);
+    if (options.keep_samples) r.ground_truth_partner.assign(H.size(), -1);
     // Nearest admissible (bearing) available partner among the k nearest, or none.
     auto best_partner = [&](std::size_t h, double& d) -> std::int64_t {
       const Point q(H[h].position[0], H[h].position[1]);
@@ -268,6 +278,7 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
       if (!taken[c.g]) {
         taken[c.g] = 1;
         ++r.matched;
+        if (options.keep_samples) r.ground_truth_partner[c.h] = c.g;
         continue;
       }
       double d = 0;
@@ -278,11 +289,92 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
       }
     }
   }
+  if (options.keep_samples) {
+    if (r.ground_truth_partner.empty()) r.ground_truth_partner.assign(H.size(), -1);
+    r.ground_truth_sample_list = H;
+    r.reconstruction_sample_list = G;
+  }
   const double m = static_cast<double>(r.matched);
   r.precision = G.empty() ? 0.0 : m / static_cast<double>(G.size());
   r.recall = H.empty() ? 0.0 : m / static_cast<double>(H.size());
   r.f_score = (G.size() + H.size()) == 0 ? 0.0 : 2 * m / static_cast<double>(G.size() + H.size());
   return r;
+}
+
+/// Why the unmatched samples of one map found no partner in the other (see explain_unmatched_samples()).
+struct Unmatched_sample_counts {
+  std::size_t taken = 0;     ///< an aligned sample of the other map lies within the threshold, but every such sample
+                             ///< was matched to another: the maps differ in multiplicity there (a parallel line, e.g.
+                             ///< the second carriageway of a divided road, present in one map only)
+  std::size_t offset = 0;    ///< the nearest aligned sample of the other map lies between 1 and 2 thresholds away
+  std::size_t crossing = 0;  ///< within 2 thresholds the other map has samples, none aligned (a street crossing)
+  std::size_t absent = 0;    ///< the other map has nothing within 2 thresholds
+};
+
+/// Breakdown of the unmatched samples of both maps.
+struct Unmatched_samples_breakdown {
+  Unmatched_sample_counts missed;    ///< ground-truth samples without a partner (lost recall)
+  Unmatched_sample_counts spurious;  ///< reconstruction samples without a partner (lost precision)
+};
+
+/// Sorts every unmatched sample of a comparison into the classes of Unmatched_sample_counts: a diagnosis of what a
+/// reconstruction lacks (missed) and adds (spurious). Aligned means a bearing difference below the limit.
+/// \pre `r` was computed with options.keep_samples and the same `options` (checked; throws).
+inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_comparison_result& r,
+                                                             const Map_comparison_options& options = {}) {
+  const auto& H = r.ground_truth_sample_list;
+  const auto& G = r.reconstruction_sample_list;
+  if (H.size() != r.ground_truth_samples || G.size() != r.reconstruction_samples ||
+      r.ground_truth_partner.size() != H.size())
+    FeatureRecon::internal::throw_invalid_argument("explain_unmatched_samples",
+                                                   "the comparison was not computed with keep_samples");
+  std::vector<std::int64_t> g_partner(G.size(), -1);
+  for (std::size_t h = 0; h < H.size(); ++h)
+    if (r.ground_truth_partner[h] >= 0) g_partner[static_cast<std::size_t>(r.ground_truth_partner[h])] = std::int64_t(h);
+  const double t = options.match_distance, reach = 2 * t;
+  // Classifies the unmatched samples of `from` against the samples of `to` (bucketed on a grid of cell `reach`).
+  auto classify = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& from_partner,
+                      const std::vector<Map_sample>& to) {
+    Unmatched_sample_counts c;
+    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> grid;
+    auto key = [reach](double x, double y) {
+      return (static_cast<std::int64_t>(std::floor(x / reach)) << 32) ^
+             (static_cast<std::int64_t>(std::floor(y / reach)) & 0xffffffffLL);
+    };
+    for (std::size_t j = 0; j < to.size(); ++j)
+      grid[key(to[j].position[0], to[j].position[1])].push_back(static_cast<std::uint32_t>(j));
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      if (from_partner[i] >= 0) continue;
+      const double x = from[i].position[0], y = from[i].position[1];
+      double aligned = std::numeric_limits<double>::infinity();
+      bool any = false;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy) {
+          const auto it = grid.find(key(x + dx * reach, y + dy * reach));
+          if (it == grid.end()) continue;
+          for (const std::uint32_t j : it->second) {
+            const double d = std::hypot(to[j].position[0] - x, to[j].position[1] - y);
+            if (d > reach) continue;
+            any = true;
+            if (internal::bearing_difference(from[i].bearing, to[j].bearing) < options.bearing_limit)
+              aligned = std::min(aligned, d);
+          }
+        }
+      if (aligned <= t)
+        ++c.taken;
+      else if (aligned <= reach)
+        ++c.offset;
+      else if (any)
+        ++c.crossing;
+      else
+        ++c.absent;
+    }
+    return c;
+  };
+  Unmatched_samples_breakdown b;
+  b.missed = classify(H, r.ground_truth_partner, G);
+  b.spurious = classify(G, g_partner, H);
+  return b;
 }
 
 }  // namespace skeleton
