@@ -3,8 +3,9 @@
 // Continuous Lloyd relaxation (issue 5, section 5): one iteration of lloyd_relaxation's step (Voronoi cells
 // from the Delaunay triangulation kept between iterations, exact integrals of a pixel density) against one
 // CGAL Delaunay_triangulation_2 build of the same sites, in the same run. The sites are relaxed for 10
-// iterations first (the steady state of stippling); the density is random per pixel. Sizes: 10k sites on
-// 256 x 256 and 1024 x 1024 pixels, 100k sites on 1024 x 1024.
+// iterations first (the steady state). Densities: uniform (plain Lloyd, integrated in closed form) and random
+// per pixel (adaptive stippling, integrated pixel by pixel). Sizes: 10k and 100k sites on 1024 x 1024 pixels,
+// and 10k sites on 256 x 256.
 #include <FeatureRecon/sampling/lloyd_relaxation.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -14,6 +15,7 @@
 #include <array>
 #include <map>
 #include <random>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -27,14 +29,16 @@ struct Setup {
   Sites sites;  // after 10 Lloyd iterations from white noise
 };
 
-const Setup& setup(std::size_t n, int side) {
-  static std::map<std::pair<std::size_t, int>, Setup> cache;
-  auto& s = cache[{n, side}];
+// `pixels`: 1 for a density random per pixel, 0 for a uniform one.
+const Setup& setup(std::size_t n, int side, int pixels) {
+  static std::map<std::tuple<std::size_t, int, int>, Setup> cache;
+  auto& s = cache[{n, side, pixels}];
   if (s.sites.empty()) {
     std::mt19937_64 rng(1);
     auto uniform = [&] { return double(rng() >> 11) * 0x1.0p-53; };
-    std::vector<double> values(std::size_t(side) * std::size_t(side));
-    for (auto& v : values) v = 0.05 + uniform();
+    std::vector<double> values(std::size_t(side) * std::size_t(side), 1.0);
+    if (pixels != 0)
+      for (auto& v : values) v = 0.05 + uniform();
     s.density = fs::Pixel_density(side, side, std::move(values));
     Sites sites(n);
     for (auto& p : sites) p = {side * uniform(), side * uniform()};
@@ -46,7 +50,7 @@ const Setup& setup(std::size_t n, int side) {
 }
 
 void BM_Delaunay_build(benchmark::State& state) {
-  const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)));
+  const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)), int(state.range(2)));
   std::vector<K::Point_2> points;
   for (const auto& p : s.sites) points.emplace_back(p[0], p[1]);
   for (auto _ : state) {
@@ -58,7 +62,7 @@ void BM_Delaunay_build(benchmark::State& state) {
 // One iteration in the steady state: the builder keeps the triangulation of the previous iteration and
 // moves its vertices (flips), as lloyd_relaxation does after its first iteration.
 void BM_Lloyd_iteration(benchmark::State& state) {
-  const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)));
+  const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)), int(state.range(3)));
   fs::internal::Voronoi_builder voronoi;
   Sites sites = s.sites;
   const unsigned threads = unsigned(state.range(2));
@@ -73,23 +77,31 @@ void BM_Lloyd_iteration(benchmark::State& state) {
 
 // The first iteration from the relaxed sites, triangulated from scratch.
 void BM_Lloyd_first_iteration(benchmark::State& state) {
-  const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)));
+  const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)), int(state.range(2)));
   for (auto _ : state) {
     auto step = fs::lloyd_step(s.sites, s.density);
     benchmark::DoNotOptimize(step.energy);
   }
 }
 
+// sites, side, and 0 (uniform) or 1 (random pixels).
 void sizes(benchmark::internal::Benchmark* b) {
-  b->Args({10000, 256})->Args({10000, 1024})->Args({100000, 1024})->Unit(benchmark::kMillisecond);
+  for (int pixels : {0, 1})
+    b->Args({10000, 256, pixels})->Args({10000, 1024, pixels})->Args({100000, 1024, pixels});
+  b->ArgNames({"sites", "side", "pixels"})->Unit(benchmark::kMillisecond);
+}
+
+// The same with the threads integrating the cells: 1, and 0 = every core (2 on the reference machine).
+void sizes_and_threads(benchmark::internal::Benchmark* b) {
+  for (int pixels : {0, 1})
+    for (int threads : {1, 0})
+      b->Args({10000, 256, threads, pixels})->Args({10000, 1024, threads, pixels})->Args({100000, 1024, threads, pixels});
+  b->ArgNames({"sites", "side", "threads", "pixels"})->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace
 
 BENCHMARK(BM_Delaunay_build)->Name("sampling/lloyd/delaunay_build")->Apply(sizes);
-// Threads integrating the cells: 1, and 0 = every core (2 on the reference machine).
-BENCHMARK(BM_Lloyd_iteration)->Name("sampling/lloyd/iteration")->ArgNames({"sites", "side", "threads"})
-    ->Args({10000, 256, 1})->Args({10000, 1024, 1})->Args({100000, 1024, 1})
-    ->Args({10000, 256, 0})->Args({10000, 1024, 0})->Args({100000, 1024, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Lloyd_iteration)->Name("sampling/lloyd/iteration")->Apply(sizes_and_threads);
 BENCHMARK(BM_Lloyd_first_iteration)->Name("sampling/lloyd/first_iteration")->Apply(sizes);
 BENCHMARK_MAIN();

@@ -99,6 +99,35 @@ TEST(PixelDensity, ClockwiseGivesNegativeAndUniformMatchesShoelace) {
   EXPECT_NEAR(d.integrate({{0, 0}, {5, 0}, {5, 4}, {0, 4}}).mass, 20.0, 1e-12);
 }
 
+TEST(PixelDensity, ConstantDensityClosedFormMatchesThePixelWalk) {
+  // A constant density integrates each segment in closed form; the same density with one more column of zeros
+  // (no longer constant) walks the pixels. On cells inside the common part both must agree, and match
+  // c times the shoelace moments.
+  std::mt19937_64 rng(11);
+  const int w = 7, h = 5;
+  const double c = 2.5;
+  const Pixel_density constant(w, h, std::vector<double>(std::size_t(w * h), c));
+  std::vector<double> padded;
+  for (int row = 0; row < h; ++row) {
+    for (int column = 0; column < w; ++column) padded.push_back(c);
+    padded.push_back(0.0);
+  }
+  const Pixel_density walked(w + 1, h, padded);
+  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
+  std::vector<P2> sites(12);
+  for (auto& p : sites) p = {ux(rng), uy(rng)};
+  for (const auto& cell : clipped_voronoi_cells(sites, constant.box())) {
+    const Density_moments fast = constant.integrate(cell), slow = walked.integrate(cell);
+    expect_moments_near(fast, slow, double(w * h));
+    Density_moments exact = polygon_moments(cell);
+    exact.mass *= c;
+    exact.moment_x *= c;
+    exact.moment_y *= c;
+    exact.moment_2 *= c;
+    expect_moments_near(fast, exact, double(w * h));
+  }
+}
+
 TEST(PixelDensity, BadValuesNamed) {
   try {
     Pixel_density(2, 2, {1, 1, -1, 1});

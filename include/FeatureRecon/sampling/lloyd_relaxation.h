@@ -85,10 +85,8 @@ struct Voronoi_builder {
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
   struct Face_data {
     std::array<double, 2> circumcenter;  // the Voronoi vertex
+    std::array<std::uint32_t, 3> site;   // vertex(k)->info(), cached so walks need not load the vertices
     bool inside;                         // it lies in the box
-    // Per edge i (opposite vertex i): the density integrals along its Voronoi edge, walked counter-clockwise
-    // around the lower-ranked of its two sites (see rank_less).
-    std::array<Density_moments, 3> edge;
   };
   using Fb = CGAL::Triangulation_face_base_with_info_2<Face_data, K>;
   using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
@@ -102,6 +100,23 @@ struct Voronoi_builder {
   std::array<double, 4> frame{0, 0, 0, 0};
   std::vector<Dt::Vertex_handle> vertex;  // per site (owners only)
   std::size_t rebuilds = 0, flip_updates = 0;  // how each triangulation was made (for benchmarks and tests)
+  // A Voronoi edge to integrate: from *p to *q, counter-clockwise around the lower-ranked of sites a and b.
+  struct Edge_task {
+    const std::array<double, 2>*p, *q;
+    std::uint32_t a, b;  // the two sites (either may be a far corner)
+  };
+  // Buffers of one step, kept between iterations: allocating them anew costs page faults on every step.
+  struct Workspace {
+    std::vector<Edge_task> edges;
+    std::vector<K::Point_2> old;
+    std::vector<std::uint32_t> held;
+    std::vector<char> is_held, interior;
+    std::vector<std::pair<Dt::Face_handle, int>> stack;
+    std::vector<std::uint32_t> ring_start, fill, boundary;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ring;
+    std::vector<Polygon_2d> boundary_cells;
+    std::vector<Density_moments> moments, edge_moments;
+  } work;
   double minimum_distance = std::numeric_limits<double>::infinity();
 
   // The Delaunay triangulation of the sites with four far corners, so every site is interior and its cell
@@ -118,6 +133,7 @@ struct Voronoi_builder {
       std::sort(v.begin(), v.end(), [](Dt::Vertex_handle a, Dt::Vertex_handle b) { return rank_less(a, b); });
       const auto c = CGAL::circumcenter(v[0]->point(), v[1]->point(), v[2]->point());
       f->info().circumcenter = {c.x(), c.y()};
+      f->info().site = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
       f->info().inside = c.x() >= box[0] && c.x() <= box[2] && c.y() >= box[1] && c.y() <= box[3];
     }
     double shortest = std::numeric_limits<double>::infinity();
@@ -170,14 +186,20 @@ struct Voronoi_builder {
   // eighth of the vertices would need that, or when a move collides with another site.
   bool move(const std::vector<std::array<double, 2>>& points) {
     const std::size_t n = points.size();
-    std::vector<K::Point_2> old(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      old[i] = vertex[i]->point();
-      vertex[i]->set_point(K::Point_2(points[i][0], points[i][1]));
+    std::vector<K::Point_2>& old = work.old;
+    old.resize(n);
+    // In the vertices' memory order (spatially sorted at the build), not the sites' order: far fewer cache misses.
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+      const std::uint32_t i = v->info();
+      if (i == dummy) continue;
+      old[i] = v->point();
+      v->set_point(K::Point_2(points[i][0], points[i][1]));
     }
     const auto orientation = dt.geom_traits().orientation_2_object();
-    std::vector<std::uint32_t> held;
-    std::vector<char> is_held(n, 0);
+    std::vector<std::uint32_t>& held = work.held;
+    std::vector<char>& is_held = work.is_held;
+    held.clear();
+    is_held.assign(n, 0);
     for (bool inverted = true; inverted;) {
       inverted = false;
       for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
@@ -194,22 +216,33 @@ struct Voronoi_builder {
       }
       if (held.size() > n / 8) return false;
     }
-    // Lawson flips until every edge is locally Delaunay (passes over the faces in container order; flips
-    // reuse the two faces, so the iterators stay valid).
-    for (bool flipped = true; flipped;) {
-      flipped = false;
-      for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
-        for (int i = 0; i < 3; ++i) {
-          const auto g = f->neighbor(i);
-          // Each edge once, chosen by the indices of its ends (never by address: the flips, and with them
-          // the rounding of the circumcentres, must not depend on where the faces live).
-          if (dt.is_infinite(g) || !(f->vertex(Dt::ccw(i))->info() < f->vertex(Dt::cw(i))->info())) continue;
-          if (dt.side_of_oriented_circle(g, f->vertex(i)->point(), true) == CGAL::ON_POSITIVE_SIDE) {
-            dt.flip(f, i);
-            flipped = true;
-          }
+    // Lawson flips until every edge is locally Delaunay: one pass over the faces in container order, then
+    // only the edges around the flipped ones (a stack), so no second full pass checks what did not change.
+    // The Delaunay triangulation with CGAL's symbolic perturbation is unique, so the order of the flips does
+    // not change the result.
+    auto& stack = work.stack;
+    stack.clear();
+    auto check = [&](Dt::Face_handle f, int i) {
+      const auto g = f->neighbor(i);
+      if (dt.is_infinite(f) || dt.is_infinite(g) ||
+          dt.side_of_oriented_circle(g, f->vertex(i)->point(), true) != CGAL::ON_POSITIVE_SIDE)
+        return;
+      dt.flip(f, i);
+      // The flipped edge now joins f's vertex i with the opposite vertex of g; its four outer edges may have
+      // stopped being locally Delaunay.
+      for (const Dt::Face_handle h : {f, g})
+        for (int k = 0; k < 3; ++k) stack.emplace_back(h, k);
+    };
+    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+      for (int i = 0; i < 3; ++i) {
+        // Each edge once, chosen by the indices of its ends (never by address).
+        if (f->vertex(Dt::ccw(i))->info() < f->vertex(Dt::cw(i))->info()) check(f, i);
+        while (!stack.empty()) {
+          const auto [h, k] = stack.back();
+          stack.pop_back();
+          check(h, k);
         }
-    }
+      }
     std::sort(held.begin(), held.end());  // a fixed order: the result does not depend on the face order
     for (const std::uint32_t i : held)
       if (dt.move_if_no_collision(vertex[i], K::Point_2(points[i][0], points[i][1])) != vertex[i]) return false;
@@ -318,86 +351,97 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
   voronoi.build(sites, box);
   r.duplicates = voronoi.duplicates;
   r.minimum_distance = voronoi.minimum_distance;
-  std::vector<char> interior(n, 0);
+  auto& work = voronoi.work;
+  std::vector<char>& interior = work.interior;
+  interior.assign(n, 0);
   for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v)
     if (v->info() != Voronoi_builder::dummy) interior[v->info()] = 1;
   for (auto f = voronoi.dt.finite_faces_begin(); f != voronoi.dt.finite_faces_end(); ++f)
     if (!f->info().inside)
-      for (int k = 0; k < 3; ++k)
-        if (f->vertex(k)->info() != Voronoi_builder::dummy) interior[f->vertex(k)->info()] = 0;
+      for (const std::uint32_t i : f->info().site)
+        if (i != Voronoi_builder::dummy) interior[i] = 0;
   // Each Voronoi edge next to an interior cell, integrated once, counter-clockwise around its lower-ranked
-  // site: stored in both faces of the Delaunay edge. The integrals (the bulk of the work) run in parallel,
-  // each into its own slot, so the result does not depend on the number of threads.
-  struct Edge_task {
-    Dt::Face_handle f, g;
-    int i;
-    const std::array<double, 2>*p, *q;
-  };
-  std::vector<Edge_task> edges;
-  edges.reserve(3 * n);
+  // site, into its own slot of a table. The integrals (the bulk of the work with an image density) run in
+  // parallel, so the result does not depend on the number of threads.
+  using Edge_task = Voronoi_builder::Edge_task;
+  std::vector<Edge_task>& edges = work.edges;
+  edges.clear();
+  std::vector<std::uint32_t>& ring_start = work.ring_start;  // per interior site: its edges (counts, then offsets)
+  ring_start.assign(n + 1, 0);
   for (auto e = voronoi.dt.finite_edges_begin(); e != voronoi.dt.finite_edges_end(); ++e) {
     const auto f = e->first;
     const int i = e->second;
     const auto g = f->neighbor(i);
-    if (voronoi.dt.is_infinite(g)) continue;
-    const auto va = f->vertex(Dt::ccw(i)), vb = f->vertex(Dt::cw(i));
-    const std::uint32_t a = va->info(), b = vb->info();
+    // An edge with an infinite face joins two far corners (the hull); the site cache is for finite faces.
+    if (voronoi.dt.is_infinite(f) || voronoi.dt.is_infinite(g)) continue;
+    const std::uint32_t a = f->info().site[std::size_t(Dt::ccw(i))], b = f->info().site[std::size_t(Dt::cw(i))];
     const bool ia = a != Voronoi_builder::dummy && interior[a], ib = b != Voronoi_builder::dummy && interior[b];
     if (!ia && !ib) continue;
     // Around a counter-clockwise, g comes just before f: the edge runs c(g) -> c(f) on a's cell.
-    const bool from_a = Voronoi_builder::rank_less(va, vb);
-    edges.push_back({f, g, i, &(from_a ? g : f)->info().circumcenter, &(from_a ? f : g)->info().circumcenter});
+    const bool from_a = a < b;  // rank_less: at least one is a site, and sites rank below the far corners
+    if (ia) ++ring_start[a + 1];
+    if (ib) ++ring_start[b + 1];
+    edges.push_back({&(from_a ? g : f)->info().circumcenter, &(from_a ? f : g)->info().circumcenter, a, b});
+  }
+  // Each interior cell's edges as (neighbour, edge) pairs, summed later in increasing neighbour order: a fixed
+  // order that needs no walk around the cell (the walks were bound by cache misses on the faces).
+  for (std::size_t i = 0; i < n; ++i) ring_start[i + 1] += ring_start[i];
+  auto& ring = work.ring;
+  ring.resize(ring_start[n]);
+  {
+    std::vector<std::uint32_t>& fill = work.fill;
+    fill.assign(ring_start.begin(), ring_start.end() - 1);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      const std::uint32_t a = edges[k].a, b = edges[k].b;
+      if (a != Voronoi_builder::dummy && interior[a]) ring[fill[a]++] = {b, static_cast<std::uint32_t>(k)};
+      if (b != Voronoi_builder::dummy && interior[b]) ring[fill[b]++] = {a, static_cast<std::uint32_t>(k)};
+    }
   }
   // The cells that touch the box, clipped (sequentially: the clipping walks the triangulation's circulators).
-  std::vector<std::uint32_t> boundary;
-  std::vector<Polygon_2d> boundary_cells;
-  std::vector<Dt::Vertex_handle> inner;
-  inner.reserve(n);
+  std::vector<std::uint32_t>& boundary = work.boundary;
+  std::vector<Polygon_2d>& boundary_cells = work.boundary_cells;
+  boundary.clear();
+  std::size_t boundary_count = 0;
   {
-    Polygon_2d cell, scratch;
+    Polygon_2d scratch;
     for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
       const std::uint32_t i = v->info();
       if (i == Voronoi_builder::dummy) continue;
-      if (interior[i]) {
-        inner.push_back(v);
-        continue;
-      }
-      voronoi.cell(v, box, cell, scratch);
+      if (interior[i]) continue;
+      if (boundary_cells.size() <= boundary_count) boundary_cells.emplace_back();
+      voronoi.cell(v, box, boundary_cells[boundary_count++], scratch);
       boundary.push_back(i);
-      boundary_cells.push_back(cell);
     }
   }
-  std::vector<Density_moments> moments(n);
-  const std::size_t work = edges.size() + boundary.size();
-  FeatureRecon::internal::parallel_blocks(work, threads, 2048, [&](std::size_t begin, std::size_t end) {
+  std::vector<Density_moments>& moments = work.moments;
+  std::vector<Density_moments>& edge_moments = work.edge_moments;
+  moments.assign(n, Density_moments());
+  edge_moments.assign(edges.size(), Density_moments());
+  const std::size_t tasks = edges.size() + boundary.size();
+  FeatureRecon::internal::parallel_blocks(tasks, threads, 2048, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       if (k < edges.size()) {
-        // Every face slot belongs to one edge: the threads write disjoint memory.
         const Edge_task& t = edges[k];
-        Density_moments m;
-        density.integrate_segment((*t.p)[0], (*t.p)[1], (*t.q)[0], (*t.q)[1], m);
-        t.f->info().edge[std::size_t(t.i)] = m;
-        t.g->info().edge[std::size_t(voronoi.dt.mirror_index(t.f, t.i))] = m;
+        density.integrate_segment((*t.p)[0], (*t.p)[1], (*t.q)[0], (*t.q)[1], edge_moments[k]);
       } else {
         moments[boundary[k - edges.size()]] = density.integrate(boundary_cells[k - edges.size()]);
       }
     }
   });
-  // Interior cells: their edges summed in a fixed order (from first_face, counter-clockwise), in parallel.
-  FeatureRecon::internal::parallel_blocks(inner.size(), threads, 2048, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const Dt::Vertex_handle v = inner[k];
-      Density_moments& sum = moments[v->info()];
-      auto f = voronoi.first_face(v), stop = f;
-      do {
-        // The edge between this face and the next one counter-clockwise: to w = vertex(cw(index(v))).
-        const int iv = f->index(v);
-        const Density_moments& m = f->info().edge[std::size_t(Dt::ccw(iv))];
-        if (Voronoi_builder::rank_less(v, f->vertex(Dt::cw(iv))))
-          sum += m;
+  // Interior cells: their edges summed in increasing order of the neighbour's index (an interior cell has
+  // no far corner as a neighbour), each with the sign of its walk (counter-clockwise around the lower index).
+  FeatureRecon::internal::parallel_blocks(n, threads, 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t a = begin; a < end; ++a) {
+      if (ring_start[a] == ring_start[a + 1]) continue;
+      const auto first = ring.begin() + ring_start[a], last = ring.begin() + ring_start[a + 1];
+      std::sort(first, last);
+      Density_moments& sum = moments[a];
+      for (auto it = first; it != last; ++it) {
+        if (a < it->first)
+          sum += edge_moments[it->second];
         else
-          sum -= m;
-      } while (++f != stop);
+          sum -= edge_moments[it->second];
+      }
     }
   });
   for (std::size_t i = 0; i < n; ++i) {

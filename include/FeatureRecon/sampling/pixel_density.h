@@ -93,6 +93,9 @@ class Pixel_density {
       }
       m_total += p[4 * w];
     }
+    // A constant density (plain Lloyd) has closed-form integrals along any segment: no pixel walk.
+    if (!values.empty() && std::all_of(values.begin(), values.end(), [&](double v) { return v == values[0]; }))
+      m_constant = values[0];
   }
 
   /// A constant density 1 on the box [0, width) x [0, height) (plain, unweighted Lloyd relaxation).
@@ -124,6 +127,17 @@ class Pixel_density {
   void integrate_segment(double ax, double ay, double bx, double by, Density_moments& moments) const {
     const double dx = bx - ax, dy = by - ay;
     if (dy == 0 || m_width == 0 || m_height == 0) return;  // every integrand has the factor dy
+    if (m_constant >= 0) {
+      // F = c x, G = c x^2 / 2, S = c x^3 / 3 + y^2 c x: cubic along the segment, so one Simpson step is exact.
+      const double c = m_constant, xm = 0.5 * (ax + bx), ym = 0.5 * (ay + by), w = dy * (1.0 / 6.0);
+      moments.mass += w * c * (ax + 4 * xm + bx);
+      moments.moment_x += w * c * 0.5 * (ax * ax + 4 * xm * xm + bx * bx);
+      moments.moment_y += w * c * (ay * ax + 4 * ym * xm + by * bx);
+      moments.moment_2 += w * c *
+                          ((ax * ax * ax + 4 * xm * xm * xm + bx * bx * bx) * (1.0 / 3.0) +
+                           (ay * ay * ax + 4 * ym * ym * xm + by * by * bx));
+      return;
+    }
     // Parameters t in (0, 1) where the segment crosses a pixel side, walked in increasing order.
     const double inf = std::numeric_limits<double>::infinity();
     const double idx = dx != 0 ? 1 / dx : 0, idy = 1 / dy;
@@ -236,6 +250,7 @@ class Pixel_density {
   // Huge pages: a boundary walk jumps a row (32 (width + 1) bytes) at every horizontal pixel side.
   std::vector<double, FeatureRecon::internal::Large_array_allocator<double>> m_prefix;  // per row, per pixel side k = 0..width: F, G, Q at x = k, density of pixel k
   double m_total = 0;
+  double m_constant = -1;  // the density when every pixel has the same one, else -1
 };
 
 }  // namespace sampling
