@@ -54,7 +54,8 @@ struct Lloyd_options {
   /// towards a lattice, so blue-noise users stop early on rho or the oscillation. Default: none.
   std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, 2>>&)> on_iteration;
   Progress_callback progress;  ///< fraction of max_iterations done; returning false stops (sites so far kept)
-  /// Threads integrating the cells (the results do not depend on it); default 0: the hardware's concurrency.
+  /// Threads integrating the cells (the results do not depend on it); default 0: the hardware's concurrency
+  /// for an image, one thread for a constant density (its closed-form integrals cost less than the threads).
   unsigned threads = 0;
 };
 
@@ -348,6 +349,7 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
   r.minimum_distance = std::numeric_limits<double>::infinity();
   if (n == 0) return r;
   const auto box = density.box();
+  if (threads == 0 && density.is_constant()) threads = 1;
   voronoi.build(sites, box);
   r.duplicates = voronoi.duplicates;
   r.minimum_distance = voronoi.minimum_distance;

@@ -118,6 +118,8 @@ class Pixel_density {
   }
   /// The integral of the density over the whole box.
   double total_mass() const { return m_total; }
+  /// True when every pixel has the same density (plain Lloyd): segments are then integrated in closed form.
+  bool is_constant() const { return m_constant >= 0; }
 
   /// Adds the boundary integrals of the directed segment a -> b to `moments`. Summed over the edges of a
   /// counter-clockwise simple polygon inside the box (CGAL's orientation: positive determinant), they give the
