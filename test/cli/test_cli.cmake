@@ -142,6 +142,8 @@ expect(skeleton_asymmetric 1 "not symmetric at \\(0, 1\\)" skeleton --distance-m
 expect(skeleton_tracks 0 "\"radius\": 25\\.58[0-9]*, .*\"loops\": 1, \"components\": 1,.*\"trips\": 8, \"median_step\": 25\\.58" skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_tracks_degree 0 "\"nodes\": 4, \"arcs\": 4" skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_tracks_heading 2 "--heading-tolerance must be in \\[0, 180\\]" skeleton --tracks ${DATA}/block_tracks.txt --heading-tolerance 200 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_tracks_density_heading 2 "--density-heading-tolerance must be in \\[0, 180\\]" skeleton --tracks ${DATA}/block_tracks.txt --density-heading-tolerance -5 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_density_heading_points 2 "apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --density-heading-tolerance 30 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 
 # Chicago (the bundled 118k fixes) with the defaults: F-score at 15 m against the ground truth cropped to the
 # traces (trk25) stays at 0.66 or more (0.668 when pinned; Kharita 0.671).
