@@ -109,9 +109,10 @@ const std::vector<Command>& commands() {
        "  --svg            picture of the match: truth green (matched) or red (missed), reconstruction blue\n"
        "                   (matched) or orange (spurious)\n"
        "  --explain        add why samples went unmatched, for the truth ('missed') and the reconstruction\n"
-       "                   ('spurious'): 'taken' (an aligned sample within THRESHOLD was matched to another:\n"
-       "                   a parallel line in one map only), 'offset' (nearest aligned one 1-2 THRESHOLD away),\n"
-       "                   'crossing' (only non-aligned samples within 2 THRESHOLD), 'absent' (nothing there)\n",
+       "                   ('spurious'): 'taken' (an aligned sample lies within THRESHOLD, but it went to\n"
+       "                   another: mostly a parallel line in one map only), 'offset' (nearest aligned one\n"
+       "                   1-2 THRESHOLD away), 'crossing' (only non-aligned samples within 2 THRESHOLD),\n"
+       "                   'absent' (nothing there)\n",
        run_evaluate_map},
       {"sample", "Feature-aware downsampling of a point cloud (bilateral blue noise on points with normals)",
        "usage: featurerecon sample --input FILE (--count M | --radius R) [--method elimination|darts]\n"

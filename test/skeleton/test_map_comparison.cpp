@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <random>
 
 #include "io/featurerecon_io.h"
 
@@ -152,6 +155,69 @@ TEST(MapComparison, UnmatchedSamplesAreExplained) {
   EXPECT_NEAR(static_cast<double>(s.offset), 21, 2);
   EXPECT_GE(s.crossing, 5u);  // the crossing line's samples near the streets (the rest are 'absent')
   EXPECT_NEAR(static_cast<double>(s.absent), 21 + 17 - static_cast<double>(s.crossing), 3);
+}
+
+TEST(MapComparison, UnmatchedSamplesAgreeWithBruteForce) {
+  // Random road-like maps (segments at random angles, some near-parallel copies): every unmatched sample's class
+  // equals the one found by checking all samples of the other map (brute force instead of the grid).
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-200, 200), a(0, 6.283185307179586), len(20, 120), off(-35, 35);
+  Embedded_graph_2 truth, rec;
+  for (int k = 0; k < 40; ++k) {
+    const double x = u(rng), y = u(rng), t = a(rng), l = len(rng);
+    const std::uint32_t i = static_cast<std::uint32_t>(truth.positions.size());
+    truth.positions.push_back({x, y});
+    truth.positions.push_back({x + l * std::cos(t), y + l * std::sin(t)});
+    truth.edges.push_back({i, i + 1});
+    if (k % 2 == 0) {  // a copy moved sideways and turned a little, or a crossing line
+      const double d = off(rng), s = k % 4 == 0 ? 0.1 : 1.6;
+      const std::uint32_t j = static_cast<std::uint32_t>(rec.positions.size());
+      rec.positions.push_back({x - d * std::sin(t), y + d * std::cos(t)});
+      rec.positions.push_back({x - d * std::sin(t) + l * std::cos(t + s), y + d * std::cos(t) + l * std::sin(t + s)});
+      rec.edges.push_back({j, j + 1});
+    }
+  }
+  Map_comparison_options o;
+  o.keep_samples = true;
+  const Map_comparison_result r = compare_maps(truth, rec, o);
+  const Unmatched_samples_breakdown b = explain_unmatched_samples(r, o);
+  ASSERT_GT(r.matched, 0u);
+  std::vector<std::int64_t> g_partner(r.reconstruction_samples, -1);
+  for (std::size_t h = 0; h < r.ground_truth_partner.size(); ++h)
+    if (r.ground_truth_partner[h] >= 0) g_partner[std::size_t(r.ground_truth_partner[h])] = std::int64_t(h);
+  auto brute = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& partner,
+                   const std::vector<Map_sample>& to) {
+    Unmatched_sample_counts c;
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      if (partner[i] >= 0) continue;
+      double aligned = 1e300;
+      bool any = false;
+      for (const Map_sample& q : to) {
+        const double d = std::hypot(q.position[0] - from[i].position[0], q.position[1] - from[i].position[1]);
+        if (d > 2 * o.match_distance) continue;
+        any = true;
+        double diff = std::fabs(q.bearing - from[i].bearing);
+        diff = std::min({diff, std::fabs(180 - diff), std::fabs(360 - diff)});
+        if (diff < o.bearing_limit) aligned = std::min(aligned, d);
+      }
+      skeleton::internal::count_unmatched(aligned, any, o.match_distance, c);
+    }
+    return c;
+  };
+  const Unmatched_sample_counts m = brute(r.ground_truth_sample_list, r.ground_truth_partner, r.reconstruction_sample_list);
+  const Unmatched_sample_counts s = brute(r.reconstruction_sample_list, g_partner, r.ground_truth_sample_list);
+  EXPECT_EQ(b.missed.taken, m.taken);
+  EXPECT_EQ(b.missed.offset, m.offset);
+  EXPECT_EQ(b.missed.crossing, m.crossing);
+  EXPECT_EQ(b.missed.absent, m.absent);
+  EXPECT_EQ(b.spurious.taken, s.taken);
+  EXPECT_EQ(b.spurious.offset, s.offset);
+  EXPECT_EQ(b.spurious.crossing, s.crossing);
+  EXPECT_EQ(b.spurious.absent, s.absent);
+  // Every class occurs, so the comparison is not vacuous.
+  EXPECT_GT(m.offset + s.offset, 0u);
+  EXPECT_GT(m.crossing + s.crossing, 0u);
+  EXPECT_GT(m.absent, 0u);
 }
 
 TEST(MapComparison, ReproducesPublishedChicagoScores) {

@@ -303,13 +303,30 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
 
 /// Why the unmatched samples of one map found no partner in the other (see explain_unmatched_samples()).
 struct Unmatched_sample_counts {
-  std::size_t taken = 0;     ///< an aligned sample of the other map lies within the threshold, but every such sample
-                             ///< was matched to another: the maps differ in multiplicity there (a parallel line, e.g.
-                             ///< the second carriageway of a divided road, present in one map only)
+  std::size_t taken = 0;     ///< an aligned sample of the other map lies within the threshold, yet the greedy
+                             ///< matching paired the two with nothing or with others: mostly because that sample
+                             ///< was matched to another, where the maps differ in multiplicity (a parallel line, e.g.
+                             ///< the second carriageway of a divided road, present in one map only); rarely because
+                             ///< it was not among the `candidates` nearest ones the matching considers
   std::size_t offset = 0;    ///< the nearest aligned sample of the other map lies between 1 and 2 thresholds away
   std::size_t crossing = 0;  ///< within 2 thresholds the other map has samples, none aligned (a street crossing)
   std::size_t absent = 0;    ///< the other map has nothing within 2 thresholds
 };
+
+namespace internal {
+/// Counts one unmatched sample given the distance to the nearest aligned sample of the other map (infinity when
+/// none lies within 2 thresholds) and whether any sample of the other map lies within 2 thresholds.
+inline void count_unmatched(double aligned, bool any, double threshold, Unmatched_sample_counts& c) {
+  if (aligned <= threshold)
+    ++c.taken;
+  else if (aligned <= 2 * threshold)
+    ++c.offset;
+  else if (any)
+    ++c.crossing;
+  else
+    ++c.absent;
+}
+}  // namespace internal
 
 /// Breakdown of the unmatched samples of both maps.
 struct Unmatched_samples_breakdown {
@@ -336,21 +353,24 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
   auto classify = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& from_partner,
                       const std::vector<Map_sample>& to) {
     Unmatched_sample_counts c;
-    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> grid;
-    auto key = [reach](double x, double y) {
-      return (static_cast<std::int64_t>(std::floor(x / reach)) << 32) ^
-             (static_cast<std::int64_t>(std::floor(y / reach)) & 0xffffffffLL);
+    // Cells are keyed by their integer coordinates (cells beyond 2^32 only collide in the hash: every distance
+    // is checked again).
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+    auto cell = [reach](double v) { return static_cast<std::int64_t>(std::floor(v / reach)); };
+    auto key = [](std::int64_t cx, std::int64_t cy) {
+      return (static_cast<std::uint64_t>(cx) << 32) ^ (static_cast<std::uint64_t>(cy) & 0xffffffffULL);
     };
     for (std::size_t j = 0; j < to.size(); ++j)
-      grid[key(to[j].position[0], to[j].position[1])].push_back(static_cast<std::uint32_t>(j));
+      grid[key(cell(to[j].position[0]), cell(to[j].position[1]))].push_back(static_cast<std::uint32_t>(j));
     for (std::size_t i = 0; i < from.size(); ++i) {
       if (from_partner[i] >= 0) continue;
       const double x = from[i].position[0], y = from[i].position[1];
+      const std::int64_t cx = cell(x), cy = cell(y);
       double aligned = std::numeric_limits<double>::infinity();
       bool any = false;
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy) {
-          const auto it = grid.find(key(x + dx * reach, y + dy * reach));
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          const auto it = grid.find(key(cx + dx, cy + dy));
           if (it == grid.end()) continue;
           for (const std::uint32_t j : it->second) {
             const double d = std::hypot(to[j].position[0] - x, to[j].position[1] - y);
@@ -360,14 +380,7 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
               aligned = std::min(aligned, d);
           }
         }
-      if (aligned <= t)
-        ++c.taken;
-      else if (aligned <= reach)
-        ++c.offset;
-      else if (any)
-        ++c.crossing;
-      else
-        ++c.absent;
+      internal::count_unmatched(aligned, any, t, c);
     }
     return c;
   };
