@@ -156,15 +156,12 @@ void write_map_comparison_svg(const std::string& path, const skeleton::Map_compa
   const double scale = 1600.0 / std::max({x1 - x0, y1 - y0, 1e-9}), margin = 10;
   auto X = [&](double x) { return number(margin + (x - x0) * scale); };
   auto Y = [&](double y) { return number(margin + (y1 - y) * scale); };
-  std::vector<char> g_matched(G.size(), 0);
-  for (const std::int64_t g : r.ground_truth_partner)
-    if (g >= 0) g_matched[static_cast<std::size_t>(g)] = 1;
   std::ostringstream os;
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(2 * margin + (x1 - x0) * scale)
      << "\" height=\"" << number(2 * margin + (y1 - y0) * scale)
      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (std::size_t h = 0; h < H.size(); ++h) {
-    const std::int64_t g = h < r.ground_truth_partner.size() ? r.ground_truth_partner[h] : -1;
+    const std::int64_t g = r.ground_truth_partner[h];
     if (g >= 0) {
       const auto& q = G[static_cast<std::size_t>(g)].position;
       os << "<line x1=\"" << X(H[h].position[0]) << "\" y1=\"" << Y(H[h].position[1]) << "\" x2=\"" << X(q[0])
@@ -175,26 +172,22 @@ void write_map_comparison_svg(const std::string& path, const skeleton::Map_compa
   }
   for (std::size_t g = 0; g < G.size(); ++g)
     os << "<circle cx=\"" << X(G[g].position[0]) << "\" cy=\"" << Y(G[g].position[1]) << "\" r=\"1\" fill=\""
-       << (g_matched[g] ? "#1f77b4" : "#ff7f0e") << "\"/>\n";
+       << (r.reconstruction_partner[g] >= 0 ? "#1f77b4" : "#ff7f0e") << "\"/>\n";
   os << "</svg>\n";
   write_text_file(path, os.str());
 }
 
 void write_map_comparison_csv(const std::string& path, const skeleton::Map_comparison_result& r) {
-  std::vector<std::int64_t> g_partner(r.reconstruction_sample_list.size(), -1);
-  for (std::size_t h = 0; h < r.ground_truth_partner.size(); ++h)
-    if (r.ground_truth_partner[h] >= 0)
-      g_partner[static_cast<std::size_t>(r.ground_truth_partner[h])] = static_cast<std::int64_t>(h);
   std::ostringstream os;
   os << "map,index,x,y,bearing,partner\n";
   auto rows = [&](const char* name, const std::vector<skeleton::Map_sample>& list,
                   const std::vector<std::int64_t>& partner) {
     for (std::size_t i = 0; i < list.size(); ++i)
       os << name << ',' << i << ',' << number(list[i].position[0]) << ',' << number(list[i].position[1]) << ','
-         << number(list[i].bearing) << ',' << (i < partner.size() ? partner[i] : -1) << '\n';
+         << number(list[i].bearing) << ',' << partner[i] << '\n';
   };
   rows("truth", r.ground_truth_sample_list, r.ground_truth_partner);
-  rows("reconstruction", r.reconstruction_sample_list, g_partner);
+  rows("reconstruction", r.reconstruction_sample_list, r.reconstruction_partner);
   write_text_file(path, os.str());
 }
 

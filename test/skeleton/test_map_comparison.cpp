@@ -185,6 +185,7 @@ TEST(MapComparison, UnmatchedSamplesAgreeWithBruteForce) {
   std::vector<std::int64_t> g_partner(r.reconstruction_samples, -1);
   for (std::size_t h = 0; h < r.ground_truth_partner.size(); ++h)
     if (r.ground_truth_partner[h] >= 0) g_partner[std::size_t(r.ground_truth_partner[h])] = std::int64_t(h);
+  EXPECT_EQ(r.reconstruction_partner, g_partner);  // the two partner lists are inverse to each other
   auto brute = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& partner,
                    const std::vector<Map_sample>& to) {
     Unmatched_sample_counts c;

@@ -60,6 +60,8 @@ struct Map_comparison_result {
   std::vector<Map_sample> reconstruction_sample_list;
   /// With keep_samples: for each sample of H, the index in G of its partner, or -1 when unmatched.
   std::vector<std::int64_t> ground_truth_partner;
+  /// With keep_samples: for each sample of G, the index in H of its partner, or -1 when unmatched.
+  std::vector<std::int64_t> reconstruction_partner;
 };
 
 namespace internal {
@@ -225,6 +227,12 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
   Map_comparison_result r;
   r.ground_truth_samples = H.size();
   r.reconstruction_samples = G.size();
+  if (options.keep_samples) {
+    r.ground_truth_sample_list = H;
+    r.reconstruction_sample_list = G;
+    r.ground_truth_partner.assign(H.size(), -1);
+    r.reconstruction_partner.assign(G.size(), -1);
+  }
   if (!H.empty() && !G.empty()) {
     using K = CGAL::Simple_cartesian<double>;
     using Point = K::Point_2;
@@ -240,7 +248,6 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
     tree.build();
     typename Knn::Distance dist(tree.traits().point_property_map());
     std::vector<char> taken(G.size(), 0);
-    if (options.keep_samples) r.ground_truth_partner.assign(H.size(), -1);
     // Nearest admissible (bearing) available partner among the k nearest, or none.
     auto best_partner = [&](std::size_t h, double& d) -> std::int64_t {
       const Point q(H[h].position[0], H[h].position[1]);
@@ -278,7 +285,10 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
       if (!taken[c.g]) {
         taken[c.g] = 1;
         ++r.matched;
-        if (options.keep_samples) r.ground_truth_partner[c.h] = c.g;
+        if (options.keep_samples) {
+          r.ground_truth_partner[c.h] = c.g;
+          r.reconstruction_partner[static_cast<std::size_t>(c.g)] = static_cast<std::int64_t>(c.h);
+        }
         continue;
       }
       double d = 0;
@@ -288,11 +298,6 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
         std::push_heap(heap.begin(), heap.end(), later);
       }
     }
-  }
-  if (options.keep_samples) {
-    if (r.ground_truth_partner.empty()) r.ground_truth_partner.assign(H.size(), -1);
-    r.ground_truth_sample_list = H;
-    r.reconstruction_sample_list = G;
   }
   const double m = static_cast<double>(r.matched);
   r.precision = G.empty() ? 0.0 : m / static_cast<double>(G.size());
@@ -342,12 +347,9 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
   const auto& H = r.ground_truth_sample_list;
   const auto& G = r.reconstruction_sample_list;
   if (H.size() != r.ground_truth_samples || G.size() != r.reconstruction_samples ||
-      r.ground_truth_partner.size() != H.size())
+      r.ground_truth_partner.size() != H.size() || r.reconstruction_partner.size() != G.size())
     FeatureRecon::internal::throw_invalid_argument("explain_unmatched_samples",
                                                    "the comparison was not computed with keep_samples");
-  std::vector<std::int64_t> g_partner(G.size(), -1);
-  for (std::size_t h = 0; h < H.size(); ++h)
-    if (r.ground_truth_partner[h] >= 0) g_partner[static_cast<std::size_t>(r.ground_truth_partner[h])] = std::int64_t(h);
   const double t = options.match_distance, reach = 2 * t;
   // Classifies the unmatched samples of `from` against the samples of `to` (bucketed on a grid of cell `reach`).
   auto classify = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& from_partner,
@@ -386,7 +388,7 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
   };
   Unmatched_samples_breakdown b;
   b.missed = classify(H, r.ground_truth_partner, G);
-  b.spurious = classify(G, g_partner, H);
+  b.spurious = classify(G, r.reconstruction_partner, H);
   return b;
 }
 
