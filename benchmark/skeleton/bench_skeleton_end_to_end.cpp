@@ -6,6 +6,7 @@
 // are our geodesic function, computed before the clock starts.
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
+#include <FeatureRecon/skeleton/road_map.h>
 
 #include <benchmark/benchmark.h>
 
@@ -21,12 +22,12 @@ namespace {
 using namespace FeatureRecon;
 namespace sk = FeatureRecon::skeleton;
 
-/// The CLI's defaults for --tracks (src/cli/skeleton_commands.cpp), derived from the median step.
+/// Chicago's trips with the options extract_road_map() derives from them (the defaults of --tracks).
 struct Gps_case {
   std::vector<sk::Gps_trip> trips;
-  double radius = 0;
-  sk::Gps_trace_options trace;
+  sk::Road_map_options used;
   sk::Skeleton_options skeleton;
+  double radius = 0;
 };
 
 const Gps_case& chicago_tracks() {
@@ -39,12 +40,9 @@ const Gps_case& chicago_tracks() {
     if (it->second == c->trips.size()) c->trips.emplace_back();
     c->trips[it->second].push_back({r.x, r.y, r.t});
   }
-  c->radius = std::min(50.0, std::max(10.0, sk::median_gps_step(c->trips)));
-  c->trace.heading_tolerance = 30;
-  c->trace.min_relative_density = 0.1;
-  c->skeleton.delta = 3 * c->radius;
-  c->skeleton.repair_distance = 2.5 * c->radius;
-  c->skeleton.prune_height = 5 * c->radius;
+  c->used = sk::resolve_road_map_options(c->trips, {});
+  c->skeleton = sk::road_map_skeleton_options(c->used);
+  c->radius = c->used.rips_radius;
   return *c;
 }
 
@@ -52,11 +50,9 @@ void BM_tracks_featurerecon(benchmark::State& state) {
   const Gps_case& c = chicago_tracks();
   std::size_t arcs = 0;
   for (auto _ : state) {
-    const sk::Gps_trace_sample S = sk::sample_gps_traces(c.trips, c.radius, c.trace);
-    const sk::Reeb_skeleton s =
-        sk::extract_reeb_skeleton(sk::build_gps_trace_graph(S, c.radius, c.trace.heading_tolerance), S.points, c.skeleton);
-    arcs = num_edges(s.graph);
-    benchmark::DoNotOptimize(s);
+    const sk::Road_map m = sk::extract_road_map(c.trips);
+    arcs = num_edges(m.skeleton.graph);
+    benchmark::DoNotOptimize(m);
   }
   state.counters["arcs"] = static_cast<double>(arcs);
 }
@@ -64,8 +60,8 @@ void BM_tracks_featurerecon(benchmark::State& state) {
 /// Only the stages GUDHI's run covers and the rest of ours on that complex: from the graph of the samples.
 void BM_tracks_graph_featurerecon(benchmark::State& state) {
   const Gps_case& c = chicago_tracks();
-  const sk::Gps_trace_sample S = sk::sample_gps_traces(c.trips, c.radius, c.trace);
-  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius, c.trace.heading_tolerance);
+  const sk::Gps_trace_sample S = sk::sample_gps_traces(c.trips, c.radius, c.used.traces);
+  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius, c.used.traces.heading_tolerance);
   std::size_t arcs = 0;
   for (auto _ : state) {
     const sk::Reeb_skeleton s = sk::extract_reeb_skeleton(g, S.points, c.skeleton);
@@ -111,8 +107,8 @@ std::vector<double> geodesic_values(const sk::Proximity_graph& g) {
 
 void BM_tracks_gudhi(benchmark::State& state) {
   const Gps_case& c = chicago_tracks();
-  const sk::Gps_trace_sample S = sk::sample_gps_traces(c.trips, c.radius, c.trace);
-  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius, c.trace.heading_tolerance);
+  const sk::Gps_trace_sample S = sk::sample_gps_traces(c.trips, c.radius, c.used.traces);
+  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius, c.used.traces.heading_tolerance);
   const std::vector<double> f = geodesic_values(g);
   std::vector<std::array<std::uint32_t, 2>> edges(g.edges.begin(), g.edges.end());
   bench::Gudhi_result r;

@@ -6,6 +6,7 @@
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
+#include <FeatureRecon/skeleton/road_map.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
 #include <FeatureRecon/skeleton/simplify_by_persistence.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
@@ -210,25 +211,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
     throw Usage_error("--radius does not apply to --graph (the graph's edges are used as they are)");
   if (!args.has("tracks") && !args.has("graph") && !args.has("radius"))
     throw Usage_error("--radius R is required with --points and --distance-matrix");
-  // With --tracks every unset parameter is derived from the data (the median step between fixes).
-  std::vector<Gps_trip> trips;
-  double median_step = 0;
-  if (args.has("tracks")) {
-    for (const auto& trip : io::read_track_trips(args.get("tracks"))) {
-      trips.emplace_back();
-      for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
-    }
-    median_step = median_gps_step(trips);
-  }
-  const double radius = args.has("radius") ? args.get_positive_double("radius")
-                        : args.has("tracks") ? std::min(50.0, std::max(10.0, median_step))
-                                             : 0.0;
+  // With --tracks every unset parameter is derived from the data (extract_road_map(): the median step between
+  // fixes gives the radius, the radius the rest).
   const bool gps = args.has("tracks");
+  double radius = args.has("radius") ? args.get_positive_double("radius") : 0.0;
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
   Skeleton_options options;
-  options.delta = args.has("delta") ? args.get_double("delta") : gps ? 3 * radius : radius;
+  options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : radius;
   if (options.delta < 0) throw Usage_error("--delta must be >= 0");
-  options.repair_distance = args.has("repair") ? args.get_double("repair") : gps ? 2.5 * radius : 0.0;
+  options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
   options.embedding.level_width = args.has("level-width") ? args.get_double("level-width") : 0.0;
   if (!(options.embedding.level_width >= 0)) throw Usage_error("--level-width must be >= 0");
@@ -237,7 +228,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (it < 0) throw Usage_error("--smoothing must be an integer >= 0");
     options.embedding.smoothing_iterations = static_cast<std::size_t>(it);
   }
-  options.prune_height = args.has("prune") ? args.get_double("prune") : gps ? 5 * radius : 0.0;
+  options.prune_height = args.has("prune") ? args.get_double("prune") : 0.0;
   if (!(options.prune_height >= 0)) throw Usage_error("--prune must be >= 0");
   double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
   if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
@@ -296,12 +287,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
     input_points = m.rows;
     s = extract_reeb_skeleton(g, m, options);
   } else {
-    Gps_trace_options go;
+    Gps_trace_options go = road_map_trace_options();
     go.sample_spacing = spacing;
     go.max_link_gap = args.has("link-gap") ? args.get_double("link-gap") : 0.0;
-    go.heading_tolerance = args.has("heading-tolerance") ? args.get_double("heading-tolerance") : 30.0;
+    if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
     go.density_radius = args.has("density-radius") ? args.get_positive_double("density-radius") : 0.0;
-    go.min_relative_density = args.has("min-density") ? args.get_double("min-density") : 0.1;
+    if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
     if (args.has("density-heading-tolerance")) go.density_heading_tolerance = args.get_double("density-heading-tolerance");
     if (!(go.density_heading_tolerance >= 0 && go.density_heading_tolerance <= 180))
       throw Usage_error("--density-heading-tolerance must be in [0, 180] degrees");
@@ -310,12 +301,31 @@ int run_skeleton(const std::vector<std::string>& argv) {
       throw Usage_error("--min-density must be in [0, 1]");
     if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
       throw Usage_error("--heading-tolerance must be in [0, 180] degrees");
-    const Gps_trace_sample sample = sample_gps_traces(trips, radius, go);
+    std::vector<Gps_trip> trips;
+    for (const auto& trip : io::read_track_trips(args.get("tracks"))) {
+      trips.emplace_back();
+      for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
+    }
+    Road_map_options ro;
+    ro.rips_radius = radius;
+    // On the command line 0 turns a stage off; unset means automatic.
+    auto value = [&](const char* name, double v) { return !args.has(name) ? 0.0 : v > 0 ? v : -1.0; };
+    ro.delta = value("delta", options.delta);
+    ro.repair_distance = value("repair", options.repair_distance);
+    ro.prune_height = value("prune", options.prune_height);
+    ro.traces = go;
+    ro.embedding = options.embedding;
+    ro.progress = options.progress;
+    Road_map road = extract_road_map(trips, ro);
+    const Gps_trace_sample& sample = road.sample;
+    radius = road.used.rips_radius;
+    options.delta = road.used.delta;
+    options.repair_distance = road.used.repair_distance;
+    options.prune_height = road.used.prune_height;
     input_points = sample.fixes;
     spacing = sample.sample_spacing;
     m = sample.points;
-    const Proximity_graph g = build_gps_trace_graph(sample, radius, go.heading_tolerance);
-    s = extract_reeb_skeleton(g, m, options);
+    s = std::move(road.skeleton);
     gps_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
                ", \"link_gap\": " + json_number(sample.max_link_gap) + ", \"min_density\": " +
                json_number(go.min_relative_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
@@ -328,22 +338,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
   progress.done();
   if (m.rows > 0) sampled = m.rows;
   // Map output: nodes first, then the interior points of every arc's polyline.
-  std::vector<std::array<double, 2>> pos;
-  std::vector<std::array<std::uint32_t, 2>> map_edges;
-  for (auto v : boost::make_iterator_range(vertices(s.graph))) pos.push_back({s.graph[v].position[0], s.graph[v].position[1]});
-  for (auto e : boost::make_iterator_range(edges(s.graph))) {
-    const auto& line = s.graph[e].polyline;
-    const bool forward = line.front() == s.graph[source(e, s.graph)].position;
-    std::uint32_t prev = static_cast<std::uint32_t>(forward ? source(e, s.graph) : target(e, s.graph));
-    for (std::size_t k = 1; k + 1 < line.size(); ++k) {
-      pos.push_back({line[k][0], line[k][1]});
-      const std::uint32_t cur = static_cast<std::uint32_t>(pos.size() - 1);
-      map_edges.push_back({prev, cur});
-      prev = cur;
-    }
-    map_edges.push_back({prev, static_cast<std::uint32_t>(forward ? target(e, s.graph) : source(e, s.graph))});
-  }
-  io::write_map(out_v, out_e, pos, map_edges);
+  const Embedded_graph_2 map = skeleton_to_road_map(s.graph);
+  io::write_map(out_v, out_e, map.positions, map.edges);
   if (args.has("graphml")) io::write_skeleton_graphml(args.get("graphml"), s.graph);
   if (args.has("geojson")) io::write_skeleton_geojson(args.get("geojson"), s.graph);
   if (args.has("ply")) io::write_skeleton_ply(args.get("ply"), s.graph);

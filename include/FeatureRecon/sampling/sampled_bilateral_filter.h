@@ -29,6 +29,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/random.h>
 
 #include <algorithm>
 #include <array>
@@ -106,12 +107,7 @@ struct Tap_pattern {
 
 namespace internal {
 /// \cond
-inline std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
+using FeatureRecon::internal::splitmix64;
 
 /// The image, its weight tables and the checks every entry point makes.
 class Filter_image {
@@ -286,11 +282,7 @@ inline std::vector<float> density_compensation(const Filter_image& F, double r, 
 }
 
 /// Uniform doubles in [0, 1) from std::mt19937_64 by bit manipulation (the same on every platform).
-struct Unit_random {
-  explicit Unit_random(std::uint64_t seed) : rng(seed) {}
-  double operator()() { return double(rng() >> 11) * 0x1.0p-53; }
-  std::mt19937_64 rng;
-};
+using FeatureRecon::internal::Unit_random;
 
 /// Global darts: candidates (continuous positions, in the order thrown) thinned with radius r; returns the
 /// accepted candidates in acceptance order. Conflicts are strict (xi < r).

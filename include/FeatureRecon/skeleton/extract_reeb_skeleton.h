@@ -123,22 +123,32 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     result.status = Status::degenerate_input;
     return result;
   }
+  // Once the callback has said stop, every later stage sees a stop too, and the run ends after the stage.
+  bool stopped = false;
   auto stage = [&](double a, double b) -> Progress_callback {
     if (!options.progress) return {};
     a = progress_start + (1 - progress_start) * a;
     b = progress_start + (1 - progress_start) * b;
-    return [&options, a, b](double t) { return options.progress(a + (b - a) * t); };
+    return [&options, &stopped, a, b](double t) { return !(stopped = stopped || !options.progress(a + (b - a) * t)); };
   };
   const Simplicial_complex_2 K = build_flag_complex_2(graph, stage(0.0, 0.2));
+  if (stopped) {
+    result.status = Status::interrupted;
+    return result;
+  }
   result.rips_edges = K.number_of_edges();
   result.rips_triangles = K.number_of_triangles();
   Geodesic_options go;
   go.progress = stage(0.2, 0.35);
   const Geodesic_result geo = compute_geodesic_function(K, go);
+  if (stopped || geo.status == Status::interrupted) {
+    result.status = Status::interrupted;
+    return result;
+  }
   Reeb_graph_options ro;
   ro.progress = stage(0.35, 0.85);
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, geo.values, ro);
-  if (geo.status == Status::interrupted || A.status() == Status::interrupted) {
+  if (stopped || A.status() == Status::interrupted) {
     result.status = Status::interrupted;
     return result;
   }

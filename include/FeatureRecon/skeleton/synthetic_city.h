@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#ifndef FEATURERECON_SKELETON_SYNTHETIC_CITY_H
+#define FEATURERECON_SKELETON_SYNTHETIC_CITY_H
+
+// A synthetic city with known streets and simulated GPS trips on them: test and benchmark data for road-map
+// construction where no other city's traces are at hand. The street network is a perturbed grid (rotated,
+// jittered intersections, some streets missing, a diagonal avenue); trips drive shortest routes between random
+// intersections on the right-hand side of the street and are recorded at a fixed interval with Gaussian noise
+// and a per-trip bias. Deterministic for a seed on every platform (internal/random.h).
+
+#include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/random.h>
+#include <FeatureRecon/skeleton/gps_traces.h>
+#include <FeatureRecon/skeleton/map_comparison.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace FeatureRecon {
+namespace skeleton {
+
+/// Options of make_synthetic_city(). Lengths in metres, times in seconds.
+struct Synthetic_city_options {
+  std::size_t columns = 8;       ///< intersections per row (>= 2); default 8
+  std::size_t rows = 6;          ///< intersections per column (>= 2); default 6
+  double block_width = 120;      ///< spacing of the intersections along a row; default 120
+  double block_height = 90;      ///< spacing along a column; default 90
+  double rotation = 0;           ///< of the whole grid, degrees; default 0
+  double jitter = 10;            ///< each intersection moves uniformly within +-jitter in x and y; default 10
+  double missing_streets = 0.1;  ///< fraction of grid streets removed, keeping the network connected; default 0.1
+  bool diagonal = true;          ///< a diagonal avenue through the intersections (i, i); default true
+  std::size_t trips = 300;       ///< default 300
+  double speed = 10;             ///< mean driving speed; each trip drives at 0.7 to 1.3 times it; default 10
+  double sampling_interval = 3.6;  ///< time between fixes (the first one at a random phase); default 3.6
+  double noise = 4;              ///< standard deviation of the noise of each coordinate of a fix; default 4
+  double trip_bias = 2;          ///< standard deviation of a constant offset per trip and coordinate; default 2
+  double lane_offset = 2;        ///< vehicles drive this far right of the centre line; default 2
+  std::uint64_t seed = 1;        ///< default 1
+};
+
+/// Result of make_synthetic_city().
+struct Synthetic_city {
+  Embedded_graph_2 streets;   ///< the street network (centre lines)
+  Embedded_graph_2 driven;    ///< the streets at least one trip used: the ground truth of a road map
+  std::vector<Gps_trip> trips;  ///< the recorded fixes (trip k starts at time 10000 k)
+};
+
+/// Builds a synthetic city and its GPS trips (see the file comment).
+/// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or non-finite
+///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, or a missing
+///         fraction outside [0, 1].
+inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
+  const char* fn = "make_synthetic_city";
+  using FeatureRecon::internal::throw_invalid_argument;
+  if (o.columns < 2 || o.rows < 2) throw_invalid_argument(fn, "columns and rows must be >= 2, got ", o.columns, " and ", o.rows);
+  auto positive = [&](double v, const char* name) {
+    if (!(v > 0 && std::isfinite(v))) throw_invalid_argument(fn, name, " must be positive and finite, got ", v);
+  };
+  auto non_negative = [&](double v, const char* name) {
+    if (!(v >= 0 && std::isfinite(v))) throw_invalid_argument(fn, name, " must be finite and >= 0, got ", v);
+  };
+  positive(o.block_width, "block_width");
+  positive(o.block_height, "block_height");
+  positive(o.speed, "speed");
+  positive(o.sampling_interval, "sampling_interval");
+  non_negative(o.noise, "noise");
+  non_negative(o.trip_bias, "trip_bias");
+  non_negative(o.jitter, "jitter");
+  non_negative(o.lane_offset, "lane_offset");
+  if (!std::isfinite(o.rotation)) throw_invalid_argument(fn, "rotation must be finite, got ", o.rotation);
+  if (!(o.missing_streets >= 0 && o.missing_streets <= 1))
+    throw_invalid_argument(fn, "missing_streets must be in [0, 1], got ", o.missing_streets);
+
+  FeatureRecon::internal::Unit_random random(FeatureRecon::internal::splitmix64(o.seed));
+  Synthetic_city city;
+  const std::size_t nx = o.columns, ny = o.rows, n = nx * ny;
+  const double a = o.rotation * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double x = double(i) * o.block_width + o.jitter * (2 * random() - 1);
+      const double y = double(j) * o.block_height + o.jitter * (2 * random() - 1);
+      city.streets.positions.push_back({c * x - s * y, s * x + c * y});
+    }
+  auto node = [nx](std::size_t i, std::size_t j) { return static_cast<Vertex_index>(j * nx + i); };
+  std::vector<Edge> streets;
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      if (i + 1 < nx) streets.push_back({node(i, j), node(i + 1, j)});
+      if (j + 1 < ny) streets.push_back({node(i, j), node(i, j + 1)});
+    }
+  // Remove grid streets in random order while the network stays connected.
+  const std::size_t grid_streets = streets.size();
+  std::vector<std::size_t> order(grid_streets);
+  for (std::size_t k = 0; k < grid_streets; ++k) order[k] = k;
+  for (std::size_t k = grid_streets; k > 1; --k) std::swap(order[k - 1], order[std::size_t(random() * double(k))]);
+  std::vector<char> removed(grid_streets, 0);
+  auto connected = [&]() {
+    std::vector<std::vector<Vertex_index>> adj(n);
+    for (std::size_t k = 0; k < grid_streets; ++k)
+      if (!removed[k]) {
+        adj[streets[k][0]].push_back(streets[k][1]);
+        adj[streets[k][1]].push_back(streets[k][0]);
+      }
+    std::vector<char> seen(n, 0);
+    std::vector<Vertex_index> stack{0};
+    seen[0] = 1;
+    std::size_t count = 1;
+    while (!stack.empty()) {
+      const Vertex_index v = stack.back();
+      stack.pop_back();
+      for (const Vertex_index w : adj[v])
+        if (!seen[w]) seen[w] = 1, ++count, stack.push_back(w);
+    }
+    return count == n;
+  };
+  const auto to_remove = static_cast<std::size_t>(std::floor(o.missing_streets * double(grid_streets)));
+  for (std::size_t k = 0, done = 0; k < grid_streets && done < to_remove; ++k) {
+    removed[order[k]] = 1;
+    if (connected())
+      ++done;
+    else
+      removed[order[k]] = 0;
+  }
+  for (std::size_t k = 0; k < grid_streets; ++k)
+    if (!removed[k]) city.streets.edges.push_back(streets[k]);
+  if (o.diagonal)
+    for (std::size_t i = 0; i + 1 < std::min(nx, ny); ++i) city.streets.edges.push_back({node(i, i), node(i + 1, i + 1)});
+
+  // Trips: shortest routes (lengths times a random factor in [1, 1.5) per trip and street) between two random
+  // intersections, driven on the right at a constant speed, recorded with noise.
+  const auto& P = city.streets.positions;
+  const std::vector<Edge>& E = city.streets.edges;
+  std::vector<std::vector<std::pair<Vertex_index, std::size_t>>> adj(n);
+  for (std::size_t k = 0; k < E.size(); ++k) {
+    adj[E[k][0]].push_back({E[k][1], k});
+    adj[E[k][1]].push_back({E[k][0], k});
+  }
+  auto length = [&](std::size_t k) { return std::hypot(P[E[k][1]][0] - P[E[k][0]][0], P[E[k][1]][1] - P[E[k][0]][1]); };
+  std::vector<char> used(E.size(), 0);
+  for (std::size_t t = 0; t < o.trips; ++t) {
+    std::vector<double> factor(E.size());
+    for (double& f : factor) f = 1 + 0.5 * random();
+    const auto from = static_cast<Vertex_index>(random() * double(n));
+    auto to = static_cast<Vertex_index>(random() * double(n - 1));
+    if (to >= from) ++to;
+    std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> via(n, E.size());
+    using Item = std::pair<double, Vertex_index>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    dist[from] = 0;
+    queue.push({0.0, from});
+    while (!queue.empty()) {
+      const auto [d, v] = queue.top();
+      queue.pop();
+      if (d > dist[v]) continue;
+      for (const auto& [w, k] : adj[v])
+        if (d + length(k) * factor[k] < dist[w]) {
+          dist[w] = d + length(k) * factor[k];
+          via[w] = k;
+          queue.push({dist[w], w});
+        }
+    }
+    std::vector<Vertex_index> route{to};
+    while (route.back() != from) {
+      const std::size_t k = via[route.back()];
+      used[k] = 1;
+      route.push_back(E[k][0] == route.back() ? E[k][1] : E[k][0]);
+    }
+    std::reverse(route.begin(), route.end());
+    const double speed = o.speed * (0.7 + 0.6 * random());
+    const double bias_x = o.trip_bias * random.normal(), bias_y = o.trip_bias * random.normal();
+    double along = o.sampling_interval * random() * speed;  // arc length of the next fix
+    double start = 0;                                         // arc length at the current segment's start
+    Gps_trip trip;
+    for (std::size_t r = 0; r + 1 < route.size(); ++r) {
+      const auto& p = P[route[r]];
+      const auto& q = P[route[r + 1]];
+      const double L = std::hypot(q[0] - p[0], q[1] - p[1]);
+      const double ux = (q[0] - p[0]) / L, uy = (q[1] - p[1]) / L;
+      for (; along < start + L; along += o.sampling_interval * speed) {
+        const double u = along - start;
+        const double x = p[0] + u * ux + o.lane_offset * uy + bias_x + o.noise * random.normal();
+        const double y = p[1] + u * uy - o.lane_offset * ux + bias_y + o.noise * random.normal();
+        trip.push_back({x, y, 10000.0 * double(t) + along / speed});
+      }
+      start += L;
+    }
+    city.trips.push_back(std::move(trip));
+  }
+  city.driven.positions = P;
+  for (std::size_t k = 0; k < E.size(); ++k)
+    if (used[k]) city.driven.edges.push_back(E[k]);
+  return city;
+}
+
+}  // namespace skeleton
+}  // namespace FeatureRecon
+
+#endif  // FEATURERECON_SKELETON_SYNTHETIC_CITY_H

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/road_map.h>
+#include <FeatureRecon/skeleton/synthetic_city.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+using namespace FeatureRecon;
+using namespace FeatureRecon::skeleton;
+
+namespace {
+/// Two trips along a straight street, fixes `step` apart.
+std::vector<Gps_trip> street(double step) {
+  std::vector<Gps_trip> trips(2);
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 20; ++i) trips[k].push_back({i * step, 3.0 * k, 100.0 * k + i});
+  return trips;
+}
+
+double segment_distance(const std::array<double, 2>& p, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  const double t = std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+}
+
+template <class F>
+std::string message_of(F f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
+Synthetic_city small_city(std::uint64_t seed = 3) {
+  Synthetic_city_options o;
+  o.columns = 5;
+  o.rows = 4;
+  o.trips = 150;
+  o.seed = seed;
+  return make_synthetic_city(o);
+}
+}  // namespace
+
+TEST(RoadMap, AutomaticParametersFollowTheMedianStep) {
+  // R is the median step clamped to [10, 50] m; delta 3R, repair 2.5R, prune 5R.
+  for (const auto& [step, R] : {std::pair{20.0, 20.0}, std::pair{4.0, 10.0}, std::pair{200.0, 50.0}}) {
+    const Road_map_options u = resolve_road_map_options(street(step), {});
+    EXPECT_DOUBLE_EQ(u.rips_radius, R) << step;
+    EXPECT_DOUBLE_EQ(u.delta, 3 * R);
+    EXPECT_DOUBLE_EQ(u.repair_distance, 2.5 * R);
+    EXPECT_DOUBLE_EQ(u.prune_height, 5 * R);
+  }
+  Road_map_options o;
+  o.min_radius = 25;
+  EXPECT_DOUBLE_EQ(resolve_road_map_options(street(20), o).rips_radius, 25);
+  o.rips_radius = 7;  // explicit values win; negative turns a stage off
+  o.delta = 11;
+  o.repair_distance = -1;
+  o.prune_height = -1;
+  const Road_map_options u = resolve_road_map_options(street(20), o);
+  EXPECT_DOUBLE_EQ(u.rips_radius, 7);
+  EXPECT_DOUBLE_EQ(u.delta, 11);
+  EXPECT_EQ(u.repair_distance, 0);
+  EXPECT_EQ(u.prune_height, 0);
+  const Skeleton_options so = road_map_skeleton_options(u);
+  EXPECT_DOUBLE_EQ(so.delta, 11);
+  EXPECT_EQ(so.repair_distance, 0);
+  EXPECT_EQ(so.prune_height, 0);
+  // No trip with two fixes: no step to derive from, the lower clamp.
+  EXPECT_DOUBLE_EQ(resolve_road_map_options({}, {}).rips_radius, 10);
+}
+
+TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
+  const Synthetic_city city = small_city();
+  const Road_map m = extract_road_map(city.trips);
+  ASSERT_EQ(m.status, Status::success);
+  const Road_map_options used = resolve_road_map_options(city.trips, {});
+  const Gps_trace_sample S = sample_gps_traces(city.trips, used.rips_radius, used.traces);
+  const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius, used.traces.heading_tolerance);
+  const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
+  const Embedded_graph_2 map = skeleton_to_road_map(k.graph);
+  EXPECT_EQ(m.map.positions, map.positions);
+  EXPECT_EQ(m.map.edges, map.edges);
+  EXPECT_EQ(m.sample.points.data, S.points.data);
+  EXPECT_EQ(extract_road_map(city.trips).map.positions, m.map.positions);
+  // The map: nodes first at their positions; every edge joins two distinct vertices.
+  ASSERT_GE(m.map.positions.size(), num_vertices(m.skeleton.graph));
+  for (std::size_t v = 0; v < num_vertices(m.skeleton.graph); ++v) {
+    EXPECT_EQ(m.map.positions[v][0], m.skeleton.graph[v].position[0]);
+    EXPECT_EQ(m.map.positions[v][1], m.skeleton.graph[v].position[1]);
+  }
+  std::size_t polyline_edges = 0;
+  for (auto e : boost::make_iterator_range(edges(m.skeleton.graph))) polyline_edges += m.skeleton.graph[e].polyline.size() - 1;
+  EXPECT_EQ(m.map.edges.size(), polyline_edges);
+  for (const Edge& e : m.map.edges) {
+    EXPECT_NE(e[0], e[1]);
+    EXPECT_LT(std::max(e[0], e[1]), m.map.positions.size());
+  }
+}
+
+TEST(RoadMap, BadOptionsAndFixesAreNamed) {
+  const std::vector<Gps_trip> trips = street(20);
+  Road_map_options o;
+  o.rips_radius = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("rips_radius"), std::string::npos);
+  o = {};
+  o.min_radius = 60;
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("min_radius"), std::string::npos);
+  o = {};
+  o.delta = std::numeric_limits<double>::infinity();
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("delta"), std::string::npos);
+  o = {};
+  o.traces.heading_tolerance = -1;
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("heading_tolerance"), std::string::npos);
+  std::vector<Gps_trip> bad = trips;
+  bad[1][2].y = std::numeric_limits<double>::quiet_NaN();
+  const std::string m = message_of([&] { extract_road_map(bad, {}); });
+  EXPECT_NE(m.find("trip 1, fix 2"), std::string::npos) << m;
+}
+
+TEST(RoadMap, DegenerateInput) {
+  for (const std::vector<Gps_trip>& trips : {std::vector<Gps_trip>{}, std::vector<Gps_trip>(3)}) {
+    const Road_map m = extract_road_map(trips);
+    EXPECT_EQ(m.status, Status::degenerate_input);
+    EXPECT_TRUE(m.map.positions.empty());
+    EXPECT_TRUE(m.map.edges.empty());
+  }
+  // One fix, or one fix repeated: one sample, and a component of height 0 is pruned (a map with no streets).
+  for (const std::size_t copies : {1u, 5u}) {
+    std::vector<Gps_trip> one(copies, Gps_trip{{5, 5, 0}});
+    const Road_map m = extract_road_map(one);
+    EXPECT_EQ(m.sample.points.rows, 1u);
+    EXPECT_EQ(m.status, Status::success);
+    EXPECT_TRUE(m.map.edges.empty());
+    Road_map_options keep;
+    keep.prune_height = -1;
+    const Road_map k = extract_road_map(one, keep);
+    ASSERT_EQ(k.map.positions.size(), 1u);
+    EXPECT_EQ(k.map.positions[0], (std::array<double, 2>{5, 5}));
+  }
+}
+
+TEST(RoadMap, ProgressIsMonotoneAndCancelStops) {
+  const Synthetic_city city = small_city();
+  Road_map_options o;
+  std::vector<double> seen;
+  o.progress = [&](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const Road_map m = extract_road_map(city.trips, o);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]);
+  EXPECT_EQ(m.map.positions, extract_road_map(city.trips).map.positions);
+  for (const double stop_at : {0.0, 0.05, 0.15, 0.3, 0.4}) {
+    o.progress = [stop_at](double t) { return t < stop_at; };
+    const Road_map c = extract_road_map(city.trips, o);
+    EXPECT_EQ(c.status, Status::interrupted) << stop_at;
+    EXPECT_TRUE(c.map.positions.empty());
+  }
+}
+
+TEST(SyntheticCity, StreetsAndTrips) {
+  Synthetic_city_options o;
+  o.noise = 0;
+  o.trip_bias = 0;
+  o.trips = 40;
+  const Synthetic_city c = make_synthetic_city(o);
+  const std::size_t grid = (o.columns - 1) * o.rows + o.columns * (o.rows - 1);
+  EXPECT_EQ(c.streets.positions.size(), o.columns * o.rows);
+  EXPECT_EQ(c.streets.edges.size(), grid - std::size_t(std::floor(o.missing_streets * double(grid))) + std::min(o.columns, o.rows) - 1);
+  EXPECT_LE(c.driven.edges.size(), c.streets.edges.size());
+  EXPECT_EQ(c.trips.size(), o.trips);
+  // Without noise and bias every fix lies lane_offset from a driven street, and consecutive fixes are at most
+  // speed x interval apart (1.3 speed at most) along the route.
+  std::size_t fixes = 0;
+  for (const Gps_trip& t : c.trips) {
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      double d = std::numeric_limits<double>::infinity();
+      for (const Edge& e : c.driven.edges)
+        d = std::min(d, segment_distance({t[i].x, t[i].y}, c.driven.positions[e[0]], c.driven.positions[e[1]]));
+      EXPECT_LE(d, o.lane_offset + 1e-9);
+      if (i > 0) {
+        EXPECT_LT(t[i - 1].time, t[i].time);
+        EXPECT_LE(std::hypot(t[i].x - t[i - 1].x, t[i].y - t[i - 1].y), 1.3 * o.speed * o.sampling_interval + 1e-9);
+      }
+    }
+    fixes += t.size();
+  }
+  EXPECT_GT(fixes, 10 * o.trips);
+  // Deterministic for a seed; another seed gives another city.
+  const Synthetic_city again = make_synthetic_city(o);
+  EXPECT_EQ(again.streets.positions, c.streets.positions);
+  ASSERT_EQ(again.trips.size(), c.trips.size());
+  for (std::size_t t = 0; t < c.trips.size(); ++t)
+    for (std::size_t i = 0; i < c.trips[t].size(); ++i) EXPECT_EQ(again.trips[t][i].x, c.trips[t][i].x);
+  o.seed = 2;
+  EXPECT_NE(make_synthetic_city(o).streets.positions, c.streets.positions);
+  // Bad options are named.
+  Synthetic_city_options b;
+  b.columns = 1;
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("columns"), std::string::npos);
+  b = {};
+  b.sampling_interval = 0;
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("sampling_interval"), std::string::npos);
+  b = {};
+  b.missing_streets = 1.5;
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("missing_streets"), std::string::npos);
+  b = {};
+  b.noise = -1;
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("noise"), std::string::npos);
+}
