@@ -71,7 +71,7 @@ const std::vector<Command>& commands() {
        "                   segments up to the link gap are densified, the result is sampled at spacing S (greedy,\n"
        "                   per direction), consecutive samples of a trip are graph edges, and sparse samples are\n"
        "                   dropped. Unset values derive from the median step M between fixes: R = M (clamped to\n"
-       "                   [10, 50]), S = R/2, G = max(4M, 2R), D = 3R, DIST = 2.5R, H = 5R, A = 30, F = 0.1,\n"
+       "                   [10, 30]), S = R/2, G = max(4M, 2R), D = 3R, DIST = 2.5R, H = 5R, A = 30, F = 0.1,\n"
        "                   DR = 2R, DA = 45\n"
        "  --distance-matrix FILE  n lines of n distances (symmetric, zero diagonal); needs --radius; embedded by\n"
        "                   classical MDS (O(n^3))\n"

@@ -50,8 +50,8 @@ Synthetic_city small_city(std::uint64_t seed = 3) {
 }  // namespace
 
 TEST(RoadMap, AutomaticParametersFollowTheMedianStep) {
-  // R is the median step clamped to [10, 50] m; delta 3R, repair 2.5R, prune 5R.
-  for (const auto& [step, R] : {std::pair{20.0, 20.0}, std::pair{4.0, 10.0}, std::pair{200.0, 50.0}}) {
+  // R is the median step clamped to [10, 30] m; delta 3R, repair 2.5R, prune 5R.
+  for (const auto& [step, R] : {std::pair{20.0, 20.0}, std::pair{4.0, 10.0}, std::pair{200.0, 30.0}}) {
     const Road_map_options u = resolve_road_map_options(street(step), {});
     EXPECT_DOUBLE_EQ(u.rips_radius, R) << step;
     EXPECT_DOUBLE_EQ(u.delta, 3 * R);

@@ -42,7 +42,7 @@ inline Gps_trace_options road_map_trace_options() {
 struct Road_map_options {
   double rips_radius = 0;      ///< 0: M clamped to [min_radius, max_radius]
   double min_radius = 10;      ///< lower clamp of the automatic radius (m); default 10
-  double max_radius = 50;      ///< upper clamp of the automatic radius (m); default 50
+  double max_radius = 30;      ///< upper clamp of the automatic radius (m); default 30
   double delta = 0;            ///< persistence threshold of the simplification; 0: 3 R; negative: none
   double repair_distance = 0;  ///< join dead ends at most this far apart; 0: 2.5 R; negative: no repair
   double prune_height = 0;     ///< drop components of smaller height (range of f); 0: 5 R; negative: keep all
