@@ -29,6 +29,30 @@ const char* type_name(unsigned t) {
   if (t & down_fork) return "down-fork";
   return "regular";
 }
+
+/// A picture frame: the bounding box of what is added, scaled to `size` pixels on its longer side, y upwards.
+class Svg_frame {
+ public:
+  void extend(double x, double y) {
+    x0 = std::min(x0, x);
+    y0 = std::min(y0, y);
+    x1 = std::max(x1, x);
+    y1 = std::max(y1, y);
+  }
+  /// The opening of the picture (white background); call after the last extend().
+  std::string open(double size) {
+    if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
+    scale = size / std::max({x1 - x0, y1 - y0, 1e-9});
+    return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(2 * margin + (x1 - x0) * scale) +
+           "\" height=\"" + number(2 * margin + (y1 - y0) * scale) +
+           "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  }
+  std::string X(double x) const { return number(margin + (x - x0) * scale); }
+  std::string Y(double y) const { return number(margin + (y1 - y) * scale); }
+
+ private:
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, scale = 1, margin = 10;
+};
 }  // namespace
 
 void write_skeleton_graphml(const std::string& path, const Skeleton_graph& g) {
@@ -110,22 +134,13 @@ void write_skeleton_ply(const std::string& path, const Skeleton_graph& g) {
 
 void write_skeleton_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
                         const Skeleton_graph& g) {
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  auto extend = [&](double x, double y) {
-    x0 = std::min(x0, x);
-    y0 = std::min(y0, y);
-    x1 = std::max(x1, x);
-    y1 = std::max(y1, y);
-  };
-  for (const auto& p : points) extend(p[0], p[1]);
-  for (auto v : boost::make_iterator_range(vertices(g))) extend(g[v].position[0], g[v].position[1]);
-  if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
-  const double scale = 1000.0 / std::max({x1 - x0, y1 - y0, 1e-9}), margin = 10;
-  auto X = [&](double x) { return number(margin + (x - x0) * scale); };
-  auto Y = [&](double y) { return number(margin + (y1 - y) * scale); };
+  Svg_frame frame;
+  for (const auto& p : points) frame.extend(p[0], p[1]);
+  for (auto v : boost::make_iterator_range(vertices(g))) frame.extend(g[v].position[0], g[v].position[1]);
   std::ostringstream os;
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(2 * margin + (x1 - x0) * scale)
-     << "\" height=\"" << number(2 * margin + (y1 - y0) * scale) << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  os << frame.open(1000.0);
+  auto X = [&](double x) { return frame.X(x); };
+  auto Y = [&](double y) { return frame.Y(y); };
   for (const auto& p : points) os << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"1\" fill=\"#c0c0c0\"/>\n";
   const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   std::size_t k = 0;
@@ -144,22 +159,13 @@ void write_skeleton_svg(const std::string& path, const std::vector<std::array<do
 void write_map_comparison_svg(const std::string& path, const skeleton::Map_comparison_result& r) {
   const auto& H = r.ground_truth_sample_list;
   const auto& G = r.reconstruction_sample_list;
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  Svg_frame frame;
   for (const auto* list : {&H, &G})
-    for (const auto& s : *list) {
-      x0 = std::min(x0, s.position[0]);
-      y0 = std::min(y0, s.position[1]);
-      x1 = std::max(x1, s.position[0]);
-      y1 = std::max(y1, s.position[1]);
-    }
-  if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
-  const double scale = 1600.0 / std::max({x1 - x0, y1 - y0, 1e-9}), margin = 10;
-  auto X = [&](double x) { return number(margin + (x - x0) * scale); };
-  auto Y = [&](double y) { return number(margin + (y1 - y) * scale); };
+    for (const auto& s : *list) frame.extend(s.position[0], s.position[1]);
   std::ostringstream os;
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(2 * margin + (x1 - x0) * scale)
-     << "\" height=\"" << number(2 * margin + (y1 - y0) * scale)
-     << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  os << frame.open(1600.0);
+  auto X = [&](double x) { return frame.X(x); };
+  auto Y = [&](double y) { return frame.Y(y); };
   for (std::size_t h = 0; h < H.size(); ++h) {
     const std::int64_t g = r.ground_truth_partner[h];
     if (g >= 0) {
