@@ -2,7 +2,8 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 // A road map from GPS traces where the true streets are known: make_synthetic_city() lays out a perturbed grid
 // and simulates trips on it; extract_road_map() builds the map with every parameter derived from the traces;
-// compare_maps() scores it against the streets that were driven (graph-sampling metric, 15 m). The same city
+// compare_maps() scores it against the streets that were driven (graph-sampling metric, 15 m), before and after
+// the last stage merges the two directions of each street into one line. The same city
 // recorded every 1, 3.6 and 7 seconds shows how the derived parameters follow the sampling rate. With
 // --svg FILE: a picture of the 3.6 s city (traces, true streets, map); doc/images/synthetic_city_road_map.png is
 // that picture converted with rsvg-convert.
@@ -58,11 +59,16 @@ int main(int argc, char** argv) {
     for (const auto& t : city.trips) fixes += t.size();
     const sk::Road_map m = sk::extract_road_map(city.trips);
     const sk::Map_comparison_result score = sk::compare_maps(city.driven, m.map);
+    // The same skeleton before its last stage, merge_road_lines(): both directions of every street drawn.
+    const sk::Map_comparison_result unmerged = sk::compare_maps(city.driven, sk::skeleton_to_road_map(m.skeleton.graph));
     std::printf("every %.1f s: %zu fixes, median step %.1f m -> radius %.1f m, delta %.1f m; %zu samples\n", interval,
                 fixes, m.sample.median_step, m.used.rips_radius, m.used.delta, m.sample.points.rows);
-    std::printf("  map: %zu nodes, %zu arcs; against the driven streets at 15 m: P %.2f R %.2f F %.2f\n",
-                num_vertices(m.skeleton.graph), num_edges(m.skeleton.graph), score.precision, score.recall,
-                score.f_score);
+    std::printf("  skeleton: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n",
+                num_vertices(m.skeleton.graph), num_edges(m.skeleton.graph), m.merged.length_before,
+                unmerged.precision, unmerged.recall, unmerged.f_score);
+    std::printf("  merged at %.0f m: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n", m.used.merge_distance,
+                num_vertices(m.merged.skeleton), num_edges(m.merged.skeleton), m.merged.length_after, score.precision,
+                score.recall, score.f_score);
     if (!svg.empty() && interval == 3.6) write_svg(svg, city, m);
   }
   return 0;

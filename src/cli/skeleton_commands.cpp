@@ -201,7 +201,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "prune", "level-width", "smoothing",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "prune", "merge", "level-width", "smoothing",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -234,9 +234,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
   const bool quiet = args.has("quiet");
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
-               args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected")))
-    throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius and "
-                      "--density-heading-tolerance apply to --tracks only");
+               args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected") ||
+               args.has("merge")))
+    throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius, "
+                      "--density-heading-tolerance and --merge apply to --tracks only");
   if ((args.has("graph") || args.has("distance-matrix")) && args.has("sample-spacing"))
     throw Usage_error("--sample-spacing applies to --points and --tracks only");
   Point_matrix m;
@@ -245,6 +246,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
   options.progress = std::ref(progress);
   const auto t0 = std::chrono::steady_clock::now();
   Reeb_skeleton s;
+  Skeleton_graph merged;  // --tracks with merging: the skeleton of the merged map, which is what is written
+  bool use_merged = false;
   std::string gps_json;
   std::size_t sampled = 0;
   if (args.has("points")) {
@@ -313,6 +316,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     ro.delta = value("delta", options.delta);
     ro.repair_distance = value("repair", options.repair_distance);
     ro.prune_height = value("prune", options.prune_height);
+    if (args.has("merge") && !(args.get_double("merge") >= 0)) throw Usage_error("--merge must be >= 0 (0: off)");
+    ro.merge_distance = value("merge", args.has("merge") ? args.get_double("merge") : 0.0);
     ro.traces = go;
     ro.embedding = options.embedding;
     ro.progress = options.progress;
@@ -326,32 +331,38 @@ int run_skeleton(const std::vector<std::string>& argv) {
     spacing = sample.sample_spacing;
     m = sample.points;
     s = std::move(road.skeleton);
+    use_merged = road.used.merge_distance > 0 && road.status != Status::degenerate_input;
+    if (use_merged) merged = std::move(road.merged.skeleton);
     gps_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
                ", \"link_gap\": " + json_number(sample.max_link_gap) + ", \"min_density\": " +
                json_number(go.min_relative_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
                ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                ", \"directed\": " + (go.directed ? "true" : "false") + ", \"dropped_sparse\": " + std::to_string(sample.dropped) + ", \"prune\": " +
                json_number(options.prune_height) + ", \"trip_links\": " +
-               std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance);
+               std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
+               ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
+               json_number(use_merged ? road.merged.length_before : 0.0) + ", \"length\": " +
+               json_number(use_merged ? road.merged.length_after : 0.0);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.done();
   if (m.rows > 0) sampled = m.rows;
   // Map output: nodes first, then the interior points of every arc's polyline.
-  const Embedded_graph_2 map = skeleton_to_road_map(s.graph);
+  const Skeleton_graph& graph = use_merged ? merged : s.graph;
+  const Embedded_graph_2 map = skeleton_to_road_map(graph);
   io::write_map(out_v, out_e, map.positions, map.edges);
-  if (args.has("graphml")) io::write_skeleton_graphml(args.get("graphml"), s.graph);
-  if (args.has("geojson")) io::write_skeleton_geojson(args.get("geojson"), s.graph);
-  if (args.has("ply")) io::write_skeleton_ply(args.get("ply"), s.graph);
+  if (args.has("graphml")) io::write_skeleton_graphml(args.get("graphml"), graph);
+  if (args.has("geojson")) io::write_skeleton_geojson(args.get("geojson"), graph);
+  if (args.has("ply")) io::write_skeleton_ply(args.get("ply"), graph);
   if (args.has("svg")) {
     std::vector<std::array<double, 2>> xy;
     for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
-    io::write_skeleton_svg(args.get("svg"), xy, s.graph);
+    io::write_skeleton_svg(args.get("svg"), xy, graph);
   }
   std::size_t components = 0;
   {
-    std::vector<int> comp(num_vertices(s.graph));
-    if (!comp.empty()) components = static_cast<std::size_t>(boost::connected_components(s.graph, comp.data()));
+    std::vector<int> comp(num_vertices(graph));
+    if (!comp.empty()) components = static_cast<std::size_t>(boost::connected_components(graph, comp.data()));
   }
   std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
               "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
@@ -359,7 +370,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
               "\"level_width\": %s%s, \"seconds\": %s, \"vertices_file\": \"%s\", \"edges_file\": \"%s\"}\n",
               input_points, sampled, json_number(radius).c_str(), json_number(options.delta).c_str(),
               json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles,
-              num_vertices(s.graph), num_edges(s.graph), num_edges(s.graph) + components - num_vertices(s.graph),
+              num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph),
               components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(), gps_json.c_str(), json_number(seconds).c_str(), out_v.c_str(),
               out_e.c_str());
   return 0;

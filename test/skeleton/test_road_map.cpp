@@ -86,24 +86,38 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
   const Gps_trace_sample S = sample_gps_traces(city.trips, used.rips_radius, used.traces);
   const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius, used.traces.heading_tolerance);
   const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
-  const Embedded_graph_2 map = skeleton_to_road_map(k.graph);
-  EXPECT_EQ(m.map.positions, map.positions);
-  EXPECT_EQ(m.map.edges, map.edges);
+  const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
+  EXPECT_DOUBLE_EQ(used.merge_distance, 8);
+  const Road_merge_result merged = merge_road_lines(lines, road_map_merge_options(used));
+  EXPECT_EQ(m.map.positions, merged.map.positions);
+  EXPECT_EQ(m.map.edges, merged.map.edges);
   EXPECT_EQ(m.sample.points.data, S.points.data);
   EXPECT_EQ(extract_road_map(city.trips).map.positions, m.map.positions);
-  // The map: nodes first at their positions; every edge joins two distinct vertices.
-  ASSERT_GE(m.map.positions.size(), num_vertices(m.skeleton.graph));
-  for (std::size_t v = 0; v < num_vertices(m.skeleton.graph); ++v) {
-    EXPECT_EQ(m.map.positions[v][0], m.skeleton.graph[v].position[0]);
-    EXPECT_EQ(m.map.positions[v][1], m.skeleton.graph[v].position[1]);
+  // Merging the two directions of the city's two-way streets removes about a third of the length.
+  EXPECT_LT(merged.length_after, 0.8 * merged.length_before);
+  EXPECT_GT(merged.length_after, 0.4 * merged.length_before);
+  // The map: the merged skeleton's nodes first at their positions; every edge joins two distinct vertices.
+  const Skeleton_graph& sk = m.merged.skeleton;
+  ASSERT_GE(m.map.positions.size(), num_vertices(sk));
+  for (std::size_t v = 0; v < num_vertices(sk); ++v) {
+    EXPECT_EQ(m.map.positions[v][0], sk[v].position[0]);
+    EXPECT_EQ(m.map.positions[v][1], sk[v].position[1]);
   }
   std::size_t polyline_edges = 0;
-  for (auto e : boost::make_iterator_range(edges(m.skeleton.graph))) polyline_edges += m.skeleton.graph[e].polyline.size() - 1;
+  for (auto e : boost::make_iterator_range(edges(sk))) polyline_edges += sk[e].polyline.size() - 1;
   EXPECT_EQ(m.map.edges.size(), polyline_edges);
   for (const Edge& e : m.map.edges) {
     EXPECT_NE(e[0], e[1]);
     EXPECT_LT(std::max(e[0], e[1]), m.map.positions.size());
   }
+  // Merging off: the skeleton's map itself.
+  Road_map_options off;
+  off.merge_distance = -1;
+  const Road_map u = extract_road_map(city.trips, off);
+  EXPECT_EQ(u.used.merge_distance, 0);
+  EXPECT_EQ(u.map.positions, lines.positions);
+  EXPECT_EQ(u.map.edges, lines.edges);
+  EXPECT_EQ(num_vertices(u.merged.skeleton), 0u);
 }
 
 TEST(RoadMap, BadOptionsAndFixesAreNamed) {
@@ -120,6 +134,9 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   o = {};
   o.traces.heading_tolerance = -1;
   EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("heading_tolerance"), std::string::npos);
+  o = {};
+  o.merge_distance = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("merge_distance"), std::string::npos);
   std::vector<Gps_trip> bad = trips;
   bad[1][2].y = std::numeric_limits<double>::quiet_NaN();
   const std::string m = message_of([&] { extract_road_map(bad, {}); });
@@ -162,12 +179,187 @@ TEST(RoadMap, ProgressIsMonotoneAndCancelStops) {
   EXPECT_EQ(seen.back(), 1.0);
   for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]);
   EXPECT_EQ(m.map.positions, extract_road_map(city.trips).map.positions);
-  for (const double stop_at : {0.0, 0.05, 0.15, 0.3, 0.4}) {
+  for (const double stop_at : {0.0, 0.05, 0.15, 0.3, 0.4, 0.95}) {
     o.progress = [stop_at](double t) { return t < stop_at; };
     const Road_map c = extract_road_map(city.trips, o);
     EXPECT_EQ(c.status, Status::interrupted) << stop_at;
     EXPECT_TRUE(c.map.positions.empty());
   }
+}
+
+namespace {
+/// Straight lines y = offset[k] from x = 0 to x = length, each a chain of 10 m edges; optionally joined at both
+/// ends by short vertical edges (one street drawn once per direction).
+Embedded_graph_2 parallel_lines(const std::vector<double>& offsets, double length, bool joined) {
+  Embedded_graph_2 g;
+  std::vector<Vertex_index> first, last;
+  for (const double y : offsets) {
+    const auto n = static_cast<std::size_t>(length / 10);
+    for (std::size_t i = 0; i <= n; ++i) {
+      g.positions.push_back({10.0 * double(i), y});
+      if (i > 0) g.edges.push_back({Vertex_index(g.positions.size() - 2), Vertex_index(g.positions.size() - 1)});
+    }
+    first.push_back(Vertex_index(g.positions.size() - n - 1));
+    last.push_back(Vertex_index(g.positions.size() - 1));
+  }
+  if (joined)
+    for (std::size_t k = 1; k < offsets.size(); ++k) {
+      g.edges.push_back({first[k - 1], first[k]});
+      g.edges.push_back({last[k], last[k - 1]});  // reversed on purpose
+    }
+  return g;
+}
+
+double map_length(const Embedded_graph_2& g) {
+  double L = 0;
+  for (const Edge& e : g.edges)
+    L += std::hypot(g.positions[e[0]][0] - g.positions[e[1]][0], g.positions[e[0]][1] - g.positions[e[1]][1]);
+  return L;
+}
+
+std::size_t map_components(const Embedded_graph_2& g) {
+  std::vector<std::size_t> parent(g.positions.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::size_t c = parent.size();
+  for (const Edge& e : g.edges)
+    if (find(e[0]) != find(e[1])) {
+      parent[find(e[0])] = find(e[1]);
+      --c;
+    }
+  return c;
+}
+}  // namespace
+
+TEST(MergeRoadLines, TwoDirectionsOfAStreetBecomeOneLineInTheMiddle) {
+  for (const bool joined : {false, true}) {
+    const Embedded_graph_2 street = parallel_lines({0.0, 4.0}, 300, joined);
+    const Road_merge_result r = merge_road_lines(street);
+    ASSERT_EQ(r.status, Status::success);
+    EXPECT_NEAR(r.length_before, joined ? 608 : 600, 1e-9);
+    EXPECT_EQ(map_components(r.map), 1u) << joined;
+    // One line of about the street's length, every vertex between the two input lines and near the middle.
+    EXPECT_NEAR(r.length_after, 300, 15) << joined;
+    EXPECT_NEAR(map_length(r.map), r.length_after, 1e-9);
+    // (The ends are the extrema of the geodesic function, single points of either line.)
+    for (const auto& p : r.map.positions) {
+      EXPECT_GE(p[1], -1e-9);
+      EXPECT_LE(p[1], 4 + 1e-9);
+      if (p[0] > 20 && p[0] < 280) EXPECT_NEAR(p[1], 2.0, 1.0) << p[0];
+      EXPECT_GE(p[0], -1e-9);
+      EXPECT_LE(p[0], 300 + 1e-9);
+    }
+    // No loop is left: a tree (edges = vertices - components).
+    EXPECT_EQ(r.map.edges.size() + map_components(r.map), r.map.positions.size()) << joined;
+    EXPECT_EQ(r.spacing, 2.0);
+    EXPECT_EQ(r.delta, 8.0);
+  }
+}
+
+TEST(MergeRoadLines, LinesFartherApartStay) {
+  // A divided road: carriageways 20 m apart (the default distance is 8 m); two streets, 12 m apart.
+  for (const double gap : {20.0, 12.0}) {
+    const Road_merge_result r = merge_road_lines(parallel_lines({0.0, gap}, 300, false));
+    EXPECT_EQ(map_components(r.map), 2u) << gap;
+    EXPECT_NEAR(r.length_after, 600, 30) << gap;
+    for (const auto& p : r.map.positions) EXPECT_LT(std::min(std::fabs(p[1]), std::fabs(p[1] - gap)), 0.5) << gap;
+  }
+  // ... unless the distance asks for it.
+  Road_merge_options o;
+  o.distance = 13;
+  EXPECT_EQ(map_components(merge_road_lines(parallel_lines({0.0, 12.0}, 300, false), o).map), 1u);
+}
+
+TEST(MergeRoadLines, DegenerateInputAndDeterminism) {
+  const Road_merge_result empty = merge_road_lines({});
+  EXPECT_EQ(empty.status, Status::degenerate_input);
+  EXPECT_TRUE(empty.map.positions.empty());
+  // A lone vertex stays a node; repeated, reversed and degenerate edges count once.
+  Embedded_graph_2 one;
+  one.positions = {{3, 4}};
+  one.edges = {{0, 0}};
+  const Road_merge_result r1 = merge_road_lines(one);
+  EXPECT_EQ(r1.status, Status::success);
+  ASSERT_EQ(r1.map.positions.size(), 1u);
+  EXPECT_EQ(r1.map.positions[0], (std::array<double, 2>{3, 4}));
+  EXPECT_TRUE(r1.map.edges.empty());
+  Embedded_graph_2 twice;
+  twice.positions = {{0, 0}, {50, 0}, {0, 0}};  // a duplicate vertex too
+  twice.edges = {{0, 1}, {1, 0}, {0, 1}, {2, 1}};
+  const Road_merge_result r2 = merge_road_lines(twice);
+  EXPECT_NEAR(r2.length_before, 100, 1e-9);  // (0, 1) once, (2, 1) once
+  EXPECT_NEAR(r2.length_after, 50, 1);
+  EXPECT_EQ(map_components(r2.map), 1u);
+  // Collinear chains on a grid of ties: bit-identical on a second run.
+  const Embedded_graph_2 grid = parallel_lines({0.0, 3.0, 6.0, 30.0}, 100, true);
+  const Road_merge_result a = merge_road_lines(grid), b = merge_road_lines(grid);
+  EXPECT_EQ(a.map.positions, b.map.positions);
+  EXPECT_EQ(a.map.edges, b.map.edges);
+}
+
+TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
+  const Embedded_graph_2 street = parallel_lines({0.0, 4.0}, 100, false);
+  Road_merge_options o;
+  o.distance = 0;
+  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("distance"), std::string::npos);
+  o.distance = std::numeric_limits<double>::infinity();
+  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("distance"), std::string::npos);
+  o = {};
+  o.spacing = -1;
+  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("spacing"), std::string::npos);
+  o = {};
+  o.delta = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("delta"), std::string::npos);
+  Embedded_graph_2 bad = street;
+  bad.edges[3] = {0, 99};
+  const std::string m = message_of([&] { merge_road_lines(bad); });
+  EXPECT_NE(m.find("edge 3"), std::string::npos) << m;
+  bad = street;
+  bad.positions[5][1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(message_of([&] { merge_road_lines(bad); }).find("vertex 5"), std::string::npos);
+  for (const double stop_at : {0.0, 0.2, 0.5}) {
+    o = {};
+    o.progress = [stop_at](double t) { return t < stop_at; };
+    const Road_merge_result r = merge_road_lines(street, o);
+    EXPECT_EQ(r.status, Status::interrupted) << stop_at;
+    EXPECT_TRUE(r.map.positions.empty());
+  }
+}
+
+TEST(MergeRoadLines, ThinLoopsAreRemoved) {
+  // Two arcs between the same nodes whose sides lie within the distance: one goes, the shorter stays.
+  Skeleton_graph g(2);
+  g[0].position = {0, 0, 0};
+  g[1].position = {40, 0, 0};
+  g[0].members = {0};
+  g[1].members = {1};
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {20, 3, 0}, {40, 0, 0}}, {2, 3}, {}}, g);
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {20, 0, 0}, {40, 0, 0}}, {4}, {}}, g);
+  Skeleton_graph wide = g;
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(g, 5), 1u);
+  ASSERT_EQ(num_edges(g), 1u);
+  const auto e = *edges(g).first;
+  EXPECT_EQ(g[e].polyline[1][1], 0.0);
+  std::vector<Vertex_index> members = g[e].members;
+  std::sort(members.begin(), members.end());
+  EXPECT_EQ(members, (std::vector<Vertex_index>{2, 3, 4}));
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(wide, 2.5), 0u);  // 3 m apart: a loop of its own
+  EXPECT_EQ(num_edges(wide), 2u);
+  // An arc beside a path through a kink node of degree 2: the longer side (the path) goes with its node.
+  Skeleton_graph t(3);
+  for (std::size_t v = 0; v < 3; ++v) t[v].members = {Vertex_index(v)};
+  t[0].position = {0, 0, 0};
+  t[1].position = {40, 0, 0};
+  t[2].position = {20, 4, 0};
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {40, 0, 0}}, {}, {}}, t);
+  add_edge(0, 2, Skeleton_arc{{{0, 0, 0}, {20, 4, 0}}, {}, {}}, t);
+  add_edge(2, 1, Skeleton_arc{{{20, 4, 0}, {40, 0, 0}}, {}, {}}, t);
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(t, 5), 1u);
+  EXPECT_EQ(num_vertices(t), 2u);
+  EXPECT_EQ(num_edges(t), 1u);
 }
 
 TEST(SyntheticCity, StreetsAndTrips) {

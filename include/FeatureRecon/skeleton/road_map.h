@@ -11,7 +11,8 @@
 //   const Gps_trace_sample S = sample_gps_traces(trips, used.rips_radius, used.traces);
 //   const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius, used.traces.heading_tolerance);
 //   const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
-//   const Embedded_graph_2 map = skeleton_to_road_map(k.graph);
+//   const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
+//   const Embedded_graph_2 map = merge_road_lines(lines, road_map_merge_options(used)).map;  // when used.merge_distance > 0
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
@@ -22,6 +23,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace FeatureRecon {
@@ -33,72 +36,6 @@ inline Gps_trace_options road_map_trace_options() {
   Gps_trace_options o;
   o.heading_tolerance = 30;
   o.min_relative_density = 0.1;
-  return o;
-}
-
-/// Options of extract_road_map(). Coordinates are metres. A value of 0 asks for the rule on the field, derived
-/// from the median step M between consecutive fixes of a trip (median_gps_step()) through the Rips radius R;
-/// a negative value turns the stage off. resolve_road_map_options() returns the values used.
-struct Road_map_options {
-  double rips_radius = 0;      ///< 0: M clamped to [min_radius, max_radius]
-  double min_radius = 10;      ///< lower clamp of the automatic radius (m); default 10
-  double max_radius = 30;      ///< upper clamp of the automatic radius (m); default 30
-  double delta = 0;            ///< persistence threshold of the simplification; 0: 3 R; negative: none
-  double repair_distance = 0;  ///< join dead ends at most this far apart; 0: 2.5 R; negative: no repair
-  double prune_height = 0;     ///< drop components of smaller height (range of f); 0: 5 R; negative: keep all
-  /// Sampling, linking and density filter (sample_gps_traces()); its own automatic rules (spacing R/2, link gap
-  /// max(4M, 2R), density radius 2R) apply and are reported in Road_map::sample.
-  Gps_trace_options traces = road_map_trace_options();
-  bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
-  bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
-  Embedding_options embedding;    ///< how arcs are drawn (level width 0: median edge length of the complex)
-  Progress_callback progress;     ///< fraction done; returning false stops (Road_map::status interrupted)
-};
-
-/// Result of extract_road_map().
-struct Road_map {
-  Embedded_graph_2 map;      ///< the road map: skeleton nodes first (same indices), then polyline interior points
-  Reeb_skeleton skeleton;    ///< the skeleton graph with its stage counts
-  Gps_trace_sample sample;   ///< the samples the skeleton is built on, with the trace parameters used
-  Road_map_options used;     ///< the options with every automatic value filled in (no progress callback)
-  Status status = Status::success;  ///< degenerate_input when no fix is left; interrupted by the callback
-};
-
-/// The options with every automatic value of extract_road_map() filled in (delta, repair and prune become 0
-/// when turned off). The trace options' own automatic values are left to sample_gps_traces().
-/// \throws std::invalid_argument naming a non-finite option, a negative radius or clamp, or min_radius > max_radius.
-inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips, const Road_map_options& options) {
-  const char* fn = "extract_road_map";
-  if (!std::isfinite(options.rips_radius) || options.rips_radius < 0)
-    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0 (0: automatic), got ",
-                                                   options.rips_radius);
-  if (!(options.min_radius > 0 && options.min_radius <= options.max_radius && std::isfinite(options.max_radius)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "need 0 < min_radius <= max_radius < infinity, got ",
-                                                   options.min_radius, " and ", options.max_radius);
-  if (!std::isfinite(options.delta) || !std::isfinite(options.repair_distance) || std::isnan(options.prune_height))
-    FeatureRecon::internal::throw_invalid_argument(fn, "delta, repair_distance and prune_height must be finite");
-  Road_map_options u = options;
-  u.progress = nullptr;
-  const double M = median_gps_step(trips);
-  const double R =
-      options.rips_radius > 0 ? options.rips_radius : std::min(options.max_radius, std::max(options.min_radius, M));
-  u.rips_radius = R;
-  auto rule = [](double value, double automatic) { return value > 0 ? value : value == 0 ? automatic : 0.0; };
-  u.delta = rule(options.delta, 3 * R);
-  u.repair_distance = rule(options.repair_distance, 2.5 * R);
-  u.prune_height = rule(options.prune_height, 5 * R);
-  return u;
-}
-
-/// The skeleton options of a resolved Road_map_options (the progress callback is not copied).
-inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) {
-  Skeleton_options o;
-  o.delta = std::max(0.0, used.delta);
-  o.repair_distance = std::max(0.0, used.repair_distance);
-  o.prune_height = std::max(0.0, used.prune_height);
-  o.connect_dead_ends = used.connect_dead_ends;
-  o.trim_stubs = used.trim_stubs;
-  o.embedding = used.embedding;
   return o;
 }
 
@@ -124,8 +61,320 @@ inline Embedded_graph_2 skeleton_to_road_map(const Skeleton_graph& g) {
   return map;
 }
 
+/// Options of merge_road_lines(). Lengths in the map's unit (metres for road maps).
+struct Road_merge_options {
+  /// Parts of the map closer than this (and farther apart along the map) become one line. Default 8, between
+  /// the 3-5 m that separate the two directions of a street and the 10 m or more of a divided road's
+  /// carriageways.
+  double distance = 8;
+  /// The edges are sampled at most this far apart before the neighbourhood is built. 0 (default): distance / 4.
+  double spacing = 0;
+  /// Branches and loops of persistence up to this (along the map) are removed from the skeleton: stubs where
+  /// two lines meet at an angle. 0 (default): `distance`.
+  double delta = 0;
+  Embedding_options embedding;  ///< how the merged lines are drawn (level width 0: automatic)
+  Progress_callback progress;   ///< fraction done; returning false stops (status interrupted, map empty)
+};
+
+/// Result of merge_road_lines().
+struct Road_merge_result {
+  Embedded_graph_2 map;        ///< the merged map: skeleton nodes first, then polyline interior points
+  Skeleton_graph skeleton;     ///< its skeleton graph (nodes and arcs with polylines)
+  double length_before = 0;    ///< total edge length of the input map (repeated edges once)
+  double length_after = 0;     ///< total edge length of the merged map
+  std::size_t samples = 0;     ///< points the neighbourhood was built on
+  std::size_t thin_loops_removed = 0;  ///< arcs removed as one side of a thin loop (see merge_road_lines())
+  double spacing = 0;          ///< value used
+  double delta = 0;            ///< value used
+  Status status = Status::success;  ///< degenerate_input for a map without vertices; interrupted by the callback
+};
+
+namespace internal {
+
+inline double map_length(const Embedded_graph_2& map) {
+  double L = 0;
+  for (const Edge& e : map.edges)
+    L += std::hypot(map.positions[e[1]][0] - map.positions[e[0]][0], map.positions[e[1]][1] - map.positions[e[0]][1]);
+  return L;
+}
+
+using Polyline_3 = std::vector<std::array<double, 3>>;
+
+/// Distance from p to the closest point of any segment of the polylines (first two coordinates).
+inline double distance_to_polylines(const std::array<double, 3>& p, const std::vector<const Polyline_3*>& lines) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Polyline_3* line : lines)
+    for (std::size_t i = 0; i < line->size(); ++i) {
+      const auto& a = (*line)[i];
+      const auto& b = (*line)[i + 1 < line->size() ? i + 1 : i];
+      const double dx = b[0] - a[0], dy = b[1] - a[1], L2 = dx * dx + dy * dy;
+      const double t = L2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2, 0.0, 1.0) : 0.0;
+      best = std::min(best, std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy));
+    }
+  return best;
+}
+
+/// True when every vertex of each side lies within `d` of the other side (both sides as sets of polylines).
+inline bool sides_within(const std::vector<const Polyline_3*>& a, const std::vector<const Polyline_3*>& b, double d) {
+  for (const auto* side : {&a, &b})
+    for (const Polyline_3* line : *side)
+      for (const auto& p : *line)
+        if (distance_to_polylines(p, side == &a ? b : a) > d) return false;
+  return true;
+}
+
+inline double polyline_length(const Polyline_3& line) {
+  double L = 0;
+  for (std::size_t i = 1; i < line.size(); ++i) L += std::hypot(line[i][0] - line[i - 1][0], line[i][1] - line[i - 1][1]);
+  return L;
+}
+
+/// Removes the thin loops merging leaves behind where two lines diverge for a short stretch: two arcs between
+/// the same nodes, or an arc u-w beside a path u-v-w, whose sides lie within `d` of each other. The longer side
+/// goes (the direct arc when v has other arcs); its members join the side that stays. Nodes left without arcs
+/// are removed. Returns the number of arcs removed.
+inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
+  using Arc = Skeleton_graph::edge_descriptor;
+  std::size_t removed = 0;
+  auto take_members = [&g](Arc from, Arc to) {
+    auto& m = g[to].members;
+    m.insert(m.end(), g[from].members.begin(), g[from].members.end());
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (auto e : boost::make_iterator_range(edges(g))) {
+      const auto u = source(e, g), w = target(e, g);
+      if (u == w) continue;
+      for (auto f : boost::make_iterator_range(out_edges(u, g))) {
+        if (f == e) continue;
+        const auto v = target(f, g);
+        if (v == w) {  // two arcs between u and w
+          if (!sides_within({&g[e].polyline}, {&g[f].polyline}, d)) continue;
+          const bool drop_e = polyline_length(g[e].polyline) >= polyline_length(g[f].polyline);
+          take_members(drop_e ? e : f, drop_e ? f : e);
+          remove_edge(drop_e ? e : f, g);
+          changed = true;
+          break;
+        }
+        if (v == u) continue;
+        for (auto h : boost::make_iterator_range(out_edges(v, g))) {
+          if (target(h, g) != w || h == e) continue;
+          if (!sides_within({&g[e].polyline}, {&g[f].polyline, &g[h].polyline}, d)) continue;
+          const double direct = polyline_length(g[e].polyline);
+          const double around = polyline_length(g[f].polyline) + polyline_length(g[h].polyline);
+          if (degree(v, g) > 2 || direct >= around) {
+            take_members(e, f);
+            remove_edge(e, g);
+          } else {  // v is a kink of the longer side: the side u-v-w goes, v with it
+            take_members(f, e);
+            take_members(h, e);
+            auto& m = g[e].members;
+            m.insert(m.end(), g[v].members.begin(), g[v].members.end());
+            g[v].members.clear();
+            remove_edge(f, g);
+            remove_edge(h, g);
+          }
+          changed = true;
+          break;
+        }
+        if (changed) break;
+      }
+      if (changed) {
+        ++removed;
+        break;
+      }
+    }
+  }
+  // Nodes that lost all their arcs (never an isolated node of the input: those have no loop).
+  for (std::size_t v = num_vertices(g); v-- > 0;)
+    if (degree(v, g) == 0 && g[v].members.empty()) remove_vertex(v, g);
+  return removed;
+}
+
+}  // namespace internal
+
+/// Merges the lines of a road map that run closer than `options.distance` (see the file comment). Vertices come
+/// first in the samples (a vertex with no edge stays a node), then every edge longer than the spacing gets
+/// evenly spaced interior points; the graph of the Rips edges at `distance` and the edges' own chains is passed
+/// to extract_reeb_skeleton() with delta, no repair and no pruning. Where two lines diverge beyond `distance`
+/// for a short stretch the skeleton keeps a thin loop; loops whose two sides lie within `distance` of each other
+/// (two arcs between the same nodes, or an arc beside a two-arc path) lose their longer side. Deterministic. The
+/// map is not modified.
+/// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, or a non-positive
+///         or non-finite distance, negative spacing or delta.
+inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Road_merge_options& options = {}) {
+  const char* fn = "merge_road_lines";
+  if (!(options.distance > 0 && std::isfinite(options.distance)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "distance must be positive and finite, got ", options.distance);
+  if (!(options.spacing >= 0 && std::isfinite(options.spacing)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "spacing must be finite and >= 0 (0: distance / 4), got ",
+                                                   options.spacing);
+  if (!(options.delta >= 0 && std::isfinite(options.delta)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "delta must be finite and >= 0 (0: distance), got ",
+                                                   options.delta);
+  for (std::size_t v = 0; v < map.positions.size(); ++v)
+    if (!std::isfinite(map.positions[v][0]) || !std::isfinite(map.positions[v][1]))
+      FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has a non-finite coordinate");
+  for (std::size_t e = 0; e < map.edges.size(); ++e)
+    if (map.edges[e][0] >= map.positions.size() || map.edges[e][1] >= map.positions.size())
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", e, " (", map.edges[e][0], ", ", map.edges[e][1],
+                                                     ") has an end out of range: the map has ", map.positions.size(),
+                                                     " vertices");
+  Road_merge_result r;
+  r.spacing = options.spacing > 0 ? options.spacing : options.distance / 4;
+  r.delta = options.delta > 0 ? options.delta : options.distance;
+  // Repeated and reversed edges once, loops dropped.
+  std::vector<Edge> edges;
+  for (const Edge& e : map.edges)
+    if (e[0] != e[1]) edges.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  Embedded_graph_2 unique_map{map.positions, edges};
+  r.length_before = internal::map_length(unique_map);
+  if (map.positions.empty()) {
+    r.status = Status::degenerate_input;
+    return r;
+  }
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) {
+    r.status = Status::interrupted;
+    return r;
+  }
+  // Samples: the vertices, then interior points of each edge; the chains of the edges.
+  Point_matrix P;
+  P.dimension = 2;
+  P.rows = map.positions.size();
+  for (const auto& p : map.positions) P.data.insert(P.data.end(), {p[0], p[1]});
+  std::vector<Edge> chain;
+  for (const Edge& e : edges) {
+    const auto a = map.positions[e[0]], b = map.positions[e[1]];
+    const double L = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil(L / r.spacing)));
+    Vertex_index previous = e[0];
+    for (std::size_t k = 1; k < n; ++k) {
+      const double u = static_cast<double>(k) / static_cast<double>(n);
+      P.data.insert(P.data.end(), {a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])});
+      const auto current = static_cast<Vertex_index>(P.rows++);
+      chain.push_back({previous, current});
+      previous = current;
+    }
+    chain.push_back({std::min(previous, e[1]), std::max(previous, e[1])});
+  }
+  r.samples = P.rows;
+  Proximity_graph_options po;
+  if (options.progress) po.progress = [&options](double t) { return options.progress(0.3 * t); };
+  Proximity_graph g = build_rips_graph(P, options.distance, po);
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.3)) {
+    r.status = Status::interrupted;
+    return r;
+  }
+  g.edges.insert(g.edges.end(), chain.begin(), chain.end());
+  std::sort(g.edges.begin(), g.edges.end());
+  g.edges.erase(std::unique(g.edges.begin(), g.edges.end()), g.edges.end());
+  g.edge_lengths.clear();
+  for (const Edge& e : g.edges)
+    g.edge_lengths.push_back(std::hypot(P.row(e[0])[0] - P.row(e[1])[0], P.row(e[0])[1] - P.row(e[1])[1]));
+  Skeleton_options so;
+  so.delta = r.delta;
+  so.embedding = options.embedding;
+  if (options.progress) so.progress = [&options](double t) { return options.progress(0.3 + 0.7 * t); };
+  Reeb_skeleton k = extract_reeb_skeleton(g, P, so);
+  if (k.status == Status::interrupted) {
+    r.status = Status::interrupted;
+    return r;
+  }
+  r.thin_loops_removed = internal::remove_thin_loops(k.graph, options.distance);
+  r.map = skeleton_to_road_map(k.graph);
+  r.skeleton = std::move(k.graph);
+  r.length_after = internal::map_length(r.map);
+  return r;
+}
+
+/// Options of extract_road_map(). Coordinates are metres. A value of 0 asks for the rule on the field, derived
+/// from the median step M between consecutive fixes of a trip (median_gps_step()) through the Rips radius R;
+/// a negative value turns the stage off. resolve_road_map_options() returns the values used.
+struct Road_map_options {
+  double rips_radius = 0;      ///< 0: M clamped to [min_radius, max_radius]
+  double min_radius = 10;      ///< lower clamp of the automatic radius (m); default 10
+  double max_radius = 30;      ///< upper clamp of the automatic radius (m); default 30
+  double delta = 0;            ///< persistence threshold of the simplification; 0: 3 R; negative: none
+  double repair_distance = 0;  ///< join dead ends at most this far apart; 0: 2.5 R; negative: no repair
+  double prune_height = 0;     ///< drop components of smaller height (range of f); 0: 5 R; negative: keep all
+  /// Sampling, linking and density filter (sample_gps_traces()); its own automatic rules (spacing R/2, link gap
+  /// max(4M, 2R), density radius 2R) apply and are reported in Road_map::sample.
+  Gps_trace_options traces = road_map_trace_options();
+  bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
+  bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
+  Embedding_options embedding;    ///< how arcs are drawn (level width 0: median edge length of the complex)
+  /// Last stage: lines of the map closer than this become one (merge_road_lines()). Driving directions keep a
+  /// divided road's carriageways apart but also draw the two directions of a two-way street, a few metres
+  /// apart. 0: 8 m (Road_merge_options::distance); negative: no merging.
+  double merge_distance = 0;
+  Progress_callback progress;     ///< fraction done; returning false stops (Road_map::status interrupted)
+};
+
+/// Result of extract_road_map().
+struct Road_map {
+  /// The road map. Without merging: skeleton nodes first (same indices), then polyline interior points; with
+  /// merging: merged.skeleton's nodes first, then its polylines' interior points.
+  Embedded_graph_2 map;
+  Reeb_skeleton skeleton;    ///< the skeleton graph of the samples with its stage counts (before merging)
+  Road_merge_result merged;  ///< the merging stage (its `map` is moved to `map`); status success and empty if off
+  Gps_trace_sample sample;   ///< the samples the skeleton is built on, with the trace parameters used
+  Road_map_options used;     ///< the options with every automatic value filled in (no progress callback)
+  Status status = Status::success;  ///< degenerate_input when no fix is left; interrupted by the callback
+};
+
+/// The options with every automatic value of extract_road_map() filled in (delta, repair, prune and merge
+/// distance become 0 when turned off). The trace options' own automatic values are left to sample_gps_traces().
+/// \throws std::invalid_argument naming a non-finite option, a negative radius or clamp, or min_radius > max_radius.
+inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips, const Road_map_options& options) {
+  const char* fn = "extract_road_map";
+  if (!std::isfinite(options.rips_radius) || options.rips_radius < 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0 (0: automatic), got ",
+                                                   options.rips_radius);
+  if (!(options.min_radius > 0 && options.min_radius <= options.max_radius && std::isfinite(options.max_radius)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "need 0 < min_radius <= max_radius < infinity, got ",
+                                                   options.min_radius, " and ", options.max_radius);
+  if (!std::isfinite(options.delta) || !std::isfinite(options.repair_distance) || std::isnan(options.prune_height) ||
+      !std::isfinite(options.merge_distance))
+    FeatureRecon::internal::throw_invalid_argument(fn,
+                                                   "delta, repair_distance, prune_height and merge_distance must be finite");
+  Road_map_options u = options;
+  u.progress = nullptr;
+  const double M = median_gps_step(trips);
+  const double R =
+      options.rips_radius > 0 ? options.rips_radius : std::min(options.max_radius, std::max(options.min_radius, M));
+  u.rips_radius = R;
+  auto rule = [](double value, double automatic) { return value > 0 ? value : value == 0 ? automatic : 0.0; };
+  u.delta = rule(options.delta, 3 * R);
+  u.repair_distance = rule(options.repair_distance, 2.5 * R);
+  u.prune_height = rule(options.prune_height, 5 * R);
+  u.merge_distance = rule(options.merge_distance, Road_merge_options{}.distance);
+  return u;
+}
+
+/// The skeleton options of a resolved Road_map_options (the progress callback is not copied).
+inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) {
+  Skeleton_options o;
+  o.delta = std::max(0.0, used.delta);
+  o.repair_distance = std::max(0.0, used.repair_distance);
+  o.prune_height = std::max(0.0, used.prune_height);
+  o.connect_dead_ends = used.connect_dead_ends;
+  o.trim_stubs = used.trim_stubs;
+  o.embedding = used.embedding;
+  return o;
+}
+
+/// The merging options of a resolved Road_map_options (used.merge_distance > 0; spacing, delta automatic).
+inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
+  Road_merge_options o;
+  o.distance = used.merge_distance;
+  return o;
+}
+
 /// A road map from GPS traces in one call: resolve_road_map_options(), sample_gps_traces(),
-/// build_gps_trace_graph(), extract_reeb_skeleton() on the graph, skeleton_to_road_map(). Deterministic (no
+/// build_gps_trace_graph(), extract_reeb_skeleton() on the graph, skeleton_to_road_map(), merge_road_lines()
+/// (unless turned off). Deterministic (no
 /// randomness; the same trips in the same order give the same map bit for bit). Trips with no or one fix are
 /// allowed; with no fix at all the map is empty and the status degenerate_input.
 /// \throws std::invalid_argument for bad options (resolve_road_map_options(), sample_gps_traces()) or a fix with
@@ -143,11 +392,25 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
     return r;
   }
   Skeleton_options so = road_map_skeleton_options(r.used);
-  if (options.progress) so.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
+  if (options.progress) so.progress = [&options](double t) { return options.progress(0.1 + 0.8 * t); };
   r.skeleton = extract_reeb_skeleton(build_gps_trace_graph(r.sample, r.used.rips_radius, r.used.traces.heading_tolerance),
                                      r.sample.points, so);
   r.status = r.skeleton.status;
-  if (r.status != Status::interrupted) r.map = skeleton_to_road_map(r.skeleton.graph);
+  if (r.status == Status::interrupted) return r;
+  r.map = skeleton_to_road_map(r.skeleton.graph);
+  if (r.used.merge_distance > 0 && !r.map.positions.empty()) {
+    Road_merge_options mo = road_map_merge_options(r.used);
+    if (options.progress) mo.progress = [&options](double t) { return options.progress(0.9 + 0.1 * t); };
+    r.merged = merge_road_lines(r.map, mo);
+    if (r.merged.status == Status::interrupted) {
+      r.status = Status::interrupted;
+      r.map = {};
+      return r;
+    }
+    r.map = std::move(r.merged.map);
+    r.merged.map = {};
+  }
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return r;
 }
 
