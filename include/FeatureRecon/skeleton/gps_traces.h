@@ -188,6 +188,20 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double hea
   S.trip_links = std::move(links);
 }
 
+/// The graph on planar points with the given edges, sorted and made unique, and their Euclidean lengths.
+inline Proximity_graph planar_graph(const Point_matrix& points, std::vector<Edge> edges) {
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  Proximity_graph g;
+  g.number_of_vertices = points.rows;
+  g.edges = std::move(edges);
+  g.edge_lengths.reserve(g.edges.size());
+  for (const Edge& e : g.edges)
+    g.edge_lengths.push_back(std::hypot(points.row(e[0])[0] - points.row(e[1])[0],
+                                        points.row(e[0])[1] - points.row(e[1])[1]));
+  return g;
+}
+
 }  // namespace internal
 
 /// Median distance between consecutive fixes (by time) of the trips: the scale the automatic parameters of
@@ -361,15 +375,7 @@ inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double r
         internal::heading_difference(S.headings[e[0]], S.headings[e[1]], S.directed) <= heading_tolerance)
       edges.push_back(e);
   edges.insert(edges.end(), S.trip_links.begin(), S.trip_links.end());
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  Proximity_graph g;
-  g.number_of_vertices = S.points.rows;
-  g.edges = std::move(edges);
-  for (const Edge& e : g.edges)
-    g.edge_lengths.push_back(std::hypot(S.points.row(e[0])[0] - S.points.row(e[1])[0],
-                                        S.points.row(e[0])[1] - S.points.row(e[1])[1]));
-  return g;
+  return internal::planar_graph(S.points, std::move(edges));
 }
 
 }  // namespace skeleton

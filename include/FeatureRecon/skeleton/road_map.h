@@ -91,10 +91,10 @@ struct Road_merge_result {
 
 namespace internal {
 
-inline double map_length(const Embedded_graph_2& map) {
+inline double map_length(const std::vector<std::array<double, 2>>& positions, const std::vector<Edge>& edges) {
   double L = 0;
-  for (const Edge& e : map.edges)
-    L += std::hypot(map.positions[e[1]][0] - map.positions[e[0]][0], map.positions[e[1]][1] - map.positions[e[0]][1]);
+  for (const Edge& e : edges)
+    L += std::hypot(positions[e[1]][0] - positions[e[0]][0], positions[e[1]][1] - positions[e[0]][1]);
   return L;
 }
 
@@ -229,8 +229,7 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     if (e[0] != e[1]) edges.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  Embedded_graph_2 unique_map{map.positions, edges};
-  r.length_before = internal::map_length(unique_map);
+  r.length_before = internal::map_length(map.positions, edges);
   if (map.positions.empty()) {
     r.status = Status::degenerate_input;
     return r;
@@ -262,17 +261,13 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   r.samples = P.rows;
   Proximity_graph_options po;
   if (options.progress) po.progress = [&options](double t) { return options.progress(0.3 * t); };
-  Proximity_graph g = build_rips_graph(P, options.distance, po);
+  std::vector<Edge> neighbourhood = build_rips_graph(P, options.distance, po).edges;
   if (!FeatureRecon::internal::report_progress(options.progress, 0.3)) {
     r.status = Status::interrupted;
     return r;
   }
-  g.edges.insert(g.edges.end(), chain.begin(), chain.end());
-  std::sort(g.edges.begin(), g.edges.end());
-  g.edges.erase(std::unique(g.edges.begin(), g.edges.end()), g.edges.end());
-  g.edge_lengths.clear();
-  for (const Edge& e : g.edges)
-    g.edge_lengths.push_back(std::hypot(P.row(e[0])[0] - P.row(e[1])[0], P.row(e[0])[1] - P.row(e[1])[1]));
+  neighbourhood.insert(neighbourhood.end(), chain.begin(), chain.end());
+  const Proximity_graph g = internal::planar_graph(P, std::move(neighbourhood));
   Skeleton_options so;
   so.delta = r.delta;
   so.embedding = options.embedding;
@@ -285,7 +280,7 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   r.thin_loops_removed = internal::remove_thin_loops(k.graph, options.distance);
   r.map = skeleton_to_road_map(k.graph);
   r.skeleton = std::move(k.graph);
-  r.length_after = internal::map_length(r.map);
+  r.length_after = internal::map_length(r.map.positions, r.map.edges);
   return r;
 }
 
