@@ -57,7 +57,7 @@ const std::vector<Command>& commands() {
        "                             [--radius R] [--delta D] [--repair DIST] [--prune H] [--sample-spacing S]\n"
        "                             [--link-gap G] [--heading-tolerance A] [--undirected] [--min-density F]\n"
        "                             [--density-radius DR] [--density-heading-tolerance DA] [--merge MD]\n"
-       "                             [--level-width W] [--smoothing N] --out-vertices V --out-edges E\n"
+       "                             [--level-width W] [--smoothing N] [--max-gap G] --out-vertices V --out-edges E\n"
        "                             [--graphml F] [--geojson F] [--ply F] [--svg F] [--quiet]\n"
        "\n"
        "Rips 2-complex at radius R, geodesic function, Reeb graph, removal of features of persistence <= D,\n"
@@ -92,6 +92,8 @@ const std::vector<Command>& commands() {
        "                   directions of a two-way street; a divided road's carriageways lie further apart); 0: off\n"
        "  --level-width W  level-set slab width of the embedding (default: median edge length)\n"
        "  --smoothing N    Laplacian smoothing rounds of each arc (default 10)\n"
+       "  --max-gap G      an arc whose polyline jumps farther than G follows the graph's shortest path there\n"
+       "                   (default 0: twice the median edge length; negative: straight segments)\n"
        "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), an SVG picture\n",
        run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",

@@ -201,7 +201,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "prune", "merge", "level-width", "smoothing",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -223,6 +223,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
   options.embedding.level_width = args.has("level-width") ? args.get_double("level-width") : 0.0;
   if (!(options.embedding.level_width >= 0)) throw Usage_error("--level-width must be >= 0");
+  options.embedding.max_gap = args.has("max-gap") ? args.get_double("max-gap") : 0.0;
+  if (std::isnan(options.embedding.max_gap)) throw Usage_error("--max-gap must be a number (0: automatic, < 0: off)");
   if (args.has("smoothing")) {
     const long long it = args.get_int("smoothing");
     if (it < 0) throw Usage_error("--smoothing must be an integer >= 0");

@@ -123,6 +123,9 @@ expect(reeb_simplify_negative 2 "--simplify must be >= 0" reeb --complex ${WORK}
 
 # skeleton: the figure-eight sample gives a graph with two loops, written as a road map that evaluate-map reads.
 expect(skeleton 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/sk_v.txt --out-edges ${WORK}/sk_e.txt --quiet)
+# --max-gap: negative draws every arc's gaps straight (parsed, same topology); NaN is refused.
+expect(skeleton_max_gap_off 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --max-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_max_gap_nan 2 "--max-gap" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-gap nan --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_self_score 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 1)
 expect(skeleton_source 2 "exactly one of --points FILE, --tracks FILE, --distance-matrix FILE and --graph FILE" skeleton --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_two_sources 2 "exactly one of" skeleton --points ${DATA}/figure_eight.xyz --graph ${DATA}/figure_eight_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b)

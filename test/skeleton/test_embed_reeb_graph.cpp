@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 using namespace FeatureRecon;
@@ -87,4 +89,58 @@ TEST(EmbedReebGraph, BadInput) {
   Embedding_options o;
   o.smoothing_weight = 2;
   EXPECT_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o), std::invalid_argument);
+}
+
+namespace {
+/// Distance from p to the L-shaped path (0,0)-(20,0)-(20,20).
+double distance_to_l(const std::array<double, 3>& p) {
+  const double a = std::hypot(p[0] - std::clamp(p[0], 0.0, 20.0), p[1]);
+  const double b = std::hypot(p[0] - 20, p[1] - std::clamp(p[1], 0.0, 20.0));
+  return std::min(a, b);
+}
+double distance_to_corner(const std::vector<std::array<double, 3>>& line) {
+  double best = 1e300;
+  for (const auto& p : line) best = std::min(best, std::hypot(p[0] - 20, p[1]));
+  return best;
+}
+}  // namespace
+
+// Simplification can leave an arc with no points of its own between two nodes far apart: with the graph, the
+// arc is drawn along the graph's shortest path (through the data), not straight across.
+TEST(EmbedReebGraph, ArcsWithoutPointsFollowTheGraph) {
+  std::vector<std::array<double, 3>> xyz;
+  for (int i = 0; i <= 20; ++i) xyz.push_back({double(i), 0, 0});
+  for (int i = 1; i <= 20; ++i) xyz.push_back({20, double(i), 0});
+  Proximity_graph g;
+  g.number_of_vertices = xyz.size();
+  for (Vertex_index v = 0; v + 1 < xyz.size(); ++v) g.edges.push_back({v, v + 1});
+  const auto last = static_cast<Vertex_index>(xyz.size() - 1);
+  Reeb_graph G;
+  G.nodes = {{0, 0.0, minimum, {}}, {last, 0.5, maximum, {}}};
+  G.arcs = {{0, 1, {}}};
+  const std::vector<double> f(xyz.size(), 0.25);
+  const Reeb_graph_embedding E = embed_reeb_graph(G, g, xyz, f, 2);
+  ASSERT_EQ(E.arc_polylines.size(), 1u);
+  const auto& line = E.arc_polylines[0];
+  EXPECT_EQ(line.front(), E.node_positions[0]);
+  EXPECT_EQ(line.back(), E.node_positions[1]);
+  EXPECT_GT(line.size(), 30u);
+  for (const auto& p : line) EXPECT_LE(distance_to_l(p), 1.5);
+  EXPECT_LE(distance_to_corner(line), 1.5);
+  // Off, or without a graph: the straight segment (its two ends, 20 from the corner).
+  Embedding_options straight;
+  straight.max_gap = -1;
+  EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, straight).arc_polylines[0].size(), 2u);
+  EXPECT_EQ(embed_reeb_graph(G, xyz, f, 2).arc_polylines[0].size(), 2u);
+  EXPECT_NEAR(distance_to_corner(embed_reeb_graph(G, xyz, f, 2).arc_polylines[0]), 20.0, 1e-12);
+  // A gap the graph cannot bridge (no path) stays straight; a gap below max_gap too.
+  Proximity_graph cut = g;
+  cut.edges.erase(cut.edges.begin() + 10);
+  EXPECT_EQ(embed_reeb_graph(G, cut, xyz, f, 2).arc_polylines[0].size(), 2u);
+  Embedding_options wide;
+  wide.max_gap = 30;
+  EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, wide).arc_polylines[0].size(), 2u);
+  Embedding_options bad;
+  bad.max_gap = std::nan("");
+  EXPECT_THROW(embed_reeb_graph(G, g, xyz, f, 2, bad), std::invalid_argument);
 }

@@ -12,6 +12,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <limits>
+#include <queue>
+#include <utility>
 #include <vector>
 
 namespace FeatureRecon {
@@ -24,6 +29,13 @@ struct Embedding_options {
   double level_width = 0;
   std::size_t smoothing_iterations = 10;  ///< Laplacian smoothing rounds of each polyline, endpoints fixed; default 10
   double smoothing_weight = 0.5;          ///< move towards the neighbours' mean per round, in [0, 1]; default 0.5
+  /// With a graph: where two consecutive points of a polyline lie farther apart than this (distance in the
+  /// embedding space), the polyline follows the graph's shortest path between their input points (a node's
+  /// vertex; the point of a level-set piece closest to its centroid), each path vertex drawn at the mean of
+  /// itself and its graph neighbours. Simplification can leave an arc with few or no points of its own between
+  /// nodes far apart; it is then drawn through the data instead of straight across. 0 (default): twice the median
+  /// edge length of the graph; negative: straight segments.
+  double max_gap = 0;
 };
 
 /// A Reeb graph drawn in space: node positions and one polyline per arc (from its lower to its upper node).
@@ -91,6 +103,76 @@ inline Adjacency make_adjacency(const Proximity_graph& g) {
   return a;
 }
 
+/// Shortest paths in a graph with Euclidean edge lengths (Dijkstra, ties by vertex index), reusing its arrays.
+class Graph_path_finder {
+ public:
+  Graph_path_finder(const Adjacency& adjacency, const Point_matrix& P)
+      : m_adjacency(adjacency), m_P(P), m_distance(P.rows), m_previous(P.rows), m_stamp(P.rows, 0) {}
+
+  double length(Vertex_index a, Vertex_index b) const {
+    double s = 0;
+    for (std::size_t c = 0; c < m_P.dimension; ++c) {
+      const double t = m_P.row(a)[c] - m_P.row(b)[c];
+      s += t * t;
+    }
+    return std::sqrt(s);
+  }
+
+  /// Median edge length (0 without edges).
+  double median_edge_length() const {
+    std::vector<double> lengths;
+    for (std::size_t v = 0; v < m_P.rows; ++v)
+      for (std::size_t k = m_adjacency.offsets[v]; k < m_adjacency.offsets[v + 1]; ++k)
+        if (m_adjacency.targets[k] > v) lengths.push_back(length(static_cast<Vertex_index>(v), m_adjacency.targets[k]));
+    if (lengths.empty()) return 0;
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+    return lengths[lengths.size() / 2];
+  }
+
+  /// The interior vertices of a shortest path from a to b no longer than `limit`; false when there is none.
+  bool path(Vertex_index a, Vertex_index b, double limit, std::vector<Vertex_index>& interior) {
+    interior.clear();
+    if (a == b) return true;
+    ++m_search;
+    using Entry = std::pair<double, Vertex_index>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    m_distance[a] = 0;
+    m_stamp[a] = m_search;
+    queue.push({0.0, a});
+    bool found = false;
+    while (!queue.empty()) {
+      const auto [d, v] = queue.top();
+      queue.pop();
+      if (d > m_distance[v]) continue;
+      if (v == b) {
+        found = true;
+        break;
+      }
+      for (std::size_t k = m_adjacency.offsets[v]; k < m_adjacency.offsets[v + 1]; ++k) {
+        const Vertex_index w = m_adjacency.targets[k];
+        const double dw = d + length(v, w);
+        if (dw > limit || (m_stamp[w] == m_search && dw >= m_distance[w])) continue;
+        m_stamp[w] = m_search;
+        m_distance[w] = dw;
+        m_previous[w] = v;
+        queue.push({dw, w});
+      }
+    }
+    if (!found) return false;
+    for (Vertex_index v = m_previous[b]; v != a; v = m_previous[v]) interior.push_back(v);
+    std::reverse(interior.begin(), interior.end());
+    return true;
+  }
+
+ private:
+  const Adjacency& m_adjacency;
+  const Point_matrix& m_P;
+  std::vector<double> m_distance;
+  std::vector<Vertex_index> m_previous;
+  std::vector<std::size_t> m_stamp;
+  std::size_t m_search = 0;
+};
+
 inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
   return x;
@@ -114,6 +196,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
                                                    " vertices but there are ", P.rows, " positions");
   if (!(options.level_width >= 0) || !(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "level_width must be >= 0 and smoothing_weight in [0, 1]");
+  if (std::isnan(options.max_gap))
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_gap must not be NaN (0: automatic, negative: off)");
   auto check = [&](Vertex_index v) {
     if (v >= P.rows)
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " out of range [0, ", P.rows, ")");
@@ -135,6 +219,15 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     first = false;
   }
   const double width = options.level_width > 0 ? options.level_width : (fmax > fmin ? (fmax - fmin) / 64 : 1.0);
+  // Gaps wider than max_gap are bridged by shortest paths of the graph.
+  std::unique_ptr<Graph_path_finder> finder;
+  double max_gap = std::numeric_limits<double>::infinity();
+  if (adjacency != nullptr && options.max_gap >= 0) {
+    finder = std::make_unique<Graph_path_finder>(*adjacency, P);
+    max_gap = options.max_gap > 0 ? options.max_gap : 2 * finder->median_edge_length();
+    if (!(max_gap > 0)) finder.reset();
+  }
+  std::vector<Vertex_index> path;
   // Local index of each input vertex in the arc being drawn (stamped by arc), its run, and a union-find.
   std::vector<std::size_t> stamp(adjacency != nullptr ? P.rows : 0, static_cast<std::size_t>(-1));
   std::vector<std::size_t> local(stamp.size()), parent, run_of, size;
@@ -171,6 +264,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     size.assign(vs.size(), 0);
     for (std::size_t i = 0; i < vs.size(); ++i) ++size[find_root(parent, i)];
     std::vector<double> line(E.nodes[arc.lower]);
+    std::vector<Vertex_index> origin{G.nodes[arc.lower].vertex};  // the input point each polyline point stands for
     std::size_t i = 0;
     while (i < vs.size()) {
       // The largest piece of the run (ties: the one holding the earliest point) carries the polyline.
@@ -183,9 +277,42 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         if (find_root(parent, t) == best)
           for (std::size_t k = 0; k < d; ++k) line[at + k] += P.row(vs[t])[k];
       for (std::size_t k = 0; k < d; ++k) line[at + k] /= static_cast<double>(size[best]);
+      // The piece's point closest to the centroid (ties: the earliest).
+      double closest = std::numeric_limits<double>::infinity();
+      origin.push_back(vs[i]);
+      for (std::size_t t = i; t < j; ++t) {
+        if (find_root(parent, t) != best) continue;
+        double s = 0;
+        for (std::size_t k = 0; k < d; ++k) s += (P.row(vs[t])[k] - line[at + k]) * (P.row(vs[t])[k] - line[at + k]);
+        if (s < closest) {
+          closest = s;
+          origin.back() = vs[t];
+        }
+      }
       i = j;
     }
     line.insert(line.end(), E.nodes[arc.upper].begin(), E.nodes[arc.upper].end());
+    origin.push_back(G.nodes[arc.upper].vertex);
+    if (finder) {  // bridge wide gaps through the graph
+      std::vector<double> bridged(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(d));
+      for (std::size_t t = 1; t < origin.size(); ++t) {
+        double gap = 0;
+        for (std::size_t k = 0; k < d; ++k) gap += (line[t * d + k] - line[(t - 1) * d + k]) * (line[t * d + k] - line[(t - 1) * d + k]);
+        gap = std::sqrt(gap);
+        if (gap > max_gap && origin[t] != origin[t - 1] && finder->path(origin[t - 1], origin[t], 4 * gap + max_gap, path))
+          for (const Vertex_index v : path) {
+            const std::size_t at = bridged.size();
+            bridged.insert(bridged.end(), P.row(v), P.row(v) + d);
+            for (std::size_t k = adjacency->offsets[v]; k < adjacency->offsets[v + 1]; ++k)
+              for (std::size_t c = 0; c < d; ++c) bridged[at + c] += P.row(adjacency->targets[k])[c];
+            const double n = static_cast<double>(1 + adjacency->offsets[v + 1] - adjacency->offsets[v]);
+            for (std::size_t c = 0; c < d; ++c) bridged[at + c] /= n;
+          }
+        bridged.insert(bridged.end(), line.begin() + static_cast<std::ptrdiff_t>(t * d),
+                       line.begin() + static_cast<std::ptrdiff_t>((t + 1) * d));
+      }
+      line.swap(bridged);
+    }
     const std::size_t n = d == 0 ? 0 : line.size() / d;
     for (std::size_t it = 0; it < options.smoothing_iterations && n > 2; ++it) {
       std::vector<double> next = line;
