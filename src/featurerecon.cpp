@@ -91,7 +91,7 @@ const std::vector<Command>& commands() {
        "  --merge MD       last stage for tracks: parts of the map closer than MD metres become one line (the two\n"
        "                   directions of a two-way street; a divided road's carriageways lie further apart); 0: off\n"
        "  --level-width W  level-set slab width of the embedding (default: median edge length)\n"
-       "  --smoothing N    Laplacian smoothing rounds of each arc (default 10)\n"
+       "  --smoothing N    Laplacian smoothing rounds of each arc (default 10; 2 with --tracks)\n"
        "  --max-gap G      an arc whose polyline jumps farther than G follows the graph's shortest path there\n"
        "                   (default 0: twice the median edge length; negative: straight segments)\n"
        "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), an SVG picture\n",

@@ -221,6 +221,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (options.delta < 0) throw Usage_error("--delta must be >= 0");
   options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
+  if (args.has("tracks")) options.embedding = road_map_embedding_options();  // road maps keep their corners
   options.embedding.level_width = args.has("level-width") ? args.get_double("level-width") : 0.0;
   if (!(options.embedding.level_width >= 0)) throw Usage_error("--level-width must be >= 0");
   options.embedding.max_gap = args.has("max-gap") ? args.get_double("max-gap") : 0.0;

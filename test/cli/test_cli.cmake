@@ -144,8 +144,10 @@ expect(skeleton_asymmetric 1 "not symmetric at \\(0, 1\\)" skeleton --distance-m
 # (printed); before merging (--merge 0) the skeleton has the block's loop and the spur, in one piece.
 expect(skeleton_tracks 0 "\"radius\": 25\\.58[0-9]*, .*\"loops\": 1, \"components\": 1,.*\"trips\": 8, \"median_step\": 25\\.58" skeleton --tracks ${DATA}/block_tracks.txt --merge 0 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_tracks_degree 0 "\"nodes\": 4, \"arcs\": 4" skeleton --tracks ${DATA}/block_tracks.txt --merge 0 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
-# Merging (default 8 m) draws the streets, driven both ways, once: about 750 m of lines instead of about 1240.
-expect(skeleton_tracks_merged 0 "\"components\": 1,.*\"merge_distance\": 8, \"length_before_merge\": 12[0-9][0-9]\\.[0-9]*, \"length\": 7[0-9][0-9]\\." skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+# Merging (default 8 m) draws the streets, driven both ways, once: about 720 m of lines (the block and the spur
+# are 750 m) instead of about 1310, and the merged map (which the JSON describes) has the block's one loop (two
+# in session 11, when a corner where the two directions cut differently stayed a thin loop).
+expect(skeleton_tracks_merged 0 "\"loops\": 1, \"components\": 1,.*\"merge_distance\": 8, \"length_before_merge\": 1[23][0-9][0-9]\\.[0-9]*, \"length\": 7[0-9][0-9]\\." skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_merge_negative 2 "--merge must be >= 0" skeleton --tracks ${DATA}/block_tracks.txt --merge -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_merge_points 2 "apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --merge 5 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_tracks_heading 2 "--heading-tolerance must be in \\[0, 180\\]" skeleton --tracks ${DATA}/block_tracks.txt --heading-tolerance 200 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
@@ -153,7 +155,7 @@ expect(skeleton_tracks_density_heading 2 "--density-heading-tolerance must be in
 expect(skeleton_density_heading_points 2 "apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --density-heading-tolerance 30 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 
 # Chicago (the bundled 118k fixes) with the defaults: F-score at 15 m against the ground truth cropped to the
-# traces (trk25) stays at 0.66 or more (0.663 when pinned, 0.668 without merging; Kharita 0.671).
+# traces (trk25) stays at 0.66 or more (0.667 when pinned, 0.660 without merging; Kharita 0.671).
 execute_process(COMMAND gzip -dc ${DATA}/../../data/gps/chicago/tracks.txt.gz OUTPUT_FILE ${WORK}/chicago_tracks.txt RESULT_VARIABLE gz)
 if(NOT gz EQUAL 0)
   message(SEND_ERROR "cannot decompress the bundled Chicago tracks")

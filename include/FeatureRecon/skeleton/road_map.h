@@ -39,6 +39,24 @@ inline Gps_trace_options road_map_trace_options() {
   return o;
 }
 
+/// The embedding road maps draw their skeleton with: 2 smoothing rounds instead of 10, so that streets keep their
+/// corners (the pieces of a road-map skeleton lie about half the Rips radius apart, and 10 rounds round a corner
+/// over about 30 m). With road_merge_embedding_options() for the last stage this lifts the synthetic city at
+/// every sampling rate and Chicago a little (benchmark/README.md, "Road maps").
+inline Embedding_options road_map_embedding_options() {
+  Embedding_options o;
+  o.smoothing_iterations = 2;
+  return o;
+}
+
+/// The embedding merge_road_lines() draws the merged lines with: 20 smoothing rounds. Its level-set pieces lie
+/// a few metres apart (the map is sampled every distance / 4), so more rounds smooth over a similar length.
+inline Embedding_options road_merge_embedding_options() {
+  Embedding_options o;
+  o.smoothing_iterations = 20;
+  return o;
+}
+
 /// The planar map of a skeleton: vertex i is node i (its first two coordinates), followed by the interior
 /// points of every arc's polyline in edge order; each polyline becomes a chain of edges between its nodes.
 inline Embedded_graph_2 skeleton_to_road_map(const Skeleton_graph& g) {
@@ -72,7 +90,8 @@ struct Road_merge_options {
   /// Branches and loops of persistence up to this (along the map) are removed from the skeleton: stubs where
   /// two lines meet at an angle. 0 (default): `distance`.
   double delta = 0;
-  Embedding_options embedding;  ///< how the merged lines are drawn (level width 0: automatic)
+  /// How the merged lines are drawn (level width 0: automatic); default road_merge_embedding_options().
+  Embedding_options embedding = road_merge_embedding_options();
   Progress_callback progress;   ///< fraction done; returning false stops (status interrupted, map empty)
 };
 
@@ -299,7 +318,8 @@ struct Road_map_options {
   Gps_trace_options traces = road_map_trace_options();
   bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
   bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
-  Embedding_options embedding;    ///< how arcs are drawn (level width 0: median edge length of the complex)
+  /// How arcs are drawn (level width 0: median edge length of the complex); default road_map_embedding_options().
+  Embedding_options embedding = road_map_embedding_options();
   /// Last stage: lines of the map closer than this become one (merge_road_lines()). Driving directions keep a
   /// divided road's carriageways apart but also draw the two directions of a two-way street, a few metres
   /// apart. 0: 8 m (Road_merge_options::distance); negative: no merging.
