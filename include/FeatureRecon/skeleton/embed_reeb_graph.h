@@ -418,8 +418,9 @@ inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_gra
 /// embed_reeb_graph() where a level-set piece is a connected component, in `graph` (the 1-skeleton of the complex
 /// the Reeb graph was computed on), of an arc's points in one bin. When simplification merged several pieces into
 /// one arc (a removed branch or the two sides of a thin loop), the polyline goes through the largest piece, so
-/// removed features do not pull it off the surviving path.
-/// \pre graph.number_of_vertices == positions.size() (checked; throws).
+/// removed features do not pull it off the surviving path. Where consecutive polyline points lie farther apart
+/// than Embedding_options::max_gap, the polyline follows the graph's shortest path between them.
+/// \pre graph.number_of_vertices == positions.size() (checked; throws); max_gap not NaN (checked; throws).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Proximity_graph& graph,
                                              const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,
