@@ -28,8 +28,11 @@ double dist(const Gps_trace_sample& S, std::size_t a, std::size_t b) {
 TEST(GpsTraces, SpacingLinksAndDerivedParameters) {
   // Two trips east along y = 0 and y = 3 (fixes 30 m apart) with radius 20: median step 30, spacing 10, link gap
   // max(120, 40) = 120; every segment is densified, so samples cover the line and consecutive ones are linked.
+  // Samples where they were created (mean_positions off): pairwise at least the spacing apart.
   std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 11, 30), straight(0, 3, 1, 0, 11, 30, 100)};
-  const Gps_trace_sample S = sample_gps_traces(trips, 20.0);
+  Gps_trace_options raw;
+  raw.mean_positions = false;
+  const Gps_trace_sample S = sample_gps_traces(trips, 20.0, raw);
   EXPECT_EQ(S.fixes, 22u);
   EXPECT_DOUBLE_EQ(S.median_step, 30.0);
   EXPECT_DOUBLE_EQ(S.sample_spacing, 10.0);
@@ -55,9 +58,11 @@ TEST(GpsTraces, SpacingLinksAndDerivedParameters) {
   // The graph: Rips edges plus links, one component, deterministic.
   const Proximity_graph g = build_gps_trace_graph(S, 20.0);
   EXPECT_EQ(connected_components(g).count, 1u);
-  const Gps_trace_sample again = sample_gps_traces(trips, 20.0);
+  const Gps_trace_sample again = sample_gps_traces(trips, 20.0, raw);
   EXPECT_EQ(again.points.data, S.points.data);
   EXPECT_EQ(again.trip_links, S.trip_links);
+  const Gps_trace_sample mean = sample_gps_traces(trips, 20.0);
+  EXPECT_EQ(sample_gps_traces(trips, 20.0).points.data, mean.points.data);
 }
 
 TEST(GpsTraces, TimeOrderGapsAndHeadings) {
@@ -201,4 +206,38 @@ TEST(GpsTraces, SkeletonOfABlock) {
   EXPECT_EQ(c, 1);
   EXPECT_EQ(num_edges(s.graph) + static_cast<std::size_t>(c) - num_vertices(s.graph), 1u);
   for (auto v : boost::make_iterator_range(vertices(s.graph))) EXPECT_EQ(degree(v, s.graph), 2u);
+}
+
+TEST(GpsTraces, SamplesSitAtTheMeanOfTheirFixes) {
+  // Two trips east, fixes 1 m apart along y = 0 and y = 2, radius 20 (spacing 10): the first sample is created
+  // at the first fix (0, 0) and joined by the fixes x = 0..9 of both trips, so it moves to (4.5, 1). Turned off,
+  // it stays at (0, 0). Fixes 1 m apart get no inserted points.
+  const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 31, 1), straight(0, 2, 1, 0, 31, 1, 100)};
+  const Gps_trace_sample S = sample_gps_traces(trips, 20.0);
+  ASSERT_EQ(S.sample_of_fix[0], 0u);
+  EXPECT_EQ(S.weights[0], 20u);
+  EXPECT_DOUBLE_EQ(S.points.row(0)[0], 4.5);
+  EXPECT_DOUBLE_EQ(S.points.row(0)[1], 1.0);
+  Gps_trace_options off;
+  off.mean_positions = false;
+  const Gps_trace_sample T = sample_gps_traces(trips, 20.0, off);
+  EXPECT_EQ(T.points.row(0)[0], 0.0);
+  EXPECT_EQ(T.points.row(0)[1], 0.0);
+  // Same samples, links and weights either way: only the positions move, each to its fixes' mean.
+  EXPECT_EQ(S.points.rows, T.points.rows);
+  EXPECT_EQ(S.trip_links, T.trip_links);
+  EXPECT_EQ(S.weights, T.weights);
+  EXPECT_EQ(S.sample_of_fix, T.sample_of_fix);
+  std::vector<double> sx(S.points.rows, 0), sy(S.points.rows, 0), n(S.points.rows, 0);
+  std::size_t k = 0;
+  for (const auto& trip : trips)
+    for (const auto& f : trip) {
+      const auto s = S.sample_of_fix[k++];
+      sx[s] += f.x, sy[s] += f.y, n[s] += 1;
+    }
+  for (std::size_t s = 0; s < S.points.rows; ++s) {
+    ASSERT_GT(n[s], 0) << s;
+    EXPECT_NEAR(S.points.row(s)[0], sx[s] / n[s], 1e-9) << s;
+    EXPECT_NEAR(S.points.row(s)[1], sy[s] / n[s], 1e-9) << s;
+  }
 }

@@ -35,7 +35,8 @@ using Gps_trip = std::vector<Gps_fix>;
 /// Options of sample_gps_traces(). A value of 0 asks for the automatic rule given on the field; the values used
 /// are returned in Gps_trace_sample.
 struct Gps_trace_options {
-  /// Minimum distance between two samples (greedy thinning in trip order). 0: half the Rips radius.
+  /// Greedy thinning in trip order: a trace point joins the first sample created less than this far from it (the
+  /// samples' creation points are this far apart; see mean_positions). 0: half the Rips radius.
   double sample_spacing = 0;
   /// Consecutive fixes of a trip at most this far apart are linked: points are inserted along the segment every
   /// half sample spacing, and consecutive samples become graph edges. 0: four times the median step of the data,
@@ -47,6 +48,11 @@ struct Gps_trace_options {
   /// Headings are driving directions in [0, 360) (true, default: opposite carriageways of a divided road and the
   /// two directions of a street stay apart under a heading tolerance), or undirected lines in [0, 180) (false).
   bool directed = true;
+  /// Each sample is moved, after sampling and the density filter, to the mean of the fixes that joined it (true,
+  /// default), or stays at the first trace point that created it (false). Points inserted along a trip's
+  /// segments do not count (they cut corners); a sample that only inserted points joined stays where it was
+  /// created.
+  bool mean_positions = true;
   /// Drops samples that stand for fewer trace points than this fraction of the most any sample within
   /// `density_radius` stands for: scattered fixes (multipath next to tall buildings) away from the dense band of
   /// the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all.
@@ -62,7 +68,7 @@ struct Gps_trace_options {
 
 /// Samples of GPS traces with the parameters used.
 struct Gps_trace_sample {
-  Point_matrix points;                       ///< sample positions (dimension 2)
+  Point_matrix points;                       ///< sample positions (dimension 2; see Gps_trace_options::mean_positions)
   std::vector<double> headings;              ///< travel direction of each sample: [0, 360) degrees, or [0, 180)
   bool directed = true;                      ///< which of the two (Gps_trace_options::directed)
   std::vector<std::uint32_t> weights;        ///< trace points (fixes and inserted points) each sample stands for
@@ -356,6 +362,24 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.density_heading_tolerance = options.density_heading_tolerance;
   if (options.min_relative_density > 0 && S.points.rows > 0)
     internal::drop_sparse_samples(S, options.min_relative_density, options.density_heading_tolerance);
+  if (options.mean_positions) {  // each sample at the mean of its fixes
+    std::vector<double> sum(2 * S.points.rows, 0.0);
+    std::vector<std::uint32_t> count(S.points.rows, 0);
+    std::size_t k = 0;
+    for (const Gps_trip& trip : trips)
+      for (const Gps_fix& f : trip) {
+        const std::uint32_t s = S.sample_of_fix[k++];
+        if (s >= S.points.rows) continue;  // dropped as sparse
+        sum[2 * s] += f.x;
+        sum[2 * s + 1] += f.y;
+        ++count[s];
+      }
+    for (std::size_t s = 0; s < S.points.rows; ++s)
+      if (count[s] > 0) {
+        S.points.data[2 * s] = sum[2 * s] / count[s];
+        S.points.data[2 * s + 1] = sum[2 * s + 1] / count[s];
+      }
+  }
   std::sort(S.trip_links.begin(), S.trip_links.end());
   S.trip_links.erase(std::unique(S.trip_links.begin(), S.trip_links.end()), S.trip_links.end());
   return S;
