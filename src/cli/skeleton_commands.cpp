@@ -200,7 +200,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 }  // namespace
 
 int run_skeleton(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"quiet", "undirected"},
+  const Arguments args(argv, {"quiet", "undirected", "first-point-positions"},
                        {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
@@ -238,9 +238,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
   const bool quiet = args.has("quiet");
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
                args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected") ||
-               args.has("merge")))
+               args.has("merge") || args.has("first-point-positions")))
     throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius, "
-                      "--density-heading-tolerance and --merge apply to --tracks only");
+                      "--density-heading-tolerance, --first-point-positions and --merge apply to --tracks only");
   if ((args.has("graph") || args.has("distance-matrix")) && args.has("sample-spacing"))
     throw Usage_error("--sample-spacing applies to --points and --tracks only");
   Point_matrix m;
@@ -303,6 +303,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (!(go.density_heading_tolerance >= 0 && go.density_heading_tolerance <= 180))
       throw Usage_error("--density-heading-tolerance must be in [0, 180] degrees");
     go.directed = !args.has("undirected");
+    go.mean_positions = !args.has("first-point-positions");
     if (!(go.min_relative_density >= 0 && go.min_relative_density <= 1))
       throw Usage_error("--min-density must be in [0, 1]");
     if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
@@ -340,7 +341,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
                ", \"link_gap\": " + json_number(sample.max_link_gap) + ", \"min_density\": " +
                json_number(go.min_relative_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
                ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
-               ", \"directed\": " + (go.directed ? "true" : "false") + ", \"dropped_sparse\": " + std::to_string(sample.dropped) + ", \"prune\": " +
+               ", \"directed\": " + (go.directed ? "true" : "false") +
+               ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") + ", \"dropped_sparse\": " + std::to_string(sample.dropped) + ", \"prune\": " +
                json_number(options.prune_height) + ", \"trip_links\": " +
                std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
                ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +

@@ -148,6 +148,10 @@ expect(skeleton_tracks_degree 0 "\"nodes\": 4, \"arcs\": 4" skeleton --tracks ${
 # are 750 m) instead of about 1310, and the merged map (which the JSON describes) has the block's one loop (two
 # in session 11, when a corner where the two directions cut differently stayed a thin loop).
 expect(skeleton_tracks_merged 0 "\"loops\": 1, \"components\": 1,.*\"merge_distance\": 8, \"length_before_merge\": 1[23][0-9][0-9]\\.[0-9]*, \"length\": 7[0-9][0-9]\\." skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+# Samples at the mean of their fixes by default; --first-point-positions keeps them where they were created.
+expect(skeleton_tracks_mean_positions 0 "\"directed\": true, \"mean_positions\": true," skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+expect(skeleton_tracks_first_point 0 "\"components\": 1,.*\"mean_positions\": false," skeleton --tracks ${DATA}/block_tracks.txt --first-point-positions --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+expect(skeleton_first_point_points 2 "apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --first-point-positions --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_merge_negative 2 "--merge must be >= 0" skeleton --tracks ${DATA}/block_tracks.txt --merge -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_merge_points 2 "apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --merge 5 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_tracks_heading 2 "--heading-tolerance must be in \\[0, 180\\]" skeleton --tracks ${DATA}/block_tracks.txt --heading-tolerance 200 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
