@@ -277,10 +277,10 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         if (find_root(parent, t) == best)
           for (std::size_t k = 0; k < d; ++k) line[at + k] += P.row(vs[t])[k];
       for (std::size_t k = 0; k < d; ++k) line[at + k] /= static_cast<double>(size[best]);
-      // The piece's point closest to the centroid (ties: the earliest).
+      // The piece's point closest to the centroid (ties: the earliest); only needed to bridge gaps.
       double closest = std::numeric_limits<double>::infinity();
       origin.push_back(vs[i]);
-      for (std::size_t t = i; t < j; ++t) {
+      for (std::size_t t = i; finder && t < j; ++t) {
         if (find_root(parent, t) != best) continue;
         double s = 0;
         for (std::size_t k = 0; k < d; ++k) s += (P.row(vs[t])[k] - line[at + k]) * (P.row(vs[t])[k] - line[at + k]);
