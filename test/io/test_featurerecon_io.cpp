@@ -6,22 +6,16 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "io/featurerecon_io.h"
+#include "io/scratch_file.h"
 
 using namespace FeatureRecon;
 
 namespace {
-/// A scratch file private to this test and process (tests run in parallel processes sharing TempDir()).
-std::string temp_path(const std::string& name) {
-  const ::testing::TestInfo* t = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/featurerecon_" + t->test_suite_name() + "_" + t->name() + "_" +
-         std::to_string(::getpid()) + "_" + name;
-}
+using test::scratch_path;
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = temp_path(name);
+  const std::string path = scratch_path(name);
   std::ofstream(path) << text;
   return path;
 }
@@ -49,7 +43,7 @@ TEST(ExchangeFormat, RoundTripKeepsComplexAndValues) {
   EXPECT_EQ(c.complex.number_of_edges(), 4u);  // 3 implied + 1
   EXPECT_EQ(c.complex.number_of_triangles(), 1u);
   EXPECT_EQ(c.values, (std::vector<double>{0.5, 1, 2, -1e-3}));
-  const std::string out = temp_path("roundtrip.txt");
+  const std::string out = scratch_path("roundtrip.txt");
   io::write_complex(out, c.complex, c.positions, c.values);
   const io::Complex_file d = io::read_complex(out);
   EXPECT_EQ(d.complex.edges, c.complex.edges);
@@ -83,4 +77,14 @@ TEST(PointFile, AnyDimensionWithComments) {
   expect_error("1 2\n3 4 5\n", ":2: point has 3 coordinates", false);
   expect_error("1 2\n3 inf\n", ":2: coordinate is not finite", false);
   expect_error("1 2\n3 4e\n", ":2: '4e' is not a number", false);
+}
+
+TEST(ScratchFiles, AreRemovedWhenTheTestEnds) {
+  const std::string path = write_temp("scratch.txt", "x\n");
+  ASSERT_TRUE(std::ifstream(path).good());
+  auto& remover = test::Scratch_file_remover::instance();
+  ASSERT_EQ(remover.pending().size(), 1u);
+  remover.OnTestEnd(*::testing::UnitTest::GetInstance()->current_test_info());  // what gtest calls at the end
+  EXPECT_FALSE(std::ifstream(path).good());
+  EXPECT_TRUE(remover.pending().empty());
 }

@@ -7,18 +7,14 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "io/featurerecon_io.h"
 #include "io/image_io.h"
+#include "io/scratch_file.h"
 
 using namespace FeatureRecon;
 
 namespace {
-std::string scratch(const std::string& name) {
-  const ::testing::TestInfo* t = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/featurerecon_" + t->name() + "_" + std::to_string(::getpid()) + "_" + name;
-}
+std::string scratch(const std::string& name) { return test::scratch_path(name); }
 
 io::Image gradient(int channels, int cx = 7, int cy = 11) {
   io::Image im;
