@@ -102,7 +102,7 @@ const std::vector<Command>& commands() {
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"
        "                                 [--bearing 45] [--crop-to-tracks TRACKS [--crop-radius 25]]\n"
-       "                                 [--samples-out CSV] [--svg PICTURE] [--explain]\n"
+       "                                 [--samples-out CSV] [--svg PICTURE] [--explain] [--tracks TRACKS]\n"
        "\n"
        "Samples both maps every INTERVAL metres (per component, breadth-first from the point at half its edge\n"
        "length), matches ground-truth samples to reconstruction samples at most THRESHOLD metres away whose\n"
@@ -119,7 +119,11 @@ const std::vector<Command>& commands() {
        "                   ('spurious'): 'taken' (an aligned sample lies within THRESHOLD, but it went to\n"
        "                   another: mostly a parallel line in one map only), 'offset' (nearest aligned one\n"
        "                   1-2 THRESHOLD away), 'crossing' (only non-aligned samples within 2 THRESHOLD),\n"
-       "                   'absent' (nothing there)\n",
+       "                   'absent' (nothing there)\n"
+       "  --tracks         the GPS trips the reconstruction came from (lines 'trip_id x y t'): add\n"
+       "                   'trace_support', the samples split by how many trips drive along them (a segment\n"
+       "                   within THRESHOLD, bearing within BEARING) into lists [0, 1, 2-3, 4+ trips] for the\n"
+       "                   truth, the missed and the spurious samples, and the recall within the driven truth\n",
        run_evaluate_map},
       {"sample", "Feature-aware downsampling of a point cloud (bilateral blue noise on points with normals)",
        "usage: featurerecon sample --input FILE (--count M | --radius R) [--method elimination|darts]\n"

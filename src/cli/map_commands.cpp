@@ -64,7 +64,7 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
 }  // namespace
 
 int run_evaluate_map(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"explain"}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg"}, 4);
+  const Arguments args(argv, {"explain"}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg", "tracks"}, 4);
   if (args.positional().size() != 4)
     throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
   Map_comparison_options options;
@@ -80,7 +80,13 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     const double radius = args.has("crop-radius") ? args.get_positive_double("crop-radius") : 25.0;
     gt = crop_to_tracks(gt, io::read_track_points(args.get("crop-to-tracks")), radius, options.interval);
   }
-  options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain");
+  std::vector<Gps_trip> trips;
+  if (args.has("tracks"))
+    for (const auto& trip : io::read_track_trips(args.get("tracks"))) {
+      trips.emplace_back();
+      for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
+    }
+  options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
   const Map_comparison_result r = compare_maps(gt, rec, options);
   if (args.has("samples-out")) io::write_map_comparison_csv(args.get("samples-out"), r);
   if (args.has("svg")) io::write_map_comparison_svg(args.get("svg"), r);
@@ -100,6 +106,21 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     };
     counts("missed", b.missed);
     counts("spurious", b.spurious);
+  }
+  if (args.has("tracks")) {
+    Trace_support_options so;
+    so.radius = options.match_distance;
+    so.bearing_limit = options.bearing_limit;
+    const Trace_support_breakdown b = explain_trace_support(r, trips, so);
+    auto list = [&os](const char* name, const std::array<std::size_t, 4>& c) {
+      os << "\"" << name << "\": [" << c[0] << ", " << c[1] << ", " << c[2] << ", " << c[3] << "], ";
+    };
+    os << ", \"trace_support\": {\"trips\": " << trips.size() << ", ";
+    list("ground_truth_by_trips", b.ground_truth_by_trips);
+    list("missed_by_trips", b.missed_by_trips);
+    list("spurious_by_trips", b.spurious_by_trips);
+    os << "\"ground_truth_driven\": " << b.ground_truth_driven << ", \"matched_driven\": " << b.matched_driven
+       << ", \"recall_of_driven\": " << json_number(b.recall_of_driven) << "}";
   }
   os << "}\n";
   std::fputs(os.str().c_str(), stdout);

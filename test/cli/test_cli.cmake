@@ -100,6 +100,10 @@ expect(evaluate_map_bad 1 "bad_edges.txt:1: unknown vertex id 99999" evaluate-ma
 # Cropping to traces: a tracks file covering nothing removes every ground-truth edge.
 file(WRITE ${WORK}/far_tracks.txt "0 0 0 0\n")
 expect(evaluate_map_crop 0 "\"ground_truth_edges\": 0,.*\"ground_truth_edges_before_crop\": 1182" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/far_tracks.txt)
+# ... and with --tracks nothing is driven: every sample lies in the first bin (no trip along it).
+expect(evaluate_map_tracks_far 0 "\"ground_truth_by_trips\": \\[9173, 0, 0, 0\\], \"missed_by_trips\": \\[4688, 0, 0, 0\\], \"spurious_by_trips\": \\[333, 0, 0, 0\\], \"ground_truth_driven\": 0, \"matched_driven\": 0, \"recall_of_driven\": 0}" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/far_tracks.txt)
+file(WRITE ${WORK}/bad_tracks.txt "0 1 x 3\n")
+expect(evaluate_map_tracks_bad 1 "bad_tracks.txt:1: 'x' is not a number" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/bad_tracks.txt)
 
 # Diagnosis: every sample with its partner (CSV) and the picture; the half map of james matched against itself.
 expect(evaluate_map_samples 0 "\"precision\": 1, \"recall\": 1," evaluate-map ${M}_james_vertices.txt ${M}_james_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --samples-out ${WORK}/samples.csv --svg ${WORK}/match.svg)
@@ -166,6 +170,9 @@ if(NOT gz EQUAL 0)
 endif()
 expect(skeleton_chicago 0 "\"points\": 118360, .*\"trips\": 889" skeleton --tracks ${WORK}/chicago_tracks.txt --out-vertices ${WORK}/c_v.txt --out-edges ${WORK}/c_e.txt --quiet)
 expect(skeleton_chicago_score 0 "\"f_score\": 0\\.(6[6-9]|[7-9])[0-9]*," evaluate-map ${M}_gt_trk25_vertices.txt ${M}_gt_trk25_edges.txt ${WORK}/c_v.txt ${WORK}/c_e.txt)
+# Trace support: which trk25 samples the trips drive along (a segment within 15 m, bearing within 45 degrees)
+# depends on the truth and the tracks only: 1866 samples (15%) are driven by no trip, 2810 by one.
+expect(evaluate_map_trace_support 0 "\"trace_support\": {\"trips\": 889, \"ground_truth_by_trips\": \\[1866, 2810, 914, 6965\\], \"missed_by_trips\": \\[18[0-9][0-9], [0-9]+, [0-9]+, [0-9]+\\], \"spurious_by_trips\": \\[[0-9]+, [0-9]+, [0-9]+, [0-9]+\\], \"ground_truth_driven\": 10689, \"matched_driven\": [0-9]+, \"recall_of_driven\": 0\\.[6-9]" evaluate-map ${M}_gt_trk25_vertices.txt ${M}_gt_trk25_edges.txt ${WORK}/c_v.txt ${WORK}/c_e.txt --tracks ${WORK}/chicago_tracks.txt)
 
 # The skeleton's other formats: GraphML, GeoJSON, PLY, SVG, with the right counts (two loops that share a
 # down-fork and an up-fork: 4 nodes, 5 arcs once the spurs at the base point and the farthest point are trimmed).

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
+#include <string>
 
 #include "io/featurerecon_io.h"
 
@@ -239,4 +241,154 @@ TEST(MapComparison, ReproducesPublishedChicagoScores) {
     EXPECT_NEAR(r.recall, row.r, 0.01) << row.map << " at " << row.threshold << " m";
     EXPECT_NEAR(r.f_score, row.f, 0.01) << row.map << " at " << row.threshold << " m";
   }
+}
+
+namespace {
+Map_sample sample_at(double x, double y, double bearing) { return Map_sample{{x, y}, bearing}; }
+Gps_trip trip_of(std::initializer_list<std::array<double, 2>> points) {
+  Gps_trip t;
+  double time = 0;
+  for (const auto& p : points) t.push_back({p[0], p[1], time += 5});
+  return t;
+}
+}  // namespace
+
+TEST(TraceSupport, PinnedCases) {
+  // One sample at the origin on an east-west street (bearing 90).
+  const std::vector<Map_sample> s{sample_at(0, 0, 90)};
+  auto along = [&](std::vector<Gps_trip> trips, Trace_support_options o = {}) { return count_trips_along(s, trips, o)[0]; };
+  EXPECT_EQ(along({trip_of({{-100, 5}, {100, 5}})}), 1u);     // eastward, 5 m beside
+  EXPECT_EQ(along({trip_of({{100, -5}, {-100, -5}})}), 1u);   // westward counts too: bearings ignore direction
+  EXPECT_EQ(along({trip_of({{-100, 15}, {100, 15}})}), 1u);   // exactly at the radius
+  EXPECT_EQ(along({trip_of({{-100, 15.01}, {100, 15.01}})}), 0u);
+  EXPECT_EQ(along({trip_of({{-100, 0}, {-15, 0}})}), 1u);     // the segment's end point is the closest point
+  EXPECT_EQ(along({trip_of({{-100, 0}, {-15.01, 0}})}), 0u);
+  EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}), 0u);     // a crossing street: bearing 0 against 90
+  EXPECT_EQ(along({trip_of({{-100, -100}, {100, 100}})}), 0u);  // 45 degrees off: not below the limit
+  EXPECT_EQ(along({trip_of({{-100, -80}, {100, 80}})}), 1u);    // 38.7 degrees off
+  EXPECT_EQ(along({trip_of({{0, 0}, {0, 0}, {0, 0}})}), 0u);    // a parked car has no bearing
+  EXPECT_EQ(along({trip_of({{0, 0}})}), 0u);                    // a single fix has no segment
+  EXPECT_EQ(along({Gps_trip{}}), 0u);
+  // One trip passing twice (there and back) counts once; two trips count twice.
+  EXPECT_EQ(along({trip_of({{-100, 5}, {100, 5}, {100, -5}, {-100, -5}})}), 1u);
+  EXPECT_EQ(along({trip_of({{-100, 5}, {100, 5}}), trip_of({{100, -5}, {-100, -5}})}), 2u);
+  // The options: a larger radius reaches the far trip; a 90-degree limit accepts the crossing one.
+  Trace_support_options wide;
+  wide.radius = 20;
+  EXPECT_EQ(along({trip_of({{-100, 15.01}, {100, 15.01}})}, wide), 1u);
+  Trace_support_options any;
+  any.bearing_limit = 90.5;
+  EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}, any), 1u);
+  EXPECT_TRUE(count_trips_along({}, {trip_of({{0, 0}, {1, 1}})}).empty());
+}
+
+TEST(TraceSupport, AgreesWithBruteForce) {
+  // Random samples and random trips with long chords, repeated fixes and far-off segments against a direct check
+  // of every segment of every trip.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-150, 150), b(0, 360), step(-60, 60);
+  std::vector<Map_sample> samples;
+  for (int i = 0; i < 400; ++i) samples.push_back(sample_at(u(rng), u(rng), b(rng)));
+  std::vector<Gps_trip> trips(60);
+  for (Gps_trip& t : trips) {
+    double x = u(rng), y = u(rng);
+    const int n = int(rng() % 12);
+    for (int k = 0; k < n; ++k) {
+      t.push_back({x, y, double(k)});
+      if (rng() % 5 == 0) continue;  // the same place again
+      x += step(rng) * (rng() % 4 == 0 ? 4 : 1);
+      y += step(rng);
+    }
+  }
+  Trace_support_options o;
+  o.radius = 12;
+  o.bearing_limit = 30;
+  const std::vector<std::size_t> fast = count_trips_along(samples, trips, o);
+  std::size_t supported = 0, multiple = 0;
+  for (std::size_t j = 0; j < samples.size(); ++j) {
+    std::size_t n = 0;
+    for (const Gps_trip& t : trips) {
+      bool hit = false;
+      for (std::size_t i = 0; i + 1 < t.size() && !hit; ++i) {
+        const double ax = t[i].x, ay = t[i].y, bx = t[i + 1].x, by = t[i + 1].y;
+        if (ax == bx && ay == by) continue;
+        // distance by dense sampling refined with the exact projection
+        const double len2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
+        double s = ((samples[j].position[0] - ax) * (bx - ax) + (samples[j].position[1] - ay) * (by - ay)) / len2;
+        s = std::max(0.0, std::min(1.0, s));
+        const double d = std::hypot(ax + s * (bx - ax) - samples[j].position[0], ay + s * (by - ay) - samples[j].position[1]);
+        double bearing = std::atan2(bx - ax, by - ay) * 180 / std::acos(-1.0);
+        if (bearing < 0) bearing += 360;
+        double diff = std::fabs(bearing - samples[j].bearing);
+        diff = std::min({diff, std::fabs(180 - diff), std::fabs(360 - diff)});
+        hit = d <= o.radius && diff < o.bearing_limit;
+      }
+      n += hit;
+    }
+    EXPECT_EQ(fast[j], n) << "sample " << j;
+    supported += n > 0;
+    multiple += n > 1;
+  }
+  EXPECT_GT(supported, 20u);  // not vacuous
+  EXPECT_GT(multiple, 2u);
+}
+
+TEST(TraceSupport, SplitsAComparisonByTheTripsAlongItsSamples) {
+  // The truth: two parallel east-west streets 100 m apart, 200 m long; trips drive the southern one only (three
+  // trips) and the reconstruction has the southern one plus a spur that a single trip drove.
+  Embedded_graph_2 truth;
+  truth.positions = {{0, 0}, {200, 0}, {0, 100}, {200, 100}};
+  truth.edges = {{0, 1}, {2, 3}};
+  Embedded_graph_2 rec;
+  rec.positions = {{0, 1}, {200, 1}, {100, -60}, {100, -200}};
+  rec.edges = {{0, 1}, {2, 3}};
+  std::vector<Gps_trip> trips{trip_of({{-10, 2}, {210, 2}}), trip_of({{210, -2}, {-10, -2}}),
+                              trip_of({{-10, 0}, {100, 0}, {210, 0}}), trip_of({{100, -40}, {100, -210}})};
+  Map_comparison_options o;
+  const Map_comparison_result plain = compare_maps(truth, rec, o);
+  EXPECT_THROW(explain_trace_support(plain, trips), std::invalid_argument);
+  o.keep_samples = true;
+  const Map_comparison_result r = compare_maps(truth, rec, o);
+  const Trace_support_breakdown b = explain_trace_support(r, trips);
+  const std::size_t street = r.ground_truth_samples / 2;  // each street has the same number of samples
+  ASSERT_EQ(r.ground_truth_samples % 2, 0u);
+  EXPECT_EQ(b.ground_truth_by_trips[0], street);  // the northern street: nobody drove it
+  EXPECT_EQ(b.ground_truth_by_trips[2], street);  // the southern one: three trips (bin 2-3)
+  EXPECT_EQ(b.ground_truth_by_trips[1] + b.ground_truth_by_trips[3], 0u);
+  EXPECT_EQ(b.missed_by_trips[0], street);
+  EXPECT_EQ(b.missed_by_trips[1] + b.missed_by_trips[2] + b.missed_by_trips[3], 0u);
+  EXPECT_EQ(b.ground_truth_driven, street);
+  EXPECT_EQ(b.matched_driven, street);
+  EXPECT_EQ(b.recall_of_driven, 1.0);
+  EXPECT_DOUBLE_EQ(r.recall, 0.5);
+  // The spur's samples are spurious and one trip drove them.
+  EXPECT_GT(b.spurious_by_trips[1], 20u);
+  EXPECT_EQ(b.spurious_by_trips[0] + b.spurious_by_trips[2] + b.spurious_by_trips[3], 0u);
+  EXPECT_EQ(b.spurious_by_trips[1], r.reconstruction_samples - r.matched);
+}
+
+TEST(TraceSupport, BadInputIsNamed) {
+  const std::vector<Map_sample> s{sample_at(0, 0, 90)};
+  auto message = [&](const std::vector<Gps_trip>& trips, Trace_support_options o) -> std::string {
+    try {
+      count_trips_along(s, trips, o);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const Gps_trip ok = trip_of({{0, 0}, {1, 0}});
+  Trace_support_options o;
+  Gps_trip bad = ok;
+  bad.push_back({std::nan(""), 0, 20});
+  EXPECT_NE(message({ok, ok, bad}, o).find("trip 2, fix 2"), std::string::npos) << message({ok, ok, bad}, o);
+  o.radius = 0;
+  EXPECT_NE(message({ok}, o).find("radius"), std::string::npos);
+  o.radius = std::numeric_limits<double>::infinity();
+  EXPECT_NE(message({ok}, o).find("radius"), std::string::npos);
+  o.radius = 15;
+  o.bearing_limit = std::nan("");
+  EXPECT_NE(message({ok}, o).find("bearing_limit"), std::string::npos);
+  o.bearing_limit = 0;
+  EXPECT_NE(message({ok}, o).find("bearing_limit"), std::string::npos);
 }

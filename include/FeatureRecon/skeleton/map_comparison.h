@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
+#include <FeatureRecon/skeleton/gps_traces.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_2.h>
@@ -389,6 +390,118 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
   Unmatched_samples_breakdown b;
   b.missed = classify(H, r.ground_truth_partner, G);
   b.spurious = classify(G, r.reconstruction_partner, H);
+  return b;
+}
+
+/// Options of count_trips_along() and explain_trace_support().
+struct Trace_support_options {
+  double radius = 15.0;         ///< a trip drives along a sample when one of its segments passes this close (m)
+  double bearing_limit = 45.0;  ///< ... with a direction-insensitive bearing difference below this (degrees)
+};
+
+/// For each sample, the number of distinct trips that drive along it: trips with a segment between consecutive
+/// fixes that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
+/// less than `bearing_limit` from the sample's, regardless of direction. Segments between fixes at the same
+/// place have no bearing and count for nothing.
+/// \throws std::invalid_argument naming the option (radius not positive and finite, bearing limit not positive;
+///         90 or more accepts every direction) or the trip and fix with a non-finite coordinate.
+inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
+                                                  const std::vector<Gps_trip>& trips,
+                                                  const Trace_support_options& options = {}) {
+  const char* fn = "count_trips_along";
+  if (!(options.radius > 0 && std::isfinite(options.radius)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be positive and finite, got ", options.radius);
+  if (!(options.bearing_limit > 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be positive (degrees), got ",
+                                                   options.bearing_limit);
+  for (std::size_t t = 0; t < trips.size(); ++t)
+    for (std::size_t i = 0; i < trips[t].size(); ++i)
+      if (!std::isfinite(trips[t][i].x) || !std::isfinite(trips[t][i].y))
+        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " has a non-finite coordinate");
+  // Bucket the samples on a grid of cell `radius`; every segment visits the cells of its bounding box grown by
+  // the radius and counts its trip once per sample it passes (trips are visited in order, so a sample's last
+  // counted trip tells whether this one was counted already).
+  const double cell_size = options.radius;
+  auto cell = [cell_size](double v) { return static_cast<std::int64_t>(std::floor(v / cell_size)); };
+  auto key = [](std::int64_t cx, std::int64_t cy) {
+    return (static_cast<std::uint64_t>(cx) << 32) ^ (static_cast<std::uint64_t>(cy) & 0xffffffffULL);
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+  for (std::size_t j = 0; j < samples.size(); ++j)
+    grid[key(cell(samples[j].position[0]), cell(samples[j].position[1]))].push_back(static_cast<std::uint32_t>(j));
+  std::vector<std::size_t> count(samples.size(), 0);
+  std::vector<std::size_t> last_trip(samples.size(), std::numeric_limits<std::size_t>::max());
+  const double r2 = options.radius * options.radius;
+  for (std::size_t t = 0; t < trips.size(); ++t)
+    for (std::size_t i = 0; i + 1 < trips[t].size(); ++i) {
+      const std::array<double, 2> a{trips[t][i].x, trips[t][i].y}, b{trips[t][i + 1].x, trips[t][i + 1].y};
+      const double ux = b[0] - a[0], uy = b[1] - a[1], len2 = ux * ux + uy * uy;
+      if (!(len2 > 0)) continue;
+      const double bearing = internal::bearing_of(a, b);
+      const std::int64_t x0 = cell(std::min(a[0], b[0]) - options.radius), x1 = cell(std::max(a[0], b[0]) + options.radius);
+      const std::int64_t y0 = cell(std::min(a[1], b[1]) - options.radius), y1 = cell(std::max(a[1], b[1]) + options.radius);
+      for (std::int64_t cx = x0; cx <= x1; ++cx)
+        for (std::int64_t cy = y0; cy <= y1; ++cy) {
+          const auto it = grid.find(key(cx, cy));
+          if (it == grid.end()) continue;
+          for (const std::uint32_t j : it->second) {
+            if (last_trip[j] == t) continue;
+            const auto& p = samples[j].position;
+            const double s = std::clamp(((p[0] - a[0]) * ux + (p[1] - a[1]) * uy) / len2, 0.0, 1.0);
+            const double dx = a[0] + s * ux - p[0], dy = a[1] + s * uy - p[1];
+            if (dx * dx + dy * dy > r2) continue;
+            if (!(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit)) continue;
+            last_trip[j] = t;
+            ++count[j];
+          }
+        }
+    }
+  return count;
+}
+
+/// How the samples of a comparison are supported by the GPS trips the reconstruction came from (see
+/// explain_trace_support()). Counts are split by the number of trips driving along a sample: 0, 1, 2-3, 4 or more.
+struct Trace_support_breakdown {
+  std::array<std::size_t, 4> ground_truth_by_trips{};  ///< all ground-truth samples
+  std::array<std::size_t, 4> missed_by_trips{};        ///< ground-truth samples without a partner
+  std::array<std::size_t, 4> spurious_by_trips{};      ///< reconstruction samples without a partner
+  /// Ground-truth samples that at least one trip drives along: the part of the truth that the traces show.
+  std::size_t ground_truth_driven = 0;
+  std::size_t matched_driven = 0;  ///< ... of which matched
+  double recall_of_driven = 0;     ///< matched_driven / ground_truth_driven (0 when none is driven)
+};
+
+/// Bins a trip count: 0, 1, 2-3, 4 or more.
+inline std::size_t trip_count_bin(std::size_t trips) { return trips == 0 ? 0 : trips == 1 ? 1 : trips <= 3 ? 2 : 3; }
+
+/// Splits the samples of a comparison by the number of trips that drive along them (count_trips_along()): which
+/// part of the truth no trip drives along (no reconstruction from these traces can be expected to find it), the
+/// recall within the driven part, and how well the spurious lines are supported. The default radius and bearing
+/// limit are those of Map_comparison_options; pass the comparison's own when they differ.
+/// \pre `r` was computed with options.keep_samples (checked; throws).
+inline Trace_support_breakdown explain_trace_support(const Map_comparison_result& r, const std::vector<Gps_trip>& trips,
+                                                     const Trace_support_options& options = {}) {
+  if (r.ground_truth_sample_list.size() != r.ground_truth_samples ||
+      r.reconstruction_sample_list.size() != r.reconstruction_samples ||
+      r.ground_truth_partner.size() != r.ground_truth_samples ||
+      r.reconstruction_partner.size() != r.reconstruction_samples)
+    FeatureRecon::internal::throw_invalid_argument("explain_trace_support",
+                                                   "the comparison was not computed with keep_samples");
+  Trace_support_breakdown b;
+  const std::vector<std::size_t> h = count_trips_along(r.ground_truth_sample_list, trips, options);
+  const std::vector<std::size_t> g = count_trips_along(r.reconstruction_sample_list, trips, options);
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    ++b.ground_truth_by_trips[trip_count_bin(h[i])];
+    if (r.ground_truth_partner[i] < 0) ++b.missed_by_trips[trip_count_bin(h[i])];
+    if (h[i] > 0) {
+      ++b.ground_truth_driven;
+      if (r.ground_truth_partner[i] >= 0) ++b.matched_driven;
+    }
+  }
+  for (std::size_t j = 0; j < g.size(); ++j)
+    if (r.reconstruction_partner[j] < 0) ++b.spurious_by_trips[trip_count_bin(g[j])];
+  b.recall_of_driven =
+      b.ground_truth_driven == 0 ? 0.0 : static_cast<double>(b.matched_driven) / static_cast<double>(b.ground_truth_driven);
   return b;
 }
 
