@@ -4,9 +4,11 @@
 // and simulates trips on it; extract_road_map() builds the map with every parameter derived from the traces;
 // compare_maps() scores it against the streets that were driven (graph-sampling metric, 15 m), before and after
 // the last stage merges the two directions of each street into one line. The same city
-// recorded every 1, 3.6 and 7 seconds shows how the derived parameters follow the sampling rate. With
-// --svg FILE: a picture of the 3.6 s city (traces, true streets, map); doc/images/synthetic_city_road_map.png is
-// that picture converted with rsvg-convert.
+// recorded every 1, 3.6 and 7 seconds shows how the derived parameters follow the sampling rate. Then a city
+// of another shape with the same defaults: random intersections joined by bent streets (the organic layout,
+// curvature 0.15). With --svg FILE: a picture of the 3.6 s grid city (traces, true streets, map);
+// doc/images/synthetic_city_road_map.png is that picture converted with rsvg-convert. With --svg-organic FILE:
+// the same for the organic city (doc/images/synthetic_city_organic.png).
 #include <FeatureRecon/skeleton/road_map.h>
 #include <FeatureRecon/skeleton/synthetic_city.h>
 
@@ -45,31 +47,54 @@ void write_svg(const std::string& path, const sk::Synthetic_city& city, const sk
   out << "<text x=\"" << margin << "\" y=\"" << 2 * margin + (y1 - y0) * s + 5
       << "\" font-size=\"14\">grey: fixes; green: streets driven; blue: road map</text>\n</svg>\n";
 }
+
+// Builds and scores the map of one city; prints what the skeleton and the merged map are worth.
+sk::Road_map run(const sk::Synthetic_city& city, double interval) {
+  std::size_t fixes = 0;
+  for (const auto& t : city.trips) fixes += t.size();
+  const sk::Road_map m = sk::extract_road_map(city.trips);
+  const sk::Map_comparison_result score = sk::compare_maps(city.driven, m.map);
+  // The same skeleton before its last stage, merge_road_lines(): both directions of every street drawn.
+  const sk::Map_comparison_result unmerged = sk::compare_maps(city.driven, sk::skeleton_to_road_map(m.skeleton.graph));
+  std::printf("every %.1f s: %zu fixes, median step %.1f m -> radius %.1f m, delta %.1f m; %zu samples\n", interval,
+              fixes, m.sample.median_step, m.used.rips_radius, m.used.delta, m.sample.points.rows);
+  std::printf("  skeleton: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n",
+              num_vertices(m.skeleton.graph), num_edges(m.skeleton.graph), m.merged.length_before,
+              unmerged.precision, unmerged.recall, unmerged.f_score);
+  std::printf("  merged at %.0f m: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n", m.used.merge_distance,
+              num_vertices(m.merged.skeleton), num_edges(m.merged.skeleton), m.merged.length_after, score.precision,
+              score.recall, score.f_score);
+  return m;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string svg;
-  if (argc == 3 && std::strcmp(argv[1], "--svg") == 0) svg = argv[2];
+  std::string svg, svg_organic;
+  for (int i = 1; i < argc; i += 2) {
+    if (i + 1 < argc && std::strcmp(argv[i], "--svg") == 0) {
+      svg = argv[i + 1];
+    } else if (i + 1 < argc && std::strcmp(argv[i], "--svg-organic") == 0) {
+      svg_organic = argv[i + 1];
+    } else {
+      std::fprintf(stderr, "usage: %s [--svg FILE] [--svg-organic FILE]\n", argv[0]);
+      return 2;
+    }
+  }
   for (const double interval : {1.0, 3.6, 7.0}) {
     sk::Synthetic_city_options o;  // 8 x 6 intersections, 120 x 90 m blocks, noise 4 m, bias 2 m
     o.sampling_interval = interval;
     o.trips = 600;
     const sk::Synthetic_city city = sk::make_synthetic_city(o);
-    std::size_t fixes = 0;
-    for (const auto& t : city.trips) fixes += t.size();
-    const sk::Road_map m = sk::extract_road_map(city.trips);
-    const sk::Map_comparison_result score = sk::compare_maps(city.driven, m.map);
-    // The same skeleton before its last stage, merge_road_lines(): both directions of every street drawn.
-    const sk::Map_comparison_result unmerged = sk::compare_maps(city.driven, sk::skeleton_to_road_map(m.skeleton.graph));
-    std::printf("every %.1f s: %zu fixes, median step %.1f m -> radius %.1f m, delta %.1f m; %zu samples\n", interval,
-                fixes, m.sample.median_step, m.used.rips_radius, m.used.delta, m.sample.points.rows);
-    std::printf("  skeleton: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n",
-                num_vertices(m.skeleton.graph), num_edges(m.skeleton.graph), m.merged.length_before,
-                unmerged.precision, unmerged.recall, unmerged.f_score);
-    std::printf("  merged at %.0f m: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n", m.used.merge_distance,
-                num_vertices(m.merged.skeleton), num_edges(m.merged.skeleton), m.merged.length_after, score.precision,
-                score.recall, score.f_score);
+    const sk::Road_map m = run(city, interval);
     if (!svg.empty() && interval == 3.6) write_svg(svg, city, m);
   }
+  sk::Synthetic_city_options o;  // 48 random intersections in the same rectangle, Gabriel graph, bent streets
+  o.layout = sk::Synthetic_city_layout::organic;
+  o.curvature = 0.15;
+  o.trips = 600;
+  std::printf("organic city, bent streets:\n");
+  const sk::Synthetic_city city = sk::make_synthetic_city(o);
+  const sk::Road_map m = run(city, o.sampling_interval);
+  if (!svg_organic.empty()) write_svg(svg_organic, city, m);
   return 0;
 }

@@ -412,3 +412,107 @@ TEST(SyntheticCity, StreetsAndTrips) {
   b.noise = -1;
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("noise"), std::string::npos);
 }
+
+TEST(SyntheticCity, GabrielEdgesOfDegenerateInput) {
+  using skeleton::internal::gabriel_edges;
+  EXPECT_TRUE(gabriel_edges({}).empty());
+  EXPECT_TRUE(gabriel_edges({{1, 2}}).empty());
+  EXPECT_EQ(gabriel_edges({{0, 0}, {3, 4}}), (std::vector<Edge>{{0, 1}}));
+  // Collinear: the middle point lies in the outer pair's disc.
+  EXPECT_EQ(gabriel_edges({{0, 0}, {2, 0}, {1, 0}}), (std::vector<Edge>{{0, 2}, {1, 2}}));
+  // A square: its sides, not its diagonals (each has the two other corners on its circle).
+  EXPECT_EQ(gabriel_edges({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), (std::vector<Edge>{{0, 1}, {0, 3}, {1, 2}, {2, 3}}));
+  // A grid of 3 x 3: the 12 unit streets.
+  std::vector<std::array<double, 2>> grid;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) grid.push_back({double(i), double(j)});
+  const std::vector<Edge> g = gabriel_edges(grid);
+  ASSERT_EQ(g.size(), 12u);
+  for (const Edge& e : g)
+    EXPECT_DOUBLE_EQ(std::hypot(grid[e[0]][0] - grid[e[1]][0], grid[e[0]][1] - grid[e[1]][1]), 1.0);
+}
+
+TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
+  Synthetic_city_options o;
+  o.layout = Synthetic_city_layout::organic;
+  o.curvature = 0.15;
+  o.noise = 0;
+  o.trip_bias = 0;
+  o.trips = 60;
+  const Synthetic_city c = make_synthetic_city(o);
+  const std::size_t n = o.columns * o.rows;
+  ASSERT_GT(c.streets.positions.size(), n);  // the bends' inner points follow the intersections
+  // Intersections: in the rectangle, at least 0.6 sqrt(block area) apart, joined by streets of their Gabriel
+  // graph (checked against all points) that form a connected network; inner points have degree 2.
+  const double spacing = 0.6 * std::sqrt(o.block_width * o.block_height);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& p = c.streets.positions[i];
+    EXPECT_GE(p[0], 0);
+    EXPECT_LE(p[0], double(o.columns - 1) * o.block_width);
+    EXPECT_GE(p[1], 0);
+    EXPECT_LE(p[1], double(o.rows - 1) * o.block_height);
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GE(std::hypot(p[0] - c.streets.positions[j][0], p[1] - c.streets.positions[j][1]), spacing);
+  }
+  std::vector<std::vector<Vertex_index>> adj(c.streets.positions.size());
+  for (const Edge& e : c.streets.edges) {
+    adj[e[0]].push_back(e[1]);
+    adj[e[1]].push_back(e[0]);
+  }
+  for (std::size_t v = n; v < adj.size(); ++v) EXPECT_EQ(adj[v].size(), 2u) << v;
+  // Walk each street from an intersection to the next: its middle lies at most curvature x chord off the chord,
+  // and its ends form a Gabriel pair.
+  std::size_t streets = 0, bent = 0;
+  for (Vertex_index a = 0; a < n; ++a)
+    for (const Vertex_index first : adj[a]) {
+      std::vector<Vertex_index> line{a, first};
+      while (line.back() >= n) line.push_back(adj[line.back()][0] == line[line.size() - 2] ? adj[line.back()][1] : adj[line.back()][0]);
+      const Vertex_index b = line.back();
+      if (b < a) continue;  // each street once
+      ++streets;
+      const auto& P = c.streets.positions;
+      const double L = std::hypot(P[b][0] - P[a][0], P[b][1] - P[a][1]);
+      double off = 0;
+      for (const Vertex_index v : line) off = std::max(off, segment_distance(P[v], P[a], P[b]));
+      EXPECT_LE(off, o.curvature * L + 1e-9);
+      bent += off > 1;
+      const std::array<double, 2> mid{(P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2};
+      for (Vertex_index w = 0; w < n; ++w)
+        if (w != a && w != b) EXPECT_GT(std::hypot(P[w][0] - mid[0], P[w][1] - mid[1]), L / 2) << a << "-" << b;
+    }
+  EXPECT_GT(streets, n);            // more streets than a tree
+  EXPECT_GT(bent, streets / 2);     // most streets bend
+  std::vector<char> seen(n, 0);
+  std::vector<Vertex_index> stack{0};
+  seen[0] = 1;
+  std::size_t reached = 1;
+  while (!stack.empty()) {
+    const Vertex_index v = stack.back();
+    stack.pop_back();
+    for (const Vertex_index w0 : adj[v]) {
+      Vertex_index prev = v, w = w0;
+      while (w >= n) {
+        const Vertex_index next = adj[w][0] == prev ? adj[w][1] : adj[w][0];
+        prev = w;
+        w = next;
+      }
+      if (!seen[w]) seen[w] = 1, ++reached, stack.push_back(w);
+    }
+  }
+  EXPECT_EQ(reached, n);
+  // Without noise every fix lies lane_offset from a driven street piece.
+  for (const Gps_trip& t : c.trips)
+    for (const Gps_fix& f : t) {
+      double d = std::numeric_limits<double>::infinity();
+      for (const Edge& e : c.driven.edges)
+        d = std::min(d, segment_distance({f.x, f.y}, c.driven.positions[e[0]], c.driven.positions[e[1]]));
+      EXPECT_LE(d, o.lane_offset + 1e-9);
+    }
+  // Deterministic for a seed.
+  EXPECT_EQ(make_synthetic_city(o).streets.positions, c.streets.positions);
+  Synthetic_city_options b;
+  b.curvature = 0.6;
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
+  b.curvature = std::nan("");
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
+}

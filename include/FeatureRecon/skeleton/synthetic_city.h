@@ -5,14 +5,19 @@
 
 // A synthetic city with known streets and simulated GPS trips on them: test and benchmark data for road-map
 // construction where no other city's traces are at hand. The street network is a perturbed grid (rotated,
-// jittered intersections, some streets missing, a diagonal avenue); trips drive shortest routes between random
-// intersections on the right-hand side of the street and are recorded at a fixed interval with Gaussian noise
-// and a per-trip bias. Deterministic for a seed on every platform (internal/random.h).
+// jittered intersections, some streets missing, a diagonal avenue) or an organic network (random intersections
+// joined by their Gabriel graph, some streets missing), its streets straight or bent; trips drive shortest routes
+// between random intersections on the right-hand side of the street and are recorded at a fixed interval with
+// Gaussian noise and a per-trip bias. Deterministic for a seed on every platform (internal/random.h).
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/internal/random.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
 #include <FeatureRecon/skeleton/map_comparison.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
 #include <array>
@@ -27,16 +32,28 @@
 namespace FeatureRecon {
 namespace skeleton {
 
+/// How make_synthetic_city() lays out the intersections and streets.
+enum class Synthetic_city_layout {
+  grid,    ///< a columns x rows grid of blocks, jittered, with a diagonal avenue
+  organic  ///< columns x rows random intersections in the grid's rectangle, at least 0.6 sqrt(block_width x
+           ///< block_height) apart (dart throwing), joined by the streets of their Gabriel graph: junctions of
+           ///< any degree and angle, blocks of any shape
+};
+
 /// Options of make_synthetic_city(). Lengths in metres, times in seconds.
 struct Synthetic_city_options {
+  Synthetic_city_layout layout = Synthetic_city_layout::grid;  ///< default grid
   std::size_t columns = 8;       ///< intersections per row (>= 2); default 8
   std::size_t rows = 6;          ///< intersections per column (>= 2); default 6
   double block_width = 120;      ///< spacing of the intersections along a row; default 120
   double block_height = 90;      ///< spacing along a column; default 90
   double rotation = 0;           ///< of the whole grid, degrees; default 0
-  double jitter = 10;            ///< each intersection moves uniformly within +-jitter in x and y; default 10
-  double missing_streets = 0.1;  ///< fraction of grid streets removed, keeping the network connected; default 0.1
-  bool diagonal = true;          ///< a diagonal avenue through the intersections (i, i); default true
+  double jitter = 10;            ///< grid: each intersection moves uniformly within +-jitter in x and y; default 10
+  double missing_streets = 0.1;  ///< fraction of streets removed, keeping the network connected; default 0.1
+  bool diagonal = true;          ///< grid: a diagonal avenue through the intersections (i, i); default true
+  /// Each street bends as a parabola whose middle lies up to curvature x its length (uniformly, either side) off
+  /// the chord, drawn as a polyline with pieces of at most 10 m; 0 keeps streets straight. In [0, 0.5]; default 0
+  double curvature = 0;
   std::size_t trips = 300;       ///< default 300
   double speed = 10;             ///< mean driving speed; each trip drives at 0.7 to 1.3 times it; default 10
   double sampling_interval = 3.6;  ///< time between fixes (the first one at a random phase); default 3.6
@@ -48,15 +65,49 @@ struct Synthetic_city_options {
 
 /// Result of make_synthetic_city().
 struct Synthetic_city {
-  Embedded_graph_2 streets;   ///< the street network (centre lines)
+  /// The street network (centre lines): the intersections first (vertex j x columns + i is the grid's (i, j)),
+  /// then the inner points of bent streets, each street's in order.
+  Embedded_graph_2 streets;
   Embedded_graph_2 driven;    ///< the streets at least one trip used: the ground truth of a road map
   std::vector<Gps_trip> trips;  ///< the recorded fixes (trip k starts at time 10000 k)
 };
 
+namespace internal {
+/// The edges of the Gabriel graph of distinct points (pairs whose diametral disc holds no other point), from
+/// their Delaunay triangulation with exact predicates; sorted, each as (smaller index, larger index). A point on
+/// the boundary of a diametral disc removes the edge.
+inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>& points) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<Vertex_index, K>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+  using Dt = CGAL::Delaunay_triangulation_2<K, Tds>;
+  Dt dt;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    dt.insert(K::Point_2(points[i][0], points[i][1]))->info() = static_cast<Vertex_index>(i);
+  std::vector<Edge> edges;
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const auto f = e->first;
+    const int i = e->second;
+    const auto u = f->vertex(Dt::cw(i)), v = f->vertex(Dt::ccw(i));
+    bool gabriel = true;  // collinear points (dimension 1): every Delaunay edge joins neighbours on the line
+    if (dt.dimension() == 2)
+      for (const auto& [face, index] : {std::pair{f, i}, std::pair{f->neighbor(i), f->neighbor(i)->index(f)}}) {
+        const auto w = face->vertex(index);
+        if (!dt.is_infinite(w) &&
+            CGAL::side_of_bounded_circle(u->point(), v->point(), w->point()) != CGAL::ON_UNBOUNDED_SIDE)
+          gabriel = false;
+      }
+    if (gabriel) edges.push_back({std::min(u->info(), v->info()), std::max(u->info(), v->info())});
+  }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+}  // namespace internal
+
 /// Builds a synthetic city and its GPS trips (see the file comment).
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or non-finite
-///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, or a missing
-///         fraction outside [0, 1].
+///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a missing
+///         fraction outside [0, 1] or a curvature outside [0, 0.5].
 inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
   const char* fn = "make_synthetic_city";
   using FeatureRecon::internal::throw_invalid_argument;
@@ -78,25 +129,50 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   if (!std::isfinite(o.rotation)) throw_invalid_argument(fn, "rotation must be finite, got ", o.rotation);
   if (!(o.missing_streets >= 0 && o.missing_streets <= 1))
     throw_invalid_argument(fn, "missing_streets must be in [0, 1], got ", o.missing_streets);
+  if (!(o.curvature >= 0 && o.curvature <= 0.5))
+    throw_invalid_argument(fn, "curvature must be in [0, 0.5], got ", o.curvature);
+  if (o.layout != Synthetic_city_layout::grid && o.layout != Synthetic_city_layout::organic)
+    throw_invalid_argument(fn, "layout must be grid or organic");
 
   FeatureRecon::internal::Unit_random random(FeatureRecon::internal::splitmix64(o.seed));
   Synthetic_city city;
   const std::size_t nx = o.columns, ny = o.rows, n = nx * ny;
   const double a = o.rotation * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
-  for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t i = 0; i < nx; ++i) {
-      const double x = double(i) * o.block_width + o.jitter * (2 * random() - 1);
-      const double y = double(j) * o.block_height + o.jitter * (2 * random() - 1);
-      city.streets.positions.push_back({c * x - s * y, s * x + c * y});
-    }
   auto node = [nx](std::size_t i, std::size_t j) { return static_cast<Vertex_index>(j * nx + i); };
   std::vector<Edge> streets;
-  for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t i = 0; i < nx; ++i) {
-      if (i + 1 < nx) streets.push_back({node(i, j), node(i + 1, j)});
-      if (j + 1 < ny) streets.push_back({node(i, j), node(i, j + 1)});
+  if (o.layout == Synthetic_city_layout::grid) {
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i) {
+        const double x = double(i) * o.block_width + o.jitter * (2 * random() - 1);
+        const double y = double(j) * o.block_height + o.jitter * (2 * random() - 1);
+        city.streets.positions.push_back({c * x - s * y, s * x + c * y});
+      }
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i) {
+        if (i + 1 < nx) streets.push_back({node(i, j), node(i + 1, j)});
+        if (j + 1 < ny) streets.push_back({node(i, j), node(i, j + 1)});
+      }
+  } else {
+    // Dart throwing in the grid's rectangle; after every 1000 n rejected darts the spacing shrinks by 5 %.
+    const double w = double(nx - 1) * o.block_width, h = double(ny - 1) * o.block_height;
+    double spacing = 0.6 * std::sqrt(o.block_width * o.block_height);
+    std::vector<std::array<double, 2>> q;
+    for (std::size_t rejected = 0; q.size() < n;) {
+      const std::array<double, 2> p{w * random(), h * random()};
+      const bool free = std::all_of(q.begin(), q.end(), [&](const std::array<double, 2>& r) {
+        return std::hypot(p[0] - r[0], p[1] - r[1]) >= spacing;
+      });
+      if (free) {
+        q.push_back(p);
+      } else if (++rejected == 1000 * n) {
+        spacing *= 0.95;
+        rejected = 0;
+      }
     }
-  // Remove grid streets in random order while the network stays connected.
+    for (const auto& p : q) city.streets.positions.push_back({c * p[0] - s * p[1], s * p[0] + c * p[1]});
+    streets = internal::gabriel_edges(city.streets.positions);
+  }
+  // Remove streets in random order while the network stays connected.
   const std::size_t grid_streets = streets.size();
   std::vector<std::size_t> order(grid_streets);
   for (std::size_t k = 0; k < grid_streets; ++k) order[k] = k;
@@ -131,28 +207,55 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   }
   for (std::size_t k = 0; k < grid_streets; ++k)
     if (!removed[k]) city.streets.edges.push_back(streets[k]);
-  if (o.diagonal)
+  if (o.diagonal && o.layout == Synthetic_city_layout::grid)
     for (std::size_t i = 0; i + 1 < std::min(nx, ny); ++i) city.streets.edges.push_back({node(i, i), node(i + 1, i + 1)});
+  // Street k runs along the polyline line[k] of vertices: its two intersections, and the inner points of a bend.
+  std::vector<std::vector<Vertex_index>> line;
+  for (const Edge& e : city.streets.edges) line.push_back({e[0], e[1]});
+  if (o.curvature > 0) {
+    for (auto& l : line) {
+      const auto p = city.streets.positions[l[0]], r = city.streets.positions[l[1]];
+      const double L = std::hypot(r[0] - p[0], r[1] - p[1]);
+      const double bend = o.curvature * L * (2 * random() - 1);  // the middle's distance off the chord
+      const double cx = (p[0] + r[0]) / 2 + 2 * bend * (p[1] - r[1]) / L, cy = (p[1] + r[1]) / 2 + 2 * bend * (r[0] - p[0]) / L;
+      const auto pieces = static_cast<std::size_t>(std::ceil(L * (1 + 4 * o.curvature) / 10));
+      std::vector<Vertex_index> bent{l[0]};
+      for (std::size_t i = 1; i < pieces; ++i) {
+        const double t = double(i) / double(pieces), u = 1 - t;
+        bent.push_back(static_cast<Vertex_index>(city.streets.positions.size()));
+        city.streets.positions.push_back({u * u * p[0] + 2 * u * t * cx + t * t * r[0], u * u * p[1] + 2 * u * t * cy + t * t * r[1]});
+      }
+      bent.push_back(l[1]);
+      l = std::move(bent);
+    }
+    city.streets.edges.clear();
+    for (const auto& l : line)
+      for (std::size_t i = 0; i + 1 < l.size(); ++i) city.streets.edges.push_back({l[i], l[i + 1]});
+  }
 
   // Trips: shortest routes (lengths times a random factor in [1, 1.5) per trip and street) between two random
   // intersections, driven on the right at a constant speed, recorded with noise.
   const auto& P = city.streets.positions;
-  const std::vector<Edge>& E = city.streets.edges;
+  const std::size_t m = line.size();
   std::vector<std::vector<std::pair<Vertex_index, std::size_t>>> adj(n);
-  for (std::size_t k = 0; k < E.size(); ++k) {
-    adj[E[k][0]].push_back({E[k][1], k});
-    adj[E[k][1]].push_back({E[k][0], k});
+  for (std::size_t k = 0; k < m; ++k) {
+    adj[line[k].front()].push_back({line[k].back(), k});
+    adj[line[k].back()].push_back({line[k].front(), k});
   }
-  auto length = [&](std::size_t k) { return std::hypot(P[E[k][1]][0] - P[E[k][0]][0], P[E[k][1]][1] - P[E[k][0]][1]); };
-  std::vector<char> used(E.size(), 0);
+  std::vector<double> street_length(m, 0.0);
+  for (std::size_t k = 0; k < m; ++k)
+    for (std::size_t i = 0; i + 1 < line[k].size(); ++i)
+      street_length[k] += std::hypot(P[line[k][i + 1]][0] - P[line[k][i]][0], P[line[k][i + 1]][1] - P[line[k][i]][1]);
+  auto length = [&](std::size_t k) { return street_length[k]; };
+  std::vector<char> used(m, 0);
   for (std::size_t t = 0; t < o.trips; ++t) {
-    std::vector<double> factor(E.size());
+    std::vector<double> factor(m);
     for (double& f : factor) f = 1 + 0.5 * random();
     const auto from = static_cast<Vertex_index>(random() * double(n));
     auto to = static_cast<Vertex_index>(random() * double(n - 1));
     if (to >= from) ++to;
     std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-    std::vector<std::size_t> via(n, E.size());
+    std::vector<std::size_t> via(n, m);
     using Item = std::pair<double, Vertex_index>;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
     dist[from] = 0;
@@ -168,11 +271,16 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
           queue.push({dist[w], w});
         }
     }
+    // The route's polyline, from `to` back to `from`, then reversed.
     std::vector<Vertex_index> route{to};
-    while (route.back() != from) {
-      const std::size_t k = via[route.back()];
+    for (Vertex_index v = to; v != from;) {
+      const std::size_t k = via[v];
       used[k] = 1;
-      route.push_back(E[k][0] == route.back() ? E[k][1] : E[k][0]);
+      if (line[k].back() == v)
+        route.insert(route.end(), line[k].rbegin() + 1, line[k].rend());
+      else
+        route.insert(route.end(), line[k].begin() + 1, line[k].end());
+      v = route.back();
     }
     std::reverse(route.begin(), route.end());
     const double speed = o.speed * (0.7 + 0.6 * random());
@@ -196,8 +304,9 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     city.trips.push_back(std::move(trip));
   }
   city.driven.positions = P;
-  for (std::size_t k = 0; k < E.size(); ++k)
-    if (used[k]) city.driven.edges.push_back(E[k]);
+  for (std::size_t k = 0; k < m; ++k)
+    if (used[k])
+      for (std::size_t i = 0; i + 1 < line[k].size(); ++i) city.driven.edges.push_back({line[k][i], line[k][i + 1]});
   return city;
 }
 
