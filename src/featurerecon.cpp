@@ -125,6 +125,33 @@ const std::vector<Command>& commands() {
        "                   within THRESHOLD, bearing within BEARING) into lists [0, 1, 2-3, 4+ trips] for the\n"
        "                   truth, the missed and the spurious samples, and the recall within the driven truth\n",
        run_evaluate_map},
+      {"synthetic-city", "Simulate GPS trips in a city whose streets are known (test data for road maps)",
+       "usage: featurerecon synthetic-city --out-tracks TRACKS --out-vertices V --out-edges E\n"
+       "                                   [--layout grid|organic] [--columns 8] [--rows 6] [--block-width 120]\n"
+       "                                   [--block-height 90] [--rotation 0] [--jitter 10] [--missing 0.1]\n"
+       "                                   [--curvature 0] [--trips 300] [--speed 10] [--interval 3.6] [--noise 4]\n"
+       "                                   [--bias 2] [--lane-offset 2] [--seed 1]\n"
+       "                                   [--out-streets-vertices SV --out-streets-edges SE]\n"
+       "\n"
+       "Lays out a street network and drives trips on it: shortest routes between random intersections, on the\n"
+       "right-hand side, recorded every INTERVAL seconds with Gaussian noise and a constant bias per trip.\n"
+       "Deterministic for a seed. Writes the trips (lines 'trip_id x y t') and the streets that were driven (the\n"
+       "ground truth for evaluate-map, 'id,x,y' and 'id,v1,v2'); prints a JSON summary.\n"
+       "\n"
+       "  --layout         grid: a columns x rows grid of blocks, jittered, with a diagonal avenue (default);\n"
+       "                   organic: columns x rows random intersections in the same rectangle, joined by the\n"
+       "                   streets of their Gabriel graph (junctions of any degree and angle)\n"
+       "  --missing        fraction of streets removed, keeping the network connected (default 0.1)\n"
+       "  --curvature C    bend every street: its middle lies up to C x its length off the chord, in [0, 0.5]\n"
+       "  --speed          mean speed (m/s); each trip drives at 0.7 to 1.3 times it\n"
+       "  --noise, --bias  standard deviation of each fix's noise and of each trip's offset, per coordinate (m)\n"
+       "  --out-streets-*  also write every street, driven or not\n"
+       "\n"
+       "example: featurerecon synthetic-city --layout organic --curvature 0.15 --trips 600 --out-tracks t.txt\n"
+       "           --out-vertices gt_v.txt --out-edges gt_e.txt\n"
+       "         featurerecon skeleton --tracks t.txt --out-vertices v.txt --out-edges e.txt\n"
+       "         featurerecon evaluate-map gt_v.txt gt_e.txt v.txt e.txt --explain --tracks t.txt\n",
+       run_synthetic_city},
       {"sample", "Feature-aware downsampling of a point cloud (bilateral blue noise on points with normals)",
        "usage: featurerecon sample --input FILE (--count M | --radius R) [--method elimination|darts]\n"
        "                           [--sigma-position S] [--sigma-feature S] [--unoriented] [--seed N]\n"

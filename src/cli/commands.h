@@ -23,6 +23,7 @@ const std::vector<Command>& commands();
 int run_rips(const std::vector<std::string>& args);
 int run_reeb(const std::vector<std::string>& args);
 int run_evaluate_map(const std::vector<std::string>& args);
+int run_synthetic_city(const std::vector<std::string>& args);
 int run_skeleton(const std::vector<std::string>& args);
 int run_sample(const std::vector<std::string>& args);
 int run_sample_stats(const std::vector<std::string>& args);

@@ -3,12 +3,15 @@
 // Subcommand evaluate-map: the graph-sampling metric of a reconstructed road map against a ground truth.
 
 #include <FeatureRecon/skeleton/map_comparison.h>
+#include <FeatureRecon/skeleton/synthetic_city.h>
 
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Search_traits_2.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
 
@@ -123,6 +126,82 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
        << ", \"recall_of_driven\": " << json_number(b.recall_of_driven) << "}";
   }
   os << "}\n";
+  std::fputs(os.str().c_str(), stdout);
+  return 0;
+}
+
+int run_synthetic_city(const std::vector<std::string>& argv) {
+  const Arguments args(argv, {},
+                       {"layout", "columns", "rows", "block-width", "block-height", "rotation", "jitter", "missing",
+                        "curvature", "trips", "speed", "interval", "noise", "bias", "lane-offset", "seed",
+                        "out-tracks", "out-vertices", "out-edges", "out-streets-vertices", "out-streets-edges"});
+  for (const char* required : {"out-tracks", "out-vertices", "out-edges"})
+    if (!args.has(required)) throw Usage_error(std::string("--") + required + " is required");
+  if (args.has("out-streets-vertices") != args.has("out-streets-edges"))
+    throw Usage_error("--out-streets-vertices and --out-streets-edges go together");
+  Synthetic_city_options o;
+  const std::string layout = args.get_or("layout", "grid");
+  if (layout == "organic")
+    o.layout = Synthetic_city_layout::organic;
+  else if (layout != "grid")
+    throw Usage_error("--layout must be grid or organic, got '" + layout + "'");
+  auto count = [&](const char* name, std::size_t& field) {
+    if (!args.has(name)) return;
+    const long long v = args.get_int(name);
+    if (v < 0) throw Usage_error(std::string("--") + name + " must be >= 0");
+    field = static_cast<std::size_t>(v);
+  };
+  count("columns", o.columns);
+  count("rows", o.rows);
+  count("trips", o.trips);
+  auto number = [&](const char* name, double& field) {
+    if (args.has(name)) field = args.get_double(name);
+  };
+  number("block-width", o.block_width);
+  number("block-height", o.block_height);
+  number("rotation", o.rotation);
+  number("jitter", o.jitter);
+  number("missing", o.missing_streets);
+  number("curvature", o.curvature);
+  number("speed", o.speed);
+  number("interval", o.sampling_interval);
+  number("noise", o.noise);
+  number("bias", o.trip_bias);
+  number("lane-offset", o.lane_offset);
+  if (args.has("seed")) {
+    const long long seed = args.get_int("seed");
+    if (seed < 0) throw Usage_error("--seed must be >= 0");
+    o.seed = static_cast<std::uint64_t>(seed);
+  }
+  const Synthetic_city city = make_synthetic_city(o);  // names a bad option (std::invalid_argument)
+  std::string tracks = "# trip_id x y t  (synthetic city, metres and seconds)\n";
+  std::size_t fixes = 0;
+  char buf[160];
+  for (std::size_t t = 0; t < city.trips.size(); ++t)
+    for (const Gps_fix& f : city.trips[t]) {
+      std::snprintf(buf, sizeof buf, "%zu %.6f %.6f %.3f\n", t, f.x, f.y, f.time);
+      tracks += buf;
+      ++fixes;
+    }
+  io::write_text_file(args.get("out-tracks"), tracks);
+  io::write_map(args.get("out-vertices"), args.get("out-edges"), city.driven.positions, city.driven.edges);
+  if (args.has("out-streets-vertices"))
+    io::write_map(args.get("out-streets-vertices"), args.get("out-streets-edges"), city.streets.positions,
+                  city.streets.edges);
+  auto length = [](const Embedded_graph_2& g) {
+    double sum = 0;
+    for (const Edge& e : g.edges)
+      sum += std::hypot(g.positions[e[1]][0] - g.positions[e[0]][0], g.positions[e[1]][1] - g.positions[e[0]][1]);
+    return sum;
+  };
+  std::ostringstream os;
+  os << "{\"layout\": \"" << layout << "\", \"intersections\": " << o.columns * o.rows
+     << ", \"vertices\": " << city.streets.positions.size() << ", \"street_edges\": " << city.streets.edges.size()
+     << ", \"driven_edges\": " << city.driven.edges.size() << ", \"street_length\": " << json_number(length(city.streets))
+     << ", \"driven_length\": " << json_number(length(city.driven)) << ", \"trips\": " << city.trips.size()
+     << ", \"fixes\": " << fixes << ", \"interval\": " << json_number(o.sampling_interval)
+     << ", \"noise\": " << json_number(o.noise) << ", \"curvature\": " << json_number(o.curvature)
+     << ", \"seed\": " << o.seed << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;
 }

@@ -174,6 +174,24 @@ expect(skeleton_chicago_score 0 "\"f_score\": 0\\.(6[6-9]|[7-9])[0-9]*," evaluat
 # depends on the truth and the tracks only: 1866 samples (15%) are driven by no trip, 2810 by one.
 expect(evaluate_map_trace_support 0 "\"trace_support\": {\"trips\": 889, \"ground_truth_by_trips\": \\[1866, 2810, 914, 6965\\], \"missed_by_trips\": \\[18[0-9][0-9], [0-9]+, [0-9]+, [0-9]+\\], \"spurious_by_trips\": \\[[0-9]+, [0-9]+, [0-9]+, [0-9]+\\], \"ground_truth_driven\": 10689, \"matched_driven\": [0-9]+, \"recall_of_driven\": 0\\.[6-9]" evaluate-map ${M}_gt_trk25_vertices.txt ${M}_gt_trk25_edges.txt ${WORK}/c_v.txt ${WORK}/c_e.txt --tracks ${WORK}/chicago_tracks.txt)
 
+# synthetic-city: an organic city (200 trips) written as tracks and ground truth; the road map the skeleton
+# command builds from the tracks scores F = 0.87 against it (pinned at 0.80 or more); the same seed gives the
+# same files; bad options are explained.
+expect(synthetic_city 0 "\"layout\": \"organic\", \"intersections\": 48, .*\"trips\": 200, .*\"seed\": 5}" synthetic-city --layout organic --trips 200 --seed 5 --out-tracks ${WORK}/sc_t.txt --out-vertices ${WORK}/sc_gv.txt --out-edges ${WORK}/sc_ge.txt)
+expect(synthetic_city_again 0 "\"seed\": 5}" synthetic-city --layout organic --trips 200 --seed 5 --out-tracks ${WORK}/sc_t2.txt --out-vertices ${WORK}/sc_gv2.txt --out-edges ${WORK}/sc_ge2.txt --out-streets-vertices ${WORK}/sc_sv.txt --out-streets-edges ${WORK}/sc_se.txt)
+expect_same_file(${WORK}/sc_t.txt ${WORK}/sc_t2.txt "synthetic_city_again: tracks")
+expect_same_file(${WORK}/sc_gv.txt ${WORK}/sc_gv2.txt "synthetic_city_again: truth vertices")
+expect_count(${WORK}/sc_t.txt "^# trip_id x y t" 1)
+expect_count(${WORK}/sc_t.txt "\n200 " 0)
+expect(synthetic_city_map 0 "\"components\": 1," skeleton --tracks ${WORK}/sc_t.txt --out-vertices ${WORK}/sc_v.txt --out-edges ${WORK}/sc_e.txt --quiet)
+expect(synthetic_city_score 0 "\"f_score\": 0\\.[89][0-9]*," evaluate-map ${WORK}/sc_gv.txt ${WORK}/sc_ge.txt ${WORK}/sc_v.txt ${WORK}/sc_e.txt)
+expect(synthetic_city_layout 2 "--layout must be grid or organic, got 'hex'" synthetic-city --layout hex --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_curvature 1 "curvature must be in \\[0, 0.5\\], got 0.7" synthetic-city --curvature 0.7 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_rows 1 "columns and rows must be >= 2" synthetic-city --rows 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_out 2 "--out-tracks is required" synthetic-city --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_streets 2 "--out-streets-vertices and --out-streets-edges go together" synthetic-city --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --out-streets-edges ${WORK}/d)
+expect(synthetic_city_trips 2 "--trips must be >= 0" synthetic-city --trips -3 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+
 # The skeleton's other formats: GraphML, GeoJSON, PLY, SVG, with the right counts (two loops that share a
 # down-fork and an up-fork: 4 nodes, 5 arcs once the spurs at the base point and the farthest point are trimmed).
 expect(skeleton_formats 0 "\"nodes\": 4, \"arcs\": 5" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/f_v.txt --out-edges ${WORK}/f_e.txt --graphml ${WORK}/f.graphml --geojson ${WORK}/f.geojson --ply ${WORK}/f.ply --svg ${WORK}/f.svg --quiet)
