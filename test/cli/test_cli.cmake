@@ -181,6 +181,7 @@ expect(synthetic_city 0 "\"layout\": \"organic\", \"intersections\": 48, .*\"tri
 expect(synthetic_city_again 0 "\"seed\": 5}" synthetic-city --layout organic --trips 200 --seed 5 --out-tracks ${WORK}/sc_t2.txt --out-vertices ${WORK}/sc_gv2.txt --out-edges ${WORK}/sc_ge2.txt --out-streets-vertices ${WORK}/sc_sv.txt --out-streets-edges ${WORK}/sc_se.txt)
 expect_same_file(${WORK}/sc_t.txt ${WORK}/sc_t2.txt "synthetic_city_again: tracks")
 expect_same_file(${WORK}/sc_gv.txt ${WORK}/sc_gv2.txt "synthetic_city_again: truth vertices")
+expect_same_file(${WORK}/sc_ge.txt ${WORK}/sc_ge2.txt "synthetic_city_again: truth edges")
 expect_count(${WORK}/sc_t.txt "^# trip_id x y t" 1)
 expect_count(${WORK}/sc_t.txt "\n200 " 0)
 expect(synthetic_city_map 0 "\"components\": 1," skeleton --tracks ${WORK}/sc_t.txt --out-vertices ${WORK}/sc_v.txt --out-edges ${WORK}/sc_e.txt --quiet)

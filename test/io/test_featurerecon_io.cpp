@@ -84,6 +84,10 @@ TEST(ScratchFiles, AreRemovedWhenTheTestEnds) {
   ASSERT_TRUE(std::ifstream(path).good());
   auto& remover = test::Scratch_file_remover::instance();
   ASSERT_EQ(remover.pending().size(), 1u);
+  // It is registered with gtest (Release hands back a listener only if it is in the list).
+  ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
+  ASSERT_EQ(listeners.Release(&remover), &remover);
+  listeners.Append(&remover);
   remover.OnTestEnd(*::testing::UnitTest::GetInstance()->current_test_info());  // what gtest calls at the end
   EXPECT_FALSE(std::ifstream(path).good());
   EXPECT_TRUE(remover.pending().empty());

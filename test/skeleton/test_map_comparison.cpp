@@ -277,8 +277,14 @@ TEST(TraceSupport, PinnedCases) {
   wide.radius = 20;
   EXPECT_EQ(along({trip_of({{-100, 15.01}, {100, 15.01}})}, wide), 1u);
   Trace_support_options any;
+  any.bearing_limit = 90;  // differences lie in [0, 90] and must be below the limit: perpendicular still fails
+  EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}, any), 0u);
   any.bearing_limit = 90.5;
   EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}, any), 1u);
+  // A glitch: a fix a million kilometres away costs nothing and counts where the segment passes.
+  EXPECT_EQ(along({trip_of({{-1e9, 0}, {1e9, 3}})}), 1u);
+  EXPECT_EQ(along({trip_of({{-1e12, -1e12}, {1e12, -1e12}})}), 0u);
+  EXPECT_EQ(along({trip_of({{-1e150, 0}, {1e150, 1}})}), 1u);
   EXPECT_TRUE(count_trips_along({}, {trip_of({{0, 0}, {1, 1}})}).empty());
 }
 
@@ -312,7 +318,7 @@ TEST(TraceSupport, AgreesWithBruteForce) {
       for (std::size_t i = 0; i + 1 < t.size() && !hit; ++i) {
         const double ax = t[i].x, ay = t[i].y, bx = t[i + 1].x, by = t[i + 1].y;
         if (ax == bx && ay == by) continue;
-        // distance by dense sampling refined with the exact projection
+        // every segment of every trip, without a grid: the projection onto the segment, clamped to its ends
         const double len2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
         double s = ((samples[j].position[0] - ax) * (bx - ax) + (samples[j].position[1] - ay) * (by - ay)) / len2;
         s = std::max(0.0, std::min(1.0, s));
@@ -391,4 +397,11 @@ TEST(TraceSupport, BadInputIsNamed) {
   EXPECT_NE(message({ok}, o).find("bearing_limit"), std::string::npos);
   o.bearing_limit = 0;
   EXPECT_NE(message({ok}, o).find("bearing_limit"), std::string::npos);
+  const std::vector<Map_sample> bad_samples{sample_at(0, 0, 90), sample_at(std::nan(""), 0, 90)};
+  try {
+    count_trips_along(bad_samples, {ok});
+    ADD_FAILURE() << "a NaN sample was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("sample 1"), std::string::npos) << e.what();
+  }
 }

@@ -430,6 +430,9 @@ TEST(SyntheticCity, GabrielEdgesOfDegenerateInput) {
   ASSERT_EQ(g.size(), 12u);
   for (const Edge& e : g)
     EXPECT_DOUBLE_EQ(std::hypot(grid[e[0]][0] - grid[e[1]][0], grid[e[0]][1] - grid[e[1]][1]), 1.0);
+  // Duplicates are refused, naming both points.
+  EXPECT_NE(message_of([] { gabriel_edges({{0, 0}, {1, 0}, {0, 0}, {0, 1}}); }).find("points 0 and 2 coincide"),
+            std::string::npos);
 }
 
 TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
@@ -511,6 +514,10 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
   // Deterministic for a seed.
   EXPECT_EQ(make_synthetic_city(o).streets.positions, c.streets.positions);
   Synthetic_city_options b;
+  b.columns = std::size_t(1) << 32;  // the product would wrap around
+  b.rows = std::size_t(1) << 32;
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("columns x rows"), std::string::npos);
+  b = {};
   b.curvature = 0.6;
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
   b.curvature = std::nan("");

@@ -395,66 +395,119 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
 
 /// Options of count_trips_along() and explain_trace_support().
 struct Trace_support_options {
-  double radius = 15.0;         ///< a trip drives along a sample when one of its segments passes this close (m)
-  double bearing_limit = 45.0;  ///< ... with a direction-insensitive bearing difference below this (degrees)
+  /// A trip drives along a sample when one of its segments passes this close (m); default 15 (the comparison's)
+  double radius = 15.0;
+  /// ... with a direction-insensitive bearing difference below this (degrees); above 90 every direction counts;
+  /// default 45 (the comparison's)
+  double bearing_limit = 45.0;
 };
 
 /// For each sample, the number of distinct trips that drive along it: trips with a segment between consecutive
 /// fixes that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
 /// less than `bearing_limit` from the sample's, regardless of direction. Segments between fixes at the same
 /// place have no bearing and count for nothing.
-/// \throws std::invalid_argument naming the option (radius not positive and finite, bearing limit not positive;
-///         90 or more accepts every direction) or the trip and fix with a non-finite coordinate.
+/// Time: linear in the total length of the segments (clipped to the samples' bounding box) over the radius, plus
+/// the samples met; a glitch fix far away costs nothing extra.
+/// \throws std::invalid_argument naming the option (radius not positive and finite, bearing limit not positive),
+///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate.
 inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
                                                   const std::vector<Gps_trip>& trips,
                                                   const Trace_support_options& options = {}) {
   const char* fn = "count_trips_along";
   if (!(options.radius > 0 && std::isfinite(options.radius)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be positive and finite, got ", options.radius);
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be positive and finite, got ",
+                                                   options.radius);
   if (!(options.bearing_limit > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be positive (degrees), got ",
                                                    options.bearing_limit);
   for (std::size_t t = 0; t < trips.size(); ++t)
     for (std::size_t i = 0; i < trips[t].size(); ++i)
       if (!std::isfinite(trips[t][i].x) || !std::isfinite(trips[t][i].y))
-        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " has a non-finite coordinate");
-  // Bucket the samples on a grid of cell `radius`; every segment visits the cells of its bounding box grown by
-  // the radius and counts its trip once per sample it passes (trips are visited in order, so a sample's last
-  // counted trip tells whether this one was counted already).
+        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i,
+                                                       " has a non-finite coordinate");
+  std::array<double, 4> box{0, 0, 0, 0};  // of the samples, grown by the radius
+  for (std::size_t j = 0; j < samples.size(); ++j) {
+    const auto& p = samples[j].position;
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
+      FeatureRecon::internal::throw_invalid_argument(fn, "sample ", j, " has a non-finite position");
+    if (j == 0) box = {p[0], p[1], p[0], p[1]};
+    box = {std::min(box[0], p[0]), std::min(box[1], p[1]), std::max(box[2], p[0]), std::max(box[3], p[1])};
+  }
+  box = {box[0] - options.radius, box[1] - options.radius, box[2] + options.radius, box[3] + options.radius};
+  // Bucket the samples on a grid of cell `radius`. Every segment is clipped to the box. A short one visits
+  // the cells of its bounding box grown by the radius; a long one is walked in steps of at most a cell, and a
+  // sample within the radius of it lies within 1.5 cells of a step point, so in the 5 x 5 cells around one.
+  // Each trip counts once per sample (trips are visited in order, so a sample's last counted trip tells
+  // whether this one was counted already).
   const double cell_size = options.radius;
-  auto cell = [cell_size](double v) { return static_cast<std::int64_t>(std::floor(v / cell_size)); };
+  // Clamped: no overflow for far-off coordinates (their keys may collide; the distances decide).
+  auto cell = [cell_size](double v) {
+    return static_cast<std::int64_t>(std::floor(std::clamp(v / cell_size, -4e18, 4e18)));
+  };
   auto key = [](std::int64_t cx, std::int64_t cy) {
     return (static_cast<std::uint64_t>(cx) << 32) ^ (static_cast<std::uint64_t>(cy) & 0xffffffffULL);
   };
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
   for (std::size_t j = 0; j < samples.size(); ++j)
-    grid[key(cell(samples[j].position[0]), cell(samples[j].position[1]))].push_back(static_cast<std::uint32_t>(j));
+    grid[key(cell(samples[j].position[0]), cell(samples[j].position[1]))].push_back(
+        static_cast<std::uint32_t>(j));
   std::vector<std::size_t> count(samples.size(), 0);
   std::vector<std::size_t> last_trip(samples.size(), std::numeric_limits<std::size_t>::max());
   const double r2 = options.radius * options.radius;
+  std::vector<std::uint64_t> cells;
   for (std::size_t t = 0; t < trips.size(); ++t)
     for (std::size_t i = 0; i + 1 < trips[t].size(); ++i) {
       const std::array<double, 2> a{trips[t][i].x, trips[t][i].y}, b{trips[t][i + 1].x, trips[t][i + 1].y};
       const double ux = b[0] - a[0], uy = b[1] - a[1], len2 = ux * ux + uy * uy;
       if (!(len2 > 0)) continue;
       const double bearing = internal::bearing_of(a, b);
-      const std::int64_t x0 = cell(std::min(a[0], b[0]) - options.radius), x1 = cell(std::max(a[0], b[0]) + options.radius);
-      const std::int64_t y0 = cell(std::min(a[1], b[1]) - options.radius), y1 = cell(std::max(a[1], b[1]) + options.radius);
-      for (std::int64_t cx = x0; cx <= x1; ++cx)
-        for (std::int64_t cy = y0; cy <= y1; ++cy) {
-          const auto it = grid.find(key(cx, cy));
-          if (it == grid.end()) continue;
-          for (const std::uint32_t j : it->second) {
-            if (last_trip[j] == t) continue;
-            const auto& p = samples[j].position;
-            const double s = std::clamp(((p[0] - a[0]) * ux + (p[1] - a[1]) * uy) / len2, 0.0, 1.0);
-            const double dx = a[0] + s * ux - p[0], dy = a[1] + s * uy - p[1];
-            if (dx * dx + dy * dy > r2) continue;
-            if (!(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit)) continue;
-            last_trip[j] = t;
-            ++count[j];
-          }
+      // Clip the parameter range [t0, t1] of a + t u to the box (Liang-Barsky).
+      double t0 = 0, t1 = 1;
+      for (const auto& [q, d] : {std::pair{a[0] - box[0], -ux}, std::pair{box[2] - a[0], ux},
+                                 std::pair{a[1] - box[1], -uy}, std::pair{box[3] - a[1], uy}}) {
+        if (d == 0) {
+          if (q < 0) t0 = 2;  // parallel and outside
+        } else if (d < 0) {
+          t0 = std::max(t0, q / d);
+        } else {
+          t1 = std::min(t1, q / d);
         }
+      }
+      if (!(t0 <= t1)) continue;
+      const double steps = std::ceil((t1 - t0) * std::sqrt(len2) / cell_size);
+      cells.clear();
+      if (steps <= 4) {  // short: the cells of its bounding box grown by the radius
+        const double xa = a[0] + t0 * ux, xb = a[0] + t1 * ux, ya = a[1] + t0 * uy, yb = a[1] + t1 * uy;
+        const std::int64_t x0 = cell(std::min(xa, xb) - options.radius),
+                           x1 = cell(std::max(xa, xb) + options.radius);
+        const std::int64_t y0 = cell(std::min(ya, yb) - options.radius),
+                           y1 = cell(std::max(ya, yb) + options.radius);
+        for (std::int64_t cx = x0; cx <= x1; ++cx)
+          for (std::int64_t cy = y0; cy <= y1; ++cy) cells.push_back(key(cx, cy));
+      } else {
+        for (double k = 0; k <= steps; ++k) {
+          const double u = steps > 0 ? t0 + (t1 - t0) * (k / steps) : t0;
+          const std::int64_t cx = cell(a[0] + u * ux), cy = cell(a[1] + u * uy);
+          for (std::int64_t dx = -2; dx <= 2; ++dx)
+            for (std::int64_t dy = -2; dy <= 2; ++dy) cells.push_back(key(cx + dx, cy + dy));
+        }
+        std::sort(cells.begin(), cells.end());
+        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+      }
+      for (const std::uint64_t c : cells) {
+        const auto it = grid.find(c);
+        if (it == grid.end()) continue;
+        for (const std::uint32_t j : it->second) {
+          if (last_trip[j] == t) continue;
+          const auto& p = samples[j].position;
+          const double s = std::clamp(((p[0] - a[0]) * ux + (p[1] - a[1]) * uy) / len2, 0.0, 1.0);
+          const double dx = a[0] + s * ux - p[0], dy = a[1] + s * uy - p[1];
+          if (dx * dx + dy * dy > r2) continue;
+          if (!(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit)) continue;
+          last_trip[j] = t;
+          ++count[j];
+        }
+      }
     }
   return count;
 }

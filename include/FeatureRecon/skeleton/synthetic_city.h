@@ -36,8 +36,9 @@ namespace skeleton {
 enum class Synthetic_city_layout {
   grid,    ///< a columns x rows grid of blocks, jittered, with a diagonal avenue
   organic  ///< columns x rows random intersections in the grid's rectangle, at least 0.6 sqrt(block_width x
-           ///< block_height) apart (dart throwing), joined by the streets of their Gabriel graph: junctions of
-           ///< any degree and angle, blocks of any shape
+           ///< block_height) apart (dart throwing; the spacing shrinks by 5 % whenever 1000 x columns x rows darts
+           ///< in a row miss, which only happens in a rectangle too small for them), joined by the streets of
+           ///< their Gabriel graph: junctions of any degree and angle, blocks of any shape
 };
 
 /// Options of make_synthetic_city(). Lengths in metres, times in seconds.
@@ -52,7 +53,9 @@ struct Synthetic_city_options {
   double missing_streets = 0.1;  ///< fraction of streets removed, keeping the network connected; default 0.1
   bool diagonal = true;          ///< grid: a diagonal avenue through the intersections (i, i); default true
   /// Each street bends as a parabola whose middle lies up to curvature x its length (uniformly, either side) off
-  /// the chord, drawn as a polyline with pieces of at most 10 m; 0 keeps streets straight. In [0, 0.5]; default 0
+  /// the chord, drawn as a polyline with pieces of at most 10 m (at most 1000 pieces); 0 keeps streets straight.
+  /// Bent streets may cross without a junction, like an overpass (the default organic city has 2 such crossings
+  /// at 0.15, about 20 at 0.3). In [0, 0.5]; default 0
   double curvature = 0;
   std::size_t trips = 300;       ///< default 300
   double speed = 10;             ///< mean driving speed; each trip drives at 0.7 to 1.3 times it; default 10
@@ -65,8 +68,8 @@ struct Synthetic_city_options {
 
 /// Result of make_synthetic_city().
 struct Synthetic_city {
-  /// The street network (centre lines): the intersections first (vertex j x columns + i is the grid's (i, j)),
-  /// then the inner points of bent streets, each street's in order.
+  /// The street network (centre lines): the columns x rows intersections first (in the grid layout vertex
+  /// j x columns + i is the grid's (i, j)), then the inner points of bent streets, each street's in order.
   Embedded_graph_2 streets;
   Embedded_graph_2 driven;    ///< the streets at least one trip used: the ground truth of a road map
   std::vector<Gps_trip> trips;  ///< the recorded fixes (trip k starts at time 10000 k)
@@ -76,14 +79,20 @@ namespace internal {
 /// The edges of the Gabriel graph of distinct points (pairs whose diametral disc holds no other point), from
 /// their Delaunay triangulation with exact predicates; sorted, each as (smaller index, larger index). A point on
 /// the boundary of a diametral disc removes the edge.
+/// \throws std::invalid_argument naming two points that coincide.
 inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>& points) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<Vertex_index, K>;
   using Tds = CGAL::Triangulation_data_structure_2<Vb>;
   using Dt = CGAL::Delaunay_triangulation_2<K, Tds>;
   Dt dt;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    dt.insert(K::Point_2(points[i][0], points[i][1]))->info() = static_cast<Vertex_index>(i);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t before = dt.number_of_vertices();
+    const auto v = dt.insert(K::Point_2(points[i][0], points[i][1]));
+    if (dt.number_of_vertices() == before)
+      FeatureRecon::internal::throw_invalid_argument("gabriel_edges", "points ", v->info(), " and ", i, " coincide");
+    v->info() = static_cast<Vertex_index>(i);
+  }
   std::vector<Edge> edges;
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
     const auto f = e->first;
@@ -107,11 +116,15 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
 /// Builds a synthetic city and its GPS trips (see the file comment).
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or non-finite
 ///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a missing
-///         fraction outside [0, 1] or a curvature outside [0, 0.5].
+///         fraction outside [0, 1], a curvature outside [0, 0.5], or more than 2^24 intersections or 2^31
+///         street vertices.
 inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
   const char* fn = "make_synthetic_city";
   using FeatureRecon::internal::throw_invalid_argument;
   if (o.columns < 2 || o.rows < 2) throw_invalid_argument(fn, "columns and rows must be >= 2, got ", o.columns, " and ", o.rows);
+  constexpr std::size_t max_intersections = std::size_t(1) << 24;
+  if (o.columns > max_intersections / o.rows)
+    throw_invalid_argument(fn, "columns x rows must be at most 2^24 intersections, got ", o.columns, " x ", o.rows);
   auto positive = [&](double v, const char* name) {
     if (!(v > 0 && std::isfinite(v))) throw_invalid_argument(fn, name, " must be positive and finite, got ", v);
   };
@@ -218,7 +231,9 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
       const double L = std::hypot(r[0] - p[0], r[1] - p[1]);
       const double bend = o.curvature * L * (2 * random() - 1);  // the middle's distance off the chord
       const double cx = (p[0] + r[0]) / 2 + 2 * bend * (p[1] - r[1]) / L, cy = (p[1] + r[1]) / 2 + 2 * bend * (r[0] - p[0]) / L;
-      const auto pieces = static_cast<std::size_t>(std::ceil(L * (1 + 4 * o.curvature) / 10));
+      const auto pieces = static_cast<std::size_t>(std::min(1000.0, std::ceil(L * (1 + 4 * o.curvature) / 10)));
+      if (city.streets.positions.size() + pieces > (std::size_t(1) << 31))
+        throw_invalid_argument(fn, "the bent streets need more than 2^31 vertices: blocks too large");
       std::vector<Vertex_index> bent{l[0]};
       for (std::size_t i = 1; i < pieces; ++i) {
         const double t = double(i) / double(pieces), u = 1 - t;
