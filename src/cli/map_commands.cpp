@@ -111,10 +111,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     counts("spurious", b.spurious);
   }
   if (args.has("tracks")) {
-    Trace_support_options so;
-    so.radius = options.match_distance;
-    so.bearing_limit = options.bearing_limit;
-    const Trace_support_breakdown b = explain_trace_support(r, trips, so);
+    const Trace_support_breakdown b = explain_trace_support(r, trips, trace_support_options(options));
     auto list = [&os](const char* name, const std::array<std::size_t, 4>& c) {
       os << "\"" << name << "\": [" << c[0] << ", " << c[1] << ", " << c[2] << ", " << c[3] << "], ";
     };

@@ -371,6 +371,17 @@ TEST(TraceSupport, SplitsAComparisonByTheTripsAlongItsSamples) {
   EXPECT_GT(b.spurious_by_trips[1], 20u);
   EXPECT_EQ(b.spurious_by_trips[0] + b.spurious_by_trips[2] + b.spurious_by_trips[3], 0u);
   EXPECT_EQ(b.spurious_by_trips[1], r.reconstruction_samples - r.matched);
+  // With a 1 m threshold the trips 2 m beside the southern street no longer drive along it: the options that go
+  // with a comparison carry its threshold and bearing limit.
+  Map_comparison_options tight = o;
+  tight.match_distance = 1;
+  tight.bearing_limit = 30;
+  const Trace_support_options so = trace_support_options(tight);
+  EXPECT_EQ(so.radius, 1.0);
+  EXPECT_EQ(so.bearing_limit, 30.0);
+  const Trace_support_breakdown t = explain_trace_support(compare_maps(truth, rec, tight), trips, so);
+  EXPECT_EQ(t.ground_truth_by_trips[1], street);  // only the trip driving on the centre line (y = 0)
+  EXPECT_EQ(t.ground_truth_driven, street);
 }
 
 TEST(TraceSupport, BadInputIsNamed) {

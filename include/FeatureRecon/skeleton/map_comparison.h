@@ -402,6 +402,14 @@ struct Trace_support_options {
   double bearing_limit = 45.0;
 };
 
+/// The trace-support options that go with a comparison: its match distance as the radius, its bearing limit.
+inline Trace_support_options trace_support_options(const Map_comparison_options& comparison) {
+  Trace_support_options o;
+  o.radius = comparison.match_distance;
+  o.bearing_limit = comparison.bearing_limit;
+  return o;
+}
+
 /// For each sample, the number of distinct trips that drive along it: trips with a segment between consecutive
 /// fixes that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
 /// less than `bearing_limit` from the sample's, regardless of direction. Segments between fixes at the same
@@ -530,7 +538,8 @@ inline std::size_t trip_count_bin(std::size_t trips) { return trips == 0 ? 0 : t
 /// Splits the samples of a comparison by the number of trips that drive along them (count_trips_along()): which
 /// part of the truth no trip drives along (no reconstruction from these traces can be expected to find it), the
 /// recall within the driven part, and how well the spurious lines are supported. The default radius and bearing
-/// limit are those of Map_comparison_options; pass the comparison's own when they differ.
+/// limit are those of Map_comparison_options; for other comparison options pass
+/// trace_support_options(comparison_options).
 /// \pre `r` was computed with options.keep_samples (checked; throws).
 inline Trace_support_breakdown explain_trace_support(const Map_comparison_result& r, const std::vector<Gps_trip>& trips,
                                                      const Trace_support_options& options = {}) {
