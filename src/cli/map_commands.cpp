@@ -3,6 +3,7 @@
 // Subcommand evaluate-map: the graph-sampling metric of a reconstructed road map against a ground truth.
 
 #include <FeatureRecon/skeleton/map_comparison.h>
+#include <FeatureRecon/skeleton/road_map.h>
 #include <FeatureRecon/skeleton/synthetic_city.h>
 
 #include <CGAL/Fuzzy_sphere.h>
@@ -185,12 +186,7 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
   if (args.has("out-streets-vertices"))
     io::write_map(args.get("out-streets-vertices"), args.get("out-streets-edges"), city.streets.positions,
                   city.streets.edges);
-  auto length = [](const Embedded_graph_2& g) {
-    double sum = 0;
-    for (const Edge& e : g.edges)
-      sum += std::hypot(g.positions[e[1]][0] - g.positions[e[0]][0], g.positions[e[1]][1] - g.positions[e[0]][1]);
-    return sum;
-  };
+  auto length = [](const Embedded_graph_2& g) { return skeleton::internal::map_length(g.positions, g.edges); };
   std::ostringstream os;
   os << "{\"layout\": \"" << layout << "\", \"intersections\": " << o.columns * o.rows
      << ", \"vertices\": " << city.streets.positions.size() << ", \"street_edges\": " << city.streets.edges.size()
