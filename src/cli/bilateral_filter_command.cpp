@@ -73,6 +73,7 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
     if (ext != "png" && ext != "jpg" && ext != "jpeg" && ext != "pgm" && ext != "ppm")
       throw Usage_error("pictures are written as PNG, JPEG, PGM or PPM, got '" + file + "'");
   }
+  Outputs outputs(args, {"out", "exact-out"});
 
   io::Image image = io::read_image(input);
   if (args.has("grey")) image = io::to_grey(image);
@@ -97,12 +98,13 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
     progress.done(detail);
     seconds = progress.seconds();
   }
-  io::write_image(out, rounded(image, sampled.values));
-  if (args.has("exact-out")) io::write_image(args.get("exact-out"), rounded(image, exact.values));
+  io::write_image(outputs.path("out"), rounded(image, sampled.values));
+  if (args.has("exact-out")) io::write_image(outputs.path("exact-out"), rounded(image, exact.values));
+  outputs.commit();
 
   const int radius = o.kernel.radius > 0 ? o.kernel.radius : std::max(1, int(std::ceil(2 * o.kernel.sigma_spatial)));
   std::ostringstream os;
-  os << "{\"input\": \"" << input << "\", \"width\": " << image.width << ", \"height\": " << image.height
+  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width << ", \"height\": " << image.height
      << ", \"channels\": " << image.channels << ", \"sampling\": \"" << sampling << "\", \"mode\": \""
      << (sampling == "exact" ? "exact" : mode) << "\", \"budget\": " << json_number(sampling == "exact" ? 1 : o.budget)
      << ", \"taps_per_kernel_pixel\": " << json_number(sampled.taps_per_kernel_pixel)

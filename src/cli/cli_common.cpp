@@ -2,12 +2,17 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 #include "cli_common.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <set>
+
+#include "../io/featurerecon_io.h"
 
 namespace FeatureRecon {
 namespace cli {
@@ -34,6 +39,9 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::vector<std
       } else if (known(valued, name)) {
         if (!inline_value) {
           if (i + 1 >= args.size()) throw Usage_error("option --" + name + " needs a value");
+          // "--radius --out x": the value was forgotten (a value starting with "--" goes as --radius=--x).
+          if (args[i + 1].compare(0, 2, "--") == 0)
+            throw Usage_error("option --" + name + " needs a value, got the option '" + args[i + 1] + "'");
           value = args[++i];
         }
         m_values[name] = value;
@@ -113,6 +121,64 @@ void Progress::done(const std::string& details) {
   if (m_quiet) return;
   std::fprintf(stderr, "%s%s: done%s%s%s in %.2f s\n", m_tty ? "\r" : "", m_stage.c_str(), details.empty() ? "" : " (",
                details.c_str(), details.empty() ? "" : ")", seconds());
+}
+
+Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options) {
+  std::set<std::string> targets;
+  for (const std::string& name : options) {
+    if (!args.has(name)) continue;
+    const std::string path = args.get(name);
+    if (path.empty()) throw Usage_error("--" + name + " needs a file name");
+    if (!targets.insert(path).second) throw Usage_error("--" + name + ": " + path + " is also written by another option");
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+      throw Usage_error("--" + name + ": " + path + " is a directory");
+    const std::size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+      throw Usage_error("--" + name + ": the directory " + dir + " of " + path + " does not exist");
+    if (::access(dir.c_str(), W_OK | X_OK) != 0)
+      throw Usage_error("--" + name + ": cannot write into the directory " + dir + " (" + std::strerror(errno) + ")");
+    m_targets[name] = path;
+  }
+}
+
+Outputs::~Outputs() {
+  for (const auto& f : m_staged) std::remove(f.second.c_str());
+}
+
+std::string Outputs::path(const std::string& name) {
+  const auto it = m_targets.find(name);
+  if (it == m_targets.end()) throw std::logic_error("Outputs::path: --" + name + " is not a checked output");
+  for (const auto& f : m_staged)
+    if (f.first == it->second) return f.second;
+  m_staged.emplace_back(it->second, io::temporary_beside(it->second));
+  return m_staged.back().second;
+}
+
+void Outputs::commit() {
+  // Renames cannot be undone, but they fail only in odd cases (the directory vanished): the writing, which fails
+  // for full disks and the like, is over by now.
+  for (const auto& f : m_staged) io::move_into_place(f.second, f.first);
+  m_staged.clear();
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", u);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
 }
 
 std::string json_number(double x) {

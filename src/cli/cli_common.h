@@ -10,6 +10,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace FeatureRecon {
@@ -56,8 +57,35 @@ class Progress {
   std::chrono::steady_clock::time_point m_start, m_last;
 };
 
+/// The files one command writes, made to appear together. The constructor checks every given output option
+/// before any work is done (a file name, not a directory, in an existing writable directory, no file named twice;
+/// Usage_error naming the option otherwise). path() hands out a new temporary file beside the target (same
+/// extension) for the writers; commit() renames them all into place once everything is written. Destroyed
+/// without commit() (an error), it removes the temporaries: a failed run leaves neither partial output nor a
+/// new vertices file beside an old edges file, and earlier files of the same names stay as they were.
+class Outputs {
+ public:
+  Outputs(const Arguments& args, const std::vector<std::string>& options);
+  Outputs(const Outputs&) = delete;
+  Outputs& operator=(const Outputs&) = delete;
+  ~Outputs();
+  bool has(const std::string& name) const { return m_targets.count(name) != 0; }
+  /// The target file of an output option (for messages and JSON).
+  const std::string& target(const std::string& name) const { return m_targets.at(name); }
+  /// The temporary file to write the output of option `name` to (created on the first call).
+  std::string path(const std::string& name);
+  void commit();
+
+ private:
+  std::map<std::string, std::string> m_targets;                 // option -> target file
+  std::vector<std::pair<std::string, std::string>> m_staged;    // (target, temporary)
+};
+
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);
+
+/// Quotes a string for JSON (", \ and control characters escaped).
+std::string json_string(const std::string& s);
 
 }  // namespace cli
 }  // namespace FeatureRecon

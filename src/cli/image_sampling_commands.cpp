@@ -256,6 +256,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
   s.seed = static_cast<std::uint64_t>(seed);
   if (!args.has("out") && !args.has("svg") && !args.has("picture") && !args.has("mosaic"))
     throw Usage_error("give at least one of --out FILE, --svg FILE, --picture FILE, --mosaic FILE");
+  Outputs outputs(args, {"out", "svg", "picture", "mosaic"});
 
   io::Image image = io::read_image(input);
   if (args.has("grey")) image = io::to_grey(image);
@@ -282,18 +283,19 @@ int run_sample_image(const std::vector<std::string>& argv) {
                                                            : fs::Sampling_quality();
   const double d_hex = samples.empty() ? 1.0 : std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(samples.size())));
   const double dot = 0.3 * d_hex;
-  if (args.has("out")) write_samples(args.get("out"), samples, std::size_t(image.channels));
-  if (args.has("svg")) write_samples_svg(args.get("svg"), samples, image.width, image.height, dot);
-  if (args.has("picture")) write_samples_raster(args.get("picture"), samples, image.width, image.height, dot);
+  if (args.has("out")) write_samples(outputs.path("out"), samples, std::size_t(image.channels));
+  if (args.has("svg")) write_samples_svg(outputs.path("svg"), samples, image.width, image.height, dot);
+  if (args.has("picture")) write_samples_raster(outputs.path("picture"), samples, image.width, image.height, dot);
   double mosaic_psnr = std::numeric_limits<double>::quiet_NaN();
   if (args.has("mosaic")) {
     const io::Image mosaic = make_mosaic(samples, image.width, image.height);
     mosaic_psnr = psnr(image, mosaic);
-    io::write_image(args.get("mosaic"), mosaic);
+    io::write_image(outputs.path("mosaic"), mosaic);
   }
+  outputs.commit();
 
   std::ostringstream os;
-  os << "{\"input\": \"" << input << "\", \"width\": " << image.width << ", \"height\": " << image.height
+  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width << ", \"height\": " << image.height
      << ", \"channels\": " << image.channels << ", \"method\": \"" << s.method << "\", \"samples\": " << samples.size()
      << ", \"radius\": " << json_number(used_radius) << ", \"sigma_feature\": " << json_number(s.sigma_feature)
      << ", \"seed\": " << seed << ", \"relative_radius\": " << json_number(quality.relative_radius)

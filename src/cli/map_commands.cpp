@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "../io/featurerecon_io.h"
@@ -76,6 +77,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   if (args.has("interval")) options.interval = args.get_positive_double("interval");
   if (args.has("bearing")) options.bearing_limit = args.get_positive_double("bearing");
   if (args.has("crop-radius") && !args.has("crop-to-tracks")) throw Usage_error("--crop-radius goes with --crop-to-tracks");
+  Outputs outputs(args, {"samples-out", "svg"});
   const auto& p = args.positional();
   Embedded_graph_2 gt = to_graph(io::read_map(p[0], p[1]));
   const Embedded_graph_2 rec = to_graph(io::read_map(p[2], p[3]));
@@ -92,8 +94,9 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     }
   options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
   const Map_comparison_result r = compare_maps(gt, rec, options);
-  if (args.has("samples-out")) io::write_map_comparison_csv(args.get("samples-out"), r);
-  if (args.has("svg")) io::write_map_comparison_svg(args.get("svg"), r);
+  if (args.has("samples-out")) io::write_map_comparison_csv(outputs.path("samples-out"), r);
+  if (args.has("svg")) io::write_map_comparison_svg(outputs.path("svg"), r);
+  outputs.commit();
   std::ostringstream os;
   os << "{\"precision\": " << json_number(r.precision) << ", \"recall\": " << json_number(r.recall)
      << ", \"f_score\": " << json_number(r.f_score) << ", \"matched\": " << r.matched
@@ -137,35 +140,47 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     if (!args.has(required)) throw Usage_error(std::string("--") + required + " is required");
   if (args.has("out-streets-vertices") != args.has("out-streets-edges"))
     throw Usage_error("--out-streets-vertices and --out-streets-edges go together");
+  Outputs outputs(args, {"out-tracks", "out-vertices", "out-edges", "out-streets-vertices", "out-streets-edges"});
   Synthetic_city_options o;
   const std::string layout = args.get_or("layout", "grid");
   if (layout == "organic")
     o.layout = Synthetic_city_layout::organic;
   else if (layout != "grid")
     throw Usage_error("--layout must be grid or organic, got '" + layout + "'");
-  auto count = [&](const char* name, std::size_t& field) {
+  // Ranges are checked here so that the message names the option (the library names its fields).
+  auto count = [&](const char* name, std::size_t& field, long long least) {
     if (!args.has(name)) return;
     const long long v = args.get_int(name);
-    if (v < 0) throw Usage_error(std::string("--") + name + " must be >= 0");
+    if (v < least) throw Usage_error(std::string("--") + name + " must be >= " + std::to_string(least));
     field = static_cast<std::size_t>(v);
   };
-  count("columns", o.columns);
-  count("rows", o.rows);
-  count("trips", o.trips);
-  auto number = [&](const char* name, double& field) {
-    if (args.has(name)) field = args.get_double(name);
+  count("columns", o.columns, 2);
+  count("rows", o.rows, 2);
+  count("trips", o.trips, 0);
+  if (o.columns > (std::size_t(1) << 24) / o.rows)
+    throw Usage_error("--columns x --rows must be at most 2^24 intersections");
+  // A value in [low, high]; `open_low`: strictly above low.
+  auto number = [&](const char* name, double& field, double low, bool open_low, double high) {
+    if (!args.has(name)) return;
+    const double v = args.get_double(name);
+    if (open_low ? !(v > low) : !(v >= low))
+      throw Usage_error(std::string("--") + name + " must be " + (open_low ? "> " : ">= ") + json_number(low) +
+                        ", got '" + args.get(name) + "'");
+    if (v > high) throw Usage_error(std::string("--") + name + " must be <= " + json_number(high) + ", got '" + args.get(name) + "'");
+    field = v;
   };
-  number("block-width", o.block_width);
-  number("block-height", o.block_height);
-  number("rotation", o.rotation);
-  number("jitter", o.jitter);
-  number("missing", o.missing_streets);
-  number("curvature", o.curvature);
-  number("speed", o.speed);
-  number("interval", o.sampling_interval);
-  number("noise", o.noise);
-  number("bias", o.trip_bias);
-  number("lane-offset", o.lane_offset);
+  const double any = std::numeric_limits<double>::max();
+  number("block-width", o.block_width, 0, true, any);
+  number("block-height", o.block_height, 0, true, any);
+  number("rotation", o.rotation, -any, false, any);
+  number("jitter", o.jitter, 0, false, any);
+  number("missing", o.missing_streets, 0, false, 1);
+  number("curvature", o.curvature, 0, false, 0.5);
+  number("speed", o.speed, 0, true, any);
+  number("interval", o.sampling_interval, 0, true, any);
+  number("noise", o.noise, 0, false, any);
+  number("bias", o.trip_bias, 0, false, any);
+  number("lane-offset", o.lane_offset, 0, false, any);
   if (args.has("seed")) {
     const long long seed = args.get_int("seed");
     if (seed < 0) throw Usage_error("--seed must be >= 0");
@@ -174,18 +189,18 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
   const Synthetic_city city = make_synthetic_city(o);  // names a bad option (std::invalid_argument)
   std::string tracks = "# trip_id x y t  (synthetic city, metres and seconds)\n";
   std::size_t fixes = 0;
-  char buf[160];
   for (std::size_t t = 0; t < city.trips.size(); ++t)
     for (const Gps_fix& f : city.trips[t]) {
-      std::snprintf(buf, sizeof buf, "%zu %.6f %.6f %.3f\n", t, f.x, f.y, f.time);
-      tracks += buf;
+      tracks += std::to_string(t) + " " + io::format_double(f.x) + " " + io::format_double(f.y) + " " +
+                io::format_double(f.time) + "\n";
       ++fixes;
     }
-  io::write_text_file(args.get("out-tracks"), tracks);
-  io::write_map(args.get("out-vertices"), args.get("out-edges"), city.driven.positions, city.driven.edges);
+  io::write_text_file(outputs.path("out-tracks"), tracks);
+  io::write_map(outputs.path("out-vertices"), outputs.path("out-edges"), city.driven.positions, city.driven.edges);
   if (args.has("out-streets-vertices"))
-    io::write_map(args.get("out-streets-vertices"), args.get("out-streets-edges"), city.streets.positions,
+    io::write_map(outputs.path("out-streets-vertices"), outputs.path("out-streets-edges"), city.streets.positions,
                   city.streets.edges);
+  outputs.commit();
   auto length = [](const Embedded_graph_2& g) { return skeleton::internal::map_length(g.positions, g.edges); };
   std::ostringstream os;
   os << "{\"layout\": \"" << layout << "\", \"intersections\": " << o.columns * o.rows

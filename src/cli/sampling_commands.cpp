@@ -45,6 +45,7 @@ int run_sample(const std::vector<std::string>& argv) {
                        {"input", "count", "radius", "method", "sigma-position", "sigma-feature", "seed", "out",
                         "normal-neighbors"});
   const std::string input = args.get("input"), output = args.get("out");
+  Outputs outputs(args, {"out"});
   const std::string method = args.get_or("method", "elimination");
   if (method != "elimination" && method != "darts")
     throw Usage_error("--method must be elimination or darts, got '" + method + "'");
@@ -117,7 +118,8 @@ int run_sample(const std::vector<std::string>& argv) {
   }
   progress.done(std::to_string(kept.size()) + " of " + std::to_string(items.size()) + " points kept");
   const double seconds = progress.seconds();
-  io::write_point_cloud(output, cloud, kept);
+  io::write_point_cloud(outputs.path("out"), cloud, kept);
+  outputs.commit();
 
   // Spacing of the result on the input's domain (surface area or volume as the elimination estimates it).
   const auto [dimension, measure] = domain_of(cloud.points);
@@ -136,7 +138,7 @@ int run_sample(const std::vector<std::string>& argv) {
     bilateral_rho = fs::sampling_quality(kept_items, q, traits).relative_radius;
   }
   std::ostringstream os;
-  os << "{\"input\": \"" << input << "\", \"points\": " << items.size() << ", \"kept\": " << kept.size()
+  os << "{\"input\": " << json_string(input) << ", \"points\": " << items.size() << ", \"kept\": " << kept.size()
      << ", \"method\": \"" << method << "\", \"radius\": " << json_number(used_radius)
      << ", \"sigma_position\": " << json_number(sigma_position) << ", \"sigma_feature\": " << json_number(sigma_feature)
      << ", \"normals\": \"" << normals << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
@@ -144,7 +146,7 @@ int run_sample(const std::vector<std::string>& argv) {
      << ", \"domain_measure\": " << json_number(measure) << ", \"relative_radius\": " << json_number(quality.relative_radius)
      << ", \"bilateral_relative_radius\": " << json_number(bilateral_rho)
      << ", \"average_minimum_distance\": " << json_number(quality.average_minimum_distance)
-     << ", \"seconds\": " << json_number(seconds) << ", \"output\": \"" << output << "\"}\n";
+     << ", \"seconds\": " << json_number(seconds) << ", \"output\": " << json_string(output) << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;
 }
@@ -155,6 +157,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
                         "max-frequency"});
   if (args.has("spectrum") && !args.has("periodic"))
     throw Usage_error("--spectrum needs --periodic (2D samples on the unit torus)");
+  Outputs outputs(args, {"spectrum"});
   fs::Sampling_spectrum_options spectrum_options;
   if (args.has("max-frequency")) {
     if (!args.has("periodic")) throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
@@ -218,7 +221,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
           for (std::size_t b = 0; b < spectrum.frequency.size(); ++b)
             csv << json_number(spectrum.frequency[b]) << ',' << json_number(spectrum.radial_power[b]) << ','
                 << json_number(spectrum.anisotropy[b]) << '\n';
-          io::write_text_file(args.get("spectrum"), csv.str());
+          io::write_text_file(outputs.path("spectrum"), csv.str());
+          outputs.commit();
         }
       }
     } else if (f.dimension == 3) {
@@ -232,7 +236,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     }
   }
   std::ostringstream os;
-  os << "{\"input\": \"" << input << "\", \"samples\": " << q.samples << ", \"dimension\": " << dimension
+  os << "{\"input\": " << json_string(input) << ", \"samples\": " << q.samples << ", \"dimension\": " << dimension
      << ", \"intrinsic_dimension\": " << (o.intrinsic_dimension == 0 ? int(dimension) : o.intrinsic_dimension)
      << ", \"domain_measure\": " << json_number(o.domain_measure) << ", \"periodic\": " << (o.periodic ? "true" : "false")
      << ", \"hexagonal_distance\": " << json_number(q.hexagonal_distance)

@@ -17,6 +17,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <array>
+#include <limits>
 #include <map>
 #include <cstdio>
 #include <sstream>
@@ -36,6 +38,7 @@ int run_rips(const std::vector<std::string>& argv) {
   const std::string points_path = args.get("points");
   const std::string out_path = args.get("out");
   if (args.has("radius") == args.has("knn")) throw Usage_error("give exactly one of --radius R and --knn K");
+  Outputs outputs(args, {"out"});
   Proximity_graph_options options;
   const std::string search = args.get_or("search", "auto");
   if (search == "auto")
@@ -85,7 +88,8 @@ int run_rips(const std::vector<std::string>& argv) {
   std::vector<std::array<double, 3>> positions(m.rows, {0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < m.rows; ++i)
     for (std::size_t c = 0; c < std::min<std::size_t>(3, m.dimension); ++c) positions[i][c] = m.row(i)[c];
-  io::write_complex(out_path, K, positions, geo.values.empty() ? std::vector<double>(m.rows, 0.0) : geo.values);
+  io::write_complex(outputs.path("out"), K, positions, geo.values.empty() ? std::vector<double>(m.rows, 0.0) : geo.values);
+  outputs.commit();
   std::printf("wrote %s: %zu vertices, %zu edges, %zu triangles, %zu components (dimension %zu)\n", out_path.c_str(),
               K.number_of_vertices, K.number_of_edges(), K.number_of_triangles(), geo.base_points.size(),
               m.dimension);
@@ -161,24 +165,31 @@ int run_reeb(const std::vector<std::string>& argv) {
 }
 
 namespace {
-/// Greedy thinning in input order: a point is kept when no kept point lies within `spacing` (hash grid).
+/// Greedy thinning in input order: a point is kept when no kept point lies within `spacing`. Kept points are
+/// hashed by the cells of their first (up to) three coordinates: points within `spacing` lie in neighbouring cells
+/// of any projection, so 27 cells are probed in any dimension (not 3^d), and the distance is checked in full.
 std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
   std::vector<std::size_t> kept;
   if (spacing <= 0) {
     for (std::size_t i = 0; i < m.rows; ++i) kept.push_back(i);
     return kept;
   }
-  std::map<std::vector<long long>, std::vector<std::size_t>> grid;
-  std::vector<long long> cell(m.dimension);
+  const std::size_t hashed = std::min<std::size_t>(m.dimension, 3);
+  std::size_t probes = 1;
+  for (std::size_t c = 0; c < hashed; ++c) probes *= 3;
+  std::map<std::array<long long, 3>, std::vector<std::size_t>> grid;
   for (std::size_t i = 0; i < m.rows; ++i) {
-    for (std::size_t c = 0; c < m.dimension; ++c) cell[c] = static_cast<long long>(std::floor(m.row(i)[c] / spacing));
+    std::array<long long, 3> cell{0, 0, 0};
+    for (std::size_t c = 0; c < hashed; ++c) {
+      // Clamped so that far-out coordinates cannot overflow the cast (they only share cells, checked exactly).
+      const double q = std::floor(m.row(i)[c] / spacing);
+      cell[c] = static_cast<long long>(std::max(-4e18, std::min(4e18, q)));
+    }
     bool close = false;
-    // Neighbouring cells (3^d; used for GPS in 2D).
-    std::vector<long long> probe(cell);
-    const std::size_t combos = static_cast<std::size_t>(std::pow(3.0, static_cast<double>(m.dimension)));
-    for (std::size_t k = 0; k < combos && !close; ++k) {
+    for (std::size_t k = 0; k < probes && !close; ++k) {
+      std::array<long long, 3> probe = cell;
       std::size_t r = k;
-      for (std::size_t c = 0; c < m.dimension; ++c, r /= 3) probe[c] = cell[c] + static_cast<long long>(r % 3) - 1;
+      for (std::size_t c = 0; c < hashed; ++c, r /= 3) probe[c] = cell[c] + static_cast<long long>(r % 3) - 1;
       const auto it = grid.find(probe);
       if (it == grid.end()) continue;
       for (const std::size_t j : it->second) {
@@ -216,6 +227,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   const bool gps = args.has("tracks");
   double radius = args.has("radius") ? args.get_positive_double("radius") : 0.0;
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
+  Outputs outputs(args, {"out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   Skeleton_options options;
   options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : radius;
   if (options.delta < 0) throw Usage_error("--delta must be >= 0");
@@ -267,9 +279,25 @@ int run_skeleton(const std::vector<std::string>& argv) {
     s = extract_reeb_skeleton(m, radius, options);
   } else if (args.has("distance-matrix")) {
     const io::Point_file pf = io::read_points(args.get("distance-matrix"));
+    const std::string& path = args.get("distance-matrix");
     if (pf.dimension != pf.size())
-      throw Usage_error(args.get("distance-matrix") + ": a distance matrix needs n rows of n numbers; got " +
-                        std::to_string(pf.size()) + " rows of " + std::to_string(pf.dimension));
+      throw io::Input_error(path + ": a distance matrix needs n rows of n numbers; got " + std::to_string(pf.size()) +
+                            " rows of " + std::to_string(pf.dimension));
+    // Checked here too (the library checks the same) so that the message names the line of the file.
+    const std::size_t n = pf.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* row = pf.coordinates.data() + i * n;
+      const std::string at = path + ":" + std::to_string(pf.lines[i]) + ": ";
+      if (row[i] != 0) throw io::Input_error(at + "the diagonal entry of row " + std::to_string(i) + " is not 0");
+      for (std::size_t j = 0; j < n; ++j) {
+        if (row[j] < 0)
+          throw io::Input_error(at + "negative distance in column " + std::to_string(j) + " of row " + std::to_string(i));
+        if (j < i && row[j] != pf.coordinates[j * n + i])
+          throw io::Input_error(at + "not symmetric: entry (" + std::to_string(i) + ", " + std::to_string(j) + ") is " +
+                                json_number(row[j]) + ", entry (" + std::to_string(j) + ", " + std::to_string(i) +
+                                ") on line " + std::to_string(pf.lines[j]) + " is " + json_number(pf.coordinates[j * n + i]));
+      }
+    }
     Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> D(
         pf.coordinates.data(), static_cast<Eigen::Index>(pf.size()), static_cast<Eigen::Index>(pf.size()));
     input_points = pf.size();
@@ -355,15 +383,16 @@ int run_skeleton(const std::vector<std::string>& argv) {
   // Map output: nodes first, then the interior points of every arc's polyline.
   const Skeleton_graph& graph = use_merged ? merged : s.graph;
   const Embedded_graph_2 map = skeleton_to_road_map(graph);
-  io::write_map(out_v, out_e, map.positions, map.edges);
-  if (args.has("graphml")) io::write_skeleton_graphml(args.get("graphml"), graph);
-  if (args.has("geojson")) io::write_skeleton_geojson(args.get("geojson"), graph);
-  if (args.has("ply")) io::write_skeleton_ply(args.get("ply"), graph);
+  io::write_map(outputs.path("out-vertices"), outputs.path("out-edges"), map.positions, map.edges);
+  if (args.has("graphml")) io::write_skeleton_graphml(outputs.path("graphml"), graph);
+  if (args.has("geojson")) io::write_skeleton_geojson(outputs.path("geojson"), graph);
+  if (args.has("ply")) io::write_skeleton_ply(outputs.path("ply"), graph);
   if (args.has("svg")) {
     std::vector<std::array<double, 2>> xy;
     for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
-    io::write_skeleton_svg(args.get("svg"), xy, graph);
+    io::write_skeleton_svg(outputs.path("svg"), xy, graph);
   }
+  outputs.commit();
   std::size_t components = 0;
   {
     std::vector<int> comp(num_vertices(graph));
@@ -372,12 +401,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
   std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
               "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
               "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
-              "\"level_width\": %s%s, \"seconds\": %s, \"vertices_file\": \"%s\", \"edges_file\": \"%s\"}\n",
-              input_points, sampled, json_number(radius).c_str(), json_number(options.delta).c_str(),
+              "\"level_width\": %s%s, \"seconds\": %s, \"vertices_file\": %s, \"edges_file\": %s}\n",
+              input_points, sampled,
+              json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(), json_number(options.delta).c_str(),
               json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles,
               num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph),
-              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(), gps_json.c_str(), json_number(seconds).c_str(), out_v.c_str(),
-              out_e.c_str());
+              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(), gps_json.c_str(), json_number(seconds).c_str(),
+              json_string(out_v).c_str(), json_string(out_e).c_str());
   return 0;
 }
 

@@ -352,6 +352,7 @@ int run_stipple(const std::vector<std::string>& argv) {
   if (!args.has("out") && !args.has("png")) throw Usage_error("give --out FILE.svg and/or --png FILE.png");
   if (args.has("out") && io::file_extension(args.get("out")) != "svg")
     throw Usage_error("--out writes an SVG picture: give a file ending in .svg, got '" + args.get("out") + "'");
+  Outputs outputs(args, {"out", "png"});
 
   io::Image image = io::read_image(input);
   if (args.has("grey")) image = io::to_grey(image);
@@ -376,11 +377,12 @@ int run_stipple(const std::vector<std::string>& argv) {
   // Dots of one size: at the darkest density their spacing is d_hex sqrt(mean / peak); half of that covers it.
   const double d_hex = std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(dots.size())));
   const double dot = std::max(0.5, 0.5 * d_hex * std::sqrt(total / double(pixels) / peak));
-  if (args.has("out")) write_svg(args.get("out"), dots, palette, image.width, image.height, dot);
-  if (args.has("png")) write_raster(args.get("png"), dots, palette, image.width, image.height, dot);
+  if (args.has("out")) write_svg(outputs.path("out"), dots, palette, image.width, image.height, dot);
+  if (args.has("png")) write_raster(outputs.path("png"), dots, palette, image.width, image.height, dot);
+  outputs.commit();
 
   std::ostringstream os;
-  os << "{\"input\": \"" << input << "\", \"width\": " << image.width << ", \"height\": " << image.height
+  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width << ", \"height\": " << image.height
      << ", \"channels\": " << image.channels << ", \"method\": \"" << s.method << "\", \"dots\": " << dots.size()
      << ", \"palette\": " << palette.size() << ", \"sigma_feature\": "
      << json_number(s.method == "lloyd" ? std::numeric_limits<double>::infinity() : s.sigma_feature)

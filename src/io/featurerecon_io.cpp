@@ -2,11 +2,16 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 #include "featurerecon_io.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -53,9 +58,15 @@ unsigned long long parse_index(const std::string& t, const std::string& path, st
 }
 
 std::ifstream open_input(const std::string& path) {
+  require_readable_file(path);
   std::ifstream in(path);
   if (!in) throw Input_error(path + ": cannot open for reading");
   return in;
+}
+
+/// After a read loop: a failure that is not the end of the file (an I/O error) is an error, not a short file.
+void check_read(const std::ifstream& in, const std::string& path) {
+  if (in.bad()) throw Input_error(path + ": read error");
 }
 
 /// Calls row(tokens, line number) for every line with tokens of a whitespace-separated file ('#' comments).
@@ -69,6 +80,7 @@ void for_each_token_row(const std::string& path, Row row) {
     const std::vector<std::string> t = tokens(line);
     if (!t.empty()) row(t, number);
   }
+  check_read(in, path);
 }
 
 }  // namespace
@@ -97,6 +109,7 @@ Complex_file read_complex(const std::string& path) {
       t = tokens(line);
       if (!t.empty()) return true;
     }
+    check_read(in, path);
     return false;
   };
   std::vector<std::string> t;
@@ -107,8 +120,11 @@ Complex_file read_complex(const std::string& path) {
   if (n >= std::numeric_limits<skeleton::Vertex_index>::max())
     throw Input_error(where(path, number) + "too many vertices (" + t[0] + ")");
   cf.simplices_listed = m;
-  cf.positions.reserve(n);
-  cf.values.reserve(n);
+  // The header is not trusted for the allocation (a corrupt count would fail as bad_alloc): the vertex lines
+  // grow the vectors.
+  const std::size_t reserve = static_cast<std::size_t>(std::min<unsigned long long>(n, 1u << 20));
+  cf.positions.reserve(reserve);
+  cf.values.reserve(reserve);
   for (unsigned long long i = 0; i < n; ++i) {
     if (!next(t))
       throw Input_error(path + ": unexpected end of file after " + std::to_string(i) + " of " + std::to_string(n) +
@@ -178,6 +194,26 @@ void for_each_csv_row(const std::string& path, Row row) {
     if (body.find_first_not_of(" \t\r") == std::string::npos) continue;
     row(split_csv(body), number);
   }
+  check_read(in, path);
+}
+}  // namespace
+
+namespace {
+/// A vertex id of a map file: an integer (a decimal with a zero fraction, as some tools write them, is accepted when
+/// it is exact).
+long long parse_id(const std::string& t, const std::string& path, std::size_t line) {
+  const char* s = t.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const long long id = std::strtoll(s, &end, 10);
+  if (end != s && *end == '\0') {
+    if (errno == ERANGE) throw Input_error(where(path, line) + "vertex id '" + t + "' out of range");
+    return id;
+  }
+  const double x = parse_double(t, path, line, "vertex id");
+  if (x != std::floor(x) || std::fabs(x) > 9007199254740992.0)  // 2^53: beyond it doubles skip integers
+    throw Input_error(where(path, line) + "vertex id '" + t + "' is not an integer");
+  return static_cast<long long>(x);
 }
 }  // namespace
 
@@ -186,7 +222,7 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
   std::map<long long, std::uint32_t> index;
   for_each_csv_row(vertices_path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3) throw Input_error(where(vertices_path, number) + "expected 'id,x,y'");
-    const long long id = static_cast<long long>(parse_double(t[0], vertices_path, number, "vertex id"));
+    const long long id = parse_id(t[0], vertices_path, number);
     if (index.count(id)) throw Input_error(where(vertices_path, number) + "vertex id " + t[0] + " repeated");
     index[id] = static_cast<std::uint32_t>(m.positions.size());
     m.positions.push_back({parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
@@ -195,7 +231,7 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
     if (t.size() < 3) throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]'");
     std::array<std::uint32_t, 2> e{};
     for (int k = 0; k < 2; ++k) {
-      const long long id = static_cast<long long>(parse_double(t[1 + k], edges_path, number, "vertex id"));
+      const long long id = parse_id(t[1 + k], edges_path, number);
       const auto it = index.find(id);
       if (it == index.end()) throw Input_error(where(edges_path, number) + "unknown vertex id " + t[1 + k]);
       e[k] = it->second;
@@ -217,8 +253,13 @@ std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
 std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path) {
   std::vector<std::vector<std::array<double, 3>>> trips;
   std::map<std::string, std::size_t> index;
+  int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3) throw Input_error(where(path, number) + "expected 'trip_id x y [t]'");
+    if (timed < 0) timed = t.size() > 3 ? 1 : 0;
+    if ((t.size() > 3) != (timed == 1))
+      throw Input_error(where(path, number) + (timed ? "no time t, but the first line has one ('trip_id x y t')"
+                                                     : "a time t, but the first line has none ('trip_id x y')"));
     const auto it = index.emplace(t[0], trips.size()).first;
     if (it->second == trips.size()) trips.emplace_back();
     trips[it->second].push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y"),
@@ -231,10 +272,8 @@ void write_map(const std::string& vertices_path, const std::string& edges_path,
                const std::vector<std::array<double, 2>>& positions, const std::vector<std::array<std::uint32_t, 2>>& edges) {
   std::string v, e;
   char buf[128];
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    std::snprintf(buf, sizeof buf, "%zu,%.6f,%.6f\n", i, positions[i][0], positions[i][1]);
-    v += buf;
-  }
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    v += std::to_string(i) + "," + format_double(positions[i][0]) + "," + format_double(positions[i][1]) + "\n";
   for (std::size_t i = 0; i < edges.size(); ++i) {
     std::snprintf(buf, sizeof buf, "%zu,%u,%u\n", i, edges[i][0], edges[i][1]);
     e += buf;
@@ -243,22 +282,66 @@ void write_map(const std::string& vertices_path, const std::string& edges_path,
   write_text_file(edges_path, e);
 }
 
+namespace {
+std::string system_reason() { return std::strerror(errno); }
+}  // namespace
+
+void require_readable_file(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw Input_error(path + ": cannot open for reading (" + system_reason() + ")");
+  if (S_ISDIR(st.st_mode)) throw Input_error(path + ": is a directory, not a file");
+}
+
+std::string format_double(double x) {
+  char buf[64];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    if (digits == 17 || std::strtod(buf, nullptr) == x) break;
+  }
+  return buf;
+}
+
+std::string temporary_beside(const std::string& path) {
+  if (path.empty()) throw std::runtime_error("an output file name is empty");
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::string extension = file_extension(name);
+  const std::string suffix = extension.empty() ? "" : "." + extension;
+  std::string pattern = dir + "." + name + ".XXXXXX" + suffix;
+  std::vector<char> buffer(pattern.begin(), pattern.end());
+  buffer.push_back('\0');
+  const int fd = ::mkstemps(buffer.data(), static_cast<int>(suffix.size()));
+  if (fd < 0) throw std::runtime_error(path + ": cannot open for writing (" + system_reason() + ")");
+  // mkstemps creates the file private (0600): give it the permissions a new file gets (0666 less the umask).
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  (void)::fchmod(fd, 0666 & ~mask);
+  ::close(fd);
+  return std::string(buffer.data());
+}
+
+void move_into_place(const std::string& temporary, const std::string& path) {
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string reason = system_reason();
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot write (" + reason + ")");
+  }
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
+  const std::string tmp = temporary_beside(path);
   {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
+    out.close();
     if (!out) {
       std::remove(tmp.c_str());
-      throw std::runtime_error(path + ": write failed");
+      throw std::runtime_error(path + ": write failed (" + system_reason() + ")");
     }
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot move the written file into place");
-  }
+  move_into_place(tmp, path);
 }
 
 void write_complex(const std::string& path, const skeleton::Simplicial_complex_2& k,

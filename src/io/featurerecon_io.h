@@ -71,8 +71,25 @@ void write_map(const std::string& vertices_path, const std::string& edges_path,
 /// The extension of a file name, lower case, without the dot ("" when there is none).
 std::string file_extension(const std::string& path);
 
-/// Writes `text` to `path` atomically.
+/// Writes `text` to `path` atomically: to a new temporary file beside it, renamed into place (an existing file of
+/// any other name is never touched). Throws std::runtime_error with the system's reason if it cannot.
 void write_text_file(const std::string& path, const std::string& text);
+
+/// Throws Input_error unless `path` exists and is not a directory (std::ifstream opens a directory on Linux and then
+/// reads nothing, which would pass for an empty file).
+void require_readable_file(const std::string& path);
+
+/// The shortest of 15, 16 or 17 significant digits that reads back as exactly `x` ("447123.456", not
+/// "447123.45600000001"): coordinates keep every bit at any scale.
+std::string format_double(double x);
+
+/// Creates a new, empty file beside `path` (same directory, a unique hidden name ending in the same extension, so
+/// that writers which choose the format by extension still do) and returns its name. Throws std::runtime_error
+/// with the system's reason if the directory does not take it.
+std::string temporary_beside(const std::string& path);
+
+/// Renames `temporary` to `path` (same file system, atomic); on failure removes the temporary and throws.
+void move_into_place(const std::string& temporary, const std::string& path);
 
 }  // namespace io
 }  // namespace FeatureRecon

@@ -206,6 +206,7 @@ void write_pnm(const std::string& path, const Image& image, bool colour) {
 }  // namespace
 
 Image read_image(const std::string& path) {
+  require_readable_file(path);
   const std::string e = file_extension(path);
   if (e == "png") return read_png(path);
   if (e == "jpg" || e == "jpeg") return read_jpeg(path);

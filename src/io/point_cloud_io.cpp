@@ -67,6 +67,7 @@ Point_cloud read_point_cloud(const std::string& path) {
   const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "off" && ext != "xyz")
     fail(path, "unknown point-cloud format '." + ext + "' (expected .ply, .off or .xyz)");
+  require_readable_file(path);
   const bool normals = file_has_normals(path, ext);
   std::vector<Pwn> pwn;
   bool ok = false;

@@ -13,9 +13,13 @@ namespace io {
 namespace {
 using skeleton::Skeleton_graph;
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6f", x);
+/// Data values (GraphML, GeoJSON, PLY, CSV): every bit kept.
+std::string number(double x) { return format_double(x); }
+
+/// Picture coordinates (pixels inside the frame): two decimals are plenty.
+std::string pixel(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.2f", x);
   return buf;
 }
 
@@ -43,12 +47,12 @@ class Svg_frame {
   std::string open(double size) {
     if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
     scale = size / std::max({x1 - x0, y1 - y0, 1e-9});
-    return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(2 * margin + (x1 - x0) * scale) +
-           "\" height=\"" + number(2 * margin + (y1 - y0) * scale) +
+    return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + pixel(2 * margin + (x1 - x0) * scale) +
+           "\" height=\"" + pixel(2 * margin + (y1 - y0) * scale) +
            "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   }
-  std::string X(double x) const { return number(margin + (x - x0) * scale); }
-  std::string Y(double y) const { return number(margin + (y1 - y) * scale); }
+  std::string X(double x) const { return pixel(margin + (x - x0) * scale); }
+  std::string Y(double y) const { return pixel(margin + (y1 - y) * scale); }
 
  private:
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, scale = 1, margin = 10;
@@ -137,6 +141,8 @@ void write_skeleton_svg(const std::string& path, const std::vector<std::array<do
   Svg_frame frame;
   for (const auto& p : points) frame.extend(p[0], p[1]);
   for (auto v : boost::make_iterator_range(vertices(g))) frame.extend(g[v].position[0], g[v].position[1]);
+  for (auto e : boost::make_iterator_range(edges(g)))
+    for (const auto& p : g[e].polyline) frame.extend(p[0], p[1]);
   std::ostringstream os;
   os << frame.open(1000.0);
   auto X = [&](double x) { return frame.X(x); };

@@ -2,8 +2,16 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include "io/featurerecon_io.h"
@@ -91,4 +99,97 @@ TEST(ScratchFiles, AreRemovedWhenTheTestEnds) {
   remover.OnTestEnd(*::testing::UnitTest::GetInstance()->current_test_info());  // what gtest calls at the end
   EXPECT_FALSE(std::ifstream(path).good());
   EXPECT_TRUE(remover.pending().empty());
+}
+
+TEST(FormatDouble, ShortestThatReadsBackExactly) {
+  EXPECT_EQ(io::format_double(447123.456), "447123.456");
+  EXPECT_EQ(io::format_double(0.1), "0.1");
+  EXPECT_EQ(io::format_double(-6.020081e-5), "-6.020081e-05");
+  EXPECT_EQ(io::format_double(1e300), "1e+300");
+  EXPECT_EQ(io::format_double(0.0), "0");
+  EXPECT_EQ(io::format_double(0.1 + 0.2), "0.30000000000000004");  // 17 digits when 15 and 16 do not read back
+  // Any finite double reads back as itself (random bit patterns, fixed seed).
+  std::mt19937_64 random(7);
+  for (int i = 0; i < 20000; ++i) {
+    const std::uint64_t bits = random();
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    if (!std::isfinite(x)) continue;
+    const std::string s = io::format_double(x);
+    ASSERT_EQ(std::strtod(s.c_str(), nullptr), x) << s;
+    ASSERT_LE(s.size(), 24u) << s;
+  }
+}
+
+TEST(MapFile, RoundTripKeepsEveryBit) {
+  const std::vector<std::array<double, 2>> positions{{447123.456, 4636005.123456789}, {1e-9, -3.0e-7}, {1e22, 0.0}};
+  const std::vector<std::array<std::uint32_t, 2>> edges{{0, 1}, {1, 2}};
+  const std::string v = scratch_path("map_v.txt"), e = scratch_path("map_e.txt");
+  io::write_map(v, e, positions, edges);
+  const io::Map_file m = io::read_map(v, e);
+  EXPECT_EQ(m.positions, positions);
+  EXPECT_EQ(m.edges, edges);
+}
+
+TEST(MapFile, IdsAreIntegers) {
+  // Ids above 2^53 stay apart; an integral decimal is the integer; a fraction is refused with its line.
+  const std::string v = write_temp("ids_v.txt", "9007199254740993,0,0\n9007199254740992,1,0\n7.0,2,0\n");
+  const io::Map_file m = io::read_map(v, write_temp("ids_e.txt", "0,9007199254740992,9007199254740993\n1,7,9007199254740992\n"));
+  EXPECT_EQ(m.edges, (std::vector<std::array<std::uint32_t, 2>>{{1, 0}, {2, 1}}));
+  auto error_of = [&](const std::string& edges) {
+    try {
+      io::read_map(v, write_temp("ids_bad.txt", edges));
+    } catch (const io::Input_error& x) {
+      return std::string(x.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of("0,7,1.9\n").find("ids_bad.txt:1: vertex id '1.9' is not an integer"), std::string::npos);
+  EXPECT_NE(error_of("\n0,7,8\n").find("ids_bad.txt:2: unknown vertex id 8"), std::string::npos);
+  EXPECT_NE(error_of("0,7,99999999999999999999\n").find("out of range"), std::string::npos);
+}
+
+TEST(InputFiles, DirectoriesAndMixedTracksAreRefused) {
+  const std::string dir = scratch_path("a_directory");
+  ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
+  try {
+    io::read_points(dir);
+    ADD_FAILURE() << "a directory was read as a file";
+  } catch (const io::Input_error& x) {
+    EXPECT_NE(std::string(x.what()).find("is a directory"), std::string::npos) << x.what();
+  }
+  ::rmdir(dir.c_str());
+  // A track file gives a time on every line or on none.
+  EXPECT_EQ(io::read_track_trips(write_temp("t_none.txt", "a 0 0\na 1 0\nb 5 5\n")).size(), 2u);
+  try {
+    io::read_track_trips(write_temp("t_mixed.txt", "a 0 0 1\na 1 0 2\nb 5 5\n"));
+    ADD_FAILURE() << "mixed times accepted";
+  } catch (const io::Input_error& x) {
+    EXPECT_NE(std::string(x.what()).find("t_mixed.txt:3: no time t"), std::string::npos) << x.what();
+  }
+}
+
+TEST(WriteTextFile, UsesATemporaryOfItsOwn) {
+  // The old fixed name PATH.tmp belonged to the user.
+  const std::string path = scratch_path("written.txt");
+  const std::string user_tmp = write_temp("written.txt.tmp", "precious\n");
+  io::write_text_file(path, "new\n");
+  std::string line;
+  std::getline(std::ifstream(path), line);
+  EXPECT_EQ(line, "new");
+  std::getline(std::ifstream(user_tmp), line);
+  EXPECT_EQ(line, "precious");
+  // A temporary keeps the extension (writers that choose the format by extension still do), and fails with the reason.
+  const std::string tmp = io::temporary_beside(scratch_path("picture.png"));
+  EXPECT_EQ(io::file_extension(tmp), "png");
+  const std::string name = tmp.substr(tmp.find_last_of('/') + 1);
+  EXPECT_EQ(name[0], '.') << tmp;
+  EXPECT_NE(name.find("picture.png."), std::string::npos) << tmp;
+  std::remove(tmp.c_str());
+  try {
+    io::write_text_file("/nonexistent_dir/x.txt", "x");
+    ADD_FAILURE() << "wrote into a missing directory";
+  } catch (const std::runtime_error& x) {
+    EXPECT_NE(std::string(x.what()).find("No such file or directory"), std::string::npos) << x.what();
+  }
 }
