@@ -416,3 +416,44 @@ TEST(TraceSupport, BadInputIsNamed) {
     EXPECT_NE(std::string(e.what()).find("sample 1"), std::string::npos) << e.what();
   }
 }
+
+TEST(MapComparison, BadMapsAreNamed) {
+  Embedded_graph_2 good;
+  good.positions = {{0, 0}, {100, 0}};
+  good.edges = {{0, 1}};
+  auto error_of = [&](const Embedded_graph_2& truth, const Embedded_graph_2& rec, Map_comparison_options o = {}) {
+    try {
+      compare_maps(truth, rec, o);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // A non-finite vertex looped forever (inf) or silently dropped the samples behind it (NaN).
+  Embedded_graph_2 bad = good;
+  bad.positions[1][0] = std::numeric_limits<double>::infinity();
+  EXPECT_NE(error_of(good, bad).find("compare_maps: reconstruction: sample_map: vertex 1 (of edge 0) has a non-finite"),
+            std::string::npos);
+  bad.positions[1][0] = std::nan("");
+  EXPECT_NE(error_of(bad, good).find("compare_maps: ground truth: "), std::string::npos);
+  // Finite but too far apart for the interval (t += interval stops moving).
+  bad.positions[1][0] = 1e300;
+  EXPECT_NE(error_of(good, bad).find("more than 2^32 samples"), std::string::npos);
+  // A vertex that no edge uses may be anything.
+  bad = good;
+  bad.positions.push_back({std::nan(""), 0});
+  EXPECT_EQ(compare_maps(good, bad).f_score, 1.0);
+  Map_comparison_options o;
+  o.bearing_limit = -1;
+  EXPECT_NE(error_of(good, good, o).find("bearing_limit must be > 0, got -1"), std::string::npos);
+  // More candidates than samples (2^32 wrapped to 0 in the cast and crashed in CGAL).
+  o = {};
+  o.candidates = std::size_t(1) << 32;
+  EXPECT_EQ(compare_maps(good, good, o).f_score, 1.0);
+  // explain_unmatched_samples checks its options too (a 0 threshold made cells of size 0).
+  o = {};
+  o.keep_samples = true;
+  const Map_comparison_result r = compare_maps(good, good, o);
+  o.match_distance = 0;
+  EXPECT_THROW(explain_unmatched_samples(r, o), std::invalid_argument);
+}

@@ -155,3 +155,29 @@ TEST(ReebGraphPersistence, EmptyAndBadInput) {
   down.arcs = {{1, 0, {}}};  // an arc going down
   EXPECT_THROW(compute_reeb_graph_persistence(down), std::invalid_argument);
 }
+
+TEST(ReebGraphPersistence, ForkOfHighDegree) {
+  // Two nodes joined by k parallel arcs: k - 1 loops, each of persistence 1. The fork's earlier arcs are marked
+  // once per fork (a copy per loop took O(k^2) memory: 3 GB at k = 20000).
+  const std::size_t k = 5000;
+  Reeb_graph R;
+  R.nodes.resize(2);
+  R.nodes[0].vertex = 0;
+  R.nodes[0].value = 0;
+  R.nodes[0].type = minimum | up_fork;
+  R.nodes[1].vertex = 1;
+  R.nodes[1].value = 1;
+  R.nodes[1].type = maximum | down_fork;
+  R.arcs.resize(k);
+  for (auto& a : R.arcs) a.upper = 1;
+  R.components = 1;
+  const Reeb_graph_persistence P = compute_reeb_graph_persistence(R);
+  ASSERT_EQ(P.loops.size(), k - 1);
+  for (const auto& p : P.loops) {
+    EXPECT_EQ(p.birth_node, 1u);
+    EXPECT_EQ(p.death_node, 0u);
+    EXPECT_EQ(p.persistence(), 1.0);
+  }
+  EXPECT_TRUE(P.sublevel_branches.empty());
+  EXPECT_TRUE(P.superlevel_branches.empty());
+}

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/repair_reeb_graph.h>
 #include <FeatureRecon/skeleton/simplify_by_persistence.h>
 
 #include <gtest/gtest.h>
@@ -80,10 +81,11 @@ TEST(SimplifyByPersistence, GuaranteeOnRandomGraphs) {
     EXPECT_LE(hera_bottleneck(diagram(before.superlevel_branches), diagram(after.superlevel_branches)), 2 * delta + 1e-9) << what;
     EXPECT_LE(hera_bottleneck(diagram(before.loops), diagram(after.loops)), 6 * delta + 1e-9) << what;
     EXPECT_EQ(S.graph.components, A.reeb_graph().components) << what;
-    // Exactly the features of persistence <= delta were merged away (so the test fails if nothing is done).
+    // The features of persistence <= delta were merged away (so the test fails if nothing is done); a merge may
+    // take a feature of persistence up to 2 delta with it (not on these small graphs, but on larger ones).
     const std::size_t n_before = before.sublevel_branches.size() + before.superlevel_branches.size() + before.loops.size();
     const std::size_t n_after = after.sublevel_branches.size() + after.superlevel_branches.size() + after.loops.size();
-    EXPECT_EQ(n_after + S.removed_branches + S.removed_loops, n_before) << what;
+    EXPECT_LE(n_after + S.removed_branches + S.removed_loops, n_before) << what;
     EXPECT_EQ(S.removed_loops, before.loops.size() - count_above(before.loops, delta)) << what;
     if (::testing::Test::HasFailure()) break;
   }
@@ -113,4 +115,95 @@ TEST(SimplifyByPersistence, RemovesSmallFeaturesOnly) {
   EXPECT_EQ(Z.graph.nodes.size(), A.reeb_graph().nodes.size());
   EXPECT_EQ(Z.graph.arcs.size(), A.reeb_graph().arcs.size());
   EXPECT_THROW(simplify_by_persistence(A, -1.0), std::invalid_argument);
+}
+
+namespace {
+std::string error_of(const Reeb_graph& R, const std::vector<double>& f) {
+  try {
+    simplify_by_persistence(R, f, 0.5);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+}  // namespace
+
+TEST(SimplifyByPersistence, BadGraphsAreNamed) {
+  // Path 0 - 1 - 2 with f = 0, 1, 2: one arc from node 0 (vertex 0) to node 1 (vertex 2) through vertex 1.
+  const auto g = make(3, {{0, 1}, {1, 2}}, {}, {0, 1, 2});
+  const Reeb_graph R = compute_augmented_reeb_graph(g.complex, g.f).reeb_graph();
+  ASSERT_EQ(R.arcs.size(), 1u);
+  ASSERT_EQ(R.arcs[0].vertices, (std::vector<Vertex_index>{1}));
+  Reeb_graph bad = R;
+  bad.arcs[0].vertices = {40};
+  EXPECT_NE(error_of(bad, g.f).find("arc 0 has vertex 40 out of range [0, 3)"), std::string::npos);
+  bad = R;
+  bad.arcs[0].vertices = {0};
+  EXPECT_NE(error_of(bad, g.f).find("vertex 0 appears twice in the graph (arc 0)"), std::string::npos);
+  bad = R;
+  bad.nodes[1].members = {7};
+  EXPECT_NE(error_of(bad, g.f).find("node 1 has vertex 7 out of range"), std::string::npos);
+  EXPECT_NE(error_of(R, {0, std::nan(""), 2}).find("the value of vertex 1 (arc 0) is nan"), std::string::npos);
+  EXPECT_NE(error_of(R, {0, 1, -5}).find("node 1 has value 2 but its vertex 2 has -5"), std::string::npos);
+  bad = R;
+  bad.arcs[0].upper = 9;
+  EXPECT_NE(error_of(bad, g.f).find("arc 0 joins nodes out of range"), std::string::npos);
+}
+
+TEST(SimplifyByPersistence, OnlyTheGraphsVerticesComeBack) {
+  // Two components; pruning the lower one leaves vertices 0-2 out of the graph: they must not come back as
+  // isolated nodes.
+  const auto g = make(6, {{0, 1}, {1, 2}, {3, 4}, {4, 5}}, {}, {0, 1, 2, 10, 20, 30});
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+  const Reeb_prune_result P = prune_reeb_graph_components(A.reeb_graph(), 5);
+  ASSERT_EQ(P.graph.components, 1u);
+  const Reeb_simplification_result S = simplify_by_persistence(P.graph, A.values(), 0.0);
+  EXPECT_EQ(S.graph.nodes.size(), 2u);
+  EXPECT_EQ(S.graph.arcs.size(), 1u);
+  EXPECT_EQ(S.graph.components, 1u);
+  std::vector<int> seen(6, 0);
+  for (const auto& node : S.graph.nodes) {
+    ++seen[node.vertex];
+    for (Vertex_index v : node.members) ++seen[v];
+  }
+  for (const auto& arc : S.graph.arcs)
+    for (Vertex_index v : arc.vertices) ++seen[v];
+  EXPECT_EQ(seen, (std::vector<int>{0, 0, 0, 1, 1, 1}));
+}
+
+TEST(SimplifyByPersistence, TrimmedStubsStayTrimmed) {
+  // Lollipop: stub 0 (f 0) - 1 (f 1) up to the fork 2 (f 2), loop 2-3-5 / 2-4-5 (f 3, 3.5, 6). Trimming puts
+  // vertices 0 and 1 into the fork's members, off its level; simplifying again keeps them there (an edge to the
+  // fork would not be level and brought the stub back as two minima).
+  const auto g = make(6, {{0, 1}, {1, 2}, {2, 3}, {2, 4}, {3, 5}, {4, 5}}, {}, {0, 1, 2, 3, 3.5, 6});
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+  const Reeb_trim_result T = trim_essential_stubs(A.reeb_graph(), 2.5);
+  ASSERT_EQ(T.trimmed, 1u);
+  const Reeb_simplification_result S = simplify_by_persistence(T.graph, A.values(), 0.0);
+  ASSERT_EQ(S.graph.nodes.size(), 2u);
+  EXPECT_EQ(S.graph.nodes[0].vertex, 2u);
+  std::vector<Vertex_index> members = S.graph.nodes[0].members;
+  std::sort(members.begin(), members.end());
+  EXPECT_EQ(members, (std::vector<Vertex_index>{0, 1}));
+  EXPECT_EQ(S.graph.loops(), 1u);
+}
+
+TEST(SimplifyByPersistence, ValuesNearTheLargestDouble) {
+  // Two parallel arcs without interior vertices get a helper midpoint: halves first, no overflow to infinity.
+  const double big = 1.3e308;
+  Reeb_graph R;
+  R.nodes.resize(2);
+  R.nodes[0].vertex = 0;
+  R.nodes[0].value = big;
+  R.nodes[0].type = minimum | up_fork;
+  R.nodes[1].vertex = 1;
+  R.nodes[1].value = 1.7e308;
+  R.nodes[1].type = maximum | down_fork;
+  R.arcs.resize(2);
+  R.arcs[0].lower = R.arcs[1].lower = 0;
+  R.arcs[0].upper = R.arcs[1].upper = 1;
+  R.components = 1;
+  const Reeb_simplification_result S = simplify_by_persistence(R, {big, 1.7e308}, 0.0);
+  EXPECT_EQ(S.graph.nodes.size(), 2u);
+  EXPECT_EQ(S.graph.arcs.size(), 2u);
 }

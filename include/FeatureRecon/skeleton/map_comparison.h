@@ -14,6 +14,8 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -91,6 +93,9 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
     Edge e = g.edges[k];
     if (e[0] >= n || e[1] >= n)
       FeatureRecon::internal::throw_invalid_argument(fn, "edge ", k, " has a vertex out of range [0, ", n, ")");
+    for (const Vertex_index v : e)
+      if (!std::isfinite(g.positions[v][0]) || !std::isfinite(g.positions[v][1]))
+        FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " (of edge ", k, ") has a non-finite coordinate");
     if (e[0] == e[1]) continue;
     if (e[0] > e[1]) std::swap(e[0], e[1]);
     edges.push_back(e);
@@ -107,8 +112,15 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
     incident[edges[e][0]].push_back(e);
     incident[edges[e][1]].push_back(e);
   }
+  // Finite coordinates can still be too far apart for the interval (t += interval would stop moving).
+  double total = 0;
+  for (std::size_t e = 0; e < edges.size(); ++e) total += length(e);
+  if (!(total / interval < 4294967296.0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "the map's ", total, " m of edges at interval ", interval,
+                                                   " would give more than 2^32 samples");
   std::vector<Map_sample> samples;
-  std::vector<char> edge_done(edges.size(), 0), vertex_seen(n, 0);
+  // `listed` marks edges put in a component's order; an edge belongs to one component, so one array serves all.
+  std::vector<char> edge_done(edges.size(), 0), vertex_seen(n, 0), listed(edges.size(), 0);
   // A walk step: traverse edge e from vertex `from`, first sample at `offset` metres along it.
   struct Step {
     std::size_t edge;
@@ -139,7 +151,6 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
     std::vector<std::size_t> order;
     std::deque<Vertex_index> bfs{start};
     vertex_seen[start] = 1;
-    std::vector<char> listed(edges.size(), 0);
     while (!bfs.empty()) {
       const Vertex_index v = bfs.front();
       bfs.pop_front();
@@ -221,10 +232,19 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
   const char* fn = "compare_maps";
   if (!(options.match_distance > 0 && std::isfinite(options.match_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "match_distance must be > 0, got ", options.match_distance);
-  if (!(options.bearing_limit > 0) || options.candidates < 1)
-    FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be > 0 and candidates >= 1");
-  const std::vector<Map_sample> H = sample_map(ground_truth, options.interval);
-  const std::vector<Map_sample> G = sample_map(reconstruction, options.interval);
+  if (!(options.bearing_limit > 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be > 0, got ", options.bearing_limit);
+  if (options.candidates < 1) FeatureRecon::internal::throw_invalid_argument(fn, "candidates must be >= 1, got 0");
+  // Says which map is bad.
+  auto sampled = [&](const Embedded_graph_2& g, const char* which) {
+    try {
+      return sample_map(g, options.interval);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string(fn) + ": " + which + ": " + e.what());
+    }
+  };
+  const std::vector<Map_sample> H = sampled(ground_truth, "ground truth");
+  const std::vector<Map_sample> G = sampled(reconstruction, "reconstruction");
   Map_comparison_result r;
   r.ground_truth_samples = H.size();
   r.reconstruction_samples = G.size();
@@ -252,7 +272,9 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
     // Nearest admissible (bearing) available partner among the k nearest, or none.
     auto best_partner = [&](std::size_t h, double& d) -> std::int64_t {
       const Point q(H[h].position[0], H[h].position[1]);
-      Knn search(tree, q, static_cast<unsigned>(options.candidates), 0.0, true, dist);
+      // At most |G| neighbours exist (and more than 2^32 - 1 would wrap to 0 in the cast).
+      const std::size_t k = std::min<std::size_t>(options.candidates, G.size());
+      Knn search(tree, q, static_cast<unsigned>(std::min<std::size_t>(k, 0xffffffffu)), 0.0, true, dist);
       for (const auto& nb : search) {
         const std::uint32_t g = nb.first;
         if (taken[g]) continue;
@@ -351,6 +373,10 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
       r.ground_truth_partner.size() != H.size() || r.reconstruction_partner.size() != G.size())
     FeatureRecon::internal::throw_invalid_argument("explain_unmatched_samples",
                                                    "the comparison was not computed with keep_samples");
+  if (!(options.match_distance > 0 && std::isfinite(options.match_distance)) || !(options.bearing_limit > 0))
+    FeatureRecon::internal::throw_invalid_argument("explain_unmatched_samples", "match_distance must be finite and > 0 "
+                                                   "and bearing_limit > 0, got ", options.match_distance, " and ",
+                                                   options.bearing_limit);
   const double t = options.match_distance, reach = 2 * t;
   // Classifies the unmatched samples of `from` against the samples of `to` (bucketed on a grid of cell `reach`).
   auto classify = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& from_partner,
@@ -359,7 +385,10 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
     // Cells are keyed by their integer coordinates (cells beyond 2^32 only collide in the hash: every distance
     // is checked again).
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
-    auto cell = [reach](double v) { return static_cast<std::int64_t>(std::floor(v / reach)); };
+    // Clamped: far-out cells only share buckets (every distance is checked again).
+    auto cell = [reach](double v) {
+      return static_cast<std::int64_t>(std::max(-4e18, std::min(4e18, std::floor(v / reach))));
+    };
     auto key = [](std::int64_t cx, std::int64_t cy) {
       return (static_cast<std::uint64_t>(cx) << 32) ^ (static_cast<std::uint64_t>(cy) & 0xffffffffULL);
     };

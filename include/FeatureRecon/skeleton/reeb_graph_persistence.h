@@ -88,16 +88,17 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
   std::iota(extreme.begin(), extreme.end(), std::size_t(0));  // lowest node of the component
   struct Loop_birth {
     std::size_t fork, branch, arc;
-    std::vector<std::pair<std::size_t, std::size_t>> others;  // (lower end, arc) of the fork's earlier arcs
+    std::size_t earlier;  // the fork's earlier arcs: below[fork][0, earlier) (not copied: a fork of degree k
+                          // would store O(k^2))
   };
   std::vector<Loop_birth> loop_births;
   for (std::size_t v = 0; v < n; ++v) {
-    std::vector<std::pair<std::size_t, std::size_t>> earlier;
+    std::size_t earlier = 0;
     for (const auto& [u, arc] : below[v]) {
       const std::size_t ru = find(u), rv = find(v);
       if (ru == rv) {
         loop_births.push_back({v, u, arc, earlier});
-      } else if (!earlier.empty()) {
+      } else if (earlier != 0) {
         // v already belongs to a component from below: the younger minimum dies here.
         const bool u_younger = extreme[ru] > extreme[rv];
         P.sublevel_branches.push_back(pair_of(u_younger ? extreme[ru] : extreme[rv], v));
@@ -105,7 +106,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
       } else {
         parent[rv] = ru;  // v joins its first component below
       }
-      earlier.push_back({u, arc});
+      ++earlier;
     }
   }
   // Essential pairs: per component, global minimum (the root's extreme) with its highest node.
@@ -140,12 +141,20 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
   // Loops: for the cycle born at fork s through its arc from `branch`, the best bottom is the maximin value
   // over paths from `branch` to one of the fork's earlier lower ends, inside the nodes below s.
   std::vector<std::size_t> best(n, 0), seen_stamp(n, 0), target_stamp(n, 0), via_arc(n, 0), target_arc(n, 0);
-  std::size_t stamp = 0;
+  std::size_t stamp = 0, fork_stamp = 0, current_fork = n, marked = 0;
   for (const Loop_birth& lb : loop_births) {
     ++stamp;
-    for (const auto& [t, arc] : lb.others) {
-      target_stamp[t] = stamp;
-      target_arc[t] = arc;
+    // The targets are the lower ends of the fork's earlier arcs. The loops of one fork come in the order of its
+    // arcs, so each fork marks its arcs once, incrementally: O(k) for a fork of degree k, not O(k^2).
+    if (lb.fork != current_fork) {
+      current_fork = lb.fork;
+      ++fork_stamp;
+      marked = 0;
+    }
+    for (; marked < lb.earlier; ++marked) {
+      const auto& [t, arc] = below[lb.fork][marked];
+      target_stamp[t] = fork_stamp;
+      target_arc[t] = arc;  // with parallel arcs, the latest earlier one (as before)
     }
     // Widest path: pop the node with the largest bottleneck (the lowest node index on its path).
     std::priority_queue<std::pair<std::size_t, std::size_t>> heap;  // (bottleneck, node)
@@ -157,7 +166,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
       const auto [b, x] = heap.top();
       heap.pop();
       if (b != best[x]) continue;
-      if (target_stamp[x] == stamp) {
+      if (target_stamp[x] == fork_stamp) {
         bottom = b;
         reached = x;
         break;

@@ -21,8 +21,8 @@ namespace skeleton {
 
 /// Result of simplify_by_persistence().
 struct Reeb_simplification_result {
-  /// The simplified Reeb graph. Every input vertex is in exactly one place: a node's `vertex`, a node's
-  /// `members`, or an arc's `vertices`.
+  /// The simplified Reeb graph. Every vertex of the input graph is in exactly one place: a node's `vertex`, a
+  /// node's `members`, or an arc's `vertices` (indices of `values` that the input graph does not use stay out).
   Reeb_graph graph;
   std::size_t removed_branches = 0;  ///< branch features of persistence <= delta that were merged away
   std::size_t removed_loops = 0;     ///< loop features of persistence <= delta that were merged away
@@ -50,16 +50,42 @@ struct Simplification_complex {
 /// that height, so its Reeb graph, with arcs of zero height contracted, is the quotient.
 /// This overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
 /// regular nodes (e.g. after repair_reeb_graph()), which the result absorbs into arcs.
-/// \pre delta >= 0 and finite (checked; throws); every vertex of R indexes `values` (checked; throws).
+/// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's vertices
+/// there) are not level with it: they take no part in the merges and stay with the place of their node's vertex.
+/// \pre delta >= 0 and finite; every vertex of R (nodes, members, arc vertices) indexes `values` and is used
+/// once; the values R uses are finite and each node's value is `values[vertex]` (all checked; throws naming the
+/// node or arc).
 inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, const std::vector<double>& values,
                                                           double delta) {
   const char* fn = "simplify_by_persistence";
-  if (!(delta >= 0 && std::isfinite(delta)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
+  using FeatureRecon::internal::throw_invalid_argument;
+  if (!(delta >= 0 && std::isfinite(delta))) throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
+  // Which vertices the graph uses, each once: 1 = in the complex, 2 = a member off its node's level.
+  std::vector<char> used(values.size(), 0);
+  auto use = [&](Vertex_index v, const char* what, std::size_t index, char how) {
+    if (v >= values.size())
+      throw_invalid_argument(fn, what, " ", index, " has vertex ", v, " out of range [0, ", values.size(), ")");
+    if (!std::isfinite(values[v])) throw_invalid_argument(fn, "the value of vertex ", v, " (", what, " ", index, ") is ", values[v]);
+    if (used[v]) throw_invalid_argument(fn, "vertex ", v, " appears twice in the graph (", what, " ", index, ")");
+    used[v] = how;
+  };
+  for (std::size_t i = 0; i < R.nodes.size(); ++i) {
+    const auto& node = R.nodes[i];
+    use(node.vertex, "node", i, 1);
+    if (!(values[node.vertex] == node.value))
+      throw_invalid_argument(fn, "node ", i, " has value ", node.value, " but its vertex ", node.vertex, " has ",
+                             values[node.vertex]);
+  }
   for (std::size_t i = 0; i < R.nodes.size(); ++i)
-    if (R.nodes[i].vertex >= values.size())
-      FeatureRecon::internal::throw_invalid_argument(fn, "node ", i, " has vertex ", R.nodes[i].vertex,
-                                                     " out of range [0, ", values.size(), ")");
+    for (const Vertex_index v : R.nodes[i].members) {
+      use(v, "node", i, 1);
+      if (values[v] != R.nodes[i].value) used[v] = 2;
+    }
+  for (std::size_t k = 0; k < R.arcs.size(); ++k) {
+    if (!(R.arcs[k].lower < R.nodes.size() && R.arcs[k].upper < R.nodes.size()))
+      throw_invalid_argument(fn, "arc ", k, " joins nodes out of range [0, ", R.nodes.size(), ")");
+    for (const Vertex_index v : R.arcs[k].vertices) use(v, "arc", k, 1);
+  }
   std::vector<std::vector<std::size_t>> cycles;
   const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles);
   const std::size_t n = values.size();
@@ -80,7 +106,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     c.push_back(R.nodes[R.arcs[k].upper].vertex);
     if (c.size() == 2 && present.count(key(c[0], c[1]))) {
       const Vertex_index mid = static_cast<Vertex_index>(val.size());
-      val.push_back(0.5 * (val[c[0]] + val[c[1]]));
+      val.push_back(0.5 * val[c[0]] + 0.5 * val[c[1]]);  // halves first: no overflow near the largest doubles
       c.insert(c.begin() + 1, mid);
     }
     for (std::size_t i = 0; i + 1 < c.size(); ++i) {
@@ -90,8 +116,10 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   }
 
   // Members of a node (input vertices identified with it) stay with it: a horizontal edge to the node's vertex.
+  // Members off the node's level are attached after the quotient (an edge would not be level).
   for (const auto& node : R.nodes)
-    for (const Vertex_index v : node.members) Y.edges.push_back(key(node.vertex, v));
+    for (const Vertex_index v : node.members)
+      if (used[v] == 1) Y.edges.push_back(key(node.vertex, v));
 
   // Node adjacency of R with arcs.
   const std::size_t nn = R.nodes.size();
@@ -100,22 +128,30 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     adj[R.arcs[k].lower].push_back({R.arcs[k].upper, k});
     adj[R.arcs[k].upper].push_back({R.arcs[k].lower, k});
   }
-  // Breadth-first search from `start` inside the nodes accepted by `inside`; returns the predecessor arcs.
+  // Breadth-first search from `start` inside the nodes accepted by `inside`, not going on from the nodes
+  // accepted by `stop` (the search ends at the first one, returned last); records the predecessor arcs in
+  // `pred_arc` (valid for the nodes reached). Stamped arrays: a search costs the nodes it reaches, not nn.
   const std::size_t none = std::numeric_limits<std::size_t>::max();
-  auto bfs = [&](std::size_t start, auto inside, std::vector<std::size_t>& pred_arc) {
-    pred_arc.assign(nn, none);
-    std::vector<char> seen(nn, 0);
+  std::vector<std::size_t> seen_stamp(nn, 0);
+  std::size_t stamp = 0;
+  auto bfs = [&](std::size_t start, auto inside, auto stop, std::vector<std::size_t>& pred_arc) {
+    if (pred_arc.size() != nn) pred_arc.assign(nn, none);
+    ++stamp;
     std::vector<std::size_t> order{start};
-    seen[start] = 1;
+    seen_stamp[start] = stamp;
+    pred_arc[start] = none;
+    if (stop(start)) return order;
     for (std::size_t i = 0; i < order.size(); ++i)
       for (const auto& [y, arc] : adj[order[i]])
-        if (!seen[y] && inside(y)) {
-          seen[y] = 1;
+        if (seen_stamp[y] != stamp && inside(y)) {
+          seen_stamp[y] = stamp;
           pred_arc[y] = arc;
           order.push_back(y);
+          if (stop(y)) return order;
         }
     return order;  // the nodes reached
   };
+  const auto never = [](std::size_t) { return false; };
   auto other_end = [&](std::size_t arc, std::size_t node) {
     return R.arcs[arc].lower == node ? R.arcs[arc].upper : R.arcs[arc].lower;
   };
@@ -133,7 +169,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
       node = other_end(arc, node);
     }
   };
-  auto path_arcs = [&](std::size_t target, const std::vector<std::size_t>& pred_arc) {
+  auto path_arcs = [&](std::size_t target, const std::vector<std::size_t>& pred_arc) {  // pred_arc[start] == none
     std::vector<std::size_t> arcs;  // from the BFS start to target
     for (std::size_t x = target; pred_arc[x] != none; x = other_end(pred_arc[x], x)) arcs.push_back(pred_arc[x]);
     std::reverse(arcs.begin(), arcs.end());
@@ -143,50 +179,53 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   std::vector<std::vector<Edge>> merging_sets;
   Reeb_simplification_result result;
   // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork).
+  std::vector<std::size_t> pred, pred_sibling, pred_rest;  // reused: allocated once
+  std::vector<std::size_t> c2_stamp(nn, 0);
+  std::size_t c2_count = 0;
   auto merge_branch = [&](const Reeb_persistence_pair& pair, bool down) {
     const std::size_t e = pair.birth_node, s = pair.death_node;
     auto side = [&](std::size_t y) { return down ? y < s : y > s; };
-    std::vector<std::size_t> pred;
-    const std::vector<std::size_t> c2 = bfs(e, side, pred);
-    std::vector<char> in_c2(nn, 0);
-    for (const std::size_t x : c2) in_c2[x] = 1;
+    // C2: the component of the extreme e beyond the fork. e is its extreme, so it lies in the band between the
+    // fork's level and e's.
+    const std::vector<std::size_t> c2 = bfs(e, side, never, pred);
+    ++c2_count;
+    for (const std::size_t x : c2) c2_stamp[x] = c2_count;
+    const Vertex_index ev = R.nodes[e].vertex;
     // pi2: from the fork through an arc into C2, then to the extreme e.
     std::vector<Edge> edges;
     std::size_t alpha = none, beta = none, best_extreme = none;
-    std::vector<std::size_t> beta_pred;
     for (const auto& [y, arc] : adj[s]) {
       if (!side(y)) continue;
-      if (in_c2[y]) {
+      if (c2_stamp[y] == c2_count) {
         if (alpha == none) alpha = arc;
         continue;
       }
-      // A sibling branch: keep the one whose component reaches farthest (the elder extreme).
-      std::vector<std::size_t> pr;
-      const std::vector<std::size_t> comp = bfs(y, side, pr);
+      // A sibling branch: keep the one whose component reaches farthest (the elder extreme). This searches the
+      // whole sibling component: simplification costs O(n) per merged branch in the worst case (a long stem
+      // with many short spurs), although a search limited to the band between the two levels would do.
+      const std::vector<std::size_t> comp = bfs(y, side, never, pred);
       const std::size_t ext = down ? *std::min_element(comp.begin(), comp.end())
                                    : *std::max_element(comp.begin(), comp.end());
       if (best_extreme == none || (down ? ext < best_extreme : ext > best_extreme)) {
         best_extreme = ext;
         beta = arc;
-        beta_pred = std::move(pr);
+        std::swap(pred, pred_sibling);
       }
     }
     if (alpha == none || beta == none) return;  // cannot happen for a valid pair
     {
       std::vector<std::size_t> arcs{alpha};
       const std::size_t u = other_end(alpha, s);
-      std::vector<std::size_t> pr;
-      bfs(u, side, pr);
-      const std::vector<std::size_t> rest = path_arcs(e, pr);
+      bfs(u, side, [&](std::size_t x) { return x == e; }, pred_rest);
+      const std::vector<std::size_t> rest = path_arcs(e, pred_rest);
       arcs.insert(arcs.end(), rest.begin(), rest.end());
       walk(s, arcs, [](Vertex_index) { return false; }, edges);
     }
     {
       // pi1: from the fork through the sibling branch towards its extreme, until the level of e is reached.
       std::vector<std::size_t> arcs{beta};
-      const std::vector<std::size_t> rest = path_arcs(best_extreme, beta_pred);
+      const std::vector<std::size_t> rest = path_arcs(best_extreme, pred_sibling);
       arcs.insert(arcs.end(), rest.begin(), rest.end());
-      const Vertex_index ev = R.nodes[e].vertex;
       walk(s, arcs, [&](Vertex_index v) { return down ? !less(ev, v) : !less(v, ev); }, edges);
     }
     merging_sets.push_back(std::move(edges));
@@ -268,12 +307,20 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     ++down_degree[cu];
   }
   std::vector<std::vector<Vertex_index>> inputs_of(nc);
-  for (std::size_t v = 0; v < n; ++v) inputs_of[class_index[find(v)]].push_back(static_cast<Vertex_index>(v));
+  for (std::size_t v = 0; v < n; ++v)
+    if (used[v] == 1) inputs_of[class_index[find(v)]].push_back(static_cast<Vertex_index>(v));
+  // Members off their node's level go where the node's vertex went.
+  for (const auto& node : R.nodes)
+    for (const Vertex_index v : node.members)
+      if (used[v] == 2) inputs_of[class_index[find(node.vertex)]].push_back(v);
+  // Indices of `values` the graph does not use (and members placed above) are isolated, single classes: no part
+  // of the result as such.
+  auto unused_class = [&](std::size_t c) { return rep[classes[c]] < n && used[rep[classes[c]]] != 1; };
   Reeb_graph& G = result.graph;
   std::vector<std::size_t> node_of(nc, none);
   for (std::size_t c = 0; c < nc; ++c) {
     const unsigned t = node_type_from_degrees(down_degree[c], up[c].size());
-    if (t == regular) continue;
+    if (t == regular || unused_class(c)) continue;
     node_of[c] = G.nodes.size();
     Reeb_graph::Node node;
     node.vertex = static_cast<Vertex_index>(rep[classes[c]]);
