@@ -278,6 +278,16 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   }
   EXPECT_THROW(make_simplicial_complex_2(3, {}, {{0, 1, 1}}), std::invalid_argument);
   EXPECT_THROW(make_simplicial_complex_2(3, {{2, 2}}, {}), std::invalid_argument);
+  // The length of edges implied by triangles is checked like the given ones, even when no triangle uses it.
+  for (const double bad_length : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    try {
+      make_simplicial_complex_2(3, {}, {{0, 1, 2}}, {}, bad_length);
+      ADD_FAILURE() << "expected an exception for " << bad_length;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("implied_edge_length"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(make_simplicial_complex_2(3, {}, {{0, 1, 2}}, {}, 0.0).edge_lengths, std::vector<double>(3, 0.0));
 }
 
 TEST(AugmentedReebGraph, ProgressCanInterrupt) {

@@ -241,3 +241,101 @@ TEST(GpsTraces, SamplesSitAtTheMeanOfTheirFixes) {
     EXPECT_NEAR(S.points.row(s)[1], sy[s] / n[s], 1e-9) << s;
   }
 }
+
+TEST(GpsTraces, AWaitingVehicleKeepsItsDirection) {
+  // Northbound trips that wait 10 fixes at a light at y = 200, and one that ends with 5 fixes parked at y = 400:
+  // every sample points north (a waiting fix takes the direction the vehicle drives off in, or arrived from at
+  // the end of the trip), so the stop makes no eastbound sample that the heading tolerance would cut off.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 20; ++k) {
+    Gps_trip t;
+    double time = 1000.0 * k;
+    for (int i = 0; i <= 10; ++i) t.push_back({0.3 * k, 20.0 * i, time += 3});
+    for (int w = 0; w < 10; ++w) t.push_back({0.3 * k, 200.0, time += 3});
+    for (int i = 11; i <= 20; ++i) t.push_back({0.3 * k, 20.0 * i, time += 3});
+    if (k == 0)
+      for (int w = 0; w < 5; ++w) t.push_back({0.0, 400.0, time += 3});
+    trips.push_back(t);
+  }
+  Gps_trace_options o;
+  o.heading_tolerance = 30;
+  const Gps_trace_sample S = sample_gps_traces(trips, 20.0, o);
+  ASSERT_GT(S.points.rows, 10u);
+  for (std::size_t i = 0; i < S.points.rows; ++i)
+    EXPECT_LE(skeleton::internal::heading_difference(S.headings[i], 90.0, true), 1e-9) << "sample " << i;
+  // A trip that never moves has no direction: east, by convention.
+  const Gps_trace_sample parked = sample_gps_traces({{{5, 5, 0}, {5, 5, 1}}}, 10.0);
+  ASSERT_EQ(parked.points.rows, 1u);
+  EXPECT_EQ(parked.headings[0], 0.0);
+}
+
+TEST(GpsTraces, SamplesFarApartUseLittleMemory) {
+  // Two short trips 40 km apart at a spacing of 5 m: 64 million cells if the grid were dense. The sampling must
+  // give the same samples as for the trips 1 km apart, shifted (a sparse grid; this test would take seconds and
+  // hundreds of megabytes with a dense one, but it asserts only the result).
+  auto pair_at = [](double gap) {
+    return std::vector<Gps_trip>{straight(0, 0, 1, 0, 20, 10), straight(gap, gap, 1, 0, 20, 10, 100)};
+  };
+  const Gps_trace_sample near = sample_gps_traces(pair_at(1000), 10.0);
+  const Gps_trace_sample far = sample_gps_traces(pair_at(40000), 10.0);
+  ASSERT_EQ(near.points.rows, far.points.rows);
+  EXPECT_EQ(near.trip_links, far.trip_links);
+  EXPECT_EQ(near.weights, far.weights);
+  for (std::size_t i = 0; i < near.points.rows; ++i) {
+    const double shift = near.points.row(i)[1] > 500 ? 39000 : 0;
+    EXPECT_NEAR(far.points.row(i)[0] - shift, near.points.row(i)[0], 1e-9) << i;
+  }
+}
+
+TEST(GpsTraces, TraceGraphChecksItsInput) {
+  const Gps_trace_sample S = sample_gps_traces({straight(0, 0, 1, 0, 20, 10)}, 10.0);
+  ASSERT_GT(S.points.rows, 2u);
+  EXPECT_NO_THROW(build_gps_trace_graph(S, 10.0, 30));
+  auto message = [](const Gps_trace_sample& T, double tolerance) {
+    try {
+      build_gps_trace_graph(T, 10.0, tolerance);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  EXPECT_NE(message(S, -1).find("heading_tolerance"), std::string::npos);
+  EXPECT_NE(message(S, std::nan("")).find("heading_tolerance"), std::string::npos);
+  Gps_trace_sample T = S;
+  T.headings.pop_back();
+  EXPECT_NE(message(T, 30).find("headings"), std::string::npos) << message(T, 30);
+  T = S;
+  T.headings[1] = 400;
+  EXPECT_NE(message(T, 30).find("heading 1 "), std::string::npos) << message(T, 30);
+  T = S;
+  T.trip_links.push_back({0, static_cast<Vertex_index>(S.points.rows)});
+  EXPECT_NE(message(T, 30).find("trip link"), std::string::npos) << message(T, 30);
+  T = S;
+  T.points.data[3] = std::numeric_limits<double>::infinity();
+  EXPECT_NE(message(T, 30).find("point 1 has a non-finite coordinate 1"), std::string::npos) << message(T, 30);
+  T = S;
+  T.points.dimension = 3;
+  EXPECT_NE(message(T, 30).find("planar"), std::string::npos) << message(T, 30);
+}
+
+TEST(GpsTraces, HandMadePointMatricesAreChecked) {
+  Point_matrix m;
+  m.dimension = 2;
+  m.rows = 3;
+  m.data = {0, 0, 1, std::nan(""), 2, 0};
+  for (auto call : {+[](const Point_matrix& p) { build_rips_graph(p, 1.0); },
+                    +[](const Point_matrix& p) { build_knn_graph(p, 1); },
+                    +[](const Point_matrix& p) { extract_reeb_skeleton(p, 1.0); }}) {
+    try {
+      call(m);
+      ADD_FAILURE() << "expected an exception";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("point 1 has a non-finite coordinate 1"), std::string::npos) << e.what();
+    }
+  }
+  m.data[3] = 0;
+  m.rows = 4;  // one row short of values
+  EXPECT_THROW(build_rips_graph(m, 1.0), std::invalid_argument);
+  m.rows = 3;
+  EXPECT_EQ(build_rips_graph(m, 1.0).edges.size(), 2u);
+}

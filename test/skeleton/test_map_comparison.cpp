@@ -286,6 +286,11 @@ TEST(TraceSupport, PinnedCases) {
   EXPECT_EQ(along({trip_of({{-1e12, -1e12}, {1e12, -1e12}})}), 0u);
   EXPECT_EQ(along({trip_of({{-1e150, 0}, {1e150, 1}})}), 1u);
   EXPECT_TRUE(count_trips_along({}, {trip_of({{0, 0}, {1, 1}})}).empty());
+  // Fixes are read by time, as sample_gps_traces() reads them, not in storage order: stored along the street
+  // but driven through (0, 100) in between, the trip does not drive along the sample; stored through (0, 100)
+  // but driven straight along, it does.
+  EXPECT_EQ(along({Gps_trip{{-100, 5, 10}, {100, 5, 30}, {0, 100, 20}}}), 0u);
+  EXPECT_EQ(along({Gps_trip{{-100, 5, 1}, {0, 100, 3}, {100, 5, 2}}}), 1u);
 }
 
 TEST(TraceSupport, AgreesWithBruteForce) {
@@ -399,6 +404,9 @@ TEST(TraceSupport, BadInputIsNamed) {
   Gps_trip bad = ok;
   bad.push_back({std::nan(""), 0, 20});
   EXPECT_NE(message({ok, ok, bad}, o).find("trip 2, fix 2"), std::string::npos) << message({ok, ok, bad}, o);
+  bad = ok;
+  bad[1].time = std::nan("");
+  EXPECT_NE(message({ok, bad}, o).find("trip 1, fix 1"), std::string::npos) << message({ok, bad}, o);
   o.radius = 0;
   EXPECT_NE(message({ok}, o).find("radius"), std::string::npos);
   o.radius = std::numeric_limits<double>::infinity();

@@ -144,6 +144,29 @@ TEST(ReebGraphPersistence, HandExamples) {
   EXPECT_DOUBLE_EQ(Pe.loops[1].persistence(), 1.0);  // born at 6, dies at 4 (f = 5)
 }
 
+TEST(ReebGraphPersistence, TiedValuesGivePairsOnTheDiagonal) {
+  // A constant f on a path 0-2-1 with a square 2-3-5-4 at vertex 2: ties are broken by vertex index, so the
+  // Reeb graph still has its minima, forks and loop, and their pairs lie on the diagonal (persistence 0). The
+  // same pairs as with values ranked by (f, index), only flattened.
+  const auto flat = make(6, {{0, 2}, {1, 2}, {2, 3}, {2, 4}, {3, 5}, {4, 5}}, {}, {0, 0, 0, 0, 0, 0});
+  const Reeb_graph_persistence P = compute_reeb_graph_persistence(reeb_graph_of(flat));
+  const auto ranked = make(6, {{0, 2}, {1, 2}, {2, 3}, {2, 4}, {3, 5}, {4, 5}}, {}, {0, 1, 2, 3, 4, 5});
+  const Reeb_graph_persistence Q = compute_reeb_graph_persistence(reeb_graph_of(ranked));
+  ASSERT_EQ(P.loops.size(), 1u);
+  ASSERT_EQ(P.sublevel_branches.size(), Q.sublevel_branches.size());
+  ASSERT_EQ(P.superlevel_branches.size(), Q.superlevel_branches.size());
+  ASSERT_EQ(P.loops.size(), Q.loops.size());
+  for (const auto* list : {&P.sublevel_branches, &P.superlevel_branches, &P.loops, &P.essential})
+    for (const auto& p : *list) {
+      EXPECT_EQ(p.birth, 0.0);
+      EXPECT_EQ(p.death, 0.0);
+      EXPECT_EQ(p.persistence(), 0.0);
+    }
+  EXPECT_EQ(P.sublevel_branches.size(), 1u);  // minima 0 and 1 meet at the down-fork 2
+  EXPECT_EQ(P.loops[0].birth_node, Q.loops[0].birth_node);
+  EXPECT_EQ(P.loops[0].death_node, Q.loops[0].death_node);
+}
+
 TEST(ReebGraphPersistence, EmptyAndBadInput) {
   const Reeb_graph_persistence P = compute_reeb_graph_persistence(Reeb_graph{});
   EXPECT_TRUE(P.loops.empty() && P.essential.empty() && P.sublevel_branches.empty());

@@ -17,6 +17,14 @@ struct Line {
   std::vector<std::array<double, 2>> p;
   double operator()(Vertex_index a, Vertex_index b) const { return std::hypot(p[a][0] - p[b][0], p[a][1] - p[b][1]); }
 };
+/// Appends the path of vertices 0..10 at (i, 0) with f = i (the street that others meet).
+void add_horizontal_street(Line& pts, std::vector<Edge>& edges, std::vector<double>& f) {
+  for (int i = 0; i <= 10; ++i) {
+    pts.p.push_back({double(i), 0.0});
+    f.push_back(double(i));
+    if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
+  }
+}
 }  // namespace
 
 TEST(RepairReebGraph, JoinsABrokenPathAndSimplifies) {
@@ -67,6 +75,31 @@ TEST(RepairReebGraph, ClosesABrokenCircleIntoALoop) {
   const Reeb_simplification_result T = simplify_by_persistence(fixed.graph, A.values(), 20.0);
   EXPECT_EQ(T.graph.loops(), 0u);
   EXPECT_THROW(repair_reeb_graph(A.reeb_graph(), -1.0, pts), std::invalid_argument);
+}
+
+TEST(RepairReebGraph, NeverJoinsTheEndsOfOneSegment) {
+  // Points 0, 0.5, 1 form a short isolated segment and 10, 30 another: the segment's two ends are within the
+  // distance but joining them would make a loop of two arcs. Pairs of different segments still join.
+  Line pts;
+  for (const double x : {0.0, 0.5, 1.0, 10.0, 30.0, 1.5, 2.5}) pts.p.push_back({x, 0.0});
+  std::vector<double> f;
+  for (const auto& p : pts.p) f.push_back(p[0]);
+  const auto c = make(7, {{0, 1}, {1, 2}, {3, 4}}, {}, f);
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(c.complex, c.f);
+  const Reeb_repair_result fixed = repair_reeb_graph(A.reeb_graph(), 2.0, pts);
+  EXPECT_EQ(fixed.joined, 0u);
+  EXPECT_EQ(fixed.graph.loops(), 0u);
+  EXPECT_EQ(fixed.graph.arcs.size(), A.reeb_graph().arcs.size());
+  // With the segment 5-6 (1.5 to 2.5) beside it, the closest ends of the two segments join (2 and 5, 0.5 apart)
+  // and then no other pair is free.
+  const auto c2 = make(7, {{0, 1}, {1, 2}, {3, 4}, {5, 6}}, {}, f);
+  const Augmented_reeb_graph B = compute_augmented_reeb_graph(c2.complex, c2.f);
+  const Reeb_repair_result two = repair_reeb_graph(B.reeb_graph(), 2.0, pts);
+  ASSERT_EQ(two.joined, 1u);
+  EXPECT_EQ(two.graph.loops(), 0u);
+  const auto& joined = two.graph.arcs.back();
+  EXPECT_EQ(two.graph.nodes[joined.lower].vertex, 2u);
+  EXPECT_EQ(two.graph.nodes[joined.upper].vertex, 5u);
 }
 
 namespace {
@@ -133,11 +166,7 @@ TEST(ConnectDeadEnds, ClosesATJunctionGap) {
   Line pts;
   std::vector<Edge> edges;
   std::vector<double> f;
-  for (int i = 0; i <= 10; ++i) {
-    pts.p.push_back({double(i), 0.0});
-    f.push_back(double(i));
-    if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
-  }
+  add_horizontal_street(pts, edges, f);
   for (int i = 0; i < 9; ++i) {
     pts.p.push_back({5.0, 1.5 + i});
     f.push_back(6.5 + i);
@@ -177,4 +206,29 @@ TEST(ConnectDeadEnds, ClosesATJunctionGap) {
   const Reeb_graph S = simplify_by_persistence(G, c.f, 0.5).graph;
   EXPECT_EQ(S.components, 1u);
   EXPECT_THROW(connect_dead_ends(R, c.f, -1, pts), std::invalid_argument);
+}
+
+TEST(ConnectDeadEnds, LeavesShortIsolatedSegmentsAlone) {
+  // A horizontal path 0..10 and a short vertical segment (vertices 11, 12 at (5, 1.5) and (5, 2.5)): its ends are
+  // 1 apart, within the distance 2, so it is a blob rather than a street that stops short, and stays apart. A
+  // segment of length 3 (ends 3 apart) is a street end: its lower end connects.
+  for (const double length : {1.0, 3.0}) {
+    Line pts;
+    std::vector<Edge> edges;
+    std::vector<double> f;
+    add_horizontal_street(pts, edges, f);
+    pts.p.push_back({5.0, 1.5});
+    pts.p.push_back({5.0, 1.5 + length});
+    f.push_back(20);
+    f.push_back(20 + length);
+    edges.push_back({11, 12});
+    const Complex_with_function c = make(pts.p.size(), edges, {}, f);
+    const Reeb_graph R = reeb_graph_of(c);
+    ASSERT_EQ(R.components, 2u);
+    const Reeb_dead_end_result joined = connect_dead_ends(R, c.f, 2.0, pts);
+    EXPECT_EQ(joined.connected, length < 2 ? 0u : 1u) << length;
+    EXPECT_EQ(joined.graph.components, length < 2 ? 2u : 1u) << length;
+    // repair_reeb_graph() does not join the segment's two ends either.
+    EXPECT_EQ(repair_reeb_graph(R, 2.0, pts).joined, 0u);
+  }
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -411,6 +412,45 @@ TEST(SyntheticCity, StreetsAndTrips) {
   b = {};
   b.noise = -1;
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("noise"), std::string::npos);
+}
+
+TEST(SyntheticCity, StreetRemovalEqualsTheGreedySearch) {
+  // The union-find removal against the definition: try the edges in order, remove one when a search finds the
+  // rest still connected, until `count` are gone. Random multigraphs (loops, parallel edges, disconnected ones).
+  std::mt19937_64 rng(5);
+  for (int round = 0; round < 400; ++round) {
+    const std::size_t n = 1 + rng() % 9, m = rng() % 20;
+    std::vector<Edge> edges;
+    for (std::size_t k = 0; k < m; ++k)
+      edges.push_back({static_cast<Vertex_index>(rng() % n), static_cast<Vertex_index>(rng() % n)});
+    std::vector<std::size_t> order(m);
+    for (std::size_t k = 0; k < m; ++k) order[k] = k;
+    std::shuffle(order.begin(), order.end(), rng);
+    const std::size_t count = rng() % (m + 2);
+    std::vector<char> expected(m, 0);
+    auto connected = [&]() {  // relabel until every edge's ends agree: one label left means connected
+      std::vector<std::size_t> label(n);
+      for (std::size_t v = 0; v < n; ++v) label[v] = v;
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t k = 0; k < m; ++k)
+          if (!expected[k] && label[edges[k][0]] != label[edges[k][1]]) {
+            label[edges[k][0]] = label[edges[k][1]] = std::min(label[edges[k][0]], label[edges[k][1]]);
+            changed = true;
+          }
+      }
+      return std::all_of(label.begin(), label.end(), [](std::size_t l) { return l == 0; });
+    };
+    for (std::size_t k = 0, done = 0; k < m && done < count; ++k) {
+      expected[order[k]] = 1;
+      if (connected())
+        ++done;
+      else
+        expected[order[k]] = 0;
+    }
+    EXPECT_EQ(skeleton::internal::remove_keeping_connected(n, edges, order, count), expected)
+        << "round " << round << ", n " << n << ", m " << m << ", count " << count;
+  }
 }
 
 TEST(SyntheticCity, GabrielEdgesOfDegenerateInput) {

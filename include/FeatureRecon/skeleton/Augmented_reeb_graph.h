@@ -69,7 +69,9 @@ struct Reeb_graph {
     std::vector<Vertex_index> vertices;  ///< regular input vertices mapped into the arc, in increasing order
   };
   std::vector<Node> nodes;          ///< critical nodes, by increasing (f, vertex index)
-  std::vector<Arc> arcs;            ///< arcs, by (lower, upper, first interior vertex)
+  /// Arcs by lower node; the arcs out of one node by the (f, vertex index) order of the first vertex each reaches
+  /// (its first interior vertex, or its upper node when it has none). Simplification and repair append arcs.
+  std::vector<Arc> arcs;
   std::size_t components = 0;       ///< connected components of the graph
   std::size_t loops() const { return arcs.size() + components - nodes.size(); }  ///< first Betti number
   std::size_t count(Node_type flag) const {  ///< number of nodes carrying `flag`
@@ -187,8 +189,10 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     FeatureRecon::internal::throw_invalid_argument(
         fn, "the complex is not canonical (unsorted, repeated or out-of-range simplices); build it with "
             "make_simplicial_complex_2()");
-  if (K.number_of_edges() + K.number_of_triangles() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) ||
-      n >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+  // 32-bit indices: the link-cut forest has 2E nodes; arcs and triangles are counted in int32 too.
+  const std::size_t index_limit = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
+  if (K.number_of_edges() + K.number_of_triangles() >= index_limit || 2 * K.number_of_edges() >= index_limit ||
+      n >= index_limit)
     FeatureRecon::internal::throw_invalid_argument(fn, "the complex is too large (", K.number_of_edges(),
                                                    " edges, ", K.number_of_triangles(), " triangles)");
 

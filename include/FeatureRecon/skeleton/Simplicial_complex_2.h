@@ -80,7 +80,7 @@ inline void sort_unique_edges(std::vector<Edge>& edges, std::vector<double>* len
 /// triangle (lengths of added edges: `implied_edge_length`) and removing repetitions.
 /// \param lengths empty, or aligned with `edges`.
 /// \throws std::invalid_argument naming the index of an edge or triangle with a vertex out of range,
-/// a repeated vertex, or a negative or non-finite length.
+/// a repeated vertex, or a negative or non-finite length (implied_edge_length too).
 inline Simplicial_complex_2 make_simplicial_complex_2(std::size_t number_of_vertices, std::vector<Edge> edges,
                                                       std::vector<Triangle> triangles,
                                                       std::vector<double> lengths = {},
@@ -104,6 +104,9 @@ inline Simplicial_complex_2 make_simplicial_complex_2(std::size_t number_of_vert
       FeatureRecon::internal::throw_invalid_argument(fn, "edge ", i, " has length ", lengths[i],
                                                      " (must be finite and >= 0)");
   }
+  if (!(std::isfinite(implied_edge_length) && implied_edge_length >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "implied_edge_length is ", implied_edge_length,
+                                                   " (must be finite and >= 0)");
   const bool weighted = !lengths.empty() || (implied_edge_length != 1.0 && !triangles.empty());
   if (weighted && lengths.empty()) lengths.assign(edges.size(), 1.0);
   for (std::size_t i = 0; i < triangles.size(); ++i) {

@@ -47,7 +47,9 @@ struct Reeb_graph_embedding {
 
 /// Coordinates of the points in at most 3 dimensions: unchanged up to 3D, else the projection onto the three
 /// principal axes (PCA with Eigen, centred at the mean). Row-major, 3 columns (zero-padded).
+/// \throws std::invalid_argument when the matrix is inconsistent or has a non-finite coordinate.
 inline std::vector<std::array<double, 3>> project_to_3d(const Point_matrix& m) {
+  internal::check_point_matrix(m, "project_to_3d");
   std::vector<std::array<double, 3>> out(m.rows, {0.0, 0.0, 0.0});
   if (m.dimension <= 3) {
     for (std::size_t i = 0; i < m.rows; ++i)
@@ -401,11 +403,12 @@ struct Reeb_graph_input_embedding {
 
 /// embed_reeb_graph() in the input space itself (no projection): the same centroids of level-set pieces and the
 /// same smoothing, in any dimension. Used to measure how far arcs are from a true graph in R^d.
-/// \pre graph.number_of_vertices == points.rows == values.size() (checked; throws).
+/// \pre graph.number_of_vertices == points.rows == values.size(); coordinates finite (checked; throws).
 inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_graph& G, const Proximity_graph& graph,
                                                                   const Point_matrix& points,
                                                                   const std::vector<double>& values,
                                                                   const Embedding_options& options = {}) {
+  internal::check_point_matrix(points, "embed_reeb_graph_in_input_space");
   const internal::Adjacency adjacency = internal::make_adjacency(graph);
   internal::Flat_embedding F = internal::embed_flat(G, &adjacency, points, values, options);
   Reeb_graph_input_embedding E;

@@ -211,6 +211,7 @@ inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Ver
 inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double rips_radius,
                                            const Skeleton_options& options = {}) {
   internal::check_skeleton_options(options, "extract_reeb_skeleton");
+  internal::check_point_matrix(points, "extract_reeb_skeleton");
   Proximity_graph_options po;
   po.search = options.search;
   if (options.progress) po.progress = [&options](double t) { return options.progress(0.3 * t); };
@@ -230,6 +231,7 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
   if (coordinates.rows != graph.number_of_vertices)
     FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "the graph has ", graph.number_of_vertices,
                                                    " vertices but coordinates has ", coordinates.rows, " rows");
+  internal::check_point_matrix(coordinates, "extract_reeb_skeleton", "coordinates");
   return internal::skeleton_from_graph(
       graph, coordinates,
       [&coordinates](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(coordinates, a, b); },

@@ -97,15 +97,29 @@ struct Cell_hash {
   }
 };
 
+/// Indices of a trip's fixes by time (stable: equal times keep their order; a NaN time sorts last).
+inline std::vector<std::size_t> time_order(const Gps_trip& trip) {
+  std::vector<std::size_t> o(trip.size());
+  for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
+  std::stable_sort(o.begin(), o.end(), [&trip](std::size_t a, std::size_t b) {
+    const double s = trip[a].time, t = trip[b].time;
+    return std::isnan(s) ? false : (std::isnan(t) || s < t);
+  });
+  return o;
+}
+
 /// Buckets of sample indices on a square grid over a bounding box: a dense array of cells when there are at
-/// most 2^24 of them, a hash map otherwise (sparse data over a huge extent).
+/// most 2^24 of them and at most 16 per expected item (`expected_items`), a hash map otherwise (sparse data over
+/// a large extent: two trips 40 km apart must not allocate millions of empty cells).
 class Planar_grid {
  public:
-  Planar_grid(double xmin, double ymin, double xmax, double ymax, double cell) : m_cell(cell) {
+  Planar_grid(double xmin, double ymin, double xmax, double ymax, double cell, std::size_t expected_items)
+      : m_cell(cell) {
     m_x0 = std::floor(xmin / cell);
     m_y0 = std::floor(ymin / cell);
     const double w = std::floor(xmax / cell) - m_x0 + 1, h = std::floor(ymax / cell) - m_y0 + 1;
-    if (w * h <= double(1 << 24) && w >= 1 && h >= 1) {
+    if (w * h <= double(1 << 24) && w * h <= 16.0 * (static_cast<double>(expected_items) + 64) && w >= 1 &&
+        h >= 1) {
       m_w = static_cast<std::int64_t>(w);
       m_h = static_cast<std::int64_t>(h);
       m_dense.resize(static_cast<std::size_t>(m_w * m_h));
@@ -153,7 +167,7 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
 inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double heading_tolerance) {
   const double R = S.density_radius, R2 = R * R;
   const std::array<double, 4> box = bounding_box(S.points);
-  Planar_grid grid(box[0], box[1], box[2], box[3], R);
+  Planar_grid grid(box[0], box[1], box[2], box[3], R, S.points.rows);
   for (std::uint32_t i = 0; i < S.points.rows; ++i) grid.push(grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]), i);
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> new_index(S.points.rows, none);
@@ -215,9 +229,7 @@ inline Proximity_graph planar_graph(const Point_matrix& points, std::vector<Edge
 inline double median_gps_step(const std::vector<Gps_trip>& trips) {
   std::vector<double> steps;
   for (const Gps_trip& trip : trips) {
-    std::vector<std::size_t> o(trip.size());
-    for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
-    std::stable_sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return trip[a].time < trip[b].time; });
+    const std::vector<std::size_t> o = internal::time_order(trip);
     for (std::size_t i = 1; i < o.size(); ++i) {
       const double d = std::hypot(trip[o[i]].x - trip[o[i - 1]].x, trip[o[i]].y - trip[o[i - 1]].y);
       if (std::isfinite(d)) steps.push_back(d);
@@ -229,7 +241,9 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 }
 
 /// Densifies and samples GPS traces (see Gps_trace_options). Each sample carries the direction of the segment it
-/// came from; a trace point joins the first earlier sample within the spacing whose direction differs by at most
+/// came from (for a fix, the segment to the next fix at another place, or from the last one at the end of the
+/// trip, so that fixes of a waiting vehicle point the way it drives; a trip that never moves points east); a
+/// trace point joins the first earlier sample within the spacing whose direction differs by at most
 /// the heading tolerance, so opposite sides of a crossing stay apart when directions are used.
 /// \param rips_radius the radius the samples will be joined at (for the automatic rules).
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
@@ -256,10 +270,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.time))
         FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " has a non-finite value");
     }
-    order[t].resize(trips[t].size());
-    for (std::size_t i = 0; i < order[t].size(); ++i) order[t][i] = i;
-    std::stable_sort(order[t].begin(), order[t].end(),
-                     [&](std::size_t a, std::size_t b) { return trips[t][a].time < trips[t][b].time; });
+    order[t] = internal::time_order(trips[t]);
     S.fixes += trips[t].size();
   }
   S.median_step = median_gps_step(trips);
@@ -277,7 +288,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       ++fixes.rows;
     }
   const std::array<double, 4> box = internal::bounding_box(fixes);  // inserted points lie inside it too
-  internal::Planar_grid grid(box[0], box[1], box[2], box[3], cell);
+  internal::Planar_grid grid(box[0], box[1], box[2], box[3], cell, fixes.rows);
   // The sample a trace point joins (creating one if none is close): first in creation order.
   auto join = [&](double x, double y, double heading) -> std::uint32_t {
     const auto c = grid.cell_of(x, y);
@@ -324,18 +335,32 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         S.trip_links.push_back({std::min(previous, s), std::max(previous, s)});
       previous = s;
     };
+    // Direction of a fix: towards the next fix at another place; at the end of the trip, from the last fix at
+    // another place. A vehicle waiting at a light keeps the direction it drives off in.
+    const std::size_t none = std::numeric_limits<std::size_t>::max();
+    auto same_place = [&](std::size_t i, std::size_t j) {
+      return trips[t][o[i]].x == trips[t][o[j]].x && trips[t][o[i]].y == trips[t][o[j]].y;
+    };
+    std::vector<std::size_t> next_move(o.size(), none), previous_move(o.size(), none);
+    for (std::size_t i = o.size(); i-- > 1;)
+      next_move[i - 1] = same_place(i - 1, i) ? next_move[i] : i;
+    for (std::size_t i = 1; i < o.size(); ++i) previous_move[i] = same_place(i - 1, i) ? previous_move[i - 1] : i - 1;
     for (std::size_t i = 0; i < o.size(); ++i) {
       const Gps_fix& f = trips[t][o[i]];
-      // Direction: of the segment to the next fix (the previous one at the end of the trip).
-      double dx = 0, dy = 0;
+      double hx = 0, hy = 0;
+      if (next_move[i] != none) {
+        hx = trips[t][o[next_move[i]]].x - f.x;
+        hy = trips[t][o[next_move[i]]].y - f.y;
+      } else if (previous_move[i] != none) {
+        hx = f.x - trips[t][o[previous_move[i]]].x;
+        hy = f.y - trips[t][o[previous_move[i]]].y;
+      }
+      const double h = heading_of(hx, hy);
+      double dx = 0, dy = 0;  // the segment to the next fix, densified below
       if (i + 1 < o.size()) {
         dx = trips[t][o[i + 1]].x - f.x;
         dy = trips[t][o[i + 1]].y - f.y;
-      } else if (i > 0) {
-        dx = f.x - trips[t][o[i - 1]].x;
-        dy = f.y - trips[t][o[i - 1]].y;
       }
-      const double h = heading_of(dx, dy);
       const std::uint32_t s = join(f.x, f.y, h);
       S.sample_of_fix[first_fix + o[i]] = s;
       if (i > 0) {
@@ -388,9 +413,35 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
 /// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose headings
 /// differ by at most `heading_tolerance` degrees (directed or not, as sampled), plus the trip links; lengths are
 /// Euclidean.
+/// \throws std::invalid_argument when heading_tolerance is negative or NaN, when S is inconsistent (points not
+///         planar or not one heading per point, a heading outside its range, a trip link naming a missing
+///         sample or joining a sample to itself), or as build_rips_graph().
 inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double rips_radius,
                                              double heading_tolerance = 180,
                                              const Proximity_graph_options& options = {}) {
+  const char* fn = "build_gps_trace_graph";
+  if (!(heading_tolerance >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees, got ",
+                                                   heading_tolerance);
+  if (S.points.dimension != 2 || S.points.data.size() != 2 * S.points.rows)
+    FeatureRecon::internal::throw_invalid_argument(fn, "the samples must be planar points (dimension 2, ",
+                                                   "2 coordinates per row), got dimension ", S.points.dimension,
+                                                   " with ", S.points.data.size(), " values for ", S.points.rows,
+                                                   " rows");
+  if (S.headings.size() != S.points.rows)
+    FeatureRecon::internal::throw_invalid_argument(fn, "there are ", S.points.rows, " samples but ",
+                                                   S.headings.size(), " headings");
+  const double period = S.directed ? 360 : 180;
+  for (std::size_t i = 0; i < S.headings.size(); ++i)
+    if (!(S.headings[i] >= 0 && S.headings[i] < period))
+      FeatureRecon::internal::throw_invalid_argument(fn, "heading ", i, " (", S.headings[i], ") is not in [0, ",
+                                                     period, ")");
+  for (std::size_t k = 0; k < S.trip_links.size(); ++k)
+    if (S.trip_links[k][0] >= S.points.rows || S.trip_links[k][1] >= S.points.rows ||
+        S.trip_links[k][0] == S.trip_links[k][1])
+      FeatureRecon::internal::throw_invalid_argument(fn, "trip link ", k, " (", S.trip_links[k][0], ", ",
+                                                     S.trip_links[k][1], ") is a loop or names a sample >= ",
+                                                     S.points.rows);
   Proximity_graph rips = build_rips_graph(S.points, rips_radius, options);
   std::vector<Edge> edges;
   edges.reserve(rips.edges.size() + S.trip_links.size());

@@ -440,13 +440,13 @@ inline Trace_support_options trace_support_options(const Map_comparison_options&
 }
 
 /// For each sample, the number of distinct trips that drive along it: trips with a segment between consecutive
-/// fixes that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
+/// fixes (by time, as sample_gps_traces() orders them) that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
 /// less than `bearing_limit` from the sample's, regardless of direction. Segments between fixes at the same
 /// place have no bearing and count for nothing.
 /// Time: linear in the total length of the segments (clipped to the samples' bounding box) over the radius, plus
 /// the samples met; a glitch fix far away costs nothing extra.
 /// \throws std::invalid_argument naming the option (radius not positive and finite, bearing limit not positive),
-///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate.
+///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate or time.
 inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
                                                   const std::vector<Gps_trip>& trips,
                                                   const Trace_support_options& options = {}) {
@@ -459,9 +459,9 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
                                                    options.bearing_limit);
   for (std::size_t t = 0; t < trips.size(); ++t)
     for (std::size_t i = 0; i < trips[t].size(); ++i)
-      if (!std::isfinite(trips[t][i].x) || !std::isfinite(trips[t][i].y))
+      if (!std::isfinite(trips[t][i].x) || !std::isfinite(trips[t][i].y) || !std::isfinite(trips[t][i].time))
         FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i,
-                                                       " has a non-finite coordinate");
+                                                       " has a non-finite coordinate or time");
   std::array<double, 4> box{0, 0, 0, 0};  // of the samples, grown by the radius
   for (std::size_t j = 0; j < samples.size(); ++j) {
     const auto& p = samples[j].position;
@@ -492,9 +492,12 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
   std::vector<std::size_t> last_trip(samples.size(), std::numeric_limits<std::size_t>::max());
   const double r2 = options.radius * options.radius;
   std::vector<std::uint64_t> cells;
-  for (std::size_t t = 0; t < trips.size(); ++t)
-    for (std::size_t i = 0; i + 1 < trips[t].size(); ++i) {
-      const std::array<double, 2> a{trips[t][i].x, trips[t][i].y}, b{trips[t][i + 1].x, trips[t][i + 1].y};
+  for (std::size_t t = 0; t < trips.size(); ++t) {
+    const std::vector<std::size_t> o = internal::time_order(trips[t]);  // as sample_gps_traces() reads a trip
+    for (std::size_t i = 0; i + 1 < o.size(); ++i) {
+      const Gps_fix& fa = trips[t][o[i]];
+      const Gps_fix& fb = trips[t][o[i + 1]];
+      const std::array<double, 2> a{fa.x, fa.y}, b{fb.x, fb.y};
       const double ux = b[0] - a[0], uy = b[1] - a[1], len2 = ux * ux + uy * uy;
       if (!(len2 > 0)) continue;
       const double bearing = internal::bearing_of(a, b);
@@ -546,6 +549,7 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
         }
       }
     }
+  }
   return count;
 }
 

@@ -31,13 +31,14 @@ struct Reeb_persistence_pair {
 /// `sublevel_branches` = Ord0, `superlevel_branches` = Rel1, `essential` = Ext+0, `loops` = Ext-1.
 struct Reeb_graph_persistence {
   /// 0-dim sublevel persistence: a minimum (birth) paired with the down-fork where its component merges into
-  /// an older one (death); birth < death.
+  /// an older one (death); birth <= death (equal when f ties: a pair on the diagonal).
   std::vector<Reeb_persistence_pair> sublevel_branches;
   /// 0-dim superlevel persistence: a maximum (birth) paired with the up-fork where its component merges into
-  /// one with a higher maximum (death); birth > death.
+  /// one with a higher maximum (death); birth >= death (equal on ties).
   std::vector<Reeb_persistence_pair> superlevel_branches;
   /// 1-dim extended persistence: an essential down-fork (birth) paired with the essential up-fork at the
-  /// bottom of the thinnest loop born there (death); birth > death, persistence = height of that loop.
+  /// bottom of the thinnest loop born there (death); birth >= death (equal on ties), persistence = height of that
+  /// loop.
   std::vector<Reeb_persistence_pair> loops;
   /// One pair per connected component: its global minimum and maximum (birth <= death).
   std::vector<Reeb_persistence_pair> essential;

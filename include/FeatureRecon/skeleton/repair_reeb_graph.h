@@ -51,8 +51,10 @@ struct Reeb_repair_result {
 
 /// Graph fixing of dissertation Ch. 3.3.2: joins pairs of degree-1 nodes whose input points are at most
 /// `max_distance` apart (the input distance, not the distance in the complex), closest pairs first, each node at
-/// most once. A joined pair gets a new arc (no interior vertices) from the lower node to the higher one. The new
-/// features are not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and
+/// most once. A joined pair gets a new arc (no interior vertices) from the lower node to the higher one. The two
+/// ends of one arc (an isolated segment) are never joined: when they are each other's closest free end, the
+/// segment is left as it is (no loop of two arcs), and neither end joins anything farther. The new features are
+/// not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and
 /// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes.
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
 /// \pre max_distance >= 0 and finite (checked; throws).
@@ -64,10 +66,12 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
   Reeb_repair_result result;
   result.graph = R;
   Reeb_graph& G = result.graph;
-  std::vector<std::size_t> degree(G.nodes.size(), 0);
+  std::vector<std::size_t> degree(G.nodes.size(), 0), other_end(G.nodes.size(), G.nodes.size());
   for (const auto& a : G.arcs) {
     ++degree[a.lower];
     ++degree[a.upper];
+    other_end[a.lower] = a.upper;
+    other_end[a.upper] = a.lower;
   }
   std::vector<std::size_t> ends;
   for (std::size_t i = 0; i < G.nodes.size(); ++i)
@@ -81,6 +85,10 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
   std::sort(candidates.begin(), candidates.end());
   for (const auto& [d, x, y] : candidates) {
     if (degree[x] != 1 || degree[y] != 1) continue;
+    if (other_end[x] == y) {  // the two ends of an isolated arc: closest to each other, so left alone
+      degree[x] = degree[y] = 2;
+      continue;
+    }
     Reeb_graph::Arc arc;
     arc.lower = std::min(x, y);  // nodes are in increasing (value, vertex) order
     arc.upper = std::max(x, y);
@@ -103,7 +111,8 @@ struct Reeb_dead_end_result {
 /// The other half of graph fixing: a degree-1 node whose input point is at most `max_distance` from a point of
 /// another part of the graph (a node, or an interior vertex of an arc that does not end at this node) gets an arc
 /// to the closest such point (ties: smallest vertex index), splitting that arc there: a street that stops short
-/// of the street it meets (a T junction with a gap). Dead ends are taken in node order and see the arcs added
+/// of the street it meets (a T junction with a gap). An isolated arc whose two ends lie within `max_distance` of
+/// each other is not connected (too short to be a street end). Dead ends are taken in node order and see the arcs added
 /// before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends
 /// and n input vertices in the graph. \param values f of every input vertex (for the new nodes).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
@@ -138,6 +147,11 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
     std::size_t own = 0;
     while (G.arcs[own].lower != u && G.arcs[own].upper != u) ++own;
     const std::size_t neighbour = G.arcs[own].lower == u ? G.arcs[own].upper : G.arcs[own].lower;
+    // An isolated segment whose ends lie within the distance is a blob, not a street that stops short: left
+    // alone, as repair_reeb_graph() leaves it.
+    if (degree[neighbour] == 1 &&
+        static_cast<double>(distance(end_vertex, G.nodes[neighbour].vertex)) <= max_distance)
+      continue;
     double best = max_distance;
     std::size_t best_node = G.nodes.size(), best_arc = G.arcs.size(), best_position = 0;
     Vertex_index best_vertex = 0;

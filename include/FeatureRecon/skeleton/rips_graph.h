@@ -81,6 +81,23 @@ Point_matrix make_point_matrix(const PointRange& points, const Traits& traits = 
 
 namespace internal {
 
+/// Checks a Point_matrix built by hand: rows * dimension values, dimension >= 1 when there are rows, every
+/// coordinate finite (naming the point and coordinate).
+inline void check_point_matrix(const Point_matrix& m, const char* fn, const char* name = "points") {
+  const bool consistent = m.dimension == 0 ? m.data.empty()
+                                           : m.data.size() % m.dimension == 0 && m.data.size() / m.dimension == m.rows;
+  if (!consistent)
+    FeatureRecon::internal::throw_invalid_argument(fn, name, " has ", m.rows, " rows of dimension ", m.dimension,
+                                                   " but ", m.data.size(), " values");
+  if (m.rows > 0 && m.dimension == 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, name, " has dimension 0");
+  for (std::size_t i = 0; i < m.rows; ++i)
+    for (std::size_t c = 0; c < m.dimension; ++c)
+      if (!std::isfinite(m.row(i)[c]))
+        FeatureRecon::internal::throw_invalid_argument(fn, name, ": point ", i, " has a non-finite coordinate ", c,
+                                                       " (", m.row(i)[c], ")");
+}
+
 /// \cond
 using Kd_kernel = CGAL::Simple_cartesian<double>;
 using Kd_point = Kd_kernel::Point_3;
@@ -182,6 +199,7 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
   const char* fn = "build_rips_graph";
   if (!(std::isfinite(radius) && radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
+  internal::check_point_matrix(m, fn);
   Proximity_graph g;
   g.number_of_vertices = m.rows;
   if (m.rows > std::numeric_limits<Vertex_index>::max())
@@ -225,6 +243,7 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
                                        const Proximity_graph_options& options = {}) {
   const char* fn = "build_knn_graph";
   if (k < 1) FeatureRecon::internal::throw_invalid_argument(fn, "k must be >= 1, got ", k);
+  internal::check_point_matrix(m, fn);
   const std::size_t n = m.rows;
   Proximity_graph g;
   g.number_of_vertices = n;

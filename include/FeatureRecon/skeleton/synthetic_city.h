@@ -76,6 +76,47 @@ struct Synthetic_city {
 };
 
 namespace internal {
+/// Greedy deletion: for k = 0, 1, ..., edge order[k] is removed when the edges left without it still connect
+/// the n vertices, until `count` are removed. Returns the removed flags by edge. O(m log m) instead of a search
+/// per edge: the greedy deletion keeps, among the edges it looks at, exactly those that Kruskal's algorithm picks
+/// when it adds them in the opposite order on top of the edges it never looks at (reverse-delete = Kruskal). It
+/// looks at the first k* edges of the order, k* the first k with k - (c(k) - 1) = count, where c(k) is the number
+/// of components of the edges order[k..m). A disconnected graph loses nothing.
+inline std::vector<char> remove_keeping_connected(std::size_t n, const std::vector<Edge>& edges,
+                                                  const std::vector<std::size_t>& order, std::size_t count) {
+  const std::size_t m = edges.size();
+  std::vector<char> removed(m, 0);
+  std::vector<Vertex_index> parent(n);
+  auto reset = [&parent]() {
+    for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<Vertex_index>(v);
+  };
+  auto find = [&parent](Vertex_index v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  auto unite = [&](const Edge& e) {  // true when e joined two components
+    const Vertex_index x = find(e[0]), y = find(e[1]);
+    if (x == y) return false;
+    parent[std::max(x, y)] = std::min(x, y);
+    return true;
+  };
+  std::vector<std::size_t> components(m + 1, n);  // c(k)
+  reset();
+  for (std::size_t k = m; k-- > 0;) components[k] = components[k + 1] - (unite(edges[order[k]]) ? 1 : 0);
+  if (components[0] != 1 || count == 0) return removed;
+  std::size_t looked_at = m;
+  for (std::size_t k = 1; k <= m; ++k)
+    if (k + 1 - components[k] >= count) {  // c(k) - 1 <= k: no wrap-around
+      looked_at = k;
+      break;
+    }
+  reset();
+  for (std::size_t k = looked_at; k < m; ++k) unite(edges[order[k]]);
+  for (std::size_t k = looked_at; k-- > 0;)
+    if (!unite(edges[order[k]])) removed[order[k]] = 1;
+  return removed;
+}
+
 /// The edges of the Gabriel graph of distinct points (pairs whose diametral disc holds no other point), from
 /// their Delaunay triangulation with exact predicates; sorted, each as (smaller index, larger index). A point on
 /// the boundary of a diametral disc removes the edge.
@@ -170,12 +211,27 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     const double w = double(nx - 1) * o.block_width, h = double(ny - 1) * o.block_height;
     double spacing = 0.6 * std::sqrt(o.block_width * o.block_height);
     std::vector<std::array<double, 2>> q;
+    // Points bucketed on cells a little wider than the first spacing (the spacing only shrinks): a point closer
+    // than the spacing lies in one of the 3 x 3 cells around a dart.
+    const double cell = 1.001 * spacing;
+    const auto columns = static_cast<std::size_t>(w / cell) + 1, rows = static_cast<std::size_t>(h / cell) + 1;
+    std::vector<std::vector<std::uint32_t>> bucket(columns * rows);
+    auto cell_of = [cell](double v, std::size_t size) {
+      return std::min(size - 1, static_cast<std::size_t>(std::max(0.0, std::floor(v / cell))));
+    };
     for (std::size_t rejected = 0; q.size() < n;) {
       const std::array<double, 2> p{w * random(), h * random()};
-      const bool free = std::all_of(q.begin(), q.end(), [&](const std::array<double, 2>& r) {
-        return std::hypot(p[0] - r[0], p[1] - r[1]) >= spacing;
-      });
+      const std::size_t ci = cell_of(p[0], columns), cj = cell_of(p[1], rows);
+      bool free = true;
+      for (std::size_t j = cj == 0 ? 0 : cj - 1; free && j <= std::min(rows - 1, cj + 1); ++j)
+        for (std::size_t i = ci == 0 ? 0 : ci - 1; free && i <= std::min(columns - 1, ci + 1); ++i)
+          for (const std::uint32_t k : bucket[j * columns + i])
+            if (!(std::hypot(p[0] - q[k][0], p[1] - q[k][1]) >= spacing)) {
+              free = false;
+              break;
+            }
       if (free) {
+        bucket[cj * columns + ci].push_back(static_cast<std::uint32_t>(q.size()));
         q.push_back(p);
       } else if (++rejected == 1000 * n) {
         spacing *= 0.95;
@@ -190,34 +246,8 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   std::vector<std::size_t> order(grid_streets);
   for (std::size_t k = 0; k < grid_streets; ++k) order[k] = k;
   for (std::size_t k = grid_streets; k > 1; --k) std::swap(order[k - 1], order[std::size_t(random() * double(k))]);
-  std::vector<char> removed(grid_streets, 0);
-  auto connected = [&]() {
-    std::vector<std::vector<Vertex_index>> adj(n);
-    for (std::size_t k = 0; k < grid_streets; ++k)
-      if (!removed[k]) {
-        adj[streets[k][0]].push_back(streets[k][1]);
-        adj[streets[k][1]].push_back(streets[k][0]);
-      }
-    std::vector<char> seen(n, 0);
-    std::vector<Vertex_index> stack{0};
-    seen[0] = 1;
-    std::size_t count = 1;
-    while (!stack.empty()) {
-      const Vertex_index v = stack.back();
-      stack.pop_back();
-      for (const Vertex_index w : adj[v])
-        if (!seen[w]) seen[w] = 1, ++count, stack.push_back(w);
-    }
-    return count == n;
-  };
   const auto to_remove = static_cast<std::size_t>(std::floor(o.missing_streets * double(grid_streets)));
-  for (std::size_t k = 0, done = 0; k < grid_streets && done < to_remove; ++k) {
-    removed[order[k]] = 1;
-    if (connected())
-      ++done;
-    else
-      removed[order[k]] = 0;
-  }
+  const std::vector<char> removed = internal::remove_keeping_connected(n, streets, order, to_remove);
   for (std::size_t k = 0; k < grid_streets; ++k)
     if (!removed[k]) city.streets.edges.push_back(streets[k]);
   if (o.diagonal && o.layout == Synthetic_city_layout::grid)
