@@ -388,8 +388,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (args.has("geojson")) io::write_skeleton_geojson(outputs.path("geojson"), graph);
   if (args.has("ply")) io::write_skeleton_ply(outputs.path("ply"), graph);
   if (args.has("svg")) {
+    // The points as the skeleton is drawn: their first two coordinates, above 3-D those of the PCA projection.
     std::vector<std::array<double, 2>> xy;
-    for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
+    if (m.dimension > 3) {
+      for (const auto& p : project_to_3d(m)) xy.push_back({p[0], p[1]});
+    } else {
+      for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
+    }
     io::write_skeleton_svg(outputs.path("svg"), xy, graph);
   }
   outputs.commit();

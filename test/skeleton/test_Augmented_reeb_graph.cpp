@@ -301,6 +301,30 @@ TEST(AugmentedReebGraph, ProgressCanInterrupt) {
   for (const auto& a : A.arcs()) EXPECT_NE(a.lower, a.upper);  // only closed arcs are kept
 }
 
+TEST(AugmentedReebGraph, SurfaceMeshWithRemovedVertices) {
+  // A removed (not yet collected) vertex leaves a gap in the indices: refused, instead of an isolated phantom
+  // vertex; after collect_garbage() the same mesh gives its 4 vertices.
+  using K = CGAL::Simple_cartesian<double>;
+  using Mesh = CGAL::Surface_mesh<K::Point_3>;
+  Mesh mesh;
+  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({9, 9, 9}), v2 = mesh.add_vertex({1, 0, 0}),
+             v3 = mesh.add_vertex({0, 1, 0});
+  mesh.add_vertex({5, 5, 5});
+  mesh.add_face(v0, v2, v3);
+  mesh.remove_vertex(v1);
+  try {
+    simplicial_complex_from_mesh(mesh);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("collect_garbage"), std::string::npos) << e.what();
+  }
+  mesh.collect_garbage();
+  const Simplicial_complex_2 k = simplicial_complex_from_mesh(mesh);
+  EXPECT_EQ(k.number_of_vertices, 4u);
+  EXPECT_EQ(k.number_of_triangles(), 1u);
+  EXPECT_EQ(k.number_of_edges(), 3u);
+}
+
 TEST(AugmentedReebGraph, SurfaceMeshWithVertexPropertyMap) {
   using K = CGAL::Simple_cartesian<double>;
   using Mesh = CGAL::Surface_mesh<K::Point_3>;

@@ -89,6 +89,33 @@ TEST(EmbedReebGraph, BadInput) {
   Embedding_options o;
   o.smoothing_weight = 2;
   EXPECT_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o), std::invalid_argument);
+  // Arcs naming missing nodes and graph edges naming missing vertices are refused by index (they used to be
+  // read out of bounds).
+  Reeb_graph two;
+  two.nodes = {{0, 0.0, minimum, {}}, {1, 1.0, maximum, {}}};
+  two.arcs = {{0, 1, {}}, {0, 5, {}}};
+  auto message = [](auto&& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  const std::vector<std::array<double, 3>> positions{{0, 0, 0}, {1, 0, 0}};
+  EXPECT_NE(message([&] { embed_reeb_graph(two, positions, {0.0, 1.0}, 2); }).find("arc 1"), std::string::npos);
+  two.arcs.pop_back();
+  Proximity_graph g;
+  g.number_of_vertices = 2;
+  g.edges = {{0, 7}};
+  EXPECT_NE(message([&] { embed_reeb_graph(two, g, positions, {0.0, 1.0}, 2); }).find("graph edge 0"),
+            std::string::npos);
+  // classical_mds_3d checks its matrix.
+  EXPECT_NE(message([] { classical_mds_3d({0, 1, 1}, 2); }).find("entries"), std::string::npos);
+  EXPECT_NE(message([] { classical_mds_3d({0, std::nan(""), 1, 0}, 2); }).find("entry (0, 1)"), std::string::npos);
+  EXPECT_NE(message([] { classical_mds_3d({0, -1, -1, 0}, 2); }).find("entry (0, 1)"), std::string::npos);
+  const auto two_points = classical_mds_3d({0, 2, 2, 0}, 2);
+  EXPECT_NEAR(std::abs(two_points[0][0] - two_points[1][0]), 2.0, 1e-12);
 }
 
 namespace {

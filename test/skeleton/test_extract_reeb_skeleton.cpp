@@ -90,6 +90,46 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad), std::invalid_argument);
 }
 
+TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
+  // The callback says stop once, inside the Rips stage, and go on afterwards: the run still ends, interrupted.
+  Point_matrix m;
+  m.dimension = 2;
+  for (int i = 0; i < 2000; ++i) {
+    const double a = 2 * M_PI * i / 2000;
+    m.data.insert(m.data.end(), {10 * std::cos(a), 10 * std::sin(a)});
+  }
+  m.rows = 2000;
+  int calls = 0;
+  Skeleton_options o;
+  o.delta = 1;
+  o.progress = [&calls](double) { return ++calls != 2; };
+  const Reeb_skeleton s = extract_reeb_skeleton(m, 1.0, o);
+  EXPECT_EQ(s.status, Status::interrupted);
+  EXPECT_EQ(num_vertices(s.graph), 0u);
+  o.progress = nullptr;
+  EXPECT_EQ(extract_reeb_skeleton(m, 1.0, o).status, Status::success);
+}
+
+TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {
+  // Most points are copies of one point: the median edge length is 0, so the embedding falls back to 1/64 of
+  // the range of f; the result reports that width, and giving it explicitly draws the same skeleton.
+  Point_matrix m;
+  m.dimension = 2;
+  for (int i = 0; i < 20; ++i) m.data.insert(m.data.end(), {double(i), 0.0});
+  for (int c = 0; c < 30; ++c) m.data.insert(m.data.end(), {0.0, 0.0});
+  m.rows = m.data.size() / 2;
+  Skeleton_options o;
+  o.trim_stubs = false;
+  const Reeb_skeleton s = extract_reeb_skeleton(m, 1.0, o);
+  EXPECT_DOUBLE_EQ(s.level_width, 19.0 / 64);
+  o.embedding.level_width = s.level_width;
+  const Reeb_skeleton t = extract_reeb_skeleton(m, 1.0, o);
+  ASSERT_EQ(num_edges(s.graph), num_edges(t.graph));
+  auto e = edges(s.graph).first;
+  auto f = edges(t.graph).first;
+  for (; e != edges(s.graph).second; ++e, ++f) EXPECT_EQ(s.graph[*e].polyline, t.graph[*f].polyline);
+}
+
 TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
   const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
   const std::size_t n = eight.points.size();

@@ -74,6 +74,14 @@ TEST(GeodesicFunction, UserBasePointsAndComponents) {
   // Component {0,1,2}: the given base 1; {3,4}: 4, farthest from 3; {5}: itself.
   EXPECT_EQ(r.base_points, (std::vector<std::size_t>{1, 4, 5}));
   EXPECT_EQ(r.values, (std::vector<double>{1, 0, 2, 5, 0, 0}));
+  // Two base points in one component are refused, naming both (one base point per component defines f).
+  o.base_points = {3, 0, 2};
+  try {
+    compute_geodesic_function(g, o);
+    ADD_FAILURE() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("base points 1 and 2 (vertices 0 and 2)"), std::string::npos) << e.what();
+  }
   o.base_points = {9};
   try {
     compute_geodesic_function(g, o);

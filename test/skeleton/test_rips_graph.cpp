@@ -143,6 +143,35 @@ TEST(RipsGraph, DegenerateInputs) {
   EXPECT_EQ(k.number_of_triangles(), 0u);
 }
 
+TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
+  // The brute-force search filters candidates in float: coordinates far outside float's range (2^130, 2^-130)
+  // must still find every pair, with the exact decision on the doubles. A 4 x 4 grid of spacing s in 5-D (the
+  // automatic search is brute force above 3-D) and in 2-D with the brute force asked for, radius s (inclusive).
+  for (const double s : {std::ldexp(1.0, 130), std::ldexp(1.0, -130)}) {
+    for (const std::size_t d : {2u, 5u}) {
+      Coords p;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+          std::vector<double> x(d, 0.0);
+          x[0] = s * i;
+          x[1] = s * j;
+          p.push_back(x);
+        }
+      p.push_back(p[5]);  // a duplicate
+      Proximity_graph_options o;
+      o.search = Neighbor_search::brute_force;
+      const Proximity_graph g = build_rips_graph(p, s, o);
+      EXPECT_EQ(g.edges, brute_rips(p, s)) << "s = " << s << ", d = " << d;
+      EXPECT_EQ(g.number_of_edges(), 24u + 5u) << "s = " << s;  // grid edges plus the duplicate's 4 and itself
+      EXPECT_EQ(build_knn_graph(p, 1, o).edges, brute_knn(p, 1)) << "s = " << s << ", d = " << d;
+    }
+  }
+  // Next to the largest doubles: a duplicate pair 3e300 from the origin and a far point; no overflow.
+  const Coords far{{3e300, 0, 0, 0, 0}, {3e300, 0, 0, 0, 0}, {-3e300, 0, 0, 0, 0}};
+  EXPECT_EQ(build_rips_graph(far, 1.0).edges, (std::vector<Edge>{{0, 1}}));
+  EXPECT_EQ(build_knn_graph(far, 1).edges, (std::vector<Edge>{{0, 1}, {0, 2}}));
+}
+
 TEST(RipsGraph, BadInputNamesThePoint) {
   Coords p = random_points(5, 3, 1);
   p[3][1] = std::numeric_limits<double>::quiet_NaN();

@@ -260,6 +260,16 @@ TEST(MergeRoadLines, TwoDirectionsOfAStreetBecomeOneLineInTheMiddle) {
   }
 }
 
+TEST(MergeRoadLines, AStopDuringTheRipsStageEndsTheRun) {
+  // The callback says stop once (its second call, inside the Rips stage) and go on afterwards.
+  int calls = 0;
+  Road_merge_options o;
+  o.progress = [&calls](double) { return ++calls != 2; };
+  const Road_merge_result r = merge_road_lines(parallel_lines({0.0, 4.0}, 300, false), o);
+  EXPECT_EQ(r.status, Status::interrupted);
+  EXPECT_TRUE(r.map.positions.empty());
+}
+
 TEST(MergeRoadLines, LinesFartherApartStay) {
   // A divided road: carriageways 20 m apart (the default distance is 8 m); two streets, 12 m apart.
   for (const double gap : {20.0, 12.0}) {

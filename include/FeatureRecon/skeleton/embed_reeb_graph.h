@@ -88,7 +88,11 @@ struct Adjacency {
   std::vector<Vertex_index> targets;
 };
 
-inline Adjacency make_adjacency(const Proximity_graph& g) {
+inline Adjacency make_adjacency(const Proximity_graph& g, const char* fn = "embed_reeb_graph") {
+  for (std::size_t k = 0; k < g.edges.size(); ++k)
+    if (g.edges[k][0] >= g.number_of_vertices || g.edges[k][1] >= g.number_of_vertices)
+      FeatureRecon::internal::throw_invalid_argument(fn, "graph edge ", k, " (", g.edges[k][0], ", ", g.edges[k][1],
+                                                     ") has a vertex out of range [0, ", g.number_of_vertices, ")");
   Adjacency a;
   a.offsets.assign(g.number_of_vertices + 1, 0);
   for (const auto& e : g.edges) {
@@ -186,6 +190,18 @@ struct Flat_embedding {
   std::vector<std::vector<double>> arcs;   ///< per arc, P.dimension coordinates per polyline vertex
 };
 
+/// The level width used when Embedding_options::level_width is 0: 1/64 of the range of the node values (1 when
+/// the range is empty).
+inline double automatic_level_width(const Reeb_graph& G) {
+  if (G.nodes.empty()) return 1.0;
+  double fmin = G.nodes.front().value, fmax = fmin;
+  for (const auto& node : G.nodes) {
+    fmin = std::min(fmin, node.value);
+    fmax = std::max(fmax, node.value);
+  }
+  return fmax > fmin ? (fmax - fmin) / 64 : 1.0;
+}
+
 inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency, const Point_matrix& P,
                                  const std::vector<double>& values, const Embedding_options& options) {
   const char* fn = "embed_reeb_graph";
@@ -205,8 +221,6 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " out of range [0, ", P.rows, ")");
   };
   Flat_embedding E;
-  double fmin = 0, fmax = 0;
-  bool first = true;
   for (const auto& node : G.nodes) {
     check(node.vertex);
     std::vector<double> c(P.row(node.vertex), P.row(node.vertex) + d);
@@ -216,11 +230,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     }
     for (std::size_t k = 0; k < d; ++k) c[k] /= static_cast<double>(1 + node.members.size());
     E.nodes.push_back(std::move(c));
-    fmin = first ? node.value : std::min(fmin, node.value);
-    fmax = first ? node.value : std::max(fmax, node.value);
-    first = false;
   }
-  const double width = options.level_width > 0 ? options.level_width : (fmax > fmin ? (fmax - fmin) / 64 : 1.0);
+  const double width = options.level_width > 0 ? options.level_width : automatic_level_width(G);
   // Gaps wider than max_gap are bridged by shortest paths of the graph.
   std::unique_ptr<Graph_path_finder> finder;
   double max_gap = std::numeric_limits<double>::infinity();
@@ -233,6 +244,10 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   // Local index of each input vertex in the arc being drawn (stamped by arc), its run, and a union-find.
   std::vector<std::size_t> stamp(adjacency != nullptr ? P.rows : 0, static_cast<std::size_t>(-1));
   std::vector<std::size_t> local(stamp.size()), parent, run_of, size;
+  for (std::size_t a = 0; a < G.arcs.size(); ++a)
+    if (!(G.arcs[a].lower < G.nodes.size() && G.arcs[a].upper < G.nodes.size()))
+      FeatureRecon::internal::throw_invalid_argument(fn, "arc ", a, " joins nodes (", G.arcs[a].lower, ", ",
+                                                     G.arcs[a].upper, ") out of range [0, ", G.nodes.size(), ")");
   for (std::size_t a = 0; a < G.arcs.size(); ++a) {
     const auto& arc = G.arcs[a];
     const auto& vs = arc.vertices;
@@ -354,7 +369,17 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacenc
 /// Classical multidimensional scaling of a dense distance matrix (row-major n x n) into at most 3 dimensions:
 /// the eigenvectors of the double-centred squared distances for the three largest eigenvalues, scaled by their
 /// square roots (negative eigenvalues give 0). Deterministic signs as in project_to_3d(). O(n^3) (Eigen).
+/// \throws std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
+///         or not finite.
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
+  const char* fn = "classical_mds_3d";
+  if (n != 0 && (D.size() / n != n || D.size() % n != 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "D has ", D.size(), " entries, not n * n for n = ", n);
+  if (n == 0 && !D.empty()) FeatureRecon::internal::throw_invalid_argument(fn, "D has ", D.size(), " entries for n = 0");
+  for (std::size_t k = 0; k < D.size(); ++k)
+    if (!(std::isfinite(D[k]) && D[k] >= 0))
+      FeatureRecon::internal::throw_invalid_argument(fn, "entry (", k / n, ", ", k % n, ") is ", D[k],
+                                                     " (must be finite and >= 0)");
   std::vector<std::array<double, 3>> out(n, {0.0, 0.0, 0.0});
   if (n == 0) return out;
   const Eigen::Index N = static_cast<Eigen::Index>(n);
@@ -409,7 +434,7 @@ inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_gra
                                                                   const std::vector<double>& values,
                                                                   const Embedding_options& options = {}) {
   internal::check_point_matrix(points, "embed_reeb_graph_in_input_space");
-  const internal::Adjacency adjacency = internal::make_adjacency(graph);
+  const internal::Adjacency adjacency = internal::make_adjacency(graph, "embed_reeb_graph_in_input_space");
   internal::Flat_embedding F = internal::embed_flat(G, &adjacency, points, values, options);
   Reeb_graph_input_embedding E;
   E.dimension = points.dimension;

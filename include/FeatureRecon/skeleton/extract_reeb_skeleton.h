@@ -181,6 +181,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   }
   Embedding_options eo = options.embedding;
   if (eo.level_width == 0) eo.level_width = median_edge_length(K);
+  if (eo.level_width == 0) eo.level_width = automatic_level_width(S.graph);  // mostly duplicate points
   result.level_width = eo.level_width;
   const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, project_to_3d(coordinates), A.values(), dimension, eo);
   result.graph = make_skeleton_graph(S.graph, E);
@@ -214,8 +215,16 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   internal::check_point_matrix(points, "extract_reeb_skeleton");
   Proximity_graph_options po;
   po.search = options.search;
-  if (options.progress) po.progress = [&options](double t) { return options.progress(0.3 * t); };
+  bool stopped = false;  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
+  if (options.progress)
+    po.progress = [&options, &stopped](double t) { return !(stopped = stopped || !options.progress(0.3 * t)); };
   const Proximity_graph g = build_rips_graph(points, rips_radius, po);
+  if (stopped) {
+    Reeb_skeleton interrupted;
+    interrupted.dimension = std::min<std::size_t>(points.dimension, 3);
+    interrupted.status = Status::interrupted;
+    return interrupted;
+  }
   return internal::skeleton_from_graph(
       g, points,
       [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3);

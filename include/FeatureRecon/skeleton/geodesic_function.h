@@ -77,7 +77,8 @@ inline Csr_graph make_csr_graph(const Proximity_graph& g) {
 /// component, its base point is the vertex farthest from the component's smallest-index vertex (ties: the
 /// smallest index), an extreme point of the component. Two multi-source Dijkstra runs in all:
 /// O((n + m) log n).
-/// \pre every base point in options is < number_of_vertices (checked; throws naming it); g canonical (checked).
+/// \pre every base point in options is < number_of_vertices, and no two lie in one component (checked; throws
+///      naming them); g canonical (checked).
 /// \returns per-vertex values, per-component base points; `degenerate_input` for an empty graph.
 inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const Geodesic_options& options = {}) {
   const char* fn = "compute_geodesic_function";
@@ -97,8 +98,17 @@ inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const
   result.component = cc.label;
   constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> chosen(cc.count, none), start(cc.count, none);
-  for (std::size_t b : options.base_points)
-    if (chosen[cc.label[b]] == none || b < chosen[cc.label[b]]) chosen[cc.label[b]] = b;
+  std::vector<std::size_t> given_as(cc.count, none);  // index in options.base_points
+  for (std::size_t i = 0; i < options.base_points.size(); ++i) {
+    const std::size_t b = options.base_points[i], c = cc.label[b];
+    if (given_as[c] != none)
+      FeatureRecon::internal::throw_invalid_argument(fn, "base points ", given_as[c], " and ", i, " (vertices ",
+                                                     options.base_points[given_as[c]], " and ", b,
+                                                     ") lie in the same connected component; give at most one "
+                                                     "per component");
+    given_as[c] = i;
+    chosen[c] = b;
+  }
   for (std::size_t v = 0; v < n; ++v)
     if (start[cc.label[v]] == none) start[cc.label[v]] = v;
   const internal::Csr_graph csr = internal::make_csr_graph(g);

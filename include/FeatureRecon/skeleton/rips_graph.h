@@ -134,19 +134,29 @@ struct Kd_index {
 /// All-pairs squared distances with Eigen, blockwise, from a single-precision Gram matrix (twice the SIMD
 /// width of double). Each value comes with a rigorous bound on its error, covering the rounding of the
 /// centred coordinates to float and the float products, so that candidates can be filtered safely and then
-/// decided exactly on the original doubles.
+/// decided exactly on the original doubles. The centred coordinates are scaled by a power of two (`unit`) so that
+/// the largest has magnitude in [2^30, 2^31): neither huge nor tiny coordinates overflow or vanish in float.
+/// Values passed to the visitor are in scaled units: a true squared distance is d2 / unit^2.
 struct Brute_force_index {
   const Point_matrix& m;
-  Eigen::MatrixXf centred;  // d x n, coordinates minus their mean, rounded to float
+  Eigen::MatrixXf centred;  // d x n, (coordinates minus their mean) * unit, rounded to float
   Eigen::VectorXd norms;    // squared norms of the float columns, in double
+  double unit = 1;          // the scale (a power of two)
   explicit Brute_force_index(const Point_matrix& pm) : m(pm) {
     centred.resize(static_cast<Eigen::Index>(m.dimension), static_cast<Eigen::Index>(m.rows));
+    // Halves everywhere: no overflow in the mean or the differences even next to the largest doubles.
     Eigen::VectorXd mean = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.dimension));
     for (std::size_t i = 0; i < m.rows; ++i)
-      for (std::size_t c = 0; c < m.dimension; ++c) mean[c] += m.row(i)[c];
-    if (m.rows > 0) mean /= static_cast<double>(m.rows);
+      for (std::size_t c = 0; c < m.dimension; ++c) mean[c] += 0.5 * m.row(i)[c] / static_cast<double>(m.rows);
+    double largest = 0;
     for (std::size_t i = 0; i < m.rows; ++i)
-      for (std::size_t c = 0; c < m.dimension; ++c) centred(c, i) = static_cast<float>(m.row(i)[c] - mean[c]);
+      for (std::size_t c = 0; c < m.dimension; ++c) largest = std::max(largest, std::abs(0.5 * m.row(i)[c] - mean[c]));
+    const int exponent = largest > 0 ? std::clamp(30 - std::ilogb(largest), -1000, 1000) : 0;
+    const double scale = std::ldexp(1.0, exponent);  // applied to the halves
+    unit = std::ldexp(1.0, exponent - 1);
+    for (std::size_t i = 0; i < m.rows; ++i)
+      for (std::size_t c = 0; c < m.dimension; ++c)
+        centred(c, i) = static_cast<float>((0.5 * m.row(i)[c] - mean[c]) * scale);
     norms = centred.cast<double>().colwise().squaredNorm().transpose();
   }
   /// Calls visit(i, j, approximate squared distance, error bound) for every i in [b, e) and every j >= from.
@@ -223,7 +233,7 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
   } else {
     internal::Brute_force_index index(m);
     const std::size_t block = 256;
-    const double r2 = radius * radius;
+    const double r2 = (radius * index.unit) * (radius * index.unit);  // in the index's units (may be infinite)
     for (std::size_t b = 0; b < n; b += block) {
       if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) break;
       index.block(b, std::min(n, b + block), b, [&](std::size_t i, std::size_t j, double d2, double err) {

@@ -279,9 +279,11 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   }
   r.samples = P.rows;
   Proximity_graph_options po;
-  if (options.progress) po.progress = [&options](double t) { return options.progress(0.3 * t); };
+  bool stopped = false;  // a stop inside the Rips stage counts even if the callback answers true afterwards
+  if (options.progress)
+    po.progress = [&options, &stopped](double t) { return !(stopped = stopped || !options.progress(0.3 * t)); };
   std::vector<Edge> neighbourhood = build_rips_graph(P, options.distance, po).edges;
-  if (!FeatureRecon::internal::report_progress(options.progress, 0.3)) {
+  if (stopped || !FeatureRecon::internal::report_progress(options.progress, 0.3)) {
     r.status = Status::interrupted;
     return r;
   }

@@ -29,8 +29,9 @@ struct Proximity_graph_options {
 
 /// Options of compute_geodesic_function().
 struct Geodesic_options {
-  /// Base points (vertex indices). Components without any base point use the automatic rule: the
-  /// vertex farthest (ties: smallest index) from the smallest-index vertex of the component. Default: none.
+  /// Base points (vertex indices), at most one per connected component (checked). Components without a base
+  /// point use the automatic rule: the vertex farthest (ties: smallest index) from the smallest-index vertex of
+  /// the component. Default: none.
   std::vector<std::size_t> base_points;
   Progress_callback progress;  ///< called with the fraction done; returning false stops
 };
