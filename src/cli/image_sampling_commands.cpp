@@ -89,8 +89,8 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_set
     o.sigma_feature = s.sigma_feature;
     o.seed = s.seed;
     o.progress = std::ref(progress);
+    if (s.count > 0) o.max_accepted = static_cast<std::size_t>(s.count);  // the first M in the visiting order
     used_radius = fs::bilateral_dart_throwing(pixels, s.radius, std::back_inserter(kept), o, traits).radius;
-    if (s.count > 0 && kept.size() > static_cast<std::size_t>(s.count)) kept.resize(static_cast<std::size_t>(s.count));
   } else {
     fs::Dart_throwing_count_options o;
     o.darts.sigma_feature = s.sigma_feature;

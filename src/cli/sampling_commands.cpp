@@ -106,8 +106,8 @@ int run_sample(const std::vector<std::string>& argv) {
     o.sigma_feature = sigma_feature;
     o.seed = static_cast<std::uint64_t>(seed);
     o.progress = std::ref(progress);
+    if (args.has("count")) o.max_accepted = static_cast<std::size_t>(count);  // the first M in the visiting order
     used_radius = fs::bilateral_dart_throwing(items, radius, std::back_inserter(kept), o, traits).radius;
-    if (args.has("count") && kept.size() > static_cast<std::size_t>(count)) kept.resize(static_cast<std::size_t>(count));
   } else {
     fs::Dart_throwing_count_options o;
     o.darts.sigma_position = sigma_position;

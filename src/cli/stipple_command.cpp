@@ -162,7 +162,9 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& pixels, const 
   };
   double lo = 0, hi = 2.0;  // in units of sigma_position: d_hex is about 1
   std::vector<std::size_t> best = run(lo + 1e-9);
-  while (run(hi).size() >= count) hi *= 2;
+  // Grow until a throw keeps fewer than `count` dots, or a single one (then every larger radius keeps one too:
+  // count 1 needs no bracket).
+  for (std::size_t kept = run(hi).size(); kept >= count && kept > 1; kept = run(hi).size()) hi *= 2;
   for (int it = 0; it < 30; ++it) {
     const double mid = 0.5 * (lo + hi);
     auto kept = run(mid);

@@ -309,7 +309,23 @@ endif()
 expect(sample_image_grey 0 "\"channels\": 1," sample-image --input ${WORK}/tiny.ppm --grey --count 5 --out ${WORK}/g.txt --quiet)
 expect(sample_image_bad_method 2 "--method must be elimination, darts or continuous" sample-image --input ${WORK}/line.pgm --method lloyd --count 5 --out ${WORK}/x.txt)
 # stipple: every method gives the asked number of dots, the same seed the same picture; bad arguments explained.
+# darts with --radius and --count: a cap, the first M kept in the seeded order, spread over the whole picture (the
+# first M in pixel order used to fill only the top rows).
+expect(sample_image_darts_cap 0 "\"method\": \"darts\", \"samples\": 50," sample-image --input ${WORK}/line.pgm --method darts
+       --radius 3 --count 50 --out ${WORK}/cap.csv --quiet)
+file(READ ${WORK}/cap.csv cap_text)
+string(REGEX MATCHALL "\n[0-9.]+,(2[4-9]|[34][0-9])[.0-9]*," cap_lower "${cap_text}")
+list(LENGTH cap_lower cap_lower_count)
+if(cap_lower_count LESS 10)
+  message(SEND_ERROR "sample-image darts cap: ${cap_lower_count} of 50 samples in the lower half, expected about 25")
+endif()
 expect(stipple_help 0 "usage: featurerecon stipple IMAGE --count N" stipple --help)
+# One dot: the radius search must stop once a throw keeps a single dot (it used to grow the radius to infinity).
+foreach(method darts kernel)
+  expect(stipple_one_${method} 0 "\"dots\": 1," stipple ${WORK}/line.pgm --count 1 --method ${method} --out ${WORK}/one_${method}.svg
+         --quiet)
+  expect_count(${WORK}/one_${method}.svg "<circle" 1)
+endforeach()
 foreach(method lloyd bilateral-lloyd darts kernel)
   expect(stipple_${method} 0 "\"channels\": 1, \"method\": \"${method}\", \"dots\": 40, \"palette\": 1,"
          stipple ${WORK}/line.pgm --count 40 --method ${method} --iterations 10 --out ${WORK}/st_${method}.svg

@@ -3,6 +3,7 @@
 // Bilateral dart throwing on discrete domains: the Poisson-disk and maximality properties by brute force,
 // adaptive radii, priorities, the target-count mode, thin walls, degenerate and bad input.
 #include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/image_domain.h>
 #include <FeatureRecon/sampling/sampling_quality.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -95,6 +96,63 @@ TEST(BilateralDartThrowing, TargetCount) {
     for (std::size_t a = 0; a < kept.size(); ++a)
       for (std::size_t b = a + 1; b < kept.size(); ++b)
         ASSERT_GE(std::sqrt(CGAL::squared_distance(p[kept[a]], p[kept[b]])), r.radius);
+  }
+}
+
+TEST(BilateralDartThrowing, ACapKeepsTheFirstInTheVisitingOrder) {
+  // Points stored left to right: a cap of 40 keeps the first 40 accepted in the seeded order, spread over the
+  // whole square (not the first 40 of the file), and they are the prefix of the uncapped throw's acceptances.
+  std::vector<Point_2> p;
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j) p.emplace_back(i / 60.0, j / 60.0);
+  Dart_throwing_options o;
+  o.seed = 3;
+  o.max_accepted = 40;
+  std::vector<std::size_t> capped;
+  const auto r = bilateral_dart_throwing(p, 0.05, std::back_inserter(capped), o);
+  ASSERT_EQ(capped.size(), 40u);
+  EXPECT_EQ(r.selected, 40u);
+  std::size_t right_half = 0;
+  for (const std::size_t i : capped) right_half += p[i].x() >= 0.5;
+  EXPECT_GT(right_half, 10u);
+  EXPECT_LT(right_half, 30u);
+  o.max_accepted = 0;
+  const std::vector<std::size_t> all = darts(p, 0.05, o);
+  EXPECT_GT(all.size(), 40u);
+  for (const std::size_t i : capped) EXPECT_TRUE(std::binary_search(all.begin(), all.end(), i)) << i;
+  o.max_accepted = 5;
+  Dart_throwing_count_options co;
+  co.darts = o;
+  std::vector<std::size_t> unused;
+  EXPECT_THROW(bilateral_dart_throwing_count(p, 10, std::back_inserter(unused), co), std::invalid_argument);
+}
+
+TEST(BilateralDartThrowing, TargetCountWithTheExponentialForm) {
+  // A 64 x 64 picture, black left half, white right half: with sigma_feature 0.03 the exponential form's
+  // exp(|deta|^2 / sigma^2) overflows across the edge, so the largest distance from item 0 is infinite. The
+  // count search must still bracket a radius (it used to return the first `count` items of the visiting order
+  // as degenerate input).
+  std::vector<std::uint8_t> values(64 * 64);
+  for (int r = 0; r < 64; ++r)
+    for (int c = 0; c < 64; ++c) values[static_cast<std::size_t>(r * 64 + c)] = c < 32 ? 0 : 255;
+  const auto pixels = image_pixels<Grey_pixel>(64, 64, values);
+  for (const std::size_t count : {1u, 50u, 200u}) {
+    Dart_throwing_count_options o;
+    o.darts.form = Bilateral_form::exponential;
+    o.darts.sigma_feature = 0.03;
+    std::vector<std::size_t> kept;
+    const auto r = bilateral_dart_throwing_count(pixels, count, std::back_inserter(kept), o, Grey_pixel_traits());
+    EXPECT_EQ(r.status, Status::success) << count;
+    ASSERT_EQ(kept.size(), count);
+    EXPECT_GT(r.radius, 0) << count;
+    EXPECT_TRUE(std::isfinite(r.radius)) << count;
+    // Pixels of one colour are r.radius * sigma_position apart at least (xi = |dp| / sigma_position there).
+    for (std::size_t a = 0; a < kept.size(); ++a)
+      for (std::size_t b = a + 1; b < kept.size(); ++b) {
+        const Grey_pixel &x = pixels[kept[a]], &y = pixels[kept[b]];
+        if (x.value == y.value)
+          ASSERT_GE(std::hypot(x.column - y.column, x.row - y.row) / o.darts.sigma_position, r.radius * (1 - 1e-12));
+      }
   }
 }
 

@@ -294,6 +294,20 @@ TEST(Kernel_relaxation, DegenerateStarts) {
   const auto t = kernel_relaxation(tiny, std::vector<Site>(3, Site{{0.5, 0.5}, {9}}), o);
   for (const auto& s : t.sites)
     for (const double x : s.position) EXPECT_TRUE(x >= 0 && x <= 1) << x;
+  // Points in 3-D that all sit at one place (and a cloud 1e-300 wide) have no extent to relax on: degenerate
+  // input with the sites unchanged (the snapped sites used to become NaN and read past the items).
+  using K = test::K;
+  const std::vector<K::Point_3> one_place(40, K::Point_3(1, 1, 1));
+  const auto p = kernel_relaxation(one_place, std::vector<std::size_t>{0, 1, 2, 3});
+  EXPECT_EQ(p.status, Status::degenerate_input);
+  ASSERT_EQ(p.sites.size(), 4u);
+  for (const auto& s : p.sites) EXPECT_EQ(s.position, (std::array<double, 3>{1, 1, 1}));
+  std::vector<K::Point_3> speck;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) speck.emplace_back(1e-300 * i, 1e-300 * j, 0);
+  const auto q = kernel_relaxation(speck, std::vector<std::size_t>{0, 31, 62, 93});
+  for (const auto& s : q.sites)
+    for (const double x : s.position) EXPECT_TRUE(std::isfinite(x));
 }
 
 TEST(Kernel_relaxation, BadInputNamesTheProblem) {

@@ -87,6 +87,7 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
       failures = 0;
       grid.insert(i);
       accepted.push_back(i);
+      if (o.max_accepted != 0 && accepted.size() >= o.max_accepted) break;
     }
   });
   return accepted;
@@ -107,7 +108,8 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
 /// \tparam Traits a model of FeaturePointTraits (default: Default_traits_t<ItemRange>).
 /// \param items the input samples. \param radius the conflict radius in bilateral units (> 0, checked; throws;
 ///   ignored when `options.radii` is set). \param selected receives the kept indices in increasing order.
-/// \param options metric, per-item radii, priority, seed, early stop, progress. \param traits accessors.
+/// \param options metric, per-item radii, priority, seed, early stops (consecutive failures, a cap on the count),
+///   progress. \param traits accessors.
 /// \returns the advanced iterator, the number kept, the radius and the status (`degenerate_input` for an empty
 ///   input; `interrupted`, with nothing written, when the callback stopped).
 /// \throws std::invalid_argument naming the argument: radius <= 0, radii or priority of the wrong size or with
@@ -147,10 +149,13 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
 /// Bilateral dart throwing with a target count: bisects the uniform radius until a maximal throw (same order
 /// every time) keeps exactly `count` items. When no radius gives exactly `count` (the count is a step
 /// function of the radius), the throw at the smallest radius that keeps more than `count` is cut to its first
-/// `count` accepted items, which still respect that radius but are no longer maximal.
+/// `count` accepted items, which still respect that radius but are no longer maximal. With the exponential form,
+/// items of very different features may never conflict (their distance overflows): when no finite radius keeps
+/// as few as `count`, the throw at the largest radius tried (doubling from the largest finite distance) is cut.
 /// \param count the number of items to keep, 0 <= count <= number of items (checked; throws).
 /// \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set.
-/// \throws std::invalid_argument as bilateral_dart_throwing(), and when `options.darts.radii` is set.
+/// \throws std::invalid_argument as bilateral_dart_throwing(), and when `options.darts.radii` or
+///   `options.darts.max_accepted` is set.
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& items, std::size_t count,
                                                               OutputIterator selected,
@@ -162,6 +167,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   internal::check_dart_options(options.darts, n, fn);
   if (!options.darts.radii.empty())
     FeatureRecon::internal::throw_invalid_argument(fn, "per-item radii cannot be combined with a target count");
+  if (options.darts.max_accepted != 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, "darts.max_accepted cannot be combined with a target count");
   internal::check_count(count, n, fn);
   Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
   if (n == 0) {
@@ -185,6 +192,28 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   bool interrupted = false;
   std::vector<std::uint32_t> best;  // the throw at `low` (more than count items) or an exact hit
   double best_radius = 0;
+  if (!std::isfinite(high)) {
+    // The exponential form overflows for far-apart features: start from the largest finite distance from item 0
+    // and double until a throw keeps at most `count` items (or the radius overflows: no bracket).
+    const double finite_largest = internal::with_metric(quiet, [&](const auto& m) {
+      double r = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double v = m(S.squared_distance(0, i), S.squared_feature_distance(0, i));
+        if (std::isfinite(v)) r = std::max(r, v);
+      }
+      return r;
+    });
+    // Items that never conflict (another colour at an infinite distance) can make `count` unreachable: then
+    // the first `count` items of the throw at the largest finite radius tried.
+    high = finite_largest > 0 ? 2 * finite_largest : 1.0;
+    while (std::isfinite(high)) {
+      std::vector<std::uint32_t> kept = internal::throw_darts(S, high, quiet, order, interrupted);
+      if (kept.size() <= count) break;
+      low = best_radius = high;
+      best = std::move(kept);
+      high *= 2;
+    }
+  }
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
     if (!FeatureRecon::internal::report_progress(options.darts.progress, double(it) / double(options.max_iterations))) {
       result.status = Status::interrupted;

@@ -39,6 +39,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -199,6 +200,8 @@ class Kernel_engine : public Item_domain<Traits> {
       if (!snap)
         for (int k = 0; k < D; ++k) p[k] = std::min(box_hi[k], std::max(box_lo[k], p[k]));
       std::uint32_t near = this->nearest_item(p);
+      if (near >= S.size())  // a non-finite position: never after the checks above, but never read past the end
+        throw std::runtime_error("kernel_relaxation: a site has no nearest item (non-finite position)");
       if (snap) {
         if (taken[near] && free_items > 0) {
           double best;
@@ -339,7 +342,8 @@ Kernel_energy<Traits::dimension> kernel_energy(const ItemRange& items, const std
 /// \param options metric, kernel, density, constraint, step control, stopping rules (checked; throws naming
 ///   the field).
 /// \param traits a model of FeaturePointTraits.
-/// \return the sites and the history. No items or fewer than two sites: degenerate_input, sites unchanged.
+/// \return the sites and the history. No items, fewer than two sites, or items without spatial extent (all at
+///   one position): degenerate_input, sites unchanged.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::vector<Bilateral_site<Traits>> sites,
                                                    const Kernel_relaxation_options<Traits::dimension>& options = {},
@@ -351,12 +355,16 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
   Kernel_relaxation_result<Traits> result;
   result.kernel_width = engine.tau;
   result.step = options.initial_step;
-  if (engine.items() == 0 || sites.size() < 2) {
+  const double w0 = engine.tau * options.sigma_position;
+  // Items without spatial extent (all at one place, or so close that the kernel's 1 / width^2 overflows): no
+  // scale to relax on.
+  const bool no_extent = !(engine.spacing > 0) || !std::isfinite(1.0 / (engine.tau * engine.tau)) ||
+                         !std::isfinite(1.0 / (w0 * w0));
+  if (engine.items() == 0 || sites.size() < 2 || no_extent) {
     result.sites = std::move(sites);
     result.status = Status::degenerate_input;
     return result;
   }
-  const double w0 = engine.tau * options.sigma_position;
   // Coincident sites have no gradient between them: every copy after the first (in index order) moves by
   // w0 / 100 along a direction fixed by its index (golden-angle spiral), then the energy separates them.
   {

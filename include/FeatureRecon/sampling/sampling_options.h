@@ -151,6 +151,9 @@ struct Dart_throwing_options {
   /// Stop after this many consecutive rejected items. Default 0: visit every item once, which makes the result
   /// maximal on the discrete domain (every rejected item conflicts with a kept one).
   std::size_t max_consecutive_failures = 0;
+  /// Stop once this many items are kept: the first ones in the visiting order, spread over the whole domain
+  /// (the result is then no longer maximal). Default 0: no cap.
+  std::size_t max_accepted = 0;
   std::uint64_t seed = 0;       ///< the random visiting order (ignored when `priority` is given)
   Progress_callback progress;   ///< fraction of the items visited; returning false stops (nothing is output)
 };
