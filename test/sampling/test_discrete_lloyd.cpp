@@ -90,6 +90,24 @@ TEST(Discrete_lloyd, AssignmentMatchesBruteForceInBothForms) {
   }
 }
 
+TEST(Discrete_lloyd, GridOfANearlyFlatPatchStaysSmall) {
+  // A 100 x 100 patch 1e-12 thick (rounding noise on a plane in 3-D): the thin axis gets one cell and the grid
+  // about the cells asked for (it used to count the thin axis in the cell size: about n^2 cells, 784 MB).
+  using Grid = FeatureRecon::sampling::internal::Ring_grid<3>;
+  const Grid flat({0, 0, 0.1}, {100, 100, 0.1 + 1e-12}, 10000);
+  EXPECT_LE(flat.number_of_cells(), 4u * 10000u);
+  EXPECT_GE(flat.number_of_cells(), 10000u / 4);
+  const Grid exactly_flat({0, 0, 0.1}, {100, 100, 0.1}, 10000);
+  EXPECT_EQ(flat.number_of_cells(), exactly_flat.number_of_cells());
+  // A needle: two thin axes.
+  const Grid needle({0, 0, 0}, {1000, 1e-9, 1e-9}, 500);
+  EXPECT_LE(needle.number_of_cells(), 4u * 500u);
+  // A solid cube is unchanged: about the target.
+  const Grid cube({0, 0, 0}, {10, 10, 10}, 1000);
+  EXPECT_LE(cube.number_of_cells(), 4u * 1000u);
+  EXPECT_GE(cube.number_of_cells(), 1000u / 4);
+}
+
 TEST(Discrete_lloyd, TiesGoToTheLowestSiteIndex) {
   // Sites symmetric about pixel columns: the pixels on the bisector are equidistant from two sites.
   const auto px = step_image(9, 9, 100, 0, 0);

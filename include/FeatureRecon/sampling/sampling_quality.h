@@ -4,7 +4,7 @@
 #define FEATURERECON_SAMPLING_SAMPLING_QUALITY_H
 
 #include <FeatureRecon/assertions.h>
-#include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/internal/ring_grid.h>
 #include <FeatureRecon/sampling/internal/sample_set.h>
 #include <FeatureRecon/sampling/sampling_options.h>
 #include <FeatureRecon/traits.h>
@@ -50,8 +50,8 @@ struct Sampling_quality {
 /// minimum distance, both relative to the nearest distance d_hex of the densest packing of N points in the
 /// domain (d_hex = sqrt(2 A / (sqrt(3) N)) in 2D, cbrt(sqrt(2) V / N) in 3D). With a finite sigma_feature the
 /// distances are bilateral (in units of xi times sigma_position), which measures spacing in the stacked space.
-/// Nearest neighbours are found in a uniform grid of side d_hex, exactly: a point whose candidates are all
-/// farther than the grid side falls back to a scan of all samples.
+/// Nearest neighbours are found exactly in a grid of about one sample per cell, ring by ring around each sample
+/// until no unvisited cell can hold a closer one (near-linear time, also for sparse or clustered sets).
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure or an intrinsic_dimension other than 0, 2 or 3.
@@ -104,7 +104,17 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   }
   internal::with_metric(options, [&](const auto& metric) {
     const double scale = metric.spatial_scale();
-    const FeatureRecon::internal::Uniform_grid<D> grid(points, side);
+    // Nearest neighbours by rings of cells around each sample, stopping once no unvisited cell can hold a
+    // closer one (xi >= the spatial distance): near-linear also for sparse or clustered sets, where a search
+    // of the 3^d cells around a sample falls back to every sample for each isolated one.
+    std::array<double, D> lo = points.front(), hi = points.front();
+    for (const auto& p : points)
+      for (int k = 0; k < D; ++k) {
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
+      }
+    internal::Ring_grid<D> grid(lo, hi, double(points.size()));
+    grid.assign(points);
     auto xi = [&](std::size_t i, std::size_t j_point) {
       double d2 = 0;
       for (int k = 0; k < D; ++k) {
@@ -116,13 +126,9 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
     double minimum = std::numeric_limits<double>::infinity(), sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
       double best = std::numeric_limits<double>::infinity();
-      grid.for_each_candidate(S.positions[i], [&](std::uint32_t j) {
-        if (j == i) return;
-        best = std::min(best, xi(i, j));
-      });
-      if (!(best <= grid.cell_size()))  // the nearest may lie outside the 3^d cells: scan everything
-        for (std::size_t j = 0; j < points.size(); ++j)
-          if (j != i) best = std::min(best, xi(i, j));
+      grid.nearest(S.positions[i], 1.0, [&](std::uint32_t j) {
+        return j == i ? std::numeric_limits<double>::infinity() : xi(i, j);
+      }, best);
       minimum = std::min(minimum, best);
       sum += best;
     }

@@ -31,23 +31,35 @@ class Ring_grid {
 
   /// \param lo, hi the frame. \param target_cells about how many cells (>= 1).
   Ring_grid(const Point& lo, const Point& hi, double target_cells) : m_lo(lo) {
-    double measure = 1;
-    int positive = 0;
     double extent_max = 0;
+    std::array<bool, D> active{};
     for (int k = 0; k < D; ++k) {
-      const double e = hi[k] - lo[k];
-      extent_max = std::max(extent_max, e);
-      if (e > 0) {
-        measure *= e;
-        ++positive;
-      }
+      extent_max = std::max(extent_max, hi[k] - lo[k]);
+      active[k] = hi[k] - lo[k] > 0;
     }
-    if (positive == 0 || !(extent_max > 0)) {
-      m_side = 1;
-    } else {
+    m_side = 1;
+    // The side that gives about target_cells cells over the axes that are at least a cell wide: an axis thinner
+    // than the side (a nearly flat patch in 3-D) gets one cell and does not shrink the others' cells (it used to
+    // make about n^2 cells for n points). At most D + 1 rounds.
+    for (int round = 0; round <= D && extent_max > 0; ++round) {
+      double measure = 1;
+      int positive = 0;
+      for (int k = 0; k < D; ++k)
+        if (active[k]) {
+          measure *= hi[k] - lo[k];
+          ++positive;
+        }
+      if (positive == 0) break;
       m_side = std::pow(measure / std::max(1.0, target_cells), 1.0 / positive);
       // No axis gets more than about target_cells cells, and the total stays bounded.
       m_side = std::max(m_side, extent_max / std::max(1.0, target_cells));
+      bool dropped = false;
+      for (int k = 0; k < D; ++k)
+        if (active[k] && hi[k] - lo[k] < m_side) {
+          active[k] = false;
+          dropped = true;
+        }
+      if (!dropped) break;
     }
     if (!(m_side > 0) || !std::isfinite(m_side)) m_side = 1;
     m_count = 1;
@@ -72,6 +84,7 @@ class Ring_grid {
   }
 
   double side() const { return m_side; }
+  std::size_t number_of_cells() const { return m_count; }
 
   /// The index j minimising score(j) (ties: lowest j) over the points, or max() when there are none.
   /// \param scale score(j) >= |x - point j| / scale for every j (scale > 0; infinity: plain scan of all).
