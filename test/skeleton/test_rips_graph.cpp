@@ -213,6 +213,25 @@ TEST(KnnGraph, MatchesBruteForceWithTiesByIndex) {
     const Coords q = random_points(200, d, 40 + static_cast<std::uint32_t>(d));
     EXPECT_EQ(build_knn_graph(q, 6).edges, brute_knn(q, 6)) << "d = " << d;
   }
+  // Many copies of few positions (the kd-tree search handles each position once) among scattered points, with
+  // k below, at and above the number of copies; and integer points with ties at every distance.
+  Coords heavy = random_points(80, 3, 77);
+  for (int c = 0; c < 40; ++c) {
+    heavy.push_back({0.5, 0.5, 0.5});
+    heavy.push_back({0.25, 0.75, 0.5});
+    if (c % 2 == 0) heavy.push_back(heavy[3]);
+  }
+  std::shuffle(heavy.begin(), heavy.end(), std::mt19937(5));
+  for (std::size_t k : {1u, 3u, 19u, 20u, 21u, 39u, 40u, 41u, 100u}) {
+    Proximity_graph_options kd;
+    kd.search = Neighbor_search::kd_tree;
+    EXPECT_EQ(build_knn_graph(heavy, k, kd).edges, brute_knn(heavy, k)) << "k = " << k;
+  }
+  Coords ties;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int c = 0; c <= (i + j) % 3; ++c) ties.push_back({double(i), double(j)});
+  for (std::size_t k : {1u, 2u, 4u, 5u, 9u}) EXPECT_EQ(build_knn_graph(ties, k).edges, brute_knn(ties, k)) << "k = " << k;
   // n <= k: the complete graph.
   EXPECT_EQ(build_knn_graph(random_points(4, 2, 3), 10).number_of_edges(), 6u);
   EXPECT_EQ(build_knn_graph(Coords{{0.0, 0.0}}, 3).number_of_edges(), 0u);

@@ -249,7 +249,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
 
 /// The skeleton of a dense distance matrix: Rips graph at `rips_radius` on the matrix, then the stages of
 /// extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses classical MDS into 3D
-/// (O(n^3)). \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
+/// (O(n^3): about 12 s for n = 1500 on this 2-core machine; the progress callback is asked before it, not during
+/// it). \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
 template <class Matrix>
 Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double rips_radius,
                                                          const Skeleton_options& options = {}) {
@@ -258,6 +259,13 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   const Proximity_graph g = build_rips_graph_from_distance_matrix(D, rips_radius);
+  // A chance to stop before the O(n^3) scaling, which reports no progress of its own.
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) {
+    Reeb_skeleton interrupted;
+    interrupted.dimension = 3;
+    interrupted.status = Status::interrupted;
+    return interrupted;
+  }
   Point_matrix mds;
   mds.rows = n;
   mds.dimension = 3;

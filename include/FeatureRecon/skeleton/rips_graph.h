@@ -276,22 +276,86 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
   };
   if (kk == 0) return g;
   if (internal::use_kd_tree(m, options.search, fn)) {
-    internal::Kd_index index(m);
+    // Copies of a position are searched once: the kd-tree holds the distinct positions, each with its copies
+    // (by index). A point's neighbours are the other copies of its position first (distance 0, by index), then
+    // the nearest of the other positions, each contributing its lowest-index copies. A position with more than
+    // k copies needs no search at all (D copies used to cost O(D^2)).
+    std::vector<std::uint32_t> by_position(n);
+    for (std::uint32_t i = 0; i < n; ++i) by_position[i] = i;
+    std::sort(by_position.begin(), by_position.end(), [&m](std::uint32_t a, std::uint32_t b) {
+      const int c = std::lexicographical_compare(m.row(a), m.row(a) + m.dimension, m.row(b), m.row(b) + m.dimension)
+                        ? -1
+                        : std::equal(m.row(a), m.row(a) + m.dimension, m.row(b)) ? 0 : 1;
+      return c < 0 || (c == 0 && a < b);
+    });
+    std::vector<std::size_t> first{0};  // group g holds by_position[first[g] .. first[g + 1])
+    for (std::size_t t = 1; t < n; ++t)
+      if (!std::equal(m.row(by_position[t]), m.row(by_position[t]) + m.dimension, m.row(by_position[t - 1])))
+        first.push_back(t);
+    first.push_back(n);
+    const std::size_t groups = first.size() - 1;
+    Point_matrix distinct;
+    distinct.dimension = m.dimension;
+    distinct.rows = groups;
+    for (std::size_t q = 0; q < groups; ++q)
+      distinct.data.insert(distinct.data.end(), m.row(by_position[first[q]]), m.row(by_position[first[q]]) + m.dimension);
+    internal::Kd_index index(distinct);
     using Knn = CGAL::Orthogonal_k_neighbor_search<internal::Kd_traits>;
     using Distance = Knn::Distance;
     Distance dist(index.tree->traits().point_property_map());
-    for (std::uint32_t i = 0; i < n; ++i) {
-      if (i % report_every == 0 &&
-          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(i) / n))
+    const std::size_t report_groups = std::max<std::size_t>(1, groups / 100);
+    std::vector<std::uint32_t> outside, near_groups;
+    for (std::uint32_t q = 0; q < groups; ++q) {
+      if (q % report_groups == 0 &&
+          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(q) / groups))
         break;
-      // The (k+1)-th nearest (the point itself included) bounds the k-th neighbour's distance; a ball of
-      // that radius holds every point tied with it, so ties are broken by index, not by the tree.
-      Knn search(*index.tree, index.points[i], static_cast<unsigned>(kk + 1), 0.0, true, dist);
-      double far = 0;
-      for (const auto& nb : search) far = std::max(far, nb.second);
-      index.ball(i, std::sqrt(far), cand);
-      cand.erase(std::remove(cand.begin(), cand.end(), i), cand.end());
-      select(i);
+      const std::size_t copies = first[q + 1] - first[q];
+      const std::size_t need = kk + 1 > copies ? kk + 1 - copies : 0;  // neighbours from other positions
+      outside.clear();
+      if (need > 0 && groups > 1) {
+        // The nearest positions until their copies add up to `need`; their farthest distance bounds the ball
+        // that holds every position tied with the last one needed.
+        double far = 0;
+        for (std::size_t K = std::min(groups, need + 1);; K = std::min(groups, 2 * K)) {
+          Knn search(*index.tree, index.points[q], static_cast<unsigned>(K), 0.0, true, dist);
+          std::size_t found = 0;
+          far = 0;
+          for (const auto& nb : search) {
+            if (nb.first == q) continue;
+            found += first[nb.first + 1] - first[nb.first];
+            far = std::max(far, nb.second);
+            if (found >= need) break;
+          }
+          if (found >= need || K == groups) break;
+        }
+        index.ball(q, std::sqrt(far), near_groups);
+        for (const std::uint32_t r : near_groups)
+          if (r != q)
+            for (std::size_t t = first[r]; t < std::min(first[r + 1], first[r] + need); ++t)
+              outside.push_back(by_position[t]);
+        cand = outside;
+        const std::uint32_t representative = by_position[first[q]];
+        auto closer = [&](std::uint32_t a, std::uint32_t b) {
+          const int c = internal::compare_squared_distances(m.row(representative), m.row(a), m.row(b), m.dimension);
+          return c < 0 || (c == 0 && a < b);
+        };
+        const std::size_t keep = std::min(need, cand.size());
+        std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(keep), cand.end(), closer);
+        cand.resize(keep);
+      } else {
+        cand.clear();
+      }
+      for (std::size_t t = first[q]; t < first[q + 1]; ++t) {
+        const Vertex_index i = by_position[t];
+        std::size_t taken = 0;
+        for (std::size_t u = first[q]; u < first[q + 1] && taken < kk; ++u)  // other copies, by index
+          if (by_position[u] != i) {
+            g.edges.push_back(i < by_position[u] ? Edge{i, by_position[u]} : Edge{by_position[u], i});
+            ++taken;
+          }
+        for (std::size_t u = 0; u < cand.size() && taken < kk; ++u, ++taken)
+          g.edges.push_back(i < cand[u] ? Edge{i, cand[u]} : Edge{cand[u], i});
+      }
     }
   } else {
     internal::Brute_force_index index(m);
