@@ -128,6 +128,18 @@ expect(reeb_simplify_negative 2 "--simplify must be >= 0" reeb --complex ${WORK}
 # skeleton: the figure-eight sample gives a graph with two loops, written as a road map that evaluate-map reads.
 expect(skeleton 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/sk_v.txt --out-edges ${WORK}/sk_e.txt --quiet)
 # --max-gap: negative draws every arc's gaps straight (parsed, same topology); NaN is refused.
+# Above 3-D the points are drawn in the skeleton's PCA frame: the figure-eight (8 tall, 4 wide) padded to 5-D
+# lies along its first principal axis, which the picture draws horizontally, so the picture is about half as
+# tall as wide. Drawn by their raw coordinates (as before), the points stood upright and filled the full height.
+file(STRINGS ${DATA}/figure_eight.xyz eight_lines REGEX "^[^#]")
+set(eight_5d "")
+foreach(line IN LISTS eight_lines)
+  string(APPEND eight_5d "${line} 0 0 0\n")
+endforeach()
+file(WRITE ${WORK}/eight_5d.xyz "${eight_5d}")
+expect(skeleton_5d_picture 0 "\"loops\": 2," skeleton --points ${WORK}/eight_5d.xyz --radius 0.6 --delta 1
+       --out-vertices ${WORK}/e5_v.txt --out-edges ${WORK}/e5_e.txt --svg ${WORK}/e5.svg --quiet)
+expect_count(${WORK}/e5.svg "<circle cx=\"[0-9.]+\" cy=\"(7[0-9][0-9]|[89][0-9][0-9]|1[0-9][0-9][0-9])\\." 0)
 expect(skeleton_max_gap_off 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --max-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_max_gap_nan 2 "--max-gap" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-gap nan --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_self_score 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 1)
