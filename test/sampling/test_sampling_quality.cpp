@@ -9,7 +9,9 @@
 
 #include "sampling/sampling_test_utilities.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -91,6 +93,36 @@ TEST(SamplingQuality, WhiteNoiseOnTheTorus) {
   }
   EXPECT_NEAR(amd, 0.466, 0.006);
   EXPECT_LT(rho, 0.03);
+}
+
+TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
+  // Half the points in a corner 0.01 wide, the rest spread out, some duplicates: the minimum and the mean of the
+  // nearest-neighbour distances against a scan of all pairs, in 2-D and 3-D.
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(0, 1), c(0, 0.01);
+  std::vector<Point_2> p2;
+  std::vector<Point_3> p3;
+  for (int i = 0; i < 600; ++i) {
+    const bool corner = i % 2 == 0;
+    p2.emplace_back(corner ? c(rng) : u(rng), corner ? c(rng) : u(rng));
+    p3.emplace_back(corner ? c(rng) : u(rng), corner ? c(rng) : u(rng), corner ? c(rng) : u(rng));
+  }
+  p2.push_back(p2[7]);
+  p3.push_back(p3[8]);
+  auto check = [](const auto& p, double hex_scale) {
+    std::vector<double> nearest(p.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = 0; j < p.size(); ++j)
+        if (i != j) nearest[i] = std::min(nearest[i], std::sqrt(CGAL::to_double(CGAL::squared_distance(p[i], p[j]))));
+    const Sampling_quality q = sampling_quality(p);
+    ASSERT_EQ(q.status, Status::success);
+    EXPECT_EQ(q.minimum_distance, *std::min_element(nearest.begin(), nearest.end()));
+    double mean = 0;
+    for (const double d : nearest) mean += d / double(p.size());
+    EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, mean, 1e-12 * hex_scale);
+  };
+  check(p2, 1.0);
+  check(p3, 1.0);
 }
 
 TEST(SamplingQuality, HexagonalLatticeHasRelativeRadiusOne) {

@@ -4,17 +4,23 @@
 #define FEATURERECON_SAMPLING_SAMPLING_QUALITY_H
 
 #include <FeatureRecon/assertions.h>
-#include <FeatureRecon/sampling/internal/ring_grid.h>
 #include <FeatureRecon/sampling/internal/sample_set.h>
 #include <FeatureRecon/sampling/sampling_options.h>
 #include <FeatureRecon/traits.h>
 
+#include <CGAL/Orthogonal_incremental_neighbor_search.h>
+#include <CGAL/Search_traits_2.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace FeatureRecon {
@@ -50,8 +56,8 @@ struct Sampling_quality {
 /// minimum distance, both relative to the nearest distance d_hex of the densest packing of N points in the
 /// domain (d_hex = sqrt(2 A / (sqrt(3) N)) in 2D, cbrt(sqrt(2) V / N) in 3D). With a finite sigma_feature the
 /// distances are bilateral (in units of xi times sigma_position), which measures spacing in the stacked space.
-/// Nearest neighbours are found exactly in a grid of about one sample per cell, ring by ring around each sample
-/// until no unvisited cell can hold a closer one (near-linear time, also for sparse or clustered sets).
+/// Nearest neighbours are found exactly with a CGAL kd-tree, visiting samples by increasing spatial distance until
+/// it exceeds the best bilateral distance (O(n log n) in practice, also for sparse or clustered sets).
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure or an intrinsic_dimension other than 0, 2 or 3.
@@ -104,17 +110,29 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   }
   internal::with_metric(options, [&](const auto& metric) {
     const double scale = metric.spatial_scale();
-    // Nearest neighbours by rings of cells around each sample, stopping once no unvisited cell can hold a
-    // closer one (xi >= the spatial distance): near-linear also for sparse or clustered sets, where a search
-    // of the 3^d cells around a sample falls back to every sample for each isolated one.
-    std::array<double, D> lo = points.front(), hi = points.front();
-    for (const auto& p : points)
-      for (int k = 0; k < D; ++k) {
-        lo[k] = std::min(lo[k], p[k]);
-        hi[k] = std::max(hi[k], p[k]);
-      }
-    internal::Ring_grid<D> grid(lo, hi, double(points.size()));
-    grid.assign(points);
+    // Nearest neighbours from a CGAL kd-tree (sliding midpoint: clusters and isolated samples alike), visited by
+    // increasing spatial distance until it exceeds the best bilateral distance so far (xi >= the spatial
+    // distance), so the minimum is exact.
+    using Kd_kernel = CGAL::Simple_cartesian<double>;
+    using Kd_point = std::conditional_t<D == 2, Kd_kernel::Point_2, Kd_kernel::Point_3>;
+    using Base_traits = std::conditional_t<D == 2, CGAL::Search_traits_2<Kd_kernel>, CGAL::Search_traits_3<Kd_kernel>>;
+    using Traits_with_index =
+        CGAL::Search_traits_adapter<std::uint32_t, typename CGAL::Pointer_property_map<Kd_point>::type, Base_traits>;
+    using Incremental = CGAL::Orthogonal_incremental_neighbor_search<Traits_with_index>;
+    std::vector<Kd_point> kd_points;
+    kd_points.reserve(points.size());
+    for (const auto& p : points) {
+      if constexpr (D == 2)
+        kd_points.emplace_back(p[0], p[1]);
+      else
+        kd_points.emplace_back(p[0], p[1], p[2]);
+    }
+    std::vector<std::uint32_t> keys(points.size());
+    for (std::size_t j = 0; j < keys.size(); ++j) keys[j] = static_cast<std::uint32_t>(j);
+    typename Incremental::Tree tree(keys.begin(), keys.end(), typename Incremental::Tree::Splitter(),
+                                    Traits_with_index(CGAL::make_property_map(kd_points)));
+    tree.build();
+    typename Incremental::Distance tree_distance(CGAL::make_property_map(kd_points));
     auto xi = [&](std::size_t i, std::size_t j_point) {
       double d2 = 0;
       for (int k = 0; k < D; ++k) {
@@ -126,9 +144,12 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
     double minimum = std::numeric_limits<double>::infinity(), sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
       double best = std::numeric_limits<double>::infinity();
-      grid.nearest(S.positions[i], 1.0, [&](std::uint32_t j) {
-        return j == i ? std::numeric_limits<double>::infinity() : xi(i, j);
-      }, best);
+      Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
+      for (auto it = search.begin(); it != search.end(); ++it) {
+        // it->second: squared spatial distance (rounded; the margin covers it)
+        if (std::sqrt(it->second) > best * (1 + 1e-9)) break;
+        if (it->first != i) best = std::min(best, xi(i, it->first));
+      }
       minimum = std::min(minimum, best);
       sum += best;
     }
