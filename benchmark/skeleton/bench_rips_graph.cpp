@@ -4,6 +4,9 @@
 // (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius.
 #include <FeatureRecon/skeleton/rips_graph.h>
 
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_2.h>
+#include <CGAL/Simple_cartesian.h>
 #include <benchmark/benchmark.h>
 
 #ifdef FEATURERECON_WITH_GUDHI
@@ -82,7 +85,61 @@ void BM_rips_gudhi(benchmark::State& state, const std::string& name) {
 }
 #endif
 
+// k nearest neighbours on points with many copies (8,000 of one point beside a line) and on a plain grid:
+// FeatureRecon's build_knn_graph (exact, ties by index, each distinct position searched once) against CGAL's own
+// Orthogonal_k_neighbor_search asked for k + 1 neighbours of every point (no tie rule).
+std::vector<std::vector<double>> knn_points(const std::string& name) {
+  std::vector<std::vector<double>> p;
+  if (name == "copies8100") {  // 8,000 copies of one point and a line of 100 points beside it
+    for (int c = 0; c < 8000; ++c) p.push_back({0.0, 0.0});
+    for (int i = 0; i < 100; ++i) p.push_back({10.0 + i, 0.0});
+  } else {
+    for (int i = 0; i < 141; ++i)
+      for (int j = 0; j < 141; ++j) p.push_back({double(i), double(j)});
+  }
+  return p;
+}
+
+void BM_knn_featurerecon(benchmark::State& state, const std::string& name) {
+  const auto p = knn_points(name);
+  std::size_t edges = 0;
+  for (auto _ : state) {
+    const sk::Proximity_graph g = sk::build_knn_graph(p, 8);
+    edges = g.edges.size();
+    benchmark::DoNotOptimize(g);
+  }
+  state.counters["edges"] = static_cast<double>(edges);
+}
+
+void BM_knn_cgal(benchmark::State& state, const std::string& name) {
+  using K = CGAL::Simple_cartesian<double>;
+  using Traits = CGAL::Search_traits_2<K>;
+  using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  std::vector<K::Point_2> p;
+  for (const auto& q : knn_points(name)) p.emplace_back(q[0], q[1]);
+  std::size_t found = 0;
+  for (auto _ : state) {
+    Knn::Tree tree(p.begin(), p.end());
+    tree.build();
+    found = 0;
+    for (const auto& q : p) {
+      Knn search(tree, q, 9);
+      for (auto it = search.begin(); it != search.end(); ++it) ++found;
+    }
+    benchmark::DoNotOptimize(found);
+  }
+  state.counters["neighbours"] = static_cast<double>(found);
+}
+
 void register_all() {
+  for (const std::string name : {"copies8100", "grid20k"}) {
+    benchmark::RegisterBenchmark(("knn8/featurerecon/" + name).c_str(), BM_knn_featurerecon, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark(("knn8/cgal/" + name).c_str(), BM_knn_cgal, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  }
   for (const std::string name : {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k"}) {
     benchmark::RegisterBenchmark(("rips/featurerecon/" + name).c_str(), BM_rips_featurerecon, name)
         ->Unit(benchmark::kMillisecond)

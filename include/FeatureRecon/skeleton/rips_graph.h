@@ -283,10 +283,9 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
     std::vector<std::uint32_t> by_position(n);
     for (std::uint32_t i = 0; i < n; ++i) by_position[i] = i;
     std::sort(by_position.begin(), by_position.end(), [&m](std::uint32_t a, std::uint32_t b) {
-      const int c = std::lexicographical_compare(m.row(a), m.row(a) + m.dimension, m.row(b), m.row(b) + m.dimension)
-                        ? -1
-                        : std::equal(m.row(a), m.row(a) + m.dimension, m.row(b)) ? 0 : 1;
-      return c < 0 || (c == 0 && a < b);
+      const double *p = m.row(a), *q = m.row(b);
+      const auto [pa, qa] = std::mismatch(p, p + m.dimension, q);
+      return pa != p + m.dimension ? *pa < *qa : a < b;  // by coordinates, copies by index
     });
     std::vector<std::size_t> first{0};  // group g holds by_position[first[g] .. first[g + 1])
     for (std::size_t t = 1; t < n; ++t)
