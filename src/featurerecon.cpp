@@ -76,7 +76,7 @@ const std::vector<Command>& commands() {
        "                   [10, 30]), S = R/2, G = max(4M, 2R), D = 3R, DIST = 2.5R, H = 5R, A = 30, F = 0.1,\n"
        "                   DR = 2R, DA = 45, MD = 8\n"
        "  --distance-matrix FILE  n lines of n distances (symmetric, zero diagonal); needs --radius; embedded by\n"
-       "                   classical MDS (O(n^3))\n"
+       "                   classical MDS (top three eigenpairs by block Lanczos; dense up to 300 points)\n"
        "  --graph FILE     a graph in the complex exchange format ('n m', n lines 'x y z f' (f unused), m lines of\n"
        "                   2 or 3 vertex indices); edge lengths are Euclidean; no --radius\n"
        "\n"

@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 // Rips 2-complex construction: FeatureRecon (build_rips_graph + build_flag_complex_2) vs GUDHI
 // (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius.
+#include <FeatureRecon/skeleton/embed_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -131,7 +132,55 @@ void BM_knn_cgal(benchmark::State& state, const std::string& name) {
   state.counters["neighbours"] = static_cast<double>(found);
 }
 
+/// Distance matrices for classical MDS (2,000 points): "circle50d" a noisy circle of radius 10 in R^50 (noise
+/// 0.3 per axis; Euclidean); "sqrt5d" the square roots of the distances of Gaussian points in R^5 (not Euclidean).
+std::vector<double> mds_matrix(const std::string& name, std::size_t n) {
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const std::size_t d = name == "circle50d" ? 50 : 5;
+  std::vector<std::vector<double>> p(n, std::vector<double>(d));
+  for (std::size_t i = 0; i < n; ++i) {
+    for (auto& x : p[i]) x = name == "circle50d" ? 0.3 * g(rng) : 10.0 * g(rng);
+    if (name == "circle50d") {
+      p[i][0] += 10 * std::cos(6.283185307179586 * double(i) / double(n));
+      p[i][1] += 10 * std::sin(6.283185307179586 * double(i) / double(n));
+    }
+  }
+  std::vector<double> D(n * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      double s = 0;
+      for (std::size_t k = 0; k < d; ++k) s += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+      D[i * n + j] = name == "circle50d" ? std::sqrt(s) : std::sqrt(std::sqrt(s));
+    }
+  return D;
+}
+
+/// classical_mds_3d: FeatureRecon's block Lanczos (dense_limit 300, the default) or the dense Eigen
+/// SelfAdjointEigenSolver on the same double-centred matrix (dense_limit above n), the peer.
+void BM_mds(benchmark::State& state, const std::string& name, std::size_t dense_limit) {
+  const std::size_t n = 2000;
+  const std::vector<double> D = mds_matrix(name, n);
+  double first = 0;
+  for (auto _ : state) {
+    bool stopped = false;
+    const auto x = sk::internal::classical_mds_3d(D, n, Progress_callback(), stopped, dense_limit);
+    first = x[0][0];
+    benchmark::DoNotOptimize(x);
+  }
+  state.counters["x0"] = first;
+}
+
 void register_all() {
+  for (const std::string name : {"circle50d", "sqrt5d"}) {
+    benchmark::RegisterBenchmark(("mds2000/featurerecon/" + name).c_str(), BM_mds, name, std::size_t(300))
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark(("mds2000/eigen_dense/" + name).c_str(), BM_mds, name, std::size_t(1) << 40)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+  }
   for (const std::string name : {"copies8100", "grid20k"}) {
     benchmark::RegisterBenchmark(("knn8/featurerecon/" + name).c_str(), BM_knn_featurerecon, name)
         ->Unit(benchmark::kMillisecond)

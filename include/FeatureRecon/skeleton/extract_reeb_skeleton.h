@@ -249,8 +249,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
 
 /// The skeleton of a dense distance matrix: Rips graph at `rips_radius` on the matrix, then the stages of
 /// extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses classical MDS into 3D
-/// (O(n^3): about 12 s for n = 1500 on this 2-core machine; the progress callback is asked before it, not during
-/// it). \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
+/// (classical_mds_3d(); it takes the first 30 % of the progress range and can be stopped between its steps).
+/// \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
 template <class Matrix>
 Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double rips_radius,
                                                          const Skeleton_options& options = {}) {
@@ -259,20 +259,22 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   const Proximity_graph g = build_rips_graph_from_distance_matrix(D, rips_radius);
-  // A chance to stop before the O(n^3) scaling, which reports no progress of its own.
-  if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) {
+  bool stopped = false;
+  const Progress_callback scaled =
+      options.progress ? Progress_callback([&options](double f) { return options.progress(0.3 * f); }) : Progress_callback();
+  Point_matrix mds;
+  mds.rows = n;
+  mds.dimension = 3;
+  for (const auto& p : internal::classical_mds_3d(a, n, scaled, stopped)) mds.data.insert(mds.data.end(), p.begin(), p.end());
+  if (stopped || !FeatureRecon::internal::report_progress(options.progress, 0.3)) {
     Reeb_skeleton interrupted;
     interrupted.dimension = 3;
     interrupted.status = Status::interrupted;
     return interrupted;
   }
-  Point_matrix mds;
-  mds.rows = n;
-  mds.dimension = 3;
-  for (const auto& p : classical_mds_3d(a, n)) mds.data.insert(mds.data.end(), p.begin(), p.end());
   return internal::skeleton_from_graph(
       g, mds,
-      [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.0);
+      [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3);
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.
