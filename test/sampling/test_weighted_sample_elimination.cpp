@@ -174,6 +174,18 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("item 7"), std::string::npos) << e.what();
   }
+  // Coordinates whose squares or areas overflow doubles are refused (before: radius inf).
+  bad = p;
+  bad[4] = Point_2(-3e300, 1);
+  try {
+    weighted_sample_elimination(bad, 5, std::back_inserter(kept));
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("item 4 has coordinate -3e+300 beyond +-1e100"), std::string::npos) << e.what();
+  }
+  bad[4] = Point_2(-1e100, 1e100);  // the largest accepted
+  EXPECT_NO_THROW(weighted_sample_elimination(bad, 5, std::back_inserter(kept)));
+  kept.clear();
   Elimination_options o;
   o.sigma_feature = -1;
   EXPECT_THROW(weighted_sample_elimination(p, 5, std::back_inserter(kept), o), std::invalid_argument);

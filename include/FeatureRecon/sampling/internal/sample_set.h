@@ -31,6 +31,7 @@ namespace internal {
 template <class Traits>
 struct Sample_set {
   static constexpr int D = Traits::dimension;
+  static constexpr double max_coordinate = 1e100;
   using Point = std::array<double, D>;
   using Feature = typename Traits::Feature;
   std::vector<Point> positions;
@@ -54,6 +55,11 @@ struct Sample_set {
         q[k] = CGAL::to_double(p[k]);
         if (!std::isfinite(q[k]))
           FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a non-finite coordinate (", q[k], ")");
+        // Squared distances, areas and volumes of the extent must stay finite doubles.
+        if (!(std::fabs(q[k]) <= max_coordinate))
+          FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has coordinate ", q[k],
+                                                         " beyond +-1e100 (squared distances and volumes would "
+                                                         "overflow); scale the input");
       }
       positions.push_back(q);
       features.push_back(construct_feature(item));
