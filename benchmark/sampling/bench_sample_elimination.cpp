@@ -10,13 +10,17 @@
 #include <FeatureRecon/sampling/weighted_sample_elimination.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_2.h>
 #include <CGAL/grid_simplify_point_set.h>
 #include <CGAL/hierarchy_simplify_point_set.h>
 #include <CGAL/property_map.h>
 #include <CGAL/wlop_simplify_and_regularize_point_set.h>
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <map>
 #include <random>
@@ -282,6 +286,53 @@ void BM_fandisk_open3d(benchmark::State& state) {
 }
 #endif
 
+/// 160,000 points: white noise in the unit square (0), or half of them in the corner square of side 0.01 (1).
+const std::vector<K::Point_2>& quality_set(int clustered) {
+  static std::map<int, std::vector<K::Point_2>> cache;
+  auto& p = cache[clustered];
+  if (p.empty()) {
+    std::mt19937_64 rng(3);
+    for (std::size_t i = 0; i < 160000; ++i) {
+      const double s = clustered && i % 2 ? 0.01 : 1.0;
+      const double x = s * uniform01(rng);
+      p.emplace_back(x, s * uniform01(rng));
+    }
+  }
+  return p;
+}
+/// sampling_quality: every point's nearest neighbour (exact, ties by index), d_min, rho and the averages.
+void BM_quality(benchmark::State& state) {
+  const auto& p = quality_set(int(state.range(0)));
+  double rho = 0;
+  for (auto _ : state) {
+    fs::Sampling_quality_options o;
+    o.domain_measure = 1;
+    fs::Sampling_quality q = fs::sampling_quality(p, o);
+    benchmark::DoNotOptimize(q);
+    rho = q.relative_radius;
+  }
+  state.counters["rho"] = rho;
+}
+/// Peer: the same nearest neighbours from CGAL's kd-tree (2 neighbours of each point, itself included).
+void BM_cgal_nearest(benchmark::State& state) {
+  using Traits = CGAL::Search_traits_2<K>;
+  using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  const auto& p = quality_set(int(state.range(0)));
+  double smallest = 0;
+  for (auto _ : state) {
+    Knn::Tree tree(p.begin(), p.end());
+    tree.build();
+    smallest = std::numeric_limits<double>::infinity();
+    for (const auto& q : p) {
+      Knn search(tree, q, 2);
+      for (auto it = search.begin(); it != search.end(); ++it)
+        if (it->second > 0) smallest = std::min(smallest, it->second);
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["d_min"] = std::sqrt(smallest);
+}
+
 void register_all() {
   auto ms = [](benchmark::internal::Benchmark* b) { return b->Unit(benchmark::kMillisecond)->UseRealTime(); };
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d", BM_elimination_2d))
@@ -292,6 +343,8 @@ void register_all() {
       ->Arg(0)->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_bilateral", BM_elimination_cube))
       ->Arg(1)->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/quality_160k", BM_quality))->Arg(0)->Arg(1);
+  ms(benchmark::RegisterBenchmark("sampling/cgal/nearest_160k", BM_cgal_nearest))->Arg(0)->Arg(1);
   ms(benchmark::RegisterBenchmark("sampling/cgal/grid_cube200k", BM_cgal_grid))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/hierarchy_cube200k", BM_cgal_hierarchy))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/wlop_cube200k", BM_cgal_wlop))->Iterations(1);

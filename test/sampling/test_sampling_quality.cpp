@@ -108,6 +108,7 @@ TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
     p3.emplace_back(corner ? c(rng) : u(rng), corner ? c(rng) : u(rng), corner ? c(rng) : u(rng));
   }
   p2.push_back(p2[7]);
+  p2.push_back(p2[7]);  // three copies: the two nearest of one copy may be the other two
   p3.push_back(p3[8]);
   auto check = [](const auto& p, double hex_scale) {
     std::vector<double> nearest(p.size(), std::numeric_limits<double>::infinity());
@@ -123,6 +124,26 @@ TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
   };
   check(p2, 1.0);
   check(p3, 1.0);
+  // Bilateral (normals up or down at random, sigma_feature 0.05): the incremental search against all pairs.
+  std::vector<std::pair<Point_3, Vector_3>> pn;
+  for (std::size_t i = 0; i < p3.size(); ++i) pn.push_back({p3[i], Vector_3(0, 0, rng() % 2 ? 1 : -1)});
+  Sampling_quality_options o;
+  o.sigma_feature = 0.05;
+  const Sampling_quality q = sampling_quality(pn, o);
+  double smallest = std::numeric_limits<double>::infinity(), mean = 0;
+  for (std::size_t i = 0; i < pn.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < pn.size(); ++j)
+      if (i != j)
+        nearest = std::min(nearest, std::sqrt(CGAL::to_double(CGAL::squared_distance(pn[i].first, pn[j].first)) +
+                                              CGAL::to_double((pn[i].second - pn[j].second).squared_length()) / 0.0025));
+    smallest = std::min(smallest, nearest);
+    mean += nearest / double(pn.size());
+  }
+  EXPECT_NEAR(q.minimum_distance, smallest, 1e-12);
+  EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, mean, 1e-12);
+  const Sampling_quality euclidean = sampling_quality(p3);
+  EXPECT_GT(mean, 1.05 * euclidean.average_minimum_distance * euclidean.hexagonal_distance);  // the features count
 }
 
 TEST(SamplingQuality, HexagonalLatticeHasRelativeRadiusOne) {

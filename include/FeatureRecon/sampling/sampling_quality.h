@@ -9,6 +9,7 @@
 #include <FeatureRecon/traits.h>
 
 #include <CGAL/Orthogonal_incremental_neighbor_search.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_2.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -56,8 +57,9 @@ struct Sampling_quality {
 /// minimum distance, both relative to the nearest distance d_hex of the densest packing of N points in the
 /// domain (d_hex = sqrt(2 A / (sqrt(3) N)) in 2D, cbrt(sqrt(2) V / N) in 3D). With a finite sigma_feature the
 /// distances are bilateral (in units of xi times sigma_position), which measures spacing in the stacked space.
-/// Nearest neighbours are found exactly with a CGAL kd-tree, visiting samples by increasing spatial distance until
-/// it exceeds the best bilateral distance (O(n log n) in practice, also for sparse or clustered sets).
+/// Nearest neighbours are found exactly with a CGAL kd-tree: Euclidean (infinite sigma_feature), its two nearest
+/// points; bilateral, visiting samples by increasing spatial distance until it exceeds the best bilateral
+/// distance (O(n log n) in practice, also for sparse or clustered sets).
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure or an intrinsic_dimension other than 0, 2 or 3.
@@ -142,6 +144,25 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
       return metric(d2, S.squared_feature_distance(i, source[j_point])) * scale;
     };
     double minimum = std::numeric_limits<double>::infinity(), sum = 0;
+    if (std::isinf(options.sigma_feature)) {
+      // Euclidean: the nearest other point is among the two nearest (the point itself is one of them unless
+      // two copies of it are, and then the answer is 0 either way). The tree sums the same squared coordinate
+      // differences in the same order as xi(), so it ranks the candidates as xi() does. A k-nearest search
+      // costs a quarter of the incremental one.
+      using Nearest = CGAL::Orthogonal_k_neighbor_search<Traits_with_index>;
+      for (std::size_t i = 0; i < n; ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        Nearest search(tree, kd_points[i], 2, 0.0, true, tree_distance);
+        for (auto it = search.begin(); it != search.end(); ++it)
+          if (it->first != i) best = std::min(best, xi(i, it->first));
+        minimum = std::min(minimum, best);
+        sum += best;
+      }
+      q.minimum_distance = minimum;
+      q.average_minimum_distance = sum / double(n) / q.hexagonal_distance;
+      q.relative_radius = minimum / q.hexagonal_distance;
+      return;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       double best = std::numeric_limits<double>::infinity();
       Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
