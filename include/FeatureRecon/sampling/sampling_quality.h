@@ -143,33 +143,26 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
       }
       return metric(d2, S.squared_feature_distance(i, source[j_point])) * scale;
     };
+    // Euclidean (infinite sigma_feature): the nearest other point is among the two nearest (the point itself is
+    // one of them unless two copies of it are, and then the answer is 0 either way). The tree sums the same
+    // squared coordinate differences in the same order as xi(), so it ranks the candidates as xi() does. A
+    // k-nearest search costs a quarter of the incremental one, which the bilateral distance needs.
+    using Nearest = CGAL::Orthogonal_k_neighbor_search<Traits_with_index>;
+    const bool euclidean = std::isinf(options.sigma_feature);
     double minimum = std::numeric_limits<double>::infinity(), sum = 0;
-    if (std::isinf(options.sigma_feature)) {
-      // Euclidean: the nearest other point is among the two nearest (the point itself is one of them unless
-      // two copies of it are, and then the answer is 0 either way). The tree sums the same squared coordinate
-      // differences in the same order as xi(), so it ranks the candidates as xi() does. A k-nearest search
-      // costs a quarter of the incremental one.
-      using Nearest = CGAL::Orthogonal_k_neighbor_search<Traits_with_index>;
-      for (std::size_t i = 0; i < n; ++i) {
-        double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+      double best = std::numeric_limits<double>::infinity();
+      if (euclidean) {
         Nearest search(tree, kd_points[i], 2, 0.0, true, tree_distance);
         for (auto it = search.begin(); it != search.end(); ++it)
           if (it->first != i) best = std::min(best, xi(i, it->first));
-        minimum = std::min(minimum, best);
-        sum += best;
-      }
-      q.minimum_distance = minimum;
-      q.average_minimum_distance = sum / double(n) / q.hexagonal_distance;
-      q.relative_radius = minimum / q.hexagonal_distance;
-      return;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      double best = std::numeric_limits<double>::infinity();
-      Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
-      for (auto it = search.begin(); it != search.end(); ++it) {
-        // it->second: squared spatial distance (rounded; the margin covers it)
-        if (std::sqrt(it->second) > best * (1 + 1e-9)) break;
-        if (it->first != i) best = std::min(best, xi(i, it->first));
+      } else {
+        Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
+        for (auto it = search.begin(); it != search.end(); ++it) {
+          // it->second: squared spatial distance (rounded; the margin covers it)
+          if (std::sqrt(it->second) > best * (1 + 1e-9)) break;
+          if (it->first != i) best = std::min(best, xi(i, it->first));
+        }
       }
       minimum = std::min(minimum, best);
       sum += best;
