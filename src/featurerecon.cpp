@@ -155,7 +155,7 @@ const std::vector<Command>& commands() {
        "         featurerecon evaluate-map gt_v.txt gt_e.txt v.txt e.txt --explain --tracks t.txt\n",
        run_synthetic_city},
       {"sample", "Feature-aware downsampling of a point cloud (bilateral blue noise on points with normals)",
-       "usage: featurerecon sample --input FILE (--count M | --radius R) [--method elimination|darts]\n"
+       "usage: featurerecon sample --input FILE [--count M] [--radius R] [--method elimination|darts]\n"
        "                           [--sigma-position S] [--sigma-feature S] [--unoriented] [--seed N]\n"
        "                           [--normal-neighbors K] --out FILE [--quiet]\n"
        "\n"
@@ -169,8 +169,9 @@ const std::vector<Command>& commands() {
        "  --count M           exact number of points to keep (elimination), or the target of the dart radius;\n"
        "                      with darts and --radius R, a cap: the first M kept in the seeded visiting order\n"
        "  --radius R          elimination: r_max (default from the area or volume); darts: the conflict radius\n"
-       "  --method M          elimination (weighted sample elimination, exact count; default) or darts (maximal\n"
-       "                      bilateral dart throwing at R, or at the radius giving M points)\n"
+       "  --method M          elimination (weighted sample elimination, exact count; default; needs M) or darts\n"
+       "                      (maximal bilateral dart throwing at R, or at the radius giving M points; needs R\n"
+       "                      or M or both)\n"
        "  --sigma-position S  spatial scale of the bilateral distance (default 1)\n"
        "  --sigma-feature S   normal scale (unit normals: |dn|^2 in [0, 4]); default infinity (Euclidean)\n"
        "  --unoriented        compare normals up to sign (default: oriented, opposite sides are far apart)\n"
@@ -201,7 +202,7 @@ const std::vector<Command>& commands() {
        "  --quiet                  no progress on standard error\n",
        run_sample_stats},
       {"sample-image", "Feature-aware blue-noise sampling of a picture (pixels or the continuous image)",
-       "usage: featurerecon sample-image --input IMAGE (--count M | --radius R)\n"
+       "usage: featurerecon sample-image --input IMAGE [--count M] [--radius R]\n"
        "                                 [--method elimination|darts|continuous] [--sigma-feature S] [--grey]\n"
        "                                 [--seed N] [--out FILE] [--svg FILE] [--picture FILE] [--mosaic FILE]\n"
        "                                 [--quiet]\n"
@@ -212,8 +213,9 @@ const std::vector<Command>& commands() {
        "radius, relative_radius (rho on the image rectangle), seconds.\n"
        "\n"
        "  --input IMAGE      PNG, JPEG, PGM or PPM (grey or RGB)\n"
-       "  --method M         elimination (weighted sample elimination of pixels, exact count; default), darts\n"
-       "                     (maximal dart throwing over the pixels at R, or at the radius giving M samples) or\n"
+       "  --method M         elimination (weighted sample elimination of pixels, exact count; default; needs M),\n"
+       "                     darts (maximal dart throwing over the pixels at R, or at the radius giving M\n"
+       "                     samples; needs R or M or both) or\n"
        "                     continuous (darts anywhere in the image rectangle, colours interpolated bilinearly;\n"
        "                     needs R, M caps the count)\n"
        "  --count M          number of samples (with darts and --radius R, a cap: the first M kept in the seeded\n"
