@@ -95,6 +95,38 @@ TEST(SamplingQuality, WhiteNoiseOnTheTorus) {
   EXPECT_LT(rho, 0.03);
 }
 
+TEST(SamplingQuality, TorusNeighboursAcrossTheSeamOfAClusteredSet) {
+  // Two samples 0.4 apart across the seam x = 0 / 1 and 200 clustered far from both: d_hex is small, so the
+  // nearest image of each lies beyond the first band of images; the result must still be the torus distance
+  // (before: 0.6, the distance inside the cell). Euclidean and bilateral, against all pairs and shifts.
+  std::vector<std::pair<Point_3, Vector_3>> p{{Point_3(0.2, 0.2, 0.5), Vector_3(0, 0, 1)},
+                                              {Point_3(0.8, 0.2, 0.5), Vector_3(0, 0, 1)}};
+  for (int i = 0; i < 200; ++i)
+    p.push_back({Point_3(0.45 + 0.005 * (i % 20), 0.7 + 0.01 * (i / 20), 0.5 + 0.001 * (i % 7)), Vector_3(0, 0, i % 2 ? 1 : -1)});
+  for (const double sigma_feature : {std::numeric_limits<double>::infinity(), 0.5}) {
+    Sampling_quality_options o;
+    o.periodic = true;
+    o.sigma_feature = sigma_feature;
+    const Sampling_quality q = sampling_quality(p, o);
+    double smallest = std::numeric_limits<double>::infinity(), mean = 0, seam = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < p.size(); ++j)
+        for (int shift = 0; shift < 27 && j != i; ++shift) {
+          const Vector_3 d = p[i].first - p[j].first - Vector_3(shift % 3 - 1, shift / 3 % 3 - 1, shift / 9 - 1);
+          const double f = std::isinf(sigma_feature) ? 0 : (p[i].second - p[j].second).squared_length() / 0.25;
+          nearest = std::min(nearest, std::sqrt(d.squared_length() + f));
+        }
+      smallest = std::min(smallest, nearest);
+      mean += nearest / double(p.size());
+      if (i < 2) seam += nearest / 2;
+    }
+    EXPECT_NEAR(seam, 0.4, 1e-12);
+    EXPECT_NEAR(q.minimum_distance, smallest, 1e-12);
+    EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, mean, 1e-12) << sigma_feature;
+  }
+}
+
 TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
   // Half the points in a corner 0.01 wide, the rest spread out, some duplicates: the minimum and the mean of the
   // nearest-neighbour distances against a scan of all pairs, in 2-D and 3-D.

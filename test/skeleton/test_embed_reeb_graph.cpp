@@ -231,6 +231,38 @@ TEST(ClassicalMds, KrylovSolverAgreesWithTheDenseOne) {
   const auto pub = classical_mds_3d(D, pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
     for (int c = 0; c < 3; ++c) EXPECT_EQ(pub[i][c], krylov[i][c]);
+  // Distances of 1e150 or 1e-150 (squares overflow or underflow): the same picture, scaled (before: off by 98 %).
+  for (const double factor : {0x1p500, 0x1p-500}) {
+    std::vector<double> scaled = D;
+    for (double& d : scaled) d *= factor;
+    const auto big = mds(scaled, pts.size(), 0), big_dense = mds(scaled, pts.size(), 1000);
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(big_dense[i][c], dense[i][c] * factor);  // powers of two: exact
+        EXPECT_NEAR(big[i][c] / factor, krylov[i][c], 1e-9 * largest);
+      }
+  }
+}
+
+TEST(ClassicalMds, KrylovSolverFindsTheWeakAxesOfElongatedData) {
+  // Spreads 1e6, 1 and 0.5 in R^3: the second and third eigenvalues are 1e-12 of the first. Both solvers recover
+  // the weak axes (before: the Krylov solver stopped on a tolerance relative to the largest eigenvalue and
+  // returned noise there).
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<std::vector<double>> pts(400, std::vector<double>(3));
+  for (auto& p : pts) p = {1e6 * g(rng), g(rng), 0.5 * g(rng)};
+  const std::vector<double> D = distances_of(pts);
+  const auto krylov = mds(D, pts.size(), 0), dense = mds(D, pts.size(), 1000);
+  for (int c = 1; c < 3; ++c) {
+    double sk = 0, sd = 0, skd = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      sk += krylov[i][c] * krylov[i][c];
+      sd += dense[i][c] * dense[i][c];
+      skd += krylov[i][c] * dense[i][c];
+    }
+    EXPECT_GT(std::fabs(skd) / std::sqrt(sk * sd), 0.999) << "axis " << c;
+  }
 }
 
 TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {

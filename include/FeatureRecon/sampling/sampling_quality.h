@@ -86,91 +86,104 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   }
   q.hexagonal_distance = dim == 2 ? std::sqrt(2 * measure / (std::sqrt(3.0) * double(n)))
                                   : std::cbrt(std::sqrt(2.0) * measure / double(n));
-  // Periodic images of the points near the faces of the unit cell, so the grid sees the torus.
-  std::vector<std::array<double, D>> points = S.positions;
-  std::vector<std::size_t> source(n);
-  for (std::size_t i = 0; i < n; ++i) source[i] = i;
-  const double side = q.hexagonal_distance;
-  if (options.periodic) {
-    const double band = std::min(0.5, 2 * side);
-    int offsets = 1;
-    for (int k = 0; k < D; ++k) offsets *= 3;
-    for (std::size_t i = 0; i < n; ++i)
-      for (int o = 0; o < offsets; ++o) {  // every shift in {-1, 0, 1}^d but zero
-        std::array<double, D> p = S.positions[i];
-        bool inside = true, zero = true;
-        for (int k = 0, c = o; k < D; ++k, c /= 3) {
-          p[k] += double(c % 3 - 1);
-          zero = zero && c % 3 == 1;
-          inside = inside && p[k] > -band && p[k] < 1 + band;
+  // Periodic images of the points within `band` of the faces of the unit cell, so the tree sees the torus. The
+  // search is exact when every nearest distance found stays below the band (the images within that distance of
+  // a point in the cell are then all in the tree); otherwise it is repeated with band 0.5, which holds every
+  // nearest image. Returns the largest nearest distance.
+  const auto measure_with_band = [&](double band) {
+    double farthest = 0;
+    std::vector<std::array<double, D>> points = S.positions;
+    std::vector<std::size_t> source(n);
+    for (std::size_t i = 0; i < n; ++i) source[i] = i;
+    if (options.periodic) {
+      int offsets = 1;
+      for (int k = 0; k < D; ++k) offsets *= 3;
+      for (std::size_t i = 0; i < n; ++i)
+        for (int o = 0; o < offsets; ++o) {  // every shift in {-1, 0, 1}^d but zero
+          std::array<double, D> p = S.positions[i];
+          bool inside = true, zero = true;
+          for (int k = 0, c = o; k < D; ++k, c /= 3) {
+            p[k] += double(c % 3 - 1);
+            zero = zero && c % 3 == 1;
+            inside = inside && p[k] > -band && p[k] < 1 + band;
+          }
+          if (!zero && inside) {
+            points.push_back(p);
+            source.push_back(i);
+          }
         }
-        if (!zero && inside) {
-          points.push_back(p);
-          source.push_back(i);
-        }
-      }
-  }
-  internal::with_metric(options, [&](const auto& metric) {
-    const double scale = metric.spatial_scale();
-    // Nearest neighbours from a CGAL kd-tree (sliding midpoint: clusters and isolated samples alike), visited by
-    // increasing spatial distance until it exceeds the best bilateral distance so far (xi >= the spatial
-    // distance), so the minimum is exact.
-    using Kd_kernel = CGAL::Simple_cartesian<double>;
-    using Kd_point = std::conditional_t<D == 2, Kd_kernel::Point_2, Kd_kernel::Point_3>;
-    using Base_traits = std::conditional_t<D == 2, CGAL::Search_traits_2<Kd_kernel>, CGAL::Search_traits_3<Kd_kernel>>;
-    using Traits_with_index =
-        CGAL::Search_traits_adapter<std::uint32_t, typename CGAL::Pointer_property_map<Kd_point>::type, Base_traits>;
-    using Incremental = CGAL::Orthogonal_incremental_neighbor_search<Traits_with_index>;
-    std::vector<Kd_point> kd_points;
-    kd_points.reserve(points.size());
-    for (const auto& p : points) {
-      if constexpr (D == 2)
-        kd_points.emplace_back(p[0], p[1]);
-      else
-        kd_points.emplace_back(p[0], p[1], p[2]);
     }
-    std::vector<std::uint32_t> keys(points.size());
-    for (std::size_t j = 0; j < keys.size(); ++j) keys[j] = static_cast<std::uint32_t>(j);
-    typename Incremental::Tree tree(keys.begin(), keys.end(), typename Incremental::Tree::Splitter(),
-                                    Traits_with_index(CGAL::make_property_map(kd_points)));
-    tree.build();
-    typename Incremental::Distance tree_distance(CGAL::make_property_map(kd_points));
-    auto xi = [&](std::size_t i, std::size_t j_point) {
-      double d2 = 0;
-      for (int k = 0; k < D; ++k) {
-        const double d = S.positions[i][k] - points[j_point][k];
-        d2 += d * d;
+    internal::with_metric(options, [&](const auto& metric) {
+      const double scale = metric.spatial_scale();
+      // Nearest neighbours from a CGAL kd-tree (sliding midpoint: clusters and isolated samples alike), visited by
+      // increasing spatial distance until it exceeds the best bilateral distance so far (xi >= the spatial
+      // distance), so the minimum is exact.
+      using Kd_kernel = CGAL::Simple_cartesian<double>;
+      using Kd_point = std::conditional_t<D == 2, Kd_kernel::Point_2, Kd_kernel::Point_3>;
+      using Base_traits =
+          std::conditional_t<D == 2, CGAL::Search_traits_2<Kd_kernel>, CGAL::Search_traits_3<Kd_kernel>>;
+      using Traits_with_index =
+          CGAL::Search_traits_adapter<std::uint32_t, typename CGAL::Pointer_property_map<Kd_point>::type, Base_traits>;
+      using Incremental = CGAL::Orthogonal_incremental_neighbor_search<Traits_with_index>;
+      std::vector<Kd_point> kd_points;
+      kd_points.reserve(points.size());
+      for (const auto& p : points) {
+        if constexpr (D == 2)
+          kd_points.emplace_back(p[0], p[1]);
+        else
+          kd_points.emplace_back(p[0], p[1], p[2]);
       }
-      return metric(d2, S.squared_feature_distance(i, source[j_point])) * scale;
-    };
-    // Euclidean (infinite sigma_feature): the nearest other point is among the two nearest (the point itself is
-    // one of them unless two copies of it are, and then the answer is 0 either way). The tree sums the same
-    // squared coordinate differences in the same order as xi(), so it ranks the candidates as xi() does. A
-    // k-nearest search costs a quarter of the incremental one, which the bilateral distance needs.
-    using Nearest = CGAL::Orthogonal_k_neighbor_search<Traits_with_index>;
-    const bool euclidean = std::isinf(options.sigma_feature);
-    double minimum = std::numeric_limits<double>::infinity(), sum = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      double best = std::numeric_limits<double>::infinity();
-      if (euclidean) {
-        Nearest search(tree, kd_points[i], 2, 0.0, true, tree_distance);
-        for (auto it = search.begin(); it != search.end(); ++it)
-          if (it->first != i) best = std::min(best, xi(i, it->first));
-      } else {
-        Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
-        for (auto it = search.begin(); it != search.end(); ++it) {
-          // it->second: squared spatial distance (rounded; the margin covers it)
-          if (std::sqrt(it->second) > best * (1 + 1e-9)) break;
-          if (it->first != i) best = std::min(best, xi(i, it->first));
+      std::vector<std::uint32_t> keys(points.size());
+      for (std::size_t j = 0; j < keys.size(); ++j) keys[j] = static_cast<std::uint32_t>(j);
+      typename Incremental::Tree tree(keys.begin(), keys.end(), typename Incremental::Tree::Splitter(),
+                                      Traits_with_index(CGAL::make_property_map(kd_points)));
+      tree.build();
+      typename Incremental::Distance tree_distance(CGAL::make_property_map(kd_points));
+      auto xi = [&](std::size_t i, std::size_t j_point) {
+        double d2 = 0;
+        for (int k = 0; k < D; ++k) {
+          const double d = S.positions[i][k] - points[j_point][k];
+          d2 += d * d;
         }
+        return metric(d2, S.squared_feature_distance(i, source[j_point])) * scale;
+      };
+      // Euclidean (infinite sigma_feature): the nearest other point is among the two nearest (the point itself is
+      // one of them unless two copies of it are, and then the answer is 0 either way). The tree sums the same
+      // squared coordinate differences in the same order as xi(), so it ranks the candidates as xi() does. A
+      // k-nearest search costs a quarter of the incremental one, which the bilateral distance needs.
+      using Nearest = CGAL::Orthogonal_k_neighbor_search<Traits_with_index>;
+      const bool euclidean = std::isinf(options.sigma_feature);
+      double minimum = std::numeric_limits<double>::infinity(), sum = 0;
+      farthest = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        if (euclidean) {
+          Nearest search(tree, kd_points[i], 2, 0.0, true, tree_distance);
+          for (auto it = search.begin(); it != search.end(); ++it)
+            if (it->first != i) best = std::min(best, xi(i, it->first));
+        } else {
+          Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
+          for (auto it = search.begin(); it != search.end(); ++it) {
+            // it->second: squared spatial distance (rounded; the margin covers it)
+            if (std::sqrt(it->second) > best * (1 + 1e-9)) break;
+            if (it->first != i) best = std::min(best, xi(i, it->first));
+          }
+        }
+        minimum = std::min(minimum, best);
+        farthest = std::max(farthest, best);
+        sum += best;
       }
-      minimum = std::min(minimum, best);
-      sum += best;
-    }
-    q.minimum_distance = minimum;
-    q.average_minimum_distance = sum / double(n) / q.hexagonal_distance;
-    q.relative_radius = minimum / q.hexagonal_distance;
-  });
+      q.minimum_distance = minimum;
+      q.average_minimum_distance = sum / double(n) / q.hexagonal_distance;
+      q.relative_radius = minimum / q.hexagonal_distance;
+    });
+    return farthest;
+  };
+  const double band = std::min(0.5, 2 * q.hexagonal_distance);
+  if (!options.periodic)
+    measure_with_band(0);
+  else if (!(measure_with_band(band) * (1 + 1e-9) < band) && band < 0.5)
+    measure_with_band(0.5);
   return q;
 }
 

@@ -373,8 +373,9 @@ namespace internal {
 /// of the symmetric matrix B. Dense (Eigen's SelfAdjointEigenSolver, O(n^3)) when n <= dense_limit; otherwise a
 /// block Krylov subspace with full reorthogonalisation and Rayleigh-Ritz (block Lanczos), a fixed seeded start
 /// block of 8 vectors (eigenvalues of multiplicity up to 8 are found), grown until every wanted Ritz pair has
-/// residual |B v - theta v| <= 1e-10 |B|; O(n^2) per block. Falls back to the dense solver if the subspace would
-/// exceed n / 2 columns. `progress` is asked after each block (fraction of that column budget); false sets
+/// residual |B v - theta v| <= max(1e-10 |theta|, 1e-14 |B|_inf); O(n^2) per block. Falls back to the dense
+/// solver if that is not reached within min(n / 2, 320) columns. B should be scaled so that |B|_inf is about 1
+/// (residual norms are not rescaled). `progress` is asked after each block (fraction of that column budget); false sets
 /// `stopped` and returns what has been computed so far (maybe nothing).
 inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dense_limit,
                            const Progress_callback& progress, bool& stopped, Eigen::VectorXd& values,
@@ -392,7 +393,7 @@ inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dens
     }
   };
   if (static_cast<std::size_t>(N) <= dense_limit || wanted == 0) return dense();
-  const Eigen::Index block = 8, budget = N / 2;
+  const Eigen::Index block = 8, budget = std::min<Eigen::Index>(N / 2, 320);
   const double scale = B.cwiseAbs().rowwise().sum().maxCoeff();  // |B|_inf >= |B|_2
   values = Eigen::VectorXd::Zero(wanted);
   vectors = Eigen::MatrixXd::Zero(N, wanted);
@@ -445,7 +446,7 @@ inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dens
       values[c] = theta;
       vectors.col(c) = Q * s;
       const double residual = (BQ * s - theta * vectors.col(c)).norm();
-      if (!(residual <= 1e-10 * scale)) converged = false;
+      if (!(residual <= std::max(1e-10 * std::fabs(theta), 1e-14 * scale))) converged = false;
     }
     if (converged) return;
     if (k + block > budget) return dense();
@@ -456,8 +457,8 @@ inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dens
     W = product;
     fresh = extend(W);
   }
-  // The Krylov subspace is invariant and its Ritz pairs are exact, but it holds fewer than `wanted` vectors.
-  if (Q.cols() < wanted) dense();
+  // The Krylov subspace stopped growing (invariant up to rounding) before the wanted pairs converged.
+  dense();
 }
 
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n,
@@ -475,28 +476,40 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
   std::vector<std::array<double, 3>> out(n, {0.0, 0.0, 0.0});
   if (n == 0) return out;
   const Eigen::Index N = static_cast<Eigen::Index>(n);
+  // Distances are scaled by a power of two into [0, 2) and the centred matrix by another to a norm in [1, 2):
+  // exact, so squares cannot overflow or underflow, and the solver's tolerances are relative to 1.
+  const double largest = *std::max_element(D.begin(), D.end());
+  if (!(largest > 0)) return out;  // one repeated point
+  const int distance_exponent = std::ilogb(largest);
   Eigen::MatrixXd B(N, N);
   for (Eigen::Index i = 0; i < N; ++i)
     for (Eigen::Index j = 0; j < N; ++j) {
-      const double d = D[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)];
+      const double d = std::ldexp(D[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)], -distance_exponent);
       B(i, j) = -0.5 * d * d;
     }
   const Eigen::VectorXd row_mean = B.rowwise().mean();
   const double mean = row_mean.mean();
   for (Eigen::Index i = 0; i < N; ++i)
     for (Eigen::Index j = 0; j < N; ++j) B(i, j) += mean - row_mean[i] - row_mean[j];
+  const double norm = B.cwiseAbs().rowwise().sum().maxCoeff();
+  if (!(norm > 0)) return out;
+  const int norm_exponent = std::ilogb(norm);
+  B *= std::ldexp(1.0, -norm_exponent);
   Eigen::VectorXd values;
   Eigen::MatrixXd vectors;
   top_eigenpairs(B, 3, dense_limit, progress, stopped, values, vectors);
   if (stopped) return out;
   for (Eigen::Index c = 0; c < values.size(); ++c) {
-    const double lambda = values[c];
+    // The eigenvalue of the scaled distances; coordinates get the distance scale back below.
+    const double lambda = std::ldexp(values[c], norm_exponent);
     if (!(lambda > 0)) break;
     Eigen::VectorXd v = vectors.col(c);
     Eigen::Index k = 0;
     v.cwiseAbs().maxCoeff(&k);
     if (v[k] < 0) v = -v;
-    for (Eigen::Index i = 0; i < N; ++i) out[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = v[i] * std::sqrt(lambda);
+    const double length = std::sqrt(lambda);
+    for (Eigen::Index i = 0; i < N; ++i)
+      out[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = std::ldexp(v[i] * length, distance_exponent);
   }
   return out;
 }
@@ -506,7 +519,8 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
 /// the eigenvectors of the double-centred squared distances for the three largest eigenvalues, scaled by their
 /// square roots (negative eigenvalues give 0). Deterministic signs as in project_to_3d(). Up to n = 300 a dense
 /// eigendecomposition; above, a seeded block Krylov (Lanczos) solver for the three largest eigenpairs, O(n^2) per
-/// step of 8 vectors (n = 2000: well under a second, where the dense solver needs about 36 s); eigenvalues of
+/// step of 8 vectors (n = 2000: 0.1-0.3 s, where the dense solver needs 6-9 s; the dense solver again when the
+/// Krylov one has not converged after 320 columns); eigenvalues of
 /// multiplicity up to 8 are found. Coordinates inside an eigenspace of multiplicity above one are one orthonormal
 /// basis of it (distances between the embedded points do not depend on which).
 /// \throws std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
