@@ -186,6 +186,13 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   bad[4] = Point_2(-1e100, 1e100);  // the largest accepted
   EXPECT_NO_THROW(weighted_sample_elimination(bad, 5, std::back_inserter(kept)));
   kept.clear();
+  // A set 1e-300 wide: its area underflows, so r_max is 0 and the input is degenerate (before: "success").
+  std::vector<Point_2> speck;
+  for (const auto& q : p) speck.emplace_back(1e-300 * q.x(), 1e-300 * q.y());
+  const auto tiny = weighted_sample_elimination(speck, 5, std::back_inserter(kept));
+  EXPECT_EQ(tiny.status, Status::degenerate_input);
+  EXPECT_EQ(kept.size(), 5u);
+  kept.clear();
   Elimination_options o;
   o.sigma_feature = -1;
   EXPECT_THROW(weighted_sample_elimination(p, 5, std::back_inserter(kept), o), std::invalid_argument);

@@ -106,7 +106,8 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   `degenerate_input` for an empty input and for input of lower affine dimension than the domain, decided
 ///   by exact predicates: collinear points (r_max = L / (2 count) for the segment of length L), coplanar 3D
 ///   points asked to be sampled as a volume (sampled as a surface), one repeated position (the seed picks the
-///   items); `interrupted` (nothing written) when the callback stopped.
+///   items), and positions so close together (spans below about 1e-154) that the automatic r_max underflows to
+///   0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
 /// \throws std::invalid_argument naming the argument: count larger than the input, non-finite coordinates
 ///   (naming the item), sigma_position <= 0, sigma_feature <= 0, negative max_radius or domain_measure,
 ///   intrinsic_dimension other than 0, 2 or 3, alpha <= 0. The input is never modified.
@@ -164,6 +165,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       if (measure == 0) measure = internal::bounding_box_measure<D>(S.positions);
       r_max = internal::packing_radius(measure, count, dim) / options.sigma_position;
     }
+    if (!(r_max > 0)) result.status = Status::degenerate_input;  // one place, or an extent whose squares underflow
   }
   result.radius = r_max;
 
