@@ -102,7 +102,8 @@ TEST(SamplingQuality, TorusNeighboursAcrossTheSeamOfAClusteredSet) {
   std::vector<std::pair<Point_3, Vector_3>> p{{Point_3(0.2, 0.2, 0.5), Vector_3(0, 0, 1)},
                                               {Point_3(0.8, 0.2, 0.5), Vector_3(0, 0, 1)}};
   for (int i = 0; i < 200; ++i)
-    p.push_back({Point_3(0.45 + 0.005 * (i % 20), 0.7 + 0.01 * (i / 20), 0.5 + 0.001 * (i % 7)), Vector_3(0, 0, i % 2 ? 1 : -1)});
+    p.push_back({Point_3(0.45 + 0.005 * (i % 20), 0.7 + 0.01 * (i / 20), 0.5 + 0.001 * (i % 7)),
+                 Vector_3(0, 0, i % 2 ? 1 : -1)});
   for (const double sigma_feature : {std::numeric_limits<double>::infinity(), 0.5}) {
     Sampling_quality_options o;
     o.periodic = true;
@@ -167,8 +168,9 @@ TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < pn.size(); ++j)
       if (i != j)
-        nearest = std::min(nearest, std::sqrt(CGAL::to_double(CGAL::squared_distance(pn[i].first, pn[j].first)) +
-                                              CGAL::to_double((pn[i].second - pn[j].second).squared_length()) / 0.0025));
+        nearest = std::min(nearest,
+                           std::sqrt(CGAL::to_double(CGAL::squared_distance(pn[i].first, pn[j].first)) +
+                                     CGAL::to_double((pn[i].second - pn[j].second).squared_length()) / 0.0025));
     smallest = std::min(smallest, nearest);
     mean += nearest / double(pn.size());
   }

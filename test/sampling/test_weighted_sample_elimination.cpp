@@ -181,7 +181,8 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
     weighted_sample_elimination(bad, 5, std::back_inserter(kept));
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("item 4 has coordinate -3e+300 beyond +-1e100"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("item 4 has coordinate -3e+300 beyond +-1e100"), std::string::npos)
+        << e.what();
   }
   bad[4] = Point_2(-1e100, 1e100);  // the largest accepted
   EXPECT_NO_THROW(weighted_sample_elimination(bad, 5, std::back_inserter(kept)));

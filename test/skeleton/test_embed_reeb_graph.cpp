@@ -185,7 +185,8 @@ std::vector<double> distances_of(const std::vector<std::vector<double>>& points)
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
       double s = 0;
-      for (std::size_t k = 0; k < points[i].size(); ++k) s += (points[i][k] - points[j][k]) * (points[i][k] - points[j][k]);
+      for (std::size_t k = 0; k < points[i].size(); ++k)
+        s += (points[i][k] - points[j][k]) * (points[i][k] - points[j][k]);
       D[i * n + j] = std::sqrt(s);
     }
   return D;
@@ -196,7 +197,8 @@ double distance_error(const std::vector<std::array<double, 3>>& x, const std::ve
   double worst = 0;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j)
-      worst = std::max(worst, std::fabs(std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]) - D[i * n + j]));
+      worst = std::max(worst,
+                       std::fabs(std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]) - D[i * n + j]));
   return worst;
 }
 /// Per embedding axis, the sum of squares: the eigenvalue behind it.
@@ -279,13 +281,15 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
     const auto x = mds(D, pts->size(), 0);
     EXPECT_LT(distance_error(x, D), 1e-8 * (1 + D[pts->size() - 1]));
   }
-  EXPECT_EQ(distance_error(mds(distances_of(same), same.size(), 0), std::vector<double>(same.size() * same.size(), 0)), 0);
+  const std::vector<double> zeros(same.size() * same.size(), 0);
+  EXPECT_EQ(distance_error(mds(distances_of(same), same.size(), 0), zeros), 0);
   // Geodesic distances on a cycle of 360 vertices are not Euclidean (B has negative eigenvalues) and the top
   // eigenvalues come in equal pairs: the embedding's axes carry the same eigenvalues as the dense solver's.
   const std::size_t n = 360;
   std::vector<double> cycle(n * n);
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) cycle[i * n + j] = static_cast<double>(std::min((i + n - j) % n, (j + n - i) % n));
+    for (std::size_t j = 0; j < n; ++j)
+      cycle[i * n + j] = static_cast<double>(std::min((i + n - j) % n, (j + n - i) % n));
   const auto a = axis_eigenvalues(mds(cycle, n, 0)), b = axis_eigenvalues(mds(cycle, n, 1000));
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1e-8 * b[0]) << c;
   EXPECT_NEAR(a[0], a[1], 1e-8 * a[0]);

@@ -260,12 +260,13 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   const Proximity_graph g = build_rips_graph_from_distance_matrix(D, rips_radius);
   bool stopped = false;
-  const Progress_callback scaled =
-      options.progress ? Progress_callback([&options](double f) { return options.progress(0.3 * f); }) : Progress_callback();
+  Progress_callback scaled;
+  if (options.progress) scaled = [&options](double f) { return options.progress(0.3 * f); };
   Point_matrix mds;
   mds.rows = n;
   mds.dimension = 3;
-  for (const auto& p : internal::classical_mds_3d(a, n, scaled, stopped)) mds.data.insert(mds.data.end(), p.begin(), p.end());
+  for (const auto& p : internal::classical_mds_3d(a, n, scaled, stopped))
+    mds.data.insert(mds.data.end(), p.begin(), p.end());
   if (stopped || !FeatureRecon::internal::report_progress(options.progress, 0.3)) {
     Reeb_skeleton interrupted;
     interrupted.dimension = 3;
