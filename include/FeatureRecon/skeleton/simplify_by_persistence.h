@@ -48,6 +48,10 @@ struct Simplification_complex {
 /// per function value on it, and every edge of the merging path a strip of triangles to the spine segment of
 /// its values; the level set of the resulting 2-complex at any height joins all points of the merging path at
 /// that height, so its Reeb graph, with arcs of zero height contracted, is the quotient.
+/// A branch (extreme e, fork s) is glued onto a path from s into the sibling component that holds the elder
+/// extreme, up to e's level: the fewest arcs to a node beyond e's level that lies, beyond that level, in the
+/// elder's part (else to the nearest node beyond it). The search stays between the two levels, and one
+/// union-find sweep finds every fork's sibling, so a long stem with n short spurs costs O(n log n), not O(n^2).
 /// This overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
 /// regular nodes (e.g. after repair_reeb_graph()), which the result absorbs into arcs.
 /// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's vertices
@@ -151,7 +155,6 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
         }
     return order;  // the nodes reached
   };
-  const auto never = [](std::size_t) { return false; };
   auto other_end = [&](std::size_t arc, std::size_t node) {
     return R.arcs[arc].lower == node ? R.arcs[arc].upper : R.arcs[arc].lower;
   };
@@ -178,63 +181,112 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 
   std::vector<std::vector<Edge>> merging_sets;
   Reeb_simplification_result result;
-  // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork).
-  std::vector<std::size_t> pred, pred_sibling, pred_rest;  // reused: allocated once
-  std::vector<std::size_t> c2_stamp(nn, 0);
-  std::size_t c2_count = 0;
-  auto merge_branch = [&](const Reeb_persistence_pair& pair, bool down) {
-    const std::size_t e = pair.birth_node, s = pair.death_node;
-    auto side = [&](std::size_t y) { return down ? y < s : y > s; };
-    // C2: the component of the extreme e beyond the fork. e is its extreme, so it lies in the band between the
-    // fork's level and e's.
-    const std::vector<std::size_t> c2 = bfs(e, side, never, pred);
-    ++c2_count;
-    for (const std::size_t x : c2) c2_stamp[x] = c2_count;
-    const Vertex_index ev = R.nodes[e].vertex;
-    // pi2: from the fork through an arc into C2, then to the extreme e.
-    std::vector<Edge> edges;
-    std::size_t alpha = none, beta = none, best_extreme = none;
-    for (const auto& [y, arc] : adj[s]) {
-      if (!side(y)) continue;
-      if (c2_stamp[y] == c2_count) {
-        if (alpha == none) alpha = arc;
-        continue;
+  // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork). At the fork, the arc alpha
+  // goes into C2, the component of e beyond the fork, and beta into the sibling component that reaches farthest
+  // (its extreme is the elder; the first such arc of the fork). Both are found for all pairs by one union-find
+  // sweep from the far end towards the forks, asked at each fork before it joins its components: O(n log n) in
+  // all, where a search of each sibling component would cost O(n) per branch (a long stem with many spurs).
+  // The union-find keeps its history (union by size, no path compression, each link stamped with the step of
+  // the sweep that made it), so that the path into the sibling can later ask which nodes beyond e were joined
+  // with the elder when the sweep reached e.
+  struct Branch_choice {
+    std::size_t alpha, beta, elder;
+  };
+  struct Sweep {
+    std::vector<std::size_t> parent, size, linked_at, extreme, step;  // step: when the sweep reached each node
+    std::size_t find(std::size_t x, std::size_t t = std::numeric_limits<std::size_t>::max()) const {
+      while (parent[x] != x && linked_at[x] <= t) x = parent[x];
+      return x;
+    }
+  };
+  auto sweep = [&](const std::vector<Reeb_persistence_pair>& pairs, bool down, std::vector<Branch_choice>& choice) {
+    choice.assign(pairs.size(), Branch_choice{none, none, none});
+    std::vector<std::vector<std::size_t>> at_fork(nn);  // the pairs to simplify, by fork
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (pairs[i].persistence() <= delta) at_fork[pairs[i].death_node].push_back(i);
+    Sweep W;
+    W.parent.resize(nn);
+    std::iota(W.parent.begin(), W.parent.end(), std::size_t(0));
+    W.extreme = W.parent;
+    W.size.assign(nn, 1);
+    W.linked_at.assign(nn, none);
+    W.step.assign(nn, none);
+    auto farther = [&](std::size_t x, std::size_t y) { return down ? x < y : x > y; };
+    for (std::size_t k = 0; k < nn; ++k) {
+      const std::size_t s = down ? k : nn - 1 - k;
+      W.step[s] = k;
+      for (const std::size_t i : at_fork[s]) {
+        const std::size_t ce = W.find(pairs[i].birth_node);
+        Branch_choice& c = choice[i];
+        for (const auto& [y, arc] : adj[s]) {
+          if (!farther(y, s)) continue;
+          const std::size_t cy = W.find(y);
+          if (cy == ce) {
+            if (c.alpha == none) c.alpha = arc;
+          } else if (c.elder == none || farther(W.extreme[cy], c.elder)) {
+            c.elder = W.extreme[cy];
+            c.beta = arc;
+          }
+        }
       }
-      // A sibling branch: keep the one whose component reaches farthest (the elder extreme). This searches the
-      // whole sibling component: simplification costs O(n) per merged branch in the worst case (a long stem
-      // with many short spurs), although a search limited to the band between the two levels would do.
-      const std::vector<std::size_t> comp = bfs(y, side, never, pred);
-      const std::size_t ext = down ? *std::min_element(comp.begin(), comp.end())
-                                   : *std::max_element(comp.begin(), comp.end());
-      if (best_extreme == none || (down ? ext < best_extreme : ext > best_extreme)) {
-        best_extreme = ext;
-        beta = arc;
-        std::swap(pred, pred_sibling);
+      for (const auto& [y, arc] : adj[s]) {  // s joins the components beyond it
+        if (!farther(y, s)) continue;
+        std::size_t a = W.find(y), b = W.find(s);
+        if (a == b) continue;
+        if (W.size[a] > W.size[b]) std::swap(a, b);
+        W.parent[a] = b;
+        W.linked_at[a] = k;
+        W.size[b] += W.size[a];
+        if (farther(W.extreme[a], W.extreme[b])) W.extreme[b] = W.extreme[a];
       }
     }
-    if (alpha == none || beta == none) return;  // cannot happen for a valid pair
+    return W;
+  };
+  std::vector<std::size_t> pred;  // reused: allocated once
+  auto merge_branch = [&](const Reeb_persistence_pair& pair, const Branch_choice& c, const Sweep& W, bool down) {
+    const std::size_t e = pair.birth_node, s = pair.death_node;
+    if (c.alpha == none || c.beta == none) return;  // cannot happen for a valid pair
+    auto side = [&](std::size_t y) { return down ? y < s : y > s; };
+    auto beyond_e = [&](std::size_t y) { return down ? y < e : y > e; };
+    const Vertex_index ev = R.nodes[e].vertex;
+    std::vector<Edge> edges;
     {
-      std::vector<std::size_t> arcs{alpha};
-      const std::size_t u = other_end(alpha, s);
-      bfs(u, side, [&](std::size_t x) { return x == e; }, pred_rest);
-      const std::vector<std::size_t> rest = path_arcs(e, pred_rest);
+      // pi2: from the fork through alpha into C2, then to the extreme e (C2 lies between the two levels).
+      std::vector<std::size_t> arcs{c.alpha};
+      const std::size_t u = other_end(c.alpha, s);
+      bfs(u, side, [&](std::size_t x) { return x == e; }, pred);
+      const std::vector<std::size_t> rest = path_arcs(e, pred);
       arcs.insert(arcs.end(), rest.begin(), rest.end());
       walk(s, arcs, [](Vertex_index) { return false; }, edges);
     }
     {
-      // pi1: from the fork through the sibling branch towards its extreme, until the level of e is reached.
-      std::vector<std::size_t> arcs{beta};
-      const std::vector<std::size_t> rest = path_arcs(best_extreme, pred_sibling);
+      // pi1: from the fork through beta towards the elder, walked until the level of e is reached: a shortest
+      // path (in arcs) between the two levels to the nearest node beyond e that is joined with the elder beyond
+      // e (when the sweep reached e); if every such path first crosses into another part of the sibling beyond
+      // e, the nearest node beyond e. Either search stays between the two levels.
+      std::vector<std::size_t> arcs{c.beta};
+      const std::size_t y = other_end(c.beta, s);
+      const std::size_t elder_root = W.find(c.elder, W.step[e]);
+      auto with_elder = [&](std::size_t x) { return W.find(x, W.step[e]) == elder_root; };
+      std::vector<std::size_t> reached =
+          bfs(y, [&](std::size_t x) { return side(x) && (!beyond_e(x) || with_elder(x)); },
+              [&](std::size_t x) { return beyond_e(x); }, pred);
+      if (!beyond_e(reached.back())) reached = bfs(y, side, beyond_e, pred);
+      FEATURERECON_assertion(beyond_e(reached.back()));
+      const std::vector<std::size_t> rest = path_arcs(reached.back(), pred);
       arcs.insert(arcs.end(), rest.begin(), rest.end());
       walk(s, arcs, [&](Vertex_index v) { return down ? !less(ev, v) : !less(v, ev); }, edges);
     }
     merging_sets.push_back(std::move(edges));
     ++result.removed_branches;
   };
-  for (const auto& p : P.sublevel_branches)
-    if (p.persistence() <= delta) merge_branch(p, true);
-  for (const auto& p : P.superlevel_branches)
-    if (p.persistence() <= delta) merge_branch(p, false);
+  for (const bool down : {true, false}) {
+    const std::vector<Reeb_persistence_pair>& pairs = down ? P.sublevel_branches : P.superlevel_branches;
+    std::vector<Branch_choice> choice;
+    const Sweep W = sweep(pairs, down, choice);
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (pairs[i].persistence() <= delta) merge_branch(pairs[i], choice[i], W, down);
+  }
   for (std::size_t i = 0; i < P.loops.size(); ++i) {
     if (P.loops[i].persistence() > delta) continue;
     std::vector<Edge> edges;
