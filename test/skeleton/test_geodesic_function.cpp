@@ -121,3 +121,21 @@ TEST(GeodesicFunction, InterruptAndNonCanonical) {
   path.edge_lengths = {1.0, -2.0};
   EXPECT_THROW(compute_geodesic_function(path), std::invalid_argument);
 }
+
+TEST(GeodesicFunction, DistancesBeyondTheLargestDoubleAreRefused) {
+  // Each length is finite, their sums are not: success with inf values (and an inf vertex as the base point)
+  // would only fail later, in the Reeb graph, without saying why.
+  Proximity_graph path;
+  path.number_of_vertices = 4;
+  path.edges = {{0, 1}, {1, 2}, {2, 3}};
+  path.edge_lengths = {1e308, 1e308, 1e308};
+  try {
+    compute_geodesic_function(path);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the geodesic distance of vertex 2 overflows"), std::string::npos)
+        << e.what();
+  }
+  path.edge_lengths = {5e307, 5e307, 5e307};  // 1.5e308: still finite
+  EXPECT_EQ(compute_geodesic_function(path).values, (std::vector<double>{1.5e308, 1e308, 5e307, 0}));
+}

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <string>
+
 #include "skeleton_test_utilities.h"
 
 using namespace FeatureRecon;
@@ -231,4 +234,55 @@ TEST(ConnectDeadEnds, LeavesShortIsolatedSegmentsAlone) {
     // repair_reeb_graph() does not join the segment's two ends either.
     EXPECT_EQ(repair_reeb_graph(R, 2.0, pts).joined, 0u);
   }
+}
+
+namespace {
+std::string error_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+}  // namespace
+
+TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
+  // Path 0 - 1 - 2 - 3 (f = x): one arc between nodes 0 and 1; then broken on purpose.
+  Line pts;
+  std::vector<Edge> edges;
+  std::vector<double> f;
+  for (int i = 0; i < 4; ++i) {
+    pts.p.push_back({double(i), 0.0});
+    f.push_back(double(i));
+    if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
+  }
+  const Reeb_graph R = reeb_graph_of(make(4, edges, {}, f));
+  ASSERT_EQ(R.nodes.size(), 2u);
+  ASSERT_EQ(R.arcs.size(), 1u);
+  auto all = [&](const Reeb_graph& G, const std::vector<double>& values) {
+    return std::vector<std::string>{error_of([&] { repair_reeb_graph(G, 1.0, pts); }),
+                                    error_of([&] { connect_dead_ends(G, values, 1.0, pts); }),
+                                    error_of([&] { prune_reeb_graph_components(G, 1.0); }),
+                                    error_of([&] { trim_essential_stubs(G, 1.0); })};
+  };
+  for (const std::string& e : all(R, f)) EXPECT_EQ(e, "no error");
+  Reeb_graph bad = R;
+  bad.arcs[0].upper = 7;  // was a heap overflow in all four
+  for (const std::string& e : all(bad, f))
+    EXPECT_NE(e.find("arc 0 joins nodes 0 and 7: it must go up between nodes in [0, 2)"), std::string::npos) << e;
+  bad = R;
+  std::swap(bad.arcs[0].lower, bad.arcs[0].upper);
+  for (const std::string& e : all(bad, f)) EXPECT_NE(e.find("arc 0 joins nodes 1 and 0"), std::string::npos) << e;
+  bad = R;
+  bad.nodes[1].value = std::nan("");
+  for (const std::string& e : all(bad, f)) EXPECT_NE(e.find("node 1 has value nan"), std::string::npos) << e;
+  bad = R;
+  std::swap(bad.nodes[0], bad.nodes[1]);
+  for (const std::string& e : all(bad, f))
+    EXPECT_NE(e.find("nodes 0 and 1 are not in increasing (value, vertex) order"), std::string::npos) << e;
+  bad = R;
+  bad.arcs[0].vertices.push_back(9);  // connect_dead_ends reads the values of the vertices it splits at
+  EXPECT_NE(error_of([&] { connect_dead_ends(bad, f, 1.0, pts); }).find("arc 0 has vertex 9 out of range [0, 4)"),
+            std::string::npos);
 }

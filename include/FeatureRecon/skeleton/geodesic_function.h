@@ -78,7 +78,8 @@ inline Csr_graph make_csr_graph(const Proximity_graph& g) {
 /// smallest index), an extreme point of the component. Two multi-source Dijkstra runs in all:
 /// O((n + m) log n).
 /// \pre every base point in options is < number_of_vertices, and no two lie in one component (checked; throws
-///      naming them); g canonical (checked).
+///      naming them); g canonical (checked); no shortest path longer than the largest double (checked: throws
+///      naming a vertex whose distance overflows).
 /// \returns per-vertex values, per-component base points; `degenerate_input` for an empty graph.
 inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const Geodesic_options& options = {}) {
   const char* fn = "compute_geodesic_function";
@@ -112,6 +113,14 @@ inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const
   for (std::size_t v = 0; v < n; ++v)
     if (start[cc.label[v]] == none) start[cc.label[v]] = v;
   const internal::Csr_graph csr = internal::make_csr_graph(g);
+  // Every vertex of a component with a source is reached: an infinite distance there is a sum of lengths that
+  // overflowed.
+  auto check_finite = [&](const std::vector<double>& d, bool every_component) {
+    for (std::size_t v = 0; v < n; ++v)
+      if ((every_component || chosen[cc.label[v]] == none) && !(d[v] < std::numeric_limits<double>::infinity()))
+        FeatureRecon::internal::throw_invalid_argument(fn, "the geodesic distance of vertex ", v,
+                                                       " overflows the largest double; scale the edge lengths down");
+  };
   if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) {
     result.status = Status::interrupted;
     return result;
@@ -122,6 +131,7 @@ inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const
     if (chosen[c] == none) sources.push_back(start[c]);
   if (!sources.empty()) {
     const std::vector<double> d = internal::multi_source_dijkstra(csr, sources);
+    check_finite(d, false);  // the components that had no base point
     // Farthest vertex per component; strict comparison: the smallest index wins ties.
     std::vector<std::size_t> far(cc.count, none);
     std::vector<double> far_d(cc.count, -1.0);
@@ -142,6 +152,7 @@ inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const
   }
   result.base_points = chosen;
   result.values = internal::multi_source_dijkstra(csr, chosen);
+  check_finite(result.values, true);
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
 }

@@ -7,6 +7,7 @@
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
@@ -51,6 +52,9 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
                                                      std::vector<std::vector<std::size_t>>* loop_cycles) {
   const char* fn = "compute_reeb_graph_persistence";
   const std::size_t n = R.nodes.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(R.nodes[i].value))
+      FeatureRecon::internal::throw_invalid_argument(fn, "node ", i, " has value ", R.nodes[i].value);
   for (std::size_t i = 1; i < n; ++i) {
     const auto& a = R.nodes[i - 1];
     const auto& b = R.nodes[i];
@@ -209,7 +213,8 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
 /// between f(s') and the fork: a maximin (widest) path search in the sublevel graph, O(n log n) per loop.
 /// Nodes with several arcs below or above (degenerate forks) act as chains of binary forks, as in a
 /// simulation of simplicity; node order is the graph's (f, vertex index) order.
-/// \pre R's nodes are in increasing (value, vertex) order, as reeb_graph() returns them (checked; throws).
+/// \pre R's node values are finite and in increasing (value, vertex) order, as reeb_graph() returns them (checked;
+/// throws).
 inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R) {
   return internal::reeb_graph_persistence(R, nullptr);
 }

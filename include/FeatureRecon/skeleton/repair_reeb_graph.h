@@ -26,6 +26,35 @@ inline void refresh_node_types(Reeb_graph& G) {
   G.components = count_components(G);
 }
 
+/// Checks what the repair functions rely on, naming the first offending node or arc: node values finite and in
+/// strictly increasing (value, vertex) order, every arc going up between two nodes of the graph (lower < upper).
+/// With `values`, every vertex the graph uses (nodes, members, arc vertices) indexes it.
+inline void check_reeb_graph(const Reeb_graph& G, const char* fn, const std::vector<double>* values = nullptr) {
+  using FeatureRecon::internal::throw_invalid_argument;
+  for (std::size_t i = 0; i < G.nodes.size(); ++i) {
+    const auto& node = G.nodes[i];
+    if (!std::isfinite(node.value)) throw_invalid_argument(fn, "node ", i, " has value ", node.value);
+    if (i > 0 && !(G.nodes[i - 1].value < node.value ||
+                   (G.nodes[i - 1].value == node.value && G.nodes[i - 1].vertex < node.vertex)))
+      throw_invalid_argument(fn, "nodes ", i - 1, " and ", i, " are not in increasing (value, vertex) order");
+  }
+  for (std::size_t k = 0; k < G.arcs.size(); ++k)
+    if (!(G.arcs[k].lower < G.arcs[k].upper && G.arcs[k].upper < G.nodes.size()))
+      throw_invalid_argument(fn, "arc ", k, " joins nodes ", G.arcs[k].lower, " and ", G.arcs[k].upper,
+                             ": it must go up between nodes in [0, ", G.nodes.size(), ")");
+  if (!values) return;
+  auto check = [&](Vertex_index v, const char* what, std::size_t index) {
+    if (v >= values->size())
+      throw_invalid_argument(fn, what, " ", index, " has vertex ", v, " out of range [0, ", values->size(), ")");
+  };
+  for (std::size_t i = 0; i < G.nodes.size(); ++i) {
+    check(G.nodes[i].vertex, "node", i);
+    for (const Vertex_index v : G.nodes[i].members) check(v, "node", i);
+  }
+  for (std::size_t k = 0; k < G.arcs.size(); ++k)
+    for (const Vertex_index v : G.arcs[k].vertices) check(v, "arc", k);
+}
+
 /// Component of each node: the smallest node index in it (union-find over the arcs).
 inline std::vector<std::size_t> node_components(const Reeb_graph& G) {
   std::vector<std::size_t> parent(G.nodes.size());
@@ -57,12 +86,14 @@ struct Reeb_repair_result {
 /// not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and
 /// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes.
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
-/// \pre max_distance >= 0 and finite (checked; throws).
+/// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its arcs
+/// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them (all checked; throws).
 template <class Distance>
 Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance) {
   const char* fn = "repair_reeb_graph";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
+  internal::check_reeb_graph(R, fn);
   Reeb_repair_result result;
   result.graph = R;
   Reeb_graph& G = result.graph;
@@ -116,17 +147,15 @@ struct Reeb_dead_end_result {
 /// before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends
 /// and n input vertices in the graph. \param values f of every input vertex (for the new nodes).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
-/// \pre max_distance >= 0 and finite (checked; throws).
+/// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes `values`
+/// (all checked; throws).
 template <class Distance>
 Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values, double max_distance,
                                        Distance distance) {
   const char* fn = "connect_dead_ends";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
-  for (const auto& a : R.arcs)
-    for (const Vertex_index v : a.vertices)
-      if (v >= values.size())
-        FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has no value (", values.size(), " values)");
+  internal::check_reeb_graph(R, fn, &values);
   Reeb_dead_end_result result;
   Reeb_graph G = R;
   auto degrees = [&G]() {
@@ -231,10 +260,11 @@ struct Reeb_prune_result {
 /// Removes every connected component of height (maximum minus minimum of f over its nodes) at most
 /// `max_height`: the essential 0-dimensional features of persistence <= max_height, which simplification keeps
 /// (a component is never merged into another). Small isolated pieces of noise go; nodes keep their order.
-/// \pre max_height >= 0 (checked; throws).
+/// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
     FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components", "max_height must be >= 0");
+  internal::check_reeb_graph(R, "prune_reeb_graph_components");
   const std::vector<std::size_t> component = internal::node_components(R);
   auto find = [&component](std::size_t x) { return component[x]; };
   std::vector<double> low(R.nodes.size(), 0), high(R.nodes.size(), 0);
@@ -288,10 +318,11 @@ struct Reeb_trim_result {
 /// pair), so on a loop the base point of the geodesic function and the farthest point stay as spurs of height
 /// about half the Rips radius. Contracting them moves the essential pair by at most `max_height` and leaves every
 /// other feature as it is; the stub's points join the fork node's members.
-/// \pre max_height >= 0 (checked; throws).
+/// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
     FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0");
+  internal::check_reeb_graph(R, "trim_essential_stubs");
   Reeb_trim_result result;
   const std::size_t n = R.nodes.size();
   std::vector<std::vector<std::size_t>> incident(n);
