@@ -169,7 +169,22 @@ TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
   // Next to the largest doubles: a duplicate pair 3e300 from the origin and a far point; no overflow.
   const Coords far{{3e300, 0, 0, 0, 0}, {3e300, 0, 0, 0, 0}, {-3e300, 0, 0, 0, 0}};
   EXPECT_EQ(build_rips_graph(far, 1.0).edges, (std::vector<Edge>{{0, 1}}));
-  EXPECT_EQ(build_knn_graph(far, 1).edges, (std::vector<Edge>{{0, 1}, {0, 2}}));
+  const Proximity_graph knn = build_knn_graph(far, 1);
+  EXPECT_EQ(knn.edges, (std::vector<Edge>{{0, 1}, {0, 2}}));
+  // Lengths whose squares overflow (6e300) or underflow (3e-200) come out right, and the graph stays canonical.
+  EXPECT_EQ(knn.edge_lengths, (std::vector<double>{0.0, 6e300}));
+  EXPECT_TRUE(is_canonical(knn));
+  const Coords tiny{{0, 0}, {3e-200, 0}, {1, 0}};
+  EXPECT_EQ(build_knn_graph(tiny, 1).edge_lengths, (std::vector<double>{3e-200, 1.0}));
+  // A length beyond the largest double is refused, naming the edge.
+  const Coords beyond{{1.7e308, 0}, {-1.7e308, 0}};
+  try {
+    build_knn_graph(beyond, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("build_knn_graph: edge 0 (points 0 and 1) is longer than the largest double"),
+              std::string::npos) << e.what();
+  }
 }
 
 TEST(RipsGraph, BadInputNamesThePoint) {

@@ -189,13 +189,26 @@ inline bool use_kd_tree(const Point_matrix& m, Neighbor_search s, const char* fn
   return s == Neighbor_search::kd_tree || (s == Neighbor_search::automatic && m.dimension <= 3);
 }
 
-inline void add_edge_lengths(const Point_matrix& m, Proximity_graph& g) {
+inline void add_edge_lengths(const Point_matrix& m, Proximity_graph& g, const char* fn) {
   g.edge_lengths.resize(g.edges.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) {
     const double* p = m.row(g.edges[e][0]);
     const double* q = m.row(g.edges[e][1]);
     double s = 0;
     for (std::size_t c = 0; c < m.dimension; ++c) s += (p[c] - q[c]) * (p[c] - q[c]);
+    if (!(s < std::numeric_limits<double>::infinity()) || s < 1e-280) {
+      // The squares overflowed (or lost their digits): scale by the largest difference, as hypot does.
+      double a = 0;
+      for (std::size_t c = 0; c < m.dimension; ++c) a = std::max(a, std::fabs(p[c] - q[c]));
+      s = 0;
+      if (a > 0 && a < std::numeric_limits<double>::infinity())
+        for (std::size_t c = 0; c < m.dimension; ++c) s += ((p[c] - q[c]) / a) * ((p[c] - q[c]) / a);
+      g.edge_lengths[e] = a * std::sqrt(s);
+      if (!(g.edge_lengths[e] < std::numeric_limits<double>::infinity()))
+        FeatureRecon::internal::throw_invalid_argument(fn, "edge ", e, " (points ", g.edges[e][0],
+                                                       " and ", g.edges[e][1], ") is longer than the largest double");
+      continue;
+    }
     g.edge_lengths[e] = std::sqrt(s);
   }
 }
@@ -243,7 +256,7 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
       });
     }
   }
-  internal::add_edge_lengths(m, g);
+  internal::add_edge_lengths(m, g, fn);
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return g;
 }
@@ -394,7 +407,7 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
     }
   }
   internal::sort_unique_edges(g.edges, nullptr);
-  internal::add_edge_lengths(m, g);
+  internal::add_edge_lengths(m, g, fn);
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return g;
 }
