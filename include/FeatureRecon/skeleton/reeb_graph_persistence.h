@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+#include <FeatureRecon/skeleton/internal/Link_cut_tree.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +50,8 @@ namespace internal {
 /// compute_reeb_graph_persistence(), optionally also giving for each loop (in the order of `loops`) the arcs of
 /// its thin cycle.
 inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
-                                                     std::vector<std::vector<std::size_t>>* loop_cycles) {
+                                                     std::vector<std::vector<std::size_t>>* loop_cycles,
+                                                     double cycle_limit = std::numeric_limits<double>::infinity()) {
   const char* fn = "compute_reeb_graph_persistence";
   const std::size_t n = R.nodes.size();
   for (std::size_t i = 0; i < n; ++i)
@@ -143,63 +145,55 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
     }
   }
 
-  // Loops: for the cycle born at fork s through its arc from `branch`, the best bottom is the maximin value
-  // over paths from `branch` to one of the fork's earlier lower ends, inside the nodes below s.
-  std::vector<std::size_t> best(n, 0), seen_stamp(n, 0), target_stamp(n, 0), via_arc(n, 0), target_arc(n, 0);
-  std::size_t stamp = 0, fork_stamp = 0, current_fork = n, marked = 0;
-  for (const Loop_birth& lb : loop_births) {
-    ++stamp;
-    // The targets are the lower ends of the fork's earlier arcs. The loops of one fork come in the order of its
-    // arcs, so each fork marks its arcs once, incrementally: O(k) for a fork of degree k, not O(k^2).
-    if (lb.fork != current_fork) {
-      current_fork = lb.fork;
-      ++fork_stamp;
-      marked = 0;
-    }
-    for (; marked < lb.earlier; ++marked) {
-      const auto& [t, arc] = below[lb.fork][marked];
-      target_stamp[t] = fork_stamp;
-      target_arc[t] = arc;  // with parallel arcs, the latest earlier one (as before)
-    }
-    // Widest path: pop the node with the largest bottleneck (the lowest node index on its path).
-    std::priority_queue<std::pair<std::size_t, std::size_t>> heap;  // (bottleneck, node)
-    heap.push({lb.branch, lb.branch});
-    best[lb.branch] = lb.branch;
-    seen_stamp[lb.branch] = stamp;
-    std::size_t bottom = std::numeric_limits<std::size_t>::max(), reached = 0;
-    while (!heap.empty()) {
-      const auto [b, x] = heap.top();
-      heap.pop();
-      if (b != best[x]) continue;
-      if (target_stamp[x] == fork_stamp) {
-        bottom = b;
-        reached = x;
-        break;
-      }
-      for (const auto* nbrs : {&below[x], &above[x]})
-        for (const auto& [y, arc] : *nbrs) {
-          if (y >= lb.fork) continue;  // only the sublevel set strictly below the fork
-          const std::size_t by = std::min(b, y);
-          if (seen_stamp[y] != stamp || by > best[y]) {
-            seen_stamp[y] = stamp;
-            best[y] = by;
-            via_arc[y] = arc;
-            heap.push({by, y});
-          }
+  // Loops: the cycle born at fork s through its arc from `branch` has its best bottom at the maximin value over
+  // paths from `branch` to s in the graph of the nodes below s and the fork's earlier arcs, the bottleneck of a
+  // path being its lowest node: the lowest node on the path in a maximum spanning forest of that graph, where
+  // an arc weighs its lower end. The forest is kept in a link-cut tree over the sweep (an arc is a node of its
+  // own, keyed by its lower end; graph nodes never are the minimum): an arc that closes a cycle replaces the
+  // lightest arc on it when it is heavier. O((n + m) log n) in all; the thin cycle (the arc and the forest path)
+  // costs its length, and only loops of persistence <= cycle_limit get one.
+  {
+    Link_cut_tree forest(n + R.arcs.size());
+    const auto arc_node = [n](std::size_t k) { return static_cast<std::int32_t>(n + k); };
+    for (std::size_t k = 0; k < R.arcs.size(); ++k)
+      forest.set_key(arc_node(k), static_cast<Link_cut_tree::Key>(R.arcs[k].lower));
+    std::vector<std::int32_t> on_path;
+    std::size_t next_birth = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+      for (const auto& [u, arc] : below[v]) {
+        const std::int32_t e = arc_node(arc), x = static_cast<std::int32_t>(u), y = static_cast<std::int32_t>(v);
+        if (!forest.connected(x, y)) {
+          forest.link(x, e);
+          forest.link(e, y);
+          continue;
         }
-    }
-    FEATURERECON_assertion(bottom != std::numeric_limits<std::size_t>::max());
-    P.loops.push_back(pair_of(lb.fork, bottom));
-    if (loop_cycles != nullptr) {
-      // The thin cycle: the fork's arc from `branch`, the widest path back to `branch`, the earlier arc.
-      std::vector<std::size_t> cycle{lb.arc, target_arc[reached]};
-      for (std::size_t x = reached; x != lb.branch;) {
-        const std::size_t arc = via_arc[x];
-        cycle.push_back(arc);
-        x = R.arcs[arc].lower == x ? R.arcs[arc].upper : R.arcs[arc].lower;
+        // The loops are born in the order of the sweep above: same fork, same arcs.
+        FEATURERECON_assertion(next_birth < loop_births.size() && loop_births[next_birth].fork == v &&
+                               loop_births[next_birth].arc == arc);
+        ++next_birth;
+        const std::int32_t lightest = forest.path_min(x, y);
+        const std::size_t bottom = forest.key(lightest);
+        P.loops.push_back(pair_of(v, bottom));
+        if (loop_cycles != nullptr) {
+          std::vector<std::size_t> cycle;
+          if (P.loops.back().persistence() <= cycle_limit) {
+            cycle.push_back(arc);
+            forest.for_each_on_path(x, y, [&](std::int32_t z) {
+              if (static_cast<std::size_t>(z) >= n) cycle.push_back(static_cast<std::size_t>(z) - n);
+            });
+          }
+          loop_cycles->push_back(std::move(cycle));
+        }
+        if (forest.key(lightest) < forest.key(e)) {  // the new arc is heavier: it takes the lightest one's place
+          const std::size_t k = static_cast<std::size_t>(lightest) - n;
+          forest.cut(static_cast<std::int32_t>(R.arcs[k].lower), lightest);
+          forest.cut(lightest, static_cast<std::int32_t>(R.arcs[k].upper));
+          forest.link(x, e);
+          forest.link(e, y);
+        }
       }
-      loop_cycles->push_back(std::move(cycle));
     }
+    FEATURERECON_assertion(next_birth == loop_births.size());
   }
   return P;
 }
@@ -210,7 +204,9 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
 /// Method: branches by two union-find sweeps (up for minima, down for maxima; elder rule), O(n log n) with
 /// n nodes and arcs. A loop is born at a down-fork whose lower arcs are already connected below it; it is
 /// paired with the highest up-fork s' such that the two branches are connected in the part of the graph
-/// between f(s') and the fork: a maximin (widest) path search in the sublevel graph, O(n log n) per loop.
+/// between f(s') and the fork: the lowest node on the path between them in a maximum spanning forest of the
+/// sublevel graph (an arc weighs its lower node), kept in a link-cut tree over the sweep. O(n log n) for all
+/// loops together.
 /// Nodes with several arcs below or above (degenerate forks) act as chains of binary forks, as in a
 /// simulation of simplicity; node order is the graph's (f, vertex index) order.
 /// \pre R's node values are finite and in increasing (value, vertex) order, as reeb_graph() returns them (checked;

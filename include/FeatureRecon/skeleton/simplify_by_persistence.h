@@ -91,7 +91,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (const Vertex_index v : R.arcs[k].vertices) use(v, "arc", k, 1);
   }
   std::vector<std::vector<std::size_t>> cycles;
-  const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles);
+  const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles, delta);
   const std::size_t n = values.size();
   internal::Simplification_complex Y;
   Y.values = values;

@@ -96,6 +96,26 @@ class Link_cut_tree {
     return r == x ? m_nodes[r].min_node : null;
   }
 
+  /// Calls f(node) for every node of the tree path x..y, in order from x to y. Makes x the root of its tree.
+  /// O(path length) plus amortised O(log n). \pre x, y connected.
+  template <class F>
+  void for_each_on_path(std::int32_t x, std::int32_t y, F f) {
+    evert(x);
+    access(y);  // y's splay tree is the path x..y, in order
+    m_stack.clear();
+    std::int32_t c = y;
+    while (c != null || !m_stack.empty()) {
+      for (; c != null; c = m_nodes[c].child[0]) {
+        push(c);
+        m_stack.push_back(c);
+      }
+      c = m_stack.back();
+      m_stack.pop_back();
+      f(c);
+      c = m_nodes[c].child[1];
+    }
+  }
+
   /// Makes x, a node without any link, a child of y. O(1).
   void attach_isolated(std::int32_t x, std::int32_t y) {
     FEATURERECON_precondition(m_nodes[x].parent == null && m_nodes[x].child[0] == null && m_nodes[x].child[1] == null);
