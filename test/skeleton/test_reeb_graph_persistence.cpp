@@ -97,6 +97,30 @@ TEST(ReebGraphPersistence, MatchesGudhiOnRandomRipsComplexes) {
   std::printf("compared %zu diagram points, %zu loops\n", compared_points, compared_loops);
 }
 
+TEST(ReebGraphPersistence, MatchesGudhiOnStreetGridsWithManyLoops) {
+  // Street grids (the 1-skeleton of an m x m grid, no triangles) with random functions and with ties: every
+  // block is a loop, and the loops' thin cycles cross each other. The loop pass keeps a maximum spanning forest
+  // over the sweep; this checks its swaps on hundreds of loops at once.
+  std::mt19937 rng(17);
+  const std::size_t before = compared_loops;
+  for (const int m : {12, 25}) {
+    for (const bool ties : {false, true}) {
+      std::vector<Edge> edges;
+      for (int i = 0; i < m; ++i)
+        for (int j = 0; j < m; ++j) {
+          const auto k = static_cast<Vertex_index>(i * m + j);
+          if (i + 1 < m) edges.push_back({k, static_cast<Vertex_index>(k + m)});
+          if (j + 1 < m) edges.push_back({k, static_cast<Vertex_index>(k + 1)});
+        }
+      std::vector<double> f(static_cast<std::size_t>(m * m));
+      for (double& x : f) x = ties ? std::uniform_int_distribution<int>(0, 5)(rng) : std::uniform_real_distribution<double>()(rng);
+      const auto c = make(f.size(), edges, {}, f);
+      expect_matches_gudhi(c.complex, c.f, "grid " + std::to_string(m) + (ties ? " with ties" : ""));
+    }
+  }
+  EXPECT_EQ(compared_loops - before, 2u * (11 * 11 + 24 * 24));  // every block of each grid
+}
+
 TEST(ReebGraphPersistence, MatchesGudhiOnTorusCylinderAndNonManifoldMix) {
   const auto t = upright_torus(18, 9);
   expect_matches_gudhi(t.complex, t.f, "torus");
