@@ -203,6 +203,38 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   EXPECT_TRUE(kept.empty());
 }
 
+// Far fewer kept than given: one elimination stage would give every point about 3.6 n / count neighbours (200,000
+// points to 3: 2.4e11 neighbour ids, beyond any memory; to 1000: 1.5e8 ids and minutes). The progressive stages
+// keep the lists within 2^24 ids, and the result is still the exact count, well spread and seeded.
+TEST(WeightedSampleElimination, FarFewerKeptThanGivenIsProgressive) {
+  const std::vector<Point_2> p = white_noise(200000, 11);
+  Elimination_options o;
+  o.domain_measure = 1;
+  o.seed = 3;
+  std::vector<double> fractions;
+  o.progress = [&](double f) {
+    fractions.push_back(f);
+    return true;
+  };
+  const std::vector<std::size_t> three = eliminate(p, 3, o);
+  ASSERT_EQ(three.size(), 3u);
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0);
+  o.progress = {};
+  EXPECT_EQ(eliminate(p, 3, o), three);
+  Sampling_quality_options qo;
+  qo.domain_measure = 1;
+  const Sampling_quality q3 = sampling_quality(subset(p, three), qo);
+  EXPECT_GT(q3.relative_radius, 0.8) << q3.relative_radius;
+  const std::vector<std::size_t> thousand = eliminate(p, 1000, o);
+  ASSERT_EQ(thousand.size(), 1000u);
+  const Sampling_quality q = sampling_quality(subset(p, thousand), qo);
+  // A last stage of ratio 68 (68,000 to 1000): better spread than the 5x oversampling above.
+  EXPECT_GT(q.relative_radius, 0.75) << q.relative_radius;
+  EXPECT_GT(q.average_minimum_distance, 0.85) << q.average_minimum_distance;
+}
+
 TEST(WeightedSampleElimination, ProgressCanInterrupt) {
   Elimination_options o;
   int calls = 0;
