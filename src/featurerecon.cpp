@@ -99,7 +99,8 @@ const std::vector<Command>& commands() {
        "  --smoothing N    Laplacian smoothing rounds of each arc (default 10; 2 with --tracks)\n"
        "  --max-gap G      an arc whose polyline jumps farther than G follows the graph's shortest path there\n"
        "                   (default 0: twice the median edge length; negative: straight segments)\n"
-       "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), an SVG picture\n",
+       "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), a picture\n"
+       "                   (--svg F.svg, or F.png, .jpg, .pgm, .ppm: the same drawing rasterised)\n",
        run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"
@@ -116,7 +117,7 @@ const std::vector<Command>& commands() {
        "                   of some point of TRACKS (lines 'trip_id x y t')\n"
        "  --samples-out    write every sample: 'map,index,x,y,bearing,partner' (partner -1: unmatched)\n"
        "  --svg            picture of the match: truth green (matched) or red (missed), reconstruction blue\n"
-       "                   (matched) or orange (spurious)\n"
+       "                   (matched) or orange (spurious); SVG, or PNG, JPEG, PGM, PPM by the extension\n"
        "  --explain        add why samples went unmatched, for the truth ('missed') and the reconstruction\n"
        "                   ('spurious'): 'taken' (an aligned sample lies within THRESHOLD, but it went to\n"
        "                   another: mostly a parallel line in one map only), 'offset' (nearest aligned one\n"
@@ -330,10 +331,11 @@ int main(int argc, char** argv) {
     try {
       return c.run(args);
     } catch (const Usage_error& e) {
-      std::fprintf(stderr, "featurerecon %s: error: %s\nTry 'featurerecon %s --help'.\n", c.name, e.what(), c.name);
+      std::fprintf(stderr, "featurerecon %s: error: %s\nTry 'featurerecon %s --help'.\n", c.name,
+                   Outputs::name_targets(e.what()).c_str(), c.name);
       return 2;
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "featurerecon %s: error: %s\n", c.name, e.what());
+      std::fprintf(stderr, "featurerecon %s: error: %s\n", c.name, Outputs::name_targets(e.what()).c_str());
       return 1;
     }
   }

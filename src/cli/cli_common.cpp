@@ -5,12 +5,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <climits>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <set>
+#include <map>
 
 #include "../io/featurerecon_io.h"
 
@@ -124,12 +126,11 @@ void Progress::done(const std::string& details) {
 }
 
 Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options) {
-  std::set<std::string> targets;
+  std::map<std::string, std::string> targets;  // resolved path -> option
   for (const std::string& name : options) {
     if (!args.has(name)) continue;
     const std::string path = args.get(name);
     if (path.empty()) throw Usage_error("--" + name + " needs a file name");
-    if (!targets.insert(path).second) throw Usage_error("--" + name + ": " + path + " is also written by another option");
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
       throw Usage_error("--" + name + ": " + path + " is a directory");
@@ -139,8 +140,46 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
       throw Usage_error("--" + name + ": the directory " + dir + " of " + path + " does not exist");
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
       throw Usage_error("--" + name + ": cannot write into the directory " + dir + " (" + std::strerror(errno) + ")");
+    // The same file may be spelt two ways (v.txt and ./v.txt, a symbolic link): compare resolved paths.
+    char resolved[PATH_MAX];
+    std::string key = path;
+    if (::realpath(path.c_str(), resolved) != nullptr)
+      key = resolved;
+    else if (::realpath(dir.c_str(), resolved) != nullptr)
+      key = std::string(resolved) + "/" + path.substr(slash == std::string::npos ? 0 : slash + 1);
+    const auto known = targets.emplace(key, name);
+    if (!known.second)
+      throw Usage_error("--" + name + ": " + path + " is also written by --" + known.first->second);
     m_targets[name] = path;
   }
+}
+
+void Outputs::require_extension(const std::string& name, const std::vector<std::string>& extensions,
+                                const std::string& what) const {
+  const auto it = m_targets.find(name);
+  if (it == m_targets.end()) return;
+  const std::string e = io::file_extension(it->second);
+  if (std::find(extensions.begin(), extensions.end(), e) != extensions.end()) return;
+  std::string list;
+  for (std::size_t i = 0; i < extensions.size(); ++i)
+    list += (i == 0 ? "." : i + 1 == extensions.size() ? " or ." : ", .") + extensions[i];
+  throw Usage_error("--" + name + " writes " + what + ": give a file ending in " + list + ", got '" + it->second + "'");
+}
+
+namespace {
+/// (target, temporary) of every temporary handed out, for name_targets.
+std::vector<std::pair<std::string, std::string>>& issued_temporaries() {
+  static std::vector<std::pair<std::string, std::string>> issued;
+  return issued;
+}
+}  // namespace
+
+std::string Outputs::name_targets(std::string message) {
+  for (const auto& [target, temporary] : issued_temporaries())
+    for (std::size_t at = message.find(temporary); at != std::string::npos;
+         at = message.find(temporary, at + target.size()))
+      message.replace(at, temporary.size(), target);
+  return message;
 }
 
 Outputs::~Outputs() {
@@ -153,6 +192,7 @@ std::string Outputs::path(const std::string& name) {
   for (const auto& f : m_staged)
     if (f.first == it->second) return f.second;
   m_staged.emplace_back(it->second, io::temporary_beside(it->second));
+  issued_temporaries().push_back(m_staged.back());
   return m_staged.back().second;
 }
 

@@ -75,6 +75,13 @@ class Outputs {
   /// The temporary file to write the output of option `name` to (created on the first call).
   std::string path(const std::string& name);
   void commit();
+  /// Refuses, before any work, an output of option `name` (when given) whose extension is none of `extensions`
+  /// (lower case, without the dot); `what` names the kind of file in the message.
+  void require_extension(const std::string& name, const std::vector<std::string>& extensions,
+                         const std::string& what) const;
+  /// `message` with every temporary file handed out by path() (in this run) replaced by its target, so that an
+  /// error raised while writing names the file the user asked for.
+  static std::string name_targets(std::string message);
 
  private:
   std::map<std::string, std::string> m_targets;                 // option -> target file

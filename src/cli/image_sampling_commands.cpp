@@ -257,6 +257,9 @@ int run_sample_image(const std::vector<std::string>& argv) {
   if (!args.has("out") && !args.has("svg") && !args.has("picture") && !args.has("mosaic"))
     throw Usage_error("give at least one of --out FILE, --svg FILE, --picture FILE, --mosaic FILE");
   Outputs outputs(args, {"out", "svg", "picture", "mosaic"});
+  outputs.require_extension("svg", {"svg"}, "an SVG picture");
+  outputs.require_extension("picture", {"png", "jpg", "jpeg", "pgm", "ppm"}, "a raster picture");
+  outputs.require_extension("mosaic", {"png", "jpg", "jpeg", "pgm", "ppm"}, "a raster picture");
 
   io::Image image = io::read_image(input);
   if (args.has("grey")) image = io::to_grey(image);

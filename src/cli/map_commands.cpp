@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "../io/featurerecon_io.h"
 #include "../io/skeleton_io.h"
@@ -47,19 +48,30 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
   tree.build();
   auto covered = [&](double x, double y) {
     const CGAL::Fuzzy_sphere<CGAL::Search_traits_2<K>> ball(K::Point_2(x, y), radius, 0.0);
-    std::vector<K::Point_2> found;
-    tree.search(std::back_inserter(found), ball);
-    return !found.empty();
+    return static_cast<bool>(tree.search_any_point(ball));  // stops at the first point found
   };
+  // The samples are counted first: a tiny interval or a huge edge must be refused, not loop (t += interval stops
+  // moving once t is large) or run for hours; the bound is compare_maps' (2^32 samples).
+  auto length = [&](const Edge& e) {
+    const auto& a = g.positions[e[0]];
+    const auto& b = g.positions[e[1]];
+    return std::hypot(b[0] - a[0], b[1] - a[1]);
+  };
+  double total = 0;
+  for (const Edge& e : g.edges) total += std::floor(length(e) / interval) + 2;
+  if (!(total < 4294967296.0))
+    throw std::invalid_argument("--crop-to-tracks: the ground truth's edges at --interval " + json_number(interval) +
+                                " would give more than 2^32 samples");
   Embedded_graph_2 out;
   out.positions = g.positions;
   for (const Edge& e : g.edges) {
     const auto& a = g.positions[e[0]];
     const auto& b = g.positions[e[1]];
-    const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+    const double len = length(e);
+    const auto steps = static_cast<std::uint64_t>(std::floor(len / interval)) + 1;  // the last one reaches b
     bool keep = true;
-    for (double t = 0; keep && t <= len + interval; t += interval) {
-      const double u = len > 0 ? std::min(1.0, t / len) : 0.0;
+    for (std::uint64_t i = 0; keep && i <= steps; ++i) {
+      const double u = len > 0 ? std::min(1.0, static_cast<double>(i) * interval / len) : 0.0;
       keep = covered(a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]));
     }
     if (keep) out.edges.push_back(e);
@@ -78,6 +90,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   if (args.has("bearing")) options.bearing_limit = args.get_positive_double("bearing");
   if (args.has("crop-radius") && !args.has("crop-to-tracks")) throw Usage_error("--crop-radius goes with --crop-to-tracks");
   Outputs outputs(args, {"samples-out", "svg"});
+  outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   const auto& p = args.positional();
   Embedded_graph_2 gt = to_graph(io::read_map(p[0], p[1]));
   const Embedded_graph_2 rec = to_graph(io::read_map(p[2], p[3]));
@@ -95,7 +108,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
   const Map_comparison_result r = compare_maps(gt, rec, options);
   if (args.has("samples-out")) io::write_map_comparison_csv(outputs.path("samples-out"), r);
-  if (args.has("svg")) io::write_map_comparison_svg(outputs.path("svg"), r);
+  if (args.has("svg")) io::write_map_comparison_picture(outputs.path("svg"), r);
   outputs.commit();
   std::ostringstream os;
   os << "{\"precision\": " << json_number(r.precision) << ", \"recall\": " << json_number(r.recall)

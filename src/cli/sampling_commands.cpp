@@ -46,6 +46,7 @@ int run_sample(const std::vector<std::string>& argv) {
                         "normal-neighbors"});
   const std::string input = args.get("input"), output = args.get("out");
   Outputs outputs(args, {"out"});
+  outputs.require_extension("out", {"ply", "off", "xyz"}, "a point cloud");
   const std::string method = args.get_or("method", "elimination");
   if (method != "elimination" && method != "darts")
     throw Usage_error("--method must be elimination or darts, got '" + method + "'");
@@ -185,7 +186,13 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   const std::string extension = io::file_extension(input);
   const bool cloud_format = extension == "ply" || extension == "off";
   if (!cloud_format) text = io::read_points(input);
-  if (cloud_format || text.dimension == 6) {
+  const std::size_t columns = cloud_format ? 3 : text.dimension;
+  if ((args.has("spectrum") || args.has("max-frequency")) && columns != 2)
+    throw Usage_error("--spectrum and --max-frequency need 2-D samples on the unit torus; " + input + " has " +
+                      std::to_string(columns) + " numbers per line");
+  if (!cloud_format && text.size() == 0) {
+    q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
+  } else if (cloud_format || text.dimension == 6) {
     const io::Point_cloud cloud = io::read_point_cloud(input);
     dimension = 3;
     if (o.intrinsic_dimension == 0 && o.domain_measure == 0 && !o.periodic) {
@@ -238,7 +245,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   std::ostringstream os;
   os << "{\"input\": " << json_string(input) << ", \"samples\": " << q.samples << ", \"dimension\": " << dimension
      << ", \"intrinsic_dimension\": " << (o.intrinsic_dimension == 0 ? int(dimension) : o.intrinsic_dimension)
-     << ", \"domain_measure\": " << json_number(o.domain_measure) << ", \"periodic\": " << (o.periodic ? "true" : "false")
+     << ", \"domain_measure\": " << json_number(q.domain_measure) << ", \"periodic\": " << (o.periodic ? "true" : "false")
      << ", \"hexagonal_distance\": " << json_number(q.hexagonal_distance)
      << ", \"minimum_distance\": " << json_number(q.minimum_distance)
      << ", \"relative_radius\": " << json_number(q.relative_radius)

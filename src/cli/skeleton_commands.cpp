@@ -228,6 +228,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
   double radius = args.has("radius") ? args.get_positive_double("radius") : 0.0;
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
   Outputs outputs(args, {"out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
+  outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
+  outputs.require_extension("ply", {"ply"}, "PLY polylines");
   Skeleton_options options;
   options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : radius;
   if (options.delta < 0) throw Usage_error("--delta must be >= 0");
@@ -310,14 +312,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
     Proximity_graph g;
     g.number_of_vertices = cf.complex.number_of_vertices;
     g.edges = cf.complex.edges;
-    for (const Edge& e : g.edges) {
-      const auto &a = cf.positions[e[0]], &b = cf.positions[e[1]];
-      g.edge_lengths.push_back(std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                                         (a[2] - b[2]) * (a[2] - b[2])));
-    }
     m.rows = cf.positions.size();
     m.dimension = 3;
     for (const auto& p : cf.positions) m.data.insert(m.data.end(), p.begin(), p.end());
+    // Lengths as the Rips graph computes them: scaled where the squares would overflow, a length beyond the
+    // largest double refused naming the edge.
+    skeleton::internal::add_edge_lengths(m, g, ("--graph " + args.get("graph")).c_str());
     input_points = m.rows;
     s = extract_reeb_skeleton(g, m, options);
   } else {
@@ -395,7 +395,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     } else {
       for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
     }
-    io::write_skeleton_svg(outputs.path("svg"), xy, graph);
+    io::write_skeleton_picture(outputs.path("svg"), xy, graph);
   }
   outputs.commit();
   std::size_t components = 0;

@@ -355,6 +355,7 @@ int run_stipple(const std::vector<std::string>& argv) {
   if (args.has("out") && io::file_extension(args.get("out")) != "svg")
     throw Usage_error("--out writes an SVG picture: give a file ending in .svg, got '" + args.get("out") + "'");
   Outputs outputs(args, {"out", "png"});
+  outputs.require_extension("png", {"png", "jpg", "jpeg", "pgm", "ppm"}, "a raster picture");
 
   io::Image image = io::read_image(input);
   if (args.has("grey")) image = io::to_grey(image);

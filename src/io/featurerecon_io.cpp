@@ -25,14 +25,7 @@ std::string where(const std::string& path, std::size_t line) {
   return path + ":" + std::to_string(line) + ": ";
 }
 
-/// Splits a line at whitespace, dropping a '#' comment.
-std::vector<std::string> tokens(const std::string& line) {
-  std::vector<std::string> out;
-  std::istringstream is(line.substr(0, line.find('#')));
-  std::string t;
-  while (is >> t) out.push_back(t);
-  return out;
-}
+std::vector<std::string> tokens(const std::string& line) { return line_tokens(line); }
 
 double parse_double(const std::string& t, const std::string& path, std::size_t line, const char* what) {
   const char* s = t.c_str();
@@ -166,17 +159,18 @@ Complex_file read_complex(const std::string& path) {
 
 namespace {
 std::vector<std::string> split_csv(const std::string& line) {
+  // Fields are trimmed, not stripped: "1 00" stays two tokens and is refused as a number, not read as 100.
   std::vector<std::string> out;
-  std::string cur;
-  for (char c : line) {
-    if (c == ',') {
-      out.push_back(cur);
-      cur.clear();
-    } else if (c != ' ' && c != '\t' && c != '\r') {
-      cur += c;
-    }
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    const std::string field = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::size_t first = field.find_first_not_of(" \t\r");
+    out.push_back(first == std::string::npos ? std::string()
+                                             : field.substr(first, field.find_last_not_of(" \t\r") - first + 1));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
   }
-  out.push_back(cur);
   return out;
 }
 }  // namespace
@@ -375,6 +369,14 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
     s += buf;
   }
   write_text_file(path, s);
+}
+
+std::vector<std::string> line_tokens(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream is(line.substr(0, line.find('#')));
+  std::string t;
+  while (is >> t) out.push_back(t);
+  return out;
 }
 
 std::string file_extension(const std::string& path) {

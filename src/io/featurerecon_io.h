@@ -71,6 +71,9 @@ void write_map(const std::string& vertices_path, const std::string& edges_path,
 /// The extension of a file name, lower case, without the dot ("" when there is none).
 std::string file_extension(const std::string& path);
 
+/// The whitespace-separated tokens of a text line, without its '#' comment (a trailing CR is whitespace).
+std::vector<std::string> line_tokens(const std::string& line);
+
 /// Writes `text` to `path` atomically: to a new temporary file beside it, renamed into place (an existing file of
 /// any other name is never touched). Throws std::runtime_error with the system's reason if it cannot.
 void write_text_file(const std::string& path, const std::string& text);

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <limits>
 #include <csetjmp>
 #include <cstdio>
 #include <fstream>
@@ -71,6 +74,11 @@ void jpeg_fail(j_common_ptr info) {
   (*info->err->format_message)(info, e->message);
   std::longjmp(e->jump, 1);
 }
+/// Reading: a warning (libjpeg's "premature end of data segment" for a truncated file, "corrupt data") is an error
+/// too, or a truncated file would decode to a picture padded with grey.
+void jpeg_warning_fails(j_common_ptr info, int level) {
+  if (level < 0) jpeg_fail(info);
+}
 
 Image read_jpeg(const std::string& path) {
   File file(path, "rb");
@@ -79,6 +87,7 @@ Image read_jpeg(const std::string& path) {
   Jpeg_error error;
   info.err = jpeg_std_error(&error.base);
   error.base.error_exit = jpeg_fail;
+  error.base.emit_message = jpeg_warning_fails;
   Image out;
   if (setjmp(error.jump)) {
     jpeg_destroy_decompress(&info);
@@ -133,17 +142,23 @@ void write_jpeg(const std::string& path, const Image& image) {
   }
   jpeg_finish_compress(&info);
   jpeg_destroy_compress(&info);
+  if (std::fflush(file.f) != 0 || std::ferror(file.f)) fail(path, "write failed (" + std::string(std::strerror(errno)) + ")");
 }
 
-/// PGM/PPM, binary (P5/P6) or ASCII (P2/P3), maximum value up to 255 (values are rescaled to 0..255).
+/// PGM/PPM, binary (P5/P6) or ASCII (P2/P3), maximum value up to 255 (values are rescaled to 0..255). Every
+/// header field and ASCII value must be a plain decimal integer; the size is checked against the file's length
+/// before anything is allocated; a value above the maximum is an error (binary values too, not wrapped).
 Image read_pnm(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot open");
+  in.seekg(0, std::ios::end);
+  const auto file_size = static_cast<unsigned long long>(std::max<std::streamoff>(0, in.tellg()));
+  in.seekg(0, std::ios::beg);
   auto token = [&]() {
     std::string t;
     char c;
     while (in.get(c)) {
-      if (c == '#') {
+      if (c == '#' && t.empty()) {
         std::string comment;
         std::getline(in, comment);
         continue;
@@ -153,35 +168,62 @@ Image read_pnm(const std::string& path) {
         continue;
       }
       t.push_back(c);
+      if (t.size() > 64) break;  // no field of a PGM/PPM file is this long
     }
     return t;
+  };
+  // A non-negative decimal integer (at most `limit`), or -1.
+  auto integer = [](const std::string& t, long long limit) -> long long {
+    if (t.empty() || t.size() > 18) return -1;
+    long long v = 0;
+    for (const char c : t) {
+      if (c < '0' || c > '9') return -1;
+      v = 10 * v + (c - '0');
+    }
+    return v <= limit ? v : -1;
   };
   const std::string magic = token();
   if (magic != "P2" && magic != "P3" && magic != "P5" && magic != "P6")
     fail(path, "not a PGM/PPM file (magic '" + magic + "', expected P2, P3, P5 or P6)");
+  const bool binary = magic == "P5" || magic == "P6";
   Image out;
   out.channels = (magic == "P3" || magic == "P6") ? 3 : 1;
-  long max_value = 0;
-  try {
-    out.width = std::stoi(token());
-    out.height = std::stoi(token());
-    max_value = std::stol(token());
-  } catch (const std::exception&) {
-    fail(path, "bad PGM/PPM header");
+  const char* const names[3] = {"width", "height", "maximum value"};
+  long long header[3];
+  for (int k = 0; k < 3; ++k) {
+    const std::string t = token();
+    header[k] = integer(t, std::numeric_limits<int>::max());
+    if (header[k] <= 0)
+      fail(path, std::string("bad PGM/PPM header: the ") + names[k] + " must be a positive integer, got '" + t + "'");
   }
-  if (out.width <= 0 || out.height <= 0 || max_value <= 0 || max_value > 255)
-    fail(path, "unsupported PGM/PPM header (size " + std::to_string(out.width) + "x" + std::to_string(out.height) +
-                   ", maximum value " + std::to_string(max_value) + "; 8-bit only)");
-  const std::size_t n = std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels);
-  out.data.resize(n);
-  if (magic == "P5" || magic == "P6") {
-    if (!in.read(reinterpret_cast<char*>(out.data.data()), std::streamsize(n))) fail(path, "truncated pixel data");
+  if (header[2] > 255)
+    fail(path, "unsupported PGM/PPM maximum value " + std::to_string(header[2]) + " (8-bit only, at most 255)");
+  out.width = int(header[0]);
+  out.height = int(header[1]);
+  const long long max_value = header[2];
+  const unsigned long long n =
+      static_cast<unsigned long long>(header[0]) * static_cast<unsigned long long>(header[1]) * out.channels;
+  // Binary data needs n bytes, ASCII data at least 2n - 1 (a digit and a separator per value).
+  if (n > file_size || (!binary && 2 * n - 1 > file_size))
+    fail(path, "truncated pixel data: a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " +
+                   magic + " image needs " + std::to_string(binary ? n : 2 * n - 1) + " bytes or more, the file has " +
+                   std::to_string(file_size));
+  out.data.resize(static_cast<std::size_t>(n));
+  if (binary) {
+    if (!in.read(reinterpret_cast<char*>(out.data.data()), std::streamsize(n)))
+      fail(path, "truncated pixel data (" + std::to_string(in.gcount()) + " of " + std::to_string(n) + " bytes)");
+    for (std::size_t i = 0; i < out.data.size(); ++i)
+      if (out.data[i] > max_value)
+        fail(path, "pixel value " + std::to_string(out.data[i]) + " at byte " + std::to_string(i) +
+                       " exceeds the maximum value " + std::to_string(max_value));
   } else {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string t = token();
-      if (t.empty()) fail(path, "truncated pixel data (value " + std::to_string(i) + ")");
-      const long v = std::stol(t);
-      if (v < 0 || v > max_value) fail(path, "pixel value " + t + " out of range");
+      if (t.empty()) fail(path, "truncated pixel data (value " + std::to_string(i) + " of " + std::to_string(n) + ")");
+      const long long v = integer(t, max_value);
+      if (v < 0)
+        fail(path, "pixel value " + std::to_string(i) + " '" + t + "' is not an integer in [0, " +
+                       std::to_string(max_value) + "]");
       out.data[i] = std::uint8_t(v);
     }
   }
@@ -202,6 +244,8 @@ void write_pnm(const std::string& path, const Image& image, bool colour) {
   } else {
     out.write(reinterpret_cast<const char*>(image.data.data()), std::streamsize(image.data.size()));
   }
+  out.flush();
+  if (!out) fail(path, "write failed (" + std::string(std::strerror(errno)) + ")");
 }
 }  // namespace
 

@@ -13,8 +13,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -30,36 +33,209 @@ using Normal_map = CGAL::Second_of_pair_property_map<Pwn>;
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw Input_error(path + ": " + what); }
 
-/// Whether the file stores normals, from its header (PLY, OFF) or its first data line (XYZ).
-bool file_has_normals(const std::string& path, const std::string& ext) {
+/// A number of a point-cloud file: the whole token must parse (no "12abc"); inf and nan are refused later with
+/// the point's index.
+bool parse_number(const std::string& t, double& x) {
+  const char* s = t.c_str();
+  char* end = nullptr;
+  x = std::strtod(s, &end);
+  return end != s && *end == '\0';
+}
+
+std::string at_line(const std::string& path, std::size_t line) { return path + ":" + std::to_string(line) + ": "; }
+
+/// XYZ: one point per line, `x y z` or `x y z nx ny nz`; every line has the count of the first; blank lines and
+/// '#' comments (also indented) are skipped.
+void read_xyz(const std::string& path, Point_cloud& c) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot open");
   std::string line;
-  if (ext == "ply") {
-    bool normals = false;
+  std::size_t number = 0, columns = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::vector<std::string> t = line_tokens(line);
+    if (t.empty()) continue;
+    if (columns == 0) {
+      if (t.size() != 3 && t.size() != 6)
+        throw Input_error(at_line(path, number) + "expected 3 or 6 numbers per line (x y z [nx ny nz]), got " +
+                          std::to_string(t.size()));
+      columns = t.size();
+    } else if (t.size() != columns) {
+      throw Input_error(at_line(path, number) + "point " + std::to_string(c.points.size()) + " has " +
+                        std::to_string(t.size()) + " numbers, the first point has " + std::to_string(columns));
+    }
+    std::array<double, 6> v{};
+    for (std::size_t k = 0; k < columns; ++k)
+      if (!parse_number(t[k], v[k]))
+        throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (point " +
+                          std::to_string(c.points.size()) + ")");
+    c.points.push_back({v[0], v[1], v[2]});
+    if (columns == 6) c.normals.push_back({v[3], v[4], v[5]});
+  }
+  if (in.bad()) fail(path, "read error");
+}
+
+/// OFF (Geomview): a header keyword [C][N]OFF, the counts `nv nf ne` (on the keyword's line or the next), then nv
+/// vertex lines `x y z [nx ny nz] [colour]`; the faces are not needed and not read. The header's count is checked
+/// against the file (a truncated file is an error), never trusted for an allocation.
+void read_off(const std::string& path, Point_cloud& c) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open");
+  std::string line;
+  std::size_t number = 0;
+  std::vector<std::string> t;
+  auto next = [&]() {
+    while (std::getline(in, line)) {
+      ++number;
+      t = line_tokens(line);
+      if (!t.empty()) return true;
+    }
+    if (in.bad()) fail(path, "read error");
+    return false;
+  };
+  if (!next()) fail(path, "empty file (expected an OFF header)");
+  std::string keyword = t[0];
+  std::string prefix = keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0
+                           ? keyword.substr(0, keyword.size() - 3) : std::string("?");
+  bool normals = false, colours = false;
+  for (const char ch : prefix) {
+    if (ch == 'N' && !normals) normals = true;
+    else if (ch == 'C' && !colours) colours = true;
+    else {
+      throw Input_error(at_line(path, number) + "'" + keyword +
+                        "' is not a supported OFF header (OFF, NOFF, COFF or CNOFF; 4OFF, nOFF, STOFF are not)");
+    }
+  }
+  t.erase(t.begin());
+  if (!t.empty() && t[0] == "BINARY") throw Input_error(at_line(path, number) + "binary OFF is not supported");
+  if (t.empty() && !next()) fail(path, "unexpected end of file (expected the counts 'vertices faces edges')");
+  if (t.size() < 2 || t.size() > 3)
+    throw Input_error(at_line(path, number) + "expected the counts 'vertices faces [edges]', got " +
+                      std::to_string(t.size()) + " fields");
+  const char* s = t[0].c_str();
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long n = std::strtoull(s, &end, 10);
+  if (t[0][0] == '-' || end == s || *end != '\0' || errno == ERANGE)
+    throw Input_error(at_line(path, number) + "'" + t[0] + "' is not a vertex count");
+  const std::size_t per_vertex = normals ? 6 : 3;
+  c.points.reserve(static_cast<std::size_t>(std::min<unsigned long long>(n, 1u << 20)));
+  for (unsigned long long i = 0; i < n; ++i) {
+    if (!next())
+      fail(path, "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(n) + " vertex lines");
+    if (t.size() < per_vertex || (!colours && t.size() != per_vertex))
+      throw Input_error(at_line(path, number) + "vertex " + std::to_string(i) + " must be " +
+                        (normals ? "'x y z nx ny nz'" : "'x y z'") + (colours ? " and a colour" : "") + ", got " +
+                        std::to_string(t.size()) + " fields");
+    std::array<double, 6> v{};
+    for (std::size_t k = 0; k < per_vertex; ++k)
+      if (!parse_number(t[k], v[k]))
+        throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (vertex " + std::to_string(i) + ")");
+    c.points.push_back({v[0], v[1], v[2]});
+    if (normals) c.normals.push_back({v[3], v[4], v[5]});
+  }
+}
+
+/// Why CGAL could not read a PLY file, as far as the header tells: the vertex data is shorter than the header
+/// says (binary) or a vertex line is not as many numbers as the vertex has properties (ASCII).
+std::string ply_problem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line, format, element;
+  unsigned long long vertices = 0;
+  std::size_t bytes = 0, properties = 0;
+  bool first_element_is_vertex = false, scalar = true, seen_element = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::vector<std::string> t = line_tokens(line);
+    if (t.empty()) continue;
+    if (t[0] == "end_header") break;
+    if (t[0] == "format" && t.size() > 1) format = t[1];
+    if (t[0] == "element" && t.size() > 2) {
+      element = t[1];
+      if (!seen_element) first_element_is_vertex = element == "vertex";
+      seen_element = true;
+      if (element == "vertex") vertices = std::strtoull(t[2].c_str(), nullptr, 10);
+    }
+    if (t[0] == "property" && element == "vertex" && t.size() > 1) {
+      ++properties;
+      const std::string& type = t[1];
+      if (type == "list") scalar = false;
+      else if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") bytes += 1;
+      else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") bytes += 2;
+      else if (type == "double" || type == "float64") bytes += 8;
+      else bytes += 4;
+    }
+  }
+  if (!in) return "the header has no end_header line";
+  if (!first_element_is_vertex || !scalar) return "";
+  if (format == "binary_little_endian" || format == "binary_big_endian") {
+    const std::streamoff start = in.tellg();
+    in.seekg(0, std::ios::end);
+    const auto have = static_cast<unsigned long long>(in.tellg() - start);
+    if (have < vertices * bytes)
+      return "truncated: " + std::to_string(vertices) + " vertices of " + std::to_string(bytes) + " bytes need " +
+             std::to_string(vertices * bytes) + " bytes of data, the file has " + std::to_string(have);
+    return "";
+  }
+  for (unsigned long long i = 0; i < vertices; ++i) {
+    if (!std::getline(in, line))
+      return "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(vertices) + " vertices";
+    const std::vector<std::string> t = line_tokens(line);
+    double x = 0;
+    if (t.size() != properties)
+      return "vertex " + std::to_string(i) + " has " + std::to_string(t.size()) + " values, the header declares " +
+             std::to_string(properties) + " properties";
+    for (const std::string& v : t)
+      if (!parse_number(v, x)) return "vertex " + std::to_string(i) + ": '" + v + "' is not a number";
+  }
+  return "";
+}
+
+/// PLY through CGAL; what CGAL reports on std::cerr, or what ply_problem finds, becomes the reason of an error.
+void read_ply(const std::string& path, Point_cloud& c) {
+  bool normals = false;
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot open");
+    std::string line;
+    bool header = false;
     while (std::getline(in, line)) {
       if (line.rfind("property", 0) == 0 && (line.find(" nx") != std::string::npos)) normals = true;
-      if (line.rfind("end_header", 0) == 0) return normals;
+      if (line.rfind("end_header", 0) == 0) {
+        header = true;
+        break;
+      }
     }
-    fail(path, "no PLY header (end_header missing)");
+    if (!header) fail(path, "no PLY header (end_header missing)");
   }
-  if (ext == "off") {
-    while (std::getline(in, line)) {
-      if (line.empty() || line[0] == '#') continue;
-      return line.rfind("NOFF", 0) == 0 || line.rfind("CNOFF", 0) == 0;
-    }
-    fail(path, "empty file");
+  std::vector<Pwn> pwn;
+  std::ostringstream messages;
+  std::streambuf* const saved = std::cerr.rdbuf(messages.rdbuf());
+  bool ok = false;
+  try {
+    if (normals)
+      ok = CGAL::IO::read_points(path, std::back_inserter(pwn),
+                                 CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+    else
+      ok = CGAL::IO::read_points(path, std::back_inserter(pwn), CGAL::parameters::point_map(Point_map()));
+  } catch (...) {
+    std::cerr.rdbuf(saved);
+    throw;
   }
-  while (std::getline(in, line)) {  // xyz
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream s(line);
-    double x;
-    int count = 0;
-    while (s >> x) ++count;
-    if (count != 3 && count != 6) fail(path, "expected 3 or 6 numbers per line (x y z [nx ny nz]), got " + std::to_string(count));
-    return count == 6;
+  std::cerr.rdbuf(saved);
+  if (!ok) {
+    std::string reason = messages.str();
+    while (!reason.empty() && std::isspace(static_cast<unsigned char>(reason.back()))) reason.pop_back();
+    for (char& ch : reason)
+      if (ch == '\n') ch = ';';
+    if (reason.empty()) reason = ply_problem(path);
+    fail(path, "not a readable PLY point cloud" + (reason.empty() ? std::string() : " (" + reason + ")"));
   }
-  fail(path, "empty file");
+  c.points.reserve(pwn.size());
+  for (const Pwn& p : pwn) {
+    c.points.push_back({p.first.x(), p.first.y(), p.first.z()});
+    if (normals) c.normals.push_back({p.second.x(), p.second.y(), p.second.z()});
+  }
 }
 }  // namespace
 
@@ -68,24 +244,23 @@ Point_cloud read_point_cloud(const std::string& path) {
   if (ext != "ply" && ext != "off" && ext != "xyz")
     fail(path, "unknown point-cloud format '." + ext + "' (expected .ply, .off or .xyz)");
   require_readable_file(path);
-  const bool normals = file_has_normals(path, ext);
-  std::vector<Pwn> pwn;
-  bool ok = false;
-  if (normals)
-    ok = CGAL::IO::read_points(path, std::back_inserter(pwn),
-                               CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
-  else
-    ok = CGAL::IO::read_points(path, std::back_inserter(pwn), CGAL::parameters::point_map(Point_map()));
-  if (!ok) fail(path, "not a readable " + ext + " point cloud");
-  if (pwn.empty()) fail(path, "no points");
   Point_cloud c;
-  c.points.reserve(pwn.size());
-  for (std::size_t i = 0; i < pwn.size(); ++i) {
-    const K::Point_3& p = pwn[i].first;
-    if (!(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())))
+  if (ext == "ply")
+    read_ply(path, c);
+  else if (ext == "off")
+    read_off(path, c);
+  else
+    read_xyz(path, c);
+  if (c.points.empty()) fail(path, "no points");
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    const auto& p = c.points[i];
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
       fail(path, "point " + std::to_string(i) + " has a non-finite coordinate");
-    c.points.push_back({p.x(), p.y(), p.z()});
-    if (normals) c.normals.push_back({pwn[i].second.x(), pwn[i].second.y(), pwn[i].second.z()});
+    if (c.has_normals()) {
+      const auto& n = c.normals[i];
+      if (!(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2])))
+        fail(path, "the normal of point " + std::to_string(i) + " has a non-finite component");
+    }
   }
   return c;
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "featurerecon_io.h"
+#include "picture.h"
 
 namespace FeatureRecon {
 namespace io {
@@ -15,13 +16,6 @@ using skeleton::Skeleton_graph;
 
 /// Data values (GraphML, GeoJSON, PLY, CSV): every bit kept.
 std::string number(double x) { return format_double(x); }
-
-/// Picture coordinates (pixels inside the frame): two decimals are plenty.
-std::string pixel(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.2f", x);
-  return buf;
-}
 
 const char* type_name(unsigned t) {
   using namespace skeleton;
@@ -35,7 +29,7 @@ const char* type_name(unsigned t) {
 }
 
 /// A picture frame: the bounding box of what is added, scaled to `size` pixels on its longer side, y upwards.
-class Svg_frame {
+class Picture_frame {
  public:
   void extend(double x, double y) {
     x0 = std::min(x0, x);
@@ -43,16 +37,14 @@ class Svg_frame {
     x1 = std::max(x1, x);
     y1 = std::max(y1, y);
   }
-  /// The opening of the picture (white background); call after the last extend().
-  std::string open(double size) {
+  /// The page (white), `size` pixels on the longer side of the box plus a margin; call after the last extend().
+  Picture open(double size) {
     if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
     scale = size / std::max({x1 - x0, y1 - y0, 1e-9});
-    return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + pixel(2 * margin + (x1 - x0) * scale) +
-           "\" height=\"" + pixel(2 * margin + (y1 - y0) * scale) +
-           "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    return Picture(2 * margin + (x1 - x0) * scale, 2 * margin + (y1 - y0) * scale);
   }
-  std::string X(double x) const { return pixel(margin + (x - x0) * scale); }
-  std::string Y(double y) const { return pixel(margin + (y1 - y) * scale); }
+  double X(double x) const { return margin + (x - x0) * scale; }
+  double Y(double y) const { return margin + (y1 - y) * scale; }
 
  private:
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, scale = 1, margin = 10;
@@ -136,57 +128,47 @@ void write_skeleton_ply(const std::string& path, const Skeleton_graph& g) {
   write_text_file(path, os.str());
 }
 
-void write_skeleton_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
-                        const Skeleton_graph& g) {
-  Svg_frame frame;
+void write_skeleton_picture(const std::string& path, const std::vector<std::array<double, 2>>& points,
+                            const Skeleton_graph& g) {
+  Picture_frame frame;
   for (const auto& p : points) frame.extend(p[0], p[1]);
   for (auto v : boost::make_iterator_range(vertices(g))) frame.extend(g[v].position[0], g[v].position[1]);
   for (auto e : boost::make_iterator_range(edges(g)))
     for (const auto& p : g[e].polyline) frame.extend(p[0], p[1]);
-  std::ostringstream os;
-  os << frame.open(1000.0);
-  auto X = [&](double x) { return frame.X(x); };
-  auto Y = [&](double y) { return frame.Y(y); };
-  for (const auto& p : points) os << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"1\" fill=\"#c0c0c0\"/>\n";
+  Picture picture = frame.open(1000.0);
+  for (const auto& p : points) picture.disc(frame.X(p[0]), frame.Y(p[1]), 1, "#c0c0c0");
   const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   std::size_t k = 0;
   for (auto e : boost::make_iterator_range(edges(g))) {
-    os << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << colours[k++ % 8] << "\" points=\"";
-    for (const auto& p : g[e].polyline) os << X(p[0]) << "," << Y(p[1]) << " ";
-    os << "\"/>\n";
+    std::vector<std::array<double, 2>> line;
+    for (const auto& p : g[e].polyline) line.push_back({frame.X(p[0]), frame.Y(p[1])});
+    picture.polyline(line, 2, colours[k++ % 8]);
   }
   for (auto v : boost::make_iterator_range(vertices(g)))
-    os << "<circle cx=\"" << X(g[v].position[0]) << "\" cy=\"" << Y(g[v].position[1])
-       << "\" r=\"3\" fill=\"black\"/>\n";
-  os << "</svg>\n";
-  write_text_file(path, os.str());
+    picture.disc(frame.X(g[v].position[0]), frame.Y(g[v].position[1]), 3, "black");
+  picture.write(path);
 }
 
-void write_map_comparison_svg(const std::string& path, const skeleton::Map_comparison_result& r) {
+void write_map_comparison_picture(const std::string& path, const skeleton::Map_comparison_result& r) {
   const auto& H = r.ground_truth_sample_list;
   const auto& G = r.reconstruction_sample_list;
-  Svg_frame frame;
+  Picture_frame frame;
   for (const auto* list : {&H, &G})
     for (const auto& s : *list) frame.extend(s.position[0], s.position[1]);
-  std::ostringstream os;
-  os << frame.open(1600.0);
-  auto X = [&](double x) { return frame.X(x); };
-  auto Y = [&](double y) { return frame.Y(y); };
+  Picture picture = frame.open(1600.0);
   for (std::size_t h = 0; h < H.size(); ++h) {
     const std::int64_t g = r.ground_truth_partner[h];
+    const double x = frame.X(H[h].position[0]), y = frame.Y(H[h].position[1]);
     if (g >= 0) {
       const auto& q = G[static_cast<std::size_t>(g)].position;
-      os << "<line x1=\"" << X(H[h].position[0]) << "\" y1=\"" << Y(H[h].position[1]) << "\" x2=\"" << X(q[0])
-         << "\" y2=\"" << Y(q[1]) << "\" stroke=\"#b0b0b0\" stroke-width=\"0.5\"/>\n";
+      picture.line(x, y, frame.X(q[0]), frame.Y(q[1]), 0.5, "#b0b0b0");
     }
-    os << "<circle cx=\"" << X(H[h].position[0]) << "\" cy=\"" << Y(H[h].position[1]) << "\" r=\"1.5\" fill=\""
-       << (g >= 0 ? "#2ca02c" : "#d62728") << "\"/>\n";
+    picture.disc(x, y, 1.5, g >= 0 ? "#2ca02c" : "#d62728");
   }
   for (std::size_t g = 0; g < G.size(); ++g)
-    os << "<circle cx=\"" << X(G[g].position[0]) << "\" cy=\"" << Y(G[g].position[1]) << "\" r=\"1\" fill=\""
-       << (r.reconstruction_partner[g] >= 0 ? "#1f77b4" : "#ff7f0e") << "\"/>\n";
-  os << "</svg>\n";
-  write_text_file(path, os.str());
+    picture.disc(frame.X(G[g].position[0]), frame.Y(G[g].position[1]), 1,
+                 r.reconstruction_partner[g] >= 0 ? "#1f77b4" : "#ff7f0e");
+  picture.write(path);
 }
 
 void write_map_comparison_csv(const std::string& path, const skeleton::Map_comparison_result& r) {

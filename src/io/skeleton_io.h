@@ -22,14 +22,15 @@ void write_skeleton_graphml(const std::string& path, const skeleton::Skeleton_gr
 void write_skeleton_geojson(const std::string& path, const skeleton::Skeleton_graph& g);
 /// ASCII PLY: the polyline points as vertices and consecutive pairs as edges (3D).
 void write_skeleton_ply(const std::string& path, const skeleton::Skeleton_graph& g);
-/// SVG picture: the input points (grey) and the skeleton (arcs as coloured polylines, nodes by type), in x y.
-void write_skeleton_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
-                        const skeleton::Skeleton_graph& g);
+/// Picture of the input points (grey) and the skeleton (arcs as coloured polylines, nodes black), in x y: SVG, or
+/// PNG, JPEG, PGM, PPM by the extension (the same drawing rasterised).
+void write_skeleton_picture(const std::string& path, const std::vector<std::array<double, 2>>& points,
+                            const skeleton::Skeleton_graph& g);
 
-/// SVG picture of a map comparison (needs a result computed with keep_samples): ground-truth samples green when
+/// Picture of a map comparison (needs a result computed with keep_samples): ground-truth samples green when
 /// matched and red when missed, reconstruction samples blue when matched and orange when spurious; a thin line
-/// joins each matched pair.
-void write_map_comparison_svg(const std::string& path, const skeleton::Map_comparison_result& r);
+/// joins each matched pair. SVG, or PNG, JPEG, PGM, PPM by the extension.
+void write_map_comparison_picture(const std::string& path, const skeleton::Map_comparison_result& r);
 /// CSV of a map comparison (needs keep_samples): 'map,index,x,y,bearing,partner' with map 'truth' or
 /// 'reconstruction' and partner the index of the matched sample in the other map, or -1.
 void write_map_comparison_csv(const std::string& path, const skeleton::Map_comparison_result& r);

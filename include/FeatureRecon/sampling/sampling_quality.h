@@ -46,6 +46,7 @@ struct Sampling_quality_options {
 /// Spacing statistics of a sample set (Lagae and Dutré 2008; Schlömer's PSA conventions).
 struct Sampling_quality {
   std::size_t samples = 0;            ///< number of samples N
+  double domain_measure = 0;          ///< the area or volume used: the option's, or the default it stands for
   double hexagonal_distance = 0;      ///< d_hex: nearest distance of the densest packing of N points (hexagonal in 2D, FCC in 3D)
   double minimum_distance = 0;        ///< smallest nearest-neighbour (bilateral) distance
   double relative_radius = 0;         ///< rho = minimum_distance / d_hex (1 for the hexagonal lattice)
@@ -80,6 +81,7 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   const int dim = options.intrinsic_dimension == 0 ? D : options.intrinsic_dimension;
   double measure = options.domain_measure;
   if (measure == 0) measure = options.periodic ? 1.0 : internal::bounding_box_measure<D>(S.positions);
+  q.domain_measure = measure;
   if (n < 2 || !(measure > 0) || internal::affine_dimension<D>(S.positions) < dim) {
     q.status = Status::degenerate_input;
     return q;

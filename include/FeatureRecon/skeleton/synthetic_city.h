@@ -157,8 +157,8 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
 /// Builds a synthetic city and its GPS trips (see the file comment).
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or non-finite
 ///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a missing
-///         fraction outside [0, 1], a curvature outside [0, 0.5], or more than 2^24 intersections or 2^31
-///         street vertices.
+///         fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24 intersections or 2^31
+///         street vertices, coordinates beyond the largest double, or trips of more than 2^26 fixes in all.
 inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
   const char* fn = "make_synthetic_city";
   using FeatureRecon::internal::throw_invalid_argument;
@@ -241,6 +241,10 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     for (const auto& p : q) city.streets.positions.push_back({c * p[0] - s * p[1], s * p[0] + c * p[1]});
     streets = internal::gabriel_edges(city.streets.positions);
   }
+  for (std::size_t i = 0; i < city.streets.positions.size(); ++i)
+    if (!(std::isfinite(city.streets.positions[i][0]) && std::isfinite(city.streets.positions[i][1])))
+      throw_invalid_argument(fn, "intersection ", i, " lies beyond the largest double: block_width (", o.block_width,
+                             ") or block_height (", o.block_height, ") too large for ", nx, " x ", ny, " blocks");
   // Remove streets in random order while the network stays connected.
   const std::size_t grid_streets = streets.size();
   std::vector<std::size_t> order(grid_streets);
@@ -293,6 +297,8 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
       street_length[k] += std::hypot(P[line[k][i + 1]][0] - P[line[k][i]][0], P[line[k][i + 1]][1] - P[line[k][i]][1]);
   auto length = [&](std::size_t k) { return street_length[k]; };
   std::vector<char> used(m, 0);
+  const double max_fixes = double(std::size_t(1) << 26);
+  double planned_fixes = 0;
   for (std::size_t t = 0; t < o.trips; ++t) {
     std::vector<double> factor(m);
     for (double& f : factor) f = 1 + 0.5 * random();
@@ -329,6 +335,17 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     }
     std::reverse(route.begin(), route.end());
     const double speed = o.speed * (0.7 + 0.6 * random());
+    // The fixes are counted before they are made: a tiny interval or speed must be refused, not fill the memory
+    // (or loop: along += interval x speed stops moving when the step is below along's precision).
+    double route_length = 0;
+    for (std::size_t r = 0; r + 1 < route.size(); ++r)
+      route_length += std::hypot(P[route[r + 1]][0] - P[route[r]][0], P[route[r + 1]][1] - P[route[r]][1]);
+    const double step = o.sampling_interval * speed;
+    planned_fixes += route_length / step + 1;
+    if (!(planned_fixes <= max_fixes) || !(route_length + step > route_length))
+      throw_invalid_argument(fn, "the trips would record more than 2^26 fixes (trip ", t, " alone: ",
+                             route_length / step, " at ", step, " m apart): raise speed (", o.speed,
+                             ") or sampling_interval (", o.sampling_interval, "), or lower trips (", o.trips, ")");
     const double bias_x = o.trip_bias * random.normal(), bias_y = o.trip_bias * random.normal();
     double along = o.sampling_interval * random() * speed;  // arc length of the next fix
     double start = 0;                                         // arc length at the current segment's start
