@@ -204,6 +204,16 @@ TEST(ConnectDeadEnds, ClosesATJunctionGap) {
     }
   }
   EXPECT_EQ(degree_three, 1u);
+  // Arcs in the order of Reeb_graph::arcs: by lower node, then by the (f, index) order of the first vertex each
+  // reaches. At the split node (vertex 5) the horizontal arc's first vertex 6 (f 6) comes before the link to the
+  // dead end at vertex 11 (f 6.5), although the link's upper node has the smaller index.
+  auto first_reached = [&G](const Reeb_graph::Arc& a) {
+    return a.vertices.empty() ? G.nodes[a.upper].vertex : a.vertices.front();
+  };
+  for (std::size_t k = 1; k < G.arcs.size(); ++k) {
+    const Vertex_index p = first_reached(G.arcs[k - 1]), q = first_reached(G.arcs[k]);
+    EXPECT_LE(std::make_tuple(G.arcs[k - 1].lower, c.f[p], p), std::make_tuple(G.arcs[k].lower, c.f[q], q)) << k;
+  }
   // The dead end of the horizontal path at vertex 0 or 10 has nothing else in reach; the result is the same
   // whatever order the ends come in (deterministic), and simplification accepts it.
   const Reeb_graph S = simplify_by_persistence(G, c.f, 0.5).graph;

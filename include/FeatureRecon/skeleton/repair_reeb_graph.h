@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace FeatureRecon {
@@ -145,7 +146,8 @@ struct Reeb_dead_end_result {
 /// of the street it meets (a T junction with a gap). An isolated arc whose two ends lie within `max_distance` of
 /// each other is not connected (too short to be a street end). Dead ends are taken in node order and see the arcs added
 /// before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends
-/// and n input vertices in the graph. \param values f of every input vertex (for the new nodes).
+/// and n input vertices in the graph (the bookkeeping is O(1) per dead end); the arcs come back in the order of
+/// Reeb_graph::arcs. \param values f of every input vertex (for the new nodes).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
 /// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes `values`
 /// (all checked; throws).
@@ -158,23 +160,24 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
   internal::check_reeb_graph(R, fn, &values);
   Reeb_dead_end_result result;
   Reeb_graph G = R;
-  auto degrees = [&G]() {
-    std::vector<std::size_t> d(G.nodes.size(), 0);
-    for (const auto& a : G.arcs) ++d[a.lower], ++d[a.upper];
-    return d;
-  };
-  std::vector<std::size_t> degree = degrees();
+  // Degrees, the arcs at each node and the node of each vertex, kept up to date as arcs split and links appear.
+  std::vector<std::size_t> degree(G.nodes.size(), 0);
+  std::vector<std::vector<std::size_t>> incident(G.nodes.size());
+  for (std::size_t a = 0; a < G.arcs.size(); ++a) {
+    ++degree[G.arcs[a].lower], ++degree[G.arcs[a].upper];
+    incident[G.arcs[a].lower].push_back(a);
+    incident[G.arcs[a].upper].push_back(a);
+  }
+  std::unordered_map<Vertex_index, std::size_t> node_of;
+  for (std::size_t i = 0; i < G.nodes.size(); ++i) node_of.emplace(G.nodes[i].vertex, i);
   std::vector<Vertex_index> ends;  // by input vertex: node indices change when arcs split
   for (std::size_t i = 0; i < G.nodes.size(); ++i)
     if (degree[i] == 1) ends.push_back(G.nodes[i].vertex);
   for (const Vertex_index end_vertex : ends) {
-    std::size_t u = 0;
-    while (u < G.nodes.size() && G.nodes[u].vertex != end_vertex) ++u;
-    degree = degrees();
-    if (u == G.nodes.size() || degree[u] != 1) continue;
+    const std::size_t u = node_of.at(end_vertex);
+    if (degree[u] != 1) continue;
     // The arc at u and its other end are excluded (joining them would make a tiny loop).
-    std::size_t own = 0;
-    while (G.arcs[own].lower != u && G.arcs[own].upper != u) ++own;
+    const std::size_t own = incident[u].front();
     const std::size_t neighbour = G.arcs[own].lower == u ? G.arcs[own].upper : G.arcs[own].lower;
     // An isolated segment whose ends lie within the distance is a blob, not a street that stops short: left
     // alone, as repair_reeb_graph() leaves it.
@@ -214,14 +217,22 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
       upper_part.vertices.assign(G.arcs[best_arc].vertices.begin() + static_cast<std::ptrdiff_t>(best_position) + 1,
                                  G.arcs[best_arc].vertices.end());
       G.arcs[best_arc].vertices.resize(best_position);
-      G.arcs[best_arc].upper = G.nodes.size();
+      const std::size_t old_upper = G.arcs[best_arc].upper;
+      target = G.nodes.size();
+      G.arcs[best_arc].upper = target;
       G.nodes.push_back(std::move(n));
+      node_of.emplace(best_vertex, target);
+      std::replace(incident[old_upper].begin(), incident[old_upper].end(), best_arc, G.arcs.size());
+      incident.push_back({best_arc, G.arcs.size()});
+      degree.push_back(2);
       G.arcs.push_back(std::move(upper_part));
-      target = G.nodes.size() - 1;
     }
     Reeb_graph::Arc link;
     link.lower = u;
     link.upper = target;
+    incident[u].push_back(G.arcs.size());
+    incident[target].push_back(G.arcs.size());
+    ++degree[u], ++degree[target];
     G.arcs.push_back(std::move(link));
     ++result.connected;
   }
@@ -241,9 +252,11 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
     a.upper = index[a.upper];
     if (a.lower > a.upper) std::swap(a.lower, a.upper);  // only new links (no interior vertices) can be reversed
   }
-  std::sort(G.arcs.begin(), G.arcs.end(), [](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) {
-    const Vertex_index fa = a.vertices.empty() ? 0 : a.vertices.front(), fb = b.vertices.empty() ? 0 : b.vertices.front();
-    return std::tie(a.lower, a.upper, fa) < std::tie(b.lower, b.upper, fb);
+  // Arcs by lower node, then by the (f, index) order of the first vertex each reaches (Reeb_graph::arcs).
+  std::sort(G.arcs.begin(), G.arcs.end(), [&H, &values](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) {
+    const Vertex_index fa = a.vertices.empty() ? H.nodes[a.upper].vertex : a.vertices.front();
+    const Vertex_index fb = b.vertices.empty() ? H.nodes[b.upper].vertex : b.vertices.front();
+    return std::make_tuple(a.lower, values[fa], fa, a.upper) < std::make_tuple(b.lower, values[fb], fb, b.upper);
   });
   H.arcs = std::move(G.arcs);
   internal::refresh_node_types(H);
