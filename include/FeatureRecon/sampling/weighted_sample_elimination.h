@@ -193,7 +193,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     }
     targets.push_back(count);
     const std::vector<std::uint32_t> global_priority = internal::seeded_permutation(n, options.seed);
-    std::vector<std::uint32_t> active(n);  // the items still in, by increasing index
+    std::vector<std::uint32_t> active(n);  // the items still in
     std::iota(active.begin(), active.end(), std::uint32_t(0));
     const double total_eliminations = double(n - count);
     std::size_t eliminated_before = 0;
@@ -216,7 +216,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         const double spatial = two_r * metric.spatial_scale(), spatial2 = spatial * spatial;
         // Weight of the pair (i, j) (local ids), or a negative number when j is not within 2 r of i.
         auto pair_weight = [&](std::size_t i, std::size_t j) {
-          const double d2 = S.squared_distance(active[i], active[j]);
+          double d2 = 0;  // from the stage's own copy of the positions (contiguous, no indirection)
+          for (int k = 0; k < D; ++k) d2 += (positions[i][k] - positions[j][k]) * (positions[i][k] - positions[j][k]);
           if (!(d2 < spatial2)) return -1.0;
           const double xi = metric(d2, S.squared_feature_distance(active[i], active[j]));
           if (!(xi < two_r)) return -1.0;
@@ -227,6 +228,19 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           }
           return std::pow(base, options.alpha);
         };
+        {
+          // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory. The
+          // result does not depend on it: within a cell the order stays the input order, the weight of an item
+          // sums its neighbours in the same order, and the heap pops by (weight, priority) alone.
+          const FeatureRecon::internal::Grid_frame<D> frame(positions, spatial);
+          std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m);
+          for (std::size_t i = 0; i < m; ++i) keyed[i] = {frame.key(frame.cell_of(positions[i])), active[i]};
+          std::sort(keyed.begin(), keyed.end());
+          for (std::size_t i = 0; i < m; ++i) {
+            active[i] = keyed[i].second;
+            positions[i] = S.positions[active[i]];
+          }
+        }
         const FeatureRecon::internal::Uniform_grid<D> grid(positions, spatial);
         std::vector<std::size_t> offset(m + 1, 0);
         for (std::size_t i = 0; i < m; ++i)
