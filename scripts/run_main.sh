@@ -20,7 +20,7 @@ gzip -dc data/gps/chicago/tracks.txt.gz > "$out/chicago_tracks.txt"
 for truth in trk25 crp; do
   "$program" evaluate-map "$maps/chicago_gt_${truth}_vertices.txt" "$maps/chicago_gt_${truth}_edges.txt" \
     "$out/chicago_map_vertices.txt" "$out/chicago_map_edges.txt" --explain --tracks "$out/chicago_tracks.txt" \
-    > "$out/chicago_score_${truth}.json"
+    --svg "$out/chicago_match_${truth}.png" > "$out/chicago_score_${truth}.json"
 done
 echo
 echo "Road map of the Chicago GPS traces (889 trips, 118,360 fixes); parameters derived from the data:"
@@ -35,6 +35,7 @@ cat "$out/chicago_score_crp.json"
 echo
 echo "outputs:"
 for f in chicago_map_vertices.txt chicago_map_edges.txt chicago_map.graphml chicago_map.geojson chicago_map.svg \
-         chicago_skeleton.json chicago_score_trk25.json chicago_score_crp.json; do
+         chicago_skeleton.json chicago_score_trk25.json chicago_score_crp.json chicago_match_trk25.png \
+         chicago_match_crp.png; do
   echo "  $(realpath "$out/$f")"
 done
