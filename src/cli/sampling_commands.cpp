@@ -187,11 +187,15 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   const bool cloud_format = extension == "ply" || extension == "off";
   if (!cloud_format) text = io::read_points(input);
   const std::size_t columns = cloud_format ? 3 : text.dimension;
+  const bool empty = !cloud_format && text.size() == 0;
+  if ((args.has("spectrum") || args.has("max-frequency")) && empty)
+    throw io::Input_error(input + ": no samples to take the spectrum of");
   if ((args.has("spectrum") || args.has("max-frequency")) && columns != 2)
     throw Usage_error("--spectrum and --max-frequency need 2-D samples on the unit torus; " + input + " has " +
                       std::to_string(columns) + " numbers per line");
-  if (!cloud_format && text.size() == 0) {
+  if (empty) {
     q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
+    q.domain_measure = o.domain_measure != 0 ? o.domain_measure : o.periodic ? 1.0 : 0.0;
   } else if (cloud_format || text.dimension == 6) {
     const io::Point_cloud cloud = io::read_point_cloud(input);
     dimension = 3;

@@ -312,12 +312,19 @@ int run_skeleton(const std::vector<std::string>& argv) {
     Proximity_graph g;
     g.number_of_vertices = cf.complex.number_of_vertices;
     g.edges = cf.complex.edges;
+    for (const Edge& e : g.edges) {
+      // hypot scales: no overflow of the squares; a length beyond the largest double is refused naming its points
+      // (the edge's place in the file is lost: the complex sorts its edges).
+      const auto &a = cf.positions[e[0]], &b = cf.positions[e[1]];
+      const double length = std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]);
+      if (!std::isfinite(length))
+        throw io::Input_error(args.get("graph") + ": the edge between points " + std::to_string(e[0]) + " and " +
+                              std::to_string(e[1]) + " is longer than the largest double");
+      g.edge_lengths.push_back(length);
+    }
     m.rows = cf.positions.size();
     m.dimension = 3;
     for (const auto& p : cf.positions) m.data.insert(m.data.end(), p.begin(), p.end());
-    // Lengths as the Rips graph computes them: scaled where the squares would overflow, a length beyond the
-    // largest double refused naming the edge.
-    skeleton::internal::add_edge_lengths(m, g, ("--graph " + args.get("graph")).c_str());
     input_points = m.rows;
     s = extract_reeb_skeleton(g, m, options);
   } else {

@@ -3,6 +3,7 @@
 #include "io/image_io.h"
 
 #include <png.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -151,9 +152,10 @@ void write_jpeg(const std::string& path, const Image& image) {
 Image read_pnm(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot open");
-  in.seekg(0, std::ios::end);
-  const auto file_size = static_cast<unsigned long long>(std::max<std::streamoff>(0, in.tellg()));
-  in.seekg(0, std::ios::beg);
+  // The length of a regular file bounds what its header may ask for; a pipe's is unknown (read, not sized).
+  struct stat st {};
+  const bool sized = ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+  const unsigned long long file_size = sized ? static_cast<unsigned long long>(st.st_size) : 0;
   auto token = [&]() {
     std::string t;
     char c;
@@ -203,8 +205,12 @@ Image read_pnm(const std::string& path) {
   const long long max_value = header[2];
   const unsigned long long n =
       static_cast<unsigned long long>(header[0]) * static_cast<unsigned long long>(header[1]) * out.channels;
-  // Binary data needs n bytes, ASCII data at least 2n - 1 (a digit and a separator per value).
-  if (n > file_size || (!binary && 2 * n - 1 > file_size))
+  // Binary data needs n bytes, ASCII data at least 2n - 1 (a digit and a separator per value). From a pipe, at
+  // most 2^30 values are accepted.
+  if (!sized && n > (1ull << 30))
+    fail(path, "a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " + magic +
+                   " image read from a pipe is beyond 2^30 values");
+  if (sized && (n > file_size || (!binary && 2 * n - 1 > file_size)))
     fail(path, "truncated pixel data: a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " +
                    magic + " image needs " + std::to_string(binary ? n : 2 * n - 1) + " bytes or more, the file has " +
                    std::to_string(file_size));

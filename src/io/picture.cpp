@@ -52,6 +52,11 @@ double segment_distance(double px, double py, const std::array<double, 2>& a, co
   return std::hypot(px - (a[0] + t * dx), py - (a[1] + t * dy));
 }
 
+bool all_finite(const std::vector<std::array<double, 2>>& points) {
+  return std::all_of(points.begin(), points.end(),
+                     [](const std::array<double, 2>& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); });
+}
+
 }  // namespace
 
 bool is_picture_file(const std::string& path) {
@@ -84,6 +89,7 @@ std::string Picture::svg() const {
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << pixel(m_width) << "\" height=\"" << pixel(m_height)
      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const Shape& s : m_shapes) {
+    if (!all_finite(s.points)) continue;  // a point at infinity (coordinates beyond the largest double): not drawn
     switch (s.kind) {
       case Kind::disc:
         os << "<circle cx=\"" << pixel(s.points[0][0]) << "\" cy=\"" << pixel(s.points[0][1]) << "\" r=\""
@@ -130,9 +136,7 @@ Image Picture::raster() const {
   auto coverage = [](double d, double half) { return std::min(1.0, std::max(0.0, half + 0.5 - d)); };
   for (const Shape& s : m_shapes) {
     const std::array<double, 3> colour = parse_colour(s.colour);
-    if (!std::all_of(s.points.begin(), s.points.end(),
-                     [](const std::array<double, 2>& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }))
-      continue;  // nothing to draw for a point at infinity (the SVG text keeps it)
+    if (!all_finite(s.points)) continue;  // not drawn, as in the SVG text
     if (s.kind == Kind::disc) {
       const auto& p = s.points[0];
       for_pixels(p[0], p[1], p[0], p[1], s.size + 1, [&](std::size_t i, double x, double y) {

@@ -5,6 +5,7 @@
 
 // A vector picture (discs, lines, polylines on a white page) written as SVG text or rasterised, anti-aliased, as
 // PNG, JPEG, PGM or PPM: the same drawing either way, chosen by the file's extension.
+// Shapes with a non-finite coordinate are left out of both.
 
 #include <array>
 #include <cstdint>

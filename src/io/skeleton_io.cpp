@@ -3,7 +3,9 @@
 #include "skeleton_io.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "featurerecon_io.h"
@@ -32,22 +34,27 @@ const char* type_name(unsigned t) {
 class Picture_frame {
  public:
   void extend(double x, double y) {
+    if (!(std::isfinite(x) && std::isfinite(y))) return;  // not drawn (Picture leaves such shapes out)
     x0 = std::min(x0, x);
     y0 = std::min(y0, y);
     x1 = std::max(x1, x);
     y1 = std::max(y1, y);
   }
   /// The page (white), `size` pixels on the longer side of the box plus a margin; call after the last extend().
+  /// Differences are taken of halves (x / 2 - x0 / 2): a box from -1e308 to 1e308 is wider than the largest double.
   Picture open(double size) {
-    if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
-    scale = size / std::max({x1 - x0, y1 - y0, 1e-9});
-    return Picture(2 * margin + (x1 - x0) * scale, 2 * margin + (y1 - y0) * scale);
+    if (!(x0 <= x1)) x0 = y0 = 0, x1 = y1 = 1;
+    double half = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
+    if (!(half > 0) || !std::isfinite(size / half)) half = 1;  // one point, or a span below the denormals
+    scale = size / half;
+    return Picture(2 * margin + (x1 / 2 - x0 / 2) * scale, 2 * margin + (y1 / 2 - y0 / 2) * scale);
   }
-  double X(double x) const { return margin + (x - x0) * scale; }
-  double Y(double y) const { return margin + (y1 - y) * scale; }
+  double X(double x) const { return margin + (x / 2 - x0 / 2) * scale; }
+  double Y(double y) const { return margin + (y1 / 2 - y / 2) * scale; }
 
  private:
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, scale = 1, margin = 10;
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
+  double x0 = infinity, y0 = infinity, x1 = -infinity, y1 = -infinity, scale = 1, margin = 10;
 };
 }  // namespace
 

@@ -227,6 +227,10 @@ TEST(WeightedSampleElimination, FarFewerKeptThanGivenIsProgressive) {
   qo.domain_measure = 1;
   const Sampling_quality q3 = sampling_quality(subset(p, three), qo);
   EXPECT_GT(q3.relative_radius, 0.8) << q3.relative_radius;
+  // Keeping none with a given radius is no progressive case (it looped before the stages checked the count).
+  Elimination_options none = o;
+  none.max_radius = 0.001;
+  EXPECT_TRUE(eliminate(p, 0, none).empty());
   const std::vector<std::size_t> thousand = eliminate(p, 1000, o);
   ASSERT_EQ(thousand.size(), 1000u);
   const Sampling_quality q = sampling_quality(subset(p, thousand), qo);

@@ -186,7 +186,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     const double per_neighbor = packing_dimension >= 3 ? 5.92 : packing_dimension == 2 ? 3.63 : 2.0;
     const double fit = std::sqrt(16777216.0 * double(count) / per_neighbor);
     std::vector<std::size_t> targets;  // decreasing, the last one count
-    if (n / 16 > count && double(n) > fit) {
+    if (count > 0 && n / 16 > count && double(n) > fit) {
       std::vector<std::size_t> up{std::max(16 * count, static_cast<std::size_t>(fit))};
       while (up.back() <= n / 8) up.push_back(4 * up.back());
       targets.assign(up.rbegin(), up.rend());

@@ -194,6 +194,11 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   const double a = o.rotation * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
   auto node = [nx](std::size_t i, std::size_t j) { return static_cast<Vertex_index>(j * nx + i); };
   std::vector<Edge> streets;
+  // Every coordinate (rotated, with jitter) is at most |x| + |y| in size: the extents must fit a double, or the
+  // organic layout's dart throwing would never place a point.
+  if (!std::isfinite(double(nx - 1) * o.block_width + double(ny - 1) * o.block_height + 2 * o.jitter))
+    throw_invalid_argument(fn, "the city of ", nx, " x ", ny, " blocks of ", o.block_width, " x ", o.block_height,
+                           " (jitter ", o.jitter, ") lies beyond the largest double: block_width or block_height too large");
   if (o.layout == Synthetic_city_layout::grid) {
     for (std::size_t j = 0; j < ny; ++j)
       for (std::size_t i = 0; i < nx; ++i) {
@@ -209,7 +214,7 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   } else {
     // Dart throwing in the grid's rectangle; after every 1000 n rejected darts the spacing shrinks by 5 %.
     const double w = double(nx - 1) * o.block_width, h = double(ny - 1) * o.block_height;
-    double spacing = 0.6 * std::sqrt(o.block_width * o.block_height);
+    double spacing = 0.6 * std::sqrt(o.block_width) * std::sqrt(o.block_height);
     std::vector<std::array<double, 2>> q;
     // Points bucketed on cells a little wider than the first spacing (the spacing only shrinks): a point closer
     // than the spacing lies in one of the 3 x 3 cells around a dart.
