@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include <jpeglib.h>
+#include <jerror.h>
 
 #include "io/featurerecon_io.h"
 
@@ -75,10 +76,11 @@ void jpeg_fail(j_common_ptr info) {
   (*info->err->format_message)(info, e->message);
   std::longjmp(e->jump, 1);
 }
-/// Reading: a warning (libjpeg's "premature end of data segment" for a truncated file, "corrupt data") is an error
-/// too, or a truncated file would decode to a picture padded with grey.
+/// Reading: the warnings that mean missing data (a truncated file: "premature end of JPEG file", "premature end
+/// of data segment") are errors, or the file would decode to a picture padded with grey; other warnings (such as
+/// extraneous bytes before a marker, which most viewers ignore) are not.
 void jpeg_warning_fails(j_common_ptr info, int level) {
-  if (level < 0) jpeg_fail(info);
+  if (level < 0 && (info->err->msg_code == JWRN_JPEG_EOF || info->err->msg_code == JWRN_HIT_MARKER)) jpeg_fail(info);
 }
 
 Image read_jpeg(const std::string& path) {
