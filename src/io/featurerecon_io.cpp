@@ -25,8 +25,6 @@ std::string where(const std::string& path, std::size_t line) {
   return path + ":" + std::to_string(line) + ": ";
 }
 
-std::vector<std::string> tokens(const std::string& line) { return line_tokens(line); }
-
 double parse_double(const std::string& t, const std::string& path, std::size_t line, const char* what) {
   const char* s = t.c_str();
   char* end = nullptr;
@@ -70,7 +68,7 @@ void for_each_token_row(const std::string& path, Row row) {
   std::size_t number = 0;
   while (std::getline(in, line)) {
     ++number;
-    const std::vector<std::string> t = tokens(line);
+    const std::vector<std::string> t = line_tokens(line);
     if (!t.empty()) row(t, number);
   }
   check_read(in, path);
@@ -99,7 +97,7 @@ Complex_file read_complex(const std::string& path) {
   auto next = [&](std::vector<std::string>& t) {
     while (std::getline(in, line)) {
       ++number;
-      t = tokens(line);
+      t = line_tokens(line);
       if (!t.empty()) return true;
     }
     check_read(in, path);
