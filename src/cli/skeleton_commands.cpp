@@ -212,7 +212,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -252,9 +252,11 @@ int run_skeleton(const std::vector<std::string>& argv) {
   const bool quiet = args.has("quiet");
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
                args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected") ||
-               args.has("merge") || args.has("first-point-positions")))
+               args.has("merge") || args.has("first-point-positions") || args.has("segment-support") ||
+               args.has("segment-turn-tolerance")))
     throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius, "
-                      "--density-heading-tolerance, --first-point-positions and --merge apply to --tracks only");
+                      "--density-heading-tolerance, --first-point-positions, --segment-support, --segment-turn-tolerance "
+                      "and --merge apply to --tracks only");
   if ((args.has("graph") || args.has("distance-matrix")) && args.has("sample-spacing"))
     throw Usage_error("--sample-spacing applies to --points and --tracks only");
   Point_matrix m;
@@ -331,6 +333,14 @@ int run_skeleton(const std::vector<std::string>& argv) {
     Gps_trace_options go = road_map_trace_options();
     go.sample_spacing = spacing;
     go.max_link_gap = args.has("link-gap") ? args.get_double("link-gap") : 0.0;
+    if (args.has("segment-support")) {  // unset: automatic; 0: no check
+      const double v = args.get_double("segment-support");
+      if (!(v >= 0 && std::isfinite(v))) throw Usage_error("--segment-support must be >= 0 metres (0: no check)");
+      go.segment_support = v > 0 ? v : -1.0;
+    }
+    if (args.has("segment-turn-tolerance")) go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
+    if (!(go.segment_turn_tolerance >= 0 && go.segment_turn_tolerance <= 180))
+      throw Usage_error("--segment-turn-tolerance must be in [0, 180] degrees");
     if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
     go.density_radius = args.has("density-radius") ? args.get_positive_double("density-radius") : 0.0;
     if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
@@ -373,7 +383,14 @@ int run_skeleton(const std::vector<std::string>& argv) {
     use_merged = road.used.merge_distance > 0 && road.status != Status::degenerate_input;
     if (use_merged) merged = std::move(road.merged.skeleton);
     gps_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
-               ", \"link_gap\": " + json_number(sample.max_link_gap) + ", \"min_density\": " +
+               ", \"link_gap\": " + json_number(sample.max_link_gap) +
+               ", \"segment_support\": " + json_number(std::max(0.0, sample.segment_support)) +
+               ", \"segment_turn_tolerance\": " + json_number(sample.segment_turn_tolerance) +
+               ", \"checked_segments\": " + std::to_string(sample.checked_segments) +
+               ", \"confirmed_segments\": " + std::to_string(sample.confirmed_segments) +
+               ", \"straight_segments\": " + std::to_string(sample.straight_segments) +
+               ", \"linked_segments\": " + std::to_string(sample.linked_segments) +
+               ", \"all_segments_used\": " + (sample.all_segments_used ? "true" : "false") + ", \"min_density\": " +
                json_number(go.min_relative_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
                ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                ", \"directed\": " + (go.directed ? "true" : "false") +

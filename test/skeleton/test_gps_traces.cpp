@@ -7,8 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -338,4 +342,171 @@ TEST(GpsTraces, HandMadePointMatricesAreChecked) {
   EXPECT_THROW(build_rips_graph(m, 1.0), std::invalid_argument);
   m.rows = 3;
   EXPECT_EQ(build_rips_graph(m, 1.0).edges.size(), 2u);
+}
+
+namespace {
+/// An L of two streets meeting at (400, 0): east along y = 0 from x = 0, north along x = 400. Ten dense trips
+/// (fixes 10 m apart) drive each street, so every point of the streets lies within 5 m of a fix.
+std::vector<Gps_trip> l_shaped_streets() {
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 10; ++k) {
+    trips.push_back(straight(0, 0.2 * k, 1, 0, 41, 10, 1000.0 * k));
+    trips.push_back(straight(400 - 0.2 * k, 0, 0, 1, 41, 10, 1000.0 * k + 500));
+  }
+  return trips;
+}
+/// Distance from a point to the L.
+double distance_to_l(double x, double y) {
+  const double east = std::hypot(std::max(0.0, x - 400), y), north = std::hypot(x - 400, std::max(0.0, -y));
+  return std::min(x <= 400 ? std::fabs(y) : east, y >= 0 ? std::fabs(x - 400) : north);
+}
+bool linked(const Gps_trace_sample& S, std::size_t fix_a, std::size_t fix_b) {
+  const std::uint32_t a = S.sample_of_fix[fix_a], b = S.sample_of_fix[fix_b];
+  const Edge e{std::min(a, b), std::max(a, b)};
+  return std::binary_search(S.trip_links.begin(), S.trip_links.end(), e);
+}
+}  // namespace
+
+TEST(GpsTraces, SegmentsTheTracesDoNotConfirmAreNotDensified) {
+  // A sparse trip turns at the corner between fixes: (100, 0), (300, 0), (400, 100), (400, 300). Its middle
+  // segment cuts the corner: at (350, 50) it is 50 m from both streets and from every fix, and the trip turns
+  // there by 45 degrees either side. The other two follow the streets. Without the check (segment_support
+  // negative) the corner cut is densified into samples inside the block.
+  std::vector<Gps_trip> trips = l_shaped_streets();
+  trips.push_back({{100, 0, 0}, {300, 0, 20}, {400, 100, 40}, {400, 300, 60}});
+  const std::size_t first = 20 * 41;  // index of the sparse trip's first fix
+  ASSERT_EQ(trips.back().size(), 4u);
+  Gps_trace_options o;
+  o.mean_positions = false;  // samples where they were created
+  o.max_link_gap = 300;
+  auto farthest_from_streets = [](const Gps_trace_sample& S) {
+    double d = 0;
+    for (std::size_t i = 0; i < S.points.rows; ++i) d = std::max(d, distance_to_l(S.points.row(i)[0], S.points.row(i)[1]));
+    return d;
+  };
+  auto farthest_link_middle = [](const Gps_trace_sample& S) {  // links along the streets have theirs on them
+    double d = 0;
+    for (const Edge& e : S.trip_links)
+      d = std::max(d, distance_to_l((S.points.row(e[0])[0] + S.points.row(e[1])[0]) / 2,
+                                    (S.points.row(e[0])[1] + S.points.row(e[1])[1]) / 2));
+    return d;
+  };
+  o.segment_support = -1;
+  const Gps_trace_sample all = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(all.checked_segments, 0u);
+  EXPECT_TRUE(all.all_segments_used);
+  EXPECT_GT(farthest_from_streets(all), 40.0);
+  EXPECT_GT(farthest_link_middle(all), 40.0);
+
+  o.segment_support = 0;  // automatic: max(20, 2 x 30 / 3) = 20
+  const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
+  EXPECT_DOUBLE_EQ(S.segment_support, 20.0);
+  EXPECT_EQ(S.checked_segments, 3u);  // the dense trips' 10 m segments are confirmed by their own ends
+  EXPECT_EQ(S.confirmed_segments, 2u);
+  EXPECT_EQ(S.straight_segments, 0u);
+  EXPECT_EQ(S.linked_segments, 0u);  // 141 m > 4 x 20: the trip breaks there
+  EXPECT_FALSE(S.all_segments_used);
+  EXPECT_LT(farthest_from_streets(S), 5.0);
+  EXPECT_LT(farthest_link_middle(S), 5.0);  // the trip breaks at the corner cut
+  EXPECT_FALSE(linked(S, first + 1, first + 2));
+  EXPECT_LT(S.points.rows, all.points.rows);  // the block's samples are gone, the streets' are the same
+  // The same input gives the same samples.
+  const Gps_trace_sample again = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(again.points.data, S.points.data);
+  EXPECT_EQ(again.trip_links, S.trip_links);
+}
+
+TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
+  // A corner cut of 42.4 m, from (370, 0) to (400, 30): with support 12 it is checked (> 24 m), its middle
+  // (385, 15) lies 15 m from the streets, and it is at most 4 x 12 long: its ends are linked, no point inserted.
+  std::vector<Gps_trip> trips = l_shaped_streets();
+  trips.push_back({{300, 0, 0}, {370, 0, 7}, {400, 30, 11}, {400, 100, 18}});
+  const std::size_t first = 20 * 41;
+  Gps_trace_options o;
+  o.mean_positions = false;
+  o.max_link_gap = 100;
+  o.segment_support = 12;
+  const Gps_trace_sample S = sample_gps_traces(trips, 20.0, o);
+  EXPECT_EQ(S.checked_segments, 3u);
+  EXPECT_EQ(S.confirmed_segments, 2u);
+  EXPECT_EQ(S.straight_segments, 0u);
+  EXPECT_EQ(S.linked_segments, 1u);
+  EXPECT_TRUE(linked(S, first + 1, first + 2));
+  for (std::size_t i = 0; i < S.points.rows; ++i)
+    EXPECT_LT(distance_to_l(S.points.row(i)[0], S.points.row(i)[1]), 8.0) << "sample " << i;
+}
+
+TEST(GpsTraces, TracesTooSparseToConfirmOneAnotherUseEverySegment) {
+  // One sparse trip alone, turning by 45 degrees at every fix: none of its long segments is confirmed (no other
+  // fix lies along them), fewer than min_confirmed_fraction, so the check stands down and the samples are those
+  // without it.
+  const std::vector<Gps_trip> trips{{{0, 0, 0}, {200, 0, 20}, {300, 100, 40}, {300, 300, 60}}};
+  Gps_trace_options o;
+  o.segment_support = 20;
+  const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(S.checked_segments, 3u);
+  EXPECT_EQ(S.confirmed_segments, 0u);
+  EXPECT_TRUE(S.all_segments_used);
+  Gps_trace_options unchecked;
+  unchecked.segment_support = -1;
+  const Gps_trace_sample plain = sample_gps_traces(trips, 30.0, unchecked);
+  EXPECT_EQ(S.points.data, plain.points.data);
+  EXPECT_EQ(S.trip_links, plain.trip_links);
+  // With the fraction at 0 the check always applies: the trip breaks at every segment longer than 4 x 20.
+  o.min_confirmed_fraction = 0;
+  const Gps_trace_sample strict = sample_gps_traces(trips, 30.0, o);
+  EXPECT_FALSE(strict.all_segments_used);
+  EXPECT_TRUE(strict.trip_links.empty());
+  EXPECT_EQ(strict.points.rows, 4u);
+}
+
+TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
+  const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 5, 30)};
+  // Each bad value of each option throws a message naming the option.
+  const std::vector<std::pair<const char*, std::vector<double>>> bad{
+      {"segment_support", {std::nan(""), std::numeric_limits<double>::infinity(), -HUGE_VAL}},
+      {"min_confirmed_fraction", {-0.1, 1.5, std::nan("")}},
+      {"segment_turn_tolerance", {-1.0, 180.5, std::nan("")}}};
+  for (const auto& [name, values] : bad)
+    for (const double value : values) {
+      Gps_trace_options o;
+      const std::string option = name;
+      (option == "segment_support" ? o.segment_support
+                                   : option == "min_confirmed_fraction" ? o.min_confirmed_fraction
+                                                                        : o.segment_turn_tolerance) = value;
+      try {
+        sample_gps_traces(trips, 20.0, o);
+        ADD_FAILURE() << "expected an exception for " << option << " = " << value;
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
+      }
+    }
+}
+
+TEST(GpsTraces, AStreetOneTripDrivesStraightIsKept) {
+  // Beside the L, one trip drives east along y = 200 with fixes 150 m apart: no other fix confirms its segments,
+  // but it does not turn (within 2 degrees), so they are densified: samples every few metres along the street.
+  // With a turn tolerance of 1 degree the same segments count as turns, and the 150 m segments break the trip.
+  std::vector<Gps_trip> trips = l_shaped_streets();
+  trips.push_back({{0, 200, 0}, {150, 205, 15}, {300, 200, 30}, {450, 205, 45}});
+  Gps_trace_options o;
+  o.mean_positions = false;
+  o.max_link_gap = 200;
+  o.min_confirmed_fraction = 0;  // none of the checked segments is confirmed: keep the check on anyway
+  const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(S.checked_segments, 3u);
+  EXPECT_EQ(S.confirmed_segments, 0u);
+  EXPECT_EQ(S.straight_segments, 3u);
+  EXPECT_FALSE(S.all_segments_used);
+  auto samples_on_street = [](const Gps_trace_sample& T) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < T.points.rows; ++i)  // off the north street x = 400
+      n += std::fabs(T.points.row(i)[1] - 202.5) < 5 && std::fabs(T.points.row(i)[0] - 400) > 10 ? 1 : 0;
+    return n;
+  };
+  EXPECT_GE(samples_on_street(S), 25u);  // 450 m at a spacing of 15 m
+  o.segment_turn_tolerance = 1;
+  const Gps_trace_sample turned = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(turned.straight_segments, 0u);
+  EXPECT_EQ(samples_on_street(turned), 4u);  // the fixes only
 }

@@ -316,7 +316,7 @@ struct Road_map_options {
   double repair_distance = 0;  ///< join dead ends at most this far apart; 0: 2.5 R; negative: no repair
   double prune_height = 0;     ///< drop components of smaller height (range of f); 0: 5 R; negative: keep all
   /// Sampling, linking and density filter (sample_gps_traces()); its own automatic rules (spacing R/2, link gap
-  /// max(4M, 2R), density radius 2R) apply and are reported in Road_map::sample.
+  /// max(4M, 2R), segment support max(20 m, 2R/3), density radius 2R) apply and are reported in Road_map::sample.
   Gps_trace_options traces = road_map_trace_options();
   bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
   bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
