@@ -410,10 +410,17 @@ TEST(GpsTraces, SegmentsTheTracesDoNotConfirmAreNotDensified) {
   EXPECT_LT(farthest_link_middle(S), 5.0);  // the trip breaks at the corner cut
   EXPECT_FALSE(linked(S, first + 1, first + 2));
   EXPECT_LT(S.points.rows, all.points.rows);  // the block's samples are gone, the streets' are the same
-  // The same input gives the same samples.
+  // The same input gives the same samples, also with the sparse trip's fixes stored out of time order.
   const Gps_trace_sample again = sample_gps_traces(trips, 30.0, o);
   EXPECT_EQ(again.points.data, S.points.data);
   EXPECT_EQ(again.trip_links, S.trip_links);
+  std::swap(trips.back()[0], trips.back()[2]);
+  std::swap(trips.back()[1], trips.back()[3]);
+  const Gps_trace_sample shuffled = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(shuffled.points.data, S.points.data);
+  EXPECT_EQ(shuffled.trip_links, S.trip_links);
+  EXPECT_EQ(shuffled.checked_segments, 3u);
+  EXPECT_EQ(shuffled.confirmed_segments, 2u);
 }
 
 TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
@@ -432,6 +439,25 @@ TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
   EXPECT_EQ(S.straight_segments, 0u);
   EXPECT_EQ(S.linked_segments, 1u);
   EXPECT_TRUE(linked(S, first + 1, first + 2));
+  // The chain goes on: the trip's first fix reaches its last through its own links (densified, link, densified).
+  std::vector<std::vector<std::uint32_t>> next(S.points.rows);
+  for (const Edge& e : S.trip_links) {
+    next[e[0]].push_back(e[1]);
+    next[e[1]].push_back(e[0]);
+  }
+  std::vector<char> seen(S.points.rows, 0);
+  std::vector<std::uint32_t> stack{S.sample_of_fix[first]};
+  seen[stack.back()] = 1;
+  while (!stack.empty()) {
+    const std::uint32_t v = stack.back();
+    stack.pop_back();
+    for (const std::uint32_t w : next[v])
+      if (!seen[w]) {
+        seen[w] = 1;
+        stack.push_back(w);
+      }
+  }
+  EXPECT_TRUE(seen[S.sample_of_fix[first + 3]]);
   for (std::size_t i = 0; i < S.points.rows; ++i)
     EXPECT_LT(distance_to_l(S.points.row(i)[0], S.points.row(i)[1]), 8.0) << "sample " << i;
 }
@@ -505,6 +531,13 @@ TEST(GpsTraces, AStreetOneTripDrivesStraightIsKept) {
     return n;
   };
   EXPECT_GE(samples_on_street(S), 25u);  // 450 m at a spacing of 15 m
+  // A vehicle waiting at (150, 205) wobbles 2 m: the directions are taken over 20 m, so it still does not turn.
+  std::vector<Gps_trip> wobbling = trips;
+  wobbling.back().insert(wobbling.back().begin() + 2, Gps_fix{151, 207, 20});
+  const Gps_trace_sample W = sample_gps_traces(wobbling, 30.0, o);
+  EXPECT_EQ(W.checked_segments, 3u);  // the 2.2 m step has no point to insert
+  EXPECT_EQ(W.straight_segments, 3u);
+  EXPECT_GE(samples_on_street(W), 25u);
   o.segment_turn_tolerance = 1;
   const Gps_trace_sample turned = sample_gps_traces(trips, 30.0, o);
   EXPECT_EQ(turned.straight_segments, 0u);

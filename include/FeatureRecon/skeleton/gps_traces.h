@@ -73,11 +73,12 @@ struct Gps_trace_options {
   /// longer one breaks the trip like a gap. Segments up to twice this long are confirmed by their own ends.
   /// 0: two thirds of the Rips radius, at least 20 m (GPS scatter across a street plus half the gap between the
   /// fixes of light traffic along it; thinned Chicago traces lose recall below 20 m). Negative: no check, every
-  /// segment up to the link gap is used.
+  /// segment up to the link gap is used (`featurerecon skeleton --segment-support 0`, as for its other stages).
   double segment_support = 0;
-  /// An unconfirmed segment is still used when the trip does not turn there: the nearest moving segments before
-  /// and after it (those that exist; at least one) point within this angle of it (degrees). A street driven by
-  /// one trip is confirmed by no other. Default 30; 0: only exactly straight segments.
+  /// An unconfirmed segment is still used when the trip does not turn there: the directions in which it arrives
+  /// at the segment and leaves it (each from the nearest fix at least segment_support away, so that a vehicle
+  /// wobbling at a stop does not turn, and not across a gap; those that exist, at least one) lie within this
+  /// angle of the segment (degrees). A street driven by one trip is confirmed by no other. Default 30.
   double segment_turn_tolerance = 30;
   /// Traces too sparse to confirm one another: when fewer than this fraction of the segments that need a check
   /// are confirmed, every segment is used (Gps_trace_sample::all_segments_used). Default 0.2; 0: never.
@@ -101,7 +102,8 @@ struct Gps_trace_sample {
   std::size_t dropped = 0;                   ///< samples dropped as sparse (their fixes map to no sample: -1)
   double segment_support = 0;                ///< value used (negative: no check)
   double segment_turn_tolerance = 0;         ///< value used
-  std::size_t checked_segments = 0;          ///< segments within the link gap longer than 2 segment_support
+  std::size_t checked_segments = 0;          ///< segments within the link gap, longer than 2 segment_support, with
+                                             ///< points to insert
   std::size_t confirmed_segments = 0;        ///< ... of which every inserted point lies near a fix
   std::size_t straight_segments = 0;         ///< ... of the others, driven straight through (used)
   std::size_t linked_segments = 0;           ///< ... of the rest, up to 4 segment_support: ends linked only
@@ -274,7 +276,9 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// cut between sparse fixes) is not densified. Time O(F + P) grid look-ups for F fixes and P inserted points.
 /// \param rips_radius the radius the samples will be joined at (for the automatic rules).
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
-///         or non-finite rips_radius, or a negative sample spacing.
+///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
+///         or segment support, a negative heading tolerance, a turn tolerance outside [0, 180], a confirmed
+///         fraction outside [0, 1]).
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
@@ -334,47 +338,58 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   for (std::size_t t = 0; t < trips.size(); ++t) use[t].assign(trips[t].size(), densify);
   if (S.segment_support > 0 && S.max_link_gap > 0) {
     const double support = S.segment_support, support2 = support * support;
-    internal::Planar_grid fix_grid(box[0], box[1], box[2], box[3], support, fixes.rows);
-    for (std::uint32_t i = 0; i < fixes.rows; ++i)
-      fix_grid.push(fix_grid.cell_of(fixes.row(i)[0], fixes.row(i)[1]), i);
+    // The distinct fix positions (a parked vehicle logs one place many times) on a grid of cells at least
+    // `support` wide and at most about 2^20 across the extent (a tiny support must not overflow the indices).
+    std::vector<std::array<double, 2>> places(fixes.rows);
+    for (std::size_t i = 0; i < fixes.rows; ++i) places[i] = {fixes.row(i)[0], fixes.row(i)[1]};
+    std::sort(places.begin(), places.end());
+    places.erase(std::unique(places.begin(), places.end()), places.end());
+    const double extent = std::max(box[2] - box[0], box[3] - box[1]);
+    const double fix_cell =
+        std::max(support, std::isfinite(extent) ? std::ldexp(extent, -20) : std::numeric_limits<double>::max());
+    internal::Planar_grid fix_grid(box[0], box[1], box[2], box[3], fix_cell, places.size());
+    for (std::uint32_t i = 0; i < places.size(); ++i) fix_grid.push(fix_grid.cell_of(places[i][0], places[i][1]), i);
     auto near_a_fix = [&](double x, double y) {
       const auto c = fix_grid.cell_of(x, y);
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-          const std::vector<std::uint32_t>* bucket = fix_grid.find(c[0] + dx, c[1] + dy);
-          if (bucket == nullptr) continue;
-          for (const std::uint32_t j : *bucket) {
-            const double ex = fixes.row(j)[0] - x, ey = fixes.row(j)[1] - y;
-            if (ex * ex + ey * ey <= support2) return true;
-          }
+      for (std::int64_t k = 0; k < 9; ++k) {  // the point's own cell first
+        const std::int64_t dx = (k + 4) % 9 / 3 - 1, dy = (k + 4) % 3 - 1;
+        const std::vector<std::uint32_t>* bucket = fix_grid.find(c[0] + dx, c[1] + dy);
+        if (bucket == nullptr) continue;
+        for (const std::uint32_t j : *bucket) {
+          const double ex = places[j][0] - x, ey = places[j][1] - y;
+          if (ex * ex + ey * ey <= support2) return true;
         }
+      }
       return false;
     };
-    // Does trip t go straight through its segment i (from the i-th to the (i+1)-th fix in time order)?
+    // Does trip t go straight through its segment i (from the i-th to the (i+1)-th fix in time order)? The
+    // directions it arrives in and leaves by are taken over at least `support` (a vehicle wobbling while it
+    // waits does not turn) and never across a gap longer than the link gap; at least one must exist.
     auto drives_straight = [&](std::size_t t, std::size_t i) {
       const auto& o = order[t];
-      auto bearing = [&](std::size_t k) {
-        return std::atan2(trips[t][o[k + 1]].y - trips[t][o[k]].y, trips[t][o[k + 1]].x - trips[t][o[k]].x) *
-               180.0 / 3.14159265358979323846;
+      auto at = [&](std::size_t k) -> const Gps_fix& { return trips[t][o[k]]; };
+      auto far_enough = [&](const Gps_fix& p, const Gps_fix& q) { return std::hypot(q.x - p.x, q.y - p.y) >= support; };
+      auto linked_step = [&](std::size_t k) {  // the segment from the k-th fix to the next is not a gap
+        return std::hypot(at(k + 1).x - at(k).x, at(k + 1).y - at(k).y) <= S.max_link_gap;
       };
-      auto moving = [&](std::size_t k) {
-        return trips[t][o[k + 1]].x != trips[t][o[k]].x || trips[t][o[k + 1]].y != trips[t][o[k]].y;
+      auto bearing = [](const Gps_fix& p, const Gps_fix& q) {
+        return std::atan2(q.y - p.y, q.x - p.x) * 180.0 / 3.14159265358979323846;
       };
-      const double own = bearing(i);
-      auto turn = [own](double b) {
+      const double own = bearing(at(i), at(i + 1));
+      auto turns = [&](double b) {
         const double e = std::fmod(std::fabs(b - own), 360.0);
-        return std::min(e, 360.0 - e);
+        return std::min(e, 360.0 - e) > options.segment_turn_tolerance;
       };
       bool neighbour = false;
-      for (std::size_t k = i; k-- > 0;)
-        if (moving(k)) {
-          if (turn(bearing(k)) > options.segment_turn_tolerance) return false;
+      for (std::size_t k = i; k-- > 0 && linked_step(k);)  // arriving at fix i
+        if (far_enough(at(k), at(i))) {
+          if (turns(bearing(at(k), at(i)))) return false;
           neighbour = true;
           break;
         }
-      for (std::size_t k = i + 1; k + 1 < o.size(); ++k)
-        if (moving(k)) {
-          if (turn(bearing(k)) > options.segment_turn_tolerance) return false;
+      for (std::size_t k = i + 2; k < o.size() && linked_step(k - 1); ++k)  // leaving fix i + 1
+        if (far_enough(at(i + 1), at(k))) {
+          if (turns(bearing(at(i + 1), at(k)))) return false;
           neighbour = true;
           break;
         }
@@ -387,9 +402,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         const Gps_fix& b = trips[t][o[i + 1]];
         const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
         if (!(d > 2 * support && d <= S.max_link_gap)) continue;
-        ++S.checked_segments;
-        // The points inserted below, every insert_step.
+        // The points inserted below, every insert_step (none: nothing to confirm).
         const std::size_t n = static_cast<std::size_t>(std::floor(d / insert_step));
+        if (n < 2) continue;
+        ++S.checked_segments;
         bool confirmed = true;
         for (std::size_t j = 1; j < n && confirmed; ++j) {
           const double u = static_cast<double>(j) / static_cast<double>(n);
@@ -408,7 +424,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       }
     }
   }
-  if (!(S.segment_support > 0) || static_cast<double>(S.confirmed_segments) <
+  if (!(S.segment_support > 0 && S.max_link_gap > 0) || static_cast<double>(S.confirmed_segments) <
                                       options.min_confirmed_fraction * static_cast<double>(S.checked_segments)) {
     S.all_segments_used = true;
     for (auto& u : use) std::fill(u.begin(), u.end(), densify);
