@@ -157,6 +157,31 @@ TEST(WeightedSampleElimination, DegenerateInputs) {
   EXPECT_LE(gap, 3u * 1000u / 50u);
 }
 
+TEST(WeightedSampleElimination, ManyCopiesOfOnePlaceAreRemovedFirst) {
+  // 2000 white-noise points and 150,000 copies of (0.5, 0.5): the copies would give one another neighbour lists
+  // of 150,000 ids each (2.25e10 in all: this test ran out of memory before they were removed up front).
+  std::vector<Point_2> p = white_noise(2000, 8);
+  p.insert(p.begin() + 1000, 150000, Point_2(0.5, 0.5));
+  const std::vector<std::size_t> kept = eliminate(p, 100);
+  ASSERT_EQ(kept.size(), 100u);
+  std::size_t at_copy = 0;
+  for (const std::size_t i : kept) at_copy += p[i] == Point_2(0.5, 0.5) ? 1 : 0;
+  EXPECT_LE(at_copy, 1u);
+  EXPECT_EQ(eliminate(p, 100), kept);  // deterministic
+  Sampling_quality_options q;
+  q.domain_measure = 1;
+  EXPECT_GT(sampling_quality(subset(p, kept), q).relative_radius, 0.6);  // blue noise as without the copies
+  // Copies beyond what the elimination removes stay in it (keeping 2100 of the 152,000 keeps 100 copies: the
+  // elimination removes the heavy copies first, one at a time). Small numbers: 40 points, 30 copies, keep 60.
+  std::vector<Point_2> few = white_noise(40, 9);
+  few.insert(few.end(), 30, Point_2(0.25, 0.75));
+  const std::vector<std::size_t> most = eliminate(few, 60);
+  ASSERT_EQ(most.size(), 60u);
+  std::size_t copies = 0;
+  for (const std::size_t i : most) copies += few[i] == Point_2(0.25, 0.75) ? 1 : 0;
+  EXPECT_EQ(copies, 20u);  // all 40 distinct points stay, 20 copies fill the count
+}
+
 TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   const std::vector<Point_2> p = white_noise(20, 1);
   std::vector<std::size_t> kept;
