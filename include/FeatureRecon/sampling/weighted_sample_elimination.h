@@ -11,10 +11,12 @@
 #include <FeatureRecon/traits.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace FeatureRecon {
@@ -180,12 +182,6 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
 
   std::vector<std::uint8_t> removed(n, 0);
   if (count < n && r_max > 0) {
-    // Progressive elimination. Every item has about k = c n / count neighbours within 2 r_max (c = 3.6 for a
-    // surface or image, 5.9 for a volume, 2 on a line): far fewer kept than given items would need O(n^2 / count)
-    // memory and time. The last stage, Yuksel's elimination itself, therefore starts from at most
-    // max(16 count, sqrt(2^24 count / c)) items (neighbour lists of at most 2^24 ids, 64 MB, beyond 16 count);
-    // more items are first reduced to that many in stages of factor 4, each with the r_max of its own count,
-    // r_max (count / target)^(1 / dimension). Inputs within the bound are eliminated in one stage.
     const std::vector<std::uint32_t> global_priority = internal::seeded_permutation(n, options.seed);
     // Exact copies (the same position at bilateral distance 0) weigh the most and go first; but each copy's
     // neighbour list would hold every other copy of its place (quadratic: 20,000 copies of one point among
@@ -194,17 +190,16 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     // priority stays, the one the heap pops last among equal weights.
     std::size_t eliminated_before = 0;
     internal::with_metric(options, [&](const auto& metric) {
-      std::vector<std::uint32_t> by_position(n);
-      std::iota(by_position.begin(), by_position.end(), std::uint32_t(0));
-      std::stable_sort(by_position.begin(), by_position.end(),
-                       [&](std::uint32_t a, std::uint32_t b) { return S.positions[a] < S.positions[b]; });
+      std::vector<std::pair<std::array<double, D>, std::uint32_t>> by_position(n);  // contiguous: a fast sort
+      for (std::size_t i = 0; i < n; ++i) by_position[i] = {S.positions[i], static_cast<std::uint32_t>(i)};
+      std::sort(by_position.begin(), by_position.end());
       std::vector<std::uint32_t> copies, kept_copy;  // surplus copies; the group representatives of one place
       for (std::size_t a = 0, b = 0; a < n; a = b) {
-        for (b = a + 1; b < n && S.positions[by_position[b]] == S.positions[by_position[a]];) ++b;
+        for (b = a + 1; b < n && by_position[b].first == by_position[a].first;) ++b;
         if (b - a < 2) continue;
         kept_copy.clear();
         for (std::size_t k = a; k < b; ++k) {
-          const std::uint32_t x = by_position[k];
+          const std::uint32_t x = by_position[k].second;
           auto same = std::find_if(kept_copy.begin(), kept_copy.end(), [&](std::uint32_t r) {
             return metric(0.0, S.squared_feature_distance(x, r)) == 0;
           });
@@ -228,6 +223,12 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     for (std::size_t i = 0; i < n; ++i)
       if (!removed[i]) active.push_back(static_cast<std::uint32_t>(i));
     const std::size_t n_active = active.size();
+    // Progressive elimination. Every item has about k = c n / count neighbours within 2 r_max (c = 3.6 for a
+    // surface or image, 5.9 for a volume, 2 on a line): far fewer kept than given items would need O(n^2 / count)
+    // memory and time. The last stage, Yuksel's elimination itself, therefore starts from at most
+    // max(16 count, sqrt(2^24 count / c)) items (neighbour lists of at most 2^24 ids, 64 MB, beyond 16 count);
+    // more items are first reduced to that many in stages of factor 4, each with the r_max of its own count,
+    // r_max (count / target)^(1 / dimension). Inputs within the bound are eliminated in one stage.
     const double per_neighbor = packing_dimension >= 3 ? 5.92 : packing_dimension == 2 ? 3.63 : 2.0;
     const double fit = std::sqrt(16777216.0 * double(count) / per_neighbor);
     std::vector<std::size_t> targets;  // decreasing, the last one count
