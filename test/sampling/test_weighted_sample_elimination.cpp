@@ -171,8 +171,8 @@ TEST(WeightedSampleElimination, ManyCopiesOfOnePlaceAreRemovedFirst) {
   Sampling_quality_options q;
   q.domain_measure = 1;
   EXPECT_GT(sampling_quality(subset(p, kept), q).relative_radius, 0.6);  // blue noise as without the copies
-  // Copies beyond what the elimination removes stay in it (keeping 2100 of the 152,000 keeps 100 copies: the
-  // elimination removes the heavy copies first, one at a time). Small numbers: 40 points, 30 copies, keep 60.
+  // More copies than eliminations: the copies go one at a time, from the largest group. 40 points, 30 copies,
+  // keep 60.
   std::vector<Point_2> few = white_noise(40, 9);
   few.insert(few.end(), 30, Point_2(0.25, 0.75));
   const std::vector<std::size_t> most = eliminate(few, 60);
@@ -180,6 +180,21 @@ TEST(WeightedSampleElimination, ManyCopiesOfOnePlaceAreRemovedFirst) {
   std::size_t copies = 0;
   for (const std::size_t i : most) copies += few[i] == Point_2(0.25, 0.75) ? 1 : 0;
   EXPECT_EQ(copies, 20u);  // all 40 distinct points stay, 20 copies fill the count
+  // Far more copies than eliminations: 60,000 and 40,000 copies of two places among 100 points, keep 50,100.
+  // The elimination removes copies of the larger group until both are even, then alternates: 25,000 of each
+  // stay, and every distinct point (this ran out of memory while copies had neighbour lists).
+  std::vector<Point_2> many = white_noise(100, 11);
+  many.insert(many.end(), 60000, Point_2(0.1, 0.1));
+  many.insert(many.end(), 40000, Point_2(0.9, 0.9));
+  std::size_t first_place = 0, second_place = 0, distinct_kept = 0;
+  for (const std::size_t i : eliminate(many, 50100)) {
+    first_place += many[i] == Point_2(0.1, 0.1) ? 1 : 0;
+    second_place += many[i] == Point_2(0.9, 0.9) ? 1 : 0;
+    distinct_kept += i < 100 ? 1 : 0;
+  }
+  EXPECT_EQ(first_place, 25000u);
+  EXPECT_EQ(second_place, 25000u);
+  EXPECT_EQ(distinct_kept, 100u);
 }
 
 TEST(WeightedSampleElimination, BadInputNamesTheProblem) {

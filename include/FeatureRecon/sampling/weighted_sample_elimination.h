@@ -116,10 +116,10 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   (naming the item), sigma_position <= 0, sigma_feature <= 0, negative max_radius or domain_measure,
 ///   intrinsic_dimension other than 0, 2 or 3, alpha <= 0. The input is never modified.
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the
-///   neighbour lists are built, when the elimination removes at least as many items as there are copies beyond
-///   the first of each place (otherwise weight limiting gives them the largest weight, and copies cost
-///   neighbour lists quadratic in their number); of each group of copies the item of lowest seeded priority
-///   stays. Ties between equal weights are broken by a permutation drawn from `seed`, so the same input and
+///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost neighbour
+///   lists quadratic in their number): of each group of copies the item of lowest seeded priority stays. When
+///   there are more copies than eliminations, copies are removed one at a time from the largest group, as the
+///   elimination would. Ties between equal weights are broken by a permutation drawn from `seed`, so the same input and
 ///   seed give the same output on every platform.
 /// \sa sampling_quality(), bilateral_dart_throwing().
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
@@ -185,37 +185,64 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     const std::vector<std::uint32_t> global_priority = internal::seeded_permutation(n, options.seed);
     // Exact copies (the same position at bilateral distance 0) weigh the most and go first; but each copy's
     // neighbour list would hold every other copy of its place (quadratic: 20,000 copies of one point among
-    // 200,000 took 33 s and 1.6 GB). When the elimination removes at least as many items as there are copies
-    // beyond the first of each place, those are removed up front: of each group of copies the item of lowest
+    // 200,000 took 33 s and 1.6 GB). They are removed up front: of each group of copies the item of lowest
     // priority stays, the one the heap pops last among equal weights.
     std::size_t eliminated_before = 0;
     internal::with_metric(options, [&](const auto& metric) {
       std::vector<std::pair<std::array<double, D>, std::uint32_t>> by_position(n);  // contiguous: a fast sort
       for (std::size_t i = 0; i < n; ++i) by_position[i] = {S.positions[i], static_cast<std::uint32_t>(i)};
       std::sort(by_position.begin(), by_position.end());
-      std::vector<std::uint32_t> copies, kept_copy;  // surplus copies; the group representatives of one place
+      // Groups of copies: per place, one group per feature class (the first member stands for it).
+      std::vector<std::vector<std::uint32_t>> groups;
+      std::size_t surplus = 0;
       for (std::size_t a = 0, b = 0; a < n; a = b) {
         for (b = a + 1; b < n && by_position[b].first == by_position[a].first;) ++b;
         if (b - a < 2) continue;
-        kept_copy.clear();
+        const std::size_t first_group = groups.size();
         for (std::size_t k = a; k < b; ++k) {
           const std::uint32_t x = by_position[k].second;
-          auto same = std::find_if(kept_copy.begin(), kept_copy.end(), [&](std::uint32_t r) {
-            return metric(0.0, S.squared_feature_distance(x, r)) == 0;
-          });
-          if (same == kept_copy.end()) {
-            kept_copy.push_back(x);
-          } else if (global_priority[x] < global_priority[*same]) {
-            copies.push_back(*same);
-            *same = x;
-          } else {
-            copies.push_back(x);
-          }
+          const auto same = std::find_if(groups.begin() + std::ptrdiff_t(first_group), groups.end(),
+                                         [&](const std::vector<std::uint32_t>& g) {
+                                           return metric(0.0, S.squared_feature_distance(x, g.front())) == 0;
+                                         });
+          if (same == groups.end())
+            groups.push_back({x});
+          else
+            same->push_back(x);
         }
       }
-      if (copies.size() <= n - count) {
-        for (const std::uint32_t x : copies) removed[x] = 1;
-        eliminated_before = copies.size();
+      for (auto& g : groups) {  // the member the heap pops first comes first: highest priority
+        std::sort(g.begin(), g.end(),
+                  [&](std::uint32_t x, std::uint32_t y) { return global_priority[x] > global_priority[y]; });
+        surplus += g.size() - 1;
+      }
+      const std::size_t budget = n - count;
+      if (surplus <= budget) {  // every copy but the last of each group
+        for (const auto& g : groups)
+          for (std::size_t k = 0; k + 1 < g.size(); ++k) removed[g[k]] = 1;
+        eliminated_before = surplus;
+      } else {
+        // More copies than eliminations: the elimination would remove only copies, each time one of the
+        // heaviest, i.e. of the largest group (ties: the higher priority of the next copy to go).
+        std::vector<std::size_t> next(groups.size(), 0);  // copies removed from each group so far
+        auto lighter = [&](std::size_t u, std::size_t v) {
+          const std::size_t su = groups[u].size() - next[u], sv = groups[v].size() - next[v];
+          return su != sv ? su < sv : global_priority[groups[u][next[u]]] < global_priority[groups[v][next[v]]];
+        };
+        std::vector<std::size_t> heap;
+        for (std::size_t g = 0; g < groups.size(); ++g)
+          if (groups[g].size() >= 2) heap.push_back(g);
+        std::make_heap(heap.begin(), heap.end(), lighter);
+        for (std::size_t e = 0; e < budget; ++e) {
+          std::pop_heap(heap.begin(), heap.end(), lighter);
+          const std::size_t g = heap.back();
+          removed[groups[g][next[g]++]] = 1;
+          if (groups[g].size() - next[g] >= 2)
+            std::push_heap(heap.begin(), heap.end(), lighter);
+          else
+            heap.pop_back();
+        }
+        eliminated_before = budget;
       }
     });
     std::vector<std::uint32_t> active;  // the items still in
