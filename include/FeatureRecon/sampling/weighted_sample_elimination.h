@@ -118,9 +118,9 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the
 ///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost neighbour
 ///   lists quadratic in their number): of each group of copies the item of lowest seeded priority stays. When
-///   there are more copies than eliminations, copies are removed one at a time from the largest group, as the
-///   elimination would. Ties between equal weights are broken by a permutation drawn from `seed`, so the same input and
-///   seed give the same output on every platform.
+///   there are more copies than eliminations, copies are removed one at a time from the largest group (whose
+///   copies weigh the most; neighbours are not weighed). Ties between equal weights are broken by a permutation
+///   drawn from `seed`, so the same input and seed give the same output on every platform.
 /// \sa sampling_quality(), bilateral_dart_throwing().
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& items, std::size_t count,
@@ -222,8 +222,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           for (std::size_t k = 0; k + 1 < g.size(); ++k) removed[g[k]] = 1;
         eliminated_before = surplus;
       } else {
-        // More copies than eliminations: the elimination would remove only copies, each time one of the
-        // heaviest, i.e. of the largest group (ties: the higher priority of the next copy to go).
+        // More copies than eliminations: only copies go, each time one of the largest group, whose copies weigh
+        // the most (ties: the higher priority of the next copy to go; other neighbours are not weighed).
         std::vector<std::size_t> next(groups.size(), 0);  // copies removed from each group so far
         auto lighter = [&](std::size_t u, std::size_t v) {
           const std::size_t su = groups[u].size() - next[u], sv = groups[v].size() - next[v];
