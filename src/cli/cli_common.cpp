@@ -228,5 +228,25 @@ std::string json_number(double x) {
   return buf;
 }
 
+skeleton::Transverse_mercator lonlat_projection(
+    const std::vector<std::pair<std::string, const std::vector<std::array<double, 2>>*>>& sources) {
+  std::vector<std::array<double, 2>> all;
+  for (const auto& [file, points] : sources)
+    for (std::size_t i = 0; i < points->size(); ++i) {
+      const double lon = (*points)[i][0], lat = (*points)[i][1];
+      if (!(lon >= -180 && lon <= 180 && lat >= -90 && lat <= 90))
+        throw io::Input_error(file + ": --lonlat: point " + std::to_string(i) + " (" + io::format_double(lon) + ", " +
+                              io::format_double(lat) + ") is not a longitude in [-180, 180] and a latitude in [-90, 90]");
+      all.push_back((*points)[i]);
+    }
+  try {
+    return skeleton::local_transverse_mercator(all);
+  } catch (const std::invalid_argument& e) {
+    std::string files;
+    for (const auto& source : sources) files += (files.empty() ? "" : ", ") + source.first;
+    throw io::Input_error(files + ": --lonlat: " + std::string(e.what()).substr(std::string("local_transverse_mercator: ").size()));
+  }
+}
+
 }  // namespace cli
 }  // namespace FeatureRecon

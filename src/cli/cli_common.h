@@ -5,6 +5,9 @@
 
 // Argument parsing and progress display shared by the subcommands of `featurerecon`.
 
+#include <FeatureRecon/skeleton/geographic.h>
+
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -87,6 +90,12 @@ class Outputs {
   std::map<std::string, std::string> m_targets;                 // option -> target file
   std::vector<std::pair<std::string, std::string>> m_staged;    // (target, temporary)
 };
+
+/// --lonlat: the points of each source (a file name and its points, {longitude, latitude} in degrees) are
+/// checked (Input_error naming the file, the point and its values) and the transverse Mercator centred on all of
+/// them is returned (Input_error when they span too much for one projection). The caller projects them.
+skeleton::Transverse_mercator lonlat_projection(
+    const std::vector<std::pair<std::string, const std::vector<std::array<double, 2>>*>>& sources);
 
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);

@@ -81,7 +81,7 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
 }  // namespace
 
 int run_evaluate_map(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"explain"}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg", "tracks"}, 4);
+  const Arguments args(argv, {"explain", "lonlat"}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg", "tracks"}, 4);
   if (args.positional().size() != 4)
     throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
   Map_comparison_options options;
@@ -93,21 +93,55 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   const auto& p = args.positional();
   Embedded_graph_2 gt = to_graph(io::read_map(p[0], p[1]));
-  const Embedded_graph_2 rec = to_graph(io::read_map(p[2], p[3]));
+  Embedded_graph_2 rec = to_graph(io::read_map(p[2], p[3]));
   std::size_t gt_edges_before = gt.edges.size();
-  if (args.has("crop-to-tracks")) {
-    const double radius = args.has("crop-radius") ? args.get_positive_double("crop-radius") : 25.0;
-    gt = crop_to_tracks(gt, io::read_track_points(args.get("crop-to-tracks")), radius, options.interval);
-  }
+  std::vector<std::array<double, 2>> crop_points, track_points;
+  if (args.has("crop-to-tracks")) crop_points = io::read_track_points(args.get("crop-to-tracks"));
   std::vector<Gps_trip> trips;
   if (args.has("tracks"))
     for (const auto& trip : io::read_track_trips(args.get("tracks"))) {
       trips.emplace_back();
-      for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
+      for (const auto& f : trip) {
+        trips.back().push_back({f[0], f[1], f[2]});
+        track_points.push_back({f[0], f[1]});
+      }
     }
+  // --lonlat: every file in degrees; all projected to metres with one projection centred on them.
+  const bool lonlat = args.has("lonlat");
+  Transverse_mercator projection;
+  if (lonlat) {
+    projection = lonlat_projection({{p[0], &gt.positions}, {p[2], &rec.positions},
+                                    {args.get_or("crop-to-tracks", ""), &crop_points},
+                                    {args.get_or("tracks", ""), &track_points}});
+    for (auto* points : {&gt.positions, &rec.positions, &crop_points})
+      for (auto& q : *points) q = projection.forward(q[0], q[1]);
+    for (Gps_trip& trip : trips)
+      for (Gps_fix& f : trip) {
+        const auto xy = projection.forward(f.x, f.y);
+        f.x = xy[0];
+        f.y = xy[1];
+      }
+  }
+  if (args.has("crop-to-tracks")) {
+    const double radius = args.has("crop-radius") ? args.get_positive_double("crop-radius") : 25.0;
+    gt = crop_to_tracks(gt, crop_points, radius, options.interval);
+  }
   options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
   const Map_comparison_result r = compare_maps(gt, rec, options);
-  if (args.has("samples-out")) io::write_map_comparison_csv(outputs.path("samples-out"), r);
+  if (args.has("samples-out")) {
+    if (lonlat) {  // the samples' positions in degrees, as the maps were
+      Map_comparison_result in_degrees = r;
+      for (auto* list : {&in_degrees.ground_truth_sample_list, &in_degrees.reconstruction_sample_list})
+        for (Map_sample& m : *list) {
+          const auto ll = projection.inverse(m.position[0], m.position[1]);
+          m.position[0] = ll[0];
+          m.position[1] = ll[1];
+        }
+      io::write_map_comparison_csv(outputs.path("samples-out"), in_degrees);
+    } else {
+      io::write_map_comparison_csv(outputs.path("samples-out"), r);
+    }
+  }
   if (args.has("svg")) io::write_map_comparison_picture(outputs.path("svg"), r);
   outputs.commit();
   std::ostringstream os;
@@ -118,6 +152,9 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
      << ", \"ground_truth_edges_before_crop\": " << gt_edges_before << ", \"threshold\": "
      << json_number(options.match_distance) << ", \"interval\": " << json_number(options.interval)
      << ", \"bearing\": " << json_number(options.bearing_limit);
+  if (lonlat)
+    os << ", \"lonlat\": true, \"central_meridian\": " << json_number(projection.central_meridian)
+       << ", \"origin_latitude\": " << json_number(projection.origin_latitude);
   if (args.has("explain")) {
     const Unmatched_samples_breakdown b = explain_unmatched_samples(r, options);
     auto counts = [&os](const char* name, const Unmatched_sample_counts& c) {

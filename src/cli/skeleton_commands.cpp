@@ -211,7 +211,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 }  // namespace
 
 int run_skeleton(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"quiet", "undirected", "first-point-positions"},
+  const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
                        {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
@@ -257,6 +257,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
     throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius, "
                       "--density-heading-tolerance, --first-point-positions, --segment-support, --segment-turn-tolerance "
                       "and --merge apply to --tracks only");
+  if (!gps && args.has("lonlat")) throw Usage_error("--lonlat applies to --tracks only");
+  const bool lonlat = args.has("lonlat");
+  Transverse_mercator projection;  // --lonlat: degrees <-> metres
   if ((args.has("graph") || args.has("distance-matrix")) && args.has("sample-spacing"))
     throw Usage_error("--sample-spacing applies to --points and --tracks only");
   Point_matrix m;
@@ -358,6 +361,18 @@ int run_skeleton(const std::vector<std::string>& argv) {
       trips.emplace_back();
       for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
     }
+    if (lonlat) {  // x, y are longitude and latitude: to metres, centred on the traces
+      std::vector<std::array<double, 2>> degrees;
+      for (const Gps_trip& trip : trips)
+        for (const Gps_fix& f : trip) degrees.push_back({f.x, f.y});
+      projection = lonlat_projection({{args.get("tracks"), &degrees}});
+      for (Gps_trip& trip : trips)
+        for (Gps_fix& f : trip) {
+          const auto xy = projection.forward(f.x, f.y);
+          f.x = xy[0];
+          f.y = xy[1];
+        }
+    }
     Road_map_options ro;
     ro.rips_radius = radius;
     // On the command line 0 turns a stage off; unset means automatic.
@@ -372,6 +387,16 @@ int run_skeleton(const std::vector<std::string>& argv) {
     ro.progress = options.progress;
     Road_map road = extract_road_map(trips, ro);
     const Gps_trace_sample& sample = road.sample;
+    if (!lonlat && sample.median_step > 0 && sample.median_step < 0.01) {
+      // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart.
+      bool degrees = true;
+      for (const Gps_trip& trip : trips)
+        for (const Gps_fix& f : trip) degrees = degrees && std::abs(f.x) <= 180 && std::abs(f.y) <= 90;
+      if (degrees)
+        throw io::Input_error(args.get("tracks") + ": the fixes look like longitude and latitude in degrees (median "
+                              "step " + json_number(sample.median_step) + ", all within +-180 and +-90), but the "
+                              "tracks are read in metres: give --lonlat, or project them to metres first");
+    }
     radius = road.used.rips_radius;
     options.delta = road.used.delta;
     options.repair_distance = road.used.repair_distance;
@@ -400,17 +425,34 @@ int run_skeleton(const std::vector<std::string>& argv) {
                ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
                json_number(use_merged ? road.merged.length_before : 0.0) + ", \"length\": " +
                json_number(use_merged ? road.merged.length_after : 0.0);
+    if (lonlat)
+      gps_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
+                  ", \"origin_latitude\": " + json_number(projection.origin_latitude);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.done();
   if (m.rows > 0) sampled = m.rows;
   // Map output: nodes first, then the interior points of every arc's polyline.
   const Skeleton_graph& graph = use_merged ? merged : s.graph;
-  const Embedded_graph_2 map = skeleton_to_road_map(graph);
+  // --lonlat: the files in degrees, as the tracks were; the picture stays in metres (undistorted).
+  Skeleton_graph in_degrees;
+  if (lonlat) {
+    in_degrees = graph;
+    auto to_degrees = [&projection](std::array<double, 3>& p) {
+      const auto ll = projection.inverse(p[0], p[1]);
+      p[0] = ll[0];
+      p[1] = ll[1];
+    };
+    for (auto v : boost::make_iterator_range(vertices(in_degrees))) to_degrees(in_degrees[v].position);
+    for (auto e : boost::make_iterator_range(edges(in_degrees)))
+      for (auto& p : in_degrees[e].polyline) to_degrees(p);
+  }
+  const Skeleton_graph& written = lonlat ? in_degrees : graph;
+  const Embedded_graph_2 map = skeleton_to_road_map(written);
   io::write_map(outputs.path("out-vertices"), outputs.path("out-edges"), map.positions, map.edges);
-  if (args.has("graphml")) io::write_skeleton_graphml(outputs.path("graphml"), graph);
-  if (args.has("geojson")) io::write_skeleton_geojson(outputs.path("geojson"), graph);
-  if (args.has("ply")) io::write_skeleton_ply(outputs.path("ply"), graph);
+  if (args.has("graphml")) io::write_skeleton_graphml(outputs.path("graphml"), written);
+  if (args.has("geojson")) io::write_skeleton_geojson(outputs.path("geojson"), written);
+  if (args.has("ply")) io::write_skeleton_ply(outputs.path("ply"), written);
   if (args.has("svg")) {
     // The points as the skeleton is drawn: their first two coordinates, above 3-D those of the PCA projection.
     std::vector<std::array<double, 2>> xy;

@@ -18,7 +18,8 @@ namespace io {
 /// GraphML: nodes with x, y, z, value and type; edges with the polyline as "x y z;x y z;..." and the member count.
 void write_skeleton_graphml(const std::string& path, const skeleton::Skeleton_graph& g);
 /// GeoJSON FeatureCollection: one LineString per arc (its polyline, x y) and one Point per node (properties type
-/// and value). Coordinates are written as given (e.g. UTM metres).
+/// and value). Coordinates are written as given (e.g. UTM metres; longitude and latitude, as RFC 7946 asks, with
+/// skeleton --lonlat).
 void write_skeleton_geojson(const std::string& path, const skeleton::Skeleton_graph& g);
 /// ASCII PLY: the polyline points as vertices and consecutive pairs as edges (3D).
 void write_skeleton_ply(const std::string& path, const skeleton::Skeleton_graph& g);

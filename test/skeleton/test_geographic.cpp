@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/skeleton/geographic.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using FeatureRecon::skeleton::local_transverse_mercator;
+using FeatureRecon::skeleton::Transverse_mercator;
+
+std::string message_of(const std::vector<std::array<double, 2>>& points) {
+  try {
+    local_transverse_mercator(points);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// UTM zone 16N (EPSG:32616) is this projection with central meridian -87, scale 0.9996 and false easting 500 km.
+// Reference positions from PROJ 9.1.1 (`cs2cs -f %.6f EPSG:4326 EPSG:32616`), among them a Chicago fix, points
+// 1,100 km off the central meridian, in the southern hemisphere and next to the pole.
+TEST(TransverseMercator, ForwardAgreesWithProjToAMillimetre) {
+  struct Case {
+    double lon, lat, easting, northing;
+  };
+  const Case cases[] = {
+      {-87.6496270, 41.8791761, 446097.654553, 4636565.422789}, {-87.0, 41.0, 500000.000000, 4538757.061913},
+      {-84.0, 60.0, 667294.821124, 6655205.483635},             {-80.0, 10.0, 1268980.132218, 1113599.929721},
+      {-93.0, -45.0, 27108.208731, -5000491.005461},            {-87.0, 89.9, 500000.000000, 9986800.012939},
+      {-77.0, 0.5, 1618438.135590, 56123.425557},
+  };
+  const Transverse_mercator utm16{-87, 0};
+  for (const Case& c : cases) {
+    const auto xy = utm16.forward(c.lon, c.lat);
+    EXPECT_NEAR(500000 + 0.9996 * xy[0], c.easting, 1e-3) << c.lon << " " << c.lat;
+    EXPECT_NEAR(0.9996 * xy[1], c.northing, 1e-3) << c.lon << " " << c.lat;
+  }
+}
+
+TEST(TransverseMercator, InverseUndoesForward) {
+  const Transverse_mercator tm{-87, 30};
+  double worst = 0;
+  std::size_t checked = 0;
+  for (double lat = -89.5; lat <= 89.5; lat += 4.75)
+    for (double dlon = -60; dlon <= 60; dlon += 0.37) {
+      const auto xy = tm.forward(-87 + dlon, lat);
+      if (std::abs(xy[0]) > 1e6) continue;  // within 1,000 km of the central meridian
+      const auto back = tm.inverse(xy[0], xy[1]);
+      worst = std::max({worst, std::abs(back[0] - (-87 + dlon)), std::abs(back[1] - lat)});
+      ++checked;
+    }
+  EXPECT_GT(checked, 1000u);
+  EXPECT_LT(worst, 1e-8);  // degrees: about a millimetre
+  // The poles and the equator on the central meridian.
+  for (const double lat : {-90.0, 0.0, 90.0}) {
+    const auto xy = tm.forward(-87, lat);
+    EXPECT_NEAR(xy[0], 0, 1e-6);
+    EXPECT_NEAR(tm.inverse(xy[0], xy[1])[1], lat, 1e-9);
+  }
+}
+
+TEST(TransverseMercator, OriginLatitudeShiftsNorthingOnly) {
+  const Transverse_mercator at_equator{-87, 0}, at_chicago{-87, 41.87};
+  const auto origin = at_chicago.forward(-87, 41.87);
+  EXPECT_NEAR(origin[0], 0, 1e-9);
+  EXPECT_NEAR(origin[1], 0, 1e-6);
+  const auto a = at_equator.forward(-87.65, 41.88), b = at_chicago.forward(-87.65, 41.88);
+  EXPECT_NEAR(a[0], b[0], 1e-9);
+  EXPECT_NEAR(a[1] - b[1], at_equator.forward(-87, 41.87)[1], 1e-6);
+}
+
+// Scale 1 on the central meridian: a short step north there is the meridian arc M(phi) d(phi).
+TEST(TransverseMercator, LengthsOnTheCentralMeridianAreTrue) {
+  const double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f), degree = std::acos(-1.0) / 180;
+  const Transverse_mercator tm{10, 0};
+  for (const double lat : {-60.0, 0.0, 41.87, 75.0}) {
+    const double s = std::sin(lat * degree);
+    const double M = a * (1 - e2) / std::pow(1 - e2 * s * s, 1.5);
+    const double step = 1e-4;  // degrees: about 11 m
+    const double dy = tm.forward(10, lat + step)[1] - tm.forward(10, lat)[1];
+    EXPECT_NEAR(dy / (M * step * degree), 1.0, 1e-7) << lat;
+  }
+}
+
+TEST(LocalTransverseMercator, CentresOnThePoints) {
+  const std::vector<std::array<double, 2>> chicago = {{-87.70, 41.80}, {-87.60, 41.95}, {-87.62, 41.85}};
+  const Transverse_mercator tm = local_transverse_mercator(chicago);
+  EXPECT_NEAR(tm.central_meridian, -87.64, 1e-3);
+  EXPECT_DOUBLE_EQ(tm.origin_latitude, (41.80 + 41.95) / 2);
+  // No points: the projection at (0, 0).
+  const Transverse_mercator none = local_transverse_mercator({});
+  EXPECT_EQ(none.central_meridian, 0);
+  EXPECT_EQ(none.origin_latitude, 0);
+}
+
+// Points on both sides of the antimeridian: the circular mean puts the central meridian at 180 degrees, the
+// points 11 km either side of it, and the inverse gives their longitudes back in (-180, 180].
+TEST(LocalTransverseMercator, PointsAcrossTheAntimeridianStayTogether) {
+  const std::vector<std::array<double, 2>> fiji = {{179.9, -17.0}, {-179.9, -17.0}};
+  const Transverse_mercator tm = local_transverse_mercator(fiji);
+  EXPECT_NEAR(std::abs(tm.central_meridian), 180, 1e-9);
+  const auto west = tm.forward(179.9, -17.0), east = tm.forward(-179.9, -17.0);
+  EXPECT_NEAR(west[0], -east[0], 1e-6);
+  EXPECT_NEAR(east[0] - west[0], 21300, 100);  // 0.2 degrees of longitude at 17 degrees south
+  EXPECT_NEAR(tm.inverse(west[0], west[1])[0], 179.9, 1e-9);
+  EXPECT_NEAR(tm.inverse(east[0], east[1])[0], -179.9, 1e-9);
+}
+
+TEST(LocalTransverseMercator, BadPointsAreNamed) {
+  EXPECT_EQ(message_of({{-87.6, 41.8}, {-87.6, 95}}),
+            "local_transverse_mercator: point 1 has latitude 95, not in [-90, 90]");
+  EXPECT_EQ(message_of({{200, 41.8}}), "local_transverse_mercator: point 0 has longitude 200, not in [-180, 180]");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(message_of({{-87.6, 41.8}, {-87.6, 41.8}, {nan, 41.8}}),
+            "local_transverse_mercator: point 2 has longitude nan, not in [-180, 180]");
+  // 27 degrees of longitude at 42 degrees north: each end lies about 1,100 km from the middle.
+  const std::string wide = message_of({{-87.6, 41.8}, {-60, 41.8}});
+  EXPECT_NE(wide.find("point 0 (longitude -87.6, latitude 41.8) lies 1"), std::string::npos) << wide;
+  EXPECT_NE(wide.find("span too much for one projection"), std::string::npos) << wide;
+  // Half the globe apart: the projection is undefined beyond 90 degrees from the central meridian.
+  EXPECT_NE(message_of({{0, 0}, {100, 0}, {-100, 0}}).find("lies inf km"), std::string::npos);
+  // Within the bound it is accepted.
+  EXPECT_EQ(message_of({{-87.6, 41.8}, {-84, 41.8}}), "");
+}
+
+}  // namespace
