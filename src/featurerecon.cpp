@@ -4,8 +4,10 @@
 
 #include <FeatureRecon/version.h>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -322,8 +324,19 @@ void print_main_help() {
 }
 }  // namespace
 
+namespace {
+/// Interrupted (Ctrl-C, kill, a closed terminal): the temporaries go, then the signal does what it would have.
+extern "C" void remove_temporaries_and_stop(int signal) {
+  FeatureRecon::io::remove_temporaries_now();
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace FeatureRecon::cli;
+  for (const int s : {SIGINT, SIGTERM, SIGHUP})
+    if (std::signal(s, remove_temporaries_and_stop) == SIG_IGN) std::signal(s, SIG_IGN);  // keep nohup's choice
   if (argc < 2) {
     print_main_help();
     return 2;
@@ -351,6 +364,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "featurerecon %s: error: %s\nTry 'featurerecon %s --help'.\n", c.name,
                    Outputs::name_targets(e.what()).c_str(), c.name);
       return 2;
+    } catch (const std::bad_alloc&) {
+      std::fprintf(stderr, "featurerecon %s: error: out of memory (the input or a parameter asks for more than this "
+                   "machine has: a smaller radius, k, count or size, or a larger spacing or interval, needs less)\n",
+                   c.name);
+      return 1;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "featurerecon %s: error: %s\n", c.name, Outputs::name_targets(e.what()).c_str());
       return 1;

@@ -131,26 +131,44 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
     if (!args.has(name)) continue;
     const std::string path = args.get(name);
     if (path.empty()) throw Usage_error("--" + name + " needs a file name");
+    m_targets[name] = path;
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
       throw Usage_error("--" + name + ": " + path + " is a directory");
-    const std::size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    // A device, FIFO or the like (/dev/null, /dev/stdout) is written in place, not replaced.
+    if (io::is_special_file(path)) continue;
+    // A symbolic link is written through: the file it points to is replaced, in that file's directory.
+    const std::string destination = io::write_destination(path);
+    const std::size_t slash = destination.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : destination.substr(0, slash);
     if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
       throw Usage_error("--" + name + ": the directory " + dir + " of " + path + " does not exist");
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
       throw Usage_error("--" + name + ": cannot write into the directory " + dir + " (" + std::strerror(errno) + ")");
     // The same file may be spelt two ways (v.txt and ./v.txt, a symbolic link): compare resolved paths.
     char resolved[PATH_MAX];
-    std::string key = path;
-    if (::realpath(path.c_str(), resolved) != nullptr)
+    std::string key = destination;
+    if (::realpath(destination.c_str(), resolved) != nullptr)
       key = resolved;
     else if (::realpath(dir.c_str(), resolved) != nullptr)
-      key = std::string(resolved) + "/" + path.substr(slash == std::string::npos ? 0 : slash + 1);
+      key = std::string(resolved) + "/" + destination.substr(slash == std::string::npos ? 0 : slash + 1);
     const auto known = targets.emplace(key, name);
     if (!known.second)
       throw Usage_error("--" + name + ": " + path + " is also written by --" + known.first->second);
-    m_targets[name] = path;
+  }
+  // An output that is one of the inputs (any other argument naming the same existing file) would destroy it.
+  for (const auto& [name, path] : m_targets) {
+    struct stat out {};
+    if (::stat(path.c_str(), &out) != 0 || !S_ISREG(out.st_mode)) continue;
+    auto same = [&out](const std::string& other) {
+      struct stat in {};
+      return ::stat(other.c_str(), &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino;
+    };
+    for (const auto& [option, value] : args.values())
+      if (m_targets.count(option) == 0 && same(value))
+        throw Usage_error("--" + name + ": " + path + " is also the input --" + option);
+    for (const std::string& value : args.positional())
+      if (same(value)) throw Usage_error("--" + name + ": " + path + " is also the input " + value);
   }
 }
 
@@ -183,16 +201,18 @@ std::string Outputs::name_targets(std::string message) {
 }
 
 Outputs::~Outputs() {
-  for (const auto& f : m_staged) std::remove(f.second.c_str());
+  for (const auto& f : m_staged) io::discard_temporary(f.second);
 }
 
 std::string Outputs::path(const std::string& name) {
   const auto it = m_targets.find(name);
   if (it == m_targets.end()) throw std::logic_error("Outputs::path: --" + name + " is not a checked output");
+  if (io::is_special_file(it->second)) return it->second;  // written in place
+  const std::string destination = io::write_destination(it->second);
   for (const auto& f : m_staged)
-    if (f.first == it->second) return f.second;
-  m_staged.emplace_back(it->second, io::temporary_beside(it->second));
-  issued_temporaries().push_back(m_staged.back());
+    if (f.first == destination) return f.second;
+  m_staged.emplace_back(destination, io::temporary_beside(destination));
+  issued_temporaries().emplace_back(it->second, m_staged.back().second);
   return m_staged.back().second;
 }
 

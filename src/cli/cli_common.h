@@ -38,6 +38,7 @@ class Arguments {
   double get_positive_double(const std::string& name) const;  ///< finite number > 0
   long long get_int(const std::string& name) const;
   const std::vector<std::string>& positional() const { return m_positional; }
+  const std::map<std::string, std::string>& values() const { return m_values; }  ///< option -> value
 
  private:
   std::map<std::string, std::string> m_values;
@@ -65,7 +66,10 @@ class Progress {
 /// Usage_error naming the option otherwise). path() hands out a new temporary file beside the target (same
 /// extension) for the writers; commit() renames them all into place once everything is written. Destroyed
 /// without commit() (an error), it removes the temporaries: a failed run leaves neither partial output nor a
-/// new vertices file beside an old edges file, and earlier files of the same names stay as they were.
+/// new vertices file beside an old edges file, and earlier files of the same names stay as they were. A symbolic
+/// link is written through (the file it points to is replaced, the link stays); a device, FIFO or the like
+/// (/dev/null, /dev/stdout) is written in place, without a temporary. An output that is also an input (another
+/// argument naming the same existing file) is refused.
 class Outputs {
  public:
   Outputs(const Arguments& args, const std::vector<std::string>& options);

@@ -51,7 +51,7 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
     return static_cast<bool>(tree.search_any_point(ball));  // stops at the first point found
   };
   // The samples are counted first: a tiny interval or a huge edge must be refused, not loop (t += interval stops
-  // moving once t is large) or run for hours; the bound is compare_maps' (2^32 samples).
+  // moving once t is large) or run for hours; the bound is compare_maps' (2^25 samples).
   auto length = [&](const Edge& e) {
     const auto& a = g.positions[e[0]];
     const auto& b = g.positions[e[1]];
@@ -59,9 +59,9 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
   };
   double total = 0;
   for (const Edge& e : g.edges) total += std::floor(length(e) / interval) + 2;
-  if (!(total < 4294967296.0))
+  if (!(total < 33554432.0))
     throw std::invalid_argument("--crop-to-tracks: the ground truth's edges at --interval " + json_number(interval) +
-                                " would give more than 2^32 samples");
+                                " would give more than 2^25 samples");
   Embedded_graph_2 out;
   out.positions = g.positions;
   for (const Edge& e : g.edges) {

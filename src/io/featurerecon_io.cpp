@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <climits>
+#include <csignal>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -293,6 +295,34 @@ std::string format_double(double x) {
   return buf;
 }
 
+namespace {
+// Temporaries not yet moved into place, for remove_temporaries_now(): fixed slots, so that a signal handler can
+// read them while the program is anywhere (a slot is filled before it is counted, and emptied before reuse).
+constexpr std::size_t temporary_slots = 64;
+char registered[temporary_slots][PATH_MAX];
+volatile std::sig_atomic_t slot_used[temporary_slots] = {};
+
+void register_temporary(const std::string& name) {
+  if (name.size() >= PATH_MAX) return;
+  for (std::size_t i = 0; i < temporary_slots; ++i)
+    if (!slot_used[i]) {
+      std::memcpy(registered[i], name.c_str(), name.size() + 1);
+      slot_used[i] = 1;
+      return;
+    }
+}
+
+void forget_temporary(const std::string& name) {
+  for (std::size_t i = 0; i < temporary_slots; ++i)
+    if (slot_used[i] && name == registered[i]) slot_used[i] = 0;
+}
+}  // namespace
+
+void remove_temporaries_now() {
+  for (std::size_t i = 0; i < temporary_slots; ++i)
+    if (slot_used[i]) ::unlink(registered[i]);
+}
+
 std::string temporary_beside(const std::string& path) {
   if (path.empty()) throw std::runtime_error("an output file name is empty");
   const std::size_t slash = path.find_last_of('/');
@@ -305,6 +335,7 @@ std::string temporary_beside(const std::string& path) {
   buffer.push_back('\0');
   const int fd = ::mkstemps(buffer.data(), static_cast<int>(suffix.size()));
   if (fd < 0) throw std::runtime_error(path + ": cannot open for writing (" + system_reason() + ")");
+  register_temporary(buffer.data());
   // mkstemps creates the file private (0600): give it the permissions a new file gets (0666 less the umask).
   const mode_t mask = ::umask(0);
   ::umask(mask);
@@ -313,27 +344,50 @@ std::string temporary_beside(const std::string& path) {
   return std::string(buffer.data());
 }
 
+void discard_temporary(const std::string& temporary) {
+  std::remove(temporary.c_str());
+  forget_temporary(temporary);
+}
+
 void move_into_place(const std::string& temporary, const std::string& path) {
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     const std::string reason = system_reason();
-    std::remove(temporary.c_str());
+    discard_temporary(temporary);
     throw std::runtime_error(path + ": cannot write (" + reason + ")");
   }
+  forget_temporary(temporary);
+}
+
+bool is_special_file(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
+std::string write_destination(const std::string& path) {
+  struct stat st {};
+  char resolved[PATH_MAX];
+  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode) && ::realpath(path.c_str(), resolved) != nullptr)
+    return resolved;
+  return path;
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  const std::string tmp = temporary_beside(path);
+  // A device, FIFO or the like is written in place; a symbolic link is written through.
+  const bool in_place = is_special_file(path);
+  const std::string destination = in_place ? path : write_destination(path);
+  const std::string tmp = in_place ? path : temporary_beside(destination);
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
     out.close();
     if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error(path + ": write failed (" + system_reason() + ")");
+      const std::string reason = system_reason();
+      if (!in_place) discard_temporary(tmp);
+      throw std::runtime_error(path + ": write failed (" + reason + ")");
     }
   }
-  move_into_place(tmp, path);
+  if (!in_place) move_into_place(tmp, destination);
 }
 
 void write_complex(const std::string& path, const skeleton::Simplicial_complex_2& k,

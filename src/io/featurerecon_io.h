@@ -88,11 +88,26 @@ std::string format_double(double x);
 
 /// Creates a new, empty file beside `path` (same directory, a unique hidden name ending in the same extension, so
 /// that writers which choose the format by extension still do) and returns its name. Throws std::runtime_error
-/// with the system's reason if the directory does not take it.
+/// with the system's reason if the directory does not take it. The name is registered for
+/// remove_temporaries_now() until move_into_place() or discard_temporary() takes it.
 std::string temporary_beside(const std::string& path);
 
 /// Renames `temporary` to `path` (same file system, atomic); on failure removes the temporary and throws.
 void move_into_place(const std::string& temporary, const std::string& path);
+
+/// Removes a temporary that will not be moved into place.
+void discard_temporary(const std::string& temporary);
+
+/// Removes every registered temporary; async-signal-safe (for a SIGINT or SIGTERM handler).
+void remove_temporaries_now();
+
+/// True when `path` exists and is not a regular file (after symbolic links): a device such as /dev/null, a FIFO,
+/// a socket, /dev/stdout. Such outputs are written in place: renaming a temporary over them would replace them.
+bool is_special_file(const std::string& path);
+
+/// Where a write to `path` should land: the file a symbolic link points to (so that the link stays a link),
+/// else `path` itself.
+std::string write_destination(const std::string& path);
 
 }  // namespace io
 }  // namespace FeatureRecon

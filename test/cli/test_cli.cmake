@@ -531,7 +531,7 @@ file(WRITE ${WORK}/space_e.txt "0,0,1\n")
 expect(map_space_in_number 1 "space_v.txt:2: '1 00' is not a number" evaluate-map ${WORK}/space_v.txt ${WORK}/space_e.txt ${WORK}/space_v.txt ${WORK}/space_e.txt)
 # evaluate-map --crop-to-tracks with a tiny interval is refused at once (it used to loop).
 file(WRITE ${WORK}/crop_tracks.txt "0 0 0 0\n0 1 0 1\n")
-expect(crop_tiny_interval 1 "--crop-to-tracks: the ground truth's edges at --interval 1e-300 would give more than 2\\^32 samples" evaluate-map ${DATA}/chicago_maps/chicago_gt_trk25_vertices.txt ${DATA}/chicago_maps/chicago_gt_trk25_edges.txt ${DATA}/chicago_maps/chicago_gt_trk25_vertices.txt ${DATA}/chicago_maps/chicago_gt_trk25_edges.txt --interval 1e-300 --crop-to-tracks ${WORK}/crop_tracks.txt)
+expect(crop_tiny_interval 1 "--crop-to-tracks: the ground truth's edges at --interval 1e-300 would give more than 2\\^25 samples" evaluate-map ${DATA}/chicago_maps/chicago_gt_trk25_vertices.txt ${DATA}/chicago_maps/chicago_gt_trk25_edges.txt ${DATA}/chicago_maps/chicago_gt_trk25_vertices.txt ${DATA}/chicago_maps/chicago_gt_trk25_edges.txt --interval 1e-300 --crop-to-tracks ${WORK}/crop_tracks.txt)
 # sample-stats: the spectrum of 3-D samples is refused; an empty file is degenerate, not an error; the domain
 # measure printed is the one used.
 expect(sample_stats_spectrum_3d 2 "--spectrum and --max-frequency need 2-D samples on the unit torus; .*wall_plain.xyz has 3 numbers per line" sample-stats --input ${WORK}/wall_plain.xyz --periodic --spectrum ${WORK}/s3.csv)
@@ -651,3 +651,42 @@ foreach(f a b)
     file(REMOVE ${WORK}/${f})
   endif()
 endforeach()
+
+# Outputs that are not plain files: a symbolic link is written through (the link stays, the file it points to
+# gets the output), a FIFO (like /dev/null or /dev/stdout) is written in place, not replaced by a file; an output
+# naming an input is refused before any work.
+file(MAKE_DIRECTORY ${WORK}/special)
+file(WRITE ${WORK}/special/real.cx "old\n")
+file(CREATE_LINK real.cx ${WORK}/special/link.cx SYMBOLIC)
+expect(output_through_link 0 "wrote .*link.cx: 400 vertices" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --out ${WORK}/special/link.cx --quiet)
+expect_same_file(${WORK}/special/real.cx ${WORK}/fig8.txt "output_through_link: the file the link points to")
+if(NOT IS_SYMLINK ${WORK}/special/link.cx)
+  message(SEND_ERROR "output_through_link: the symbolic link was replaced by a file")
+endif()
+if(BASH_PROGRAM)
+  execute_process(COMMAND ${BASH_PROGRAM} -c "cd '${WORK}/special' && mkfifo fifo.cx && { timeout 30 cat fifo.cx > from_fifo.cx & } && \"$0\" rips --points '${DATA}/figure_eight.xyz' --radius 0.6 --out fifo.cx --quiet && wait && test -p fifo.cx" ${FEATURERECON}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(SEND_ERROR "output_to_fifo: exit ${rc} (the FIFO should stay a FIFO):\n${out}${err}")
+  else()
+    expect_same_file(${WORK}/special/from_fifo.cx ${WORK}/fig8.txt "output_to_fifo: what the reader got")
+    message(STATUS "ok: output_to_fifo")
+  endif()
+  # Interrupted (SIGINT, as Ctrl-C sends) while writing: no temporary is left behind. 600 copies of one point
+  # make a complex of 36 M triangles, minutes of work.
+  string(REPEAT "0 0\n" 600 same_points)
+  file(WRITE ${WORK}/special/same.xyz "${same_points}")
+  execute_process(COMMAND ${BASH_PROGRAM} -c "timeout -s INT 3 \"$0\" rips --points '${WORK}/special/same.xyz' --radius 1 --out '${WORK}/special/interrupted.cx' --quiet" ${FEATURERECON}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  file(GLOB leftovers ${WORK}/special/.*)
+  if(NOT rc EQUAL 124 OR leftovers OR EXISTS ${WORK}/special/interrupted.cx)
+    message(SEND_ERROR "interrupted_output: exit ${rc} (124: stopped by timeout), left ${leftovers}\n${out}${err}")
+  else()
+    message(STATUS "ok: interrupted_output")
+  endif()
+endif()
+file(COPY ${DATA}/figure_eight.xyz DESTINATION ${WORK}/special)
+expect(output_is_input 2 "--out-vertices: .*figure_eight.xyz is also the input --points" skeleton --points ${WORK}/special/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/special/figure_eight.xyz --out-edges ${WORK}/special/e.txt)
+file(COPY ${M}_gt_crp_vertices.txt DESTINATION ${WORK}/special)
+file(RENAME ${WORK}/special/chicago_gt_crp_vertices.txt ${WORK}/special/gt_v.txt)
+expect(output_is_positional_input 2 "--samples-out: .*gt_v.txt is also the input .*gt_v.txt" evaluate-map ${WORK}/special/gt_v.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --samples-out ${WORK}/special/gt_v.txt)

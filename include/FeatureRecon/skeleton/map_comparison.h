@@ -112,12 +112,14 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
     incident[edges[e][0]].push_back(e);
     incident[edges[e][1]].push_back(e);
   }
-  // Finite coordinates can still be too far apart for the interval (t += interval would stop moving).
+  // Finite coordinates can still be too far apart for the interval (t += interval would stop moving), and a
+  // tiny interval would fill the memory: 2^25 samples a map (a 167,000 km network at 5 m) take about 5 GB to
+  // compare (75 bytes a sample).
   double total = 0;
   for (std::size_t e = 0; e < edges.size(); ++e) total += length(e);
-  if (!(total / interval < 4294967296.0))
+  if (!(total / interval < 33554432.0))
     FeatureRecon::internal::throw_invalid_argument(fn, "the map's ", total, " m of edges at interval ", interval,
-                                                   " would give more than 2^32 samples");
+                                                   " would give more than 2^25 samples");
   std::vector<Map_sample> samples;
   // `listed` marks edges put in a component's order; an edge belongs to one component, so one array serves all.
   std::vector<char> edge_done(edges.size(), 0), vertex_seen(n, 0), listed(edges.size(), 0);
