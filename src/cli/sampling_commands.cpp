@@ -63,7 +63,9 @@ int run_sample(const std::vector<std::string>& argv) {
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
   const long long neighbors = args.has("normal-neighbors") ? args.get_int("normal-neighbors") : 18;
-  if (neighbors < 3) throw Usage_error("--normal-neighbors must be >= 3");
+  // K neighbours of every point are held at once: beyond a million that is no longer a neighbourhood (and 2^32
+  // wrapped to 0 in the estimator's unsigned count).
+  if (neighbors < 3 || neighbors > 1000000) throw Usage_error("--normal-neighbors must be in [3, 1000000]");
   const bool quiet = args.has("quiet");
 
   io::Point_cloud cloud = io::read_point_cloud(input);

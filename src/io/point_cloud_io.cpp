@@ -18,6 +18,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -186,8 +187,49 @@ std::string ply_problem(const std::string& path) {
       return "vertex " + std::to_string(i) + " has " + std::to_string(t.size()) + " values, the header declares " +
              std::to_string(properties) + " properties";
     for (const std::string& v : t)
-      if (!parse_number(v, x)) return "vertex " + std::to_string(i) + ": '" + v + "' is not a number";
+      if (!parse_number(v, x) || !std::isfinite(x))
+        return "vertex " + std::to_string(i) + ": '" + v + "' is not a finite number";
   }
+  return "";
+}
+
+/// What read_ply() needs of the header's vertex element: properties x, y, z (and nx, ny, nz all or none) of a
+/// floating-point type (CGAL's reader crashes on integer coordinates). Returns the problem, or "" and `normals`.
+std::string ply_vertex_problem(const std::string& path, bool& normals) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot open";
+  std::string line, element;
+  std::map<std::string, std::string> type_of;  // vertex property -> type
+  bool header = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::vector<std::string> t = line_tokens(line);
+    if (t.empty()) continue;
+    if (t[0] == "end_header") {
+      header = true;
+      break;
+    }
+    if (t[0] == "element" && t.size() > 1) element = t[1];
+    if (t[0] == "property" && element == "vertex" && t.size() > 2)
+      type_of[t.back()] = t[1] == "list" ? "list" : t[1];
+  }
+  if (!header) return "no PLY header (end_header missing)";
+  auto floating = [](const std::string& type) {
+    return type == "float" || type == "double" || type == "float32" || type == "float64";
+  };
+  for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) {
+    const auto it = type_of.find(name);
+    if (it == type_of.end()) {
+      if (name[0] != 'n') return std::string("the vertex element has no property ") + name;
+      continue;
+    }
+    if (!floating(it->second))
+      return std::string("vertex property ") + name + " is " + it->second + ": coordinates and normals must be " +
+             "float or double";
+  }
+  const int n = int(type_of.count("nx")) + int(type_of.count("ny")) + int(type_of.count("nz"));
+  if (n != 0 && n != 3) return "the vertex element has only some of the normal properties nx, ny, nz";
+  normals = n == 3;
   return "";
 }
 
@@ -195,18 +237,12 @@ std::string ply_problem(const std::string& path) {
 void read_ply(const std::string& path, Point_cloud& c) {
   bool normals = false;
   {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, "cannot open");
-    std::string line;
-    bool header = false;
-    while (std::getline(in, line)) {
-      if (line.rfind("property", 0) == 0 && (line.find(" nx") != std::string::npos)) normals = true;
-      if (line.rfind("end_header", 0) == 0) {
-        header = true;
-        break;
-      }
-    }
-    if (!header) fail(path, "no PLY header (end_header missing)");
+    const std::string problem = ply_vertex_problem(path, normals);
+    if (!problem.empty()) fail(path, problem == "no PLY header (end_header missing)" || problem == "cannot open"
+                                         ? problem : "not a readable PLY point cloud (" + problem + ")");
+    // Vertex lines of the wrong length or data shorter than the header says: CGAL would read them shifted.
+    const std::string shape = ply_problem(path);
+    if (!shape.empty()) fail(path, "not a readable PLY point cloud (" + shape + ")");
   }
   std::vector<Pwn> pwn;
   std::ostringstream messages;

@@ -494,6 +494,21 @@ file(WRITE ${WORK}/short.ply "ply\nformat ascii 1.0\nelement vertex 3\nproperty 
 expect(ply_short_line 1 "short.ply: not a readable PLY point cloud \\(vertex 1 has 2 values, the header declares 3 properties\\)" sample --input ${WORK}/short.ply --count 1 --out ${WORK}/o.xyz --quiet)
 file(WRITE ${WORK}/cut.ply "ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\nproperty float y\nproperty float z\nend_header\nabc")
 expect(ply_truncated_binary 1 "cut.ply: not a readable PLY point cloud \\(truncated: 100 vertices of 12 bytes need 1200 bytes" sample --input ${WORK}/cut.ply --count 1 --out ${WORK}/o.xyz --quiet)
+# PLY vertices CGAL would misread are refused naming the problem: integer coordinates (CGAL's reader crashed), a
+# line with a value too many (read shifted onto the next points), no x property (read as the origin), some of the
+# normals, a NaN.
+set(ply_head "ply\nformat ascii 1.0\nelement vertex 3\n")
+file(WRITE ${WORK}/int.ply "${ply_head}property int x\nproperty int y\nproperty int z\nend_header\n1 2 3\n3 4 5\n5 6 8\n")
+expect(ply_int 1 "int.ply: not a readable PLY point cloud \\(vertex property x is int: coordinates and normals must be float or double\\)" sample --input ${WORK}/int.ply --count 2 --out ${WORK}/o.xyz --quiet)
+file(WRITE ${WORK}/extra.ply "${ply_head}property float x\nproperty float y\nproperty float z\nend_header\n1 2 3 4\n3 4 5\n5 6 8\n")
+expect(ply_extra_value 1 "extra.ply: not a readable PLY point cloud \\(vertex 0 has 4 values, the header declares 3 properties\\)" sample --input ${WORK}/extra.ply --count 2 --out ${WORK}/o.xyz --quiet)
+file(WRITE ${WORK}/abc.ply "${ply_head}property float a\nproperty float b\nproperty float c\nend_header\n1 2 3\n3 4 5\n5 6 8\n")
+expect(ply_no_x 1 "abc.ply: not a readable PLY point cloud \\(the vertex element has no property x\\)" sample-stats --input ${WORK}/abc.ply)
+file(WRITE ${WORK}/nx.ply "${ply_head}property float x\nproperty float y\nproperty float z\nproperty float nx\nend_header\n1 2 3 1\n3 4 5 1\n5 6 8 1\n")
+expect(ply_some_normals 1 "nx.ply: .*only some of the normal properties" sample --input ${WORK}/nx.ply --count 2 --out ${WORK}/o.xyz --quiet)
+file(WRITE ${WORK}/nan.ply "${ply_head}property float x\nproperty float y\nproperty float z\nend_header\n1 2 3\nnan 1 1\n0 0 0\n")
+expect(ply_nan 1 "nan.ply: not a readable PLY point cloud \\(vertex 1: 'nan' is not a finite number\\)" sample-stats --input ${WORK}/nan.ply)
+expect(normal_neighbors_huge 2 "--normal-neighbors must be in \\[3, 1000000\\]" sample --input ${WORK}/blank_first.xyz --count 2 --sigma-feature 0.5 --normal-neighbors 4294967296 --out ${WORK}/o.xyz)
 # Outputs of the wrong kind are refused before the work, naming the option (exit 2).
 expect(sample_out_extension 2 "--out writes a point cloud: give a file ending in .ply, .off or .xyz, got '.*o.txt'" sample --input ${WORK}/wall.xyz --count 5 --out ${WORK}/o.txt)
 expect(sample_image_picture_extension 2 "--picture writes a raster picture: give a file ending in .png, .jpg, .jpeg, .pgm or .ppm" sample-image --input ${WORK}/line.pgm --count 5 --picture ${WORK}/p.txt)
