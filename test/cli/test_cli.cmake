@@ -509,6 +509,7 @@ expect(ply_some_normals 1 "nx.ply: .*only some of the normal properties" sample 
 file(WRITE ${WORK}/nan.ply "${ply_head}property float x\nproperty float y\nproperty float z\nend_header\n1 2 3\nnan 1 1\n0 0 0\n")
 expect(ply_nan 1 "nan.ply: not a readable PLY point cloud \\(vertex 1: 'nan' is not a finite number\\)" sample-stats --input ${WORK}/nan.ply)
 expect(normal_neighbors_huge 2 "--normal-neighbors must be in \\[3, 1000000\\]" sample --input ${WORK}/blank_first.xyz --count 2 --sigma-feature 0.5 --normal-neighbors 4294967296 --out ${WORK}/o.xyz)
+expect(sigma_feature_tiny 1 "sigma_feature must be in \\[1e-150, 1e150\\] \\(or infinity for Euclidean\\), got 1e-160" sample --input ${WORK}/blank_first.xyz --method darts --count 2 --sigma-feature 1e-160 --out ${WORK}/o.xyz)
 # Outputs of the wrong kind are refused before the work, naming the option (exit 2).
 expect(sample_out_extension 2 "--out writes a point cloud: give a file ending in .ply, .off or .xyz, got '.*o.txt'" sample --input ${WORK}/wall.xyz --count 5 --out ${WORK}/o.txt)
 expect(sample_image_picture_extension 2 "--picture writes a raster picture: give a file ending in .png, .jpg, .jpeg, .pgm or .ppm" sample-image --input ${WORK}/line.pgm --count 5 --picture ${WORK}/p.txt)

@@ -226,6 +226,21 @@ TEST(BilateralDartThrowing, BadInputNamesTheProblem) {
   o.priority[2] = std::nan("");
   EXPECT_THROW(bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o), std::invalid_argument);
   EXPECT_THROW(bilateral_dart_throwing_count(p, 11, std::back_inserter(kept)), std::invalid_argument);
+  // Scales whose square is not a normal double (1e-160 squared is 0: the count search never ended).
+  for (const double sigma : {1e-160, 1e160, 0.0, -1.0, std::nan("")}) {
+    Dart_throwing_count_options c;
+    c.darts.sigma_feature = sigma;
+    expect_invalid_argument([&] { bilateral_dart_throwing_count(p, 5, std::back_inserter(kept), c); },
+                            "sigma_feature must be in [1e-150, 1e150]");
+    o = {};
+    o.sigma_position = sigma;
+    expect_invalid_argument([&] { bilateral_dart_throwing(p, 0.1, std::back_inserter(kept), o); },
+                            "sigma_position must be in [1e-150, 1e150]");
+  }
+  o = {};
+  o.sigma_feature = 1e-150;  // the bound itself is accepted
+  EXPECT_NO_THROW(bilateral_dart_throwing(p, 0.1, std::back_inserter(kept), o));
+  kept.clear();
   EXPECT_TRUE(kept.empty());
 }
 }  // namespace

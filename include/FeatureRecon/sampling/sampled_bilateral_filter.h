@@ -127,8 +127,8 @@ class Filter_image {
     if (!(std::isfinite(kernel.sigma_spatial) && kernel.sigma_spatial > 0))
       FeatureRecon::internal::throw_invalid_argument(fn, "kernel.sigma_spatial must be finite and > 0, got ",
                                                      kernel.sigma_spatial);
-    if (!(std::isfinite(kernel.sigma_range) && kernel.sigma_range > 0))
-      FeatureRecon::internal::throw_invalid_argument(fn, "kernel.sigma_range must be finite and > 0, got ",
+    if (!(kernel.sigma_range >= 1e-150 && kernel.sigma_range <= 1e150))  // its square a normal double
+      FeatureRecon::internal::throw_invalid_argument(fn, "kernel.sigma_range must be in [1e-150, 1e150], got ",
                                                      kernel.sigma_range);
     if (kernel.radius < 0 || kernel.radius > 4096)
       FeatureRecon::internal::throw_invalid_argument(fn, "kernel.radius must be in [0, 4096], got ", kernel.radius);
@@ -216,9 +216,9 @@ inline void check_sampled_options(const Sampled_bilateral_filter_options& o, con
   if (!(std::isfinite(o.budget) && o.budget > 0 && o.budget <= 16))
     FeatureRecon::internal::throw_invalid_argument(fn, "budget must be in (0, 16] taps per kernel pixel, got ",
                                                    o.budget);
-  if (!(o.sampling_sigma_feature == 0 || (std::isfinite(o.sampling_sigma_feature) && o.sampling_sigma_feature > 0)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "sampling_sigma_feature must be finite and > 0 (or 0 for "
-                                                   "sigma_range), got ", o.sampling_sigma_feature);
+  if (!(o.sampling_sigma_feature == 0 || (o.sampling_sigma_feature >= 1e-150 && o.sampling_sigma_feature <= 1e150)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "sampling_sigma_feature must be in [1e-150, 1e150] (or 0 "
+                                                   "for sigma_range), got ", o.sampling_sigma_feature);
   if (!(std::isfinite(o.candidates_per_tap) && o.candidates_per_tap >= 2 && o.candidates_per_tap <= 64))
     FeatureRecon::internal::throw_invalid_argument(fn, "candidates_per_tap must be in [2, 64], got ",
                                                    o.candidates_per_tap);

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <iterator>
 #include <vector>
@@ -80,13 +81,18 @@ struct Sample_set {
   }
 };
 
-/// Checks the sigmas of the bilateral distance.
+/// True when a scale's square is a normal double: distances divided by it neither overflow nor divide by zero
+/// (a sigma of 1e-160 squared is 0, and darts then never stopped).
+inline bool is_usable_scale(double sigma) { return sigma >= 1e-150 && sigma <= 1e150; }
+
+/// Checks the sigmas of the bilateral distance: each in [1e-150, 1e150], sigma_feature also infinity.
 inline void check_sigmas(double sigma_position, double sigma_feature, const char* fn) {
-  if (!(std::isfinite(sigma_position) && sigma_position > 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "sigma_position must be finite and > 0, got ", sigma_position);
-  if (!(sigma_feature > 0))  // infinity allowed
-    FeatureRecon::internal::throw_invalid_argument(fn, "sigma_feature must be > 0 (infinity for Euclidean), got ",
-                                                   sigma_feature);
+  if (!is_usable_scale(sigma_position))
+    FeatureRecon::internal::throw_invalid_argument(fn, "sigma_position must be in [1e-150, 1e150], got ",
+                                                   sigma_position);
+  if (!(is_usable_scale(sigma_feature) || sigma_feature == std::numeric_limits<double>::infinity()))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "sigma_feature must be in [1e-150, 1e150] (or infinity for Euclidean), got ", sigma_feature);
 }
 
 /// Checks a domain measure (>= 0, 0 meaning automatic) and an intrinsic dimension (0, 2 or 3).
