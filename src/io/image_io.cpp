@@ -35,11 +35,33 @@ struct File {
   }
 };
 
+/// A header whose size the file cannot hold is corrupt: refused before the pixels are allocated (a 69-byte PNG
+/// claiming 30000 x 30000 pixels took 2.6 GB, a 30 KB JPEG claiming 60000 x 60000 10.5 GB). At most
+/// `pixels_per_byte` pixels a byte of file (deflate packs at most 1032 bytes into one, eight 1-bit pixels to a
+/// byte; a JPEG codes every 8 x 8 block in a bit or more) and 2^30 pixels in all.
+void check_image_size(const std::string& path, const char* kind, unsigned long long width, unsigned long long height,
+                      unsigned long long pixels_per_byte) {
+  const unsigned long long pixels = width * height;
+  const std::string size = std::to_string(width) + " x " + std::to_string(height);
+  if (pixels > (1ull << 30)) fail(path, "a " + size + " " + kind + " is beyond 2^30 pixels");
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+      pixels > pixels_per_byte * static_cast<unsigned long long>(st.st_size) + 4096)
+    fail(path, std::string("corrupt ") + kind + " header: " + size + " pixels cannot be stored in " +
+                   std::to_string(st.st_size) + " bytes");
+}
+
 Image read_png(const std::string& path) {
   png_image img;
   std::fill(reinterpret_cast<char*>(&img), reinterpret_cast<char*>(&img) + sizeof img, 0);
   img.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&img, path.c_str())) fail(path, std::string("not a readable PNG (") + img.message + ")");
+  try {
+    check_image_size(path, "PNG", img.width, img.height, 8 * 1032);
+  } catch (...) {
+    png_image_free(&img);
+    throw;
+  }
   const bool colour = (img.format & PNG_FORMAT_FLAG_COLOR) != 0;
   img.format = colour ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;  // 8-bit, alpha composited away by libpng
   Image out;
@@ -99,6 +121,12 @@ Image read_jpeg(const std::string& path) {
   jpeg_create_decompress(&info);
   jpeg_stdio_src(&info, file.f);
   jpeg_read_header(&info, TRUE);
+  try {
+    check_image_size(path, "JPEG", info.image_width, info.image_height, 1024);
+  } catch (...) {
+    jpeg_destroy_decompress(&info);
+    throw;
+  }
   if (info.jpeg_color_space == JCS_CMYK || info.jpeg_color_space == JCS_YCCK) {
     jpeg_destroy_decompress(&info);
     fail(path, "CMYK JPEG images are not supported");

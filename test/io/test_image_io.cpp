@@ -3,8 +3,10 @@
 // Image files: PNG, JPEG, PGM and PPM round trips, ASCII PNM, and errors that name the file.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "io/featurerecon_io.h"
@@ -80,4 +82,65 @@ TEST(ImageIo, ErrorsNameTheFile) {
   const std::string truncated = scratch("t.pgm");
   std::ofstream(truncated) << "P5\n4 4\n255\nab";
   EXPECT_THROW(io::read_image(truncated), io::Input_error);
+}
+
+// A header claiming more pixels than its file can hold is refused before anything is allocated (a 69-byte PNG
+// claiming 30000 x 30000 took 2.6 GB, a 30 KB JPEG claiming 60000 x 60000 10.5 GB, before failing).
+TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
+  io::Image small;
+  small.width = small.height = 64;
+  small.channels = 1;
+  small.data.assign(64 * 64, 200);
+  auto read_bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  auto write_bytes = [](const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+  };
+  auto big_endian = [](std::string& bytes, std::size_t at, unsigned value, int size) {
+    for (int k = 0; k < size; ++k) bytes[at + k] = char((value >> (8 * (size - 1 - k))) & 0xff);
+  };
+  auto message_of = [](const std::string& path) {
+    try {
+      io::read_image(path);
+    } catch (const io::Input_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  // PNG: IHDR (width, height at bytes 16-23) with its CRC recomputed, so that libpng accepts the header.
+  const std::string png = scratch("huge.png");
+  io::write_image(png, small);
+  std::string bytes = read_bytes(png);
+  ASSERT_EQ(bytes.substr(12, 4), "IHDR");
+  big_endian(bytes, 16, 30000, 4);
+  big_endian(bytes, 20, 30000, 4);
+  std::uint32_t crc = 0xffffffffu;
+  for (std::size_t i = 12; i < 29; ++i) {
+    crc ^= static_cast<unsigned char>(bytes[i]);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  big_endian(bytes, 29, ~crc, 4);
+  write_bytes(png, bytes);
+  EXPECT_NE(message_of(png).find("huge.png: corrupt PNG header: 30000 x 30000 pixels cannot be stored in "),
+            std::string::npos) << message_of(png);
+  // JPEG: the height and width of the start-of-frame segment (after FFC0, length, precision).
+  const std::string jpg = scratch("huge.jpg");
+  io::write_image(jpg, small);
+  bytes = read_bytes(jpg);
+  const std::size_t sof = bytes.find("\xff\xc0");
+  ASSERT_NE(sof, std::string::npos);
+  big_endian(bytes, sof + 5, 20000, 2);
+  big_endian(bytes, sof + 7, 20000, 2);
+  write_bytes(jpg, bytes);
+  EXPECT_NE(message_of(jpg).find("huge.jpg: corrupt JPEG header: 20000 x 20000 pixels cannot be stored in "),
+            std::string::npos) << message_of(jpg);
+  big_endian(bytes, sof + 5, 60000, 2);
+  big_endian(bytes, sof + 7, 60000, 2);
+  write_bytes(jpg, bytes);
+  EXPECT_EQ(message_of(jpg), jpg + ": a 60000 x 60000 JPEG is beyond 2^30 pixels");
+  // The images themselves read.
+  io::write_image(png, small);
+  EXPECT_EQ(io::read_image(png).width, 64);
 }
