@@ -260,6 +260,61 @@ TEST(MergeRoadLines, TwoDirectionsOfAStreetBecomeOneLineInTheMiddle) {
   }
 }
 
+// A map drawn with vertices centimetres apart (a skeleton at a small radius) is thinned to half the spacing
+// before the neighbourhood is built: the same one line as the sparse map, from about as many samples (each of the
+// 60,000 vertices was a sample, and the neighbourhood graph held 800 neighbours each: 35 s and 4.4 GB in the CLI).
+TEST(MergeRoadLines, AMapWithVerticesCentimetresApartIsThinnedFirst) {
+  Embedded_graph_2 dense;
+  for (const double y : {0.0, 4.0})
+    for (int i = 0; i <= 30000; ++i) {
+      dense.positions.push_back({0.01 * i, y});
+      if (i > 0) dense.edges.push_back({Vertex_index(dense.positions.size() - 2), Vertex_index(dense.positions.size() - 1)});
+    }
+  const Road_merge_result sparse = merge_road_lines(parallel_lines({0.0, 4.0}, 300, false));
+  const Road_merge_result r = merge_road_lines(dense);
+  ASSERT_EQ(r.status, Status::success);
+  EXPECT_LE(r.samples, 2 * sparse.samples);  // about 300 / 2 + 1 per line, not 60,002
+  EXPECT_EQ(map_components(r.map), 1u);
+  EXPECT_NEAR(r.length_after, sparse.length_after, 5);
+  EXPECT_NEAR(r.length_before, 600, 1e-6);
+  for (const auto& p : r.map.positions)
+    if (p[0] > 20 && p[0] < 280) EXPECT_NEAR(p[1], 2.0, 1.0) << p[0];
+}
+
+// Chains of degree-2 vertices keep a vertex every `min_step` along them; junctions, ends and isolated vertices
+// stay; a cycle of degree-2 vertices keeps its smallest index; no vertex dropped: no edges returned.
+TEST(MergeRoadLines, ThinningKeepsJunctionsAndEnds) {
+  Embedded_graph_2 g;
+  // A T: a line along x (0..10 by 0.25) with a branch up from x = 5 (0.25 steps to y = 3), a square cycle of
+  // side 0.5 elsewhere, and an isolated vertex.
+  for (int i = 0; i <= 40; ++i) g.positions.push_back({0.25 * i, 0});  // vertices 0..40, junction 20 (x = 5)
+  for (int i = 1; i <= 12; ++i) g.positions.push_back({5, 0.25 * i});  // 41..52
+  std::vector<Edge> edges;
+  for (Vertex_index i = 0; i < 40; ++i) edges.push_back({i, i + 1});
+  edges.push_back({20, 41});
+  for (Vertex_index i = 41; i < 52; ++i) edges.push_back({i, i + 1});
+  const Vertex_index square = Vertex_index(g.positions.size());  // 53..56
+  for (const auto& p : {std::array<double, 2>{20, 0}, {20.5, 0}, {20.5, 0.5}, {20, 0.5}}) g.positions.push_back(p);
+  for (Vertex_index k = 0; k < 4; ++k) edges.push_back({std::min<Vertex_index>(square + k, square + (k + 1) % 4),
+                                                         std::max<Vertex_index>(square + k, square + (k + 1) % 4)});
+  g.positions.push_back({50, 50});  // isolated: 57
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> kept;
+  const std::vector<Edge> thinned = FeatureRecon::skeleton::internal::thin_map_chains(g.positions, edges, 1.0, kept);
+  // Along x: 0, 1, 2, 3, 4, then the junction (5) ... every fourth vertex, as along the branch.
+  for (Vertex_index v : {0u, 4u, 8u, 12u, 16u, 20u, 24u, 28u, 32u, 36u, 40u, 44u, 48u, 52u, 53u, 55u, 57u})
+    EXPECT_TRUE(kept[v]) << v;
+  for (Vertex_index v : {1u, 2u, 3u, 21u, 39u, 41u, 51u, 54u, 56u}) EXPECT_FALSE(kept[v]) << v;
+  EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 17);
+  // Edges join consecutive kept vertices; the square becomes one edge between its two kept corners.
+  const std::vector<Edge> expected = {{0, 4}, {4, 8}, {8, 12}, {12, 16}, {16, 20}, {20, 24}, {20, 44}, {24, 28},
+                                      {28, 32}, {32, 36}, {36, 40}, {44, 48}, {48, 52}, {53, 55}};
+  EXPECT_EQ(thinned, expected);
+  // Vertices already farther apart than the step: nothing dropped, no edges returned.
+  EXPECT_TRUE(FeatureRecon::skeleton::internal::thin_map_chains(g.positions, edges, 0.2, kept).empty());
+  EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 58);
+}
+
 TEST(MergeRoadLines, AStopDuringTheRipsStageEndsTheRun) {
   // The callback says stop once (its second call, inside the Rips stage) and go on afterwards.
   int calls = 0;

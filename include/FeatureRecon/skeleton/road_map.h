@@ -210,6 +210,70 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
   return removed;
 }
 
+/// The vertices merge_road_lines() keeps: every vertex not of degree 2 in `edges` (unique, no loops), and along
+/// each chain of degree-2 vertices the first one at least `min_step` along the chain from the last kept one (a
+/// cycle of degree-2 vertices keeps its smallest index). With `min_step` a fraction of the sampling spacing this
+/// drops only vertices closer together than the samples (a skeleton drawn at a small radius has polylines with
+/// vertices centimetres apart, which made the neighbourhood graph quadratic); returns the kept vertices' flags and
+/// the edges between consecutive kept vertices (unique, sorted), or no edges when every vertex is kept.
+inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>>& positions,
+                                         const std::vector<Edge>& edges, double min_step, std::vector<char>& kept) {
+  const std::size_t n = positions.size();
+  std::vector<std::vector<std::pair<Vertex_index, std::size_t>>> around(n);  // (neighbour, edge)
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    around[edges[e][0]].push_back({edges[e][1], e});
+    around[edges[e][1]].push_back({edges[e][0], e});
+  }
+  auto length = [&](Vertex_index a, Vertex_index b) {
+    return std::hypot(positions[b][0] - positions[a][0], positions[b][1] - positions[a][1]);
+  };
+  kept.assign(n, 0);
+  for (std::size_t v = 0; v < n; ++v) kept[v] = around[v].size() != 2;
+  std::vector<char> walked(edges.size(), 0);
+  std::vector<Edge> out;
+  bool dropped = false;
+  // Walks the chain leaving kept vertex `start` by edge `first`, keeping vertices as described.
+  auto walk = [&](Vertex_index start, Vertex_index next, std::size_t first) {
+    Vertex_index previous = start, last_kept = start;
+    double along = 0;
+    for (std::size_t e = first;;) {
+      walked[e] = 1;
+      along += length(previous, next);
+      if (kept[next] || along >= min_step) {
+        if (!kept[next]) kept[next] = 1;
+        if (last_kept != next) out.push_back({std::min(last_kept, next), std::max(last_kept, next)});
+        last_kept = next;
+        along = 0;
+      } else {
+        dropped = true;
+      }
+      if (around[next].size() != 2 || next == start) break;
+      const auto& two = around[next];
+      const std::size_t k = two[0].second == e ? 1 : 0;
+      if (walked[two[k].second]) {  // back at the start of a cycle
+        if (last_kept != start) out.push_back({std::min(last_kept, start), std::max(last_kept, start)});
+        break;
+      }
+      previous = next;
+      next = two[k].first;
+      e = two[k].second;
+    }
+  };
+  for (std::size_t v = 0; v < n; ++v)
+    if (kept[v] && around[v].size() != 2)
+      for (const auto& [w, e] : around[v])
+        if (!walked[e]) walk(static_cast<Vertex_index>(v), w, e);
+  for (std::size_t v = 0; v < n; ++v)  // cycles of degree-2 vertices only
+    if (!kept[v] && around[v].size() == 2 && !walked[around[v][0].second]) {
+      kept[v] = 1;
+      walk(static_cast<Vertex_index>(v), around[v][0].first, around[v][0].second);
+    }
+  if (!dropped) return {};
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 }  // namespace internal
 
 /// Merges the lines of a road map that run closer than `options.distance` (see the file comment). Vertices come
@@ -249,6 +313,27 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   r.length_before = internal::map_length(map.positions, edges);
+  // A map with more vertices than twice the samples its length calls for (a skeleton drawn at a small radius:
+  // polyline vertices centimetres apart made the neighbourhood graph quadratic, 35 s and 4.4 GB for 164 fixes at
+  // radius 0.5) loses the vertices closer together along a line than half the spacing; other maps are sampled
+  // as they are.
+  std::vector<char> kept;
+  std::vector<Edge> thinned;
+  if (static_cast<double>(map.positions.size()) > 2 * (r.length_before / r.spacing + 1))
+    thinned = internal::thin_map_chains(map.positions, edges, r.spacing / 2, kept);
+  std::vector<std::array<double, 2>> positions;
+  if (!thinned.empty()) {
+    std::vector<Vertex_index> index(map.positions.size(), 0);
+    for (std::size_t v = 0; v < map.positions.size(); ++v)
+      if (kept[v]) {
+        index[v] = static_cast<Vertex_index>(positions.size());
+        positions.push_back(map.positions[v]);
+      }
+    for (Edge& e : thinned) e = {index[e[0]], index[e[1]]};
+    edges = std::move(thinned);
+  } else {
+    positions = map.positions;
+  }
   if (map.positions.empty()) {
     r.status = Status::degenerate_input;
     return r;
@@ -260,11 +345,11 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   // Samples: the vertices, then interior points of each edge; the chains of the edges.
   Point_matrix P;
   P.dimension = 2;
-  P.rows = map.positions.size();
-  for (const auto& p : map.positions) P.data.insert(P.data.end(), {p[0], p[1]});
+  P.rows = positions.size();
+  for (const auto& p : positions) P.data.insert(P.data.end(), {p[0], p[1]});
   std::vector<Edge> chain;
   for (const Edge& e : edges) {
-    const auto a = map.positions[e[0]], b = map.positions[e[1]];
+    const auto a = positions[e[0]], b = positions[e[1]];
     const double L = std::hypot(b[0] - a[0], b[1] - a[1]);
     const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil(L / r.spacing)));
     Vertex_index previous = e[0];
