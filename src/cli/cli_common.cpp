@@ -73,7 +73,7 @@ double Arguments::get_double(const std::string& name) const {
   char* end = nullptr;
   errno = 0;
   const double x = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || !std::isfinite(x))
+  if (s.empty() || *end != '\0' || !std::isfinite(x) || s.find_first_of("xX") != std::string::npos)
     throw Usage_error("--" + name + " must be a finite number, got '" + s + "'");
   return x;
 }

@@ -32,7 +32,7 @@ double parse_double(const std::string& t, const std::string& path, std::size_t l
   char* end = nullptr;
   errno = 0;
   const double x = std::strtod(s, &end);
-  if (end == s || *end != '\0')
+  if (end == s || *end != '\0' || t.find_first_of("xX") != std::string::npos)  // decimal only, not 0x10
     throw Input_error(where(path, line) + "'" + t + "' is not a number (" + what + ")");
   if (!std::isfinite(x)) throw Input_error(where(path, line) + what + " is not finite ('" + t + "')");
   return x;

@@ -40,7 +40,7 @@ bool parse_number(const std::string& t, double& x) {
   const char* s = t.c_str();
   char* end = nullptr;
   x = std::strtod(s, &end);
-  return end != s && *end == '\0';
+  return end != s && *end == '\0' && t.find_first_of("xX") == std::string::npos;  // decimal only, not 0x10
 }
 
 std::string at_line(const std::string& path, std::size_t line) { return path + ":" + std::to_string(line) + ": "; }
@@ -276,10 +276,10 @@ void read_ply(const std::string& path, Point_cloud& c) {
 }  // namespace
 
 Point_cloud read_point_cloud(const std::string& path) {
+  require_readable_file(path);  // a missing file or a directory says so, whatever its extension
   const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "off" && ext != "xyz")
     fail(path, "unknown point-cloud format '." + ext + "' (expected .ply, .off or .xyz)");
-  require_readable_file(path);
   Point_cloud c;
   if (ext == "ply")
     read_ply(path, c);
