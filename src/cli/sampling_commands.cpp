@@ -212,12 +212,16 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     for (std::size_t i = 0; i < cloud.points.size(); ++i) {
       const auto& p = cloud.points[i];
       const auto n = cloud.has_normals() ? cloud.normals[i] : std::array<double, 3>{0, 0, 1};
+      if (std::isfinite(o.sigma_feature) && n[0] == 0 && n[1] == 0 && n[2] == 0)  // as `sample` says it
+        throw io::Input_error(input + ": point " + std::to_string(i) + " has a zero normal");
       items.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2])});
     }
     q = fs::sampling_quality(items, o);
   } else {
     const io::Point_file& f = text;
     dimension = f.dimension;
+    if (std::isfinite(o.sigma_feature))  // was silently ignored
+      throw Usage_error("--sigma-feature needs normals in " + input + " (lines 'x y z nx ny nz', or PLY / OFF)");
     if (f.dimension == 2) {
       std::vector<K::Point_2> p;
       for (std::size_t i = 0; i < f.size(); ++i) p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);

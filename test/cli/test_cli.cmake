@@ -516,6 +516,10 @@ expect(hex_option 2 "--radius must be a finite number, got '0x10'" rips --points
 file(WRITE ${WORK}/hex.xyz "0 0 0\n0x10 1 1\n")
 expect(hex_coordinate 1 "hex.xyz:2: '0x10' is not a number" sample --input ${WORK}/hex.xyz --count 1 --out ${WORK}/o.xyz --quiet)
 expect(missing_extensionless_input 1 "nowhere/none: cannot open for reading" sample --input ${WORK}/nowhere/none --count 1 --out ${WORK}/o.xyz --quiet)
+# sample-stats: --sigma-feature without normals is refused (was ignored), a zero normal named (was null statistics).
+expect(sample_stats_sigma_without_normals 2 "--sigma-feature needs normals in .*blank_first.xyz" sample-stats --input ${WORK}/blank_first.xyz --sigma-feature 0.5)
+file(WRITE ${WORK}/zero_normal.xyz "0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n")
+expect(sample_stats_zero_normal 1 "zero_normal.xyz: point 1 has a zero normal" sample-stats --input ${WORK}/zero_normal.xyz --sigma-feature 0.5)
 # Outputs of the wrong kind are refused before the work, naming the option (exit 2).
 expect(sample_out_extension 2 "--out writes a point cloud: give a file ending in .ply, .off or .xyz, got '.*o.txt'" sample --input ${WORK}/wall.xyz --count 5 --out ${WORK}/o.txt)
 expect(sample_image_picture_extension 2 "--picture writes a raster picture: give a file ending in .png, .jpg, .jpeg, .pgm or .ppm" sample-image --input ${WORK}/line.pgm --count 5 --picture ${WORK}/p.txt)
