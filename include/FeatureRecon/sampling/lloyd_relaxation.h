@@ -446,6 +446,10 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
       }
     }
   });
+  // A cell over zero density sums its edges' moments to rounding noise, not to 0: its "centroid" was that noise
+  // divided by noise, clamped to a corner of the box, where such sites then stacked (stippling's white corners).
+  // Masses below a billionth of the mean cell's count as empty (the site stays).
+  const double negligible = 1e-9 * density.total_mass() / static_cast<double>(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (voronoi.owner[i] != i) continue;  // a duplicate: empty cell, stays
     const Density_moments& m = moments[i];
@@ -453,7 +457,7 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
     r.mass[i] = m.mass;
     // integral of rho |x - p|^2 = M2 - 2 p . M1 + |p|^2 M0; clamped at 0 against rounding.
     r.energy += std::max(0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
-    if (m.mass > 0) {
+    if (m.mass > negligible) {
       // The centroid lies in the convex cell, inside the box; clamp against rounding.
       r.centroids[i] = {std::min(std::max(m.moment_x / m.mass, box[0]), box[2]),
                         std::min(std::max(m.moment_y / m.mass, box[1]), box[3])};

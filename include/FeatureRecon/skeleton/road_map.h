@@ -277,8 +277,9 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 }  // namespace internal
 
 /// Merges the lines of a road map that run closer than `options.distance` (see the file comment). Vertices come
-/// first in the samples (a vertex with no edge stays a node), then every edge longer than the spacing gets
-/// evenly spaced interior points; the graph of the Rips edges at `distance` and the edges' own chains is passed
+/// first in the samples (a vertex with no edge stays a node; a map with more vertices than twice the samples its
+/// length calls for first loses those closer together along a line than half the spacing, thin_map_chains()),
+/// then every edge longer than the spacing gets evenly spaced interior points; the graph of the Rips edges at `distance` and the edges' own chains is passed
 /// to extract_reeb_skeleton() with delta, no repair and no pruning. Where two lines diverge beyond `distance`
 /// for a short stretch the skeleton keeps a thin loop; loops whose two sides lie within `distance` of each other
 /// (two arcs between the same nodes, or an arc beside a two-arc path) lose their longer side. Deterministic. The
