@@ -70,10 +70,8 @@ std::string Arguments::get_or(const std::string& name, const std::string& fallba
 
 double Arguments::get_double(const std::string& name) const {
   const std::string s = get(name);
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0' || !std::isfinite(x) || s.find_first_of("xX") != std::string::npos)
+  double x = 0;
+  if (!io::parse_decimal(s, x) || !std::isfinite(x))
     throw Usage_error("--" + name + " must be a finite number, got '" + s + "'");
   return x;
 }

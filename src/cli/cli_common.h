@@ -101,6 +101,17 @@ class Outputs {
 skeleton::Transverse_mercator lonlat_projection(
     const std::vector<std::pair<std::string, const std::vector<std::array<double, 2>>*>>& sources);
 
+/// --lonlat: every fix (a type with x and y, as skeleton::Gps_fix) of the trips from degrees to metres.
+template <class Trips>
+void project_trips(Trips& trips, const skeleton::Transverse_mercator& projection) {
+  for (auto& trip : trips)
+    for (auto& fix : trip) {
+      const auto xy = projection.forward(fix.x, fix.y);
+      fix.x = xy[0];
+      fix.y = xy[1];
+    }
+}
+
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);
 

@@ -115,12 +115,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
                                     {args.get_or("tracks", ""), &track_points}});
     for (auto* points : {&gt.positions, &rec.positions, &crop_points})
       for (auto& q : *points) q = projection.forward(q[0], q[1]);
-    for (Gps_trip& trip : trips)
-      for (Gps_fix& f : trip) {
-        const auto xy = projection.forward(f.x, f.y);
-        f.x = xy[0];
-        f.y = xy[1];
-      }
+    project_trips(trips, projection);
   }
   if (args.has("crop-to-tracks")) {
     const double radius = args.has("crop-radius") ? args.get_positive_double("crop-radius") : 25.0;

@@ -366,12 +366,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
       for (const Gps_trip& trip : trips)
         for (const Gps_fix& f : trip) degrees.push_back({f.x, f.y});
       projection = lonlat_projection({{args.get("tracks"), &degrees}});
-      for (Gps_trip& trip : trips)
-        for (Gps_fix& f : trip) {
-          const auto xy = projection.forward(f.x, f.y);
-          f.x = xy[0];
-          f.y = xy[1];
-        }
+      project_trips(trips, projection);
     }
     Road_map_options ro;
     ro.rips_radius = radius;

@@ -28,12 +28,8 @@ std::string where(const std::string& path, std::size_t line) {
 }
 
 double parse_double(const std::string& t, const std::string& path, std::size_t line, const char* what) {
-  const char* s = t.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(s, &end);
-  if (end == s || *end != '\0' || t.find_first_of("xX") != std::string::npos)  // decimal only, not 0x10
-    throw Input_error(where(path, line) + "'" + t + "' is not a number (" + what + ")");
+  double x = 0;
+  if (!parse_decimal(t, x)) throw Input_error(where(path, line) + "'" + t + "' is not a number (" + what + ")");
   if (!std::isfinite(x)) throw Input_error(where(path, line) + what + " is not finite ('" + t + "')");
   return x;
 }
@@ -421,6 +417,13 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
     s += buf;
   }
   write_text_file(path, s);
+}
+
+bool parse_decimal(const std::string& token, double& value) {
+  const char* s = token.c_str();
+  char* end = nullptr;
+  value = std::strtod(s, &end);
+  return end != s && *end == '\0' && token.find_first_of("xX") == std::string::npos;  // strtod also reads 0x10
 }
 
 std::vector<std::string> line_tokens(const std::string& line) {

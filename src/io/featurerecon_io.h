@@ -74,6 +74,10 @@ std::string file_extension(const std::string& path);
 /// The whitespace-separated tokens of a text line, without its '#' comment (a trailing CR is whitespace).
 std::vector<std::string> line_tokens(const std::string& line);
 
+/// Reads `token` as a decimal number (what strtod takes, except hexadecimal such as 0x10); true when all of it is
+/// one. The value may be infinite or NaN ("inf", "nan"): callers that need finite numbers check.
+bool parse_decimal(const std::string& token, double& value);
+
 /// Writes `text` to `path` atomically: to a new temporary file beside it, renamed into place (an existing file of
 /// any other name is never touched). Throws std::runtime_error with the system's reason if it cannot.
 void write_text_file(const std::string& path, const std::string& text);

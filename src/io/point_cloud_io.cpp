@@ -36,13 +36,6 @@ using Normal_map = CGAL::Second_of_pair_property_map<Pwn>;
 
 /// A number of a point-cloud file: the whole token must parse (no "12abc"); inf and nan are refused later with
 /// the point's index.
-bool parse_number(const std::string& t, double& x) {
-  const char* s = t.c_str();
-  char* end = nullptr;
-  x = std::strtod(s, &end);
-  return end != s && *end == '\0' && t.find_first_of("xX") == std::string::npos;  // decimal only, not 0x10
-}
-
 std::string at_line(const std::string& path, std::size_t line) { return path + ":" + std::to_string(line) + ": "; }
 
 /// XYZ: one point per line, `x y z` or `x y z nx ny nz`; every line has the count of the first; blank lines and
@@ -67,7 +60,7 @@ void read_xyz(const std::string& path, Point_cloud& c) {
     }
     std::array<double, 6> v{};
     for (std::size_t k = 0; k < columns; ++k)
-      if (!parse_number(t[k], v[k]))
+      if (!parse_decimal(t[k], v[k]))
         throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (point " +
                           std::to_string(c.points.size()) + ")");
     c.points.push_back({v[0], v[1], v[2]});
@@ -130,26 +123,33 @@ void read_off(const std::string& path, Point_cloud& c) {
                         std::to_string(t.size()) + " fields");
     std::array<double, 6> v{};
     for (std::size_t k = 0; k < per_vertex; ++k)
-      if (!parse_number(t[k], v[k]))
+      if (!parse_decimal(t[k], v[k]))
         throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (vertex " + std::to_string(i) + ")");
     c.points.push_back({v[0], v[1], v[2]});
     if (normals) c.normals.push_back({v[3], v[4], v[5]});
   }
 }
 
-/// Why CGAL could not read a PLY file, as far as the header tells: the vertex data is shorter than the header
-/// says (binary) or a vertex line is not as many numbers as the vertex has properties (ASCII).
-std::string ply_problem(const std::string& path) {
+/// What would make CGAL misread a PLY file (or crash), found before it reads: the vertex element needs properties
+/// x, y, z (and nx, ny, nz all or none) of a floating-point type (CGAL's reader crashes on integer coordinates);
+/// binary vertex data must be as long as the header says; every ASCII vertex line must hold as many finite numbers
+/// as the vertex has properties (CGAL reads a line too long or too short shifted onto the next points). Returns
+/// the problem, or "" with `normals` set. One pass over the header; ASCII vertex lines are read once more by CGAL.
+std::string ply_problem(const std::string& path, bool& normals) {
   std::ifstream in(path, std::ios::binary);
   std::string line, format, element;
   unsigned long long vertices = 0;
   std::size_t bytes = 0, properties = 0;
-  bool first_element_is_vertex = false, scalar = true, seen_element = false;
+  bool first_element_is_vertex = false, scalar = true, seen_element = false, header = false;
+  std::map<std::string, std::string> type_of;  // vertex property -> type
   while (std::getline(in, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::vector<std::string> t = line_tokens(line);
     if (t.empty()) continue;
-    if (t[0] == "end_header") break;
+    if (t[0] == "end_header") {
+      header = true;
+      break;
+    }
     if (t[0] == "format" && t.size() > 1) format = t[1];
     if (t[0] == "element" && t.size() > 2) {
       element = t[1];
@@ -157,9 +157,10 @@ std::string ply_problem(const std::string& path) {
       seen_element = true;
       if (element == "vertex") vertices = std::strtoull(t[2].c_str(), nullptr, 10);
     }
-    if (t[0] == "property" && element == "vertex" && t.size() > 1) {
+    if (t[0] == "property" && element == "vertex" && t.size() > 2) {
       ++properties;
       const std::string& type = t[1];
+      type_of[t.back()] = type;
       if (type == "list") scalar = false;
       else if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") bytes += 1;
       else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") bytes += 2;
@@ -167,7 +168,21 @@ std::string ply_problem(const std::string& path) {
       else bytes += 4;
     }
   }
-  if (!in) return "the header has no end_header line";
+  if (!header) return "the header has no end_header line";
+  for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) {
+    const auto it = type_of.find(name);
+    if (it == type_of.end()) {
+      if (name[0] != 'n') return std::string("the vertex element has no property ") + name;
+      continue;
+    }
+    const std::string& type = it->second;
+    if (!(type == "float" || type == "double" || type == "float32" || type == "float64"))
+      return std::string("vertex property ") + name + " is " + type + ": coordinates and normals must be float or "
+             "double";
+  }
+  const int n = int(type_of.count("nx")) + int(type_of.count("ny")) + int(type_of.count("nz"));
+  if (n != 0 && n != 3) return "the vertex element has only some of the normal properties nx, ny, nz";
+  normals = n == 3;
   if (!first_element_is_vertex || !scalar) return "";
   if (format == "binary_little_endian" || format == "binary_big_endian") {
     const std::streamoff start = in.tellg();
@@ -187,63 +202,17 @@ std::string ply_problem(const std::string& path) {
       return "vertex " + std::to_string(i) + " has " + std::to_string(t.size()) + " values, the header declares " +
              std::to_string(properties) + " properties";
     for (const std::string& v : t)
-      if (!parse_number(v, x) || !std::isfinite(x))
+      if (!parse_decimal(v, x) || !std::isfinite(x))
         return "vertex " + std::to_string(i) + ": '" + v + "' is not a finite number";
   }
-  return "";
-}
-
-/// What read_ply() needs of the header's vertex element: properties x, y, z (and nx, ny, nz all or none) of a
-/// floating-point type (CGAL's reader crashes on integer coordinates). Returns the problem, or "" and `normals`.
-std::string ply_vertex_problem(const std::string& path, bool& normals) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "cannot open";
-  std::string line, element;
-  std::map<std::string, std::string> type_of;  // vertex property -> type
-  bool header = false;
-  while (std::getline(in, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const std::vector<std::string> t = line_tokens(line);
-    if (t.empty()) continue;
-    if (t[0] == "end_header") {
-      header = true;
-      break;
-    }
-    if (t[0] == "element" && t.size() > 1) element = t[1];
-    if (t[0] == "property" && element == "vertex" && t.size() > 2)
-      type_of[t.back()] = t[1] == "list" ? "list" : t[1];
-  }
-  if (!header) return "no PLY header (end_header missing)";
-  auto floating = [](const std::string& type) {
-    return type == "float" || type == "double" || type == "float32" || type == "float64";
-  };
-  for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) {
-    const auto it = type_of.find(name);
-    if (it == type_of.end()) {
-      if (name[0] != 'n') return std::string("the vertex element has no property ") + name;
-      continue;
-    }
-    if (!floating(it->second))
-      return std::string("vertex property ") + name + " is " + it->second + ": coordinates and normals must be " +
-             "float or double";
-  }
-  const int n = int(type_of.count("nx")) + int(type_of.count("ny")) + int(type_of.count("nz"));
-  if (n != 0 && n != 3) return "the vertex element has only some of the normal properties nx, ny, nz";
-  normals = n == 3;
   return "";
 }
 
 /// PLY through CGAL; what CGAL reports on std::cerr, or what ply_problem finds, becomes the reason of an error.
 void read_ply(const std::string& path, Point_cloud& c) {
   bool normals = false;
-  {
-    const std::string problem = ply_vertex_problem(path, normals);
-    if (!problem.empty()) fail(path, problem == "no PLY header (end_header missing)" || problem == "cannot open"
-                                         ? problem : "not a readable PLY point cloud (" + problem + ")");
-    // Vertex lines of the wrong length or data shorter than the header says: CGAL would read them shifted.
-    const std::string shape = ply_problem(path);
-    if (!shape.empty()) fail(path, "not a readable PLY point cloud (" + shape + ")");
-  }
+  const std::string problem = ply_problem(path, normals);
+  if (!problem.empty()) fail(path, "not a readable PLY point cloud (" + problem + ")");
   std::vector<Pwn> pwn;
   std::ostringstream messages;
   std::streambuf* const saved = std::cerr.rdbuf(messages.rdbuf());
@@ -264,7 +233,6 @@ void read_ply(const std::string& path, Point_cloud& c) {
     while (!reason.empty() && std::isspace(static_cast<unsigned char>(reason.back()))) reason.pop_back();
     for (char& ch : reason)
       if (ch == '\n') ch = ';';
-    if (reason.empty()) reason = ply_problem(path);
     fail(path, "not a readable PLY point cloud" + (reason.empty() ? std::string() : " (" + reason + ")"));
   }
   c.points.reserve(pwn.size());
