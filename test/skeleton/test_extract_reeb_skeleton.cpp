@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -128,6 +129,85 @@ TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {
   auto e = edges(s.graph).first;
   auto f = edges(t.graph).first;
   for (; e != edges(s.graph).second; ++e, ++f) EXPECT_EQ(s.graph[*e].polyline, t.graph[*f].polyline);
+}
+
+namespace {
+// Nodes as (type, sorted members) and arcs as sorted members, in sorted order: skeletons compared without
+// their numbering.
+std::pair<std::vector<std::pair<unsigned, std::vector<Vertex_index>>>, std::vector<std::vector<Vertex_index>>>
+skeleton_signature(const Skeleton_graph& g) {
+  std::vector<std::pair<unsigned, std::vector<Vertex_index>>> nodes;
+  for (auto v : boost::make_iterator_range(vertices(g))) {
+    nodes.push_back({g[v].type, g[v].members});
+    std::sort(nodes.back().second.begin(), nodes.back().second.end());
+  }
+  std::vector<std::vector<Vertex_index>> arcs;
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    arcs.push_back(g[e].members);
+    std::sort(arcs.back().begin(), arcs.back().end());
+  }
+  std::sort(nodes.begin(), nodes.end());
+  std::sort(arcs.begin(), arcs.end());
+  return {nodes, arcs};
+}
+}  // namespace
+
+TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {
+  // A noisy figure-eight with copies: 40 more of its point 7 (a regular point), 40 of point 0 (the smallest
+  // index, where the geodesic base search starts), two more copies of every point (maxima included). The skeleton is exactly the
+  // one of the full Rips complex, where the copies form cliques: same nodes with their types and members, same
+  // arcs, same counts of removed features.
+  const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
+  const std::size_t n = eight.points.size();
+  auto with_copies_of = [&](std::size_t copies) {
+    std::vector<std::array<double, 2>> p = eight.points;
+    for (std::size_t k = 0; k < copies; ++k) p.push_back(eight.points[7]);
+    for (std::size_t k = 0; k < 40; ++k) p.push_back(eight.points[0]);
+    for (int twice = 0; twice < 2; ++twice)
+      for (std::size_t i = 0; i < n; ++i) p.push_back(eight.points[i]);
+    return p;
+  };
+  Skeleton_options o;
+  o.delta = 1.0;
+  o.embedding.level_width = 0.3;  // the copies' zero-length edges would otherwise set the median edge length
+  const auto some = with_copies_of(40);
+  const Point_matrix m = make_point_matrix(some);
+  const Reeb_skeleton full = extract_reeb_skeleton(build_rips_graph(m, 0.7), m, o);
+  const Reeb_skeleton s = extract_reeb_skeleton(m, 0.7, o);
+  ASSERT_EQ(s.status, Status::success);
+  EXPECT_EQ(loops_of(s.graph), 2u);
+  EXPECT_EQ(s.removed_branches, full.removed_branches);
+  EXPECT_EQ(s.removed_loops, full.removed_loops);
+  EXPECT_EQ(skeleton_signature(s.graph), skeleton_signature(full.graph));
+  EXPECT_LT(s.rips_triangles, full.rips_triangles / 3);
+  expect_members_partition(s.graph, some.size());
+  // 400 copies: the full complex has 11.4 million triangles; here the copies add about 400 stars of point 7.
+  const auto many = with_copies_of(400);
+  const Reeb_skeleton t = extract_reeb_skeleton(many, 0.7, o);
+  const Reeb_skeleton distinct = extract_reeb_skeleton(eight.points, 0.7, o);
+  EXPECT_LT(t.rips_triangles, distinct.rips_triangles + 500 * 100);
+  EXPECT_EQ(t.removed_branches, distinct.removed_branches);
+  EXPECT_EQ(num_vertices(t.graph), num_vertices(distinct.graph));
+  EXPECT_EQ(num_edges(t.graph), num_edges(distinct.graph));
+  expect_members_partition(t.graph, many.size());
+
+  // The rule itself: first copies by exact coordinates (-0.0 equals 0.0), smallest index first; each copy
+  // joined to its first copy, the first copy's neighbours and the next copy.
+  Point_matrix q;
+  q.dimension = 2;
+  q.data = {1, 2, 0.0, 5, 1, 2, -0.0, 5, 1.5, 2, 1, 2};
+  q.rows = 6;
+  std::vector<Vertex_index> first;
+  ASSERT_TRUE(skeleton::internal::first_copies(q, first));
+  EXPECT_EQ(first, (std::vector<Vertex_index>{0, 1, 0, 1, 4, 0}));
+  const Proximity_graph g = skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {});
+  EXPECT_EQ(g.edges, (std::vector<Edge>{{0, 2}, {0, 4}, {0, 5}, {1, 3}, {2, 4}, {2, 5}, {4, 5}}));
+  EXPECT_EQ(g.edge_lengths, (std::vector<double>{0, 0.5, 0, 0, 0.5, 0, 0.5}));
+  q.data = {1, 2, 1, 3, 2, 2};
+  q.rows = 3;
+  EXPECT_FALSE(skeleton::internal::first_copies(q, first));
+  EXPECT_TRUE(first.empty());
+  EXPECT_EQ(skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {}).edges, build_rips_graph(q, 1.0).edges);
 }
 
 TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {

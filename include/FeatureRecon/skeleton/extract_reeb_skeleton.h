@@ -67,8 +67,10 @@ struct Skeleton_options {
 struct Reeb_skeleton {
   Skeleton_graph graph;            ///< the skeleton; its members partition the input points
   std::size_t dimension = 0;       ///< embedding dimension: min(input dimension, 3)
-  std::size_t rips_edges = 0;      ///< size of the Rips complex
-  std::size_t rips_triangles = 0;  ///< size of the Rips complex
+  /// Size of the complex (for points: the copies of a point are not joined to each other, see
+  /// extract_reeb_skeleton()).
+  std::size_t rips_edges = 0;
+  std::size_t rips_triangles = 0;  ///< size of the complex, as rips_edges
   std::size_t removed_branches = 0;  ///< branches removed by the simplifications
   std::size_t removed_loops = 0;     ///< loops removed by the simplifications
   std::size_t repaired = 0;          ///< arcs added by repair_reeb_graph()
@@ -195,6 +197,87 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   return result;
 }
 
+/// Exact copies among the rows of `m`: first[i] is the smallest index whose coordinates equal row i's (i for
+/// the first copy). O(n log n) by a lexicographic sort. Returns false, leaving `first` empty, when every row is
+/// distinct.
+inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first) {
+  first.clear();
+  const std::size_t n = m.rows, d = m.dimension;
+  std::vector<Vertex_index> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<Vertex_index>(i);
+  auto less = [&m, d](Vertex_index a, Vertex_index b) {
+    return std::lexicographical_compare(m.row(a), m.row(a) + d, m.row(b), m.row(b) + d);
+  };
+  std::sort(order.begin(), order.end(), [&less](Vertex_index a, Vertex_index b) {
+    return less(a, b) || (!less(b, a) && a < b);
+  });
+  bool any = false;
+  for (std::size_t k = 1; k < n && !any; ++k) any = !less(order[k - 1], order[k]);
+  if (!any) return false;
+  first.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    first[order[k]] = (k > 0 && !less(order[k - 1], order[k])) ? first[order[k - 1]] : order[k];
+  return true;
+}
+
+/// The Rips graph of the distinct points, where each further copy of a point is joined to its first copy, to the
+/// first copy's neighbours (at their distances) and to the next copy (index order), but not to the other
+/// copies. Every copy's closed neighbourhood lies in its first copy's, and has its value under any geodesic
+/// function, so the copies collapse onto it: the flag complex keeps the homotopy type, the level sets and the
+/// critical points of the full Rips complex, where the copies also form a clique; k copies of a point with d
+/// neighbours cost about k (d + 2) edges and k (d + t) triangles (t: the first copy's) instead of about k^2/2
+/// edges and k^3/6 triangles.
+inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points, double radius,
+                                                     const Proximity_graph_options& options) {
+  std::vector<Vertex_index> first;
+  if (!first_copies(points, first)) return build_rips_graph(points, radius, options);
+  Point_matrix distinct;
+  distinct.dimension = points.dimension;
+  std::vector<Vertex_index> original;  // increasing, so an edge (a, b), a < b, stays ordered
+  for (std::size_t i = 0; i < points.rows; ++i)
+    if (first[i] == i) {
+      original.push_back(static_cast<Vertex_index>(i));
+      distinct.data.insert(distinct.data.end(), points.row(i), points.row(i) + points.dimension);
+    }
+  distinct.rows = original.size();
+  const Proximity_graph h = build_rips_graph(distinct, radius, options);
+  // Neighbours of each first copy in h (compressed rows over the original indices), and the copies in order.
+  std::vector<std::size_t> start(points.rows + 1, 0);
+  for (const Edge& e : h.edges) {
+    ++start[original[e[0]] + 1];
+    ++start[original[e[1]] + 1];
+  }
+  for (std::size_t i = 0; i < points.rows; ++i) start[i + 1] += start[i];
+  std::vector<std::pair<Vertex_index, double>> around(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t e = 0; e < h.edges.size(); ++e) {
+    const Vertex_index a = original[h.edges[e][0]], b = original[h.edges[e][1]];
+    around[fill[a]++] = {b, h.length(e)};
+    around[fill[b]++] = {a, h.length(e)};
+  }
+  Proximity_graph g;
+  g.number_of_vertices = points.rows;
+  g.edges.reserve(h.edges.size());
+  g.edge_lengths.reserve(h.edges.size());
+  auto join = [&g](Vertex_index a, Vertex_index b, double length) {
+    g.edges.push_back({std::min(a, b), std::max(a, b)});
+    g.edge_lengths.push_back(length);
+  };
+  for (std::size_t e = 0; e < h.edges.size(); ++e) join(original[h.edges[e][0]], original[h.edges[e][1]], h.length(e));
+  std::vector<Vertex_index> previous(points.rows);  // the last copy seen of each first copy
+  for (std::size_t i = 0; i < points.rows; ++i) previous[i] = static_cast<Vertex_index>(i);
+  for (std::size_t i = 0; i < points.rows; ++i) {
+    const Vertex_index r = first[i], c = static_cast<Vertex_index>(i);
+    if (r == c) continue;
+    join(r, c, 0.0);
+    if (previous[r] != r) join(previous[r], c, 0.0);
+    previous[r] = c;
+    for (std::size_t k = start[r]; k < start[r + 1]; ++k) join(around[k].first, c, around[k].second);
+  }
+  sort_unique_edges(g.edges, &g.edge_lengths);
+  return g;
+}
+
 inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Vertex_index b) {
   double s = 0;
   for (std::size_t c = 0; c < points.dimension; ++c)
@@ -207,7 +290,10 @@ inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Ver
 /// One call from points to a skeleton graph (dissertation Ch. 3): Rips 2-complex at `rips_radius`, geodesic
 /// function, augmented Reeb graph, simplification of features of persistence <= delta, optional repair and a
 /// second simplification, embedding. Each stage is also callable alone (see doc/skeleton.md).
-/// The automatic level width of the embedding is the median edge length of the complex.
+/// The automatic level width of the embedding is the median edge length of the complex. Further copies of a point
+/// (equal coordinates) are not joined to each other, only to their first copy, its neighbours and the next copy
+/// (internal::rips_graph_of_distinct_points(): same homotopy type, level sets and critical points as the full
+/// Rips complex without the copies' cliques); every copy is a member of its first copy's node or arc.
 /// \pre rips_radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
 inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double rips_radius,
                                            const Skeleton_options& options = {}) {
@@ -218,7 +304,7 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   bool stopped = false;  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
   if (options.progress)
     po.progress = [&options, &stopped](double t) { return !(stopped = stopped || !options.progress(0.3 * t)); };
-  const Proximity_graph g = build_rips_graph(points, rips_radius, po);
+  const Proximity_graph g = internal::rips_graph_of_distinct_points(points, rips_radius, po);
   if (stopped) {
     Reeb_skeleton interrupted;
     interrupted.dimension = std::min<std::size_t>(points.dimension, 3);
