@@ -140,8 +140,12 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   if (args.has("svg")) io::write_map_comparison_picture(outputs.path("svg"), r);
   outputs.commit();
   std::ostringstream os;
-  os << "{\"precision\": " << json_number(r.precision) << ", \"recall\": " << json_number(r.recall)
-     << ", \"f_score\": " << json_number(r.f_score) << ", \"matched\": " << r.matched
+  // A ratio over no samples is undefined: null (the library reports 0).
+  const double undefined = std::numeric_limits<double>::quiet_NaN();
+  os << "{\"precision\": " << json_number(r.reconstruction_samples > 0 ? r.precision : undefined)
+     << ", \"recall\": " << json_number(r.ground_truth_samples > 0 ? r.recall : undefined)
+     << ", \"f_score\": " << json_number(r.reconstruction_samples + r.ground_truth_samples > 0 ? r.f_score : undefined)
+     << ", \"matched\": " << r.matched
      << ", \"ground_truth_samples\": " << r.ground_truth_samples
      << ", \"reconstruction_samples\": " << r.reconstruction_samples << ", \"ground_truth_edges\": " << gt.edges.size()
      << ", \"ground_truth_edges_before_crop\": " << gt_edges_before << ", \"threshold\": "
@@ -169,7 +173,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     list("missed_by_trips", b.missed_by_trips);
     list("spurious_by_trips", b.spurious_by_trips);
     os << "\"ground_truth_driven\": " << b.ground_truth_driven << ", \"matched_driven\": " << b.matched_driven
-       << ", \"recall_of_driven\": " << json_number(b.recall_of_driven) << "}";
+       << ", \"recall_of_driven\": " << json_number(b.ground_truth_driven > 0 ? b.recall_of_driven : undefined) << "}";
   }
   os << "}\n";
   std::fputs(os.str().c_str(), stdout);

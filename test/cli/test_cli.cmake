@@ -99,9 +99,13 @@ file(WRITE ${WORK}/bad_edges.txt "1,1,99999\n")
 expect(evaluate_map_bad 1 "bad_edges.txt:1: unknown vertex id 99999" evaluate-map ${M}_gt_crp_vertices.txt ${WORK}/bad_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt)
 # Cropping to traces: a tracks file covering nothing removes every ground-truth edge.
 file(WRITE ${WORK}/far_tracks.txt "0 0 0 0\n")
-expect(evaluate_map_crop 0 "\"ground_truth_edges\": 0,.*\"ground_truth_edges_before_crop\": 1182" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/far_tracks.txt)
+expect(evaluate_map_crop 0 "\"precision\": 0, \"recall\": null, \"f_score\": 0,.*\"ground_truth_edges\": 0,.*\"ground_truth_edges_before_crop\": 1182" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/far_tracks.txt)
 # ... and with --tracks nothing is driven: every sample lies in the first bin (no trip along it).
-expect(evaluate_map_tracks_far 0 "\"ground_truth_by_trips\": \\[9173, 0, 0, 0\\], \"missed_by_trips\": \\[4688, 0, 0, 0\\], \"spurious_by_trips\": \\[333, 0, 0, 0\\], \"ground_truth_driven\": 0, \"matched_driven\": 0, \"recall_of_driven\": 0}" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/far_tracks.txt)
+expect(evaluate_map_tracks_far 0 "\"ground_truth_by_trips\": \\[9173, 0, 0, 0\\], \"missed_by_trips\": \\[4688, 0, 0, 0\\], \"spurious_by_trips\": \\[333, 0, 0, 0\\], \"ground_truth_driven\": 0, \"matched_driven\": 0, \"recall_of_driven\": null}" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/far_tracks.txt)
+# An empty reconstruction: precision is undefined (null), recall and F are 0.
+file(WRITE ${WORK}/no_vertices.txt "")
+file(WRITE ${WORK}/no_edges.txt "")
+expect(evaluate_map_empty 0 "\"precision\": null, \"recall\": 0, \"f_score\": 0, \"matched\": 0," evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${WORK}/no_vertices.txt ${WORK}/no_edges.txt)
 file(WRITE ${WORK}/bad_tracks.txt "0 1 x 3\n")
 expect(evaluate_map_tracks_bad 1 "bad_tracks.txt:1: 'x' is not a number" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/bad_tracks.txt)
 

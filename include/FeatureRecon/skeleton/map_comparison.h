@@ -38,7 +38,9 @@ struct Embedded_graph_2 {
 struct Map_comparison_options {
   double match_distance = 15.0;  ///< samples match when at most this far apart (m); default 15
   double interval = 5.0;         ///< distance between samples along edges (m); default 5
-  double bearing_limit = 45.0;   ///< samples match when their direction-insensitive bearings differ by less (deg)
+  /// Samples match when their direction-insensitive bearings (differences in [0, 90]) differ by less (degrees;
+  /// above 90: bearings are ignored); default 45
+  double bearing_limit = 45.0;
   std::size_t candidates = 10;   ///< nearest reconstruction samples considered per ground-truth sample; default 10
   bool keep_samples = false;     ///< also return both sample sets with their match flags (for diagnosis)
 };
