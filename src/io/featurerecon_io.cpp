@@ -211,14 +211,17 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
   Map_file m;
   std::map<long long, std::uint32_t> index;
   for_each_csv_row(vertices_path, [&](const std::vector<std::string>& t, std::size_t number) {
-    if (t.size() < 3) throw Input_error(where(vertices_path, number) + "expected 'id,x,y'");
+    if (t.size() != 3)
+      throw Input_error(where(vertices_path, number) + "expected 'id,x,y', got " + std::to_string(t.size()) + " fields");
     const long long id = parse_id(t[0], vertices_path, number);
     if (index.count(id)) throw Input_error(where(vertices_path, number) + "vertex id " + t[0] + " repeated");
     index[id] = static_cast<std::uint32_t>(m.positions.size());
     m.positions.push_back({parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
   });
   for_each_csv_row(edges_path, [&](const std::vector<std::string>& t, std::size_t number) {
-    if (t.size() < 3) throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]'");
+    if (t.size() < 3 || t.size() > 4)
+      throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]', got " + std::to_string(t.size()) +
+                        " fields");
     std::array<std::uint32_t, 2> e{};
     for (int k = 0; k < 2; ++k) {
       const long long id = parse_id(t[1 + k], edges_path, number);
@@ -234,7 +237,8 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
 std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
   std::vector<std::array<double, 2>> p;
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
-    if (t.size() < 3) throw Input_error(where(path, number) + "expected 'trip_id x y [t]'");
+    if (t.size() < 3 || t.size() > 4)
+      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) + " values");
     p.push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y")});
   });
   return p;
@@ -245,7 +249,8 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
   std::map<std::string, std::size_t> index;
   int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
-    if (t.size() < 3) throw Input_error(where(path, number) + "expected 'trip_id x y [t]'");
+    if (t.size() < 3 || t.size() > 4)
+      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) + " values");
     if (timed < 0) timed = t.size() > 3 ? 1 : 0;
     if ((t.size() > 3) != (timed == 1))
       throw Input_error(where(path, number) + (timed ? "no time t, but the first line has one ('trip_id x y t')"

@@ -108,6 +108,14 @@ file(WRITE ${WORK}/no_edges.txt "")
 expect(evaluate_map_empty 0 "\"precision\": null, \"recall\": 0, \"f_score\": 0, \"matched\": 0," evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${WORK}/no_vertices.txt ${WORK}/no_edges.txt)
 file(WRITE ${WORK}/bad_tracks.txt "0 1 x 3\n")
 expect(evaluate_map_tracks_bad 1 "bad_tracks.txt:1: 'x' is not a number" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/bad_tracks.txt)
+# Extra columns are refused, not ignored: a height column would have been read as the time.
+file(WRITE ${WORK}/xyzt_tracks.txt "0 1 2 3 4\n")
+expect(evaluate_map_tracks_columns 1 "xyzt_tracks.txt:1: expected 'trip_id x y \\[t\\]', got 5 values" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/xyzt_tracks.txt)
+expect(evaluate_map_crop_columns 1 "xyzt_tracks.txt:1: expected 'trip_id x y \\[t\\]', got 5 values" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/xyzt_tracks.txt)
+file(WRITE ${WORK}/xyz_vertices.txt "0,1,2\n1,3,4,5\n")
+expect(evaluate_map_vertex_columns 1 "xyz_vertices.txt:2: expected 'id,x,y', got 4 fields" evaluate-map ${WORK}/xyz_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt)
+file(WRITE ${WORK}/long_edges.txt "0,1,2,1,7\n")
+expect(evaluate_map_edge_columns 1 "long_edges.txt:1: expected 'id,v1,v2\\[,flag\\]', got 5 fields" evaluate-map ${M}_james_vertices.txt ${WORK}/long_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt)
 
 # Diagnosis: every sample with its partner (CSV) and the picture; the half map of james matched against itself.
 expect(evaluate_map_samples 0 "\"precision\": 1, \"recall\": 1," evaluate-map ${M}_james_vertices.txt ${M}_james_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --samples-out ${WORK}/samples.csv --svg ${WORK}/match.svg)
