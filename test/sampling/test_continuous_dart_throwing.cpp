@@ -70,6 +70,16 @@ TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
   EXPECT_THROW(continuous_bilateral_dart_throwing({1, 0, 0, 1}, 0.1, grey_step, squared), std::invalid_argument);
   EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, std::nan(""), 1}, 0.1, grey_step, squared),
                std::invalid_argument);
+  // A feature function that yields NaN somewhere: such darts never conflicted, so the run never ended.
+  Continuous_dart_throwing_options bilateral;
+  bilateral.sigma_feature = 0.5;
+  auto nan_left = [](double x, double) { return x < 0.1 ? std::nan("") : 0.0; };
+  try {
+    continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.05, nan_left, squared, bilateral);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(") is at distance NaN from itself"), std::string::npos) << e.what();
+  }
   Continuous_dart_throwing_options stop;
   stop.progress = [](double) { return false; };
   stop.max_consecutive_failures = 1000000;

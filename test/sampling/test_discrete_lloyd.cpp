@@ -323,6 +323,9 @@ TEST(Discrete_lloyd, BadInputNamesTheProblem) {
   expect_message([&] { sites_at_items(px, std::vector<int>{-1}); }, "indices[0] = -1");
   o.domain_measure = -1;
   expect_message([&] { discrete_bilateral_lloyd(px, sites, o); }, "domain_measure");
+  o.domain_measure = 0;
+  o.energy_tolerance = std::numeric_limits<double>::infinity();  // stopped every run after two iterations
+  expect_message([&] { discrete_bilateral_lloyd(px, sites, o); }, "energy_tolerance and move_tolerance must be finite");
 }
 
 }  // namespace

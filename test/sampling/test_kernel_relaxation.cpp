@@ -338,6 +338,17 @@ TEST(Kernel_relaxation, BadInputNamesTheProblem) {
   bad[1].position[0] = std::numeric_limits<double>::infinity();
   expect_message([&] { kernel_relaxation(px, bad, o); }, "site 1");
   expect_message([&] { kernel_relaxation(px, std::vector<std::size_t>{0, 99}, o); }, "indices[1] = 99");
+  o.energy_tolerance = std::numeric_limits<double>::infinity();  // stopped every run after two iterations
+  expect_message([&] { kernel_relaxation(px, sites, o); }, "energy_tolerance and move_tolerance must be finite");
+  o.energy_tolerance = 0;
+  // A tiny kernel width and a far site are accepted and need no more grid cells than points (both threw
+  // std::bad_alloc: volume / (cutoff width)^2 cells).
+  o.kernel_width = 1e-4;
+  EXPECT_EQ(kernel_relaxation(px, sites, o).status, Status::success);
+  o.kernel_width = 0;
+  auto far = sites;
+  far[0].position = {1e6, 1e6};
+  EXPECT_TRUE(std::isfinite(kernel_energy(px, far, o).energy));
 }
 
 }  // namespace

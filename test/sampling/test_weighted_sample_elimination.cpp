@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
 // Weighted sample elimination, Euclidean and bilateral.
+#include <FeatureRecon/sampling/bilateral_dart_throwing.h>
 #include <FeatureRecon/sampling/sampling_quality.h>
 #include <FeatureRecon/sampling/weighted_sample_elimination.h>
 
@@ -240,6 +241,35 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   o = {};
   o.intrinsic_dimension = 4;
   EXPECT_THROW(weighted_sample_elimination(p, 5, std::back_inserter(kept), o), std::invalid_argument);
+  o.intrinsic_dimension = 3;  // a volume measure for planar positions
+  try {
+    weighted_sample_elimination(p, 5, std::back_inserter(kept), o);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("intrinsic_dimension 3 exceeds the dimension of the positions (2)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(kept.empty());
+  // A zero normal has no direction: its feature distance is NaN, it never conflicted and was always kept.
+  using K = CGAL::Epick;
+  std::vector<std::pair<K::Point_3, K::Vector_3>> oriented;
+  for (const Point_2& q : p) oriented.push_back({K::Point_3(q.x(), q.y(), 0), K::Vector_3(0, 0, 1)});
+  oriented[13].second = K::Vector_3(0, 0, 0);
+  Elimination_options bilateral;
+  bilateral.sigma_feature = 0.5;
+  for (const auto* name : {"elimination", "quality", "darts"})
+    try {
+      const std::string which = name;
+      if (which == "elimination") weighted_sample_elimination(oriented, 5, std::back_inserter(kept), bilateral);
+      if (which == "quality") sampling_quality(oriented);
+      if (which == "darts") bilateral_dart_throwing(oriented, 0.1, std::back_inserter(kept));
+      FAIL() << name << ": expected an exception";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("item 13 has a feature at distance NaN from itself (a zero normal"),
+                std::string::npos)
+          << name << ": " << e.what();
+    }
   EXPECT_TRUE(kept.empty());
 }
 
@@ -286,6 +316,16 @@ TEST(WeightedSampleElimination, ProgressCanInterrupt) {
   std::vector<std::size_t> kept;
   const auto r = weighted_sample_elimination(white_noise(1000, 3), 100, std::back_inserter(kept), o);
   EXPECT_EQ(r.status, Status::interrupted);
+  EXPECT_TRUE(kept.empty());
+  // With a copy removed first, the first elimination of the stage is not the 16,384th of the run: the callback
+  // is still asked at the start of the stage (it was asked only at the end, and ignored).
+  std::vector<Point_2> with_copy = white_noise(10000, 4);
+  with_copy.push_back(with_copy[17]);
+  calls = 0;
+  o.progress = [&](double) { return ++calls < 0; };
+  const auto s = weighted_sample_elimination(with_copy, 2000, std::back_inserter(kept), o);
+  EXPECT_EQ(s.status, Status::interrupted);
+  EXPECT_EQ(calls, 1);
   EXPECT_TRUE(kept.empty());
 }
 

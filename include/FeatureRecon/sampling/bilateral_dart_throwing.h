@@ -154,8 +154,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
 /// as few as `count`, the throw at the largest radius tried (doubling from the largest finite distance) is cut.
 /// \param count the number of items to keep, 0 <= count <= number of items (checked; throws).
 /// \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set.
-/// \throws std::invalid_argument as bilateral_dart_throwing(), and when `options.darts.radii` or
-///   `options.darts.max_accepted` is set.
+/// \throws std::invalid_argument as bilateral_dart_throwing(), when `options.darts.radii` or
+///   `options.darts.max_accepted` is set, and for max_iterations 0.
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& items, std::size_t count,
                                                               OutputIterator selected,
@@ -170,6 +170,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   if (options.darts.max_accepted != 0)
     FeatureRecon::internal::throw_invalid_argument(fn, "darts.max_accepted cannot be combined with a target count");
   internal::check_count(count, n, fn);
+  if (options.max_iterations == 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_iterations must be >= 1 (bisection steps on the radius)");
   Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
   if (n == 0) {
     result.status = Status::degenerate_input;

@@ -13,7 +13,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -44,6 +46,7 @@ struct Continuous_sampling_result {
 /// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, the squared feature distance.
 /// \param box {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1, finite (checked; throws).
 /// \param radius the conflict radius in bilateral units (> 0, checked; throws).
+/// \throws std::invalid_argument also when a dart's feature is not at a finite distance from itself (NaN).
 /// \note Random numbers come from std::mt19937_64 turned into doubles by bit manipulation, so the same seed
 ///   gives the same samples on every platform.
 template <class FeatureFunction, class FeatureDistance>
@@ -82,6 +85,11 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
       ++result.darts;
       const std::array<double, 2> p{box[0] + (box[2] - box[0]) * uniform(), box[1] + (box[3] - box[1]) * uniform()};
       const Feature f = feature_at(p[0], p[1]);
+      const double self = double(feature_distance(f, f));
+      if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))  // a NaN feature never conflicts
+        FeatureRecon::internal::throw_invalid_argument(fn, "feature_at(", p[0], ", ", p[1], ") is at distance ",
+                                                       std::isnan(self) ? std::string("NaN") : std::to_string(self),
+                                                       " from itself (NaN in the feature?)");
       bool conflict = false;
       grid.for_each_candidate(p, [&](std::uint32_t j) {
         if (conflict) return;

@@ -261,8 +261,9 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       if (!(o.density[i] >= 0 && std::isfinite(o.density[i])))
         FeatureRecon::internal::throw_invalid_argument(fn, "density[", i, "] must be finite and >= 0, got ",
                                                        o.density[i]);
-    if (!(o.energy_tolerance >= 0) || !(o.move_tolerance >= 0))
-      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be >= 0, got ",
+    if (!(o.energy_tolerance >= 0 && std::isfinite(o.energy_tolerance)) ||
+        !(o.move_tolerance >= 0 && std::isfinite(o.move_tolerance)))
+      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ",
                                                      o.energy_tolerance, " and ", o.move_tolerance);
   }
 

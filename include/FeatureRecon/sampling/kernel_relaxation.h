@@ -133,8 +133,9 @@ class Kernel_engine : public Item_domain<Traits> {
       FeatureRecon::internal::throw_invalid_argument(fn, "cutoff must be finite and > 0, got ", o.cutoff);
     if (!(o.initial_step > 0) || !std::isfinite(o.initial_step))
       FeatureRecon::internal::throw_invalid_argument(fn, "initial_step must be finite and > 0, got ", o.initial_step);
-    if (!(o.energy_tolerance >= 0) || !(o.move_tolerance >= 0))
-      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be >= 0, got ",
+    if (!(o.energy_tolerance >= 0 && std::isfinite(o.energy_tolerance)) ||
+        !(o.move_tolerance >= 0 && std::isfinite(o.move_tolerance)))
+      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ",
                                                      o.energy_tolerance, " and ", o.move_tolerance);
     if (!o.density.empty() && o.density.size() != S.size())
       FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ", S.size(),
@@ -261,7 +262,10 @@ class Kernel_engine : public Item_domain<Traits> {
       }
     double volume = 1;
     for (int k = 0; k < D; ++k) volume *= std::max(fhi[k] - flo[k], options.cutoff * w0);
-    Ring_grid<D> grid(flo, fhi, std::max(1.0, volume / std::pow(options.cutoff * w0, D)));
+    // Cells about the cutoff radius wide, but never more than about 4 per point: a tiny kernel width or one far
+    // site asked for volume / (cutoff w)^D cells (a 64 x 64 image at width 1e-4: std::bad_alloc).
+    const double cells = std::min(volume / std::pow(options.cutoff * w0, D), 4.0 * double(q.size()) + 16);
+    Ring_grid<D> grid(flo, fhi, std::max(1.0, cells));
     grid.assign(q);
     const double inv_sp2 = 1.0 / (options.sigma_position * options.sigma_position);
     const bool features = !std::isinf(options.sigma_feature);

@@ -63,13 +63,14 @@ struct Sampling_quality {
 /// distance (O(n log n) in practice, also for sparse or clustered sets).
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
-///   sigma_feature <= 0, a negative domain_measure or an intrinsic_dimension other than 0, 2 or 3.
+///   sigma_feature <= 0, a negative domain_measure, an intrinsic_dimension other than 0, 2 or 3 or above the
+///   positions' dimension, or a feature at a non-finite distance from itself (a zero normal; naming the item).
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality_options& options = {},
                                   const Traits& traits = Traits()) {
   const char* fn = "sampling_quality";
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
-  internal::check_domain(options.domain_measure, options.intrinsic_dimension, fn);
+  internal::check_domain(options.domain_measure, options.intrinsic_dimension, Traits::dimension, fn);
   internal::Sample_set<Traits> S(items, traits, fn);
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();

@@ -114,7 +114,8 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
 /// \throws std::invalid_argument naming the argument: count larger than the input, non-finite coordinates
 ///   (naming the item), sigma_position <= 0, sigma_feature <= 0, negative max_radius or domain_measure,
-///   intrinsic_dimension other than 0, 2 or 3, alpha <= 0. The input is never modified.
+///   intrinsic_dimension other than 0, 2 or 3 or above the positions' dimension, alpha <= 0, a feature at a
+///   non-finite distance from itself (a zero normal, NaN; naming the item). The input is never modified.
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the
 ///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost neighbour
 ///   lists quadratic in their number): of each group of copies the item of lowest seeded priority stays. When
@@ -131,7 +132,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
   if (!(options.max_radius >= 0 && std::isfinite(options.max_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_radius must be finite and >= 0, got ", options.max_radius);
-  internal::check_domain(options.domain_measure, options.intrinsic_dimension, fn);
+  internal::check_domain(options.domain_measure, options.intrinsic_dimension, Traits::dimension, fn);
   if (!(options.alpha > 0 && std::isfinite(options.alpha)))
     FeatureRecon::internal::throw_invalid_argument(fn, "alpha must be finite and > 0, got ", options.alpha);
   const internal::Sample_set<Traits> S(items, traits, fn);
@@ -311,15 +312,31 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           }
         }
         const FeatureRecon::internal::Uniform_grid<D> grid(positions, spatial);
+        // The callback is asked at the start of every stage and every 16,384 items or eliminations after it,
+        // the neighbour lists included (dense clusters make them the long part).
+        auto stop = [&](std::size_t step) {
+          return (step & 16383) == 0 &&
+                 !FeatureRecon::internal::report_progress(options.progress,
+                                                          double(eliminated_before) / total_eliminations);
+        };
         std::vector<std::size_t> offset(m + 1, 0);
-        for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t i = 0; i < m; ++i) {
+          if (stop(i)) {
+            interrupted = true;
+            return;
+          }
           grid.for_each_candidate(positions[i], [&](std::uint32_t j) {
             if (j != i && pair_weight(i, j) >= 0) ++offset[i + 1];
           });
+        }
         for (std::size_t i = 0; i < m; ++i) offset[i + 1] += offset[i];
         std::vector<std::uint32_t> neighbor(offset[m]);
         std::vector<double> weight(m, 0.0);
         for (std::size_t i = 0; i < m; ++i) {
+          if (i > 0 && stop(i)) {
+            interrupted = true;
+            return;
+          }
           std::size_t k = offset[i];
           grid.for_each_candidate(positions[i], [&](std::uint32_t j) {
             if (j == i) return;
@@ -335,7 +352,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         std::vector<std::uint8_t> gone(m, 0);
         const std::size_t eliminations = m - target;
         for (std::size_t e = 0; e < eliminations; ++e) {
-          if (((eliminated_before + e) & 16383) == 0 &&
+          if (e > 0 && (e & 16383) == 0 &&
               !FeatureRecon::internal::report_progress(options.progress,
                                                        double(eliminated_before + e) / total_eliminations)) {
             interrupted = true;

@@ -21,6 +21,7 @@
 #include <limits>
 #include <cstdint>
 #include <iterator>
+#include <string>
 #include <vector>
 
 namespace FeatureRecon {
@@ -64,6 +65,13 @@ struct Sample_set {
       }
       positions.push_back(q);
       features.push_back(construct_feature(item));
+      // A feature must be at a finite distance from itself: a zero normal or a NaN channel is not, and would
+      // make every comparison with it false (never a conflict: such items were always kept).
+      const double self = CGAL::to_double(feature_distance(features.back(), features.back()));
+      if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))
+        FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a feature at distance ",
+                                                       std::isnan(self) ? std::string("NaN") : std::to_string(self),
+                                                       " from itself (a zero normal, or NaN in the feature)");
       ++i;
     }
   }
@@ -95,13 +103,18 @@ inline void check_sigmas(double sigma_position, double sigma_feature, const char
         fn, "sigma_feature must be in [1e-150, 1e150] (or infinity for Euclidean), got ", sigma_feature);
 }
 
-/// Checks a domain measure (>= 0, 0 meaning automatic) and an intrinsic dimension (0, 2 or 3).
-inline void check_domain(double measure, int intrinsic_dimension, const char* fn) {
+/// Checks a domain measure (>= 0, 0 meaning automatic) and an intrinsic dimension (0, 2 or 3, at most the
+/// dimension of the positions).
+inline void check_domain(double measure, int intrinsic_dimension, int position_dimension, const char* fn) {
   if (!(measure >= 0 && std::isfinite(measure)))
     FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ", measure);
   if (intrinsic_dimension != 0 && intrinsic_dimension != 2 && intrinsic_dimension != 3)
     FeatureRecon::internal::throw_invalid_argument(fn, "intrinsic_dimension must be 0 (automatic), 2 or 3, got ",
                                                    intrinsic_dimension);
+  if (intrinsic_dimension > position_dimension)
+    FeatureRecon::internal::throw_invalid_argument(fn, "intrinsic_dimension ", intrinsic_dimension,
+                                                   " exceeds the dimension of the positions (", position_dimension,
+                                                   ")");
 }
 
 /// Checks an exact output count against the number of items.
