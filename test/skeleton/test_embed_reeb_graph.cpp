@@ -110,6 +110,12 @@ TEST(EmbedReebGraph, BadInput) {
   g.edges = {{0, 7}};
   EXPECT_NE(message([&] { embed_reeb_graph(two, g, positions, {0.0, 1.0}, 2); }).find("graph edge 0"),
             std::string::npos);
+  // Non-finite values and positions of the graph's vertices are named (a NaN position gave NaN polylines).
+  EXPECT_NE(message([&] { embed_reeb_graph(two, positions, {0.0, std::nan("")}, 2); }).find("vertex 1 has value"),
+            std::string::npos);
+  EXPECT_NE(message([&] { embed_reeb_graph(two, {{0, 0, 0}, {std::nan(""), 0, 0}}, {0.0, 1.0}, 2); })
+                .find("vertex 1 has coordinate"),
+            std::string::npos);
   // classical_mds_3d checks its matrix.
   EXPECT_NE(message([] { classical_mds_3d({0, 1, 1}, 2); }).find("entries"), std::string::npos);
   EXPECT_NE(message([] { classical_mds_3d({0, std::nan(""), 1, 0}, 2); }).find("entry (0, 1)"), std::string::npos);

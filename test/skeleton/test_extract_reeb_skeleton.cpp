@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -208,6 +209,35 @@ TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {
   EXPECT_FALSE(skeleton::internal::first_copies(q, first));
   EXPECT_TRUE(first.empty());
   EXPECT_EQ(skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {}).edges, build_rips_graph(q, 1.0).edges);
+}
+
+TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
+  // Two noisy half circles with gaps of about 1.5 radii: repair at 2.5 joins them into a loop. The repair's
+  // distances squared their differences: at 1e160 they overflowed (no repair), at 1e-200 underflowed (all 0).
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 0.1);
+  std::vector<std::array<double, 2>> unit;
+  for (int i = 0; i < 300; ++i) {
+    const double a = 2 * M_PI * i / 300, r = 10 + noise(rng);
+    if (std::fabs(std::remainder(a, M_PI)) >= 0.075) unit.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  auto run = [&](double s) {
+    std::vector<std::array<double, 2>> p;
+    for (const auto& q : unit) p.push_back({s * q[0], s * q[1]});
+    Skeleton_options o;
+    o.delta = 2 * s;
+    o.repair_distance = 2.5 * s;
+    return extract_reeb_skeleton(p, s, o);
+  };
+  const Reeb_skeleton one = run(1);
+  ASSERT_EQ(one.repaired, 2u);
+  ASSERT_EQ(loops_of(one.graph), 1u);
+  for (const double s : {1e160, 1e-160, 1e-200}) {
+    const Reeb_skeleton scaled = run(s);
+    EXPECT_EQ(scaled.repaired, one.repaired) << "scale " << s;
+    EXPECT_EQ(num_vertices(scaled.graph), num_vertices(one.graph)) << "scale " << s;
+    EXPECT_EQ(num_edges(scaled.graph), num_edges(one.graph)) << "scale " << s;
+  }
 }
 
 TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {

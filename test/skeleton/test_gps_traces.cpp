@@ -181,6 +181,14 @@ TEST(GpsTraces, DegenerateAndBadInput) {
   Gps_trace_options bad;
   bad.sample_spacing = -1;
   EXPECT_THROW(sample_gps_traces({}, 10.0, bad), std::invalid_argument);
+  // Fixes so far out that position / spacing overflows the 64-bit grid cells (undefined behaviour before).
+  try {
+    sample_gps_traces({{{0, 0, 0}, {1e20, 0, 1}, {2e20, 0, 2}}}, 10.0);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("trip 0, fix 1 at (1e+20, 0) lies more than 2^50 times"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(GpsTraces, SkeletonOfABlock) {
@@ -320,6 +328,12 @@ TEST(GpsTraces, TraceGraphChecksItsInput) {
   T = S;
   T.points.dimension = 3;
   EXPECT_NE(message(T, 30).find("planar"), std::string::npos) << message(T, 30);
+  // A trip link in either order is the same undirected edge (a reversed one made the graph non-canonical).
+  T = S;
+  for (auto& link : T.trip_links) std::swap(link[0], link[1]);
+  const Proximity_graph reversed = build_gps_trace_graph(T, 10.0, 30);
+  EXPECT_TRUE(is_canonical(reversed));
+  EXPECT_EQ(reversed.edges, build_gps_trace_graph(S, 10.0, 30).edges);
 }
 
 TEST(GpsTraces, HandMadePointMatricesAreChecked) {

@@ -144,6 +144,27 @@ TEST(TrimEssentialStubs, ContractsTheSpurAtTheMinimumOnly) {
   EXPECT_THROW(trim_essential_stubs(R, -1), std::invalid_argument);
 }
 
+TEST(TrimEssentialStubs, AYLosesOneStubNotItsBranch) {
+  // Minimum 0 (f 0) -> fork 1 (f 1) -> maxima 2 (f 1.5) and 3 (f 1.8): both ends are stubs of the fork. Trimming
+  // both contracted the branch (1.5, 1) too; now the minimum goes and the fork, left with two arcs, stays.
+  Reeb_graph R;
+  for (const auto& [v, f] : std::vector<std::pair<Vertex_index, double>>{{0, 0}, {1, 1}, {2, 1.5}, {3, 1.8}}) {
+    Reeb_graph::Node n;
+    n.vertex = v;
+    n.value = f;
+    R.nodes.push_back(n);
+  }
+  R.arcs = {{0, 1, {}}, {1, 2, {}}, {1, 3, {}}};
+  FeatureRecon::skeleton::internal::refresh_node_types(R);
+  R.components = 1;
+  const Reeb_trim_result t = trim_essential_stubs(R, 1.0);
+  EXPECT_EQ(t.trimmed, 1u);
+  EXPECT_EQ(t.graph.nodes.size(), 3u);
+  EXPECT_EQ(t.graph.arcs.size(), 2u);
+  EXPECT_EQ(t.graph.nodes[0].vertex, 1u);
+  EXPECT_EQ(t.graph.nodes[0].members, (std::vector<Vertex_index>{0}));
+}
+
 TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   const Reeb_graph R = reeb_graph_of(lollipop());
   ASSERT_EQ(R.components, 2u);
@@ -161,6 +182,13 @@ TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   EXPECT_EQ(prune_reeb_graph_components(R, 10).graph.nodes.size(), 0u);
   EXPECT_EQ(prune_reeb_graph_components(R, 0).removed_components, 0u);
   EXPECT_THROW(prune_reeb_graph_components(R, -1), std::invalid_argument);
+  // A graph whose components field was never set (built by hand): the count is the pruned graph's own (it was
+  // 0 - removed, wrapped to 2^64 - 1), and loops() never wraps.
+  Reeb_graph unset = R;
+  unset.components = 0;
+  EXPECT_EQ(unset.loops(), 0u);
+  EXPECT_EQ(prune_reeb_graph_components(unset, 0.3).graph.components, 1u);
+  EXPECT_EQ(prune_reeb_graph_components(unset, 0.3).graph.loops(), 1u);
 }
 
 TEST(ConnectDeadEnds, ClosesATJunctionGap) {

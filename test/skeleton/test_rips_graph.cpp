@@ -370,6 +370,43 @@ TEST(FlagComplex, TrianglesAreTheThreeCliques) {
   EXPECT_THROW(build_flag_complex_2(bad), std::invalid_argument);
 }
 
+TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
+  auto problem = [](std::size_t n, std::vector<Edge> edges, std::vector<double> lengths = {}) {
+    Proximity_graph g;
+    g.number_of_vertices = n;
+    g.edges = std::move(edges);
+    g.edge_lengths = std::move(lengths);
+    EXPECT_FALSE(is_canonical(g));
+    try {
+      build_flag_complex_2(g);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  auto expect_in = [](const std::string& what, const std::string& part) {
+    EXPECT_NE(what.find(part), std::string::npos) << what;
+  };
+  expect_in(problem(3, {{0, 1}, {1, 1}}), "build_flag_complex_2: the graph is not canonical (see Proximity_graph): "
+                                          "edge 1 (1, 1) is a loop");
+  expect_in(problem(3, {{0, 1}, {1, 7}}), "edge 1 (1, 7) has a vertex beyond the 3 vertices");
+  expect_in(problem(3, {{2, 0}}), "edge 0 (2, 0) is not in increasing order");
+  expect_in(problem(3, {{0, 2}, {0, 1}}), "edge 1 (0, 1) is not after edge 0 (0, 2)");
+  expect_in(problem(3, {{0, 1}, {0, 1}}), "edge 1 (0, 1) is not after edge 0 (0, 1)");
+  expect_in(problem(3, {{0, 1}, {1, 2}}, {1.0, std::nan("")}), "edge 1 (1, 2) has length nan");
+  expect_in(problem(3, {{0, 1}}, {1.0, 2.0}), "edge_lengths has 2 values for 1 edges");
+  // connected_components() checked nothing: an edge beyond the vertices read out of bounds.
+  Proximity_graph g;
+  g.number_of_vertices = 3;
+  g.edges = {{0, 1}, {1, 5}};
+  try {
+    connected_components(g);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    expect_in(e.what(), "connected_components: edge 1 (1, 5) has a vertex beyond the 3 vertices");
+  }
+}
+
 TEST(RipsGraph, SameInputSameOutput) {
   const Coords p = random_points(500, 3, 77);
   const Proximity_graph a = build_rips_graph(p, 0.1), b = build_rips_graph(p, 0.1);

@@ -69,11 +69,17 @@ struct Reeb_graph {
     std::vector<Vertex_index> vertices;  ///< regular input vertices mapped into the arc, in increasing order
   };
   std::vector<Node> nodes;          ///< critical nodes, by increasing (f, vertex index)
-  /// Arcs by lower node; the arcs out of one node by the (f, vertex index) order of the first vertex each reaches
-  /// (its first interior vertex, or its upper node when it has none). Simplification and repair append arcs.
+  /// Arcs of reeb_graph() by lower node; the arcs out of one node by the (f, vertex index) order of the first
+  /// vertex each reaches (its first interior vertex, or its upper node when it has none). The graphs that
+  /// simplification, repair and trimming return do not keep this order.
   std::vector<Arc> arcs;
-  std::size_t components = 0;       ///< connected components of the graph
-  std::size_t loops() const { return arcs.size() + components - nodes.size(); }  ///< first Betti number
+  /// Connected components of the graph: set by every function that returns a Reeb_graph; a graph built by hand
+  /// must set it for loops().
+  std::size_t components = 0;
+  /// First Betti number: arcs + components - nodes (0 when `components` is too small for that to be one).
+  std::size_t loops() const {
+    return arcs.size() + components >= nodes.size() ? arcs.size() + components - nodes.size() : 0;
+  }
   std::size_t count(Node_type flag) const {  ///< number of nodes carrying `flag`
     return static_cast<std::size_t>(
         std::count_if(nodes.begin(), nodes.end(), [flag](const Node& n) { return (n.type & flag) != 0; }));

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace FeatureRecon {
@@ -134,18 +136,40 @@ inline Simplicial_complex_2 make_simplicial_complex_2(std::size_t number_of_vert
   return k;
 }
 
-/// True when `g` is in the canonical form documented at Proximity_graph (and, for a complex,
-/// every triangle is sorted, unique and has its three edges). O(m log m).
-inline bool is_canonical(const Proximity_graph& g) {
-  if (!g.edge_lengths.empty() && g.edge_lengths.size() != g.edges.size()) return false;
+namespace internal {
+/// The first way in which `g` is not canonical, in words naming the edge ("" when it is canonical).
+inline std::string canonical_form_problem(const Proximity_graph& g) {
+  std::ostringstream os;
+  if (!g.edge_lengths.empty() && g.edge_lengths.size() != g.edges.size()) {
+    os << "edge_lengths has " << g.edge_lengths.size() << " values for " << g.edges.size() << " edges";
+    return os.str();
+  }
   for (std::size_t i = 0; i < g.edges.size(); ++i) {
     const Edge& e = g.edges[i];
-    if (!(e[0] < e[1] && e[1] < g.number_of_vertices)) return false;
-    if (i > 0 && !(g.edges[i - 1] < e)) return false;
-    if (!g.edge_lengths.empty() && !(std::isfinite(g.edge_lengths[i]) && g.edge_lengths[i] >= 0)) return false;
+    const bool in_order = e[0] < e[1] && e[1] < g.number_of_vertices && (i == 0 || g.edges[i - 1] < e);
+    if (in_order && (g.edge_lengths.empty() || (std::isfinite(g.edge_lengths[i]) && g.edge_lengths[i] >= 0)))
+      continue;
+    os << "edge " << i << " (" << e[0] << ", " << e[1] << ")";
+    if (std::max(e[0], e[1]) >= g.number_of_vertices)
+      os << " has a vertex beyond the " << g.number_of_vertices << " vertices";
+    else if (e[0] == e[1])
+      os << " is a loop";
+    else if (e[0] > e[1])
+      os << " is not in increasing order";
+    else if (!in_order)
+      os << " is not after edge " << i - 1 << " (" << g.edges[i - 1][0] << ", " << g.edges[i - 1][1]
+         << ") (edges sorted, without repetition)";
+    else
+      os << " has length " << g.edge_lengths[i] << " (finite and >= 0 needed)";
+    return os.str();
   }
-  return true;
+  return {};
 }
+}  // namespace internal
+
+/// True when `g` is in the canonical form documented at Proximity_graph (and, for a complex,
+/// every triangle is sorted, unique and has its three edges). O(m log m).
+inline bool is_canonical(const Proximity_graph& g) { return internal::canonical_form_problem(g).empty(); }
 
 inline bool is_canonical(const Simplicial_complex_2& k) {
   if (!is_canonical(static_cast<const Proximity_graph&>(k))) return false;
@@ -184,7 +208,13 @@ struct Connected_components {
   std::size_t count = 0;             ///< number of components (isolated vertices included)
 };
 
+/// \pre every edge's vertices are < number_of_vertices (checked; throws naming the edge).
 inline Connected_components connected_components(const Proximity_graph& g) {
+  for (std::size_t i = 0; i < g.edges.size(); ++i)
+    if (std::max(g.edges[i][0], g.edges[i][1]) >= g.number_of_vertices)
+      FeatureRecon::internal::throw_invalid_argument("connected_components", "edge ", i, " (", g.edges[i][0], ", ",
+                                                     g.edges[i][1], ") has a vertex beyond the ",
+                                                     g.number_of_vertices, " vertices");
   std::vector<std::uint32_t> parent(g.number_of_vertices);
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<std::uint32_t>(i);
   auto find = [&](std::uint32_t x) {

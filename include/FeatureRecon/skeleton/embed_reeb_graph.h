@@ -215,12 +215,19 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     FeatureRecon::internal::throw_invalid_argument(fn, "the graph has ", adjacency->offsets.size() - 1,
                                                    " vertices but there are ", P.rows, " positions");
   if (!(options.level_width >= 0) || !(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
-    FeatureRecon::internal::throw_invalid_argument(fn, "level_width must be >= 0 and smoothing_weight in [0, 1]");
+    FeatureRecon::internal::throw_invalid_argument(fn, "level_width must be >= 0 and smoothing_weight in [0, 1], got ",
+                                                   options.level_width, " and ", options.smoothing_weight);
   if (std::isnan(options.max_gap))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_gap must not be NaN (0: automatic, negative: off)");
   auto check = [&](Vertex_index v) {
     if (v >= P.rows)
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " out of range [0, ", P.rows, ")");
+    if (!std::isfinite(values[v]))
+      FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has value ", values[v], " (finite needed)");
+    for (std::size_t c = 0; c < d; ++c)
+      if (!std::isfinite(P.row(v)[c]))
+        FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has coordinate ", P.row(v)[c],
+                                                       " (finite needed)");
   };
   Flat_embedding E;
   for (const auto& node : G.nodes) {
@@ -535,8 +542,8 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
 /// points cut into bins of function value) to its upper node, then smoothed by Laplacian rounds with fixed ends.
 /// Without a graph, all of an arc's points in one bin form one piece.
 /// \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param values f per point.
-/// \pre every vertex of G indexes positions and values (checked; throws); level_width >= 0, weight in [0, 1]
-///      (checked; throws).
+/// \pre every vertex of G indexes positions and values, with finite coordinates and value (checked; throws
+///      naming the vertex); level_width >= 0, weight in [0, 1] (checked; throws).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,
                                              const Embedding_options& options = {}) {

@@ -111,7 +111,9 @@ inline double median_edge_length(const Proximity_graph& g) {
 inline void check_skeleton_options(const Skeleton_options& options, const char* fn) {
   if (!(options.delta >= 0 && std::isfinite(options.delta)) ||
       !(options.repair_distance >= 0 && std::isfinite(options.repair_distance)) || !(options.prune_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "delta, repair_distance and prune_height must be finite and >= 0");
+    FeatureRecon::internal::throw_invalid_argument(fn, "delta and repair_distance must be finite and >= 0, "
+                                                   "prune_height >= 0 (infinity: prune all), got ", options.delta,
+                                                   ", ", options.repair_distance, " and ", options.prune_height);
 }
 
 /// The stages after the proximity graph; `distance` measures input space for the repair.
@@ -279,10 +281,7 @@ inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points,
 }
 
 inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Vertex_index b) {
-  double s = 0;
-  for (std::size_t c = 0; c < points.dimension; ++c)
-    s += (points.row(a)[c] - points.row(b)[c]) * (points.row(a)[c] - points.row(b)[c]);
-  return std::sqrt(s);
+  return point_distance(points.row(a), points.row(b), points.dimension);  // squares of 1e160 overflowed
 }
 
 }  // namespace internal

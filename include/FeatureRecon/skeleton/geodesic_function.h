@@ -83,8 +83,8 @@ inline Csr_graph make_csr_graph(const Proximity_graph& g) {
 /// \returns per-vertex values, per-component base points; `degenerate_input` for an empty graph.
 inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const Geodesic_options& options = {}) {
   const char* fn = "compute_geodesic_function";
-  if (!is_canonical(g))
-    FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph)");
+  if (const std::string problem = internal::canonical_form_problem(g); !problem.empty())
+    FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph): ", problem);
   const std::size_t n = g.number_of_vertices;
   for (std::size_t i = 0; i < options.base_points.size(); ++i)
     if (options.base_points[i] >= n)

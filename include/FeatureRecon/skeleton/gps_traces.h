@@ -316,6 +316,15 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.median_step = median_gps_step(trips);
   S.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : rips_radius / 2;
   S.max_link_gap = options.max_link_gap != 0 ? options.max_link_gap : std::max(4 * S.median_step, 2 * rips_radius);
+  // Grid cells are 64-bit integers of position / spacing: beyond 2^50 cells from the origin they would overflow.
+  const double finest = std::min(S.sample_spacing, rips_radius);
+  for (std::size_t t = 0; t < trips.size(); ++t)
+    for (std::size_t i = 0; i < trips[t].size(); ++i)
+      if (std::max(std::fabs(trips[t][i].x), std::fabs(trips[t][i].y)) / finest > 0x1p50)
+        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " at (", trips[t][i].x, ", ",
+                                                       trips[t][i].y, ") lies more than 2^50 times the sample "
+                                                       "spacing or radius (", finest, ") from the origin; shift "
+                                                       "or scale the traces");
   const double insert_step = S.sample_spacing / 2;
   const double spacing2 = S.sample_spacing * S.sample_spacing;
   const double cell = S.sample_spacing;
@@ -590,7 +599,8 @@ inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double r
     if (heading_tolerance >= (S.directed ? 180 : 90) ||
         internal::heading_difference(S.headings[e[0]], S.headings[e[1]], S.directed) <= heading_tolerance)
       edges.push_back(e);
-  edges.insert(edges.end(), S.trip_links.begin(), S.trip_links.end());
+  for (const Edge& link : S.trip_links)  // either order: a link is undirected in the graph
+    edges.push_back({std::min(link[0], link[1]), std::max(link[0], link[1])});
   return internal::planar_graph(S.points, std::move(edges));
 }
 

@@ -301,6 +301,7 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
       result.removed_vertices.insert(result.removed_vertices.end(), R.nodes[i].members.begin(), R.nodes[i].members.end());
       continue;
     }
+    if (c == i) ++result.graph.components;  // counted here: the input's field may be unset (a graph built by hand)
     index[i] = result.graph.nodes.size();
     result.graph.nodes.push_back(R.nodes[i]);
   }
@@ -315,7 +316,6 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
     result.graph.arcs.push_back(std::move(b));
   }
   std::sort(result.removed_vertices.begin(), result.removed_vertices.end());
-  result.graph.components = R.components - result.removed_components;
   return result;
 }
 
@@ -326,7 +326,8 @@ struct Reeb_trim_result {
 };
 
 /// Contracts, in every component, the arc from the global minimum (and the one to the global maximum) into the
-/// fork at its other end when that arc is a stub: the extremum has degree 1, the fork degree >= 3, and the arc's
+/// fork at its other end when that arc is a stub: the extremum has degree 1, the fork degree >= 3 (counting only
+/// arcs not contracted before: of a Y whose two ends are both stubs, one is contracted), and the arc's
 /// height is at most `max_height`. Simplification never removes these arcs (the global extrema are an essential
 /// pair), so on a loop the base point of the geodesic function and the farthest point stay as spurs of height
 /// about half the Rips radius. Contracting them moves the essential pair by at most `max_height` and leaves every
@@ -354,6 +355,8 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
     highest[c] = i;
   }
   std::vector<bool> drop_node(n, false), drop_arc(R.arcs.size(), false);
+  std::vector<std::size_t> degree(n);  // as stubs go: a fork left with two arcs is no fork (a Y keeps a branch)
+  for (std::size_t i = 0; i < n; ++i) degree[i] = incident[i].size();
   std::vector<Reeb_graph::Node> nodes = R.nodes;
   for (std::size_t c = 0; c < n; ++c) {
     if (lowest[c] == none) continue;
@@ -361,7 +364,7 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
       if (incident[e].size() != 1 || lowest[c] == highest[c]) continue;
       const std::size_t a = incident[e][0];
       const std::size_t fork = R.arcs[a].lower == e ? R.arcs[a].upper : R.arcs[a].lower;
-      if (drop_node[fork] || incident[fork].size() < 3) continue;
+      if (drop_node[fork] || degree[fork] < 3) continue;
       if (std::fabs(R.nodes[fork].value - R.nodes[e].value) > max_height) continue;
       auto& m = nodes[fork].members;
       m.push_back(R.nodes[e].vertex);
@@ -369,6 +372,7 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
       m.insert(m.end(), R.arcs[a].vertices.begin(), R.arcs[a].vertices.end());
       drop_node[e] = true;
       drop_arc[a] = true;
+      --degree[fork];
       ++result.trimmed;
     }
   }

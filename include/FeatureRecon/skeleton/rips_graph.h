@@ -189,27 +189,28 @@ inline bool use_kd_tree(const Point_matrix& m, Neighbor_search s, const char* fn
   return s == Neighbor_search::kd_tree || (s == Neighbor_search::automatic && m.dimension <= 3);
 }
 
+/// Euclidean distance of two points of `dimension` coordinates, exact to rounding at every scale: when the
+/// squares overflow or lose their digits, scaled by the largest difference, as hypot does (inf only when the
+/// distance itself exceeds the largest double).
+inline double point_distance(const double* p, const double* q, std::size_t dimension) {
+  double s = 0;
+  for (std::size_t c = 0; c < dimension; ++c) s += (p[c] - q[c]) * (p[c] - q[c]);
+  if (s < std::numeric_limits<double>::infinity() && !(s < 1e-280)) return std::sqrt(s);
+  double a = 0;
+  for (std::size_t c = 0; c < dimension; ++c) a = std::max(a, std::fabs(p[c] - q[c]));
+  s = 0;
+  if (a > 0 && a < std::numeric_limits<double>::infinity())
+    for (std::size_t c = 0; c < dimension; ++c) s += ((p[c] - q[c]) / a) * ((p[c] - q[c]) / a);
+  return a * std::sqrt(s);
+}
+
 inline void add_edge_lengths(const Point_matrix& m, Proximity_graph& g, const char* fn) {
   g.edge_lengths.resize(g.edges.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) {
-    const double* p = m.row(g.edges[e][0]);
-    const double* q = m.row(g.edges[e][1]);
-    double s = 0;
-    for (std::size_t c = 0; c < m.dimension; ++c) s += (p[c] - q[c]) * (p[c] - q[c]);
-    if (!(s < std::numeric_limits<double>::infinity()) || s < 1e-280) {
-      // The squares overflowed (or lost their digits): scale by the largest difference, as hypot does.
-      double a = 0;
-      for (std::size_t c = 0; c < m.dimension; ++c) a = std::max(a, std::fabs(p[c] - q[c]));
-      s = 0;
-      if (a > 0 && a < std::numeric_limits<double>::infinity())
-        for (std::size_t c = 0; c < m.dimension; ++c) s += ((p[c] - q[c]) / a) * ((p[c] - q[c]) / a);
-      g.edge_lengths[e] = a * std::sqrt(s);
-      if (!(g.edge_lengths[e] < std::numeric_limits<double>::infinity()))
-        FeatureRecon::internal::throw_invalid_argument(fn, "edge ", e, " (points ", g.edges[e][0],
-                                                       " and ", g.edges[e][1], ") is longer than the largest double");
-      continue;
-    }
-    g.edge_lengths[e] = std::sqrt(s);
+    g.edge_lengths[e] = point_distance(m.row(g.edges[e][0]), m.row(g.edges[e][1]), m.dimension);
+    if (!(g.edge_lengths[e] < std::numeric_limits<double>::infinity()))
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", e, " (points ", g.edges[e][0], " and ",
+                                                     g.edges[e][1], ") is longer than the largest double");
   }
 }
 /// \endcond
@@ -585,8 +586,8 @@ Proximity_graph proximity_graph_from_boost_graph(const Graph& graph, WeightMap w
 /// \pre g is canonical (checked; throws).
 inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Progress_callback& progress = {}) {
   const char* fn = "build_flag_complex_2";
-  if (!is_canonical(g))
-    FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph)");
+  if (const std::string problem = internal::canonical_form_problem(g); !problem.empty())
+    FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph): ", problem);
   Simplicial_complex_2 k;
   k.number_of_vertices = g.number_of_vertices;
   FeatureRecon::internal::reserve_huge(k.edges, g.edges.size());
