@@ -16,9 +16,13 @@ namespace FeatureRecon {
 namespace internal {
 
 /// \cond
-/// The frame of a grid over points of dimension D (2 or 3, doubles): cubic cells of side >= `cell` keyed by
-/// packed integer coordinates relative to the bounding box (the side grows when the box holds more than 2^20
-/// cells per axis, so keys fit 21 bits per axis).
+/// The frame of a grid over points of dimension D (2 or 3, doubles): cubic cells of side `cell` keyed by their
+/// integer coordinates relative to the bounding box. When the box holds at most 2^20 cells per axis the key packs
+/// the coordinates (21 bits per axis, keys ordered like the cells); beyond that (one far outlier, a tiny radius)
+/// the key is a 64-bit mix of the coordinates, so the cells keep their side (the side used to grow to
+/// extent / 2^20, putting a unit square's points in one cell beside an outlier at 1e7: quadratic). Keys of
+/// distinct cells may then collide: a cell's list may hold points of another cell, which callers drop by their
+/// exact distance test, and for_each_neighbor_key() visits each key once.
 template <int D>
 class Grid_frame {
  public:
@@ -36,45 +40,69 @@ class Grid_frame {
       }
     double extent = 0;
     for (int k = 0; k < D; ++k) extent = std::max(extent, high[k] - m_low[k]);
-    m_cell = std::max({cell, extent / double(1 << 20), std::numeric_limits<double>::min()});
+    m_cell = std::max(cell, std::numeric_limits<double>::min());
+    m_hashed = extent / m_cell > double(1 << 20);
+    // Hashed: cell coordinates stay far inside 64-bit integers.
+    if (m_hashed) m_cell = std::max(m_cell, extent / 0x1p60);
   }
   double cell_size() const { return m_cell; }
   Cell cell_of(const Point& p) const {
     Cell c;
-    for (int k = 0; k < D; ++k)
-      c[k] = std::min<std::int64_t>(static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell)), kLimit - 1);
+    for (int k = 0; k < D; ++k) {
+      c[k] = static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell));
+      if (!m_hashed) c[k] = std::min<std::int64_t>(c[k], kLimit - 1);
+    }
     return c;
   }
-  static std::uint64_t key(const Cell& c) {
+  std::uint64_t key(const Cell& c) const {
     std::uint64_t k = 0;
-    for (int i = 0; i < D; ++i) k = (k << 21) | static_cast<std::uint64_t>(c[i]);
+    if (!m_hashed) {
+      for (int i = 0; i < D; ++i) k = (k << 21) | static_cast<std::uint64_t>(c[i]);
+      return k;
+    }
+    for (int i = 0; i < D; ++i) {  // splitmix64 steps over the coordinates
+      k += static_cast<std::uint64_t>(c[i]) + 0x9e3779b97f4a7c15ull;
+      k = (k ^ (k >> 30)) * 0xbf58476d1ce4e5b9ull;
+      k = (k ^ (k >> 27)) * 0x94d049bb133111ebull;
+      k ^= k >> 31;
+    }
     return k;
   }
-  /// Calls f(key) for each of the 3^D cells around p that lies inside the key range.
+  /// Calls f(key) once for each key of the 3^D cells around p (inside the key range when packed).
   template <class F>
   void for_each_neighbor_key(const Point& p, F&& f) const {
     const Cell c = cell_of(p);
     Cell q;
-    visit<0>(c, q, f);
+    std::array<std::uint64_t, 27> keys;
+    std::size_t count = 0;
+    visit<0>(c, q, [&](std::uint64_t k) { keys[count++] = k; });
+    if (m_hashed) {
+      std::sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count));
+      count = static_cast<std::size_t>(std::unique(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count)) -
+                                       keys.begin());
+    }
+    for (std::size_t i = 0; i < count; ++i) f(keys[i]);
   }
 
  private:
   static constexpr std::int64_t kLimit = std::int64_t(1) << 21;
   template <int K, class F>
-  void visit(const Cell& c, Cell& q, F& f) const {
+  void visit(const Cell& c, Cell& q, F&& f) const {
     for (std::int64_t d = -1; d <= 1; ++d) {
       q[K] = c[K] + d;
       if constexpr (K + 1 < D) {
         visit<K + 1>(c, q, f);
       } else {
         bool inside = true;
-        for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < kLimit;
+        if (!m_hashed)
+          for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < kLimit;
         if (inside) f(key(q));
       }
     }
   }
   Point m_low{};
   double m_cell = 1;
+  bool m_hashed = false;
 };
 
 /// All points bucketed at once: the candidates within distance `cell` of a point are in the 3^D cells around

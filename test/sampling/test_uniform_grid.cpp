@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (c) 2026 The FeatureRecon authors.
+#include <FeatureRecon/internal/Uniform_grid.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+using FeatureRecon::internal::Dynamic_grid;
+using FeatureRecon::internal::Grid_frame;
+using FeatureRecon::internal::Uniform_grid;
+
+namespace {
+// Brute force: the points within `r` of q, sorted.
+template <int D>
+std::vector<std::uint32_t> within(const std::vector<std::array<double, D>>& p, const std::array<double, D>& q,
+                                  double r) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    double d2 = 0;
+    for (int k = 0; k < D; ++k) d2 += (p[i][k] - q[k]) * (p[i][k] - q[k]);
+    if (d2 <= r * r) out.push_back(i);
+  }
+  return out;
+}
+
+// Every point within the cell size of a query is a candidate exactly once, for both grids.
+template <int D>
+void expect_exact_candidates(const std::vector<std::array<double, D>>& p, double r, std::size_t max_candidates) {
+  const Uniform_grid<D> grid(p, r);
+  Dynamic_grid<D> dynamic(p, r);
+  for (std::uint32_t i = 0; i < p.size(); ++i) dynamic.insert(i);
+  EXPECT_EQ(grid.cell_size(), r);
+  for (std::size_t i = 0; i < p.size(); i += 7) {
+    for (int which = 0; which < 2; ++which) {
+      std::vector<std::uint32_t> candidates, near;
+      auto take = [&](std::uint32_t j) { candidates.push_back(j); };
+      if (which == 0) grid.for_each_candidate(p[i], take);
+      else dynamic.for_each_candidate(p[i], take);
+      std::sort(candidates.begin(), candidates.end());
+      EXPECT_TRUE(std::adjacent_find(candidates.begin(), candidates.end()) == candidates.end()) << "point " << i;
+      EXPECT_LE(candidates.size(), max_candidates) << "point " << i;
+      for (std::uint32_t j : candidates) {
+        double d2 = 0;
+        for (int k = 0; k < D; ++k) d2 += (p[j][k] - p[i][k]) * (p[j][k] - p[i][k]);
+        if (d2 <= r * r) near.push_back(j);
+      }
+      EXPECT_EQ(near, within<D>(p, p[i], r)) << "point " << i;
+    }
+  }
+}
+}  // namespace
+
+TEST(UniformGrid, AFarOutlierKeepsTheCellSize) {
+  // 4,000 points in the unit square and one at 1e7: the cells used to grow to 1e7 / 2^20 = 9.5, one cell for
+  // the whole square (dart throwing and elimination became quadratic). Now hashed cells keep the side 0.01.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::array<double, 2>> p(4000);
+  for (auto& q : p) q = {u(rng), u(rng)};
+  expect_exact_candidates<2>(p, 0.01, 60);  // packed keys (the square alone)
+  p.push_back({1e7, 0});
+  EXPECT_GT(Grid_frame<2>(p, 0.01).cell_size(), 0.0);
+  expect_exact_candidates<2>(p, 0.01, 60);
+  // 3-D, with the outlier far along every axis, and a cloud 1e-9 wide at 1e6 (cells of 1e-11).
+  std::vector<std::array<double, 3>> s(3000);
+  for (auto& q : s) q = {u(rng), u(rng), u(rng)};
+  s.push_back({-3e8, 2e9, 5e7});
+  expect_exact_candidates<3>(s, 0.05, 200);
+  for (auto& q : s) q = {1e6 + 1e-9 * u(rng), 1e6 + 1e-9 * u(rng), 1e6};
+  s.push_back({0, 0, 0});
+  expect_exact_candidates<3>(s, 1e-11, 200);
+}
