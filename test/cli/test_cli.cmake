@@ -532,6 +532,9 @@ expect(missing_extensionless_input 1 "nowhere/none: cannot open for reading" sam
 expect(sample_stats_sigma_without_normals 2 "--sigma-feature needs normals in .*blank_first.xyz" sample-stats --input ${WORK}/blank_first.xyz --sigma-feature 0.5)
 file(WRITE ${WORK}/zero_normal.xyz "0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n")
 expect(sample_stats_zero_normal 1 "zero_normal.xyz: point 1 has a zero normal" sample-stats --input ${WORK}/zero_normal.xyz --sigma-feature 0.5)
+# Euclidean runs never compare normals: a zero normal is carried along, not refused.
+expect(sample_zero_normal_euclidean 0 "\"kept\": 2," sample --input ${WORK}/zero_normal.xyz --count 2 --out ${WORK}/zero_normal_out.xyz --quiet)
+expect(sample_stats_zero_normal_euclidean 0 "\"samples\": [0-9]+," sample-stats --input ${WORK}/zero_normal.xyz)
 # Outputs of the wrong kind are refused before the work, naming the option (exit 2).
 expect(sample_out_extension 2 "--out writes a point cloud: give a file ending in .ply, .off or .xyz, got '.*o.txt'" sample --input ${WORK}/wall.xyz --count 5 --out ${WORK}/o.txt)
 expect(sample_image_picture_extension 2 "--picture writes a raster picture: give a file ending in .png, .jpg, .jpeg, .pgm or .ppm" sample-image --input ${WORK}/line.pgm --count 5 --picture ${WORK}/p.txt)

@@ -262,8 +262,12 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
     try {
       const std::string which = name;
       if (which == "elimination") weighted_sample_elimination(oriented, 5, std::back_inserter(kept), bilateral);
-      if (which == "quality") sampling_quality(oriented);
-      if (which == "darts") bilateral_dart_throwing(oriented, 0.1, std::back_inserter(kept));
+      Sampling_quality_options q;
+      q.sigma_feature = 0.5;
+      Dart_throwing_options d;
+      d.sigma_feature = 0.5;
+      if (which == "quality") sampling_quality(oriented, q);
+      if (which == "darts") bilateral_dart_throwing(oriented, 0.1, std::back_inserter(kept), d);
       FAIL() << name << ": expected an exception";
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find("item 13 has a feature at distance NaN from itself (a zero normal"),
@@ -271,6 +275,8 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
           << name << ": " << e.what();
     }
   EXPECT_TRUE(kept.empty());
+  // Euclidean sampling never compares normals: the zero normal is carried along.
+  EXPECT_EQ(weighted_sample_elimination(oriented, 5, std::back_inserter(kept)).selected, 5u);
 }
 
 // Far fewer kept than given: one elimination stage would give every point about 3.6 n / count neighbours (200,000

@@ -125,7 +125,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
   const char* fn = "bilateral_dart_throwing";
   if (options.radii.empty() && !(std::isfinite(radius) && radius > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
-  const internal::Sample_set<Traits> S(items, traits, fn);
+  const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   internal::check_dart_options(options, S.size(), fn);
   Sampling_result<OutputIterator> result{selected, 0, radius, Status::success};
   if (S.size() == 0) {
@@ -162,7 +162,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
                                                               const Dart_throwing_count_options& options = {},
                                                               const Traits& traits = Traits()) {
   const char* fn = "bilateral_dart_throwing_count";
-  const internal::Sample_set<Traits> S(items, traits, fn);
+  const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.darts.sigma_feature));
   const std::size_t n = S.size();
   internal::check_dart_options(options.darts, n, fn);
   if (!options.darts.radii.empty())

@@ -64,14 +64,15 @@ struct Sampling_quality {
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure, an intrinsic_dimension other than 0, 2 or 3 or above the
-///   positions' dimension, or a feature at a non-finite distance from itself (a zero normal; naming the item).
+///   positions' dimension, or with a finite sigma_feature a feature at a non-finite distance from itself (a
+///   zero normal; naming the item).
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality_options& options = {},
                                   const Traits& traits = Traits()) {
   const char* fn = "sampling_quality";
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
   internal::check_domain(options.domain_measure, options.intrinsic_dimension, Traits::dimension, fn);
-  internal::Sample_set<Traits> S(items, traits, fn);
+  internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();
   Sampling_quality q;
@@ -329,7 +330,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
   const char* fn = "sampling_spectrum";
   static_assert(Traits::dimension == 2, "FeatureRecon: sampling_spectrum takes 2D positions");
   internal::check_spectrum_threshold(options.threshold, fn);
-  const internal::Sample_set<Traits> S(items, traits, fn);
+  const internal::Sample_set<Traits> S(items, traits, fn, false);
   const std::size_t n = S.size();
   Sampling_spectrum result;
   result.samples = n;

@@ -114,8 +114,9 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
 /// \throws std::invalid_argument naming the argument: count larger than the input, non-finite coordinates
 ///   (naming the item), sigma_position <= 0, sigma_feature <= 0, negative max_radius or domain_measure,
-///   intrinsic_dimension other than 0, 2 or 3 or above the positions' dimension, alpha <= 0, a feature at a
-///   non-finite distance from itself (a zero normal, NaN; naming the item). The input is never modified.
+///   intrinsic_dimension other than 0, 2 or 3 or above the positions' dimension, alpha <= 0, with a finite
+///   sigma_feature a feature at a non-finite distance from itself (a zero normal, NaN; naming the item). The
+///   input is never modified.
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the
 ///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost neighbour
 ///   lists quadratic in their number): of each group of copies the item of lowest seeded priority stays. When
@@ -135,7 +136,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   internal::check_domain(options.domain_measure, options.intrinsic_dimension, Traits::dimension, fn);
   if (!(options.alpha > 0 && std::isfinite(options.alpha)))
     FeatureRecon::internal::throw_invalid_argument(fn, "alpha must be finite and > 0, got ", options.alpha);
-  const internal::Sample_set<Traits> S(items, traits, fn);
+  const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();
   internal::check_count(count, n, fn);

@@ -40,8 +40,10 @@ struct Sample_set {
   std::vector<Feature> features;
   typename Traits::Compute_feature_distance feature_distance;
 
+  /// `compared`: whether features will be compared (a finite sigma_feature); only then must each be at a finite
+  /// distance from itself (checked; throws naming the item).
   template <class ItemRange>
-  Sample_set(const ItemRange& items, const Traits& traits, const char* fn)
+  Sample_set(const ItemRange& items, const Traits& traits, const char* fn, bool compared = true)
       : feature_distance(traits.compute_feature_distance_object()) {
     static_assert(FeatureRecon::internal::Is_feature_point_traits<Traits>::value,
                   "FeatureRecon: the traits class is not a model of FeaturePointTraits (see "
@@ -67,7 +69,7 @@ struct Sample_set {
       features.push_back(construct_feature(item));
       // A feature must be at a finite distance from itself: a zero normal or a NaN channel is not, and would
       // make every comparison with it false (never a conflict: such items were always kept).
-      const double self = CGAL::to_double(feature_distance(features.back(), features.back()));
+      const double self = compared ? CGAL::to_double(feature_distance(features.back(), features.back())) : 0.0;
       if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))
         FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a feature at distance ",
                                                        std::isnan(self) ? std::string("NaN") : std::to_string(self),
