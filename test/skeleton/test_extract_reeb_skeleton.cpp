@@ -90,6 +90,32 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   Skeleton_options bad;
   bad.delta = -1;
   EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad), std::invalid_argument);
+  // Messages name the function called, not the stage that noticed (they began with build_rips_graph and
+  // build_flag_complex_2), and say what is wrong.
+  auto message = [](auto&& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  EXPECT_EQ(message([] { extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, std::nan("")); })
+                .rfind("extract_reeb_skeleton: rips_radius must be finite and >= 0", 0),
+            0u);
+  Proximity_graph g;
+  g.number_of_vertices = 2;
+  g.edges = {{1, 0}};
+  Point_matrix two;
+  two.rows = 2;
+  two.dimension = 2;
+  two.data = {0, 0, 1, 0};
+  EXPECT_EQ(message([&] { extract_reeb_skeleton(g, two); })
+                .rfind("extract_reeb_skeleton: the graph is not canonical (see Proximity_graph): edge 0 (1, 0)", 0),
+            0u);
+  bad = {};
+  bad.prune_height = -1;
+  EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("got 0, 0 and -1"), std::string::npos);
 }
 
 TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {

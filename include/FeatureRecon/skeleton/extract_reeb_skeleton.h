@@ -298,6 +298,9 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
                                            const Skeleton_options& options = {}) {
   internal::check_skeleton_options(options, "extract_reeb_skeleton");
   internal::check_point_matrix(points, "extract_reeb_skeleton");
+  if (!(std::isfinite(rips_radius) && rips_radius >= 0))
+    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "rips_radius must be finite and >= 0, got ",
+                                                   rips_radius);
   Proximity_graph_options po;
   po.search = options.search;
   bool stopped = false;  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
@@ -326,6 +329,9 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
     FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "the graph has ", graph.number_of_vertices,
                                                    " vertices but coordinates has ", coordinates.rows, " rows");
   internal::check_point_matrix(coordinates, "extract_reeb_skeleton", "coordinates");
+  if (const std::string problem = internal::canonical_form_problem(graph); !problem.empty())
+    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton",
+                                                   "the graph is not canonical (see Proximity_graph): ", problem);
   return internal::skeleton_from_graph(
       graph, coordinates,
       [&coordinates](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(coordinates, a, b); },
