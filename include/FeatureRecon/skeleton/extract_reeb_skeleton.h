@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace FeatureRecon {
@@ -116,10 +117,12 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
                                                    ", ", options.repair_distance, " and ", options.prune_height);
 }
 
-/// The stages after the proximity graph; `distance` measures input space for the repair.
-template <class Distance>
+/// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr or
+/// 1-Lipschitz for it (repair_reeb_graph()).
+template <class Distance, class Bound>
 Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matrix& coordinates,
-                                  const Distance& distance, const Skeleton_options& options, double progress_start) {
+                                  const Distance& distance, const Skeleton_options& options, double progress_start,
+                                  Bound bound) {
   const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
@@ -160,11 +163,11 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   result.removed_branches = S.removed_branches;
   result.removed_loops = S.removed_loops;
   if (options.repair_distance > 0) {
-    const Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance);
+    const Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance, bound);
     result.repaired = fixed.joined;
     Reeb_graph joined = fixed.graph;
     if (options.connect_dead_ends) {
-      Reeb_dead_end_result ends = connect_dead_ends(joined, A.values(), options.repair_distance, distance);
+      Reeb_dead_end_result ends = connect_dead_ends(joined, A.values(), options.repair_distance, distance, bound);
       result.connected_dead_ends = ends.connected;
       joined = std::move(ends.graph);
     }
@@ -280,6 +283,25 @@ inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points,
   return g;
 }
 
+/// The coordinate axis along which the points spread the most: its coordinate bounds the Euclidean distance
+/// (1-Lipschitz) and separates the most pairs for repair_reeb_graph() and connect_dead_ends().
+inline std::size_t widest_axis(const Point_matrix& points) {
+  std::size_t best = 0;
+  double widest = -1;
+  for (std::size_t c = 0; c < points.dimension; ++c) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < points.rows; ++i) {
+      lo = std::min(lo, points.row(i)[c]);
+      hi = std::max(hi, points.row(i)[c]);
+    }
+    if (hi - lo > widest) {
+      widest = hi - lo;
+      best = c;
+    }
+  }
+  return best;
+}
+
 inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Vertex_index b) {
   return point_distance(points.row(a), points.row(b), points.dimension);  // squares of 1e160 overflowed
 }
@@ -315,7 +337,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   }
   return internal::skeleton_from_graph(
       g, points,
-      [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3);
+      [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3,
+      [&points, axis = internal::widest_axis(points)](Vertex_index v) { return points.row(v)[axis]; });
 }
 
 /// The skeleton of a proximity graph whose vertices have coordinates (any dimension; projected to 3D by PCA
@@ -335,7 +358,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
   return internal::skeleton_from_graph(
       graph, coordinates,
       [&coordinates](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(coordinates, a, b); },
-      options, 0.0);
+      options, 0.0,
+      [&coordinates, axis = internal::widest_axis(coordinates)](Vertex_index v) { return coordinates.row(v)[axis]; });
 }
 
 /// The skeleton of a dense distance matrix: Rips graph at `rips_radius` on the matrix, then the stages of
@@ -366,7 +390,8 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   }
   return internal::skeleton_from_graph(
       g, mds,
-      [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3);
+      [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3,
+      nullptr);
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.

@@ -8,8 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <tuple>
+#include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace FeatureRecon {
@@ -71,6 +75,21 @@ inline std::vector<std::size_t> node_components(const Reeb_graph& G) {
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = find(i);
   return parent;
 }
+/// The nodes `ends` (indices into G.nodes) as (bound of their vertex, node), sorted.
+template <class Bound>
+std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends, Bound& bound,
+                                                            const Reeb_graph& G) {
+  std::vector<std::pair<double, std::size_t>> swept;
+  swept.reserve(ends.size());
+  for (const std::size_t e : ends) swept.emplace_back(static_cast<double>(bound(G.nodes[e].vertex)), e);
+  std::sort(swept.begin(), swept.end());
+  return swept;
+}
+/// The bound difference up to which a pair is measured: max_distance with room for the rounding of a computed
+/// distance (a Euclidean distance may come out an ulp below the difference of one coordinate).
+inline double bound_window(double max_distance) {
+  return max_distance * (1 + 1e-12) + std::numeric_limits<double>::denorm_min();
+}
 }  // namespace internal
 
 /// Result of repair_reeb_graph().
@@ -85,12 +104,16 @@ struct Reeb_repair_result {
 /// ends of one arc (an isolated segment) are never joined: when they are each other's closest free end, the
 /// segment is left as it is (no loop of two arcs), and neither end joins anything farther. The new features are
 /// not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and
-/// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes.
+/// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes; with a `bound`, only pairs whose
+/// bounds differ by at most max_distance are measured (the same result).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
+/// \tparam Bound std::nullptr_t (none, every pair is measured) or a callable `double(Vertex_index)` that is
+///   1-Lipschitz for the distance, |bound(a) - bound(b)| <= distance(a, b) (a coordinate of Euclidean points).
 /// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its arcs
 /// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them (all checked; throws).
-template <class Distance>
-Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance) {
+template <class Distance, class Bound = std::nullptr_t>
+Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance,
+                                     Bound bound = nullptr) {
   const char* fn = "repair_reeb_graph";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
@@ -109,11 +132,21 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
   for (std::size_t i = 0; i < G.nodes.size(); ++i)
     if (degree[i] == 1) ends.push_back(i);
   std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
-  for (std::size_t a = 0; a < ends.size(); ++a)
-    for (std::size_t b = a + 1; b < ends.size(); ++b) {
-      const double d = static_cast<double>(distance(G.nodes[ends[a]].vertex, G.nodes[ends[b]].vertex));
-      if (d <= max_distance) candidates.emplace_back(d, ends[a], ends[b]);
-    }
+  auto measure = [&](std::size_t x, std::size_t y) {  // x < y, as node indices
+    const double d = static_cast<double>(distance(G.nodes[x].vertex, G.nodes[y].vertex));
+    if (d <= max_distance) candidates.emplace_back(d, x, y);
+  };
+  if constexpr (std::is_same<Bound, std::nullptr_t>::value) {
+    for (std::size_t a = 0; a < ends.size(); ++a)
+      for (std::size_t b = a + 1; b < ends.size(); ++b) measure(ends[a], ends[b]);
+  } else {
+    // A sweep over the ends sorted by their bound: a pair farther apart in bound is farther apart in distance.
+    const std::vector<std::pair<double, std::size_t>> swept = internal::sorted_by_bound(ends, bound, G);
+    const double window = internal::bound_window(max_distance);
+    for (std::size_t a = 0; a < swept.size(); ++a)
+      for (std::size_t b = a + 1; b < swept.size() && swept[b].first - swept[a].first <= window; ++b)
+        measure(std::min(swept[a].second, swept[b].second), std::max(swept[a].second, swept[b].second));
+  }
   std::sort(candidates.begin(), candidates.end());
   for (const auto& [d, x, y] : candidates) {
     if (degree[x] != 1 || degree[y] != 1) continue;
@@ -147,13 +180,15 @@ struct Reeb_dead_end_result {
 /// each other is not connected (too short to be a street end). Dead ends are taken in node order and see the arcs added
 /// before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends
 /// and n input vertices in the graph (the bookkeeping is O(1) per dead end); the arcs come back in the order of
-/// Reeb_graph::arcs. \param values f of every input vertex (for the new nodes).
+/// Reeb_graph::arcs. With a `bound` (as for repair_reeb_graph()), only the vertices whose bound lies within
+/// max_distance of the dead end's are measured: O(n log n + k w) for w such vertices, the same result.
+/// \param values f of every input vertex (for the new nodes).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
 /// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes `values`
 /// (all checked; throws).
-template <class Distance>
+template <class Distance, class Bound = std::nullptr_t>
 Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values, double max_distance,
-                                       Distance distance) {
+                                       Distance distance, Bound bound = nullptr) {
   const char* fn = "connect_dead_ends";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
@@ -173,6 +208,27 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
   std::vector<Vertex_index> ends;  // by input vertex: node indices change when arcs split
   for (std::size_t i = 0; i < G.nodes.size(); ++i)
     if (degree[i] == 1) ends.push_back(G.nodes[i].vertex);
+  // With a bound: every vertex of the graph sorted by bound, and where it is now (a node, or an arc and the
+  // position in it; updated when an arc splits). Splits only move vertices, so the sorted list stays valid.
+  constexpr bool bounded = !std::is_same<Bound, std::nullptr_t>::value;
+  const std::size_t no_node = static_cast<std::size_t>(-1);
+  struct Place {
+    std::size_t node, arc, position;  // node no_node: interior vertex `position` of `arc`
+  };
+  std::vector<std::pair<double, Vertex_index>> by_bound;
+  std::unordered_map<Vertex_index, Place> place;
+  if constexpr (bounded) {
+    for (std::size_t i = 0; i < G.nodes.size(); ++i) {
+      by_bound.emplace_back(static_cast<double>(bound(G.nodes[i].vertex)), G.nodes[i].vertex);
+      place[G.nodes[i].vertex] = {i, 0, 0};
+    }
+    for (std::size_t a = 0; a < G.arcs.size(); ++a)
+      for (std::size_t k = 0; k < G.arcs[a].vertices.size(); ++k) {
+        by_bound.emplace_back(static_cast<double>(bound(G.arcs[a].vertices[k])), G.arcs[a].vertices[k]);
+        place[G.arcs[a].vertices[k]] = {no_node, a, k};
+      }
+    std::sort(by_bound.begin(), by_bound.end());
+  }
   for (const Vertex_index end_vertex : ends) {
     const std::size_t u = node_of.at(end_vertex);
     if (degree[u] != 1) continue;
@@ -199,11 +255,26 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
         found = true;
       }
     };
-    for (std::size_t i = 0; i < G.nodes.size(); ++i)
-      if (i != u && i != neighbour) consider(G.nodes[i].vertex, i, G.arcs.size(), 0);
-    for (std::size_t a = 0; a < G.arcs.size(); ++a)
-      if (a != own)
-        for (std::size_t k = 0; k < G.arcs[a].vertices.size(); ++k) consider(G.arcs[a].vertices[k], G.nodes.size(), a, k);
+    if constexpr (bounded) {
+      // The candidates' order does not matter: the closest wins, ties by smallest vertex.
+      const double b = static_cast<double>(bound(end_vertex)), window = internal::bound_window(max_distance);
+      auto it = std::lower_bound(by_bound.begin(), by_bound.end(), std::make_pair(b - window, Vertex_index(0)));
+      for (; it != by_bound.end() && it->first <= b + window; ++it) {
+        const Place& at = place.at(it->second);
+        if (at.node != no_node) {
+          if (at.node != u && at.node != neighbour) consider(it->second, at.node, G.arcs.size(), 0);
+        } else if (at.arc != own) {
+          consider(it->second, G.nodes.size(), at.arc, at.position);
+        }
+      }
+    } else {
+      for (std::size_t i = 0; i < G.nodes.size(); ++i)
+        if (i != u && i != neighbour) consider(G.nodes[i].vertex, i, G.arcs.size(), 0);
+      for (std::size_t a = 0; a < G.arcs.size(); ++a)
+        if (a != own)
+          for (std::size_t k = 0; k < G.arcs[a].vertices.size(); ++k)
+            consider(G.arcs[a].vertices[k], G.nodes.size(), a, k);
+    }
     if (!found) continue;
     std::size_t target = best_node;
     if (best_arc < G.arcs.size()) {
@@ -225,6 +296,11 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
       std::replace(incident[old_upper].begin(), incident[old_upper].end(), best_arc, G.arcs.size());
       incident.push_back({best_arc, G.arcs.size()});
       degree.push_back(2);
+      if constexpr (bounded) {
+        place[best_vertex] = {target, 0, 0};
+        for (std::size_t k = 0; k < upper_part.vertices.size(); ++k)
+          place[upper_part.vertices[k]] = {no_node, G.arcs.size(), k};
+      }
       G.arcs.push_back(std::move(upper_part));
     }
     Reeb_graph::Arc link;
