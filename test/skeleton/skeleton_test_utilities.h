@@ -14,6 +14,8 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -24,6 +26,17 @@ using skeleton::Edge;
 using skeleton::Simplicial_complex_2;
 using skeleton::Triangle;
 using skeleton::Vertex_index;
+
+/// The message of the std::invalid_argument that call() throws, or "no exception".
+template <class Call>
+std::string invalid_argument_message(Call&& call) {
+  try {
+    call();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "no exception";
+}
 
 /// A complex with a function on its vertices.
 struct Complex_with_function {

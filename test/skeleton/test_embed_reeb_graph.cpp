@@ -11,6 +11,8 @@
 #include <cmath>
 #include <random>
 
+#include "skeleton_test_utilities.h"
+
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -94,14 +96,7 @@ TEST(EmbedReebGraph, BadInput) {
   Reeb_graph two;
   two.nodes = {{0, 0.0, minimum, {}}, {1, 1.0, maximum, {}}};
   two.arcs = {{0, 1, {}}, {0, 5, {}}};
-  auto message = [](auto&& call) {
-    try {
-      call();
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no exception");
-  };
+  auto message = [](auto&& call) { return FeatureRecon::test::invalid_argument_message(call); };
   const std::vector<std::array<double, 3>> positions{{0, 0, 0}, {1, 0, 0}};
   EXPECT_NE(message([&] { embed_reeb_graph(two, positions, {0.0, 1.0}, 2); }).find("arc 1"), std::string::npos);
   two.arcs.pop_back();

@@ -92,14 +92,7 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad), std::invalid_argument);
   // Messages name the function called, not the stage that noticed (they began with build_rips_graph and
   // build_flag_complex_2), and say what is wrong.
-  auto message = [](auto&& call) {
-    try {
-      call();
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no exception");
-  };
+  auto message = [](auto&& call) { return invalid_argument_message(call); };
   EXPECT_EQ(message([] { extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, std::nan("")); })
                 .rfind("extract_reeb_skeleton: rips_radius must be finite and >= 0", 0),
             0u);

@@ -73,14 +73,16 @@ class Grid_frame {
   void for_each_neighbor_key(const Point& p, F&& f) const {
     const Cell c = cell_of(p);
     Cell q;
+    if (!m_hashed) {  // packed keys are distinct
+      visit<0>(c, q, f);
+      return;
+    }
     std::array<std::uint64_t, 27> keys;
     std::size_t count = 0;
     visit<0>(c, q, [&](std::uint64_t k) { keys[count++] = k; });
-    if (m_hashed) {
-      std::sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count));
-      count = static_cast<std::size_t>(std::unique(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count)) -
-                                       keys.begin());
-    }
+    std::sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count));
+    count = static_cast<std::size_t>(std::unique(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count)) -
+                                     keys.begin());
     for (std::size_t i = 0; i < count; ++i) f(keys[i]);
   }
 
