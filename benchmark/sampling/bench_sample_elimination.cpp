@@ -44,15 +44,17 @@ using Pwn = std::pair<K::Point_3, K::Vector_3>;
 
 double uniform01(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
 
-const std::vector<K::Point_2>& square(std::size_t n) {
-  static std::map<std::size_t, std::vector<K::Point_2>> cache;
-  auto& p = cache[n];
+/// n uniform points in the unit square; with `outlier`, one more point far away at (1e7, 0) (last).
+const std::vector<K::Point_2>& square(std::size_t n, bool outlier = false) {
+  static std::map<std::pair<std::size_t, bool>, std::vector<K::Point_2>> cache;
+  auto& p = cache[{n, outlier}];
   if (p.empty()) {
     std::mt19937_64 rng(1);
     for (std::size_t i = 0; i < n; ++i) {
       const double x = uniform01(rng);
       p.emplace_back(x, uniform01(rng));
     }
+    if (outlier) p.emplace_back(1e7, 0);
   }
   return p;
 }
@@ -75,10 +77,14 @@ const std::vector<Pwn>& cube(std::size_t n) {
   return p;
 }
 
+/// Relative radius of the kept points of the unit square (a far outlier left out).
 double rho_2d(const std::vector<K::Point_2>& s) {
+  std::vector<K::Point_2> inside;
+  for (const auto& q : s)
+    if (q.x() <= 1) inside.push_back(q);
   fs::Sampling_quality_options o;
   o.domain_measure = 1;
-  return fs::sampling_quality(s, o).relative_radius;
+  return fs::sampling_quality(inside, o).relative_radius;
 }
 double rho_cube(const std::vector<K::Point_3>& s) {
   fs::Sampling_quality_options o;
@@ -87,8 +93,9 @@ double rho_cube(const std::vector<K::Point_3>& s) {
   return fs::sampling_quality(s, o).relative_radius;
 }
 
+template <bool Outlier>
 void BM_elimination_2d(benchmark::State& state) {
-  const auto& p = square(std::size_t(state.range(0)));
+  const auto& p = square(std::size_t(state.range(0)), Outlier);
   const std::size_t m = std::size_t(state.range(1));
   std::vector<std::size_t> kept;
   for (auto _ : state) {
@@ -103,8 +110,9 @@ void BM_elimination_2d(benchmark::State& state) {
   state.counters["rho"] = rho_2d(s);
 }
 
+template <bool Outlier>
 void BM_darts_2d(benchmark::State& state) {
-  const auto& p = square(std::size_t(state.range(0)));
+  const auto& p = square(std::size_t(state.range(0)), Outlier);
   const double r = double(state.range(1)) / 1000.0;
   std::vector<std::size_t> kept;
   for (auto _ : state) {
@@ -178,9 +186,9 @@ void BM_cgal_wlop(benchmark::State& state) {
 }
 
 #ifdef FEATURERECON_WITH_GUDHI
-std::vector<std::array<double, 2>> square_arrays(std::size_t n) {
+std::vector<std::array<double, 2>> square_arrays(std::size_t n, bool outlier) {
   std::vector<std::array<double, 2>> a;
-  for (const auto& x : square(n)) a.push_back({x.x(), x.y()});
+  for (const auto& x : square(n, outlier)) a.push_back({x.x(), x.y()});
   return a;
 }
 std::vector<K::Point_2> to_points(const std::vector<std::array<double, 2>>& a) {
@@ -188,15 +196,17 @@ std::vector<K::Point_2> to_points(const std::vector<std::array<double, 2>>& a) {
   for (const auto& x : a) p.emplace_back(x[0], x[1]);
   return p;
 }
+template <bool Outlier>
 void BM_gudhi_farthest(benchmark::State& state) {
-  const auto a = square_arrays(std::size_t(state.range(0)));
+  const auto a = square_arrays(std::size_t(state.range(0)), Outlier);
   std::vector<std::array<double, 2>> out;
   for (auto _ : state) out = bench::gudhi_choose_n_farthest_points(a, std::size_t(state.range(1)));
   state.counters["kept"] = double(out.size());
   state.counters["rho"] = rho_2d(to_points(out));
 }
+template <bool Outlier>
 void BM_gudhi_sparsify(benchmark::State& state) {
-  const auto a = square_arrays(std::size_t(state.range(0)));
+  const auto a = square_arrays(std::size_t(state.range(0)), Outlier);
   std::vector<std::array<double, 2>> out;
   for (auto _ : state) out = bench::gudhi_sparsify_point_set(a, double(state.range(1)) / 1000.0);
   state.counters["kept"] = double(out.size());
@@ -335,10 +345,15 @@ void BM_cgal_nearest(benchmark::State& state) {
 
 void register_all() {
   auto ms = [](benchmark::internal::Benchmark* b) { return b->Unit(benchmark::kMillisecond)->UseRealTime(); };
-  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d", BM_elimination_2d))
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d", BM_elimination_2d<false>))
       ->Args({50000, 10000})->Args({500000, 100000})->MinTime(1.0);
-  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d", BM_darts_2d))
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d", BM_darts_2d<false>))
       ->Args({100000, 20})->Args({1000000, 10})->MinTime(1.0);
+  // The same squares plus one point at (1e7, 0): the grids must keep their cell size.
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d_outlier", BM_elimination_2d<true>))
+      ->Args({50000, 10000})->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d_outlier", BM_darts_2d<true>))
+      ->Args({100000, 20})->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_euclidean", BM_elimination_cube))
       ->Arg(0)->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_bilateral", BM_elimination_cube))
@@ -355,10 +370,14 @@ void register_all() {
       ->Arg(10000)->Arg(50000)->MinTime(1.0);
 #endif
 #ifdef FEATURERECON_WITH_GUDHI
-  ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d", BM_gudhi_farthest))
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d", BM_gudhi_farthest<false>))
       ->Args({50000, 10000})->Iterations(3);
-  ms(benchmark::RegisterBenchmark("sampling/gudhi/sparsify_point_set_2d", BM_gudhi_sparsify))
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/sparsify_point_set_2d", BM_gudhi_sparsify<false>))
       ->Args({100000, 20})->Args({1000000, 10})->Iterations(3);
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d_outlier", BM_gudhi_farthest<true>))
+      ->Args({50000, 10000})->Iterations(3);
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/sparsify_point_set_2d_outlier", BM_gudhi_sparsify<true>))
+      ->Args({100000, 20})->Iterations(3);
 #endif
 }
 }  // namespace
