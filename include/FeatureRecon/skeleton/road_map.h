@@ -26,7 +26,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -217,37 +216,31 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
 /// Greedy contraction of a planar point set: in index order, a point with an earlier kept point closer than `h`
 /// joins the nearest such point (ties: the smaller index); the others are kept. `P` keeps the kept points in
 /// their order and `edges` are renamed to them, loops dropped, repeats once, sorted. Returns the number of points
-/// removed. Exact: the squared distances are compared as computed from the same differences for every pair.
-/// Points whose cell index (coordinate / h from the minimum) would exceed 2^52 are not contracted (h tiny against
-/// the extent); then nothing changes.
+/// removed. Deterministic. When some point lies farther than 2^52 h from the origin (h tiny against the
+/// coordinates) nothing is contracted.
 inline std::size_t contract_close_samples(Point_matrix& P, double h, std::vector<Edge>& edges) {
   const std::size_t n = P.rows;
   if (n < 2 || !(h > 0)) return 0;
   double lo[2] = {P.data[0], P.data[1]}, hi[2] = {P.data[0], P.data[1]};
   for (std::size_t i = 0; i < n; ++i)
     for (int c = 0; c < 2; ++c) {
+      if (!(std::fabs(P.data[2 * i + c]) / h < 0x1p52)) return 0;
       lo[c] = std::min(lo[c], P.data[2 * i + c]);
       hi[c] = std::max(hi[c], P.data[2 * i + c]);
     }
-  if (!((hi[0] - lo[0]) / h < 4503599627370496.0 && (hi[1] - lo[1]) / h < 4503599627370496.0)) return 0;
-  using Cell = std::pair<std::int64_t, std::int64_t>;
-  auto cell_of = [&](std::size_t i) {
-    return Cell{static_cast<std::int64_t>(std::floor((P.data[2 * i] - lo[0]) / h)),
-                static_cast<std::int64_t>(std::floor((P.data[2 * i + 1] - lo[1]) / h))};
-  };
-  std::map<Cell, std::vector<std::size_t>> kept_in;  // kept points by cell of side h
+  Planar_grid kept_in(lo[0], lo[1], hi[0], hi[1], h, n);  // kept points by cell of side h
   std::vector<std::size_t> to(n);
   std::size_t removed = 0;
   const double h2 = h * h;
   for (std::size_t i = 0; i < n; ++i) {
-    const Cell c = cell_of(i);
+    const auto c = kept_in.cell_of(P.data[2 * i], P.data[2 * i + 1]);
     std::size_t best = n;
     double best_d2 = h2;
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const auto it = kept_in.find({c.first + dx, c.second + dy});
-        if (it == kept_in.end()) continue;
-        for (std::size_t k : it->second) {
+        const std::vector<std::uint32_t>* bucket = kept_in.find(c[0] + dx, c[1] + dy);
+        if (bucket == nullptr) continue;
+        for (const std::size_t k : *bucket) {
           const double ex = P.data[2 * i] - P.data[2 * k], ey = P.data[2 * i + 1] - P.data[2 * k + 1];
           const double d2 = ex * ex + ey * ey;
           if (d2 < best_d2 || (d2 == best_d2 && best < n && k < best)) {
@@ -261,7 +254,7 @@ inline std::size_t contract_close_samples(Point_matrix& P, double h, std::vector
       ++removed;
     } else {
       to[i] = i;
-      kept_in[c].push_back(i);
+      kept_in.push(c, static_cast<std::uint32_t>(i));
     }
   }
   if (removed == 0) return 0;
