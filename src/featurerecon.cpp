@@ -21,7 +21,8 @@ namespace cli {
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
       {"rips", "Rips 2-complex of points with the geodesic function, in the exchange format",
-       "usage: featurerecon rips --points FILE (--radius R | --knn K) --out COMPLEX [--search auto|kd-tree|brute-force] [--quiet]\n"
+       "usage: featurerecon rips --points FILE (--radius R | --knn K) --out COMPLEX [--search auto|kd-tree|brute-force]\n"
+       "                        [--max-triangles N] [--quiet]\n"
        "\n"
        "Builds the proximity graph of the points (every pair at distance <= R, or the symmetrised K nearest\n"
        "neighbours), its Rips 2-complex (every 3-clique is a triangle) and the geodesic function: the\n"
@@ -34,6 +35,8 @@ const std::vector<Command>& commands() {
        "  --out COMPLEX    output: first line 'n m', n lines 'x y z f' (first three coordinates, zero-padded),\n"
        "                   m lines of 2 or 3 vertex indices (edges not implied by a triangle, then triangles)\n"
        "  --search S       neighbour search: auto (kd-tree up to 3D, brute force above), kd-tree, brute-force\n"
+       "  --max-triangles N  refuse a complex of more than N triangles, found while counting them, before any\n"
+       "                   is stored (default 134217728 = 2^27; 0: no limit)\n"
        "  --quiet          no progress on standard error\n",
        run_rips},
       {"reeb", "Reeb graph of the function of a complex file",
@@ -60,7 +63,8 @@ const std::vector<Command>& commands() {
        "                             [--link-gap G] [--heading-tolerance A] [--undirected] [--min-density F]\n"
        "                             [--density-radius DR] [--density-heading-tolerance DA] [--first-point-positions]\n"
        "                             [--segment-support SS] [--segment-turn-tolerance ST] [--merge MD]\n"
-       "                             [--level-width W] [--smoothing N] [--max-gap G] --out-vertices V --out-edges E\n"
+       "                             [--level-width W] [--smoothing N] [--max-gap G] [--max-triangles N]\n"
+       "                             --out-vertices V --out-edges E\n"
        "                             [--lonlat] [--graphml F] [--geojson F] [--ply F] [--svg F] [--quiet]\n"
        "\n"
        "Rips 2-complex at radius R, geodesic function, Reeb graph, removal of features of persistence <= D,\n"
@@ -117,6 +121,9 @@ const std::vector<Command>& commands() {
        "  --smoothing N    Laplacian smoothing rounds of each arc (default 10; 2 with --tracks)\n"
        "  --max-gap G      an arc whose polyline jumps farther than G follows the graph's shortest path there\n"
        "                   (default 0: twice the median edge length; negative: straight segments)\n"
+       "  --max-triangles N  refuse a Rips complex of more than N triangles, found while counting them (a radius\n"
+       "                   too large for the data; the pipeline needs about 40 bytes a triangle); default\n"
+       "                   134217728 = 2^27; 0: only the Reeb graph's limit, 2^31 - 1 edges and triangles\n"
        "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), a picture\n"
        "                   (--svg F.svg, or F.png, .jpg, .pgm, .ppm: the same drawing rasterised)\n",
        run_skeleton},

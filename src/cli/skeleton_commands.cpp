@@ -33,8 +33,19 @@ namespace cli {
 
 using namespace FeatureRecon::skeleton;
 
+namespace {
+/// --max-triangles N (an integer >= 0), or the library's default limit of the skeleton pipeline.
+std::size_t max_triangles_option(const Arguments& args) {
+  if (!args.has("max-triangles")) return Skeleton_options().max_triangles;
+  const long long n = args.get_int("max-triangles");
+  if (n < 0) throw Usage_error("--max-triangles must be an integer >= 0 (0: no limit), got '" +
+                               args.get("max-triangles") + "'");
+  return static_cast<std::size_t>(n);
+}
+}  // namespace
+
 int run_rips(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"quiet"}, {"points", "radius", "knn", "out", "search"});
+  const Arguments args(argv, {"quiet"}, {"points", "radius", "knn", "out", "search", "max-triangles"});
   const std::string points_path = args.get("points");
   const std::string out_path = args.get("out");
   if (args.has("radius") == args.has("knn")) throw Usage_error("give exactly one of --radius R and --knn K");
@@ -76,7 +87,11 @@ int run_rips(const std::vector<std::string>& argv) {
   graph_progress.done(std::to_string(g.number_of_edges()) + " edges");
 
   Progress complex_progress("triangles", quiet);
-  const Simplicial_complex_2 K = build_flag_complex_2(g, std::ref(complex_progress));
+  const std::size_t max_triangles = max_triangles_option(args);
+  // build_flag_complex_2() with the limit named as the command line spells it.
+  const Simplicial_complex_2 K = skeleton::internal::flag_complex_2(
+      g, max_triangles > 0 ? max_triangles : std::numeric_limits<std::size_t>::max(), std::ref(complex_progress),
+      "build_flag_complex_2", "--max-triangles");
   complex_progress.done(std::to_string(K.number_of_triangles()) + " triangles");
 
   Progress geodesic_progress("geodesic function", quiet);
@@ -212,7 +227,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap", "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -247,6 +262,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   options.prune_height = args.has("prune") ? args.get_double("prune") : 0.0;
   if (!(options.prune_height >= 0)) throw Usage_error("--prune must be >= 0");
+  options.max_triangles = max_triangles_option(args);
   double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
   if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
   const bool quiet = args.has("quiet");
@@ -378,6 +394,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("merge") && !(args.get_double("merge") >= 0)) throw Usage_error("--merge must be >= 0 (0: off)");
     ro.merge_distance = value("merge", args.has("merge") ? args.get_double("merge") : 0.0);
     ro.traces = go;
+    ro.max_triangles = options.max_triangles;
     ro.embedding = options.embedding;
     ro.progress = options.progress;
     Road_map road = extract_road_map(trips, ro);
@@ -465,12 +482,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (!comp.empty()) components = static_cast<std::size_t>(boost::connected_components(graph, comp.data()));
   }
   std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
-              "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
+              "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
               "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
               "\"level_width\": %s%s, \"seconds\": %s, \"vertices_file\": %s, \"edges_file\": %s}\n",
               input_points, sampled,
               json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(), json_number(options.delta).c_str(),
-              json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles,
+              json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles,
               num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph),
               components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(), gps_json.c_str(), json_number(seconds).c_str(),
               json_string(out_v).c_str(), json_string(out_e).c_str());

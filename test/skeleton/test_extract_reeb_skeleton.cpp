@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -35,6 +36,17 @@ void expect_members_partition(const Skeleton_graph& g, std::size_t n) {
   for (auto e : boost::make_iterator_range(edges(g)))
     for (Vertex_index m : g[e].members) ++seen[m];
   for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(seen[i], 1) << "point " << i;
+}
+/// n points evenly on the circle of radius 10 about the origin.
+Point_matrix circle_points(int n) {
+  Point_matrix m;
+  m.dimension = 2;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    m.data.insert(m.data.end(), {10 * std::cos(a), 10 * std::sin(a)});
+  }
+  m.rows = static_cast<std::size_t>(n);
+  return m;
 }
 }  // namespace
 
@@ -111,15 +123,33 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("got 0, 0 and -1"), std::string::npos);
 }
 
+// Skeleton_options::max_triangles: a complex of exactly that many triangles is built as without a limit, one
+// more is refused while counting, naming the option; 0 leaves only the Reeb graph's own limit.
+TEST(ExtractReebSkeleton, TriangleLimitIsCheckedWhileCounting) {
+  const Point_matrix m = circle_points(300);
+  Skeleton_options o;
+  o.delta = 1;
+  o.max_triangles = 0;
+  const Reeb_skeleton all = extract_reeb_skeleton(m, 1.0, o);
+  ASSERT_EQ(all.status, Status::success);
+  ASSERT_GT(all.rips_triangles, 100u);
+  EXPECT_EQ(Skeleton_options().max_triangles, std::size_t(1) << 27);
+  o.max_triangles = all.rips_triangles;
+  const Reeb_skeleton exact = extract_reeb_skeleton(m, 1.0, o);
+  EXPECT_EQ(exact.rips_triangles, all.rips_triangles);
+  EXPECT_EQ(num_edges(exact.graph), num_edges(all.graph));
+  o.max_triangles = all.rips_triangles - 1;
+  const std::string what = invalid_argument_message([&] { extract_reeb_skeleton(m, 1.0, o); });
+  EXPECT_EQ(what.rfind("extract_reeb_skeleton: the flag complex has more than " +
+                           std::to_string(all.rips_triangles - 1) + " triangles (Skeleton_options::max_triangles",
+                       0),
+            0u)
+      << what;
+}
+
 TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
   // The callback says stop once, inside the Rips stage, and go on afterwards: the run still ends, interrupted.
-  Point_matrix m;
-  m.dimension = 2;
-  for (int i = 0; i < 2000; ++i) {
-    const double a = 2 * M_PI * i / 2000;
-    m.data.insert(m.data.end(), {10 * std::cos(a), 10 * std::sin(a)});
-  }
-  m.rows = 2000;
+  const Point_matrix m = circle_points(2000);
   int calls = 0;
   Skeleton_options o;
   o.delta = 1;

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -368,6 +369,49 @@ TEST(FlagComplex, TrianglesAreTheThreeCliques) {
   bad.number_of_vertices = 2;
   bad.edges = {{1, 0}};
   EXPECT_THROW(build_flag_complex_2(bad), std::invalid_argument);
+}
+
+// The triangle limit is checked while counting: exactly the limit passes, one less is refused with the counts;
+// progress covers both passes (counting below one half), and a stop during counting stores no triangle.
+TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
+  Proximity_graph complete;  // K_12: C(12, 3) = 220 triangles
+  complete.number_of_vertices = 12;
+  for (Vertex_index u = 0; u < 12; ++u)
+    for (Vertex_index v = u + 1; v < 12; ++v) complete.edges.push_back({u, v});
+  Flag_complex_options o;
+  o.max_triangles = 220;
+  std::vector<double> seen;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const Simplicial_complex_2 k = build_flag_complex_2(complete, o);
+  EXPECT_EQ(k.number_of_triangles(), 220u);
+  EXPECT_EQ(k.triangles, build_flag_complex_2(complete).triangles);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.5; }), 12);  // counting: 12 vertices
+  o.max_triangles = 219;
+  try {
+    build_flag_complex_2(complete, o);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("build_flag_complex_2: the flag complex has more than 219 triangles "
+                                         "(Flag_complex_options::max_triangles; 12 vertices, 66 edges, the limit "
+                                         "was passed at vertex 9)"),
+              std::string::npos)
+        << e.what();
+  }
+  // A stop at the first call (during counting): no triangles, and no further call.
+  o.max_triangles = std::numeric_limits<std::size_t>::max();
+  int calls = 0;
+  o.progress = [&calls](double) { return ++calls > 1; };
+  const Simplicial_complex_2 stopped = build_flag_complex_2(complete, o);
+  EXPECT_TRUE(stopped.triangles.empty());
+  EXPECT_EQ(stopped.edges, complete.edges);
+  EXPECT_EQ(calls, 1);
 }
 
 TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {

@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -60,6 +62,11 @@ struct Skeleton_options {
   /// Default true.
   bool trim_stubs = true;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips graph
+  /// Refuse (std::invalid_argument, before storing any triangle) a Rips complex with more triangles than this: a
+  /// radius too large for the data asks for billions, and the pipeline needs about 40 bytes per triangle.
+  /// Default 2^27 (134,217,728 triangles, about 5.5 GB); 0: only the Reeb graph's own limit (2^31 - 1 edges and
+  /// triangles together).
+  std::size_t max_triangles = std::size_t(1) << 27;
   Embedding_options embedding;                          ///< how arcs are drawn
   Progress_callback progress;  ///< called with the fraction done; returning false stops (status interrupted)
 };
@@ -138,7 +145,14 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     b = progress_start + (1 - progress_start) * b;
     return [&options, &stopped, a, b](double t) { return !(stopped = stopped || !options.progress(a + (b - a) * t)); };
   };
-  const Simplicial_complex_2 K = build_flag_complex_2(graph, stage(0.0, 0.2));
+  // The Reeb graph takes fewer than 2^31 - 1 edges and triangles together.
+  const std::size_t capacity = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) - 1;
+  const std::size_t room = graph.edges.size() < capacity ? capacity - graph.edges.size() : 0;
+  const std::size_t max_triangles = options.max_triangles > 0 ? std::min(options.max_triangles, room) : room;
+  const Simplicial_complex_2 K = internal::flag_complex_2(
+      graph, max_triangles, stage(0.0, 0.2), "extract_reeb_skeleton",
+      max_triangles == options.max_triangles ? "Skeleton_options::max_triangles, --max-triangles on the command line"
+                                             : "the Reeb graph's limit: 2^31 - 1 edges and triangles together");
   if (stopped) {
     result.status = Status::interrupted;
     return result;

@@ -31,6 +31,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -580,12 +581,23 @@ Proximity_graph proximity_graph_from_boost_graph(const Graph& graph, WeightMap w
   return g;
 }
 
-/// The flag (clique) complex of a proximity graph up to dimension 2: its vertices, edges and every
-/// triangle whose three edges are in the graph. With a Rips graph this is the Rips 2-complex.
-/// O(sum of squared degrees) time; triangles come out sorted.
-/// \pre g is canonical (checked; throws).
-inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Progress_callback& progress = {}) {
-  const char* fn = "build_flag_complex_2";
+/// Options of build_flag_complex_2().
+struct Flag_complex_options {
+  /// Refuse a complex with more triangles than this (std::invalid_argument naming the limit), found while
+  /// counting, before any triangle is stored: a radius too large for the data asks for billions of triangles.
+  /// Default: no limit.
+  std::size_t max_triangles = std::numeric_limits<std::size_t>::max();
+  /// Fraction done, asked during both passes (counting, then storing); returning false stops: the complex is
+  /// returned without triangles, or with those stored so far.
+  Progress_callback progress;
+};
+
+namespace internal {
+
+/// build_flag_complex_2(); errors name `fn` and, for the triangle limit, `limit_name`.
+inline Simplicial_complex_2 flag_complex_2(const Proximity_graph& g, std::size_t max_triangles,
+                                           const Progress_callback& progress, const char* fn,
+                                           const char* limit_name) {
   if (const std::string problem = internal::canonical_form_problem(g); !problem.empty())
     FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph): ", problem);
   Simplicial_complex_2 k;
@@ -601,13 +613,16 @@ inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const
   for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
   const std::size_t report_every = std::max<std::size_t>(1, n / 100);
   // Two passes (count, then fill one exact huge-page buffer): cheaper than growing a vector of millions of
-  // triangles on machines where first-touch page faults are expensive.
-  for (int pass = 0; pass < 2; ++pass) {
+  // triangles on machines where first-touch page faults are expensive. Each pass is half of the progress.
+  bool stopped = false;
+  for (int pass = 0; pass < 2 && !stopped; ++pass) {
     std::size_t count = 0;
     for (std::size_t u = 0; u < n; ++u) {
-      if (pass == 1 && u % report_every == 0 &&
-          !FeatureRecon::internal::report_progress(progress, static_cast<double>(u) / n))
+      if (u % report_every == 0 &&
+          !FeatureRecon::internal::report_progress(progress, 0.5 * pass + 0.5 * static_cast<double>(u) / n)) {
+        stopped = true;
         break;
+      }
       for (std::size_t a = first[u]; a < first[u + 1]; ++a) {
         const Vertex_index v = g.edges[a].at(1);
         // Intersect N+(u) after v with N+(v).
@@ -621,18 +636,41 @@ inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const
           } else {
             if (pass == 1)
               k.triangles.push_back(Triangle{static_cast<Vertex_index>(u), v, x});
-            else
-              ++count;
+            else if (++count > max_triangles)
+              FeatureRecon::internal::throw_invalid_argument(
+                  fn, "the flag complex has more than ", max_triangles, " triangles (", limit_name, "; ", n,
+                  " vertices, ", g.edges.size(), " edges, the limit was passed at vertex ", u,
+                  "): use a smaller radius or fewer points, or raise the limit");
             ++p;
             ++q;
           }
         }
       }
     }
-    if (pass == 0) FeatureRecon::internal::reserve_huge(k.triangles, count);
+    if (pass == 0 && !stopped) FeatureRecon::internal::reserve_huge(k.triangles, count);
   }
-  (void)FeatureRecon::internal::report_progress(progress, 1.0);
+  if (!stopped) (void)FeatureRecon::internal::report_progress(progress, 1.0);
   return k;
+}
+
+}  // namespace internal
+
+/// The flag (clique) complex of a proximity graph up to dimension 2: its vertices, edges and every
+/// triangle whose three edges are in the graph. With a Rips graph this is the Rips 2-complex.
+/// O(sum of squared degrees) time; triangles come out sorted. The triangles are counted first, then stored.
+/// \pre g is canonical (checked; throws).
+/// \throws std::invalid_argument for a graph that is not canonical, or more triangles than
+///         `options.max_triangles` (found while counting, nothing stored).
+inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Flag_complex_options& options) {
+  return internal::flag_complex_2(g, options.max_triangles, options.progress, "build_flag_complex_2",
+                                  "Flag_complex_options::max_triangles");
+}
+
+/// build_flag_complex_2() without a triangle limit.
+inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Progress_callback& progress = {}) {
+  Flag_complex_options o;
+  o.progress = progress;
+  return build_flag_complex_2(g, o);
 }
 
 /// One call: the Rips 2-complex of points at scale `radius` (build_rips_graph() then build_flag_complex_2()).

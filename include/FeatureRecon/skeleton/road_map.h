@@ -485,6 +485,7 @@ struct Road_map_options {
   Gps_trace_options traces = road_map_trace_options();
   bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
   bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
+  std::size_t max_triangles = Skeleton_options().max_triangles;  ///< Skeleton_options::max_triangles
   /// How arcs are drawn (level width 0: median edge length of the complex); default road_map_embedding_options().
   Embedding_options embedding = road_map_embedding_options();
   /// Last stage: lines of the map closer than this become one (merge_road_lines()). Driving directions keep a
@@ -543,6 +544,7 @@ inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) 
   o.prune_height = std::max(0.0, used.prune_height);
   o.connect_dead_ends = used.connect_dead_ends;
   o.trim_stubs = used.trim_stubs;
+  o.max_triangles = used.max_triangles;
   o.embedding = used.embedding;
   return o;
 }
