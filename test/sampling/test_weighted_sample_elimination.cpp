@@ -15,6 +15,7 @@
 #include <iterator>
 #include <random>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace {
@@ -332,6 +333,43 @@ TEST(WeightedSampleElimination, ProgressCanInterrupt) {
   const auto s = weighted_sample_elimination(with_copy, 2000, std::back_inserter(kept), o);
   EXPECT_EQ(s.status, Status::interrupted);
   EXPECT_EQ(calls, 1);
+  EXPECT_TRUE(kept.empty());
+}
+
+// A max_radius far above the packing radius makes every item a neighbour of every other: the lists are refused
+// while they are counted, before they are stored, once they pass max_neighbor_entries (exactly the limit passes),
+// and the count asks the callback by its work, not only every 16,384 items.
+TEST(WeightedSampleElimination, NeighbourListsBeyondTheLimitAreRefusedWhileCounted) {
+  const std::vector<Point_2> p = white_noise(100, 5);
+  Elimination_options o;
+  o.max_radius = 100;  // every pair within 2 r_max: 100 * 99 entries, one stage (100 / 16 < 10)
+  o.max_neighbor_entries = 9900;
+  EXPECT_EQ(eliminate(p, 10, o).size(), 10u);
+  o.max_neighbor_entries = 9899;
+  std::vector<std::size_t> kept;
+  try {
+    weighted_sample_elimination(p, 10, std::back_inserter(kept), o);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("weighted_sample_elimination: the neighbour lists within 2 r_max would hold more than 9899 "
+                         "entries (Elimination_options::max_neighbor_entries; r_max 100 in the stage from 100 items "
+                         "to 10; the first 100 items have 9900 neighbours)",
+                         0),
+              0u)
+        << what;
+  }
+  EXPECT_TRUE(kept.empty());
+  EXPECT_EQ(Elimination_options().max_neighbor_entries, std::size_t(1) << 31);
+  // 3,000 items, each a neighbour of all others: the callback is asked during the count (it used to be asked at
+  // the start of the stage and then only at the end, where a stop was ignored).
+  o = {};
+  o.max_radius = 100;
+  int calls = 0;
+  o.progress = [&](double) { return ++calls < 2; };
+  const auto r = weighted_sample_elimination(white_noise(3000, 6), 300, std::back_inserter(kept), o);
+  EXPECT_EQ(r.status, Status::interrupted);
+  EXPECT_EQ(calls, 2);
   EXPECT_TRUE(kept.empty());
 }
 

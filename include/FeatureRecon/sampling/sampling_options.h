@@ -133,6 +133,10 @@ struct Elimination_options {
   int intrinsic_dimension = 0;
   double alpha = 8;             ///< exponent of the weight (1 - d / (2 r_max))^alpha (Yuksel 2015); default 8
   bool weight_limiting = true;  ///< clamp d below d_min = 2 r_max beta (1 - (M/N)^gamma), beta 0.65, gamma 1.5
+  /// Refuse (std::invalid_argument) neighbour lists of more entries than this, found while they are counted and
+  /// before they are stored (4 bytes an entry): a max_radius far above the packing radius makes every item a
+  /// neighbour of every other (a 512 x 480 image at r_max 100,000 asks for 6e10). Default 2^31 (8 GB).
+  std::size_t max_neighbor_entries = std::size_t(1) << 31;
   std::uint64_t seed = 0;       ///< breaks ties between equal weights (grids, images): a seeded permutation
   Progress_callback progress;   ///< fraction of the eliminations done; returning false stops (nothing is output)
 };

@@ -112,8 +112,9 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   points asked to be sampled as a volume (sampled as a surface), one repeated position (the seed picks the
 ///   items), and positions so close together (spans below about 1e-154) that the automatic r_max underflows to
 ///   0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
-/// \throws std::invalid_argument naming the argument: count larger than the input, non-finite coordinates
-///   (naming the item), sigma_position <= 0, sigma_feature <= 0, negative max_radius or domain_measure,
+/// \throws std::invalid_argument naming the argument: neighbour lists longer than max_neighbor_entries (a
+///   max_radius far too large; found while counting them, before they are stored), count larger than the
+///   input, non-finite coordinates (naming the item), sigma_position <= 0, sigma_feature <= 0, negative max_radius or domain_measure,
 ///   intrinsic_dimension other than 0, 2 or 3 or above the positions' dimension, alpha <= 0, with a finite
 ///   sigma_feature a feature at a non-finite distance from itself (a zero normal, NaN; naming the item). The
 ///   input is never modified.
@@ -321,14 +322,30 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
                                                           double(eliminated_before) / total_eliminations);
         };
         std::vector<std::size_t> offset(m + 1, 0);
+        std::size_t entries = 0, since_asked = 0;
         for (std::size_t i = 0; i < m; ++i) {
-          if (stop(i)) {
-            interrupted = true;
-            return;
+          // Asked at the start and then about every 16,384 items, sooner when they have many neighbours (the
+          // count's work grows with them).
+          if (i == 0 || since_asked >= 16384) {
+            since_asked = 0;
+            if (!FeatureRecon::internal::report_progress(options.progress,
+                                                         double(eliminated_before) / total_eliminations)) {
+              interrupted = true;
+              return;
+            }
           }
           grid.for_each_candidate(positions[i], [&](std::uint32_t j) {
             if (j != i && pair_weight(i, j) >= 0) ++offset[i + 1];
           });
+          entries += offset[i + 1];
+          since_asked += offset[i + 1] / 16 + 1;
+          if (entries > options.max_neighbor_entries)
+            FeatureRecon::internal::throw_invalid_argument(
+                fn, "the neighbour lists within 2 r_max would hold more than ", options.max_neighbor_entries,
+                " entries (Elimination_options::max_neighbor_entries; r_max ", stage_r, " in the stage from ", m,
+                " items to ", target, "; the first ", i + 1, " items have ", entries,
+                " neighbours): max_radius is too large for these items (0: the automatic r_max) or they crowd "
+                "at one spot; raise the limit for a larger run");
         }
         for (std::size_t i = 0; i < m; ++i) offset[i + 1] += offset[i];
         std::vector<std::uint32_t> neighbor(offset[m]);
