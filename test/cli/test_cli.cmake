@@ -340,6 +340,12 @@ expect(sample_image_darts_radius 0 "\"method\": \"darts\".*\"radius\": 5," sampl
 expect(sample_image_continuous 0 "\"method\": \"continuous\", \"samples\": 30,.*\"mosaic_psnr_db\": " sample-image --input ${WORK}/line.pgm
        --method continuous --radius 2 --count 30 --sigma-feature 0.1 --mosaic ${WORK}/m.ppm --quiet)
 expect_count(${WORK}/m.ppm "^P6\n48 48\n255\n" 1)
+# A radius that lets billions of samples into the picture needs --count (Groemer's bound: 2.66e9 at 0.001 on
+# 48 x 48); with a count, or colours that can separate samples at any distance, it runs.
+expect(sample_image_continuous_unbounded 2 "--radius 0.001 lets up to 2.66e\\+09 samples into the 48 x 48 picture \\(more than 2\\^27"
+       sample-image --input ${WORK}/line.pgm --method continuous --radius 0.001 --out ${WORK}/cu.txt --quiet)
+expect(sample_image_continuous_capped 0 "\"samples\": 50," sample-image --input ${WORK}/line.pgm --method continuous --radius 0.001
+       --count 50 --out ${WORK}/cu.txt --quiet)
 expect(sample_image_rgb 0 "\"channels\": 3,.*\"samples\": 5" sample-image --input ${WORK}/tiny.ppm --count 5 --out ${WORK}/rgb.txt --quiet)
 file(STRINGS ${WORK}/rgb.txt rgb_lines)
 list(GET rgb_lines 0 rgb_first)
