@@ -75,3 +75,50 @@ TEST(UniformGrid, AFarOutlierKeepsTheCellSize) {
   s.push_back({0, 0, 0});
   expect_exact_candidates<3>(s, 1e-11, 200);
 }
+
+// The dense array of cells (a small box: at most four cells per point) visits the same candidates in the same
+// order as the hash map of packed keys: cells in key order (nested over the axes), points by index within a
+// cell. Checked against that order built by brute force, with queries inside, on the border and outside the
+// box, in 2D and 3D, for the grid built at once and the one filled point by point (with a hint of many points).
+template <int D>
+void expect_key_order(const std::vector<std::array<double, D>>& p, double r) {
+  const Grid_frame<D> frame(p, r);
+  ASSERT_TRUE(FeatureRecon::internal::use_dense_cells(frame, p.size()));
+  const Uniform_grid<D> grid(p, r);
+  Dynamic_grid<D> dynamic(p, r, 1000000);
+  for (std::uint32_t i = 0; i < p.size(); ++i) dynamic.insert(i);
+  std::vector<std::array<double, D>> queries(p.begin(), p.begin() + 40);
+  std::array<double, D> outside{}, corner{};
+  for (int k = 0; k < D; ++k) {
+    outside[k] = -0.6 * r;
+    corner[k] = 1.0 + 0.4 * r;
+  }
+  queries.push_back(outside);
+  queries.push_back(corner);
+  for (const auto& q : queries) {
+    std::vector<std::uint64_t> keys;
+    frame.for_each_neighbor_key(q, [&](std::uint64_t k) { keys.push_back(k); });
+    std::vector<std::uint32_t> expected;
+    for (const std::uint64_t k : keys)
+      for (std::uint32_t j = 0; j < p.size(); ++j)
+        if (frame.key(frame.cell_of(p[j])) == k) expected.push_back(j);
+    std::vector<std::uint32_t> got, got_dynamic;
+    grid.for_each_candidate(q, [&](std::uint32_t j) { got.push_back(j); });
+    dynamic.for_each_candidate(q, [&](std::uint32_t j) { got_dynamic.push_back(j); });
+    EXPECT_EQ(got, expected);
+    EXPECT_EQ(got_dynamic, expected);
+  }
+}
+
+TEST(UniformGrid, DenseCellsVisitInKeyOrder) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::array<double, 2>> p2(600);
+  for (auto& x : p2) x = {std::round(20 * u(rng)) / 20, u(rng)};  // ties on cell borders along x
+  p2.push_back({1, 1});
+  expect_key_order<2>(p2, 0.05);
+  std::vector<std::array<double, 3>> p3(800);
+  for (auto& x : p3) x = {u(rng), std::round(10 * u(rng)) / 10, u(rng)};
+  p3.push_back({1, 1, 1});
+  expect_key_order<3>(p3, 0.1);
+}

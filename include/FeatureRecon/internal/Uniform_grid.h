@@ -22,7 +22,8 @@ namespace internal {
 /// the key is a 64-bit mix of the coordinates, so the cells keep their side (the side used to grow to
 /// extent / 2^20, putting a unit square's points in one cell beside an outlier at 1e7: quadratic). Keys of
 /// distinct cells may then collide: a cell's list may hold points of another cell, which callers drop by their
-/// exact distance test, and for_each_neighbor_key() visits each key once.
+/// exact distance test, and for_each_neighbor_key() visits each key once. A packed frame over few cells
+/// (use_dense_cells()) also numbers them densely, in key order, so that a grid can keep its cells in an array.
 template <int D>
 class Grid_frame {
  public:
@@ -44,8 +45,34 @@ class Grid_frame {
     m_hashed = extent / m_cell > double(1 << 20);
     // Hashed: cell coordinates stay far inside 64-bit integers.
     if (m_hashed) m_cell = std::max(m_cell, extent / 0x1p60);
+    m_cells = 1;
+    for (int k = 0; k < D; ++k) {
+      m_count[k] = m_hashed ? 0 : std::min<std::int64_t>(cell_of(high)[k] + 1, kLimit);
+      m_cells *= m_hashed ? 0.0 : double(m_count[k]);
+    }
   }
   double cell_size() const { return m_cell; }
+  bool hashed() const { return m_hashed; }
+  /// Number of cells of the points' bounding box (0 when hashed): a dense array of that many cells can stand
+  /// for the key map; dense_index() orders them as the packed keys.
+  double cells() const { return m_cells; }
+  /// Index of cell c in a dense array of cells(), or -1 when c lies outside the box (no point there).
+  std::int64_t dense_index(const Cell& c) const {
+    std::int64_t i = 0;
+    for (int k = 0; k < D; ++k) {
+      if (c[k] < 0 || c[k] >= m_count[k]) return -1;
+      i = i * m_count[k] + c[k];
+    }
+    return i;
+  }
+  /// Calls f(dense index) for each cell of the 3^D around p inside the box, in the order of
+  /// for_each_neighbor_key() (packed frames only).
+  template <class F>
+  void for_each_neighbor_index(const Point& p, F&& f) const {
+    const Cell c = cell_of(p);
+    Cell q;
+    visit_dense<0>(c, q, f);
+  }
   Cell cell_of(const Point& p) const {
     Cell c;
     for (int k = 0; k < D; ++k) {
@@ -102,10 +129,31 @@ class Grid_frame {
       }
     }
   }
+  template <int K, class F>
+  void visit_dense(const Cell& c, Cell& q, F&& f) const {
+    for (std::int64_t d = -1; d <= 1; ++d) {
+      q[K] = c[K] + d;
+      if (q[K] < 0 || q[K] >= m_count[K]) continue;
+      if constexpr (K + 1 < D)
+        visit_dense<K + 1>(c, q, f);
+      else
+        f(dense_index(q));
+    }
+  }
   Point m_low{};
   double m_cell = 1;
   bool m_hashed = false;
+  std::array<std::int64_t, D> m_count{};
+  double m_cells = 0;
 };
+
+/// Whether a grid over `expected_items` items uses a dense array of cells instead of a hash map: packed keys
+/// and at most max(2^16, 4 expected_items) cells, never more than 2^26.
+template <int D>
+bool use_dense_cells(const Grid_frame<D>& frame, std::size_t expected_items) {
+  return !frame.hashed() && frame.cells() <= std::max(65536.0, 4.0 * double(expected_items)) &&
+         frame.cells() <= 67108864.0;
+}
 
 /// All points bucketed at once: the candidates within distance `cell` of a point are in the 3^D cells around
 /// its cell. Within a cell, points keep their input order, so every traversal is deterministic.
@@ -116,6 +164,20 @@ class Uniform_grid {
 
   Uniform_grid(const std::vector<Point>& points, double cell) : m_frame(points, cell) {
     const std::size_t n = points.size();
+    if (n > 0 && use_dense_cells(m_frame, n)) {  // a counting sort into a dense array of cells
+      m_dense = true;
+      m_offsets.assign(static_cast<std::size_t>(m_frame.cells()) + 1, 0);
+      std::vector<std::uint32_t> index(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        index[i] = static_cast<std::uint32_t>(m_frame.dense_index(m_frame.cell_of(points[i])));
+        ++m_offsets[index[i] + 1];
+      }
+      for (std::size_t c = 1; c < m_offsets.size(); ++c) m_offsets[c] += m_offsets[c - 1];
+      m_items.resize(n);
+      std::vector<std::uint32_t> fill(m_offsets.begin(), m_offsets.end() - 1);
+      for (std::size_t i = 0; i < n; ++i) m_items[fill[index[i]]++] = static_cast<std::uint32_t>(i);
+      return;
+    }
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
     for (std::size_t i = 0; i < n; ++i) keyed[i] = {m_frame.key(m_frame.cell_of(points[i])), static_cast<std::uint32_t>(i)};
     std::sort(keyed.begin(), keyed.end());
@@ -136,6 +198,12 @@ class Uniform_grid {
   /// Calls f(j) for every point j in the 3^D cells around p (a superset of the points within cell_size()).
   template <class F>
   void for_each_candidate(const Point& p, F&& f) const {
+    if (m_dense) {
+      m_frame.for_each_neighbor_index(p, [&](std::int64_t c) {
+        for (std::uint32_t i = m_offsets[std::size_t(c)]; i < m_offsets[std::size_t(c) + 1]; ++i) f(m_items[i]);
+      });
+      return;
+    }
     if (m_cells.empty()) return;
     m_frame.for_each_neighbor_key(p, [&](std::uint64_t k) {
       const auto it = m_cells.find(k);
@@ -146,6 +214,7 @@ class Uniform_grid {
 
  private:
   Grid_frame<D> m_frame;
+  bool m_dense = false;  // m_offsets per dense cell (use_dense_cells()), else per key of m_cells
   std::vector<std::uint32_t> m_items, m_offsets;
   std::unordered_map<std::uint64_t, std::size_t> m_cells;
 };
@@ -157,13 +226,31 @@ class Dynamic_grid {
  public:
   using Point = std::array<double, D>;
 
-  Dynamic_grid(const std::vector<Point>& points, double cell) : m_points(&points), m_frame(points, cell) {}
+  /// `expected_items`: about how many points will be inserted (default: as many as `points` holds), which
+  /// decides between a dense array of cells and a hash map (use_dense_cells()). Inserted points must lie in the
+  /// bounding box of `points`.
+  Dynamic_grid(const std::vector<Point>& points, double cell, std::size_t expected_items = 0)
+      : m_points(&points), m_frame(points, cell) {
+    if (!points.empty() && use_dense_cells(m_frame, expected_items > 0 ? expected_items : points.size()))
+      m_dense.resize(static_cast<std::size_t>(m_frame.cells()));
+  }
 
-  void insert(std::uint32_t i) { m_cells[m_frame.key(m_frame.cell_of((*m_points)[i]))].push_back(i); }
+  void insert(std::uint32_t i) {
+    if (!m_dense.empty())
+      m_dense[std::size_t(m_frame.dense_index(m_frame.cell_of((*m_points)[i])))].push_back(i);
+    else
+      m_cells[m_frame.key(m_frame.cell_of((*m_points)[i]))].push_back(i);
+  }
 
   /// Calls f(j) for every inserted point j in the 3^D cells around p, in insertion order per cell.
   template <class F>
   void for_each_candidate(const Point& p, F&& f) const {
+    if (!m_dense.empty()) {
+      m_frame.for_each_neighbor_index(p, [&](std::int64_t c) {
+        for (const std::uint32_t i : m_dense[std::size_t(c)]) f(i);
+      });
+      return;
+    }
     if (m_cells.empty()) return;
     m_frame.for_each_neighbor_key(p, [&](std::uint64_t k) {
       const auto it = m_cells.find(k);
@@ -175,6 +262,7 @@ class Dynamic_grid {
  private:
   const std::vector<Point>* m_points;
   Grid_frame<D> m_frame;
+  std::vector<std::vector<std::uint32_t>> m_dense;  // per dense cell (use_dense_cells()), else m_cells
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> m_cells;
 };
 /// \endcond

@@ -10,6 +10,7 @@
 #include <FeatureRecon/sampling/internal/sample_set.h>
 #include <FeatureRecon/sampling/sampling_options.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -72,7 +73,12 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
   std::vector<std::array<double, 2>> positions{{box[0], box[1]}, {box[2], box[3]}};
   internal::with_metric(options, [&](const auto& metric) {
     const double reach = radius * metric.spatial_scale(), reach2 = reach * reach;
-    FeatureRecon::internal::Dynamic_grid<2> grid(positions, reach);
+    // About as many cells as samples fit at spacing `reach` (fewer when max_samples caps them): then the grid
+    // is a dense array, not a hash map.
+    const double fit = (box[2] - box[0]) * (box[3] - box[1]) / (reach * reach);
+    const double expected = options.max_samples > 0 ? std::min(fit, double(options.max_samples)) : fit;
+    FeatureRecon::internal::Dynamic_grid<2> grid(positions, reach,
+                                                 static_cast<std::size_t>(std::min(expected, 0x1p40)) + 1);
     std::size_t failures = 0;
     while (failures < options.max_consecutive_failures &&
            (options.max_samples == 0 || result.samples.size() < options.max_samples)) {
