@@ -89,7 +89,7 @@ expect(rips_dup 0 "4 vertices, 3 edges, 1 triangles, 2 components" rips --points
 expect(rips_max_triangles 1 "more than 22291 triangles \\(--max-triangles; 400 vertices, 4226 edges" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 22291 --out ${WORK}/fig8_max.txt --quiet)
 expect(rips_max_triangles_equal 0 "22292 triangles" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 22292 --out ${WORK}/fig8_max.txt --quiet)
 expect(rips_max_triangles_bad 2 "--max-triangles must be an integer >= 0 \\(0: no limit\\), got '-1'" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles -1 --out ${WORK}/fig8_max.txt --quiet)
-expect(skeleton_max_triangles 1 "extract_reeb_skeleton: the flag complex has more than 100 triangles \\(Skeleton_options::max_triangles, --max-triangles" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 100 --out-vertices ${WORK}/mt_v.txt --out-edges ${WORK}/mt_e.txt --quiet)
+expect(skeleton_max_triangles 1 "extract_reeb_skeleton: the flag complex has more than 100 triangles \\(max_triangles of the options, --max-triangles" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 100 --out-vertices ${WORK}/mt_v.txt --out-edges ${WORK}/mt_e.txt --quiet)
 expect(skeleton_max_triangles_off 0 "\"rips_triangles\": 22292, \"max_triangles\": 0, .*\"loops\": 2," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 0 --out-vertices ${WORK}/mt_v.txt --out-edges ${WORK}/mt_e.txt --quiet)
 
 # Persistence pairs: the figure-eight has two loops, each a [birth, death] pair with birth > death.

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 using FeatureRecon::internal::Dynamic_grid;
@@ -121,4 +122,17 @@ TEST(UniformGrid, DenseCellsVisitInKeyOrder) {
   for (auto& x : p3) x = {u(rng), std::round(10 * u(rng)) / 10, u(rng)};
   p3.push_back({1, 1, 1});
   expect_key_order<3>(p3, 0.1);
+}
+
+// A dense grid filled point by point refuses a point outside the box of its frame (the hash map took it).
+TEST(UniformGrid, DenseDynamicGridRefusesAPointOutsideItsBox) {
+  std::vector<std::array<double, 2>> p{{0, 0}, {1, 1}};
+  Dynamic_grid<2> grid(p, 0.1, 100);
+  p.push_back({0.5, 0.5});
+  grid.insert(2);
+  p.push_back({-0.05, 0.5});
+  EXPECT_THROW(grid.insert(3), std::out_of_range);
+  std::vector<std::uint32_t> got;
+  grid.for_each_candidate({0.5, 0.5}, [&](std::uint32_t j) { got.push_back(j); });
+  EXPECT_EQ(got, (std::vector<std::uint32_t>{2}));
 }

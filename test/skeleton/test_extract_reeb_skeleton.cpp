@@ -141,7 +141,7 @@ TEST(ExtractReebSkeleton, TriangleLimitIsCheckedWhileCounting) {
   o.max_triangles = all.rips_triangles - 1;
   const std::string what = invalid_argument_message([&] { extract_reeb_skeleton(m, 1.0, o); });
   EXPECT_EQ(what.rfind("extract_reeb_skeleton: the flag complex has more than " +
-                           std::to_string(all.rips_triangles - 1) + " triangles (Skeleton_options::max_triangles",
+                           std::to_string(all.rips_triangles - 1) + " triangles (max_triangles of the options",
                        0),
             0u)
       << what;

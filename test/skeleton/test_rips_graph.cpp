@@ -404,8 +404,10 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
               std::string::npos)
         << e.what();
   }
+  // 0: no limit.
+  o.max_triangles = 0;
+  EXPECT_EQ(build_flag_complex_2(complete, o).number_of_triangles(), 220u);
   // A stop at the first call (during counting): no triangles, and no further call.
-  o.max_triangles = std::numeric_limits<std::size_t>::max();
   int calls = 0;
   o.progress = [&calls](double) { return ++calls > 1; };
   const Simplicial_complex_2 stopped = build_flag_complex_2(complete, o);

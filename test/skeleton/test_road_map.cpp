@@ -432,6 +432,19 @@ TEST(MergeRoadLines, LinesFartherApartStay) {
   Road_merge_options o;
   o.distance = 13;
   EXPECT_EQ(map_components(merge_road_lines(parallel_lines({0.0, 12.0}, 300, false), o).map), 1u);
+  // A spacing far above the distance does not contract samples of lines farther apart than the distance (half
+  // the spacing, 20, would have made the two lines 15 apart one).
+  o = {};
+  o.spacing = 40;
+  const Road_merge_result sparse = merge_road_lines(parallel_lines({0.0, 15.0}, 300, false), o);
+  EXPECT_EQ(map_components(sparse.map), 2u);
+  EXPECT_EQ(sparse.samples_contracted, 0u);
+  // The complex's triangle limit is the merge's own option.
+  o = {};
+  o.max_triangles = 1;
+  const std::string m = message_of([&] { merge_road_lines(parallel_lines({0.0, 4.0}, 300, false), o); });
+  EXPECT_NE(m.find("the flag complex has more than 1 triangles (max_triangles of the options"), std::string::npos)
+      << m;
 }
 
 TEST(MergeRoadLines, DegenerateInputAndDeterminism) {

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <unordered_map>
 #include <vector>
 
@@ -236,9 +237,11 @@ class Dynamic_grid {
   }
 
   void insert(std::uint32_t i) {
-    if (!m_dense.empty())
-      m_dense[std::size_t(m_frame.dense_index(m_frame.cell_of((*m_points)[i])))].push_back(i);
-    else
+    if (!m_dense.empty()) {
+      const std::int64_t c = m_frame.dense_index(m_frame.cell_of((*m_points)[i]));
+      if (c < 0) throw std::out_of_range("Dynamic_grid::insert: the point lies outside the frame's box");
+      m_dense[std::size_t(c)].push_back(i);
+    } else
       m_cells[m_frame.key(m_frame.cell_of((*m_points)[i]))].push_back(i);
   }
 

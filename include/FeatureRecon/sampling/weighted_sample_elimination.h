@@ -324,7 +324,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         std::vector<std::size_t> offset(m + 1, 0);
         std::size_t entries = 0, since_asked = 0;
         for (std::size_t i = 0; i < m; ++i) {
-          // Asked at the start and then about every 16,384 items, sooner when they have many neighbours (the
+          // Asked at the start and then about every 16,384 items, sooner when they have many candidates (the
           // count's work grows with them).
           if (i == 0 || since_asked >= 16384) {
             since_asked = 0;
@@ -334,11 +334,13 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
               return;
             }
           }
+          std::size_t visited = 0;
           grid.for_each_candidate(positions[i], [&](std::uint32_t j) {
+            ++visited;
             if (j != i && pair_weight(i, j) >= 0) ++offset[i + 1];
           });
           entries += offset[i + 1];
-          since_asked += offset[i + 1] / 16 + 1;
+          since_asked += visited / 16 + 1;
           if (entries > options.max_neighbor_entries)
             FeatureRecon::internal::throw_invalid_argument(
                 fn, "the neighbour lists within 2 r_max would hold more than ", options.max_neighbor_entries,

@@ -129,7 +129,7 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
 template <class Distance, class Bound>
 Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matrix& coordinates,
                                   const Distance& distance, const Skeleton_options& options, double progress_start,
-                                  Bound bound) {
+                                  Bound bound, const char* fn = "extract_reeb_skeleton") {
   const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
@@ -145,14 +145,16 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     b = progress_start + (1 - progress_start) * b;
     return [&options, &stopped, a, b](double t) { return !(stopped = stopped || !options.progress(a + (b - a) * t)); };
   };
-  // The Reeb graph takes fewer than 2^31 - 1 edges and triangles together.
+  // The Reeb graph takes fewer than 2^31 - 1 edges and triangles together, and fewer than 2^30 edges.
   const std::size_t capacity = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) - 1;
-  const std::size_t room = graph.edges.size() < capacity ? capacity - graph.edges.size() : 0;
+  const std::size_t room =
+      graph.edges.size() < capacity && 2 * graph.edges.size() < capacity ? capacity - graph.edges.size() : 0;
   const std::size_t max_triangles = options.max_triangles > 0 ? std::min(options.max_triangles, room) : room;
   const Simplicial_complex_2 K = internal::flag_complex_2(
-      graph, max_triangles, stage(0.0, 0.2), "extract_reeb_skeleton",
-      max_triangles == options.max_triangles ? "Skeleton_options::max_triangles, --max-triangles on the command line"
-                                             : "the Reeb graph's limit: 2^31 - 1 edges and triangles together");
+      graph, max_triangles, stage(0.0, 0.2), fn,
+      max_triangles == options.max_triangles && max_triangles > 0
+          ? "max_triangles of the options, --max-triangles on the command line"
+          : "the Reeb graph's limit: 2^31 - 1 edges and triangles together, 2^30 edges");
   if (stopped) {
     result.status = Status::interrupted;
     return result;
@@ -405,7 +407,7 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   return internal::skeleton_from_graph(
       g, mds,
       [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3,
-      nullptr);
+      nullptr, fn);
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.

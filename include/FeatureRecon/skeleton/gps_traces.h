@@ -120,7 +120,9 @@ inline double heading_difference(double a, double b, bool directed = false) {
 
 struct Cell_hash {
   std::size_t operator()(const std::array<std::int64_t, 2>& c) const {
-    return static_cast<std::size_t>(c[0] * 73856093LL ^ c[1] * 19349663LL);
+    // Unsigned: the products wrap instead of overflowing.
+    return static_cast<std::size_t>(static_cast<std::uint64_t>(c[0]) * 73856093u ^
+                                    static_cast<std::uint64_t>(c[1]) * 19349663u);
   }
 };
 

@@ -585,10 +585,10 @@ Proximity_graph proximity_graph_from_boost_graph(const Graph& graph, WeightMap w
 struct Flag_complex_options {
   /// Refuse a complex with more triangles than this (std::invalid_argument naming the limit), found while
   /// counting, before any triangle is stored: a radius too large for the data asks for billions of triangles.
-  /// Default: no limit.
-  std::size_t max_triangles = std::numeric_limits<std::size_t>::max();
+  /// Default 0: no limit.
+  std::size_t max_triangles = 0;
   /// Fraction done, asked during both passes (counting, then storing); returning false stops: the complex is
-  /// returned without triangles, or with those stored so far.
+  /// returned without triangles, or with those stored so far (the caller that stopped it knows).
   Progress_callback progress;
 };
 
@@ -662,8 +662,9 @@ inline Simplicial_complex_2 flag_complex_2(const Proximity_graph& g, std::size_t
 /// \throws std::invalid_argument for a graph that is not canonical, or more triangles than
 ///         `options.max_triangles` (found while counting, nothing stored).
 inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Flag_complex_options& options) {
-  return internal::flag_complex_2(g, options.max_triangles, options.progress, "build_flag_complex_2",
-                                  "Flag_complex_options::max_triangles");
+  return internal::flag_complex_2(
+      g, options.max_triangles > 0 ? options.max_triangles : std::numeric_limits<std::size_t>::max(), options.progress,
+      "build_flag_complex_2", "Flag_complex_options::max_triangles");
 }
 
 /// build_flag_complex_2() without a triangle limit.

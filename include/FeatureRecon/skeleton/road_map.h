@@ -94,6 +94,9 @@ struct Road_merge_options {
   double delta = 0;
   /// How the merged lines are drawn (level width 0: automatic); default road_merge_embedding_options().
   Embedding_options embedding = road_merge_embedding_options();
+  /// Skeleton_options::max_triangles of the neighbourhood's complex (its samples lie at least spacing / 2 apart,
+  /// so it stays far below the default unless `distance` is very large against `spacing`).
+  std::size_t max_triangles = Skeleton_options().max_triangles;
   Progress_callback progress;   ///< fraction done; returning false stops (status interrupted, map empty)
 };
 
@@ -436,12 +439,12 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     }
     chain.push_back({std::min(previous, e[1]), std::max(previous, e[1])});
   }
-  // Samples closer than half the spacing to an earlier one become that one (the nearest, ties by index): arcs that
+  // Samples closer than half the spacing (or of the distance, if smaller) to an earlier one become that one (the nearest, ties by index): arcs that
   // share a stretch (a skeleton's arcs following the same shortest path across gaps, or coincident polylines)
   // would otherwise stack their samples, and the neighbourhood's cliques grow with the cube of the stack (the
   // Chicago map at delta 1000 stacks up to 26 arcs: 52 s and 6 GB). Afterwards no disk of radius `distance`
   // holds more than about (2 distance / spacing + 1)^2 samples.
-  r.samples_contracted = internal::contract_close_samples(P, r.spacing / 2, chain);
+  r.samples_contracted = internal::contract_close_samples(P, std::min(r.spacing, options.distance) / 2, chain);
   r.samples = P.rows;
   Proximity_graph_options po;
   bool stopped = false;  // a stop inside the Rips stage counts even if the callback answers true afterwards
@@ -456,6 +459,7 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   const Proximity_graph g = internal::planar_graph(P, std::move(neighbourhood));
   Skeleton_options so;
   so.delta = r.delta;
+  so.max_triangles = options.max_triangles;
   so.embedding = options.embedding;
   if (options.progress) so.progress = [&options](double t) { return options.progress(0.3 + 0.7 * t); };
   Reeb_skeleton k = extract_reeb_skeleton(g, P, so);
@@ -485,7 +489,8 @@ struct Road_map_options {
   Gps_trace_options traces = road_map_trace_options();
   bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
   bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
-  std::size_t max_triangles = Skeleton_options().max_triangles;  ///< Skeleton_options::max_triangles
+  /// Skeleton_options::max_triangles of the skeleton and of the merging stage (Road_merge_options).
+  std::size_t max_triangles = Skeleton_options().max_triangles;
   /// How arcs are drawn (level width 0: median edge length of the complex); default road_map_embedding_options().
   Embedding_options embedding = road_map_embedding_options();
   /// Last stage: lines of the map closer than this become one (merge_road_lines()). Driving directions keep a
@@ -553,6 +558,7 @@ inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) 
 inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
   Road_merge_options o;
   o.distance = used.merge_distance;
+  o.max_triangles = used.max_triangles;
   return o;
 }
 
