@@ -271,7 +271,8 @@ int run_sample_image(const std::vector<std::string>& argv) {
     // Samples at least d apart in a W x H rectangle number at most 2 W H / (sqrt(3) d^2) + (W + H) / d + 1
     // (Groemer). Colours count in the distance: with --sigma-feature S two samples are at least
     // sqrt(R^2 - 1 / S^2) apart in the picture (colour distances lie in [0, 1]); no bound when that is 0.
-    const double d2 = s.radius * s.radius - (std::isinf(s.sigma_feature) ? 0.0 : 1 / (s.sigma_feature * s.sigma_feature));
+    const double colour = std::isinf(s.sigma_feature) ? 0.0 : 1 / (s.sigma_feature * s.sigma_feature);
+    const double d2 = s.radius * s.radius - colour;
     const double w = image.width, h = image.height, d = d2 > 0 ? std::sqrt(d2) : 0.0;
     const double bound = d > 0 ? 2 * w * h / (std::sqrt(3.0) * d2) + (w + h) / d + 1 : 0.0;
     const double most = 134217728.0;  // 2^27 samples, about 10 GB with the sampler's own copies

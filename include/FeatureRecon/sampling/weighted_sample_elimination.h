@@ -114,8 +114,8 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
 /// \throws std::invalid_argument naming the argument: neighbour lists longer than max_neighbor_entries (a
 ///   max_radius far too large; found while counting them, before they are stored), count larger than the
-///   input, non-finite coordinates (naming the item), sigma_position <= 0, sigma_feature <= 0, negative max_radius or domain_measure,
-///   intrinsic_dimension other than 0, 2 or 3 or above the positions' dimension, alpha <= 0, with a finite
+///   input, non-finite coordinates (naming the item), sigma_position <= 0, sigma_feature <= 0, negative
+///   max_radius or domain_measure, intrinsic_dimension other than 0, 2 or 3 or above the positions' dimension, alpha <= 0, with a finite
 ///   sigma_feature a feature at a non-finite distance from itself (a zero normal, NaN; naming the item). The
 ///   input is never modified.
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the

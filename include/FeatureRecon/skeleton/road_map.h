@@ -439,11 +439,11 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     }
     chain.push_back({std::min(previous, e[1]), std::max(previous, e[1])});
   }
-  // Samples closer than half the spacing (or of the distance, if smaller) to an earlier one become that one (the nearest, ties by index): arcs that
-  // share a stretch (a skeleton's arcs following the same shortest path across gaps, or coincident polylines)
-  // would otherwise stack their samples, and the neighbourhood's cliques grow with the cube of the stack (the
-  // Chicago map at delta 1000 stacks up to 26 arcs: 52 s and 6 GB). Afterwards no disk of radius `distance`
-  // holds more than about (2 distance / spacing + 1)^2 samples.
+  // Samples closer than half the spacing (or half the distance, if smaller) to an earlier one become that one
+  // (the nearest, ties by index): arcs that share a stretch (a skeleton's arcs following the same shortest path
+  // across gaps, or coincident polylines) would otherwise stack their samples, and the neighbourhood's cliques
+  // grow with the cube of the stack (the Chicago map at delta 1000 stacks up to 26 arcs: 52 s and 6 GB).
+  // Afterwards no disk of radius `distance` holds more than about (2 distance / spacing + 1)^2 samples.
   r.samples_contracted = internal::contract_close_samples(P, std::min(r.spacing, options.distance) / 2, chain);
   r.samples = P.rows;
   Proximity_graph_options po;
