@@ -72,7 +72,7 @@ class Grid_frame {
   void for_each_neighbor_index(const Point& p, F&& f) const {
     const Cell c = cell_of(p);
     Cell q;
-    visit_dense<0>(c, q, f);
+    visit<0>(c, q, &m_count, [&](const Cell& r) { f(dense_index(r)); });
   }
   Cell cell_of(const Point& p) const {
     Cell c;
@@ -102,12 +102,12 @@ class Grid_frame {
     const Cell c = cell_of(p);
     Cell q;
     if (!m_hashed) {  // packed keys are distinct
-      visit<0>(c, q, f);
+      visit<0>(c, q, &m_key_limit, [&](const Cell& r) { f(key(r)); });
       return;
     }
     std::array<std::uint64_t, 27> keys;
     std::size_t count = 0;
-    visit<0>(c, q, [&](std::uint64_t k) { keys[count++] = k; });
+    visit<0>(c, q, nullptr, [&](const Cell& r) { keys[count++] = key(r); });
     std::sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count));
     count = static_cast<std::size_t>(std::unique(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count)) -
                                      keys.begin());
@@ -116,35 +116,29 @@ class Grid_frame {
 
  private:
   static constexpr std::int64_t kLimit = std::int64_t(1) << 21;
-  template <int K, class F>
-  void visit(const Cell& c, Cell& q, F&& f) const {
-    for (std::int64_t d = -1; d <= 1; ++d) {
-      q[K] = c[K] + d;
-      if constexpr (K + 1 < D) {
-        visit<K + 1>(c, q, f);
-      } else {
-        bool inside = true;
-        if (!m_hashed)
-          for (int k = 0; k < D; ++k) inside = inside && q[k] >= 0 && q[k] < kLimit;
-        if (inside) f(key(q));
-      }
-    }
+  static std::array<std::int64_t, D> filled(std::int64_t v) {
+    std::array<std::int64_t, D> a;
+    a.fill(v);
+    return a;
   }
+  /// Calls f(q) for the 3^D cells q around c, nested over the axes (the first outermost: the order of packed
+  /// keys), skipping those with a coordinate outside [0, limit[k]) when `limit` is given.
   template <int K, class F>
-  void visit_dense(const Cell& c, Cell& q, F&& f) const {
+  void visit(const Cell& c, Cell& q, const std::array<std::int64_t, D>* limit, F&& f) const {
     for (std::int64_t d = -1; d <= 1; ++d) {
       q[K] = c[K] + d;
-      if (q[K] < 0 || q[K] >= m_count[K]) continue;
+      if (limit != nullptr && (q[K] < 0 || q[K] >= (*limit)[K])) continue;
       if constexpr (K + 1 < D)
-        visit_dense<K + 1>(c, q, f);
+        visit<K + 1>(c, q, limit, f);
       else
-        f(dense_index(q));
+        f(q);
     }
   }
   Point m_low{};
   double m_cell = 1;
   bool m_hashed = false;
   std::array<std::int64_t, D> m_count{};
+  std::array<std::int64_t, D> m_key_limit = filled(kLimit);  // packed keys: coordinates in [0, kLimit)
   double m_cells = 0;
 };
 
