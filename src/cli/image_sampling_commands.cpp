@@ -270,11 +270,13 @@ int run_sample_image(const std::vector<std::string>& argv) {
   if (s.method == "continuous") {
     // Samples at least d apart in a W x H rectangle number at most 2 W H / (sqrt(3) d^2) + (W + H) / d + 1
     // (Groemer). Colours count in the distance: with --sigma-feature S two samples are at least
-    // sqrt(R^2 - 1 / S^2) apart in the picture (colour distances lie in [0, 1]); no bound when that is 0.
+    // sqrt(R^2 - 1 / S^2) apart in the picture (colour distances lie in [0, 1]), and at least
+    // R / sqrt(1 + 2 / S^2), as bilinear colours change by at most sqrt(2) per pixel.
     const double colour = std::isinf(s.sigma_feature) ? 0.0 : 1 / (s.sigma_feature * s.sigma_feature);
-    const double d2 = s.radius * s.radius - colour;
-    const double w = image.width, h = image.height, d = d2 > 0 ? std::sqrt(d2) : 0.0;
-    const double bound = d > 0 ? 2 * w * h / (std::sqrt(3.0) * d2) + (w + h) / d + 1 : 0.0;
+    const double d = std::max(std::sqrt(std::max(0.0, s.radius * s.radius - colour)),
+                              s.radius / std::sqrt(1 + 2 * colour));
+    const double w = image.width, h = image.height;
+    const double bound = 2 * w * h / (std::sqrt(3.0) * d * d) + (w + h) / d + 1;
     const double most = 134217728.0;  // 2^27 samples, about 10 GB with the sampler's own copies
     if (bound > most && (s.count == 0 || double(s.count) > most)) {
       char up_to[32];
@@ -282,7 +284,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
       throw Usage_error("--radius " + args.get("radius") + " lets up to " + up_to + " samples into the " +
                         std::to_string(image.width) + " x " + std::to_string(image.height) +
                         " picture (more than 2^27 = 134217728): give --count M (at most 2^27) to cap them, or a "
-                        "larger radius");
+                        "larger radius" + std::string(std::isinf(s.sigma_feature) ? "" : " or --sigma-feature"));
     }
   }
 

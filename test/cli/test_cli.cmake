@@ -341,9 +341,14 @@ expect(sample_image_continuous 0 "\"method\": \"continuous\", \"samples\": 30,.*
        --method continuous --radius 2 --count 30 --sigma-feature 0.1 --mosaic ${WORK}/m.ppm --quiet)
 expect_count(${WORK}/m.ppm "^P6\n48 48\n255\n" 1)
 # A radius that lets billions of samples into the picture needs --count (Groemer's bound: 2.66e9 at 0.001 on
-# 48 x 48); with a count, or colours that can separate samples at any distance, it runs.
+# 48 x 48); with a count it runs. Colours let samples come closer than R, but bilinear colours change by at
+# most sqrt(2) per pixel: R / sqrt(1 + 2 / S^2) apart at least (R 2, S 1: 1.15 px, runs; S 1e-4: refused).
 expect(sample_image_continuous_unbounded 2 "--radius 0.001 lets up to 2.66e\\+09 samples into the 48 x 48 picture \\(more than 2\\^27"
        sample-image --input ${WORK}/line.pgm --method continuous --radius 0.001 --out ${WORK}/cu.txt --quiet)
+expect(sample_image_continuous_colour_bounded 0 "\"method\": \"continuous\", \"samples\": " sample-image
+       --input ${WORK}/line.pgm --method continuous --radius 2 --sigma-feature 1 --out ${WORK}/cu.txt --quiet)
+expect(sample_image_continuous_colour_unbounded 2 "--radius 2 lets up to 1.33e\\+11 samples into the 48 x 48"
+       sample-image --input ${WORK}/line.pgm --method continuous --radius 2 --sigma-feature 1e-4 --out ${WORK}/cu.txt)
 expect(sample_image_continuous_capped 0 "\"samples\": 50," sample-image --input ${WORK}/line.pgm --method continuous --radius 0.001
        --count 50 --out ${WORK}/cu.txt --quiet)
 expect(sample_image_rgb 0 "\"channels\": 3,.*\"samples\": 5" sample-image --input ${WORK}/tiny.ppm --count 5 --out ${WORK}/rgb.txt --quiet)

@@ -199,6 +199,14 @@ TEST(BilateralDartThrowing, DegenerateInputs) {
     for (int j = 0; j < 10; ++j) grid.emplace_back(i, j);
   EXPECT_EQ(darts(grid, 1.0).size(), 100u);
   EXPECT_LT(darts(grid, 1.5).size(), 60u);
+  // A radius whose square underflows: copies still conflict (the prefilter |dp|^2 < r^2 let none through).
+  const std::vector<Point_2> two_and_one{Point_2(0, 0), Point_2(0, 0), Point_2(1, 0)};
+  EXPECT_EQ(darts(two_and_one, 1e-150).size(), 2u);
+  EXPECT_EQ(darts(two_and_one, 1e-170).size(), 2u);
+  // Per-item radii: the result reports the largest (it echoed the ignored radius argument).
+  Dart_throwing_options o;
+  o.radii = {0.5, 2.0, 1.0};
+  EXPECT_EQ(bilateral_dart_throwing(two_and_one, std::nan(""), std::back_inserter(kept), o).radius, 2.0);
 }
 
 TEST(BilateralDartThrowing, BadInputNamesTheProblem) {

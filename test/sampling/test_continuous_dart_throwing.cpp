@@ -70,6 +70,21 @@ TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
   EXPECT_THROW(continuous_bilateral_dart_throwing({1, 0, 0, 1}, 0.1, grey_step, squared), std::invalid_argument);
   EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, std::nan(""), 1}, 0.1, grey_step, squared),
                std::invalid_argument);
+  // A finite box whose width overflows put every dart at x = inf (and never ended without a cap).
+  try {
+    continuous_bilateral_dart_throwing({-1e308, 0, 1e308, 1}, 0.1, grey_step, squared, o);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("box[0] = -1e+308 lies beyond +-1e100"), std::string::npos) << e.what();
+  }
+  // A radius whose square underflows: the metric decides (the prefilter rejected every pair, so no dart
+  // conflicted and the 5,000-dart cap was reached). The same as the problem scaled by 1e161.
+  Continuous_dart_throwing_options capped;
+  capped.max_samples = 5000;
+  const auto tiny = continuous_bilateral_dart_throwing({0, 0, 1e-161, 1e-161}, 1e-162, grey_step, squared, capped);
+  const auto unit = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.1, grey_step, squared, capped);
+  EXPECT_LT(tiny.samples.size(), 200u);
+  EXPECT_LT(unit.samples.size(), 200u);
   // A feature function that yields NaN somewhere: such darts never conflicted, so the run never ended.
   Continuous_dart_throwing_options bilateral;
   bilateral.sigma_feature = 0.5;

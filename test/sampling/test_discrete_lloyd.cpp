@@ -302,6 +302,71 @@ TEST(Discrete_lloyd, PointsWithNormalsIn3D) {
   EXPECT_GT(r.history.back().relative_radius, 0.0);
 }
 
+TEST(Discrete_lloyd, ExponentialFormWithCopiesOfFarFeatures) {
+  // Two items at one place with opposite normals: exp(4 / 0.05^2) overflows, and 0 * inf was NaN, which no
+  // site's score beat (site index 2^32 - 1 written to). Identical positions are at distance 0: site 0 takes both.
+  using K = test::K;
+  const std::vector<std::pair<K::Point_3, K::Vector_3>> items{{K::Point_3(0, 0, 0), K::Vector_3(0, 0, 1)},
+                                                              {K::Point_3(0, 0, 0), K::Vector_3(0, 0, -1)},
+                                                              {K::Point_3(5, 0, 0), K::Vector_3(0, 0, 1)}};
+  Discrete_lloyd_options<3> o;
+  o.form = Bilateral_form::exponential;
+  o.sigma_feature = 0.05;
+  const auto a = bilateral_voronoi_assignment(items, sites_at_items(items, std::vector<std::size_t>{0, 2}), o);
+  EXPECT_EQ(a.site, (std::vector<std::uint32_t>{0, 0, 1}));
+  EXPECT_EQ(a.mass, (std::vector<double>{2, 1}));
+  // Dart throwing: the copy conflicts with the first (it was kept: NaN < r is false).
+  Dart_throwing_options d;
+  d.form = Bilateral_form::exponential;
+  d.sigma_feature = 0.05;
+  std::vector<std::size_t> kept;
+  bilateral_dart_throwing(items, 1.0, std::back_inserter(kept), d);
+  EXPECT_EQ(kept.size(), 2u);
+}
+
+TEST(Discrete_lloyd, VolumesZeroNormalsAndNoIteration) {
+  using K = test::K;
+  // Items filling the unit cube (21^3 grid), sites on a 5^3 cubic lattice of spacing 0.25: rho against the FCC
+  // packing, as sampling_quality() measures it (the hexagonal formula with the volume gave 2.60).
+  std::vector<K::Point_3> cube;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j)
+      for (int k = 0; k <= 20; ++k) cube.emplace_back(i / 20.0, j / 20.0, k / 20.0);
+  std::vector<std::size_t> lattice;
+  for (int i = 0; i <= 20; i += 5)
+    for (int j = 0; j <= 20; j += 5)
+      for (int k = 0; k <= 20; k += 5) lattice.push_back(std::size_t(i * 441 + j * 21 + k));
+  Discrete_lloyd_options<3> o;
+  o.max_iterations = 1;
+  o.domain_measure = 1;
+  const double rho = discrete_bilateral_lloyd(cube, lattice, o).history.at(0).relative_radius;
+  EXPECT_NEAR(rho, 0.25 / std::cbrt(std::sqrt(2.0) / 125), 1e-12);  // 1.1136
+  o.domain_measure = 0;  // estimated as a volume: the box widened by the item spacing, (21/20)^3
+  EXPECT_NEAR(discrete_bilateral_lloyd(cube, lattice, o).history.at(0).relative_radius,
+              0.25 / std::cbrt(std::sqrt(2.0) * std::pow(1.05, 3) / 125), 1e-9);
+  o.intrinsic_dimension = 4;
+  EXPECT_THROW(discrete_bilateral_lloyd(cube, lattice, o), std::invalid_argument);
+  // A zero normal is refused only where normals are compared (finite sigma_feature), as by the other samplers.
+  std::vector<std::pair<K::Point_3, K::Vector_3>> sheet;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) sheet.push_back({K::Point_3(i, j, 0), K::Vector_3(0, 0, 1)});
+  sheet[5].second = K::Vector_3(0, 0, 0);
+  Discrete_lloyd_options<3> e;
+  e.max_iterations = 2;
+  const auto r = discrete_bilateral_lloyd(sheet, std::vector<std::size_t>{0, 50, 99}, e);
+  EXPECT_EQ(r.history.size(), 2u);
+  e.sigma_feature = 0.5;
+  EXPECT_THROW(discrete_bilateral_lloyd(sheet, std::vector<std::size_t>{0, 50, 99}, e), std::invalid_argument);
+  // No iteration: the assignment is that of the starting sites (it came back empty).
+  e.sigma_feature = std::numeric_limits<double>::infinity();
+  e.max_iterations = 0;
+  const auto z = discrete_bilateral_lloyd(sheet, std::vector<std::size_t>{0, 99}, e);
+  ASSERT_EQ(z.assignment.size(), sheet.size());
+  EXPECT_EQ(z.assignment[0], 0u);
+  EXPECT_EQ(z.assignment[99], 1u);
+  EXPECT_EQ(z.mass[0] + z.mass[1], 100.0);
+}
+
 TEST(Discrete_lloyd, BadInputNamesTheProblem) {
   const auto px = step_image(6, 6, 3, 0, 0);
   const auto sites = random_sites(3, 6, 6, 1);

@@ -28,6 +28,9 @@ TEST(BilateralMetric, GaussianAndExponentialForms) {
   // sigma_feature = infinity is the scaled Euclidean distance, whatever the features.
   EXPECT_DOUBLE_EQ((Gaussian_bilateral_metric{2.0}(9.0, 100.0)), 1.5);
   EXPECT_DOUBLE_EQ((Exponential_bilateral_metric{2.0}(9.0, 100.0)), 1.5);
+  // Identical positions are at distance 0 whatever the features, also where exp(f) overflows (0 * inf = NaN).
+  EXPECT_EQ((Exponential_bilateral_metric{1.0, 0.05}(0.0, 4.0)), 0.0);
+  EXPECT_EQ((Exponential_bilateral_metric{1.0, 0.05}(1e-300, 4.0)), std::numeric_limits<double>::infinity());
   // The documented lower bound xi >= |dp| / sigma_position, which the samplers' spatial searches rely on.
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0, 10);
@@ -303,6 +306,11 @@ TEST(SamplingSpectrum, WhiteNoiseIsFlatAndIsotropic) {
   EXPECT_THROW(average_sampling_spectra(all, 0.5), std::invalid_argument);
   Sampling_spectrum_options bad;
   bad.threshold = 0;
+  EXPECT_THROW(sampling_spectrum(white_noise(16, 1), bad), std::invalid_argument);
+  bad = {};
+  bad.max_frequency = std::numeric_limits<std::size_t>::max();  // became -1: an Eigen assertion or worse
+  EXPECT_THROW(sampling_spectrum(white_noise(16, 1), bad), std::invalid_argument);
+  bad.max_frequency = 16385;
   EXPECT_THROW(sampling_spectrum(white_noise(16, 1), bad), std::invalid_argument);
 }
 

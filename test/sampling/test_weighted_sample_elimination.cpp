@@ -392,4 +392,63 @@ TEST(WeightedSampleElimination, ExactKernelPointsAndSurfaceEstimates) {
   const double expected = std::sqrt(4 * M_PI / (2 * std::sqrt(3.0) * 2000));
   EXPECT_NEAR(r.radius, expected, 0.1 * expected);
 }
+
+TEST(WeightedSampleElimination, CopiesAndFlatInputIn3D) {
+  // A 30 x 30 grid on z = 0, every place 9 times: the surface area was estimated from the 8th neighbour, a copy
+  // at distance 0 (area 0, r_max 0: a random choice that kept copies). Estimated on the places: as without copies.
+  std::vector<Point_3> grid, copies;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) grid.emplace_back(i / 29.0, j / 29.0, 0);
+  for (int c = 0; c < 9; ++c) copies.insert(copies.end(), grid.begin(), grid.end());
+  std::vector<std::size_t> a, b;
+  Elimination_options o;
+  o.intrinsic_dimension = 2;  // estimated as 2 either way; the area is the point
+  const auto ra = weighted_sample_elimination(grid, 100, std::back_inserter(a), o);
+  const auto rb = weighted_sample_elimination(copies, 100, std::back_inserter(b), o);
+  EXPECT_GT(ra.radius, 0.0);
+  EXPECT_EQ(rb.radius, ra.radius);
+  EXPECT_EQ(rb.status, Status::success);
+  std::set<std::array<double, 3>> places;
+  for (const std::size_t i : b) places.insert({copies[i].x(), copies[i].y(), copies[i].z()});
+  EXPECT_EQ(places.size(), 100u);
+  // The same with the dimension estimated (more than 12 copies made every neighbourhood look flat or empty).
+  std::vector<std::size_t> c;
+  EXPECT_EQ(weighted_sample_elimination(copies, 100, std::back_inserter(c)).radius, ra.radius);
+  // Collinear 3D points with a measure given: intrinsic_dimension 0 means 2 (it was read as 0: the volume
+  // formula, and stages of r_max 0 in the progressive elimination).
+  std::vector<Point_3> line;
+  for (int i = 0; i < 1000; ++i) line.emplace_back(i / 999.0, 0, 0);
+  Elimination_options m;
+  m.domain_measure = 1;
+  std::vector<std::size_t> d0, d2;
+  const double r0 = weighted_sample_elimination(line, 50, std::back_inserter(d0), m).radius;
+  m.intrinsic_dimension = 2;
+  const double r2 = weighted_sample_elimination(line, 50, std::back_inserter(d2), m).radius;
+  EXPECT_EQ(r0, r2);
+  EXPECT_EQ(d0, d2);
+}
+
+TEST(WeightedSampleElimination, RadiiAtTheEndsOfTheDoubles) {
+  const std::vector<Point_2> p = white_noise(20, 4);
+  std::vector<std::size_t> kept;
+  Elimination_options o;
+  o.max_radius = 1e99;  // every pair within 2 r_max: runs
+  EXPECT_EQ(weighted_sample_elimination(p, 5, std::back_inserter(kept), o).selected, 5u);
+  // 2 r_max overflowed: every weight NaN, skipped while counting, stored while filling (out of bounds).
+  o.max_radius = 1e308;
+  try {
+    weighted_sample_elimination(p, 5, std::back_inserter(kept), o);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_radius (1e+308) times sigma_position (1) is beyond 1e100"),
+              std::string::npos) << e.what();
+  }
+  // Tiny coordinates: (2 r_max)^2 underflows; the metric still decides, and copies go first.
+  std::vector<Point_2> tiny;
+  for (const Point_2& x : p) tiny.emplace_back(x.x() * 1e-165, x.y() * 1e-165);
+  std::vector<std::size_t> a, b;
+  weighted_sample_elimination(p, 5, std::back_inserter(a));
+  weighted_sample_elimination(tiny, 5, std::back_inserter(b));
+  EXPECT_EQ(b.size(), 5u);
+}
 }  // namespace

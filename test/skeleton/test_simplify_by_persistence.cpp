@@ -156,6 +156,12 @@ TEST(SimplifyByPersistence, BadGraphsAreNamed) {
   bad = R;
   bad.arcs[0].upper = 9;
   EXPECT_NE(error_of(bad, g.f).find("arc 0 joins nodes out of range"), std::string::npos);
+  // Nodes out of (value, vertex) order: the message names this function, not the persistence it calls.
+  bad = R;
+  std::swap(bad.nodes[0], bad.nodes[1]);
+  std::swap(bad.arcs[0].lower, bad.arcs[0].upper);
+  EXPECT_EQ(error_of(bad, g.f).rfind("simplify_by_persistence: nodes 0 and 1 are not in increasing (value, vertex) "
+                                     "order", 0), 0u) << error_of(bad, g.f);
 }
 
 TEST(SimplifyByPersistence, OnlyTheGraphsVerticesComeBack) {

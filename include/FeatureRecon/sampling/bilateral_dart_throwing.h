@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -59,9 +60,11 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   interrupted = false;
   with_metric(o, [&](const auto& metric) {
     FeatureRecon::internal::Dynamic_grid<D> grid(S.positions, largest * metric.spatial_scale());
+    // The prefilter |dp|^2 < (r s)^2; skipped (the metric decides) where (r s)^2 underflows, or copies at
+    // distance 0 would not be compared.
     const double reach2 = [&] {
       const double r = largest * metric.spatial_scale();
-      return r * r;
+      return r * r >= 0x1p-960 ? r * r : std::numeric_limits<double>::infinity();
     }();
     std::size_t failures = 0;
     for (std::size_t step = 0; step < n; ++step) {
@@ -127,7 +130,9 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   internal::check_dart_options(options, S.size(), fn);
-  Sampling_result<OutputIterator> result{selected, 0, radius, Status::success};
+  // With per-item radii, the largest of them (the `radius` argument is ignored).
+  const double used = options.radii.empty() ? radius : *std::max_element(options.radii.begin(), options.radii.end());
+  Sampling_result<OutputIterator> result{selected, 0, used, Status::success};
   if (S.size() == 0) {
     result.status = Status::degenerate_input;
     return result;

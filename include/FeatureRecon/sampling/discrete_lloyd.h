@@ -66,8 +66,11 @@ struct Discrete_lloyd_options {
   double move_tolerance = 0;  ///< stop when no site moved farther than this (units of the positions); default 0
   /// Area (2D items, surfaces) or volume of the domain for the relative radius; default 0: the bounding box of
   /// 2D items widened by one item spacing (so a W x H image of pixels has area W H), the estimated surface area
-  /// of 3D items.
+  /// of 3D surface items, the bounding box of volume items widened by one item spacing.
   double domain_measure = 0;
+  /// 2 (images, surfaces: rho against the hexagonal packing) or 3 (volumes: against the FCC packing). Default 0:
+  /// 2 for 2D items; for 3D items, 2 when most have a flat neighbourhood (as weighted_sample_elimination()).
+  int intrinsic_dimension = 0;
   /// Called after each iteration with its statistics and the sites' positions after the move; returning
   /// false stops there (early stopping on rho or on an oscillation the callback computes). Default: none.
   std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)> on_iteration;
@@ -94,8 +97,9 @@ struct Discrete_lloyd_step_result {
 template <class Traits>
 struct Discrete_lloyd_result {
   std::vector<Bilateral_site<Traits>> sites;         ///< final sites, in input order
-  std::vector<std::uint32_t> assignment;             ///< per item: its site at the last iteration
-  std::vector<double> mass;                          ///< per site: the density of its items at the last iteration
+  /// Per item: its site at the last iteration (with no iteration done: among the starting sites).
+  std::vector<std::uint32_t> assignment;
+  std::vector<double> mass;                          ///< per site: the density of its items, as `assignment`
   std::vector<Lloyd_iteration_statistics> history;   ///< one entry per iteration done
   Lloyd_stop stop = Lloyd_stop::iteration_cap;       ///< why it stopped
   /// degenerate_input for no items or no sites (nothing moves); interrupted when the progress callback stopped it.
@@ -113,8 +117,10 @@ class Item_domain {
   using Site = Bilateral_site<Traits>;
 
   template <class ItemRange>
-  Item_domain(const ItemRange& items, const Traits& traits, double domain_measure, const char* fn)
-      : S(items, traits, fn), measure(domain_measure) {
+  // `compared`: whether features are compared (finite sigma_feature); only then must each be at a finite
+  // distance from itself (a zero normal is fine for Euclidean relaxation).
+  Item_domain(const ItemRange& items, const Traits& traits, double domain_measure, const char* fn, bool compared)
+      : S(items, traits, fn, compared), measure(domain_measure) {
     if (!(domain_measure >= 0) || !std::isfinite(domain_measure))
       FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ", domain_measure);
     if (S.size() > std::numeric_limits<std::uint32_t>::max() - 1)
@@ -205,17 +211,26 @@ class Item_domain {
     return b;
   }
 
-  // d_hex = sqrt(2 A / (sqrt(3) n)) for n sites on the domain's area (2D, or the surface of 3D items).
+  // d_hex = sqrt(2 A / (sqrt(3) n)) for n sites on the domain's area (2D, or the surface of 3D items); in a
+  // volume (intrinsic 3) d_fcc = cbrt(sqrt(2) V / n).
   double packing_distance(std::size_t n) const {
     if (n == 0 || S.size() == 0) return 0;
     double m = measure;
+    if (intrinsic == 3) {
+      if (m == 0) {
+        const double spacing = grid_spacing();
+        m = 1;
+        for (int k = 0; k < D; ++k) m *= hi[k] - lo[k] + spacing;
+      }
+      return std::cbrt(std::sqrt(2.0) * m / double(n));
+    }
     if (m == 0) {
       if constexpr (D == 2) {
         const double spacing = grid_spacing();
         m = (hi[0] - lo[0] + spacing) * (hi[1] - lo[1] + spacing);
       } else {
-        Knn_3 knn(S.positions);
-        m = estimate_surface_area(S.positions, knn);
+        const std::vector<std::array<double, 3>> places = distinct_positions(S.positions);
+        m = estimate_surface_area(places, Knn_3(places));
       }
     }
     return std::sqrt(2 * m / (std::sqrt(3.0) * double(n)));
@@ -234,8 +249,21 @@ class Item_domain {
     return s;
   }
 
+  // 2 (images, surfaces) or 3 (volumes): the packing behind the relative radius.
+  static int resolve_intrinsic_dimension(const Sample_set<Traits>& S, int requested) {
+    if (requested != 0) return requested;
+    if constexpr (D == 3) {
+      if (S.size() >= 8 && affine_dimension<3>(S.positions) == 3) {
+        const std::vector<std::array<double, 3>> places = distinct_positions(S.positions);
+        return estimate_intrinsic_dimension(places, Knn_3(places));
+      }
+    }
+    return 2;
+  }
+
   Sample_set<Traits> S;
   double measure = 0;
+  int intrinsic = 2;
   Point lo{}, hi{};
   Ring_grid<D> item_grid;
 };
@@ -252,8 +280,10 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
 
   template <class ItemRange>
   Discrete_lloyd_engine(const ItemRange& items, const Discrete_lloyd_options<D>& o, const Traits& traits, const char* fn)
-      : Base(items, traits, o.domain_measure, fn), options(o) {
+      : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
     check_sigmas(o.sigma_position, o.sigma_feature, fn);
+    check_domain(o.domain_measure, o.intrinsic_dimension, D, fn);
+    this->intrinsic = Base::resolve_intrinsic_dimension(S, o.intrinsic_dimension);
     if (!o.density.empty() && o.density.size() != S.size())
       FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ", S.size(),
                                                      " items");
@@ -346,7 +376,7 @@ bool is_index(I i, std::size_t n) {
 template <class ItemRange, class IndexRange, class Traits = Default_traits_t<ItemRange>>
 std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const IndexRange& indices,
                                                    const Traits& traits = Traits()) {
-  const internal::Sample_set<Traits> S(items, traits, "sites_at_items");
+  const internal::Sample_set<Traits> S(items, traits, "sites_at_items", false);  // features are only copied
   std::vector<Bilateral_site<Traits>> sites;
   std::size_t k = 0;
   for (const auto i : indices) {
@@ -447,6 +477,11 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
                                   previous_energy - s.energy, options.energy_tolerance, result.stop))
       break;
     previous_energy = s.energy;
+  }
+  if (result.history.empty()) {  // no iteration (max_iterations 0, or stopped at once): the starting sites' sets
+    Bilateral_assignment a = engine.assign(sites);
+    result.assignment = std::move(a.site);
+    result.mass = std::move(a.mass);
   }
   if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   result.sites = std::move(sites);

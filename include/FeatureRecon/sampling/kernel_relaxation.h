@@ -125,7 +125,7 @@ class Kernel_engine : public Item_domain<Traits> {
   template <class ItemRange>
   Kernel_engine(const ItemRange& items, const Kernel_relaxation_options<D>& o, const Traits& traits, std::size_t sites,
                 const char* fn)
-      : Base(items, traits, o.domain_measure, fn), options(o) {
+      : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
     check_sigmas(o.sigma_position, o.sigma_feature, fn);
     if (!(o.kernel_width >= 0) || !std::isfinite(o.kernel_width))
       FeatureRecon::internal::throw_invalid_argument(fn, "kernel_width must be finite and >= 0, got ", o.kernel_width);
@@ -150,7 +150,7 @@ class Kernel_engine : public Item_domain<Traits> {
     if (!o.density.empty() && !(total > 0))
       FeatureRecon::internal::throw_invalid_argument(fn, "density is 0 on every item");
     mean_density = o.density.empty() ? 1.0 : total / double(o.density.size());
-    intrinsic = (D == 3 && o.constraint == Kernel_constraint::bounding_box) ? 3 : 2;
+    this->intrinsic = (D == 3 && o.constraint == Kernel_constraint::bounding_box) ? 3 : 2;
     if (S.size() == 0) return;
     // The box: the items' bounding box widened by half the item spacing on every side.
     box_lo = this->lo;
@@ -159,8 +159,8 @@ class Kernel_engine : public Item_domain<Traits> {
       double area = o.domain_measure;
       if (area == 0 && S.size() > 1) {
         if constexpr (D == 3) {
-          Knn_3 knn(S.positions);
-          area = estimate_surface_area(S.positions, knn);
+          const std::vector<std::array<double, 3>> places = distinct_positions(S.positions);
+          area = estimate_surface_area(places, Knn_3(places));
         }
       }
       spacing = std::sqrt(area / double(S.size()));
@@ -309,7 +309,7 @@ class Kernel_engine : public Item_domain<Traits> {
 
   const Kernel_relaxation_options<D>& options;
   double mean_density = 1;
-  int intrinsic = 2;
+  using Base::intrinsic;
   Point box_lo{}, box_hi{};
   double spacing = 0;  // of the items
   double packing = 0;

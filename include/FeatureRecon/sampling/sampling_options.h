@@ -46,6 +46,7 @@ struct Exponential_bilateral_metric {
   double sigma_feature = std::numeric_limits<double>::infinity();    ///< feature scale (> 0); default infinity
   /// xi from the squared spatial and squared feature distances.
   double operator()(double squared_position_distance, double squared_feature_distance) const {
+    if (squared_position_distance == 0) return 0;  // not 0 * exp(f) = 0 * infinity = NaN for far features
     const double f = std::isinf(sigma_feature) ? 0.0 : squared_feature_distance / (sigma_feature * sigma_feature);
     return std::sqrt(squared_position_distance) / sigma_position * std::exp(f);
   }
@@ -58,7 +59,7 @@ template <class OutputIterator>
 struct Sampling_result {
   OutputIterator out;             ///< the output iterator, advanced past the selected indices
   std::size_t selected = 0;       ///< number of indices written
-  double radius = 0;              ///< the bilateral radius used (for elimination: r_max in xi units)
+  double radius = 0;  ///< the bilateral radius used (elimination: r_max in xi units; per-item radii: the largest)
   Status status = Status::success;  ///< degenerate_input for an empty input; interrupted when stopped
 };
 

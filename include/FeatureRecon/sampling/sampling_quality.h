@@ -195,7 +195,8 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
 struct Sampling_spectrum_options {
   /// Largest integer frequency per axis of the periodogram. Default 0: 6 sqrt(N) (rounded up), that is 12 in
   /// units of sqrt(N)/2, which holds the oscillation band of Heck et al. (10 units from where the power first
-  /// reaches 1) for every set whose power reaches 1 below 2 units (any blue-noise set).
+  /// reaches 1) for every set whose power reaches 1 below 2 units (any blue-noise set). At most 16384: the
+  /// periodogram holds (2 F + 1)(F + 1) complex sums (8.6 GB at 16384).
   std::size_t max_frequency = 0;
   /// Level of the mean power over a disc of frequencies that ends the zero region (Heck et al.: 0.1, -10 dB).
   double threshold = 0.1;
@@ -323,13 +324,17 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 /// Nyquist frequency and the oscillation. O(N F^2) time.
 /// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
-/// \throws std::invalid_argument for non-finite coordinates (naming the item) or a threshold outside (0, 0.5).
+/// \throws std::invalid_argument for non-finite coordinates (naming the item), a threshold outside (0, 0.5) or a
+///   max_frequency above 16384.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spectrum_options& options = {},
                                     const Traits& traits = Traits()) {
   const char* fn = "sampling_spectrum";
   static_assert(Traits::dimension == 2, "FeatureRecon: sampling_spectrum takes 2D positions");
   internal::check_spectrum_threshold(options.threshold, fn);
+  if (options.max_frequency > 16384)
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_frequency must be at most 16384 (the periodogram holds (2 F "
+                                                   "+ 1)(F + 1) complex sums), got ", options.max_frequency);
   const internal::Sample_set<Traits> S(items, traits, fn, false);
   const std::size_t n = S.size();
   Sampling_spectrum result;

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <utility>
@@ -134,6 +135,10 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
   if (!(options.max_radius >= 0 && std::isfinite(options.max_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_radius must be finite and >= 0, got ", options.max_radius);
+  if (!(options.max_radius * options.sigma_position <= 1e100))  // items lie within +-1e100
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_radius (", options.max_radius, ") times sigma_position (",
+                                                   options.sigma_position, ") is beyond 1e100, farther than any two "
+                                                   "items can lie apart");
   internal::check_domain(options.domain_measure, options.intrinsic_dimension, Traits::dimension, fn);
   if (!(options.alpha > 0 && std::isfinite(options.alpha)))
     FeatureRecon::internal::throw_invalid_argument(fn, "alpha must be finite and > 0, got ", options.alpha);
@@ -158,17 +163,18 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     const int affine = internal::affine_dimension<D>(S.positions);
     if constexpr (D == 3) {
       if (affine >= 2 && (dim == 0 || (dim == 2 && measure == 0) || (affine == 2 && measure == 0))) {
-        const internal::Knn_3 knn(S.positions);
-        if (dim == 0) dim = affine == 2 ? 2 : internal::estimate_intrinsic_dimension(S.positions, knn);
+        // Estimated on the distinct positions: copies would be neighbours at distance 0.
+        const std::vector<std::array<double, 3>> places = internal::distinct_positions(S.positions);
+        const internal::Knn_3 knn(places);
+        if (dim == 0) dim = affine == 2 ? 2 : internal::estimate_intrinsic_dimension(places, knn);
         if (affine == 2 && dim == 3) {
           dim = 2;
           result.status = Status::degenerate_input;
         }
-        if (dim == 2 && measure == 0) measure = internal::estimate_surface_area(S.positions, knn);
+        if (dim == 2 && measure == 0) measure = internal::estimate_surface_area(places, knn);
       }
-    } else {
-      if (dim == 0) dim = 2;
     }
+    if (dim == 0) dim = 2;  // 2D positions, and collinear 3D ones with a measure given
     if (affine <= 1 && measure == 0) {
       // Collinear (r_max = L / (2 count), the packing of a segment) or one position (r_max = 0).
       result.status = Status::degenerate_input;
@@ -285,7 +291,10 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       // Neighbour lists (CSR, local ids only: 4 bytes per neighbour; the weights are recomputed when an item
       // goes, which costs less than storing them on this scale). Two passes over the grid: count, then fill.
       internal::with_metric(options, [&](const auto& metric) {
-        const double spatial = two_r * metric.spatial_scale(), spatial2 = spatial * spatial;
+        // The prefilter |dp|^2 < (2 r s)^2, skipped (the metric decides) where that square underflows.
+        const double spatial = two_r * metric.spatial_scale(),
+                     spatial2 = spatial * spatial >= 0x1p-960 ? spatial * spatial
+                                                               : std::numeric_limits<double>::infinity();
         // Weight of the pair (i, j) (local ids), or a negative number when j is not within 2 r of i.
         auto pair_weight = [&](std::size_t i, std::size_t j) {
           double d2 = 0;  // from the stage's own copy of the positions (contiguous, no indirection)
@@ -361,7 +370,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           grid.for_each_candidate(positions[i], [&](std::uint32_t j) {
             if (j == i) return;
             const double w = pair_weight(i, j);
-            if (w < 0) return;
+            if (!(w >= 0)) return;  // the test of the count
             neighbor[k++] = j;
             weight[i] += w;
           });

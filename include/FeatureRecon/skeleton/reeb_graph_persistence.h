@@ -48,11 +48,11 @@ struct Reeb_graph_persistence {
 
 namespace internal {
 /// compute_reeb_graph_persistence(), optionally also giving for each loop (in the order of `loops`) the arcs of
-/// its thin cycle.
+/// its thin cycle; errors name `fn`.
 inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
                                                      std::vector<std::vector<std::size_t>>* loop_cycles,
-                                                     double cycle_limit = std::numeric_limits<double>::infinity()) {
-  const char* fn = "compute_reeb_graph_persistence";
+                                                     double cycle_limit = std::numeric_limits<double>::infinity(),
+                                                     const char* fn = "compute_reeb_graph_persistence") {
   const std::size_t n = R.nodes.size();
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(R.nodes[i].value))

@@ -57,7 +57,8 @@ struct Simplification_complex {
 /// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's vertices
 /// there) are not level with it: they take no part in the merges and stay with the place of their node's vertex.
 /// \pre delta >= 0 and finite; every vertex of R (nodes, members, arc vertices) indexes `values` and is used
-/// once; the values R uses are finite and each node's value is `values[vertex]` (all checked; throws naming the
+/// once; the values R uses are finite and each node's value is `values[vertex]`; the nodes are in increasing
+/// (value, vertex) order, as every function returning a Reeb_graph leaves them (all checked; throws naming the
 /// node or arc).
 inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, const std::vector<double>& values,
                                                           double delta) {
@@ -91,7 +92,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (const Vertex_index v : R.arcs[k].vertices) use(v, "arc", k, 1);
   }
   std::vector<std::vector<std::size_t>> cycles;
-  const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles, delta);
+  const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles, delta, fn);
   const std::size_t n = values.size();
   internal::Simplification_complex Y;
   Y.values = values;

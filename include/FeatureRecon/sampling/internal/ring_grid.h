@@ -86,7 +86,8 @@ class Ring_grid {
   double side() const { return m_side; }
   std::size_t number_of_cells() const { return m_count; }
 
-  /// The index j minimising score(j) (ties: lowest j) over the points, or max() when there are none.
+  /// The index j minimising score(j) (ties: lowest j) over the points, or max() when there are none. A NaN
+  /// score counts as infinity (a point is found whenever there are any).
   /// \param scale score(j) >= |x - point j| / scale for every j (scale > 0; infinity: plain scan of all).
   template <class Score>
   std::uint32_t nearest(const Point& x, double scale, Score&& score, double& best) const {
@@ -100,7 +101,8 @@ class Ring_grid {
       visit_ring(c, r, [&](std::size_t cell_index) {
         for (std::uint32_t t = m_offsets[cell_index]; t < m_offsets[cell_index + 1]; ++t) {
           const std::uint32_t j = m_items[t];
-          const double s = score(j);
+          double s = score(j);
+          if (std::isnan(s)) s = std::numeric_limits<double>::infinity();
           if (s < best || (s == best && j < arg)) {
             best = s;
             arg = j;

@@ -162,6 +162,22 @@ struct Knn_3 {
   }
 };
 
+/// The distinct positions, each where it first occurs (the estimates below take them: copies are neighbours at
+/// distance 0). Without copies, `p` itself.
+template <std::size_t D>
+std::vector<std::array<double, D>> distinct_positions(const std::vector<std::array<double, D>>& p) {
+  std::vector<std::uint32_t> order(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return p[a] < p[b]; });
+  std::vector<std::uint8_t> copy(p.size(), 0);
+  for (std::size_t k = 1; k < order.size(); ++k) copy[order[k]] = p[order[k]] == p[order[k - 1]];
+  std::vector<std::array<double, D>> out;
+  out.reserve(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!copy[i]) out.push_back(p[i]);
+  return out;
+}
+
 /// Intrinsic dimension of 3D positions: 2 when at least half of up to 1000 evenly spread probes have a flat
 /// neighbourhood (smallest eigenvalue of the covariance of 12 neighbours below 5 % of the trace; isotropic
 /// volume samples give about 33 %), else 3.
