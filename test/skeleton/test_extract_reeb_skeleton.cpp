@@ -121,6 +121,30 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   bad = {};
   bad.prune_height = -1;
   EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("got 0, 0 and -1"), std::string::npos);
+  // Embedding options are checked before the pipeline runs (they were refused by its last stage, naming
+  // embed_reeb_graph and the automatic level width in place of the caller's), with the caller's values.
+  bad = {};
+  bad.embedding.smoothing_weight = 2;
+  std::size_t calls = 0;
+  bad.progress = [&calls](double) { return ++calls > 0; };
+  EXPECT_EQ(message([&] { extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}, {1.0, 0.0}}, 2.0, bad); }),
+            "extract_reeb_skeleton: embedding smoothing_weight must lie in [0, 1], got 2");
+  EXPECT_EQ(calls, 0u);
+  bad.embedding.smoothing_weight = 0.5;
+  bad.embedding.level_width = -1;
+  EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("embedding level_width must be finite and >= 0"),
+            std::string::npos);
+  // make_skeleton_graph() checks that the embedding is the graph's (it read out of bounds).
+  Reeb_graph line;
+  line.nodes.resize(2);
+  line.nodes[1].vertex = 1;
+  line.nodes[1].value = 1;
+  line.arcs = {{0, 1, {}}};
+  Reeb_graph_embedding wrong;
+  wrong.node_positions.resize(1);
+  EXPECT_EQ(message([&] { make_skeleton_graph(line, wrong); }),
+            "make_skeleton_graph: the embedding has 1 node positions and 0 arc polylines for a graph of 2 nodes and 1 "
+            "arcs (not its embedding)");
 }
 
 // Skeleton_options::max_triangles: a complex of exactly that many triangles is built as without a limit, one

@@ -326,6 +326,11 @@ TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
   bad.arcs[0].vertices.push_back(9);  // connect_dead_ends reads the values of the vertices it splits at
   EXPECT_NE(error_of([&] { connect_dead_ends(bad, f, 1.0, pts); }).find("arc 0 has vertex 9 out of range [0, 4)"),
             std::string::npos);
+  // An arc vertex of value NaN would become a node of value NaN (out of order) where a dead end joins it.
+  std::vector<double> nan_at_1 = f;
+  nan_at_1[1] = std::nan("");
+  EXPECT_NE(error_of([&] { connect_dead_ends(R, nan_at_1, 1.0, pts); }).find("arc 0 has vertex 1 of value nan"),
+            std::string::npos);
 }
 
 namespace {

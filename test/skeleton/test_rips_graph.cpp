@@ -188,6 +188,35 @@ TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
   }
 }
 
+TEST(RipsGraph, TinyAndHugeCoordinatesInTheKdTree) {
+  // Squared distances of coordinates below about 1e-154 are subnormal, rounded absolutely: the kd-tree's ball
+  // (with a relative slack) lost pairs within r, and its nearest neighbours were wrong. The same clouds scaled by
+  // 2^537 (exactly) are the oracle. Also scaled by 2^500 up, where squares overflowed.
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t compared = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    Coords unit_cloud;
+    // An integer grid: the oracle's squared distances are exact, so are its ties.
+    for (int i = 0; i < 30; ++i) unit_cloud.push_back({std::round(u(rng) * 20), std::round(u(rng) * 20)});
+    const double r = 1 + u(rng) * 5;
+    for (const int e : {-537, 500}) {
+      Coords scaled = unit_cloud;
+      for (auto& x : scaled)
+        for (double& c : x) c = std::ldexp(c, e);
+      Proximity_graph_options o;
+      o.search = Neighbor_search::kd_tree;
+      EXPECT_EQ(build_rips_graph(scaled, std::ldexp(r, e), o).edges, brute_rips(unit_cloud, r)) << trial << " " << e;
+      EXPECT_EQ(build_knn_graph(scaled, 2, o).edges, brute_knn(unit_cloud, 2)) << trial << " " << e;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 200u);
+  // The smallest case: two points within r at 2^-535.
+  const Coords two{{0, 0}, {0x1.62b6588bca4f5p-535, 0x1.6d2299c2349aep-535}};
+  EXPECT_EQ(build_rips_graph(two, 0x1.fd0ff72c70e89p-535).edges, (std::vector<Edge>{{0, 1}}));
+}
+
 TEST(RipsGraph, BadInputNamesThePoint) {
   Coords p = random_points(5, 3, 1);
   p[3][1] = std::numeric_limits<double>::quiet_NaN();

@@ -125,6 +125,46 @@ TEST(SimplifyByPersistence, RemovesSmallFeaturesOnly) {
   EXPECT_THROW(simplify_by_persistence(A, -1.0), std::invalid_argument);
 }
 
+TEST(SimplifyByPersistence, UnusedValuesSubnormalsAndTrimmedStubs) {
+  // An index the graph does not use may hold NaN or inf (the glued complex checked every value and the message
+  // named compute_augmented_reeb_graph).
+  const auto g = make(2, {{0, 1}}, {}, {0, 1});
+  const Reeb_graph R = compute_augmented_reeb_graph(g.complex, g.f).reeb_graph();
+  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    const Reeb_simplification_result S = simplify_by_persistence(R, {0, 1, bad}, 0.0);
+    ASSERT_EQ(S.graph.nodes.size(), 2u);
+    EXPECT_EQ(S.graph.arcs.size(), 1u);
+    EXPECT_TRUE(S.graph.nodes[0].members.empty() && S.graph.nodes[1].members.empty());
+  }
+  // Two parallel arcs between nodes of the smallest subnormal value: the helper midpoint rounded to 0, below both
+  // (an assertion, or a node on a helper vertex). Level: one node with the other as a member.
+  const double t = std::numeric_limits<double>::denorm_min();
+  Reeb_graph P;
+  P.nodes.resize(2);
+  P.nodes[0].vertex = 0;
+  P.nodes[0].value = t;
+  P.nodes[1].vertex = 1;
+  P.nodes[1].value = t;
+  P.arcs = {{0, 1, {}}, {0, 1, {}}};
+  P.components = 1;
+  const Reeb_simplification_result Q = simplify_by_persistence(P, {t, t}, 0.0);
+  ASSERT_EQ(Q.graph.nodes.size(), 1u);
+  EXPECT_EQ(Q.graph.nodes[0].vertex, 0u);
+  EXPECT_EQ(Q.graph.nodes[0].members, (std::vector<Vertex_index>{1}));
+  // Trimming the stub 0 -> 2 leaves the fork 2 regular; simplifying then put vertex 0 (f 0) inside the arc from
+  // vertex 1 (f 1) to vertex 3 (f 5), after vertex 2. It goes to the arc's lower node, on its side.
+  const auto h = make(4, {{0, 2}, {1, 2}, {2, 3}}, {}, {0, 1, 2, 5});
+  const Reeb_trim_result T = trim_essential_stubs(compute_augmented_reeb_graph(h.complex, h.f).reeb_graph(), 2.0);
+  ASSERT_EQ(T.trimmed, 1u);
+  const Reeb_simplification_result U = simplify_by_persistence(T.graph, h.f, 0.0);
+  ASSERT_EQ(U.graph.nodes.size(), 2u);
+  ASSERT_EQ(U.graph.arcs.size(), 1u);
+  EXPECT_EQ(U.graph.arcs[0].vertices, (std::vector<Vertex_index>{2}));
+  EXPECT_EQ(U.graph.nodes[0].vertex, 1u);
+  EXPECT_EQ(U.graph.nodes[0].members, (std::vector<Vertex_index>{0}));
+  expect_partition(U.graph, 4, "trimmed");
+}
+
 namespace {
 std::string error_of(const Reeb_graph& R, const std::vector<double>& f) {
   try {

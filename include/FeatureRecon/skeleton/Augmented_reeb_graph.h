@@ -178,8 +178,9 @@ struct Buckets {
 ///
 /// \param K a canonical complex (see Simplicial_complex_2).
 /// \param f one finite value per vertex (any random-access range convertible to double).
-/// \pre K is canonical (checked; throws). f has K.number_of_vertices finite values (checked; throws,
-///      naming the first bad index).
+/// \pre K is canonical. Its simplices are checked (sorted, unique, in range; throws); its edge lengths are not
+///      used and not checked. f has K.number_of_vertices finite values (checked; throws, naming the first bad
+///      index). Fewer than 2^31 - 1 vertices, 2^30 edges and 2^31 - 1 edges and triangles together (checked).
 /// \returns the augmented Reeb graph; `status()` is `degenerate_input` for an empty complex and
 ///      `interrupted` when the progress callback returned false.
 /// \param options progress callback (return false to stop: the result then has Status::interrupted).
@@ -199,8 +200,10 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   const std::size_t index_limit = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
   if (K.number_of_edges() + K.number_of_triangles() >= index_limit || 2 * K.number_of_edges() >= index_limit ||
       n >= index_limit)
-    FeatureRecon::internal::throw_invalid_argument(fn, "the complex is too large (", K.number_of_edges(),
-                                                   " edges, ", K.number_of_triangles(), " triangles)");
+    FeatureRecon::internal::throw_invalid_argument(fn, "the complex is too large (", n, " vertices, ",
+                                                   K.number_of_edges(), " edges, ", K.number_of_triangles(),
+                                                   " triangles; fewer than 2^31 - 1 vertices, 2^30 edges and 2^31 - 1 "
+                                                   "edges and triangles together are supported)");
 
   Augmented_reeb_graph R;
   R.m_values.reserve(n);

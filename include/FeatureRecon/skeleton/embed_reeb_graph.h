@@ -204,6 +204,19 @@ inline double automatic_level_width(const Reeb_graph& G) {
   return fmax > fmin ? (fmax - fmin) / 64 : 1.0;
 }
 
+/// Checks the values of Embedding_options (throws naming `fn`).
+inline void check_embedding_options(const Embedding_options& options, const char* fn) {
+  if (!(options.level_width >= 0 && std::isfinite(options.level_width)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "embedding level_width must be finite and >= 0 (0: automatic), "
+                                                   "got ", options.level_width);
+  if (!(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
+    FeatureRecon::internal::throw_invalid_argument(fn, "embedding smoothing_weight must lie in [0, 1], got ",
+                                                   options.smoothing_weight);
+  if (std::isnan(options.max_gap))
+    FeatureRecon::internal::throw_invalid_argument(fn, "embedding max_gap must not be NaN (0: automatic, negative: "
+                                                   "off)");
+}
+
 inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency, const Point_matrix& P,
                                  const std::vector<double>& values, const Embedding_options& options) {
   const char* fn = "embed_reeb_graph";
@@ -214,11 +227,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   if (adjacency != nullptr && adjacency->offsets.size() != P.rows + 1)
     FeatureRecon::internal::throw_invalid_argument(fn, "the graph has ", adjacency->offsets.size() - 1,
                                                    " vertices but there are ", P.rows, " positions");
-  if (!(options.level_width >= 0) || !(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
-    FeatureRecon::internal::throw_invalid_argument(fn, "level_width must be >= 0 and smoothing_weight in [0, 1], got ",
-                                                   options.level_width, " and ", options.smoothing_weight);
-  if (std::isnan(options.max_gap))
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_gap must not be NaN (0: automatic, negative: off)");
+  check_embedding_options(options, fn);
   auto check = [&](Vertex_index v) {
     if (v >= P.rows)
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " out of range [0, ", P.rows, ")");

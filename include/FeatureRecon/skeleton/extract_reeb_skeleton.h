@@ -90,8 +90,20 @@ struct Reeb_skeleton {
   Status status = Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
 };
 
-/// Builds the skeleton graph from a Reeb graph, its input points' values and an embedding (the last stage).
+/// Builds the skeleton graph from a Reeb graph and its embedding (the last stage).
+/// \throws std::invalid_argument when E has another number of node positions or arc polylines than G has nodes
+///   and arcs, or an arc joins nodes out of range.
 inline Skeleton_graph make_skeleton_graph(const Reeb_graph& G, const Reeb_graph_embedding& E) {
+  const char* fn = "make_skeleton_graph";
+  if (E.node_positions.size() != G.nodes.size() || E.arc_polylines.size() != G.arcs.size())
+    FeatureRecon::internal::throw_invalid_argument(fn, "the embedding has ", E.node_positions.size(),
+                                                   " node positions and ", E.arc_polylines.size(),
+                                                   " arc polylines for a graph of ", G.nodes.size(), " nodes and ",
+                                                   G.arcs.size(), " arcs (not its embedding)");
+  for (std::size_t k = 0; k < G.arcs.size(); ++k)
+    if (!(G.arcs[k].lower < G.nodes.size() && G.arcs[k].upper < G.nodes.size()))
+      FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " joins nodes out of range [0, ", G.nodes.size(),
+                                                     ")");
   Skeleton_graph g(G.nodes.size());
   for (std::size_t i = 0; i < G.nodes.size(); ++i) {
     Skeleton_node& s = g[i];
@@ -122,6 +134,7 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
     FeatureRecon::internal::throw_invalid_argument(fn, "delta and repair_distance must be finite and >= 0, "
                                                    "prune_height >= 0 (infinity: prune all), got ", options.delta,
                                                    ", ", options.repair_distance, " and ", options.prune_height);
+  check_embedding_options(options.embedding, fn);  // before the pipeline runs, with the caller's values
 }
 
 /// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr or

@@ -33,7 +33,8 @@ inline void refresh_node_types(Reeb_graph& G) {
 
 /// Checks what the repair functions rely on, naming the first offending node or arc: node values finite and in
 /// strictly increasing (value, vertex) order, every arc going up between two nodes of the graph (lower < upper).
-/// With `values`, every vertex the graph uses (nodes, members, arc vertices) indexes it.
+/// With `values`, every vertex the graph uses (nodes, members, arc vertices) indexes it, and arc vertices (which
+/// can become nodes) have finite values.
 inline void check_reeb_graph(const Reeb_graph& G, const char* fn, const std::vector<double>* values = nullptr) {
   using FeatureRecon::internal::throw_invalid_argument;
   for (std::size_t i = 0; i < G.nodes.size(); ++i) {
@@ -57,7 +58,11 @@ inline void check_reeb_graph(const Reeb_graph& G, const char* fn, const std::vec
     for (const Vertex_index v : G.nodes[i].members) check(v, "node", i);
   }
   for (std::size_t k = 0; k < G.arcs.size(); ++k)
-    for (const Vertex_index v : G.arcs[k].vertices) check(v, "arc", k);
+    for (const Vertex_index v : G.arcs[k].vertices) {
+      check(v, "arc", k);
+      if (!std::isfinite((*values)[v]))
+        throw_invalid_argument(fn, "arc ", k, " has vertex ", v, " of value ", (*values)[v], " (finite needed)");
+    }
 }
 
 /// Component of each node: the smallest node index in it (union-find over the arcs).

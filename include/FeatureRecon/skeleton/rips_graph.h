@@ -106,16 +106,23 @@ using Kd_traits = CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_prope
                                               CGAL::Search_traits_3<Kd_kernel>>;
 using Kd_tree = CGAL::Kd_tree<Kd_traits>;
 
-/// kd-tree over the first three coordinates (zero-padded) of a matrix of dimension <= 3.
+/// kd-tree over the first three coordinates (zero-padded) of a matrix of dimension <= 3, scaled by a power of
+/// two (`unit`, exact) so that the largest has magnitude in [2^30, 2^31): CGAL's squared distances neither
+/// overflow nor sink into subnormals (where their rounding is absolute and a pair within r could fall outside
+/// the query ball). Radii and distances of the tree are in these units.
 struct Kd_index {
   std::vector<Kd_point> points;
   std::vector<std::uint32_t> keys;
   std::unique_ptr<Kd_tree> tree;
+  double unit = 1;
   explicit Kd_index(const Point_matrix& m) {
+    double largest = 0;
+    for (const double x : m.data) largest = std::max(largest, std::abs(x));
+    unit = largest > 0 ? std::ldexp(1.0, std::clamp(30 - std::ilogb(largest), -1000, 1000)) : 1.0;
     points.reserve(m.rows);
     for (std::size_t i = 0; i < m.rows; ++i) {
       const double* r = m.row(i);
-      points.emplace_back(r[0], m.dimension > 1 ? r[1] : 0.0, m.dimension > 2 ? r[2] : 0.0);
+      points.emplace_back(r[0] * unit, m.dimension > 1 ? r[1] * unit : 0.0, m.dimension > 2 ? r[2] * unit : 0.0);
     }
     keys.resize(m.rows);
     for (std::size_t i = 0; i < m.rows; ++i) keys[i] = static_cast<std::uint32_t>(i);
@@ -123,10 +130,12 @@ struct Kd_index {
                                      Kd_traits(CGAL::make_property_map(points)));
     tree->build();
   }
-  /// Candidates within (slightly more than) r of point i.
+  /// Candidates within (slightly more than) r of point i, r in the tree's units (`unit` times the points'). The
+  /// absolute 1e-150 covers coordinates that vanished in the scaling (a range beyond 2^1000).
   void ball(std::uint32_t i, double r, std::vector<std::uint32_t>& out) const {
     out.clear();
-    const double slack = 1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z()));
+    const double slack =
+        1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z())) + 1e-150;
     CGAL::Fuzzy_sphere<Kd_traits> query(i, r + slack, 0.0, tree->traits());
     tree->search(std::back_inserter(out), query);
   }
@@ -239,7 +248,7 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
       if (i % report_every == 0 &&
           !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(i) / n))
         break;
-      index.ball(i, radius, found);
+      index.ball(i, radius * index.unit, found);  // infinity when that overflows: every point a candidate
       std::sort(found.begin(), found.end());
       for (std::uint32_t j : found)
         if (j > i && internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius))

@@ -55,7 +55,9 @@ struct Simplification_complex {
 /// This overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
 /// regular nodes (e.g. after repair_reeb_graph()), which the result absorbs into arcs.
 /// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's vertices
-/// there) are not level with it: they take no part in the merges and stay with the place of their node's vertex.
+/// there) are not level with it: they take no part in the merges and stay with the node of their node's vertex
+/// (when that vertex ends up inside an arc: with the arc's lower or upper node, on their side of the vertex).
+/// Indices of `values` the graph does not use stay out of the result, whatever their value.
 /// \pre delta >= 0 and finite; every vertex of R (nodes, members, arc vertices) indexes `values` and is used
 /// once; the values R uses are finite and each node's value is `values[vertex]`; the nodes are in increasing
 /// (value, vertex) order, as every function returning a Reeb_graph leaves them (all checked; throws naming the
@@ -97,6 +99,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   internal::Simplification_complex Y;
   Y.values = values;
   std::vector<double>& val = Y.values;
+  for (std::size_t v = 0; v < n; ++v)  // indices the graph does not use stay out, whatever their value (NaN too)
+    if (used[v] == 0) val[v] = 0;
   auto less = [&](std::size_t a, std::size_t b) { return val[a] < val[b] || (val[a] == val[b] && a < b); };
 
   // The graph of R as a 1-complex on the input vertices: each arc a chain through its vertices. Parallel arcs
@@ -111,7 +115,9 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     c.push_back(R.nodes[R.arcs[k].upper].vertex);
     if (c.size() == 2 && present.count(key(c[0], c[1]))) {
       const Vertex_index mid = static_cast<Vertex_index>(val.size());
-      val.push_back(0.5 * val[c[0]] + 0.5 * val[c[1]]);  // halves first: no overflow near the largest doubles
+      // Halves first: no overflow near the largest doubles; clamped, as halves of subnormals round.
+      val.push_back(std::clamp(0.5 * val[c[0]] + 0.5 * val[c[1]], std::min(val[c[0]], val[c[1]]),
+                               std::max(val[c[0]], val[c[1]])));
       c.insert(c.begin() + 1, mid);
     }
     for (std::size_t i = 0; i + 1 < c.size(); ++i) {
@@ -359,13 +365,14 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     up[cl].push_back(cu);
     ++down_degree[cu];
   }
-  std::vector<std::vector<Vertex_index>> inputs_of(nc);
+  std::vector<std::vector<Vertex_index>> inputs_of(nc), off_level_of(nc);
   for (std::size_t v = 0; v < n; ++v)
     if (used[v] == 1) inputs_of[class_index[find(v)]].push_back(static_cast<Vertex_index>(v));
-  // Members off their node's level go where the node's vertex went.
+  // Members off their node's level go where the node's vertex went: to its node, or, when that became regular,
+  // to the lower or upper node of its arc by their value (an arc's vertices stay in increasing order).
   for (const auto& node : R.nodes)
     for (const Vertex_index v : node.members)
-      if (used[v] == 2) inputs_of[class_index[find(node.vertex)]].push_back(v);
+      if (used[v] == 2) off_level_of[class_index[find(node.vertex)]].push_back(v);
   // Indices of `values` the graph does not use (and members placed above) are isolated, single classes: no part
   // of the result as such.
   auto unused_class = [&](std::size_t c) { return rep[classes[c]] < n && used[rep[classes[c]]] != 1; };
@@ -381,6 +388,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     node.type = t;
     for (const Vertex_index v : inputs_of[c])
       if (v != node.vertex) node.members.push_back(v);
+    node.members.insert(node.members.end(), off_level_of[c].begin(), off_level_of[c].end());
     FEATURERECON_assertion(node.vertex < n);
     G.nodes.push_back(std::move(node));
   }
@@ -389,11 +397,15 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (std::size_t next : up[c]) {
       Reeb_graph::Arc arc;
       arc.lower = node_of[c];
+      std::vector<Vertex_index> below, above;  // off-level members of regular classes on the arc
       while (node_of[next] == none) {
         arc.vertices.insert(arc.vertices.end(), inputs_of[next].begin(), inputs_of[next].end());
+        for (const Vertex_index v : off_level_of[next]) (values[v] < val[classes[next]] ? below : above).push_back(v);
         next = up[next].front();
       }
       arc.upper = node_of[next];
+      G.nodes[arc.lower].members.insert(G.nodes[arc.lower].members.end(), below.begin(), below.end());
+      G.nodes[arc.upper].members.insert(G.nodes[arc.upper].members.end(), above.begin(), above.end());
       G.arcs.push_back(std::move(arc));
     }
   }
