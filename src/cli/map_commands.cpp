@@ -11,6 +11,7 @@
 #include <CGAL/Search_traits_2.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -108,6 +109,22 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     }
   // --lonlat: every file in degrees; all projected to metres with one projection centred on them.
   const bool lonlat = args.has("lonlat");
+  if (!lonlat)  // degrees read as metres: the whole map shrinks to a few samples and everything matches
+    for (const auto& [file, graph] : {std::make_pair(p[0], &gt), std::make_pair(p[2], &rec)}) {
+      std::vector<double> lengths;
+      bool degrees = true;
+      for (const auto& q : graph->positions) degrees = degrees && std::abs(q[0]) <= 180 && std::abs(q[1]) <= 90;
+      for (const Edge& e : graph->edges)
+        lengths.push_back(std::hypot(graph->positions[e[1]][0] - graph->positions[e[0]][0],
+                                     graph->positions[e[1]][1] - graph->positions[e[0]][1]));
+      if (!degrees || lengths.empty()) continue;
+      std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2), lengths.end());
+      const double median = lengths[lengths.size() / 2];
+      if (median > 0 && median < 0.01)
+        throw io::Input_error(file + ": the vertices look like longitude and latitude in degrees (median edge " +
+                              json_number(median) + ", all within +-180 and +-90), but the maps are read in metres: "
+                              "give --lonlat, or project them to metres first");
+    }
   Transverse_mercator projection;
   if (lonlat) {
     projection = lonlat_projection({{p[0], &gt.positions}, {p[2], &rec.positions},

@@ -70,6 +70,7 @@ int run_rips(const std::vector<std::string>& argv) {
     if (k < 1) throw Usage_error("--knn must be an integer >= 1, got '" + args.get("knn") + "'");
   }
   const bool quiet = args.has("quiet");
+  const std::size_t max_triangles = max_triangles_option(args);  // checked before any work
 
   const io::Point_file pf = io::read_points(points_path);
   Point_matrix m;
@@ -87,7 +88,6 @@ int run_rips(const std::vector<std::string>& argv) {
   graph_progress.done(std::to_string(g.number_of_edges()) + " edges");
 
   Progress complex_progress("triangles", quiet);
-  const std::size_t max_triangles = max_triangles_option(args);
   // build_flag_complex_2() with the limit named as the command line spells it.
   const Simplicial_complex_2 K = skeleton::internal::flag_complex_2(
       g, max_triangles > 0 ? max_triangles : std::numeric_limits<std::size_t>::max(), std::ref(complex_progress),

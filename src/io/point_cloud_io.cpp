@@ -18,10 +18,13 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
+#include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 namespace FeatureRecon {
 namespace io {
@@ -130,17 +133,49 @@ void read_off(const std::string& path, Point_cloud& c) {
   }
 }
 
-/// What would make CGAL misread a PLY file (or crash), found before it reads: the vertex element needs properties
-/// x, y, z (and nx, ny, nz all or none) of a floating-point type (CGAL's reader crashes on integer coordinates);
-/// binary vertex data must be as long as the header says; every ASCII vertex line must hold as many finite numbers
-/// as the vertex has properties (CGAL reads a line too long or too short shifted onto the next points). Returns
-/// the problem, or "" with `normals` set. One pass over the header; ASCII vertex lines are read once more by CGAL.
+/// Size in bytes of a PLY scalar type, 0 for an unknown one.
+std::size_t ply_type_size(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+/// A binary PLY list count of `size` bytes (unsigned, or signed and >= 0; -1 when negative) in either byte order.
+long long ply_list_count(const unsigned char* b, std::size_t size, bool big_endian, bool is_signed) {
+  unsigned long long v = 0;
+  for (std::size_t k = 0; k < size; ++k) v |= static_cast<unsigned long long>(b[big_endian ? k : size - 1 - k])
+                                              << (8 * (size - 1 - k));
+  if (is_signed && size < 8 && (v >> (8 * size - 1)) != 0) return -1;
+  return static_cast<long long>(v);
+}
+
+struct Ply_property {
+  std::string name;
+  std::size_t size = 0;        // of the value (of each item for a list)
+  std::size_t count_size = 0;  // of a list's count; 0 for a scalar
+  bool count_signed = false;
+};
+struct Ply_element {
+  std::string name;
+  unsigned long long rows = 0;
+  std::vector<Ply_property> properties;
+};
+
+/// What would make CGAL misread a PLY file (or crash, or allocate what the file only claims), found before it
+/// reads: the vertex element needs properties x, y, z (and nx, ny, nz all or none) of a floating-point type
+/// (CGAL's reader crashes on integer coordinates); every element's data must be there as the header declares it:
+/// in binary, every list count must fit in the bytes left (a count of 4e9 in an 80-byte file made CGAL allocate
+/// 16 GB) and the data must be as long as the header says; in ASCII, every line of an element must hold as many
+/// finite numbers as its properties (and list counts) declare (CGAL reads a line too long or too short shifted
+/// onto the next rows). Returns the problem, or "" with `normals` set. One pass over the file.
 std::string ply_problem(const std::string& path, bool& normals) {
   std::ifstream in(path, std::ios::binary);
-  std::string line, format, element;
-  unsigned long long vertices = 0;
-  std::size_t bytes = 0, properties = 0;
-  bool first_element_is_vertex = false, scalar = true, seen_element = false, header = false;
+  std::string line, format;
+  bool header = false;
+  std::vector<Ply_element> elements;
   std::map<std::string, std::string> type_of;  // vertex property -> type
   while (std::getline(in, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -152,20 +187,34 @@ std::string ply_problem(const std::string& path, bool& normals) {
     }
     if (t[0] == "format" && t.size() > 1) format = t[1];
     if (t[0] == "element" && t.size() > 2) {
-      element = t[1];
-      if (!seen_element) first_element_is_vertex = element == "vertex";
-      seen_element = true;
-      if (element == "vertex") vertices = std::strtoull(t[2].c_str(), nullptr, 10);
+      Ply_element e;
+      e.name = t[1];
+      char* rest = nullptr;
+      errno = 0;
+      e.rows = std::strtoull(t[2].c_str(), &rest, 10);
+      if (*rest != '\0' || t[2][0] == '-' || errno == ERANGE)
+        return "element " + t[1] + " has count '" + t[2] + "'";
+      elements.push_back(e);
     }
-    if (t[0] == "property" && element == "vertex" && t.size() > 2) {
-      ++properties;
-      const std::string& type = t[1];
-      type_of[t.back()] = type;
-      if (type == "list") scalar = false;
-      else if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") bytes += 1;
-      else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") bytes += 2;
-      else if (type == "double" || type == "float64") bytes += 8;
-      else bytes += 4;
+    if (t[0] == "property" && t.size() > 2) {
+      if (elements.empty()) return "a property comes before any element";
+      Ply_property q;
+      q.name = t.back();
+      if (t[1] == "list") {
+        if (t.size() != 5) return "property list of element " + elements.back().name + " must be 'property list "
+                                  "COUNT_TYPE ITEM_TYPE NAME'";
+        q.count_size = ply_type_size(t[2]);
+        q.count_signed = t[2][0] != 'u';
+        q.size = ply_type_size(t[3]);
+        if (q.count_size == 0 || t[2] == "float" || t[2] == "float32" || t[2] == "double" || t[2] == "float64")
+          return "list " + q.name + " has count type " + t[2] + " (an integer type needed)";
+        if (q.size == 0) return "list " + q.name + " has item type " + t[3];
+      } else {
+        q.size = ply_type_size(t[1]);
+        if (q.size == 0) return "property " + q.name + " has type " + t[1];
+      }
+      if (elements.back().name == "vertex") type_of[q.name] = t[1];
+      elements.back().properties.push_back(q);
     }
   }
   if (!header) return "the header has no end_header line";
@@ -183,28 +232,91 @@ std::string ply_problem(const std::string& path, bool& normals) {
   const int n = int(type_of.count("nx")) + int(type_of.count("ny")) + int(type_of.count("nz"));
   if (n != 0 && n != 3) return "the vertex element has only some of the normal properties nx, ny, nz";
   normals = n == 3;
-  if (!first_element_is_vertex || !scalar) return "";
   if (format == "binary_little_endian" || format == "binary_big_endian") {
+    const bool big = format == "binary_big_endian";
     const std::streamoff start = in.tellg();
     in.seekg(0, std::ios::end);
-    const auto have = static_cast<unsigned long long>(in.tellg() - start);
-    if (have < vertices * bytes)
-      return "truncated: " + std::to_string(vertices) + " vertices of " + std::to_string(bytes) + " bytes need " +
-             std::to_string(vertices * bytes) + " bytes of data, the file has " + std::to_string(have);
+    unsigned long long left = static_cast<unsigned long long>(in.tellg() - start);
+    in.seekg(start);
+    for (const Ply_element& e : elements) {
+      bool lists = false;
+      unsigned long long row = 0;  // bytes of a row without lists
+      for (const Ply_property& q : e.properties) {
+        lists = lists || q.count_size > 0;
+        row += q.count_size > 0 ? 0 : q.size;
+      }
+      const std::string rows = e.name == "vertex" ? "vertices" : e.name + " rows";
+      auto truncated = [&](unsigned long long i) {
+        return "truncated: the data ends in row " + std::to_string(i) + " of " + std::to_string(e.rows) + " " + rows;
+      };
+      if (!lists) {  // one check for the whole element, without overflow
+        if (row > 0 && e.rows > left / row)
+          return "truncated: " + std::to_string(e.rows) + " " + rows + " of " + std::to_string(row) + " bytes need " +
+                 (e.rows > std::numeric_limits<unsigned long long>::max() / row ? std::string("more than 2^64")
+                                                                               : std::to_string(e.rows * row)) +
+                 " bytes of data, the file has " + std::to_string(left);
+        left -= e.rows * row;
+        in.seekg(static_cast<std::streamoff>(e.rows * row), std::ios::cur);
+        continue;
+      }
+      unsigned char count[8];
+      for (unsigned long long i = 0; i < e.rows; ++i)
+        for (const Ply_property& q : e.properties) {
+          if (q.count_size == 0) {
+            if (left < q.size) return truncated(i);
+            left -= q.size;
+            in.seekg(static_cast<std::streamoff>(q.size), std::ios::cur);
+            continue;
+          }
+          if (left < q.count_size || !in.read(reinterpret_cast<char*>(count), std::streamsize(q.count_size)))
+            return truncated(i);
+          left -= q.count_size;
+          const long long items = ply_list_count(count, q.count_size, big, q.count_signed);
+          if (items < 0) return "element " + e.name + " row " + std::to_string(i) + ": list " + q.name +
+                                " has a negative count";
+          if (static_cast<unsigned long long>(items) > left / q.size)
+            return "element " + e.name + " row " + std::to_string(i) + ": list " + q.name + " claims " +
+                   std::to_string(items) + " items, the file has " + std::to_string(left) + " bytes left";
+          left -= static_cast<unsigned long long>(items) * q.size;
+          in.seekg(static_cast<std::streamoff>(items * static_cast<long long>(q.size)), std::ios::cur);
+        }
+    }
     return "";
   }
-  for (unsigned long long i = 0; i < vertices; ++i) {
-    if (!std::getline(in, line))
-      return "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(vertices) + " vertices";
-    const std::vector<std::string> t = line_tokens(line);
-    double x = 0;
-    if (t.size() != properties)
-      return "vertex " + std::to_string(i) + " has " + std::to_string(t.size()) + " values, the header declares " +
-             std::to_string(properties) + " properties";
-    for (const std::string& v : t)
-      if (!parse_decimal(v, x) || !std::isfinite(x))
-        return "vertex " + std::to_string(i) + ": '" + v + "' is not a finite number";
-  }
+  if (format != "ascii") return "format '" + format + "' (ascii, binary_little_endian or binary_big_endian)";
+  for (const Ply_element& e : elements)
+    for (unsigned long long i = 0; i < e.rows; ++i) {
+      if (!std::getline(in, line))
+        return "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(e.rows) + " " +
+               (e.name == "vertex" ? std::string("vertices") : e.name + " rows");
+      const std::vector<std::string> t = line_tokens(line);
+      const std::string what = e.name + " " + std::to_string(i);
+      // Values the header declares for this line: one per scalar, a count and its items per list.
+      std::size_t k = 0;
+      bool lists = false;
+      for (const Ply_property& q : e.properties) {
+        std::size_t items = 1;
+        if (q.count_size > 0) {
+          lists = true;
+          double c = 0;
+          if (k >= t.size() || !parse_decimal(t[k], c) || !(c >= 0 && c == std::floor(c)))
+            return what + ": list " + q.name + " has no count";
+          if (c > double(t.size() - k - 1))
+            return what + " has " + std::to_string(t.size()) + " values, too few for the " + t[k] + " items of its "
+                   "list " + q.name;
+          items = static_cast<std::size_t>(c);
+          ++k;
+        }
+        for (std::size_t m = 0; m < items; ++m, ++k) {
+          double x = 0;
+          if (k < t.size() && (!parse_decimal(t[k], x) || !std::isfinite(x)))
+            return what + ": '" + t[k] + "' is not a finite number";
+        }
+      }
+      if (t.size() != k)
+        return what + " has " + std::to_string(t.size()) + " values, the header declares " + std::to_string(k) +
+               (lists ? "" : " properties");
+    }
   return "";
 }
 

@@ -89,6 +89,8 @@ expect(rips_dup 0 "4 vertices, 3 edges, 1 triangles, 2 components" rips --points
 expect(rips_max_triangles 1 "more than 22291 triangles \\(--max-triangles; 400 vertices, 4226 edges" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 22291 --out ${WORK}/fig8_max.txt --quiet)
 expect(rips_max_triangles_equal 0 "22292 triangles" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 22292 --out ${WORK}/fig8_max.txt --quiet)
 expect(rips_max_triangles_bad 2 "--max-triangles must be an integer >= 0 \\(0: no limit\\), got '-1'" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles -1 --out ${WORK}/fig8_max.txt --quiet)
+# ... before the input is read (it was parsed after the graph was built).
+expect(rips_max_triangles_first 2 "--max-triangles must be an integer" rips --points ${WORK}/no_such_points.xyz --radius 0.6 --max-triangles abc --out ${WORK}/fig8_max.txt --quiet)
 expect(skeleton_max_triangles 1 "extract_reeb_skeleton: the flag complex has more than 100 triangles \\(max_triangles of the options, --max-triangles" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 100 --out-vertices ${WORK}/mt_v.txt --out-edges ${WORK}/mt_e.txt --quiet)
 expect(skeleton_max_triangles_off 0 "\"rips_triangles\": 22292, \"max_triangles\": 0, .*\"loops\": 2," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 0 --out-vertices ${WORK}/mt_v.txt --out-edges ${WORK}/mt_e.txt --quiet)
 
@@ -524,6 +526,14 @@ file(WRITE ${WORK}/short.ply "ply\nformat ascii 1.0\nelement vertex 3\nproperty 
 expect(ply_short_line 1 "short.ply: not a readable PLY point cloud \\(vertex 1 has 2 values, the header declares 3 properties\\)" sample --input ${WORK}/short.ply --count 1 --out ${WORK}/o.xyz --quiet)
 file(WRITE ${WORK}/cut.ply "ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\nproperty float y\nproperty float z\nend_header\nabc")
 expect(ply_truncated_binary 1 "cut.ply: not a readable PLY point cloud \\(truncated: 100 vertices of 12 bytes need 1200 bytes" sample --input ${WORK}/cut.ply --count 1 --out ${WORK}/o.xyz --quiet)
+# List properties: their counts are checked against the data before CGAL reads (an 80-byte file claiming 4e9 items
+# made it allocate 16 GB), in every element, also one before the vertices; lists that fit are read.
+file(WRITE ${WORK}/blist.ply "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nproperty list uchar float extra\nend_header\nabcdefghijklz")
+expect(ply_binary_list_claims 1 "blist.ply: not a readable PLY point cloud \\(element vertex row 0: list extra claims 122 items, the file has 0 bytes left\\)" sample --input ${WORK}/blist.ply --count 1 --out ${WORK}/o.xyz --quiet)
+file(WRITE ${WORK}/alist.ply "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n200 0 1 2\n0 0 0\n1 0 0\n0 1 0\n")
+expect(ply_ascii_list_claims 1 "alist.ply: not a readable PLY point cloud \\(face 0 has 4 values, too few for the 200 items of its list vertex_indices\\)" sample --input ${WORK}/alist.ply --count 1 --out ${WORK}/o.xyz --quiet)
+file(WRITE ${WORK}/vlist.ply "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty list uchar float extra\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 2 7 8\n1 0 0 0\n0 1 0 1 5\n3 0 1 2\n")
+expect(ply_lists_that_fit 0 "\"points\": 3, \"kept\": 2" sample --input ${WORK}/vlist.ply --count 2 --out ${WORK}/o.xyz --quiet)
 # PLY vertices CGAL would misread are refused naming the problem: integer coordinates (CGAL's reader crashed), a
 # line with a value too many (read shifted onto the next points), no x property (read as the origin), some of the
 # normals, a NaN.
@@ -594,7 +604,10 @@ expect(crop_tiny_interval 1 "--crop-to-tracks: the ground truth's edges at --int
 # measure printed is the one used.
 expect(sample_stats_spectrum_3d 2 "--spectrum and --max-frequency need 2-D samples on the unit torus; .*wall_plain.xyz has 3 numbers per line" sample-stats --input ${WORK}/wall_plain.xyz --periodic --spectrum ${WORK}/s3.csv)
 file(WRITE ${WORK}/nothing.txt "# no samples\n")
-expect(sample_stats_empty 0 "\"samples\": 0,.*\"degenerate\": true" sample-stats --input ${WORK}/nothing.txt)
+expect(sample_stats_empty 0 "\"samples\": 0,.*\"relative_radius\": null, \"average_minimum_distance\": null, \"degenerate\": true" sample-stats --input ${WORK}/nothing.txt)
+# Spacing statistics of two kept points are undefined: null (they read 0, as if maximally clumped).
+file(WRITE ${WORK}/five.xyz "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.5 0\n")
+expect(sample_two_kept 0 "\"kept\": 2,.*\"relative_radius\": null, \"bilateral_relative_radius\": null, \"average_minimum_distance\": null" sample --input ${WORK}/five.xyz --count 2 --out ${WORK}/o.xyz --quiet)
 expect(sample_stats_domain 0 "\"domain_measure\": 1, \"periodic\": true" sample-stats --input ${WORK}/torus.txt --periodic)
 # synthetic-city: sizes that would fill the memory are refused naming the options.
 expect(synthetic_city_tiny_interval 1 "more than 2\\^26 fixes .*raise speed .* or sampling_interval" synthetic-city --interval 1e-9 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
@@ -699,6 +712,7 @@ if(NOT ll_sample MATCHES ";truth,0,-87\\.[0-9]+,41\\.[0-9]+,")
 endif()
 # Degrees read as metres are refused with a hint; bad degrees and too wide a span are named.
 expect(lonlat_missing 1 "chicago_lonlat_tracks.txt: the fixes look like longitude and latitude in degrees .*give --lonlat" skeleton --tracks ${LL} --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(lonlat_missing_evaluate 1 "chicago_gt_trk25_vertices_lonlat.txt: the vertices look like longitude and latitude in degrees .*give --lonlat" evaluate-map ${M}_gt_trk25_vertices_lonlat.txt ${M}_gt_trk25_edges.txt ${WORK}/ll_v.txt ${WORK}/ll_e.txt)
 expect(lonlat_points 2 "--lonlat applies to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 file(WRITE ${WORK}/ll_bad.txt "0 -87.6 41.8 0\n0 -87.6 95 10\n")
 expect(lonlat_range 1 "ll_bad.txt: --lonlat: point 1 \\(-87\\.6, 95\\) is not a longitude in \\[-180, 180\\] and a latitude in \\[-90, 90\\]" skeleton --tracks ${WORK}/ll_bad.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)

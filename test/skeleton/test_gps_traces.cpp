@@ -523,6 +523,29 @@ TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
     }
 }
 
+TEST(GpsTraces, ALongJumpWithinTheLinkGapIsRefusedBeforeDensifying) {
+  // Three fixes 10 m apart, then a jump of 10^6 m: with a link gap of 10^9 the jump was densified every half
+  // spacing (198,183 samples from 4 fixes; at 10^9 m, gigabytes). Refused, naming the segment and the options.
+  Gps_trip trip{{0, 0, 0}, {10, 0, 1}, {20, 0, 2}, {1e6, 0, 3}};
+  Gps_trace_options o;
+  o.max_link_gap = 1e9;
+  o.sample_spacing = 10;
+  o.max_inserted_points = 100000;  // the segments need 200,000
+  try {
+    sample_gps_traces({trip}, 20.0, o);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("would insert about 200000 points along the segments (more than "
+                                         "max_inserted_points, 100000; the longest linked segment, from trip 0, fix 2, "
+                                         "is 999980 long): lower max_link_gap (1e+09"),
+              std::string::npos) << e.what();
+  }
+  o.max_inserted_points = 200000;  // exactly as many: runs
+  EXPECT_GT(sample_gps_traces({trip}, 20.0, o).points.rows, 90000u);  // one per 10 m
+  o.max_inserted_points = 0;  // no limit
+  EXPECT_GT(sample_gps_traces({trip}, 20.0, o).points.rows, 90000u);  // one per 10 m
+}
+
 TEST(GpsTraces, AStreetOneTripDrivesStraightIsKept) {
   // Beside the L, one trip drives east along y = 200 with fixes 150 m apart: no other fix confirms its segments,
   // but it does not turn (within 2 degrees), so they are densified: samples every few metres along the street.

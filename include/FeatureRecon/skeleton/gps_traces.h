@@ -83,6 +83,10 @@ struct Gps_trace_options {
   /// Traces too sparse to confirm one another: when fewer than this fraction of the segments that need a check
   /// are confirmed, every segment is used (Gps_trace_sample::all_segments_used). Default 0.2; 0: never.
   double min_confirmed_fraction = 0.2;
+  /// Refuse (std::invalid_argument, before any is made) linking that would insert more points than this along the
+  /// segments: one jump of 1,000 km between two fixes within a generous max_link_gap asked for 10^8 points at a
+  /// spacing of 10 m. Default 2^26 (the traces of Chicago need about 500,000); 0: no limit.
+  std::size_t max_inserted_points = std::size_t(1) << 26;
 };
 
 /// Samples of GPS traces with the parameters used.
@@ -328,6 +332,28 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
                                                        "spacing or radius (", finest, ") from the origin; shift "
                                                        "or scale the traces");
   const double insert_step = S.sample_spacing / 2;
+  if (S.max_link_gap > 0 && options.max_inserted_points > 0) {  // the most points linking could insert
+    double inserted = 0, longest = 0;
+    std::size_t longest_trip = 0, longest_fix = 0;
+    for (std::size_t t = 0; t < trips.size(); ++t)
+      for (std::size_t i = 0; i + 1 < order[t].size(); ++i) {
+        const Gps_fix &a = trips[t][order[t][i]], &b = trips[t][order[t][i + 1]];
+        const double d = std::hypot(b.x - a.x, b.y - a.y);
+        if (!(d <= S.max_link_gap && d > insert_step)) continue;
+        inserted += std::floor(d / insert_step);
+        if (d > longest) {
+          longest = d;
+          longest_trip = t;
+          longest_fix = order[t][i];
+        }
+      }
+    if (inserted > static_cast<double>(options.max_inserted_points))
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "linking consecutive fixes would insert about ", inserted, " points along the segments (more than ",
+          "max_inserted_points, ", options.max_inserted_points, "; the longest linked segment, from trip ",
+          longest_trip, ", fix ", longest_fix, ", is ", longest, " long): lower max_link_gap (", S.max_link_gap,
+          ", --link-gap) or raise sample_spacing (", S.sample_spacing, ", --sample-spacing)");
+  }
   const double spacing2 = S.sample_spacing * S.sample_spacing;
   const double cell = S.sample_spacing;
   Point_matrix fixes;
