@@ -51,14 +51,17 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
   o.mode = mode == "local" ? fs::Tap_mode::local : fs::Tap_mode::global;
   if (args.has("budget")) o.budget = args.get_positive_double("budget");
   if (o.budget > 16) throw Usage_error("--budget must be in (0, 16] taps per kernel pixel, got " + args.get("budget"));
-  if (args.has("sigma-spatial")) o.kernel.sigma_spatial = args.get_positive_double("sigma-spatial");
-  if (args.has("sigma-range")) o.kernel.sigma_range = args.get_positive_double("sigma-range");
+  if (args.has("sigma-spatial")) o.kernel.sigma_spatial = args.get_scale("sigma-spatial");
+  if (args.has("sigma-spatial") && !args.has("radius") && o.kernel.sigma_spatial > 2048)
+    throw Usage_error("--sigma-spatial must be at most 2048 without --radius (the radius 2 sigma would exceed 4096), "
+                      "got " + args.get("sigma-spatial"));
+  if (args.has("sigma-range")) o.kernel.sigma_range = args.get_scale("sigma-range");
   if (args.has("radius")) {
     const long long r = args.get_int("radius");
     if (r < 1 || r > 4096) throw Usage_error("--radius must be between 1 and 4096 pixels, got " + std::to_string(r));
     o.kernel.radius = int(r);
   }
-  if (args.has("sampling-sigma")) o.sampling_sigma_feature = args.get_positive_double("sampling-sigma");
+  if (args.has("sampling-sigma")) o.sampling_sigma_feature = args.get_scale("sampling-sigma");
   if (args.has("candidates")) o.candidates_per_tap = args.get_positive_double("candidates");
   if (o.candidates_per_tap < 2 || o.candidates_per_tap > 64)
     throw Usage_error("--candidates must be between 2 and 64 per tap, got " + args.get("candidates"));

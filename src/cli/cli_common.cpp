@@ -82,6 +82,13 @@ double Arguments::get_positive_double(const std::string& name) const {
   return x;
 }
 
+double Arguments::get_scale(const std::string& name) const {
+  const double x = get_double(name);
+  if (!(x >= 1e-150 && x <= 1e150))
+    throw Usage_error("--" + name + " must be a scale in [1e-150, 1e150], got '" + get(name) + "'");
+  return x;
+}
+
 long long Arguments::get_int(const std::string& name) const {
   const std::string s = get(name);
   char* end = nullptr;
@@ -162,8 +169,9 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
       struct stat in {};
       return ::stat(other.c_str(), &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino;
     };
-    for (const auto& [option, value] : args.values())
-      if (m_targets.count(option) == 0 && same(value))
+    double number = 0;
+    for (const auto& [option, value] : args.values())  // a number (--radius 1) names no input, whatever files exist
+      if (m_targets.count(option) == 0 && !io::parse_decimal(value, number) && same(value))
         throw Usage_error("--" + name + ": " + path + " is also the input --" + option);
     for (const std::string& value : args.positional())
       if (same(value)) throw Usage_error("--" + name + ": " + path + " is also the input " + value);

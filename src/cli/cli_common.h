@@ -36,6 +36,8 @@ class Arguments {
   std::string get_or(const std::string& name, const std::string& fallback) const;
   double get_double(const std::string& name) const;           ///< finite number
   double get_positive_double(const std::string& name) const;  ///< finite number > 0
+  /// A scale (sigma) in [1e-150, 1e150], the range the library takes (its squares stay normal doubles).
+  double get_scale(const std::string& name) const;
   long long get_int(const std::string& name) const;
   const std::vector<std::string>& positional() const { return m_positional; }
   const std::map<std::string, std::string>& values() const { return m_values; }  ///< option -> value

@@ -250,7 +250,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
   if (s.method == "darts" && s.count == 0 && s.radius == 0) throw Usage_error("--method darts needs --count M or --radius R");
   if (s.method == "continuous" && s.radius == 0)
     throw Usage_error("--method continuous needs --radius R (pixels); --count M then caps the number of samples");
-  if (args.has("sigma-feature")) s.sigma_feature = args.get_positive_double("sigma-feature");
+  if (args.has("sigma-feature")) s.sigma_feature = args.get_scale("sigma-feature");
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
   s.seed = static_cast<std::uint64_t>(seed);

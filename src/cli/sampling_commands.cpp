@@ -29,7 +29,7 @@ using Pwn = std::pair<K::Point_3, K::Vector_3>;
 namespace fs = FeatureRecon::sampling;
 
 double sigma_feature_of(const Arguments& args) {
-  return args.has("sigma-feature") ? args.get_positive_double("sigma-feature") : std::numeric_limits<double>::infinity();
+  return args.has("sigma-feature") ? args.get_scale("sigma-feature") : std::numeric_limits<double>::infinity();
 }
 
 /// Intrinsic dimension and measure of a 3D cloud, as the elimination derives them.
@@ -58,7 +58,7 @@ int run_sample(const std::vector<std::string>& argv) {
     if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   }
   const double radius = args.has("radius") ? args.get_positive_double("radius") : 0.0;
-  const double sigma_position = args.has("sigma-position") ? args.get_positive_double("sigma-position") : 1.0;
+  const double sigma_position = args.has("sigma-position") ? args.get_scale("sigma-position") : 1.0;
   const double sigma_feature = sigma_feature_of(args);
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
@@ -181,7 +181,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     o.intrinsic_dimension = static_cast<int>(d);
   }
   o.periodic = args.has("periodic");
-  if (args.has("sigma-position")) o.sigma_position = args.get_positive_double("sigma-position");
+  if (args.has("sigma-position")) o.sigma_position = args.get_scale("sigma-position");
   o.sigma_feature = sigma_feature_of(args);
   fs::Sampling_quality q;
   fs::Sampling_spectrum spectrum;

@@ -340,7 +340,7 @@ int run_stipple(const std::vector<std::string>& argv) {
   const long long count = args.get_int("count");
   if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   s.count = static_cast<std::size_t>(count);
-  if (args.has("sigma-feature")) s.sigma_feature = args.get_positive_double("sigma-feature");
+  if (args.has("sigma-feature")) s.sigma_feature = args.get_scale("sigma-feature");
   const long long iterations = args.has("iterations") ? args.get_int("iterations") : (s.method == "kernel" ? 100 : 50);
   if (iterations < 0) throw Usage_error("--iterations must be >= 0, got " + std::to_string(iterations));
   s.iterations = static_cast<std::size_t>(iterations);

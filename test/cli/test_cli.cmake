@@ -549,7 +549,12 @@ expect(ply_some_normals 1 "nx.ply: .*only some of the normal properties" sample 
 file(WRITE ${WORK}/nan.ply "${ply_head}property float x\nproperty float y\nproperty float z\nend_header\n1 2 3\nnan 1 1\n0 0 0\n")
 expect(ply_nan 1 "nan.ply: not a readable PLY point cloud \\(vertex 1: 'nan' is not a finite number\\)" sample-stats --input ${WORK}/nan.ply)
 expect(normal_neighbors_huge 2 "--normal-neighbors must be in \\[3, 1000000\\]" sample --input ${WORK}/blank_first.xyz --count 2 --sigma-feature 0.5 --normal-neighbors 4294967296 --out ${WORK}/o.xyz)
-expect(sigma_feature_tiny 1 "sigma_feature must be in \\[1e-150, 1e150\\] \\(or infinity for Euclidean\\), got 1e-160" sample --input ${WORK}/blank_first.xyz --method darts --count 2 --sigma-feature 1e-160 --out ${WORK}/o.xyz)
+# Scales outside the library's range are bad arguments (status 2, naming the option), found before the input is
+# read (they exited with 1, naming the library's field, some after normal estimation).
+expect(sigma_feature_tiny 2 "--sigma-feature must be a scale in \\[1e-150, 1e150\\], got '1e-160'" sample --input ${WORK}/blank_first.xyz --method darts --count 2 --sigma-feature 1e-160 --out ${WORK}/o.xyz)
+expect(sigma_position_huge 2 "--sigma-position must be a scale in \\[1e-150, 1e150\\], got '1e300'" sample --input ${WORK}/no_such.xyz --count 2 --sigma-position 1e300 --out ${WORK}/o.xyz)
+expect(sigma_spatial_large 2 "--sigma-spatial must be at most 2048 without --radius" bilateral-filter ${WORK}/line.pgm --sigma-spatial 5000 --out ${WORK}/bf.png)
+expect(sigma_range_tiny 2 "--sigma-range must be a scale in \\[1e-150, 1e150\\]" bilateral-filter ${WORK}/line.pgm --sigma-range 1e-300 --out ${WORK}/bf.png)
 # Numbers are decimal (strtod also read 0x10 as 16); a missing input says so before its extension is judged.
 expect(hex_option 2 "--radius must be a finite number, got '0x10'" rips --points ${DATA}/figure_eight.xyz --radius 0x10 --out ${WORK}/x.txt)
 file(WRITE ${WORK}/hex.xyz "0 0 0\n0x10 1 1\n")
@@ -771,3 +776,11 @@ expect(output_is_input 2 "--out-vertices: .*figure_eight.xyz is also the input -
 file(COPY ${M}_gt_crp_vertices.txt DESTINATION ${WORK}/special)
 file(RENAME ${WORK}/special/chicago_gt_crp_vertices.txt ${WORK}/special/gt_v.txt)
 expect(output_is_positional_input 2 "--samples-out: .*gt_v.txt is also the input .*gt_v.txt" evaluate-map ${WORK}/special/gt_v.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --samples-out ${WORK}/special/gt_v.txt)
+# A number is no input, whatever files exist: --radius 0.6 --out 0.6 in a directory holding a file 0.6 writes it.
+file(WRITE ${WORK}/special/0.6 "old\n")
+execute_process(COMMAND ${FEATURERECON} rips --points ${DATA}/figure_eight.xyz --radius 0.6 --out 0.6 --quiet
+                WORKING_DIRECTORY ${WORK}/special RESULT_VARIABLE number_rc ERROR_VARIABLE number_err)
+file(READ ${WORK}/special/0.6 number_out LIMIT 40)
+if(NOT number_rc EQUAL 0 OR NOT number_out MATCHES "^[0-9]")
+  message(SEND_ERROR "output_named_like_a_number: rc ${number_rc}, ${number_err}")
+endif()
