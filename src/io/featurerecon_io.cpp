@@ -367,9 +367,20 @@ bool is_special_file(const std::string& path) {
 std::string write_destination(const std::string& path) {
   struct stat st {};
   char resolved[PATH_MAX];
-  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode) && ::realpath(path.c_str(), resolved) != nullptr)
-    return resolved;
-  return path;
+  if (!(::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode))) return path;
+  if (::realpath(path.c_str(), resolved) != nullptr) return resolved;
+  // A dangling link: follow it by hand (relative targets from the link's directory), so that the file it names is
+  // created and the link stays (it was replaced by a regular file).
+  std::string at = path;
+  for (int hops = 0; hops < 40 && ::lstat(at.c_str(), &st) == 0 && S_ISLNK(st.st_mode); ++hops) {
+    char target[PATH_MAX];
+    const ssize_t n = ::readlink(at.c_str(), target, sizeof target - 1);
+    if (n < 0) return path;
+    target[n] = '\0';
+    const std::size_t slash = at.find_last_of('/');
+    at = target[0] == '/' || slash == std::string::npos ? std::string(target) : at.substr(0, slash + 1) + target;
+  }
+  return at;
 }
 
 void write_text_file(const std::string& path, const std::string& text) {

@@ -740,6 +740,16 @@ expect_same_file(${WORK}/special/real.cx ${WORK}/fig8.txt "output_through_link: 
 if(NOT IS_SYMLINK ${WORK}/special/link.cx)
   message(SEND_ERROR "output_through_link: the symbolic link was replaced by a file")
 endif()
+# A dangling link too: the file it names is created (the link was replaced), and a missing directory is named.
+file(REMOVE ${WORK}/special/made.cx)
+file(CREATE_LINK made.cx ${WORK}/special/dangling.cx SYMBOLIC)
+expect(output_through_dangling_link 0 "wrote .*dangling.cx: 400 vertices" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --out ${WORK}/special/dangling.cx --quiet)
+expect_same_file(${WORK}/special/made.cx ${WORK}/fig8.txt "output_through_dangling_link: the file the link names")
+if(NOT IS_SYMLINK ${WORK}/special/dangling.cx)
+  message(SEND_ERROR "output_through_dangling_link: the symbolic link was replaced by a file")
+endif()
+file(CREATE_LINK ${WORK}/no_such_directory/x.cx ${WORK}/special/nowhere.cx SYMBOLIC)
+expect(output_through_link_nowhere 2 "the directory .*no_such_directory of .*nowhere.cx does not exist" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --out ${WORK}/special/nowhere.cx --quiet)
 if(BASH_PROGRAM)
   execute_process(COMMAND ${BASH_PROGRAM} -c "cd '${WORK}/special' && mkfifo fifo.cx && { timeout 30 cat fifo.cx > from_fifo.cx & } && \"$0\" rips --points '${DATA}/figure_eight.xyz' --radius 0.6 --out fifo.cx --quiet && wait && test -p fifo.cx" ${FEATURERECON}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
