@@ -51,7 +51,11 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
   o.mode = mode == "local" ? fs::Tap_mode::local : fs::Tap_mode::global;
   if (args.has("budget")) o.budget = args.get_positive_double("budget");
   if (o.budget > 16) throw Usage_error("--budget must be in (0, 16] taps per kernel pixel, got " + args.get("budget"));
-  if (args.has("sigma-spatial")) o.kernel.sigma_spatial = args.get_scale("sigma-spatial");
+  if (args.has("sigma-spatial")) {  // large with --radius: a flat spatial kernel; below 1e-150 its weights are NaN
+    o.kernel.sigma_spatial = args.get_positive_double("sigma-spatial");
+    if (o.kernel.sigma_spatial < 1e-150)
+      throw Usage_error("--sigma-spatial must be at least 1e-150, got " + args.get("sigma-spatial"));
+  }
   if (args.has("sigma-spatial") && !args.has("radius") && o.kernel.sigma_spatial > 2048)
     throw Usage_error("--sigma-spatial must be at most 2048 without --radius (the radius 2 sigma would exceed 4096), "
                       "got " + args.get("sigma-spatial"));

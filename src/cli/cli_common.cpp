@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <set>
 
 #include "../io/featurerecon_io.h"
 
@@ -169,9 +170,14 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
       struct stat in {};
       return ::stat(other.c_str(), &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino;
     };
+    // A number given to an option that takes one (--radius 0.6) names no input, whatever files exist; the options
+    // that read files are compared whatever their value (an input named 12 stays an input).
+    static const std::set<std::string> file_inputs{"points",  "tracks", "distance-matrix", "graph",
+                                                   "complex", "input",  "crop-to-tracks"};
     double number = 0;
-    for (const auto& [option, value] : args.values())  // a number (--radius 1) names no input, whatever files exist
-      if (m_targets.count(option) == 0 && !io::parse_decimal(value, number) && same(value))
+    for (const auto& [option, value] : args.values())
+      if (m_targets.count(option) == 0 && (file_inputs.count(option) > 0 || !io::parse_decimal(value, number)) &&
+          same(value))
         throw Usage_error("--" + name + ": " + path + " is also the input --" + option);
     for (const std::string& value : args.positional())
       if (same(value)) throw Usage_error("--" + name + ": " + path + " is also the input " + value);

@@ -257,7 +257,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (std::isnan(options.embedding.max_gap)) throw Usage_error("--max-gap must be a number (0: automatic, < 0: off)");
   if (args.has("smoothing")) {
     const long long it = args.get_int("smoothing");
-    if (it < 0) throw Usage_error("--smoothing must be an integer >= 0");
+    if (it < 0 || it > 1000000)
+      throw Usage_error("--smoothing must be an integer in [0, 1000000], got " + args.get("smoothing"));
     options.embedding.smoothing_iterations = static_cast<std::size_t>(it);
   }
   options.prune_height = args.has("prune") ? args.get_double("prune") : 0.0;

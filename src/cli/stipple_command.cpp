@@ -342,7 +342,8 @@ int run_stipple(const std::vector<std::string>& argv) {
   s.count = static_cast<std::size_t>(count);
   if (args.has("sigma-feature")) s.sigma_feature = args.get_scale("sigma-feature");
   const long long iterations = args.has("iterations") ? args.get_int("iterations") : (s.method == "kernel" ? 100 : 50);
-  if (iterations < 0) throw Usage_error("--iterations must be >= 0, got " + std::to_string(iterations));
+  if (iterations < 0 || iterations > 1000000)
+    throw Usage_error("--iterations must be in [0, 1000000], got " + std::to_string(iterations));
   s.iterations = static_cast<std::size_t>(iterations);
   const long long palette_size = args.has("palette") ? args.get_int("palette") : 6;
   if (palette_size < 1 || palette_size > 64)

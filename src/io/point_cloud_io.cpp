@@ -265,7 +265,7 @@ std::string ply_problem(const std::string& path, bool& normals) {
           if (q.count_size == 0) {
             if (left < q.size) return truncated(i);
             left -= q.size;
-            in.seekg(static_cast<std::streamoff>(q.size), std::ios::cur);
+            in.ignore(static_cast<std::streamsize>(q.size));  // not seekg: that drops the read buffer every time
             continue;
           }
           if (left < q.count_size || !in.read(reinterpret_cast<char*>(count), std::streamsize(q.count_size)))
@@ -278,7 +278,7 @@ std::string ply_problem(const std::string& path, bool& normals) {
             return "element " + e.name + " row " + std::to_string(i) + ": list " + q.name + " claims " +
                    std::to_string(items) + " items, the file has " + std::to_string(left) + " bytes left";
           left -= static_cast<unsigned long long>(items) * q.size;
-          in.seekg(static_cast<std::streamoff>(items * static_cast<long long>(q.size)), std::ios::cur);
+          in.ignore(static_cast<std::streamsize>(items * static_cast<long long>(q.size)));
         }
     }
     return "";
@@ -299,8 +299,8 @@ std::string ply_problem(const std::string& path, bool& normals) {
         if (q.count_size > 0) {
           lists = true;
           double c = 0;
-          if (k >= t.size() || !parse_decimal(t[k], c) || !(c >= 0 && c == std::floor(c)))
-            return what + ": list " + q.name + " has no count";
+          if (k >= t.size() || t[k].find_first_not_of("0123456789") != std::string::npos || !parse_decimal(t[k], c))
+            return what + ": list " + q.name + " has no count (a non-negative integer)";
           if (c > double(t.size() - k - 1))
             return what + " has " + std::to_string(t.size()) + " values, too few for the " + t[k] + " items of its "
                    "list " + q.name;

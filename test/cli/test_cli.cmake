@@ -375,6 +375,9 @@ if(cap_lower_count LESS 10)
   message(SEND_ERROR "sample-image darts cap: ${cap_lower_count} of 50 samples in the lower half, expected about 25")
 endif()
 expect(stipple_help 0 "usage: featurerecon stipple IMAGE --count N" stipple --help)
+# Iteration counts are bounded (10^12 ran for weeks).
+expect(stipple_iterations_huge 2 "--iterations must be in \\[0, 1000000\\], got 1000000000000" stipple ${WORK}/line.pgm --count 40 --method lloyd --iterations 1000000000000 --out ${WORK}/st.svg)
+expect(skeleton_smoothing_huge 2 "--smoothing must be an integer in \\[0, 1000000\\], got 1000000000000" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --smoothing 1000000000000 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 # One dot: the radius search must stop once a throw keeps a single dot (it used to grow the radius to infinity).
 foreach(method darts kernel)
   expect(stipple_one_${method} 0 "\"dots\": 1," stipple ${WORK}/line.pgm --count 1 --method ${method} --out ${WORK}/one_${method}.svg
@@ -616,6 +619,8 @@ expect(sample_two_kept 0 "\"kept\": 2,.*\"relative_radius\": null, \"bilateral_r
 expect(sample_stats_domain 0 "\"domain_measure\": 1, \"periodic\": true" sample-stats --input ${WORK}/torus.txt --periodic)
 # synthetic-city: sizes that would fill the memory are refused naming the options.
 expect(synthetic_city_tiny_interval 1 "more than 2\\^26 fixes .*raise speed .* or sampling_interval" synthetic-city --interval 1e-9 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+# Blocks so large that one route needs billions of fixes: the message names the block size too.
+expect(synthetic_city_huge_blocks 1 "more than 2\\^26 fixes .*along a route of .*block_width \\(1e\\+300\\)" synthetic-city --block-width 1e300 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_huge_blocks 1 "beyond the largest double: block_width" synthetic-city --block-width 1e307 --columns 100 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 # --graph edge lengths whose squares overflow are computed scaled; beyond the largest double they are refused.
 file(WRITE ${WORK}/far_graph.txt "3 2\n0 0 0 0\n1e200 0 0 1\n2e200 0 0 2\n0 1\n1 2\n")
@@ -794,3 +799,11 @@ file(READ ${WORK}/special/0.6 number_out LIMIT 40)
 if(NOT number_rc EQUAL 0 OR NOT number_out MATCHES "^[0-9]")
   message(SEND_ERROR "output_named_like_a_number: rc ${number_rc}, ${number_err}")
 endif()
+# ... but an input file named like a number is still an input (the first fix let --out 12 overwrite --points 12).
+configure_file(${DATA}/figure_eight.xyz ${WORK}/special/12 COPYONLY)
+execute_process(COMMAND ${FEATURERECON} rips --points 12 --radius 0.3 --out 12 --quiet
+                WORKING_DIRECTORY ${WORK}/special RESULT_VARIABLE number_rc ERROR_VARIABLE number_err)
+if(NOT number_rc EQUAL 2 OR NOT number_err MATCHES "--out: 12 is also the input --points")
+  message(SEND_ERROR "input_named_like_a_number: rc ${number_rc}, ${number_err}")
+endif()
+expect_same_file(${WORK}/special/12 ${DATA}/figure_eight.xyz "input_named_like_a_number: the input")

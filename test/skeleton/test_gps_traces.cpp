@@ -530,17 +530,19 @@ TEST(GpsTraces, ALongJumpWithinTheLinkGapIsRefusedBeforeDensifying) {
   Gps_trace_options o;
   o.max_link_gap = 1e9;
   o.sample_spacing = 10;
-  o.max_inserted_points = 100000;  // the segments need 200,000
+  o.max_inserted_points = 100000;  // the segments need 199,997
   try {
     sample_gps_traces({trip}, 20.0, o);
     ADD_FAILURE() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("would insert about 200000 points along the segments (more than "
+    EXPECT_NE(std::string(e.what()).find("would insert about 199997 points along the segments (more than "
                                          "max_inserted_points, 100000; the longest linked segment, from trip 0, fix 2, "
                                          "is 999980 long): lower max_link_gap (1e+09"),
               std::string::npos) << e.what();
   }
-  o.max_inserted_points = 200000;  // exactly as many: runs
+  o.max_inserted_points = 199996;  // one fewer than needed: refused
+  EXPECT_THROW(sample_gps_traces({trip}, 20.0, o), std::invalid_argument);
+  o.max_inserted_points = 199997;  // exactly as many (1 + 1 + 199,995 inserted): runs
   EXPECT_GT(sample_gps_traces({trip}, 20.0, o).points.rows, 90000u);  // one per 10 m
   o.max_inserted_points = 0;  // no limit
   EXPECT_GT(sample_gps_traces({trip}, 20.0, o).points.rows, 90000u);  // one per 10 m

@@ -206,9 +206,9 @@ inline double automatic_level_width(const Reeb_graph& G) {
 
 /// Checks the values of Embedding_options (throws naming `fn`).
 inline void check_embedding_options(const Embedding_options& options, const char* fn) {
-  if (!(options.level_width >= 0 && std::isfinite(options.level_width)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "embedding level_width must be finite and >= 0 (0: automatic), "
-                                                   "got ", options.level_width);
+  if (!(options.level_width >= 0))  // infinity: one piece per arc
+    FeatureRecon::internal::throw_invalid_argument(fn, "embedding level_width must be >= 0 (0: automatic), got ",
+                                                   options.level_width);
   if (!(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "embedding smoothing_weight must lie in [0, 1], got ",
                                                    options.smoothing_weight);

@@ -284,7 +284,7 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
 ///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
 ///         or segment support, a negative heading tolerance, a turn tolerance outside [0, 180], a confirmed
-///         fraction outside [0, 1]).
+///         fraction outside [0, 1]), or linking that would insert more than options.max_inserted_points points.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
@@ -340,7 +340,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         const Gps_fix &a = trips[t][order[t][i]], &b = trips[t][order[t][i + 1]];
         const double d = std::hypot(b.x - a.x, b.y - a.y);
         if (!(d <= S.max_link_gap && d > insert_step)) continue;
-        inserted += std::floor(d / insert_step);
+        inserted += std::floor(d / insert_step) - 1;  // as the densification below: j = 1 .. n - 1
         if (d > longest) {
           longest = d;
           longest_trip = t;

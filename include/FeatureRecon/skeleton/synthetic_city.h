@@ -349,8 +349,10 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     planned_fixes += route_length / step + 1;
     if (!(planned_fixes <= max_fixes) || !(route_length + step > route_length))
       throw_invalid_argument(fn, "the trips would record more than 2^26 fixes (trip ", t, " alone: ",
-                             route_length / step, " at ", step, " m apart): raise speed (", o.speed,
-                             ") or sampling_interval (", o.sampling_interval, "), or lower trips (", o.trips, ")");
+                             route_length / step, " at ", step, " m apart, along a route of ", route_length,
+                             " m): raise speed (", o.speed, ") or sampling_interval (", o.sampling_interval,
+                             "), or lower trips (", o.trips, "), block_width (", o.block_width, "), block_height (",
+                             o.block_height, ") or jitter (", o.jitter, ")");
     const double bias_x = o.trip_bias * random.normal(), bias_y = o.trip_bias * random.normal();
     double along = o.sampling_interval * random() * speed;  // arc length of the next fix
     double start = 0;                                         // arc length at the current segment's start
