@@ -145,6 +145,8 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
     if (io::is_special_file(path)) continue;
     // A symbolic link is written through: the file it points to is replaced, in that file's directory.
     const std::string destination = io::write_destination(path);
+    if (::lstat(destination.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+      throw Usage_error("--" + name + ": " + path + " is a loop of symbolic links");
     const std::size_t slash = destination.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : destination.substr(0, slash);
     if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
@@ -235,9 +237,29 @@ void Outputs::commit() {
   m_staged.clear();
 }
 
+namespace {
+/// Length of the valid UTF-8 sequence starting at s[i] (1 to 4), or 0 when the bytes there are not one.
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+  const auto at = [&s](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char u = at(i);
+  std::size_t n = 0;
+  unsigned char lo = 0x80, hi = 0xBF;  // range of the second byte (no overlong forms, no surrogates, <= U+10FFFF)
+  if (u < 0x80) return 1;
+  if (u >= 0xC2 && u <= 0xDF) n = 2;
+  else if (u >= 0xE0 && u <= 0xEF) n = 3, lo = u == 0xE0 ? 0xA0 : 0x80, hi = u == 0xED ? 0x9F : 0xBF;
+  else if (u >= 0xF0 && u <= 0xF4) n = 4, lo = u == 0xF0 ? 0x90 : 0x80, hi = u == 0xF4 ? 0x8F : 0xBF;
+  else return 0;
+  if (i + n > s.size() || at(i + 1) < lo || at(i + 1) > hi) return 0;
+  for (std::size_t k = 2; k < n; ++k)
+    if (at(i + k) < 0x80 || at(i + k) > 0xBF) return 0;
+  return n;
+}
+}  // namespace
+
 std::string json_string(const std::string& s) {
   std::string out = "\"";
-  for (const char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
     const unsigned char u = static_cast<unsigned char>(c);
     if (c == '"' || c == '\\') {
       out += '\\';
@@ -246,9 +268,16 @@ std::string json_string(const std::string& s) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\u%04x", u);
       out += buf;
+    } else if (const std::size_t n = utf8_length(s, i); n > 1) {  // a character beyond ASCII, as it is
+      out.append(s, i, n);
+      i += n;
+      continue;
+    } else if (n == 0) {  // a byte that is no UTF-8 (a file name in Latin-1): the replacement character
+      out += "\\ufffd";
     } else {
       out += c;
     }
+    ++i;
   }
   return out + "\"";
 }
