@@ -216,7 +216,7 @@ class Item_domain {
   double packing_distance(std::size_t n) const {
     if (n == 0 || S.size() == 0) return 0;
     double m = measure;
-    if (intrinsic == 3) {
+    if ((intrinsic != 0 ? intrinsic : resolve_intrinsic_dimension(S, 0)) == 3) {
       if (m == 0) {
         const double spacing = grid_spacing();
         m = 1;
@@ -263,7 +263,7 @@ class Item_domain {
 
   Sample_set<Traits> S;
   double measure = 0;
-  int intrinsic = 2;
+  int intrinsic = 0;  // 2 or 3; 0: estimated when the packing distance asks (not for every step of a stage call)
   Point lo{}, hi{};
   Ring_grid<D> item_grid;
 };
@@ -283,7 +283,7 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
     check_sigmas(o.sigma_position, o.sigma_feature, fn);
     check_domain(o.domain_measure, o.intrinsic_dimension, D, fn);
-    this->intrinsic = Base::resolve_intrinsic_dimension(S, o.intrinsic_dimension);
+    this->intrinsic = o.intrinsic_dimension;
     if (!o.density.empty() && o.density.size() != S.size())
       FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ", S.size(),
                                                      " items");
