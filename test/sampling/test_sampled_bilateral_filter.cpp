@@ -331,6 +331,17 @@ TEST(SampledBilateralFilter, BadArgumentsAreNamed) {
   other = p;
   other.weights.at(0) = -1;
   expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern.weights[0]");
+  // A pattern stopped while it was made, or one without taps, gave the input back as if filtered.
+  Sampled_bilateral_filter_options stop = o;
+  stop.progress = [](double) { return false; };
+  other = bilateral_tap_pattern(4, 3, 1, d, stop);
+  ASSERT_EQ(other.status, FeatureRecon::Status::interrupted);
+  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "status interrupted");
+  other = p;
+  other.pixels.clear();
+  other.weights.clear();
+  other.positions.clear();
+  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern has no taps for a 4 x 3");
 }
 
 TEST(ImageQuality, PsnrAndSsimOnKnownCases) {

@@ -577,6 +577,12 @@ inline Bilateral_filter_result filter_on_pattern(const Filter_image& F, const Ta
   if (pattern.pixels.size() != pattern.weights.size())
     FeatureRecon::internal::throw_invalid_argument(fn, "pattern has ", pattern.pixels.size(), " pixels and ",
                                                    pattern.weights.size(), " weights");
+  // A stopped pattern (or one without taps) filtered nothing: every pixel came back as it was.
+  if (pattern.status == Status::interrupted)
+    FeatureRecon::internal::throw_invalid_argument(fn, "pattern was stopped while it was made (status interrupted): "
+                                                   "make it again");
+  if (pattern.pixels.empty() && F.pixels() > 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, "pattern has no taps for a ", F.w, " x ", F.h, " image");
   for (std::size_t i = 0; i < pattern.pixels.size(); ++i) {
     if (pattern.pixels[i] >= F.pixels())
       FeatureRecon::internal::throw_invalid_argument(fn, "pattern.pixels[", i, "] = ", pattern.pixels[i],
@@ -635,8 +641,8 @@ inline Bilateral_filter_result filter_on_pattern(const Filter_image& F, const Ta
 /// sums the taps of `pattern` inside its window, weighted by the kernel and the taps' weights.
 /// \param width, height, channels, data the image. \param pattern a pattern of this image's size (checked).
 /// \param options the kernel and the progress callback (the sampling fields are not used).
-/// \throws std::invalid_argument for a pattern of another size or with inconsistent arrays, and as
-///   bilateral_filter().
+/// \throws std::invalid_argument for a pattern of another size, with inconsistent arrays, without taps or
+///   stopped while it was made (status interrupted), and as bilateral_filter().
 inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, int channels,
                                                         const std::vector<std::uint8_t>& data,
                                                         const Tap_pattern& pattern,
