@@ -282,6 +282,10 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
+std::string json_statistic(double x, Status status) {
+  return json_number(status == Status::degenerate_input ? std::nan("") : x);
+}
+
 std::string json_number(double x) {
   if (!std::isfinite(x)) return "null";
   char buf[64];

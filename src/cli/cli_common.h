@@ -5,6 +5,7 @@
 
 // Argument parsing and progress display shared by the subcommands of `featurerecon`.
 
+#include <FeatureRecon/config.h>
 #include <FeatureRecon/skeleton/geographic.h>
 
 #include <array>
@@ -116,6 +117,9 @@ void project_trips(Trips& trips, const skeleton::Transverse_mercator& projection
 
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);
+
+/// A spacing statistic for JSON: null when its set is degenerate (too few samples, no area), where it is undefined.
+std::string json_statistic(double x, Status status);
 
 /// Quotes a string for JSON (", \ and control characters escaped).
 std::string json_string(const std::string& s);

@@ -321,10 +321,8 @@ int run_sample_image(const std::vector<std::string>& argv) {
   os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width << ", \"height\": " << image.height
      << ", \"channels\": " << image.channels << ", \"method\": \"" << s.method << "\", \"samples\": " << samples.size()
      << ", \"radius\": " << json_number(used_radius) << ", \"sigma_feature\": " << json_number(s.sigma_feature)
-     << ", \"seed\": " << seed << ", \"relative_radius\": "
-     << json_number(quality.status == Status::degenerate_input ? std::nan("") : quality.relative_radius)
-     << ", \"average_minimum_distance\": "
-     << json_number(quality.status == Status::degenerate_input ? std::nan("") : quality.average_minimum_distance)
+     << ", \"seed\": " << seed << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
+     << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
      << ", \"seconds\": " << json_number(seconds);
   if (args.has("mosaic")) os << ", \"mosaic_psnr_db\": " << json_number(mosaic_psnr);
   os << "}\n";

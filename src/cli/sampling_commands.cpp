@@ -140,19 +140,16 @@ int run_sample(const std::vector<std::string>& argv) {
     q.sigma_feature = sigma_feature;
     bilateral_rho = fs::sampling_quality(kept_items, q, traits).relative_radius;
   }
-  // Spacing statistics of a degenerate set (fewer than two samples, no area) are undefined: null, not 0.
-  auto defined = [&quality](double x) {
-    return json_number(quality.status == Status::degenerate_input ? std::nan("") : x);
-  };
   std::ostringstream os;
   os << "{\"input\": " << json_string(input) << ", \"points\": " << items.size() << ", \"kept\": " << kept.size()
      << ", \"method\": \"" << method << "\", \"radius\": " << json_number(used_radius)
      << ", \"sigma_position\": " << json_number(sigma_position) << ", \"sigma_feature\": " << json_number(sigma_feature)
      << ", \"normals\": \"" << normals << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
      << "\", \"seed\": " << seed << ", \"intrinsic_dimension\": " << dimension
-     << ", \"domain_measure\": " << json_number(measure) << ", \"relative_radius\": " << defined(quality.relative_radius)
-     << ", \"bilateral_relative_radius\": " << defined(bilateral_rho)
-     << ", \"average_minimum_distance\": " << defined(quality.average_minimum_distance)
+     << ", \"domain_measure\": " << json_number(measure)
+     << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
+     << ", \"bilateral_relative_radius\": " << json_statistic(bilateral_rho, quality.status)
+     << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
      << ", \"seconds\": " << json_number(seconds) << ", \"output\": " << json_string(output) << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;
@@ -262,9 +259,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
      << ", \"domain_measure\": " << json_number(q.domain_measure) << ", \"periodic\": " << (o.periodic ? "true" : "false")
      << ", \"hexagonal_distance\": " << json_number(q.hexagonal_distance)
      << ", \"minimum_distance\": " << json_number(q.minimum_distance)
-     << ", \"relative_radius\": " << json_number(q.status == Status::degenerate_input ? std::nan("") : q.relative_radius)
-     << ", \"average_minimum_distance\": "
-     << json_number(q.status == Status::degenerate_input ? std::nan("") : q.average_minimum_distance)
+     << ", \"relative_radius\": " << json_statistic(q.relative_radius, q.status)
+     << ", \"average_minimum_distance\": " << json_statistic(q.average_minimum_distance, q.status)
      << ", \"degenerate\": " << (q.status == Status::degenerate_input ? "true" : "false");
   if (has_spectrum)
     os << ", \"effective_nyquist\": " << json_number(spectrum.effective_nyquist)

@@ -60,12 +60,7 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   interrupted = false;
   with_metric(o, [&](const auto& metric) {
     FeatureRecon::internal::Dynamic_grid<D> grid(S.positions, largest * metric.spatial_scale());
-    // The prefilter |dp|^2 < (r s)^2; skipped (the metric decides) where (r s)^2 underflows, or copies at
-    // distance 0 would not be compared.
-    const double reach2 = [&] {
-      const double r = largest * metric.spatial_scale();
-      return r * r >= 0x1p-960 ? r * r : std::numeric_limits<double>::infinity();
-    }();
+    const double reach2 = prefilter_bound(largest * metric.spatial_scale());
     std::size_t failures = 0;
     for (std::size_t step = 0; step < n; ++step) {
       if ((step & 65535) == 0 && !FeatureRecon::internal::report_progress(o.progress, double(step) / double(n))) {

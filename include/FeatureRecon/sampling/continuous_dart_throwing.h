@@ -72,9 +72,7 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
   // The grid needs all positions up front: it only uses them for its frame, so pass the box corners.
   std::vector<std::array<double, 2>> positions{{box[0], box[1]}, {box[2], box[3]}};
   internal::with_metric(options, [&](const auto& metric) {
-    // The prefilter |dp|^2 < (r s)^2 is skipped (the metric decides) where (r s)^2 underflows.
-    const double reach = radius * metric.spatial_scale(),
-                 reach2 = reach * reach >= 0x1p-960 ? reach * reach : std::numeric_limits<double>::infinity();
+    const double reach = radius * metric.spatial_scale(), reach2 = internal::prefilter_bound(reach);
     // About as many cells as samples fit at spacing `reach` (fewer when max_samples caps them): then the grid
     // is a dense array, not a hash map.
     const double fit = (box[2] - box[0]) * (box[3] - box[1]) / (reach * reach);

@@ -291,10 +291,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       // Neighbour lists (CSR, local ids only: 4 bytes per neighbour; the weights are recomputed when an item
       // goes, which costs less than storing them on this scale). Two passes over the grid: count, then fill.
       internal::with_metric(options, [&](const auto& metric) {
-        // The prefilter |dp|^2 < (2 r s)^2, skipped (the metric decides) where that square underflows.
-        const double spatial = two_r * metric.spatial_scale(),
-                     spatial2 = spatial * spatial >= 0x1p-960 ? spatial * spatial
-                                                               : std::numeric_limits<double>::infinity();
+        const double spatial = two_r * metric.spatial_scale(), spatial2 = internal::prefilter_bound(spatial);
         // Weight of the pair (i, j) (local ids), or a negative number when j is not within 2 r of i.
         auto pair_weight = [&](std::size_t i, std::size_t j) {
           double d2 = 0;  // from the stage's own copy of the positions (contiguous, no indirection)

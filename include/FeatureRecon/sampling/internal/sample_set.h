@@ -95,6 +95,13 @@ struct Sample_set {
 /// (a sigma of 1e-160 squared is 0, and darts then never stopped).
 inline bool is_usable_scale(double sigma) { return sigma >= 1e-150 && sigma <= 1e150; }
 
+/// The bound of the spatial prefilter |dp|^2 < reach^2 of the samplers' neighbour searches: reach^2, or infinity
+/// (no prefilter: the metric decides) where that square underflows and pairs within reach, copies at distance 0
+/// among them, would be rejected.
+inline double prefilter_bound(double reach) {
+  return reach * reach >= 0x1p-960 ? reach * reach : std::numeric_limits<double>::infinity();
+}
+
 /// Checks the sigmas of the bilateral distance: each in [1e-150, 1e150], sigma_feature also infinity.
 inline void check_sigmas(double sigma_position, double sigma_feature, const char* fn) {
   if (!is_usable_scale(sigma_position))
