@@ -227,7 +227,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "prune", "merge", "level-width", "smoothing", "max-gap", "max-triangles",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "prune", "merge", "level-width", "smoothing", "max-gap", "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -270,10 +270,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
                args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected") ||
                args.has("merge") || args.has("first-point-positions") || args.has("segment-support") ||
-               args.has("segment-turn-tolerance")))
+               args.has("segment-turn-tolerance") || args.has("straight-confirmed")))
     throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius, "
-                      "--density-heading-tolerance, --first-point-positions, --segment-support, --segment-turn-tolerance "
-                      "and --merge apply to --tracks only");
+                      "--density-heading-tolerance, --first-point-positions, --segment-support, "
+                      "--segment-turn-tolerance, --straight-confirmed and --merge apply to --tracks only");
   if (!gps && args.has("lonlat")) throw Usage_error("--lonlat applies to --tracks only");
   const bool lonlat = args.has("lonlat");
   Transverse_mercator projection;  // --lonlat: degrees <-> metres
@@ -361,6 +361,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("segment-turn-tolerance")) go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
     if (!(go.segment_turn_tolerance >= 0 && go.segment_turn_tolerance <= 180))
       throw Usage_error("--segment-turn-tolerance must be in [0, 180] degrees");
+    if (args.has("straight-confirmed")) go.min_straight_confirmed_fraction = args.get_double("straight-confirmed");
+    if (!(go.min_straight_confirmed_fraction >= 0 && go.min_straight_confirmed_fraction <= 1))
+      throw Usage_error("--straight-confirmed must be in [0, 1] (0: the turn rule always applies)");
     if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
     go.density_radius = args.has("density-radius") ? args.get_positive_double("density-radius") : 0.0;
     if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
@@ -426,6 +429,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
                ", \"segment_turn_tolerance\": " + json_number(sample.segment_turn_tolerance) +
                ", \"checked_segments\": " + std::to_string(sample.checked_segments) +
                ", \"confirmed_segments\": " + std::to_string(sample.confirmed_segments) +
+               ", \"straight_checked\": " + std::to_string(sample.straight_checked) +
+               ", \"straight_confirmed\": " + std::to_string(sample.straight_confirmed) +
+               ", \"turn_rule_used\": " + (sample.turn_rule_used ? "true" : "false") +
                ", \"straight_segments\": " + std::to_string(sample.straight_segments) +
                ", \"linked_segments\": " + std::to_string(sample.linked_segments) +
                ", \"all_segments_used\": " + (sample.all_segments_used ? "true" : "false") + ", \"min_density\": " +
