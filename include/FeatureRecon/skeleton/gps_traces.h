@@ -88,10 +88,12 @@ struct Gps_trace_options {
   /// bound of the share confirmed reaches it; Gps_trace_sample::turn_rule_used). Bus routes follow long straight
   /// streets and their straight segments are confirmed (thinned Chicago traces: 0.92 to 0.99 of them); random
   /// routes between fixes hundreds of metres apart run straight for kilometres while their segments cut blocks,
-  /// and there straightness says nothing (a synthetic taxi city at 42 s: 0.56 of the straight segments confirmed,
-  /// 0.56 of all; 0.38 to 0.71 in the sparse rows of the synthetic cities of benchmark/README.md): the rule drew
+  /// and there straightness says little (a synthetic taxi city at 42 s: 0.56 of the straight segments confirmed,
+  /// 0.56 of all; 0.22 to 0.83 where the synthetic cities of benchmark/README.md do not trust it): the rule drew
   /// lines across blocks. The unconfirmed straight segments count against the rule too, so few checked segments
-  /// with none confirmed distrust it. Default 0.9; 0: always trusted.
+  /// with none confirmed distrust it, and where most streets are driven by one or two trips the rule, though often
+  /// wrong, adds streets no other trip draws (synthetic cities of 150 trips lose up to 0.14 in F without it).
+  /// Default 0.9; 0: always trusted.
   double min_straight_confirmed_fraction = 0.9;
   /// Refuse (std::invalid_argument, before any is made) linking that would insert more points than this along the
   /// segments: one jump of 1,000 km between two fixes within a generous max_link_gap asked for 10^8 points at a
