@@ -144,7 +144,9 @@ int run_sample(const std::vector<std::string>& argv) {
   os << "{\"input\": " << json_string(input) << ", \"points\": " << items.size() << ", \"kept\": " << kept.size()
      << ", \"method\": \"" << method << "\", \"radius\": " << json_number(used_radius)
      << ", \"sigma_position\": " << json_number(sigma_position) << ", \"sigma_feature\": " << json_number(sigma_feature)
-     << ", \"normals\": \"" << normals << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
+     << ", \"normals\": \"" << normals << "\", \"colors\": \""
+     << (!cloud.has_colors() ? "none" : io::file_extension(outputs.path("out")) == "ply" ? "file" : "dropped")
+     << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
      << "\", \"seed\": " << seed << ", \"intrinsic_dimension\": " << dimension
      << ", \"domain_measure\": " << json_number(measure)
      << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)

@@ -7,11 +7,15 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/read_points.h>
 #include <CGAL/IO/write_points.h>
+#include <CGAL/IO/read_ply_points.h>
+#include <CGAL/IO/write_ply_points.h>
+#include <CGAL/array.h>
 #include <CGAL/jet_estimate_normals.h>
 #include <CGAL/mst_orient_normals.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
@@ -33,6 +37,19 @@ using K = CGAL::Epick;
 using Pwn = std::pair<K::Point_3, K::Vector_3>;
 using Point_map = CGAL::First_of_pair_property_map<Pwn>;
 using Normal_map = CGAL::Second_of_pair_property_map<Pwn>;
+using Pwnc = std::tuple<K::Point_3, K::Vector_3, std::array<unsigned char, 3>>;  // with a colour
+using Point_of_tuple = CGAL::Nth_of_tuple_property_map<0, Pwnc>;
+using Normal_of_tuple = CGAL::Nth_of_tuple_property_map<1, Pwnc>;
+using Color_of_tuple = CGAL::Nth_of_tuple_property_map<2, Pwnc>;
+/// Channel I of the colour of a Pwnc (a readable property map, for writing).
+template <int I>
+struct Channel_of_tuple {
+  using key_type = Pwnc;
+  using value_type = unsigned char;
+  using reference = unsigned char;
+  using category = boost::readable_property_map_tag;
+  friend unsigned char get(const Channel_of_tuple&, const Pwnc& row) { return std::get<2>(row)[I]; }
+};
 
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw Input_error(path + ": " + what); }
@@ -170,8 +187,10 @@ struct Ply_element {
 /// in binary, every list count must fit in the bytes left (a count of 4e9 in an 80-byte file made CGAL allocate
 /// 16 GB) and the data must be as long as the header says; in ASCII, every line of an element must hold as many
 /// finite numbers as its properties (and list counts) declare (CGAL reads a line too long or too short shifted
-/// onto the next rows). Returns the problem, or "" with `normals` set. One pass over the file.
-std::string ply_problem(const std::string& path, bool& normals) {
+/// onto the next rows). Colours are the vertex properties red, green, blue, all three of type uchar (uint8); some
+/// of them, or another type, is a problem (they would be dropped without a word). Returns the problem, or "" with
+/// `normals` and `colors` set. One pass over the file.
+std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
   std::ifstream in(path, std::ios::binary);
   std::string line, format;
   bool header = false;
@@ -232,6 +251,12 @@ std::string ply_problem(const std::string& path, bool& normals) {
   const int n = int(type_of.count("nx")) + int(type_of.count("ny")) + int(type_of.count("nz"));
   if (n != 0 && n != 3) return "the vertex element has only some of the normal properties nx, ny, nz";
   normals = n == 3;
+  const int c = int(type_of.count("red")) + int(type_of.count("green")) + int(type_of.count("blue"));
+  if (c != 0 && c != 3) return "the vertex element has only some of the colour properties red, green, blue";
+  for (const char* name : {"red", "green", "blue"})
+    if (c == 3 && type_of[name] != "uchar" && type_of[name] != "uint8")
+      return std::string("vertex property ") + name + " is " + type_of[name] + ": colours must be uchar (0-255)";
+  colors = c == 3;
   if (format == "binary_little_endian" || format == "binary_big_endian") {
     const bool big = format == "binary_big_endian";
     const std::streamoff start = in.tellg();
@@ -322,19 +347,31 @@ std::string ply_problem(const std::string& path, bool& normals) {
 
 /// PLY through CGAL; what CGAL reports on std::cerr, or what ply_problem finds, becomes the reason of an error.
 void read_ply(const std::string& path, Point_cloud& c) {
-  bool normals = false;
-  const std::string problem = ply_problem(path, normals);
+  bool normals = false, colors = false;
+  const std::string problem = ply_problem(path, normals, colors);
   if (!problem.empty()) fail(path, "not a readable PLY point cloud (" + problem + ")");
-  std::vector<Pwn> pwn;
+  std::vector<Pwnc> pwn;
   std::ostringstream messages;
   std::streambuf* const saved = std::cerr.rdbuf(messages.rdbuf());
   bool ok = false;
   try {
-    if (normals)
-      ok = CGAL::IO::read_points(path, std::back_inserter(pwn),
-                                 CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+    std::ifstream in(path, std::ios::binary);
+    auto color_reader = [] {  // CGAL takes the handlers as rvalues
+      return std::make_tuple(Color_of_tuple(), CGAL::Construct_array(), CGAL::IO::PLY_property<unsigned char>("red"),
+                             CGAL::IO::PLY_property<unsigned char>("green"),
+                             CGAL::IO::PLY_property<unsigned char>("blue"));
+    };
+    auto rows = std::back_inserter(pwn);
+    auto points = [] { return CGAL::IO::make_ply_point_reader(Point_of_tuple()); };
+    auto normal_reader = [] { return CGAL::IO::make_ply_normal_reader(Normal_of_tuple()); };
+    if (normals && colors)
+      ok = CGAL::IO::read_PLY_with_properties(in, rows, points(), normal_reader(), color_reader());
+    else if (normals)
+      ok = CGAL::IO::read_PLY_with_properties(in, rows, points(), normal_reader());
+    else if (colors)
+      ok = CGAL::IO::read_PLY_with_properties(in, rows, points(), color_reader());
     else
-      ok = CGAL::IO::read_points(path, std::back_inserter(pwn), CGAL::parameters::point_map(Point_map()));
+      ok = CGAL::IO::read_PLY_with_properties(in, rows, points());
   } catch (...) {
     std::cerr.rdbuf(saved);
     throw;
@@ -348,9 +385,10 @@ void read_ply(const std::string& path, Point_cloud& c) {
     fail(path, "not a readable PLY point cloud" + (reason.empty() ? std::string() : " (" + reason + ")"));
   }
   c.points.reserve(pwn.size());
-  for (const Pwn& p : pwn) {
-    c.points.push_back({p.first.x(), p.first.y(), p.first.z()});
-    if (normals) c.normals.push_back({p.second.x(), p.second.y(), p.second.z()});
+  for (const auto& [p, n, color] : pwn) {
+    c.points.push_back({p.x(), p.y(), p.z()});
+    if (normals) c.normals.push_back({n.x(), n.y(), n.z()});
+    if (colors) c.colors.push_back(color);
   }
 }
 }  // namespace
@@ -393,7 +431,30 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud, const 
     pwn.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2])});
   }
   bool ok = false;
-  if (cloud.has_normals())
+  if (cloud.has_colors() && ext == "ply") {
+    std::vector<Pwnc> rows;
+    rows.reserve(indices.size());
+    for (std::size_t k = 0; k < indices.size(); ++k)
+      rows.emplace_back(pwn[k].first, pwn[k].second, cloud.colors[indices[k]]);
+    std::ofstream out(path);
+    out.precision(17);
+    // One handler per channel (CGAL would stream the whole array); rvalues, as CGAL takes them.
+    auto channel = [](auto map, const char* name) {
+      return std::make_pair(map, CGAL::IO::PLY_property<unsigned char>(name));
+    };
+    if (cloud.has_normals())
+      ok = out && CGAL::IO::write_PLY_with_properties(out, rows, CGAL::IO::make_ply_point_writer(Point_of_tuple()),
+                                                      CGAL::IO::make_ply_normal_writer(Normal_of_tuple()),
+                                                      channel(Channel_of_tuple<0>(), "red"),
+                                                      channel(Channel_of_tuple<1>(), "green"),
+                                                      channel(Channel_of_tuple<2>(), "blue"));
+    else
+      ok = out && CGAL::IO::write_PLY_with_properties(out, rows, CGAL::IO::make_ply_point_writer(Point_of_tuple()),
+                                                      channel(Channel_of_tuple<0>(), "red"),
+                                                      channel(Channel_of_tuple<1>(), "green"),
+                                                      channel(Channel_of_tuple<2>(), "blue"));
+    ok = ok && out.flush();
+  } else if (cloud.has_normals())
     ok = CGAL::IO::write_points(path, pwn,
                                 CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(17).use_binary_mode(false));
   else
