@@ -423,19 +423,16 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud, const 
   const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "off" && ext != "xyz")
     throw Input_error(path + ": unknown point-cloud format '." + ext + "' (expected .ply, .off or .xyz)");
-  std::vector<Pwn> pwn;
-  pwn.reserve(indices.size());
+  std::vector<Pwnc> rows;  // one copy of the kept points, whatever is written
+  rows.reserve(indices.size());
   for (const std::size_t i : indices) {
     const auto& p = cloud.points[i];
     const auto n = cloud.has_normals() ? cloud.normals[i] : std::array<double, 3>{0, 0, 0};
-    pwn.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2])});
+    rows.emplace_back(K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2]),
+                      cloud.has_colors() ? cloud.colors[i] : std::array<unsigned char, 3>{0, 0, 0});
   }
   bool ok = false;
   if (cloud.has_colors() && ext == "ply") {
-    std::vector<Pwnc> rows;
-    rows.reserve(indices.size());
-    for (std::size_t k = 0; k < indices.size(); ++k)
-      rows.emplace_back(pwn[k].first, pwn[k].second, cloud.colors[indices[k]]);
     std::ofstream out(path);
     out.precision(17);
     // One handler per channel (CGAL would stream the whole array); rvalues, as CGAL takes them.
@@ -454,12 +451,11 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud, const 
                                                       channel(Channel_of_tuple<1>(), "green"),
                                                       channel(Channel_of_tuple<2>(), "blue"));
     ok = ok && out.flush();
-  } else if (cloud.has_normals())
-    ok = CGAL::IO::write_points(path, pwn,
-                                CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).stream_precision(17).use_binary_mode(false));
-  else
-    ok = CGAL::IO::write_points(path, pwn,
-                                CGAL::parameters::point_map(Point_map()).stream_precision(17).use_binary_mode(false));
+  } else {
+    const auto np = CGAL::parameters::point_map(Point_of_tuple()).stream_precision(17).use_binary_mode(false);
+    ok = cloud.has_normals() ? CGAL::IO::write_points(path, rows, np.normal_map(Normal_of_tuple()))
+                             : CGAL::IO::write_points(path, rows, np);
+  }
   if (!ok) throw Input_error(path + ": cannot write");
 }
 
