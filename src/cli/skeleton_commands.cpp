@@ -227,7 +227,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "prune", "merge", "level-width", "smoothing", "max-gap", "max-triangles",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "prune", "merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -260,6 +260,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (it < 0 || it > 1000000)
       throw Usage_error("--smoothing must be an integer in [0, 1000000], got " + args.get("smoothing"));
     options.embedding.smoothing_iterations = static_cast<std::size_t>(it);
+  }
+  if (args.has("smoothing-method")) {
+    const std::string m = args.get("smoothing-method");
+    if (m == "taubin")
+      options.embedding.smoothing = Embedding_options::Smoothing::taubin;
+    else if (m == "laplacian")
+      options.embedding.smoothing = Embedding_options::Smoothing::laplacian;
+    else
+      throw Usage_error("--smoothing-method must be taubin or laplacian, got '" + m + "'");
   }
   options.prune_height = args.has("prune") ? args.get_double("prune") : 0.0;
   if (!(options.prune_height >= 0)) throw Usage_error("--prune must be >= 0");
@@ -491,12 +500,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
   std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
               "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
               "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
-              "\"level_width\": %s%s, \"seconds\": %s, \"vertices_file\": %s, \"edges_file\": %s}\n",
+              "\"level_width\": %s, \"smoothing\": \"%s\", \"smoothing_rounds\": %zu%s, \"seconds\": %s, "
+              "\"vertices_file\": %s, \"edges_file\": %s}\n",
               input_points, sampled,
               json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(), json_number(options.delta).c_str(),
               json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles,
               num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph),
-              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(), gps_json.c_str(), json_number(seconds).c_str(),
+              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(),
+              options.embedding.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian",
+              options.embedding.smoothing_iterations, gps_json.c_str(), json_number(seconds).c_str(),
               json_string(out_v).c_str(), json_string(out_e).c_str());
   return 0;
 }

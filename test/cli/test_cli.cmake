@@ -382,6 +382,11 @@ expect(stipple_help 0 "usage: featurerecon stipple IMAGE --count N" stipple --he
 # Iteration counts are bounded (10^12 ran for weeks).
 expect(stipple_iterations_huge 2 "--iterations must be in \\[0, 1000000\\], got 1000000000000" stipple ${WORK}/line.pgm --count 40 --method lloyd --iterations 1000000000000 --out ${WORK}/st.svg)
 expect(skeleton_smoothing_huge 2 "--smoothing must be an integer in \\[0, 1000000\\], got 1000000000000" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --smoothing 1000000000000 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_smoothing_method_bad 2 "--smoothing-method must be taubin or laplacian, got 'cubic'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --smoothing-method cubic --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# Taubin rounds by default (the JSON names the method and the rounds); road maps use Laplacian rounds.
+expect(skeleton_smoothing_default 0 "\"smoothing\": \"taubin\", \"smoothing_rounds\": 10," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_smoothing_laplacian 0 "\"smoothing\": \"laplacian\", \"smoothing_rounds\": 3," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --smoothing-method laplacian --smoothing 3 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_smoothing_tracks 0 "\"smoothing\": \"laplacian\", \"smoothing_rounds\": 2," skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 # One dot: the radius search must stop once a throw keeps a single dot (it used to grow the radius to infinity).
 foreach(method darts kernel)
   expect(stipple_one_${method} 0 "\"dots\": 1," stipple ${WORK}/line.pgm --count 1 --method ${method} --out ${WORK}/one_${method}.svg

@@ -70,6 +70,50 @@ TEST(EmbedReebGraph, CirclePolylinesStayOnTheCircle) {
   }
 }
 
+// A loop of 8 vertices on the unit circle gives arcs of 3 level-set pieces. Laplacian rounds shrink such a coarse
+// arc onto the chord between its ends (10 rounds: a fifth of the width left); Taubin rounds keep its shape.
+TEST(EmbedReebGraph, TaubinSmoothingKeepsTheShapeOfCoarseArcs) {
+  Proximity_graph g;
+  g.number_of_vertices = 8;
+  std::vector<std::array<double, 3>> xyz;
+  for (int i = 0; i < 8; ++i) {
+    xyz.push_back({std::cos(std::acos(-1.0) * i / 4), std::sin(std::acos(-1.0) * i / 4), 0.0});
+    g.edges.push_back({static_cast<Vertex_index>(std::min(i, (i + 1) % 8)), static_cast<Vertex_index>(std::max(i, (i + 1) % 8))});
+  }
+  std::sort(g.edges.begin(), g.edges.end());
+  g.edge_lengths.assign(8, 2 * std::sin(std::acos(-1.0) / 8));
+  const Simplicial_complex_2 K = build_flag_complex_2(g);
+  const auto f = compute_geodesic_function(K).values;
+  const Reeb_graph G = simplify_by_persistence(compute_augmented_reeb_graph(K, f), 0.0).graph;
+  ASSERT_EQ(G.loops(), 1u);
+  ASSERT_EQ(G.arcs.size(), 2u);
+  auto extent = [&](Embedding_options::Smoothing method, double& smallest_radius) {
+    Embedding_options o;
+    o.smoothing = method;
+    const Reeb_graph_embedding E = embed_reeb_graph(G, xyz, f, 2, o);
+    double widest = 0;  // distance from the line through the two nodes (the minimum and the maximum of f)
+    smallest_radius = 2;
+    const auto a = E.node_positions[G.arcs.front().lower], b = E.node_positions[G.arcs.front().upper];
+    const double ux = (b[0] - a[0]) / std::hypot(b[0] - a[0], b[1] - a[1]), uy = (b[1] - a[1]) / std::hypot(b[0] - a[0], b[1] - a[1]);
+    for (const auto& line : E.arc_polylines) {
+      EXPECT_EQ(line.size(), 5u);  // the two nodes and three pieces
+      for (const auto& p : line) {
+        widest = std::max(widest, std::fabs(-(p[0] - a[0]) * uy + (p[1] - a[1]) * ux));
+        smallest_radius = std::min(smallest_radius, std::hypot(p[0], p[1]));
+      }
+    }
+    return widest;
+  };
+  double r_taubin = 0, r_laplacian = 0;
+  const double taubin = extent(Embedding_options::Smoothing::taubin, r_taubin);
+  const double laplacian = extent(Embedding_options::Smoothing::laplacian, r_laplacian);
+  EXPECT_GT(taubin, 0.85);
+  EXPECT_GT(r_taubin, 0.75) << r_laplacian;
+  EXPECT_LT(r_laplacian, 0.5);  // the middle piece near the centre
+  EXPECT_LT(laplacian, 0.25);  // 0.854^10 = 0.21 of the middle piece's offset
+  EXPECT_LE(taubin, 1.0 + 1e-12);  // no overshoot beyond the circle
+}
+
 TEST(EmbedReebGraph, ProjectionKeepsDistancesOfPlanarData) {
   const Point_matrix m = circle_in(50, 9);
   const auto xyz = project_to_3d(m);
@@ -91,6 +135,16 @@ TEST(EmbedReebGraph, BadInput) {
   Embedding_options o;
   o.smoothing_weight = 2;
   EXPECT_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o), std::invalid_argument);
+  // Taubin's inflating step grows the zigzag above a weight of 2/3; Laplacian rounds take up to 1.
+  o.smoothing_weight = 0.7;
+  EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] { embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o); })
+                .find("[0, 2/3] for Taubin smoothing"),
+            std::string::npos);
+  o.smoothing = Embedding_options::Smoothing::laplacian;
+  EXPECT_NO_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o));
+  o.smoothing = Embedding_options::Smoothing::taubin;
+  o.smoothing_weight = 2.0 / 3;
+  EXPECT_NO_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o));
   // Arcs naming missing nodes and graph edges naming missing vertices are refused by index (they used to be
   // read out of bounds).
   Reeb_graph two;

@@ -129,7 +129,16 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   bad.progress = [&calls](double) { return ++calls > 0; };
   const std::vector<std::array<double, 2>> pair{{0.0, 0.0}, {1.0, 0.0}};
   EXPECT_EQ(message([&] { extract_reeb_skeleton(pair, 2.0, bad); }),
+            "extract_reeb_skeleton: embedding smoothing_weight must lie in [0, 2/3] for Taubin smoothing (Laplacian: "
+            "[0, 1]), got 2");
+  bad.embedding.smoothing = Embedding_options::Smoothing::laplacian;
+  EXPECT_EQ(message([&] { extract_reeb_skeleton(pair, 2.0, bad); }),
             "extract_reeb_skeleton: embedding smoothing_weight must lie in [0, 1], got 2");
+  bad.embedding.smoothing = static_cast<Embedding_options::Smoothing>(7);
+  bad.embedding.smoothing_weight = 0.5;
+  EXPECT_EQ(message([&] { extract_reeb_skeleton(pair, 2.0, bad); }),
+            "extract_reeb_skeleton: embedding smoothing must be taubin or laplacian, got 7");
+  bad.embedding.smoothing = Embedding_options::Smoothing::taubin;
   EXPECT_EQ(calls, 0u);
   bad.embedding.smoothing_weight = 0.5;
   bad.embedding.level_width = -1;
