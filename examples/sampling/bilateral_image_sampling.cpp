@@ -19,6 +19,10 @@
 
 int main(int argc, char** argv) {
   using namespace FeatureRecon;
+  if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {
+    std::fprintf(stderr, "usage: %s [OUTPUT_DIRECTORY]\n", argv[0]);
+    return argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") ? 0 : 2;
+  }
   namespace fs = FeatureRecon::sampling;
   const int width = 256, height = 256;
   std::vector<Grey_pixel> image;
@@ -62,6 +66,11 @@ int main(int argc, char** argv) {
         svg << "<circle cx=\"" << p.column + 0.5 << "\" cy=\"" << p.row + 0.5 << "\" r=\"1.3\" fill=\"rgb(" << int(p.value)
             << ',' << int(p.value) << ',' << int(p.value) << ")\" stroke=\"black\" stroke-width=\"0.3\"/>\n";
       svg << "</svg>\n";
+      svg.close();
+      if (!svg) {
+        std::fprintf(stderr, "%s: cannot write '%s'\n", argv[0], path.c_str());
+        return 1;
+      }
       std::printf("wrote %s\n", path.c_str());
     }
   }

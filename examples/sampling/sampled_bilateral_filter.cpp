@@ -14,21 +14,32 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace {
+/// Writes a grey picture; exits with a message when the file cannot be written.
 void write_pgm(const std::string& path, int width, int height, const std::vector<float>& values) {
   std::ofstream out(path, std::ios::binary);
   out << "P5\n" << width << " " << height << "\n255\n";
   for (float v : values) out.put(char(std::uint8_t(std::lround(std::clamp(double(v), 0.0, 255.0)))));
+  out.close();
+  if (!out) {
+    std::fprintf(stderr, "sampled_bilateral_filter: cannot write '%s'\n", path.c_str());
+    std::exit(1);
+  }
 }
 }  // namespace
 
 int main(int argc, char** argv) {
   namespace fs = FeatureRecon::sampling;
+  if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {
+    std::fprintf(stderr, "usage: %s [OUTPUT_DIRECTORY]\n", argv[0]);
+    return argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") ? 0 : 2;
+  }
   const int width = 320, height = 120;
   // Paper: light grey with noise of +-12 levels (within the range sigma). Strokes: five staff lines two
   // pixels thick and a few slanted note stems, near black.

@@ -105,8 +105,9 @@ sk::Point_matrix sample(const Truth& t, Gaussian& g) {
   return m;
 }
 
-/// The 3D embedding seen at an angle (orthographic), points grey, arcs coloured, nodes black.
-void write_svg(const std::string& path, const std::vector<std::array<double, 3>>& xyz, const sk::Skeleton_graph& g) {
+/// The 3D embedding seen at an angle (orthographic), points grey, arcs coloured, nodes black; false when the file
+/// cannot be written.
+bool write_svg(const std::string& path, const std::vector<std::array<double, 3>>& xyz, const sk::Skeleton_graph& g) {
   const double ca = std::cos(0.6), sa = std::sin(0.6), cb = std::cos(0.35), sb = std::sin(0.35);
   auto view = [&](const std::array<double, 3>& p) {
     const double x = ca * p[0] - sa * p[1], y = sa * p[0] + ca * p[1];
@@ -144,13 +145,20 @@ void write_svg(const std::string& path, const std::vector<std::array<double, 3>>
   out << "<text x=\"" << m << "\" y=\"22\" font-family=\"sans-serif\" font-size=\"13\">Skeleton of "
       << xyz.size() << " points in R^50 (figure-eight with a tail), PCA to 3D: " << num_vertices(g) << " nodes, "
       << num_edges(g) << " arcs</text>\n</svg>\n";
+  out.close();
+  return static_cast<bool>(out);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string svg;
-  if (argc == 3 && std::strcmp(argv[1], "--svg") == 0) svg = argv[2];
+  if (argc == 3 && std::strcmp(argv[1], "--svg") == 0) {
+    svg = argv[2];
+  } else if (argc != 1) {
+    std::fprintf(stderr, "usage: %s [--svg FILE]\n", argv[0]);
+    return std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0 ? 0 : 2;
+  }
   Gaussian g{std::mt19937(2026)};
   const Truth truth = make_truth(g);
   const sk::Point_matrix points = sample(truth, g);
@@ -181,7 +189,10 @@ int main(int argc, char** argv) {
   std::printf("every arc within 1.25 x radius = %.3f of the true graph: %s\n", 1.25 * rips_radius,
               farthest <= 1.25 * rips_radius ? "yes" : "no");
   if (!svg.empty()) {
-    write_svg(svg, sk::project_to_3d(points), s.graph);
+    if (!write_svg(svg, sk::project_to_3d(points), s.graph)) {
+      std::fprintf(stderr, "%s: cannot write '%s'\n", argv[0], svg.c_str());
+      return 1;
+    }
     std::printf("wrote %s\n", svg.c_str());
   }
   return 0;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <random>
@@ -19,8 +20,8 @@
 #include <vector>
 
 namespace {
-/// Writes the points and the Reeb graph as an SVG picture (y up).
-void write_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
+/// Writes the points and the Reeb graph as an SVG picture (y up); false when the file cannot be written.
+bool write_svg(const std::string& path, const std::vector<std::array<double, 2>>& points,
                const FeatureRecon::skeleton::Reeb_graph& reeb) {
   namespace sk = FeatureRecon::skeleton;
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -61,23 +62,50 @@ void write_svg(const std::string& path, const std::vector<std::array<double, 2>>
       << " loops</text>\n<text x=\"" << margin
       << "\" y=\"33\" font-family=\"sans-serif\" font-size=\"12\">arcs through their input points; nodes: black minimum, white maximum, green up-fork,"
       << " red down-fork</text>\n</svg>\n";
+  out.close();
+  return static_cast<bool>(out);
 }
 }  // namespace
 
 int main(int argc, char** argv) {
   namespace sk = FeatureRecon::skeleton;
+  const char* usage = "usage: %s [POINTS_FILE [RADIUS]] [--svg FILE]\n"
+                      "  POINTS_FILE  'x y' lines (default: a noisy figure-eight of 400 points), RADIUS default 0.6\n";
   std::string svg;
   if (argc > 2 && std::strcmp(argv[argc - 2], "--svg") == 0) {
     svg = argv[argc - 1];
     argc -= 2;
   }
+  if (argc > 3 || (argc > 1 && argv[1][0] == '-')) {
+    std::fprintf(stderr, usage, argv[0]);
+    return argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) ? 0 : 2;
+  }
   std::vector<std::array<double, 2>> points;
   double radius = 0.6;
   if (argc > 1) {
     std::ifstream in(argv[1]);
+    if (!in) {
+      std::fprintf(stderr, "%s: cannot read '%s'\n", argv[0], argv[1]);
+      return 1;
+    }
     double x, y;
     while (in >> x >> y) points.push_back({x, y});
-    if (argc > 2) radius = std::atof(argv[2]);
+    if (!in.eof()) {
+      std::fprintf(stderr, "%s: '%s': point %zu is not two numbers\n", argv[0], argv[1], points.size());
+      return 1;
+    }
+    if (points.empty()) {
+      std::fprintf(stderr, "%s: '%s' holds no 'x y' lines\n", argv[0], argv[1]);
+      return 1;
+    }
+    if (argc > 2) {
+      char* end = nullptr;
+      radius = std::strtod(argv[2], &end);
+      if (end == argv[2] || *end != '\0' || !(radius > 0 && std::isfinite(radius))) {
+        std::fprintf(stderr, "%s: RADIUS must be a positive number, got '%s'\n", argv[0], argv[2]);
+        return 2;
+      }
+    }
   } else {
     // Two circles of radius 2 touching at (0, 2), 200 noisy samples each (fixed seed).
     std::mt19937 rng(1);
@@ -115,6 +143,9 @@ int main(int argc, char** argv) {
   }
   for (const auto& arc : reeb.arcs)
     std::printf("  arc %zu -> %zu through %zu vertices\n", arc.lower, arc.upper, arc.vertices.size());
-  if (!svg.empty()) write_svg(svg, points, reeb);
+  if (!svg.empty() && !write_svg(svg, points, reeb)) {
+    std::fprintf(stderr, "%s: cannot write '%s'\n", argv[0], svg.c_str());
+    return 1;
+  }
   return 0;
 }

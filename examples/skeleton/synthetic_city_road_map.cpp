@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -21,6 +22,7 @@
 namespace sk = FeatureRecon::skeleton;
 
 namespace {
+/// The fixes, the streets driven and the map; exits with a message when the file cannot be written.
 void write_svg(const std::string& path, const sk::Synthetic_city& city, const sk::Road_map& m) {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const auto& p : city.streets.positions) {
@@ -46,6 +48,11 @@ void write_svg(const std::string& path, const sk::Synthetic_city& city, const sk
   lines(m.map, "#1f4fbf", 1.5);
   out << "<text x=\"" << margin << "\" y=\"" << 2 * margin + (y1 - y0) * s + 5
       << "\" font-size=\"14\">grey: fixes; green: streets driven; blue: road map</text>\n</svg>\n";
+  out.close();
+  if (!out) {
+    std::fprintf(stderr, "synthetic_city_road_map: cannot write '%s'\n", path.c_str());
+    std::exit(1);
+  }
 }
 
 // Builds and scores the map of one city; prints what the skeleton and the merged map are worth.
@@ -77,7 +84,7 @@ int main(int argc, char** argv) {
       svg_organic = argv[i + 1];
     } else {
       std::fprintf(stderr, "usage: %s [--svg FILE] [--svg-organic FILE]\n", argv[0]);
-      return 2;
+      return std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0 ? 0 : 2;
     }
   }
   for (const double interval : {1.0, 3.6, 7.0}) {
