@@ -267,6 +267,9 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     io::write_map(outputs.path("out-streets-vertices"), outputs.path("out-streets-edges"), city.streets.positions,
                   city.streets.edges);
   outputs.commit();
+  if (fixes == 0 && !city.trips.empty())
+    std::fprintf(stderr, "featurerecon synthetic-city: warning: no trip lasted one sampling interval, no fix was "
+                         "recorded (--interval %g s, --speed %g m/s)\n", o.sampling_interval, o.speed);
   auto length = [](const Embedded_graph_2& g) { return skeleton::internal::map_length(g.positions, g.edges); };
   std::ostringstream os;
   os << "{\"layout\": \"" << layout << "\", \"intersections\": " << o.columns * o.rows

@@ -239,6 +239,8 @@ expect(synthetic_city_rows 2 "--rows must be >= 2" synthetic-city --rows 1 --out
 expect(synthetic_city_out 2 "--out-tracks is required" synthetic-city --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_streets 2 "--out-streets-vertices and --out-streets-edges go together" synthetic-city --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --out-streets-edges ${WORK}/d)
 expect(synthetic_city_trips 2 "--trips must be >= 0" synthetic-city --trips -3 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_noise_huge 1 "fix 0 of trip 0 lies beyond the largest double: noise \\(1e\\+308\\)" synthetic-city --noise 1e308 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_no_fix 0 "\"fixes\": 0,.*warning: no trip lasted one sampling interval, no fix was recorded \\(--interval 1e\\+308 s, --speed 10 m/s\\)" synthetic-city --interval 1e308 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 
 # The skeleton's other formats: GraphML, GeoJSON, PLY, SVG, with the right counts (two loops that share a
 # down-fork and an up-fork: 4 nodes, 5 arcs once the spurs at the base point and the farthest point are trimmed).

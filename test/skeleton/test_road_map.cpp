@@ -585,6 +585,28 @@ TEST(SyntheticCity, StreetsAndTrips) {
   b = {};
   b.noise = -1;
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("noise"), std::string::npos);
+  // Limits found before the work (10^8 trips ran 31 s to reach the limit on fixes) or at the first fix out of
+  // range (a noise of 1e308 wrote inf into the tracks).
+  b = {};
+  b.trips = (std::size_t(1) << 26) + 1;
+  EXPECT_EQ(message_of([&] { make_synthetic_city(b); }),
+            "make_synthetic_city: trips must be at most 2^26 (the most fixes the trips may record), got 67108865");
+  b = {};
+  b.noise = 1e308;
+  EXPECT_EQ(message_of([&] { make_synthetic_city(b); }),
+            "make_synthetic_city: fix 0 of trip 0 lies beyond the largest double: noise (1e+308), trip_bias (2) or "
+            "lane_offset (2) too large");
+  b.noise = 4;
+  b.trip_bias = 1e308;
+  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("trip_bias (1e+308)"), std::string::npos);
+  // A huge rotation is a rotation (1e308 degrees times pi overflowed: every intersection was NaN).
+  b = {};
+  b.trips = 3;
+  b.rotation = 1e308;
+  const Synthetic_city turned = make_synthetic_city(b);
+  for (const auto& p : turned.streets.positions) EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
+  b.rotation = std::fmod(1e308, 360.0);
+  EXPECT_EQ(make_synthetic_city(b).streets.positions, turned.streets.positions);
 }
 
 TEST(SyntheticCity, StreetRemovalEqualsTheGreedySearch) {

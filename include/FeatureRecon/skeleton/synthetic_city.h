@@ -158,7 +158,8 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or non-finite
 ///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a missing
 ///         fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24 intersections or 2^31
-///         street vertices, coordinates beyond the largest double, or trips of more than 2^26 fixes in all.
+///         street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge noise,
+///         bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
 inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
   const char* fn = "make_synthetic_city";
   using FeatureRecon::internal::throw_invalid_argument;
@@ -187,11 +188,15 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     throw_invalid_argument(fn, "curvature must be in [0, 0.5], got ", o.curvature);
   if (o.layout != Synthetic_city_layout::grid && o.layout != Synthetic_city_layout::organic)
     throw_invalid_argument(fn, "layout must be grid or organic");
+  // Checked before any route is made: 10^8 trips took 31 s and 2.2 GB to reach the limit on fixes below.
+  if (o.trips > (std::size_t(1) << 26))
+    throw_invalid_argument(fn, "trips must be at most 2^26 (the most fixes the trips may record), got ", o.trips);
 
   FeatureRecon::internal::Unit_random random(FeatureRecon::internal::splitmix64(o.seed));
   Synthetic_city city;
   const std::size_t nx = o.columns, ny = o.rows, n = nx * ny;
-  const double a = o.rotation * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
+  // Degrees reduced to (-360, 360) first: 1e308 degrees times pi overflowed to a NaN rotation.
+  const double a = std::fmod(o.rotation, 360.0) * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
   auto node = [nx](std::size_t i, std::size_t j) { return static_cast<Vertex_index>(j * nx + i); };
   std::vector<Edge> streets;
   // Every coordinate (rotated, with jitter) is at most |x| + |y| in size: the extents must fit a double, or the
@@ -366,6 +371,10 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
         const double u = along - start;
         const double x = p[0] + u * ux + o.lane_offset * uy + bias_x + o.noise * random.normal();
         const double y = p[1] + u * uy - o.lane_offset * ux + bias_y + o.noise * random.normal();
+        if (!std::isfinite(x) || !std::isfinite(y))  // a noise of 1e308 wrote inf into the tracks
+          throw_invalid_argument(fn, "fix ", trip.size(), " of trip ", t, " lies beyond the largest double: noise (",
+                                 o.noise, "), trip_bias (", o.trip_bias, ") or lane_offset (", o.lane_offset,
+                                 ") too large");
         trip.push_back({x, y, 10000.0 * double(t) + along / speed});
       }
       start += L;
