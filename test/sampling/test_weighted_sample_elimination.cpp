@@ -360,7 +360,23 @@ TEST(WeightedSampleElimination, NeighbourListsBeyondTheLimitAreRefusedWhileCount
         << what;
   }
   EXPECT_TRUE(kept.empty());
-  EXPECT_EQ(Elimination_options().max_neighbor_entries, std::size_t(1) << 31);
+  // Default: automatic, at least 2^29 entries (the lists of 30,000 points of a sphere at r_max 100 took 3.5 GB).
+  EXPECT_EQ(Elimination_options().max_neighbor_entries, 0u);
+  {
+    std::vector<Point_2> many = white_noise(24000, 9);  // every pair: 5.8e8 entries, more than 2^29
+    Elimination_options a;
+    a.max_radius = 100;
+    std::string what;
+    try {
+      eliminate(many, 2, a);
+    } catch (const std::invalid_argument& e) {
+      what = e.what();
+    }
+    EXPECT_NE(what.find("would hold more than 536870912 entries (automatic Elimination_options::max_neighbor_entries; "
+                        "r_max "),
+              std::string::npos)
+        << what;
+  }
   // 3,000 items, each a neighbour of all others: the callback is asked during the count (it used to be asked at
   // the start of the stage and then only at the end, where a stop was ignored).
   o = {};

@@ -329,6 +329,12 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         };
         std::vector<std::size_t> offset(m + 1, 0);
         std::size_t entries = 0, since_asked = 0;
+        // Elimination_options::max_neighbor_entries, 0: 64 times what this stage needs at the automatic r_max.
+        const double automatic_limit =
+            std::max(536870912.0, 64 * per_neighbor * double(m) * double(m) / double(std::max<std::size_t>(target, 1)));
+        const std::size_t limit = options.max_neighbor_entries > 0 ? options.max_neighbor_entries
+                                  : automatic_limit >= 1e18     ? std::numeric_limits<std::size_t>::max()
+                                                                : static_cast<std::size_t>(automatic_limit);
         for (std::size_t i = 0; i < m; ++i) {
           // Asked at the start and then about every 16,384 items, sooner when they have many candidates (the
           // count's work grows with them).
@@ -347,10 +353,11 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           });
           entries += offset[i + 1];
           since_asked += visited / 16 + 1;
-          if (entries > options.max_neighbor_entries)
+          if (entries > limit)
             FeatureRecon::internal::throw_invalid_argument(
-                fn, "the neighbour lists within 2 r_max would hold more than ", options.max_neighbor_entries,
-                " entries (Elimination_options::max_neighbor_entries; r_max ", stage_r, " in the stage from ", m,
+                fn, "the neighbour lists within 2 r_max would hold more than ", limit, " entries (",
+                options.max_neighbor_entries > 0 ? "" : "automatic ",
+                "Elimination_options::max_neighbor_entries; r_max ", stage_r, " in the stage from ", m,
                 " items to ", target, "; the first ", i + 1, " items have ", entries,
                 " neighbours): max_radius is too large for these items (0: the automatic r_max) or they crowd "
                 "at one spot; raise the limit for a larger run");
