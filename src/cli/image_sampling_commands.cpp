@@ -302,8 +302,8 @@ int run_sample_image(const std::vector<std::string>& argv) {
   fs::Sampling_quality_options q;
   q.domain_measure = double(pixels);
   q.intrinsic_dimension = 2;
-  const fs::Sampling_quality quality = samples.size() >= 2 ? fs::sampling_quality(positions, q)
-                                                           : fs::Sampling_quality();
+  // Fewer than two samples: degenerate_input, printed as null (a default Sampling_quality printed 0).
+  const fs::Sampling_quality quality = fs::sampling_quality(positions, q);
   const double d_hex = samples.empty() ? 1.0 : std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(samples.size())));
   const double dot = 0.3 * d_hex;
   if (args.has("out")) write_samples(outputs.path("out"), samples, std::size_t(image.channels));

@@ -328,6 +328,8 @@ expect(sample_image 0 "\"width\": 48, \"height\": 48, \"channels\": 1, \"method\
        sample-image --input ${WORK}/line.pgm --count 120 --out ${WORK}/img.txt --svg ${WORK}/img.svg --quiet)
 expect_count(${WORK}/img.txt "\n" 120)
 expect_count(${WORK}/img.svg "<circle" 120)
+# One sample has no spacing: null, as the help says (it printed 0).
+expect(sample_image_one 0 "\"samples\": 1,.*\"relative_radius\": null, \"average_minimum_distance\": null" sample-image --input ${WORK}/line.pgm --method darts --radius 1e9 --out ${WORK}/img1.txt --quiet)
 # Bilateral elimination fills the dark column (x = 24.5): 10 of the 120 samples land there (at least 8
 # asked), Euclidean elimination puts 5 there.
 expect(sample_image_bilateral 0 "\"samples\": 120" sample-image --input ${WORK}/line.pgm --count 120 --sigma-feature 0.1
