@@ -307,9 +307,19 @@ skeleton::Transverse_mercator lonlat_projection(
   try {
     return skeleton::local_transverse_mercator(all);
   } catch (const std::invalid_argument& e) {
-    std::string files;
-    for (const auto& source : sources) files += (files.empty() ? "" : ", ") + source.first;
-    throw io::Input_error(files + ": --lonlat: " + std::string(e.what()).substr(std::string("local_transverse_mercator: ").size()));
+    const std::string what = std::string(e.what()).substr(std::string("local_transverse_mercator: ").size());
+    // The projection numbers the points of all the files together: name the file and the point within it.
+    std::size_t index = 0;
+    if (std::sscanf(what.c_str(), "point %zu ", &index) == 1)
+      for (const auto& [file, points] : sources) {
+        if (index < points->size())
+          throw io::Input_error(file + ": --lonlat: point " + std::to_string(index) + what.substr(what.find(' ', 6)));
+        index -= points->size();
+      }
+    std::string files;  // the files given (an option not given has no name)
+    for (const auto& source : sources)
+      if (!source.first.empty()) files += (files.empty() ? "" : ", ") + source.first;
+    throw io::Input_error(files + ": --lonlat: " + what);
   }
 }
 

@@ -772,6 +772,16 @@ file(WRITE ${WORK}/ll_bad.txt "0 -87.6 41.8 0\n0 -87.6 95 10\n")
 expect(lonlat_range 1 "ll_bad.txt: --lonlat: point 1 \\(-87\\.6, 95\\) is not a longitude in \\[-180, 180\\] and a latitude in \\[-90, 90\\]" skeleton --tracks ${WORK}/ll_bad.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 file(WRITE ${WORK}/ll_wide.txt "0 -87.6 41.8 0\n0 -87.6 41.9 10\n1 -60 41.8 0\n1 -60 41.9 10\n")
 expect(lonlat_span 1 "ll_wide.txt: --lonlat: point 0 \\(longitude -87\\.6, latitude 41\\.8\\) lies 1[0-9.]+ km from the central meridian .* the points span too much for one projection" skeleton --tracks ${WORK}/ll_wide.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# evaluate-map projects all its files together: the message names the file and the point within it (it listed
+# every file, empty slots for options not given, and counted the points across them).
+file(WRITE ${WORK}/ll_gv.txt "1,0,0\n2,0.0001,0\n")
+file(WRITE ${WORK}/ll_ge.txt "1,1,2\n")
+file(WRITE ${WORK}/ll_far.txt "0 10 0 0\n0 10.0001 0 3\n")
+expect(lonlat_span_file 1 "error: [^,]*ll_far.txt: --lonlat: point 0 \\(longitude 10, latitude 0\\) lies 7[0-9.]+ km from" evaluate-map ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt --lonlat --crop-to-tracks ${WORK}/ll_far.txt)
+# Around a pole (1.1 m from it, longitudes 0 and 180): one projection holds them, 2.2 m apart (they were "inf km"
+# from the central meridian).
+file(WRITE ${WORK}/ll_pole_v.txt "1,0,89.99999\n2,180,89.99999\n")
+expect(lonlat_pole 0 "\"f_score\": 1,.*\"lonlat\": true" evaluate-map ${WORK}/ll_pole_v.txt ${WORK}/ll_ge.txt ${WORK}/ll_pole_v.txt ${WORK}/ll_ge.txt --lonlat)
 foreach(f a b)
   if(EXISTS ${WORK}/${f})
     file(REMOVE ${WORK}/${f})

@@ -36,8 +36,10 @@ struct Transverse_mercator {
   double origin_latitude = 0;   ///< latitude where y = 0 on the central meridian (degrees)
 
   /// {x, y} in metres of {longitude, latitude} in degrees. The longitude is taken modulo 360 about the central
-  /// meridian (a map crossing the antimeridian stays in one piece). \pre the longitude differs from the central
-  /// meridian by less than 90 degrees (modulo 360) and the latitude is in [-90, 90].
+  /// meridian (a map crossing the antimeridian stays in one piece). \pre the latitude is in [-90, 90], and the point
+  /// is not 90 degrees of longitude from the central meridian on the equator (x infinite there). Beyond 90 degrees
+  /// of longitude the map goes on over the poles: near a pole the points on the far side of it from the central
+  /// meridian lie a few metres from it too (the round trip holds there to 4 mm, test_geographic.cpp).
   std::array<double, 2> forward(double longitude, double latitude) const {
     const Constants& c = constants();
     const double phi = latitude * degree;
@@ -148,14 +150,21 @@ inline Transverse_mercator local_transverse_mercator(const std::vector<std::arra
   tm.central_meridian = (sx == 0 && sy == 0) ? lonlat.front()[0] : std::atan2(sy, sx) / degree;
   tm.origin_latitude = (low + high) / 2;
   for (std::size_t i = 0; i < lonlat.size(); ++i) {
-    // Beyond 90 degrees of longitude the projection is undefined; beyond max_offset too distorted.
-    const double d = std::abs(std::remainder(lonlat[i][0] - tm.central_meridian, 360.0));
-    const double x = d < 89 ? std::abs(tm.forward(lonlat[i][0], lonlat[i][1])[0]) : HUGE_VAL;
-    if (!(x <= max_offset))
+    // Beyond max_offset too distorted (infinite 90 degrees from the central meridian on the equator). Near a pole,
+    // points at any longitude lie close to the central meridian (they used to be refused beyond 89 degrees of
+    // longitude: two fixes 2 m apart on either side of the pole, "inf km" away).
+    const double x = std::abs(tm.forward(lonlat[i][0], lonlat[i][1])[0]);
+    if (!(x <= max_offset)) {
+      if (std::isfinite(x))
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "point ", i, " (longitude ", lonlat[i][0], ", latitude ", lonlat[i][1], ") lies ", x / 1000,
+            " km from the central meridian ", tm.central_meridian, " of the points (at most ", max_offset / 1000,
+            " km): the points span too much for one projection");
       FeatureRecon::internal::throw_invalid_argument(
-          fn, "point ", i, " (longitude ", lonlat[i][0], ", latitude ", lonlat[i][1], ") lies ",
-          d < 89 ? x / 1000 : HUGE_VAL, " km from the central meridian ", tm.central_meridian,
-          " of the points (at most ", max_offset / 1000, " km): the points span too much for one projection");
+          fn, "point ", i, " (longitude ", lonlat[i][0], ", latitude ", lonlat[i][1], ") lies on the equator 90 ",
+          "degrees of longitude from the central meridian ", tm.central_meridian, " of the points, where the ",
+          "projection is infinite: the points span too much for one projection");
+    }
   }
   return tm;
 }
