@@ -577,6 +577,11 @@ file(WRITE ${WORK}/colors_bin.ply "ply\nformat binary_little_endian 1.0\nelement
 expect(sample_colors_binary 0 "\"kept\": 2,.*\"colors\": \"file\"" sample --input ${WORK}/colors_bin.ply --count 2 --out ${WORK}/colors_bin_out.ply --quiet)
 expect_count(${WORK}/colors_bin_out.ply " 65 66 67\n" 1)
 expect_count(${WORK}/colors_bin_out.ply " 68 69 70\n" 1)
+# An ASCII integer out of its type's range is refused (CGAL cast it: a green of 300 became 44, -1 became 255).
+file(WRITE ${WORK}/colors_range.ply "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n0 0 0 1 2 3\n1 0 0 0 300 0\n")
+expect(sample_colors_range 1 "colors_range.ply: not a readable PLY point cloud \\(vertex 1: green is 300, not a uchar \\(an integer in \\[0, 255\\]\\)\\)" sample --input ${WORK}/colors_range.ply --count 1 --out ${WORK}/a.ply)
+file(WRITE ${WORK}/colors_frac.ply "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n0 0 0 1 2.5 3\n")
+expect(sample_colors_fraction 1 "vertex 0: green is 2.5, not a uchar" sample --input ${WORK}/colors_frac.ply --count 1 --out ${WORK}/a.ply)
 file(WRITE ${WORK}/red_only.ply "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nend_header\n0 0 0 1\n1 1 1 2\n")
 expect(ply_some_colors 1 "red_only.ply: .*only some of the colour properties red, green, blue" sample --input ${WORK}/red_only.ply --count 1 --out ${WORK}/o.ply --quiet)
 file(WRITE ${WORK}/short_colors.ply "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nproperty ushort red\nproperty ushort green\nproperty ushort blue\nend_header\n0 0 0 1 2 3\n1 1 1 2 3 4\n")
