@@ -311,7 +311,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     for (const std::size_t i : kept) m.data.insert(m.data.end(), all.row(i), all.row(i) + all.dimension);
     s = extract_reeb_skeleton(m, radius, options);
   } else if (args.has("distance-matrix")) {
-    const io::Point_file pf = io::read_points(args.get("distance-matrix"));
+    const io::Point_file pf = io::read_points(args.get("distance-matrix"), "row", "distance");
     const std::string& path = args.get("distance-matrix");
     if (pf.dimension != pf.size())
       throw io::Input_error(path + ": a distance matrix needs n rows of n numbers; got " + std::to_string(pf.size()) +

@@ -74,14 +74,14 @@ void for_each_token_row(const std::string& path, Row row) {
 
 }  // namespace
 
-Point_file read_points(const std::string& path) {
+Point_file read_points(const std::string& path, const std::string& row, const std::string& value) {
   Point_file pf;
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (pf.dimension == 0) pf.dimension = t.size();
     if (t.size() != pf.dimension)
-      throw Input_error(where(path, number) + "point has " + std::to_string(t.size()) + " coordinates, the first point has " +
-                        std::to_string(pf.dimension));
-    for (const std::string& s : t) pf.coordinates.push_back(parse_double(s, path, number, "coordinate"));
+      throw Input_error(where(path, number) + row + " has " + std::to_string(t.size()) + " " + value + "s, the first " +
+                        row + " has " + std::to_string(pf.dimension));
+    for (const std::string& s : t) pf.coordinates.push_back(parse_double(s, path, number, value.c_str()));
     pf.lines.push_back(number);
   });
   return pf;

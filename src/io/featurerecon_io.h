@@ -23,14 +23,16 @@ class Input_error : public std::runtime_error {
 
 /// Points of any dimension, one per line, whitespace-separated coordinates; '#' starts a comment,
 /// blank lines are skipped. Throws Input_error naming the line of a bad number, a non-finite value or a
-/// line whose dimension differs from the first point's.
+/// line whose dimension differs from the first point's. `row` and `value` name them in messages (a distance
+/// matrix: "row", "distance").
 struct Point_file {
   std::size_t dimension = 0;
   std::vector<double> coordinates;  ///< row-major, dimension per point
   std::vector<std::size_t> lines;   ///< source line of each point
   std::size_t size() const { return dimension == 0 ? 0 : coordinates.size() / dimension; }
 };
-Point_file read_points(const std::string& path);
+Point_file read_points(const std::string& path, const std::string& row = "point",
+                       const std::string& value = "coordinate");
 
 /// The complex exchange format: first line `n m`; then n lines `x y z f`; then m lines of 2 or 3
 /// zero-based vertex indices (edges and triangles; the edges of a triangle are implied). '#' comments

@@ -175,6 +175,11 @@ expect(skeleton_graph 0 "\"rips_edges\": 232, .*\"loops\": 2, \"components\": 1,
 expect(skeleton_not_square 1 "figure_eight.xyz: a distance matrix needs n rows of n numbers; got 400 rows of 2" skeleton --distance-matrix ${DATA}/figure_eight.xyz --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 file(WRITE ${WORK}/asym.txt "0 1\n2 0\n")
 expect(skeleton_asymmetric 1 "asym.txt:2: not symmetric: entry \\(1, 0\\) is " skeleton --distance-matrix ${WORK}/asym.txt --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# A distance matrix's messages speak of rows and distances (they spoke of points and coordinates).
+file(WRITE ${WORK}/ragged_dm.txt "0 1 2\n1 0\n2 1 0\n")
+expect(skeleton_ragged_matrix 1 "ragged_dm.txt:2: row has 2 distances, the first row has 3" skeleton --distance-matrix ${WORK}/ragged_dm.txt --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+file(WRITE ${WORK}/nan_dm.txt "0 nan\nnan 0\n")
+expect(skeleton_nan_matrix 1 "nan_dm.txt:1: distance is not finite \\('nan'\\)" skeleton --distance-matrix ${WORK}/nan_dm.txt --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 
 # GPS tracks around one block (200 x 100 m) with a 150 m dead-end street: defaults come from the median step
 # (printed); before merging (--merge 0) the skeleton has the block's loop and the spur, in one piece.
