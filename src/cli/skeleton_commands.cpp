@@ -73,6 +73,7 @@ int run_rips(const std::vector<std::string>& argv) {
   const std::size_t max_triangles = max_triangles_option(args);  // checked before any work
 
   const io::Point_file pf = io::read_points(points_path);
+  if (pf.size() == 0) std::fprintf(stderr, "featurerecon rips: warning: %s holds no points\n", points_path.c_str());
   Point_matrix m;
   m.rows = pf.size();
   m.dimension = pf.dimension;
@@ -492,6 +493,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
     io::write_skeleton_picture(outputs.path("svg"), xy, graph);
   }
   outputs.commit();
+  if (input_points == 0) {
+    const char* what = args.has("tracks") ? "fixes" : args.has("distance-matrix") ? "rows" : args.has("graph") ? "vertices" : "points";
+    std::fprintf(stderr, "featurerecon skeleton: warning: the input holds no %s: the skeleton is empty\n", what);
+  }
   std::size_t components = 0;
   {
     std::vector<int> comp(num_vertices(graph));

@@ -77,7 +77,9 @@ expect_same_file(${WORK}/fig8.txt ${WORK}/fig8_again.txt "two runs on the same i
 
 # Empty input is not an error.
 file(WRITE ${WORK}/empty.xyz "# no points\n")
-expect(rips_empty 0 "wrote .*empty.txt: 0 vertices" rips --points ${WORK}/empty.xyz --radius 1 --out ${WORK}/empty.txt --quiet)
+expect(rips_empty 0 "wrote .*empty.txt: 0 vertices.*warning: .*empty.xyz holds no points" rips --points ${WORK}/empty.xyz --radius 1 --out ${WORK}/empty.txt --quiet)
+expect(skeleton_empty 0 "\"points\": 0,.*warning: the input holds no points: the skeleton is empty" skeleton --points ${WORK}/empty.xyz --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_empty_tracks 0 "\"points\": 0,.*warning: the input holds no fixes" skeleton --tracks ${WORK}/empty.xyz --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(reeb_empty 0 "\"vertices\": 0,.*\"nodes\": 0,.*\"components\": 0" reeb --complex ${WORK}/empty.txt --json)
 # One point in 5 dimensions, then duplicates.
 file(WRITE ${WORK}/one.xyz "1 2 3 4 5\n")
