@@ -237,10 +237,13 @@ inline double feature_factor(const Sampled_bilateral_filter_options& o) {
 
 /// Density compensation per pixel for bilateral darts of radius r: the pixel's exclusion area in the stacked
 /// space (sub-pixel points within xi < r of its centre, 4 x 4 per pixel, each reading its pixel's colour)
-/// over that of a flat image with the same in-image points. 1 everywhere for uniform sampling.
-inline std::vector<float> density_compensation(const Filter_image& F, double r, double factor) {
+/// over that of a flat image with the same in-image points. 1 everywhere for uniform sampling. The pixels of the
+/// disc are read every `stride` pixels in x and y (0: automatic, 1 up to r = 24, then ceil(r / 24)): the cost per
+/// pixel stays about 1,800 offsets (a tiny budget asks for r = 74 at 1e-4 and took 30 s on 256 x 256 pixels).
+inline std::vector<float> density_compensation(const Filter_image& F, double r, double factor, int stride = 0) {
   std::vector<float> weight(F.pixels(), 1.0f);
   if (factor == 0 || F.pixels() == 0) return weight;
+  if (stride <= 0) stride = r <= 24 ? 1 : int(std::min(std::ceil(r / 24), 1e6));
   constexpr int S = 4;
   struct Offset {  // a pixel offset and the sorted squared distances of its sub-points within r
     int dx, dy;
@@ -250,8 +253,8 @@ inline std::vector<float> density_compensation(const Filter_image& F, double r, 
   std::vector<double> sub_d2;
   const int reach = int(std::ceil(r)) + 1;
   const double r2 = r * r;
-  for (int py = -reach; py <= reach; ++py)
-    for (int px = -reach; px <= reach; ++px) {
+  for (int py = -reach / stride * stride; py <= reach; py += stride)  // multiples of the stride: 0 is one
+    for (int px = -reach / stride * stride; px <= reach; px += stride) {
       const std::size_t begin = sub_d2.size();
       for (int sy = 0; sy < S; ++sy)
         for (int sx = 0; sx < S; ++sx) {
