@@ -494,7 +494,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   outputs.commit();
   if (input_points == 0) {
-    const char* what = args.has("tracks") ? "fixes" : args.has("distance-matrix") ? "rows" : args.has("graph") ? "vertices" : "points";
+    const char* what = args.has("tracks")            ? "fixes"
+                       : args.has("distance-matrix") ? "rows"
+                       : args.has("graph")           ? "vertices"
+                                                     : "points";
     std::fprintf(stderr, "featurerecon skeleton: warning: the input holds no %s: the skeleton is empty\n", what);
   }
   std::size_t components = 0;
