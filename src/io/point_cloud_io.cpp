@@ -183,6 +183,8 @@ bool ply_integer_range(const std::string& type, double& low, double& high) {
 struct Ply_property {
   std::string name;
   std::string type;            // of the value (of each item for a list)
+  bool integer = false;        // an integer type, of range [low, high] (ply_integer_range)
+  double low = 0, high = 0;
   std::size_t size = 0;        // of the value (of each item for a list)
   std::size_t count_size = 0;  // of a list's count; 0 for a scalar
   bool count_signed = false;
@@ -238,12 +240,14 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
         q.count_signed = t[2][0] != 'u';
         q.size = ply_type_size(t[3]);
         q.type = t[3];
+        q.integer = ply_integer_range(q.type, q.low, q.high);
         if (q.count_size == 0 || t[2] == "float" || t[2] == "float32" || t[2] == "double" || t[2] == "float64")
           return "list " + q.name + " has count type " + t[2] + " (an integer type needed)";
         if (q.size == 0) return "list " + q.name + " has item type " + t[3];
       } else {
         q.size = ply_type_size(t[1]);
         q.type = t[1];
+        q.integer = ply_integer_range(q.type, q.low, q.high);
         if (q.size == 0) return "property " + q.name + " has type " + t[1];
       }
       if (elements.back().name == "vertex") type_of[q.name] = t[1];
@@ -346,16 +350,14 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
           items = static_cast<std::size_t>(c);
           ++k;
         }
-        double low = 0, high = 0;
-        const bool integer = ply_integer_range(q.type, low, high);
         for (std::size_t m = 0; m < items; ++m, ++k) {
           double x = 0;
           if (k < t.size() && (!parse_decimal(t[k], x) || !std::isfinite(x)))
             return what + ": '" + t[k] + "' is not a finite number";
           // CGAL casts an ASCII integer to the declared type: a colour of 300 became 44, -1 became 255.
-          if (k < t.size() && integer && !(x == std::floor(x) && x >= low && x <= high))
+          if (k < t.size() && q.integer && !(x == std::floor(x) && x >= q.low && x <= q.high))
             return what + ": " + q.name + " is " + t[k] + ", not a " + q.type + " (an integer in [" +
-                   format_double(low) + ", " + format_double(high) + "])";
+                   format_double(q.low) + ", " + format_double(q.high) + "])";
         }
       }
       if (t.size() != k)
