@@ -228,7 +228,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "prune", "merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -280,10 +280,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
                args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected") ||
                args.has("merge") || args.has("first-point-positions") || args.has("segment-support") ||
-               args.has("segment-turn-tolerance") || args.has("straight-confirmed")))
+               args.has("segment-turn-tolerance") || args.has("straight-confirmed") || args.has("local-support") ||
+               args.has("min-local-support")))
     throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius, "
                       "--density-heading-tolerance, --first-point-positions, --segment-support, "
-                      "--segment-turn-tolerance, --straight-confirmed and --merge apply to --tracks only");
+                      "--segment-turn-tolerance, --straight-confirmed, --local-support, --min-local-support and "
+                      "--merge apply to --tracks only");
   if (!gps && args.has("lonlat")) throw Usage_error("--lonlat applies to --tracks only");
   const bool lonlat = args.has("lonlat");
   Transverse_mercator projection;  // --lonlat: degrees <-> metres
@@ -371,6 +373,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("segment-turn-tolerance")) go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
     if (!(go.segment_turn_tolerance >= 0 && go.segment_turn_tolerance <= 180))
       throw Usage_error("--segment-turn-tolerance must be in [0, 180] degrees");
+    if (args.has("local-support")) {
+      const double v = args.get_double("local-support");
+      if (!(v >= 0 && v <= 1024 && v == std::floor(v)))
+        throw Usage_error("--local-support must be a whole number of fixes in [0, 1024] (0: off)");
+      go.local_support_fixes = static_cast<std::size_t>(v);
+    }
+    if (args.has("min-local-support")) go.min_local_support = args.get_double("min-local-support");
+    if (!(go.min_local_support > 0 && go.min_local_support <= 1))
+      throw Usage_error("--min-local-support must be in (0, 1] (a fraction of the segment support)");
     if (args.has("straight-confirmed")) go.min_straight_confirmed_fraction = args.get_double("straight-confirmed");
     if (!(go.min_straight_confirmed_fraction >= 0 && go.min_straight_confirmed_fraction <= 1))
       throw Usage_error("--straight-confirmed must be in [0, 1] (0: the turn rule always applies)");
@@ -444,7 +455,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
                ", \"turn_rule_used\": " + (sample.turn_rule_used ? "true" : "false") +
                ", \"straight_segments\": " + std::to_string(sample.straight_segments) +
                ", \"linked_segments\": " + std::to_string(sample.linked_segments) +
-               ", \"all_segments_used\": " + (sample.all_segments_used ? "true" : "false") + ", \"min_density\": " +
+               ", \"all_segments_used\": " + (sample.all_segments_used ? "true" : "false") +
+               ", \"local_support\": " + std::to_string(go.local_support_fixes) +
+               ", \"min_local_support\": " + json_number(go.min_local_support) +
+               ", \"locally_checked\": " + std::to_string(sample.locally_checked) +
+               ", \"locally_rejected\": " + std::to_string(sample.locally_rejected) +
+               ", \"min_density\": " +
                json_number(go.min_relative_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
                ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                ", \"directed\": " + (go.directed ? "true" : "false") +

@@ -688,6 +688,105 @@ TEST(GpsTraces, StraightRoutesThatCutBlocksDoNotTrustTheTurnRule) {
   EXPECT_TRUE(sample_gps_traces(more, 30.0, o).turn_rule_used);
 }
 
+namespace {
+
+// Streets x = 0, 30, ..., 120 and y = 0, 30, ..., 120 (blocks of 30 m), each driven once each way with fixes
+// every `step` metres; then one sparse trip from corner (0, 0) to corner (120, 120) in one 170 m segment.
+std::vector<Gps_trip> small_blocks_and_a_diagonal(double step) {
+  std::vector<Gps_trip> trips;
+  const int n = static_cast<int>(std::lround(120 / step)) + 1;
+  double t0 = 0;
+  for (int k = 0; k <= 4; ++k) {
+    trips.push_back(straight(0, 30.0 * k, 1, 0, n, step, t0 += 1000));
+    trips.push_back(straight(120, 30.0 * k, -1, 0, n, step, t0 += 1000));
+    trips.push_back(straight(30.0 * k, 0, 0, 1, n, step, t0 += 1000));
+    trips.push_back(straight(30.0 * k, 120, 0, -1, n, step, t0 += 1000));
+  }
+  trips.push_back({{0, 0, t0 + 1000}, {120, 120, t0 + 1020}});
+  return trips;
+}
+
+std::size_t samples_inside_blocks(const Gps_trace_sample& S) {  // more than 8 m from every street
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < S.points.rows; ++i) {
+    const double x = S.points.row(i)[0], y = S.points.row(i)[1];
+    n += std::min(std::fabs(x - 30 * std::round(x / 30)), std::fabs(y - 30 * std::round(y / 30))) > 8 ? 1 : 0;
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST(GpsTraces, WhereFixesAreDenseAChordAcrossBlocksIsNotConfirmed) {
+  // Fixes every 2 m on every street of 30 m blocks: the diagonal passes through the middle of each block, 15 m
+  // from the nearest fix, within the 20 m segment support. At its ends the 8th nearest distinct fix position
+  // (both directions share positions) is 8 m away, so the segment, longer than 4 x 20 m, is confirmed at
+  // max(8, 0.6 x 20) = 12 m: it is not, and the trip breaks there. The stand-down of min_confirmed_fraction
+  // counts it as confirmed at 20 m (else 0 confirmed of 1 checked would turn the check off).
+  const std::vector<Gps_trip> dense = small_blocks_and_a_diagonal(2);
+  Gps_trace_options o;
+  o.mean_positions = false;
+  o.max_link_gap = 200;
+  o.heading_tolerance = 30;  // as for road maps: the diagonal's points do not join the streets' samples
+  const Gps_trace_sample S = sample_gps_traces(dense, 30.0, o);
+  EXPECT_EQ(S.segment_support, 20);
+  expect_segment_counts(S, 1, 0, 0, 0, 0, true);
+  EXPECT_EQ(S.locally_checked, 1u);
+  EXPECT_EQ(S.locally_rejected, 1u);
+  EXPECT_EQ(samples_inside_blocks(S), 0u);
+  // The local distance has a floor: at 0.75 x 20 = 15 m (exactly the block's half-width) the chord is confirmed
+  // and densified through the blocks, as with the local distance off.
+  for (const auto& [fixes, floor] : {std::pair<std::size_t, double>{0, 0.6}, {8, 0.75}}) {
+    Gps_trace_options p = o;
+    p.local_support_fixes = fixes;
+    p.min_local_support = floor;
+    const Gps_trace_sample T = sample_gps_traces(dense, 30.0, p);
+    expect_segment_counts(T, 1, 1, 0, 0, 0, true);
+    EXPECT_EQ(T.locally_checked, fixes == 0 ? 0u : 1u);
+    EXPECT_EQ(T.locally_rejected, 0u);
+    EXPECT_GE(samples_inside_blocks(T), 3u) << fixes << " " << floor;
+  }
+  // Fixes every 15 m: at the corners the 8th nearest position lies beyond the segment support, which is used as
+  // it is, and the chord is confirmed. Nothing changes where fixes are sparse.
+  const Gps_trace_sample L = sample_gps_traces(small_blocks_and_a_diagonal(15), 30.0, o);
+  expect_segment_counts(L, 1, 1, 0, 0, 0, true);
+  EXPECT_EQ(L.locally_checked, 0u);
+  EXPECT_GE(samples_inside_blocks(L), 3u);
+  // A segment shorter than 4 x 20 m keeps the segment support: the diagonal from (0, 0) to (60, 60) (85 m) is
+  // checked locally, from (0, 0) to (45, 45) (64 m) is not, and the latter is confirmed.
+  std::vector<Gps_trip> shorter = dense;
+  shorter.back() = {{0, 0, 1e6}, {45, 45, 1e6 + 10}};
+  const Gps_trace_sample H = sample_gps_traces(shorter, 30.0, o);
+  EXPECT_EQ(H.locally_checked, 0u);
+  EXPECT_EQ(H.confirmed_segments, 1u);
+  shorter.back() = {{0, 0, 1e6}, {60, 60, 1e6 + 10}};
+  EXPECT_EQ(sample_gps_traces(shorter, 30.0, o).locally_rejected, 1u);
+}
+
+TEST(GpsTraces, LocalSupportOptionsAreChecked) {
+  const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 5, 30)};
+  Gps_trace_options o;
+  o.local_support_fixes = 1025;
+  try {
+    sample_gps_traces(trips, 20.0, o);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("local_support_fixes must be at most 1024, got 1025"), std::string::npos)
+        << e.what();
+  }
+  o.local_support_fixes = 1024;  // more than the 5 positions: the segment support everywhere
+  EXPECT_EQ(sample_gps_traces(trips, 20.0, o).locally_checked, 0u);
+  for (const double bad : {0.0, -0.5, 1.01, std::nan("")}) {
+    o.min_local_support = bad;
+    try {
+      sample_gps_traces(trips, 20.0, o);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("min_local_support must be in (0, 1]"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(GpsTraces, WilsonUpperBound) {
   using FeatureRecon::skeleton::internal::wilson_upper_bound;
   EXPECT_EQ(wilson_upper_bound(0, 0), 1.0);  // no evidence
