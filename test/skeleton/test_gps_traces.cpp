@@ -763,6 +763,40 @@ TEST(GpsTraces, WhereFixesAreDenseAChordAcrossBlocksIsNotConfirmed) {
   EXPECT_EQ(sample_gps_traces(shorter, 30.0, o).locally_rejected, 1u);
 }
 
+TEST(GpsTraces, TheLocalDistanceIsTheKthNearestPositionAtTheSparserEnd) {
+  // A street y = 0 driven both ways with fixes every 2 m (51 positions), and a trip along it in one 100 m segment
+  // (longer than 4 x 20 m; its points lie on fixes, so it is confirmed at any distance). At (0, 0) the k-th nearest
+  // position, its own counted, is 2 (k - 1) m away: k = 8 gives 14 m, k = 10 18 m (checked locally), k = 11 20 m
+  // (the support itself: not below it), k = 51 100 m; k = 52 is more than there are positions.
+  std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 51, 2), straight(100, 0, -1, 0, 51, 2, 1000),
+                              {{0, 0, 2000}, {100, 0, 2010}}};
+  Gps_trace_options o;
+  o.max_link_gap = 200;
+  for (const auto& [k, local] : std::vector<std::pair<std::size_t, bool>>{
+           {8, true}, {10, true}, {11, false}, {51, false}, {52, false}, {0, false}}) {
+    o.local_support_fixes = k;
+    const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
+    EXPECT_EQ(S.checked_segments, 1u) << k;
+    EXPECT_EQ(S.confirmed_segments, 1u) << k;
+    EXPECT_EQ(S.locally_checked, local ? 1u : 0u) << k;
+    EXPECT_EQ(S.locally_rejected, 0u) << k;
+  }
+  // The larger of the two ends counts: beyond x = 50 the fixes lie 10 m apart, so at (100, 0) the 8th nearest is
+  // 70 m away and the segment keeps the support, although at (0, 0) it is 14 m.
+  std::vector<Gps_trip> sparse_end{straight(0, 0, 1, 0, 26, 2), straight(60, 0, 1, 0, 5, 10, 1000),
+                                   {{0, 0, 2000}, {100, 0, 2010}}};
+  o.local_support_fixes = 8;
+  const Gps_trace_sample E = sample_gps_traces(sparse_end, 30.0, o);
+  EXPECT_EQ(E.checked_segments, 1u);
+  EXPECT_EQ(E.locally_checked, 0u);
+  // Exactly 4 x 20 m long: the segment support (an unconfirmed one would link its ends); a little longer: local.
+  std::vector<Gps_trip> eighty = trips;
+  eighty.back() = {{0, 0, 2000}, {80, 0, 2010}};
+  EXPECT_EQ(sample_gps_traces(eighty, 30.0, o).locally_checked, 0u);
+  eighty.back() = {{0, 0, 2000}, {80.5, 0, 2010}};
+  EXPECT_EQ(sample_gps_traces(eighty, 30.0, o).locally_checked, 1u);
+}
+
 TEST(GpsTraces, LocalSupportOptionsAreChecked) {
   const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 5, 30)};
   Gps_trace_options o;
@@ -774,8 +808,8 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
     EXPECT_NE(std::string(e.what()).find("local_support_fixes must be at most 1024, got 1025"), std::string::npos)
         << e.what();
   }
-  o.local_support_fixes = 1024;  // more than the 5 positions: the segment support everywhere
-  EXPECT_EQ(sample_gps_traces(trips, 20.0, o).locally_checked, 0u);
+  o.local_support_fixes = 1024;  // the largest allowed
+  EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, o));
   for (const double bad : {0.0, -0.5, 1.01, std::nan("")}) {
     o.min_local_support = bad;
     try {

@@ -85,12 +85,14 @@ struct Gps_trace_options {
   double segment_turn_tolerance = 30;
   /// Where fixes lie densely, a chord that cuts a block still passes within segment_support of the fixes on the
   /// streets around it (a taxi-like city at 42 s with 8 m of noise confirmed 0.56 of its segments, most of them
-  /// diagonals). A segment at least 4 segment_support long is therefore confirmed at a local distance: from each
+  /// diagonals). A segment longer than 4 segment_support is therefore confirmed at a local distance: from each
   /// end, the distance to the local_support_fixes-th nearest distinct fix position (the end's own counted), the
-  /// larger of the two, at least min_local_support times segment_support; segment_support where fewer fixes lie
-  /// that close. On a street the fixes lie about that far apart, so a point of a driven street is within it of
-  /// one. Shorter segments, whose unconfirmed ones still link their ends, keep segment_support. Default 8; 0:
-  /// segment_support everywhere. At most 1024.
+  /// larger of the two, at least min_local_support times segment_support; segment_support where fewer than
+  /// local_support_fixes positions lie within it. On a street the fixes lie about that far apart, so a point of a
+  /// driven street is within it of one. Shorter segments, whose unconfirmed ones still link their ends, keep
+  /// segment_support. The turn rule's evidence (Gps_trace_sample::straight_confirmed) counts confirmation at the
+  /// local distance; the stand-down of min_confirmed_fraction counts it at segment_support (dense traces whose
+  /// chords fail are not too sparse to judge). Default 8; 0: segment_support everywhere. At most 1024.
   std::size_t local_support_fixes = 8;
   /// Lower bound of the local distance above, as a fraction of segment_support, in (0, 1]. Default 0.6 (12 m at
   /// the automatic 20 m: GPS scatter across a street).
@@ -448,18 +450,39 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       place_index = std::make_unique<internal::Kd_index>(m);
     }
     const double min_local = options.min_local_support * support;
+    // Once per position (ends of long segments only): where fewer than k positions lie within `support` (counted
+    // on the grid, stopping at k) no search is needed.
+    std::vector<double> local_at(place_index ? places.size() : 0, -1.0);
     auto local_support = [&](const Gps_fix& f) {
       if (!place_index) return support;
-      using Knn = CGAL::Orthogonal_k_neighbor_search<internal::Kd_traits>;
-      const double u = place_index->unit;
-      Knn search(*place_index->tree, internal::Kd_point(f.x * u, f.y * u, 0.0), static_cast<unsigned>(local_k), 0.0,
-                 true, Knn::Distance(place_index->tree->traits().point_property_map()));
-      double kth2 = -1;
-      std::size_t found = 0;
-      for (auto it = search.begin(); it != search.end(); ++it, ++found) kth2 = it->second;
-      if (found < local_k) return support;
-      const double kth = std::sqrt(kth2) / u;
-      return kth > support ? support : std::max(min_local, kth);
+      const std::array<double, 2> at{f.x, f.y};
+      const std::size_t q = static_cast<std::size_t>(std::lower_bound(places.begin(), places.end(), at) -
+                                                     places.begin());  // f is one of the places
+      if (local_at[q] >= 0) return local_at[q];
+      std::size_t within = 0;
+      const auto c = fix_grid.cell_of(f.x, f.y);
+      for (std::int64_t k = 0; k < 9 && within < local_k; ++k) {
+        const std::vector<std::uint32_t>* bucket = fix_grid.find(c[0] + k / 3 - 1, c[1] + k % 3 - 1);
+        if (bucket == nullptr) continue;
+        for (const std::uint32_t j : *bucket) {
+          const double ex = places[j][0] - f.x, ey = places[j][1] - f.y;
+          if (ex * ex + ey * ey <= support2 && ++within == local_k) break;
+        }
+      }
+      double result = support;
+      if (within == local_k) {
+        using Knn = CGAL::Orthogonal_k_neighbor_search<internal::Kd_traits>;
+        const double u = place_index->unit;
+        Knn search(*place_index->tree, place_index->points[q], static_cast<unsigned>(local_k), 0.0, true,
+                   Knn::Distance(place_index->tree->traits().point_property_map()));
+        double kth2 = -1;
+        std::size_t found = 0;
+        for (auto it = search.begin(); it != search.end(); ++it, ++found) kth2 = it->second;
+        const double kth = std::sqrt(kth2) / u;
+        if (found == local_k && kth <= support) result = std::max(min_local, kth);
+      }
+      local_at[q] = result;
+      return result;
     };
     auto near_a_fix = [&](double x, double y, double within2) {
       const auto c = fix_grid.cell_of(x, y);
@@ -532,7 +555,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
           }
           return true;
         };
-        const double local = d >= 4 * support ? std::max(local_support(a), local_support(b)) : support;
+        const double local = d > 4 * support ? std::max(local_support(a), local_support(b)) : support;
         bool confirmed = all_near(local < support ? local * local : support2);
         if (local < support) {
           ++S.locally_checked;

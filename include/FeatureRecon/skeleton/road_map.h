@@ -45,8 +45,8 @@ inline Gps_trace_options road_map_trace_options() {
 /// corners (the pieces of a road-map skeleton lie about half the Rips radius apart, and 10 rounds round a corner
 /// over about 30 m). With road_merge_embedding_options() for the last stage this lifts the synthetic city at
 /// every sampling rate and Chicago a little (benchmark/README.md, "Road maps"). Laplacian rounds: Taubin rounds, which
-/// do not shrink, scored lower on every road map measured (Chicago 0.672 -> 0.667, the grid city at 12 s 0.755 ->
-/// 0.699).
+/// do not shrink, scored lower on every road map measured in session 25 (Chicago 0.672 -> 0.667, the grid city at
+/// 12 s 0.755 -> 0.699).
 inline Embedding_options road_map_embedding_options() {
   Embedding_options o;
   o.smoothing = Embedding_options::Smoothing::laplacian;
