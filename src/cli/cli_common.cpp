@@ -289,7 +289,11 @@ std::string json_statistic(double x, Status status) {
 std::string json_number(double x) {
   if (!std::isfinite(x)) return "null";
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
+  // The shortest of 15, 16 and 17 significant digits that reads back as x (0.6, not 0.59999999999999998).
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
   return buf;
 }
 
