@@ -322,7 +322,9 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// trace point joins the first earlier sample within the spacing whose direction differs by at most
 /// the heading tolerance, so opposite sides of a crossing stay apart when directions are used. Segments are
 /// checked first (Gps_trace_options::segment_support): one that leaves the traces where the trip turns (a corner
-/// cut between sparse fixes) is not densified. Time O(F + P) grid look-ups for F fixes and P inserted points.
+/// cut between sparse fixes) is not densified. Time O(F + P) grid look-ups for F fixes and P inserted points, plus
+/// a kd-tree of the distinct fix positions and a k-nearest query per position that ends a long segment where
+/// fixes lie densely (Gps_trace_options::local_support_fixes): O(F log F).
 /// \param rips_radius the radius the samples will be joined at (for the automatic rules).
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
 ///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
