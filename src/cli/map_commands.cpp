@@ -93,8 +93,18 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   Outputs outputs(args, {"samples-out", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   const auto& p = args.positional();
-  Embedded_graph_2 gt = to_graph(io::read_map(p[0], p[1]));
-  Embedded_graph_2 rec = to_graph(io::read_map(p[2], p[3]));
+  auto read = [&](const std::string& vertices, const std::string& edges) {
+    const io::Map_file m = io::read_map(vertices, edges);
+    if (m.self_loops > 0)
+      std::fprintf(stderr,
+                   "featurerecon evaluate-map: warning: %s line %zu: an edge joins a vertex to itself; %zu such "
+                   "edge%s no length and %s ignored\n",
+                   edges.c_str(), m.first_self_loop_line, m.self_loops, m.self_loops == 1 ? " has" : "s have",
+                   m.self_loops == 1 ? "is" : "are");
+    return to_graph(m);
+  };
+  Embedded_graph_2 gt = read(p[0], p[1]);
+  Embedded_graph_2 rec = read(p[2], p[3]);
   std::size_t gt_edges_before = gt.edges.size();
   std::vector<std::array<double, 2>> crop_points, track_points;
   if (args.has("crop-to-tracks")) crop_points = io::read_track_points(args.get("crop-to-tracks"));

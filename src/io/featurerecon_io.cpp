@@ -229,6 +229,7 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
       if (it == index.end()) throw Input_error(where(edges_path, number) + "unknown vertex id " + t[1 + k]);
       e[k] = it->second;
     }
+    if (e[0] == e[1] && m.self_loops++ == 0) m.first_self_loop_line = number;
     m.edges.push_back(e);
   });
   return m;

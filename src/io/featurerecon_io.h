@@ -56,6 +56,8 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
 struct Map_file {
   std::vector<std::array<double, 2>> positions;
   std::vector<std::array<std::uint32_t, 2>> edges;
+  std::size_t self_loops = 0;            ///< edges from a vertex to itself (kept in `edges`; they have no length)
+  std::size_t first_self_loop_line = 0;  ///< line of the first of them in the edge file (0: none)
 };
 Map_file read_map(const std::string& vertices_path, const std::string& edges_path);
 

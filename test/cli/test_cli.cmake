@@ -103,6 +103,12 @@ expect(persistence_without_json 2 "--persistence goes with --json" reeb --comple
 # evaluate-map on the shipped reference maps reproduces the published score (james vs crp, 15 m: F = .641).
 set(M ${DATA}/chicago_maps/chicago)
 expect(evaluate_map 0 "\"precision\": 0\\.93[0-9]*, \"recall\": 0\\.48[0-9]*, \"f_score\": 0\\.64[0-9]*" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt)
+# Edges from a vertex to itself have no length: the score ignores them and says so (they were dropped silently).
+file(WRITE ${WORK}/loop_v.txt "0,0,0\n1,10,0\n2,20,0\n")
+file(WRITE ${WORK}/loop_e.txt "0,0,1\n1,1,2\n")
+file(WRITE ${WORK}/loop_e2.txt "0,0,1\n1,1,1\n2,2,2\n")
+expect(evaluate_map_self_loops 0 "\"precision\": 1, \"recall\": 0.6, \"f_score\": 0.75,.*loop_e2.txt line 2: an edge joins a vertex to itself; 2 such edges have no length and are ignored" evaluate-map ${WORK}/loop_v.txt ${WORK}/loop_e.txt ${WORK}/loop_v.txt ${WORK}/loop_e2.txt)
+expect(evaluate_map_no_self_loops 0 "^{\"precision\": 1, \"recall\": 1,.*\"bearing\": 45}\n$" evaluate-map ${WORK}/loop_v.txt ${WORK}/loop_e.txt ${WORK}/loop_v.txt ${WORK}/loop_e.txt)
 expect(evaluate_map_args 2 "expected four files" evaluate-map ${M}_gt_crp_vertices.txt)
 expect(evaluate_map_crop_radius 2 "--crop-radius goes with --crop-to-tracks" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-radius 10)
 file(WRITE ${WORK}/bad_edges.txt "1,1,99999\n")
