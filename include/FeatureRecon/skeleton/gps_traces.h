@@ -451,6 +451,23 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       for (const auto& q : places) m.data.insert(m.data.end(), q.begin(), q.end());
       place_index = std::make_unique<internal::Kd_index>(m);
     }
+    // How many distinct fix positions lie within sqrt(r2) <= support of (x, y), counting up to `limit` (the
+    // point's own cell first).
+    auto fixes_within = [&](double x, double y, double r2, std::size_t limit) {
+      std::size_t count = 0;
+      const auto c = fix_grid.cell_of(x, y);
+      for (std::int64_t k = 0; k < 9; ++k) {
+        const std::int64_t dx = (k + 4) % 9 / 3 - 1, dy = (k + 4) % 3 - 1;
+        const std::vector<std::uint32_t>* bucket = fix_grid.find(c[0] + dx, c[1] + dy);
+        if (bucket == nullptr) continue;
+        for (const std::uint32_t j : *bucket) {
+          const double ex = places[j][0] - x, ey = places[j][1] - y;
+          if (ex * ex + ey * ey <= r2 && ++count == limit) return count;
+        }
+      }
+      return count;
+    };
+    auto near_a_fix = [&](double x, double y, double within2) { return fixes_within(x, y, within2, 1) == 1; };
     const double min_local = options.min_local_support * support;
     // Once per position (ends of long segments only): where fewer than k positions lie within `support` (counted
     // on the grid, stopping at k) no search is needed.
@@ -461,18 +478,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       const std::size_t q = static_cast<std::size_t>(std::lower_bound(places.begin(), places.end(), at) -
                                                      places.begin());  // f is one of the places
       if (local_at[q] >= 0) return local_at[q];
-      std::size_t within = 0;
-      const auto c = fix_grid.cell_of(f.x, f.y);
-      for (std::int64_t k = 0; k < 9 && within < local_k; ++k) {
-        const std::vector<std::uint32_t>* bucket = fix_grid.find(c[0] + k / 3 - 1, c[1] + k % 3 - 1);
-        if (bucket == nullptr) continue;
-        for (const std::uint32_t j : *bucket) {
-          const double ex = places[j][0] - f.x, ey = places[j][1] - f.y;
-          if (ex * ex + ey * ey <= support2 && ++within == local_k) break;
-        }
-      }
       double result = support;
-      if (within == local_k) {
+      if (fixes_within(f.x, f.y, support2, local_k) == local_k) {
         using Knn = CGAL::Orthogonal_k_neighbor_search<internal::Kd_traits>;
         const double u = place_index->unit;
         Knn search(*place_index->tree, place_index->points[q], static_cast<unsigned>(local_k), 0.0, true,
@@ -485,19 +492,6 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       }
       local_at[q] = result;
       return result;
-    };
-    auto near_a_fix = [&](double x, double y, double within2) {
-      const auto c = fix_grid.cell_of(x, y);
-      for (std::int64_t k = 0; k < 9; ++k) {  // the point's own cell first
-        const std::int64_t dx = (k + 4) % 9 / 3 - 1, dy = (k + 4) % 3 - 1;
-        const std::vector<std::uint32_t>* bucket = fix_grid.find(c[0] + dx, c[1] + dy);
-        if (bucket == nullptr) continue;
-        for (const std::uint32_t j : *bucket) {
-          const double ex = places[j][0] - x, ey = places[j][1] - y;
-          if (ex * ex + ey * ey <= within2) return true;
-        }
-      }
-      return false;
     };
     // Does trip t go straight through its segment i (from the i-th to the (i+1)-th fix in time order)? The
     // directions it arrives in and leaves by are taken over at least `support` (a vehicle wobbling while it
