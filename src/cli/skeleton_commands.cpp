@@ -228,7 +228,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -278,12 +278,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
   const bool quiet = args.has("quiet");
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
-               args.has("density-radius") || args.has("density-heading-tolerance") || args.has("undirected") ||
-               args.has("merge") || args.has("first-point-positions") || args.has("segment-support") ||
+               args.has("min-lateral-density") || args.has("density-radius") ||
+               args.has("density-heading-tolerance") || args.has("undirected") || args.has("merge") ||
+               args.has("first-point-positions") || args.has("segment-support") ||
                args.has("segment-turn-tolerance") || args.has("straight-confirmed") || args.has("local-support") ||
                args.has("min-local-support")))
-    throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --density-radius, "
-                      "--density-heading-tolerance, --first-point-positions, --segment-support, "
+    throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --min-lateral-density, "
+                      "--density-radius, --density-heading-tolerance, --first-point-positions, --segment-support, "
                       "--segment-turn-tolerance, --straight-confirmed, --local-support, --min-local-support and "
                       "--merge apply to --tracks only");
   if (!gps && args.has("lonlat")) throw Usage_error("--lonlat applies to --tracks only");
@@ -388,6 +389,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
     go.density_radius = args.has("density-radius") ? args.get_positive_double("density-radius") : 0.0;
     if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
+    if (args.has("min-lateral-density")) go.min_lateral_density = args.get_double("min-lateral-density");
     if (args.has("density-heading-tolerance")) go.density_heading_tolerance = args.get_double("density-heading-tolerance");
     if (!(go.density_heading_tolerance >= 0 && go.density_heading_tolerance <= 180))
       throw Usage_error("--density-heading-tolerance must be in [0, 180] degrees");
@@ -395,6 +397,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     go.mean_positions = !args.has("first-point-positions");
     if (!(go.min_relative_density >= 0 && go.min_relative_density <= 1))
       throw Usage_error("--min-density must be in [0, 1]");
+    if (!(go.min_lateral_density >= 0 && go.min_lateral_density <= 1))
+      throw Usage_error("--min-lateral-density must be in [0, 1]");
     if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
       throw Usage_error("--heading-tolerance must be in [0, 180] degrees");
     std::vector<Gps_trip> trips;
@@ -461,10 +465,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
                ", \"locally_checked\": " + std::to_string(sample.locally_checked) +
                ", \"locally_rejected\": " + std::to_string(sample.locally_rejected) +
                ", \"min_density\": " +
-               json_number(go.min_relative_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
+               json_number(go.min_relative_density) + ", \"min_lateral_density\": " +
+               json_number(go.min_lateral_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
                ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                ", \"directed\": " + (go.directed ? "true" : "false") +
-               ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") + ", \"dropped_sparse\": " + std::to_string(sample.dropped) + ", \"prune\": " +
+               ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") + ", \"dropped_sparse\": " + std::to_string(sample.dropped) +
+               ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"prune\": " +
                json_number(options.prune_height) + ", \"trip_links\": " +
                std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
                ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +

@@ -164,6 +164,85 @@ TEST(GpsTraces, AQuietCarriagewayBesideABusyOneIsKept) {
   EXPECT_THROW(sample_gps_traces(trips, 20.0, o), std::invalid_argument);
 }
 
+TEST(GpsTraces, ScatterBesideABusyStreetIsDroppedWhereTheStreetAheadStays) {
+  // Twenty trips east along y = 0 up to x = 400, three of them on to x = 700 (a quiet continuation of the busy
+  // street), and three trips east along y = 24 between x = 100 and 300 (scatter beside the street, about a fifth
+  // of its weight). The relative rule at 0.1 keeps the scatter; the lateral rule at 0.3 drops it and keeps the
+  // continuation, whose busy samples lie behind it; the relative rule at 0.3 would drop the continuation's start.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.05 * k, 1, 0, k < 3 ? 29 : 17, 25, 100.0 * k));
+  for (int k = 0; k < 3; ++k) trips.push_back(straight(100, 24 + 0.5 * k, 1, 0, 9, 25, 5000.0 + 100 * k));
+  auto count = [](const Gps_trace_sample& S, double x0, double x1, double y0, double y1) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < S.points.rows; ++i) {
+      const double x = S.points.row(i)[0], y = S.points.row(i)[1];
+      n += x >= x0 && x <= x1 && y >= y0 && y <= y1 ? 1 : 0;
+    }
+    return n;
+  };
+  Gps_trace_options o;
+  o.heading_tolerance = 30;
+  o.min_relative_density = 0.1;
+  const Gps_trace_sample relative = sample_gps_traces(trips, 20.0, o);
+  EXPECT_GT(count(relative, 100, 300, 12, 40), 10u);  // the scatter
+  EXPECT_EQ(relative.dropped_lateral, 0u);
+  o.min_lateral_density = 0.3;
+  const Gps_trace_sample lateral = sample_gps_traces(trips, 20.0, o);
+  EXPECT_EQ(count(lateral, 100, 300, 12, 40), 0u);
+  EXPECT_GT(lateral.dropped_lateral, 10u);
+  EXPECT_EQ(lateral.dropped, relative.dropped + lateral.dropped_lateral);
+  EXPECT_GE(count(lateral, 405, 440, -5, 5), 3u);  // the continuation next to the busy street's end
+  EXPECT_EQ(count(lateral, 405, 700, -5, 5), count(relative, 405, 700, -5, 5));
+  for (const Edge& e : lateral.trip_links) EXPECT_LT(e[1], lateral.points.rows);
+  o.min_lateral_density = 0;
+  o.min_relative_density = 0.3;
+  EXPECT_LT(count(sample_gps_traces(trips, 20.0, o), 405, 440, -5, 5), 2u);
+}
+
+TEST(GpsTraces, SamplesWithoutADirectionAreNotJudgedByTheLateralRule) {
+  // Trips of one fix never move: their samples point east by convention, which says nothing about the street
+  // they stand on. Beside a busy eastbound street the lateral rule keeps them; a moving trip there is dropped.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.05 * k, 1, 0, 17, 25, 100.0 * k));
+  for (int k = 0; k < 3; ++k) trips.push_back({{200.0 + k, 24, 9000.0 + k}});
+  Gps_trace_options o;
+  o.heading_tolerance = 30;
+  o.min_lateral_density = 0.3;
+  auto beside = [](const Gps_trace_sample& S) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < S.points.rows; ++i) n += S.points.row(i)[1] > 12 ? 1 : 0;
+    return n;
+  };
+  const Gps_trace_sample still = sample_gps_traces(trips, 20.0, o);
+  EXPECT_EQ(beside(still), 1u);
+  EXPECT_EQ(still.dropped, 0u);
+  trips.back() = straight(200, 24, 1, 0, 2, 5, 9002);  // the last one moves 5 m east
+  const Gps_trace_sample moving = sample_gps_traces(trips, 20.0, o);
+  EXPECT_EQ(beside(moving), 0u);
+  EXPECT_EQ(moving.dropped_lateral, 1u);
+}
+
+TEST(GpsTraces, DensityFractionsAreChecked) {
+  const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 5, 10)};
+  for (const double bad : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    Gps_trace_options o;
+    o.min_lateral_density = bad;
+    try {
+      sample_gps_traces(trips, 20.0, o);
+      ADD_FAILURE() << "min_lateral_density " << bad << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("min_lateral_density"), std::string::npos) << e.what();
+    }
+    o.min_lateral_density = 0;
+    o.min_relative_density = bad;
+    EXPECT_THROW(sample_gps_traces(trips, 20.0, o), std::invalid_argument);
+  }
+  Gps_trace_options o;
+  o.min_lateral_density = 1;
+  o.min_relative_density = 1;
+  EXPECT_GT(sample_gps_traces(trips, 20.0, o).points.rows, 0u);  // the heaviest sample is its own maximum
+}
+
 TEST(GpsTraces, DegenerateAndBadInput) {
   EXPECT_EQ(sample_gps_traces({}, 10.0).points.rows, 0u);
   const Gps_trace_sample one = sample_gps_traces({{{5, 5, 0}}}, 10.0);

@@ -61,7 +61,17 @@ struct Gps_trace_options {
   /// `density_radius` stands for: scattered fixes (multipath next to tall buildings) away from the dense band of
   /// the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all.
   double min_relative_density = 0;
-  /// Radius of the local maximum above. 0: twice the Rips radius.
+  /// Drops samples that stand for fewer trace points than this fraction of the most any sample beside them
+  /// stands for: within `density_radius`, travelling within `density_heading_tolerance` of the same direction, and
+  /// lying at least 45 degrees off the sample's direction (the offset across it at least the offset along it).
+  /// Scatter lies beside the band of its street, and it is sparse there relative to the band (multipath zones of
+  /// Chicago drew loops through such fixes; benchmark/README.md, "Road maps"). A quiet street that continues a busy
+  /// one, or leaves it, has the busy samples ahead of it or behind it and is judged by `min_relative_density`
+  /// alone (where it leaves at a sharp angle, its samples next to the junction may have busy ones beside them).
+  /// Samples that only fixes of trips that never move joined (no direction: they point east) are exempt.
+  /// 0 (default): off; road maps use 0.3. In [0, 1].
+  double min_lateral_density = 0;
+  /// Radius of the local maxima above. 0: twice the Rips radius.
   double density_radius = 0;
   /// A sample is compared only with samples whose travel directions differ from its own by at most this angle
   /// (degrees; directed as sampled): the lightly used carriageway of a divided road next to a busy opposite one,
@@ -133,6 +143,7 @@ struct Gps_trace_sample {
   double density_radius = 0;                 ///< value used
   double density_heading_tolerance = 0;      ///< value used
   std::size_t dropped = 0;                   ///< samples dropped as sparse (their fixes map to no sample: -1)
+  std::size_t dropped_lateral = 0;           ///< ... of which only min_lateral_density dropped
   double segment_support = 0;                ///< value used (negative: no check)
   double segment_turn_tolerance = 0;         ///< value used
   std::size_t checked_segments = 0;          ///< segments within the link gap, longer than 2 segment_support, with
@@ -239,9 +250,13 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
 }
 
 /// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius that travels within
-/// `heading_tolerance` degrees of the same direction; re-indexes.
-inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double heading_tolerance) {
+/// `heading_tolerance` degrees of the same direction, or lighter than `lateral_fraction` times the heaviest such
+/// sample beside them (the offset across the sample's direction at least the offset along it) unless
+/// `has_direction` says they have none; re-indexes.
+inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lateral_fraction, double heading_tolerance,
+                                const std::vector<bool>& has_direction) {
   const double R = S.density_radius, R2 = R * R;
+  constexpr double degree = 3.14159265358979323846 / 180.0;
   const std::array<double, 4> box = bounding_box(S.points);
   Planar_grid grid(box[0], box[1], box[2], box[3], R, S.points.rows);
   for (std::uint32_t i = 0; i < S.points.rows; ++i) grid.push(grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]), i);
@@ -251,8 +266,9 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double hea
   T.points.dimension = 2;
   for (std::uint32_t i = 0; i < S.points.rows; ++i) {
     const double x = S.points.row(i)[0], y = S.points.row(i)[1];
+    const double ux = std::cos(S.headings[i] * degree), uy = std::sin(S.headings[i] * degree);
     const auto c = grid.cell_of(x, y);
-    std::uint32_t heaviest = 0;
+    std::uint32_t heaviest = 0, heaviest_beside = 0;
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         const std::vector<std::uint32_t>* bucket = grid.find(c[0] + dx, c[1] + dy);
@@ -260,11 +276,19 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double hea
         for (const std::uint32_t j : *bucket) {
           const double ex = S.points.row(j)[0] - x, ey = S.points.row(j)[1] - y;
           if (ex * ex + ey * ey <= R2 &&
-              heading_difference(S.headings[i], S.headings[j], S.directed) <= heading_tolerance)
+              heading_difference(S.headings[i], S.headings[j], S.directed) <= heading_tolerance) {
             heaviest = std::max(heaviest, S.weights[j]);
+            if (std::abs(ex * uy - ey * ux) >= std::abs(ex * ux + ey * uy))
+              heaviest_beside = std::max(heaviest_beside, S.weights[j]);
+          }
         }
       }
-    if (static_cast<double>(S.weights[i]) < fraction * static_cast<double>(heaviest)) continue;
+    const double w = static_cast<double>(S.weights[i]);
+    if (w < fraction * static_cast<double>(heaviest)) continue;
+    if (has_direction[i] && w < lateral_fraction * static_cast<double>(heaviest_beside)) {
+      ++S.dropped_lateral;
+      continue;
+    }
     new_index[i] = static_cast<std::uint32_t>(T.headings.size());
     T.points.data.push_back(x);
     T.points.data.push_back(y);
@@ -329,7 +353,7 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
 ///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
 ///         or segment support, a negative heading tolerance, a turn tolerance outside [0, 180], a confirmed
-///         fraction outside [0, 1]), or linking that would insert more than options.max_inserted_points points.
+///         fraction or a density fraction outside [0, 1]), or linking that would insert more than options.max_inserted_points points.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
@@ -339,6 +363,12 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing must be finite and >= 0, max_link_gap finite");
   if (!(options.heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees");
+  if (!(options.min_relative_density >= 0 && options.min_relative_density <= 1))
+    FeatureRecon::internal::throw_invalid_argument(fn, "min_relative_density must be in [0, 1], got ",
+                                                   options.min_relative_density);
+  if (!(options.min_lateral_density >= 0 && options.min_lateral_density <= 1))
+    FeatureRecon::internal::throw_invalid_argument(fn, "min_lateral_density must be in [0, 1], got ",
+                                                   options.min_lateral_density);
   if (!(options.density_heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "density_heading_tolerance must be >= 0 degrees, got ",
                                                    options.density_heading_tolerance);
@@ -587,8 +617,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     for (auto& u : use) std::fill(u.begin(), u.end(), densify);
   }
   internal::Planar_grid grid(box[0], box[1], box[2], box[3], cell, fixes.rows);
+  std::vector<bool> has_direction;  // per sample: a point of a moving trip joined it
   // The sample a trace point joins (creating one if none is close): first in creation order.
-  auto join = [&](double x, double y, double heading) -> std::uint32_t {
+  auto join = [&](double x, double y, double heading, bool moving = true) -> std::uint32_t {
     const auto c = grid.cell_of(x, y);
     std::uint32_t best = std::numeric_limits<std::uint32_t>::max();
     for (std::int64_t dx = -1; dx <= 1; ++dx)
@@ -609,9 +640,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       S.points.data.push_back(y);
       S.headings.push_back(heading);
       S.weights.push_back(0);
+      has_direction.push_back(false);
       grid.push(c, best);
     }
     ++S.weights[best];
+    if (moving) has_direction[best] = true;
     return best;
   };
   S.directed = options.directed;
@@ -659,7 +692,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         dx = trips[t][o[i + 1]].x - f.x;
         dy = trips[t][o[i + 1]].y - f.y;
       }
-      const std::uint32_t s = join(f.x, f.y, h);
+      const std::uint32_t s = join(f.x, f.y, h, next_move[i] != none || previous_move[i] != none);
       S.sample_of_fix[first_fix + o[i]] = s;
       if (i > 0) {
         const Gps_fix& p = trips[t][o[i - 1]];
@@ -683,8 +716,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.points.rows = S.headings.size();
   S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
   S.density_heading_tolerance = options.density_heading_tolerance;
-  if (options.min_relative_density > 0 && S.points.rows > 0)
-    internal::drop_sparse_samples(S, options.min_relative_density, options.density_heading_tolerance);
+  if ((options.min_relative_density > 0 || options.min_lateral_density > 0) && S.points.rows > 0)
+    internal::drop_sparse_samples(S, options.min_relative_density, options.min_lateral_density,
+                                  options.density_heading_tolerance, has_direction);
   if (options.mean_positions) {  // each sample at the mean of its fixes
     std::vector<double> sum(2 * S.points.rows, 0.0);
     std::vector<std::uint32_t> count(S.points.rows, 0);
