@@ -469,7 +469,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
                json_number(go.min_lateral_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
                ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                ", \"directed\": " + (go.directed ? "true" : "false") +
-               ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") + ", \"dropped_sparse\": " + std::to_string(sample.dropped) +
+               ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") +
+               ", \"dropped_sparse\": " + std::to_string(sample.dropped) +
                ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"prune\": " +
                json_number(options.prune_height) + ", \"trip_links\": " +
                std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +

@@ -165,61 +165,98 @@ TEST(GpsTraces, AQuietCarriagewayBesideABusyOneIsKept) {
 }
 
 TEST(GpsTraces, ScatterBesideABusyStreetIsDroppedWhereTheStreetAheadStays) {
-  // Twenty trips east along y = 0 up to x = 400, three of them on to x = 700 (a quiet continuation of the busy
-  // street), and three trips east along y = 24 between x = 100 and 300 (scatter beside the street, about a fifth
+  // Twenty trips along y = 0 up to x = 400, three of them on to x = 700 (a quiet continuation of the busy
+  // street), and three trips along y = 24 between x = 100 and 300 (scatter beside the street: 3 of 20 trips, 0.15
   // of its weight). The relative rule at 0.1 keeps the scatter; the lateral rule at 0.3 drops it and keeps the
   // continuation, whose busy samples lie behind it; the relative rule at 0.3 would drop the continuation's start.
-  std::vector<Gps_trip> trips;
-  for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.05 * k, 1, 0, k < 3 ? 29 : 17, 25, 100.0 * k));
-  for (int k = 0; k < 3; ++k) trips.push_back(straight(100, 24 + 0.5 * k, 1, 0, 9, 25, 5000.0 + 100 * k));
-  auto count = [](const Gps_trace_sample& S, double x0, double x1, double y0, double y1) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < S.points.rows; ++i) {
-      const double x = S.points.row(i)[0], y = S.points.row(i)[1];
-      n += x >= x0 && x <= x1 && y >= y0 && y <= y1 ? 1 : 0;
+  // The scene is turned by several angles (the rule works on headings in degrees), directed and undirected.
+  for (const double degrees : {0.0, 90.0, 135.0, 200.0})
+    for (const bool directed : {true, false}) {
+      SCOPED_TRACE("turned by " + std::to_string(degrees) + (directed ? " degrees, directed" : " degrees, undirected"));
+      const double radians = degrees * 3.14159265358979323846 / 180, c = std::cos(radians), s = std::sin(radians);
+      auto trip = [&](double x0, double y0, int n, double t0) {
+        Gps_trip t = straight(x0, y0, 1, 0, n, 25, t0);
+        for (Gps_fix& f : t) f = {c * f.x - s * f.y, s * f.x + c * f.y, f.time};
+        return t;
+      };
+      std::vector<Gps_trip> trips;
+      for (int k = 0; k < 20; ++k) trips.push_back(trip(0, 0.05 * k, k < 3 ? 29 : 17, 100.0 * k));
+      for (int k = 0; k < 3; ++k) trips.push_back(trip(100, 24 + 0.5 * k, 9, 5000.0 + 100 * k));
+      auto count = [&](const Gps_trace_sample& S, double x0, double x1, double y0, double y1) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < S.points.rows; ++i) {  // in the scene's own frame
+          const double x = c * S.points.row(i)[0] + s * S.points.row(i)[1];
+          const double y = -s * S.points.row(i)[0] + c * S.points.row(i)[1];
+          n += x >= x0 && x <= x1 && y >= y0 && y <= y1 ? 1 : 0;
+        }
+        return n;
+      };
+      Gps_trace_options o;
+      o.heading_tolerance = 30;
+      o.directed = directed;
+      o.min_relative_density = 0.1;
+      const Gps_trace_sample relative = sample_gps_traces(trips, 20.0, o);
+      EXPECT_GT(count(relative, 100, 300, 12, 40), 10u);  // the scatter
+      EXPECT_EQ(relative.dropped_lateral, 0u);
+      o.min_lateral_density = 0.3;
+      const Gps_trace_sample lateral = sample_gps_traces(trips, 20.0, o);
+      EXPECT_EQ(count(lateral, 100, 300, 12, 40), 0u);
+      EXPECT_GT(lateral.dropped_lateral, 10u);
+      // The lateral count comes on top of what the relative rule drops (the scatter's last sample, at x = 300,
+      // stands for fewer points than 0.1 of the street's at some angles, where the samples fall differently).
+      EXPECT_EQ(lateral.dropped, relative.dropped + lateral.dropped_lateral);
+      EXPECT_GE(count(lateral, 405, 440, -5, 5), 3u);  // the continuation next to the busy street's end
+      EXPECT_EQ(count(lateral, 405, 700, -5, 5), count(relative, 405, 700, -5, 5));
+      for (const Edge& e : lateral.trip_links) EXPECT_LT(e[1], lateral.points.rows);
+      o.min_lateral_density = 0;
+      o.min_relative_density = 0.3;
+      EXPECT_LT(count(sample_gps_traces(trips, 20.0, o), 405, 440, -5, 5), 2u);
     }
-    return n;
-  };
-  Gps_trace_options o;
-  o.heading_tolerance = 30;
-  o.min_relative_density = 0.1;
-  const Gps_trace_sample relative = sample_gps_traces(trips, 20.0, o);
-  EXPECT_GT(count(relative, 100, 300, 12, 40), 10u);  // the scatter
-  EXPECT_EQ(relative.dropped_lateral, 0u);
-  o.min_lateral_density = 0.3;
-  const Gps_trace_sample lateral = sample_gps_traces(trips, 20.0, o);
-  EXPECT_EQ(count(lateral, 100, 300, 12, 40), 0u);
-  EXPECT_GT(lateral.dropped_lateral, 10u);
-  EXPECT_EQ(lateral.dropped, relative.dropped + lateral.dropped_lateral);
-  EXPECT_GE(count(lateral, 405, 440, -5, 5), 3u);  // the continuation next to the busy street's end
-  EXPECT_EQ(count(lateral, 405, 700, -5, 5), count(relative, 405, 700, -5, 5));
-  for (const Edge& e : lateral.trip_links) EXPECT_LT(e[1], lateral.points.rows);
-  o.min_lateral_density = 0;
-  o.min_relative_density = 0.3;
-  EXPECT_LT(count(sample_gps_traces(trips, 20.0, o), 405, 440, -5, 5), 2u);
 }
 
 TEST(GpsTraces, SamplesWithoutADirectionAreNotJudgedByTheLateralRule) {
   // Trips of one fix never move: their samples point east by convention, which says nothing about the street
-  // they stand on. Beside a busy eastbound street the lateral rule keeps them; a moving trip there is dropped.
+  // they stand on. Beside a busy eastbound street the lateral rule keeps them; a moving trip beside it, 50 m
+  // further west, is dropped in the same run.
   std::vector<Gps_trip> trips;
   for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.05 * k, 1, 0, 17, 25, 100.0 * k));
   for (int k = 0; k < 3; ++k) trips.push_back({{200.0 + k, 24, 9000.0 + k}});
   Gps_trace_options o;
   o.heading_tolerance = 30;
   o.min_lateral_density = 0.3;
-  auto beside = [](const Gps_trace_sample& S) {
+  auto beside = [](const Gps_trace_sample& S, double x0, double x1) {
     std::size_t n = 0;
-    for (std::size_t i = 0; i < S.points.rows; ++i) n += S.points.row(i)[1] > 12 ? 1 : 0;
+    for (std::size_t i = 0; i < S.points.rows; ++i)
+      n += S.points.row(i)[1] > 12 && S.points.row(i)[0] >= x0 && S.points.row(i)[0] <= x1 ? 1 : 0;
     return n;
   };
   const Gps_trace_sample still = sample_gps_traces(trips, 20.0, o);
-  EXPECT_EQ(beside(still), 1u);
+  EXPECT_EQ(beside(still, 190, 210), 1u);
   EXPECT_EQ(still.dropped, 0u);
-  trips.back() = straight(200, 24, 1, 0, 2, 5, 9002);  // the last one moves 5 m east
+  trips.push_back(straight(150, 24, 1, 0, 2, 5, 9100));  // a trip that moves 5 m east
   const Gps_trace_sample moving = sample_gps_traces(trips, 20.0, o);
-  EXPECT_EQ(beside(moving), 0u);
+  EXPECT_EQ(beside(moving, 190, 210), 1u);
+  EXPECT_EQ(beside(moving, 140, 160), 0u);
   EXPECT_EQ(moving.dropped_lateral, 1u);
+}
+
+TEST(GpsTraces, AParkedVehicleDoesNotDropTheStreetBesideIt) {
+  // Three trips east along y = 0 and a vehicle parked 20 m north of the street with 60 fixes at one place: its
+  // sample is the heaviest around but has no direction, so it is no busy neighbour of the street's samples.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 3; ++k) trips.push_back(straight(0, 0.5 * k, 1, 0, 17, 25, 100.0 * k));
+  Gps_trace_options o;
+  o.heading_tolerance = 30;
+  o.min_relative_density = 0.1;
+  o.min_lateral_density = 0.3;
+  const Gps_trace_sample street = sample_gps_traces(trips, 20.0, o);
+  Gps_trip parked;
+  for (int i = 0; i < 60; ++i) parked.push_back({200, 20, 1000.0 + i});
+  trips.push_back(parked);
+  const Gps_trace_sample with_parked = sample_gps_traces(trips, 20.0, o);
+  EXPECT_EQ(with_parked.points.rows, street.points.rows + 1);
+  EXPECT_EQ(with_parked.dropped, street.dropped);
+  EXPECT_EQ(with_parked.dropped_lateral, 0u);
 }
 
 TEST(GpsTraces, DensityFractionsAreChecked) {
@@ -241,6 +278,11 @@ TEST(GpsTraces, DensityFractionsAreChecked) {
   o.min_lateral_density = 1;
   o.min_relative_density = 1;
   EXPECT_GT(sample_gps_traces(trips, 20.0, o).points.rows, 0u);  // the heaviest sample is its own maximum
+  // Empty input and a single fix with both rules on.
+  EXPECT_EQ(sample_gps_traces({}, 20.0, o).points.rows, 0u);
+  const Gps_trace_sample one = sample_gps_traces({{{5, 5, 0}}}, 20.0, o);
+  EXPECT_EQ(one.points.rows, 1u);
+  EXPECT_EQ(one.dropped, 0u);
 }
 
 TEST(GpsTraces, DegenerateAndBadInput) {

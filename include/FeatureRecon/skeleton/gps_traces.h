@@ -59,17 +59,19 @@ struct Gps_trace_options {
   bool mean_positions = true;
   /// Drops samples that stand for fewer trace points than this fraction of the most any sample within
   /// `density_radius` stands for: scattered fixes (multipath next to tall buildings) away from the dense band of
-  /// the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all.
+  /// the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all. In
+  /// [0, 1] (1 keeps only local maxima).
   double min_relative_density = 0;
   /// Drops samples that stand for fewer trace points than this fraction of the most any sample beside them
   /// stands for: within `density_radius`, travelling within `density_heading_tolerance` of the same direction, and
   /// lying at least 45 degrees off the sample's direction (the offset across it at least the offset along it).
   /// Scatter lies beside the band of its street, and it is sparse there relative to the band (multipath zones of
-  /// Chicago drew loops through such fixes; benchmark/README.md, "Road maps"). A quiet street that continues a busy
-  /// one, or leaves it, has the busy samples ahead of it or behind it and is judged by `min_relative_density`
-  /// alone (where it leaves at a sharp angle, its samples next to the junction may have busy ones beside them).
-  /// Samples that only fixes of trips that never move joined (no direction: they point east) are exempt.
-  /// 0 (default): off; road maps use 0.3. In [0, 1].
+  /// Chicago drew loops through such fixes; benchmark/README.md, "Scatter beside a street"). A quiet street that
+  /// continues a busy one, or crosses it, has the busy samples behind it or travelling another way and is judged
+  /// by `min_relative_density` alone; one that forks off a busy street at an acute angle (within
+  /// `density_heading_tolerance`: a slip road) has busy samples beside it near the fork and loses them. Samples
+  /// that only fixes of trips that never move joined (parked vehicles, one-fix trips: no direction, they point
+  /// east) are neither judged nor count as heavy neighbours. 0 (default): off; road maps use 0.3. In [0, 1].
   double min_lateral_density = 0;
   /// Radius of the local maxima above. 0: twice the Rips radius.
   double density_radius = 0;
@@ -251,8 +253,8 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
 
 /// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius that travels within
 /// `heading_tolerance` degrees of the same direction, or lighter than `lateral_fraction` times the heaviest such
-/// sample beside them (the offset across the sample's direction at least the offset along it) unless
-/// `has_direction` says they have none; re-indexes.
+/// sample beside them (the offset across the sample's direction at least the offset along it; samples without a
+/// direction, per `has_direction`, neither judged nor counted); re-indexes.
 inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lateral_fraction, double heading_tolerance,
                                 const std::vector<bool>& has_direction) {
   const double R = S.density_radius, R2 = R * R;
@@ -278,7 +280,7 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lat
           if (ex * ex + ey * ey <= R2 &&
               heading_difference(S.headings[i], S.headings[j], S.directed) <= heading_tolerance) {
             heaviest = std::max(heaviest, S.weights[j]);
-            if (std::abs(ex * uy - ey * ux) >= std::abs(ex * ux + ey * uy))
+            if (has_direction[j] && std::fabs(ex * uy - ey * ux) >= std::fabs(ex * ux + ey * uy))
               heaviest_beside = std::max(heaviest_beside, S.weights[j]);
           }
         }
@@ -353,7 +355,8 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
 ///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
 ///         or segment support, a negative heading tolerance, a turn tolerance outside [0, 180], a confirmed
-///         fraction or a density fraction outside [0, 1]), or linking that would insert more than options.max_inserted_points points.
+///         fraction or a density fraction outside [0, 1]), or linking that would insert more than
+///         options.max_inserted_points points.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";

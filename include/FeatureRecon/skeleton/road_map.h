@@ -34,7 +34,8 @@ namespace skeleton {
 
 /// The trace options road maps start from: directions kept (heading tolerance 30 degrees), samples lighter than
 /// 10 % of their direction's local maximum or 30 % of its maximum beside them dropped (the second since session
-/// 27: Chicago 0.672 -> 0.700, benchmark/README.md); spacing, link gap and density radius automatic.
+/// 27: Chicago 0.672 -> 0.700, benchmark/README.md, "Scatter beside a street"); spacing, link gap and density
+/// radius automatic.
 inline Gps_trace_options road_map_trace_options() {
   Gps_trace_options o;
   o.heading_tolerance = 30;
