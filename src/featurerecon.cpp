@@ -82,7 +82,7 @@ const std::vector<Command>& commands() {
        "                   sampled at spacing S (greedy, per direction), consecutive samples of a trip are graph\n"
        "                   edges, and sparse samples are dropped. Unset values derive from the median step M\n"
        "                   between fixes: R = M (clamped to [10, 30]), S = R/2, G = max(4M, 2R), SS = max(20, 2R/3),\n"
-       "                   ST = 30, D = 3R, DIST = 2.5R, H = 5R, A = 30, F = 0.1, LD = 0.3, DR = 2R, DA = 45,\n"
+       "                   ST = 30, D = 3R, DIST = 2.5R, H = 5R, A = 30, F = 0.05, LD = 0.3, DR = 2R, DA = 45,\n"
        "                   MD = 8\n"
        "  --lonlat         with --tracks: x and y are longitude and latitude in degrees (WGS84). The fixes are\n"
        "                   projected to metres (transverse Mercator centred on them, scale 1 on its central\n"
