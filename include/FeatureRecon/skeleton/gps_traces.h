@@ -366,12 +366,12 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing must be finite and >= 0, max_link_gap finite");
   if (!(options.heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees");
-  if (!(options.min_relative_density >= 0 && options.min_relative_density <= 1))
-    FeatureRecon::internal::throw_invalid_argument(fn, "min_relative_density must be in [0, 1], got ",
-                                                   options.min_relative_density);
-  if (!(options.min_lateral_density >= 0 && options.min_lateral_density <= 1))
-    FeatureRecon::internal::throw_invalid_argument(fn, "min_lateral_density must be in [0, 1], got ",
-                                                   options.min_lateral_density);
+  auto check_fraction = [fn](const char* name, double value) {  // in [0, 1], NaN refused
+    if (!(value >= 0 && value <= 1))
+      FeatureRecon::internal::throw_invalid_argument(fn, name, " must be in [0, 1], got ", value);
+  };
+  check_fraction("min_relative_density", options.min_relative_density);
+  check_fraction("min_lateral_density", options.min_lateral_density);
   if (!(options.density_heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "density_heading_tolerance must be >= 0 degrees, got ",
                                                    options.density_heading_tolerance);
@@ -387,12 +387,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   if (!(options.min_local_support > 0 && options.min_local_support <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "min_local_support must be in (0, 1], got ",
                                                    options.min_local_support);
-  if (!(options.min_confirmed_fraction >= 0 && options.min_confirmed_fraction <= 1))
-    FeatureRecon::internal::throw_invalid_argument(fn, "min_confirmed_fraction must be in [0, 1], got ",
-                                                   options.min_confirmed_fraction);
-  if (!(options.min_straight_confirmed_fraction >= 0 && options.min_straight_confirmed_fraction <= 1))
-    FeatureRecon::internal::throw_invalid_argument(fn, "min_straight_confirmed_fraction must be in [0, 1], got ",
-                                                   options.min_straight_confirmed_fraction);
+  check_fraction("min_confirmed_fraction", options.min_confirmed_fraction);
+  check_fraction("min_straight_confirmed_fraction", options.min_straight_confirmed_fraction);
   Gps_trace_sample S;
   S.points.dimension = 2;
   // Sorted copies of the trips; the median step.
