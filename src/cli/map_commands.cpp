@@ -82,13 +82,20 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
 }  // namespace
 
 int run_evaluate_map(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"explain", "lonlat"}, {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg", "tracks"}, 4);
+  const Arguments args(argv, {"explain", "lonlat"},
+                       {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg",
+                        "tracks", "matching"},
+                       4);
   if (args.positional().size() != 4)
     throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
   Map_comparison_options options;
   if (args.has("threshold")) options.match_distance = args.get_positive_double("threshold");
   if (args.has("interval")) options.interval = args.get_positive_double("interval");
   if (args.has("bearing")) options.bearing_limit = args.get_positive_double("bearing");
+  const std::string matching = args.get_or("matching", "greedy");
+  if (matching != "greedy" && matching != "optimal")
+    throw Usage_error("--matching must be greedy or optimal, got '" + matching + "'");
+  options.matching = matching == "optimal" ? Map_matching::optimal : Map_matching::greedy;
   if (args.has("crop-radius") && !args.has("crop-to-tracks")) throw Usage_error("--crop-radius goes with --crop-to-tracks");
   Outputs outputs(args, {"samples-out", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
@@ -177,7 +184,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
      << ", \"reconstruction_samples\": " << r.reconstruction_samples << ", \"ground_truth_edges\": " << gt.edges.size()
      << ", \"ground_truth_edges_before_crop\": " << gt_edges_before << ", \"threshold\": "
      << json_number(options.match_distance) << ", \"interval\": " << json_number(options.interval)
-     << ", \"bearing\": " << json_number(options.bearing_limit);
+     << ", \"bearing\": " << json_number(options.bearing_limit) << ", \"matching\": \"" << matching << "\"";
   if (lonlat)
     os << ", \"lonlat\": true, \"central_meridian\": " << json_number(projection.central_meridian)
        << ", \"origin_latitude\": " << json_number(projection.origin_latitude);

@@ -465,3 +465,165 @@ TEST(MapComparison, BadMapsAreNamed) {
   o.match_distance = 0;
   EXPECT_THROW(explain_unmatched_samples(r, o), std::invalid_argument);
 }
+
+namespace {
+// Total weight (threshold - distance) of a matching given as ground-truth partners; checks that every pair is
+// admissible and the two partner lists are inverse to each other.
+double matching_weight(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G, const Map_sample_matching& M,
+                       const Map_comparison_options& o) {
+  EXPECT_EQ(M.ground_truth_partner.size(), H.size());
+  EXPECT_EQ(M.reconstruction_partner.size(), G.size());
+  double w = 0;
+  std::size_t pairs = 0;
+  for (std::size_t h = 0; h < H.size(); ++h) {
+    const std::int64_t g = M.ground_truth_partner[h];
+    if (g < 0) continue;
+    ++pairs;
+    EXPECT_EQ(M.reconstruction_partner[std::size_t(g)], std::int64_t(h));
+    const double d = std::hypot(H[h].position[0] - G[std::size_t(g)].position[0],
+                                H[h].position[1] - G[std::size_t(g)].position[1]);
+    EXPECT_LE(d, o.match_distance);
+    EXPECT_LT(skeleton::internal::bearing_difference(H[h].bearing, G[std::size_t(g)].bearing), o.bearing_limit);
+    w += o.match_distance - d;
+  }
+  std::size_t back = 0;
+  for (const std::int64_t h : M.reconstruction_partner) back += h >= 0;
+  EXPECT_EQ(back, pairs);
+  EXPECT_EQ(M.matched, pairs);
+  return w;
+}
+
+// The largest total weight of any matching, by dynamic programming over the subsets of G (|G| <= 12).
+double brute_force_weight(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
+                          const Map_comparison_options& o) {
+  const std::size_t subsets = std::size_t(1) << G.size();
+  std::vector<double> best(subsets, -1), next(subsets);
+  best[0] = 0;
+  for (const Map_sample& h : H) {
+    next = best;  // h unmatched
+    for (std::size_t used = 0; used < subsets; ++used) {
+      if (best[used] < 0) continue;
+      for (std::size_t g = 0; g < G.size(); ++g) {
+        if (used >> g & 1) continue;
+        const double d = std::hypot(h.position[0] - G[g].position[0], h.position[1] - G[g].position[1]);
+        const double turn = skeleton::internal::bearing_difference(h.bearing, G[g].bearing);
+        if (d > o.match_distance || !(turn < o.bearing_limit)) continue;
+        const std::size_t to = used | std::size_t(1) << g;
+        next[to] = std::max(next[to], best[used] + o.match_distance - d);
+      }
+    }
+    best.swap(next);
+  }
+  return *std::max_element(best.begin(), best.end());
+}
+}  // namespace
+
+TEST(MapComparison, OptimalMatchingPinned) {
+  // Along a line (bearing 90): h0 at 0, h1 at 20; g0 at 11, g1 at 32. Greedy pairs the closest first, h1-g0
+  // (9 m), after which h0 has nothing within 15 m (g1 is 32 m away): 1 pair. The optimal matching takes h0-g0
+  // (11 m) and h1-g1 (12 m): weights 4 + 3 = 7 > 6.
+  const std::vector<Map_sample> H = {{{0, 0}, 90}, {{20, 0}, 90}}, G = {{{11, 0}, 90}, {{32, 0}, 90}};
+  Map_comparison_options o;
+  const Map_sample_matching greedy = match_map_samples(H, G, o);
+  EXPECT_EQ(greedy.matched, 1u);
+  EXPECT_EQ(greedy.ground_truth_partner, (std::vector<std::int64_t>{-1, 0}));
+  o.matching = Map_matching::optimal;
+  const Map_sample_matching optimal = match_map_samples(H, G, o);
+  EXPECT_EQ(optimal.matched, 2u);
+  EXPECT_EQ(optimal.ground_truth_partner, (std::vector<std::int64_t>{0, 1}));
+  EXPECT_EQ(optimal.reconstruction_partner, (std::vector<std::int64_t>{0, 1}));
+  EXPECT_DOUBLE_EQ(matching_weight(H, G, optimal, o), 7.0);
+  // A pair that would cost more than it brings is not made: h1 alone, g at 14 m (weight 1), nothing else.
+  EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{14, 0}, 90}}, o).matched, 1u);
+  EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{15.5, 0}, 90}}, o).matched, 0u);
+  // Bearings: perpendicular samples never pair, opposite directions do (direction-insensitive).
+  EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{1, 0}, 0}}, o).matched, 0u);
+  EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{1, 0}, 270}}, o).matched, 1u);
+  // Ties between coincident samples go to the smaller index.
+  const Map_sample_matching tie = match_map_samples({{{0, 0}, 90}}, {{{5, 0}, 90}, {{5, 0}, 90}, {{-5, 0}, 90}}, o);
+  EXPECT_EQ(tie.ground_truth_partner, (std::vector<std::int64_t>{0}));
+  // Empty sides.
+  EXPECT_EQ(match_map_samples({}, G, o).reconstruction_partner, (std::vector<std::int64_t>{-1, -1}));
+  EXPECT_EQ(match_map_samples(H, {}, o).ground_truth_partner, (std::vector<std::int64_t>{-1, -1}));
+}
+
+TEST(MapComparison, OptimalMatchingAgreesWithBruteForce) {
+  // Random small sample sets, some on a lattice (ties of distance) and with repeated points: the optimal
+  // matching's weight equals the largest weight of any matching, found by dynamic programming over subsets,
+  // and is never below the greedy matching's. Some draw must make greedy lose, or the test shows nothing.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 40);
+  std::uniform_int_distribution<int> count(0, 9), lattice(0, 4), bearing(0, 7);
+  std::size_t greedy_below = 0, repeated = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const bool on_lattice = trial % 3 == 0;
+    auto draw = [&](std::size_t n) {
+      std::vector<Map_sample> s;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (i > 0 && trial % 5 == 0 && i % 3 == 0) {  // a copy of an earlier sample
+          s.push_back(s[i / 2]);
+          ++repeated;
+          continue;
+        }
+        const double x = on_lattice ? 10.0 * lattice(rng) : u(rng), y = on_lattice ? 10.0 * lattice(rng) : u(rng);
+        s.push_back({{x, y}, 30.0 * bearing(rng)});
+      }
+      return s;
+    };
+    const std::vector<Map_sample> H = draw(std::size_t(count(rng))), G = draw(std::size_t(count(rng) + 1));
+    Map_comparison_options o;
+    o.bearing_limit = trial % 2 ? 45.0 : 100.0;
+    const double greedy = matching_weight(H, G, match_map_samples(H, G, o), o);
+    o.matching = Map_matching::optimal;
+    const Map_sample_matching M = match_map_samples(H, G, o);
+    const double optimal = matching_weight(H, G, M, o);
+    const double brute = brute_force_weight(H, G, o);
+    EXPECT_NEAR(optimal, brute, 1e-9) << "trial " << trial;
+    EXPECT_GE(optimal, greedy - 1e-9) << "trial " << trial;
+    greedy_below += greedy < optimal - 1e-9;
+    // Deterministic: the same input gives the same pairs.
+    EXPECT_EQ(match_map_samples(H, G, o).ground_truth_partner, M.ground_truth_partner);
+  }
+  EXPECT_GT(greedy_below, 10u);
+  EXPECT_GT(repeated, 0u);
+}
+
+TEST(MapComparison, OptimalMatchingOnChicago) {
+  // The published Kharita map against OSM cropped to the traces: the optimal matching pairs at least as many
+  // samples as the greedy one, and not many more (greedy is close to optimal on road maps: 7,592 and 7,644).
+  const Embedded_graph_2 gt = load("gt_trk25"), kharita = load("kharita");
+  Map_comparison_options o;
+  const Map_comparison_result greedy = compare_maps(gt, kharita, o);
+  o.matching = Map_matching::optimal;
+  o.keep_samples = true;
+  const Map_comparison_result optimal = compare_maps(gt, kharita, o);
+  EXPECT_EQ(optimal.ground_truth_samples, greedy.ground_truth_samples);
+  EXPECT_GE(optimal.matched, greedy.matched);
+  EXPECT_LE(optimal.matched, greedy.matched + greedy.matched / 100);
+  EXPECT_NEAR(optimal.f_score, 0.675, 0.005);
+  std::size_t partners = 0;
+  for (const std::int64_t g : optimal.ground_truth_partner) partners += g >= 0;
+  EXPECT_EQ(partners, optimal.matched);
+}
+
+TEST(MapComparison, BadSamplesAreNamed) {
+  Map_comparison_options o;
+  o.matching = Map_matching::optimal;
+  const std::vector<Map_sample> good = {{{0, 0}, 90}};
+  std::vector<Map_sample> bad = {{{0, 0}, 90}, {{1, 0}, 90}, {{std::nan(""), 0}, 90}};
+  try {
+    match_map_samples(good, bad, o);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("match_map_samples: reconstruction sample 2 has a non-finite"),
+              std::string::npos)
+        << e.what();
+  }
+  bad = {{{0, 0}, std::numeric_limits<double>::infinity()}};
+  EXPECT_THROW(match_map_samples(bad, good, o), std::invalid_argument);
+  o.matching = static_cast<Map_matching>(7);
+  EXPECT_THROW(match_map_samples(good, good, o), std::invalid_argument);
+  o = {};
+  o.match_distance = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(match_map_samples(good, good, o), std::invalid_argument);
+}

@@ -4,6 +4,7 @@
 #define FEATURERECON_SKELETON_MAP_COMPARISON_H
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/Uniform_grid.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
 
@@ -22,7 +23,9 @@
 #include <deque>
 #include <limits>
 #include <numeric>
+#include <queue>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace FeatureRecon {
@@ -34,6 +37,17 @@ struct Embedded_graph_2 {
   std::vector<Edge> edges;                        ///< undirected; repeated and reversed pairs are merged
 };
 
+/// How compare_maps() pairs the samples of the two maps.
+enum class Map_matching {
+  /// Pairs accepted by increasing distance, each ground-truth sample taking the nearest available admissible one
+  /// among its `candidates` nearest reconstruction samples (the GraphSamplingToolkit's matching; the default)
+  greedy,
+  /// A maximum-weight bipartite matching over every admissible pair, weight = match_distance - distance (exact up
+  /// to rounding; ties go to the smaller index). It matches at least as much weight as the greedy one; on the
+  /// Chicago maps 0.1-0.7 % more samples
+  optimal
+};
+
 /// Options of compare_maps() (the graph-sampling metric of Biagioni and Eriksson, global variant).
 struct Map_comparison_options {
   double match_distance = 15.0;  ///< samples match when at most this far apart (m); default 15
@@ -41,7 +55,10 @@ struct Map_comparison_options {
   /// Samples match when their direction-insensitive bearings (differences in [0, 90]) differ by less (degrees;
   /// above 90: bearings are ignored); default 45
   double bearing_limit = 45.0;
-  std::size_t candidates = 10;   ///< nearest reconstruction samples considered per ground-truth sample; default 10
+  /// Nearest reconstruction samples the greedy matching considers per ground-truth sample; default 10 (the
+  /// optimal matching considers every admissible pair)
+  std::size_t candidates = 10;
+  Map_matching matching = Map_matching::greedy;  ///< how samples are paired; default greedy
   bool keep_samples = false;     ///< also return both sample sets with their match flags (for diagnosis)
 };
 
@@ -225,20 +242,253 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
   return samples;
 }
 
-/// Compares a reconstructed map with a ground truth by the graph-sampling metric: both maps are sampled
-/// (sample_map()); each ground-truth sample h takes the nearest of its `candidates` nearest reconstruction
-/// samples whose bearing differs by less than the limit; pairs are then accepted greedily by increasing
-/// distance up to `match_distance`, a ground-truth sample whose partner was taken looking again among its
-/// nearest available ones. precision = m/|G|, recall = m/|H|, F = 2m/(|G| + |H|).
-/// \pre positive, finite options (checked; throws).
-inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, const Embedded_graph_2& reconstruction,
-                                          const Map_comparison_options& options = {}) {
-  const char* fn = "compare_maps";
+/// A matching of two sample sets (match_map_samples()).
+struct Map_sample_matching {
+  std::size_t matched = 0;  ///< number of pairs
+  /// For each ground-truth sample, the index of its partner among the reconstruction samples, or -1.
+  std::vector<std::int64_t> ground_truth_partner;
+  /// For each reconstruction sample, the index of its partner among the ground-truth samples, or -1.
+  std::vector<std::int64_t> reconstruction_partner;
+};
+
+namespace internal {
+/// \cond
+inline void check_map_comparison_options(const Map_comparison_options& options, const char* fn) {
   if (!(options.match_distance > 0 && std::isfinite(options.match_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "match_distance must be > 0, got ", options.match_distance);
   if (!(options.bearing_limit > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be > 0, got ", options.bearing_limit);
   if (options.candidates < 1) FeatureRecon::internal::throw_invalid_argument(fn, "candidates must be >= 1, got 0");
+  if (options.matching != Map_matching::greedy && options.matching != Map_matching::optimal)
+    FeatureRecon::internal::throw_invalid_argument(fn, "matching must be greedy or optimal, got ",
+                                                   static_cast<int>(options.matching));
+}
+
+inline void pair_samples(Map_sample_matching& M, std::size_t h, std::size_t g) {
+  M.ground_truth_partner[h] = static_cast<std::int64_t>(g);
+  M.reconstruction_partner[g] = static_cast<std::int64_t>(h);
+  ++M.matched;
+}
+
+/// Greedy: each ground-truth sample h proposes the nearest admissible available sample among its `candidates`
+/// nearest; proposals are accepted by increasing distance (ties: smaller h), a sample whose partner was taken
+/// proposing again.
+inline void match_greedy(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
+                         const Map_comparison_options& options, Map_sample_matching& M) {
+  using K = CGAL::Simple_cartesian<double>;
+  using Point = K::Point_2;
+  using Traits =
+      CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type, CGAL::Search_traits_2<K>>;
+  using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  std::vector<Point> gp;
+  for (const Map_sample& s : G) gp.emplace_back(s.position[0], s.position[1]);
+  std::vector<std::uint32_t> keys(G.size());
+  std::iota(keys.begin(), keys.end(), 0u);
+  typename Knn::Tree tree(keys.begin(), keys.end(), typename Knn::Tree::Splitter(),
+                          Traits(CGAL::make_property_map(gp)));
+  tree.build();
+  typename Knn::Distance dist(tree.traits().point_property_map());
+  std::vector<char> taken(G.size(), 0);
+  // Nearest admissible (bearing) available partner among the k nearest, or none.
+  auto best_partner = [&](std::size_t h, double& d) -> std::int64_t {
+    const Point q(H[h].position[0], H[h].position[1]);
+    // At most |G| neighbours exist (and more than 2^32 - 1 would wrap to 0 in the cast).
+    const std::size_t k = std::min<std::size_t>(options.candidates, G.size());
+    Knn search(tree, q, static_cast<unsigned>(std::min<std::size_t>(k, 0xffffffffu)), 0.0, true, dist);
+    for (const auto& nb : search) {
+      const std::uint32_t g = nb.first;
+      if (taken[g]) continue;
+      if (bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
+        d = std::sqrt(nb.second);
+        return g;
+      }
+    }
+    return -1;
+  };
+  struct Candidate {
+    double distance;
+    std::size_t h;
+    std::int64_t g;
+  };
+  auto later = [](const Candidate& a, const Candidate& b) {
+    return a.distance > b.distance || (a.distance == b.distance && a.h > b.h);
+  };
+  std::vector<Candidate> heap;
+  for (std::size_t h = 0; h < H.size(); ++h) {
+    double d = 0;
+    const std::int64_t g = best_partner(h, d);
+    if (g >= 0) heap.push_back({d, h, g});
+  }
+  std::make_heap(heap.begin(), heap.end(), later);
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), later);
+    Candidate c = heap.back();
+    heap.pop_back();
+    if (c.distance > options.match_distance) break;
+    if (!taken[c.g]) {
+      taken[c.g] = 1;
+      pair_samples(M, c.h, static_cast<std::size_t>(c.g));
+      continue;
+    }
+    double d = 0;
+    const std::int64_t g = best_partner(c.h, d);
+    if (g >= 0) {
+      heap.push_back({d, c.h, g});
+      std::push_heap(heap.begin(), heap.end(), later);
+    }
+  }
+}
+
+/// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T = match_distance,
+/// bearings within the limit). Every ground-truth sample h also gets a private "unmatched" partner of cost T, so
+/// that minimising the total cost (d for a pair, T for an unmatched h) is maximising the weight; this assignment
+/// problem is solved by successive shortest augmenting paths (Dijkstra on reduced costs with vertex potentials,
+/// one ground-truth sample at a time, stopping at the first free sample reached). A search only visits what
+/// lies closer than its augmenting path: the samples around h on the few lines near it.
+inline void match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
+                          const Map_comparison_options& options, Map_sample_matching& M, const char* fn) {
+  const double T = options.match_distance;
+  const std::size_t nh = H.size(), ng = G.size();
+  // Admissible pairs of each h, by a grid of cells T (exact distance test; grid order is deterministic).
+  std::vector<std::array<double, 2>> gp(ng);
+  for (std::size_t g = 0; g < ng; ++g) gp[g] = G[g].position;
+  const FeatureRecon::internal::Uniform_grid<2> grid(gp, T);
+  std::vector<std::size_t> first(nh + 1, 0);
+  std::vector<std::uint32_t> partner;
+  std::vector<double> cost;
+  constexpr std::size_t max_pairs = std::size_t(1) << 27;  // 1.5 GB of pairs: maps stacked on themselves
+  for (std::size_t h = 0; h < nh; ++h) {
+    grid.for_each_candidate(H[h].position, [&](std::uint32_t g) {
+      const double d = std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]);
+      if (d <= T && bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
+        partner.push_back(g);
+        cost.push_back(d);
+      }
+    });
+    if (partner.size() > max_pairs)
+      FeatureRecon::internal::throw_invalid_argument(fn, "more than 2^27 sample pairs lie within match_distance (",
+                                                     T, " m) of each other (maps stacked on themselves?): the "
+                                                     "optimal matching would not fit in memory; use the greedy one");
+    first[h + 1] = partner.size();
+  }
+  const std::size_t none = std::numeric_limits<std::size_t>::max();
+  std::vector<double> pot_h(nh, 0), pot_g(ng, 0), dist_g(ng, 0), dist_h(nh, 0);
+  std::vector<std::size_t> mate_h(nh, none), mate_g(ng, none), from_g(ng, none), stamp_g(ng, 0);
+  std::vector<char> done_g(ng, 0);
+  std::vector<std::size_t> reached_h, settled_g;
+  // Heap of (distance, node): node < ng a reconstruction sample, ng + h the "unmatched" partner of h. At equal
+  // distance the smaller node is settled first: a real partner before "unmatched", smaller indices first.
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  for (std::size_t s = 0; s < nh; ++s) {
+    if (first[s] == first[s + 1]) continue;  // no admissible partner: unmatched
+    const std::size_t phase = s + 1;
+    reached_h.assign(1, s);
+    settled_g.clear();
+    dist_h[s] = 0;
+    heap = {};
+    // Reduced cost of the arc x -> g: cost + pot_h[x] - pot_g[g] >= 0 (up to rounding: clamped).
+    auto relax = [&](std::size_t x, double d) {
+      for (std::size_t k = first[x]; k < first[x + 1]; ++k) {
+        const std::size_t g = partner[k];
+        if (g == mate_h[x] || (stamp_g[g] == phase && done_g[g])) continue;
+        const double nd = std::max(d, d + cost[k] + pot_h[x] - pot_g[g]);
+        if (stamp_g[g] != phase || nd < dist_g[g]) {
+          stamp_g[g] = phase;
+          done_g[g] = 0;
+          dist_g[g] = nd;
+          from_g[g] = x;
+          heap.push({nd, g});
+        }
+      }
+      heap.push({std::max(d, d + T + pot_h[x]), ng + x});  // its "unmatched" partner, potential 0
+    };
+    relax(s, 0);
+    std::size_t end = none;
+    double D = 0;
+    while (!heap.empty()) {
+      const auto [d, node] = heap.top();
+      heap.pop();
+      if (node >= ng) {  // x gives up its partner and stays unmatched
+        end = node;
+        D = d;
+        break;
+      }
+      if (done_g[node] || d != dist_g[node]) continue;  // a stale entry
+      done_g[node] = 1;
+      if (mate_g[node] == none) {
+        end = node;
+        D = d;
+        break;
+      }
+      settled_g.push_back(node);
+      const std::size_t x = mate_g[node];
+      dist_h[x] = d;
+      reached_h.push_back(x);
+      relax(x, d);
+    }
+    FEATURERECON_assertion(end != none);  // the "unmatched" partner of s is always reachable
+    // Potentials: every node settled closer than D moves by its distance minus D; reduced costs stay >= 0 and
+    // are 0 along the augmenting path.
+    for (const std::size_t x : reached_h) pot_h[x] -= D - dist_h[x];
+    for (const std::size_t g : settled_g) pot_g[g] -= D - dist_g[g];
+    // Augment: flip the path back to s.
+    std::size_t x = end >= ng ? end - ng : from_g[end];
+    std::size_t g = end >= ng ? none : end;
+    while (true) {
+      const std::size_t previous = mate_h[x];
+      mate_h[x] = g;
+      if (g != none) mate_g[g] = x;
+      if (x == s) break;
+      g = previous;
+      x = from_g[g];
+    }
+  }
+  for (std::size_t h = 0; h < nh; ++h)
+    if (mate_h[h] != none) pair_samples(M, h, mate_h[h]);
+}
+/// \endcond
+}  // namespace internal
+
+/// Matches the samples of two maps (the pairing step of compare_maps()): a ground-truth sample h and a
+/// reconstruction sample g may pair when at most match_distance apart and their direction-insensitive bearings
+/// differ by less than bearing_limit; options.matching says how pairs are chosen (Map_matching).
+/// \throws std::invalid_argument for options as compare_maps() refuses them or a non-finite position or bearing
+///   (naming the map and the sample).
+inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& ground_truth,
+                                             const std::vector<Map_sample>& reconstruction,
+                                             const Map_comparison_options& options = {}) {
+  const char* fn = "match_map_samples";
+  internal::check_map_comparison_options(options, fn);
+  for (const auto* set : {&ground_truth, &reconstruction})
+    for (std::size_t i = 0; i < set->size(); ++i) {
+      const Map_sample& s = (*set)[i];
+      if (!std::isfinite(s.position[0]) || !std::isfinite(s.position[1]) || !std::isfinite(s.bearing))
+        FeatureRecon::internal::throw_invalid_argument(fn, set == &ground_truth ? "ground-truth" : "reconstruction",
+                                                       " sample ", i, " has a non-finite position or bearing");
+    }
+  Map_sample_matching M;
+  M.ground_truth_partner.assign(ground_truth.size(), -1);
+  M.reconstruction_partner.assign(reconstruction.size(), -1);
+  if (ground_truth.empty() || reconstruction.empty()) return M;
+  if (options.matching == Map_matching::optimal)
+    internal::match_optimal(ground_truth, reconstruction, options, M, fn);
+  else
+    internal::match_greedy(ground_truth, reconstruction, options, M);
+  return M;
+}
+
+/// Compares a reconstructed map with a ground truth by the graph-sampling metric: both maps are sampled
+/// (sample_map()) and their samples matched (match_map_samples(); by default greedily: each ground-truth sample
+/// h takes the nearest of its `candidates` nearest reconstruction samples whose bearing differs by less than
+/// the limit; pairs are accepted by increasing distance up to `match_distance`, a ground-truth sample whose
+/// partner was taken looking again among its nearest available ones). precision = m/|G|, recall = m/|H|,
+/// F = 2m/(|G| + |H|).
+/// \pre positive, finite options (checked; throws).
+inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, const Embedded_graph_2& reconstruction,
+                                          const Map_comparison_options& options = {}) {
+  const char* fn = "compare_maps";
+  internal::check_map_comparison_options(options, fn);
   // Says which map is bad.
   auto sampled = [&](const Embedded_graph_2& g, const char* which) {
     try {
@@ -247,99 +497,34 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
       throw std::invalid_argument(std::string(fn) + ": " + which + ": " + e.what());
     }
   };
-  const std::vector<Map_sample> H = sampled(ground_truth, "ground truth");
-  const std::vector<Map_sample> G = sampled(reconstruction, "reconstruction");
+  std::vector<Map_sample> H = sampled(ground_truth, "ground truth");
+  std::vector<Map_sample> G = sampled(reconstruction, "reconstruction");
   Map_comparison_result r;
   r.ground_truth_samples = H.size();
   r.reconstruction_samples = G.size();
+  Map_sample_matching M = match_map_samples(H, G, options);
+  r.matched = M.matched;
   if (options.keep_samples) {
-    r.ground_truth_sample_list = H;
-    r.reconstruction_sample_list = G;
-    r.ground_truth_partner.assign(H.size(), -1);
-    r.reconstruction_partner.assign(G.size(), -1);
-  }
-  if (!H.empty() && !G.empty()) {
-    using K = CGAL::Simple_cartesian<double>;
-    using Point = K::Point_2;
-    using Traits = CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type,
-                                               CGAL::Search_traits_2<K>>;
-    using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
-    std::vector<Point> gp;
-    for (const Map_sample& s : G) gp.emplace_back(s.position[0], s.position[1]);
-    std::vector<std::uint32_t> keys(G.size());
-    std::iota(keys.begin(), keys.end(), 0u);
-    typename Knn::Tree tree(keys.begin(), keys.end(), typename Knn::Tree::Splitter(),
-                            Traits(CGAL::make_property_map(gp)));
-    tree.build();
-    typename Knn::Distance dist(tree.traits().point_property_map());
-    std::vector<char> taken(G.size(), 0);
-    // Nearest admissible (bearing) available partner among the k nearest, or none.
-    auto best_partner = [&](std::size_t h, double& d) -> std::int64_t {
-      const Point q(H[h].position[0], H[h].position[1]);
-      // At most |G| neighbours exist (and more than 2^32 - 1 would wrap to 0 in the cast).
-      const std::size_t k = std::min<std::size_t>(options.candidates, G.size());
-      Knn search(tree, q, static_cast<unsigned>(std::min<std::size_t>(k, 0xffffffffu)), 0.0, true, dist);
-      for (const auto& nb : search) {
-        const std::uint32_t g = nb.first;
-        if (taken[g]) continue;
-        if (internal::bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
-          d = std::sqrt(nb.second);
-          return g;
-        }
-      }
-      return -1;
-    };
-    struct Candidate {
-      double distance;
-      std::size_t h;
-      std::int64_t g;
-    };
-    auto later = [](const Candidate& a, const Candidate& b) {
-      return a.distance > b.distance || (a.distance == b.distance && a.h > b.h);
-    };
-    std::vector<Candidate> heap;
-    for (std::size_t h = 0; h < H.size(); ++h) {
-      double d = 0;
-      const std::int64_t g = best_partner(h, d);
-      if (g >= 0) heap.push_back({d, h, g});
-    }
-    std::make_heap(heap.begin(), heap.end(), later);
-    while (!heap.empty()) {
-      std::pop_heap(heap.begin(), heap.end(), later);
-      Candidate c = heap.back();
-      heap.pop_back();
-      if (c.distance > options.match_distance) break;
-      if (!taken[c.g]) {
-        taken[c.g] = 1;
-        ++r.matched;
-        if (options.keep_samples) {
-          r.ground_truth_partner[c.h] = c.g;
-          r.reconstruction_partner[static_cast<std::size_t>(c.g)] = static_cast<std::int64_t>(c.h);
-        }
-        continue;
-      }
-      double d = 0;
-      const std::int64_t g = best_partner(c.h, d);
-      if (g >= 0) {
-        heap.push_back({d, c.h, g});
-        std::push_heap(heap.begin(), heap.end(), later);
-      }
-    }
+    r.ground_truth_sample_list = std::move(H);
+    r.reconstruction_sample_list = std::move(G);
+    r.ground_truth_partner = std::move(M.ground_truth_partner);
+    r.reconstruction_partner = std::move(M.reconstruction_partner);
   }
   const double m = static_cast<double>(r.matched);
-  r.precision = G.empty() ? 0.0 : m / static_cast<double>(G.size());
-  r.recall = H.empty() ? 0.0 : m / static_cast<double>(H.size());
-  r.f_score = (G.size() + H.size()) == 0 ? 0.0 : 2 * m / static_cast<double>(G.size() + H.size());
+  const std::size_t nh = r.ground_truth_samples, ng = r.reconstruction_samples;
+  r.precision = ng == 0 ? 0.0 : m / static_cast<double>(ng);
+  r.recall = nh == 0 ? 0.0 : m / static_cast<double>(nh);
+  r.f_score = (ng + nh) == 0 ? 0.0 : 2 * m / static_cast<double>(ng + nh);
   return r;
 }
 
 /// Why the unmatched samples of one map found no partner in the other (see explain_unmatched_samples()).
 struct Unmatched_sample_counts {
-  std::size_t taken = 0;     ///< an aligned sample of the other map lies within the threshold, yet the greedy
+  std::size_t taken = 0;     ///< an aligned sample of the other map lies within the threshold, yet the
                              ///< matching paired the two with nothing or with others: mostly because that sample
                              ///< was matched to another, where the maps differ in multiplicity (a parallel line, e.g.
                              ///< the second carriageway of a divided road, present in one map only); rarely because
-                             ///< it was not among the `candidates` nearest ones the matching considers
+                             ///< it was not among the `candidates` nearest ones the greedy matching considers
   std::size_t offset = 0;    ///< the nearest aligned sample of the other map lies between 1 and 2 thresholds away
   std::size_t crossing = 0;  ///< within 2 thresholds the other map has samples, none aligned (a street crossing)
   std::size_t absent = 0;    ///< the other map has nothing within 2 thresholds
