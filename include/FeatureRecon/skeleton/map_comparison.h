@@ -24,6 +24,7 @@
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -340,112 +341,134 @@ inline void match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
 }
 
 /// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T = match_distance,
-/// bearings within the limit). Every ground-truth sample h also gets a private "unmatched" partner of cost T, so
-/// that minimising the total cost (d for a pair, T for an unmatched h) is maximising the weight; this assignment
-/// problem is solved by successive shortest augmenting paths (Dijkstra on reduced costs with vertex potentials,
-/// one ground-truth sample at a time, stopping at the first free sample reached). A search only visits what
-/// lies closer than its augmenting path: the samples around h on the few lines near it.
-inline void match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
-                          const Map_comparison_options& options, Map_sample_matching& M, const char* fn) {
+/// bearings within the limit). The smaller sample set L is the side that is assigned: every sample of L also gets
+/// a private "unmatched" partner of cost T, so that minimising the total cost (d for a pair, T for an unmatched
+/// sample) is maximising the weight; this assignment problem is solved by successive shortest augmenting paths
+/// (Dijkstra on reduced costs with vertex potentials, one sample of L at a time, stopping at the first free
+/// sample reached). A search only visits what lies closer than its augmenting path: the samples around the new
+/// one on the few lines near it. At equal distance a free sample is settled first (a dense cluster of equal
+/// distances ends its search there), then a matched one, then an "unmatched" partner (a tie between pairing
+/// and leaving unmatched goes to pairing), smaller indices first. Returns for each sample of
+/// L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are refused (memory).
+inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L, const std::vector<Map_sample>& R,
+                                                   const Map_comparison_options& options, std::size_t max_pairs,
+                                                   const char* fn) {
   const double T = options.match_distance;
-  const std::size_t nh = H.size(), ng = G.size();
-  // Admissible pairs of each h, by a grid of cells T (exact distance test; grid order is deterministic).
-  std::vector<std::array<double, 2>> gp(ng);
-  for (std::size_t g = 0; g < ng; ++g) gp[g] = G[g].position;
-  const FeatureRecon::internal::Uniform_grid<2> grid(gp, T);
-  std::vector<std::size_t> first(nh + 1, 0);
+  const std::size_t nl = L.size(), nr = R.size();
+  // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
+  std::vector<std::array<double, 2>> rp(nr);
+  for (std::size_t g = 0; g < nr; ++g) rp[g] = R[g].position;
+  const FeatureRecon::internal::Uniform_grid<2> grid(rp, T);
+  std::vector<std::size_t> first(nl + 1, 0);
   std::vector<std::uint32_t> partner;
   std::vector<double> cost;
-  constexpr std::size_t max_pairs = std::size_t(1) << 27;  // 1.5 GB of pairs: maps stacked on themselves
-  for (std::size_t h = 0; h < nh; ++h) {
-    grid.for_each_candidate(H[h].position, [&](std::uint32_t g) {
-      const double d = std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]);
-      if (d <= T && bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
+  for (std::size_t h = 0; h < nl; ++h) {
+    grid.for_each_candidate(L[h].position, [&](std::uint32_t g) {
+      const double d = std::hypot(R[g].position[0] - L[h].position[0], R[g].position[1] - L[h].position[1]);
+      if (d <= T && bearing_difference(L[h].bearing, R[g].bearing) < options.bearing_limit) {
         partner.push_back(g);
         cost.push_back(d);
       }
     });
     if (partner.size() > max_pairs)
-      FeatureRecon::internal::throw_invalid_argument(fn, "more than 2^27 sample pairs lie within match_distance (",
-                                                     T, " m) of each other (maps stacked on themselves?): the "
-                                                     "optimal matching would not fit in memory; use the greedy one");
+      FeatureRecon::internal::throw_invalid_argument(fn, "more than ", max_pairs, " sample pairs lie within ",
+                                                     "match_distance (", T, " m) of each other (maps stacked on ",
+                                                     "themselves?): too many for the optimal matching; use the "
+                                                     "greedy one");
     first[h + 1] = partner.size();
   }
   const std::size_t none = std::numeric_limits<std::size_t>::max();
-  std::vector<double> pot_h(nh, 0), pot_g(ng, 0), dist_g(ng, 0), dist_h(nh, 0);
-  std::vector<std::size_t> mate_h(nh, none), mate_g(ng, none), from_g(ng, none), stamp_g(ng, 0);
-  std::vector<char> done_g(ng, 0);
-  std::vector<std::size_t> reached_h, settled_g;
-  // Heap of (distance, node): node < ng a reconstruction sample, ng + h the "unmatched" partner of h. At equal
-  // distance the smaller node is settled first: a real partner before "unmatched", smaller indices first.
-  using Entry = std::pair<double, std::size_t>;
+  std::vector<double> pot_l(nl, 0), pot_r(nr, 0), dist_r(nr, 0), dist_l(nl, 0);
+  std::vector<std::size_t> mate_l(nl, none), mate_r(nr, none), from_r(nr, none), stamp_r(nr, 0);
+  std::vector<char> done_r(nr, 0);
+  std::vector<std::size_t> reached_l, settled_r;
+  // Heap of (distance, class, node): node < nr a sample of R (class 0 free, 1 matched), nr + x the "unmatched"
+  // partner of x (class 2).
+  using Entry = std::tuple<double, int, std::size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
-  for (std::size_t s = 0; s < nh; ++s) {
+  for (std::size_t s = 0; s < nl; ++s) {
     if (first[s] == first[s + 1]) continue;  // no admissible partner: unmatched
     const std::size_t phase = s + 1;
-    reached_h.assign(1, s);
-    settled_g.clear();
-    dist_h[s] = 0;
+    reached_l.assign(1, s);
+    settled_r.clear();
+    dist_l[s] = 0;
     heap = {};
-    // Reduced cost of the arc x -> g: cost + pot_h[x] - pot_g[g] >= 0 (up to rounding: clamped).
+    // Reduced cost of the arc x -> g: cost + pot_l[x] - pot_r[g] >= 0 (up to rounding: clamped).
     auto relax = [&](std::size_t x, double d) {
       for (std::size_t k = first[x]; k < first[x + 1]; ++k) {
         const std::size_t g = partner[k];
-        if (g == mate_h[x] || (stamp_g[g] == phase && done_g[g])) continue;
-        const double nd = std::max(d, d + cost[k] + pot_h[x] - pot_g[g]);
-        if (stamp_g[g] != phase || nd < dist_g[g]) {
-          stamp_g[g] = phase;
-          done_g[g] = 0;
-          dist_g[g] = nd;
-          from_g[g] = x;
-          heap.push({nd, g});
+        if (g == mate_l[x] || (stamp_r[g] == phase && done_r[g])) continue;
+        const double nd = std::max(d, d + cost[k] + pot_l[x] - pot_r[g]);
+        if (stamp_r[g] != phase || nd < dist_r[g]) {
+          stamp_r[g] = phase;
+          done_r[g] = 0;
+          dist_r[g] = nd;
+          from_r[g] = x;
+          heap.push({nd, mate_r[g] == none ? 0 : 1, g});
         }
       }
-      heap.push({std::max(d, d + T + pot_h[x]), ng + x});  // its "unmatched" partner, potential 0
+      heap.push({std::max(d, d + T + pot_l[x]), 2, nr + x});  // its "unmatched" partner, potential 0
     };
     relax(s, 0);
     std::size_t end = none;
     double D = 0;
     while (!heap.empty()) {
-      const auto [d, node] = heap.top();
+      const auto [d, type, node] = heap.top();
       heap.pop();
-      if (node >= ng) {  // x gives up its partner and stays unmatched
+      if (type == 2) {  // x gives up its partner and stays unmatched
         end = node;
         D = d;
         break;
       }
-      if (done_g[node] || d != dist_g[node]) continue;  // a stale entry
-      done_g[node] = 1;
-      if (mate_g[node] == none) {
+      if (done_r[node] || d != dist_r[node]) continue;  // a stale entry
+      done_r[node] = 1;
+      if (type == 0) {
         end = node;
         D = d;
         break;
       }
-      settled_g.push_back(node);
-      const std::size_t x = mate_g[node];
-      dist_h[x] = d;
-      reached_h.push_back(x);
+      settled_r.push_back(node);
+      const std::size_t x = mate_r[node];
+      dist_l[x] = d;
+      reached_l.push_back(x);
       relax(x, d);
     }
     FEATURERECON_assertion(end != none);  // the "unmatched" partner of s is always reachable
     // Potentials: every node settled closer than D moves by its distance minus D; reduced costs stay >= 0 and
     // are 0 along the augmenting path.
-    for (const std::size_t x : reached_h) pot_h[x] -= D - dist_h[x];
-    for (const std::size_t g : settled_g) pot_g[g] -= D - dist_g[g];
+    for (const std::size_t x : reached_l) pot_l[x] -= D - dist_l[x];
+    for (const std::size_t g : settled_r) pot_r[g] -= D - dist_r[g];
     // Augment: flip the path back to s.
-    std::size_t x = end >= ng ? end - ng : from_g[end];
-    std::size_t g = end >= ng ? none : end;
+    std::size_t x = end >= nr ? end - nr : from_r[end];
+    std::size_t g = end >= nr ? none : end;
     while (true) {
-      const std::size_t previous = mate_h[x];
-      mate_h[x] = g;
-      if (g != none) mate_g[g] = x;
+      const std::size_t previous = mate_l[x];
+      mate_l[x] = g;
+      if (g != none) mate_r[g] = x;
       if (x == s) break;
       g = previous;
-      x = from_g[g];
+      x = from_r[g];
     }
   }
-  for (std::size_t h = 0; h < nh; ++h)
-    if (mate_h[h] != none) pair_samples(M, h, mate_h[h]);
+  return mate_l;
+}
+
+/// The optimal matching of H and G: the smaller set is assigned (optimal_assignment()), so that the samples
+/// left over search only while the other side still has free samples near them (with the larger set assigned,
+/// each surplus sample of a dense cluster would search all of it).
+inline void match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
+                          const Map_comparison_options& options, Map_sample_matching& M, const char* fn,
+                          std::size_t max_pairs = std::size_t(1) << 26) {
+  const bool swap = G.size() < H.size();
+  const std::vector<std::size_t> mate = swap ? optimal_assignment(G, H, options, max_pairs, fn)
+                                             : optimal_assignment(H, G, options, max_pairs, fn);
+  for (std::size_t i = 0; i < mate.size(); ++i)
+    if (mate[i] != std::numeric_limits<std::size_t>::max()) {
+      if (swap)
+        pair_samples(M, mate[i], i);
+      else
+        pair_samples(M, i, mate[i]);
+    }
 }
 /// \endcond
 }  // namespace internal
