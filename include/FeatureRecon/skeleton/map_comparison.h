@@ -44,8 +44,8 @@ enum class Map_matching {
   /// among its `candidates` nearest reconstruction samples (the GraphSamplingToolkit's matching; the default)
   greedy,
   /// A maximum-weight bipartite matching over every admissible pair, weight = match_distance - distance (exact up
-  /// to rounding; ties go to the smaller index). It matches at least as much weight as the greedy one; on the
-  /// Chicago maps 0.1-0.7 % more samples
+  /// to rounding; deterministic). It matches at least as much weight as the greedy one; on the Chicago maps
+  /// 0.1-0.7 % more samples
   optimal
 };
 
