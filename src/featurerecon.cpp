@@ -162,10 +162,6 @@ const std::vector<Command>& commands() {
        "prints JSON: precision, recall, f_score (null over no samples) and the counts. Bearing differences lie\n"
        "in [0, 90]: a BEARING above 90 ignores bearings, 90 still refuses perpendicular samples.\n"
        "\n"
-       "  --matching       greedy (default): pairs accepted by increasing distance, each ground-truth sample\n"
-       "                   choosing among its 10 nearest (the GraphSamplingToolkit's matching); optimal: a\n"
-       "                   maximum-weight bipartite matching over all admissible pairs, weight THRESHOLD -\n"
-       "                   distance (at least the greedy weight; on the Chicago maps 0.1-0.7 % more pairs)\n"
        "  GT_*, REC_*      vertex files 'id,x,y' and edge files 'id,v1,v2[,flag]' (metres, or degrees with --lonlat;\n"
        "                   edges undirected)\n"
        "  --crop-to-tracks keep only ground-truth edges whose samples all lie within --crop-radius (default 25 m)\n"
@@ -184,7 +180,11 @@ const std::vector<Command>& commands() {
        "                   truth, the missed and the spurious samples, and the recall within the driven truth\n"
        "  --lonlat         every file gives longitude and latitude in degrees (WGS84): all are projected to\n"
        "                   metres with one transverse Mercator centred on them (as skeleton --lonlat), so that\n"
-       "                   THRESHOLD, INTERVAL and the crop radius stay metres; --samples-out in degrees\n",
+       "                   THRESHOLD, INTERVAL and the crop radius stay metres; --samples-out in degrees\n"
+       "  --matching       greedy (default): pairs accepted by increasing distance, each ground-truth sample\n"
+       "                   choosing among its 10 nearest (the GraphSamplingToolkit's matching); optimal: a\n"
+       "                   maximum-weight bipartite matching over all admissible pairs, weight THRESHOLD -\n"
+       "                   distance (at least the greedy weight; on the Chicago maps 0.1-0.7 % more pairs)\n",
        run_evaluate_map},
       {"synthetic-city", "Simulate GPS trips in a city whose streets are known (test data for road maps)",
        "usage: featurerecon synthetic-city --out-tracks TRACKS --out-vertices V --out-edges E\n"
