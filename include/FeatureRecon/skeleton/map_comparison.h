@@ -585,45 +585,26 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
       r.ground_truth_partner.size() != H.size() || r.reconstruction_partner.size() != G.size())
     FeatureRecon::internal::throw_invalid_argument("explain_unmatched_samples",
                                                    "the comparison was not computed with keep_samples");
-  if (!(options.match_distance > 0 && std::isfinite(options.match_distance)) || !(options.bearing_limit > 0))
-    FeatureRecon::internal::throw_invalid_argument("explain_unmatched_samples", "match_distance must be finite and > 0 "
-                                                   "and bearing_limit > 0, got ", options.match_distance, " and ",
-                                                   options.bearing_limit);
+  internal::check_map_comparison_options(options, "explain_unmatched_samples");
   const double t = options.match_distance, reach = 2 * t;
   // Classifies the unmatched samples of `from` against the samples of `to` (bucketed on a grid of cell `reach`).
   auto classify = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& from_partner,
                       const std::vector<Map_sample>& to) {
     Unmatched_sample_counts c;
-    // Cells are keyed by their integer coordinates (cells beyond 2^32 only collide in the hash: every distance
-    // is checked again).
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
-    // Clamped: far-out cells only share buckets (every distance is checked again).
-    auto cell = [reach](double v) {
-      return static_cast<std::int64_t>(std::max(-4e18, std::min(4e18, std::floor(v / reach))));
-    };
-    auto key = [](std::int64_t cx, std::int64_t cy) {
-      return (static_cast<std::uint64_t>(cx) << 32) ^ (static_cast<std::uint64_t>(cy) & 0xffffffffULL);
-    };
-    for (std::size_t j = 0; j < to.size(); ++j)
-      grid[key(cell(to[j].position[0]), cell(to[j].position[1]))].push_back(static_cast<std::uint32_t>(j));
+    std::vector<std::array<double, 2>> positions(to.size());
+    for (std::size_t j = 0; j < to.size(); ++j) positions[j] = to[j].position;
+    const FeatureRecon::internal::Uniform_grid<2> grid(positions, reach);
     for (std::size_t i = 0; i < from.size(); ++i) {
       if (from_partner[i] >= 0) continue;
-      const double x = from[i].position[0], y = from[i].position[1];
-      const std::int64_t cx = cell(x), cy = cell(y);
       double aligned = std::numeric_limits<double>::infinity();
       bool any = false;
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-          const auto it = grid.find(key(cx + dx, cy + dy));
-          if (it == grid.end()) continue;
-          for (const std::uint32_t j : it->second) {
-            const double d = std::hypot(to[j].position[0] - x, to[j].position[1] - y);
-            if (d > reach) continue;
-            any = true;
-            if (internal::bearing_difference(from[i].bearing, to[j].bearing) < options.bearing_limit)
-              aligned = std::min(aligned, d);
-          }
-        }
+      grid.for_each_candidate(from[i].position, [&](std::uint32_t j) {
+        const double d = std::hypot(to[j].position[0] - from[i].position[0], to[j].position[1] - from[i].position[1]);
+        if (d > reach) return;
+        any = true;
+        if (internal::bearing_difference(from[i].bearing, to[j].bearing) < options.bearing_limit)
+          aligned = std::min(aligned, d);
+      });
       internal::count_unmatched(aligned, any, t, c);
     }
     return c;
