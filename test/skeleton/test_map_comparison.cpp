@@ -60,6 +60,42 @@ TEST(MapComparison, SamplingSpacingAndCounts) {
   EXPECT_THROW(sample_map(bad, 5.0), std::invalid_argument);
 }
 
+TEST(MapComparison, EdgesOfLengthZeroGiveNoSample) {
+  // Vertices 1 and 2 share a position: the edge between them has no bearing. The walk passes it (the 5 m
+  // spacing continues onto the north-going edge) and every sample carries the bearing of a real edge.
+  Embedded_graph_2 g;
+  g.positions = {{0, 0}, {20, 0}, {20, 0}, {20, 20}};
+  g.edges = {{0, 1}, {1, 2}, {2, 3}};
+  const auto s = sample_map(g, 5.0);
+  ASSERT_EQ(s.size(), 9u);  // 40 m of edges, samples 5 m apart along the path (the corner once)
+  std::size_t east = 0, north = 0;
+  for (const auto& x : s) {
+    if (x.bearing == 90.0) {
+      ++east;
+      EXPECT_EQ(x.position[1], 0.0);
+    } else {
+      EXPECT_EQ(x.bearing, 0.0);
+      EXPECT_EQ(x.position[0], 20.0);
+      EXPECT_GT(x.position[1], 0.0);
+      ++north;
+    }
+  }
+  EXPECT_EQ(east, 5u);
+  EXPECT_EQ(north, 4u);
+  // A component of length 0 gives nothing (it gave one sample of heading 0, north), so a map of it matches
+  // nothing, not even a north-south street through it.
+  Embedded_graph_2 point;
+  point.positions = {{0, 0}, {0, 0}};
+  point.edges = {{0, 1}};
+  EXPECT_TRUE(sample_map(point, 5.0).empty());
+  Embedded_graph_2 street;
+  street.positions = {{0, -50}, {0, 50}};
+  street.edges = {{0, 1}};
+  const Map_comparison_result r = compare_maps(street, point);
+  EXPECT_EQ(r.reconstruction_samples, 0u);
+  EXPECT_EQ(r.matched, 0u);
+}
+
 TEST(MapComparison, IdenticalShiftedAndPerpendicularMaps) {
   const Embedded_graph_2 a = grid_map(5, 100.0);
   const Map_comparison_result same = compare_maps(a, a);

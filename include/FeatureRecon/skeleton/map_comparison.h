@@ -101,7 +101,8 @@ inline double bearing_difference(double a, double b) {
 
 /// Samples a map every `interval` metres: per connected component, a breadth-first walk over the edges from
 /// a root at half the component's cumulative edge length (edges in breadth-first order from the component's
-/// smallest vertex), the leftover offset carried across vertices. Each sample keeps its edge's bearing.
+/// smallest vertex), the leftover offset carried across vertices. Each sample keeps its edge's bearing. Edges
+/// of length 0 (distinct vertices at one position) have no bearing and give no sample; the walk passes them.
 /// \pre interval > 0 and finite (checked; throws); edge indices in range (checked; throws naming the edge).
 inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double interval) {
   const char* fn = "sample_map";
@@ -156,7 +157,7 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
     const auto& b = g.positions[to];
     const double len = length(s.edge), bearing = internal::bearing_of(a, b);
     double t = s.offset;
-    for (; t <= len; t += interval) {
+    for (; len > 0 && t <= len; t += interval) {  // an edge of length 0 has no bearing: no sample, offset kept
       const double u = len > 0 ? t / len : 0.0;
       samples.push_back({{a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])}, bearing});
     }
@@ -190,6 +191,7 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
     }
     double total = 0;
     for (const std::size_t e : order) total += length(e);
+    if (!(total > 0)) continue;  // every edge of length 0: nothing to sample, no bearing
     // Root: the point at half the cumulative length; walk both ways from it.
     double acc = 0;
     std::size_t root_edge = order.front();
