@@ -228,7 +228,7 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
+                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
                      int(args.has("graph"));
@@ -273,6 +273,11 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   options.prune_height = args.has("prune") ? args.get_double("prune") : 0.0;
   if (!(options.prune_height >= 0)) throw Usage_error("--prune must be >= 0");
+  if (args.has("branch-merge")) {
+    options.branch_merge_distance = args.get_double("branch-merge");
+    if (!(options.branch_merge_distance >= 0 && std::isfinite(options.branch_merge_distance)))
+      throw Usage_error("--branch-merge must be finite and >= 0 (0: off), got '" + args.get("branch-merge") + "'");
+  }
   options.max_triangles = max_triangles_option(args);
   double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
   if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
@@ -424,6 +429,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     ro.merge_distance = value("merge", args.has("merge") ? args.get_double("merge") : 0.0);
     ro.traces = go;
     ro.max_triangles = options.max_triangles;
+    ro.branch_merge_distance = std::max(0.0, options.branch_merge_distance);  // unset (-1): off for road maps
     ro.embedding = options.embedding;
     ro.progress = options.progress;
     Road_map road = extract_road_map(trips, ro);
@@ -531,13 +537,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
   std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
               "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
               "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
+              "\"branch_merge\": %s, \"merged_branch_arcs\": %zu, "
               "\"level_width\": %s, \"smoothing\": \"%s\", \"smoothing_rounds\": %zu%s, \"seconds\": %s, "
               "\"vertices_file\": %s, \"edges_file\": %s}\n",
               input_points, sampled,
               json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(), json_number(options.delta).c_str(),
               json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles,
               num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph),
-              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.level_width).c_str(),
+              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.branch_merge_distance).c_str(),
+              s.merged_branch_arcs, json_number(s.level_width).c_str(),
               options.embedding.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian",
               options.embedding.smoothing_iterations, gps_json.c_str(), json_number(seconds).c_str(),
               json_string(out_v).c_str(), json_string(out_e).c_str());

@@ -74,6 +74,14 @@ struct Segment_graph {
     for (const std::size_t d : degrees()) n += d == 1 ? 1 : 0;
     return n;
   }
+  /// Degrees of the branch vertices (degree >= 3), sorted.
+  std::vector<std::size_t> branch_degrees() const {
+    std::vector<std::size_t> b;
+    for (const std::size_t d : degrees())
+      if (d >= 3) b.push_back(d);
+    std::sort(b.begin(), b.end());
+    return b;
+  }
   std::size_t branch_excess() const {
     std::size_t n = 0;
     for (const std::size_t d : degrees()) n += d >= 3 ? d - 2 : 0;

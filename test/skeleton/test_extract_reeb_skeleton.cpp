@@ -66,7 +66,23 @@ TEST(ExtractReebSkeleton, FigureEightAndTree) {
     ASSERT_GE(line.size(), 2u);
     const auto a = s.graph[source(e, s.graph)].position, b = s.graph[target(e, s.graph)].position;
     EXPECT_TRUE((line.front() == a && line.back() == b) || (line.front() == b && line.back() == a));
+    EXPECT_LE(s.graph[source(e, s.graph)].value, s.graph[target(e, s.graph)].value);  // from lower to upper
   }
+  // Every node sits at the centroid of its points, the one where the two circles touch too (its two forks
+  // merged into one node of degree 4).
+  std::size_t degree_four = 0;
+  for (auto v : boost::make_iterator_range(vertices(s.graph))) {
+    double c[2] = {0, 0};
+    for (const Vertex_index p : s.graph[v].members)
+      for (int k = 0; k < 2; ++k) c[k] += eight.points[p][k] / static_cast<double>(s.graph[v].members.size());
+    EXPECT_NEAR(s.graph[v].position[0], c[0], 1e-9);
+    EXPECT_NEAR(s.graph[v].position[1], c[1], 1e-9);
+    EXPECT_EQ(s.graph[v].position[2], 0.0);
+    degree_four += degree(v, s.graph) == 4 ? 1 : 0;
+  }
+  EXPECT_EQ(degree_four, 1u);
+  EXPECT_EQ(s.merged_branch_arcs, 1u);
+  EXPECT_EQ(s.branch_merge_distance, 2 * s.level_width);  // the forks lie 0.66 apart, the level width is 0.42
   // A tree (tree_segments(): 6 segments, leaves at (0,0), (-7,6), (4,13) and (8,10)): no loop, four leaves.
   const auto tree = sample_segments(tree_segments(), 0.3, 0.05, 6);
   const Reeb_skeleton t = extract_reeb_skeleton(tree.points, 0.7, o);
@@ -75,6 +91,161 @@ TEST(ExtractReebSkeleton, FigureEightAndTree) {
   for (auto v : boost::make_iterator_range(vertices(t.graph))) leaves += degree(v, t.graph) == 1 ? 1 : 0;
   EXPECT_EQ(leaves, 4u);
   expect_members_partition(t.graph, tree.points.size());
+}
+
+namespace {
+/// An X drawn as the Reeb graph draws a crossing: minima 0 and 1 join at the down-fork 2 (value 1), which an arc
+/// of length 0.1 through point 6 joins to the up-fork 3 (value 1.1), which splits into the maxima 4 and 5.
+struct Crossing {
+  Point_matrix points;
+  Skeleton_graph graph;
+  Crossing() {
+    points.dimension = 2;
+    points.data = {-1, -1, 1, -1, 0, -0.05, 0, 0.05, -1, 1, 1, 1, 0, 0};
+    points.rows = 7;
+    const double values[6] = {0, 0, 1, 1.1, 2, 2};
+    const unsigned types[6] = {minimum, minimum, down_fork, up_fork, maximum, maximum};
+    graph = Skeleton_graph(6);
+    for (std::size_t v = 0; v < 6; ++v) {
+      graph[v].position = {points.row(v)[0], points.row(v)[1], 0};
+      graph[v].value = values[v];
+      graph[v].type = types[v];
+      graph[v].members = {static_cast<Vertex_index>(v)};
+    }
+    auto arc = [&](std::size_t a, std::size_t b, std::vector<Vertex_index> members) {
+      Skeleton_arc s;
+      s.polyline.push_back(graph[a].position);
+      for (const Vertex_index p : members) s.polyline.push_back({points.row(p)[0], points.row(p)[1], 0});
+      s.polyline.push_back(graph[b].position);
+      s.members = std::move(members);
+      add_edge(a, b, std::move(s), graph);
+    };
+    arc(0, 2, {});
+    arc(1, 2, {});
+    arc(2, 3, {6});
+    arc(3, 4, {});
+    arc(3, 5, {});
+  }
+};
+}  // namespace
+
+TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
+  const Crossing x;
+  const Skeleton_graph before = x.graph;
+  const Branch_node_merge_result r = merge_close_branch_nodes(x.graph, x.points, 0.2);
+  EXPECT_EQ(r.merged, 1u);
+  const Skeleton_graph& g = r.graph;
+  ASSERT_EQ(num_vertices(g), 5u);
+  ASSERT_EQ(num_edges(g), 4u);
+  expect_members_partition(g, 7);
+  // The merged node is 2 (the smallest of 2 and 3): value and members of the lower fork first, then the upper
+  // fork's and the arc's; at the centroid of its three points; both forks at once.
+  EXPECT_EQ(g[2].value, 1.0);
+  EXPECT_EQ(g[2].members, (std::vector<Vertex_index>{2, 3, 6}));
+  EXPECT_NEAR(g[2].position[0], 0.0, 1e-15);
+  EXPECT_NEAR(g[2].position[1], 0.0, 1e-15);
+  EXPECT_EQ(g[2].type, unsigned(down_fork | up_fork));
+  EXPECT_EQ(degree(2, g), 4u);
+  // The other nodes are copied; the maxima move down one index; every arc ends at the merged node's position.
+  EXPECT_EQ(g[0].members, before[0].members);
+  EXPECT_EQ(g[3].members, std::vector<Vertex_index>{4});
+  EXPECT_EQ(g[4].position, before[5].position);
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    const auto& line = g[e].polyline;
+    EXPECT_EQ(line.front(), g[source(e, g)].position);
+    EXPECT_EQ(line.back(), g[target(e, g)].position);
+    EXPECT_LT(g[source(e, g)].value, g[target(e, g)].value);
+  }
+  // The input is untouched.
+  EXPECT_EQ(num_vertices(x.graph), 6u);
+  EXPECT_EQ(x.graph[2].members, std::vector<Vertex_index>{2});
+  // Shorter than the arc (length 0.1) or 0: nothing changes.
+  for (const double d : {0.0, 0.05, 0.0999}) {
+    const Branch_node_merge_result same = merge_close_branch_nodes(x.graph, x.points, d);
+    EXPECT_EQ(same.merged, 0u) << d;
+    EXPECT_EQ(num_vertices(same.graph), 6u) << d;
+    EXPECT_EQ(same.graph[3].position, before[3].position) << d;
+  }
+  EXPECT_EQ(merge_close_branch_nodes(x.graph, x.points, 0.1).merged, 1u);  // at most the distance: merged
+  // A leaf is not a branch node: the arc from a fork to a close leaf stays.
+  Crossing leafy;
+  leafy.graph[0].position = {0, -0.1, 0};
+  leafy.graph[0].value = 0.95;
+  EXPECT_EQ(merge_close_branch_nodes(leafy.graph, leafy.points, 0.1).merged, 1u);  // only the fork-fork arc
+  // A short loop stays a loop: a second arc between the forks keeps both.
+  Crossing loop;
+  add_edge(2, 3, Skeleton_arc{{{0, -0.05, 0}, {0.01, 0, 0}, {0, 0.05, 0}}, {}}, loop.graph);
+  const Branch_node_merge_result kept = merge_close_branch_nodes(loop.graph, loop.points, 0.2);
+  EXPECT_EQ(kept.merged, 0u);
+  EXPECT_EQ(num_edges(kept.graph), 6u);
+  // Bad input is named.
+  EXPECT_THROW(merge_close_branch_nodes(x.graph, x.points, -1), std::invalid_argument);
+  EXPECT_THROW(merge_close_branch_nodes(x.graph, x.points, std::nan("")), std::invalid_argument);
+  Point_matrix few = x.points;
+  few.rows = 6;
+  few.data.resize(12);
+  try {
+    merge_close_branch_nodes(x.graph, few, 0.2);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("arc 2 has member 6"), std::string::npos) << e.what();
+  }
+  // Empty graph.
+  EXPECT_EQ(num_vertices(merge_close_branch_nodes(Skeleton_graph(), x.points, 1).graph), 0u);
+}
+
+TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
+  // Three forks in a row, 0.1 apart: one node of degree 5 after two rounds.
+  Point_matrix p;
+  p.dimension = 2;
+  p.data = {-1, -1, 1, -1, 0, 0, 0, 0.1, 0, 0.2, -1, 1, 1, 1, 2, 1};
+  p.rows = 8;
+  Skeleton_graph g(8);
+  const double values[8] = {0, 0, 1, 1.1, 1.2, 2, 2, 2};
+  for (std::size_t v = 0; v < 8; ++v) {
+    g[v].position = {p.row(v)[0], p.row(v)[1], 0};
+    g[v].value = values[v];
+    g[v].members = {static_cast<Vertex_index>(v)};
+  }
+  auto arc = [&](Skeleton_graph& h, std::size_t a, std::size_t b) {
+    add_edge(a, b, Skeleton_arc{{h[a].position, h[b].position}, {}}, h);
+  };
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 3}, {3, 5}, {3, 4}, {4, 6}, {4, 7}})
+    arc(g, a, b);
+  const Branch_node_merge_result r = merge_close_branch_nodes(g, p, 0.15);
+  EXPECT_EQ(r.merged, 2u);
+  ASSERT_EQ(num_vertices(r.graph), 6u);
+  EXPECT_EQ(degree(2, r.graph), 5u);
+  EXPECT_EQ(r.graph[2].members, (std::vector<Vertex_index>{2, 3, 4}));
+  EXPECT_NEAR(r.graph[2].position[1], 0.1, 1e-15);
+  expect_members_partition(r.graph, 8);
+  // An up-fork below a down-fork: a's arc up to b is short; the leaf d (value 1.05) joins b from below. Merged
+  // at a's value 1, the arc from d now runs up from the merged node to d, which becomes a maximum.
+  Point_matrix q;
+  q.dimension = 2;
+  q.data = {0, -1, 0, 0, 0, 0.1, 1, 0.1, -1, 1, 0, 2};
+  q.rows = 6;
+  Skeleton_graph h(6);  // m, a, b, d, c, e
+  const double hv[6] = {0, 1, 1.1, 1.05, 3, 3};
+  const unsigned ht[6] = {minimum, up_fork, down_fork, minimum, maximum, maximum};
+  for (std::size_t v = 0; v < 6; ++v) {
+    h[v].position = {q.row(v)[0], q.row(v)[1], 0};
+    h[v].value = hv[v];
+    h[v].type = ht[v];
+    h[v].members = {static_cast<Vertex_index>(v)};
+  }
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {1, 4}, {3, 2}, {2, 5}}) arc(h, a, b);
+  const Branch_node_merge_result s = merge_close_branch_nodes(h, q, 0.2);
+  EXPECT_EQ(s.merged, 1u);
+  ASSERT_EQ(num_vertices(s.graph), 5u);
+  EXPECT_EQ(s.graph[1].value, 1.0);
+  EXPECT_EQ(s.graph[2].type, unsigned(maximum));  // d
+  EXPECT_EQ(s.graph[1].type, unsigned(up_fork));  // one arc below (from m), three above
+  for (auto e : boost::make_iterator_range(edges(s.graph))) {
+    EXPECT_LT(s.graph[source(e, s.graph)].value, s.graph[target(e, s.graph)].value);
+    EXPECT_EQ(s.graph[e].polyline.front(), s.graph[source(e, s.graph)].position);
+    EXPECT_EQ(s.graph[e].polyline.back(), s.graph[target(e, s.graph)].position);
+  }
 }
 
 TEST(ExtractReebSkeleton, RepairJoinsAGap) {

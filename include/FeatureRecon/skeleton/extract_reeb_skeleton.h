@@ -20,6 +20,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <vector>
 
 namespace FeatureRecon {
@@ -57,6 +59,13 @@ struct Skeleton_options {
   /// Remove connected components of height (range of f) at most this after simplification and repair; their
   /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all.
   double prune_height = 0;
+  /// Contract each arc joining two branch nodes (degree >= 3) that is at most this long in input space into one
+  /// node (merge_close_branch_nodes()): where two curves cross or touch, the level sets merge and split at slightly
+  /// different values, and the Reeb graph draws one point of degree 4 as two forks joined by a short arc.
+  /// Negative (default -1): twice the level width of the embedding (Reeb_skeleton::level_width, by default the
+  /// median edge length of the complex, so about the Rips radius: where two curves cross at a right angle the
+  /// forks lie about that far apart, and closer features the complex does not resolve); 0: off.
+  double branch_merge_distance = -1;
   /// Contract the spurs at the global minimum and maximum of each component when their height is at most delta
   /// (trim_essential_stubs()): on a loop the base point of the geodesic function otherwise stays a short spur.
   /// Default true.
@@ -86,6 +95,8 @@ struct Reeb_skeleton {
   std::size_t trimmed_stubs = 0;                           ///< spurs at essential extrema contracted
   std::size_t pruned_components = 0;                       ///< components removed (Skeleton_options::prune_height)
   std::vector<Vertex_index> pruned_points;                 ///< their input points (sorted)
+  std::size_t merged_branch_arcs = 0;  ///< arcs between close branch nodes contracted (branch_merge_distance)
+  double branch_merge_distance = 0;  ///< the distance merge_close_branch_nodes() used (0: not run)
   double level_width = 0;          ///< level width the embedding used
   Status status = Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
 };
@@ -118,6 +129,192 @@ inline Skeleton_graph make_skeleton_graph(const Reeb_graph& G, const Reeb_graph_
   return g;
 }
 
+/// Result of merge_close_branch_nodes().
+struct Branch_node_merge_result {
+  Skeleton_graph graph;    ///< the skeleton with close branch nodes merged
+  std::size_t merged = 0;  ///< arcs contracted
+};
+
+namespace internal {
+/// merge_close_branch_nodes() given the coordinates of the input points in at most 3D (`positions`, as the
+/// embedding used them: project_to_3d()) and in input space (`input`, used for input_position above 3D).
+inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g,
+                                                         const std::vector<std::array<double, 3>>& positions,
+                                                         const Point_matrix& input, double distance,
+                                                         const char* fn) {
+  if (!(distance >= 0 && std::isfinite(distance)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "distance must be finite and >= 0, got ", distance);
+  const std::size_t n = num_vertices(g), none = std::numeric_limits<std::size_t>::max();
+  const bool high = input.dimension > 3;
+  std::vector<std::size_t> lower, upper;  // arc ends, in edges(g) order
+  std::vector<const Skeleton_arc*> arc;
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    lower.push_back(source(e, g));
+    upper.push_back(target(e, g));
+    arc.push_back(&g[e]);
+  }
+  const std::size_t m = arc.size();
+  for (std::size_t v = 0; v < n; ++v)
+    for (const Vertex_index p : g[v].members)
+      if (p >= positions.size() || (high && p >= input.rows))
+        FeatureRecon::internal::throw_invalid_argument(fn, "node ", v, " has member ", p, " out of range [0, ",
+                                                       positions.size(), ")");
+  for (std::size_t k = 0; k < m; ++k)
+    for (const Vertex_index p : arc[k]->members)
+      if (p >= positions.size() || (high && p >= input.rows))
+        FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " has member ", p, " out of range [0, ",
+                                                       positions.size(), ")");
+  // Arc lengths in input space (the input polyline above 3D), candidates shortest first (ties by arc index).
+  std::vector<std::pair<double, std::size_t>> candidates;
+  for (std::size_t k = 0; k < m; ++k) {
+    if (lower[k] == upper[k]) continue;
+    const bool flat = arc[k]->input_polyline.empty();
+    const std::size_t d = flat ? 3 : input.dimension, count = flat ? arc[k]->polyline.size()
+                                                                   : arc[k]->input_polyline.size() / d;
+    const double* c = flat ? (count > 0 ? arc[k]->polyline.front().data() : nullptr) : arc[k]->input_polyline.data();
+    double length = 0;
+    for (std::size_t i = 0; i + 1 < count; ++i) length += point_distance(c + i * d, c + (i + 1) * d, d);
+    if (length <= distance) candidates.push_back({length, k});
+  }
+  std::sort(candidates.begin(), candidates.end());
+  // Rounds: in each, over the arcs between groups of merged nodes, contract a matching of the candidates whose
+  // groups have degree >= 3 and are joined by this arc alone (a short loop stays a loop: no arc becomes a self-loop).
+  std::vector<std::size_t> group(n);
+  std::iota(group.begin(), group.end(), std::size_t(0));
+  auto find = [&group](std::size_t x) {
+    while (group[x] != x) x = group[x] = group[group[x]];
+    return x;
+  };
+  std::vector<char> contracted(m, 0);
+  Branch_node_merge_result result;
+  for (bool changed = !candidates.empty(); changed;) {
+    changed = false;
+    std::vector<std::size_t> degree(n, 0);
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> joining;  // arcs between two groups
+    for (std::size_t k = 0; k < m; ++k) {
+      if (contracted[k]) continue;
+      const std::size_t a = find(lower[k]), b = find(upper[k]);
+      degree[a] += 1;
+      degree[b] += 1;
+      ++joining[{std::min(a, b), std::max(a, b)}];
+    }
+    std::vector<char> taken(n, 0);
+    for (const auto& [length, k] : candidates) {
+      if (contracted[k]) continue;
+      const std::size_t a = find(lower[k]), b = find(upper[k]);
+      if (a == b || taken[a] || taken[b] || degree[a] < 3 || degree[b] < 3 ||
+          joining[{std::min(a, b), std::max(a, b)}] != 1)
+        continue;
+      taken[a] = taken[b] = 1;
+      contracted[k] = 1;
+      group[std::max(a, b)] = std::min(a, b);
+      ++result.merged;
+      changed = true;
+    }
+  }
+  // The new nodes: one per group, in order of their smallest node; a merged node takes the value of its lowest
+  // node (ties: smaller index), whose members come first, and sits at the centroid of all its points.
+  std::vector<std::size_t> index(n, none), lowest(n, none);
+  std::vector<std::vector<std::size_t>> nodes_of;
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::size_t r = find(v);
+    if (index[r] == none) {
+      index[r] = nodes_of.size();
+      nodes_of.emplace_back();
+    }
+    nodes_of[index[r]].push_back(v);
+    std::size_t& low = lowest[index[r]];
+    if (low == none || g[v].value < g[low].value) low = v;
+  }
+  std::vector<std::vector<std::size_t>> arcs_of(nodes_of.size());
+  for (std::size_t k = 0; k < m; ++k)
+    if (contracted[k]) arcs_of[index[find(lower[k])]].push_back(k);
+  Skeleton_graph& h = result.graph;
+  h = Skeleton_graph(nodes_of.size());
+  for (std::size_t i = 0; i < nodes_of.size(); ++i) {
+    if (nodes_of[i].size() == 1) {
+      h[i] = g[nodes_of[i].front()];
+      continue;
+    }
+    Skeleton_node& node = h[i];
+    node = g[lowest[i]];
+    for (const std::size_t v : nodes_of[i])
+      if (v != lowest[i]) node.members.insert(node.members.end(), g[v].members.begin(), g[v].members.end());
+    for (const std::size_t k : arcs_of[i])
+      node.members.insert(node.members.end(), arc[k]->members.begin(), arc[k]->members.end());
+    node.position = {0, 0, 0};
+    for (const Vertex_index p : node.members)
+      for (int c = 0; c < 3; ++c) node.position[c] += positions[p][c];
+    for (double& x : node.position) x /= static_cast<double>(node.members.size());
+    if (high && !node.input_position.empty()) {
+      std::fill(node.input_position.begin(), node.input_position.end(), 0.0);
+      for (const Vertex_index p : node.members)
+        for (std::size_t c = 0; c < input.dimension; ++c) node.input_position[c] += input.row(p)[c];
+      for (double& x : node.input_position) x /= static_cast<double>(node.members.size());
+    }
+  }
+  // The other arcs, their ends moved to the merged nodes; an arc whose lower end now lies higher is reversed.
+  std::vector<std::size_t> down(nodes_of.size(), 0), up(nodes_of.size(), 0);
+  std::vector<char> retype(nodes_of.size(), 0);  // merged nodes and the ends of reversed arcs
+  auto above = [&h](std::size_t a, std::size_t b) { return h[a].value > h[b].value || (h[a].value == h[b].value && a > b); };
+  for (std::size_t k = 0; k < m; ++k) {
+    if (contracted[k]) continue;
+    std::size_t a = index[find(lower[k])], b = index[find(upper[k])];
+    Skeleton_arc copy = *arc[k];
+    if (a != b && above(a, b)) {
+      std::swap(a, b);
+      retype[a] = retype[b] = 1;
+      std::reverse(copy.polyline.begin(), copy.polyline.end());
+      const std::size_t d = input.dimension, count = d > 0 ? copy.input_polyline.size() / d : 0;
+      for (std::size_t i = 0; i < count / 2; ++i)
+        std::swap_ranges(copy.input_polyline.begin() + static_cast<std::ptrdiff_t>(i * d),
+                         copy.input_polyline.begin() + static_cast<std::ptrdiff_t>((i + 1) * d),
+                         copy.input_polyline.begin() + static_cast<std::ptrdiff_t>((count - 1 - i) * d));
+      std::reverse(copy.members.begin(), copy.members.end());  // increasing function value along the arc
+    }
+    const bool moved_a = nodes_of[a].size() > 1, moved_b = nodes_of[b].size() > 1;  // the ends that moved
+    if (!copy.polyline.empty()) {
+      if (moved_a) copy.polyline.front() = h[a].position;
+      if (moved_b) copy.polyline.back() = h[b].position;
+    }
+    const std::size_t d = h[a].input_position.size();
+    if (d > 0 && copy.input_polyline.size() >= d && h[b].input_position.size() == d) {
+      if (moved_a) std::copy(h[a].input_position.begin(), h[a].input_position.end(), copy.input_polyline.begin());
+      if (moved_b)
+        std::copy(h[b].input_position.begin(), h[b].input_position.end(),
+                  copy.input_polyline.end() - static_cast<std::ptrdiff_t>(d));
+    }
+    ++up[a];
+    ++down[b];
+    add_edge(a, b, std::move(copy), h);
+  }
+  for (std::size_t i = 0; i < nodes_of.size(); ++i)
+    if (nodes_of[i].size() > 1 || retype[i]) h[i].type = node_type_from_degrees(down[i], up[i]);
+  return result;
+}
+}  // namespace internal
+
+/// Merges branch nodes that lie close together: contracts every arc that joins two nodes of degree >= 3 and is at
+/// most `distance` long in input space (its input_polyline above 3D, else its polyline) into one node, unless
+/// another arc joins the same two nodes (a short loop is kept). Where two curves cross or touch (a figure-eight,
+/// a road crossing) the level sets merge and split at slightly different values, so the Reeb graph draws one
+/// point of degree 4 as two forks joined by a short arc; this draws it as one node. Contractions repeat until no
+/// such arc is left (shortest arcs first, ties by arc index), so a cluster of forks joined by short arcs becomes
+/// one node. A merged node takes the value of its lowest node (ties: the smaller index), whose members come
+/// first, then the other nodes' and the contracted arcs' members (the members still partition the points); it
+/// sits at the centroid of its points (above 3D its input_position is the centroid in `coordinates`, its
+/// position the centroid's projection, project_to_3d()). The arcs' polylines end at the new positions; an arc
+/// whose lower end now lies higher is reversed (its polylines and members), and the types of the merged nodes
+/// and of the ends of reversed arcs follow from the arcs below and above them. Nodes and arcs that take no part
+/// are copied unchanged; the new nodes are ordered by the smallest original node of each.
+/// \pre distance >= 0 and finite; the members index `coordinates` (all checked; throws naming the node or arc).
+inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g, const Point_matrix& coordinates,
+                                                         double distance) {
+  internal::check_point_matrix(coordinates, "merge_close_branch_nodes", "coordinates");
+  return internal::merge_close_branch_nodes(g, project_to_3d(coordinates), coordinates, distance,
+                                            "merge_close_branch_nodes");
+}
+
 namespace internal {
 
 inline double median_edge_length(const Proximity_graph& g) {
@@ -134,6 +331,9 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
     FeatureRecon::internal::throw_invalid_argument(fn, "delta and repair_distance must be finite and >= 0, "
                                                    "prune_height >= 0 (infinity: prune all), got ", options.delta,
                                                    ", ", options.repair_distance, " and ", options.prune_height);
+  if (std::isnan(options.branch_merge_distance) || std::isinf(options.branch_merge_distance))
+    FeatureRecon::internal::throw_invalid_argument(fn, "branch_merge_distance must be finite (negative: the level "
+                                                   "width), got ", options.branch_merge_distance);
   check_embedding_options(options.embedding, fn);  // before the pipeline runs, with the caller's values
 }
 
@@ -219,13 +419,22 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   if (eo.level_width == 0) eo.level_width = median_edge_length(K);
   if (eo.level_width == 0) eo.level_width = automatic_level_width(S.graph);  // mostly duplicate points
   result.level_width = eo.level_width;
-  const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, project_to_3d(coordinates), A.values(), dimension, eo);
+  const std::vector<std::array<double, 3>> projected = project_to_3d(coordinates);
+  const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, projected, A.values(), dimension, eo);
   result.graph = make_skeleton_graph(S.graph, E);
   if (dimension > 3) {
     Reeb_graph_input_embedding I = embed_reeb_graph_in_input_space(S.graph, K, coordinates, A.values(), eo);
     for (std::size_t i = 0; i < I.node_positions.size(); ++i) result.graph[i].input_position = std::move(I.node_positions[i]);
     std::size_t k = 0;
     for (auto e : boost::make_iterator_range(edges(result.graph))) result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);
+  }
+  result.branch_merge_distance =
+      options.branch_merge_distance < 0 ? 2 * eo.level_width : options.branch_merge_distance;
+  if (result.branch_merge_distance > 0) {
+    Branch_node_merge_result merged =
+        internal::merge_close_branch_nodes(result.graph, projected, coordinates, result.branch_merge_distance, fn);
+    result.graph = std::move(merged.graph);
+    result.merged_branch_arcs = merged.merged;
   }
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;

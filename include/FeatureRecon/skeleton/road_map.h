@@ -467,6 +467,7 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   const Proximity_graph g = internal::planar_graph(P, std::move(neighbourhood));
   Skeleton_options so;
   so.delta = r.delta;
+  so.branch_merge_distance = 0;  // the lines are redrawn from the arcs; forks stay where the lines diverge
   so.max_triangles = options.max_triangles;
   so.embedding = options.embedding;
   if (options.progress) so.progress = [&options](double t) { return options.progress(0.3 + 0.7 * t); };
@@ -497,6 +498,10 @@ struct Road_map_options {
   Gps_trace_options traces = road_map_trace_options();
   bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
   bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
+  /// Skeleton_options::branch_merge_distance; default 0 (off): the road lines are drawn from the arcs and
+  /// merged afterwards (merge_road_lines()); on Chicago merging forks at 1 or 2 level widths (14.4 m, 28.9 m)
+  /// scores F 0.7006 / 0.7011 against 0.7016.
+  double branch_merge_distance = 0;
   /// Skeleton_options::max_triangles of the skeleton and of the merging stage (Road_merge_options).
   std::size_t max_triangles = Skeleton_options().max_triangles;
   /// How arcs are drawn (level width 0: median edge length of the complex); default road_map_embedding_options().
@@ -557,6 +562,7 @@ inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) 
   o.prune_height = std::max(0.0, used.prune_height);
   o.connect_dead_ends = used.connect_dead_ends;
   o.trim_stubs = used.trim_stubs;
+  o.branch_merge_distance = used.branch_merge_distance;
   o.max_triangles = used.max_triangles;
   o.embedding = used.embedding;
   return o;
