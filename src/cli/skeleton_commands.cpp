@@ -528,6 +528,16 @@ int run_skeleton(const std::vector<std::string>& argv) {
                        : args.has("graph")           ? "vertices"
                                                      : "points";
     std::fprintf(stderr, "featurerecon skeleton: warning: the input holds no %s: the skeleton is empty\n", what);
+  } else if (num_vertices(graph) == 0) {  // every part removed: say by which stage
+    std::string why;
+    if (gps && m.rows == 0)
+      why = "the density filter dropped every sample (--min-density 0 --min-lateral-density 0 keep them)";
+    else if (s.pruned_components > 0)
+      why = "pruning removed all " + std::to_string(s.pruned_components) + " component(s), each of height at most " +
+            json_number(options.prune_height) + " (--prune 0 keeps them)";
+    else
+      why = "no part of it survived";
+    std::fprintf(stderr, "featurerecon skeleton: warning: the skeleton is empty: %s\n", why.c_str());
   }
   std::size_t components = 0;
   {

@@ -172,6 +172,12 @@ expect(skeleton_5d_picture 0 "\"loops\": 2," skeleton --points ${WORK}/eight_5d.
        --out-vertices ${WORK}/e5_v.txt --out-edges ${WORK}/e5_e.txt --svg ${WORK}/e5.svg --quiet)
 expect_count(${WORK}/e5.svg "<circle cx=\"[0-9.]+\" cy=\"(7[0-9][0-9]|[89][0-9][0-9]|1[0-9][0-9][0-9])\\." 0)
 expect(skeleton_max_gap_off 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --max-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# Branch nodes: the tangent circles of figure_eight.xyz share a stretch at radius 0.6, where the Reeb graph has
+# an up-fork and a down-fork 1.25 apart; the default (twice the level width, 0.66) keeps both, 1.5 merges them.
+expect(skeleton_branch_merge_default 0 "\"nodes\": 4, \"arcs\": 5, .*\"branch_merge\": 0\\.659[0-9]*, \"merged_branch_arcs\": 0, \"level_width\": 0\\.329" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_branch_merge 0 "\"nodes\": 3, \"arcs\": 4, \"loops\": 2, .*\"branch_merge\": 1.5, \"merged_branch_arcs\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --branch-merge 1.5 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_branch_merge_bad 2 "--branch-merge must be finite and >= 0 \\(0: off\\), got '-1'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --branch-merge -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_all_pruned 0 "\"nodes\": 0, .*warning: the skeleton is empty: pruning removed all 1 component\\(s\\), each of height at most 100 \\(--prune 0 keeps them\\)" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --prune 100 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_max_gap_nan 2 "--max-gap" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-gap nan --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_self_score 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 1)
 expect(skeleton_source 2 "exactly one of --points FILE, --tracks FILE, --distance-matrix FILE and --graph FILE" skeleton --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)

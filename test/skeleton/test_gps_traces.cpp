@@ -671,6 +671,35 @@ TEST(GpsTraces, ALongJumpWithinTheLinkGapIsRefusedBeforeDensifying) {
   EXPECT_GT(sample_gps_traces({trip}, 20.0, o).points.rows, 90000u);  // one per 10 m
 }
 
+TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
+  // Three samples (no linking, spacing 1) with a density radius of 20: the grid cells of side 20 put (0, 0) and
+  // (10, 0) in one cell and (20, 0) in the next, so every sample meets all three: 9 pairs.
+  Gps_trip trip{{0, 0, 0}, {10, 0, 1}, {20, 0, 2}};
+  Gps_trace_options o;
+  o.max_link_gap = -1;
+  o.sample_spacing = 1;
+  o.density_radius = 20;
+  o.min_relative_density = 0.05;  // the filter on (off by default here; road_map_trace_options() turns it on)
+  o.max_density_pairs = 8;
+  try {
+    sample_gps_traces({trip}, 10.0, o);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the density filter would compare 9 pairs of the 3 samples (more than "
+                                         "max_density_pairs, 8): the sample spacing (1, --sample-spacing) is small "
+                                         "for the density radius (20, --density-radius)"),
+              std::string::npos) << e.what();
+  }
+  o.max_density_pairs = 9;  // exactly as many: runs
+  EXPECT_EQ(sample_gps_traces({trip}, 10.0, o).points.rows, 3u);
+  o.max_density_pairs = 0;  // no limit
+  EXPECT_EQ(sample_gps_traces({trip}, 10.0, o).points.rows, 3u);
+  o.max_density_pairs = 1;  // the filter off: no pairs compared, nothing refused
+  o.min_relative_density = 0;
+  o.min_lateral_density = 0;
+  EXPECT_EQ(sample_gps_traces({trip}, 10.0, o).points.rows, 3u);
+}
+
 namespace {
 
 // The segment check's counts of S: checked, confirmed, checked straight, confirmed straight, kept straight; the

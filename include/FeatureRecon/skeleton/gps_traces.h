@@ -128,6 +128,12 @@ struct Gps_trace_options {
   /// segments: one jump of 1,000 km between two fixes within a generous max_link_gap asked for 10^8 points at a
   /// spacing of 10 m. Default 2^26 (the traces of Chicago need about 500,000); 0: no limit.
   std::size_t max_inserted_points = std::size_t(1) << 26;
+  /// Refuse (std::invalid_argument, before comparing any) a density filter that would compare more pairs of samples
+  /// than this (every sample with the samples in the grid cells of side density_radius around it): a sample spacing
+  /// far below the radius fills the scatter around the streets with samples (Chicago: 0.8 million pairs at the
+  /// default spacing, 12 m; 3.2 * 10^8 at 2 m; 2.7 * 10^10 at 0.5 m, which ran 6 minutes and took 8 GB before the
+  /// complex's triangle limit refused it, and is now refused after the sampling, 17 s). Default 2^30; 0: no limit.
+  std::size_t max_density_pairs = std::size_t(1) << 30;
 };
 
 /// Samples of GPS traces with the parameters used.
@@ -256,12 +262,28 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
 /// sample beside them (the offset across the sample's direction at least the offset along it; samples without a
 /// direction, per `has_direction`, neither judged nor counted); re-indexes.
 inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lateral_fraction, double heading_tolerance,
-                                const std::vector<bool>& has_direction) {
+                                const std::vector<bool>& has_direction, std::size_t max_pairs, const char* fn) {
   const double R = S.density_radius, R2 = R * R;
   constexpr double degree = 3.14159265358979323846 / 180.0;
   const std::array<double, 4> box = bounding_box(S.points);
   Planar_grid grid(box[0], box[1], box[2], box[3], R, S.points.rows);
   for (std::uint32_t i = 0; i < S.points.rows; ++i) grid.push(grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]), i);
+  if (max_pairs > 0) {  // the pairs the loop below compares, counted first (9 cell lookups a sample)
+    double pairs = 0;
+    for (std::uint32_t i = 0; i < S.points.rows; ++i) {
+      const auto c = grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]);
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy)
+          if (const std::vector<std::uint32_t>* bucket = grid.find(c[0] + dx, c[1] + dy))
+            pairs += static_cast<double>(bucket->size());
+    }
+    if (pairs > static_cast<double>(max_pairs))
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "the density filter would compare ", pairs, " pairs of the ", S.points.rows, " samples (more than ",
+          "max_density_pairs, ", max_pairs, "): the sample spacing (", S.sample_spacing, ", --sample-spacing) is ",
+          "small for the density radius (", R, ", --density-radius); raise the spacing, lower the radius, or turn the ",
+          "filter off (min_relative_density and min_lateral_density 0)");
+  }
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> new_index(S.points.rows, none);
   Gps_trace_sample T;
@@ -355,8 +377,9 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
 ///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
 ///         or segment support, a negative heading tolerance, a turn tolerance outside [0, 180], a confirmed
-///         fraction or a density fraction outside [0, 1]), or linking that would insert more than
-///         options.max_inserted_points points.
+///         fraction or a density fraction outside [0, 1]), linking that would insert more than
+///         options.max_inserted_points points, or a density filter that would compare more than
+///         options.max_density_pairs pairs of samples.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
@@ -717,7 +740,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.density_heading_tolerance = options.density_heading_tolerance;
   if ((options.min_relative_density > 0 || options.min_lateral_density > 0) && S.points.rows > 0)
     internal::drop_sparse_samples(S, options.min_relative_density, options.min_lateral_density,
-                                  options.density_heading_tolerance, has_direction);
+                                  options.density_heading_tolerance, has_direction, options.max_density_pairs, fn);
   if (options.mean_positions) {  // each sample at the mean of its fixes
     std::vector<double> sum(2 * S.points.rows, 0.0);
     std::vector<std::uint32_t> count(S.points.rows, 0);
