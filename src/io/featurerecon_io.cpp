@@ -50,6 +50,13 @@ std::ifstream open_input(const std::string& path) {
   require_readable_file(path);
   std::ifstream in(path);
   if (!in) throw Input_error(path + ": cannot open for reading");
+  // A UTF-8 byte-order mark (some editors write one) is not part of the first line: it made the first trip id
+  // another trip's, and the first vertex id "not a number".
+  char bom[3] = {0, 0, 0};
+  if (!(in.read(bom, 3) && bom[0] == '\xEF' && bom[1] == '\xBB' && bom[2] == '\xBF')) {
+    in.clear();
+    in.seekg(0);
+  }
   return in;
 }
 
@@ -191,18 +198,18 @@ void for_each_csv_row(const std::string& path, Row row) {
 namespace {
 /// A vertex id of a map file: an integer (a decimal with a zero fraction, as some tools write them, is accepted when
 /// it is exact).
-long long parse_id(const std::string& t, const std::string& path, std::size_t line) {
+long long parse_id(const std::string& t, const std::string& path, std::size_t line, const std::string& what = "vertex id") {
   const char* s = t.c_str();
   char* end = nullptr;
   errno = 0;
   const long long id = std::strtoll(s, &end, 10);
   if (end != s && *end == '\0') {
-    if (errno == ERANGE) throw Input_error(where(path, line) + "vertex id '" + t + "' out of range");
+    if (errno == ERANGE) throw Input_error(where(path, line) + what + " '" + t + "' out of range");
     return id;
   }
-  const double x = parse_double(t, path, line, "vertex id");
+  const double x = parse_double(t, path, line, what.c_str());
   if (x != std::floor(x) || std::fabs(x) > 9007199254740992.0)  // 2^53: beyond it doubles skip integers
-    throw Input_error(where(path, line) + "vertex id '" + t + "' is not an integer");
+    throw Input_error(where(path, line) + what + " '" + t + "' is not an integer");
   return static_cast<long long>(x);
 }
 }  // namespace
@@ -229,6 +236,7 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
       if (it == index.end()) throw Input_error(where(edges_path, number) + "unknown vertex id " + t[1 + k]);
       e[k] = it->second;
     }
+    if (t.size() == 4) (void)parse_id(t[3], edges_path, number, "edge flag");  // read and ignored, but an integer
     if (e[0] == e[1] && m.self_loops++ == 0) m.first_self_loop_line = number;
     m.edges.push_back(e);
   });

@@ -109,6 +109,18 @@ file(WRITE ${WORK}/loop_e.txt "0,0,1\n1,1,2\n")
 file(WRITE ${WORK}/loop_e2.txt "0,0,1\n1,1,1\n2,2,2\n")
 expect(evaluate_map_self_loops 0 "\"precision\": 1, \"recall\": 0.6, \"f_score\": 0.75,.*loop_e2.txt line 2: an edge joins a vertex to itself; 2 such edges have no length and are ignored" evaluate-map ${WORK}/loop_v.txt ${WORK}/loop_e.txt ${WORK}/loop_v.txt ${WORK}/loop_e2.txt)
 expect(evaluate_map_no_self_loops 0 "^{\"precision\": 1, \"recall\": 1,.*\"bearing\": 45, \"matching\": \"greedy\"}\n$" evaluate-map ${WORK}/loop_v.txt ${WORK}/loop_e.txt ${WORK}/loop_v.txt ${WORK}/loop_e.txt)
+# A UTF-8 byte-order mark before the first line is skipped (it made the first vertex id "not a number" and the
+# first fix of a tracks file a trip of its own); an edge flag must be an integer.
+string(ASCII 239 187 191 bom)
+file(WRITE ${WORK}/bom_v.txt "${bom}0,0,0\n1,100,0\n")
+file(WRITE ${WORK}/bom_e.txt "${bom}0,0,1\n")
+expect(evaluate_map_bom 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1, \"matched\": 21," evaluate-map ${WORK}/bom_v.txt ${WORK}/bom_e.txt ${WORK}/bom_v.txt ${WORK}/bom_e.txt)
+file(WRITE ${WORK}/bom_tracks.txt "${bom}7 0 0 0\n7 10 0 1\n7 20 0 2\n7 30 0 3\n7 40 0 4\n7 50 0 5\n")
+expect(skeleton_tracks_bom 0 "\"trips\": 1," skeleton --tracks ${WORK}/bom_tracks.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+file(WRITE ${WORK}/flag_e.txt "0,0,1,1\n")
+file(WRITE ${WORK}/bad_flag_e.txt "0,0,1,1\n1,1,0,x\n")
+expect(evaluate_map_flag 0 "\"matched\": 21," evaluate-map ${WORK}/bom_v.txt ${WORK}/flag_e.txt ${WORK}/bom_v.txt ${WORK}/bom_e.txt)
+expect(evaluate_map_bad_flag 1 "bad_flag_e.txt:2: 'x' is not a number \\(edge flag\\)" evaluate-map ${WORK}/bom_v.txt ${WORK}/bad_flag_e.txt ${WORK}/bom_v.txt ${WORK}/bom_e.txt)
 expect(evaluate_map_args 2 "expected four files" evaluate-map ${M}_gt_crp_vertices.txt)
 # The optimal matching pairs at least as many samples (james vs crp, 15 m: 4,485 greedy pairs, 4,490 optimal).
 expect(evaluate_map_optimal 0 "\"f_score\": 0\\.64[0-9]*, \"matched\": 449[0-9],.*\"matching\": \"optimal\"" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --matching optimal)
