@@ -93,6 +93,48 @@ TEST(ExtractReebSkeleton, FigureEightAndTree) {
   expect_members_partition(t.graph, tree.points.size());
 }
 
+TEST(ExtractReebSkeleton, StageByStageEqualsOneCall) {
+  // The stages called one after another, with the pipeline's defaults, give the one call's skeleton exactly:
+  // nodes (position, value, type, members) and arcs (ends, polyline, members), in the same order.
+  const auto eight = sample_segments(figure_eight_segments(), 0.25, 0.15, 4);
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Reeb_skeleton one = extract_reeb_skeleton(eight.points, 0.7, o);
+  ASSERT_EQ(one.merged_branch_arcs, 1u);  // every stage does something here
+  ASSERT_GT(one.removed_branches, 0u);
+  ASSERT_GT(one.trimmed_stubs, 0u);
+  const Point_matrix P = make_point_matrix(eight.points);
+  const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(P, 0.7));
+  const Geodesic_result geo = compute_geodesic_function(K);
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, geo.values);
+  const Reeb_simplification_result S = simplify_by_persistence(A, o.delta);
+  const Reeb_trim_result T = trim_essential_stubs(S.graph, o.delta);
+  Embedding_options eo;
+  eo.level_width = one.level_width;  // the median edge length of K
+  const Reeb_graph_embedding E = embed_reeb_graph(T.graph, K, project_to_3d(P), A.values(), 2, eo);
+  const Branch_node_merge_result M = merge_close_branch_nodes(make_skeleton_graph(T.graph, E), P, 2 * eo.level_width);
+  EXPECT_EQ(S.removed_branches, one.removed_branches);
+  EXPECT_EQ(T.trimmed, one.trimmed_stubs);
+  EXPECT_EQ(M.merged, one.merged_branch_arcs);
+  const Skeleton_graph &a = one.graph, &b = M.graph;
+  ASSERT_EQ(num_vertices(a), num_vertices(b));
+  ASSERT_EQ(num_edges(a), num_edges(b));
+  for (std::size_t v = 0; v < num_vertices(a); ++v) {
+    EXPECT_EQ(a[v].position, b[v].position) << v;
+    EXPECT_EQ(a[v].value, b[v].value) << v;
+    EXPECT_EQ(a[v].type, b[v].type) << v;
+    EXPECT_EQ(a[v].members, b[v].members) << v;
+  }
+  auto ea = edges(a).first;
+  for (auto eb : boost::make_iterator_range(edges(b))) {
+    EXPECT_EQ(source(*ea, a), source(eb, b));
+    EXPECT_EQ(target(*ea, a), target(eb, b));
+    EXPECT_EQ(a[*ea].polyline, b[eb].polyline);
+    EXPECT_EQ(a[*ea].members, b[eb].members);
+    ++ea;
+  }
+}
+
 namespace {
 /// An X drawn as the Reeb graph draws a crossing: minima 0 and 1 join at the down-fork 2 (value 1), which an arc
 /// of length 0.1 through point 6 joins to the up-fork 3 (value 1.1), which splits into the maxima 4 and 5.
