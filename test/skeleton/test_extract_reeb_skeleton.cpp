@@ -310,8 +310,36 @@ TEST(ExtractReebSkeleton, RepairJoinsAGap) {
 TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   EXPECT_EQ(extract_reeb_skeleton(std::vector<std::array<double, 2>>{}, 1.0).status, Status::degenerate_input);
   const Reeb_skeleton one = extract_reeb_skeleton(std::vector<std::array<double, 2>>{{1.0, 2.0}}, 1.0);
+  EXPECT_EQ(one.status, Status::success);
   EXPECT_EQ(num_vertices(one.graph), 1u);
   EXPECT_EQ(num_edges(one.graph), 0u);
+  EXPECT_EQ(one.graph[0].position, (std::array<double, 3>{1, 2, 0}));
+  // Above 3D: one point, copies of one point, collinear points (rank 1 for the projection).
+  Point_matrix high;
+  high.dimension = 6;
+  high.rows = 1;
+  high.data = {1, 2, 3, 4, 5, 6};
+  const Reeb_skeleton lone = extract_reeb_skeleton(high, 1.0);
+  EXPECT_EQ(lone.status, Status::success);
+  ASSERT_EQ(num_vertices(lone.graph), 1u);
+  EXPECT_EQ(lone.graph[0].input_position, high.data);
+  high.rows = 5;
+  for (int k = 0; k < 4; ++k) high.data.insert(high.data.end(), {1, 2, 3, 4, 5, 6});
+  const Reeb_skeleton copies = extract_reeb_skeleton(high, 1.0);
+  EXPECT_EQ(copies.status, Status::success);
+  ASSERT_EQ(num_vertices(copies.graph), 1u);  // one node holding all five copies
+  EXPECT_EQ(copies.graph[0].members.size(), 5u);
+  high.data.clear();
+  high.rows = 21;
+  for (int k = 0; k <= 20; ++k)
+    for (int c = 0; c < 6; ++c) high.data.push_back(0.5 * k * (c + 1));  // along (1, ..., 6), 0.5 * sqrt(91) apart
+  const Reeb_skeleton collinear = extract_reeb_skeleton(high, 5.0);
+  EXPECT_EQ(collinear.status, Status::success);
+  EXPECT_EQ(loops_of(collinear.graph), 0u);
+  std::size_t leaves = 0;
+  for (auto v : boost::make_iterator_range(vertices(collinear.graph))) leaves += degree(v, collinear.graph) == 1 ? 1 : 0;
+  EXPECT_EQ(leaves, 2u);  // a segment
+  expect_members_partition(collinear.graph, 21);
   Skeleton_options bad;
   bad.delta = -1;
   EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad), std::invalid_argument);
