@@ -407,7 +407,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
       throw Usage_error("--heading-tolerance must be in [0, 180] degrees");
     std::vector<Gps_trip> trips;
-    for (const auto& trip : io::read_track_trips(args.get("tracks"))) {
+    io::Track_origin origin;  // to name the file, line and trip id where the library names trip and fix indices
+    for (const auto& trip : io::read_track_trips(args.get("tracks"), &origin)) {
       trips.emplace_back();
       for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
     }
@@ -432,7 +433,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
     ro.branch_merge_distance = std::max(0.0, options.branch_merge_distance);  // unset (-1): off for road maps
     ro.embedding = options.embedding;
     ro.progress = options.progress;
-    Road_map road = extract_road_map(trips, ro);
+    Road_map road;
+    try {
+      road = extract_road_map(trips, ro);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(origin.locate(args.get("tracks"), e.what()));
+    }
     const Gps_trace_sample& sample = road.sample;
     if (!lonlat && sample.median_step > 0 && sample.median_step < 0.01) {
       // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart.

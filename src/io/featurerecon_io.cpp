@@ -17,6 +17,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace FeatureRecon {
@@ -253,7 +254,16 @@ std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
   return p;
 }
 
-std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path) {
+std::string Track_origin::locate(const std::string& path, const std::string& message) const {
+  static const std::regex fix_of_trip("trip ([0-9]+), fix ([0-9]+)");
+  std::smatch m;
+  if (!std::regex_search(message, m, fix_of_trip)) return message;
+  const unsigned long long t = std::stoull(m[1].str()), i = std::stoull(m[2].str());
+  if (t >= trip_ids.size() || i >= lines[t].size()) return message;
+  return message + " [" + path + ":" + std::to_string(lines[t][i]) + ", trip id '" + trip_ids[t] + "']";
+}
+
+std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path, Track_origin* origin) {
   std::vector<std::vector<std::array<double, 3>>> trips;
   std::map<std::string, std::size_t> index;
   int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
@@ -265,7 +275,14 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
       throw Input_error(where(path, number) + (timed ? "no time t, but the first line has one ('trip_id x y t')"
                                                      : "a time t, but the first line has none ('trip_id x y')"));
     const auto it = index.emplace(t[0], trips.size()).first;
-    if (it->second == trips.size()) trips.emplace_back();
+    if (it->second == trips.size()) {
+      trips.emplace_back();
+      if (origin != nullptr) {
+        origin->trip_ids.push_back(t[0]);
+        origin->lines.emplace_back();
+      }
+    }
+    if (origin != nullptr) origin->lines[it->second].push_back(number);
     trips[it->second].push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y"),
                                  t.size() > 3 ? parse_double(t[3], path, number, "t") : static_cast<double>(number)});
   });

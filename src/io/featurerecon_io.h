@@ -64,9 +64,17 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
 /// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y).
 std::vector<std::array<double, 2>> read_track_points(const std::string& path);
 
+/// Where the trips of read_track_trips() come from: each trip's id, and the line of each of its fixes.
+struct Track_origin {
+  std::vector<std::string> trip_ids;
+  std::vector<std::vector<std::size_t>> lines;
+  /// Appends to a message that names "trip T, fix I" (indices as read) the file, line and trip id; else returns it.
+  std::string locate(const std::string& path, const std::string& message) const;
+};
+
 /// GPS tracks grouped by trip: trips in order of first appearance, each a list of (x, y, t) in file order.
-/// A missing t is the line number (file order). Trip ids are any token.
-std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path);
+/// A missing t is the line number (file order). Trip ids are any token. With `origin`, also where each came from.
+std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path, Track_origin* origin = nullptr);
 
 /// Writes a road map in the benchmark's format (vertices `id,x,y`, edges `id,v1,v2`), each file atomically.
 void write_map(const std::string& vertices_path, const std::string& edges_path,
