@@ -308,6 +308,7 @@ std::string system_reason() { return std::strerror(errno); }
 }  // namespace
 
 void require_readable_file(const std::string& path) {
+  if (path.empty()) throw Input_error("an empty file name was given for reading");
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) throw Input_error(path + ": cannot open for reading (" + system_reason() + ")");
   if (S_ISDIR(st.st_mode)) throw Input_error(path + ": is a directory, not a file");
