@@ -659,7 +659,6 @@ expect(sigma_range_tiny 2 "--sigma-range must be a scale in \\[1e-150, 1e150\\]"
 expect(hex_option 2 "--radius must be a finite number, got '0x10'" rips --points ${DATA}/figure_eight.xyz --radius 0x10 --out ${WORK}/x.txt)
 file(WRITE ${WORK}/hex.xyz "0 0 0\n0x10 1 1\n")
 expect(hex_coordinate 1 "hex.xyz:2: '0x10' is not a number" sample --input ${WORK}/hex.xyz --count 1 --out ${WORK}/o.xyz --quiet)
-expect(empty_input_name 1 "error: an empty file name was given for reading" rips --points "" --radius 1 --out ${WORK}/o.txt)
 expect(missing_extensionless_input 1 "nowhere/none: cannot open for reading" sample --input ${WORK}/nowhere/none --count 1 --out ${WORK}/o.xyz --quiet)
 # sample-stats: --sigma-feature without normals is refused (was ignored), a zero normal named (was null statistics).
 expect(sample_stats_sigma_without_normals 2 "--sigma-feature needs normals in .*blank_first.xyz" sample-stats --input ${WORK}/blank_first.xyz --sigma-feature 0.5)

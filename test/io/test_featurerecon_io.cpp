@@ -74,6 +74,12 @@ TEST(ExchangeFormat, ErrorsNameTheLine) {
   expect_error("2 2\n0 0 0 0\n0 0 0 1\n0 1\n", "unexpected end of file after 1 of 2 simplex lines");
   expect_error("2 1\n0 0 0 0\n0 0 0 1\n0 1\n1 0\n", ":5: unexpected content");
   EXPECT_THROW(io::read_complex("/nonexistent/file"), io::Input_error);
+  try {  // an empty name is said to be one (the message began ': cannot open')
+    io::read_complex("");
+    ADD_FAILURE() << "no error";
+  } catch (const io::Input_error& e) {
+    EXPECT_STREQ(e.what(), "an empty file name was given for reading");
+  }
 }
 
 TEST(PointFile, AnyDimensionWithComments) {
