@@ -234,6 +234,36 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   }
   // Empty graph.
   EXPECT_EQ(num_vertices(merge_close_branch_nodes(Skeleton_graph(), x.points, 1).graph), 0u);
+  // Nodes without points (a hand-made graph): the merged node at the mean of the two (it was NaN).
+  Crossing bare;
+  for (std::size_t v = 0; v < 6; ++v) bare.graph[v].members.clear();
+  for (auto e : boost::make_iterator_range(edges(bare.graph))) bare.graph[e].members.clear();
+  const Branch_node_merge_result mean = merge_close_branch_nodes(bare.graph, bare.points, 0.2);
+  EXPECT_EQ(mean.graph[2].position, (std::array<double, 3>{0, 0, 0}));
+  // An arc between two nodes of one value, nothing merged: copied as it is, not turned round by index.
+  Skeleton_graph level(2);
+  level[0].type = level[1].type = minimum | maximum;
+  add_edge(1, 0, Skeleton_arc{{{1, 0, 0}, {0, 0, 0}}, {}}, level);
+  const Branch_node_merge_result kept_level = merge_close_branch_nodes(level, x.points, 1.0);
+  const auto e = *edges(kept_level.graph).first;
+  EXPECT_EQ(source(e, kept_level.graph), 1u);
+  EXPECT_EQ(kept_level.graph[e].polyline.front(), (std::array<double, 3>{1, 0, 0}));
+  EXPECT_EQ(kept_level.graph[0].type, unsigned(minimum | maximum));
+  // Above 3D, input positions of another dimension are named (they overflowed).
+  Point_matrix four;
+  four.dimension = 4;
+  four.rows = 7;
+  four.data.assign(28, 0.0);
+  Crossing short_input = x;
+  for (std::size_t v = 0; v < 6; ++v) short_input.graph[v].input_position = {0, 0};
+  try {
+    merge_close_branch_nodes(short_input.graph, four, 0.2);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("node 0 has an input position of 2 coordinates, the coordinates have 4"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {

@@ -164,16 +164,29 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
       if (p >= positions.size() || (high && p >= input.rows))
         FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " has member ", p, " out of range [0, ",
                                                        positions.size(), ")");
+  for (std::size_t v = 0; v < n; ++v)
+    if (!g[v].input_position.empty() && g[v].input_position.size() != input.dimension)
+      FeatureRecon::internal::throw_invalid_argument(fn, "node ", v, " has an input position of ",
+                                                     g[v].input_position.size(), " coordinates, the coordinates have ",
+                                                     input.dimension);
+  for (std::size_t k = 0; k < m; ++k)
+    if (input.dimension == 0 ? !arc[k]->input_polyline.empty() : arc[k]->input_polyline.size() % input.dimension != 0)
+      FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " has an input polyline of ",
+                                                     arc[k]->input_polyline.size(), " numbers, not a multiple of the ",
+                                                     "dimension ", input.dimension);
   // Arc lengths in input space (the input polyline above 3D), candidates shortest first (ties by arc index).
   std::vector<std::pair<double, std::size_t>> candidates;
   for (std::size_t k = 0; k < m; ++k) {
     if (lower[k] == upper[k]) continue;
-    const bool flat = arc[k]->input_polyline.empty();
-    const std::size_t d = flat ? 3 : input.dimension, count = flat ? arc[k]->polyline.size()
-                                                                   : arc[k]->input_polyline.size() / d;
-    const double* c = flat ? (count > 0 ? arc[k]->polyline.front().data() : nullptr) : arc[k]->input_polyline.data();
     double length = 0;
-    for (std::size_t i = 0; i + 1 < count; ++i) length += point_distance(c + i * d, c + (i + 1) * d, d);
+    if (arc[k]->input_polyline.empty()) {
+      const auto& l = arc[k]->polyline;
+      for (std::size_t i = 0; i + 1 < l.size(); ++i) length += point_distance(l[i].data(), l[i + 1].data(), 3);
+    } else {
+      const std::size_t d = input.dimension, count = arc[k]->input_polyline.size() / d;
+      const double* c = arc[k]->input_polyline.data();
+      for (std::size_t i = 0; i + 1 < count; ++i) length += point_distance(c + i * d, c + (i + 1) * d, d);
+    }
     if (length <= distance) candidates.push_back({length, k});
   }
   std::sort(candidates.begin(), candidates.end());
@@ -243,25 +256,35 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
     for (const std::size_t k : arcs_of[i])
       node.members.insert(node.members.end(), arc[k]->members.begin(), arc[k]->members.end());
     node.position = {0, 0, 0};
+    if (!node.input_position.empty()) std::fill(node.input_position.begin(), node.input_position.end(), 0.0);
+    if (node.members.empty()) {  // no points (a hand-made graph): the mean of the merged nodes
+      for (const std::size_t v : nodes_of[i]) {
+        for (int c = 0; c < 3; ++c) node.position[c] += g[v].position[c];
+        for (std::size_t c = 0; c < node.input_position.size() && c < g[v].input_position.size(); ++c)
+          node.input_position[c] += g[v].input_position[c];
+      }
+      for (double& x : node.position) x /= static_cast<double>(nodes_of[i].size());
+      for (double& x : node.input_position) x /= static_cast<double>(nodes_of[i].size());
+      continue;
+    }
     for (const Vertex_index p : node.members)
       for (int c = 0; c < 3; ++c) node.position[c] += positions[p][c];
     for (double& x : node.position) x /= static_cast<double>(node.members.size());
     if (high && !node.input_position.empty()) {
-      std::fill(node.input_position.begin(), node.input_position.end(), 0.0);
       for (const Vertex_index p : node.members)
         for (std::size_t c = 0; c < input.dimension; ++c) node.input_position[c] += input.row(p)[c];
       for (double& x : node.input_position) x /= static_cast<double>(node.members.size());
     }
   }
-  // The other arcs, their ends moved to the merged nodes; an arc whose lower end now lies higher is reversed.
+  // The other arcs, their ends moved to the merged nodes; an arc whose lower end moved above its upper end is
+  // reversed (its members stay in increasing function value).
   std::vector<std::size_t> down(nodes_of.size(), 0), up(nodes_of.size(), 0);
   std::vector<char> retype(nodes_of.size(), 0);  // merged nodes and the ends of reversed arcs
-  auto above = [&h](std::size_t a, std::size_t b) { return h[a].value > h[b].value || (h[a].value == h[b].value && a > b); };
   for (std::size_t k = 0; k < m; ++k) {
     if (contracted[k]) continue;
     std::size_t a = index[find(lower[k])], b = index[find(upper[k])];
     Skeleton_arc copy = *arc[k];
-    if (a != b && above(a, b)) {
+    if (a != b && (nodes_of[a].size() > 1 || nodes_of[b].size() > 1) && h[a].value > h[b].value) {
       std::swap(a, b);
       retype[a] = retype[b] = 1;
       std::reverse(copy.polyline.begin(), copy.polyline.end());
@@ -270,7 +293,6 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
         std::swap_ranges(copy.input_polyline.begin() + static_cast<std::ptrdiff_t>(i * d),
                          copy.input_polyline.begin() + static_cast<std::ptrdiff_t>((i + 1) * d),
                          copy.input_polyline.begin() + static_cast<std::ptrdiff_t>((count - 1 - i) * d));
-      std::reverse(copy.members.begin(), copy.members.end());  // increasing function value along the arc
     }
     const bool moved_a = nodes_of[a].size() > 1, moved_b = nodes_of[b].size() > 1;  // the ends that moved
     if (!copy.polyline.empty()) {
@@ -298,16 +320,18 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
 /// most `distance` long in input space (its input_polyline above 3D, else its polyline) into one node, unless
 /// another arc joins the same two nodes (a short loop is kept). Where two curves cross or touch (a figure-eight,
 /// a road crossing) the level sets merge and split at slightly different values, so the Reeb graph draws one
-/// point of degree 4 as two forks joined by a short arc; this draws it as one node. Contractions repeat until no
-/// such arc is left (shortest arcs first, ties by arc index), so a cluster of forks joined by short arcs becomes
-/// one node. A merged node takes the value of its lowest node (ties: the smaller index), whose members come
+/// point of degree 4 as two forks joined by a short arc; this draws it as one node. Contractions go in rounds
+/// until no such arc is left, each round a greedy matching of the candidate arcs, shortest first (ties by arc
+/// index), so a cluster of forks joined by short arcs becomes one node. A merged node takes the value of its lowest node (ties: the smaller index), whose members come
 /// first, then the other nodes' and the contracted arcs' members (the members still partition the points); it
 /// sits at the centroid of its points (above 3D its input_position is the centroid in `coordinates`, its
-/// position the centroid's projection, project_to_3d()). The arcs' polylines end at the new positions; an arc
-/// whose lower end now lies higher is reversed (its polylines and members), and the types of the merged nodes
-/// and of the ends of reversed arcs follow from the arcs below and above them. Nodes and arcs that take no part
+/// position the centroid's projection, project_to_3d(); without points, at the mean of the merged nodes). The
+/// arcs' polylines end at the new positions; an arc whose lower end moved above its upper end is reversed (its
+/// polylines; its members stay in increasing function value), and the types of the merged nodes and of the ends
+/// of reversed arcs follow from the arcs below and above them. Nodes and arcs that take no part
 /// are copied unchanged; the new nodes are ordered by the smallest original node of each.
-/// \pre distance >= 0 and finite; the members index `coordinates` (all checked; throws naming the node or arc).
+/// \pre distance >= 0 and finite; the members index `coordinates`; above 3D input positions and polylines have
+/// its dimension (all checked; throws naming the node or arc).
 inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g, const Point_matrix& coordinates,
                                                          double distance) {
   internal::check_point_matrix(coordinates, "merge_close_branch_nodes", "coordinates");
