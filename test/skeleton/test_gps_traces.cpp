@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
+#include <FeatureRecon/skeleton/road_map.h>
 
 #include <boost/graph/connected_components.hpp>
 
@@ -135,6 +136,37 @@ TEST(GpsTraces, SparseSamplesNextToADenseStreetAreDropped) {
   for (const auto s : S.sample_of_fix) unmapped += s == std::numeric_limits<std::uint32_t>::max() ? 1 : 0;
   EXPECT_GT(unmapped, 0u);
   for (const Edge& e : S.trip_links) EXPECT_LT(e[1], S.points.rows);
+}
+
+TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.1 * k, 1, 0, 9, 25, 100.0 * k));
+  trips.push_back(straight(0, 30, 1, 0, 9, 25, 5000));
+  Gps_trace_options o;
+  o.min_relative_density = 0.15;
+  const Gps_trace_sample plain = sample_gps_traces(trips, 20.0, o);
+  std::vector<double> seen;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const Gps_trace_sample watched = sample_gps_traces(trips, 20.0, o);
+  EXPECT_EQ(watched.status, Status::success);
+  EXPECT_EQ(watched.points.data, plain.points.data);  // watching changes nothing
+  ASSERT_GE(seen.size(), 22u);  // each trip, then the density filter
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_GE(seen.front(), 0.0);
+  EXPECT_LE(seen.back(), 1.0);
+  EXPECT_GE(seen.back(), 0.8);  // the density filter reported
+  for (const double stop_at : {0.0, 0.5, 0.8}) {  // before the first trip, among the trips, in the filter
+    o.progress = [stop_at](double t) { return t < stop_at; };
+    EXPECT_EQ(sample_gps_traces(trips, 20.0, o).status, Status::interrupted) << stop_at;
+  }
+  // The road map stops with it (it stopped only after the sampling).
+  Road_map_options ro;
+  std::size_t calls = 0;
+  ro.progress = [&calls](double t) { return ++calls < 3 || t >= 0.1; };
+  EXPECT_EQ(extract_road_map(trips, ro).status, Status::interrupted);
 }
 
 TEST(GpsTraces, AQuietCarriagewayBesideABusyOneIsKept) {

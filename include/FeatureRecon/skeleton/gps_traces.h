@@ -134,6 +134,9 @@ struct Gps_trace_options {
   /// default spacing, 12 m; 3.2 * 10^8 at 2 m; 2.7 * 10^10 at 0.5 m, which ran 6 minutes and took 8 GB before the
   /// complex's triangle limit refused it, and is now refused after the sampling, 17 s). Default 2^30; 0: no limit.
   std::size_t max_density_pairs = std::size_t(1) << 30;
+  /// Called with the fraction done (after the segment check, per trip while sampling, every 4096 samples of the
+  /// density filter); returning false stops the sampling (Gps_trace_sample::status interrupted).
+  Progress_callback progress;
 };
 
 /// Samples of GPS traces with the parameters used.
@@ -166,6 +169,9 @@ struct Gps_trace_sample {
   bool turn_rule_used = true;                ///< straight unconfirmed segments kept (min_straight_confirmed_fraction)
   std::size_t linked_segments = 0;           ///< ... of the rest, up to 4 segment_support: ends linked only
   bool all_segments_used = false;            ///< the check was off or too few were confirmed (see the options)
+  /// success, or interrupted when Gps_trace_options::progress returned false (the sample is then incomplete:
+  /// not to be used)
+  Status status = Status::success;
 };
 
 namespace internal {
@@ -262,7 +268,8 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
 /// sample beside them (the offset across the sample's direction at least the offset along it; samples without a
 /// direction, per `has_direction`, neither judged nor counted); re-indexes.
 inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lateral_fraction, double heading_tolerance,
-                                const std::vector<bool>& has_direction, std::size_t max_pairs, const char* fn) {
+                                const std::vector<bool>& has_direction, std::size_t max_pairs, const char* fn,
+                                const Progress_callback& progress = {}) {
   const double R = S.density_radius, R2 = R * R;
   constexpr double degree = 3.14159265358979323846 / 180.0;
   const std::array<double, 4> box = bounding_box(S.points);
@@ -289,6 +296,10 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lat
   Gps_trace_sample T;
   T.points.dimension = 2;
   for (std::uint32_t i = 0; i < S.points.rows; ++i) {
+    if (i % 4096 == 0 && !FeatureRecon::internal::report_progress(progress, double(i) / double(S.points.rows))) {
+      S.status = Status::interrupted;  // S unfiltered
+      return;
+    }
     const double x = S.points.row(i)[0], y = S.points.row(i)[1];
     const double ux = std::cos(S.headings[i] * degree), uy = std::sin(S.headings[i] * degree);
     const auto c = grid.cell_of(x, y);
@@ -681,6 +692,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.sample_of_fix.assign(S.fixes, 0);
   std::size_t first_fix = 0;
   for (std::size_t t = 0; t < trips.size(); ++t) {
+    if (!FeatureRecon::internal::report_progress(
+            options.progress, 0.3 + 0.5 * double(first_fix) / double(std::max<std::size_t>(S.fixes, 1)))) {
+      S.status = Status::interrupted;
+      return S;
+    }
     const auto& o = order[t];
     std::uint32_t previous = std::numeric_limits<std::uint32_t>::max();
     auto link = [&](std::uint32_t s) {
@@ -738,9 +754,14 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.points.rows = S.headings.size();
   S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
   S.density_heading_tolerance = options.density_heading_tolerance;
-  if ((options.min_relative_density > 0 || options.min_lateral_density > 0) && S.points.rows > 0)
+  if ((options.min_relative_density > 0 || options.min_lateral_density > 0) && S.points.rows > 0) {
+    Progress_callback filter_progress;
+    if (options.progress) filter_progress = [&options](double f) { return options.progress(0.8 + 0.2 * f); };
     internal::drop_sparse_samples(S, options.min_relative_density, options.min_lateral_density,
-                                  options.density_heading_tolerance, has_direction, options.max_density_pairs, fn);
+                                  options.density_heading_tolerance, has_direction, options.max_density_pairs, fn,
+                                  filter_progress);
+    if (S.status == Status::interrupted) return S;
+  }
   if (options.mean_positions) {  // each sample at the mean of its fixes
     std::vector<double> sum(2 * S.points.rows, 0.0);
     std::vector<std::uint32_t> count(S.points.rows, 0);

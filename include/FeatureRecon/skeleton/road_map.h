@@ -590,8 +590,10 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
     r.status = Status::interrupted;
     return r;
   }
-  r.sample = sample_gps_traces(trips, r.used.rips_radius, r.used.traces);
-  if (!FeatureRecon::internal::report_progress(options.progress, 0.1)) {
+  Gps_trace_options to = r.used.traces;
+  if (options.progress) to.progress = [&options](double t) { return options.progress(0.1 * t); };
+  r.sample = sample_gps_traces(trips, r.used.rips_radius, to);
+  if (r.sample.status == Status::interrupted || !FeatureRecon::internal::report_progress(options.progress, 0.1)) {
     r.status = Status::interrupted;
     return r;
   }
