@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "skeleton_test_utilities.h"
+
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -713,15 +715,11 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
   o.density_radius = 20;
   o.min_relative_density = 0.05;  // the filter on (off by default here; road_map_trace_options() turns it on)
   o.max_density_pairs = 8;
-  try {
-    sample_gps_traces({trip}, 10.0, o);
-    ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("the density filter would compare 9 pairs of the 3 samples (more than "
-                                         "max_density_pairs, 8): the sample spacing (1, --sample-spacing) is small "
-                                         "for the density radius (20, --density-radius)"),
-              std::string::npos) << e.what();
-  }
+  const std::string m = FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({trip}, 10.0, o); });
+  EXPECT_NE(m.find("the density filter would compare 9 pairs of the 3 samples (more than max_density_pairs, 8): the "
+                   "sample spacing (1, --sample-spacing) is small for the density radius (20, --density-radius)"),
+            std::string::npos)
+      << m;
   o.max_density_pairs = 9;  // exactly as many: runs
   EXPECT_EQ(sample_gps_traces({trip}, 10.0, o).points.rows, 3u);
   o.max_density_pairs = 0;  // no limit
