@@ -155,7 +155,8 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   const Gps_trace_sample watched = sample_gps_traces(trips, 20.0, o);
   EXPECT_EQ(watched.status, Status::success);
   EXPECT_EQ(watched.points.data, plain.points.data);  // watching changes nothing
-  ASSERT_GE(seen.size(), 22u);  // each trip, then the density filter
+  ASSERT_GE(seen.size(), 43u);  // each trip in the segment check, each trip sampled, then the density filter
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.3; }), 21);  // the segment check
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_GE(seen.front(), 0.0);
   EXPECT_LE(seen.back(), 1.0);

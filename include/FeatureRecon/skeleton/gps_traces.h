@@ -134,8 +134,8 @@ struct Gps_trace_options {
   /// default spacing, 12 m; 3.2 * 10^8 at 2 m; 2.7 * 10^10 at 0.5 m, which ran 6 minutes and took 8 GB before the
   /// complex's triangle limit refused it, and is now refused after the sampling, 17 s). Default 2^30; 0: no limit.
   std::size_t max_density_pairs = std::size_t(1) << 30;
-  /// Called with the fraction done (after the segment check, per trip while sampling, every 4096 samples of the
-  /// density filter); returning false stops the sampling (Gps_trace_sample::status interrupted).
+  /// Called with the fraction done (per trip during the segment check and while sampling, every 4096 samples of
+  /// the density filter); returning false stops the sampling (Gps_trace_sample::status interrupted).
   Progress_callback progress;
 };
 
@@ -596,8 +596,15 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       bool straight;
     };
     std::vector<Unconfirmed> unconfirmed;
+    std::size_t checked_fixes = 0;
     for (std::size_t t = 0; t < trips.size(); ++t) {
+      if (!FeatureRecon::internal::report_progress(
+              options.progress, 0.3 * double(checked_fixes) / double(std::max<std::size_t>(S.fixes, 1)))) {
+        S.status = Status::interrupted;
+        return S;
+      }
       const auto& o = order[t];
+      checked_fixes += o.size();
       for (std::size_t i = 0; i + 1 < o.size(); ++i) {
         const Gps_fix& a = trips[t][o[i]];
         const Gps_fix& b = trips[t][o[i + 1]];
