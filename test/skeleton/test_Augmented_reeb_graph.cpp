@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -146,6 +148,39 @@ TEST(AugmentedReebGraph, NonManifoldMixAgainstBruteForce) {
     const Reeb_graph R = A.reeb_graph();
     EXPECT_EQ(R.components, 3u);
     EXPECT_EQ(R.loops(), 0u);  // every piece is contractible
+    expect_invariants(c.complex, c.f);
+  }
+}
+
+TEST(AugmentedReebGraph, FansWithScatteredRimNumbersAgainstBruteForce) {
+  // A disk fan: centre 0 and a rim of D vertices, triangles (0, rim p, rim p + 1), the rim numbered in order,
+  // interleaved (even positions first) and at random. The triangles of the centre find their edges far apart in
+  // its edge list (the search gallops there; it walked them one by one, quadratic in the degree).
+  std::mt19937 rng(41);
+  for (int trial = 0; trial < 12; ++trial) {
+    const int D = 40 + 37 * trial;
+    std::vector<Vertex_index> rim(static_cast<std::size_t>(D));
+    for (int p = 0; p < D; ++p)
+      rim[static_cast<std::size_t>(p)] = static_cast<Vertex_index>(
+          1 + (trial % 3 == 1 ? (p % 2 == 0 ? p / 2 : (D + 1) / 2 + p / 2) : p));
+    if (trial % 3 == 2) std::shuffle(rim.begin(), rim.end(), rng);
+    std::vector<Edge> edges;
+    std::vector<Triangle> tris;
+    for (int p = 0; p < D; ++p) {
+      const Vertex_index a = rim[static_cast<std::size_t>(p)], b = rim[static_cast<std::size_t>((p + 1) % D)];
+      edges.push_back({0, a});
+      edges.push_back({std::min(a, b), std::max(a, b)});
+      Triangle t{0, a, b};
+      std::sort(t.begin(), t.end());
+      tris.push_back(t);
+    }
+    std::vector<double> f(static_cast<std::size_t>(D) + 1);
+    for (int p = 0; p < D; ++p)  // a wavy rim: several maxima and minima, the centre in between
+      f[rim[static_cast<std::size_t>(p)]] = std::cos(6.283185307179586 * 3 * p / D) + 0.01 * (p % 5);
+    f[0] = 0.1 * (trial % 5) - 0.2;
+    const auto c = make(static_cast<std::size_t>(D) + 1, edges, tris, f);
+    EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)), brute_force_reeb_arcs(c.complex, c.f))
+        << "trial " << trial;
     expect_invariants(c.complex, c.f);
   }
 }

@@ -320,6 +320,35 @@ TEST(SimplifyByPersistence, ASpurIsMergedOnTheWayToTheElder) {
   EXPECT_EQ(S.graph.nodes[S.graph.arcs[to_short].upper].vertex, 6u);
 }
 
+TEST(SimplifyByPersistence, ManySpursAtOneForkGoTowardsTheElder) {
+  // Fork s = vertex 1 (f 0) above the minimum 0 (f -1), with k one-vertex spurs (f up to 0.1), a kept branch to
+  // the maximum 2 (f 5) and the elder branch to the maximum 3 (f 10), the spurs' arcs before, between and after
+  // the two. Every spur dies at s; each is merged along the arc towards the elder. The sibling components of a
+  // fork are found once per fork (they were searched for each pair: quadratic in the fork's degree).
+  const std::size_t k = 300, n = 4 + k;
+  std::vector<Edge> edges{{0, 1}};
+  std::vector<double> f{-1, 0, 5, 10};
+  for (std::size_t j = 0; j < k; ++j) {
+    if (j == k / 3) edges.push_back({1, 2});
+    if (j == 2 * k / 3) edges.push_back({1, 3});
+    f.push_back(0.1 * static_cast<double>(j + 1) / static_cast<double>(k));
+    edges.push_back({1, static_cast<Vertex_index>(4 + j)});
+  }
+  const auto g = make(n, edges, {}, f);
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+  ASSERT_EQ(A.reeb_graph().count(maximum), k + 2);
+  const Reeb_simplification_result S = simplify_by_persistence(A, 1.0);
+  EXPECT_EQ(S.removed_branches, k);
+  expect_partition(S.graph, n, "fork");
+  ASSERT_EQ(S.graph.nodes.size(), 4u);  // the minimum, s and the two maxima
+  ASSERT_EQ(S.graph.arcs.size(), 3u);
+  for (std::size_t j = 0; j < k; ++j) {
+    const std::size_t a = arc_of(S.graph, static_cast<Vertex_index>(4 + j));
+    ASSERT_LT(a, 3u) << "spur " << j;
+    EXPECT_EQ(S.graph.nodes[S.graph.arcs[a].upper].vertex, 3u) << "spur " << j;
+  }
+}
+
 TEST(SimplifyByPersistence, LongStemWithManySpursBecomesOneArc) {
   // Stem 0..n-1 (f = index); at every inner stem vertex a spur up (f + 0.5) and one down (f - 0.5): each dies
   // at its stem vertex with persistence 0.5. Every sibling component is the rest of the stem: a search of it

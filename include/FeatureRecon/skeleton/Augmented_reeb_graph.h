@@ -265,8 +265,19 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   FeatureRecon::internal::Large_vector<std::size_t> first_edge(n + 1, 0);
   for (const Edge& e : K.edges) ++first_edge[e[0] + 1];
   for (std::size_t v = 0; v < n; ++v) first_edge[v + 1] += first_edge[v];
+  // Galloping search from i: O(log) of the distance walked, so that a vertex of high degree whose triangles'
+  // third vertices lie far apart in its edge list costs O(deg log deg), not O(deg^2).
   auto seek = [&](std::size_t i, Vertex_index u, Vertex_index v) {
     const std::size_t end = first_edge[u + 1];
+    std::size_t step = 1;
+    while (i + step < end && K.edges[i + step][1] < v) {
+      i += step;
+      step *= 2;
+    }
+    while (step > 1) {  // K.edges[i][1] < v or i is the start; K.edges[i + step][1] >= v or i + step >= end
+      step /= 2;
+      if (i + step < end && K.edges[i + step][1] < v) i += step;
+    }
     while (i < end && K.edges[i][1] < v) ++i;
     if (i == end || K.edges[i][1] != v)
       FeatureRecon::internal::throw_invalid_argument(fn, "the complex is not canonical: edge (", u, ", ", v,

@@ -51,7 +51,8 @@ struct Simplification_complex {
 /// A branch (extreme e, fork s) is glued onto a path from s into the sibling component that holds the elder
 /// extreme, up to e's level: the fewest arcs to a node beyond e's level that lies, beyond that level, in the
 /// elder's part (else to the nearest node beyond it). The search stays between the two levels, and one
-/// union-find sweep finds every fork's sibling, so a long stem with n short spurs costs O(n log n), not O(n^2).
+/// union-find sweep finds every fork's sibling, so a long stem with n short spurs, or one fork with n, costs
+/// O(n log n), not O(n^2).
 /// This overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
 /// regular nodes (e.g. after repair_reeb_graph()), which the result absorbs into arcs.
 /// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's vertices
@@ -219,20 +220,43 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     W.linked_at.assign(nn, none);
     W.step.assign(nn, none);
     auto farther = [&](std::size_t x, std::size_t y) { return down ? x < y : x > y; };
+    // The components beyond a fork, each with its first arc (in adjacency order): once per fork, so that a fork
+    // with k short branches costs O(k log k), not k times its degree.
+    struct Part {
+      std::size_t root, first_arc;
+    };
+    std::vector<Part> parts;
     for (std::size_t k = 0; k < nn; ++k) {
       const std::size_t s = down ? k : nn - 1 - k;
       W.step[s] = k;
-      for (const std::size_t i : at_fork[s]) {
-        const std::size_t ce = W.find(pairs[i].birth_node);
-        Branch_choice& c = choice[i];
-        for (const auto& [y, arc] : adj[s]) {
-          if (!farther(y, s)) continue;
-          const std::size_t cy = W.find(y);
-          if (cy == ce) {
-            if (c.alpha == none) c.alpha = arc;
-          } else if (c.elder == none || farther(W.extreme[cy], c.elder)) {
-            c.elder = W.extreme[cy];
-            c.beta = arc;
+      if (!at_fork[s].empty()) {
+        parts.clear();
+        for (const auto& [y, arc] : adj[s])
+          if (farther(y, s)) parts.push_back({W.find(y), arc});
+        std::stable_sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.root < b.root; });
+        parts.erase(std::unique(parts.begin(), parts.end(),
+                                [](const Part& a, const Part& b) { return a.root == b.root; }),
+                    parts.end());  // the first arc of each component stays
+        // The two components that reach farthest (extremes of distinct components differ); ties cannot occur.
+        std::size_t best = none, second = none;
+        for (std::size_t j = 0; j < parts.size(); ++j) {
+          if (best == none || farther(W.extreme[parts[j].root], W.extreme[parts[best].root])) {
+            second = best;
+            best = j;
+          } else if (second == none || farther(W.extreme[parts[j].root], W.extreme[parts[second].root])) {
+            second = j;
+          }
+        }
+        for (const std::size_t i : at_fork[s]) {
+          const std::size_t ce = W.find(pairs[i].birth_node);
+          Branch_choice& c = choice[i];
+          const auto own = std::lower_bound(parts.begin(), parts.end(), ce,
+                                            [](const Part& a, std::size_t r) { return a.root < r; });
+          if (own != parts.end() && own->root == ce) c.alpha = own->first_arc;
+          const std::size_t sibling = best != none && parts[best].root != ce ? best : second;
+          if (sibling != none && parts[sibling].root != ce) {
+            c.elder = W.extreme[parts[sibling].root];
+            c.beta = parts[sibling].first_arc;
           }
         }
       }
