@@ -128,6 +128,23 @@ TEST(EmbedReebGraph, ProjectionKeepsDistancesOfPlanarData) {
   EXPECT_EQ(project_to_3d(m), xyz);  // deterministic, signs included
 }
 
+TEST(EmbedReebGraph, ProjectionKeepsTinyAndHugeCoordinates) {
+  // Ten collinear points in 4D, spacing s along the first axis: projected to 3D they span +-4.5 s on the first
+  // axis. The covariance of s = 1e-170 underflowed and of s = 1e200 overflowed: every projection was 0.
+  for (const double spacing : {1.0, 1e-170, 1e-300, 1e200, 1e300}) {
+    Point_matrix m;
+    m.dimension = 4;
+    m.rows = 10;
+    for (int i = 0; i < 10; ++i) m.data.insert(m.data.end(), {i * spacing, 0.0, 0.0, 0.0});
+    const auto xyz = project_to_3d(m);
+    for (int i = 0; i < 10; ++i) {
+      EXPECT_NEAR(xyz[static_cast<std::size_t>(i)][0] / spacing, i - 4.5, 1e-9) << spacing << " point " << i;
+      EXPECT_EQ(xyz[static_cast<std::size_t>(i)][1], 0.0);
+      EXPECT_EQ(xyz[static_cast<std::size_t>(i)][2], 0.0);
+    }
+  }
+}
+
 TEST(EmbedReebGraph, BadInput) {
   Reeb_graph G;
   G.nodes = {{7, 0.0, minimum | maximum, {}}};

@@ -71,24 +71,37 @@ inline std::vector<std::array<double, 3>> project_to_3d(const Point_matrix& m) {
     return out;
   }
   const Eigen::Index d = static_cast<Eigen::Index>(m.dimension);
+  // Coordinates are scaled by a power of two (exact) to a largest magnitude in [0.5, 1): the covariance of
+  // coordinates near 1e-170 or 1e200 would underflow or overflow (every projection 0), the mean near the largest
+  // doubles too.
+  double largest = 0;
+  for (const double c : m.data) largest = std::max(largest, std::fabs(c));
+  int exponent = 0;
+  if (largest > 0) std::frexp(largest, &exponent);
+  const Eigen::Map<const Eigen::MatrixXd> X(m.data.data(), d, static_cast<Eigen::Index>(m.rows));
+  auto row = [&](std::size_t i) -> Eigen::VectorXd {
+    Eigen::VectorXd x = X.col(static_cast<Eigen::Index>(i));
+    for (Eigen::Index c = 0; c < d; ++c) x[c] = std::ldexp(x[c], -exponent);
+    return x;
+  };
   Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
-  for (std::size_t i = 0; i < m.rows; ++i) mean += Eigen::Map<const Eigen::VectorXd>(m.row(i), d);
+  for (std::size_t i = 0; i < m.rows; ++i) mean += row(i);
   if (m.rows > 0) mean /= static_cast<double>(m.rows);
   Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(d, d);
   for (std::size_t i = 0; i < m.rows; ++i) {
-    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(m.row(i), d) - mean;
+    const Eigen::VectorXd x = row(i) - mean;
     cov.noalias() += x * x.transpose();
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);  // ascending eigenvalues
   for (std::size_t i = 0; i < m.rows; ++i) {
-    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(m.row(i), d) - mean;
+    const Eigen::VectorXd x = row(i) - mean;
     for (int c = 0; c < 3; ++c) {
       Eigen::VectorXd axis = eig.eigenvectors().col(d - 1 - c);
       // Deterministic sign: the largest component of each axis is positive.
       Eigen::Index k = 0;
       axis.cwiseAbs().maxCoeff(&k);
       if (axis[k] < 0) axis = -axis;
-      out[i][static_cast<std::size_t>(c)] = axis.dot(x);
+      out[i][static_cast<std::size_t>(c)] = std::ldexp(axis.dot(x), exponent);
     }
   }
   return out;

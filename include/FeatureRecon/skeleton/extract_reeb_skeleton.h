@@ -635,6 +635,8 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   internal::check_skeleton_options(options, fn);
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
+  if (!(std::isfinite(rips_radius) && rips_radius >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0, got ", rips_radius);
   const Proximity_graph g = build_rips_graph_from_distance_matrix(D, rips_radius);
   bool stopped = false;
   Progress_callback scaled;

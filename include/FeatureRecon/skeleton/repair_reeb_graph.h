@@ -357,7 +357,8 @@ struct Reeb_prune_result {
 /// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components", "max_height must be >= 0");
+    FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components", "max_height must be >= 0, got ",
+                                                   max_height);
   internal::check_reeb_graph(R, "prune_reeb_graph_components");
   const std::vector<std::size_t> component = internal::node_components(R);
   auto find = [&component](std::size_t x) { return component[x]; };
@@ -416,7 +417,7 @@ struct Reeb_trim_result {
 /// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0");
+    FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0, got ", max_height);
   internal::check_reeb_graph(R, "trim_essential_stubs");
   Reeb_trim_result result;
   const std::size_t n = R.nodes.size();
