@@ -463,8 +463,9 @@ TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
 }
 
 TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {
-  // Most points are copies of one point: the median edge length is 0, so the embedding falls back to 1/64 of
-  // the range of f; the result reports that width, and giving it explicitly draws the same skeleton.
+  // Most points are copies of one point: the median edge length over all edges is 0 (the embedding fell back to
+  // 1/64 of the range of f); over the edges between distinct points it is the spacing, 1, as without the copies.
+  // The result reports that width, and giving it explicitly draws the same skeleton.
   Point_matrix m;
   m.dimension = 2;
   for (int i = 0; i < 20; ++i) m.data.insert(m.data.end(), {double(i), 0.0});
@@ -473,7 +474,7 @@ TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {
   Skeleton_options o;
   o.trim_stubs = false;
   const Reeb_skeleton s = extract_reeb_skeleton(m, 1.0, o);
-  EXPECT_DOUBLE_EQ(s.level_width, 19.0 / 64);
+  EXPECT_EQ(s.level_width, 1.0);
   o.embedding.level_width = s.level_width;
   const Reeb_skeleton t = extract_reeb_skeleton(m, 1.0, o);
   ASSERT_EQ(num_edges(s.graph), num_edges(t.graph));
@@ -502,6 +503,42 @@ skeleton_signature(const Skeleton_graph& g) {
   return {nodes, arcs};
 }
 }  // namespace
+
+TEST(ExtractReebSkeleton, CopiesLeaveTheAutomaticLevelWidthAlone) {
+  // An X of two lines of points 0.4 apart crossing at 1.2 rad, r = 1: the median edge length (the automatic level
+  // width, and twice it the branch-merge distance) was taken over all edges, so copies of the points, with their
+  // edges of length 0, moved it (0.754 once, 0.4 twice) and the crossing became two forks instead of one node of
+  // degree 4.
+  auto x_of = [](int copies) {
+    std::vector<std::array<double, 2>> p;
+    for (int i = -30; i <= 30; ++i) {
+      for (int c = 0; c < copies; ++c) p.push_back({0.4 * i, 0.0});
+      if (i != 0)
+        for (int c = 0; c < copies; ++c) p.push_back({0.4 * i * std::cos(1.2), 0.4 * i * std::sin(1.2)});
+    }
+    return p;
+  };
+  Skeleton_options o;
+  o.delta = 0.5;
+  const Reeb_skeleton once = extract_reeb_skeleton(x_of(1), 1.0, o);
+  ASSERT_EQ(once.status, Status::success);
+  auto degree_4 = [](const Reeb_skeleton& s) {
+    std::size_t count = 0;
+    for (auto v : boost::make_iterator_range(vertices(s.graph))) count += degree(v, s.graph) == 4 ? 1 : 0;
+    return count;
+  };
+  EXPECT_EQ(degree_4(once), 1u);
+  for (const int copies : {2, 3}) {
+    const auto points = x_of(copies);
+    const Reeb_skeleton s = extract_reeb_skeleton(points, 1.0, o);
+    EXPECT_EQ(s.level_width, once.level_width) << copies;
+    EXPECT_EQ(s.branch_merge_distance, once.branch_merge_distance) << copies;
+    EXPECT_EQ(num_vertices(s.graph), num_vertices(once.graph)) << copies;
+    EXPECT_EQ(num_edges(s.graph), num_edges(once.graph)) << copies;
+    EXPECT_EQ(degree_4(s), 1u) << copies;
+    expect_members_partition(s.graph, points.size());
+  }
+}
 
 TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {
   // A noisy figure-eight with copies: 40 more of its point 7 (a regular point), 40 of point 0 (the smallest
