@@ -460,6 +460,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     s = std::move(road.skeleton);
     use_merged = road.used.merge_distance > 0 && road.status != Status::degenerate_input;
     if (use_merged) merged = std::move(road.merged.skeleton);
+    // Without merging the map is the skeleton itself: its length before and after.
+    const double unmerged_length = use_merged ? 0.0 : skeleton::internal::map_length(road.map.positions, road.map.edges);
     gps_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
                ", \"link_gap\": " + json_number(sample.max_link_gap) +
                ", \"segment_support\": " + json_number(std::max(0.0, sample.segment_support)) +
@@ -487,8 +489,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
                json_number(options.prune_height) + ", \"trip_links\": " +
                std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
                ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
-               json_number(use_merged ? road.merged.length_before : 0.0) + ", \"length\": " +
-               json_number(use_merged ? road.merged.length_after : 0.0);
+               json_number(use_merged ? road.merged.length_before : unmerged_length) + ", \"length\": " +
+               json_number(use_merged ? road.merged.length_after : unmerged_length);
     if (lonlat)
       gps_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
                   ", \"origin_latitude\": " + json_number(projection.origin_latitude);
