@@ -627,6 +627,37 @@ TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
   }
 }
 
+TEST(ExtractReebSkeleton, CopiesInADistanceMatrixAreJoinedAsCopiesOfPoints) {
+  // Rows at distance 0 with equal rows are copies: joined as copies of points are (first copy, its neighbours,
+  // the previous copy), not as a clique. 1000 copies of one point were 1.7 * 10^8 triangles, refused by the limit.
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(1000, 1000);
+  const Reeb_skeleton one_place = extract_reeb_skeleton_from_distance_matrix(zero, 1.0);
+  ASSERT_EQ(one_place.status, Status::success);
+  EXPECT_EQ(num_vertices(one_place.graph), 1u);
+  EXPECT_LT(one_place.rips_triangles, 1000u);
+  expect_members_partition(one_place.graph, 1000);
+  // A figure-eight with copies, as points and as their distance matrix: the same complex and skeleton.
+  const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
+  std::vector<std::array<double, 2>> p = eight.points;
+  for (std::size_t k = 0; k < 30; ++k) p.push_back(eight.points[7]);
+  for (std::size_t i = 0; i < eight.points.size(); i += 3) p.push_back(eight.points[i]);
+  const std::size_t n = p.size();
+  Eigen::MatrixXd D(n, n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) D(i, j) = std::hypot(p[i][0] - p[j][0], p[i][1] - p[j][1]);
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Reeb_skeleton from_points = extract_reeb_skeleton(p, 0.7, o);
+  const Reeb_skeleton from_matrix = extract_reeb_skeleton_from_distance_matrix(D, 0.7, o);
+  EXPECT_EQ(from_matrix.rips_edges, from_points.rips_edges);
+  EXPECT_EQ(from_matrix.rips_triangles, from_points.rips_triangles);
+  EXPECT_EQ(from_matrix.level_width, from_points.level_width);
+  EXPECT_EQ(num_vertices(from_matrix.graph), num_vertices(from_points.graph));
+  EXPECT_EQ(num_edges(from_matrix.graph), num_edges(from_points.graph));
+  EXPECT_EQ(loops_of(from_matrix.graph), 2u);
+  expect_members_partition(from_matrix.graph, n);
+}
+
 TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
   const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
   const std::size_t n = eight.points.size();

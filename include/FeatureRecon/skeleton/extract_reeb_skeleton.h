@@ -497,6 +497,49 @@ inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first
   return true;
 }
 
+/// The graph of all points from the graph h of the first copies (h's vertex k is original[k], increasing;
+/// first[i]: the first copy of point i): each further copy joined to its first copy, the first copy's
+/// neighbours (at their distances) and the previous copy.
+inline Proximity_graph join_copies(const Proximity_graph& h, const std::vector<Vertex_index>& first,
+                                   const std::vector<Vertex_index>& original) {
+  const std::size_t n = first.size();
+  // Neighbours of each first copy in h (compressed rows over the original indices), and the copies in order.
+  std::vector<std::size_t> start(n + 1, 0);
+  for (const Edge& e : h.edges) {
+    ++start[original[e[0]] + 1];
+    ++start[original[e[1]] + 1];
+  }
+  for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<std::pair<Vertex_index, double>> around(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t e = 0; e < h.edges.size(); ++e) {
+    const Vertex_index a = original[h.edges[e][0]], b = original[h.edges[e][1]];
+    around[fill[a]++] = {b, h.length(e)};
+    around[fill[b]++] = {a, h.length(e)};
+  }
+  Proximity_graph g;
+  g.number_of_vertices = n;
+  g.edges.reserve(h.edges.size());
+  g.edge_lengths.reserve(h.edges.size());
+  auto join = [&g](Vertex_index a, Vertex_index b, double length) {
+    g.edges.push_back({std::min(a, b), std::max(a, b)});
+    g.edge_lengths.push_back(length);
+  };
+  for (std::size_t e = 0; e < h.edges.size(); ++e) join(original[h.edges[e][0]], original[h.edges[e][1]], h.length(e));
+  std::vector<Vertex_index> previous(n);  // the last copy seen of each first copy
+  for (std::size_t i = 0; i < n; ++i) previous[i] = static_cast<Vertex_index>(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vertex_index r = first[i], c = static_cast<Vertex_index>(i);
+    if (r == c) continue;
+    join(r, c, 0.0);
+    if (previous[r] != r) join(previous[r], c, 0.0);
+    previous[r] = c;
+    for (std::size_t k = start[r]; k < start[r + 1]; ++k) join(around[k].first, c, around[k].second);
+  }
+  sort_unique_edges(g.edges, &g.edge_lengths);
+  return g;
+}
+
 /// The Rips graph of the distinct points, where each further copy of a point is joined to its first copy, to the
 /// first copy's neighbours (at their distances) and to the next copy (index order), but not to the other
 /// copies. Every copy's closed neighbourhood lies in its first copy's, and has its value under any geodesic
@@ -517,42 +560,27 @@ inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points,
       distinct.data.insert(distinct.data.end(), points.row(i), points.row(i) + points.dimension);
     }
   distinct.rows = original.size();
-  const Proximity_graph h = build_rips_graph(distinct, radius, options);
-  // Neighbours of each first copy in h (compressed rows over the original indices), and the copies in order.
-  std::vector<std::size_t> start(points.rows + 1, 0);
-  for (const Edge& e : h.edges) {
-    ++start[original[e[0]] + 1];
-    ++start[original[e[1]] + 1];
+  return join_copies(build_rips_graph(distinct, radius, options), first, original);
+}
+
+/// First copies of the rows of an n x n distance matrix `a` (row-major): row i is a copy of the smallest j < i at
+/// distance 0 whose row (and so column) is the same as i's and which is a first copy itself. Returns false,
+/// leaving `first` empty, when no row is a copy. O(n^2) for metric matrices (a pair at distance 0 has equal rows).
+inline bool first_copies_of_rows(const std::vector<double>& a, std::size_t n, std::vector<Vertex_index>& first) {
+  first.assign(n, 0);
+  bool any = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    first[i] = static_cast<Vertex_index>(i);
+    const double* ri = a.data() + i * n;
+    for (std::size_t j = 0; j < i; ++j)
+      if (ri[j] == 0 && first[j] == j && std::equal(ri, ri + n, a.data() + j * n)) {
+        first[i] = static_cast<Vertex_index>(j);
+        any = true;
+        break;
+      }
   }
-  for (std::size_t i = 0; i < points.rows; ++i) start[i + 1] += start[i];
-  std::vector<std::pair<Vertex_index, double>> around(start.back());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t e = 0; e < h.edges.size(); ++e) {
-    const Vertex_index a = original[h.edges[e][0]], b = original[h.edges[e][1]];
-    around[fill[a]++] = {b, h.length(e)};
-    around[fill[b]++] = {a, h.length(e)};
-  }
-  Proximity_graph g;
-  g.number_of_vertices = points.rows;
-  g.edges.reserve(h.edges.size());
-  g.edge_lengths.reserve(h.edges.size());
-  auto join = [&g](Vertex_index a, Vertex_index b, double length) {
-    g.edges.push_back({std::min(a, b), std::max(a, b)});
-    g.edge_lengths.push_back(length);
-  };
-  for (std::size_t e = 0; e < h.edges.size(); ++e) join(original[h.edges[e][0]], original[h.edges[e][1]], h.length(e));
-  std::vector<Vertex_index> previous(points.rows);  // the last copy seen of each first copy
-  for (std::size_t i = 0; i < points.rows; ++i) previous[i] = static_cast<Vertex_index>(i);
-  for (std::size_t i = 0; i < points.rows; ++i) {
-    const Vertex_index r = first[i], c = static_cast<Vertex_index>(i);
-    if (r == c) continue;
-    join(r, c, 0.0);
-    if (previous[r] != r) join(previous[r], c, 0.0);
-    previous[r] = c;
-    for (std::size_t k = start[r]; k < start[r + 1]; ++k) join(around[k].first, c, around[k].second);
-  }
-  sort_unique_edges(g.edges, &g.edge_lengths);
-  return g;
+  if (!any) first.clear();
+  return any;
 }
 
 /// The coordinate axis along which the points spread the most: its coordinate bounds the Euclidean distance
@@ -638,6 +666,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
 /// The skeleton of a dense distance matrix: Rips graph at `rips_radius` on the matrix, then the stages of
 /// extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses classical MDS into 3D
 /// (classical_mds_3d(); it takes the first 30 % of the progress range and can be stopped between its steps).
+/// Copies (a row at distance 0 from an earlier one, with the same distances to all) are joined as
+/// extract_reeb_skeleton() joins copies of points (internal::first_copies_of_rows(), internal::join_copies()).
 /// \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
 template <class Matrix>
 Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double rips_radius,
@@ -648,7 +678,21 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0, got ", rips_radius);
-  const Proximity_graph g = build_rips_graph_from_distance_matrix(D, rips_radius);
+  // Copies (rows at distance 0 with equal rows) are joined as extract_reeb_skeleton() joins copies of points: n
+  // copies of one point formed a clique of n^3 / 6 triangles.
+  std::vector<Vertex_index> first;
+  Proximity_graph g;
+  if (internal::first_copies_of_rows(a, n, first)) {
+    std::vector<Vertex_index> original;
+    for (std::size_t i = 0; i < n; ++i)
+      if (first[i] == i) original.push_back(static_cast<Vertex_index>(i));
+    std::vector<std::vector<double>> distinct(original.size(), std::vector<double>(original.size()));
+    for (std::size_t r = 0; r < original.size(); ++r)
+      for (std::size_t c = 0; c < original.size(); ++c) distinct[r][c] = a[original[r] * n + original[c]];
+    g = internal::join_copies(build_rips_graph_from_distance_matrix(distinct, rips_radius), first, original);
+  } else {
+    g = build_rips_graph_from_distance_matrix(D, rips_radius);
+  }
   bool stopped = false;
   Progress_callback scaled;
   if (options.progress) scaled = [&options](double f) { return options.progress(0.3 * f); };
