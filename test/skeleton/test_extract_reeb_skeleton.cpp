@@ -588,14 +588,17 @@ TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {
   std::vector<Vertex_index> first;
   ASSERT_TRUE(skeleton::internal::first_copies(q, first));
   EXPECT_EQ(first, (std::vector<Vertex_index>{0, 1, 0, 1, 4, 0}));
-  const Proximity_graph g = skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {});
+  std::vector<Vertex_index> found;
+  const Proximity_graph g = skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {}, found);
+  EXPECT_EQ(found, first);
   EXPECT_EQ(g.edges, (std::vector<Edge>{{0, 2}, {0, 4}, {0, 5}, {1, 3}, {2, 4}, {2, 5}, {4, 5}}));
   EXPECT_EQ(g.edge_lengths, (std::vector<double>{0, 0.5, 0, 0, 0.5, 0, 0.5}));
   q.data = {1, 2, 1, 3, 2, 2};
   q.rows = 3;
   EXPECT_FALSE(skeleton::internal::first_copies(q, first));
   EXPECT_TRUE(first.empty());
-  EXPECT_EQ(skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {}).edges, build_rips_graph(q, 1.0).edges);
+  EXPECT_EQ(skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {}, found).edges, build_rips_graph(q, 1.0).edges);
+  EXPECT_TRUE(found.empty());
 }
 
 TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
@@ -656,6 +659,12 @@ TEST(ExtractReebSkeleton, CopiesInADistanceMatrixAreJoinedAsCopiesOfPoints) {
   EXPECT_EQ(num_edges(from_matrix.graph), num_edges(from_points.graph));
   EXPECT_EQ(loops_of(from_matrix.graph), 2u);
   expect_members_partition(from_matrix.graph, n);
+  // Rows at distance 0 whose other distances differ are not copies (a matrix that is not a metric): they count
+  // for the level width like any other (40 points on a line, 2i and 2i + 1 at distance 0: median 1, not 2).
+  Eigen::MatrixXd pairs(40, 40);
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j) pairs(i, j) = i / 2 == j / 2 && i != j ? 0.0 : std::abs(i - j);
+  EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(pairs, 2.5).level_width, 1.0);
 }
 
 TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {

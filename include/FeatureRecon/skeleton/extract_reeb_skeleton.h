@@ -341,20 +341,17 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
 
 namespace internal {
 
-/// The median length of the edges between vertices that are not later copies (a vertex with an edge of length 0
-/// to a lower index): copies of points add edges of length 0 and repeat some lengths (their edges to the first
-/// copy's neighbours), so over all edges the median moved with the number of copies (an X of points 0.4 apart:
-/// 0.754 once, 0.4 with every point twice). All edges when every edge has a copy at an end; 0 without edges.
-inline double median_edge_length(const Proximity_graph& g) {
+/// The median length of the edges between first copies (first[v] == v; every vertex when `first` is empty):
+/// copies of points add edges of length 0 and repeat some lengths (their edges to the first copy's neighbours),
+/// so over all edges the median moved with the number of copies (an X of points 0.4 apart: 0.754 once, 0.4 with
+/// every point twice). 0 without such edges.
+inline double median_edge_length(const Proximity_graph& g, const std::vector<Vertex_index>& first = {}) {
   if (g.edges.empty()) return 0;
-  std::vector<char> later_copy(g.number_of_vertices, 0);
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    if (g.length(e) == 0) later_copy[std::max(g.edges[e][0], g.edges[e][1])] = 1;
   std::vector<double> l;
   for (std::size_t e = 0; e < g.edges.size(); ++e)
-    if (!later_copy[g.edges[e][0]] && !later_copy[g.edges[e][1]]) l.push_back(g.length(e));
-  if (l.empty())
-    for (std::size_t e = 0; e < g.edges.size(); ++e) l.push_back(g.length(e));
+    if (first.empty() || (first[g.edges[e][0]] == g.edges[e][0] && first[g.edges[e][1]] == g.edges[e][1]))
+      l.push_back(g.length(e));
+  if (l.empty()) return 0;  // every edge has a copy at an end: all points are copies of one
   std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
   return l[l.size() / 2];
 }
@@ -372,11 +369,12 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
 }
 
 /// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr or
-/// 1-Lipschitz for it (repair_reeb_graph()).
+/// 1-Lipschitz for it (repair_reeb_graph()); `first`: the first copy of each vertex, or empty (no copies).
 template <class Distance, class Bound>
 Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matrix& coordinates,
                                   const Distance& distance, const Skeleton_options& options, double progress_start,
-                                  Bound bound, const char* fn = "extract_reeb_skeleton") {
+                                  Bound bound, const char* fn = "extract_reeb_skeleton",
+                                  const std::vector<Vertex_index>& first = {}) {
   const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
@@ -450,7 +448,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     result.pruned_points = std::move(pruned.removed_vertices);
   }
   Embedding_options eo = options.embedding;
-  if (eo.level_width == 0) eo.level_width = median_edge_length(K);
+  if (eo.level_width == 0) eo.level_width = median_edge_length(K, first);
   if (eo.level_width == 0) eo.level_width = automatic_level_width(S.graph);  // mostly duplicate points
   result.level_width = eo.level_width;
   const std::vector<std::array<double, 3>> projected = project_to_3d(coordinates);
@@ -548,8 +546,8 @@ inline Proximity_graph join_copies(const Proximity_graph& h, const std::vector<V
 /// neighbours cost about k (d + 2) edges and k (d + t) triangles (t: the first copy's) instead of about k^2/2
 /// edges and k^3/6 triangles.
 inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points, double radius,
-                                                     const Proximity_graph_options& options) {
-  std::vector<Vertex_index> first;
+                                                     const Proximity_graph_options& options,
+                                                     std::vector<Vertex_index>& first) {
   if (!first_copies(points, first)) return build_rips_graph(points, radius, options);
   Point_matrix distinct;
   distinct.dimension = points.dimension;
@@ -629,7 +627,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   bool stopped = false;  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
   if (options.progress)
     po.progress = [&options, &stopped](double t) { return !(stopped = stopped || !options.progress(0.3 * t)); };
-  const Proximity_graph g = internal::rips_graph_of_distinct_points(points, rips_radius, po);
+  std::vector<Vertex_index> first;  // empty: no copies
+  const Proximity_graph g = internal::rips_graph_of_distinct_points(points, rips_radius, po, first);
   if (stopped) {
     Reeb_skeleton interrupted;
     interrupted.dimension = std::min<std::size_t>(points.dimension, 3);
@@ -639,7 +638,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   return internal::skeleton_from_graph(
       g, points,
       [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3,
-      [&points, axis = internal::widest_axis(points)](Vertex_index v) { return points.row(v)[axis]; });
+      [&points, axis = internal::widest_axis(points)](Vertex_index v) { return points.row(v)[axis]; },
+      "extract_reeb_skeleton", first);
 }
 
 /// The skeleton of a proximity graph whose vertices have coordinates (any dimension; projected to 3D by PCA
@@ -710,7 +710,7 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   return internal::skeleton_from_graph(
       g, mds,
       [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3,
-      nullptr, fn);
+      nullptr, fn, first);
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.
