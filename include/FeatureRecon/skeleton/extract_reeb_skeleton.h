@@ -472,16 +472,14 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   return result;
 }
 
-/// Exact copies among the rows of `m`: first[i] is the smallest index whose coordinates equal row i's (i for
-/// the first copy). O(n log n) by a lexicographic sort. Returns false, leaving `first` empty, when every row is
-/// distinct.
-inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first) {
+/// first_copies() of n rows of length d given by row(i) (a pointer to d doubles).
+template <class Row>
+bool first_copies_of(std::size_t n, std::size_t d, const Row& row, std::vector<Vertex_index>& first) {
   first.clear();
-  const std::size_t n = m.rows, d = m.dimension;
   std::vector<Vertex_index> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<Vertex_index>(i);
-  auto less = [&m, d](Vertex_index a, Vertex_index b) {
-    return std::lexicographical_compare(m.row(a), m.row(a) + d, m.row(b), m.row(b) + d);
+  auto less = [&row, d](Vertex_index a, Vertex_index b) {
+    return std::lexicographical_compare(row(a), row(a) + d, row(b), row(b) + d);
   };
   std::sort(order.begin(), order.end(), [&less](Vertex_index a, Vertex_index b) {
     return less(a, b) || (!less(b, a) && a < b);
@@ -493,6 +491,13 @@ inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first
   for (std::size_t k = 0; k < n; ++k)
     first[order[k]] = (k > 0 && !less(order[k - 1], order[k])) ? first[order[k - 1]] : order[k];
   return true;
+}
+
+/// Exact copies among the rows of `m`: first[i] is the smallest index whose coordinates equal row i's (i for
+/// the first copy). O(n log n) by a lexicographic sort. Returns false, leaving `first` empty, when every row is
+/// distinct.
+inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first) {
+  return first_copies_of(m.rows, m.dimension, [&m](std::size_t i) { return m.row(i); }, first);
 }
 
 /// The graph of all points from the graph h of the first copies (h's vertex k is original[k], increasing;
@@ -561,24 +566,12 @@ inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points,
   return join_copies(build_rips_graph(distinct, radius, options), first, original);
 }
 
-/// First copies of the rows of an n x n distance matrix `a` (row-major): row i is a copy of the smallest j < i at
-/// distance 0 whose row (and so column) is the same as i's and which is a first copy itself. Returns false,
-/// leaving `first` empty, when no row is a copy. O(n^2) for metric matrices (a pair at distance 0 has equal rows).
+/// First copies of the rows of an n x n distance matrix `a` (row-major, zero diagonal): row i is a copy of the
+/// smallest j with the same row (so at distance 0 from it). A row at distance 0 from another but with other
+/// distances that differ is not a copy. O(n^2 log n) by a lexicographic sort of the rows. Returns false, leaving
+/// `first` empty, when no row is a copy.
 inline bool first_copies_of_rows(const std::vector<double>& a, std::size_t n, std::vector<Vertex_index>& first) {
-  first.assign(n, 0);
-  bool any = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    first[i] = static_cast<Vertex_index>(i);
-    const double* ri = a.data() + i * n;
-    for (std::size_t j = 0; j < i; ++j)
-      if (ri[j] == 0 && first[j] == j && std::equal(ri, ri + n, a.data() + j * n)) {
-        first[i] = static_cast<Vertex_index>(j);
-        any = true;
-        break;
-      }
-  }
-  if (!any) first.clear();
-  return any;
+  return first_copies_of(n, n, [&a, n](std::size_t i) { return a.data() + i * n; }, first);
 }
 
 /// The coordinate axis along which the points spread the most: its coordinate bounds the Euclidean distance
