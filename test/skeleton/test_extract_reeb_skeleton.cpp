@@ -630,6 +630,34 @@ TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
   }
 }
 
+namespace {
+
+/// The planar distance matrix of points.
+Eigen::MatrixXd planar_distance_matrix(const std::vector<std::array<double, 2>>& p) {
+  Eigen::MatrixXd D(p.size(), p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < p.size(); ++j) D(i, j) = std::hypot(p[i][0] - p[j][0], p[i][1] - p[j][1]);
+  return D;
+}
+
+/// The skeleton of a figure-eight from its points and from their distance matrix D: the same complex and skeleton
+/// (two loops; every point a member once).
+void expect_matrix_skeleton_as_points(const std::vector<std::array<double, 2>>& p, const Eigen::MatrixXd& D) {
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Reeb_skeleton from_points = extract_reeb_skeleton(p, 0.7, o);
+  const Reeb_skeleton from_matrix = extract_reeb_skeleton_from_distance_matrix(D, 0.7, o);
+  EXPECT_EQ(from_matrix.rips_edges, from_points.rips_edges);
+  EXPECT_EQ(from_matrix.rips_triangles, from_points.rips_triangles);
+  EXPECT_EQ(from_matrix.level_width, from_points.level_width);
+  EXPECT_EQ(num_vertices(from_matrix.graph), num_vertices(from_points.graph));
+  EXPECT_EQ(num_edges(from_matrix.graph), num_edges(from_points.graph));
+  EXPECT_EQ(loops_of(from_matrix.graph), 2u);
+  expect_members_partition(from_matrix.graph, p.size());
+}
+
+}  // namespace
+
 TEST(ExtractReebSkeleton, CopiesInADistanceMatrixAreJoinedAsCopiesOfPoints) {
   // Rows at distance 0 with equal rows are copies: joined as copies of points are (first copy, its neighbours,
   // the previous copy), not as a clique. 1000 copies of one point were 1.7 * 10^8 triangles, refused by the limit.
@@ -644,21 +672,7 @@ TEST(ExtractReebSkeleton, CopiesInADistanceMatrixAreJoinedAsCopiesOfPoints) {
   std::vector<std::array<double, 2>> p = eight.points;
   for (std::size_t k = 0; k < 30; ++k) p.push_back(eight.points[7]);
   for (std::size_t i = 0; i < eight.points.size(); i += 3) p.push_back(eight.points[i]);
-  const std::size_t n = p.size();
-  Eigen::MatrixXd D(n, n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) D(i, j) = std::hypot(p[i][0] - p[j][0], p[i][1] - p[j][1]);
-  Skeleton_options o;
-  o.delta = 1.0;
-  const Reeb_skeleton from_points = extract_reeb_skeleton(p, 0.7, o);
-  const Reeb_skeleton from_matrix = extract_reeb_skeleton_from_distance_matrix(D, 0.7, o);
-  EXPECT_EQ(from_matrix.rips_edges, from_points.rips_edges);
-  EXPECT_EQ(from_matrix.rips_triangles, from_points.rips_triangles);
-  EXPECT_EQ(from_matrix.level_width, from_points.level_width);
-  EXPECT_EQ(num_vertices(from_matrix.graph), num_vertices(from_points.graph));
-  EXPECT_EQ(num_edges(from_matrix.graph), num_edges(from_points.graph));
-  EXPECT_EQ(loops_of(from_matrix.graph), 2u);
-  expect_members_partition(from_matrix.graph, n);
+  expect_matrix_skeleton_as_points(p, planar_distance_matrix(p));
   // Rows at distance 0 whose other distances differ are not copies (a matrix that is not a metric): they count
   // for the level width like any other (40 points on a line, 2i and 2i + 1 at distance 0: median 1, not 2).
   Eigen::MatrixXd pairs(40, 40);
@@ -670,20 +684,11 @@ TEST(ExtractReebSkeleton, CopiesInADistanceMatrixAreJoinedAsCopiesOfPoints) {
 TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
   const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
   const std::size_t n = eight.points.size();
-  Eigen::MatrixXd D(n, n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j)
-      D(i, j) = std::hypot(eight.points[i][0] - eight.points[j][0], eight.points[i][1] - eight.points[j][1]);
+  const Eigen::MatrixXd D = planar_distance_matrix(eight.points);
+  expect_matrix_skeleton_as_points(eight.points, D);
   Skeleton_options o;
   o.delta = 1.0;
   const Reeb_skeleton from_points = extract_reeb_skeleton(eight.points, 0.7, o);
-  const Reeb_skeleton from_matrix = extract_reeb_skeleton_from_distance_matrix(D, 0.7, o);
-  EXPECT_EQ(from_matrix.rips_edges, from_points.rips_edges);
-  EXPECT_EQ(from_matrix.rips_triangles, from_points.rips_triangles);
-  EXPECT_EQ(num_vertices(from_matrix.graph), num_vertices(from_points.graph));
-  EXPECT_EQ(num_edges(from_matrix.graph), num_edges(from_points.graph));
-  EXPECT_EQ(loops_of(from_matrix.graph), 2u);
-  expect_members_partition(from_matrix.graph, n);
   // Classical MDS of planar distances recovers them (up to rounding).
   std::vector<double> flat(n * n);
   for (std::size_t i = 0; i < n; ++i)
