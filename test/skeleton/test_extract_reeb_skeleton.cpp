@@ -601,9 +601,10 @@ TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {
   EXPECT_TRUE(found.empty());
 }
 
-TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
-  // Two noisy half circles with gaps of about 1.5 radii: repair at 2.5 joins them into a loop. The repair's
-  // distances squared their differences: at 1e160 they overflowed (no repair), at 1e-200 underflowed (all 0).
+namespace {
+
+/// Two noisy half circles of radius 10 (300 points on the circle, seed 3) with gaps of about 1.5 at angles 0, pi.
+std::vector<std::array<double, 2>> half_circles_with_gaps() {
   std::mt19937 rng(3);
   std::normal_distribution<double> noise(0, 0.1);
   std::vector<std::array<double, 2>> unit;
@@ -611,6 +612,15 @@ TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
     const double a = 2 * M_PI * i / 300, r = 10 + noise(rng);
     if (std::fabs(std::remainder(a, M_PI)) >= 0.075) unit.push_back({r * std::cos(a), r * std::sin(a)});
   }
+  return unit;
+}
+
+}  // namespace
+
+TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
+  // Two noisy half circles with gaps of about 1.5 radii: repair at 2.5 joins them into a loop. The repair's
+  // distances squared their differences: at 1e160 they overflowed (no repair), at 1e-200 underflowed (all 0).
+  const std::vector<std::array<double, 2>> unit = half_circles_with_gaps();
   auto run = [&](double s) {
     std::vector<std::array<double, 2>> p;
     for (const auto& q : unit) p.push_back({s * q[0], s * q[1]});
@@ -627,6 +637,39 @@ TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
     EXPECT_EQ(scaled.repaired, one.repaired) << "scale " << s;
     EXPECT_EQ(num_vertices(scaled.graph), num_vertices(one.graph)) << "scale " << s;
     EXPECT_EQ(num_edges(scaled.graph), num_edges(one.graph)) << "scale " << s;
+  }
+}
+
+TEST(ExtractReebSkeleton, NodesAndArcsNearTheLargestDouble) {
+  // The two half circles of the test above, 1e305 times larger and moved to 1.5e308 (a coordinate's double is
+  // about 1.7e308 at most): the skeleton is the same, nodes and polylines at the same places. Node and level-set
+  // centroids summed their points (inf for two of them) and smoothing summed two neighbours.
+  const std::vector<std::array<double, 2>> unit = half_circles_with_gaps();
+  const double s = 1e305, offset = 1.5e308;
+  auto run = [&](double scale, double shift) {
+    std::vector<std::array<double, 2>> p;
+    for (const auto& q : unit) p.push_back({shift + scale * q[0], shift + scale * q[1]});
+    Skeleton_options o;
+    o.delta = 2 * scale;
+    o.repair_distance = 2.5 * scale;
+    return extract_reeb_skeleton(p, scale, o);
+  };
+  const Reeb_skeleton one = run(1, 0), far = run(s, offset);
+  ASSERT_EQ(num_vertices(far.graph), num_vertices(one.graph));
+  ASSERT_EQ(num_edges(far.graph), num_edges(one.graph));
+  EXPECT_EQ(loops_of(far.graph), 1u);
+  const double tolerance = 1e-6 * s;  // of a circle of radius 10 s
+  for (std::size_t v = 0; v < num_vertices(one.graph); ++v)
+    for (int c = 0; c < 2; ++c)
+      EXPECT_NEAR(far.graph[v].position[c], offset + s * one.graph[v].position[c], tolerance) << "node " << v;
+  auto e = edges(one.graph).first;
+  auto f = edges(far.graph).first;
+  for (; e != edges(one.graph).second; ++e, ++f) {
+    const auto& a = one.graph[*e].polyline;
+    const auto& b = far.graph[*f].polyline;
+    ASSERT_EQ(b.size(), a.size());
+    for (std::size_t t = 0; t < a.size(); ++t)
+      for (int c = 0; c < 2; ++c) EXPECT_NEAR(b[t][c], offset + s * a[t][c], tolerance) << "polyline vertex " << t;
   }
 }
 

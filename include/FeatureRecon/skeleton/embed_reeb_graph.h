@@ -211,6 +211,18 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
   return x;
 }
 
+/// The mean of the `count` finite numbers x(0), ..., x(count - 1): their sum in that order divided by count, or,
+/// when the sum overflows (numbers near the largest double), the sum of each divided by count. 0 when count = 0.
+template <class X>
+double mean_of(std::size_t count, const X& x) {
+  double sum = 0;
+  for (std::size_t i = 0; i < count; ++i) sum += x(i);
+  if (count == 0 || std::isfinite(sum)) return count == 0 ? 0.0 : sum / static_cast<double>(count);
+  sum = 0;
+  for (std::size_t i = 0; i < count; ++i) sum += x(i) / static_cast<double>(count);
+  return sum;
+}
+
 /// Node positions and arc polylines in the space of P (any dimension), flat row-major.
 struct Flat_embedding {
   std::vector<std::vector<double>> nodes;  ///< per node, P.dimension coordinates
@@ -274,12 +286,11 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   Flat_embedding E;
   for (const auto& node : G.nodes) {
     check(node.vertex);
-    std::vector<double> c(P.row(node.vertex), P.row(node.vertex) + d);
-    for (const Vertex_index v : node.members) {
-      check(v);
-      for (std::size_t k = 0; k < d; ++k) c[k] += P.row(v)[k];
-    }
-    for (std::size_t k = 0; k < d; ++k) c[k] /= static_cast<double>(1 + node.members.size());
+    for (const Vertex_index v : node.members) check(v);
+    std::vector<double> c(d);
+    for (std::size_t k = 0; k < d; ++k)
+      c[k] = mean_of(1 + node.members.size(),
+                     [&](std::size_t i) { return P.row(i == 0 ? node.vertex : node.members[i - 1])[k]; });
     E.nodes.push_back(std::move(c));
   }
   const double width = options.level_width > 0 ? options.level_width : automatic_level_width(G);
@@ -295,6 +306,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   // Local index of each input vertex in the arc being drawn (stamped by arc), its run, and a union-find.
   std::vector<std::size_t> stamp(adjacency != nullptr ? P.rows : 0, static_cast<std::size_t>(-1));
   std::vector<std::size_t> local(stamp.size()), parent, run_of, size;
+  std::vector<Vertex_index> piece;  // the points of the piece whose centroid is drawn
   for (std::size_t a = 0; a < G.arcs.size(); ++a)
     if (!(G.arcs[a].lower < G.nodes.size() && G.arcs[a].upper < G.nodes.size()))
       FeatureRecon::internal::throw_invalid_argument(fn, "arc ", a, " joins nodes (", G.arcs[a].lower, ", ",
@@ -341,10 +353,11 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         if (size[find_root(parent, j)] > size[best]) best = find_root(parent, j);
       const std::size_t at = line.size();
       line.resize(at + d, 0.0);
+      piece.clear();
       for (std::size_t t = i; t < j; ++t)
-        if (find_root(parent, t) == best)
-          for (std::size_t k = 0; k < d; ++k) line[at + k] += P.row(vs[t])[k];
-      for (std::size_t k = 0; k < d; ++k) line[at + k] /= static_cast<double>(size[best]);
+        if (find_root(parent, t) == best) piece.push_back(vs[t]);
+      for (std::size_t k = 0; k < d; ++k)
+        line[at + k] = mean_of(piece.size(), [&](std::size_t q) { return P.row(piece[q])[k]; });
       // The piece's point closest to the centroid (ties: the earliest); only needed to bridge gaps.
       double closest = std::numeric_limits<double>::infinity();
       origin.push_back(vs[i]);
@@ -369,12 +382,11 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         gap = std::sqrt(gap);
         if (gap > max_gap && origin[t] != origin[t - 1] && finder->path(origin[t - 1], origin[t], 4 * gap + max_gap, path))
           for (const Vertex_index v : path) {
-            const std::size_t at = bridged.size();
-            bridged.insert(bridged.end(), P.row(v), P.row(v) + d);
-            for (std::size_t k = adjacency->offsets[v]; k < adjacency->offsets[v + 1]; ++k)
-              for (std::size_t c = 0; c < d; ++c) bridged[at + c] += P.row(adjacency->targets[k])[c];
-            const double n = static_cast<double>(1 + adjacency->offsets[v + 1] - adjacency->offsets[v]);
-            for (std::size_t c = 0; c < d; ++c) bridged[at + c] /= n;
+            const std::size_t first = adjacency->offsets[v], count = 1 + adjacency->offsets[v + 1] - first;
+            for (std::size_t c = 0; c < d; ++c)  // the mean of v and its neighbours
+              bridged.push_back(mean_of(count, [&](std::size_t q) {
+                return P.row(q == 0 ? v : adjacency->targets[first + q - 1])[c];
+              }));
           }
         bridged.insert(bridged.end(), line.begin() + static_cast<std::ptrdiff_t>(t * d),
                        line.begin() + static_cast<std::ptrdiff_t>((t + 1) * d));
@@ -389,8 +401,13 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     auto step = [&](double w) {  // every interior point moves by w towards the mean of its neighbours
       next = line;
       for (std::size_t t = 1; t + 1 < n; ++t)
-        for (std::size_t k = 0; k < d; ++k)
-          next[t * d + k] = (1 - w) * line[t * d + k] + w * 0.5 * (line[(t - 1) * d + k] + line[(t + 1) * d + k]);
+        for (std::size_t k = 0; k < d; ++k) {
+          const double x = line[t * d + k];
+          const double mean = 0.5 * line[(t - 1) * d + k] + 0.5 * line[(t + 1) * d + k];  // a sum could overflow
+          next[t * d + k] = (1 - w) * x + w * mean;
+          // Near the largest double, Taubin's (1 - w) x with w < 0 overflows: the same step as a move of x.
+          if (!std::isfinite(next[t * d + k])) next[t * d + k] = x + w * (mean - x);
+        }
       line.swap(next);
     };
     for (std::size_t it = 0; it < options.smoothing_iterations && n > 2; ++it) {

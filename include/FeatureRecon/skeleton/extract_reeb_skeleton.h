@@ -255,26 +255,24 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
       if (v != lowest[i]) node.members.insert(node.members.end(), g[v].members.begin(), g[v].members.end());
     for (const std::size_t k : arcs_of[i])
       node.members.insert(node.members.end(), arc[k]->members.begin(), arc[k]->members.end());
-    node.position = {0, 0, 0};
+    using internal::mean_of;
+    const auto& merged = nodes_of[i];
     if (!node.input_position.empty()) std::fill(node.input_position.begin(), node.input_position.end(), 0.0);
     if (node.members.empty()) {  // no points (a hand-made graph): the mean of the merged nodes
-      for (const std::size_t v : nodes_of[i]) {
-        for (int c = 0; c < 3; ++c) node.position[c] += g[v].position[c];
-        for (std::size_t c = 0; c < node.input_position.size() && c < g[v].input_position.size(); ++c)
-          node.input_position[c] += g[v].input_position[c];
-      }
-      for (double& x : node.position) x /= static_cast<double>(nodes_of[i].size());
-      for (double& x : node.input_position) x /= static_cast<double>(nodes_of[i].size());
+      for (int c = 0; c < 3; ++c)
+        node.position[c] = mean_of(merged.size(), [&](std::size_t q) { return g[merged[q]].position[c]; });
+      for (std::size_t c = 0; c < node.input_position.size(); ++c)
+        node.input_position[c] = mean_of(merged.size(), [&](std::size_t q) {
+          return c < g[merged[q]].input_position.size() ? g[merged[q]].input_position[c] : 0.0;
+        });
       continue;
     }
-    for (const Vertex_index p : node.members)
-      for (int c = 0; c < 3; ++c) node.position[c] += positions[p][c];
-    for (double& x : node.position) x /= static_cast<double>(node.members.size());
-    if (high && !node.input_position.empty()) {
-      for (const Vertex_index p : node.members)
-        for (std::size_t c = 0; c < input.dimension; ++c) node.input_position[c] += input.row(p)[c];
-      for (double& x : node.input_position) x /= static_cast<double>(node.members.size());
-    }
+    const auto& points = node.members;
+    for (int c = 0; c < 3; ++c)
+      node.position[c] = mean_of(points.size(), [&](std::size_t q) { return positions[points[q]][c]; });
+    if (high && !node.input_position.empty())
+      for (std::size_t c = 0; c < input.dimension; ++c)
+        node.input_position[c] = mean_of(points.size(), [&](std::size_t q) { return input.row(points[q])[c]; });
   }
   // The other arcs, their ends moved to the merged nodes; an arc whose lower end moved above its upper end is
   // reversed (its members stay in increasing function value).
