@@ -4,8 +4,10 @@
 
 #include <FeatureRecon/version.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
@@ -410,7 +412,15 @@ int main(int argc, char** argv) {
         return 0;
       }
     try {
-      return c.run(args);
+      const int code = c.run(args);
+      // The summary on standard output is a result too: a full disk or a closed pipe must not pass for success.
+      if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        const int error = errno;
+        std::fprintf(stderr, "featurerecon %s: error: writing standard output failed: %s\n", c.name,
+                     std::strerror(error));
+        return code == 0 ? 1 : code;
+      }
+      return code;
     } catch (const Usage_error& e) {
       std::fprintf(stderr, "featurerecon %s: error: %s\nTry 'featurerecon %s --help'.\n", c.name,
                    Outputs::name_targets(e.what()).c_str(), c.name);

@@ -470,6 +470,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                ", \"confirmed_segments\": " + std::to_string(sample.confirmed_segments) +
                ", \"straight_checked\": " + std::to_string(sample.straight_checked) +
                ", \"straight_confirmed\": " + std::to_string(sample.straight_confirmed) +
+               ", \"min_straight_confirmed_fraction\": " + json_number(go.min_straight_confirmed_fraction) +
                ", \"turn_rule_used\": " + (sample.turn_rule_used ? "true" : "false") +
                ", \"straight_segments\": " + std::to_string(sample.straight_segments) +
                ", \"linked_segments\": " + std::to_string(sample.linked_segments) +
@@ -485,8 +486,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                ", \"directed\": " + (go.directed ? "true" : "false") +
                ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") +
                ", \"dropped_sparse\": " + std::to_string(sample.dropped) +
-               ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"prune\": " +
-               json_number(options.prune_height) + ", \"trip_links\": " +
+               ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"trip_links\": " +
                std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
                ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
                json_number(use_merged ? road.merged.length_before : unmerged_length) + ", \"length\": " +
@@ -555,15 +555,17 @@ int run_skeleton(const std::vector<std::string>& argv) {
   std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
               "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
               "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
-              "\"branch_merge\": %s, \"merged_branch_arcs\": %zu, "
-              "\"level_width\": %s, \"smoothing\": \"%s\", \"smoothing_rounds\": %zu%s, \"seconds\": %s, "
+              "\"branch_merge\": %s, \"merged_branch_arcs\": %zu, \"prune\": %s, "
+              "\"level_width\": %s, \"max_gap\": %s, \"smoothing\": \"%s\", \"smoothing_rounds\": %zu%s, "
+              "\"seconds\": %s, "
               "\"vertices_file\": %s, \"edges_file\": %s}\n",
               input_points, sampled,
               json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(), json_number(options.delta).c_str(),
               json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles,
               num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph),
               components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.branch_merge_distance).c_str(),
-              s.merged_branch_arcs, json_number(s.level_width).c_str(),
+              s.merged_branch_arcs, json_number(options.prune_height).c_str(), json_number(s.level_width).c_str(),
+              json_number(s.max_gap).c_str(),
               options.embedding.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian",
               options.embedding.smoothing_iterations, gps_json.c_str(), json_number(seconds).c_str(),
               json_string(out_v).c_str(), json_string(out_e).c_str());

@@ -53,11 +53,18 @@ std::ifstream open_input(const std::string& path) {
   if (!in) throw Input_error(path + ": cannot open for reading");
   // A UTF-8 byte-order mark (some editors write one) is not part of the first line: it made the first trip id
   // another trip's, and the first vertex id "not a number".
-  char bom[3] = {0, 0, 0};
-  if (!(in.read(bom, 3) && bom[0] == '\xEF' && bom[1] == '\xBB' && bom[2] == '\xBF')) {
-    in.clear();
-    in.seekg(0);
+  // The bytes read are put back, not sought back to: a pipe (`<(command)`, /dev/stdin) cannot seek, and seeking
+  // left its stream failed (read as an empty file).
+  static const char bom[3] = {'\xEF', '\xBB', '\xBF'};
+  int read = 0;
+  while (read < 3 && in.peek() == static_cast<unsigned char>(bom[read])) {
+    in.get();
+    ++read;
   }
+  if (read == 3) return in;
+  in.clear();  // peek() at the end of an empty file sets eofbit
+  while (read > 0 && in.unget()) --read;
+  if (read > 0) throw Input_error(path + ": cannot re-read the first bytes");
   return in;
 }
 

@@ -86,8 +86,9 @@ void Picture::polyline(const std::vector<std::array<double, 2>>& points, double 
 
 std::string Picture::svg() const {
   std::ostringstream os;
+  // The viewBox makes the picture scale, not crop, where it is shown at another size.
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << pixel(m_width) << "\" height=\"" << pixel(m_height)
-     << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+     << "\" viewBox=\"0 0 " << pixel(m_width) << " " << pixel(m_height) << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const Shape& s : m_shapes) {
     if (!all_finite(s.points)) continue;  // a point at infinity (coordinates beyond the largest double): not drawn
     switch (s.kind) {

@@ -189,7 +189,7 @@ expect_count(${WORK}/e5.svg "<circle cx=\"[0-9.]+\" cy=\"(7[0-9][0-9]|[89][0-9][
 expect(skeleton_max_gap_off 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --max-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 # Branch nodes: the tangent circles of figure_eight.xyz share a stretch at radius 0.6, where the Reeb graph has
 # an up-fork and a down-fork 1.25 apart; the default (twice the level width, 0.66) keeps both, 1.5 merges them.
-expect(skeleton_branch_merge_default 0 "\"nodes\": 4, \"arcs\": 5, .*\"branch_merge\": 0\\.659[0-9]*, \"merged_branch_arcs\": 0, \"level_width\": 0\\.329" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_branch_merge_default 0 "\"nodes\": 4, \"arcs\": 5, .*\"branch_merge\": 0\\.659[0-9]*, \"merged_branch_arcs\": 0, \"prune\": 0, \"level_width\": 0\\.329[0-9]*, \"max_gap\": 0\\.659" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_branch_merge 0 "\"nodes\": 3, \"arcs\": 4, \"loops\": 2, .*\"branch_merge\": 1.5, \"merged_branch_arcs\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --branch-merge 1.5 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_branch_merge_bad 2 "--branch-merge must be finite and >= 0 \\(0: off\\), got '-1'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --branch-merge -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_all_pruned 0 "\"nodes\": 0, .*warning: the skeleton is empty: pruning removed all 1 component\\(s\\), each of height at most 100 \\(--prune 0 keeps them\\)" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --prune 100 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
@@ -229,8 +229,8 @@ expect(skeleton_tracks_first_point 0 "\"components\": 1,.*\"mean_positions\": fa
 expect(skeleton_first_point_points 2 "apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --first-point-positions --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_segment_support_points 2 "apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --segment-support 20 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_segment_support_negative 2 "--segment-support must be >= 0 metres" skeleton --tracks ${DATA}/block_tracks.txt --segment-support -1 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
-expect(skeleton_segment_support_off 0 "\"segment_support\": 0, \"segment_turn_tolerance\": 30, \"checked_segments\": 0, \"confirmed_segments\": 0, \"straight_checked\": 0, \"straight_confirmed\": 0, \"turn_rule_used\": true, \"straight_segments\": 0, \"linked_segments\": 0, \"all_segments_used\": true" skeleton --tracks ${DATA}/block_tracks.txt --segment-support 0 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
-expect(skeleton_segment_support_default 0 "\"components\": 1,.*\"segment_support\": 20, \"segment_turn_tolerance\": 30, \"checked_segments\": [0-9]+, \"confirmed_segments\": [0-9]+, \"straight_checked\": [0-9]+, \"straight_confirmed\": [0-9]+, \"turn_rule_used\": (true|false), \"straight_segments\": [0-9]+, \"linked_segments\": [0-9]+, \"all_segments_used\": (true|false)" skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+expect(skeleton_segment_support_off 0 "\"segment_support\": 0, \"segment_turn_tolerance\": 30, \"checked_segments\": 0, \"confirmed_segments\": 0, \"straight_checked\": 0, \"straight_confirmed\": 0, \"min_straight_confirmed_fraction\": 0.9, \"turn_rule_used\": true, \"straight_segments\": 0, \"linked_segments\": 0, \"all_segments_used\": true" skeleton --tracks ${DATA}/block_tracks.txt --segment-support 0 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+expect(skeleton_segment_support_default 0 "\"components\": 1,.*\"segment_support\": 20, \"segment_turn_tolerance\": 30, \"checked_segments\": [0-9]+, \"confirmed_segments\": [0-9]+, \"straight_checked\": [0-9]+, \"straight_confirmed\": [0-9]+, \"min_straight_confirmed_fraction\": 0.9, \"turn_rule_used\": (true|false), \"straight_segments\": [0-9]+, \"linked_segments\": [0-9]+, \"all_segments_used\": (true|false)" skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_segment_support 0 "\"segment_support\": 35, \"segment_turn_tolerance\": 10," skeleton --tracks ${DATA}/block_tracks.txt --segment-support 35 --segment-turn-tolerance 10 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_straight_confirmed_bad 2 "--straight-confirmed must be in \\[0, 1\\]" skeleton --tracks ${DATA}/block_tracks.txt --straight-confirmed 1.5 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_straight_confirmed_points 2 "--straight-confirmed, --local-support, --min-local-support and --merge apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --straight-confirmed 0.5 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
@@ -277,7 +277,7 @@ expect(synthetic_city_score 0 "\"f_score\": 0\\.[89][0-9]*," evaluate-map ${WORK
 # are confirmed at a local distance below 20 m where fixes are dense (--local-support): 63 confirmed at 20 m are
 # not (F 0.776 either way; with --local-support 0, 509 and 224 are confirmed as before).
 expect(synthetic_city_sparse 0 "\"seed\": 5}" synthetic-city --trips 600 --interval 20 --seed 5 --out-tracks ${WORK}/sp_t.txt --out-vertices ${WORK}/sp_gv.txt --out-edges ${WORK}/sp_ge.txt)
-expect(synthetic_city_sparse_map 0 "\"checked_segments\": 932, \"confirmed_segments\": 446, \"straight_checked\": 387, \"straight_confirmed\": 198, \"turn_rule_used\": false, \"straight_segments\": 0, \"linked_segments\": [0-9]+, \"all_segments_used\": false, \"local_support\": 8, \"min_local_support\": 0.6, \"locally_checked\": 542, \"locally_rejected\": 63," skeleton --tracks ${WORK}/sp_t.txt --out-vertices ${WORK}/sp_v.txt --out-edges ${WORK}/sp_e.txt --quiet)
+expect(synthetic_city_sparse_map 0 "\"checked_segments\": 932, \"confirmed_segments\": 446, \"straight_checked\": 387, \"straight_confirmed\": 198, \"min_straight_confirmed_fraction\": 0.9, \"turn_rule_used\": false, \"straight_segments\": 0, \"linked_segments\": [0-9]+, \"all_segments_used\": false, \"local_support\": 8, \"min_local_support\": 0.6, \"locally_checked\": 542, \"locally_rejected\": 63," skeleton --tracks ${WORK}/sp_t.txt --out-vertices ${WORK}/sp_v.txt --out-edges ${WORK}/sp_e.txt --quiet)
 expect(synthetic_city_sparse_map_local_off 0 "\"confirmed_segments\": 509, \"straight_checked\": 387, \"straight_confirmed\": 224, .*\"local_support\": 0, \"min_local_support\": 0.6, \"locally_checked\": 0, \"locally_rejected\": 0," skeleton --tracks ${WORK}/sp_t.txt --local-support 0 --out-vertices ${WORK}/sp0_v.txt --out-edges ${WORK}/sp0_e.txt --quiet)
 expect(skeleton_local_support_bad 2 "--local-support must be a whole number of fixes in \\[0, 1024\\]" skeleton --tracks ${WORK}/sp_t.txt --local-support 2.5 --out-vertices ${WORK}/sp0_v.txt --out-edges ${WORK}/sp0_e.txt --quiet)
 expect(skeleton_local_support_large 2 "--local-support must be a whole number" skeleton --tracks ${WORK}/sp_t.txt --local-support 1025 --out-vertices ${WORK}/sp0_v.txt --out-edges ${WORK}/sp0_e.txt --quiet)
@@ -300,9 +300,29 @@ expect_count(${WORK}/f.graphml "<edge id=" 5)
 expect_count(${WORK}/f.geojson "\"LineString\"" 5)
 expect_count(${WORK}/f.geojson "\"Point\"" 4)
 expect_count(${WORK}/f.svg "<polyline" 5)
+expect_count(${WORK}/f.svg "<svg [^>]*viewBox=\"0 0 [0-9.]+ [0-9.]+\"" 1)  # scales where it is shown smaller
 file(STRINGS ${WORK}/f.ply ply_header LIMIT_COUNT 6)
 if(NOT ply_header MATCHES "element vertex [0-9]+")
   message(SEND_ERROR "PLY header: ${ply_header}")
+endif()
+# Input from a pipe (`--points <(command)`, /dev/stdin) is read, not taken for an empty file (seeking back over a
+# byte-order mark failed on pipes).
+execute_process(COMMAND ${CMAKE_COMMAND} -E cat ${DATA}/figure_eight.xyz
+                COMMAND ${FEATURERECON} skeleton --points /dev/stdin --radius 0.6 --delta 1 --quiet
+                        --out-vertices ${WORK}/pipe_v.txt --out-edges ${WORK}/pipe_e.txt
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "\"nodes\": 4, \"arcs\": 5")
+  message(SEND_ERROR "skeleton_pipe: exit ${rc}\n${out}${err}")
+endif()
+expect_same_file(${WORK}/f_v.txt ${WORK}/pipe_v.txt "skeleton_pipe: another map from the same points")
+# A summary that cannot be written (a full disk) is an error, not a success.
+if(EXISTS /dev/full)
+  execute_process(COMMAND ${FEATURERECON} skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --quiet
+                          --out-vertices ${WORK}/full_v.txt --out-edges ${WORK}/full_e.txt
+                  OUTPUT_FILE /dev/full RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "writing standard output failed")
+    message(SEND_ERROR "skeleton_stdout_full: exit ${rc}\n${err}")
+  endif()
 endif()
 
 # sample: a thin wall (two 20 x 20 sheets of unit spacing, 0.5 apart, opposite normals) as XYZ with normals.

@@ -57,6 +57,9 @@ struct Reeb_graph_embedding {
   std::size_t dimension = 0;                                    ///< 1, 2 or 3: min(input dimension, 3)
   std::vector<std::array<double, 3>> node_positions;            ///< per node (unused coordinates 0)
   std::vector<std::vector<std::array<double, 3>>> arc_polylines;  ///< per arc, first and last = node positions
+  /// Gaps of a polyline wider than this were bridged through the graph (Embedding_options::max_gap, or the value
+  /// the automatic setting chose); infinity when nothing was bridged (no graph, or max_gap < 0).
+  double max_gap = std::numeric_limits<double>::infinity();
 };
 
 /// Coordinates of the points in at most 3 dimensions: unchanged up to 3D, else the projection onto the three
@@ -227,6 +230,7 @@ double mean_of(std::size_t count, const X& x) {
 struct Flat_embedding {
   std::vector<std::vector<double>> nodes;  ///< per node, P.dimension coordinates
   std::vector<std::vector<double>> arcs;   ///< per arc, P.dimension coordinates per polyline vertex
+  double max_gap = std::numeric_limits<double>::infinity();  ///< see Reeb_graph_embedding::max_gap
 };
 
 /// The level width used when Embedding_options::level_width is 0: 1/64 of the range of the node values (1 when
@@ -300,8 +304,12 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   if (adjacency != nullptr && options.max_gap >= 0) {
     finder = std::make_unique<Graph_path_finder>(*adjacency, P);
     max_gap = options.max_gap > 0 ? options.max_gap : 2 * finder->median_edge_length();
-    if (!(max_gap > 0)) finder.reset();
+    if (!(max_gap > 0)) {
+      finder.reset();
+      max_gap = std::numeric_limits<double>::infinity();
+    }
   }
+  E.max_gap = max_gap;
   std::vector<Vertex_index> path;
   // Local index of each input vertex in the arc being drawn (stamped by arc), its run, and a union-find.
   std::vector<std::size_t> stamp(adjacency != nullptr ? P.rows : 0, static_cast<std::size_t>(-1));
@@ -431,6 +439,7 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacenc
   const Flat_embedding F = embed_flat(G, adjacency, P, values, options);
   Reeb_graph_embedding E;
   E.dimension = std::min<std::size_t>(dimension, 3);
+  E.max_gap = F.max_gap;
   for (const auto& n : F.nodes) E.node_positions.push_back({n[0], n[1], n[2]});
   for (const auto& a : F.arcs) {
     std::vector<std::array<double, 3>> line;

@@ -98,6 +98,8 @@ struct Reeb_skeleton {
   std::size_t merged_branch_arcs = 0;  ///< arcs between close branch nodes contracted (branch_merge_distance)
   double branch_merge_distance = 0;  ///< the distance merge_close_branch_nodes() used (0: not run)
   double level_width = 0;          ///< level width the embedding used
+  /// Gaps wider than this were bridged through the complex (Reeb_graph_embedding::max_gap; infinity: none).
+  double max_gap = std::numeric_limits<double>::infinity();
   Status status = Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
 };
 
@@ -452,6 +454,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   const std::vector<std::array<double, 3>> projected = project_to_3d(coordinates);
   const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, projected, A.values(), dimension, eo);
   result.graph = make_skeleton_graph(S.graph, E);
+  result.max_gap = E.max_gap;
   if (dimension > 3) {
     Reeb_graph_input_embedding I = embed_reeb_graph_in_input_space(S.graph, K, coordinates, A.values(), eo);
     for (std::size_t i = 0; i < I.node_positions.size(); ++i) result.graph[i].input_position = std::move(I.node_positions[i]);
