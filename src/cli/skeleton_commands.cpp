@@ -517,7 +517,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   const Embedded_graph_2 map = skeleton_to_road_map(written);
   io::write_map(outputs.path("out-vertices"), outputs.path("out-edges"), map.positions, map.edges);
   if (args.has("graphml")) io::write_skeleton_graphml(outputs.path("graphml"), written);
-  if (args.has("geojson")) io::write_skeleton_geojson(outputs.path("geojson"), written);
+  if (args.has("geojson")) io::write_skeleton_geojson(outputs.path("geojson"), written, lonlat);
   if (args.has("ply")) io::write_skeleton_ply(outputs.path("ply"), written);
   if (args.has("svg")) {
     // The points as the skeleton is drawn: their first two coordinates, above 3-D those of the PCA projection.

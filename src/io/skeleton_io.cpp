@@ -91,19 +91,71 @@ void write_skeleton_graphml(const std::string& path, const Skeleton_graph& g) {
   write_text_file(path, os.str());
 }
 
-void write_skeleton_geojson(const std::string& path, const Skeleton_graph& g) {
+namespace {
+
+/// The parts of a polyline of (longitude, latitude) in degrees cut where a step crosses the antimeridian (changes
+/// longitude by more than 180 degrees: the short way round goes across +-180). Each cut ends one part at +-180 and
+/// starts the next at -+180, at the latitude interpolated along the step.
+std::vector<std::vector<std::array<double, 2>>> cut_at_antimeridian(const std::vector<std::array<double, 3>>& line) {
+  std::vector<std::vector<std::array<double, 2>>> parts(1);
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const std::array<double, 2> p{line[i][0], line[i][1]};
+    if (i > 0 && std::fabs(p[0] - line[i - 1][0]) > 180) {
+      const double from = line[i - 1][0], side = from > 0 ? 180.0 : -180.0;  // the side the step leaves from
+      const double to = p[0] + 2 * side;                                     // p's longitude on that side
+      const double t = (side - from) / (to - from);
+      const double latitude = line[i - 1][1] + t * (p[1] - line[i - 1][1]);
+      if (parts.back().back()[0] != side) parts.back().push_back({side, latitude});
+      parts.emplace_back();
+      if (p[0] != -side) parts.back().push_back({-side, latitude});
+    }
+    parts.back().push_back(p);
+  }
+  // A part of one position (a line starting or ending on the antimeridian) is not a line.
+  parts.erase(std::remove_if(parts.begin(), parts.end(), [](const auto& part) { return part.size() < 2; }),
+              parts.end());
+  if (parts.empty()) {  // only steps from +180 to -180 or back: the line as it is
+    parts.emplace_back();
+    for (const auto& p : line) parts.back().push_back({p[0], p[1]});
+  }
+  return parts;
+}
+
+void write_positions(std::ostream& os, const std::vector<std::array<double, 2>>& part) {
+  os << "[";
+  for (std::size_t i = 0; i < part.size(); ++i)
+    os << (i ? ", " : "") << "[" << number(part[i][0]) << ", " << number(part[i][1]) << "]";
+  os << "]";
+}
+
+}  // namespace
+
+void write_skeleton_geojson(const std::string& path, const Skeleton_graph& g, bool lonlat) {
   std::ostringstream os;
   os << "{\"type\": \"FeatureCollection\", \"features\": [\n";
   bool first = true;
   for (auto e : boost::make_iterator_range(edges(g))) {
-    os << (first ? "" : ",\n") << "{\"type\": \"Feature\", \"geometry\": {\"type\": \"LineString\", \"coordinates\": [";
-    first = false;
-    bool p0 = true;
-    for (const auto& p : g[e].polyline) {
-      os << (p0 ? "" : ", ") << "[" << number(p[0]) << ", " << number(p[1]) << "]";
-      p0 = false;
+    std::vector<std::vector<std::array<double, 2>>> parts;
+    if (lonlat) {
+      parts = cut_at_antimeridian(g[e].polyline);
+    } else {
+      parts.emplace_back();
+      for (const auto& p : g[e].polyline) parts.back().push_back({p[0], p[1]});
     }
-    os << "]}, \"properties\": {\"kind\": \"arc\", \"members\": " << g[e].members.size() << "}}";
+    os << (first ? "" : ",\n") << "{\"type\": \"Feature\", \"geometry\": {\"type\": \""
+       << (parts.size() == 1 ? "LineString" : "MultiLineString") << "\", \"coordinates\": ";
+    first = false;
+    if (parts.size() == 1) {
+      write_positions(os, parts.front());
+    } else {
+      os << "[";
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        os << (k ? ", " : "");
+        write_positions(os, parts[k]);
+      }
+      os << "]";
+    }
+    os << "}, \"properties\": {\"kind\": \"arc\", \"members\": " << g[e].members.size() << "}}";
   }
   for (auto v : boost::make_iterator_range(vertices(g))) {
     const auto& n = g[v];

@@ -20,7 +20,10 @@ void write_skeleton_graphml(const std::string& path, const skeleton::Skeleton_gr
 /// GeoJSON FeatureCollection: one LineString per arc (its polyline, x y) and one Point per node (properties type
 /// and value). Coordinates are written as given (e.g. UTM metres; longitude and latitude, as RFC 7946 asks, with
 /// skeleton --lonlat).
-void write_skeleton_geojson(const std::string& path, const skeleton::Skeleton_graph& g);
+/// With `lonlat` (x, y are longitude and latitude in degrees) an arc that crosses the antimeridian (a step of more
+/// than 180 degrees of longitude) is cut there into a MultiLineString, as RFC 7946 (3.1.9) asks: viewers draw the
+/// step round the globe.
+void write_skeleton_geojson(const std::string& path, const skeleton::Skeleton_graph& g, bool lonlat = false);
 /// ASCII PLY: the polyline points as vertices and consecutive pairs as edges (3D).
 void write_skeleton_ply(const std::string& path, const skeleton::Skeleton_graph& g);
 /// Picture of the input points (grey) and the skeleton (arcs as coloured polylines, nodes black), in x y: SVG, or

@@ -839,6 +839,34 @@ file(STRINGS ${WORK}/ll_samples.csv ll_sample LIMIT_COUNT 2)
 if(NOT ll_sample MATCHES ";truth,0,-87\\.[0-9]+,41\\.[0-9]+,")
   message(SEND_ERROR "lonlat_score: --samples-out is not in degrees: ${ll_sample}")
 endif()
+# Streets across the antimeridian: three trips east along latitude -16.8 from 179.995 to -179.995 (a fix every
+# 0.0001 degrees, about 10.7 m). The GeoJSON cuts the line at +-180 (RFC 7946 3.1.9) instead of a step round the
+# globe; the map files keep their edges.
+set(anti "")
+foreach(trip 0 1 2)
+  foreach(i RANGE 0 99)
+    math(EXPR n "1799950 + ${i}")
+    if(n GREATER 1800000)
+      math(EXPR n "${n} - 3600000")
+    endif()
+    math(EXPR whole "${n} / 10000")  # towards 0
+    string(REPLACE "-" "" magnitude "${n}")
+    math(EXPR fraction "${magnitude} % 10000 + 10000")  # 4 digits after a leading 1
+    string(SUBSTRING "${fraction}" 1 4 fraction)
+    math(EXPR t "${i} * 2")
+    string(APPEND anti "${trip} ${whole}.${fraction} -16.800${trip} ${t}\n")
+  endforeach()
+endforeach()
+file(WRITE ${WORK}/ll_anti.txt "${anti}")
+expect(lonlat_antimeridian 0 "\"trips\": 3," skeleton --tracks ${WORK}/ll_anti.txt --lonlat --out-vertices ${WORK}/anti_v.txt --out-edges ${WORK}/anti_e.txt --geojson ${WORK}/anti.geojson --quiet)
+expect_count(${WORK}/anti.geojson "\\[179\\.[0-9]+, -16\\.[0-9]+\\], \\[-179" 0)  # no step round the globe
+expect_count(${WORK}/anti.geojson "\\[-179\\.[0-9]+, -16\\.[0-9]+\\], \\[179" 0)
+file(READ ${WORK}/anti.geojson anti_geojson)
+string(REGEX MATCHALL "\\[180, -16\\.[0-9]+\\]\\], \\[\\[-180, -16\\.[0-9]+\\]" anti_cuts "${anti_geojson}")
+list(LENGTH anti_cuts n_cuts)
+if(n_cuts EQUAL 0)
+  message(SEND_ERROR "lonlat_antimeridian: no line is cut at +-180:\n${anti_geojson}")
+endif()
 # Degrees read as metres are refused with a hint; bad degrees and too wide a span are named.
 expect(lonlat_missing 1 "chicago_lonlat_tracks.txt: the fixes look like longitude and latitude in degrees .*give --lonlat" skeleton --tracks ${LL} --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(lonlat_missing_evaluate 1 "chicago_gt_trk25_vertices_lonlat.txt: the vertices look like longitude and latitude in degrees .*give --lonlat" evaluate-map ${M}_gt_trk25_vertices_lonlat.txt ${M}_gt_trk25_edges.txt ${WORK}/ll_v.txt ${WORK}/ll_e.txt)
