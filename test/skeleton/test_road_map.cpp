@@ -122,6 +122,26 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
   EXPECT_EQ(num_vertices(u.merged.skeleton), 0u);
 }
 
+TEST(RoadMap, SkeletonLinesDoNotGoOutAndBack) {
+  // Where a wide gap is bridged through the graph and the next bridge leaves through the same vertex, the line
+  // went out to the piece's centroid and back: X B X, twice the same point two steps apart (about 1 % of the
+  // length of the city's skeleton lines were such spikes).
+  for (const std::uint64_t seed : {3u, 4u, 5u}) {
+    const Synthetic_city city = small_city(seed);
+    Road_map_options off;
+    off.merge_distance = -1;
+    const Road_map m = extract_road_map(city.trips, off);
+    ASSERT_EQ(m.status, Status::success);
+    std::size_t points = 0;
+    for (auto e : boost::make_iterator_range(edges(m.skeleton.graph))) {
+      const auto& line = m.skeleton.graph[e].polyline;
+      points += line.size();
+      for (std::size_t i = 2; i < line.size(); ++i) EXPECT_NE(line[i], line[i - 2]) << "seed " << seed;
+    }
+    EXPECT_GT(points, 300u);
+  }
+}
+
 TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   const std::vector<Gps_trip> trips = street(20);
   Road_map_options o;

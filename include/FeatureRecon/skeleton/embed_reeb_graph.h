@@ -384,6 +384,18 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     origin.push_back(G.nodes[arc.upper].vertex);
     if (finder) {  // bridge wide gaps through the graph
       std::vector<double> bridged(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(d));
+      // Appends a point, except where the polyline would go out and back to the same point: a bridge's last
+      // vertex X, the piece's centroid B beside it, the next bridge leaving through X again (X B X C becomes X B C;
+      // at the upper node, X B X becomes X).
+      auto append = [&](const double* p, bool last) {
+        const std::size_t n = bridged.size() / d;
+        if (n >= 2 && std::equal(p, p + d, bridged.begin() + static_cast<std::ptrdiff_t>((n - 2) * d))) {
+          if (last) bridged.resize((n - 1) * d);
+          return;
+        }
+        bridged.insert(bridged.end(), p, p + d);
+      };
+      std::vector<double> mean(d);
       for (std::size_t t = 1; t < origin.size(); ++t) {
         double gap = 0;
         for (std::size_t k = 0; k < d; ++k) gap += (line[t * d + k] - line[(t - 1) * d + k]) * (line[t * d + k] - line[(t - 1) * d + k]);
@@ -392,12 +404,12 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
           for (const Vertex_index v : path) {
             const std::size_t first = adjacency->offsets[v], count = 1 + adjacency->offsets[v + 1] - first;
             for (std::size_t c = 0; c < d; ++c)  // the mean of v and its neighbours
-              bridged.push_back(mean_of(count, [&](std::size_t q) {
+              mean[c] = mean_of(count, [&](std::size_t q) {
                 return P.row(q == 0 ? v : adjacency->targets[first + q - 1])[c];
-              }));
+              });
+            append(mean.data(), false);
           }
-        bridged.insert(bridged.end(), line.begin() + static_cast<std::ptrdiff_t>(t * d),
-                       line.begin() + static_cast<std::ptrdiff_t>((t + 1) * d));
+        append(line.data() + t * d, t + 1 == origin.size());
       }
       line.swap(bridged);
     }
