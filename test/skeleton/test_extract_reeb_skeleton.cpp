@@ -411,6 +411,13 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   bad.embedding.level_width = -1;
   EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("embedding level_width must be >= 0"),
             std::string::npos);
+  // A geodesic distance beyond the largest double (20 points on a line 1e307 apart, about 2e308 end to end)
+  // names the call and the stage (it named compute_geodesic_function alone).
+  std::vector<std::array<double, 2>> far_apart;
+  for (int i = 0; i < 20; ++i) far_apart.push_back({(i - 9.5) * 1e307, 0.0});
+  EXPECT_EQ(message([&] { extract_reeb_skeleton(far_apart, 1.5e307); }),
+            "extract_reeb_skeleton: the geodesic distance of vertex 18 overflows the largest double; scale the edge "
+            "lengths down (in compute_geodesic_function)");
   // make_skeleton_graph() checks that the embedding is the graph's (it read out of bounds).
   Reeb_graph line;
   line.nodes.resize(2);

@@ -22,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace FeatureRecon {
@@ -408,7 +409,15 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   result.rips_triangles = K.number_of_triangles();
   Geodesic_options go;
   go.progress = stage(0.2, 0.35);
-  const Geodesic_result geo = compute_geodesic_function(K, go);
+  Geodesic_result geo;
+  try {
+    geo = compute_geodesic_function(K, go);
+  } catch (const std::invalid_argument& e) {  // the complex is ours: only a distance beyond the largest double
+    const std::string what = e.what(), stage_name = "compute_geodesic_function: ";
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, what.compare(0, stage_name.size(), stage_name) == 0 ? what.substr(stage_name.size()) : what,
+        " (in compute_geodesic_function)");
+  }
   if (stopped || geo.status == Status::interrupted) {
     result.status = Status::interrupted;
     return result;
