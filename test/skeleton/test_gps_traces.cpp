@@ -165,6 +165,22 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
     o.progress = [stop_at](double t) { return t < stop_at; };
     EXPECT_EQ(sample_gps_traces(trips, 20.0, o).status, Status::interrupted) << stop_at;
   }
+  // One long trip (10,000 fixes) reports within itself, in the segment check and in the sampling (it reported
+  // once per trip), and stops there.
+  const std::vector<Gps_trip> long_trip{straight(0, 0, 1, 0, 10000, 25, 0)};
+  seen.clear();
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  ASSERT_EQ(sample_gps_traces(long_trip, 20.0, o).status, Status::success);
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0 && t < 0.3; }), 2);
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.8; }), 2);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  for (const double stop_at : {0.1, 0.5}) {
+    o.progress = [stop_at](double t) { return t < stop_at; };
+    EXPECT_EQ(sample_gps_traces(long_trip, 20.0, o).status, Status::interrupted) << stop_at;
+  }
   // The road map stops with it (it stopped only after the sampling).
   Road_map_options ro;
   std::size_t calls = 0;

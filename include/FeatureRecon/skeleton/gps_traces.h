@@ -394,6 +394,7 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
+  constexpr std::size_t progress_stride = 4096;  // fixes between progress reports within one trip
   if (!(rips_radius > 0 && std::isfinite(rips_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ", rips_radius);
   if (!(options.sample_spacing >= 0 && std::isfinite(options.sample_spacing)) || !std::isfinite(options.max_link_gap))
@@ -604,8 +605,13 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         return S;
       }
       const auto& o = order[t];
-      checked_fixes += o.size();
       for (std::size_t i = 0; i + 1 < o.size(); ++i) {
+        if (i % progress_stride == progress_stride - 1 &&  // and within a long trip
+            !FeatureRecon::internal::report_progress(
+                options.progress, 0.3 * double(checked_fixes + i) / double(std::max<std::size_t>(S.fixes, 1)))) {
+          S.status = Status::interrupted;
+          return S;
+        }
         const Gps_fix& a = trips[t][o[i]];
         const Gps_fix& b = trips[t][o[i + 1]];
         const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
@@ -636,6 +642,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
           unconfirmed.push_back({t, i, d, straight});
         }
       }
+      checked_fixes += o.size();
     }
     S.turn_rule_used = internal::wilson_upper_bound(S.straight_confirmed, S.straight_checked) >=
                        options.min_straight_confirmed_fraction;
@@ -722,6 +729,12 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       next_move[i - 1] = same_place(i - 1, i) ? next_move[i] : i;
     for (std::size_t i = 1; i < o.size(); ++i) previous_move[i] = same_place(i - 1, i) ? previous_move[i - 1] : i - 1;
     for (std::size_t i = 0; i < o.size(); ++i) {
+      if (i % progress_stride == progress_stride - 1 &&  // and within a long trip
+          !FeatureRecon::internal::report_progress(
+              options.progress, 0.3 + 0.5 * double(first_fix + i) / double(std::max<std::size_t>(S.fixes, 1)))) {
+        S.status = Status::interrupted;
+        return S;
+      }
       const Gps_fix& f = trips[t][o[i]];
       double hx = 0, hy = 0;
       if (next_move[i] != none) {
