@@ -51,21 +51,16 @@ std::ifstream open_input(const std::string& path) {
   require_readable_file(path);
   std::ifstream in(path);
   if (!in) throw Input_error(path + ": cannot open for reading");
-  // A UTF-8 byte-order mark (some editors write one) is not part of the first line: it made the first trip id
-  // another trip's, and the first vertex id "not a number".
-  // The bytes read are put back, not sought back to: a pipe (`<(command)`, /dev/stdin) cannot seek, and seeking
-  // left its stream failed (read as an empty file).
-  static const char bom[3] = {'\xEF', '\xBB', '\xBF'};
-  int read = 0;
-  while (read < 3 && in.peek() == static_cast<unsigned char>(bom[read])) {
-    in.get();
-    ++read;
-  }
-  if (read == 3) return in;
-  in.clear();  // peek() at the end of an empty file sets eofbit
-  while (read > 0 && in.unget()) --read;
-  if (read > 0) throw Input_error(path + ": cannot re-read the first bytes");
   return in;
+}
+
+/// std::getline that counts lines and drops a UTF-8 byte-order mark (some editors write one) from the first: it
+/// made the first trip id another trip's, and the first vertex id "not a number". Stripped from the line read, not
+/// skipped in the stream: a pipe (`<(command)`, /dev/stdin) can neither seek back nor always put bytes back.
+bool read_line(std::istream& in, std::string& line, std::size_t& number) {
+  if (!std::getline(in, line)) return false;
+  if (++number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
+  return true;
 }
 
 /// After a read loop: a failure that is not the end of the file (an I/O error) is an error, not a short file.
@@ -79,8 +74,7 @@ void for_each_token_row(const std::string& path, Row row) {
   std::ifstream in = open_input(path);
   std::string line;
   std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
+  while (read_line(in, line, number)) {
     const std::vector<std::string> t = line_tokens(line);
     if (!t.empty()) row(t, number);
   }
@@ -108,8 +102,7 @@ Complex_file read_complex(const std::string& path) {
   std::string line;
   std::size_t number = 0;
   auto next = [&](std::vector<std::string>& t) {
-    while (std::getline(in, line)) {
-      ++number;
+    while (read_line(in, line, number)) {
       t = line_tokens(line);
       if (!t.empty()) return true;
     }
@@ -193,8 +186,7 @@ void for_each_csv_row(const std::string& path, Row row) {
   std::ifstream in = open_input(path);
   std::string line;
   std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
+  while (read_line(in, line, number)) {
     const std::string body = line.substr(0, line.find('#'));
     if (body.find_first_not_of(" \t\r") == std::string::npos) continue;
     row(split_csv(body), number);

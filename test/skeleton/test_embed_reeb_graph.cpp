@@ -244,6 +244,22 @@ TEST(EmbedReebGraph, ArcsWithoutPointsFollowTheGraph) {
   EXPECT_THROW(embed_reeb_graph(G, g, xyz, f, 2, bad), std::invalid_argument);
 }
 
+TEST(EmbedReebGraph, AnArcBetweenNodesAtOnePlaceKeepsItsPoints) {
+  // Nodes at (0, 0) and the arc's one point 0.1 away: the line goes out and back, X B X, and stays so (the
+  // removal of out-and-back spikes made it the single point X: not a line).
+  const std::vector<std::array<double, 3>> xyz{{0, 0, 0}, {0.1, 0, 0}, {0, 0, 0}};
+  Proximity_graph g;
+  g.number_of_vertices = 3;
+  g.edges = {{0, 1}, {1, 2}};
+  Reeb_graph G;
+  G.nodes = {{0, 0.0, minimum, {}}, {2, 1.0, maximum, {}}};
+  G.arcs = {{0, 1, {1}}};
+  const auto line = embed_reeb_graph(G, g, xyz, {0.0, 0.5, 1.0}, 2).arc_polylines.at(0);
+  ASSERT_EQ(line.size(), 3u);
+  EXPECT_EQ(line.front(), xyz[0]);
+  EXPECT_EQ(line.back(), xyz[2]);
+}
+
 namespace {
 std::vector<std::array<double, 3>> mds(const std::vector<double>& D, std::size_t n, std::size_t dense_limit) {
   bool stopped = true;

@@ -177,9 +177,18 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0 && t < 0.3; }), 2);
   EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.8; }), 2);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
-  for (const double stop_at : {0.1, 0.5}) {
-    o.progress = [stop_at](double t) { return t < stop_at; };
+  for (const auto& [stop_at, stage_end] : {std::pair{0.1, 0.3}, std::pair{0.5, 0.8}}) {
+    double refused = -1;  // the first report answered with stop: inside the trip, and the last report
+    std::size_t later = 0;
+    o.progress = [&, stop_at = stop_at](double t) {
+      if (refused >= 0) ++later;
+      if (t >= stop_at && refused < 0) refused = t;
+      return t < stop_at;
+    };
     EXPECT_EQ(sample_gps_traces(long_trip, 20.0, o).status, Status::interrupted) << stop_at;
+    EXPECT_GE(refused, stop_at);
+    EXPECT_LT(refused, stage_end) << stop_at;  // the next stage's first report was the first chance before
+    EXPECT_EQ(later, 0u) << stop_at;
   }
   // The road map stops with it (it stopped only after the sampling).
   Road_map_options ro;

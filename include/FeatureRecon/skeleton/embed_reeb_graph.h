@@ -215,14 +215,17 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
 }
 
 /// The mean of the `count` finite numbers x(0), ..., x(count - 1): their sum in that order divided by count, or,
-/// when the sum overflows (numbers near the largest double), the sum of each divided by count. 0 when count = 0.
+/// when the sum overflows (numbers near the largest double), the sum of each divided by count. 0 when count = 0;
+/// the sum starts from x(0), so that the mean of -0.0s is -0.0.
 template <class X>
 double mean_of(std::size_t count, const X& x) {
-  double sum = 0;
-  for (std::size_t i = 0; i < count; ++i) sum += x(i);
-  if (count == 0 || std::isfinite(sum)) return count == 0 ? 0.0 : sum / static_cast<double>(count);
-  sum = 0;
-  for (std::size_t i = 0; i < count; ++i) sum += x(i) / static_cast<double>(count);
+  if (count == 0) return 0.0;
+  const double n = static_cast<double>(count);
+  double sum = x(0);
+  for (std::size_t i = 1; i < count; ++i) sum += x(i);
+  if (std::isfinite(sum)) return sum / n;
+  sum = x(0) / n;
+  for (std::size_t i = 1; i < count; ++i) sum += x(i) / n;
   return sum;
 }
 
@@ -386,10 +389,11 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       std::vector<double> bridged(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(d));
       // Appends a point, except where the polyline would go out and back to the same point: a bridge's last
       // vertex X, the piece's centroid B beside it, the next bridge leaving through X again (X B X C becomes X B C;
-      // at the upper node, X B X becomes X).
+      // at the upper node, W X B X becomes W X, and X B X stays).
       auto append = [&](const double* p, bool last) {
         const std::size_t n = bridged.size() / d;
-        if (n >= 2 && std::equal(p, p + d, bridged.begin() + static_cast<std::ptrdiff_t>((n - 2) * d))) {
+        if (n >= 2 && std::equal(p, p + d, bridged.begin() + static_cast<std::ptrdiff_t>((n - 2) * d)) &&
+            (!last || n >= 3)) {  // an arc between nodes at one place keeps its tip: a line has two points
           if (last) bridged.resize((n - 1) * d);
           return;
         }

@@ -105,26 +105,24 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   auto less = [&](std::size_t a, std::size_t b) { return val[a] < val[b] || (val[a] == val[b] && a < b); };
 
   // The graph of R as a 1-complex on the input vertices: each arc a chain through its vertices. Parallel arcs
-  // without interior vertices get a helper midpoint.
+  // without interior vertices get a helper midpoint (but the first). Only such arcs can repeat an edge: every other
+  // edge has an interior vertex of its arc, used once.
   std::vector<std::vector<Vertex_index>> chain(R.arcs.size());
-  std::set<Edge> present;
+  std::set<Edge> present;  // the edges of arcs without interior vertices
   auto key = [](Vertex_index a, Vertex_index b) { return a < b ? Edge{a, b} : Edge{b, a}; };
   for (std::size_t k = 0; k < R.arcs.size(); ++k) {
     std::vector<Vertex_index>& c = chain[k];
     c.push_back(R.nodes[R.arcs[k].lower].vertex);
     c.insert(c.end(), R.arcs[k].vertices.begin(), R.arcs[k].vertices.end());
     c.push_back(R.nodes[R.arcs[k].upper].vertex);
-    if (c.size() == 2 && present.count(key(c[0], c[1]))) {
+    if (c.size() == 2 && !present.insert(key(c[0], c[1])).second) {
       const Vertex_index mid = static_cast<Vertex_index>(val.size());
       // Halves first: no overflow near the largest doubles; clamped, as halves of subnormals round.
       val.push_back(std::clamp(0.5 * val[c[0]] + 0.5 * val[c[1]], std::min(val[c[0]], val[c[1]]),
                                std::max(val[c[0]], val[c[1]])));
       c.insert(c.begin() + 1, mid);
     }
-    for (std::size_t i = 0; i + 1 < c.size(); ++i) {
-      present.insert(key(c[i], c[i + 1]));
-      Y.edges.push_back(key(c[i], c[i + 1]));
-    }
+    for (std::size_t i = 0; i + 1 < c.size(); ++i) Y.edges.push_back(key(c[i], c[i + 1]));
   }
 
   // Members of a node (input vertices identified with it) stay with it: a horizontal edge to the node's vertex.
