@@ -387,6 +387,17 @@ extern "C" void remove_temporaries_and_stop(int signal) {
 }
 }  // namespace
 
+namespace {
+/// The exit code once standard output is flushed: what it carries (a summary, help) is a result too, and a full
+/// disk or a closed pipe must not pass for success.
+int flushed(const char* who, int code) {
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+  const int error = errno;
+  std::fprintf(stderr, "%s: error: writing standard output failed: %s\n", who, std::strerror(error));
+  return code == 0 ? 1 : code;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace FeatureRecon::cli;
   for (const int s : {SIGINT, SIGTERM, SIGHUP})
@@ -398,11 +409,11 @@ int main(int argc, char** argv) {
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
     print_main_help();
-    return 0;
+    return flushed("featurerecon", 0);
   }
   if (name == "--version") {
     std::printf("featurerecon %s\n", FEATURERECON_VERSION_STRING);
-    return 0;
+    return flushed("featurerecon", 0);
   }
   for (const Command& c : commands()) {
     if (name != c.name) continue;
@@ -410,18 +421,11 @@ int main(int argc, char** argv) {
     for (const std::string& a : args)
       if (a == "--help" || a == "-h") {
         std::fputs(c.help, stdout);
-        return 0;
+        return flushed(("featurerecon " + name).c_str(), 0);
       }
     try {
       const int code = c.run(args);
-      // The summary on standard output is a result too: a full disk or a closed pipe must not pass for success.
-      if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        const int error = errno;
-        std::fprintf(stderr, "featurerecon %s: error: writing standard output failed: %s\n", c.name,
-                     std::strerror(error));
-        return code == 0 ? 1 : code;
-      }
-      return code;
+      return flushed(("featurerecon " + name).c_str(), code);
     } catch (const Usage_error& e) {
       std::fprintf(stderr, "featurerecon %s: error: %s\nTry 'featurerecon %s --help'.\n", c.name,
                    Outputs::name_targets(e.what()).c_str(), c.name);

@@ -347,6 +347,10 @@ if(EXISTS /dev/full)
   if(NOT rc EQUAL 1 OR NOT err MATCHES "writing standard output failed")
     message(SEND_ERROR "skeleton_stdout_full: exit ${rc}\n${err}")
   endif()
+  execute_process(COMMAND ${FEATURERECON} skeleton --help OUTPUT_FILE /dev/full RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "featurerecon skeleton: error: writing standard output failed")
+    message(SEND_ERROR "skeleton_help_full: exit ${rc}\n${err}")
+  endif()
 endif()
 
 # sample: a thin wall (two 20 x 20 sheets of unit spacing, 0.5 apart, opposite normals) as XYZ with normals.
