@@ -122,8 +122,9 @@ bool write_svg(const std::string& path, const std::vector<std::array<double, 3>>
   auto X = [&](double x) { return m + (x - x0) * s; };
   auto Y = [&](double y) { return top + (y1 - y) * s; };
   std::ofstream out(path);
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * m + (x1 - x0) * s << "\" height=\""
-      << top + m + (y1 - y0) * s << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  const double width = 2 * m + (x1 - x0) * s, height = top + m + (y1 - y0) * s;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+      << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const auto& p : xyz) {
     const auto q = view(p);
     out << "<circle cx=\"" << X(q[0]) << "\" cy=\"" << Y(q[1]) << "\" r=\"1.5\" fill=\"#bbbbbb\"/>\n";

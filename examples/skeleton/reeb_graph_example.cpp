@@ -37,8 +37,9 @@ bool write_svg(const std::string& path, const std::vector<std::array<double, 2>>
   auto X = [&](double x) { return left + (x - x0) * scale; };
   auto Y = [&](double y) { return top + (y1 - y) * scale; };
   std::ofstream out(path);
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
-      << top + margin + (y1 - y0) * scale << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  const double height = top + margin + (y1 - y0) * scale;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+      << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const auto& p : points)
     out << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"1.6\" fill=\"#bbbbbb\"/>\n";
   const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};

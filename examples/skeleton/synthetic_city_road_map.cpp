@@ -33,8 +33,9 @@ void write_svg(const std::string& path, const sk::Synthetic_city& city, const sk
   auto X = [&](double x) { return margin + (x - x0) * s; };
   auto Y = [&](double y) { return margin + (y1 - y) * s; };
   std::ofstream out(path);
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * margin + (x1 - x0) * s << "\" height=\""
-      << 2 * margin + (y1 - y0) * s + 20 << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  const double width = 2 * margin + (x1 - x0) * s, height = 2 * margin + (y1 - y0) * s + 20;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+      << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const auto& trip : city.trips)
     for (const auto& f : trip)
       out << "<circle cx=\"" << X(f.x) << "\" cy=\"" << Y(f.y) << "\" r=\"1\" fill=\"#bbbbbb\"/>\n";
