@@ -189,8 +189,9 @@ int main(int argc, char** argv) {
               components, leaves, branch);
   std::printf("true graph: 2 loops, 1 leaf, 2 branch nodes (the touching point, of degree 4, where %zu pair(s) of\n"
               "  forks were merged, and the foot of the tail)\n", s.merged_branch_arcs);
-  std::printf("every arc within 0.6 x radius = %.3f of the true graph: %s (farthest vertex %.2f)\n", 0.6 * rips_radius,
-              farthest <= 0.6 * rips_radius ? "yes" : "no", farthest);
+  const double bound = 0.7 * rips_radius;  // the bound the tests state (doc/skeleton.md, "Graphs in high dimension")
+  std::printf("every arc within 0.7 x radius = %.3f of the true graph: %s (farthest vertex %.2f)\n", bound,
+              farthest <= bound ? "yes" : "no", farthest);
   if (!svg.empty()) {
     if (!write_svg(svg, sk::project_to_3d(points), s.graph)) {
       std::fprintf(stderr, "%s: cannot write '%s'\n", argv[0], svg.c_str());

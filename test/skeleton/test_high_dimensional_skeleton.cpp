@@ -77,18 +77,24 @@ std::pair<double, double> hausdorff(const Skeleton_graph& g, const Segment_graph
 }  // namespace
 
 // The stated bound: with per-coordinate noise 0.01 in R^50 (displacement about 0.07), sample spacing 0.25 and
-// Rips radius r = 0.7, the Hausdorff distance between the skeleton and the true graph is at most 0.6 r (0.42),
-// measured both ways along the polylines, not only at their vertices. What limits it: at a bend (two segments at
-// about 90 degrees, as random directions in R^50 are) a level-set piece holds points of both legs up to about r
-// from the corner, and its centroid cuts the corner (measured: up to 0.35 for the trees; 0.06 for the
-// figure-eights, whose circles bend little and whose touching point is one node).
+// Rips radius r = 0.7, the Hausdorff distance between the skeleton and the true graph is at most 0.7 r (0.49),
+// measured both ways along the polylines, not only at their vertices. What limits it: at a bend a level-set piece
+// holds points of both legs up to about r from the corner, and its centroid cuts the corner, the more the sharper
+// the bend. Random directions in R^50 meet at 90 +- 8 degrees; over 1000 random trees the worst distance was 0.442
+// (0.63 r, seed 9, a bend of 62 degrees; mean 0.25 at bends of 90-95 degrees, 0.38 at 65-70); 0.6 r failed 7 of
+// them, all at bends of 58-70 degrees. The figure-eights stay under 0.15: their circles bend little.
 constexpr double rips_radius = 0.7;
-constexpr double hausdorff_bound = 0.6 * rips_radius;
+constexpr double hausdorff_bound = 0.7 * rips_radius;
+// The figure-eight's touching point is one node of degree 4 within one sample spacing of it: its position comes
+// from the few samples around it (measured: 0.02-0.10 with these samples, which take each vertex of the 64-gons
+// twice, their edges being shorter than the spacing; 0.10-0.15 with one sample every 0.25 along the circles,
+// where the node's three members lie on one side of the point).
+constexpr double sample_spacing = 0.25;
 
 TEST(HighDimensionalSkeleton, RandomTreesInR50) {
-  for (std::uint32_t seed = 1; seed <= 5; ++seed) {
+  for (const std::uint32_t seed : {1u, 2u, 3u, 4u, 5u, 9u}) {  // 9: the sharpest bend of 1000 seeds, the worst
     const Segment_graph tree = random_tree(50, 9, seed);
-    const Point_matrix points = tree.noisy_sample(0.25, 0.01, seed);
+    const Point_matrix points = tree.noisy_sample(sample_spacing, 0.01, seed);
     Skeleton_options o;
     o.delta = 1.0;
     const Reeb_skeleton s = extract_reeb_skeleton(points, rips_radius, o);
@@ -110,7 +116,7 @@ TEST(HighDimensionalSkeleton, RandomTreesInR50) {
 TEST(HighDimensionalSkeleton, FigureEightInR50) {
   for (std::uint32_t seed = 1; seed <= 5; ++seed) {
     const Segment_graph eight = figure_eight(50, 2.0, seed);
-    const Point_matrix points = eight.noisy_sample(0.25, 0.01, seed);
+    const Point_matrix points = eight.noisy_sample(sample_spacing, 0.01, seed);
     Skeleton_options o;
     o.delta = 1.0;
     const Reeb_skeleton s = extract_reeb_skeleton(points, rips_radius, o);
@@ -123,11 +129,11 @@ TEST(HighDimensionalSkeleton, FigureEightInR50) {
     // The touching point is one node of degree 4 (the Reeb graph's two forks there, merged).
     EXPECT_EQ(t.branch_degrees, std::vector<std::size_t>{4}) << "seed " << seed;
     for (auto v : boost::make_iterator_range(vertices(s.graph)))
-      if (degree(v, s.graph) == 4) {  // at the touching point, the origin (measured: 0.02-0.05 away)
+      if (degree(v, s.graph) == 4) {  // at the touching point, the origin
         ASSERT_EQ(s.graph[v].input_position.size(), 50u);
         EXPECT_LT(FeatureRecon::skeleton::internal::point_distance(s.graph[v].input_position.data(),
                                                                     eight.vertices[0].data(), 50),
-                  0.1)
+                  sample_spacing)
             << "seed " << seed;
       }
     const auto [to_truth, to_skeleton] = hausdorff(s.graph, eight);
@@ -140,14 +146,14 @@ TEST(HighDimensionalSkeleton, MoreNoiseBreaksTheBound) {
   // The bound is not vacuous: ten times the noise (displacement about 0.7 = the Rips radius) violates it or
   // changes the topology; so does a figure-eight whose skeleton is compared with another figure-eight.
   const Segment_graph eight = figure_eight(50, 2.0, 1);
-  const Point_matrix points = eight.noisy_sample(0.25, 0.1, 1);
+  const Point_matrix points = eight.noisy_sample(sample_spacing, 0.1, 1);
   Skeleton_options o;
   o.delta = 1.0;
   const Reeb_skeleton s = extract_reeb_skeleton(points, rips_radius, o);
   const Topology t = topology(s.graph);
   const auto [to_truth, to_skeleton] = hausdorff(s.graph, eight);
   EXPECT_TRUE(t.loops != 2 || to_truth > hausdorff_bound || to_skeleton > hausdorff_bound);
-  const Reeb_skeleton clean = extract_reeb_skeleton(eight.noisy_sample(0.25, 0.01, 1), rips_radius, o);
+  const Reeb_skeleton clean = extract_reeb_skeleton(eight.noisy_sample(sample_spacing, 0.01, 1), rips_radius, o);
   const auto [a, b] = hausdorff(clean.graph, figure_eight(50, 2.0, 2));
   EXPECT_GT(std::max(a, b), hausdorff_bound);
 }
