@@ -109,13 +109,36 @@ struct Segment_graph {
     }
     return out;
   }
-  /// sample(spacing) with independent Gaussian noise of standard deviation `noise` per coordinate; points
-  /// shared by two segments are taken once per segment (duplicates up to noise).
-  skeleton::Point_matrix noisy_sample(double spacing, double noise, std::uint32_t seed) const {
+  /// One point every `spacing` of arc length along chains of consecutive segments (a segment continues the chain
+  /// when it starts where the previous one ended; a new chain starts at its first vertex): no point twice, also
+  /// where segments are shorter than the spacing.
+  std::vector<std::vector<double>> sample_along(double spacing) const {
+    std::vector<std::vector<double>> out;
+    double next = 0;  // arc length into the current segment of the next point
+    std::size_t previous_end = vertices.size();
+    for (const auto& s : segments) {
+      if (s[0] != previous_end) next = 0;
+      const auto &a = vertices[s[0]], &b = vertices[s[1]];
+      double len = 0;
+      for (std::size_t k = 0; k < dimension; ++k) len += (b[k] - a[k]) * (b[k] - a[k]);
+      len = std::sqrt(len);
+      for (; next < len; next += spacing) {
+        std::vector<double> p(dimension);
+        for (std::size_t k = 0; k < dimension; ++k) p[k] = a[k] + (b[k] - a[k]) * next / len;
+        out.push_back(std::move(p));
+      }
+      next -= len;
+      previous_end = s[1];
+    }
+    return out;
+  }
+  /// sample(spacing) (or sample_along(spacing)) with independent Gaussian noise of standard deviation `noise` per
+  /// coordinate; with sample(), points shared by two segments are taken once per segment (duplicates up to noise).
+  skeleton::Point_matrix noisy_sample(double spacing, double noise, std::uint32_t seed, bool along = false) const {
     Portable_gaussian g(seed * 7919u + 17u);
     skeleton::Point_matrix m;
     m.dimension = dimension;
-    for (const auto& p : sample(spacing)) {
+    for (const auto& p : along ? sample_along(spacing) : sample(spacing)) {
       for (std::size_t k = 0; k < dimension; ++k) m.data.push_back(p[k] + noise * g());
       ++m.rows;
     }
