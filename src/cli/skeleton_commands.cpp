@@ -130,7 +130,10 @@ int run_reeb(const std::vector<std::string>& argv) {
   std::size_t removed_branches = 0, removed_loops = 0;
   Reeb_graph R;
   if (delta >= 0) {
-    Reeb_simplification_result S = simplify_by_persistence(augmented, delta);
+    progress.done();
+    Progress simplification("simplification", quiet);
+    Reeb_simplification_result S = simplify_by_persistence(augmented, delta, std::ref(simplification));
+    simplification.done();
     R = std::move(S.graph);
     removed_branches = S.removed_branches;
     removed_loops = S.removed_loops;
@@ -138,7 +141,7 @@ int run_reeb(const std::vector<std::string>& argv) {
     R = augmented.reeb_graph();
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  progress.done();
+  if (delta < 0) progress.done();  // with --simplify: done before the simplification
   const Simplicial_complex_2& K = cf.complex;
   std::ostringstream os;
   if (args.has("json")) {

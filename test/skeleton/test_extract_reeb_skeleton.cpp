@@ -469,6 +469,28 @@ TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
   EXPECT_EQ(extract_reeb_skeleton(m, 1.0, o).status, Status::success);
 }
 
+TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
+  // The two simplifications report within 0.8-0.93 (they reported nothing: a long one looked hung) and a stop
+  // there ends the run.
+  const Point_matrix m = circle_points(2000);
+  Skeleton_options o;
+  o.delta = 1;
+  o.repair_distance = 0.5;
+  std::vector<double> seen;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  ASSERT_EQ(extract_reeb_skeleton(m, 1.0, o).status, Status::success);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.8 && t < 0.87; }), 3);
+  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.87 && t < 0.93; }), 3);
+  o.progress = [](double t) { return t < 0.88; };  // in the second simplification
+  const Reeb_skeleton s = extract_reeb_skeleton(m, 1.0, o);
+  EXPECT_EQ(s.status, Status::interrupted);
+  EXPECT_EQ(num_vertices(s.graph), 0u);
+}
+
 TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {
   // Most points are copies of one point: the median edge length over all edges is 0 (the embedding fell back to
   // 1/64 of the range of f); over the edges between distinct points it is the spacing, 1, as without the copies.

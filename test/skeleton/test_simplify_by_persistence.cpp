@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "hera_bottleneck.h"
@@ -384,4 +385,50 @@ TEST(SimplifyByPersistence, LongStemWithManySpursBecomesOneArc) {
   EXPECT_EQ(G.arcs.size(), 1u);
   EXPECT_EQ(G.arcs[stem_arc].vertices.size(), 3 * (n - 2));
   expect_partition(G, 3 * n, "stem");
+}
+
+TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
+  // The spurs at one fork of the test above: reports from 0 to 1 in order, the same graph as without a callback;
+  // a stop at the start, after the persistence or during the glued complex's Reeb graph gives interrupted and no
+  // graph, and no later report; the last report (1, the work done) does not undo the result.
+  const std::size_t k = 300, n = 4 + k;
+  std::vector<Edge> edges{{0, 1}, {1, 2}, {1, 3}};
+  std::vector<double> f{-1, 0, 5, 10};
+  for (std::size_t j = 0; j < k; ++j) {
+    f.push_back(0.1 * static_cast<double>(j + 1) / static_cast<double>(k));
+    edges.push_back({1, static_cast<Vertex_index>(4 + j)});
+  }
+  const auto g = make(n, edges, {}, f);
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+  const Reeb_simplification_result plain = simplify_by_persistence(A, 1.0);
+  std::vector<double> seen;
+  const Reeb_simplification_result watched = simplify_by_persistence(A, 1.0, [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  });
+  EXPECT_EQ(watched.status, Status::success);
+  EXPECT_EQ(watched.removed_branches, k);
+  ASSERT_EQ(watched.graph.nodes.size(), plain.graph.nodes.size());
+  for (std::size_t i = 0; i < plain.graph.nodes.size(); ++i)
+    EXPECT_EQ(watched.graph.nodes[i].vertex, plain.graph.nodes[i].vertex);
+  ASSERT_GE(seen.size(), 6u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.9; }));  // glued sweep
+  for (const double stop_at : {0.0, 0.15, 0.5, 0.95}) {
+    std::size_t later = 0;
+    bool refused = false;
+    const Reeb_simplification_result S = simplify_by_persistence(A, 1.0, [&](double t) {
+      if (refused) ++later;
+      refused = refused || t >= stop_at;
+      return t < stop_at;
+    });
+    EXPECT_EQ(S.status, stop_at < 0.95 ? Status::interrupted : Status::success) << stop_at;  // 1.0 is not asked
+    if (stop_at < 0.95) {
+      EXPECT_TRUE(S.graph.nodes.empty()) << stop_at;
+      EXPECT_EQ(S.removed_branches, 0u) << stop_at;
+      EXPECT_EQ(later, 0u) << stop_at;
+    }
+  }
 }

@@ -423,13 +423,17 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     return result;
   }
   Reeb_graph_options ro;
-  ro.progress = stage(0.35, 0.85);
+  ro.progress = stage(0.35, 0.8);
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, geo.values, ro);
   if (stopped || A.status() == Status::interrupted) {
     result.status = Status::interrupted;
     return result;
   }
-  Reeb_simplification_result S = simplify_by_persistence(A, options.delta);
+  Reeb_simplification_result S = simplify_by_persistence(A, options.delta, stage(0.8, 0.87));
+  if (stopped || S.status == Status::interrupted) {
+    result.status = Status::interrupted;
+    return result;
+  }
   result.removed_branches = S.removed_branches;
   result.removed_loops = S.removed_loops;
   if (options.repair_distance > 0) {
@@ -441,7 +445,11 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
       result.connected_dead_ends = ends.connected;
       joined = std::move(ends.graph);
     }
-    S = simplify_by_persistence(joined, A.values(), options.delta);
+    S = simplify_by_persistence(joined, A.values(), options.delta, stage(0.87, 0.93));
+    if (stopped || S.status == Status::interrupted) {
+      result.status = Status::interrupted;
+      return result;
+    }
     result.removed_branches += S.removed_branches;
     result.removed_loops += S.removed_loops;
   }

@@ -26,6 +26,8 @@ struct Reeb_simplification_result {
   Reeb_graph graph;
   std::size_t removed_branches = 0;  ///< branch features of persistence <= delta that were merged away
   std::size_t removed_loops = 0;     ///< loop features of persistence <= delta that were merged away
+  /// success, or interrupted when the progress callback returned false (the graph is then empty).
+  Status status = Status::success;
 };
 
 namespace internal {
@@ -63,8 +65,10 @@ struct Simplification_complex {
 /// once; the values R uses are finite and each node's value is `values[vertex]`; the nodes are in increasing
 /// (value, vertex) order, as every function returning a Reeb_graph leaves them (all checked; throws naming the
 /// node or arc).
+/// \param progress called with the fraction done (persistence and merging paths up to 0.3, the Reeb graph of the
+///        glued complex up to 0.9, the quotient graph 1); returning false stops: status interrupted, empty graph.
 inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, const std::vector<double>& values,
-                                                          double delta) {
+                                                          double delta, const Progress_callback& progress = {}) {
   const char* fn = "simplify_by_persistence";
   using FeatureRecon::internal::throw_invalid_argument;
   if (!(delta >= 0 && std::isfinite(delta))) throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
@@ -94,8 +98,17 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
       throw_invalid_argument(fn, "arc ", k, " joins nodes out of range [0, ", R.nodes.size(), ")");
     for (const Vertex_index v : R.arcs[k].vertices) use(v, "arc", k, 1);
   }
+  Reeb_simplification_result result;
+  auto stopped = [&](double t) {
+    if (FeatureRecon::internal::report_progress(progress, t)) return false;
+    result = Reeb_simplification_result{};
+    result.status = Status::interrupted;
+    return true;
+  };
+  if (stopped(0.0)) return result;
   std::vector<std::vector<std::size_t>> cycles;
   const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles, delta, fn);
+  if (stopped(0.1)) return result;
   const std::size_t n = values.size();
   internal::Simplification_complex Y;
   Y.values = values;
@@ -186,7 +199,6 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   };
 
   std::vector<std::vector<Edge>> merging_sets;
-  Reeb_simplification_result result;
   // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork). At the fork, the arc alpha
   // goes into C2, the component of e beyond the fork, and beta into the sibling component that reaches farthest
   // (its extreme is the elder; the first such arc of the fork). Both are found for all pairs by one union-find
@@ -325,6 +337,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     ++result.removed_loops;
   }
 
+  if (stopped(0.2)) return result;
   // Spines and strips.
   for (std::vector<Edge>& edges : merging_sets) {
     std::sort(edges.begin(), edges.end());
@@ -354,7 +367,19 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 
   // The Reeb graph of the glued complex, with zero-height arcs contracted.
   const Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
-  const Augmented_reeb_graph AY = compute_augmented_reeb_graph(K, val);
+  if (stopped(0.3)) return result;
+  Reeb_graph_options glued_options;
+  bool asked_to_stop = false;
+  if (progress)
+    glued_options.progress = [&progress, &asked_to_stop](double t) {
+      return !(asked_to_stop = asked_to_stop || !progress(0.3 + 0.6 * t));
+    };
+  const Augmented_reeb_graph AY = compute_augmented_reeb_graph(K, val, glued_options);
+  if (asked_to_stop || AY.status() == Status::interrupted || stopped(0.9)) {
+    result = Reeb_simplification_result{};
+    result.status = Status::interrupted;
+    return result;
+  }
   const std::size_t m = val.size();
   std::vector<std::size_t> parent(m);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
@@ -432,12 +457,14 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     }
   }
   G.components = internal::count_components(G);
+  (void)FeatureRecon::internal::report_progress(progress, 1.0);
   return result;
 }
 
 /// simplify_by_persistence() of the Reeb graph of A.
-inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta) {
-  return simplify_by_persistence(A.reeb_graph(), A.values(), delta);
+inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta,
+                                                          const Progress_callback& progress = {}) {
+  return simplify_by_persistence(A.reeb_graph(), A.values(), delta, progress);
 }
 
 }  // namespace skeleton
