@@ -394,7 +394,6 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
-  constexpr std::size_t progress_stride = 4096;  // fixes between progress reports within one trip
   if (!(rips_radius > 0 && std::isfinite(rips_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ", rips_radius);
   if (!(options.sample_spacing >= 0 && std::isfinite(options.sample_spacing)) || !std::isfinite(options.max_link_gap))
@@ -425,6 +424,15 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   check_fraction("min_confirmed_fraction", options.min_confirmed_fraction);
   check_fraction("min_straight_confirmed_fraction", options.min_straight_confirmed_fraction);
   Gps_trace_sample S;
+  // Progress through the fixes: `done` of S.fixes at the stage [from, from + width]; true (status interrupted) when
+  // the callback says stop. Asked before each trip and every `progress_stride` fixes within one.
+  constexpr std::size_t progress_stride = 4096;
+  auto stop_at = [&](double from, double width, std::size_t done) {
+    const double fraction = from + width * double(done) / double(std::max<std::size_t>(S.fixes, 1));
+    if (FeatureRecon::internal::report_progress(options.progress, fraction)) return false;
+    S.status = Status::interrupted;
+    return true;
+  };
   S.points.dimension = 2;
   // Sorted copies of the trips; the median step.
   std::vector<std::vector<std::size_t>> order(trips.size());
@@ -599,19 +607,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     std::vector<Unconfirmed> unconfirmed;
     std::size_t checked_fixes = 0;
     for (std::size_t t = 0; t < trips.size(); ++t) {
-      if (!FeatureRecon::internal::report_progress(
-              options.progress, 0.3 * double(checked_fixes) / double(std::max<std::size_t>(S.fixes, 1)))) {
-        S.status = Status::interrupted;
-        return S;
-      }
+      if (stop_at(0.0, 0.3, checked_fixes)) return S;
       const auto& o = order[t];
       for (std::size_t i = 0; i + 1 < o.size(); ++i) {
-        if (i % progress_stride == progress_stride - 1 &&  // and within a long trip
-            !FeatureRecon::internal::report_progress(
-                options.progress, 0.3 * double(checked_fixes + i) / double(std::max<std::size_t>(S.fixes, 1)))) {
-          S.status = Status::interrupted;
-          return S;
-        }
+        if (i % progress_stride == progress_stride - 1 && stop_at(0.0, 0.3, checked_fixes + i)) return S;
         const Gps_fix& a = trips[t][o[i]];
         const Gps_fix& b = trips[t][o[i + 1]];
         const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
@@ -706,11 +705,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.sample_of_fix.assign(S.fixes, 0);
   std::size_t first_fix = 0;
   for (std::size_t t = 0; t < trips.size(); ++t) {
-    if (!FeatureRecon::internal::report_progress(
-            options.progress, 0.3 + 0.5 * double(first_fix) / double(std::max<std::size_t>(S.fixes, 1)))) {
-      S.status = Status::interrupted;
-      return S;
-    }
+    if (stop_at(0.3, 0.5, first_fix)) return S;
     const auto& o = order[t];
     std::uint32_t previous = std::numeric_limits<std::uint32_t>::max();
     auto link = [&](std::uint32_t s) {
@@ -729,12 +724,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       next_move[i - 1] = same_place(i - 1, i) ? next_move[i] : i;
     for (std::size_t i = 1; i < o.size(); ++i) previous_move[i] = same_place(i - 1, i) ? previous_move[i - 1] : i - 1;
     for (std::size_t i = 0; i < o.size(); ++i) {
-      if (i % progress_stride == progress_stride - 1 &&  // and within a long trip
-          !FeatureRecon::internal::report_progress(
-              options.progress, 0.3 + 0.5 * double(first_fix + i) / double(std::max<std::size_t>(S.fixes, 1)))) {
-        S.status = Status::interrupted;
-        return S;
-      }
+      if (i % progress_stride == progress_stride - 1 && stop_at(0.3, 0.5, first_fix + i)) return S;
       const Gps_fix& f = trips[t][o[i]];
       double hx = 0, hy = 0;
       if (next_move[i] != none) {

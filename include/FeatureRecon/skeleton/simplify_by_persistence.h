@@ -99,12 +99,12 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (const Vertex_index v : R.arcs[k].vertices) use(v, "arc", k, 1);
   }
   Reeb_simplification_result result;
-  auto stopped = [&](double t) {
-    if (FeatureRecon::internal::report_progress(progress, t)) return false;
+  auto interrupted = [&result] {  // what a stop leaves: no graph
     result = Reeb_simplification_result{};
     result.status = Status::interrupted;
     return true;
   };
+  auto stopped = [&](double t) { return !FeatureRecon::internal::report_progress(progress, t) && interrupted(); };
   if (stopped(0.0)) return result;
   std::vector<std::vector<std::size_t>> cycles;
   const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles, delta, fn);
@@ -369,17 +369,13 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   const Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
   if (stopped(0.3)) return result;
   Reeb_graph_options glued_options;
-  bool asked_to_stop = false;
+  bool asked_to_stop = false;  // sticky: the sweep's last report (all swept) does not stop it, but counts here
   if (progress)
     glued_options.progress = [&progress, &asked_to_stop](double t) {
       return !(asked_to_stop = asked_to_stop || !progress(0.3 + 0.6 * t));
     };
   const Augmented_reeb_graph AY = compute_augmented_reeb_graph(K, val, glued_options);
-  if (asked_to_stop || AY.status() == Status::interrupted || stopped(0.9)) {
-    result = Reeb_simplification_result{};
-    result.status = Status::interrupted;
-    return result;
-  }
+  if (((asked_to_stop || AY.status() == Status::interrupted) && interrupted()) || stopped(0.9)) return result;
   const std::size_t m = val.size();
   std::vector<std::size_t> parent(m);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
