@@ -60,8 +60,10 @@ const std::vector<Command>& commands() {
        "  --quiet          no progress on standard error\n",
        run_reeb},
       {"skeleton", "Skeleton graph of points, GPS tracks, a distance matrix or a graph (Rips, geodesic, Reeb graph, simplification, embedding)",
-       "usage: featurerecon skeleton (--points FILE | --tracks FILE | --distance-matrix FILE | --graph FILE)\n"
+       "usage: featurerecon skeleton (--points FILE | --image FILE | --tracks FILE | --distance-matrix FILE |\n"
+       "                              --graph FILE)\n"
        "                             [--radius R] [--delta D] [--repair DIST] [--prune H] [--sample-spacing S]\n"
+       "                             [--ink dark|bright] [--ink-threshold T]\n"
        "                             [--link-gap G] [--heading-tolerance A] [--undirected] [--min-density F]\n"
        "                             [--min-lateral-density LD] [--density-radius DR]\n"
        "                             [--density-heading-tolerance DA] [--first-point-positions]\n"
@@ -80,6 +82,10 @@ const std::vector<Command>& commands() {
        "Input (exactly one):\n"
        "  --points FILE    one point per line (any dimension; the map and picture get the first two coordinates,\n"
        "                   above 3-D those of the PCA projection); needs --radius\n"
+       "  --image FILE     the ink of a picture (PNG, JPEG, PGM, PPM; colour is read as its luma): every pixel\n"
+       "                   darker than T (--ink dark, the default) or at least T (--ink bright; T = --ink-threshold,\n"
+       "                   default 128) is a point at its centre, x = column + 0.5, y = height - row - 0.5 (y up,\n"
+       "                   in pixels). R defaults to 1.5 (the 8 neighbours of a pixel) and D to 2R\n"
        "  --tracks FILE    GPS tracks, lines 'trip_id x y t' (metres, seconds). Each trip is sorted by time, its\n"
        "                   segments up to the link gap are densified where the traces confirm them, the result is\n"
        "                   sampled at spacing S (greedy, per direction), consecutive samples of a trip are graph\n"
@@ -102,8 +108,8 @@ const std::vector<Command>& commands() {
        "                   edges a triangle)\n"
        "\n"
        "Options:\n"
-       "  --delta D        persistence threshold (default R; 3R for tracks; 0 with --graph, which has no radius:\n"
-       "                   give D to simplify)\n"
+       "  --delta D        persistence threshold (default R; 2R for images, 3R for tracks; 0 with --graph, which\n"
+       "                   has no radius: give D to simplify)\n"
        "  --repair DIST    join degree-1 nodes at most DIST apart, then simplify again (default 0; 2.5R for tracks)\n"
        "  --prune H        remove components of height <= H (default 0; 5R for tracks)\n"
        "  --sample-spacing S  thin the points first: keep a point when no kept point is closer than S (0: no\n"

@@ -24,6 +24,7 @@
 #include <sstream>
 
 #include "../io/featurerecon_io.h"
+#include "../io/image_io.h"
 #include "../io/skeleton_io.h"
 #include "cli_common.h"
 #include "commands.h"
@@ -231,26 +232,39 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
+                       {"points", "image", "ink", "ink-threshold", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
-  const int inputs = int(args.has("points")) + int(args.has("tracks")) + int(args.has("distance-matrix")) +
-                     int(args.has("graph"));
+  const int inputs = int(args.has("points")) + int(args.has("image")) + int(args.has("tracks")) +
+                     int(args.has("distance-matrix")) + int(args.has("graph"));
   if (inputs != 1)
-    throw Usage_error("give exactly one of --points FILE, --tracks FILE, --distance-matrix FILE and --graph FILE");
+    throw Usage_error("give exactly one of --points FILE, --image FILE, --tracks FILE, --distance-matrix FILE and "
+                      "--graph FILE");
+  const bool image = args.has("image");
+  if (!image && (args.has("ink") || args.has("ink-threshold")))
+    throw Usage_error("--ink and --ink-threshold apply to --image only");
+  const std::string ink = args.get_or("ink", "dark");
+  if (ink != "dark" && ink != "bright") throw Usage_error("--ink must be dark or bright, got '" + ink + "'");
+  long long ink_threshold = 128;
+  if (args.has("ink-threshold")) {
+    ink_threshold = args.get_int("ink-threshold");
+    if (ink_threshold < 1 || ink_threshold > 255)
+      throw Usage_error("--ink-threshold must be an integer grey level in [1, 255], got '" + args.get("ink-threshold") +
+                        "'");
+  }
   if (args.has("graph") && args.has("radius"))
     throw Usage_error("--radius does not apply to --graph (the graph's edges are used as they are)");
-  if (!args.has("tracks") && !args.has("graph") && !args.has("radius"))
+  if (!args.has("tracks") && !args.has("graph") && !image && !args.has("radius"))
     throw Usage_error("--radius R is required with --points and --distance-matrix");
   // With --tracks every unset parameter is derived from the data (extract_road_map(): the median step between
   // fixes gives the radius, the radius the rest).
   const bool gps = args.has("tracks");
-  double radius = args.has("radius") ? args.get_positive_double("radius") : 0.0;
+  double radius = args.has("radius") ? args.get_positive_double("radius") : image ? 1.5 : 0.0;
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
   Outputs outputs(args, {"out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   outputs.require_extension("ply", {"ply"}, "PLY polylines");
   Skeleton_options options;
-  options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : radius;
+  options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : image ? 2 * radius : radius;
   if (options.delta < 0) throw Usage_error("--delta must be >= 0");
   options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
@@ -308,14 +322,29 @@ int run_skeleton(const std::vector<std::string>& argv) {
   Reeb_skeleton s;
   Skeleton_graph merged;  // --tracks with merging: the skeleton of the merged map, which is what is written
   bool use_merged = false;
-  std::string gps_json;
+  std::string input_json;  // the JSON summary's fields of the input kind (tracks, image)
   std::size_t sampled = 0;
-  if (args.has("points")) {
-    const io::Point_file pf = io::read_points(args.get("points"));
+  if (args.has("points") || image) {
     Point_matrix all;
-    all.rows = pf.size();
-    all.dimension = pf.dimension;
-    all.data = pf.coordinates;
+    if (image) {  // the ink pixels' centres, y up
+      const io::Image picture = io::to_grey(io::read_image(args.get("image")));
+      all.dimension = 2;
+      for (int row = 0; row < picture.height; ++row)
+        for (int column = 0; column < picture.width; ++column)
+          if ((picture.at(column, row) < ink_threshold) == (ink == "dark")) {
+            all.data.push_back(column + 0.5);
+            all.data.push_back(picture.height - row - 0.5);
+            ++all.rows;
+          }
+      input_json = ", \"image_width\": " + std::to_string(picture.width) + ", \"image_height\": " +
+                 std::to_string(picture.height) + ", \"ink\": \"" + ink + "\", \"ink_threshold\": " +
+                 std::to_string(ink_threshold);
+    } else {
+      const io::Point_file pf = io::read_points(args.get("points"));
+      all.rows = pf.size();
+      all.dimension = pf.dimension;
+      all.data = pf.coordinates;
+    }
     input_points = all.rows;
     const std::vector<std::size_t> kept = thin_points(all, spacing);
     m.rows = kept.size();
@@ -465,7 +494,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (use_merged) merged = std::move(road.merged.skeleton);
     // Without merging the map is the skeleton itself: its length before and after.
     const double unmerged_length = use_merged ? 0.0 : skeleton::internal::map_length(road.map.positions, road.map.edges);
-    gps_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
+    input_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
                ", \"link_gap\": " + json_number(sample.max_link_gap) +
                ", \"segment_support\": " + json_number(std::max(0.0, sample.segment_support)) +
                ", \"segment_turn_tolerance\": " + json_number(sample.segment_turn_tolerance) +
@@ -495,7 +524,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                json_number(use_merged ? road.merged.length_before : unmerged_length) + ", \"length\": " +
                json_number(use_merged ? road.merged.length_after : unmerged_length);
     if (lonlat)
-      gps_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
+      input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
                   ", \"origin_latitude\": " + json_number(projection.origin_latitude);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -537,6 +566,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     const char* what = args.has("tracks")            ? "fixes"
                        : args.has("distance-matrix") ? "rows"
                        : args.has("graph")           ? "vertices"
+                       : image                       ? "ink pixels (--ink, --ink-threshold)"
                                                      : "points";
     std::fprintf(stderr, "featurerecon skeleton: warning: the input holds no %s: the skeleton is empty\n", what);
   } else if (num_vertices(graph) == 0) {  // every part removed: say by which stage
@@ -570,7 +600,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
               s.merged_branch_arcs, json_number(options.prune_height).c_str(), json_number(s.level_width).c_str(),
               json_number(s.max_gap).c_str(),
               options.embedding.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian",
-              options.embedding.smoothing_iterations, gps_json.c_str(), json_number(seconds).c_str(),
+              options.embedding.smoothing_iterations, input_json.c_str(), json_number(seconds).c_str(),
               json_string(out_v).c_str(), json_string(out_e).c_str());
   return 0;
 }

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the featurerecon program like a user: exit codes, error messages, written files.
-# -DFEATURERECON=<program> -DDATA=<test/data> -DWORK=<scratch directory>
+# -DFEATURERECON=<program> -DDATA=<test/data> -DPROJECT_DATA=<data> -DWORK=<scratch directory>
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(failures 0)
@@ -219,7 +219,38 @@ expect(skeleton_branch_merge_bad 2 "--branch-merge must be finite and >= 0 \\(0:
 expect(skeleton_all_pruned 0 "\"nodes\": 0, .*warning: the skeleton is empty: pruning removed all 1 component\\(s\\), each of height at most 100 \\(--prune 0 keeps them\\)" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --prune 100 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_max_gap_nan 2 "--max-gap" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-gap nan --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_self_score 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 1)
-expect(skeleton_source 2 "exactly one of --points FILE, --tracks FILE, --distance-matrix FILE and --graph FILE" skeleton --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_source 2 "exactly one of --points FILE, --image FILE, --tracks FILE, --distance-matrix FILE and --graph FILE" skeleton --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# --image: the ink of a picture. A dark ring on white (ASCII PGM, 9 x 9) is one loop; its pixel centres are y up.
+file(WRITE ${WORK}/ring.pgm "P2\n9 9\n255\n")
+foreach(row 0 1 2 3 4 5 6 7 8)
+  set(line "")
+  foreach(column 0 1 2 3 4 5 6 7 8)
+    math(EXPR dx "${column} - 4")
+    math(EXPR dy "${row} - 4")
+    math(EXPR r2 "${dx} * ${dx} + ${dy} * ${dy}")
+    if(r2 GREATER_EQUAL 5 AND r2 LESS_EQUAL 13)
+      string(APPEND line " 20")
+    else()
+      string(APPEND line " 250")
+    endif()
+  endforeach()
+  file(APPEND ${WORK}/ring.pgm "${line}\n")
+endforeach()
+expect(skeleton_image_ring 0 "\"radius\": 1.5, \"delta\": 3, .*\"loops\": 1, \"components\": 1, .*\"image_width\": 9, \"image_height\": 9, \"ink\": \"dark\", \"ink_threshold\": 128" skeleton --image ${WORK}/ring.pgm --out-vertices ${WORK}/ring_v.txt --out-edges ${WORK}/ring_e.txt --quiet)
+expect_count(${WORK}/ring_v.txt "^0,[0-9.]+,[0-9.]+\n" 1)
+expect(skeleton_image_bright 0 "\"points\": 0,.*warning: the input holds no ink pixels \\(--ink, --ink-threshold\\)" skeleton --image ${WORK}/ring.pgm --ink bright --ink-threshold 251 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# The white: the disc inside the ring and the frame around it (a loop).
+expect(skeleton_image_background 0 "\"points\": 49,.*\"loops\": 1, \"components\": 2," skeleton --image ${WORK}/ring.pgm --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# One dark pixel in the top row, third column of a 4 x 3 picture: a point at (2.5, 3 - 0.5).
+file(WRITE ${WORK}/dot.pgm "P2\n4 3\n255\n255 255 0 255\n255 255 255 255\n255 255 255 255\n")
+expect(skeleton_image_dot 0 "\"points\": 1,.*\"nodes\": 1, \"arcs\": 0," skeleton --image ${WORK}/dot.pgm --out-vertices ${WORK}/dot_v.txt --out-edges ${WORK}/dot_e.txt --quiet)
+expect_count(${WORK}/dot_v.txt "^0,2\\.5,2\\.5\n$" 1)
+# The 1,000 digits of the handwriting example: as many loops as the example's skeletons, one component per piece of ink.
+expect(skeleton_image_digits 0 "\"loops\": 399, \"components\": 1032," skeleton --image ${PROJECT_DATA}/images/digits_1000.pgm --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_image_ink 2 "--ink must be dark or bright, got 'grey'" skeleton --image ${WORK}/ring.pgm --ink grey --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_image_threshold 2 "--ink-threshold must be an integer grey level in \\[1, 255\\], got '0'" skeleton --image ${WORK}/ring.pgm --ink-threshold 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_image_only 2 "--ink and --ink-threshold apply to --image only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_image_missing 1 "no_such.png" skeleton --image ${WORK}/no_such.png --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_two_sources 2 "exactly one of" skeleton --points ${DATA}/figure_eight.xyz --graph ${DATA}/figure_eight_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_radius_required 2 "--radius R is required with --points" skeleton --points ${DATA}/figure_eight.xyz --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_graph_radius 2 "--radius does not apply to --graph" skeleton --graph ${DATA}/figure_eight_graph.txt --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
