@@ -39,6 +39,12 @@ std::string invalid_argument_message(Call&& call) {
 }
 
 /// A complex with a function on its vertices.
+/// Input distance between planar points (the repair stages' Distance): Euclidean.
+struct Planar_points {
+  std::vector<std::array<double, 2>> p;
+  double operator()(Vertex_index a, Vertex_index b) const { return std::hypot(p[a][0] - p[b][0], p[a][1] - p[b][1]); }
+};
+
 struct Complex_with_function {
   Simplicial_complex_2 complex;
   std::vector<double> f;

@@ -19,10 +19,7 @@ using namespace FeatureRecon::test;
 
 namespace {
 /// Points on the x axis (or a circle) with f = the first coordinate.
-struct Line {
-  std::vector<std::array<double, 2>> p;
-  double operator()(Vertex_index a, Vertex_index b) const { return std::hypot(p[a][0] - p[b][0], p[a][1] - p[b][1]); }
-};
+using Line = Planar_points;
 /// Appends the path of vertices 0..10 at (i, 0) with f = i (the street that others meet).
 void add_horizontal_street(Line& pts, std::vector<Edge>& edges, std::vector<double>& f) {
   for (int i = 0; i <= 10; ++i) {
@@ -110,7 +107,8 @@ TEST(RepairReebGraph, NeverJoinsTheEndsOfOneSegment) {
 
 namespace {
 /// A "lollipop": a stub 0-1-2 from the minimum (f = 0, 0.1, 0.2) into a cycle 2..9 (f rising to 1 at vertex 6),
-/// plus a separate short path 10-11 (f = 5, 5.3).
+/// plus a separate short path 10-11 (f = 5, 5.25: its height 0.25 is exact in binary, so that the pruning test
+/// below checks the boundary; 5.3 - 5 rounds to 0.29999999999999982).
 Complex_with_function lollipop() {
   std::vector<Edge> e{{0, 1}, {1, 2}};
   std::vector<double> f{0.0, 0.1, 0.2};
@@ -120,7 +118,7 @@ Complex_with_function lollipop() {
   e.push_back({9, 2});
   e.push_back({10, 11});
   f.push_back(5.0);
-  f.push_back(5.3);
+  f.push_back(5.25);
   return make(12, e, {}, f);
 }
 }  // namespace
@@ -172,8 +170,8 @@ TEST(TrimEssentialStubs, AYLosesOneStubNotItsBranch) {
 TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   const Reeb_graph R = reeb_graph_of(lollipop());
   ASSERT_EQ(R.components, 2u);
-  EXPECT_EQ(prune_reeb_graph_components(R, 0.29).removed_components, 0u);  // 10-11 has height 0.3
-  const Reeb_prune_result p = prune_reeb_graph_components(R, 0.3);
+  EXPECT_EQ(prune_reeb_graph_components(R, 0.24).removed_components, 0u);  // 10-11 has height 0.25
+  const Reeb_prune_result p = prune_reeb_graph_components(R, 0.25);  // at most: inclusive
   EXPECT_EQ(p.removed_components, 1u);
   EXPECT_EQ(p.removed_vertices, (std::vector<Vertex_index>{10, 11}));
   EXPECT_EQ(p.graph.components, 1u);
@@ -192,8 +190,8 @@ TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   Reeb_graph unset = R;
   unset.components = 0;
   EXPECT_EQ(unset.loops(), 0u);
-  EXPECT_EQ(prune_reeb_graph_components(unset, 0.3).graph.components, 1u);
-  EXPECT_EQ(prune_reeb_graph_components(unset, 0.3).graph.loops(), 1u);
+  EXPECT_EQ(prune_reeb_graph_components(unset, 0.25).graph.components, 1u);
+  EXPECT_EQ(prune_reeb_graph_components(unset, 0.25).graph.loops(), 1u);
 }
 
 TEST(ConnectDeadEnds, ClosesATJunctionGap) {
