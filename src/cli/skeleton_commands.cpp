@@ -232,7 +232,12 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "image", "ink", "ink-threshold", "tracks", "distance-matrix", "graph", "radius", "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density", "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support", "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune", "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap", "max-triangles",
+                       {"points", "image", "ink", "ink-threshold", "tracks", "distance-matrix", "graph", "radius",
+                        "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density",
+                        "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support",
+                        "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune",
+                        "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap",
+                        "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   const int inputs = int(args.has("points")) + int(args.has("image")) + int(args.has("tracks")) +
                      int(args.has("distance-matrix")) + int(args.has("graph"));
@@ -337,8 +342,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
             ++all.rows;
           }
       input_json = ", \"image_width\": " + std::to_string(picture.width) + ", \"image_height\": " +
-                 std::to_string(picture.height) + ", \"ink\": \"" + ink + "\", \"ink_threshold\": " +
-                 std::to_string(ink_threshold);
+                   std::to_string(picture.height) + ", \"ink\": \"" + ink + "\", \"ink_threshold\": " +
+                   std::to_string(ink_threshold);
     } else {
       const io::Point_file pf = io::read_points(args.get("points"));
       all.rows = pf.size();
@@ -495,37 +500,37 @@ int run_skeleton(const std::vector<std::string>& argv) {
     // Without merging the map is the skeleton itself: its length before and after.
     const double unmerged_length = use_merged ? 0.0 : skeleton::internal::map_length(road.map.positions, road.map.edges);
     input_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
-               ", \"link_gap\": " + json_number(sample.max_link_gap) +
-               ", \"segment_support\": " + json_number(std::max(0.0, sample.segment_support)) +
-               ", \"segment_turn_tolerance\": " + json_number(sample.segment_turn_tolerance) +
-               ", \"checked_segments\": " + std::to_string(sample.checked_segments) +
-               ", \"confirmed_segments\": " + std::to_string(sample.confirmed_segments) +
-               ", \"straight_checked\": " + std::to_string(sample.straight_checked) +
-               ", \"straight_confirmed\": " + std::to_string(sample.straight_confirmed) +
-               ", \"min_straight_confirmed_fraction\": " + json_number(go.min_straight_confirmed_fraction) +
-               ", \"turn_rule_used\": " + (sample.turn_rule_used ? "true" : "false") +
-               ", \"straight_segments\": " + std::to_string(sample.straight_segments) +
-               ", \"linked_segments\": " + std::to_string(sample.linked_segments) +
-               ", \"all_segments_used\": " + (sample.all_segments_used ? "true" : "false") +
-               ", \"local_support\": " + std::to_string(go.local_support_fixes) +
-               ", \"min_local_support\": " + json_number(go.min_local_support) +
-               ", \"locally_checked\": " + std::to_string(sample.locally_checked) +
-               ", \"locally_rejected\": " + std::to_string(sample.locally_rejected) +
-               ", \"min_density\": " +
-               json_number(go.min_relative_density) + ", \"min_lateral_density\": " +
-               json_number(go.min_lateral_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
-               ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
-               ", \"directed\": " + (go.directed ? "true" : "false") +
-               ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") +
-               ", \"dropped_sparse\": " + std::to_string(sample.dropped) +
-               ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"trip_links\": " +
-               std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
-               ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
-               json_number(use_merged ? road.merged.length_before : unmerged_length) + ", \"length\": " +
-               json_number(use_merged ? road.merged.length_after : unmerged_length);
+                 ", \"link_gap\": " + json_number(sample.max_link_gap) +
+                 ", \"segment_support\": " + json_number(std::max(0.0, sample.segment_support)) +
+                 ", \"segment_turn_tolerance\": " + json_number(sample.segment_turn_tolerance) +
+                 ", \"checked_segments\": " + std::to_string(sample.checked_segments) +
+                 ", \"confirmed_segments\": " + std::to_string(sample.confirmed_segments) +
+                 ", \"straight_checked\": " + std::to_string(sample.straight_checked) +
+                 ", \"straight_confirmed\": " + std::to_string(sample.straight_confirmed) +
+                 ", \"min_straight_confirmed_fraction\": " + json_number(go.min_straight_confirmed_fraction) +
+                 ", \"turn_rule_used\": " + (sample.turn_rule_used ? "true" : "false") +
+                 ", \"straight_segments\": " + std::to_string(sample.straight_segments) +
+                 ", \"linked_segments\": " + std::to_string(sample.linked_segments) +
+                 ", \"all_segments_used\": " + (sample.all_segments_used ? "true" : "false") +
+                 ", \"local_support\": " + std::to_string(go.local_support_fixes) +
+                 ", \"min_local_support\": " + json_number(go.min_local_support) +
+                 ", \"locally_checked\": " + std::to_string(sample.locally_checked) +
+                 ", \"locally_rejected\": " + std::to_string(sample.locally_rejected) +
+                 ", \"min_density\": " +
+                 json_number(go.min_relative_density) + ", \"min_lateral_density\": " +
+                 json_number(go.min_lateral_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
+                 ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
+                 ", \"directed\": " + (go.directed ? "true" : "false") +
+                 ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") +
+                 ", \"dropped_sparse\": " + std::to_string(sample.dropped) +
+                 ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"trip_links\": " +
+                 std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
+                 ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
+                 json_number(use_merged ? road.merged.length_before : unmerged_length) + ", \"length\": " +
+                 json_number(use_merged ? road.merged.length_after : unmerged_length);
     if (lonlat)
       input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
-                  ", \"origin_latitude\": " + json_number(projection.origin_latitude);
+                    ", \"origin_latitude\": " + json_number(projection.origin_latitude);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.done();
