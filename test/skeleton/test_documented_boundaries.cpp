@@ -35,24 +35,6 @@ Reeb_graph::Node node(Vertex_index v, double f, std::vector<Vertex_index> member
 }
 }  // namespace
 
-// "removes every branch and loop feature of persistence at most delta": persistence exactly delta (values chosen
-// so that the differences are exact in binary) is removed, for a branch and for a loop.
-TEST(DocumentedBoundaries, SimplificationRemovesFeaturesOfPersistenceExactlyDelta) {
-  // Loop 0-1-3-2 (bottom f 0, top f 4: persistence 4), spur 1-5 (f 1 -> 1.5: persistence 0.5), stem 3-4.
-  const auto g = make(6, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}, {1, 5}}, {}, {0, 1, 2, 4, 6, 1.5});
-  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
-  const Reeb_simplification_result S = simplify_by_persistence(A, 0.5);
-  EXPECT_EQ(S.removed_branches, 1u);
-  EXPECT_EQ(S.removed_loops, 0u);
-  EXPECT_EQ(S.graph.count(maximum), 1u);
-  EXPECT_EQ(S.graph.loops(), 1u);
-  const Reeb_simplification_result T = simplify_by_persistence(A, 4.0);
-  EXPECT_EQ(T.removed_loops, 1u);
-  EXPECT_EQ(T.graph.loops(), 0u);  // counted and also merged away
-  EXPECT_EQ(T.graph.nodes.size(), 2u);
-  EXPECT_EQ(T.graph.arcs.size(), 1u);
-}
-
 // "Input vertices keep their place (node, node members, or arc vertices)": a member on its node's level (as a
 // first simplification leaves where f ties) stays a member of that node, it does not become a node of its own.
 TEST(DocumentedBoundaries, SimplificationKeepsLevelMembersWithTheirNode) {

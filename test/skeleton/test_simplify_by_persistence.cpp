@@ -125,8 +125,10 @@ TEST(SimplifyByPersistence, GuaranteeOnLargerRandomGraphs) { check_guarantee_on_
 
 TEST(SimplifyByPersistence, RemovesSmallFeaturesOnly) {
   // A figure-eight-like graph with a short spur: delta between the spur and the loops removes the spur only.
-  // Loop 0-1-3-2 (bottom 0, top 3, height 4), spur 1-5 (f 1 -> 1.3, persistence 0.3 as a superlevel branch).
-  const auto g = make(6, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}, {1, 5}}, {}, {0, 1, 2, 4, 6, 1.3});
+  // Loop 0-1-3-2 (bottom 0, top 3, height 4), spur 1-5 (f 1 -> 1.5, persistence 0.5 as a superlevel branch).
+  // "Persistence at most delta": the spur's persistence is exactly the delta below, and so is the loop's at delta 4
+  // (values exact in binary).
+  const auto g = make(6, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}, {1, 5}}, {}, {0, 1, 2, 4, 6, 1.5});
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
   const Reeb_simplification_result S = simplify_by_persistence(A, 0.5);
   EXPECT_EQ(S.removed_branches, 1u);
@@ -134,6 +136,12 @@ TEST(SimplifyByPersistence, RemovesSmallFeaturesOnly) {
   EXPECT_EQ(S.graph.loops(), 1u);
   EXPECT_EQ(S.graph.count(maximum), 1u);
   expect_partition(S.graph, 6, "spur");
+  // The loop's persistence exactly delta: removed (counted, and merged away).
+  const Reeb_simplification_result L = simplify_by_persistence(A, 4.0);
+  EXPECT_EQ(L.removed_loops, 1u);
+  EXPECT_EQ(L.graph.loops(), 0u);
+  EXPECT_EQ(L.graph.nodes.size(), 2u);
+  EXPECT_EQ(L.graph.arcs.size(), 1u);
   // A large delta removes the loop too: a single arc.
   const Reeb_simplification_result T = simplify_by_persistence(A, 10.0);
   EXPECT_EQ(T.graph.loops(), 0u);
