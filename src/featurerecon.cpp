@@ -72,7 +72,8 @@ const std::vector<Command>& commands() {
        "                             [--level-width W]\n"
        "                             [--smoothing N] [--smoothing-method M] [--max-gap G] [--max-triangles N]\n"
        "                             --out-vertices V --out-edges E\n"
-       "                             [--lonlat] [--graphml F] [--geojson F] [--ply F] [--svg F] [--quiet]\n"
+       "                             [--lonlat] [--graphml F] [--geojson F] [--ply F] [--svg F [--picture-size P]]\n"
+       "                             [--quiet]\n"
        "\n"
        "Rips 2-complex at radius R, geodesic function, Reeb graph, removal of features of persistence <= D,\n"
        "optional repair of gaps up to DIST then a second simplification, removal of components of height <= H,\n"
@@ -161,7 +162,10 @@ const std::vector<Command>& commands() {
        "                   too large for the data; the pipeline needs about 40 bytes a triangle); default\n"
        "                   134217728 = 2^27; 0: only the Reeb graph's limit, 2^31 - 1 edges and triangles\n"
        "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), a picture\n"
-       "                   (--svg F.svg, or F.png, .jpg, .pgm, .ppm: the same drawing rasterised)\n",
+       "                   (--svg F.svg, or F.png, .jpg, .pgm, .ppm: the same drawing rasterised): the points grey,\n"
+       "                   arcs coloured, nodes black; the radius drawn at least 3 pixels long, the page 1000 to\n"
+       "                   4000 pixels on its longer side (1000 with --graph), finer marks where the radius is short\n"
+       "  --picture-size P  the picture's longer side in pixels instead, in [100, 16384]\n",
        run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"

@@ -238,7 +238,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                         "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune",
                         "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap",
                         "max-triangles",
-                        "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
+                        "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg", "picture-size"});
   const int inputs = int(args.has("points")) + int(args.has("image")) + int(args.has("tracks")) +
                      int(args.has("distance-matrix")) + int(args.has("graph"));
   if (inputs != 1)
@@ -268,6 +268,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
   Outputs outputs(args, {"out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   outputs.require_extension("ply", {"ply"}, "PLY polylines");
+  io::Skeleton_picture_options picture;
+  if (args.has("picture-size")) {
+    if (!args.has("svg")) throw Usage_error("--picture-size applies to the picture of --svg F");
+    const long long size = args.get_int("picture-size");
+    if (size < 100 || size > 16384)
+      throw Usage_error("--picture-size must be an integer number of pixels in [100, 16384], got " +
+                        args.get("picture-size"));
+    picture.long_side = static_cast<double>(size);
+  }
   Skeleton_options options;
   options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : image ? 2 * radius : radius;
   if (options.delta < 0) throw Usage_error("--delta must be >= 0");
@@ -564,7 +573,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     } else {
       for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
     }
-    io::write_skeleton_picture(outputs.path("svg"), xy, graph);
+    if (!args.has("graph")) picture.feature_size = radius;  // the radius used (derived from tracks)
+    io::write_skeleton_picture(outputs.path("svg"), xy, graph, picture);
   }
   outputs.commit();
   if (input_points == 0) {

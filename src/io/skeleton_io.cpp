@@ -51,6 +51,10 @@ class Picture_frame {
   }
   double X(double x) const { return margin + (x / 2 - x0 / 2) * scale; }
   double Y(double y) const { return margin + (y1 / 2 - y / 2) * scale; }
+  /// The longer side of the box (infinite beyond the largest double; 0 for one point or nothing added).
+  double long_side() const { return x0 <= x1 ? std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2) * 2 : 0.0; }
+  /// Pixels per data unit; valid after open() (`scale` is per half unit).
+  double pixels_per_unit() const { return scale / 2; }
 
  private:
   static constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -187,24 +191,39 @@ void write_skeleton_ply(const std::string& path, const Skeleton_graph& g) {
   write_text_file(path, os.str());
 }
 
+double skeleton_picture_long_side(double data_long_side, double feature_size) {
+  if (!(feature_size > 0 && std::isfinite(feature_size) && data_long_side > 0 && std::isfinite(data_long_side)))
+    return 1000.0;
+  return std::clamp(3 * (data_long_side / feature_size), 1000.0, 4000.0);  // NaN-free: both finite and positive
+}
+
 void write_skeleton_picture(const std::string& path, const std::vector<std::array<double, 2>>& points,
-                            const Skeleton_graph& g) {
+                            const Skeleton_graph& g, const Skeleton_picture_options& options) {
   Picture_frame frame;
   for (const auto& p : points) frame.extend(p[0], p[1]);
   for (auto v : boost::make_iterator_range(vertices(g))) frame.extend(g[v].position[0], g[v].position[1]);
   for (auto e : boost::make_iterator_range(edges(g)))
     for (const auto& p : g[e].polyline) frame.extend(p[0], p[1]);
-  Picture picture = frame.open(1000.0);
-  for (const auto& p : points) picture.disc(frame.X(p[0]), frame.Y(p[1]), 1, "#c0c0c0");
+  const double feature_size = options.feature_size;
+  const bool scaled = feature_size > 0 && std::isfinite(feature_size);
+  Picture picture = frame.open(options.long_side > 0 ? options.long_side
+                                                     : skeleton_picture_long_side(frame.long_side(), feature_size));
+  // Mark sizes in pixels: at most 1 (points), 2 (arc width) and 3 (nodes); finer where the feature size is drawn
+  // smaller than 10 pixels, so that points a feature size apart and the arcs between them stay apart.
+  const double feature_pixels = scaled ? feature_size * frame.pixels_per_unit() : 10.0;
+  const double point_radius = std::clamp(feature_pixels / 5, 0.3, 1.0);
+  const double arc_width = std::clamp(feature_pixels / 2, 0.5, 2.0);
+  const double node_radius = std::clamp(feature_pixels / 2, 0.75, 3.0);
+  for (const auto& p : points) picture.disc(frame.X(p[0]), frame.Y(p[1]), point_radius, "#c0c0c0");
   const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   std::size_t k = 0;
   for (auto e : boost::make_iterator_range(edges(g))) {
     std::vector<std::array<double, 2>> line;
     for (const auto& p : g[e].polyline) line.push_back({frame.X(p[0]), frame.Y(p[1])});
-    picture.polyline(line, 2, colours[k++ % 8]);
+    picture.polyline(line, arc_width, colours[k++ % 8]);
   }
   for (auto v : boost::make_iterator_range(vertices(g)))
-    picture.disc(frame.X(g[v].position[0]), frame.Y(g[v].position[1]), 3, "black");
+    picture.disc(frame.X(g[v].position[0]), frame.Y(g[v].position[1]), node_radius, "black");
   picture.write(path);
 }
 

@@ -246,7 +246,18 @@ file(WRITE ${WORK}/dot.pgm "P2\n4 3\n255\n255 255 0 255\n255 255 255 255\n255 25
 expect(skeleton_image_dot 0 "\"points\": 1,.*\"nodes\": 1, \"arcs\": 0," skeleton --image ${WORK}/dot.pgm --out-vertices ${WORK}/dot_v.txt --out-edges ${WORK}/dot_e.txt --quiet)
 expect_count(${WORK}/dot_v.txt "^0,2\\.5,2\\.5\n$" 1)
 # The 1,000 digits of the handwriting example: as many loops as the example's skeletons, one component per piece of ink.
-expect(skeleton_image_digits 0 "\"loops\": 399, \"components\": 1032," skeleton --image ${PROJECT_DATA}/images/digits_1000.pgm --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# Their picture resolves the radius: the 1994 pixels of ink across at radius 1.5 get 3988 pixels (3 per radius) plus
+# the margins, so ink pixels 2 apart are dots of radius 0.6 (a fifth of the radius) rather than the full 1, which
+# filled every stroke at the 1000 pixels used before. --picture-size sets the page, the marks follow (0.3, the least).
+expect(skeleton_image_digits 0 "\"loops\": 399, \"components\": 1032," skeleton --image ${PROJECT_DATA}/images/digits_1000.pgm --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b --svg ${WORK}/digits.svg --quiet)
+expect_count(${WORK}/digits.svg "viewBox=\"0 0 4008\\.00 414\\.00\"" 1)
+expect_count(${WORK}/digits.svg "r=\"0\\.6[0-9]*\" fill=\"#c0c0c0\"" 51788)
+expect_count(${WORK}/digits.svg "<polyline fill=\"none\" stroke-width=\"1\\.5[0-9]*\"" 2070)
+expect(skeleton_picture_size 0 "\"loops\": 399," skeleton --image ${PROJECT_DATA}/images/digits_1000.pgm --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b --svg ${WORK}/digits_small.svg --picture-size 1000 --quiet)
+expect_count(${WORK}/digits_small.svg "viewBox=\"0 0 1020\\.00 " 1)
+expect_count(${WORK}/digits_small.svg "r=\"0\\.3\" fill=\"#c0c0c0\"" 51788)
+expect(skeleton_picture_size_range 2 "--picture-size must be an integer number of pixels in \\[100, 16384\\], got 99" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --svg ${WORK}/x.svg --picture-size 99)
+expect(skeleton_picture_size_alone 2 "--picture-size applies to the picture of --svg F" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --picture-size 500)
 expect(skeleton_image_ink 2 "--ink must be dark or bright, got 'grey'" skeleton --image ${WORK}/ring.pgm --ink grey --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_threshold 2 "--ink-threshold must be an integer grey level in \\[1, 255\\], got '0'" skeleton --image ${WORK}/ring.pgm --ink-threshold 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_only 2 "--ink and --ink-threshold apply to --image only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b)

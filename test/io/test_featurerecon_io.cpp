@@ -5,17 +5,21 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "io/featurerecon_io.h"
 #include "io/scratch_file.h"
+#include "io/skeleton_io.h"
 
 using namespace FeatureRecon;
 
@@ -198,4 +202,38 @@ TEST(WriteTextFile, UsesATemporaryOfItsOwn) {
   } catch (const std::runtime_error& x) {
     EXPECT_NE(std::string(x.what()).find("No such file or directory"), std::string::npos) << x.what();
   }
+}
+
+TEST(SkeletonPicture, PageResolvesTheFeatureSize) {
+  // 3 pixels per feature size, the longer side within [1000, 4000]; without a usable length, 1000.
+  EXPECT_EQ(io::skeleton_picture_long_side(400, 1), 1200.0);
+  EXPECT_EQ(io::skeleton_picture_long_side(2000, 1.5), 4000.0);  // the ink of the digits: exactly the cap
+  EXPECT_EQ(io::skeleton_picture_long_side(2000, 1), 4000.0);
+  EXPECT_EQ(io::skeleton_picture_long_side(300, 1), 1000.0);
+  EXPECT_EQ(io::skeleton_picture_long_side(3923, 23.9), 1000.0);  // Chicago's traces: as before
+  for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
+    EXPECT_EQ(io::skeleton_picture_long_side(400, bad), 1000.0) << bad;
+    EXPECT_EQ(io::skeleton_picture_long_side(bad, 1), 1000.0) << bad;
+  }
+  // 100 points 1 apart on a line: at feature size 0.1 the page is 2970 pixels (+ 2 x 10 margin) and the points
+  // 30 pixels apart; the feature size is 3 pixels, so the dots have a fifth of it as radius; at feature size 1 the
+  // page is the least, 1000, and the dots the full radius 1.
+  std::vector<std::array<double, 2>> points;
+  for (int i = 0; i < 100; ++i) points.push_back({double(i), 0.0});
+  const skeleton::Skeleton_graph none;
+  auto svg = [&](double feature_size, double long_side) {
+    const std::string path = scratch_path("skeleton_picture.svg");
+    io::write_skeleton_picture(path, points, none, {feature_size, long_side});
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  std::string text = svg(0.1, 0);
+  EXPECT_NE(text.find("viewBox=\"0 0 2990.00 20.00\""), std::string::npos) << text.substr(0, 200);
+  EXPECT_NE(text.find("<circle cx=\"40.00\" cy=\"10.00\" r=\"0.6\" fill=\"#c0c0c0\"/>"), std::string::npos);
+  text = svg(1, 0);
+  EXPECT_NE(text.find("viewBox=\"0 0 1020.00 20.00\""), std::string::npos) << text.substr(0, 200);
+  EXPECT_NE(text.find(" r=\"1\" fill"), std::string::npos);
+  text = svg(0.5, 200);  // the page given: 200 pixels, the feature size 1 pixel, dots of the least radius 0.3
+  EXPECT_NE(text.find("viewBox=\"0 0 220.00 20.00\""), std::string::npos) << text.substr(0, 200);
+  EXPECT_NE(text.find(" r=\"0.3\" fill"), std::string::npos);
 }
