@@ -147,9 +147,9 @@ const std::vector<Command>& commands() {
        "                   neither judged nor counted. 0: off\n"
        "  --merge MD       last stage for tracks: parts of the map closer than MD metres become one line (the two\n"
        "                   directions of a two-way street; a divided road's carriageways lie further apart); 0: off\n"
-       "  --branch-merge BM  branch nodes (degree >= 3) joined by an arc at most BM long become one node: where\n"
-       "                   curves cross or touch, the Reeb graph draws two forks a little apart (default: 2 W; 0: off;\n"
-       "                   with --tracks default 0)\n"
+       "  --branch-merge BM  branch nodes (degree >= 3) joined by an arc at most BM long become one node, a cluster\n"
+       "                   at most BM across: where curves cross or touch, the Reeb graph draws two forks a little\n"
+       "                   apart (default: 2 W; 0: off; with --tracks default 0)\n"
        "  --level-width W  level-set slab width of the embedding (default: median edge length)\n"
        "  --smoothing N    smoothing rounds of each arc, ends fixed, at most 10^6 (default 10; 2 with --tracks)\n"
        "  --smoothing-method M  taubin (default: each round a step towards the neighbours' mean and one back,\n"
@@ -163,9 +163,10 @@ const std::vector<Command>& commands() {
        "                   134217728 = 2^27; 0: only the Reeb graph's limit, 2^31 - 1 edges and triangles\n"
        "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), a picture\n"
        "                   (--svg F.svg, or F.png, .jpg, .pgm, .ppm: the same drawing rasterised): the points grey,\n"
-       "                   arcs coloured, nodes black; the radius drawn at least 3 pixels long, the page 1000 to\n"
-       "                   4000 pixels on its longer side (1000 with --graph), finer marks where the radius is short\n"
-       "  --picture-size P  the picture's longer side in pixels instead, in [100, 16384]\n",
+       "                   arcs coloured, nodes black; the radius drawn at least 3 pixels long, the drawing 1000 to\n"
+       "                   4000 pixels on its longer side (1000 with --graph) inside a margin of 10 pixels, finer\n"
+       "                   marks where the radius is short\n"
+       "  --picture-size P  the drawing's longer side in pixels instead, in [100, 16384] (the margin adds 20)\n",
        run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"

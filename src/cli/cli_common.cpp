@@ -297,32 +297,34 @@ std::string json_number(double x) {
   return buf;
 }
 
-skeleton::Transverse_mercator lonlat_projection(
-    const std::vector<std::pair<std::string, const std::vector<std::array<double, 2>>*>>& sources) {
+skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>& sources) {
   std::vector<std::array<double, 2>> all;
-  for (const auto& [file, points] : sources)
-    for (std::size_t i = 0; i < points->size(); ++i) {
-      const double lon = (*points)[i][0], lat = (*points)[i][1];
+  for (const Lonlat_source& source : sources)
+    for (std::size_t i = 0; i < source.points->size(); ++i) {
+      const double lon = (*source.points)[i][0], lat = (*source.points)[i][1];
       if (!(lon >= -180 && lon <= 180 && lat >= -90 && lat <= 90))
-        throw io::Input_error(file + ": --lonlat: point " + std::to_string(i) + " (" + io::format_double(lon) + ", " +
-                              io::format_double(lat) + ") is not a longitude in [-180, 180] and a latitude in [-90, 90]");
-      all.push_back((*points)[i]);
+        throw io::Input_error(source.file + ":" + std::to_string((*source.lines)[i]) + ": --lonlat: (" +
+                              io::format_double(lon) + ", " + io::format_double(lat) +
+                              ") is not a longitude in [-180, 180] and a latitude in [-90, 90]");
+      all.push_back((*source.points)[i]);
     }
   try {
     return skeleton::local_transverse_mercator(all);
   } catch (const std::invalid_argument& e) {
     const std::string what = std::string(e.what()).substr(std::string("local_transverse_mercator: ").size());
-    // The projection numbers the points of all the files together: name the file and the point within it.
+    // The projection numbers the points of all the files together ("point N (longitude ..."): name the file and
+    // the line instead.
     std::size_t index = 0;
     if (std::sscanf(what.c_str(), "point %zu ", &index) == 1)
-      for (const auto& [file, points] : sources) {
-        if (index < points->size())
-          throw io::Input_error(file + ": --lonlat: point " + std::to_string(index) + what.substr(what.find(' ', 6)));
-        index -= points->size();
+      for (const Lonlat_source& source : sources) {
+        if (index < source.points->size())
+          throw io::Input_error(source.file + ":" + std::to_string((*source.lines)[index]) + ": --lonlat: " +
+                                what.substr(what.find(' ', 6) + 1));
+        index -= source.points->size();
       }
     std::string files;  // the files given (an option not given has no name)
-    for (const auto& source : sources)
-      if (!source.first.empty()) files += (files.empty() ? "" : ", ") + source.first;
+    for (const Lonlat_source& source : sources)
+      if (!source.file.empty()) files += (files.empty() ? "" : ", ") + source.file;
     throw io::Input_error(files + ": --lonlat: " + what);
   }
 }

@@ -98,11 +98,18 @@ class Outputs {
   std::vector<std::pair<std::string, std::string>> m_staged;    // (target, temporary)
 };
 
-/// --lonlat: the points of each source (a file name and its points, {longitude, latitude} in degrees) are
-/// checked (Input_error naming the file, the point and its values) and the transverse Mercator centred on all of
-/// them is returned (Input_error when they span too much for one projection). The caller projects them.
-skeleton::Transverse_mercator lonlat_projection(
-    const std::vector<std::pair<std::string, const std::vector<std::array<double, 2>>*>>& sources);
+/// A file of --lonlat positions: its name ("" for an option not given), its points ({longitude, latitude} in
+/// degrees) and the line of each point in it.
+struct Lonlat_source {
+  std::string file;
+  const std::vector<std::array<double, 2>>* points;
+  const std::vector<std::size_t>* lines;
+};
+
+/// --lonlat: the points of each source are checked (Input_error naming the file, the line and the values) and
+/// the transverse Mercator centred on all of them is returned (Input_error naming the file and line of a point too
+/// far from its central meridian: they span too much for one projection). The caller projects them.
+skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>& sources);
 
 /// --lonlat: every fix (a type with x and y, as skeleton::Gps_fix) of the trips from degrees to metres.
 template <class Trips>

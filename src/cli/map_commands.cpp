@@ -18,6 +18,8 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "../io/featurerecon_io.h"
 #include "../io/skeleton_io.h"
@@ -100,8 +102,10 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   Outputs outputs(args, {"samples-out", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   const auto& p = args.positional();
-  auto read = [&](const std::string& vertices, const std::string& edges) {
-    const io::Map_file m = io::read_map(vertices, edges);
+  std::vector<std::size_t> gt_lines, rec_lines, crop_lines, track_lines;  // of each position, for --lonlat
+  auto read = [&](const std::string& vertices, const std::string& edges, std::vector<std::size_t>& lines) {
+    io::Map_file m = io::read_map(vertices, edges);
+    lines = std::move(m.vertex_lines);
     if (m.self_loops > 0)
       std::fprintf(stderr,
                    "featurerecon evaluate-map: warning: %s line %zu: an edge joins a vertex to itself; %zu such "
@@ -110,20 +114,25 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
                    m.self_loops == 1 ? "is" : "are");
     return to_graph(m);
   };
-  Embedded_graph_2 gt = read(p[0], p[1]);
-  Embedded_graph_2 rec = read(p[2], p[3]);
+  Embedded_graph_2 gt = read(p[0], p[1], gt_lines);
+  Embedded_graph_2 rec = read(p[2], p[3], rec_lines);
   std::size_t gt_edges_before = gt.edges.size();
   std::vector<std::array<double, 2>> crop_points, track_points;
-  if (args.has("crop-to-tracks")) crop_points = io::read_track_points(args.get("crop-to-tracks"));
+  if (args.has("crop-to-tracks")) crop_points = io::read_track_points(args.get("crop-to-tracks"), &crop_lines);
   std::vector<Gps_trip> trips;
-  if (args.has("tracks"))
-    for (const auto& trip : io::read_track_trips(args.get("tracks"))) {
+  if (args.has("tracks")) {
+    io::Track_origin origin;
+    const auto read_trips = io::read_track_trips(args.get("tracks"), &origin);
+    for (std::size_t t = 0; t < read_trips.size(); ++t) {
       trips.emplace_back();
-      for (const auto& f : trip) {
+      for (std::size_t i = 0; i < read_trips[t].size(); ++i) {
+        const auto& f = read_trips[t][i];
         trips.back().push_back({f[0], f[1], f[2]});
         track_points.push_back({f[0], f[1]});
+        track_lines.push_back(origin.lines[t][i]);
       }
     }
+  }
   // --lonlat: every file in degrees; all projected to metres with one projection centred on them.
   const bool lonlat = args.has("lonlat");
   if (!lonlat)  // degrees read as metres: the whole map shrinks to a few samples and everything matches
@@ -144,9 +153,10 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     }
   Transverse_mercator projection;
   if (lonlat) {
-    projection = lonlat_projection({{p[0], &gt.positions}, {p[2], &rec.positions},
-                                    {args.get_or("crop-to-tracks", ""), &crop_points},
-                                    {args.get_or("tracks", ""), &track_points}});
+    projection = lonlat_projection({{p[0], &gt.positions, &gt_lines},
+                                    {p[2], &rec.positions, &rec_lines},
+                                    {args.get_or("crop-to-tracks", ""), &crop_points, &crop_lines},
+                                    {args.get_or("tracks", ""), &track_points, &track_lines}});
     for (auto* points : {&gt.positions, &rec.positions, &crop_points})
       for (auto& q : *points) q = projection.forward(q[0], q[1]);
     project_trips(trips, projection);

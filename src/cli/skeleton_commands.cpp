@@ -264,6 +264,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
   // fixes gives the radius, the radius the rest).
   const bool gps = args.has("tracks");
   double radius = args.has("radius") ? args.get_positive_double("radius") : image ? 1.5 : 0.0;
+  // Lengths derived from R and W go up to 5R (the prune height of tracks) and 2W (branch merging, the gap).
+  if (radius > 1e300)
+    throw Usage_error("--radius must be at most 1e300 (lengths derived from it, up to 5R, must stay finite), got '" +
+                      args.get("radius") + "'");
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
   Outputs outputs(args, {"out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
@@ -284,7 +288,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
   if (args.has("tracks")) options.embedding = road_map_embedding_options();  // road maps keep their corners
   options.embedding.level_width = args.has("level-width") ? args.get_double("level-width") : 0.0;
-  if (!(options.embedding.level_width >= 0)) throw Usage_error("--level-width must be >= 0");
+  if (!(options.embedding.level_width >= 0 && options.embedding.level_width <= 1e300))
+    throw Usage_error("--level-width must be >= 0 and at most 1e300 (2W must stay finite), got '" +
+                      args.get("level-width") + "'");
   options.embedding.max_gap = args.has("max-gap") ? args.get_double("max-gap") : 0.0;
   if (std::isnan(options.embedding.max_gap)) throw Usage_error("--max-gap must be a number (0: automatic, < 0: off)");
   if (args.has("smoothing")) {
@@ -460,9 +466,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
     }
     if (lonlat) {  // x, y are longitude and latitude: to metres, centred on the traces
       std::vector<std::array<double, 2>> degrees;
-      for (const Gps_trip& trip : trips)
-        for (const Gps_fix& f : trip) degrees.push_back({f.x, f.y});
-      projection = lonlat_projection({{args.get("tracks"), &degrees}});
+      std::vector<std::size_t> lines;
+      for (std::size_t t = 0; t < trips.size(); ++t)
+        for (std::size_t i = 0; i < trips[t].size(); ++i) {
+          degrees.push_back({trips[t][i].x, trips[t][i].y});
+          lines.push_back(origin.lines[t][i]);
+        }
+      projection = lonlat_projection({{args.get("tracks"), &degrees, &lines}});
       project_trips(trips, projection);
     }
     Road_map_options ro;

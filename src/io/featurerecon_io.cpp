@@ -224,6 +224,7 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
     if (index.count(id)) throw Input_error(where(vertices_path, number) + "vertex id " + t[0] + " repeated");
     index[id] = static_cast<std::uint32_t>(m.positions.size());
     m.positions.push_back({parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
+    m.vertex_lines.push_back(number);
   });
   for_each_csv_row(edges_path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3 || t.size() > 4)
@@ -243,12 +244,13 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
   return m;
 }
 
-std::vector<std::array<double, 2>> read_track_points(const std::string& path) {
+std::vector<std::array<double, 2>> read_track_points(const std::string& path, std::vector<std::size_t>* lines) {
   std::vector<std::array<double, 2>> p;
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3 || t.size() > 4)
       throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) + " values");
     p.push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y")});
+    if (lines != nullptr) lines->push_back(number);
   });
   return p;
 }

@@ -58,11 +58,14 @@ struct Map_file {
   std::vector<std::array<std::uint32_t, 2>> edges;
   std::size_t self_loops = 0;            ///< edges from a vertex to itself (kept in `edges`; they have no length)
   std::size_t first_self_loop_line = 0;  ///< line of the first of them in the edge file (0: none)
+  std::vector<std::size_t> vertex_lines;  ///< the line of each vertex in the vertex file
 };
 Map_file read_map(const std::string& vertices_path, const std::string& edges_path);
 
-/// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y).
-std::vector<std::array<double, 2>> read_track_points(const std::string& path);
+/// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y), and with
+/// `lines` the line of each.
+std::vector<std::array<double, 2>> read_track_points(const std::string& path,
+                                                     std::vector<std::size_t>* lines = nullptr);
 
 /// Where the trips of read_track_trips() come from: each trip's id, and the line of each of its fixes.
 struct Track_origin {

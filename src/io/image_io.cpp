@@ -240,10 +240,15 @@ Image read_pnm(const std::string& path) {
   if (!sized && n > (1ull << 30))
     fail(path, "a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " + magic +
                    " image read from a pipe is beyond 2^30 values");
-  if (sized && (n > file_size || (!binary && 2 * n - 1 > file_size)))
+  // What follows the header (the whitespace that ends the maximum value is read with it).
+  const std::streamoff at = in.tellg();
+  const unsigned long long left = at >= 0 && static_cast<unsigned long long>(at) <= file_size
+                                      ? file_size - static_cast<unsigned long long>(at)
+                                      : file_size;
+  if (sized && (n > left || (!binary && 2 * n - 1 > left)))
     fail(path, "truncated pixel data: a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " +
-                   magic + " image needs " + std::to_string(binary ? n : 2 * n - 1) + " bytes or more, the file has " +
-                   std::to_string(file_size));
+                   magic + " image needs " + std::to_string(binary ? n : 2 * n - 1) +
+                   " bytes of pixel data or more, the file has " + std::to_string(left) + " after its header");
   out.data.resize(static_cast<std::size_t>(n));
   if (binary) {
     if (!in.read(reinterpret_cast<char*>(out.data.data()), std::streamsize(n)))

@@ -42,15 +42,20 @@ class Picture_frame {
   }
   /// The page (white), `size` pixels on the longer side of the box plus a margin; call after the last extend().
   /// Differences are taken of halves (x / 2 - x0 / 2): a box from -1e308 to 1e308 is wider than the largest double.
+  /// A box of one position (or of a span below the denormals) gets a square page with that position in its centre.
   Picture open(double size) {
     if (!(x0 <= x1)) x0 = y0 = 0, x1 = y1 = 1;
     double half = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
-    if (!(half > 0) || !std::isfinite(size / half)) half = 1;  // one point, or a span below the denormals
+    if (!(half > 0) || !std::isfinite(size / half)) {
+      scale = 0;  // every position drawn at the centre
+      centre = size / 2;
+      return Picture(2 * margin + size, 2 * margin + size);
+    }
     scale = size / half;
     return Picture(2 * margin + (x1 / 2 - x0 / 2) * scale, 2 * margin + (y1 / 2 - y0 / 2) * scale);
   }
-  double X(double x) const { return margin + (x / 2 - x0 / 2) * scale; }
-  double Y(double y) const { return margin + (y1 / 2 - y / 2) * scale; }
+  double X(double x) const { return margin + centre + (x / 2 - x0 / 2) * scale; }
+  double Y(double y) const { return margin + centre + (y1 / 2 - y / 2) * scale; }
   /// The longer side of the box (infinite beyond the largest double; 0 for one point or nothing added).
   double long_side() const { return x0 <= x1 ? std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2) * 2 : 0.0; }
   /// Pixels per data unit; valid after open() (`scale` is per half unit).
@@ -58,7 +63,7 @@ class Picture_frame {
 
  private:
   static constexpr double infinity = std::numeric_limits<double>::infinity();
-  double x0 = infinity, y0 = infinity, x1 = -infinity, y1 = -infinity, scale = 1, margin = 10;
+  double x0 = infinity, y0 = infinity, x1 = -infinity, y1 = -infinity, scale = 1, margin = 10, centre = 0;
 };
 }  // namespace
 
@@ -210,7 +215,7 @@ void write_skeleton_picture(const std::string& path, const std::vector<std::arra
                                                      : skeleton_picture_long_side(frame.long_side(), feature_size));
   // Mark sizes in pixels: at most 1 (points), 2 (arc width) and 3 (nodes); finer where the feature size is drawn
   // smaller than 10 pixels, so that points a feature size apart and the arcs between them stay apart.
-  const double feature_pixels = scaled ? feature_size * frame.pixels_per_unit() : 10.0;
+  const double feature_pixels = scaled && frame.pixels_per_unit() > 0 ? feature_size * frame.pixels_per_unit() : 10.0;
   const double point_radius = std::clamp(feature_pixels / 5, 0.3, 1.0);
   const double arc_width = std::clamp(feature_pixels / 2, 0.5, 2.0);
   const double node_radius = std::clamp(feature_pixels / 2, 0.75, 3.0);

@@ -258,6 +258,11 @@ expect_count(${WORK}/digits_small.svg "viewBox=\"0 0 1020\\.00 " 1)
 expect_count(${WORK}/digits_small.svg "r=\"0\\.3\" fill=\"#c0c0c0\"" 51788)
 expect(skeleton_picture_size_range 2 "--picture-size must be an integer number of pixels in \\[100, 16384\\], got 99" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --svg ${WORK}/x.svg --picture-size 99)
 expect(skeleton_picture_size_alone 2 "--picture-size applies to the picture of --svg F" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --picture-size 500)
+# Lengths derived from the radius (up to 5R) and the level width (2W) must stay finite: 1e308 made delta, repair and
+# prune infinite (a library error naming internal fields, exit 1; with tracks at 5e307 an empty map and "prune": null).
+expect(skeleton_radius_huge 2 "--radius must be at most 1e300 \\(lengths derived from it, up to 5R, must stay finite\\), got '5e307'" skeleton --tracks ${DATA}/block_tracks.txt --radius 5e307 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_level_width_huge 2 "--level-width must be >= 0 and at most 1e300 \\(2W must stay finite\\), got '1e308'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.3 --level-width 1e308 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_level_width_negative 2 "--level-width must be >= 0" skeleton --points ${DATA}/figure_eight.xyz --radius 0.3 --level-width -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_ink 2 "--ink must be dark or bright, got 'grey'" skeleton --image ${WORK}/ring.pgm --ink grey --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_threshold 2 "--ink-threshold must be an integer grey level in \\[1, 255\\], got '0'" skeleton --image ${WORK}/ring.pgm --ink-threshold 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_only 2 "--ink and --ink-threshold apply to --image only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b)
@@ -934,15 +939,23 @@ expect(lonlat_missing 1 "chicago_lonlat_tracks.txt: the fixes look like longitud
 expect(lonlat_missing_evaluate 1 "chicago_gt_trk25_vertices_lonlat.txt: the vertices look like longitude and latitude in degrees .*give --lonlat" evaluate-map ${M}_gt_trk25_vertices_lonlat.txt ${M}_gt_trk25_edges.txt ${WORK}/ll_v.txt ${WORK}/ll_e.txt)
 expect(lonlat_points 2 "--lonlat applies to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 file(WRITE ${WORK}/ll_bad.txt "0 -87.6 41.8 0\n0 -87.6 95 10\n")
-expect(lonlat_range 1 "ll_bad.txt: --lonlat: point 1 \\(-87\\.6, 95\\) is not a longitude in \\[-180, 180\\] and a latitude in \\[-90, 90\\]" skeleton --tracks ${WORK}/ll_bad.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(lonlat_range 1 "ll_bad.txt:2: --lonlat: \\(-87\\.6, 95\\) is not a longitude in \\[-180, 180\\] and a latitude in \\[-90, 90\\]" skeleton --tracks ${WORK}/ll_bad.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# The line, not the index of the fix in its trip's group (trips interleave, comments count as lines): line 4.
+file(WRITE ${WORK}/ll_bad2.txt "# trips a and b\na 0 0 0\nb 0.0001 0 0\na 200 0 1\nb 0.0002 0 1\n")
+expect(lonlat_range_line 1 "ll_bad2.txt:4: --lonlat: \\(200, 0\\) is not a longitude" skeleton --tracks ${WORK}/ll_bad2.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 file(WRITE ${WORK}/ll_wide.txt "0 -87.6 41.8 0\n0 -87.6 41.9 10\n1 -60 41.8 0\n1 -60 41.9 10\n")
-expect(lonlat_span 1 "ll_wide.txt: --lonlat: point 0 \\(longitude -87\\.6, latitude 41\\.8\\) lies 1[0-9.]+ km from the central meridian .* the points span too much for one projection" skeleton --tracks ${WORK}/ll_wide.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
-# evaluate-map projects all its files together: the message names the file and the point within it (it listed
-# every file, empty slots for options not given, and counted the points across them).
+expect(lonlat_span 1 "ll_wide.txt:1: --lonlat: \\(longitude -87\\.6, latitude 41\\.8\\) lies 1[0-9.]+ km from the central meridian .* the points span too much for one projection" skeleton --tracks ${WORK}/ll_wide.txt --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# evaluate-map projects all its files together: the message names the file and the line (it listed every file,
+# empty slots for options not given, and counted the points across them; then it named the point's index).
 file(WRITE ${WORK}/ll_gv.txt "1,0,0\n2,0.0001,0\n")
 file(WRITE ${WORK}/ll_ge.txt "1,1,2\n")
 file(WRITE ${WORK}/ll_far.txt "0 10 0 0\n0 10.0001 0 3\n")
-expect(lonlat_span_file 1 "error: [^,]*ll_far.txt: --lonlat: point 0 \\(longitude 10, latitude 0\\) lies 7[0-9.]+ km from" evaluate-map ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt --lonlat --crop-to-tracks ${WORK}/ll_far.txt)
+expect(lonlat_span_file 1 "error: [^,]*ll_far.txt:1: --lonlat: \\(longitude 10, latitude 0\\) lies 7[0-9.]+ km from" evaluate-map ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt --lonlat --crop-to-tracks ${WORK}/ll_far.txt)
+file(WRITE ${WORK}/ll_bad_v.txt "# id,x,y\n\n1,-87.6,41.8\n2,-87.5999,41.8\n3,500,41.8\n")
+file(WRITE ${WORK}/ll_bad_e.txt "1,1,2\n2,2,3\n")
+expect(lonlat_range_map 1 "ll_bad_v.txt:5: --lonlat: \\(500, 41\\.8\\) is not a longitude" evaluate-map ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt ${WORK}/ll_bad_v.txt ${WORK}/ll_bad_e.txt --lonlat)
+file(WRITE ${WORK}/ll_far_tracks.txt "# far\n0 10 0 0\n0 10.0001 0 3\n")
+expect(lonlat_span_tracks 1 "ll_far_tracks.txt:2: --lonlat: \\(longitude 10, latitude 0\\) lies 7[0-9.]+ km from" evaluate-map ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt ${WORK}/ll_gv.txt ${WORK}/ll_ge.txt --lonlat --tracks ${WORK}/ll_far_tracks.txt)
 # Around a pole (1.1 m from it, longitudes 0 and 180): one projection holds them, 2.2 m apart (they were "inf km"
 # from the central meridian).
 file(WRITE ${WORK}/ll_pole_v.txt "1,0,89.99999\n2,180,89.99999\n")

@@ -236,4 +236,11 @@ TEST(SkeletonPicture, PageResolvesTheFeatureSize) {
   text = svg(0.5, 200);  // the page given: 200 pixels, the feature size 1 pixel, dots of the least radius 0.3
   EXPECT_NE(text.find("viewBox=\"0 0 220.00 20.00\""), std::string::npos) << text.substr(0, 200);
   EXPECT_NE(text.find(" r=\"0.3\" fill"), std::string::npos);
+  // One position (or two closer than the doubles resolve): a square page, the position in its centre, full marks.
+  for (const double apart : {0.0, 1e-320}) {
+    points = {{3.0, 4.0}, {3.0 + apart, 4.0}};
+    text = svg(1, 500);
+    EXPECT_NE(text.find("viewBox=\"0 0 520.00 520.00\""), std::string::npos) << apart << text.substr(0, 200);
+    EXPECT_NE(text.find("<circle cx=\"260.00\" cy=\"260.00\" r=\"1\""), std::string::npos) << apart;
+  }
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include "io/featurerecon_io.h"
 #include "io/image_io.h"
@@ -81,7 +82,17 @@ TEST(ImageIo, ErrorsNameTheFile) {
   EXPECT_THROW(io::read_image(scratch("missing.pgm")), io::Input_error);
   const std::string truncated = scratch("t.pgm");
   std::ofstream(truncated) << "P5\n4 4\n255\nab";
-  EXPECT_THROW(io::read_image(truncated), io::Input_error);
+  try {  // the bytes after the header count, not the file's 13
+    io::read_image(truncated);
+    ADD_FAILURE() << "a truncated PGM was read";
+  } catch (const io::Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("needs 16 bytes of pixel data or more, the file has 2 after its header"),
+              std::string::npos)
+        << e.what();
+  }
+  const std::string exact = scratch("exact.pgm");  // exactly the bytes needed: read
+  std::ofstream(exact) << "P5\n2 2\n255\nabcd";
+  EXPECT_EQ(io::read_image(exact).data, (std::vector<std::uint8_t>{'a', 'b', 'c', 'd'}));
 }
 
 // A header claiming more pixels than its file can hold is refused before anything is allocated (a 69-byte PNG

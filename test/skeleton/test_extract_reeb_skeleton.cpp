@@ -260,7 +260,8 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
 }
 
 TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
-  // Three forks in a row, 0.1 apart: one node of degree 5 after two rounds.
+  // Three forks in a row, 0.1 apart: at distance 0.2 one node of degree 5 after two rounds; at 0.15 the first two
+  // only (the third would lie 0.2 from the first: a cluster stays within the distance).
   Point_matrix p;
   p.dimension = 2;
   p.data = {-1, -1, 1, -1, 0, 0, 0, 0.1, 0, 0.2, -1, 1, 1, 1, 2, 1};
@@ -277,13 +278,20 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
   };
   for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 3}, {3, 5}, {3, 4}, {4, 6}, {4, 7}})
     arc(g, a, b);
-  const Branch_node_merge_result r = merge_close_branch_nodes(g, p, 0.15);
+  const Branch_node_merge_result r = merge_close_branch_nodes(g, p, 0.2);
   EXPECT_EQ(r.merged, 2u);
   ASSERT_EQ(num_vertices(r.graph), 6u);
   EXPECT_EQ(degree(2, r.graph), 5u);
   EXPECT_EQ(r.graph[2].members, (std::vector<Vertex_index>{2, 3, 4}));
   EXPECT_NEAR(r.graph[2].position[1], 0.1, 1e-15);
   expect_members_partition(r.graph, 8);
+  const Branch_node_merge_result pair = merge_close_branch_nodes(g, p, 0.15);
+  EXPECT_EQ(pair.merged, 1u);
+  ASSERT_EQ(num_vertices(pair.graph), 7u);
+  EXPECT_EQ(pair.graph[2].members, (std::vector<Vertex_index>{2, 3}));
+  EXPECT_EQ(degree(2, pair.graph), 4u);
+  EXPECT_EQ(pair.graph[3].members, std::vector<Vertex_index>{4});
+  expect_members_partition(pair.graph, 8);
   // An up-fork below a down-fork: a's arc up to b is short; the leaf d (value 1.05) joins b from below. Merged
   // at a's value 1, the arc from d now runs up from the merged node to d, which becomes a maximum.
   Point_matrix q;
@@ -311,6 +319,36 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
     EXPECT_EQ(s.graph[e].polyline.front(), s.graph[source(e, s.graph)].position);
     EXPECT_EQ(s.graph[e].polyline.back(), s.graph[target(e, s.graph)].position);
   }
+}
+
+TEST(MergeCloseBranchNodes, ALatticeIsNotChainedIntoALine) {
+  // A 10 x 10 grid at radius 1.01 (no triangle: 81 cells, each a loop): nearly every node is a fork and every arc
+  // about one level width (1), the default merge distance 2. Merging in rounds chained the forks into 15 nodes on
+  // a line with fans of coincident arcs; each cluster now stays at most 2 across, so a node's points lie near it
+  // and the nodes still span the grid.
+  std::vector<std::array<double, 2>> grid;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) grid.push_back({double(i), double(j)});
+  Skeleton_options o;
+  o.delta = 1.01;
+  const Reeb_skeleton s = extract_reeb_skeleton(grid, 1.01, o);
+  ASSERT_EQ(s.status, Status::success);
+  EXPECT_EQ(s.branch_merge_distance, 2.0);
+  EXPECT_GT(s.merged_branch_arcs, 0u);
+  EXPECT_EQ(loops_of(s.graph), 81u);
+  expect_members_partition(s.graph, grid.size());
+  EXPECT_GE(num_vertices(s.graph), 20u);  // at most 5 grid nodes (a plus sign) lie within 2 of each other
+  double x0 = 9, x1 = 0, y0 = 9, y1 = 0, farthest = 0;
+  for (auto v : boost::make_iterator_range(vertices(s.graph))) {
+    const auto& n = s.graph[v];
+    x0 = std::min(x0, n.position[0]), x1 = std::max(x1, n.position[0]);
+    y0 = std::min(y0, n.position[1]), y1 = std::max(y1, n.position[1]);
+    for (const Vertex_index p : n.members)
+      farthest = std::max(farthest, std::hypot(grid[p][0] - n.position[0], grid[p][1] - n.position[1]));
+  }
+  EXPECT_LE(farthest, 2.0);
+  EXPECT_GE(x1 - x0, 8.0);
+  EXPECT_GE(y1 - y0, 8.0);
 }
 
 TEST(ExtractReebSkeleton, RepairJoinsAGap) {

@@ -201,6 +201,24 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
     while (group[x] != x) x = group[x] = group[group[x]];
     return x;
   };
+  // The nodes of each group (by its root), and whether two groups stay within `distance` of each other once merged:
+  // every node of one within `distance` of every node of the other (input space above 3D). Without this bound the
+  // rounds chained the forks of a lattice (every cell a loop, every arc about the level width) into one line.
+  std::vector<std::vector<std::size_t>> group_nodes(n);
+  for (std::size_t v = 0; v < n; ++v) group_nodes[v] = {v};
+  auto node_point = [&](std::size_t v) -> std::pair<const double*, std::size_t> {
+    if (high && g[v].input_position.size() == input.dimension) return {g[v].input_position.data(), input.dimension};
+    return {g[v].position.data(), 3};
+  };
+  auto close_groups = [&](std::size_t a, std::size_t b) {
+    for (const std::size_t u : group_nodes[a])
+      for (const std::size_t w : group_nodes[b]) {
+        const auto [pu, du] = node_point(u);
+        const auto [pw, dw] = node_point(w);
+        if (du != dw || !(point_distance(pu, pw, du) <= distance)) return false;
+      }
+    return true;
+  };
   std::vector<char> contracted(m, 0);
   Branch_node_merge_result result;
   for (bool changed = !candidates.empty(); changed;) {
@@ -219,11 +237,15 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
       if (contracted[k]) continue;
       const std::size_t a = find(lower[k]), b = find(upper[k]);
       if (a == b || taken[a] || taken[b] || degree[a] < 3 || degree[b] < 3 ||
-          joining[{std::min(a, b), std::max(a, b)}] != 1)
+          joining[{std::min(a, b), std::max(a, b)}] != 1 || !close_groups(a, b))
         continue;
       taken[a] = taken[b] = 1;
       contracted[k] = 1;
       group[std::max(a, b)] = std::min(a, b);
+      auto& into = group_nodes[std::min(a, b)];
+      auto& from = group_nodes[std::max(a, b)];
+      into.insert(into.end(), from.begin(), from.end());
+      from.clear();
       ++result.merged;
       changed = true;
     }
@@ -317,22 +339,23 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
 }
 }  // namespace internal
 
-/// Merges branch nodes that lie close together: contracts every arc that joins two nodes of degree >= 3 and is at
-/// most `distance` long in input space (its input_polyline above 3D, else its polyline) into one node, unless
-/// another arc joins the same two nodes (a short loop is kept). Where two curves cross or touch (a figure-eight,
-/// a road crossing) the level sets merge and split at slightly different values, so the Reeb graph draws one
-/// point of degree 4 as two forks joined by a short arc; this draws it as one node. Contractions go in rounds
-/// until no such arc is left, each round a greedy matching of the candidate arcs, shortest first (ties by arc
-/// index), so a cluster of forks joined by short arcs becomes one node. A merged node takes the value of its lowest node (ties: the smaller index), whose members come
-/// first, then the other nodes' and the contracted arcs' members (the members still partition the points); it
-/// sits at the centroid of its points (above 3D its input_position is the centroid in `coordinates`, its
-/// position the centroid's projection, project_to_3d(); without points, at the mean of the merged nodes). The
-/// arcs' polylines end at the new positions; an arc whose lower end moved above its upper end is reversed (its
-/// polylines; its members stay in increasing function value), and the types of the merged nodes and of the ends
-/// of reversed arcs follow from the arcs below and above them. Nodes and arcs that take no part
-/// are copied unchanged; the new nodes are ordered by the smallest original node of each.
-/// \pre distance >= 0 and finite; the members index `coordinates`; above 3D input positions and polylines have
-/// its dimension (all checked; throws naming the node or arc).
+/// Merges branch nodes that lie close together: contracts every arc that joins two nodes of degree >= 3 and is at most
+/// `distance` long in input space (its input_polyline above 3D, else its polyline) into one node, unless another arc
+/// joins the same two nodes (a short loop is kept). Where two curves cross or touch (a figure-eight, a road crossing)
+/// the level sets merge and split at slightly different values, so the Reeb graph draws one point of degree 4 as two
+/// forks joined by a short arc; this draws it as one node. Contractions go in rounds until no such arc is left, each
+/// round a greedy matching of the candidate arcs, shortest first (ties by arc index), so a cluster of forks joined by
+/// short arcs becomes one node, as long as its nodes stay within `distance` of each other (node positions, input space
+/// above 3D): the forks of a lattice whose cells are about `distance` wide are not chained into one line. A merged node
+/// takes the value of its lowest node (ties: the smaller index), whose members come first, then the other nodes' and
+/// the contracted arcs' members (the members still partition the points); it sits at the centroid of its points (above
+/// 3D its input_position is the centroid in `coordinates`, its position the centroid's projection, project_to_3d();
+/// without points, at the mean of the merged nodes). The arcs' polylines end at the new positions; an arc whose lower
+/// end moved above its upper end is reversed (its polylines; its members stay in increasing function value), and the
+/// types of the merged nodes and of the ends of reversed arcs follow from the arcs below and above them. Nodes and arcs
+/// that take no part are copied unchanged; the new nodes are ordered by the smallest original node of each.
+/// \pre distance >= 0 and finite; the members index `coordinates`; above 3D input positions and polylines have its
+/// dimension (all checked; throws naming the node or arc).
 inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g, const Point_matrix& coordinates,
                                                          double distance) {
   internal::check_point_matrix(coordinates, "merge_close_branch_nodes", "coordinates");
