@@ -163,10 +163,11 @@ const std::vector<Command>& commands() {
        "                   134217728 = 2^27; 0: only the Reeb graph's limit, 2^31 - 1 edges and triangles\n"
        "  --graphml, --geojson, --ply, --svg   also write GraphML, GeoJSON (2D), PLY polylines (3D), a picture\n"
        "                   (--svg F.svg, or F.png, .jpg, .pgm, .ppm: the same drawing rasterised): the points grey,\n"
-       "                   arcs coloured, nodes black; the radius drawn at least 3 pixels long, the drawing 1000 to\n"
-       "                   4000 pixels on its longer side (1000 with --graph) inside a margin of 10 pixels, finer\n"
-       "                   marks where the radius is short\n"
-       "  --picture-size P  the drawing's longer side in pixels instead, in [100, 16384] (the margin adds 20)\n",
+       "                   arcs coloured, nodes black; 3 pixels per radius (with --graph, per level width W), the\n"
+       "                   drawing's longer side kept within 1000 to 4000 pixels, inside a margin of 10 pixels. Dots\n"
+       "                   are a fifth of the radius drawn (at most 1 pixel), arcs and nodes half of it (at most 2\n"
+       "                   and 3). A raster takes about 15 bytes a pixel (240 MB at 4000 x 4000)\n"
+       "  --picture-size P  the drawing's longer side in pixels instead, in [100, 8192] (the margin adds 20)\n",
        run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"

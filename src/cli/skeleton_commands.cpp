@@ -276,9 +276,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (args.has("picture-size")) {
     if (!args.has("svg")) throw Usage_error("--picture-size applies to the picture of --svg F");
     const long long size = args.get_int("picture-size");
-    if (size < 100 || size > 16384)
-      throw Usage_error("--picture-size must be an integer number of pixels in [100, 16384], got " +
-                        args.get("picture-size"));
+    if (size < 100 || size > 8192)
+      throw Usage_error("--picture-size must be an integer number of pixels in [100, 8192], got '" +
+                        args.get("picture-size") + "'");
     picture.long_side = static_cast<double>(size);
   }
   Skeleton_options options;
@@ -583,7 +583,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     } else {
       for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
     }
-    if (!args.has("graph")) picture.feature_size = radius;  // the radius used (derived from tracks)
+    picture.feature_size = args.has("graph") ? s.level_width : radius;  // the radius used (derived from tracks)
     io::write_skeleton_picture(outputs.path("svg"), xy, graph, picture);
   }
   outputs.commit();

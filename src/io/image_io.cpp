@@ -240,7 +240,9 @@ Image read_pnm(const std::string& path) {
   if (!sized && n > (1ull << 30))
     fail(path, "a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " + magic +
                    " image read from a pipe is beyond 2^30 values");
-  // What follows the header (the whitespace that ends the maximum value is read with it).
+  // What follows the header (the whitespace that ends the maximum value is read with it; a header that ends the
+  // file leaves the stream failed, and nothing follows).
+  if (!in) in.clear(), in.seekg(0, std::ios::end);
   const std::streamoff at = in.tellg();
   const unsigned long long left = at >= 0 && static_cast<unsigned long long>(at) <= file_size
                                       ? file_size - static_cast<unsigned long long>(at)

@@ -213,8 +213,9 @@ void write_skeleton_picture(const std::string& path, const std::vector<std::arra
   const bool scaled = feature_size > 0 && std::isfinite(feature_size);
   Picture picture = frame.open(options.long_side > 0 ? options.long_side
                                                      : skeleton_picture_long_side(frame.long_side(), feature_size));
-  // Mark sizes in pixels: at most 1 (points), 2 (arc width) and 3 (nodes); finer where the feature size is drawn
-  // smaller than 10 pixels, so that points a feature size apart and the arcs between them stay apart.
+  // Mark sizes in pixels: at most 1 (points), 2 (arc width) and 3 (nodes); a fifth, a half and a half of the
+  // feature size drawn (finer below 5, 4 and 6 pixels), so that points a feature size apart and the arcs between
+  // them stay apart.
   const double feature_pixels = scaled && frame.pixels_per_unit() > 0 ? feature_size * frame.pixels_per_unit() : 10.0;
   const double point_radius = std::clamp(feature_pixels / 5, 0.3, 1.0);
   const double arc_width = std::clamp(feature_pixels / 2, 0.5, 2.0);

@@ -28,21 +28,23 @@ void write_skeleton_geojson(const std::string& path, const skeleton::Skeleton_gr
 void write_skeleton_ply(const std::string& path, const skeleton::Skeleton_graph& g);
 /// Scale of a skeleton picture.
 struct Skeleton_picture_options {
-  /// The length at which the data's structure shows, in data units (the Rips radius): the page is made large
-  /// enough to draw it at least 3 pixels long (see skeleton_picture_long_side), and the marks (points, arcs,
-  /// nodes) are made finer where it is drawn under 10 pixels. 0 (or not finite): a 1000-pixel page, full marks.
+  /// The length at which the data's structure shows, in data units (the Rips radius): the page is sized to draw
+  /// it 3 pixels long within 1000 to 4000 pixels (skeleton_picture_long_side), and the marks are scaled to it: dots
+  /// a fifth, arcs and nodes a half of it in pixels, at most 1, 2 and 3. 0 (or not finite): a 1000-pixel page and
+  /// marks of 1, 2 and 3.
   double feature_size = 0;
   /// The page's longer side in pixels, plus a margin of 10 on each side; 0: automatic.
   double long_side = 0;
 };
-/// The automatic page size: 3 pixels per feature size, at least 1000 and at most 4000 pixels on the longer side;
-/// 1000 when either length is 0 or not finite. The 2000 x 200 pixels of ink of 1,000 handwritten digits at radius
-/// 1.5 get 4000 (2 pixels a pixel); 4 km of GPS traces at radius 24 m, 1000.
+/// The automatic page size: 3 pixels per feature size, at least 1000 and at most 4000 pixels on the longer side
+/// (beyond 1333 feature sizes across, the feature size is drawn shorter than 3 pixels); 1000 when either length is
+/// 0 or not finite. The ink of 1,000 handwritten digits (1994 pixels across) at radius 1.5 gets 3988 (2 pixels a
+/// pixel); 4 km of GPS traces at radius 24 m, 1000.
 double skeleton_picture_long_side(double data_long_side, double feature_size);
 /// Picture of the input points (grey) and the skeleton (arcs as coloured polylines, nodes black), in x y: SVG, or
-/// PNG, JPEG, PGM, PPM by the extension (the same drawing rasterised). Points are discs of radius 1 pixel, arcs 2
-/// pixels wide and nodes discs of radius 3 pixels, each at most a fifth, a half and a half of the feature size in
-/// pixels (at least 0.3, 0.5 and 0.75).
+/// PNG, JPEG, PGM, PPM by the extension (the same drawing rasterised; about 15 bytes a pixel). Points are discs of
+/// radius 1 pixel, arcs 2 pixels wide and nodes discs of radius 3 pixels, each at most a fifth, a half and a half
+/// of the feature size in pixels (at least 0.3, 0.5 and 0.75).
 void write_skeleton_picture(const std::string& path, const std::vector<std::array<double, 2>>& points,
                             const skeleton::Skeleton_graph& g, const Skeleton_picture_options& options = {});
 

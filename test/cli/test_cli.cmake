@@ -256,7 +256,7 @@ expect_count(${WORK}/digits.svg "<polyline fill=\"none\" stroke-width=\"1\\.5[0-
 expect(skeleton_picture_size 0 "\"loops\": 399," skeleton --image ${PROJECT_DATA}/images/digits_1000.pgm --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b --svg ${WORK}/digits_small.svg --picture-size 1000 --quiet)
 expect_count(${WORK}/digits_small.svg "viewBox=\"0 0 1020\\.00 " 1)
 expect_count(${WORK}/digits_small.svg "r=\"0\\.3\" fill=\"#c0c0c0\"" 51788)
-expect(skeleton_picture_size_range 2 "--picture-size must be an integer number of pixels in \\[100, 16384\\], got 99" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --svg ${WORK}/x.svg --picture-size 99)
+expect(skeleton_picture_size_range 2 "--picture-size must be an integer number of pixels in \\[100, 8192\\], got '99'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --svg ${WORK}/x.svg --picture-size 99)
 expect(skeleton_picture_size_alone 2 "--picture-size applies to the picture of --svg F" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/a --out-edges ${WORK}/b --picture-size 500)
 # Lengths derived from the radius (up to 5R) and the level width (2W) must stay finite: 1e308 made delta, repair and
 # prune infinite (a library error naming internal fields, exit 1; with tracks at 5e307 an empty map and "prune": null).

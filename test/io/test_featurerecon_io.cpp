@@ -207,7 +207,7 @@ TEST(WriteTextFile, UsesATemporaryOfItsOwn) {
 TEST(SkeletonPicture, PageResolvesTheFeatureSize) {
   // 3 pixels per feature size, the longer side within [1000, 4000]; without a usable length, 1000.
   EXPECT_EQ(io::skeleton_picture_long_side(400, 1), 1200.0);
-  EXPECT_EQ(io::skeleton_picture_long_side(2000, 1.5), 4000.0);  // the ink of the digits: exactly the cap
+  EXPECT_EQ(io::skeleton_picture_long_side(2000, 1.5), 4000.0);  // 2000 units at 1.5: exactly the cap
   EXPECT_EQ(io::skeleton_picture_long_side(2000, 1), 4000.0);
   EXPECT_EQ(io::skeleton_picture_long_side(300, 1), 1000.0);
   EXPECT_EQ(io::skeleton_picture_long_side(3923, 23.9), 1000.0);  // Chicago's traces: as before
@@ -236,9 +236,10 @@ TEST(SkeletonPicture, PageResolvesTheFeatureSize) {
   text = svg(0.5, 200);  // the page given: 200 pixels, the feature size 1 pixel, dots of the least radius 0.3
   EXPECT_NE(text.find("viewBox=\"0 0 220.00 20.00\""), std::string::npos) << text.substr(0, 200);
   EXPECT_NE(text.find(" r=\"0.3\" fill"), std::string::npos);
-  // One position (or two closer than the doubles resolve): a square page, the position in its centre, full marks.
-  for (const double apart : {0.0, 1e-320}) {
-    points = {{3.0, 4.0}, {3.0 + apart, 4.0}};
+  // One position, or two so close that the page over their span is beyond the largest double: a square page, the
+  // position in its centre, full marks.
+  for (const double apart : {0.0, 1e-322}) {
+    points = {{0.0, 0.0}, {apart, 0.0}};
     text = svg(1, 500);
     EXPECT_NE(text.find("viewBox=\"0 0 520.00 520.00\""), std::string::npos) << apart << text.substr(0, 200);
     EXPECT_NE(text.find("<circle cx=\"260.00\" cy=\"260.00\" r=\"1\""), std::string::npos) << apart;

@@ -90,6 +90,16 @@ TEST(ImageIo, ErrorsNameTheFile) {
               std::string::npos)
         << e.what();
   }
+  const std::string header_only = scratch("header_only.pgm");  // the file ends with the maximum value
+  std::ofstream(header_only) << "P5\n2 2\n255";
+  try {
+    io::read_image(header_only);
+    ADD_FAILURE() << "a PGM without pixels was read";
+  } catch (const io::Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("needs 4 bytes of pixel data or more, the file has 0 after its header"),
+              std::string::npos)
+        << e.what();
+  }
   const std::string exact = scratch("exact.pgm");  // exactly the bytes needed: read
   std::ofstream(exact) << "P5\n2 2\n255\nabcd";
   EXPECT_EQ(io::read_image(exact).data, (std::vector<std::uint8_t>{'a', 'b', 'c', 'd'}));

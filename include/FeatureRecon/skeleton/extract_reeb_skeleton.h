@@ -61,8 +61,9 @@ struct Skeleton_options {
   /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all.
   double prune_height = 0;
   /// Contract each arc joining two branch nodes (degree >= 3) that is at most this long in input space into one
-  /// node (merge_close_branch_nodes()): where two curves cross or touch, the level sets merge and split at slightly
-  /// different values, and the Reeb graph draws one point of degree 4 as two forks joined by a short arc.
+  /// node, each merged cluster at most this across (merge_close_branch_nodes()): where two curves cross or touch,
+  /// the level sets merge and split at slightly different values, and the Reeb graph draws one point of degree 4
+  /// as two forks joined by a short arc.
   /// Negative (default -1): twice the level width of the embedding (Reeb_skeleton::level_width, by default the
   /// median edge length of the complex, so about the Rips radius: where two curves cross at a right angle the
   /// forks lie about that far apart, and closer features the complex does not resolve); 0: off.
@@ -204,8 +205,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
   // The nodes of each group (by its root), and whether two groups stay within `distance` of each other once merged:
   // every node of one within `distance` of every node of the other (input space above 3D). Without this bound the
   // rounds chained the forks of a lattice (every cell a loop, every arc about the level width) into one line.
-  std::vector<std::vector<std::size_t>> group_nodes(n);
-  for (std::size_t v = 0; v < n; ++v) group_nodes[v] = {v};
+  std::vector<std::vector<std::size_t>> group_nodes(candidates.empty() ? 0 : n);
+  for (std::size_t v = 0; v < group_nodes.size(); ++v) group_nodes[v] = {v};
   auto node_point = [&](std::size_t v) -> std::pair<const double*, std::size_t> {
     if (high && g[v].input_position.size() == input.dimension) return {g[v].input_position.data(), input.dimension};
     return {g[v].position.data(), 3};
@@ -219,7 +220,7 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
       }
     return true;
   };
-  std::vector<char> contracted(m, 0);
+  std::vector<char> contracted(m, 0), refused(m, 0);  // refused: too wide once merged (groups only grow)
   Branch_node_merge_result result;
   for (bool changed = !candidates.empty(); changed;) {
     changed = false;
@@ -234,11 +235,15 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
     }
     std::vector<char> taken(n, 0);
     for (const auto& [length, k] : candidates) {
-      if (contracted[k]) continue;
+      if (contracted[k] || refused[k]) continue;
       const std::size_t a = find(lower[k]), b = find(upper[k]);
       if (a == b || taken[a] || taken[b] || degree[a] < 3 || degree[b] < 3 ||
-          joining[{std::min(a, b), std::max(a, b)}] != 1 || !close_groups(a, b))
+          joining[{std::min(a, b), std::max(a, b)}] != 1)
         continue;
+      if (!close_groups(a, b)) {
+        refused[k] = 1;
+        continue;
+      }
       taken[a] = taken[b] = 1;
       contracted[k] = 1;
       group[std::max(a, b)] = std::min(a, b);
@@ -502,7 +507,8 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     for (auto e : boost::make_iterator_range(edges(result.graph))) result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);
   }
   result.branch_merge_distance =
-      options.branch_merge_distance < 0 ? 2 * eo.level_width : options.branch_merge_distance;
+      options.branch_merge_distance < 0 ? std::min(2 * eo.level_width, std::numeric_limits<double>::max())
+                                        : options.branch_merge_distance;  // 2W saturates (edges near the largest double)
   if (result.branch_merge_distance > 0) {
     Branch_node_merge_result merged =
         internal::merge_close_branch_nodes(result.graph, projected, coordinates, result.branch_merge_distance, fn);
