@@ -508,7 +508,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   }
   result.branch_merge_distance =
       options.branch_merge_distance < 0 ? std::min(2 * eo.level_width, std::numeric_limits<double>::max())
-                                        : options.branch_merge_distance;  // 2W saturates (edges near the largest double)
+                                        : options.branch_merge_distance;  // 2W saturates (edges near DBL_MAX)
   if (result.branch_merge_distance > 0) {
     Branch_node_merge_result merged =
         internal::merge_close_branch_nodes(result.graph, projected, coordinates, result.branch_merge_distance, fn);
