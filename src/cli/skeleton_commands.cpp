@@ -583,7 +583,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     } else {
       for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
     }
-    picture.feature_size = args.has("graph") ? s.level_width : radius;  // the radius used (derived from tracks)
+    // The radius used (derived from tracks); a graph has none: its level width (median edge length) stands in.
+    picture.feature_size = args.has("graph") ? s.level_width : radius;
     io::write_skeleton_picture(outputs.path("svg"), xy, graph, picture);
   }
   outputs.commit();
