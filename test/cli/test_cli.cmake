@@ -218,6 +218,9 @@ expect(skeleton_branch_merge 0 "\"nodes\": 3, \"arcs\": 4, \"loops\": 2, .*\"bra
 expect(skeleton_branch_merge_bad 2 "--branch-merge must be finite and >= 0 \\(0: off\\), got '-1'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --branch-merge -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_all_pruned 0 "\"nodes\": 0, .*warning: the skeleton is empty: pruning removed all 1 component\\(s\\), each of height at most 100 \\(--prune 0 keeps them\\)" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --prune 100 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_max_gap_nan 2 "--max-gap" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-gap nan --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# Edges 1e200 long: the automatic max_gap is twice the median edge (their squares overflowed: null, nothing bridged).
+file(WRITE ${WORK}/huge_graph.txt "3 2\n0 0 0 0\n1e200 0 0 0\n2e200 0 0 0\n0 1\n1 2\n")
+expect(skeleton_max_gap_huge 0 "\"level_width\": 1e\\+200, \"max_gap\": 2e\\+200," skeleton --graph ${WORK}/huge_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_self_score 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 1)
 expect(skeleton_source 2 "exactly one of --points FILE, --image FILE, --tracks FILE, --distance-matrix FILE and --graph FILE" skeleton --radius 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 # --image: the ink of a picture. A dark ring on white (ASCII PGM, 9 x 9) is one loop; its pixel centres are y up.

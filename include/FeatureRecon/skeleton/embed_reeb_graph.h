@@ -146,12 +146,8 @@ class Graph_path_finder {
       : m_adjacency(adjacency), m_P(P), m_distance(P.rows), m_previous(P.rows), m_stamp(P.rows, 0) {}
 
   double length(Vertex_index a, Vertex_index b) const {
-    double s = 0;
-    for (std::size_t c = 0; c < m_P.dimension; ++c) {
-      const double t = m_P.row(a)[c] - m_P.row(b)[c];
-      s += t * t;
-    }
-    return std::sqrt(s);
+    // Scaled where the squares overflow: edges 1e200 long made the automatic max_gap infinite (nothing bridged).
+    return point_distance(m_P.row(a), m_P.row(b), m_P.dimension);
   }
 
   /// Median edge length (0 without edges).
