@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <random>
 
 using namespace FeatureRecon;
@@ -479,6 +480,42 @@ TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
     expect_in(e.what(), "connected_components: edge 1 (1, 5) has a vertex beyond the 3 vertices");
+  }
+}
+
+// make_simplicial_complex_2 sorts edges by a comparison sort below 1024 edges and by a radix sort on 64-bit keys
+// above: both give the lexicographic order without repetitions, each edge with its first occurrence's length,
+// for vertex indices up to the largest 32-bit one.
+TEST(MakeSimplicialComplex, EdgeOrderAndFirstLengthsOnBothSortPaths) {
+  std::mt19937 rng(2026);
+  for (const std::size_t m : {0u, 1u, 1023u, 1024u, 1025u, 50000u}) {
+    for (const std::size_t n : {std::size_t(2), std::size_t(40), std::size_t(5000), std::size_t(4294967295u)}) {
+      std::vector<Edge> edges;
+      std::vector<double> lengths;
+      while (edges.size() < m) {
+        Vertex_index a = static_cast<Vertex_index>(rng() % n), b = static_cast<Vertex_index>(rng() % n);
+        if (a == b) continue;
+        if (rng() % 2 != 0) std::swap(a, b);  // either order
+        edges.push_back({a, b});
+        lengths.push_back(static_cast<double>(edges.size()));  // the occurrence's position
+      }
+      // Reference: the first occurrence of each edge by a map.
+      std::map<Edge, double> first;
+      for (std::size_t i = 0; i < edges.size(); ++i)
+        first.emplace(Edge{std::min(edges[i][0], edges[i][1]), std::max(edges[i][0], edges[i][1])}, lengths[i]);
+      const Simplicial_complex_2 weighted = make_simplicial_complex_2(n, edges, {}, lengths);
+      const Simplicial_complex_2 plain = make_simplicial_complex_2(n, edges, {});
+      ASSERT_EQ(weighted.edges.size(), first.size()) << m << " edges on " << n << " vertices";
+      EXPECT_EQ(plain.edges, weighted.edges);
+      std::size_t i = 0;
+      for (const auto& [edge, length] : first) {
+        EXPECT_EQ(weighted.edges[i], edge);
+        EXPECT_EQ(weighted.edge_lengths[i], length) << "edge " << i;
+        ++i;
+      }
+      EXPECT_TRUE(is_canonical(weighted));
+      if (m >= 1024 && n == 40) EXPECT_LT(first.size(), m);  // the radix path met repetitions (780 edges exist)
+    }
   }
 }
 

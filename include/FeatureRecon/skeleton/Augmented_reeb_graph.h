@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Compressed_lists.h>
 #include <FeatureRecon/internal/Large_array_allocator.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/internal/Link_cut_tree.h>
@@ -143,23 +144,10 @@ class Augmented_reeb_graph {
 };
 
 namespace internal {
-/// Compressed lists: for each key 0..n-1 the values pushed with it, in push order.
+/// \cond
 template <class T>
-struct Buckets {
-  FeatureRecon::internal::Large_vector<std::size_t> offset;
-  FeatureRecon::internal::Large_vector<T> items;
-  template <class KeyOf>
-  void build(std::size_t n, std::size_t count, KeyOf key_of) {
-    offset.assign(n + 1, 0);
-    for (std::size_t i = 0; i < count; ++i) ++offset[key_of(i) + 1];
-    for (std::size_t k = 0; k < n; ++k) offset[k + 1] += offset[k];
-    items.resize(count);
-    FeatureRecon::internal::Large_vector<std::size_t> fill(offset.begin(), offset.end() - 1);
-    for (std::size_t i = 0; i < count; ++i) items[fill[key_of(i)]++] = static_cast<T>(i);
-  }
-  const T* begin(std::size_t k) const { return items.data() + offset[k]; }
-  const T* end(std::size_t k) const { return items.data() + offset[k + 1]; }
-};
+using Buckets = FeatureRecon::internal::Compressed_lists<T, FeatureRecon::internal::Large_array_allocator<T>>;
+/// \endcond
 }  // namespace internal
 
 /// Computes the augmented Reeb graph of the PL function `f` on the complex `K`.
@@ -241,17 +229,13 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   auto lower_of = [&](std::size_t e) { return std::min(rank[K.edges[e][0]], rank[K.edges[e][1]]); };
   auto upper_of = [&](std::size_t e) { return std::max(rank[K.edges[e][0]], rank[K.edges[e][1]]); };
   internal::Buckets<std::uint32_t> up_edges, down_edges;
-  down_edges.build(n, E, upper_of);
-  up_edges.offset.assign(n + 1, 0);
-  for (std::size_t e = 0; e < E; ++e) ++up_edges.offset[lower_of(e) + 1];
-  for (std::size_t step = 0; step < n; ++step) up_edges.offset[step + 1] += up_edges.offset[step];
-  up_edges.items.resize(E);
-  {
-    FeatureRecon::internal::Large_vector<std::size_t> fill(up_edges.offset.begin(), up_edges.offset.end() - 1);
+  down_edges.build(n, [&](auto emit) {
+    for (std::size_t e = 0; e < E; ++e) emit(upper_of(e), static_cast<std::uint32_t>(e));
+  });
+  up_edges.build(n, [&](auto emit) {
     for (std::size_t step = n; step-- > 0;)
-      for (const std::uint32_t* e = down_edges.begin(step); e != down_edges.end(step); ++e)
-        up_edges.items[fill[lower_of(*e)]++] = *e;
-  }
+      for (const std::uint32_t* e = down_edges.begin(step); e != down_edges.end(step); ++e) emit(lower_of(*e), *e);
+  });
 
   // Sweep numbering: edges are renumbered in the order of up_edges, so that the level-set nodes alive at one
   // time sit close together in memory (this matters for large complexes).
@@ -340,7 +324,9 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
       const Tri r = roles(t, uv, vw, uw);
       tri[first_tri[r.ab]++] = r;
     });
-    by_mid.build(n, T, [&](std::size_t t) { return upper_rank[tri[t].ab]; });
+    by_mid.build(n, [&](auto emit) {
+      for (std::size_t t = 0; t < T; ++t) emit(upper_rank[tri[t].ab], static_cast<std::uint32_t>(t));
+    });
   }
   edge_new.clear();
   edge_new.shrink_to_fit();

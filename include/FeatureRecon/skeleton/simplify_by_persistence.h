@@ -4,6 +4,7 @@
 #define FEATURERECON_SKELETON_SIMPLIFY_BY_PERSISTENCE_H
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/Compressed_lists.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
 
@@ -37,6 +38,7 @@ struct Simplification_complex {
   std::vector<Edge> edges;
   std::vector<Triangle> triangles;
 };
+
 /// \endcond
 }  // namespace internal
 
@@ -70,6 +72,8 @@ struct Simplification_complex {
 inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, const std::vector<double>& values,
                                                           double delta, const Progress_callback& progress = {}) {
   const char* fn = "simplify_by_persistence";
+  using FeatureRecon::internal::Compressed_lists;
+  using FeatureRecon::internal::release;
   using FeatureRecon::internal::throw_invalid_argument;
   if (!(delta >= 0 && std::isfinite(delta))) throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
   // Which vertices the graph uses, each once: 1 = in the complex, 2 = a member off its node's level.
@@ -120,23 +124,26 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   // The graph of R as a 1-complex on the input vertices: each arc a chain through its vertices. Parallel arcs
   // without interior vertices get a helper midpoint (but the first). Only such arcs can repeat an edge: every other
   // edge has an interior vertex of its arc, used once.
-  std::vector<std::vector<Vertex_index>> chain(R.arcs.size());
+  // Chain k is chain_items[chain_start[k], chain_start[k + 1]), from the lower node's vertex to the upper's.
+  std::vector<std::size_t> chain_start{0};
+  std::vector<Vertex_index> chain_items;
   std::set<Edge> present;  // the edges of arcs without interior vertices
   auto key = [](Vertex_index a, Vertex_index b) { return a < b ? Edge{a, b} : Edge{b, a}; };
   for (std::size_t k = 0; k < R.arcs.size(); ++k) {
-    std::vector<Vertex_index>& c = chain[k];
-    c.push_back(R.nodes[R.arcs[k].lower].vertex);
-    c.insert(c.end(), R.arcs[k].vertices.begin(), R.arcs[k].vertices.end());
-    c.push_back(R.nodes[R.arcs[k].upper].vertex);
-    if (c.size() == 2 && !present.insert(key(c[0], c[1])).second) {
-      const Vertex_index mid = static_cast<Vertex_index>(val.size());
+    const Vertex_index a = R.nodes[R.arcs[k].lower].vertex, b = R.nodes[R.arcs[k].upper].vertex;
+    chain_items.push_back(a);
+    if (R.arcs[k].vertices.empty() && !present.insert(key(a, b)).second) {
+      chain_items.push_back(static_cast<Vertex_index>(val.size()));
       // Halves first: no overflow near the largest doubles; clamped, as halves of subnormals round.
-      val.push_back(std::clamp(0.5 * val[c[0]] + 0.5 * val[c[1]], std::min(val[c[0]], val[c[1]]),
-                               std::max(val[c[0]], val[c[1]])));
-      c.insert(c.begin() + 1, mid);
+      val.push_back(std::clamp(0.5 * val[a] + 0.5 * val[b], std::min(val[a], val[b]), std::max(val[a], val[b])));
     }
-    for (std::size_t i = 0; i + 1 < c.size(); ++i) Y.edges.push_back(key(c[i], c[i + 1]));
+    chain_items.insert(chain_items.end(), R.arcs[k].vertices.begin(), R.arcs[k].vertices.end());
+    chain_items.push_back(b);
+    chain_start.push_back(chain_items.size());
+    for (std::size_t i = chain_start[k]; i + 1 < chain_items.size(); ++i)
+      Y.edges.push_back(key(chain_items[i], chain_items[i + 1]));
   }
+  release(present);
 
   // Members of a node (input vertices identified with it) stay with it: a horizontal edge to the node's vertex.
   // Members off the node's level are attached after the quotient (an edge would not be level).
@@ -146,11 +153,21 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 
   // Node adjacency of R with arcs.
   const std::size_t nn = R.nodes.size();
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adj(nn);  // (other node, arc)
-  for (std::size_t k = 0; k < R.arcs.size(); ++k) {
-    adj[R.arcs[k].lower].push_back({R.arcs[k].upper, k});
-    adj[R.arcs[k].upper].push_back({R.arcs[k].lower, k});
-  }
+  Compressed_lists<std::pair<std::size_t, std::size_t>> adjacency;  // (other node, arc)
+  adjacency.build(nn, [&](auto emit) {
+    for (std::size_t k = 0; k < R.arcs.size(); ++k) {
+      emit(R.arcs[k].lower, {R.arcs[k].upper, k});
+      emit(R.arcs[k].upper, {R.arcs[k].lower, k});
+    }
+  });
+  auto adj = [&adjacency](std::size_t node) {  // the (other node, arc) pairs at a node, as a range
+    struct Range {
+      const std::pair<std::size_t, std::size_t>*first, *last;
+      const std::pair<std::size_t, std::size_t>* begin() const { return first; }
+      const std::pair<std::size_t, std::size_t>* end() const { return last; }
+    };
+    return Range{adjacency.begin(node), adjacency.end(node)};
+  };
   // Breadth-first search from `start` inside the nodes accepted by `inside`, not going on from the nodes
   // accepted by `stop` (the search ends at the first one, returned last); records the predecessor arcs in
   // `pred_arc` (valid for the nodes reached). Stamped arrays: a search costs the nodes it reaches, not nn.
@@ -165,7 +182,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     pred_arc[start] = none;
     if (stop(start)) return order;
     for (std::size_t i = 0; i < order.size(); ++i)
-      for (const auto& [y, arc] : adj[order[i]])
+      for (const auto& [y, arc] : adj(order[i]))
         if (seen_stamp[y] != stamp && inside(y)) {
           seen_stamp[y] = stamp;
           pred_arc[y] = arc;
@@ -182,11 +199,12 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   auto walk = [&](std::size_t from, const std::vector<std::size_t>& arcs, auto stop, std::vector<Edge>& edges) {
     std::size_t node = from;
     for (const std::size_t arc : arcs) {
-      std::vector<Vertex_index> c = chain[arc];
-      if (R.arcs[arc].lower != node) std::reverse(c.begin(), c.end());
-      for (std::size_t i = 0; i + 1 < c.size(); ++i) {
-        edges.push_back(key(c[i], c[i + 1]));
-        if (stop(c[i + 1])) return;
+      const std::size_t first = chain_start[arc], length = chain_start[arc + 1] - first;
+      const bool forward = R.arcs[arc].lower == node;
+      auto at = [&](std::size_t i) { return chain_items[first + (forward ? i : length - 1 - i)]; };
+      for (std::size_t i = 0; i + 1 < length; ++i) {
+        edges.push_back(key(at(i), at(i + 1)));
+        if (stop(at(i + 1))) return;
       }
       node = other_end(arc, node);
     }
@@ -198,7 +216,9 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     return arcs;
   };
 
-  std::vector<std::vector<Edge>> merging_sets;
+  // Merging set j: merging_edges[merging_start[j], merging_start[j + 1]).
+  std::vector<Edge> merging_edges;
+  std::vector<std::size_t> merging_start{0};
   // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork). At the fork, the arc alpha
   // goes into C2, the component of e beyond the fork, and beta into the sibling component that reaches farthest
   // (its extreme is the elder; the first such arc of the fork). Both are found for all pairs by one union-find
@@ -219,9 +239,11 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   };
   auto sweep = [&](const std::vector<Reeb_persistence_pair>& pairs, bool down, std::vector<Branch_choice>& choice) {
     choice.assign(pairs.size(), Branch_choice{none, none, none});
-    std::vector<std::vector<std::size_t>> at_fork(nn);  // the pairs to simplify, by fork
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-      if (pairs[i].persistence() <= delta) at_fork[pairs[i].death_node].push_back(i);
+    Compressed_lists<std::size_t> at_fork;  // the pairs to simplify, by fork
+    at_fork.build(nn, [&](auto emit) {
+      for (std::size_t i = 0; i < pairs.size(); ++i)
+        if (pairs[i].persistence() <= delta) emit(pairs[i].death_node, i);
+    });
     Sweep W;
     W.parent.resize(nn);
     std::iota(W.parent.begin(), W.parent.end(), std::size_t(0));
@@ -239,9 +261,9 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (std::size_t k = 0; k < nn; ++k) {
       const std::size_t s = down ? k : nn - 1 - k;
       W.step[s] = k;
-      if (!at_fork[s].empty()) {
+      if (at_fork.size(s) != 0) {
         parts.clear();
-        for (const auto& [y, arc] : adj[s])
+        for (const auto& [y, arc] : adj(s))
           if (farther(y, s)) parts.push_back({W.find(y), arc});
         std::stable_sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.root < b.root; });
         parts.erase(std::unique(parts.begin(), parts.end(),
@@ -257,7 +279,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
             second = j;
           }
         }
-        for (const std::size_t i : at_fork[s]) {
+        for (const std::size_t* i_at = at_fork.begin(s); i_at != at_fork.end(s); ++i_at) {
+          const std::size_t i = *i_at;
           const std::size_t ce = W.find(pairs[i].birth_node);
           Branch_choice& c = choice[i];
           const auto own = std::lower_bound(parts.begin(), parts.end(), ce,
@@ -270,7 +293,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
           }
         }
       }
-      for (const auto& [y, arc] : adj[s]) {  // s joins the components beyond it
+      for (const auto& [y, arc] : adj(s)) {  // s joins the components beyond it
         if (!farther(y, s)) continue;
         std::size_t a = W.find(y), b = W.find(s);
         if (a == b) continue;
@@ -290,7 +313,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     auto side = [&](std::size_t y) { return down ? y < s : y > s; };
     auto beyond_e = [&](std::size_t y) { return down ? y < e : y > e; };
     const Vertex_index ev = R.nodes[e].vertex;
-    std::vector<Edge> edges;
+    std::vector<Edge>& edges = merging_edges;
     {
       // pi2: from the fork through alpha into C2, then to the extreme e (C2 lies between the two levels).
       std::vector<std::size_t> arcs{c.alpha};
@@ -318,7 +341,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
       arcs.insert(arcs.end(), rest.begin(), rest.end());
       walk(s, arcs, [&](Vertex_index v) { return down ? !less(ev, v) : !less(v, ev); }, edges);
     }
-    merging_sets.push_back(std::move(edges));
+    merging_start.push_back(merging_edges.size());
     ++result.removed_branches;
   };
   for (const bool down : {true, false}) {
@@ -330,22 +353,32 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   }
   for (std::size_t i = 0; i < P.loops.size(); ++i) {
     if (P.loops[i].persistence() > delta) continue;
-    std::vector<Edge> edges;
     for (const std::size_t arc : cycles[i])
-      for (std::size_t j = 0; j + 1 < chain[arc].size(); ++j) edges.push_back(key(chain[arc][j], chain[arc][j + 1]));
-    merging_sets.push_back(std::move(edges));
+      for (std::size_t j = chain_start[arc]; j + 1 < chain_start[arc + 1]; ++j)
+        merging_edges.push_back(key(chain_items[j], chain_items[j + 1]));
+    merging_start.push_back(merging_edges.size());
     ++result.removed_loops;
   }
 
+  // What the glued complex does not need goes before it is built.
+  release(chain_items);
+  release(chain_start);
+  release(adjacency);
+  release(seen_stamp);
+  release(pred);
+  release(cycles);
   if (stopped(0.2)) return result;
   // Spines and strips.
-  for (std::vector<Edge>& edges : merging_sets) {
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    std::vector<double> levels;
-    for (const Edge& e : edges) {
-      levels.push_back(val[e[0]]);
-      levels.push_back(val[e[1]]);
+  std::vector<double> levels;
+  for (std::size_t j = 0; j + 1 < merging_start.size(); ++j) {
+    const auto edges_begin = merging_edges.begin() + static_cast<std::ptrdiff_t>(merging_start[j]);
+    auto edges_end = merging_edges.begin() + static_cast<std::ptrdiff_t>(merging_start[j + 1]);
+    std::sort(edges_begin, edges_end);
+    edges_end = std::unique(edges_begin, edges_end);
+    levels.clear();
+    for (auto e = edges_begin; e != edges_end; ++e) {
+      levels.push_back(val[(*e)[0]]);
+      levels.push_back(val[(*e)[1]]);
     }
     std::sort(levels.begin(), levels.end());
     levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
@@ -356,8 +389,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     auto spine = [&](double l) {
       return static_cast<Vertex_index>(first + (std::lower_bound(levels.begin(), levels.end(), l) - levels.begin()));
     };
-    for (const Edge& e : edges) {
-      Vertex_index a = e[0], b = e[1];
+    for (auto e = edges_begin; e != edges_end; ++e) {
+      Vertex_index a = (*e)[0], b = (*e)[1];
       if (less(b, a)) std::swap(a, b);
       const Vertex_index lo = spine(val[a]), hi = spine(val[b]);
       for (Vertex_index s = lo; s < hi; ++s) Y.triangles.push_back({a, s, static_cast<Vertex_index>(s + 1)});
@@ -365,8 +398,11 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     }
   }
 
+  release(merging_edges);
+  release(merging_start);
+
   // The Reeb graph of the glued complex, with zero-height arcs contracted.
-  const Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
+  Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
   if (stopped(0.3)) return result;
   Reeb_graph_options glued_options;
   bool asked_to_stop = false;  // sticky: the sweep's last report (all swept) does not stop it, but counts here
@@ -375,6 +411,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
       return !(asked_to_stop = asked_to_stop || !progress(0.3 + 0.6 * t));
     };
   const Augmented_reeb_graph AY = compute_augmented_reeb_graph(K, val, glued_options);
+  release(K);
   if (((asked_to_stop || AY.status() == Status::interrupted) && interrupted()) || stopped(0.9)) return result;
   const std::size_t m = val.size();
   std::vector<std::size_t> parent(m);
@@ -397,54 +434,64 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   std::sort(classes.begin(), classes.end(), [&](std::size_t a, std::size_t b) {
     return val[a] < val[b] || (val[a] == val[b] && rep[a] < rep[b]);
   });
-  std::vector<std::size_t> class_index(m, none);
-  for (std::size_t i = 0; i < classes.size(); ++i) class_index[classes[i]] = i;
   const std::size_t nc = classes.size();
-  std::vector<std::vector<std::size_t>> up(nc);
-  std::vector<std::size_t> down_degree(nc, 0);
-  for (const auto& a : AY.arcs()) {
-    if (val[a.lower] == val[a.upper]) continue;
-    const std::size_t cl = class_index[find(a.lower)], cu = class_index[find(a.upper)];
-    up[cl].push_back(cu);
-    ++down_degree[cu];
+  std::vector<Vertex_index> class_of(m);  // the index in `classes` of each vertex's class
+  {
+    std::vector<Vertex_index> class_index(m);
+    for (std::size_t i = 0; i < nc; ++i) class_index[classes[i]] = static_cast<Vertex_index>(i);
+    for (std::size_t v = 0; v < m; ++v) class_of[v] = class_index[find(v)];
   }
-  std::vector<std::vector<Vertex_index>> inputs_of(nc), off_level_of(nc);
-  for (std::size_t v = 0; v < n; ++v)
-    if (used[v] == 1) inputs_of[class_index[find(v)]].push_back(static_cast<Vertex_index>(v));
+  release(parent);
+  Compressed_lists<Vertex_index> up;  // the classes an arc of the glued graph reaches above, by class
+  up.build(nc, [&](auto emit) {
+    for (const auto& a : AY.arcs())
+      if (val[a.lower] != val[a.upper]) emit(class_of[a.lower], class_of[a.upper]);
+  });
+  std::vector<std::size_t> down_degree(nc, 0);
+  for (const Vertex_index c : up.items) ++down_degree[c];
+  Compressed_lists<Vertex_index> inputs_of, off_level_of;
+  inputs_of.build(nc, [&](auto emit) {
+    for (std::size_t v = 0; v < n; ++v)
+      if (used[v] == 1) emit(class_of[v], static_cast<Vertex_index>(v));
+  });
   // Members off their node's level go where the node's vertex went: to its node, or, when that became regular,
   // to the lower or upper node of its arc by their value (an arc's vertices stay in increasing order).
-  for (const auto& node : R.nodes)
-    for (const Vertex_index v : node.members)
-      if (used[v] == 2) off_level_of[class_index[find(node.vertex)]].push_back(v);
+  off_level_of.build(nc, [&](auto emit) {
+    for (const auto& node : R.nodes)
+      for (const Vertex_index v : node.members)
+        if (used[v] == 2) emit(class_of[node.vertex], v);
+  });
   // Indices of `values` the graph does not use (and members placed above) are isolated, single classes: no part
   // of the result as such.
   auto unused_class = [&](std::size_t c) { return rep[classes[c]] < n && used[rep[classes[c]]] != 1; };
   Reeb_graph& G = result.graph;
   std::vector<std::size_t> node_of(nc, none);
   for (std::size_t c = 0; c < nc; ++c) {
-    const unsigned t = node_type_from_degrees(down_degree[c], up[c].size());
+    const unsigned t = node_type_from_degrees(down_degree[c], up.size(c));
     if (t == regular || unused_class(c)) continue;
     node_of[c] = G.nodes.size();
     Reeb_graph::Node node;
     node.vertex = static_cast<Vertex_index>(rep[classes[c]]);
     node.value = val[classes[c]];
     node.type = t;
-    for (const Vertex_index v : inputs_of[c])
-      if (v != node.vertex) node.members.push_back(v);
-    node.members.insert(node.members.end(), off_level_of[c].begin(), off_level_of[c].end());
+    for (const Vertex_index* v = inputs_of.begin(c); v != inputs_of.end(c); ++v)
+      if (*v != node.vertex) node.members.push_back(*v);
+    node.members.insert(node.members.end(), off_level_of.begin(c), off_level_of.end(c));
     FEATURERECON_assertion(node.vertex < n);
     G.nodes.push_back(std::move(node));
   }
   for (std::size_t c = 0; c < nc; ++c) {
     if (node_of[c] == none) continue;
-    for (std::size_t next : up[c]) {
+    for (const Vertex_index* up_at = up.begin(c); up_at != up.end(c); ++up_at) {
+      std::size_t next = *up_at;
       Reeb_graph::Arc arc;
       arc.lower = node_of[c];
       std::vector<Vertex_index> below, above;  // off-level members of regular classes on the arc
       while (node_of[next] == none) {
-        arc.vertices.insert(arc.vertices.end(), inputs_of[next].begin(), inputs_of[next].end());
-        for (const Vertex_index v : off_level_of[next]) (values[v] < val[classes[next]] ? below : above).push_back(v);
-        next = up[next].front();
+        arc.vertices.insert(arc.vertices.end(), inputs_of.begin(next), inputs_of.end(next));
+        for (const Vertex_index* v = off_level_of.begin(next); v != off_level_of.end(next); ++v)
+          (values[*v] < val[classes[next]] ? below : above).push_back(*v);
+        next = *up.begin(next);
       }
       arc.upper = node_of[next];
       G.nodes[arc.lower].members.insert(G.nodes[arc.lower].members.end(), below.begin(), below.end());
