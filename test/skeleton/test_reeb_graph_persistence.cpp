@@ -195,14 +195,14 @@ TEST(ReebGraphPersistence, EmptyAndBadInput) {
   const Reeb_graph_persistence P = compute_reeb_graph_persistence(Reeb_graph{});
   EXPECT_TRUE(P.loops.empty() && P.essential.empty() && P.sublevel_branches.empty());
   Reeb_graph bad;
-  bad.nodes = {{0, 2.0, minimum}, {1, 1.0, maximum}};  // not sorted by value
+  bad.nodes = {{0, 2.0, minimum, {}}, {1, 1.0, maximum, {}}};  // not sorted by value
   EXPECT_THROW(compute_reeb_graph_persistence(bad), std::invalid_argument);
   Reeb_graph down;
-  down.nodes = {{0, 1.0, minimum}, {1, 2.0, maximum}};
+  down.nodes = {{0, 1.0, minimum, {}}, {1, 2.0, maximum, {}}};
   down.arcs = {{1, 0, {}}};  // an arc going down
   EXPECT_THROW(compute_reeb_graph_persistence(down), std::invalid_argument);
   Reeb_graph nan_node;  // one node: no order to break, so the value itself is checked
-  nan_node.nodes = {{0, std::nan(""), minimum | maximum}};
+  nan_node.nodes = {{0, std::nan(""), minimum | maximum, {}}};
   try {
     compute_reeb_graph_persistence(nan_node);
     ADD_FAILURE() << "no error";

@@ -483,9 +483,9 @@ TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
   }
 }
 
-// make_simplicial_complex_2 sorts edges by a comparison sort below 1024 edges and by a radix sort on 64-bit keys
-// above: both give the lexicographic order without repetitions, each edge with its first occurrence's length,
-// for vertex indices up to the largest 32-bit one.
+// make_simplicial_complex_2 sorts edges by a comparison sort below 1024 edges and by radix sorts on 64-bit keys
+// from 1024 on: both give the lexicographic order without repetitions, each edge with its first occurrence's
+// length, for vertex indices up to the largest 32-bit one.
 TEST(MakeSimplicialComplex, EdgeOrderAndFirstLengthsOnBothSortPaths) {
   std::mt19937 rng(2026);
   for (const std::size_t m : {0u, 1u, 1023u, 1024u, 1025u, 50000u}) {
@@ -516,6 +516,51 @@ TEST(MakeSimplicialComplex, EdgeOrderAndFirstLengthsOnBothSortPaths) {
       EXPECT_TRUE(is_canonical(weighted));
       if (m >= 1024 && n == 40) EXPECT_LT(first.size(), m);  // the radix path met repetitions (780 edges exist)
     }
+  }
+}
+
+// The two radix sorts called directly, at every size (the threshold above does not hide them): the in-place
+// sort of edges against std::sort, the stable sort of keys with a payload against std::stable_sort.
+TEST(MakeSimplicialComplex, RadixSortsMatchComparisonSorts) {
+  std::mt19937_64 rng(7);
+  for (const std::size_t m : {0u, 1u, 2u, 63u, 64u, 65u, 700u, 20000u}) {
+    for (const int b : {1, 5, 11, 22, 32}) {
+      const std::uint64_t range = std::uint64_t(1) << b;
+      std::vector<Edge> edges(m);
+      for (Edge& e : edges) e = {static_cast<Vertex_index>(rng() % range), static_cast<Vertex_index>(rng() % range)};
+      std::vector<Edge> expected = edges;
+      std::sort(expected.begin(), expected.end());
+      skeleton::internal::flag_sort_edges(edges.data(), edges.data() + edges.size(), b, 2 * b >= 8 ? 2 * b - 8 : 0);
+      EXPECT_EQ(edges, expected) << m << " edges, " << b << " bits";
+      std::vector<std::uint64_t> keys(m);
+      std::vector<std::size_t> payload(m);
+      for (std::size_t i = 0; i < m; ++i) {
+        keys[i] = rng() % (std::uint64_t(1) << std::min(2 * b, 63)) / (i % 3 == 0 ? 1 : 64);  // repeated keys
+        payload[i] = i;
+      }
+      std::vector<std::size_t> order = payload;
+      std::stable_sort(order.begin(), order.end(), [&keys](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
+      std::vector<std::uint64_t> sorted_keys(m);
+      for (std::size_t i = 0; i < m; ++i) sorted_keys[i] = keys[order[i]];
+      skeleton::internal::radix_sort(keys, payload, 2 * b);
+      EXPECT_EQ(keys, sorted_keys) << m << " keys, " << 2 * b << " bits";
+      EXPECT_EQ(payload, order) << m << " keys, " << 2 * b << " bits";
+    }
+  }
+  // Edges of triangles that repeat given edges keep the given lengths; the others get implied_edge_length.
+  std::vector<Edge> given;
+  std::vector<double> lengths;
+  std::vector<Triangle> triangles;
+  for (Vertex_index v = 0; v + 2 < 1500; ++v) {
+    given.push_back({v, static_cast<Vertex_index>(v + 1)});
+    lengths.push_back(0.5);
+    triangles.push_back({v, static_cast<Vertex_index>(v + 1), static_cast<Vertex_index>(v + 2)});
+  }
+  const Simplicial_complex_2 K = make_simplicial_complex_2(1500, given, triangles, lengths, 2.5);
+  ASSERT_EQ(K.edges.size(), 1499u + 1498u);  // the path and the chords v, v + 2
+  for (std::size_t e = 0; e < K.edges.size(); ++e) {
+    const bool is_given = K.edges[e][1] == K.edges[e][0] + 1 && K.edges[e][0] < 1498;  // (1498, 1499) is implied
+    EXPECT_EQ(K.edge_lengths[e], is_given ? 0.5 : 2.5) << "edge " << e;
   }
 }
 

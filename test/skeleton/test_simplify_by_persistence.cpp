@@ -103,9 +103,10 @@ void check_guarantee_on_random_graphs(unsigned seed, std::size_t effective, int 
       if (!ties)
         for (const auto& q : *a)
           for (const auto& p : *b)
-            if (p.persistence() > 0 && p.persistence() <= delta)
+            if (p.persistence() > 0 && p.persistence() <= delta) {
               EXPECT_FALSE(q.birth == p.birth && q.death == p.death)
                   << what << ": the feature (" << p.birth << ", " << p.death << ") survived";
+            }
     }
     const bool keeps = count_above(before.sublevel_branches, 2 * delta) + count_above(before.superlevel_branches, 2 * delta) +
                            count_above(before.loops, 2 * delta) > 0;

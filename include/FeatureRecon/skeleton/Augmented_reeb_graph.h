@@ -145,6 +145,7 @@ class Augmented_reeb_graph {
 
 namespace internal {
 /// \cond
+// Per key 0..n-1 (a sweep step) the values emitted with it, in emit order, in large arrays.
 template <class T>
 using Buckets = FeatureRecon::internal::Compressed_lists<T, FeatureRecon::internal::Large_array_allocator<T>>;
 /// \endcond
@@ -535,7 +536,7 @@ inline Reeb_graph Augmented_reeb_graph::reeb_graph() const {
     const unsigned t = type(v);
     if (t == regular) continue;
     node_of[v] = G.nodes.size();
-    G.nodes.push_back(Reeb_graph::Node{v, m_values[v], t});
+    G.nodes.push_back(Reeb_graph::Node{v, m_values[v], t, {}});
   }
   for (const Reeb_graph::Node& node : G.nodes) {
     for (std::size_t k = m_up_offset[node.vertex]; k < m_up_offset[node.vertex + 1]; ++k) {

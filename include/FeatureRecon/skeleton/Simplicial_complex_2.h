@@ -55,15 +55,15 @@ struct Simplicial_complex_2 : Proximity_graph {
 
 namespace internal {
 /// \cond
-// Sorts `keys` (all below 2^bits) into increasing order, stably, moving `payload` (null, or aligned with keys)
-// with them: least-significant-digit radix sort on 11-bit digits; a digit that every key shares is skipped.
-// O(bits / 11 * n), where a comparison sort of 10 million edges spends a second on this machine.
+// Sorts `keys` (all below 2^bits) into increasing order, stably, moving `payload` (aligned with keys) with them:
+// least-significant-digit radix sort on 11-bit digits; a digit that every key shares is skipped. O(bits / 11 n)
+// time, 2 n keys and payloads of memory.
 template <class Payload>
-void radix_sort(std::vector<std::uint64_t>& keys, std::vector<Payload>* payload, int bits) {
+void radix_sort(std::vector<std::uint64_t>& keys, std::vector<Payload>& payload, int bits) {
   constexpr int digit = 11;
   constexpr std::size_t buckets = std::size_t(1) << digit;
   std::vector<std::uint64_t> keys_out(keys.size());
-  std::vector<Payload> payload_out(payload != nullptr ? payload->size() : 0);
+  std::vector<Payload> payload_out(payload.size());
   std::vector<std::size_t> count(buckets);
   for (int shift = 0; shift < bits; shift += digit) {
     std::fill(count.begin(), count.end(), std::size_t(0));
@@ -74,27 +74,59 @@ void radix_sort(std::vector<std::uint64_t>& keys, std::vector<Payload>* payload,
     for (std::size_t i = 0; i < keys.size(); ++i) {
       const std::size_t at = count[(keys[i] >> shift) & (buckets - 1)]++;
       keys_out[at] = keys[i];
-      if (payload != nullptr) payload_out[at] = (*payload)[i];
+      payload_out[at] = payload[i];
     }
     keys.swap(keys_out);
-    if (payload != nullptr) payload->swap(payload_out);
+    payload.swap(payload_out);
   }
 }
 
+// Sorts [first, last) in place by key(e) = e[0] << b | e[1] (vertices below 2^b), the lexicographic order of the
+// pairs: most-significant-digit radix sort (American flag sort) on the 8-bit digit at `shift` and below, small
+// ranges by a comparison sort. O(b / 4 n) time and no memory beyond the edges.
+inline void flag_sort_edges(Edge* first, Edge* last, int b, int shift) {
+  auto key = [b](const Edge& e) { return (std::uint64_t(e[0]) << b) | e[1]; };
+  if (last - first < 64) {
+    std::sort(first, last, [&key](const Edge& x, const Edge& y) { return key(x) < key(y); });
+    return;
+  }
+  auto digit = [&key, shift](const Edge& e) { return static_cast<std::size_t>((key(e) >> shift) & 255); };
+  std::array<std::size_t, 257> start{};  // bucket d is [start[d], start[d + 1])
+  for (const Edge* e = first; e != last; ++e) ++start[digit(*e) + 1];
+  for (std::size_t d = 0; d < 256; ++d) start[d + 1] += start[d];
+  std::array<std::size_t, 256> next;
+  std::copy(start.begin(), start.end() - 1, next.begin());
+  for (std::size_t d = 0; d < 256; ++d)
+    while (next[d] < start[d + 1]) {  // place the edge at next[d], and the edges it displaces, until one is d's
+      Edge e = first[next[d]];
+      for (std::size_t de = digit(e); de != d; de = digit(e)) std::swap(e, first[next[de]++]);
+      first[next[d]++] = e;
+    }
+  if (shift == 0) return;
+  const int lower = shift >= 8 ? shift - 8 : 0;  // a last digit overlapping this one: equal bits in a bucket
+  for (std::size_t d = 0; d < 256; ++d)
+    if (start[d + 1] - start[d] > 1) flag_sort_edges(first + start[d], first + start[d + 1], b, lower);
+}
+
 // Sorts edges lexicographically and removes repetitions; with lengths (aligned with edges), each edge keeps the
-// length of its first occurrence. Large lists are radix-sorted on 64-bit keys (u << b | v for vertices below
-// 2^b): the same order as comparing the pairs.
+// length of its first occurrence. From 1024 edges on, by radix sorts on keys u << b | v (vertices below 2^b),
+// which order as the pairs do: in place without lengths, stable (on a copy of the keys) with them.
 inline void sort_unique_edges(std::vector<Edge>& edges, std::vector<double>* lengths) {
   const bool weighted = lengths != nullptr && !lengths->empty();
+  Vertex_index largest = 0;
+  for (const Edge& e : edges) largest = std::max({largest, e[0], e[1]});
+  int b = 1;
+  while (b < 32 && (largest >> b) != 0) ++b;
+  if (!weighted) {
+    if (edges.size() < 1024) std::sort(edges.begin(), edges.end());
+    else flag_sort_edges(edges.data(), edges.data() + edges.size(), b, 2 * b >= 8 ? 2 * b - 8 : 0);
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return;
+  }
   if (edges.size() < 1024) {
-    if (!weighted) {
-      std::sort(edges.begin(), edges.end());
-      edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-      return;
-    }
     std::vector<std::size_t> order(edges.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return edges[a] < edges[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return edges[a] < edges[c]; });
     std::vector<Edge> e;
     std::vector<double> l;
     for (const std::size_t i : order) {
@@ -106,31 +138,21 @@ inline void sort_unique_edges(std::vector<Edge>& edges, std::vector<double>* len
     lengths->swap(l);
     return;
   }
-  Vertex_index largest = 0;
-  for (const Edge& e : edges) largest = std::max({largest, e[0], e[1]});
-  int b = 1;
-  while (b < 32 && (largest >> b) != 0) ++b;
   std::vector<std::uint64_t> keys(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) keys[i] = (std::uint64_t(edges[i][0]) << b) | edges[i][1];
   const std::uint64_t low = (std::uint64_t(1) << b) - 1;
   edges = std::vector<Edge>();  // its memory is not needed while the keys are sorted
   std::size_t kept = 0;
-  if (!weighted) {
-    radix_sort<char>(keys, nullptr, 2 * b);
-    for (std::size_t i = 0; i < keys.size(); ++i)
-      if (i == 0 || keys[i] != keys[kept - 1]) keys[kept++] = keys[i];
-  } else {
-    std::vector<double> l = std::move(*lengths);
-    radix_sort(keys, &l, 2 * b);  // stable: the first occurrence of an edge comes first
-    for (std::size_t i = 0; i < keys.size(); ++i)
-      if (i == 0 || keys[i] != keys[kept - 1]) {
-        keys[kept] = keys[i];
-        l[kept++] = l[i];
-      }
-    l.resize(kept);
-    l.shrink_to_fit();
-    *lengths = std::move(l);
-  }
+  std::vector<double> l = std::move(*lengths);
+  radix_sort(keys, l, 2 * b);  // stable: the first occurrence of an edge comes first
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (i == 0 || keys[i] != keys[kept - 1]) {
+      keys[kept] = keys[i];
+      l[kept++] = l[i];
+    }
+  l.resize(kept);
+  l.shrink_to_fit();
+  *lengths = std::move(l);
   edges.resize(kept);
   for (std::size_t i = 0; i < kept; ++i)
     edges[i] = {static_cast<Vertex_index>(keys[i] >> b), static_cast<Vertex_index>(keys[i] & low)};

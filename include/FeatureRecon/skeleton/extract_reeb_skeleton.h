@@ -129,7 +129,7 @@ inline Skeleton_graph make_skeleton_graph(const Reeb_graph& G, const Reeb_graph_
     s.members.insert(s.members.end(), G.nodes[i].members.begin(), G.nodes[i].members.end());
   }
   for (std::size_t k = 0; k < G.arcs.size(); ++k)
-    add_edge(G.arcs[k].lower, G.arcs[k].upper, Skeleton_arc{E.arc_polylines[k], G.arcs[k].vertices}, g);
+    add_edge(G.arcs[k].lower, G.arcs[k].upper, Skeleton_arc{E.arc_polylines[k], G.arcs[k].vertices, {}}, g);
   return g;
 }
 

@@ -284,7 +284,6 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
   if (n > std::numeric_limits<Vertex_index>::max())
     FeatureRecon::internal::throw_invalid_argument(fn, "too many points (", n, ")");
   const std::size_t kk = std::min(k, n == 0 ? 0 : n - 1);
-  const std::size_t report_every = std::max<std::size_t>(1, n / 100);
   std::vector<std::uint32_t> cand;
   // Orders candidates j of point i by exact distance, then index.
   auto select = [&](std::size_t i) {

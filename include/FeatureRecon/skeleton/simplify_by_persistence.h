@@ -38,7 +38,6 @@ struct Simplification_complex {
   std::vector<Edge> edges;
   std::vector<Triangle> triangles;
 };
-
 /// \endcond
 }  // namespace internal
 
@@ -153,21 +152,13 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 
   // Node adjacency of R with arcs.
   const std::size_t nn = R.nodes.size();
-  Compressed_lists<std::pair<std::size_t, std::size_t>> adjacency;  // (other node, arc)
-  adjacency.build(nn, [&](auto emit) {
+  Compressed_lists<std::pair<std::size_t, std::size_t>> adj;  // (other node, arc)
+  adj.build(nn, [&](auto emit) {
     for (std::size_t k = 0; k < R.arcs.size(); ++k) {
       emit(R.arcs[k].lower, {R.arcs[k].upper, k});
       emit(R.arcs[k].upper, {R.arcs[k].lower, k});
     }
   });
-  auto adj = [&adjacency](std::size_t node) {  // the (other node, arc) pairs at a node, as a range
-    struct Range {
-      const std::pair<std::size_t, std::size_t>*first, *last;
-      const std::pair<std::size_t, std::size_t>* begin() const { return first; }
-      const std::pair<std::size_t, std::size_t>* end() const { return last; }
-    };
-    return Range{adjacency.begin(node), adjacency.end(node)};
-  };
   // Breadth-first search from `start` inside the nodes accepted by `inside`, not going on from the nodes
   // accepted by `stop` (the search ends at the first one, returned last); records the predecessor arcs in
   // `pred_arc` (valid for the nodes reached). Stamped arrays: a search costs the nodes it reaches, not nn.
@@ -182,7 +173,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     pred_arc[start] = none;
     if (stop(start)) return order;
     for (std::size_t i = 0; i < order.size(); ++i)
-      for (const auto& [y, arc] : adj(order[i]))
+      for (const auto& [y, arc] : adj[order[i]])
         if (seen_stamp[y] != stamp && inside(y)) {
           seen_stamp[y] = stamp;
           pred_arc[y] = arc;
@@ -261,9 +252,9 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (std::size_t k = 0; k < nn; ++k) {
       const std::size_t s = down ? k : nn - 1 - k;
       W.step[s] = k;
-      if (at_fork.size(s) != 0) {
+      if (!at_fork[s].empty()) {
         parts.clear();
-        for (const auto& [y, arc] : adj(s))
+        for (const auto& [y, arc] : adj[s])
           if (farther(y, s)) parts.push_back({W.find(y), arc});
         std::stable_sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.root < b.root; });
         parts.erase(std::unique(parts.begin(), parts.end(),
@@ -279,8 +270,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
             second = j;
           }
         }
-        for (const std::size_t* i_at = at_fork.begin(s); i_at != at_fork.end(s); ++i_at) {
-          const std::size_t i = *i_at;
+        for (const std::size_t i : at_fork[s]) {
           const std::size_t ce = W.find(pairs[i].birth_node);
           Branch_choice& c = choice[i];
           const auto own = std::lower_bound(parts.begin(), parts.end(), ce,
@@ -293,7 +283,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
           }
         }
       }
-      for (const auto& [y, arc] : adj(s)) {  // s joins the components beyond it
+      for (const auto& [y, arc] : adj[s]) {  // s joins the components beyond it
         if (!farther(y, s)) continue;
         std::size_t a = W.find(y), b = W.find(s);
         if (a == b) continue;
@@ -363,7 +353,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   // What the glued complex does not need goes before it is built.
   release(chain_items);
   release(chain_start);
-  release(adjacency);
+  release(adj);
   release(seen_stamp);
   release(pred);
   release(cycles);
@@ -467,31 +457,29 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   Reeb_graph& G = result.graph;
   std::vector<std::size_t> node_of(nc, none);
   for (std::size_t c = 0; c < nc; ++c) {
-    const unsigned t = node_type_from_degrees(down_degree[c], up.size(c));
+    const unsigned t = node_type_from_degrees(down_degree[c], up[c].size());
     if (t == regular || unused_class(c)) continue;
     node_of[c] = G.nodes.size();
     Reeb_graph::Node node;
     node.vertex = static_cast<Vertex_index>(rep[classes[c]]);
     node.value = val[classes[c]];
     node.type = t;
-    for (const Vertex_index* v = inputs_of.begin(c); v != inputs_of.end(c); ++v)
-      if (*v != node.vertex) node.members.push_back(*v);
-    node.members.insert(node.members.end(), off_level_of.begin(c), off_level_of.end(c));
+    for (const Vertex_index v : inputs_of[c])
+      if (v != node.vertex) node.members.push_back(v);
+    node.members.insert(node.members.end(), off_level_of[c].begin(), off_level_of[c].end());
     FEATURERECON_assertion(node.vertex < n);
     G.nodes.push_back(std::move(node));
   }
   for (std::size_t c = 0; c < nc; ++c) {
     if (node_of[c] == none) continue;
-    for (const Vertex_index* up_at = up.begin(c); up_at != up.end(c); ++up_at) {
-      std::size_t next = *up_at;
+    for (std::size_t next : up[c]) {
       Reeb_graph::Arc arc;
       arc.lower = node_of[c];
       std::vector<Vertex_index> below, above;  // off-level members of regular classes on the arc
       while (node_of[next] == none) {
-        arc.vertices.insert(arc.vertices.end(), inputs_of.begin(next), inputs_of.end(next));
-        for (const Vertex_index* v = off_level_of.begin(next); v != off_level_of.end(next); ++v)
-          (values[*v] < val[classes[next]] ? below : above).push_back(*v);
-        next = *up.begin(next);
+        arc.vertices.insert(arc.vertices.end(), inputs_of[next].begin(), inputs_of[next].end());
+        for (const Vertex_index v : off_level_of[next]) (values[v] < val[classes[next]] ? below : above).push_back(v);
+        next = up[next].front();
       }
       arc.upper = node_of[next];
       G.nodes[arc.lower].members.insert(G.nodes[arc.lower].members.end(), below.begin(), below.end());
