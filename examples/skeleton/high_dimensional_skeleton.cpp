@@ -42,7 +42,10 @@ using Vec = std::vector<double>;
 Vec unit(Gaussian& g) {
   Vec v(D);
   double n = 0;
-  for (double& x : v) n += (x = g()) * x;
+  for (double& x : v) {
+    x = g();
+    n += x * x;
+  }
   for (double& x : v) x /= std::sqrt(n);
   return v;
 }

@@ -150,8 +150,9 @@ TEST(BilateralDartThrowing, TargetCountWithTheExponentialForm) {
     for (std::size_t a = 0; a < kept.size(); ++a)
       for (std::size_t b = a + 1; b < kept.size(); ++b) {
         const Grey_pixel &x = pixels[kept[a]], &y = pixels[kept[b]];
-        if (x.value == y.value)
+        if (x.value == y.value) {
           ASSERT_GE(std::hypot(x.column - y.column, x.row - y.row) / o.darts.sigma_position, r.radius * (1 - 1e-12));
+        }
       }
   }
 }

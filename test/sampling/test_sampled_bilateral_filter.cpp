@@ -144,13 +144,17 @@ TEST(SampledBilateralFilter, GlobalPatternIsPoissonDiskInTheBilateralDistance) {
     for (std::size_t i = 0; i < p.pixels.size(); ++i) {
       // Each tap reads the pixel it lies in, taps sorted by pixel.
       EXPECT_EQ(p.pixels[i], std::uint32_t(p.positions[i][1]) * 36u + std::uint32_t(p.positions[i][0]));
-      if (i > 0) EXPECT_LE(p.pixels[i - 1], p.pixels[i]);
+      if (i > 0) {
+        EXPECT_LE(p.pixels[i - 1], p.pixels[i]);
+      }
       for (std::size_t j = 0; j < i; ++j) {
         const double dx = p.positions[i][0] - p.positions[j][0], dy = p.positions[i][1] - p.positions[j][1];
         const double di = double(d[p.pixels[i]]) - double(d[p.pixels[j]]);
         EXPECT_GE(dx * dx + dy * dy + f * di * di, p.radius * p.radius) << i << " " << j;
       }
-      if (s == Tap_sampling::uniform) EXPECT_EQ(p.weights[i], 1.0f);
+      if (s == Tap_sampling::uniform) {
+        EXPECT_EQ(p.weights[i], 1.0f);
+      }
       EXPECT_GT(p.weights[i], 0.0f);
       EXPECT_LE(p.weights[i], 1.0f);
     }

@@ -216,7 +216,7 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   EXPECT_EQ(merge_close_branch_nodes(leafy.graph, leafy.points, 0.1).merged, 1u);  // only the fork-fork arc
   // A short loop stays a loop: a second arc between the forks keeps both.
   Crossing loop;
-  add_edge(2, 3, Skeleton_arc{{{0, -0.05, 0}, {0.01, 0, 0}, {0, 0.05, 0}}, {}}, loop.graph);
+  add_edge(2, 3, Skeleton_arc{{{0, -0.05, 0}, {0.01, 0, 0}, {0, 0.05, 0}}, {}, {}}, loop.graph);
   const Branch_node_merge_result kept = merge_close_branch_nodes(loop.graph, loop.points, 0.2);
   EXPECT_EQ(kept.merged, 0u);
   EXPECT_EQ(num_edges(kept.graph), 6u);
@@ -239,7 +239,7 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   // An arc between two nodes of one value, nothing merged: copied as it is, not turned round by index.
   Skeleton_graph level(2);
   level[0].type = level[1].type = minimum | maximum;
-  add_edge(1, 0, Skeleton_arc{{{1, 0, 0}, {0, 0, 0}}, {}}, level);
+  add_edge(1, 0, Skeleton_arc{{{1, 0, 0}, {0, 0, 0}}, {}, {}}, level);
   const Branch_node_merge_result kept_level = merge_close_branch_nodes(level, x.points, 1.0);
   const auto e = *edges(kept_level.graph).first;
   EXPECT_EQ(source(e, kept_level.graph), 1u);
@@ -274,7 +274,7 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
     g[v].members = {static_cast<Vertex_index>(v)};
   }
   auto arc = [&](Skeleton_graph& h, std::size_t a, std::size_t b) {
-    add_edge(a, b, Skeleton_arc{{h[a].position, h[b].position}, {}}, h);
+    add_edge(a, b, Skeleton_arc{{h[a].position, h[b].position}, {}, {}}, h);
   };
   for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 3}, {3, 5}, {3, 4}, {4, 6}, {4, 7}})
     arc(g, a, b);

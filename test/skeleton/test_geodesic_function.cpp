@@ -58,7 +58,9 @@ TEST(GeodesicFunction, MatchesAllPairsOracleWithFarthestBase) {
         if (cc.label[v] == c && d[start][v] > d[start][base]) base = v;
       EXPECT_EQ(r.base_points[c], base) << "seed " << seed << " component " << c;
       for (std::size_t v = 0; v < g.number_of_vertices; ++v)
-        if (cc.label[v] == c) EXPECT_DOUBLE_EQ(r.values[v], d[base][v]);
+        if (cc.label[v] == c) {
+          EXPECT_DOUBLE_EQ(r.values[v], d[base][v]);
+        }
     }
   }
 }

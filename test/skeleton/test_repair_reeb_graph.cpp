@@ -228,7 +228,9 @@ TEST(ConnectDeadEnds, ClosesATJunctionGap) {
     }
   }
   for (std::size_t i = 0; i < G.nodes.size(); ++i) {
-    if (i > 0) EXPECT_LE(G.nodes[i - 1].value, G.nodes[i].value);
+    if (i > 0) {
+      EXPECT_LE(G.nodes[i - 1].value, G.nodes[i].value);
+    }
     if (degree[i] == 3) {
       ++degree_three;
       EXPECT_EQ(G.nodes[i].vertex, 5u);

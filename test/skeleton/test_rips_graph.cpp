@@ -318,8 +318,8 @@ TEST(RipsGraph, KernelsAndUserPointTypes) {
   };
   struct My_traits {
     using Point = My_point;
-    std::size_t dimension(const My_point&) const { return 3; }
-    double coordinate(const My_point& p, std::size_t i) const { return p.xyz[i]; }
+    std::size_t dimension(const Point&) const { return 3; }
+    double coordinate(const Point& p, std::size_t i) const { return p.xyz[i]; }
   };
   std::vector<My_point> mine;
   Coords as_float;
@@ -514,7 +514,9 @@ TEST(MakeSimplicialComplex, EdgeOrderAndFirstLengthsOnBothSortPaths) {
         ++i;
       }
       EXPECT_TRUE(is_canonical(weighted));
-      if (m >= 1024 && n == 40) EXPECT_LT(first.size(), m);  // the radix path met repetitions (780 edges exist)
+      if (m >= 1024 && n == 40) {  // the radix path met repetitions (780 edges exist)
+        EXPECT_LT(first.size(), m);
+      }
     }
   }
 }

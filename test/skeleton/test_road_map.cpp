@@ -270,7 +270,9 @@ TEST(MergeRoadLines, TwoDirectionsOfAStreetBecomeOneLineInTheMiddle) {
     for (const auto& p : r.map.positions) {
       EXPECT_GE(p[1], -1e-9);
       EXPECT_LE(p[1], 4 + 1e-9);
-      if (p[0] > 20 && p[0] < 280) EXPECT_NEAR(p[1], 2.0, 1.0) << p[0];
+      if (p[0] > 20 && p[0] < 280) {
+        EXPECT_NEAR(p[1], 2.0, 1.0) << p[0];
+      }
       EXPECT_GE(p[0], -1e-9);
       EXPECT_LE(p[0], 300 + 1e-9);
     }
@@ -299,7 +301,9 @@ TEST(MergeRoadLines, AMapWithVerticesCentimetresApartIsThinnedFirst) {
   EXPECT_NEAR(r.length_after, sparse.length_after, 5);
   EXPECT_NEAR(r.length_before, 600, 1e-6);
   for (const auto& p : r.map.positions)
-    if (p[0] > 20 && p[0] < 280) EXPECT_NEAR(p[1], 2.0, 1.0) << p[0];
+    if (p[0] > 20 && p[0] < 280) {
+      EXPECT_NEAR(p[1], 2.0, 1.0) << p[0];
+    }
 }
 
 // Chains of degree-2 vertices keep a vertex every `min_step` along them; junctions, ends and isolated vertices
@@ -736,7 +740,9 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
       bent += off > 1;
       const std::array<double, 2> mid{(P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2};
       for (Vertex_index w = 0; w < n; ++w)
-        if (w != a && w != b) EXPECT_GT(std::hypot(P[w][0] - mid[0], P[w][1] - mid[1]), L / 2) << a << "-" << b;
+        if (w != a && w != b) {
+          EXPECT_GT(std::hypot(P[w][0] - mid[0], P[w][1] - mid[1]), L / 2) << a << "-" << b;
+        }
     }
   EXPECT_GT(streets, n);            // more streets than a tree
   EXPECT_GT(bent, streets / 2);     // most streets bend
