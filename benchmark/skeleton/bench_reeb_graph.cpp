@@ -3,9 +3,13 @@
 // Augmented Reeb graph build: FeatureRecon vs VTK's vtkReebGraph (triangles only) on the same complexes:
 // upright torus grids with a tilted height (100k, 400k, 4M triangles) and the Rips complex of the first
 // 30,000 Chicago GPS points at r = 12 m with the geodesic function.
+// Simplification beside the Reeb graph it starts from, on a comb of 1,000,000 vertices (a path with a spur at every
+// vertex, f rising along the path; delta 2 removes all 500,000 spurs): no library simplifies Reeb graphs, so the
+// peer is our own Reeb graph of the same input.
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
+#include <FeatureRecon/skeleton/simplify_by_persistence.h>
 
 #include <benchmark/benchmark.h>
 
@@ -46,6 +50,16 @@ const Input& input(const std::string& name) {
     slot->complex = sk::build_rips_complex_2(points, 12.0);
     slot->f = sk::compute_geodesic_function(slot->complex).values;
     for (const auto& p : points) slot->positions.push_back({p[0], p[1], 0.0});
+  } else if (name == "comb1M") {
+    const std::size_t k = 500000;
+    std::vector<sk::Edge> edges;
+    for (std::size_t i = 0; i < k; ++i) {
+      slot->f.push_back(2.0 * static_cast<double>(i));  // the path
+      edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(k + i)});
+      if (i + 1 < k) edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(i + 1)});
+    }
+    for (std::size_t i = 0; i < k; ++i) slot->f.push_back(2.0 * static_cast<double>(i) + 1.5);  // spur tips
+    slot->complex = sk::make_simplicial_complex_2(2 * k, std::move(edges), {});
   } else {
     const std::size_t kt = std::stoul(name.substr(5));  // "torusN": N thousand triangles
     const std::size_t nu = kt == 100 ? 250 : kt == 400 ? 500 : 2000, nv = kt == 100 ? 200 : kt == 400 ? 400 : 1000;
@@ -74,6 +88,18 @@ void BM_reeb_featurerecon(benchmark::State& state, const std::string& name) {
     benchmark::DoNotOptimize(R);
   }
   report(state, in, R.nodes.size(), R.arcs.size(), R.loops());
+}
+
+void BM_simplify_featurerecon(benchmark::State& state, const std::string& name) {
+  const Input& in = input(name);
+  sk::Reeb_simplification_result S;
+  for (auto _ : state) {
+    const sk::Augmented_reeb_graph A = sk::compute_augmented_reeb_graph(in.complex, in.f);
+    S = sk::simplify_by_persistence(A, 2.0);
+    benchmark::DoNotOptimize(S);
+  }
+  state.counters["removed_branches"] = static_cast<double>(S.removed_branches);
+  report(state, in, S.graph.nodes.size(), S.graph.arcs.size(), S.graph.loops());
 }
 
 #ifdef FEATURERECON_WITH_VTK
@@ -124,14 +150,21 @@ void BM_reeb_vtk(benchmark::State& state, const std::string& name) {
 #endif
 
 void register_all() {
-  for (const std::string name : {"torus100", "torus400", "torus4000", "chicago30k"}) {
+  for (const std::string name : {"torus100", "torus400", "torus4000", "chicago30k", "comb1M"}) {
     // At least 3 calls each: the first call on a large complex also pays the kernel's huge-page set-up.
     auto* b = benchmark::RegisterBenchmark(("reeb/featurerecon/" + name).c_str(), BM_reeb_featurerecon, name);
     b->Unit(benchmark::kMillisecond)->UseRealTime();
-    if (name == "torus4000" || name == "chicago30k")
+    if (name == "torus4000" || name == "chicago30k" || name == "comb1M")
       b->Iterations(3);
     else
       b->MinTime(2.0);
+    if (name == "comb1M") {  // the simplification of the same input, Reeb graph included; VTK needs triangles
+      benchmark::RegisterBenchmark("simplify/featurerecon/comb1M", BM_simplify_featurerecon, name)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(3);
+      continue;
+    }
 #ifdef FEATURERECON_WITH_VTK
     if (name != "torus4000")  // hours with VTK
       benchmark::RegisterBenchmark(("reeb/vtk/" + name).c_str(), BM_reeb_vtk, name)
