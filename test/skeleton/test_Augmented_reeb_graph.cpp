@@ -301,9 +301,31 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("edge (0, 2)"), std::string::npos) << e.what();
   }
+  // A complex out of canonical order: the message names the first simplex out of order or range.
+  auto message = [&](const Simplicial_complex_2& k) -> std::string {
+    try {
+      compute_augmented_reeb_graph(k, c.f);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "(no exception)";
+  };
   bad = c.complex;
   std::swap(bad.edges[0], bad.edges[1]);  // unsorted
-  EXPECT_THROW(compute_augmented_reeb_graph(bad, c.f), std::invalid_argument);
+  EXPECT_NE(message(bad).find("not canonical: edge 1 ("), std::string::npos) << message(bad);
+  bad = c.complex;
+  bad.edges[2] = {bad.edges[2][1], bad.edges[2][0]};
+  EXPECT_NE(message(bad).find("edge 2 ("), std::string::npos) << message(bad);
+  EXPECT_NE(message(bad).find("is not in increasing order"), std::string::npos) << message(bad);
+  bad = c.complex;
+  bad.edges.back()[1] = 9;
+  EXPECT_NE(message(bad).find("has a vertex beyond the 6 vertices"), std::string::npos) << message(bad);
+  bad = c.complex;
+  bad.triangles = {{0, 1, 2}, {0, 1, 2}};
+  EXPECT_NE(message(bad).find("triangle 1 (0, 1, 2) is not after triangle 0"), std::string::npos) << message(bad);
+  bad.triangles = {{1, 0, 2}};
+  EXPECT_NE(message(bad).find("triangle 0 (1, 0, 2) is not in increasing order"), std::string::npos)
+      << message(bad);
   // Builder errors name the simplex.
   try {
     make_simplicial_complex_2(3, {{0, 1}, {1, 7}}, {});

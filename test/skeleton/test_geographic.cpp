@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -75,6 +76,21 @@ TEST(TransverseMercator, OriginLatitudeShiftsNorthingOnly) {
   const auto a = at_equator.forward(-87.65, 41.88), b = at_chicago.forward(-87.65, 41.88);
   EXPECT_NEAR(a[0], b[0], 1e-9);
   EXPECT_NEAR(a[1] - b[1], at_equator.forward(-87, 41.87)[1], 1e-6);
+}
+
+TEST(TransverseMercator, ForwardRefusesPointsOffTheSphere) {
+  const Transverse_mercator p{-87, 0};
+  for (const auto& [lon, lat] : {std::pair{10.0, 95.0}, std::pair{10.0, -90.5}, std::pair{10.0, std::nan("")},
+                                 std::pair{HUGE_VAL, 10.0}, std::pair{std::nan(""), 10.0}}) {
+    try {
+      (void)p.forward(lon, lat);
+      ADD_FAILURE() << lon << " " << lat << " was projected";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("Transverse_mercator::forward: longitude"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(std::isfinite(p.forward(-87, 90)[1]));  // the poles are on it
+  EXPECT_TRUE(std::isfinite(p.forward(-87, -90)[1]));
 }
 
 // Scale 1 on the central meridian: a short step north there is the meridian arc M(phi) d(phi).

@@ -370,6 +370,39 @@ TEST(GpsTraces, DegenerateAndBadInput) {
     EXPECT_NE(std::string(e.what()).find("trip 0, fix 1 at (1e+20, 0) lies more than 2^50 times"), std::string::npos)
         << e.what();
   }
+  // Each option is named with its value; a density radius so small that position / radius overflows the density
+  // filter's grid cells is refused like a small spacing (it ran into undefined behaviour before), and only when
+  // that filter is on.
+  auto message = [](const Gps_trace_options& o) -> std::string {
+    try {
+      sample_gps_traces({{{0, 0, 0}, {100, 0, 1}, {200, 0, 2}}}, 10.0, o);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "(no exception)";
+  };
+  EXPECT_NE(message(bad).find("sample_spacing must be finite and >= 0 (0: automatic), got -1"), std::string::npos);
+  bad = {};
+  bad.max_link_gap = std::numeric_limits<double>::infinity();
+  EXPECT_NE(message(bad).find("max_link_gap must be finite"), std::string::npos) << message(bad);
+  bad = {};
+  bad.heading_tolerance = -2;
+  EXPECT_NE(message(bad).find("heading_tolerance must be >= 0 degrees, got -2"), std::string::npos);
+  for (const double r : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    bad = {};
+    bad.density_radius = r;
+    EXPECT_NE(message(bad).find("density_radius must be finite and >= 0"), std::string::npos) << r;
+  }
+  bad = {};
+  bad.density_radius = 1e-300;
+  EXPECT_EQ(message(bad), "(no exception)");  // the density filter is off
+  bad.min_relative_density = 0.1;
+  EXPECT_NE(message(bad).find("trip 0, fix 1 at (100, 0) lies more than 2^50 times the sample spacing, radius or "
+                              "density radius (1e-300)"),
+            std::string::npos)
+      << message(bad);
+  bad.density_radius = 1;
+  EXPECT_EQ(message(bad), "(no exception)");
 }
 
 TEST(GpsTraces, SkeletonOfABlock) {

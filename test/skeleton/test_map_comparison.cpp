@@ -321,6 +321,12 @@ TEST(TraceSupport, PinnedCases) {
   EXPECT_EQ(along({trip_of({{-1e9, 0}, {1e9, 3}})}), 1u);
   EXPECT_EQ(along({trip_of({{-1e12, -1e12}, {1e12, -1e12}})}), 0u);
   EXPECT_EQ(along({trip_of({{-1e150, 0}, {1e150, 1}})}), 1u);
+  // Segments whose length overflows a double (b - a or its square): counted where they pass, in bounded time.
+  EXPECT_EQ(along({trip_of({{-1e200, 0}, {1e200, 0}})}), 1u);
+  EXPECT_EQ(along({trip_of({{-1e308, 5}, {1.7e308, 5}})}), 1u);
+  EXPECT_EQ(along({trip_of({{-1e308, 16}, {1.7e308, 16}})}), 0u);
+  EXPECT_EQ(along({trip_of({{1e155, 0}, {0, 0}})}), 1u);  // the walk from the far end stops at the samples' box
+  EXPECT_EQ(along({trip_of({{1e155, 0}, {15.5, 0}})}), 0u);
   EXPECT_TRUE(count_trips_along({}, {trip_of({{0, 0}, {1, 1}})}).empty());
   // Fixes are read by time, as sample_gps_traces() reads them, not in storage order: stored along the street
   // but driven through (0, 100) in between, the trip does not drive along the sample; stored through (0, 100)
@@ -378,6 +384,25 @@ TEST(TraceSupport, AgreesWithBruteForce) {
   }
   EXPECT_GT(supported, 20u);  // not vacuous
   EXPECT_GT(multiple, 2u);
+}
+
+TEST(TraceSupport, LongSegmentsAndTinyRadiiStayBounded) {
+  // 1001 samples along an east-west street from x = 0 to 1000, and trips along it whose walk over the grid would
+  // be long (a far-off fix, a radius of a millimetre or a micrometre): every sample is counted, quickly, by
+  // the grid walk or by a scan of the samples, whichever is shorter.
+  std::vector<Map_sample> s;
+  for (int i = 0; i <= 1000; ++i) s.push_back(sample_at(i, 0, 90));
+  for (const double radius : {15.0, 1e-3, 1e-6})
+    for (const auto& ends : {std::array<double, 4>{1e155, 0, 0, 0}, std::array<double, 4>{-1e300, 0, 1e300, 0},
+                             std::array<double, 4>{-10, 0, 1010, 0}, std::array<double, 4>{-10, 0, 500, 0}}) {
+      Trace_support_options o;
+      o.radius = radius;
+      const std::vector<std::size_t> c = count_trips_along(s, {trip_of({{ends[0], ends[1]}, {ends[2], ends[3]}})}, o);
+      const std::size_t hit = static_cast<std::size_t>(std::count(c.begin(), c.end(), std::size_t(1)));
+      const std::size_t expected = ends[2] != 500 ? 1001 : radius == 15 ? 516 : 501;  // x <= 500 + radius
+      EXPECT_EQ(hit, expected) << radius << " " << ends[0] << " " << ends[2];
+      EXPECT_EQ(static_cast<std::size_t>(std::count(c.begin(), c.end(), std::size_t(0))), 1001 - expected);
+    }
 }
 
 TEST(TraceSupport, SplitsAComparisonByTheTripsAlongItsSamples) {

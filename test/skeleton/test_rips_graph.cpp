@@ -446,6 +446,51 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   EXPECT_EQ(calls, 1);
 }
 
+TEST(RipsComplex, ProgressCoversBothStagesAndAStopEndsBoth) {
+  // A 30 x 30 grid at radius 1.5 (diagonals in): the graph stage reports up to 0.5, the triangles up to 1, in
+  // order; a stop in the graph stage builds no triangle and asks nothing more; the builders of graphs do not
+  // report 1 after a stop (they did).
+  Coords grid;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) grid.push_back({double(i), double(j)});
+  const Simplicial_complex_2 plain = build_rips_complex_2(grid, 1.5);
+  ASSERT_GT(plain.number_of_triangles(), 0u);
+  std::vector<double> seen;
+  Proximity_graph_options o;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const Simplicial_complex_2 watched = build_rips_complex_2(grid, 1.5, o);
+  EXPECT_EQ(watched.edges, plain.edges);
+  EXPECT_EQ(watched.triangles, plain.triangles);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::count(seen.begin(), seen.end(), 0.5) >= 1);  // the graph's end, the triangles' start
+  EXPECT_GT(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0 && t < 0.5; }), 10);
+  EXPECT_GT(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.5 && t < 1; }), 10);
+  for (const Neighbor_search search : {Neighbor_search::kd_tree, Neighbor_search::brute_force}) {
+    std::vector<double> after_stop;
+    bool refused = false;
+    o.search = search;
+    o.progress = [&](double t) {
+      if (refused) after_stop.push_back(t);
+      refused = refused || t >= 0.25;
+      return t < 0.25;
+    };
+    const Simplicial_complex_2 stopped = build_rips_complex_2(grid, 1.5, o);
+    EXPECT_TRUE(stopped.triangles.empty());
+    EXPECT_LT(stopped.number_of_edges(), plain.number_of_edges());
+    EXPECT_TRUE(after_stop.empty()) << after_stop.front();
+    after_stop.clear();
+    refused = false;
+    (void)build_knn_graph(grid, 4, o);
+    EXPECT_TRUE(after_stop.empty()) << after_stop.front();
+  }
+}
+
 TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
   auto problem = [](std::size_t n, std::vector<Edge> edges, std::vector<double> lengths = {}) {
     Proximity_graph g;

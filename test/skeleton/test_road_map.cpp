@@ -201,7 +201,9 @@ TEST(RoadMap, ProgressIsMonotoneAndCancelStops) {
   EXPECT_EQ(seen.back(), 1.0);
   for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]);
   EXPECT_EQ(m.map.positions, extract_road_map(city.trips).map.positions);
-  for (const double stop_at : {0.0, 0.05, 0.15, 0.3, 0.4, 0.95}) {
+  // The neighbourhood graph reports between 0.1 and 0.15, and a stop there ends the pipeline.
+  EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.1 && t < 0.15; }));
+  for (const double stop_at : {0.0, 0.05, 0.12, 0.15, 0.3, 0.4, 0.95}) {
     o.progress = [stop_at](double t) { return t < stop_at; };
     const Road_map c = extract_road_map(city.trips, o);
     EXPECT_EQ(c.status, Status::interrupted) << stop_at;
@@ -518,6 +520,26 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   bad = street;
   bad.positions[5][1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { merge_road_lines(bad); }).find("vertex 5"), std::string::npos);
+  // A far-off vertex: an edge of 2e9 m would be sampled every 2 m (a billion points), one of 2e308 m overflows.
+  // Both are refused before any sampling, naming the edge; max_samples 0 lifts the limit.
+  bad = street;
+  bad.positions[5] = {1e9, 0};
+  bad.positions[6] = {-1e9, 0};
+  bad.edges.push_back({5, 6});
+  std::string far = message_of([&] { merge_road_lines(bad); });
+  EXPECT_NE(far.find("more than max_samples (67108864); the longest edge, from (1e+09, 0) to (-1e+09, 0), is 2e+09"),
+            std::string::npos) << far;
+  o = {};
+  o.spacing = 1e5;
+  EXPECT_EQ(merge_road_lines(bad, o).status, Status::success);  // 20,000 samples
+  o.spacing = 100;
+  o.max_samples = 1000;
+  EXPECT_NE(message_of([&] { merge_road_lines(bad, o); }).find("max_samples (1000)"), std::string::npos);
+  bad.positions[5] = {1e308, 0};
+  bad.positions[6] = {-1e308, 0};
+  far = message_of([&] { merge_road_lines(bad); });
+  EXPECT_NE(far.find("the edge from (1e+308, 0) to (-1e+308, 0) has a length that overflows"), std::string::npos)
+      << far;
   for (const double stop_at : {0.0, 0.2, 0.5}) {
     o = {};
     o.progress = [stop_at](double t) { return t < stop_at; };

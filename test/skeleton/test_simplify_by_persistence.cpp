@@ -441,3 +441,32 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
     }
   }
 }
+
+TEST(SimplifyByPersistence, RefusesAnInterruptedAugmentedGraph) {
+  // A path stopped half way has half its arcs: simplifying that partial graph would report success on a graph of
+  // thousands of components. Refused, naming the argument; the complete graph simplifies to one arc.
+  const std::size_t n = 8192;
+  std::vector<Edge> edges;
+  std::vector<double> f(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f[i] = static_cast<double>(i);
+    if (i + 1 < n) edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(i + 1)});
+  }
+  const auto g = make(n, edges, {}, f);
+  Reeb_graph_options stop;
+  stop.progress = [](double t) { return t < 0.4; };
+  const Augmented_reeb_graph partial = compute_augmented_reeb_graph(g.complex, g.f, stop);
+  ASSERT_EQ(partial.status(), Status::interrupted);
+  ASSERT_LT(partial.number_of_arcs(), n - 1);
+  try {
+    (void)simplify_by_persistence(partial, 1.0);
+    ADD_FAILURE() << "an interrupted graph was simplified";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("augmented Reeb graph A is incomplete"), std::string::npos) << e.what();
+  }
+  const Reeb_simplification_result S = simplify_by_persistence(compute_augmented_reeb_graph(g.complex, g.f), 1.0);
+  EXPECT_EQ(S.status, Status::success);
+  EXPECT_EQ(S.graph.nodes.size(), 2u);
+  EXPECT_EQ(S.graph.arcs.size(), 1u);
+  EXPECT_EQ(S.graph.components, 1u);
+}

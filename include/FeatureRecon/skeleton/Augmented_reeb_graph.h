@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace FeatureRecon {
@@ -116,12 +117,14 @@ class Augmented_reeb_graph {
   /// Number of arcs below the image of v.
   std::size_t down_degree(Vertex_index v) const { return m_down_degree[v]; }
   /// Number of arcs above the image of v.
-  std::size_t up_degree(Vertex_index v) const { return m_up_offset[v + 1] - m_up_offset[v]; }
+  std::size_t up_degree(Vertex_index v) const { return m_up_offset[m_rank[v] + 1] - m_up_offset[m_rank[v]]; }
   /// Node_type flags of the image of v.
   unsigned type(Vertex_index v) const { return node_type_from_degrees(down_degree(v), up_degree(v)); }
-  /// Indices into arcs() of the arcs leaving v upwards.
+  /// Indices into arcs() of the arcs leaving v upwards (consecutive: arcs() is sorted by its lower ends' ranks).
   std::vector<std::size_t> up_arcs(Vertex_index v) const {
-    return std::vector<std::size_t>(m_up_arcs.begin() + m_up_offset[v], m_up_arcs.begin() + m_up_offset[v + 1]);
+    std::vector<std::size_t> k(up_degree(v));
+    std::iota(k.begin(), k.end(), m_up_offset[m_rank[v]]);
+    return k;
   }
   /// Completed, interrupted by the progress callback (arcs still open are missing), or degenerate (empty input).
   Status status() const { return m_status; }
@@ -139,7 +142,7 @@ class Augmented_reeb_graph {
   std::vector<Vertex_index> m_order, m_rank;
   std::vector<Arc> m_arcs;
   std::vector<std::uint32_t> m_down_degree;
-  std::vector<std::size_t> m_up_offset, m_up_arcs;
+  std::vector<std::size_t> m_up_offset;  // by rank r: the arcs whose lower end has rank r, [m_up_offset[r], [r + 1])
   Status m_status = Status::success;
 };
 
@@ -181,10 +184,9 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   if (static_cast<std::size_t>(std::distance(std::begin(f), std::end(f))) != n)
     FeatureRecon::internal::throw_invalid_argument(fn, "f has ", std::distance(std::begin(f), std::end(f)),
                                                    " values for ", n, " vertices");
-  if (!internal::has_canonical_order(K))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "the complex is not canonical (unsorted, repeated or out-of-range simplices); build it with "
-            "make_simplicial_complex_2()");
+  if (const std::string problem = internal::canonical_order_problem(K); !problem.empty())
+    FeatureRecon::internal::throw_invalid_argument(fn, "the complex is not canonical: ", problem,
+                                                   "; build it with make_simplicial_complex_2()");
   // 32-bit indices: the link-cut forest has 2E nodes; arcs and triangles are counted in int32 too.
   const std::size_t index_limit = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
   if (K.number_of_edges() + K.number_of_triangles() >= index_limit || 2 * K.number_of_edges() >= index_limit ||
@@ -499,12 +501,9 @@ inline void Augmented_reeb_graph::finish() {
   m_up_offset.assign(n + 1, 0);
   for (const Arc& a : m_arcs) {
     ++m_down_degree[a.upper];
-    ++m_up_offset[a.lower + 1];
+    ++m_up_offset[m_rank[a.lower] + 1];
   }
-  for (std::size_t v = 0; v < n; ++v) m_up_offset[v + 1] += m_up_offset[v];
-  m_up_arcs.resize(m_arcs.size());
-  std::vector<std::size_t> fill(m_up_offset.begin(), m_up_offset.end() - 1);
-  for (std::size_t i = 0; i < m_arcs.size(); ++i) m_up_arcs[fill[m_arcs[i].lower]++] = i;
+  for (std::size_t r = 0; r < n; ++r) m_up_offset[r + 1] += m_up_offset[r];
 }
 
 namespace internal {
@@ -539,13 +538,14 @@ inline Reeb_graph Augmented_reeb_graph::reeb_graph() const {
     G.nodes.push_back(Reeb_graph::Node{v, m_values[v], t, {}});
   }
   for (const Reeb_graph::Node& node : G.nodes) {
-    for (std::size_t k = m_up_offset[node.vertex]; k < m_up_offset[node.vertex + 1]; ++k) {
+    const std::size_t r = m_rank[node.vertex];
+    for (std::size_t k = m_up_offset[r]; k < m_up_offset[r + 1]; ++k) {
       Reeb_graph::Arc arc;
       arc.lower = node_of[node.vertex];
-      Vertex_index w = m_arcs[m_up_arcs[k]].upper;
+      Vertex_index w = m_arcs[k].upper;
       while (type(w) == regular) {
         arc.vertices.push_back(w);
-        w = m_arcs[m_up_arcs[m_up_offset[w]]].upper;
+        w = m_arcs[m_up_offset[m_rank[w]]].upper;
       }
       arc.upper = node_of[w];
       G.arcs.push_back(std::move(arc));

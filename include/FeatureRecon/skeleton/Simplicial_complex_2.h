@@ -219,8 +219,9 @@ inline Simplicial_complex_2 make_simplicial_complex_2(std::size_t number_of_vert
 }
 
 namespace internal {
-/// The first way in which `g` is not canonical, in words naming the edge ("" when it is canonical).
-inline std::string canonical_form_problem(const Proximity_graph& g) {
+/// The first way in which `g` is not canonical, in words naming the edge ("" when it is canonical); with
+/// `check_lengths` false, only the number of lengths is checked, not their values.
+inline std::string canonical_form_problem(const Proximity_graph& g, bool check_lengths = true) {
   std::ostringstream os;
   if (!g.edge_lengths.empty() && g.edge_lengths.size() != g.edges.size()) {
     os << "edge_lengths has " << g.edge_lengths.size() << " values for " << g.edges.size() << " edges";
@@ -229,7 +230,8 @@ inline std::string canonical_form_problem(const Proximity_graph& g) {
   for (std::size_t i = 0; i < g.edges.size(); ++i) {
     const Edge& e = g.edges[i];
     const bool in_order = e[0] < e[1] && e[1] < g.number_of_vertices && (i == 0 || g.edges[i - 1] < e);
-    if (in_order && (g.edge_lengths.empty() || (std::isfinite(g.edge_lengths[i]) && g.edge_lengths[i] >= 0)))
+    if (in_order && (!check_lengths || g.edge_lengths.empty() ||
+                     (std::isfinite(g.edge_lengths[i]) && g.edge_lengths[i] >= 0)))
       continue;
     os << "edge " << i << " (" << e[0] << ", " << e[1] << ")";
     if (std::max(e[0], e[1]) >= g.number_of_vertices)
@@ -265,21 +267,24 @@ inline bool is_canonical(const Simplicial_complex_2& k) {
 }
 
 namespace internal {
-/// The O(m) part of is_canonical(): sorted, unique, in-range simplices (not that triangles' edges exist).
-inline bool has_canonical_order(const Simplicial_complex_2& k) {
-  const Proximity_graph& g = k;
-  if (!g.edge_lengths.empty() && g.edge_lengths.size() != g.edges.size()) return false;
-  for (std::size_t i = 0; i < g.edges.size(); ++i) {
-    const Edge& e = g.edges[i];
-    if (!(e[0] < e[1] && e[1] < g.number_of_vertices)) return false;
-    if (i > 0 && !(g.edges[i - 1] < e)) return false;
-  }
+/// The O(m) part of is_canonical(): sorted, unique, in-range simplices (not that triangles' edges exist). The
+/// first simplex out of order or range, in words ("" when there is none).
+inline std::string canonical_order_problem(const Simplicial_complex_2& k) {
+  if (std::string edges = canonical_form_problem(k, false); !edges.empty()) return edges;
+  std::ostringstream os;
   for (std::size_t i = 0; i < k.triangles.size(); ++i) {
     const Triangle& t = k.triangles[i];
-    if (!(t[0] < t[1] && t[1] < t[2] && t[2] < k.number_of_vertices)) return false;
-    if (i > 0 && !(k.triangles[i - 1] < t)) return false;
+    if (t[0] < t[1] && t[1] < t[2] && t[2] < k.number_of_vertices && (i == 0 || k.triangles[i - 1] < t)) continue;
+    os << "triangle " << i << " (" << t[0] << ", " << t[1] << ", " << t[2] << ")";
+    if (std::max({t[0], t[1], t[2]}) >= k.number_of_vertices)
+      os << " has a vertex beyond the " << k.number_of_vertices << " vertices";
+    else if (!(t[0] < t[1] && t[1] < t[2]))
+      os << " is not in increasing order";
+    else
+      os << " is not after triangle " << i - 1 << " (triangles sorted, without repetition)";
+    return os.str();
   }
-  return true;
+  return {};
 }
 }  // namespace internal
 

@@ -618,9 +618,20 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
 /// multiplicity up to 8 are found. Coordinates inside an eigenspace of multiplicity above one are one orthonormal
 /// basis of it (distances between the embedded points do not depend on which).
 /// \throws std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
-///         or not finite.
+///         or not finite, the first diagonal entry that is not 0, or the first pair (i, j), i < j, where D is not
+///         symmetric.
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
   bool stopped = false;
+  if (D.size() == n * n)  // (the sizes are checked below, with the entries)
+    for (std::size_t i = 0; i < n; ++i) {
+      if (D[i * n + i] > 0 && std::isfinite(D[i * n + i]))  // negative or not finite: named below
+        FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "diagonal entry (", i, ", ", i, ") is ",
+                                                       D[i * n + i], " (must be 0)");
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (D[i * n + j] != D[j * n + i] && std::isfinite(D[i * n + j]) && std::isfinite(D[j * n + i]))
+          FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "D is not symmetric at (", i, ", ", j,
+                                                         "): ", D[i * n + j], " vs ", D[j * n + i]);
+    }
   return internal::classical_mds_3d(D, n, Progress_callback(), stopped);
 }
 

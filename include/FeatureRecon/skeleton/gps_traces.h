@@ -387,7 +387,7 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// \param rips_radius the radius the samples will be joined at (for the automatic rules).
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
 ///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
-///         or segment support, a negative heading tolerance, a turn tolerance outside [0, 180], a confirmed
+///         or segment support, a negative heading tolerance, a negative or non-finite density radius, a turn tolerance outside [0, 180], a confirmed
 ///         fraction or a density fraction outside [0, 1]), linking that would insert more than
 ///         options.max_inserted_points points, or a density filter that would compare more than
 ///         options.max_density_pairs pairs of samples.
@@ -396,10 +396,18 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   const char* fn = "sample_gps_traces";
   if (!(rips_radius > 0 && std::isfinite(rips_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ", rips_radius);
-  if (!(options.sample_spacing >= 0 && std::isfinite(options.sample_spacing)) || !std::isfinite(options.max_link_gap))
-    FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing must be finite and >= 0, max_link_gap finite");
+  if (!(options.sample_spacing >= 0 && std::isfinite(options.sample_spacing)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing must be finite and >= 0 (0: automatic), got ",
+                                                   options.sample_spacing);
+  if (!std::isfinite(options.max_link_gap))
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_link_gap must be finite (0: automatic, negative: no ",
+                                                   "linking), got ", options.max_link_gap);
   if (!(options.heading_tolerance >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees");
+    FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees, got ",
+                                                   options.heading_tolerance);
+  if (!(options.density_radius >= 0 && std::isfinite(options.density_radius)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "density_radius must be finite and >= 0 (0: twice the Rips ",
+                                                   "radius), got ", options.density_radius);
   auto check_fraction = [fn](const char* name, double value) {  // in [0, 1], NaN refused
     if (!(value >= 0 && value <= 1))
       FeatureRecon::internal::throw_invalid_argument(fn, name, " must be in [0, 1], got ", value);
@@ -448,15 +456,18 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.median_step = median_gps_step(trips);
   S.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : rips_radius / 2;
   S.max_link_gap = options.max_link_gap != 0 ? options.max_link_gap : std::max(4 * S.median_step, 2 * rips_radius);
-  // Grid cells are 64-bit integers of position / spacing: beyond 2^50 cells from the origin they would overflow.
-  const double finest = std::min(S.sample_spacing, rips_radius);
+  S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
+  // Grid cells are 64-bit integers of position / spacing (or density radius, when that filter is on): beyond 2^50
+  // cells from the origin they would overflow.
+  const bool density_filter = options.min_relative_density > 0 || options.min_lateral_density > 0;
+  const double finest = std::min({S.sample_spacing, rips_radius, density_filter ? S.density_radius : HUGE_VAL});
   for (std::size_t t = 0; t < trips.size(); ++t)
     for (std::size_t i = 0; i < trips[t].size(); ++i)
       if (std::max(std::fabs(trips[t][i].x), std::fabs(trips[t][i].y)) / finest > 0x1p50)
         FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " at (", trips[t][i].x, ", ",
                                                        trips[t][i].y, ") lies more than 2^50 times the sample "
-                                                       "spacing or radius (", finest, ") from the origin; shift "
-                                                       "or scale the traces");
+                                                       "spacing, radius or density radius (", finest, ") from the "
+                                                       "origin; shift or scale the traces, or raise that length");
   const double insert_step = S.sample_spacing / 2;
   if (S.max_link_gap > 0 && options.max_inserted_points > 0) {  // the most points linking could insert
     double inserted = 0, longest = 0;
@@ -762,7 +773,6 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     first_fix += trips[t].size();
   }
   S.points.rows = S.headings.size();
-  S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
   S.density_heading_tolerance = options.density_heading_tolerance;
   if ((options.min_relative_density > 0 || options.min_lateral_density > 0) && S.points.rows > 0) {
     Progress_callback filter_progress;

@@ -638,8 +638,8 @@ inline Trace_support_options trace_support_options(const Map_comparison_options&
 /// fixes (by time, as sample_gps_traces() orders them) that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
 /// less than `bearing_limit` from the sample's, regardless of direction. Segments between fixes at the same
 /// place have no bearing and count for nothing.
-/// Time: linear in the total length of the segments (clipped to the samples' bounding box) over the radius, plus
-/// the samples met; a glitch fix far away costs nothing extra.
+/// Time: per segment, its length clipped to the samples' bounding box over the radius, or the number of samples
+/// when that is less, plus the samples met; a glitch fix far away costs nothing extra.
 /// \throws std::invalid_argument naming the option (radius not positive and finite, bearing limit not positive),
 ///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate or time.
 inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
@@ -692,56 +692,85 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
     for (std::size_t i = 0; i + 1 < o.size(); ++i) {
       const Gps_fix& fa = trips[t][o[i]];
       const Gps_fix& fb = trips[t][o[i + 1]];
-      const std::array<double, 2> a{fa.x, fa.y}, b{fb.x, fb.y};
-      const double ux = b[0] - a[0], uy = b[1] - a[1], len2 = ux * ux + uy * uy;
-      if (!(len2 > 0)) continue;
-      const double bearing = internal::bearing_of(a, b);
-      // Clip the parameter range [t0, t1] of a + t u to the box (Liang-Barsky).
-      double t0 = 0, t1 = 1;
-      for (const auto& [q, d] : {std::pair{a[0] - box[0], -ux}, std::pair{box[2] - a[0], ux},
-                                 std::pair{a[1] - box[1], -uy}, std::pair{box[3] - a[1], uy}}) {
+      // The segment from a to b, a the end nearer the samples' box (its coordinates are exact where the samples
+      // are): a + t h, t in [0, 2], with h half of b - a. Halves of finite coordinates never overflow (b - a
+      // can, for fixes beyond +-9e307).
+      const double cx = 0.5 * box[0] + 0.5 * box[2], cy = 0.5 * box[1] + 0.5 * box[3];
+      const bool a_first = std::max(std::fabs(fa.x - cx), std::fabs(fa.y - cy)) <=
+                           std::max(std::fabs(fb.x - cx), std::fabs(fb.y - cy));
+      const std::array<double, 2> a = a_first ? std::array<double, 2>{fa.x, fa.y} : std::array<double, 2>{fb.x, fb.y};
+      const std::array<double, 2> b = a_first ? std::array<double, 2>{fb.x, fb.y} : std::array<double, 2>{fa.x, fa.y};
+      const double hx = 0.5 * b[0] - 0.5 * a[0], hy = 0.5 * b[1] - 0.5 * a[1], half = std::hypot(hx, hy);
+      if (!(half > 0)) continue;
+      const double bearing = internal::bearing_of({0.0, 0.0}, {hx, hy});  // direction does not matter
+      const double wx = hx / half, wy = hy / half;  // unit direction
+      // Points a + t h are placed to within a 256th of a cell while the coordinates stay below 2^44 cells; beyond,
+      // the segment is checked against every sample (exactly, below) instead of walked.
+      const double magnitude = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(b[0]), std::fabs(b[1])});
+      const bool placed = magnitude < 0x1p44 * cell_size;
+      // Clip the parameter range [t0, t1] of a + t h to the box (Liang-Barsky).
+      double t0 = 0, t1 = 2;
+      for (const auto& [q, d] : {std::pair{a[0] - box[0], -hx}, std::pair{box[2] - a[0], hx},
+                                 std::pair{a[1] - box[1], -hy}, std::pair{box[3] - a[1], hy}}) {
         if (d == 0) {
-          if (q < 0) t0 = 2;  // parallel and outside
+          if (q < 0) t0 = 3;  // parallel and outside
         } else if (d < 0) {
           t0 = std::max(t0, q / d);
         } else {
           t1 = std::min(t1, q / d);
         }
       }
-      if (!(t0 <= t1)) continue;
-      const double steps = std::ceil((t1 - t0) * std::sqrt(len2) / cell_size);
+      if (placed && !(t0 <= t1)) continue;
+      const double steps = placed ? std::ceil((t1 - t0) * (half / cell_size)) : HUGE_VAL;
+      // A walk longer than the samples are many (a tiny radius against a wide box) visits every sample instead.
+      const bool scan_all = !(steps * 25 <= static_cast<double>(samples.size()));
       cells.clear();
-      if (steps <= 4) {  // short: the cells of its bounding box grown by the radius
-        const double xa = a[0] + t0 * ux, xb = a[0] + t1 * ux, ya = a[1] + t0 * uy, yb = a[1] + t1 * uy;
+      if (scan_all) {
+      } else if (steps <= 4) {  // short: the cells of its bounding box grown by the radius
+        const double xa = a[0] + t0 * hx, xb = a[0] + t1 * hx, ya = a[1] + t0 * hy, yb = a[1] + t1 * hy;
         const std::int64_t x0 = cell(std::min(xa, xb) - options.radius),
                            x1 = cell(std::max(xa, xb) + options.radius);
         const std::int64_t y0 = cell(std::min(ya, yb) - options.radius),
                            y1 = cell(std::max(ya, yb) + options.radius);
-        for (std::int64_t cx = x0; cx <= x1; ++cx)
-          for (std::int64_t cy = y0; cy <= y1; ++cy) cells.push_back(key(cx, cy));
+        for (std::int64_t x = x0; x <= x1; ++x)
+          for (std::int64_t y = y0; y <= y1; ++y) cells.push_back(key(x, y));
       } else {
         for (double k = 0; k <= steps; ++k) {
-          const double u = steps > 0 ? t0 + (t1 - t0) * (k / steps) : t0;
-          const std::int64_t cx = cell(a[0] + u * ux), cy = cell(a[1] + u * uy);
+          const double u = t0 + (t1 - t0) * (k / steps);
+          const std::int64_t x = cell(a[0] + u * hx), y = cell(a[1] + u * hy);
           for (std::int64_t dx = -2; dx <= 2; ++dx)
-            for (std::int64_t dy = -2; dy <= 2; ++dy) cells.push_back(key(cx + dx, cy + dy));
+            for (std::int64_t dy = -2; dy <= 2; ++dy) cells.push_back(key(x + dx, y + dy));
         }
         std::sort(cells.begin(), cells.end());
         cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
       }
+      auto consider = [&](std::uint32_t j) {
+        if (last_trip[j] == t) return;
+        const auto& p = samples[j].position;
+        // Distance to the segment: to an end when the projection s (along it from a) falls outside [0, 2 |h|],
+        // else across it, from the cross product (no cancellation between s and a). A distance that overflows
+        // (or is NaN, far beyond any radius) does not count.
+        const double px = p[0] - a[0], py = p[1] - a[1], s = px * wx + py * wy;
+        double d2;
+        if (s <= 0) {
+          d2 = px * px + py * py;
+        } else if (s >= 2 * half) {
+          d2 = (p[0] - b[0]) * (p[0] - b[0]) + (p[1] - b[1]) * (p[1] - b[1]);
+        } else {
+          const double across = px * wy - py * wx;
+          d2 = across * across;
+        }
+        if (!(d2 <= r2)) return;
+        if (!(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit)) return;
+        last_trip[j] = t;
+        ++count[j];
+      };
+      if (scan_all)
+        for (std::size_t j = 0; j < samples.size(); ++j) consider(static_cast<std::uint32_t>(j));
       for (const std::uint64_t c : cells) {
         const auto it = grid.find(c);
-        if (it == grid.end()) continue;
-        for (const std::uint32_t j : it->second) {
-          if (last_trip[j] == t) continue;
-          const auto& p = samples[j].position;
-          const double s = std::clamp(((p[0] - a[0]) * ux + (p[1] - a[1]) * uy) / len2, 0.0, 1.0);
-          const double dx = a[0] + s * ux - p[0], dy = a[1] + s * uy - p[1];
-          if (dx * dx + dy * dy > r2) continue;
-          if (!(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit)) continue;
-          last_trip[j] = t;
-          ++count[j];
-        }
+        if (it != grid.end())
+          for (const std::uint32_t j : it->second) consider(j);
       }
     }
   }

@@ -240,14 +240,17 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
     FeatureRecon::internal::throw_invalid_argument(fn, "too many points (", m.rows, ")");
   const std::size_t n = m.rows;
   const std::size_t report_every = std::max<std::size_t>(1, n / 100);
+  bool stopped = false;  // no report after the callback asked to stop
   if (internal::use_kd_tree(m, options.search, fn)) {
     if (n == 0) return g;
     internal::Kd_index index(m);
     std::vector<std::uint32_t> found;
     for (std::uint32_t i = 0; i < n; ++i) {
       if (i % report_every == 0 &&
-          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(i) / n))
+          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(i) / n)) {
+        stopped = true;
         break;
+      }
       index.ball(i, radius * index.unit, found);  // infinity when that overflows: every point a candidate
       std::sort(found.begin(), found.end());
       for (std::uint32_t j : found)
@@ -259,7 +262,10 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
     const std::size_t block = 256;
     const double r2 = (radius * index.unit) * (radius * index.unit);  // in the index's units (may be infinite)
     for (std::size_t b = 0; b < n; b += block) {
-      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) break;
+      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) {
+        stopped = true;
+        break;
+      }
       index.block(b, std::min(n, b + block), b, [&](std::size_t i, std::size_t j, double d2, double err) {
         if (j > i && d2 <= r2 * (1 + 1e-12) + err &&
             internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius))
@@ -268,7 +274,7 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
     }
   }
   internal::add_edge_lengths(m, g, fn);
-  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return g;
 }
 
@@ -298,6 +304,7 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
     }
   };
   if (kk == 0) return g;
+  bool stopped = false;  // no report after the callback asked to stop
   if (internal::use_kd_tree(m, options.search, fn)) {
     // Copies of a position are searched once: the kd-tree holds the distinct positions, each with its copies
     // (by index). A point's neighbours are the other copies of its position first (distance 0, by index), then
@@ -329,8 +336,10 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
     std::vector<std::uint32_t> outside, near_groups;
     for (std::uint32_t q = 0; q < groups; ++q) {
       if (q % report_groups == 0 &&
-          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(q) / groups))
+          !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(q) / groups)) {
+        stopped = true;
         break;
+      }
       const std::size_t copies = first[q + 1] - first[q];
       const std::size_t need = kk + 1 > copies ? kk + 1 - copies : 0;  // neighbours from other positions
       outside.clear();
@@ -385,7 +394,10 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
     std::vector<std::pair<double, std::uint32_t>> row;
     std::vector<double> errs;
     for (std::size_t b = 0; b < n; b += block) {
-      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) break;
+      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) {
+        stopped = true;
+        break;
+      }
       std::size_t current = b;
       row.clear();
       errs.clear();
@@ -418,7 +430,7 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
   }
   internal::sort_unique_edges(g.edges, nullptr);
   internal::add_edge_lengths(m, g, fn);
-  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return g;
 }
 
@@ -683,12 +695,30 @@ inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const
 }
 
 /// One call: the Rips 2-complex of points at scale `radius` (build_rips_graph() then build_flag_complex_2()).
+/// options.progress sees the graph up to 0.5 and the triangles up to 1; when it returns false the work stops and
+/// the complex returned has the edges (and triangles) found so far, as the two stages document.
 template <class PointRange, class Traits = Point_coordinate_traits<
                                 typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radius,
                                           const Proximity_graph_options& options = {},
                                           const Traits& traits = Traits()) {
-  return build_flag_complex_2(build_rips_graph(points, radius, options, traits));
+  bool stopped = false;
+  auto stage = [&](double from) -> Progress_callback {
+    if (!options.progress) return {};
+    return [&options, &stopped, from](double t) {
+      if (!stopped && !options.progress(from + 0.5 * t)) stopped = true;
+      return !stopped;
+    };
+  };
+  Proximity_graph_options graph_options = options;
+  graph_options.progress = stage(0.0);
+  Proximity_graph g = build_rips_graph(points, radius, graph_options, traits);
+  if (stopped) {
+    Simplicial_complex_2 k;
+    static_cast<Proximity_graph&>(k) = std::move(g);
+    return k;
+  }
+  return build_flag_complex_2(g, stage(0.5));
 }
 
 }  // namespace skeleton

@@ -105,6 +105,9 @@ struct Road_merge_options {
   /// Skeleton_options::max_triangles of the neighbourhood's complex (its samples lie at least spacing / 2 apart,
   /// so it stays far below the default unless `distance` is very large against `spacing`).
   std::size_t max_triangles = Skeleton_options().max_triangles;
+  /// The most samples (vertices and points along the edges) the neighbourhood may be built on: a long edge
+  /// against a short spacing is refused before it fills the memory. Default 2^26; 0: no limit.
+  std::size_t max_samples = std::size_t(1) << 26;
   Progress_callback progress;   ///< fraction done; returning false stops (status interrupted, map empty)
 };
 
@@ -368,8 +371,9 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 /// beyond `distance` for a short stretch the skeleton keeps a thin loop; loops whose two sides lie within
 /// `distance` of each other (two arcs between the same nodes, or an arc beside a two-arc path) lose their longer
 /// side. Deterministic. The map is not modified.
-/// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, or a non-positive
-///         or non-finite distance, negative spacing or delta.
+/// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose length
+///         overflows, a map that would give more than `max_samples` samples (naming the longest edge), or a
+///         non-positive or non-finite distance, negative spacing or delta.
 inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Road_merge_options& options = {}) {
   const char* fn = "merge_road_lines";
   if (!(options.distance > 0 && std::isfinite(options.distance)))
@@ -427,7 +431,28 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     r.status = Status::interrupted;
     return r;
   }
-  // Samples: the vertices, then interior points of each edge; the chains of the edges.
+  // Samples: the vertices, then interior points of each edge; the chains of the edges. Counted first: an edge
+  // of 1e9 m at a spacing of 2 m would insert half a billion points.
+  double sample_count = static_cast<double>(positions.size()), longest = 0;
+  std::array<double, 4> longest_ends{};
+  for (const Edge& e : edges) {
+    const auto a = positions[e[0]], b = positions[e[1]];
+    const double L = std::hypot(b[0] - a[0], b[1] - a[1]);
+    if (!std::isfinite(L))
+      FeatureRecon::internal::throw_invalid_argument(fn, "the edge from (", a[0], ", ", a[1], ") to (", b[0], ", ",
+                                                     b[1], ") has a length that overflows");
+    sample_count += std::max(0.0, std::ceil(L / r.spacing) - 1);
+    if (L > longest) {
+      longest = L;
+      longest_ends = {a[0], a[1], b[0], b[1]};
+    }
+  }
+  if (options.max_samples > 0 && sample_count > static_cast<double>(options.max_samples))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "sampling the map (", positions.size(), " vertices, ", r.length_before, " m of edges) every ", r.spacing,
+        " m would give about ", sample_count, " samples, more than max_samples (", options.max_samples,
+        "); the longest edge, from (", longest_ends[0], ", ", longest_ends[1], ") to (", longest_ends[2], ", ",
+        longest_ends[3], "), is ", longest, " long: raise spacing or max_samples");
   Point_matrix P;
   P.dimension = 2;
   P.rows = positions.size();
@@ -597,10 +622,23 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
     r.status = Status::interrupted;
     return r;
   }
+  // The neighbourhood graph up to 0.15 (no report after a stop), the skeleton up to 0.9.
+  bool stopped = false;
+  Proximity_graph_options go;
+  if (options.progress)
+    go.progress = [&options, &stopped](double t) {
+      if (!stopped && !options.progress(std::min(0.15, 0.1 + 0.05 * t))) stopped = true;  // (0.15 rounds up)
+      return !stopped;
+    };
+  Proximity_graph graph = build_gps_trace_graph(r.sample, r.used.rips_radius, r.used.traces.heading_tolerance, go);
+  if (stopped) {
+    r.status = Status::interrupted;
+    return r;
+  }
   Skeleton_options so = road_map_skeleton_options(r.used);
-  if (options.progress) so.progress = [&options](double t) { return options.progress(0.1 + 0.8 * t); };
-  r.skeleton = extract_reeb_skeleton(build_gps_trace_graph(r.sample, r.used.rips_radius, r.used.traces.heading_tolerance),
-                                     r.sample.points, so);
+  if (options.progress) so.progress = [&options](double t) { return options.progress(0.15 + 0.75 * t); };
+  r.skeleton = extract_reeb_skeleton(graph, r.sample.points, so);
+  graph = Proximity_graph();  // freed before the lines are merged
   r.status = r.skeleton.status;
   if (r.status == Status::interrupted) return r;
   r.map = skeleton_to_road_map(r.skeleton.graph);

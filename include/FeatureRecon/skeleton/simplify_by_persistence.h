@@ -493,8 +493,12 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 }
 
 /// simplify_by_persistence() of the Reeb graph of A.
+/// \throws std::invalid_argument when A's computation was interrupted (its graph lacks the arcs still open then).
 inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta,
                                                           const Progress_callback& progress = {}) {
+  if (A.status() == Status::interrupted)
+    FeatureRecon::internal::throw_invalid_argument("simplify_by_persistence", "the augmented Reeb graph A is "
+                                                   "incomplete: its computation was interrupted");
   return simplify_by_persistence(A.reeb_graph(), A.values(), delta, progress);
 }
 
