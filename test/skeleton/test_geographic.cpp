@@ -89,6 +89,16 @@ TEST(TransverseMercator, ForwardRefusesPointsOffTheSphere) {
       EXPECT_NE(std::string(e.what()).find("Transverse_mercator::forward: longitude"), std::string::npos) << e.what();
     }
   }
+  // Settings out of range are named as settings, by forward() and inverse().
+  for (const Transverse_mercator& bad : {Transverse_mercator{10, 95}, Transverse_mercator{std::nan(""), 0}}) {
+    for (int direction = 0; direction < 2; ++direction)
+      try {
+        (void)(direction == 0 ? bad.forward(10, 45) : bad.inverse(0, 0));
+        ADD_FAILURE() << "projected with bad settings";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("Transverse_mercator: central_meridian"), std::string::npos) << e.what();
+      }
+  }
   EXPECT_TRUE(std::isfinite(p.forward(-87, 90)[1]));  // the poles are on it
   EXPECT_TRUE(std::isfinite(p.forward(-87, -90)[1]));
 }

@@ -327,6 +327,26 @@ TEST(TraceSupport, PinnedCases) {
   EXPECT_EQ(along({trip_of({{-1e308, 16}, {1.7e308, 16}})}), 0u);
   EXPECT_EQ(along({trip_of({{1e155, 0}, {0, 0}})}), 1u);  // the walk from the far end stops at the samples' box
   EXPECT_EQ(along({trip_of({{1e155, 0}, {15.5, 0}})}), 0u);
+  // Sloped segments between far-off fixes (beyond 2^44 radii, where the sample's position is lost in p - a):
+  // decided exactly. Slope 1/1000 through (0, 10) passes 9.999995 m from the sample; through (0, 15.0078125),
+  // 15.007805 m (every coordinate is exact in doubles); the bearing is 89.94 degrees.
+  EXPECT_EQ(along({trip_of({{-1e15, 10 - 1e12}, {1e15, 10 + 1e12}})}), 1u);
+  EXPECT_EQ(along({trip_of({{-1e15, 15.0078125 - 1e12}, {1e15, 15.0078125 + 1e12}})}), 0u);
+  EXPECT_EQ(along({trip_of({{-1e15, 15 - 1e12}, {1e15, 15 + 1e12}})}), 1u);  // 14.9999925 m
+  {
+    // Samples 50 m apart on the x axis and a trip between fixes 0.8e20 and 1.1e20 m away along the direction
+    // (cos 1, sin 1), which passes 3.2-3.6 km from them (CGAL's exact kernel); in doubles p - a loses the samples'
+    // positions and every one of them seemed on the line.
+    const double bearing = std::atan2(std::cos(1.0), std::sin(1.0)) * 180 / std::acos(-1.0);
+    std::vector<Map_sample> row;
+    for (int i = -5; i <= 5; ++i) row.push_back(sample_at(50.0 * i, 0, bearing));
+    const std::vector<std::size_t> c =
+        count_trips_along(row, {trip_of({{-0.8e20 * std::cos(1.0), -0.8e20 * std::sin(1.0)},
+                                         {1.1e20 * std::cos(1.0), 1.1e20 * std::sin(1.0)}})});
+    EXPECT_EQ(c, std::vector<std::size_t>(11, 0));
+  }
+  EXPECT_EQ(along({trip_of({{-1.7e308, -1.7e305}, {1.7e308, 1.7e305}})}), 1u);  // through the origin
+  EXPECT_EQ(along({trip_of({{-1.7e308, 1.7e305}, {1.7e308, -1.7e305}})}), 1u);
   EXPECT_TRUE(count_trips_along({}, {trip_of({{0, 0}, {1, 1}})}).empty());
   // Fixes are read by time, as sample_gps_traces() reads them, not in storage order: stored along the street
   // but driven through (0, 100) in between, the trip does not drive along the sample; stored through (0, 100)
@@ -403,6 +423,15 @@ TEST(TraceSupport, LongSegmentsAndTinyRadiiStayBounded) {
       EXPECT_EQ(hit, expected) << radius << " " << ends[0] << " " << ends[2];
       EXPECT_EQ(static_cast<std::size_t>(std::count(c.begin(), c.end(), std::size_t(0))), 1001 - expected);
     }
+  // A line of slope 1/1000 through the origin between fixes at +-1e300: sample i lies i / 1000 m from it (times
+  // 0.9999995), decided exactly for each sample: all within 15 m, samples 0 and 1 within 1 mm, 0 alone within 1 um.
+  for (const auto& [radius, expected] : {std::pair{15.0, 1001}, std::pair{1e-3, 2}, std::pair{1e-6, 1}}) {
+    Trace_support_options o;
+    o.radius = radius;
+    const std::vector<std::size_t> c = count_trips_along(s, {trip_of({{-1e300, -1e297}, {1e300, 1e297}})}, o);
+    EXPECT_EQ(std::count(c.begin(), c.end(), std::size_t(1)), expected) << radius;
+    EXPECT_EQ(c[0], 1u);
+  }
 }
 
 TEST(TraceSupport, SplitsAComparisonByTheTripsAlongItsSamples) {

@@ -527,7 +527,8 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   bad.positions[6] = {-1e9, 0};
   bad.edges.push_back({5, 6});
   std::string far = message_of([&] { merge_road_lines(bad); });
-  EXPECT_NE(far.find("more than max_samples (67108864); the longest edge, from (1e+09, 0) to (-1e+09, 0), is 2e+09"),
+  EXPECT_NE(far.find("points, more than max_samples (67108864); the longest edge, from (1e+09, 0) to (-1e+09, 0), "
+                     "is 2e+09"),
             std::string::npos) << far;
   o = {};
   o.spacing = 1e5;
@@ -535,6 +536,17 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   o.spacing = 100;
   o.max_samples = 1000;
   EXPECT_NE(message_of([&] { merge_road_lines(bad, o); }).find("max_samples (1000)"), std::string::npos);
+  // The limit counts the points inserted along edges, not the vertices: a 1,000 km edge at spacing 100 m takes 9,999.
+  Embedded_graph_2 one_edge;
+  one_edge.positions = {{0, 0}, {1e6, 0}};
+  one_edge.edges = {{0, 1}};
+  o.max_samples = 9999;
+  EXPECT_EQ(merge_road_lines(one_edge, o).status, Status::success);
+  o.max_samples = 9998;
+  EXPECT_NE(message_of([&] { merge_road_lines(one_edge, o); }).find("would insert about 9999 points, more than "
+                                                                     "max_samples (9998)"),
+            std::string::npos)
+      << message_of([&] { merge_road_lines(one_edge, o); });
   bad.positions[5] = {1e308, 0};
   bad.positions[6] = {-1e308, 0};
   far = message_of([&] { merge_road_lines(bad); });

@@ -40,7 +40,8 @@ struct Transverse_mercator {
   /// is not 90 degrees of longitude from the central meridian on the equator (x infinite there). Beyond 90 degrees
   /// of longitude the map goes on over the poles: near a pole the points on the far side of it from the central
   /// meridian lie a few metres from it too (the round trip holds there to 4 mm, test_geographic.cpp).
-  /// \throws std::invalid_argument for a latitude outside [-90, 90] or a longitude that is not finite.
+  /// \throws std::invalid_argument for a latitude outside [-90, 90] or a longitude that is not finite, or settings
+  ///         out of range (origin_latitude outside [-90, 90], central_meridian not finite; inverse() too).
   std::array<double, 2> forward(double longitude, double latitude) const {
     if (!(latitude >= -90 && latitude <= 90) || !std::isfinite(longitude))
       FeatureRecon::internal::throw_invalid_argument("Transverse_mercator::forward", "longitude ", longitude,
@@ -119,7 +120,11 @@ struct Transverse_mercator {
     if (d <= -180) d += 360;
     return d;
   }
-  double northing_of_origin() const {
+  double northing_of_origin() const {  // (forward() and inverse() both call it: the settings are checked here)
+    if (!(origin_latitude >= -90 && origin_latitude <= 90) || !std::isfinite(central_meridian))
+      FeatureRecon::internal::throw_invalid_argument("Transverse_mercator", "central_meridian ", central_meridian,
+                                                     ", origin_latitude ", origin_latitude, ": the origin latitude "
+                                                     "must be in [-90, 90] and the central meridian finite");
     if (origin_latitude == 0) return 0;
     Transverse_mercator at_equator{central_meridian, 0};
     return at_equator.forward(central_meridian, origin_latitude)[1];

@@ -8,6 +8,7 @@
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_2.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -638,8 +639,9 @@ inline Trace_support_options trace_support_options(const Map_comparison_options&
 /// fixes (by time, as sample_gps_traces() orders them) that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
 /// less than `bearing_limit` from the sample's, regardless of direction. Segments between fixes at the same
 /// place have no bearing and count for nothing.
-/// Time: per segment, its length clipped to the samples' bounding box over the radius, or the number of samples
-/// when that is less, plus the samples met; a glitch fix far away costs nothing extra.
+/// Time: per segment whose bounding box meets the samples' (grown by the radius), its length clipped to that box
+/// over the radius, or the number of samples when that is less, plus the samples met; a glitch fix far away costs
+/// nothing extra. (A segment with an end beyond 2^44 radii from the origin is checked against every sample.)
 /// \throws std::invalid_argument naming the option (radius not positive and finite, bearing limit not positive),
 ///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate or time.
 inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
@@ -692,22 +694,44 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
     for (std::size_t i = 0; i + 1 < o.size(); ++i) {
       const Gps_fix& fa = trips[t][o[i]];
       const Gps_fix& fb = trips[t][o[i + 1]];
+      if (fa.x == fb.x && fa.y == fb.y) continue;  // no bearing
+      // A segment whose bounding box misses the samples' box (grown by the radius) passes near no sample.
+      if (std::max(fa.x, fb.x) < box[0] || std::min(fa.x, fb.x) > box[2] || std::max(fa.y, fb.y) < box[1] ||
+          std::min(fa.y, fb.y) > box[3])
+        continue;
       // The segment from a to b, a the end nearer the samples' box (its coordinates are exact where the samples
-      // are): a + t h, t in [0, 2], with h half of b - a. Halves of finite coordinates never overflow (b - a
-      // can, for fixes beyond +-9e307).
+      // are): a + t h, t in [0, 2], with h half of b - a (halves of finite coordinates do not overflow).
       const double cx = 0.5 * box[0] + 0.5 * box[2], cy = 0.5 * box[1] + 0.5 * box[3];
       const bool a_first = std::max(std::fabs(fa.x - cx), std::fabs(fa.y - cy)) <=
                            std::max(std::fabs(fb.x - cx), std::fabs(fb.y - cy));
       const std::array<double, 2> a = a_first ? std::array<double, 2>{fa.x, fa.y} : std::array<double, 2>{fb.x, fb.y};
       const std::array<double, 2> b = a_first ? std::array<double, 2>{fb.x, fb.y} : std::array<double, 2>{fa.x, fa.y};
-      const double hx = 0.5 * b[0] - 0.5 * a[0], hy = 0.5 * b[1] - 0.5 * a[1], half = std::hypot(hx, hy);
-      if (!(half > 0)) continue;
+      const double hx = 0.5 * b[0] - 0.5 * a[0], hy = 0.5 * b[1] - 0.5 * a[1];
       const double bearing = internal::bearing_of({0.0, 0.0}, {hx, hy});  // direction does not matter
-      const double wx = hx / half, wy = hy / half;  // unit direction
-      // Points a + t h are placed to within a 256th of a cell while the coordinates stay below 2^44 cells; beyond,
-      // the segment is checked against every sample (exactly, below) instead of walked.
+      // Below 2^44 cells (and 2^500) from the origin, points a + t h are placed to within a 256th of a cell and
+      // distances in doubles are exact to far below the radius; beyond, every sample is decided exactly (a filtered
+      // CGAL predicate) instead: only absurd fixes get there.
       const double magnitude = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(b[0]), std::fabs(b[1])});
-      const bool placed = magnitude < 0x1p44 * cell_size;
+      const bool placed = magnitude < std::min(0x1p44 * cell_size, 0x1p500);
+      if (!placed) {
+        using Exact_predicates = CGAL::Exact_predicates_inexact_constructions_kernel;
+        const Exact_predicates::Segment_2 segment(Exact_predicates::Point_2(a[0], a[1]),
+                                                  Exact_predicates::Point_2(b[0], b[1]));
+        const auto compare = Exact_predicates().compare_squared_distance_2_object();
+        for (std::size_t j = 0; j < samples.size(); ++j) {
+          const auto& p = samples[j].position;
+          if (last_trip[j] == t || !(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit))
+            continue;
+          if (compare(Exact_predicates::Point_2(p[0], p[1]), segment, r2) != CGAL::LARGER) {
+            last_trip[j] = t;
+            ++count[j];
+          }
+        }
+        continue;
+      }
+      const double half = std::hypot(hx, hy);
+      if (!(half > 0)) continue;  // (halves of two subnormals apart can round together)
+      const double wx = hx / half, wy = hy / half;  // unit direction
       // Clip the parameter range [t0, t1] of a + t h to the box (Liang-Barsky).
       double t0 = 0, t1 = 2;
       for (const auto& [q, d] : {std::pair{a[0] - box[0], -hx}, std::pair{box[2] - a[0], hx},
@@ -720,8 +744,8 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
           t1 = std::min(t1, q / d);
         }
       }
-      if (placed && !(t0 <= t1)) continue;
-      const double steps = placed ? std::ceil((t1 - t0) * (half / cell_size)) : HUGE_VAL;
+      if (!(t0 <= t1)) continue;
+      const double steps = std::ceil((t1 - t0) * (half / cell_size));
       // A walk longer than the samples are many (a tiny radius against a wide box) visits every sample instead.
       const bool scan_all = !(steps * 25 <= static_cast<double>(samples.size()));
       cells.clear();

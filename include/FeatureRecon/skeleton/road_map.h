@@ -105,8 +105,8 @@ struct Road_merge_options {
   /// Skeleton_options::max_triangles of the neighbourhood's complex (its samples lie at least spacing / 2 apart,
   /// so it stays far below the default unless `distance` is very large against `spacing`).
   std::size_t max_triangles = Skeleton_options().max_triangles;
-  /// The most samples (vertices and points along the edges) the neighbourhood may be built on: a long edge
-  /// against a short spacing is refused before it fills the memory. Default 2^26; 0: no limit.
+  /// The most points inserted along the edges (the vertices not counted): a long edge against a short spacing is
+  /// refused before it fills the memory. Default 2^26; 0: no limit (but for 2^50, which no memory would hold).
   std::size_t max_samples = std::size_t(1) << 26;
   Progress_callback progress;   ///< fraction done; returning false stops (status interrupted, map empty)
 };
@@ -433,7 +433,7 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   }
   // Samples: the vertices, then interior points of each edge; the chains of the edges. Counted first: an edge
   // of 1e9 m at a spacing of 2 m would insert half a billion points.
-  double sample_count = static_cast<double>(positions.size()), longest = 0;
+  double sample_count = 0, longest = 0;  // points along the edges
   std::array<double, 4> longest_ends{};
   for (const Edge& e : edges) {
     const auto a = positions[e[0]], b = positions[e[1]];
@@ -447,12 +447,13 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
       longest_ends = {a[0], a[1], b[0], b[1]};
     }
   }
-  if (options.max_samples > 0 && sample_count > static_cast<double>(options.max_samples))
+  const std::size_t max_samples = options.max_samples > 0 ? options.max_samples : std::size_t(1) << 50;
+  if (sample_count > static_cast<double>(max_samples))
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "sampling the map (", positions.size(), " vertices, ", r.length_before, " m of edges) every ", r.spacing,
-        " m would give about ", sample_count, " samples, more than max_samples (", options.max_samples,
-        "); the longest edge, from (", longest_ends[0], ", ", longest_ends[1], ") to (", longest_ends[2], ", ",
-        longest_ends[3], "), is ", longest, " long: raise spacing or max_samples");
+        fn, "sampling the map's ", r.length_before, " m of edges every ", r.spacing, " m would insert about ",
+        sample_count, " points, more than max_samples (", max_samples, "); the longest edge, from (",
+        longest_ends[0], ", ", longest_ends[1], ") to (", longest_ends[2], ", ", longest_ends[3], "), is ", longest,
+        " long: raise spacing or max_samples");
   Point_matrix P;
   P.dimension = 2;
   P.rows = positions.size();
@@ -606,8 +607,9 @@ inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
 /// (unless turned off). Deterministic (no
 /// randomness; the same trips in the same order give the same map bit for bit). Trips with no or one fix are
 /// allowed; with no fix at all the map is empty and the status degenerate_input.
-/// \throws std::invalid_argument for bad options (resolve_road_map_options(), sample_gps_traces()) or a fix with
-///         a non-finite coordinate or time (naming the trip and the fix). `trips` is not modified.
+/// \throws std::invalid_argument for bad options (resolve_road_map_options(), sample_gps_traces()), a skeleton
+///         whose lines would need more than Road_merge_options::max_samples points to merge (merge_road_lines()),
+///         or a fix with a non-finite coordinate or time (naming the trip and the fix). `trips` is not modified.
 inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_map_options& options = {}) {
   Road_map r;
   r.used = resolve_road_map_options(trips, options);
