@@ -387,8 +387,9 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// \param rips_radius the radius the samples will be joined at (for the automatic rules).
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
 ///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
-///         or segment support, a negative heading tolerance, a negative or non-finite density radius, a turn tolerance outside [0, 180], a confirmed
-///         fraction or a density fraction outside [0, 1]), linking that would insert more than
+///         or segment support, a negative heading tolerance, a negative or non-finite density radius, a turn
+///         tolerance outside [0, 180], a confirmed fraction or a density fraction outside [0, 1]), fixes beyond
+///         2^50 sample spacings (or radii, or density radii) from the origin, linking that would insert more than
 ///         options.max_inserted_points points, or a density filter that would compare more than
 ///         options.max_density_pairs pairs of samples.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,

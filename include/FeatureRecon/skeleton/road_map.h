@@ -372,8 +372,8 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 /// `distance` of each other (two arcs between the same nodes, or an arc beside a two-arc path) lose their longer
 /// side. Deterministic. The map is not modified.
 /// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose length
-///         overflows, a map that would give more than `max_samples` samples (naming the longest edge), or a
-///         non-positive or non-finite distance, negative spacing or delta.
+///         overflows, edges that would need more than `max_samples` points inserted along them (naming the
+///         longest edge), or a non-positive or non-finite distance, negative spacing or delta.
 inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Road_merge_options& options = {}) {
   const char* fn = "merge_road_lines";
   if (!(options.distance > 0 && std::isfinite(options.distance)))
