@@ -622,17 +622,8 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
 ///         symmetric.
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
   bool stopped = false;
-  auto valid = [](double x) { return std::isfinite(x) && x >= 0; };  // other entries are named below
   if (n != 0 && D.size() / n == n && D.size() % n == 0)  // (other sizes are refused below; n * n may wrap)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (D[i * n + i] != 0 && valid(D[i * n + i]))
-        FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "diagonal entry (", i, ", ", i, ") is ",
-                                                       D[i * n + i], " (must be 0)");
-      for (std::size_t j = i + 1; j < n; ++j)
-        if (D[i * n + j] != D[j * n + i] && valid(D[i * n + j]) && valid(D[j * n + i]))
-          FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "D is not symmetric at (", i, ", ", j,
-                                                         "): ", D[i * n + j], " vs ", D[j * n + i]);
-    }
+    internal::check_distance_entries(D, n, "classical_mds_3d");
   return internal::classical_mds_3d(D, n, Progress_callback(), stopped);
 }
 

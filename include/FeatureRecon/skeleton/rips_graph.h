@@ -477,6 +477,24 @@ template <class Matrix>
 struct Is_eigen_like<Matrix, std::void_t<decltype(std::declval<const Matrix&>().rows()),
                                          decltype(std::declval<const Matrix&>()(0, 0))>> : std::true_type {};
 
+/// Checks the entries of a flat row-major n x n distance matrix `a` (a.size() == n * n): finite, >= 0, 0 on the
+/// diagonal, symmetric; throws naming the first entry (by row) that is not.
+inline void check_distance_entries(const std::vector<double>& a, std::size_t n, const char* fn) {
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double x = a[i * n + j];
+      if (!std::isfinite(x) || x < 0)
+        FeatureRecon::internal::throw_invalid_argument(fn, "entry (", i, ", ", j, ") of the distance matrix is ",
+                                                       x, " (must be finite and >= 0)");
+      if (i == j && x != 0)
+        FeatureRecon::internal::throw_invalid_argument(fn, "diagonal entry (", i, ", ", i, ") is ", x,
+                                                       " (must be 0)");
+      if (j > i && x != a[j * n + i])
+        FeatureRecon::internal::throw_invalid_argument(fn, "the distance matrix is not symmetric at (", i, ", ",
+                                                       j, "): ", x, " vs ", a[j * n + i]);
+    }
+}
+
 /// Checks a dense distance matrix and returns it as a flat row-major vector.
 template <class Matrix>
 std::vector<double> checked_distance_matrix(const Matrix& D, std::size_t& n, const char* fn) {
@@ -502,19 +520,7 @@ std::vector<double> checked_distance_matrix(const Matrix& D, std::size_t& n, con
       ++i;
     }
   }
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      const double x = a[i * n + j];
-      if (!std::isfinite(x) || x < 0)
-        FeatureRecon::internal::throw_invalid_argument(fn, "entry (", i, ", ", j, ") of the distance matrix is ",
-                                                       x, " (must be finite and >= 0)");
-      if (i == j && x != 0)
-        FeatureRecon::internal::throw_invalid_argument(fn, "diagonal entry (", i, ", ", i, ") is ", x,
-                                                       " (must be 0)");
-      if (j > i && x != a[j * n + i])
-        FeatureRecon::internal::throw_invalid_argument(fn, "the distance matrix is not symmetric at (", i, ", ",
-                                                       j, "): ", x, " vs ", a[j * n + i]);
-    }
+  check_distance_entries(a, n, fn);
   return a;
 }
 /// \endcond
