@@ -63,7 +63,7 @@ void BM_tracks_featurerecon(benchmark::State& state) {
 void BM_tracks_graph_featurerecon(benchmark::State& state) {
   const Gps_case& c = chicago_tracks();
   const sk::Gps_trace_sample S = sk::sample_gps_traces(c.trips, c.radius, c.used.traces);
-  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius, c.used.traces.heading_tolerance);
+  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius);
   std::size_t arcs = 0;
   for (auto _ : state) {
     const sk::Reeb_skeleton s = sk::extract_reeb_skeleton(g, S.points, c.skeleton);
@@ -110,7 +110,7 @@ std::vector<double> geodesic_values(const sk::Proximity_graph& g) {
 void BM_tracks_gudhi(benchmark::State& state) {
   const Gps_case& c = chicago_tracks();
   const sk::Gps_trace_sample S = sk::sample_gps_traces(c.trips, c.radius, c.used.traces);
-  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius, c.used.traces.heading_tolerance);
+  const sk::Proximity_graph g = sk::build_gps_trace_graph(S, c.radius);
   const std::vector<double> f = geodesic_values(g);
   std::vector<std::array<std::uint32_t, 2>> edges(g.edges.begin(), g.edges.end());
   bench::Gudhi_result r;

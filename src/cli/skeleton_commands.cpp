@@ -133,7 +133,9 @@ int run_reeb(const std::vector<std::string>& argv) {
   if (delta >= 0) {
     progress.done();
     Progress simplification("simplification", quiet);
-    Reeb_simplification_result S = simplify_by_persistence(augmented, delta, std::ref(simplification));
+    Simplification_options simplification_options;
+    simplification_options.progress = std::ref(simplification);
+    Reeb_simplification_result S = simplify_by_persistence(augmented, delta, simplification_options);
     simplification.done();
     R = std::move(S.graph);
     removed_branches = S.removed_branches;

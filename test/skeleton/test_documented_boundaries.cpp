@@ -26,6 +26,11 @@ using namespace FeatureRecon::skeleton;
 using namespace FeatureRecon::test;
 
 namespace {
+Gps_trace_graph_options tolerance_of(double degrees) {
+  Gps_trace_graph_options o;
+  o.heading_tolerance = degrees;
+  return o;
+}
 Reeb_graph::Node node(Vertex_index v, double f, std::vector<Vertex_index> members = {}) {
   Reeb_graph::Node n;
   n.vertex = v;
@@ -196,8 +201,8 @@ TEST(DocumentedBoundaries, TraceGraphHeadingToleranceIsInclusive) {
   S.points.data = {0, 0, 1, 0};
   S.headings = {0, 30};
   S.directed = true;
-  EXPECT_EQ(build_gps_trace_graph(S, 5.0, 30).edges.size(), 1u);
-  EXPECT_EQ(build_gps_trace_graph(S, 5.0, 29.5).edges.size(), 0u);
+  EXPECT_EQ(build_gps_trace_graph(S, 5.0, tolerance_of(30)).edges.size(), 1u);
+  EXPECT_EQ(build_gps_trace_graph(S, 5.0, tolerance_of(29.5)).edges.size(), 0u);
 }
 
 // explain_unmatched_samples(): taken = an aligned sample "within the threshold"; offset = the nearest aligned one

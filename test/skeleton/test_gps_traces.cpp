@@ -27,6 +27,12 @@ Gps_trip straight(double x0, double y0, double dx, double dy, int n, double step
   for (int i = 0; i < n; ++i) t.push_back({x0 + i * step * dx, y0 + i * step * dy, t0 + 3.0 * i});
   return t;
 }
+/// Options of build_gps_trace_graph() with this heading tolerance (degrees).
+Gps_trace_graph_options tolerance_of(double degrees) {
+  Gps_trace_graph_options o;
+  o.heading_tolerance = degrees;
+  return o;
+}
 double dist(const Gps_trace_sample& S, std::size_t a, std::size_t b) {
   return std::hypot(S.points.row(a)[0] - S.points.row(b)[0], S.points.row(a)[1] - S.points.row(b)[1]);
 }
@@ -100,20 +106,23 @@ TEST(GpsTraces, TimeOrderGapsAndHeadings) {
       n += skeleton::internal::heading_difference(C.headings[e[0]], C.headings[e[1]], C.directed) > 30 ? 1 : 0;
     return n;
   };
-  EXPECT_EQ(crossing_edges(build_gps_trace_graph(C, 20.0, 30)), 0u);
-  EXPECT_GT(crossing_edges(build_gps_trace_graph(C, 20.0, 180)), 0u);
+  EXPECT_EQ(crossing_edges(build_gps_trace_graph(C, 20.0, tolerance_of(30))), 0u);
+  EXPECT_GT(crossing_edges(build_gps_trace_graph(C, 20.0, tolerance_of(180))), 0u);
+  // By default the graph takes the tolerance the sample was made with.
+  EXPECT_EQ(C.heading_tolerance, 30.0);
+  EXPECT_EQ(build_gps_trace_graph(C, 20.0).edges, build_gps_trace_graph(C, 20.0, tolerance_of(30)).edges);
   // Opposite directions on one street 3 m apart: directed samples stay apart (two lines, no Rips edge between
   // them); undirected ones are shared.
   std::vector<Gps_trip> two_way{straight(0, 0, 1, 0, 9, 25), straight(200, 3, -1, 0, 9, 25, 100)};
   const Gps_trace_sample T = sample_gps_traces(two_way, 20.0, h);
   EXPECT_TRUE(T.directed);
   for (std::size_t i = 0; i < T.points.rows; ++i) EXPECT_TRUE(T.headings[i] == 0 || T.headings[i] == 180) << T.headings[i];
-  const Proximity_graph directed_graph = build_gps_trace_graph(T, 20.0, 30);
+  const Proximity_graph directed_graph = build_gps_trace_graph(T, 20.0, tolerance_of(30));
   EXPECT_EQ(connected_components(directed_graph).count, 2u);
   h.directed = false;
   const Gps_trace_sample U = sample_gps_traces(two_way, 20.0, h);
   EXPECT_LT(U.points.rows, T.points.rows);
-  EXPECT_EQ(connected_components(build_gps_trace_graph(U, 20.0, 30)).count, 1u);
+  EXPECT_EQ(connected_components(build_gps_trace_graph(U, 20.0, tolerance_of(30))).count, 1u);
 }
 
 TEST(GpsTraces, SparseSamplesNextToADenseStreetAreDropped) {
@@ -426,7 +435,7 @@ TEST(GpsTraces, SkeletonOfABlock) {
   const Gps_trace_sample S = sample_gps_traces(trips, 25.0, go);
   Skeleton_options so;
   so.delta = 75;
-  const Reeb_skeleton s = extract_reeb_skeleton(build_gps_trace_graph(S, 25.0, 30), S.points, so);
+  const Reeb_skeleton s = extract_reeb_skeleton(build_gps_trace_graph(S, 25.0, tolerance_of(30)), S.points, so);
   std::vector<int> comp(num_vertices(s.graph));
   const int c = boost::connected_components(s.graph, comp.data());
   EXPECT_EQ(c, 1);
@@ -516,18 +525,23 @@ TEST(GpsTraces, SamplesFarApartUseLittleMemory) {
 TEST(GpsTraces, TraceGraphChecksItsInput) {
   const Gps_trace_sample S = sample_gps_traces({straight(0, 0, 1, 0, 20, 10)}, 10.0);
   ASSERT_GT(S.points.rows, 2u);
-  EXPECT_NO_THROW(build_gps_trace_graph(S, 10.0, 30));
+  EXPECT_NO_THROW(build_gps_trace_graph(S, 10.0, tolerance_of(30)));
   auto message = [](const Gps_trace_sample& T, double tolerance) {
     try {
-      build_gps_trace_graph(T, 10.0, tolerance);
+      build_gps_trace_graph(T, 10.0, tolerance_of(tolerance));
     } catch (const std::invalid_argument& e) {
       return std::string(e.what());
     }
     return std::string("no exception");
   };
-  EXPECT_NE(message(S, -1).find("heading_tolerance"), std::string::npos);
-  EXPECT_NE(message(S, std::nan("")).find("heading_tolerance"), std::string::npos);
+  EXPECT_EQ(message(S, -1), "no exception");  // the sample's tolerance
+  EXPECT_NE(message(S, std::nan("")).find("heading_tolerance is NaN"), std::string::npos);
   Gps_trace_sample T = S;
+  T.heading_tolerance = -5;
+  EXPECT_NE(message(T, -1).find("sample's heading_tolerance must be >= 0 degrees, got -5"), std::string::npos)
+      << message(T, -1);
+  EXPECT_EQ(message(T, 30), "no exception");  // not used
+  T = S;
   T.headings.pop_back();
   EXPECT_NE(message(T, 30).find("headings"), std::string::npos) << message(T, 30);
   T = S;
@@ -545,9 +559,9 @@ TEST(GpsTraces, TraceGraphChecksItsInput) {
   // A trip link in either order is the same undirected edge (a reversed one made the graph non-canonical).
   T = S;
   for (auto& link : T.trip_links) std::swap(link[0], link[1]);
-  const Proximity_graph reversed = build_gps_trace_graph(T, 10.0, 30);
+  const Proximity_graph reversed = build_gps_trace_graph(T, 10.0, tolerance_of(30));
   EXPECT_TRUE(is_canonical(reversed));
-  EXPECT_EQ(reversed.edges, build_gps_trace_graph(S, 10.0, 30).edges);
+  EXPECT_EQ(reversed.edges, build_gps_trace_graph(S, 10.0, tolerance_of(30)).edges);
 }
 
 TEST(GpsTraces, HandMadePointMatricesAreChecked) {

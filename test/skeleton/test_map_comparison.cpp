@@ -744,3 +744,54 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
     EXPECT_NE(std::string(e.what()).find("use the greedy one"), std::string::npos);
   }
 }
+
+TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
+  // A grid of 30x30 blocks of 100 m (about 35,000 samples) against itself shifted by 3 m: both matchings report
+  // increasing fractions ending at 1 and score what they score unwatched; a stop at any report leaves the sample
+  // counts, no pair and status interrupted, and the callback is not asked again.
+  const Embedded_graph_2 gt = grid_map(31, 100.0), rec = grid_map(31, 100.0, 3.0, 0.0);
+  for (const Map_matching matching : {Map_matching::greedy, Map_matching::optimal}) {
+    Map_comparison_options options;
+    options.matching = matching;
+    const Map_comparison_result plain = compare_maps(gt, rec, options);
+    ASSERT_GT(plain.ground_truth_samples, 30000u);
+    ASSERT_GT(plain.matched, 30000u);
+    std::vector<double> seen;
+    options.progress = [&seen](double t) {
+      seen.push_back(t);
+      return true;
+    };
+    const Map_comparison_result watched = compare_maps(gt, rec, options);
+    EXPECT_EQ(watched.status, Status::success);
+    EXPECT_EQ(watched.matched, plain.matched);
+    EXPECT_EQ(watched.f_score, plain.f_score);
+    ASSERT_GT(seen.size(), 4u) << "matching " << static_cast<int>(matching);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_EQ(seen.front(), 0.05);
+    EXPECT_EQ(seen.back(), 1.0);
+    EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.1 && t < 1; }));
+    for (const std::size_t allowed : {std::size_t(0), std::size_t(1), std::size_t(2), seen.size() - 2}) {
+      std::size_t asked = 0;
+      options.progress = [&asked, allowed](double) { return asked++ < allowed; };
+      options.keep_samples = true;
+      const Map_comparison_result stopped = compare_maps(gt, rec, options);
+      options.keep_samples = false;
+      EXPECT_EQ(asked, allowed + 1) << allowed;
+      EXPECT_EQ(stopped.status, Status::interrupted) << allowed;
+      EXPECT_EQ(stopped.matched, 0u) << allowed;
+      EXPECT_EQ(stopped.f_score, 0.0) << allowed;
+      EXPECT_EQ(stopped.ground_truth_samples, plain.ground_truth_samples) << allowed;
+      EXPECT_EQ(stopped.reconstruction_samples, allowed == 0 ? 0u : plain.reconstruction_samples) << allowed;
+      EXPECT_TRUE(stopped.ground_truth_partner.empty()) << allowed;
+    }
+    // The matching alone stops the same way, its partner lists all -1.
+    const std::vector<Map_sample> H = sample_map(gt, 5.0), G = sample_map(rec, 5.0);
+    std::size_t asked = 0;
+    options.progress = [&asked](double) { return asked++ < 1; };
+    const Map_sample_matching M = match_map_samples(H, G, options);
+    EXPECT_EQ(M.status, Status::interrupted);
+    EXPECT_EQ(M.matched, 0u);
+    EXPECT_EQ(M.ground_truth_partner, std::vector<std::int64_t>(H.size(), -1));
+    EXPECT_EQ(M.reconstruction_partner, std::vector<std::int64_t>(G.size(), -1));
+  }
+}

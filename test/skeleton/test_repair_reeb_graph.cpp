@@ -351,22 +351,31 @@ bool same_graph(const Reeb_graph& a, const Reeb_graph& b) {
 }
 }  // namespace
 
+namespace {
+/// 60 random dashes of 5 points in the plane (many dead ends, gaps of every size; on the integer lattice for
+/// even seeds, so that distances tie).
+Point_matrix random_dashes(std::uint32_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 60);
+  Point_matrix m;
+  m.dimension = 2;
+  for (int dash = 0; dash < 60; ++dash) {
+    double x = u(rng), y = u(rng);
+    const double a = u(rng), c = std::cos(a), s = std::sin(a);
+    if (seed % 2 == 0) x = std::round(x), y = std::round(y);
+    for (int k = 0; k < 5; ++k) m.data.insert(m.data.end(), {x + 0.8 * k * c, y + 0.8 * k * s});
+  }
+  m.rows = m.data.size() / 2;
+  return m;
+}
+}  // namespace
+
 TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
-  // Random dashes in the plane (many dead ends, gaps of every size, ties on a lattice in half the runs): repair
-  // and dead-end connection with the x coordinate as a 1-Lipschitz bound give exactly the graphs of the
-  // all-pairs search, and measure far fewer pairs.
+  // Random dashes in the plane (ties on a lattice in half the runs): repair and dead-end connection with the x
+  // coordinate as a 1-Lipschitz bound give exactly the graphs of the all-pairs search, and measure far fewer
+  // pairs.
   for (std::uint32_t seed = 1; seed <= 12; ++seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 60);
-    Point_matrix m;
-    m.dimension = 2;
-    for (int dash = 0; dash < 60; ++dash) {
-      double x = u(rng), y = u(rng);
-      const double a = u(rng), c = std::cos(a), s = std::sin(a);
-      if (seed % 2 == 0) x = std::round(x), y = std::round(y);
-      for (int k = 0; k < 5; ++k) m.data.insert(m.data.end(), {x + 0.8 * k * c, y + 0.8 * k * s});
-    }
-    m.rows = m.data.size() / 2;
+    const Point_matrix m = random_dashes(seed);
     const Proximity_graph g = build_rips_graph(m, 1.0);
     const Simplicial_complex_2 K = build_flag_complex_2(g);
     const Geodesic_result geo = compute_geodesic_function(K);
@@ -378,7 +387,8 @@ TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
         return std::hypot(m.row(a)[0] - m.row(b)[0], m.row(a)[1] - m.row(b)[1]);
       };
     };
-    auto x = [&m](Vertex_index v) { return m.row(v)[0]; };
+    Reeb_repair_options x;
+    x.bound = [&m](Vertex_index v) { return m.row(v)[0]; };
     for (const double reach : {1.5, 4.0, 10.0}) {
       const Reeb_repair_result plain = repair_reeb_graph(R, reach, distance(&all_pairs));
       const Reeb_repair_result fast = repair_reeb_graph(R, reach, distance(&bounded_pairs), x);
@@ -391,5 +401,64 @@ TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
       EXPECT_TRUE(same_graph(ends.graph, quick.graph)) << "seed " << seed << ", reach " << reach;
     }
     EXPECT_LT(3 * bounded_pairs, all_pairs) << "seed " << seed;
+  }
+}
+
+TEST(RepairReebGraph, ProgressIsReportedAndAStopLeavesAValidGraph) {
+  // Both repair functions report increasing fractions ending at 1 and return what they return unwatched; a stop
+  // adds no arc in repair_reeb_graph() (the graph is the input) and keeps the dead ends connected before it in
+  // connect_dead_ends(): a valid graph that simplifies, with fewer arcs added the earlier the stop.
+  const Point_matrix m = random_dashes(3);
+  const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(m, 1.0));
+  const Geodesic_result geo = compute_geodesic_function(K);
+  const Reeb_graph R = simplify_by_persistence(compute_augmented_reeb_graph(K, geo.values), 0.5).graph;
+  auto distance = [&m](Vertex_index a, Vertex_index b) {
+    return std::hypot(m.row(a)[0] - m.row(b)[0], m.row(a)[1] - m.row(b)[1]);
+  };
+  const Reeb_repair_result plain = repair_reeb_graph(R, 4.0, distance);
+  const Reeb_dead_end_result ends = connect_dead_ends(R, geo.values, 4.0, distance);
+  ASSERT_GT(plain.joined, 2u);
+  ASSERT_GT(ends.connected, 2u);
+  for (const bool bounded : {false, true}) {
+    Reeb_repair_options options;
+    if (bounded) options.bound = [&m](Vertex_index v) { return m.row(v)[1]; };
+    std::vector<double> seen;
+    options.progress = [&seen](double t) {
+      seen.push_back(t);
+      return true;
+    };
+    const Reeb_repair_result watched = repair_reeb_graph(R, 4.0, distance, options);
+    EXPECT_EQ(watched.status, Status::success);
+    EXPECT_TRUE(same_graph(watched.graph, plain.graph)) << bounded;
+    ASSERT_GT(seen.size(), 2u);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end())) << bounded;
+    EXPECT_EQ(seen.back(), 1.0) << bounded;
+    seen.clear();
+    const Reeb_dead_end_result connected = connect_dead_ends(R, geo.values, 4.0, distance, options);
+    EXPECT_EQ(connected.status, Status::success);
+    EXPECT_TRUE(same_graph(connected.graph, ends.graph)) << bounded;
+    ASSERT_GT(seen.size(), 2u);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end())) << bounded;
+    EXPECT_EQ(seen.back(), 1.0) << bounded;
+    const std::size_t calls = seen.size();
+
+    options.progress = [](double) { return false; };
+    const Reeb_repair_result stopped = repair_reeb_graph(R, 4.0, distance, options);
+    EXPECT_EQ(stopped.status, Status::interrupted);
+    EXPECT_EQ(stopped.joined, 0u);
+    EXPECT_TRUE(same_graph(stopped.graph, R)) << bounded;
+    std::size_t previous = 0;
+    for (std::size_t allowed = 0; allowed < calls; ++allowed) {
+      std::size_t asked = 0;
+      options.progress = [&asked, allowed](double) { return asked++ < allowed; };
+      const Reeb_dead_end_result partial = connect_dead_ends(R, geo.values, 4.0, distance, options);
+      EXPECT_EQ(partial.status, allowed + 1 < calls ? Status::interrupted : Status::success) << allowed;
+      EXPECT_EQ(asked, allowed + 1) << "asked again after the stop, " << allowed;
+      EXPECT_GE(partial.connected, previous) << allowed;
+      EXPECT_LE(partial.connected, ends.connected) << allowed;
+      previous = partial.connected;
+      EXPECT_NO_THROW(simplify_by_persistence(partial.graph, geo.values, 0.5)) << allowed;
+    }
+    EXPECT_EQ(previous, ends.connected);
   }
 }

@@ -86,7 +86,7 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
   ASSERT_EQ(m.status, Status::success);
   const Road_map_options used = resolve_road_map_options(city.trips, {});
   const Gps_trace_sample S = sample_gps_traces(city.trips, used.rips_radius, used.traces);
-  const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius, used.traces.heading_tolerance);
+  const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius);
   const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
   const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
   EXPECT_DOUBLE_EQ(used.merge_distance, 8);

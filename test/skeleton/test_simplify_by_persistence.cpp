@@ -411,10 +411,12 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
   const Reeb_simplification_result plain = simplify_by_persistence(A, 1.0);
   std::vector<double> seen;
-  const Reeb_simplification_result watched = simplify_by_persistence(A, 1.0, [&seen](double t) {
+  Simplification_options watching;
+  watching.progress = [&seen](double t) {
     seen.push_back(t);
     return true;
-  });
+  };
+  const Reeb_simplification_result watched = simplify_by_persistence(A, 1.0, watching);
   EXPECT_EQ(watched.status, Status::success);
   EXPECT_EQ(watched.removed_branches, k);
   ASSERT_EQ(watched.graph.nodes.size(), plain.graph.nodes.size());
@@ -428,11 +430,13 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
   for (const double stop_at : {0.0, 0.15, 0.5, 0.95}) {
     std::size_t later = 0;
     bool refused = false;
-    const Reeb_simplification_result S = simplify_by_persistence(A, 1.0, [&](double t) {
+    Simplification_options stopping;
+    stopping.progress = [&](double t) {
       if (refused) ++later;
       refused = refused || t >= stop_at;
       return t < stop_at;
-    });
+    };
+    const Reeb_simplification_result S = simplify_by_persistence(A, 1.0, stopping);
     EXPECT_EQ(S.status, stop_at < 0.95 ? Status::interrupted : Status::success) << stop_at;  // 1.0 is not asked
     if (stop_at < 0.95) {
       EXPECT_TRUE(S.graph.nodes.empty()) << stop_at;

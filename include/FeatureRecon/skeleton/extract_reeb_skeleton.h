@@ -23,6 +23,7 @@
 #include <map>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace FeatureRecon {
@@ -457,7 +458,9 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     result.status = Status::interrupted;
     return result;
   }
-  Reeb_simplification_result S = simplify_by_persistence(A, options.delta, stage(0.8, 0.87));
+  Simplification_options so;
+  so.progress = stage(0.8, 0.87);
+  Reeb_simplification_result S = simplify_by_persistence(A, options.delta, so);
   if (stopped || S.status == Status::interrupted) {
     result.status = Status::interrupted;
     return result;
@@ -465,15 +468,28 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   result.removed_branches = S.removed_branches;
   result.removed_loops = S.removed_loops;
   if (options.repair_distance > 0) {
-    const Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance, bound);
+    Reeb_repair_options repair;
+    if constexpr (!std::is_same<Bound, std::nullptr_t>::value) repair.bound = bound;
+    repair.progress = stage(0.87, 0.89);
+    Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance, repair);
+    if (stopped || fixed.status == Status::interrupted) {
+      result.status = Status::interrupted;
+      return result;
+    }
     result.repaired = fixed.joined;
-    Reeb_graph joined = fixed.graph;
+    Reeb_graph joined = std::move(fixed.graph);
     if (options.connect_dead_ends) {
-      Reeb_dead_end_result ends = connect_dead_ends(joined, A.values(), options.repair_distance, distance, bound);
+      repair.progress = stage(0.89, 0.91);
+      Reeb_dead_end_result ends = connect_dead_ends(joined, A.values(), options.repair_distance, distance, repair);
+      if (stopped || ends.status == Status::interrupted) {
+        result.status = Status::interrupted;
+        return result;
+      }
       result.connected_dead_ends = ends.connected;
       joined = std::move(ends.graph);
     }
-    S = simplify_by_persistence(joined, A.values(), options.delta, stage(0.87, 0.93));
+    so.progress = stage(0.91, 0.95);
+    S = simplify_by_persistence(joined, A.values(), options.delta, so);
     if (stopped || S.status == Status::interrupted) {
       result.status = Status::interrupted;
       return result;

@@ -144,6 +144,8 @@ struct Gps_trace_sample {
   Point_matrix points;                       ///< sample positions (dimension 2; see Gps_trace_options::mean_positions)
   std::vector<double> headings;              ///< travel direction of each sample: [0, 360) degrees, or [0, 180)
   bool directed = true;                      ///< which of the two (Gps_trace_options::directed)
+  /// Gps_trace_options::heading_tolerance (degrees): build_gps_trace_graph() uses it unless told otherwise
+  double heading_tolerance = 180;
   std::vector<std::uint32_t> weights;        ///< trace points (fixes and inserted points) each sample stands for
   std::vector<Edge> trip_links;              ///< consecutive samples of a trip (sorted, unique, u < v)
   std::vector<std::uint32_t> sample_of_fix;  ///< per input fix (trips concatenated in order): its sample
@@ -706,6 +708,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     return best;
   };
   S.directed = options.directed;
+  S.heading_tolerance = options.heading_tolerance;
   const double period = options.directed ? 360.0 : 180.0;
   auto heading_of = [period](double dx, double dy) {
     if (dx == 0 && dy == 0) return 0.0;
@@ -806,18 +809,31 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   return S;
 }
 
+/// Options of build_gps_trace_graph().
+struct Gps_trace_graph_options {
+  /// Rips edges join samples whose travel directions differ by at most this angle (degrees; directed or not, as
+  /// sampled). Negative (default -1): the sample's, Gps_trace_sample::heading_tolerance (the
+  /// Gps_trace_options::heading_tolerance it was sampled with); 180 or more: directions are ignored.
+  double heading_tolerance = -1;
+  Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips edges
+  /// Called with the fraction done; returning false stops (the graph is partial; as build_rips_graph()).
+  Progress_callback progress;
+};
+
 /// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose headings
-/// differ by at most `heading_tolerance` degrees (directed or not, as sampled), plus the trip links; lengths are
-/// Euclidean.
-/// \throws std::invalid_argument when heading_tolerance is negative or NaN, when S is inconsistent (points not
-///         planar or not one heading per point, a heading outside its range, a trip link naming a missing
-///         sample or joining a sample to itself), or as build_rips_graph().
+/// differ by at most the heading tolerance (Gps_trace_graph_options::heading_tolerance; directed or not, as
+/// sampled), plus the trip links; lengths are Euclidean.
+/// \throws std::invalid_argument when the heading tolerance is NaN (or negative in S), when S is inconsistent
+///         (points not planar or not one heading per point, a heading outside its range, a trip link naming a
+///         missing sample or joining a sample to itself), or as build_rips_graph().
 inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double rips_radius,
-                                             double heading_tolerance = 180,
-                                             const Proximity_graph_options& options = {}) {
+                                             const Gps_trace_graph_options& options = {}) {
   const char* fn = "build_gps_trace_graph";
+  if (std::isnan(options.heading_tolerance))
+    FeatureRecon::internal::throw_invalid_argument(fn, "the option heading_tolerance is NaN");
+  const double heading_tolerance = options.heading_tolerance < 0 ? S.heading_tolerance : options.heading_tolerance;
   if (!(heading_tolerance >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees, got ",
+    FeatureRecon::internal::throw_invalid_argument(fn, "the sample's heading_tolerance must be >= 0 degrees, got ",
                                                    heading_tolerance);
   if (S.points.dimension != 2 || S.points.data.size() != 2 * S.points.rows)
     FeatureRecon::internal::throw_invalid_argument(fn, "the samples must be planar points (dimension 2, ",
@@ -838,7 +854,10 @@ inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double r
       FeatureRecon::internal::throw_invalid_argument(fn, "trip link ", k, " (", S.trip_links[k][0], ", ",
                                                      S.trip_links[k][1], ") is a loop or names a sample >= ",
                                                      S.points.rows);
-  Proximity_graph rips = build_rips_graph(S.points, rips_radius, options);
+  Proximity_graph_options ro;
+  ro.search = options.search;
+  ro.progress = options.progress;
+  Proximity_graph rips = build_rips_graph(S.points, rips_radius, ro);
   std::vector<Edge> edges;
   edges.reserve(rips.edges.size() + S.trip_links.size());
   for (const Edge& e : rips.edges)

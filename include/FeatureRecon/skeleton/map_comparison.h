@@ -62,6 +62,9 @@ struct Map_comparison_options {
   std::size_t candidates = 10;
   Map_matching matching = Map_matching::greedy;  ///< how samples are paired; default greedy
   bool keep_samples = false;     ///< also return both sample sets with their match flags (for diagnosis)
+  /// Called with the fraction done (compare_maps(): both maps sampled at 0.1, then the matching); returning false
+  /// stops: status interrupted, no pair (matched 0, every partner -1, scores 0; the sample counts stay).
+  Progress_callback progress;
 };
 
 /// A sample of a map: position and the bearing of its edge in [0, 360) degrees.
@@ -86,6 +89,7 @@ struct Map_comparison_result {
   std::vector<std::int64_t> ground_truth_partner;
   /// With keep_samples: for each sample of G, the index in H of its partner, or -1 when unmatched.
   std::vector<std::int64_t> reconstruction_partner;
+  Status status = Status::success;  ///< interrupted when the progress callback returned false (no pair)
 };
 
 namespace internal {
@@ -253,6 +257,7 @@ struct Map_sample_matching {
   std::vector<std::int64_t> ground_truth_partner;
   /// For each reconstruction sample, the index of its partner among the ground-truth samples, or -1.
   std::vector<std::int64_t> reconstruction_partner;
+  Status status = Status::success;  ///< interrupted when the progress callback returned false (no pair)
 };
 
 namespace internal {
@@ -277,8 +282,10 @@ inline void pair_samples(Map_sample_matching& M, std::size_t h, std::size_t g) {
 /// Greedy: each ground-truth sample h proposes the nearest admissible available sample among its `candidates`
 /// nearest; proposals are accepted by increasing distance (ties: smaller h), a sample whose partner was taken
 /// proposing again.
-inline void match_greedy(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
+/// Returns false when the progress callback stopped it (M then holds the pairs made so far).
+inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
                          const Map_comparison_options& options, Map_sample_matching& M) {
+  const std::size_t stride = 4096;  // samples between two progress reports
   using K = CGAL::Simple_cartesian<double>;
   using Point = K::Point_2;
   using Traits =
@@ -319,12 +326,22 @@ inline void match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
   };
   std::vector<Candidate> heap;
   for (std::size_t h = 0; h < H.size(); ++h) {
+    if (h % stride == stride - 1 &&
+        !FeatureRecon::internal::report_progress(options.progress,
+                                                 0.8 * static_cast<double>(h) / static_cast<double>(H.size())))
+      return false;
     double d = 0;
     const std::int64_t g = best_partner(h, d);
     if (g >= 0) heap.push_back({d, h, g});
   }
   std::make_heap(heap.begin(), heap.end(), later);
-  while (!heap.empty()) {
+  // Each pop pairs a sample or searches again: the fraction is the share of the first proposals settled.
+  const double proposals = static_cast<double>(std::max<std::size_t>(heap.size(), 1));
+  for (std::size_t pops = 1; !heap.empty(); ++pops) {
+    if (pops % stride == 0 &&
+        !FeatureRecon::internal::report_progress(options.progress,
+                                                 0.8 + 0.2 * std::min(1.0, static_cast<double>(pops) / proposals)))
+      return false;
     std::pop_heap(heap.begin(), heap.end(), later);
     Candidate c = heap.back();
     heap.pop_back();
@@ -341,6 +358,7 @@ inline void match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
       std::push_heap(heap.begin(), heap.end(), later);
     }
   }
+  return true;
 }
 
 /// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T = match_distance,
@@ -352,10 +370,11 @@ inline void match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
 /// one on the few lines near it. At equal distance a free sample is settled first (a dense cluster of equal
 /// distances ends its search there), then a matched one, then an "unmatched" partner (a tie between pairing
 /// and leaving unmatched goes to pairing), smaller indices first. Returns for each sample of
-/// L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are refused (memory).
+/// L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are refused (memory). Stopped
+/// by the progress callback: `stopped` set, the assignment partial.
 inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L, const std::vector<Map_sample>& R,
                                                    const Map_comparison_options& options, std::size_t max_pairs,
-                                                   const char* fn) {
+                                                   const char* fn, bool& stopped) {
   const double T = options.match_distance;
   const std::size_t nl = L.size(), nr = R.size();
   // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
@@ -365,7 +384,14 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
   std::vector<std::size_t> first(nl + 1, 0);
   std::vector<std::uint32_t> partner;
   std::vector<double> cost;
+  const std::size_t stride = 1024;  // samples between two progress reports
+  auto stop_at = [&](std::size_t i, double from, double to) {
+    return i % stride == stride - 1 &&
+           (stopped = !FeatureRecon::internal::report_progress(
+                options.progress, from + (to - from) * static_cast<double>(i) / static_cast<double>(nl)));
+  };
   for (std::size_t h = 0; h < nl; ++h) {
+    if (stop_at(h, 0.0, 0.1)) return {};
     grid.for_each_candidate(L[h].position, [&](std::uint32_t g) {
       const double d = std::hypot(R[g].position[0] - L[h].position[0], R[g].position[1] - L[h].position[1]);
       if (d <= T && bearing_difference(L[h].bearing, R[g].bearing) < options.bearing_limit) {
@@ -390,6 +416,7 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
   using Entry = std::tuple<double, int, std::size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   for (std::size_t s = 0; s < nl; ++s) {
+    if (stop_at(s, 0.1, 1.0)) return mate_l;
     if (first[s] == first[s + 1]) continue;  // no admissible partner: unmatched
     const std::size_t phase = s + 1;
     reached_l.assign(1, s);
@@ -459,12 +486,15 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
 /// The optimal matching of H and G: the smaller set is assigned (optimal_assignment()), so that the samples
 /// left over search only while the other side still has free samples near them (with the larger set assigned,
 /// each surplus sample of a dense cluster would search all of it).
-inline void match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
+/// Returns false when the progress callback stopped it (M then holds no pair).
+inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
                           const Map_comparison_options& options, Map_sample_matching& M, const char* fn,
                           std::size_t max_pairs = std::size_t(1) << 26) {
   const bool swap = G.size() < H.size();
-  const std::vector<std::size_t> mate = swap ? optimal_assignment(G, H, options, max_pairs, fn)
-                                             : optimal_assignment(H, G, options, max_pairs, fn);
+  bool stopped = false;
+  const std::vector<std::size_t> mate = swap ? optimal_assignment(G, H, options, max_pairs, fn, stopped)
+                                             : optimal_assignment(H, G, options, max_pairs, fn, stopped);
+  if (stopped) return false;
   for (std::size_t i = 0; i < mate.size(); ++i)
     if (mate[i] != std::numeric_limits<std::size_t>::max()) {
       if (swap)
@@ -472,13 +502,15 @@ inline void match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
       else
         pair_samples(M, i, mate[i]);
     }
+  return true;
 }
 /// \endcond
 }  // namespace internal
 
 /// Matches the samples of two maps (the pairing step of compare_maps()): a ground-truth sample h and a
 /// reconstruction sample g may pair when at most match_distance apart and their direction-insensitive bearings
-/// differ by less than bearing_limit; options.matching says how pairs are chosen (Map_matching).
+/// differ by less than bearing_limit; options.matching says how pairs are chosen (Map_matching). The progress
+/// callback is asked every few thousand samples; a stop leaves no pair (status interrupted).
 /// \throws std::invalid_argument for options as compare_maps() refuses them or a non-finite position or bearing
 ///   (naming the map and the sample).
 inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& ground_truth,
@@ -496,11 +528,16 @@ inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& grou
   Map_sample_matching M;
   M.ground_truth_partner.assign(ground_truth.size(), -1);
   M.reconstruction_partner.assign(reconstruction.size(), -1);
-  if (ground_truth.empty() || reconstruction.empty()) return M;
-  if (options.matching == Map_matching::optimal)
-    internal::match_optimal(ground_truth, reconstruction, options, M, fn);
-  else
-    internal::match_greedy(ground_truth, reconstruction, options, M);
+  if (!ground_truth.empty() && !reconstruction.empty() &&
+      !(options.matching == Map_matching::optimal ? internal::match_optimal(ground_truth, reconstruction, options, M, fn)
+                                                   : internal::match_greedy(ground_truth, reconstruction, options, M))) {
+    M.matched = 0;
+    M.ground_truth_partner.assign(ground_truth.size(), -1);
+    M.reconstruction_partner.assign(reconstruction.size(), -1);
+    M.status = Status::interrupted;
+    return M;
+  }
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return M;
 }
 
@@ -509,7 +546,8 @@ inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& grou
 /// h takes the nearest of its `candidates` nearest reconstruction samples whose bearing differs by less than
 /// the limit; pairs are accepted by increasing distance up to `match_distance`, a ground-truth sample whose
 /// partner was taken looking again among its nearest available ones). precision = m/|G|, recall = m/|H|,
-/// F = 2m/(|G| + |H|).
+/// F = 2m/(|G| + |H|). A stop through the progress callback leaves the sample counts, no pair and status
+/// interrupted.
 /// \pre positive, finite options (checked; throws).
 inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, const Embedded_graph_2& reconstruction,
                                           const Map_comparison_options& options = {}) {
@@ -524,11 +562,26 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
     }
   };
   std::vector<Map_sample> H = sampled(ground_truth, "ground truth");
-  std::vector<Map_sample> G = sampled(reconstruction, "reconstruction");
   Map_comparison_result r;
   r.ground_truth_samples = H.size();
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.05)) {
+    r.status = Status::interrupted;
+    return r;
+  }
+  std::vector<Map_sample> G = sampled(reconstruction, "reconstruction");
   r.reconstruction_samples = G.size();
-  Map_sample_matching M = match_map_samples(H, G, options);
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.1)) {
+    r.status = Status::interrupted;
+    return r;
+  }
+  Map_comparison_options matching = options;
+  if (options.progress)
+    matching.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
+  Map_sample_matching M = match_map_samples(H, G, matching);
+  if (M.status == Status::interrupted) {
+    r.status = Status::interrupted;
+    return r;
+  }
   r.matched = M.matched;
   if (options.keep_samples) {
     r.ground_truth_sample_list = std::move(H);

@@ -5,13 +5,13 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
+#include <FeatureRecon/skeleton/skeleton_options.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <tuple>
-#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -82,7 +82,7 @@ inline std::vector<std::size_t> node_components(const Reeb_graph& G) {
 }
 /// The nodes `ends` (indices into G.nodes) as (bound of their vertex, node), sorted.
 template <class Bound>
-std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends, Bound& bound,
+std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends, const Bound& bound,
                                                             const Reeb_graph& G) {
   std::vector<std::pair<double, std::size_t>> swept;
   swept.reserve(ends.size());
@@ -101,6 +101,7 @@ inline double bound_window(double max_distance) {
 struct Reeb_repair_result {
   Reeb_graph graph;         ///< the graph with the new arcs; may contain regular nodes (simplify next)
   std::size_t joined = 0;   ///< number of arcs added
+  Status status = Status::success;  ///< interrupted when the progress callback returned false (no arc added)
 };
 
 /// Graph fixing of dissertation Ch. 3.3.2: joins pairs of degree-1 nodes whose input points are at most
@@ -109,16 +110,15 @@ struct Reeb_repair_result {
 /// ends of one arc (an isolated segment) are never joined: when they are each other's closest free end, the
 /// segment is left as it is (no loop of two arcs), and neither end joins anything farther. The new features are
 /// not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and
-/// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes; with a `bound`, only pairs whose
-/// bounds differ by at most max_distance are measured (the same result).
+/// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes; with Reeb_repair_options::bound, only
+/// pairs whose bounds differ by at most max_distance are measured (the same result). The progress callback is
+/// asked after each end's pairs are measured; a stop adds no arc (the graph is R, status interrupted).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
-/// \tparam Bound std::nullptr_t (none, every pair is measured) or a callable `double(Vertex_index)` that is
-///   1-Lipschitz for the distance, |bound(a) - bound(b)| <= distance(a, b) (a coordinate of Euclidean points).
 /// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its arcs
 /// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them (all checked; throws).
-template <class Distance, class Bound = std::nullptr_t>
+template <class Distance>
 Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance,
-                                     Bound bound = nullptr) {
+                                     const Reeb_repair_options& options = {}) {
   const char* fn = "repair_reeb_graph";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
@@ -141,16 +141,27 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
     const double d = static_cast<double>(distance(G.nodes[x].vertex, G.nodes[y].vertex));
     if (d <= max_distance) candidates.emplace_back(d, x, y);
   };
-  if constexpr (std::is_same<Bound, std::nullptr_t>::value) {
-    for (std::size_t a = 0; a < ends.size(); ++a)
+  auto stopped_after = [&](std::size_t a) {  // the pairs of a + 1 ends are measured
+    if (FeatureRecon::internal::report_progress(options.progress,
+                                                0.9 * static_cast<double>(a + 1) / static_cast<double>(ends.size())))
+      return false;
+    result.status = Status::interrupted;
+    return true;
+  };
+  if (!options.bound) {
+    for (std::size_t a = 0; a < ends.size(); ++a) {
       for (std::size_t b = a + 1; b < ends.size(); ++b) measure(ends[a], ends[b]);
+      if (stopped_after(a)) return result;
+    }
   } else {
     // A sweep over the ends sorted by their bound: a pair farther apart in bound is farther apart in distance.
-    const std::vector<std::pair<double, std::size_t>> swept = internal::sorted_by_bound(ends, bound, G);
+    const std::vector<std::pair<double, std::size_t>> swept = internal::sorted_by_bound(ends, options.bound, G);
     const double window = internal::bound_window(max_distance);
-    for (std::size_t a = 0; a < swept.size(); ++a)
+    for (std::size_t a = 0; a < swept.size(); ++a) {
       for (std::size_t b = a + 1; b < swept.size() && swept[b].first - swept[a].first <= window; ++b)
         measure(std::min(swept[a].second, swept[b].second), std::max(swept[a].second, swept[b].second));
+      if (stopped_after(a)) return result;
+    }
   }
   std::sort(candidates.begin(), candidates.end());
   for (const auto& [d, x, y] : candidates) {
@@ -169,6 +180,7 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
   }
   // Types and components of the new graph.
   internal::refresh_node_types(G);
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
 }
 
@@ -176,6 +188,8 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
 struct Reeb_dead_end_result {
   Reeb_graph graph;              ///< the graph with the new arcs (and nodes where arcs were split)
   std::size_t connected = 0;     ///< number of arcs added
+  /// interrupted when the progress callback returned false: the graph holds the arcs of the dead ends taken before
+  Status status = Status::success;
 };
 
 /// The other half of graph fixing: a degree-1 node whose input point is at most `max_distance` from a point of
@@ -185,15 +199,16 @@ struct Reeb_dead_end_result {
 /// each other is not connected (too short to be a street end). Dead ends are taken in node order and see the arcs added
 /// before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends
 /// and n input vertices in the graph (the bookkeeping is O(1) per dead end); the arcs come back in the order of
-/// Reeb_graph::arcs. With a `bound` (as for repair_reeb_graph()), only the vertices whose bound lies within
-/// max_distance of the dead end's are measured: O(n log n + k w) for w such vertices, the same result.
+/// Reeb_graph::arcs. With Reeb_repair_options::bound, only the vertices whose bound lies within max_distance of
+/// the dead end's are measured: O(n log n + k w) for w such vertices, the same result. The progress callback is
+/// asked after each dead end; a stop keeps the arcs added so far (a valid graph, status interrupted).
 /// \param values f of every input vertex (for the new nodes).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
 /// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes `values`
 /// (all checked; throws).
-template <class Distance, class Bound = std::nullptr_t>
+template <class Distance>
 Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values, double max_distance,
-                                       Distance distance, Bound bound = nullptr) {
+                                       Distance distance, const Reeb_repair_options& options = {}) {
   const char* fn = "connect_dead_ends";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
@@ -215,14 +230,15 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
     if (degree[i] == 1) ends.push_back(G.nodes[i].vertex);
   // With a bound: every vertex of the graph sorted by bound, and where it is now (a node, or an arc and the
   // position in it; updated when an arc splits). Splits only move vertices, so the sorted list stays valid.
-  constexpr bool bounded = !std::is_same<Bound, std::nullptr_t>::value;
+  const auto& bound = options.bound;
+  const bool bounded = static_cast<bool>(bound);
   const std::size_t no_node = static_cast<std::size_t>(-1);
   struct Place {
     std::size_t node, arc, position;  // node no_node: interior vertex `position` of `arc`
   };
   std::vector<std::pair<double, Vertex_index>> by_bound;
   std::unordered_map<Vertex_index, Place> place;
-  if constexpr (bounded) {
+  if (bounded) {
     for (std::size_t i = 0; i < G.nodes.size(); ++i) {
       by_bound.emplace_back(static_cast<double>(bound(G.nodes[i].vertex)), G.nodes[i].vertex);
       place[G.nodes[i].vertex] = {i, 0, 0};
@@ -234,7 +250,13 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
       }
     std::sort(by_bound.begin(), by_bound.end());
   }
-  for (const Vertex_index end_vertex : ends) {
+  for (std::size_t e = 0; e < ends.size(); ++e) {
+    if (e > 0 && !FeatureRecon::internal::report_progress(
+                     options.progress, 0.95 * static_cast<double>(e) / static_cast<double>(ends.size()))) {
+      result.status = Status::interrupted;
+      break;
+    }
+    const Vertex_index end_vertex = ends[e];
     const std::size_t u = node_of.at(end_vertex);
     if (degree[u] != 1) continue;
     // The arc at u and its other end are excluded (joining them would make a tiny loop).
@@ -260,7 +282,7 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
         found = true;
       }
     };
-    if constexpr (bounded) {
+    if (bounded) {
       // The candidates' order does not matter: the closest wins, ties by smallest vertex.
       const double b = static_cast<double>(bound(end_vertex)), window = internal::bound_window(max_distance);
       auto it = std::lower_bound(by_bound.begin(), by_bound.end(), std::make_pair(b - window, Vertex_index(0)));
@@ -301,7 +323,7 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
       std::replace(incident[old_upper].begin(), incident[old_upper].end(), best_arc, G.arcs.size());
       incident.push_back({best_arc, G.arcs.size()});
       degree.push_back(2);
-      if constexpr (bounded) {
+      if (bounded) {
         place[best_vertex] = {target, 0, 0};
         for (std::size_t k = 0; k < upper_part.vertices.size(); ++k)
           place[upper_part.vertices[k]] = {no_node, G.arcs.size(), k};
@@ -341,6 +363,7 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
   });
   H.arcs = std::move(G.arcs);
   internal::refresh_node_types(H);
+  if (result.status == Status::success) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
 }
 

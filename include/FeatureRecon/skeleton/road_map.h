@@ -9,7 +9,7 @@
 //
 //   const Road_map_options used = resolve_road_map_options(trips, options);
 //   const Gps_trace_sample S = sample_gps_traces(trips, used.rips_radius, used.traces);
-//   const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius, used.traces.heading_tolerance);
+//   const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius);
 //   const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
 //   const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
 //   const Embedded_graph_2 map = merge_road_lines(lines, road_map_merge_options(used)).map;  // when used.merge_distance > 0
@@ -626,13 +626,13 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
   }
   // The neighbourhood graph up to 0.15 (no report after a stop), the skeleton up to 0.9.
   bool stopped = false;
-  Proximity_graph_options go;
+  Gps_trace_graph_options go;
   if (options.progress)
     go.progress = [&options, &stopped](double t) {
       if (!stopped && !options.progress(std::min(0.15, 0.1 + 0.05 * t))) stopped = true;  // (0.15 rounds up)
       return !stopped;
     };
-  Proximity_graph graph = build_gps_trace_graph(r.sample, r.used.rips_radius, r.used.traces.heading_tolerance, go);
+  Proximity_graph graph = build_gps_trace_graph(r.sample, r.used.rips_radius, go);
   if (stopped) {
     r.status = Status::interrupted;
     return r;

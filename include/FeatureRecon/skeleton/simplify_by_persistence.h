@@ -66,11 +66,11 @@ struct Simplification_complex {
 /// once; the values R uses are finite and each node's value is `values[vertex]`; the nodes are in increasing
 /// (value, vertex) order, as every function returning a Reeb_graph leaves them (all checked; throws naming the
 /// node or arc).
-/// \param progress called with the fraction done (persistence and merging paths up to 0.3, the Reeb graph of the
-///        glued complex up to 0.9, the quotient graph 1); returning false stops: status interrupted, empty graph.
+/// A stop through Simplification_options::progress leaves status interrupted and an empty graph.
 inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, const std::vector<double>& values,
-                                                          double delta, const Progress_callback& progress = {}) {
+                                                          double delta, const Simplification_options& options = {}) {
   const char* fn = "simplify_by_persistence";
+  const Progress_callback& progress = options.progress;
   using FeatureRecon::internal::Compressed_lists;
   using FeatureRecon::internal::release;
   using FeatureRecon::internal::throw_invalid_argument;
@@ -495,11 +495,11 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 /// simplify_by_persistence() of the Reeb graph of A.
 /// \throws std::invalid_argument when A's computation was interrupted (its graph lacks the arcs still open then).
 inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta,
-                                                          const Progress_callback& progress = {}) {
+                                                          const Simplification_options& options = {}) {
   if (A.status() == Status::interrupted)
     FeatureRecon::internal::throw_invalid_argument("simplify_by_persistence", "the augmented Reeb graph A is "
                                                    "incomplete: its computation was interrupted");
-  return simplify_by_persistence(A.reeb_graph(), A.values(), delta, progress);
+  return simplify_by_persistence(A.reeb_graph(), A.values(), delta, options);
 }
 
 }  // namespace skeleton

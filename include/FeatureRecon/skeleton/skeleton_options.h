@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace FeatureRecon {
@@ -39,6 +40,24 @@ struct Geodesic_options {
 /// Options of compute_augmented_reeb_graph().
 struct Reeb_graph_options {
   Progress_callback progress;  ///< called with the fraction of vertices swept; returning false stops
+};
+
+/// Options of simplify_by_persistence().
+struct Simplification_options {
+  /// Called with the fraction done (persistence and merging paths up to 0.3, the Reeb graph of the glued complex
+  /// up to 0.9, the quotient graph 1); returning false stops: status interrupted, empty graph.
+  Progress_callback progress;
+};
+
+/// Options of repair_reeb_graph() and connect_dead_ends().
+struct Reeb_repair_options {
+  /// Empty (default: every pair is measured), or a function of an input vertex that is 1-Lipschitz for the
+  /// distance, |bound(a) - bound(b)| <= distance(a, b) (a coordinate of Euclidean points): only pairs whose bounds
+  /// differ by at most the repair distance are measured. The result is the same; the work drops from quadratic.
+  std::function<double(std::uint32_t)> bound;
+  /// Called with the fraction done; returning false stops (status interrupted; the graph holds the arcs added
+  /// before the stop, see each function).
+  Progress_callback progress;
 };
 
 }  // namespace skeleton
