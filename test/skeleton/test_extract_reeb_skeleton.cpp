@@ -508,8 +508,8 @@ TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
 }
 
 TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
-  // The two simplifications report within 0.8-0.93 (they reported nothing: a long one looked hung) and a stop
-  // there ends the run.
+  // The two simplifications, the repair and the dead-end connection report in their stages (the simplifications
+  // reported nothing: a long one looked hung) and a stop in any of them ends the run.
   const Point_matrix m = circle_points(2000);
   Skeleton_options o;
   o.delta = 1;
@@ -521,12 +521,26 @@ TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
   };
   ASSERT_EQ(extract_reeb_skeleton(m, 1.0, o).status, Status::success);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
-  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.8 && t < 0.87; }), 3);
-  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.87 && t < 0.93; }), 3);
-  o.progress = [](double t) { return t < 0.88; };  // in the second simplification
-  const Reeb_skeleton s = extract_reeb_skeleton(m, 1.0, o);
-  EXPECT_EQ(s.status, Status::interrupted);
-  EXPECT_EQ(num_vertices(s.graph), 0u);
+  auto at = [](double x) { return 0.3 + 0.7 * x; };  // from points, the stages after the Rips graph: 0.3 to 1
+  auto reports = [&seen](double from, double to) {
+    return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t > from && t < to; });
+  };
+  EXPECT_GE(reports(at(0.8), at(0.87)), 3);    // the first simplification
+  EXPECT_GE(reports(at(0.87), at(0.91)), 2);   // repair and dead ends
+  EXPECT_GE(reports(at(0.91), at(0.95)), 3);   // the second simplification
+  for (const double stop_at : {at(0.83), at(0.88), at(0.9), at(0.93)}) {
+    std::size_t later = 0;
+    bool refused = false;
+    o.progress = [&](double t) {
+      if (refused) ++later;
+      refused = refused || t >= stop_at;
+      return t < stop_at;
+    };
+    const Reeb_skeleton s = extract_reeb_skeleton(m, 1.0, o);
+    EXPECT_EQ(s.status, Status::interrupted) << stop_at;
+    EXPECT_EQ(num_vertices(s.graph), 0u) << stop_at;
+    EXPECT_EQ(later, 0u) << stop_at;
+  }
 }
 
 TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {

@@ -747,8 +747,8 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
 
 TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
   // A grid of 30x30 blocks of 100 m (about 35,000 samples) against itself shifted by 3 m: both matchings report
-  // increasing fractions ending at 1 and score what they score unwatched; a stop at any report leaves the sample
-  // counts, no pair and status interrupted, and the callback is not asked again.
+  // increasing fractions ending at 1 (and below 1 before the end) and score what they score unwatched; a stop at
+  // any report leaves the samples, no pair and status interrupted, and the callback is not asked again.
   const Embedded_graph_2 gt = grid_map(31, 100.0), rec = grid_map(31, 100.0, 3.0, 0.0);
   for (const Map_matching matching : {Map_matching::greedy, Map_matching::optimal}) {
     Map_comparison_options options;
@@ -767,8 +767,9 @@ TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
     EXPECT_EQ(watched.f_score, plain.f_score);
     ASSERT_GT(seen.size(), 4u) << "matching " << static_cast<int>(matching);
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
-    EXPECT_EQ(seen.front(), 0.05);
+    EXPECT_EQ(seen.front(), 0.1);  // both maps sampled
     EXPECT_EQ(seen.back(), 1.0);
+    EXPECT_LT(seen[seen.size() - 2], 1.0);
     EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.1 && t < 1; }));
     for (const std::size_t allowed : {std::size_t(0), std::size_t(1), std::size_t(2), seen.size() - 2}) {
       std::size_t asked = 0;
@@ -781,8 +782,12 @@ TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
       EXPECT_EQ(stopped.matched, 0u) << allowed;
       EXPECT_EQ(stopped.f_score, 0.0) << allowed;
       EXPECT_EQ(stopped.ground_truth_samples, plain.ground_truth_samples) << allowed;
-      EXPECT_EQ(stopped.reconstruction_samples, allowed == 0 ? 0u : plain.reconstruction_samples) << allowed;
-      EXPECT_TRUE(stopped.ground_truth_partner.empty()) << allowed;
+      EXPECT_EQ(stopped.reconstruction_samples, plain.reconstruction_samples) << allowed;
+      EXPECT_EQ(stopped.ground_truth_sample_list.size(), plain.ground_truth_samples) << allowed;
+      EXPECT_EQ(stopped.reconstruction_sample_list.size(), plain.reconstruction_samples) << allowed;
+      EXPECT_EQ(stopped.ground_truth_partner, std::vector<std::int64_t>(plain.ground_truth_samples, -1)) << allowed;
+      EXPECT_EQ(stopped.reconstruction_partner, std::vector<std::int64_t>(plain.reconstruction_samples, -1))
+          << allowed;
     }
     // The matching alone stops the same way, its partner lists all -1.
     const std::vector<Map_sample> H = sample_map(gt, 5.0), G = sample_map(rec, 5.0);
@@ -794,4 +799,26 @@ TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
     EXPECT_EQ(M.ground_truth_partner, std::vector<std::int64_t>(H.size(), -1));
     EXPECT_EQ(M.reconstruction_partner, std::vector<std::int64_t>(G.size(), -1));
   }
+}
+
+TEST(MapComparison, GreedyProgressStaysBelowOneUntilTheEnd) {
+  // 5,000 ground-truth samples in a cluster of 0.1 m against 10 reconstruction samples 1 to 10 m from it in a
+  // row: every sample proposes to each of the 10 in turn, each taken before it comes back. The greedy matching's
+  // fraction counts settled samples, not searches, and 1 comes only at the end (it reached 1 eleven times before
+  // the end when it counted searches).
+  std::vector<Map_sample> H, G;
+  for (int i = 0; i < 5000; ++i) H.push_back({{0.001 * (i % 100), 0.001 * (i / 100)}, 0.0});
+  for (int i = 0; i < 10; ++i) G.push_back({{1.0 + i, 0.0}, 0.0});
+  Map_comparison_options options;
+  std::vector<double> seen;
+  options.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const Map_sample_matching M = match_map_samples(H, G, options);
+  EXPECT_EQ(M.matched, 10u);
+  ASSERT_GT(seen.size(), 2u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1.0), 1);
+  EXPECT_EQ(seen.back(), 1.0);
 }

@@ -457,6 +457,10 @@ TEST(RepairReebGraph, ProgressIsReportedAndAStopLeavesAValidGraph) {
       EXPECT_GE(partial.connected, previous) << allowed;
       EXPECT_LE(partial.connected, ends.connected) << allowed;
       previous = partial.connected;
+      EXPECT_NO_THROW(skeleton::internal::check_reeb_graph(partial.graph, "partial", &geo.values)) << allowed;
+      EXPECT_TRUE(std::is_sorted(partial.graph.arcs.begin(), partial.graph.arcs.end(),
+                                 [](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) { return a.lower < b.lower; }))
+          << allowed;
       EXPECT_NO_THROW(simplify_by_persistence(partial.graph, geo.values, 0.5)) << allowed;
     }
     EXPECT_EQ(previous, ends.connected);

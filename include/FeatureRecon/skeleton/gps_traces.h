@@ -813,7 +813,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
 struct Gps_trace_graph_options {
   /// Rips edges join samples whose travel directions differ by at most this angle (degrees; directed or not, as
   /// sampled). Negative (default -1): the sample's, Gps_trace_sample::heading_tolerance (the
-  /// Gps_trace_options::heading_tolerance it was sampled with); 180 or more: directions are ignored.
+  /// Gps_trace_options::heading_tolerance it was sampled with); 180 or more (90 or more for undirected samples):
+  /// directions are ignored.
   double heading_tolerance = -1;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips edges
   /// Called with the fraction done; returning false stops (the graph is partial; as build_rips_graph()).

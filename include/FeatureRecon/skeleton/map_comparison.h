@@ -63,7 +63,8 @@ struct Map_comparison_options {
   Map_matching matching = Map_matching::greedy;  ///< how samples are paired; default greedy
   bool keep_samples = false;     ///< also return both sample sets with their match flags (for diagnosis)
   /// Called with the fraction done (compare_maps(): both maps sampled at 0.1, then the matching); returning false
-  /// stops: status interrupted, no pair (matched 0, every partner -1, scores 0; the sample counts stay).
+  /// stops: status interrupted, no pair (matched 0, scores 0, every partner -1; the sample counts and, with
+  /// keep_samples, the sample lists stay).
   Progress_callback progress;
 };
 
@@ -335,12 +336,13 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
     if (g >= 0) heap.push_back({d, h, g});
   }
   std::make_heap(heap.begin(), heap.end(), later);
-  // Each pop pairs a sample or searches again: the fraction is the share of the first proposals settled.
+  // The fraction is the share of the first proposals settled (paired or given up); searches again do not count.
   const double proposals = static_cast<double>(std::max<std::size_t>(heap.size(), 1));
+  std::size_t settled = 0;
   for (std::size_t pops = 1; !heap.empty(); ++pops) {
     if (pops % stride == 0 &&
-        !FeatureRecon::internal::report_progress(options.progress,
-                                                 0.8 + 0.2 * std::min(1.0, static_cast<double>(pops) / proposals)))
+        !FeatureRecon::internal::report_progress(
+            options.progress, 0.8 + 0.19 * std::min(1.0, static_cast<double>(settled) / proposals)))
       return false;
     std::pop_heap(heap.begin(), heap.end(), later);
     Candidate c = heap.back();
@@ -349,6 +351,7 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
     if (!taken[c.g]) {
       taken[c.g] = 1;
       pair_samples(M, c.h, static_cast<std::size_t>(c.g));
+      ++settled;
       continue;
     }
     double d = 0;
@@ -356,6 +359,8 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
     if (g >= 0) {
       heap.push_back({d, c.h, g});
       std::push_heap(heap.begin(), heap.end(), later);
+    } else {
+      ++settled;
     }
   }
   return true;
@@ -562,26 +567,22 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
     }
   };
   std::vector<Map_sample> H = sampled(ground_truth, "ground truth");
+  std::vector<Map_sample> G = sampled(reconstruction, "reconstruction");
   Map_comparison_result r;
   r.ground_truth_samples = H.size();
-  if (!FeatureRecon::internal::report_progress(options.progress, 0.05)) {
-    r.status = Status::interrupted;
-    return r;
-  }
-  std::vector<Map_sample> G = sampled(reconstruction, "reconstruction");
   r.reconstruction_samples = G.size();
-  if (!FeatureRecon::internal::report_progress(options.progress, 0.1)) {
-    r.status = Status::interrupted;
-    return r;
+  Map_sample_matching M;
+  if (FeatureRecon::internal::report_progress(options.progress, 0.1)) {
+    Map_comparison_options matching = options;
+    if (options.progress)
+      matching.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
+    M = match_map_samples(H, G, matching);
+  } else {  // no pair
+    M.ground_truth_partner.assign(H.size(), -1);
+    M.reconstruction_partner.assign(G.size(), -1);
+    M.status = Status::interrupted;
   }
-  Map_comparison_options matching = options;
-  if (options.progress)
-    matching.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
-  Map_sample_matching M = match_map_samples(H, G, matching);
-  if (M.status == Status::interrupted) {
-    r.status = Status::interrupted;
-    return r;
-  }
+  r.status = M.status;
   r.matched = M.matched;
   if (options.keep_samples) {
     r.ground_truth_sample_list = std::move(H);
