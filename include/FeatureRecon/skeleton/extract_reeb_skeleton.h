@@ -742,12 +742,13 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
     std::vector<Vertex_index> original;
     for (std::size_t i = 0; i < n; ++i)
       if (first[i] == i) original.push_back(static_cast<Vertex_index>(i));
-    std::vector<std::vector<double>> distinct(original.size(), std::vector<double>(original.size()));
-    for (std::size_t r = 0; r < original.size(); ++r)
-      for (std::size_t c = 0; c < original.size(); ++c) distinct[r][c] = a[original[r] * n + original[c]];
-    g = internal::join_copies(build_rips_graph_from_distance_matrix(distinct, rips_radius), first, original);
-  } else {
-    g = build_rips_graph_from_distance_matrix(D, rips_radius);
+    const std::size_t m = original.size();
+    std::vector<double> distinct(m * m);
+    for (std::size_t r = 0; r < m; ++r)
+      for (std::size_t c = 0; c < m; ++c) distinct[r * m + c] = a[original[r] * n + original[c]];
+    g = internal::join_copies(internal::rips_graph_of_distance_matrix(distinct, m, rips_radius), first, original);
+  } else {  // from the checked copy: a second copy of the matrix would double the memory
+    g = internal::rips_graph_of_distance_matrix(a, n, rips_radius);
   }
   bool stopped = false;
   Progress_callback scaled;

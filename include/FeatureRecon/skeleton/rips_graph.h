@@ -523,6 +523,18 @@ std::vector<double> checked_distance_matrix(const Matrix& D, std::size_t& n, con
   check_distance_entries(a, n, fn);
   return a;
 }
+/// The Rips graph of a checked n x n distance matrix `a` (row-major): i < j joined when a(i, j) <= radius.
+inline Proximity_graph rips_graph_of_distance_matrix(const std::vector<double>& a, std::size_t n, double radius) {
+  Proximity_graph g;
+  g.number_of_vertices = n;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (a[i * n + j] <= radius) {
+        g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
+        g.edge_lengths.push_back(a[i * n + j]);
+      }
+  return g;
+}
 /// \endcond
 }  // namespace internal
 
@@ -536,16 +548,8 @@ Proximity_graph build_rips_graph_from_distance_matrix(const Matrix& D, double ra
   if (!(std::isfinite(radius) && radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
   std::size_t n = 0;
-  const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
-  Proximity_graph g;
-  g.number_of_vertices = n;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      if (a[i * n + j] <= radius) {
-        g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
-        g.edge_lengths.push_back(a[i * n + j]);
-      }
-  return g;
+  const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);  // sets n
+  return internal::rips_graph_of_distance_matrix(a, n, radius);
 }
 
 /// Symmetrised k-nearest-neighbour graph of a dense distance matrix (ties broken by index).
