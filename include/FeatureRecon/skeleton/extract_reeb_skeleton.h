@@ -430,10 +430,12 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
       max_triangles == options.max_triangles && max_triangles > 0
           ? "max_triangles of the options, --max-triangles on the command line"
           : "the Reeb graph's limit: 2^31 - 1 edges and triangles together, 2^30 edges");
-  if (stopped) {
-    result.status = Status::interrupted;
-    return result;
-  }
+  // A stage ended by the callback (its own status, or a stop the stage wrapper saw) ends the run.
+  auto ended = [&stopped, &result](Status stage_status) {
+    if (stopped || stage_status == Status::interrupted) result.status = Status::interrupted;
+    return result.status == Status::interrupted;
+  };
+  if (ended(Status::success)) return result;
   result.rips_edges = K.number_of_edges();
   result.rips_triangles = K.number_of_triangles();
   Geodesic_options go;
@@ -447,24 +449,15 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
         fn, what.compare(0, stage_name.size(), stage_name) == 0 ? what.substr(stage_name.size()) : what,
         " (in compute_geodesic_function)");
   }
-  if (stopped || geo.status == Status::interrupted) {
-    result.status = Status::interrupted;
-    return result;
-  }
+  if (ended(geo.status)) return result;
   Reeb_graph_options ro;
   ro.progress = stage(0.35, 0.8);
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, geo.values, ro);
-  if (stopped || A.status() == Status::interrupted) {
-    result.status = Status::interrupted;
-    return result;
-  }
+  if (ended(A.status())) return result;
   Simplification_options so;
   so.progress = stage(0.8, 0.87);
   Reeb_simplification_result S = simplify_by_persistence(A, options.delta, so);
-  if (stopped || S.status == Status::interrupted) {
-    result.status = Status::interrupted;
-    return result;
-  }
+  if (ended(S.status)) return result;
   result.removed_branches = S.removed_branches;
   result.removed_loops = S.removed_loops;
   if (options.repair_distance > 0) {
@@ -472,28 +465,19 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     if constexpr (!std::is_same<Bound, std::nullptr_t>::value) repair.bound = bound;
     repair.progress = stage(0.87, 0.89);
     Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance, repair);
-    if (stopped || fixed.status == Status::interrupted) {
-      result.status = Status::interrupted;
-      return result;
-    }
+    if (ended(fixed.status)) return result;
     result.repaired = fixed.joined;
     Reeb_graph joined = std::move(fixed.graph);
     if (options.connect_dead_ends) {
       repair.progress = stage(0.89, 0.91);
       Reeb_dead_end_result ends = connect_dead_ends(joined, A.values(), options.repair_distance, distance, repair);
-      if (stopped || ends.status == Status::interrupted) {
-        result.status = Status::interrupted;
-        return result;
-      }
+      if (ended(ends.status)) return result;
       result.connected_dead_ends = ends.connected;
       joined = std::move(ends.graph);
     }
     so.progress = stage(0.91, 0.95);
     S = simplify_by_persistence(joined, A.values(), options.delta, so);
-    if (stopped || S.status == Status::interrupted) {
-      result.status = Status::interrupted;
-      return result;
-    }
+    if (ended(S.status)) return result;
     result.removed_branches += S.removed_branches;
     result.removed_loops += S.removed_loops;
   }

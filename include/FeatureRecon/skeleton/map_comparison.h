@@ -274,6 +274,15 @@ inline void check_map_comparison_options(const Map_comparison_options& options, 
                                                    static_cast<int>(options.matching));
 }
 
+/// A matching of no pair (every partner -1) of h ground-truth and g reconstruction samples.
+inline Map_sample_matching no_pairs(std::size_t h, std::size_t g, Status status = Status::success) {
+  Map_sample_matching M;
+  M.ground_truth_partner.assign(h, -1);
+  M.reconstruction_partner.assign(g, -1);
+  M.status = status;
+  return M;
+}
+
 inline void pair_samples(Map_sample_matching& M, std::size_t h, std::size_t g) {
   M.ground_truth_partner[h] = static_cast<std::int64_t>(g);
   M.reconstruction_partner[g] = static_cast<std::int64_t>(h);
@@ -530,18 +539,11 @@ inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& grou
         FeatureRecon::internal::throw_invalid_argument(fn, set == &ground_truth ? "ground-truth" : "reconstruction",
                                                        " sample ", i, " has a non-finite position or bearing");
     }
-  Map_sample_matching M;
-  M.ground_truth_partner.assign(ground_truth.size(), -1);
-  M.reconstruction_partner.assign(reconstruction.size(), -1);
+  Map_sample_matching M = internal::no_pairs(ground_truth.size(), reconstruction.size());
   if (!ground_truth.empty() && !reconstruction.empty() &&
       !(options.matching == Map_matching::optimal ? internal::match_optimal(ground_truth, reconstruction, options, M, fn)
-                                                   : internal::match_greedy(ground_truth, reconstruction, options, M))) {
-    M.matched = 0;
-    M.ground_truth_partner.assign(ground_truth.size(), -1);
-    M.reconstruction_partner.assign(reconstruction.size(), -1);
-    M.status = Status::interrupted;
-    return M;
-  }
+                                                   : internal::match_greedy(ground_truth, reconstruction, options, M)))
+    return internal::no_pairs(ground_truth.size(), reconstruction.size(), Status::interrupted);
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return M;
 }
@@ -571,16 +573,12 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
   Map_comparison_result r;
   r.ground_truth_samples = H.size();
   r.reconstruction_samples = G.size();
-  Map_sample_matching M;
+  Map_sample_matching M = internal::no_pairs(H.size(), G.size(), Status::interrupted);
   if (FeatureRecon::internal::report_progress(options.progress, 0.1)) {
     Map_comparison_options matching = options;
     if (options.progress)
       matching.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
     M = match_map_samples(H, G, matching);
-  } else {  // no pair
-    M.ground_truth_partner.assign(H.size(), -1);
-    M.reconstruction_partner.assign(G.size(), -1);
-    M.status = Status::interrupted;
   }
   r.status = M.status;
   r.matched = M.matched;
