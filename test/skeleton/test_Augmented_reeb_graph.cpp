@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 
@@ -448,4 +449,64 @@ TEST(AugmentedReebGraph, CollinearAndGridPointClouds) {
   // With the diagonals (r = 1.5) every square is filled: a contractible complex, no loop.
   const Simplicial_complex_2 KD = build_rips_complex_2(grid, 1.5);
   EXPECT_EQ(compute_augmented_reeb_graph(KD, compute_geodesic_function(KD).values).reeb_graph().loops(), 0u);
+}
+
+TEST(AugmentedReebGraph, TheSetUpReportsAndAStopThereLeavesNoArc) {
+  // The complete graph on 200 points: 1,313,400 triangles, so both passes over the triangles and the bucketing
+  // after them report on their way (every 2^20 triangles). Until session 37 the first report after 0 came when the
+  // sweep began: on a dense Rips complex two thirds of the time passed without one, and a stop waited as long.
+  std::vector<std::array<double, 2>> points;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 200; ++i) points.push_back({u(rng), u(rng)});
+  const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(points, 2.0));
+  ASSERT_EQ(K.number_of_triangles(), 1313400u);
+  std::vector<double> f(200);
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = points[i][0] + 0.5 * points[i][1];
+  Reeb_graph_options options;
+  std::vector<double> seen;
+  options.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const Augmented_reeb_graph full = compute_augmented_reeb_graph(K, f, options);
+  ASSERT_EQ(full.status(), Status::success);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  auto reports = [&seen](double from, double to) {
+    return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t > from && t < to; });
+  };
+  EXPECT_GE(reports(0.05, 0.2), 1);   // counting the triangles by their first edge
+  EXPECT_GE(reports(0.2, 0.35), 1);   // storing them
+  EXPECT_GE(reports(0.35, 0.4), 2);   // bucketing them by their middle vertex (two passes)
+  for (const double stop_at : {0.0, 0.05, 0.1, 0.2, 0.3, 0.35, 0.38, 0.4}) {
+    std::size_t later = 0;
+    bool refused = false;
+    options.progress = [&](double t) {
+      if (refused) ++later;
+      refused = refused || t >= stop_at;
+      return !refused;
+    };
+    const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, f, options);
+    EXPECT_EQ(A.status(), Status::interrupted) << stop_at;
+    EXPECT_EQ(A.number_of_arcs(), 0u) << stop_at;
+    EXPECT_EQ(A.order(), full.order()) << stop_at;
+    EXPECT_EQ(later, 0u) << stop_at;
+    EXPECT_EQ(A.reeb_graph().nodes.size(), 200u) << stop_at;  // every vertex isolated: a minimum and a maximum
+  }
+}
+
+TEST(LargeArrayAllocator, HonoursTheAlignmentOfItsType) {
+  // The link-cut tree's nodes are aligned to 32 bytes; blocks below 4 MiB came from malloc (16 bytes), so about
+  // every second array of them was misaligned (undefined behaviour, reported by -fsanitize=alignment).
+  struct alignas(32) Wide {
+    double x[4];
+  };
+  std::vector<FeatureRecon::internal::Large_vector<Wide>> arrays;
+  for (std::size_t n = 1; n <= 64; ++n) arrays.emplace_back(n);
+  arrays.emplace_back((std::size_t(5) << 20) / sizeof(Wide));  // the huge-page path
+  for (const auto& a : arrays) EXPECT_EQ(reinterpret_cast<std::uintptr_t>(a.data()) % alignof(Wide), 0u) << a.size();
+  FeatureRecon::internal::Large_vector<char> bytes(3);  // ordinary types keep malloc
+  EXPECT_EQ(bytes.size(), 3u);
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
 #include <FeatureRecon/skeleton/embed_reeb_graph.h>
+#include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 #include <FeatureRecon/skeleton/simplify_by_persistence.h>
@@ -393,4 +394,136 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
   bool stopped = false;
   skeleton::internal::classical_mds_3d(cycle, n, [](double) { return false; }, stopped, 0);
   EXPECT_TRUE(stopped);
+}
+
+TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
+  // Three arcs of 40,000 points each on three parallel wavy lines: progress is asked every 65,536 points, so before
+  // the third arc (80,002 points drawn, counting one more per arc). A stop there draws the third arc as the
+  // segment between its nodes and leaves the first two as without a stop.
+  const std::size_t per_arc = 40000;
+  Reeb_graph G;
+  std::vector<std::array<double, 3>> positions;
+  std::vector<double> f;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Vertex_index low = static_cast<Vertex_index>(positions.size());
+    positions.push_back({0.0, 10.0 * k, 0.0});
+    f.push_back(0.0);
+    const Vertex_index high = static_cast<Vertex_index>(positions.size());
+    positions.push_back({1.0, 10.0 * k, 0.0});
+    f.push_back(1.0);
+    G.nodes.push_back({low, 0.0, minimum, {}});
+    G.nodes.push_back({high, 1.0, maximum, {}});
+    Reeb_graph::Arc arc{2 * k, 2 * k + 1, {}};
+    for (std::size_t i = 1; i <= per_arc; ++i) {
+      const double x = static_cast<double>(i) / (per_arc + 1);
+      arc.vertices.push_back(static_cast<Vertex_index>(positions.size()));
+      positions.push_back({x, 10.0 * k + std::sin(6 * x), 0.0});
+      f.push_back(x);
+    }
+    G.arcs.push_back(std::move(arc));
+  }
+  std::vector<double> seen;
+  Embedding_options o;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const Reeb_graph_embedding full = embed_reeb_graph(G, positions, f, 2, o);
+  EXPECT_EQ(full.status, Status::success);
+  ASSERT_EQ(seen.size(), 2u);
+  EXPECT_NEAR(seen[0], 2.0 / 3, 1e-9);
+  EXPECT_EQ(seen[1], 1.0);
+  ASSERT_GT(full.arc_polylines[2].size(), 2u);
+  std::size_t later = 0;
+  bool refused = false;
+  o.progress = [&](double) {
+    later += refused;
+    refused = true;
+    return false;
+  };
+  const Reeb_graph_embedding partial = embed_reeb_graph(G, positions, f, 2, o);
+  EXPECT_EQ(partial.status, Status::interrupted);
+  EXPECT_EQ(later, 0u);
+  EXPECT_EQ(partial.node_positions, full.node_positions);
+  ASSERT_EQ(partial.arc_polylines.size(), 3u);
+  EXPECT_EQ(partial.arc_polylines[0], full.arc_polylines[0]);
+  EXPECT_EQ(partial.arc_polylines[1], full.arc_polylines[1]);
+  EXPECT_EQ(partial.arc_polylines[2],
+            (std::vector<std::array<double, 3>>{full.node_positions[4], full.node_positions[5]}));
+  // The same in input space (any dimension) and with a graph.
+  Point_matrix P;
+  P.rows = positions.size();
+  P.dimension = 2;
+  for (const auto& p : positions) P.data.insert(P.data.end(), {p[0], p[1]});
+  Proximity_graph path;
+  path.number_of_vertices = P.rows;
+  for (const auto& arc : G.arcs) {
+    path.edges.push_back({G.nodes[arc.lower].vertex, arc.vertices.front()});
+    for (std::size_t i = 0; i + 1 < arc.vertices.size(); ++i) path.edges.push_back({arc.vertices[i], arc.vertices[i + 1]});
+    path.edges.push_back({arc.vertices.back(), G.nodes[arc.upper].vertex});
+  }
+  for (auto& e : path.edges)
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+  std::sort(path.edges.begin(), path.edges.end());
+  refused = false;
+  const Reeb_graph_input_embedding input = embed_reeb_graph_in_input_space(G, path, P, f, o);
+  EXPECT_EQ(input.status, Status::interrupted);
+  ASSERT_EQ(input.arc_polylines.size(), 3u);
+  EXPECT_EQ(input.arc_polylines[2], (std::vector<double>{0.0, 20.0, 1.0, 20.0}));
+  refused = false;
+  EXPECT_EQ(embed_reeb_graph(G, path, positions, f, 2, o).status, Status::interrupted);
+  EXPECT_EQ(later, 0u);
+}
+
+TEST(EmbedReebGraph, GapsAreMeasuredAtEveryScale) {
+  // The L of ArcsWithoutPointsFollowTheGraph, scaled: bridged the same way at every scale. Gaps were measured by
+  // their squares, which underflow below about 1e-160 (nothing bridged: a straight chord) and overflow above about
+  // 1e154 (every gap bridged, also one below max_gap).
+  for (const double scale : {1.0, 1e-170, 1e-200, 1e170, 1e200}) {
+    std::vector<std::array<double, 3>> xyz;
+    for (int i = 0; i <= 20; ++i) xyz.push_back({scale * i, 0, 0});
+    for (int i = 1; i <= 20; ++i) xyz.push_back({scale * 20, scale * i, 0});
+    Proximity_graph g;
+    g.number_of_vertices = xyz.size();
+    for (Vertex_index v = 0; v + 1 < xyz.size(); ++v) g.edges.push_back({v, v + 1});
+    const auto last = static_cast<Vertex_index>(xyz.size() - 1);
+    Reeb_graph G;
+    G.nodes = {{0, 0.0, minimum, {}}, {last, 0.5, maximum, {}}};
+    G.arcs = {{0, 1, {}}};
+    const std::vector<double> f(xyz.size(), 0.25);
+    const auto line = embed_reeb_graph(G, g, xyz, f, 2).arc_polylines.at(0);
+    EXPECT_GT(line.size(), 30u) << scale;
+    std::vector<std::array<double, 3>> unscaled;
+    for (const auto& p : line) unscaled.push_back({p[0] / scale, p[1] / scale, 0});
+    EXPECT_LE(distance_to_corner(unscaled), 1.5) << scale;
+    Embedding_options wide;
+    wide.max_gap = 30 * scale;  // the chord is 28.3 long: nothing to bridge
+    EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, wide).arc_polylines[0].size(), 2u) << scale;
+  }
+}
+
+TEST(EmbedReebGraph, AnEdgeLongerThanTheLargestDoubleEnds) {
+  // Two clusters near -1e308 and +1e308 joined by one edge whose length exceeds the largest double: its length
+  // was NaN (inf * sqrt(0)), the shortest-path search never ended and filled the memory. It is infinite now,
+  // and the skeleton is drawn.
+  const double a[2] = {1e308, 0}, b[2] = {-1e308, 0}, c[2] = {-5e307, 0};
+  EXPECT_EQ(skeleton::internal::point_distance(a, b, 2), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(skeleton::internal::point_distance(a, c, 2), 1.5e308);
+  EXPECT_EQ(skeleton::internal::point_distance(c, a, 2), 1.5e308);
+  Point_matrix P;
+  P.dimension = 1;
+  for (int i = 0; i < 6; ++i) P.data.push_back(-1e308 + 1e292 * i);
+  for (int i = 0; i < 6; ++i) P.data.push_back(1e308 - 1e292 * (5 - i));
+  P.rows = 12;
+  Proximity_graph g;
+  g.number_of_vertices = 12;
+  for (Vertex_index v = 0; v + 1 < 12; ++v) {
+    g.edges.push_back({v, v + 1});
+    g.edge_lengths.push_back(1.0);
+  }
+  const Reeb_skeleton s = extract_reeb_skeleton(g, P);
+  EXPECT_EQ(s.status, Status::success);
+  EXPECT_EQ(num_edges(s.graph), 1u);
+  for (auto e : boost::make_iterator_range(edges(s.graph)))
+    for (const auto& p : s.graph[e].polyline) EXPECT_FALSE(std::isnan(p[0]));
 }

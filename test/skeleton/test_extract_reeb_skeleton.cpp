@@ -508,8 +508,8 @@ TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
 }
 
 TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
-  // The two simplifications, the repair and the dead-end connection report in their stages (the simplifications
-  // reported nothing: a long one looked hung) and a stop in any of them ends the run.
+  // The two simplifications, the repair, the dead-end connection and the embedding report in their stages (the
+  // simplifications reported nothing: a long one looked hung) and a stop in any of them ends the run.
   const Point_matrix m = circle_points(2000);
   Skeleton_options o;
   o.delta = 1;
@@ -528,7 +528,8 @@ TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
   EXPECT_GE(reports(at(0.8), at(0.87)), 3);    // the first simplification
   EXPECT_GE(reports(at(0.87), at(0.91)), 2);   // repair and dead ends
   EXPECT_GE(reports(at(0.91), at(0.95)), 3);   // the second simplification
-  for (const double stop_at : {at(0.83), at(0.88), at(0.9), at(0.93)}) {
+  EXPECT_GE(reports(at(0.95), at(0.995)), 1);  // the embedding (it reported nothing until session 37)
+  for (const double stop_at : {at(0.83), at(0.88), at(0.9), at(0.93), at(0.96)}) {
     std::size_t later = 0;
     bool refused = false;
     o.progress = [&](double t) {

@@ -3,6 +3,7 @@
 #ifndef FEATURERECON_INTERNAL_LARGE_ARRAY_ALLOCATOR_H
 #define FEATURERECON_INTERNAL_LARGE_ARRAY_ALLOCATOR_H
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <new>
@@ -18,7 +19,8 @@ namespace internal {
 /// \cond
 /// Allocator for the large scratch arrays of the sweeps: blocks of 4 MiB or more are 2 MiB-aligned and
 /// advised as transparent huge pages on Linux, which makes first-touch page faults (the dominant cost of
-/// fresh memory on virtual machines) about 500 times rarer. Smaller blocks use malloc.
+/// fresh memory on virtual machines) about 500 times rarer. Smaller blocks use malloc (aligned_alloc for
+/// over-aligned types).
 template <class T>
 struct Large_array_allocator {
   using value_type = T;
@@ -39,6 +41,8 @@ struct Large_array_allocator {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
       if (p != nullptr) (void)madvise(p, rounded, MADV_HUGEPAGE);
 #endif
+    } else if (alignof(T) > alignof(std::max_align_t)) {  // the link-cut tree's nodes are aligned to 32 bytes
+      p = std::aligned_alloc(alignof(T), (std::max<std::size_t>(bytes, 1) + alignof(T) - 1) / alignof(T) * alignof(T));
     } else {
       p = std::malloc(bytes == 0 ? 1 : bytes);
     }

@@ -126,7 +126,8 @@ class Augmented_reeb_graph {
     std::iota(k.begin(), k.end(), m_up_offset[m_rank[v]]);
     return k;
   }
-  /// Completed, interrupted by the progress callback (arcs still open are missing), or degenerate (empty input).
+  /// Completed, interrupted by the progress callback (arcs still open are missing; no arc at all after a stop in the
+  /// set-up passes), or degenerate (empty input).
   Status status() const { return m_status; }
 
   /// Derives the Reeb graph (critical nodes only; chains of regular nodes become arcs). O(n + arcs).
@@ -209,6 +210,20 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     }
   }
   const std::vector<double>& val = R.m_values;
+  // Progress: the set-up passes (sorting, bucketing, two passes over the triangles) report up to 0.4, the sweep
+  // from 0.4 to 1; on a dense Rips complex the set-up takes about two thirds of the time. A stop in the set-up
+  // returns the graph without arcs.
+  const double sweep_start = 0.4;
+  auto interrupt = [&R]() {
+    R.m_status = Status::interrupted;
+    R.m_arcs.clear();
+    R.finish();
+  };
+  auto stop_here = [&options, &interrupt](double fraction) {
+    if (FeatureRecon::internal::report_progress(options.progress, fraction)) return false;
+    interrupt();
+    return true;
+  };
   {
     FeatureRecon::internal::Large_vector<std::pair<double, Vertex_index>> keyed(n);  // contiguous keys sort faster than indirection
     for (std::size_t i = 0; i < n; ++i) keyed[i] = {val[i], static_cast<Vertex_index>(i)};
@@ -224,6 +239,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     R.finish();
     return R;
   }
+  if (stop_here(0.0)) return R;
 
   // Per vertex: edges whose lower / upper end it is (by rank). Buckets are keyed by sweep step (rank), not by
   // vertex: the sweep then reads them sequentially. The edges leaving a vertex are listed by decreasing rank
@@ -246,6 +262,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   for (std::size_t i = 0; i < E; ++i) edge_new[up_edges.items[i]] = static_cast<std::uint32_t>(i);
   for (std::uint32_t& e : up_edges.items) e = edge_new[e];
   for (std::uint32_t& e : down_edges.items) e = edge_new[e];
+  if (stop_here(0.05)) return R;
 
   // Visits the triangles u < v < w in their canonical (sorted) order with the sweep numbers of their edges
   // uv, vw, uw, found by a merge walk over the sorted edge list (edges starting at u are contiguous).
@@ -271,11 +288,16 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
                                                      ") of a triangle is missing");
     return i;
   };
-  auto for_each_triangle = [&](auto&& visit) {
+  // Reports every 2^20 triangles, from `from` to `to`; false when the callback asked to stop (the walk ends there).
+  auto for_each_triangle = [&](double from, double to, auto&& visit) {
     constexpr Vertex_index none = std::numeric_limits<Vertex_index>::max();
     Vertex_index u = none, v = none;
     std::size_t uv = 0, uw = 0, vw = 0;
-    for (const Triangle& t : K.triangles) {
+    for (std::size_t i = 0; i < T; ++i) {
+      if ((i & ((std::size_t(1) << 20) - 1)) == 0 && i > 0 &&
+          !FeatureRecon::internal::report_progress(options.progress, from + (to - from) * static_cast<double>(i) / T))
+        return false;
+      const Triangle& t = K.triangles[i];
       if (t[0] != u) {
         u = t[0];
         v = none;
@@ -291,6 +313,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
       vw = seek(vw, v, t[2]);
       visit(t, edge_new[uv], edge_new[vw], edge_new[uw]);
     }
+    return true;
   };
 
   // Per triangle, with its vertices by rank a < b < c: its edges ab, bc, ac. The deletion times of its lower
@@ -318,18 +341,40 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   internal::Buckets<std::uint32_t> by_mid;                          // triangles by the step of b
   {
     FeatureRecon::internal::Large_vector<std::size_t> first_tri(E + 1, 0);
-    for_each_triangle([&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
-      ++first_tri[roles(t, uv, vw, uw).ab + 1];
-    });
+    if (!for_each_triangle(0.05, 0.2, [&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
+          ++first_tri[roles(t, uv, vw, uw).ab + 1];
+        })) {
+      interrupt();
+      return R;
+    }
+    if (stop_here(0.2)) return R;
     for (std::size_t e = 0; e < E; ++e) first_tri[e + 1] += first_tri[e];
     for (std::size_t step = 0; step <= n; ++step) by_min[step] = first_tri[up_edges.offset[step]];
-    for_each_triangle([&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
-      const Tri r = roles(t, uv, vw, uw);
-      tri[first_tri[r.ab]++] = r;
-    });
+    if (!for_each_triangle(0.2, 0.35, [&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
+          const Tri r = roles(t, uv, vw, uw);
+          tri[first_tri[r.ab]++] = r;
+        })) {
+      interrupt();
+      return R;
+    }
+    if (stop_here(0.35)) return R;
+    // Two passes (count, fill) that report every 2^20 triangles. After a stop nothing more is emitted: the fill
+    // then writes fewer items than were counted, never more, and the lists are dropped.
+    bool stopped = false;
+    int pass = 0;
     by_mid.build(n, [&](auto emit) {
-      for (std::size_t t = 0; t < T; ++t) emit(upper_rank[tri[t].ab], static_cast<std::uint32_t>(t));
+      for (std::size_t t = 0; t < T && !stopped; ++t) {
+        if ((t & ((std::size_t(1) << 20) - 1)) == 0 && t > 0)
+          stopped = !FeatureRecon::internal::report_progress(
+              options.progress, 0.35 + 0.025 * (pass + static_cast<double>(t) / static_cast<double>(T)));
+        if (!stopped) emit(upper_rank[tri[t].ab], static_cast<std::uint32_t>(t));
+      }
+      ++pass;
     });
+    if (stopped) {
+      interrupt();
+      return R;
+    }
   }
   edge_new.clear();
   edge_new.shrink_to_fit();
@@ -415,9 +460,11 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     return i;
   };
 
+  if (stop_here(sweep_start)) return R;
   for (std::size_t step = 0; step < n; ++step) {
-    if ((step & 4095) == 0 &&
-        !FeatureRecon::internal::report_progress(options.progress, static_cast<double>(step) / n)) {
+    if ((step & 1023) == 0 && step > 0 &&
+        !FeatureRecon::internal::report_progress(options.progress,
+                                                 sweep_start + (1 - sweep_start) * static_cast<double>(step) / n)) {
       R.m_status = Status::interrupted;
       break;
     }

@@ -50,6 +50,9 @@ struct Embedding_options {
   /// nodes far apart; it is then drawn through the data instead of straight across. 0 (default): twice the median
   /// edge length of the graph; negative: straight segments.
   double max_gap = 0;
+  /// Called with the fraction of the arcs' points drawn; returning false stops: the arcs not drawn yet are straight
+  /// segments between their nodes, and the embedding's status is Status::interrupted.
+  Progress_callback progress;
 };
 
 /// A Reeb graph drawn in space: node positions and one polyline per arc (from its lower to its upper node).
@@ -60,6 +63,7 @@ struct Reeb_graph_embedding {
   /// Gaps of a polyline wider than this were bridged through the graph (Embedding_options::max_gap, or the value
   /// the automatic setting chose); infinity when nothing was bridged (no graph, or max_gap < 0).
   double max_gap = std::numeric_limits<double>::infinity();
+  Status status = Status::success;  ///< interrupted when the progress callback stopped the drawing
 };
 
 /// Coordinates of the points in at most 3 dimensions: unchanged up to 3D, else the projection onto the three
@@ -183,7 +187,9 @@ class Graph_path_finder {
       for (std::size_t k = m_adjacency.offsets[v]; k < m_adjacency.offsets[v + 1]; ++k) {
         const Vertex_index w = m_adjacency.targets[k];
         const double dw = d + length(v, w);
-        if (dw > limit || (m_stamp[w] == m_search && dw >= m_distance[w])) continue;
+        // Written so that a NaN length is never taken (it made every test false: vertices entered the queue
+        // again and again, and the search never ended).
+        if (!(dw <= limit) || (m_stamp[w] == m_search && !(dw < m_distance[w]))) continue;
         m_stamp[w] = m_search;
         m_distance[w] = dw;
         m_previous[w] = v;
@@ -230,6 +236,7 @@ struct Flat_embedding {
   std::vector<std::vector<double>> nodes;  ///< per node, P.dimension coordinates
   std::vector<std::vector<double>> arcs;   ///< per arc, P.dimension coordinates per polyline vertex
   double max_gap = std::numeric_limits<double>::infinity();  ///< see Reeb_graph_embedding::max_gap
+  Status status = Status::success;                          ///< see Reeb_graph_embedding::status
 };
 
 /// The level width used when Embedding_options::level_width is 0: 1/64 of the range of the node values (1 when
@@ -318,9 +325,25 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     if (!(G.arcs[a].lower < G.nodes.size() && G.arcs[a].upper < G.nodes.size()))
       FeatureRecon::internal::throw_invalid_argument(fn, "arc ", a, " joins nodes (", G.arcs[a].lower, ", ",
                                                      G.arcs[a].upper, ") out of range [0, ", G.nodes.size(), ")");
+  // Progress by points drawn (an arc counts its points and one more), reported every 2^16 of them.
+  double total_work = 0, work = 0, reported = 0;
+  for (const auto& arc : G.arcs) total_work += static_cast<double>(arc.vertices.size() + 1);
   for (std::size_t a = 0; a < G.arcs.size(); ++a) {
     const auto& arc = G.arcs[a];
     const auto& vs = arc.vertices;
+    if (work - reported >= 65536) {
+      reported = work;
+      if (!FeatureRecon::internal::report_progress(options.progress, work / total_work)) {
+        E.status = Status::interrupted;
+        for (std::size_t b = a; b < G.arcs.size(); ++b) {  // the rest drawn straight, node to node
+          std::vector<double> straight(E.nodes[G.arcs[b].lower]);
+          straight.insert(straight.end(), E.nodes[G.arcs[b].upper].begin(), E.nodes[G.arcs[b].upper].end());
+          E.arcs.push_back(std::move(straight));
+        }
+        return E;
+      }
+    }
+    work += static_cast<double>(vs.size() + 1);
     for (const Vertex_index v : vs) check(v);
     // Runs of consecutive points (in f order) within one bin of width `width`.
     run_of.assign(vs.size(), 0);
@@ -370,8 +393,9 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       origin.push_back(vs[i]);
       for (std::size_t t = i; finder && t < j; ++t) {
         if (find_root(parent, t) != best) continue;
-        double s = 0;
-        for (std::size_t k = 0; k < d; ++k) s += (P.row(vs[t])[k] - line[at + k]) * (P.row(vs[t])[k] - line[at + k]);
+        // Distances scaled as point_distance() scales them: squares underflowed below about 1e-160 (every point
+        // tied at 0) and overflowed above about 1e154.
+        const double s = point_distance(P.row(vs[t]), line.data() + at, d);
         if (s < closest) {
           closest = s;
           origin.back() = vs[t];
@@ -397,9 +421,9 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       };
       std::vector<double> mean(d);
       for (std::size_t t = 1; t < origin.size(); ++t) {
-        double gap = 0;
-        for (std::size_t k = 0; k < d; ++k) gap += (line[t * d + k] - line[(t - 1) * d + k]) * (line[t * d + k] - line[(t - 1) * d + k]);
-        gap = std::sqrt(gap);
+        // As the graph's edge lengths are measured (the squares made bridging depend on the scale: nothing was
+        // bridged below about 1e-160, every gap above about 1e154).
+        const double gap = point_distance(line.data() + (t - 1) * d, line.data() + t * d, d);
         if (gap > max_gap && origin[t] != origin[t - 1] && finder->path(origin[t - 1], origin[t], 4 * gap + max_gap, path))
           for (const Vertex_index v : path) {
             const std::size_t first = adjacency->offsets[v], count = 1 + adjacency->offsets[v + 1] - first;
@@ -436,6 +460,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     }
     E.arcs.push_back(std::move(line));
   }
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return E;
 }
 
@@ -452,6 +477,7 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacenc
   Reeb_graph_embedding E;
   E.dimension = std::min<std::size_t>(dimension, 3);
   E.max_gap = F.max_gap;
+  E.status = F.status;
   for (const auto& n : F.nodes) E.node_positions.push_back({n[0], n[1], n[2]});
   for (const auto& a : F.arcs) {
     std::vector<std::array<double, 3>> line;
@@ -646,6 +672,7 @@ struct Reeb_graph_input_embedding {
   std::size_t dimension = 0;                        ///< dimension of the input points
   std::vector<std::vector<double>> node_positions;  ///< per node, `dimension` coordinates
   std::vector<std::vector<double>> arc_polylines;   ///< per arc, `dimension` coordinates per polyline vertex
+  Status status = Status::success;                  ///< interrupted when the progress callback stopped the drawing
 };
 
 /// embed_reeb_graph() in the input space itself (no projection): the same centroids of level-set pieces and the
@@ -660,6 +687,7 @@ inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_gra
   internal::Flat_embedding F = internal::embed_flat(G, &adjacency, points, values, options);
   Reeb_graph_input_embedding E;
   E.dimension = points.dimension;
+  E.status = F.status;
   E.node_positions = std::move(F.nodes);
   E.arc_polylines = std::move(F.arcs);
   return E;

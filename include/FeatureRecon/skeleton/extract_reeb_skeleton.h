@@ -497,11 +497,18 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   if (eo.level_width == 0) eo.level_width = automatic_level_width(S.graph);  // mostly duplicate points
   result.level_width = eo.level_width;
   const std::vector<std::array<double, 3>> projected = project_to_3d(coordinates);
+  eo.progress = stage(0.95, dimension > 3 ? 0.97 : 0.99);
   const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, projected, A.values(), dimension, eo);
+  if (ended(E.status)) return result;
   result.graph = make_skeleton_graph(S.graph, E);
   result.max_gap = E.max_gap;
   if (dimension > 3) {
+    eo.progress = stage(0.97, 0.99);
     Reeb_graph_input_embedding I = embed_reeb_graph_in_input_space(S.graph, K, coordinates, A.values(), eo);
+    if (ended(I.status)) {
+      result.graph = Skeleton_graph();
+      return result;
+    }
     for (std::size_t i = 0; i < I.node_positions.size(); ++i) result.graph[i].input_position = std::move(I.node_positions[i]);
     std::size_t k = 0;
     for (auto e : boost::make_iterator_range(edges(result.graph))) result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);

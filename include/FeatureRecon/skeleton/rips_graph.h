@@ -209,9 +209,17 @@ inline double point_distance(const double* p, const double* q, std::size_t dimen
   double a = 0;
   for (std::size_t c = 0; c < dimension; ++c) a = std::max(a, std::fabs(p[c] - q[c]));
   s = 0;
-  if (a > 0 && a < std::numeric_limits<double>::infinity())
+  if (a > 0 && a < std::numeric_limits<double>::infinity()) {
     for (std::size_t c = 0; c < dimension; ++c) s += ((p[c] - q[c]) / a) * ((p[c] - q[c]) / a);
-  return a * std::sqrt(s);
+    return a * std::sqrt(s);
+  }
+  if (!(a > 0)) return 0;
+  // A difference of two finite coordinates overflowed (1e308 and -1e308): the halves' differences do not. This
+  // returned inf * sqrt(0), NaN, and a NaN edge length hung the embedding's shortest paths.
+  a = 0;
+  for (std::size_t c = 0; c < dimension; ++c) a = std::max(a, std::fabs(p[c] / 2 - q[c] / 2));
+  for (std::size_t c = 0; c < dimension; ++c) s += ((p[c] / 2 - q[c] / 2) / a) * ((p[c] / 2 - q[c] / 2) / a);
+  return 2 * (a * std::sqrt(s));  // inf when the distance exceeds the largest double
 }
 
 inline void add_edge_lengths(const Point_matrix& m, Proximity_graph& g, const char* fn) {

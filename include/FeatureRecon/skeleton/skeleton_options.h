@@ -39,7 +39,9 @@ struct Geodesic_options {
 
 /// Options of compute_augmented_reeb_graph().
 struct Reeb_graph_options {
-  Progress_callback progress;  ///< called with the fraction of vertices swept; returning false stops
+  /// Called with the fraction done (the set-up passes up to 0.4, then the fraction of vertices swept); returning false
+  /// stops (Status::interrupted; the arcs closed so far, none when the stop came before the sweep).
+  Progress_callback progress;
 };
 
 /// Options of simplify_by_persistence().
