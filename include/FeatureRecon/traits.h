@@ -10,11 +10,13 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
@@ -81,12 +83,22 @@ struct Point_with_normal_traits {
   /// Squared distance of the two normals scaled to unit length, in [0, 4] (oriented) or [0, 2] (unoriented).
   struct Compute_feature_distance {
     Normal_orientation orientation = Normal_orientation::oriented;  ///< how normals are compared
-    /// \pre a and b are non-zero.
+    /// -1 (not a distance: the samplers refuse the item, naming it) when a or b is zero or not finite.
     FT operator()(const Feature& a, const Feature& b) const {
-      // |a/|a| - b/|b||^2 = 2 - 2 cos; computed in doubles (a square root is needed for the cosine).
-      const double la = CGAL::to_double(a.squared_length()), lb = CGAL::to_double(b.squared_length());
-      const double dot = CGAL::to_double(a * b);
-      double c = dot / std::sqrt(la * lb);
+      // |a/|a| - b/|b||^2 = 2 - 2 cos; computed in doubles (a square root is needed for the cosine), on the
+      // vectors scaled by the power of two of their largest component (exact), so that lengths of 1e-170 or 1e160
+      // neither underflow nor overflow. A zero normal made the cosine NaN, and FT(NaN) failed inside an exact kernel (Epeck: an
+      // assertion, or SIGFPE in GMP without assertions) before the samplers could name the item.
+      std::array<double, 3> u{CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z())};
+      std::array<double, 3> v{CGAL::to_double(b.x()), CGAL::to_double(b.y()), CGAL::to_double(b.z())};
+      for (auto* w : {&u, &v}) {
+        const double m = std::max({std::fabs((*w)[0]), std::fabs((*w)[1]), std::fabs((*w)[2])});
+        if (!(m > 0 && m < std::numeric_limits<double>::infinity())) return FT(-1);
+        const int e = std::ilogb(m);
+        for (double& x : *w) x = std::ldexp(x, -e);
+      }
+      const double la = u[0] * u[0] + u[1] * u[1] + u[2] * u[2], lb = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+      double c = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / std::sqrt(la * lb);
       c = c > 1 ? 1 : (c < -1 ? -1 : c);
       if (orientation == Normal_orientation::unoriented && c < 0) c = -c;
       return FT(2 - 2 * c);

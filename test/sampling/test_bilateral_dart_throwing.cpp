@@ -155,6 +155,24 @@ TEST(BilateralDartThrowing, TargetCountWithTheExponentialForm) {
         }
       }
   }
+  // The radius doubling before the bisection asks the callback at every throw (about 1000 throws here, none of
+  // which could be stopped: 44 s on a 512 x 512 picture), and a stop there ends the run.
+  Dart_throwing_count_options o;
+  o.darts.form = Bilateral_form::exponential;
+  o.darts.sigma_feature = 0.03;
+  std::size_t calls = 0;
+  o.darts.progress = [&calls](double) { return ++calls > 0; };
+  std::vector<std::size_t> kept;
+  EXPECT_EQ(bilateral_dart_throwing_count(pixels, 1, std::back_inserter(kept), o, Grey_pixel_traits()).status,
+            Status::success);
+  EXPECT_GT(calls, 100u);
+  kept.clear();
+  calls = 0;
+  o.darts.progress = [&calls](double) { return ++calls < 10; };
+  EXPECT_EQ(bilateral_dart_throwing_count(pixels, 1, std::back_inserter(kept), o, Grey_pixel_traits()).status,
+            Status::interrupted);
+  EXPECT_EQ(calls, 10u);
+  EXPECT_TRUE(kept.empty());
 }
 
 TEST(BilateralDartThrowing, ThinWallKeepsBothSheets) {

@@ -357,6 +357,16 @@ TEST(Discrete_lloyd, VolumesZeroNormalsAndNoIteration) {
   EXPECT_EQ(r.history.size(), 2u);
   e.sigma_feature = 0.5;
   EXPECT_THROW(discrete_bilateral_lloyd(sheet, std::vector<std::size_t>{0, 50, 99}, e), std::invalid_argument);
+  // A site with a zero normal is refused as such an item is, naming the site (it silently got no item, or alone
+  // an infinite energy).
+  sheet[5].second = K::Vector_3(0, 0, 1);
+  auto sites = sites_at_items(sheet, std::vector<std::size_t>{0, 77});
+  sites[1].feature = K::Vector_3(0, 0, 0);
+  test::expect_invalid_argument([&] { discrete_bilateral_lloyd(sheet, sites, e); },
+                                "site 1 has a feature at distance NaN from itself");
+  e.sigma_feature = std::numeric_limits<double>::infinity();  // Euclidean: features are not compared
+  EXPECT_NO_THROW(discrete_bilateral_lloyd(sheet, sites, e));
+  sheet[5].second = K::Vector_3(0, 0, 0);
   // No iteration: the assignment is that of the starting sites (it came back empty).
   e.sigma_feature = std::numeric_limits<double>::infinity();
   e.max_iterations = 0;
@@ -384,6 +394,14 @@ TEST(Discrete_lloyd, BadInputNamesTheProblem) {
   auto bad = sites;
   bad[2].position[1] = std::nan("");
   expect_message([&] { discrete_bilateral_lloyd(px, bad, o); }, "site 2");
+  // Sites are held to the items' bounds: a site at 1e200 overflowed the grid's cell arithmetic (an undefined
+  // float-to-integer cast).
+  bad = sites;
+  bad[1].position[0] = 1e200;
+  expect_message([&] { discrete_bilateral_lloyd(px, bad, o); }, "site 1 has coordinate 1e+200 beyond +-1e100");
+  expect_message([&] { bilateral_voronoi_assignment(px, bad, o); }, "site 1 has coordinate 1e+200 beyond +-1e100");
+  bad[1].position[0] = -1e100;  // the bound itself is allowed
+  EXPECT_NO_THROW(discrete_lloyd_step(px, bad, o));
   expect_message([&] { sites_at_items(px, std::vector<int>{0, 5, 36}); }, "indices[2] = 36");
   expect_message([&] { sites_at_items(px, std::vector<int>{-1}); }, "indices[0] = -1");
   o.domain_measure = -1;

@@ -2,14 +2,18 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 // Continuous Lloyd relaxation: exact pixel-density integrals (against per-pixel clipping), clipped Voronoi
 // cells (against brute-force nearest sites), Lloyd steps (fixed points, energy monotone, degenerate sites).
+#include <FeatureRecon/sampling/discrete_lloyd.h>
+#include <FeatureRecon/sampling/image_domain.h>
 #include <FeatureRecon/sampling/lloyd_relaxation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -379,7 +383,8 @@ TEST(LloydRelaxation, StoppingRulesAndDegenerateInput) {
   EXPECT_EQ(moved.stop, Lloyd_stop::move_tolerance);
   EXPECT_LT(moved.history.size(), 500u);
   EXPECT_NE(moved.sites[4], moved.sites[5]) << "duplicates separate";
-  EXPECT_EQ(moved.history.front().relative_radius, 0.0);
+  // The copy moved by d_hex / 100 before the first iteration (it had an empty cell; the rho of copies is 0).
+  EXPECT_NEAR(moved.history.front().relative_radius, 0.01, 1e-12);
   options.move_tolerance = 0;
   options.energy_tolerance = 1e-3;
   const auto energy = lloyd_relaxation(sites, d, options);
@@ -414,3 +419,31 @@ TEST(LloydRelaxation, StoppingRulesAndDegenerateInput) {
 }
 
 }  // namespace
+
+TEST(LloydRelaxation, CopiesSeparateWhereTheFirstIsAtItsCentroid) {
+  // Four sites at the centres of a 2 x 2 box's pixels, and a copy of the first: the first copy's cell is already
+  // centroidal, so the copy (an empty cell) stayed with it for good, and the run reported success. The copies are
+  // moved apart before the first iteration; so are two sites on one item in discrete Lloyd.
+  const std::vector<P2> sites{{0.5, 0.5}, {1.5, 0.5}, {0.5, 1.5}, {1.5, 1.5}, {0.5, 0.5}};
+  Lloyd_options o;
+  o.max_iterations = 50;
+  const auto r = lloyd_relaxation(sites, Pixel_density::uniform(2, 2), o);
+  double closest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < r.sites.size(); ++i)
+    for (std::size_t j = i + 1; j < r.sites.size(); ++j)
+      closest = std::min(closest, std::hypot(r.sites[i][0] - r.sites[j][0], r.sites[i][1] - r.sites[j][1]));
+  EXPECT_GT(closest, 0.3);
+  for (const double m : r.mass) EXPECT_GT(m, 0.3);
+  EXPECT_GT(r.history.back().relative_radius, 0.3);
+  // Discrete: a 3 x 3 picture, both sites on the centre item.
+  const std::vector<std::uint8_t> grey(9, 100);
+  const auto pixels = image_pixels<Grey_pixel>(3, 3, grey);
+  Discrete_lloyd_options<2> d;
+  d.max_iterations = 50;
+  const auto dr = discrete_bilateral_lloyd(pixels, std::vector<std::size_t>{4, 4}, d);
+  ASSERT_EQ(dr.mass.size(), 2u);
+  EXPECT_GE(dr.mass[0], 3.0);
+  EXPECT_GE(dr.mass[1], 3.0);
+  EXPECT_GT(std::hypot(dr.sites[0].position[0] - dr.sites[1].position[0],
+                       dr.sites[0].position[1] - dr.sites[1].position[1]), 0.9);
+}

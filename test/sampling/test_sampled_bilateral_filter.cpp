@@ -372,6 +372,13 @@ TEST(ImageQuality, PsnrAndSsimOnKnownCases) {
   const Bytes a = random_image(16, 12, 3, 2);
   EXPECT_EQ(psnr(a, a), std::numeric_limits<double>::infinity());
   EXPECT_DOUBLE_EQ(ssim(16, 12, 3, a, a), 1.0);
+  // Equal pictures score exactly 1, constant ones too (their variances round below 0: a constant 255 scored
+  // 0.99999999999864).
+  for (const double value : {255.0, 37.3, 0.0}) {
+    const std::vector<double> flat(64 * 64, value);
+    EXPECT_EQ(ssim(64, 64, 1, flat, flat), 1.0) << value;
+  }
+  EXPECT_EQ(ssim(16, 12, 3, a, a), 1.0);
   std::vector<float> shifted(a.begin(), a.end());
   for (float& v : shifted) v += 1;
   EXPECT_NEAR(psnr(a, shifted), 20 * std::log10(255.0), 1e-9);  // MSE 1
@@ -393,3 +400,27 @@ TEST(ImageQuality, PsnrAndSsimOnKnownCases) {
   EXPECT_TRUE(std::isnan(psnr(Bytes{}, Bytes{})));
 }
 }  // namespace
+
+TEST(SampledBilateralFilter, ThePatternReportsTheRadiusItWasThrownWith) {
+  // A 16 x 17 picture, budget 0.3, seed 8: the secant search ends its 40 steps without a hit, and the pattern
+  // reported the next radius to try, not the one its taps were thrown with (a pair of taps lay closer than it).
+  const int w = 16, h = 17;
+  std::vector<std::uint8_t> img(std::size_t(w * h));
+  for (int i = 0; i < w * h; ++i) img[std::size_t(i)] = std::uint8_t((i * 37 % 7) * 40);
+  Sampled_bilateral_filter_options o;
+  o.sampling = Tap_sampling::bilateral;
+  o.budget = 0.3;
+  o.seed = 8;
+  o.compensate_density = false;
+  const Tap_pattern p = bilateral_tap_pattern(w, h, 1, img, o);
+  ASSERT_EQ(p.positions.size(), std::size_t(std::lround(0.3 * w * h)));
+  const double factor = internal::feature_factor(o);  // 1 / (255^2 sigma^2)
+  double closest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.positions.size(); ++i)
+    for (std::size_t j = i + 1; j < p.positions.size(); ++j) {
+      const double dx = p.positions[i][0] - p.positions[j][0], dy = p.positions[i][1] - p.positions[j][1];
+      const double dv = double(img[p.pixels[i]]) - double(img[p.pixels[j]]);
+      closest = std::min(closest, dx * dx + dy * dy + factor * dv * dv);
+    }
+  EXPECT_GE(closest, p.radius * p.radius);
+}

@@ -278,6 +278,48 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   EXPECT_TRUE(kept.empty());
   // Euclidean sampling never compares normals: the zero normal is carried along.
   EXPECT_EQ(weighted_sample_elimination(oriented, 5, std::back_inserter(kept)).selected, 5u);
+  // The same with an exact kernel: the NaN cosine went into Epeck's number type before the item could be named
+  // (an assertion in Interval_nt, or SIGFPE in GMP without assertions).
+  using E = CGAL::Epeck;
+  std::vector<std::pair<E::Point_3, E::Vector_3>> exact;
+  for (const Point_2& q : p) exact.push_back({E::Point_3(q.x(), q.y(), 0), E::Vector_3(0, 0, 1)});
+  exact[13].second = E::Vector_3(0, 0, 0);
+  kept.clear();
+  try {
+    weighted_sample_elimination(exact, 5, std::back_inserter(kept), bilateral);
+    ADD_FAILURE() << "Epeck: expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("item 13 has a feature at distance NaN from itself (a zero normal"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(kept.empty());
+}
+
+TEST(WeightedSampleElimination, NormalsOfAnyLengthAreDirections) {
+  // Normals about 1e-170 or 1e160 long are directions like unit ones (their squared lengths underflowed to 0 or
+  // overflowed: refused as zero normals); scaled by powers of two, the bilateral result is the same.
+  using K = CGAL::Epick;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<std::pair<K::Point_3, K::Vector_3>> unit, tiny, huge;
+  for (int i = 0; i < 400; ++i) {
+    const K::Point_3 q(u(rng), u(rng), 0);
+    const K::Vector_3 n(u(rng), u(rng), 1 + u(rng));
+    unit.push_back({q, n});
+    tiny.push_back({q, n * std::ldexp(1.0, -565)});  // 1.4e-170
+    huge.push_back({q, n * std::ldexp(1.0, 532)});   // 1.4e160
+  }
+  Elimination_options o;
+  o.sigma_feature = 0.3;
+  o.domain_measure = 4;
+  std::vector<std::size_t> a, b, c;
+  weighted_sample_elimination(unit, 60, std::back_inserter(a), o);
+  weighted_sample_elimination(tiny, 60, std::back_inserter(b), o);
+  weighted_sample_elimination(huge, 60, std::back_inserter(c), o);
+  EXPECT_EQ(a.size(), 60u);
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a, c);
 }
 
 // Far fewer kept than given: one elimination stage would give every point about 3.6 n / count neighbours (200,000

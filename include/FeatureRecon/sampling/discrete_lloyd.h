@@ -120,7 +120,7 @@ class Item_domain {
   // `compared`: whether features are compared (finite sigma_feature); only then must each be at a finite
   // distance from itself (a zero normal is fine for Euclidean relaxation).
   Item_domain(const ItemRange& items, const Traits& traits, double domain_measure, const char* fn, bool compared)
-      : S(items, traits, fn, compared), measure(domain_measure) {
+      : S(items, traits, fn, compared), measure(domain_measure), compared_features(compared) {
     if (!(domain_measure >= 0) || !std::isfinite(domain_measure))
       FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ", domain_measure);
     if (S.size() > std::numeric_limits<std::uint32_t>::max() - 1)
@@ -138,14 +138,28 @@ class Item_domain {
 
   std::size_t items() const { return S.size(); }
 
-  static void check_sites(const std::vector<Site>& sites, const char* fn) {
+  // Sites as items are checked: finite coordinates within +-1e100 (a site at 1e200 overflowed the grid's cell
+  // arithmetic into an undefined float-to-integer cast) and, where features are compared, a feature at a finite
+  // distance from itself (a site with a zero normal silently got no item).
+  void check_sites(const std::vector<Site>& sites, const char* fn) const {
     if (sites.size() > std::numeric_limits<std::uint32_t>::max() - 1)
       FeatureRecon::internal::throw_invalid_argument(fn, "too many sites (", sites.size(), ")");
-    for (std::size_t i = 0; i < sites.size(); ++i)
-      for (int k = 0; k < D; ++k)
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      for (int k = 0; k < D; ++k) {
         if (!std::isfinite(sites[i].position[k]))
           FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a non-finite coordinate (",
                                                          sites[i].position[k], ")");
+        if (!(std::fabs(sites[i].position[k]) <= Sample_set<Traits>::max_coordinate))
+          FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has coordinate ", sites[i].position[k],
+                                                         " beyond +-1e100 (as items; scale the input)");
+      }
+      if (compared_features) {
+        const double self = CGAL::to_double(S.feature_distance(sites[i].feature, sites[i].feature));
+        if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))
+          FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a feature at distance NaN from itself "
+                                                         "(a zero normal, or NaN in the feature)");
+      }
+    }
   }
 
   // The item nearest to x (Euclidean; ties to the lowest index). \pre items() > 0.
@@ -263,6 +277,7 @@ class Item_domain {
 
   Sample_set<Traits> S;
   double measure = 0;
+  bool compared_features = true;  // features compared (finite sigma_feature): sites' features are checked too
   int intrinsic = 0;  // 2 or 3; 0: estimated when the packing distance asks (not for every step of a stage call)
   Point lo{}, hi{};
   Ring_grid<D> item_grid;
@@ -446,6 +461,11 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
     return result;
   }
   const double packing = engine.packing_distance(sites.size());
+  // Copies of a site tie with it for every item and got none: where the first copy was already at its centroid
+  // they stayed together for good. Every copy after the first moves by 1/100 of the packing distance first.
+  if (packing > 0 && std::isfinite(packing))
+    internal::separate_copies<Traits::dimension>(sites.size(), packing / 100,
+                                                 [&sites](std::size_t i) -> auto& { return sites[i].position; });
   double previous_energy = std::numeric_limits<double>::infinity();
   for (std::size_t it = 0;; ++it) {
     if (it == options.max_iterations) {

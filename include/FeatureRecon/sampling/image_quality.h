@@ -124,7 +124,9 @@ double ssim(int width, int height, int channels, const std::vector<A>& reference
     double sum = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const double vx = std::max(0.0, mxx[i] - mx[i] * mx[i]), vy = std::max(0.0, myy[i] - my[i] * my[i]);
-      const double cxy = mxy[i] - mx[i] * my[i];
+      // Clamped by Cauchy-Schwarz as the variances are clamped at 0: a constant picture against itself has
+      // variances rounded below 0 (clamped) and the same negative covariance, which scored 0.9999999999986.
+      const double bound = std::sqrt(vx * vy), cxy = std::min(bound, std::max(-bound, mxy[i] - mx[i] * my[i]));
       sum += ((2 * mx[i] * my[i] + c1) * (2 * cxy + c2)) /
              ((mx[i] * mx[i] + my[i] * my[i] + c1) * (vx + vy + c2));
     }

@@ -371,23 +371,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
   }
   // Coincident sites have no gradient between them: every copy after the first (in index order) moves by
   // w0 / 100 along a direction fixed by its index (golden-angle spiral), then the energy separates them.
-  {
-    std::vector<std::uint32_t> order(sites.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return sites[a].position != sites[b].position ? sites[a].position < sites[b].position : a < b;
-    });
-    std::vector<std::array<double, D>> original(sites.size());
-    for (std::size_t i = 0; i < sites.size(); ++i) original[i] = sites[i].position;
-    for (std::size_t k = 1; k < order.size(); ++k) {
-      if (original[order[k]] != original[order[k - 1]]) continue;
-      const double a = 2.399963229728653 * double(order[k]);  // golden angle
-      const double z = D == 3 ? std::cos(0.5 * a) : 0.0, r = std::sqrt(1 - z * z);
-      sites[order[k]].position[0] += w0 / 100 * r * std::cos(a);
-      sites[order[k]].position[1] += w0 / 100 * r * std::sin(a);
-      if constexpr (D == 3) sites[order[k]].position[2] += w0 / 100 * z;
-    }
-  }
+  internal::separate_copies<D>(sites.size(), w0 / 100, [&sites](std::size_t i) -> auto& { return sites[i].position; });
   std::vector<double> scales;
   std::vector<std::uint32_t> item;
   engine.settle(sites, scales, item);

@@ -16,6 +16,7 @@
 #include <FeatureRecon/internal/parallel.h>
 #include <FeatureRecon/point_traits.h>
 #include <FeatureRecon/sampling/internal/box.h>
+#include <FeatureRecon/sampling/internal/sample_set.h>
 #include <FeatureRecon/sampling/pixel_density.h>
 #include <FeatureRecon/sampling/sampling_options.h>
 
@@ -540,6 +541,14 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
   }
   const double area = double(density.width()) * double(density.height());
   const double hexagonal = std::sqrt(2 * area / (std::sqrt(3.0) * double(n)));
+  // Copies of a site have empty cells and stay: where the first copy is already at its centroid they stayed
+  // together for good. Every copy after the first moves by d_hex / 100 first (as kernel_relaxation() does).
+  {
+    const std::array<double, 4> b = density.box();
+    const std::array<double, 2> lo{b[0], b[1]}, hi{b[2], b[3]};
+    internal::separate_copies<2>(
+        n, hexagonal / 100, [&result](std::size_t i) -> auto& { return result.sites[i]; }, &lo, &hi);
+  }
   internal::Voronoi_builder voronoi;
   double previous_energy = std::numeric_limits<double>::infinity();
   for (std::size_t it = 0; it < options.max_iterations; ++it) {

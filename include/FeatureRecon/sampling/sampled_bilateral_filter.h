@@ -515,6 +515,7 @@ inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_fi
   // Euclidean darts over 4 candidates per tap keep about 0.46 / r^2 per unit area.
   double r = std::sqrt(0.46 * double(F.pixels()) / double(target));
   std::vector<std::uint32_t> kept;
+  double thrown = r;     // the radius `kept` was thrown with
   Radius_search search;  // counts at search.lo reach the target, at search.hi not
   for (int step = 0; step < 40; ++step) {
     if (!FeatureRecon::internal::report_progress(options.progress, 0.05 * step / 40)) {
@@ -522,10 +523,14 @@ inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_fi
       return pattern;
     }
     kept = global_darts(F, cand, cand_pixel, r, factor);
+    thrown = r;
     const double c = double(kept.size());
     if (c >= double(target) && c <= 1.01 * double(target) + 1) break;
     r = search.next(r, c, 1.005 * double(target), c >= double(target));
   }
+  // After the 40 steps r is the next radius to try, not the one the taps were thrown with (the pattern reported it
+  // and compensated the density for it).
+  r = thrown;
   if (kept.size() < target) {  // fall back to the largest radius known to keep enough
     r = search.lo;
     if (r > 0) kept = global_darts(F, cand, cand_pixel, r, factor);

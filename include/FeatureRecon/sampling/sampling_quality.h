@@ -33,10 +33,10 @@ struct Sampling_quality_options {
   double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
   Bilateral_form form = Bilateral_form::gaussian;                   ///< form of the bilateral distance
   /// Area (2D) or volume (3D) of the domain. Default 0: the bounding box of the samples (or the unit square /
-  /// cube when `periodic`).
+  /// cube when `periodic`); for 3D positions with intrinsic_dimension 2, the area of the surface they sample,
+  /// estimated as weighted_sample_elimination() estimates it (discs reaching the 8th nearest neighbour).
   double domain_measure = 0;
-  /// 2 (images, surfaces: pass the area as domain_measure) or 3 (volumes). Default 0: the dimension of the
-  /// positions.
+  /// 2 (images, surfaces) or 3 (volumes). Default 0: the dimension of the positions.
   int intrinsic_dimension = 0;
   /// Distances on the unit torus [0, 1)^d (positions are taken modulo 1), as the point-set analysis tools of
   /// Heck, Schlömer and Deussen measure them; default false.
@@ -47,8 +47,10 @@ struct Sampling_quality_options {
 struct Sampling_quality {
   std::size_t samples = 0;            ///< number of samples N
   double domain_measure = 0;          ///< the area or volume used: the option's, or the default it stands for
-  double hexagonal_distance = 0;      ///< d_hex: nearest distance of the densest packing of N points (hexagonal in 2D, FCC in 3D)
-  double minimum_distance = 0;        ///< smallest nearest-neighbour (bilateral) distance
+  /// d_hex: nearest distance of the densest packing of N points (hexagonal in 2D, FCC in 3D); 0 (not computed)
+  /// when the status is degenerate_input.
+  double hexagonal_distance = 0;
+  double minimum_distance = 0;  ///< smallest nearest-neighbour (bilateral) distance; 0 (not computed) when degenerate
   double relative_radius = 0;         ///< rho = minimum_distance / d_hex (1 for the hexagonal lattice)
   double average_minimum_distance = 0;  ///< mean nearest-neighbour distance / d_hex (about 0.466 for white noise in 2D)
   Status status = Status::success;    ///< degenerate_input for fewer than two samples, a domain of zero measure or samples of lower affine dimension (collinear, coplanar)
@@ -81,10 +83,21 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
     for (auto& p : S.positions)
       for (int k = 0; k < D; ++k) p[k] -= std::floor(p[k]);
   const int dim = options.intrinsic_dimension == 0 ? D : options.intrinsic_dimension;
+  const int affine = internal::affine_dimension<D>(S.positions);
   double measure = options.domain_measure;
-  if (measure == 0) measure = options.periodic ? 1.0 : internal::bounding_box_measure<D>(S.positions);
+  if (measure == 0 && options.periodic) measure = 1.0;
+  if constexpr (D == 3) {
+    // A surface in space: its area, not the volume of its bounding box (which read a flat grid as measure 0 and a
+    // wall 0.5 thick as 185 for an area of 524). Estimated on the distinct positions: copies would be neighbours at
+    // distance 0.
+    if (measure == 0 && dim == 2 && affine >= 2) {
+      const std::vector<std::array<double, 3>> places = internal::distinct_positions(S.positions);
+      measure = internal::estimate_surface_area(places, internal::Knn_3(places));
+    }
+  }
+  if (measure == 0) measure = internal::bounding_box_measure<D>(S.positions);
   q.domain_measure = measure;
-  if (n < 2 || !(measure > 0) || internal::affine_dimension<D>(S.positions) < dim) {
+  if (n < 2 || !(measure > 0) || affine < dim) {
     q.status = Status::degenerate_input;
     return q;
   }

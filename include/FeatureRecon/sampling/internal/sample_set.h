@@ -72,7 +72,8 @@ struct Sample_set {
       const double self = compared ? CGAL::to_double(feature_distance(features.back(), features.back())) : 0.0;
       if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))
         FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a feature at distance ",
-                                                       std::isnan(self) ? std::string("NaN") : std::to_string(self),
+                                                       std::isnan(self) || self < 0 ? std::string("NaN")
+                                                                                    : std::to_string(self),
                                                        " from itself (a zero normal, or NaN in the feature)");
       ++i;
     }
@@ -183,6 +184,38 @@ std::vector<std::array<double, D>> distinct_positions(const std::vector<std::arr
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!copy[i]) out.push_back(p[i]);
   return out;
+}
+
+/// Moves every copy after the first (in index order) of a position by `step` along a direction fixed by its index
+/// (golden-angle spiral: on the circle in 2D, on the sphere in 3D), so that coincident sites separate where
+/// nothing else would move them apart. `position(i)` is a reference to the D coordinates of site i. A move that
+/// would leave [lo, hi] (when given) goes the opposite way.
+template <int D, class Position>
+void separate_copies(std::size_t n, double step, Position&& position, const std::array<double, D>* lo = nullptr,
+                     const std::array<double, D>* hi = nullptr) {
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::vector<std::array<double, D>> original(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < D; ++k) original[i][k] = position(i)[k];
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return original[a] != original[b] ? original[a] < original[b] : a < b;
+  });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    if (original[order[k]] != original[order[k - 1]]) continue;
+    const double a = 2.399963229728653 * double(order[k]);  // golden angle
+    const double z = D == 3 ? std::cos(0.5 * a) : 0.0, r = std::sqrt(1 - z * z);
+    std::array<double, D> offset{};
+    offset[0] = step * r * std::cos(a);
+    offset[1] = step * r * std::sin(a);
+    if constexpr (D == 3) offset[2] = step * z;
+    auto&& p = position(order[k]);
+    for (int c = 0; c < D; ++c) {
+      double x = original[order[k]][c] + offset[c];
+      if (lo != nullptr && hi != nullptr && (x < (*lo)[c] || x > (*hi)[c])) x = original[order[k]][c] - offset[c];
+      p[c] = x;
+    }
+  }
 }
 
 /// Intrinsic dimension of 3D positions: 2 when at least half of up to 1000 evenly spread probes have a flat
