@@ -241,15 +241,18 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
   else if (layout != "grid")
     throw Usage_error("--layout must be grid or organic, got '" + layout + "'");
   // Ranges are checked here so that the message names the option (the library names its fields).
-  auto count = [&](const char* name, std::size_t& field, long long least) {
+  auto count = [&](const char* name, std::size_t& field, long long least, long long most) {
     if (!args.has(name)) return;
     const long long v = args.get_int(name);
     if (v < least) throw Usage_error(std::string("--") + name + " must be >= " + std::to_string(least));
+    if (v > most)
+      throw Usage_error(std::string("--") + name + " must be at most " + std::to_string(most) + ", got " + args.get(name));
     field = static_cast<std::size_t>(v);
   };
-  count("columns", o.columns, 2);
-  count("rows", o.rows, 2);
-  count("trips", o.trips, 0);
+  const long long any_count = std::numeric_limits<long long>::max();
+  count("columns", o.columns, 2, any_count);  // with rows: at most 2^24 intersections, below
+  count("rows", o.rows, 2, any_count);
+  count("trips", o.trips, 0, 1LL << 26);  // the library's limit (the most fixes the trips may record)
   if (o.columns > (std::size_t(1) << 24) / o.rows)
     throw Usage_error("--columns x --rows must be at most 2^24 intersections");
   // A value in [low, high]; `open_low`: strictly above low.

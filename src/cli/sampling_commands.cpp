@@ -169,6 +169,9 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     if (!args.has("periodic")) throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
     const long long f = args.get_int("max-frequency");
     if (f < 1) throw Usage_error("--max-frequency must be >= 1");
+    if (f > 16384)  // the library's limit, named here as the option
+      throw Usage_error("--max-frequency must be at most 16384 (the periodogram holds (2 F + 1)(F + 1) complex sums, "
+                        "8.6 GB at 16384), got " + args.get("max-frequency"));
     spectrum_options.max_frequency = static_cast<std::size_t>(f);
   }
   const std::string input = args.get("input");
@@ -186,13 +189,25 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   fs::Sampling_spectrum spectrum;
   bool has_spectrum = false;
   std::size_t dimension = 0;
-  // PLY and OFF are point clouds; text files (.xyz included) have 2, 3 or 6 (x y z nx ny nz) columns.
+  // PLY, OFF and XYZ (x y z [nx ny nz]) are point clouds, as `sample` reads them; other text files have 2 or 3
+  // columns (points in the plane or in a volume) or 6 (a cloud with normals).
   io::Point_file text;
   const std::string extension = io::file_extension(input);
   const bool cloud_format = extension == "ply" || extension == "off";
   if (!cloud_format) text = io::read_points(input);
   const std::size_t columns = cloud_format ? 3 : text.dimension;
-  const bool empty = !cloud_format && text.size() == 0;
+  const bool cloud = cloud_format || text.dimension == 6 || (extension == "xyz" && text.dimension == 3);
+  io::Point_cloud points;
+  if (cloud_format) {
+    points = io::read_point_cloud(input, true);  // no points: degenerate below, as for an empty text file
+  } else if (cloud) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      const double* x = text.coordinates.data() + i * text.dimension;
+      points.points.push_back({x[0], x[1], x[2]});
+      if (text.dimension == 6) points.normals.push_back({x[3], x[4], x[5]});
+    }
+  }
+  const bool empty = cloud ? points.points.empty() : text.size() == 0;
   if ((args.has("spectrum") || args.has("max-frequency")) && empty)
     throw io::Input_error(input + ": no samples to take the spectrum of");
   if ((args.has("spectrum") || args.has("max-frequency")) && columns != 2)
@@ -201,8 +216,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   if (empty) {
     q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
     q.domain_measure = o.domain_measure != 0 ? o.domain_measure : o.periodic ? 1.0 : 0.0;
-  } else if (cloud_format || text.dimension == 6) {
-    const io::Point_cloud cloud = io::read_point_cloud(input);
+  } else if (cloud) {
+    const io::Point_cloud& cloud = points;
     dimension = 3;
     if (o.intrinsic_dimension == 0 && o.domain_measure == 0 && !o.periodic) {
       const auto [d, m] = domain_of(cloud.points);
@@ -259,8 +274,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   os << "{\"input\": " << json_string(input) << ", \"samples\": " << q.samples << ", \"dimension\": " << dimension
      << ", \"intrinsic_dimension\": " << (o.intrinsic_dimension == 0 ? int(dimension) : o.intrinsic_dimension)
      << ", \"domain_measure\": " << json_number(q.domain_measure) << ", \"periodic\": " << (o.periodic ? "true" : "false")
-     << ", \"hexagonal_distance\": " << json_number(q.hexagonal_distance)
-     << ", \"minimum_distance\": " << json_number(q.minimum_distance)
+     << ", \"hexagonal_distance\": " << json_statistic(q.hexagonal_distance, q.status)
+     << ", \"minimum_distance\": " << json_statistic(q.minimum_distance, q.status)
      << ", \"relative_radius\": " << json_statistic(q.relative_radius, q.status)
      << ", \"average_minimum_distance\": " << json_statistic(q.average_minimum_distance, q.status)
      << ", \"degenerate\": " << (q.status == Status::degenerate_input ? "true" : "false");

@@ -543,7 +543,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                  ", \"directed\": " + (go.directed ? "true" : "false") +
                  ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") +
-                 ", \"dropped_sparse\": " + std::to_string(sample.dropped) +
+                 ", \"dropped\": " + std::to_string(sample.dropped) +  // by either filter
+                 ", \"dropped_sparse\": " + std::to_string(sample.dropped - sample.dropped_lateral) +
                  ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"trip_links\": " +
                  std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
                  ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +

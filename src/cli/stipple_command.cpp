@@ -365,11 +365,25 @@ int run_stipple(const std::vector<std::string>& argv) {
     throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) + " pixels of " + input);
   const std::vector<double> density = darkness(image, s.gamma);
   double total = 0, peak = 0;
+  std::size_t inked = 0;
   for (const double d : density) {
     total += d;
     peak = std::max(peak, d);
+    inked += d > 0;
   }
-  if (!(total > 0)) throw Usage_error(input + " is white everywhere: nothing to stipple");
+  if (!(total > 0)) {
+    double ink = 0;  // the darkness itself: a large --gamma makes every power of a darkness below 1 underflow to 0
+    for (const double d : darkness(image, 1.0)) ink += d;
+    if (ink > 0)
+      throw Usage_error("--gamma " + json_number(s.gamma) + " makes the darkness of every pixel of " + input +
+                        " underflow to 0 (darkness in [0, 1) raised to it); use a smaller --gamma");
+    throw Usage_error(input + " is white everywhere: nothing to stipple");
+  }
+  // More dots than pixels with ink: the extra dots had nowhere to go (kernel relaxation pushed them into the
+  // picture's white corners, Lloyd left them on white pixels).
+  if (s.count > inked)
+    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(inked) + " pixels of " +
+                      input + " with any darkness (of " + std::to_string(pixels) + ")");
 
   const std::vector<std::array<double, 3>> palette = make_palette(image, std::size_t(palette_size), s.seed);
   Progress progress("stippling", args.has("quiet"));
@@ -390,8 +404,9 @@ int run_stipple(const std::vector<std::string>& argv) {
      << ", \"channels\": " << image.channels << ", \"method\": \"" << s.method << "\", \"dots\": " << dots.size()
      << ", \"palette\": " << palette.size() << ", \"sigma_feature\": "
      << json_number(s.method == "lloyd" ? std::numeric_limits<double>::infinity() : s.sigma_feature)
-     << ", \"seed\": " << seed << ", \"iterations\": " << report.iterations << ", \"stop\": \"" << report.stop
-     << "\", \"dot_radius\": " << json_number(dot) << ", \"seconds\": " << json_number(seconds) << "}\n";
+     << ", \"seed\": " << seed << ", \"iterations\": " << report.iterations << ", \"stop\": "
+     << (report.stop.empty() ? "null" : "\"" + report.stop + "\"")  // darts: no iterations, no reason to stop
+     << ", \"dot_radius\": " << json_number(dot) << ", \"seconds\": " << json_number(seconds) << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;
 }

@@ -63,13 +63,17 @@ Image read_png(const std::string& path) {
     throw;
   }
   const bool colour = (img.format & PNG_FORMAT_FLAG_COLOR) != 0;
-  img.format = colour ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;  // 8-bit, alpha composited away by libpng
+  img.format = colour ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;  // 8-bit
   Image out;
   out.width = int(img.width);
   out.height = int(img.height);
   out.channels = colour ? 3 : 1;
   out.data.resize(PNG_IMAGE_SIZE(img));
-  if (!png_image_finish_read(&img, nullptr, out.data.data(), 0, nullptr)) {
+  // Transparency is composited onto white, the paper a picture is drawn on (without a background libpng composites
+  // onto the buffer, which was zero: a transparent background read as black ink).
+  png_color white;
+  white.red = white.green = white.blue = 255;
+  if (!png_image_finish_read(&img, &white, out.data.data(), 0, nullptr)) {
     const std::string message = img.message;
     png_image_free(&img);
     fail(path, "PNG decoding failed (" + message + ")");

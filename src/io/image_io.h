@@ -24,8 +24,8 @@ struct Image {
 };
 
 /// Reads PNG, JPEG (.jpg, .jpeg), PGM or PPM by extension (case-insensitive). Palette, 16-bit and alpha PNGs
-/// are converted to 8-bit grey or RGB (alpha dropped); CMYK JPEGs are rejected. Throws Input_error naming
-/// the file and the problem.
+/// are converted to 8-bit grey or RGB (transparency composited onto white); CMYK JPEGs are rejected. Throws
+/// Input_error naming the file and the problem.
 Image read_image(const std::string& path);
 
 /// Writes PNG, JPEG (quality 95), PGM (grey) or PPM (RGB; grey is expanded) by extension. Throws Input_error.

@@ -415,7 +415,7 @@ void read_ply(const std::string& path, Point_cloud& c) {
 }
 }  // namespace
 
-Point_cloud read_point_cloud(const std::string& path) {
+Point_cloud read_point_cloud(const std::string& path, bool allow_empty) {
   require_readable_file(path);  // a missing file or a directory says so, whatever its extension
   const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "off" && ext != "xyz")
@@ -427,7 +427,7 @@ Point_cloud read_point_cloud(const std::string& path) {
     read_off(path, c);
   else
     read_xyz(path, c);
-  if (c.points.empty()) fail(path, "no points");
+  if (c.points.empty() && !allow_empty) fail(path, "no points");
   for (std::size_t i = 0; i < c.points.size(); ++i) {
     const auto& p = c.points[i];
     if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))

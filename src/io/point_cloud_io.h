@@ -24,9 +24,9 @@ struct Point_cloud {
 
 /// Reads PLY, OFF or XYZ by extension (case-insensitive). Normals are read when the file has them (PLY
 /// properties nx ny nz, an NOFF header, six numbers per XYZ line), colours from PLY (red green blue, uchar).
-/// Throws Input_error naming the file and the problem (unknown extension, unreadable, empty, non-finite
-/// coordinates with the point's index, colour properties partial or not uchar).
-Point_cloud read_point_cloud(const std::string& path);
+/// Throws Input_error naming the file and the problem (unknown extension, unreadable, empty unless `allow_empty`,
+/// non-finite coordinates with the point's index, colour properties partial or not uchar).
+Point_cloud read_point_cloud(const std::string& path, bool allow_empty = false);
 
 /// Writes the points `indices` of `cloud` (with normals when it has them, and colours in PLY) as PLY (ASCII), OFF
 /// (NOFF with normals) or XYZ by the extension of `path`, with 17 significant digits.

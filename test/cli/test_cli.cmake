@@ -311,6 +311,8 @@ expect(skeleton_straight_confirmed_points 2 "--straight-confirmed, --local-suppo
 expect(skeleton_local_support_points 2 "--local-support, --min-local-support and --merge apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --local-support 4 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_segment_turn_bad 2 "--segment-turn-tolerance must be in \\[0, 180\\] degrees" skeleton --tracks ${DATA}/block_tracks.txt --segment-turn-tolerance 200 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_lateral_density_default 0 "\"min_density\": 0.05, \"min_lateral_density\": 0.3, \"density_radius\": .*\"dropped_sparse\": [0-9]+, \"dropped_lateral\": [1-9][0-9]*," skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+# dropped_sparse counts the relative-density filter's samples only (it printed the total of both filters).
+expect(skeleton_sparse_density_off 0 "\"min_density\": 0, .*\"dropped\": [1-9][0-9]*, \"dropped_sparse\": 0, \"dropped_lateral\": [1-9][0-9]*," skeleton --tracks ${DATA}/block_tracks.txt --min-density 0 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_lateral_density_off 0 "\"min_lateral_density\": 0, .*\"dropped_lateral\": 0," skeleton --tracks ${DATA}/block_tracks.txt --min-lateral-density 0 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_lateral_density_bad 2 "--min-lateral-density must be in \\[0, 1\\]" skeleton --tracks ${DATA}/block_tracks.txt --min-lateral-density 1.5 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_lateral_density_points 2 "--min-density, --min-lateral-density, --density-radius, .* apply to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --min-lateral-density 0.2 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
@@ -561,6 +563,13 @@ expect(stipple_svg_only 2 "--out writes an SVG picture" stipple ${WORK}/line.pgm
 expect(stipple_too_many 2 "--count 5000 exceeds the 2304 pixels" stipple ${WORK}/line.pgm --count 5000 --out ${WORK}/x.svg)
 file(WRITE ${WORK}/white.pgm "P2\n2 2\n255\n255 255 255 255\n")
 expect(stipple_white 2 "white everywhere: nothing to stipple" stipple ${WORK}/white.pgm --count 2 --out ${WORK}/x.svg)
+# A --gamma so large that every darkness underflows to 0 is named (the picture was said to be white); darts report
+# no reason to stop (null, not an empty string).
+expect(stipple_gamma_underflow 2 "--gamma 1e\\+300 makes the darkness of every pixel of .*line.pgm underflow to 0" stipple ${WORK}/line.pgm --count 5 --gamma 1e300 --out ${WORK}/x.svg)
+file(WRITE ${WORK}/two_dark.pgm "P2\n4 4\n255\n255 255 255 255\n255 0 255 255\n255 255 255 0\n255 255 255 255\n")
+expect(stipple_more_than_ink 2 "--count 3 exceeds the 2 pixels of .*two_dark.pgm with any darkness \\(of 16\\)" stipple ${WORK}/two_dark.pgm --count 3 --method kernel --out ${WORK}/x.svg)
+expect(stipple_as_many_as_ink 0 "\"dots\": 2," stipple ${WORK}/two_dark.pgm --count 2 --out ${WORK}/x.svg --quiet)
+expect(stipple_darts_stop 0 "\"method\": \"darts\", .*\"stop\": null," stipple ${WORK}/line.pgm --count 5 --method darts --out ${WORK}/x.svg --quiet)
 # bilateral-filter: every sampling and mode meets the budget and writes a picture of the input's size; the same
 # seed gives the same picture; the exact filter scores null PSNR (equal) and SSIM 1; bad arguments explained.
 expect(bilateral_filter_help 0 "usage: featurerecon bilateral-filter IMAGE" bilateral-filter --help)
@@ -823,6 +832,39 @@ expect(graph_length_overflow 1 "too_far_graph.txt: the edge between points 0 and
 expect(synthetic_city_huge_organic 1 "beyond the largest double: block_width or block_height too large" synthetic-city --layout organic --block-width 1e308 --block-height 1 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(sample_stats_empty_measure 0 "\"samples\": 0,.*\"domain_measure\": 5," sample-stats --input ${WORK}/nothing.txt --domain-measure 5)
 expect(sample_stats_empty_spectrum 1 "nothing.txt: no samples to take the spectrum of" sample-stats --input ${WORK}/nothing.txt --periodic --spectrum ${WORK}/s0.csv)
+# sample-stats on a flat 10 x 10 grid in space (spacing 1): an XYZ file is a cloud as `sample` reads it, the same
+# as its PLY (it was read as points in a volume: measure 0, degenerate); --intrinsic-dimension 2 measures the
+# estimated surface, not the bounding box's volume; the statistics of a degenerate set are null, not 0; an empty
+# PLY is degenerate like an empty text file (it was an error).
+set(grid_xyz "")
+set(grid_ply "ply\nformat ascii 1.0\nelement vertex 100\nproperty double x\nproperty double y\nproperty double z\nend_header\n")
+foreach(i RANGE 9)
+  foreach(j RANGE 9)
+    string(APPEND grid_xyz "${i} ${j} 0\n")
+    string(APPEND grid_ply "${i} ${j} 0\n")
+  endforeach()
+endforeach()
+file(WRITE ${WORK}/grid3.xyz "${grid_xyz}")
+file(WRITE ${WORK}/grid3.ply "${grid_ply}")
+expect(sample_stats_xyz_cloud 0 "\"intrinsic_dimension\": 2, \"domain_measure\": 1[0-9][0-9](\\.[0-9]+)?, .*\"degenerate\": false" sample-stats --input ${WORK}/grid3.xyz)
+string(REGEX REPLACE "\"input\": \"[^\"]*\", \"samples\"" "" xyz_stats "${last_output}")
+string(REGEX REPLACE "\"seconds\": [^,}]*" "" xyz_stats "${xyz_stats}")
+expect(sample_stats_ply_cloud 0 "\"degenerate\": false" sample-stats --input ${WORK}/grid3.ply)
+string(REGEX REPLACE "\"input\": \"[^\"]*\", \"samples\"" "" ply_stats "${last_output}")
+string(REGEX REPLACE "\"seconds\": [^,}]*" "" ply_stats "${ply_stats}")
+if(NOT xyz_stats STREQUAL ply_stats)
+  message(SEND_ERROR "sample-stats: grid3.xyz and grid3.ply differ:\n${xyz_stats}\n${ply_stats}")
+endif()
+expect(sample_stats_surface 0 "\"intrinsic_dimension\": 2, \"domain_measure\": 1[0-9][0-9](\\.[0-9]+)?, .*\"degenerate\": false" sample-stats --input ${WORK}/grid3.ply --intrinsic-dimension 2)
+file(WRITE ${WORK}/grid3_points.txt "${grid_xyz}")
+expect(sample_stats_surface_text 0 "\"intrinsic_dimension\": 2, \"domain_measure\": 1[0-9][0-9](\\.[0-9]+)?, .*\"degenerate\": false" sample-stats --input ${WORK}/grid3_points.txt --intrinsic-dimension 2)
+expect(sample_stats_volume_text 0 "\"intrinsic_dimension\": 3, \"domain_measure\": 0, .*\"degenerate\": true" sample-stats --input ${WORK}/grid3_points.txt)
+file(WRITE ${WORK}/two_points.txt "0 0\n3 4\n")
+expect(sample_stats_degenerate_null 0 "\"hexagonal_distance\": null, \"minimum_distance\": null, \"relative_radius\": null, \"average_minimum_distance\": null, \"degenerate\": true" sample-stats --input ${WORK}/two_points.txt)
+file(WRITE ${WORK}/empty.ply "ply\nformat ascii 1.0\nelement vertex 0\nproperty double x\nproperty double y\nproperty double z\nend_header\n")
+expect(sample_stats_empty_ply 0 "\"samples\": 0,.*\"degenerate\": true" sample-stats --input ${WORK}/empty.ply)
+expect(sample_stats_max_frequency_cap 2 "--max-frequency must be at most 16384 .*got 16385" sample-stats --input ${WORK}/torus.txt --periodic --max-frequency 16385)
+expect(synthetic_city_trips_cap 2 "--trips must be at most 67108864, got 67108865" synthetic-city --trips 67108865 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 # A picture of points spanning more than the largest double (from -1e308 to 1e308) is still drawn.
 set(far "")
 foreach(i RANGE 19)

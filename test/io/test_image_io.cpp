@@ -3,12 +3,15 @@
 // Image files: PNG, JPEG, PGM and PPM round trips, ASCII PNM, and errors that name the file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
+
+#include <png.h>
 
 #include "io/featurerecon_io.h"
 #include "io/image_io.h"
@@ -158,4 +161,35 @@ TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
   // The images themselves read.
   io::write_image(png, small);
   EXPECT_EQ(io::read_image(png).width, 64);
+}
+
+TEST(ImageIo, TransparencyIsCompositedOntoWhite) {
+  // A black vertical line on a fully transparent background (RGBA and grey + alpha): the background reads as
+  // white paper (libpng composited it onto the zeroed buffer: black, so every pixel was ink), the line as black,
+  // and a half-transparent black pixel as a middle grey.
+  const int w = 16, h = 16;
+  for (const bool colour : {true, false}) {
+    const int channels = colour ? 4 : 2;
+    std::vector<png_byte> pixels(static_cast<std::size_t>(w * h * channels), 0);  // black, transparent
+    for (int r = 0; r < h; ++r) pixels[static_cast<std::size_t>((r * w + 8) * channels + channels - 1)] = 255;
+    pixels[static_cast<std::size_t>((3 * w + 2) * channels + channels - 1)] = 128;  // half-transparent black
+    png_image img;
+    std::fill(reinterpret_cast<char*>(&img), reinterpret_cast<char*>(&img) + sizeof img, 0);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = w;
+    img.height = h;
+    img.format = colour ? PNG_FORMAT_RGBA : PNG_FORMAT_GA;
+    const std::string path = scratch(colour ? "rgba_line.png" : "ga_line.png");
+    ASSERT_TRUE(png_image_write_to_file(&img, path.c_str(), 0, pixels.data(), 0, nullptr)) << img.message;
+    const io::Image im = io::read_image(path);
+    ASSERT_EQ(im.channels, colour ? 3 : 1);
+    auto at = [&](int r, int c) { return int(im.data[static_cast<std::size_t>((r * w + c) * im.channels)]); };
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) {
+        if (r == 3 && c == 2) continue;
+        EXPECT_EQ(at(r, c), c == 8 ? 0 : 255) << r << " " << c;
+      }
+    EXPECT_GT(at(3, 2), 40);  // composited in linear light: sRGB 188 for half coverage
+    EXPECT_LT(at(3, 2), 230);
+  }
 }
