@@ -211,22 +211,36 @@ double distance_to_corner(const std::vector<std::array<double, 3>>& line) {
   for (const auto& p : line) best = std::min(best, std::hypot(p[0] - 20, p[1]));
   return best;
 }
+// An L of 41 points spaced `scale` (corner at (20, 0) scale), its path graph, and a Reeb graph of one arc without
+// points of its own between the two ends.
+struct L_shape {
+  std::vector<std::array<double, 3>> xyz;
+  Proximity_graph g;
+  Reeb_graph G;
+  std::vector<double> f;
+};
+L_shape l_shape(double scale = 1) {
+  L_shape l;
+  for (int i = 0; i <= 20; ++i) l.xyz.push_back({scale * i, 0, 0});
+  for (int i = 1; i <= 20; ++i) l.xyz.push_back({scale * 20, scale * i, 0});
+  l.g.number_of_vertices = l.xyz.size();
+  for (Vertex_index v = 0; v + 1 < l.xyz.size(); ++v) l.g.edges.push_back({v, v + 1});
+  const auto last = static_cast<Vertex_index>(l.xyz.size() - 1);
+  l.G.nodes = {{0, 0.0, minimum, {}}, {last, 0.5, maximum, {}}};
+  l.G.arcs = {{0, 1, {}}};
+  l.f.assign(l.xyz.size(), 0.25);
+  return l;
+}
 }  // namespace
 
 // Simplification can leave an arc with no points of its own between two nodes far apart: with the graph, the
 // arc is drawn along the graph's shortest path (through the data), not straight across.
 TEST(EmbedReebGraph, ArcsWithoutPointsFollowTheGraph) {
-  std::vector<std::array<double, 3>> xyz;
-  for (int i = 0; i <= 20; ++i) xyz.push_back({double(i), 0, 0});
-  for (int i = 1; i <= 20; ++i) xyz.push_back({20, double(i), 0});
-  Proximity_graph g;
-  g.number_of_vertices = xyz.size();
-  for (Vertex_index v = 0; v + 1 < xyz.size(); ++v) g.edges.push_back({v, v + 1});
-  const auto last = static_cast<Vertex_index>(xyz.size() - 1);
-  Reeb_graph G;
-  G.nodes = {{0, 0.0, minimum, {}}, {last, 0.5, maximum, {}}};
-  G.arcs = {{0, 1, {}}};
-  const std::vector<double> f(xyz.size(), 0.25);
+  const L_shape l = l_shape();
+  const auto& xyz = l.xyz;
+  const auto& g = l.g;
+  const auto& G = l.G;
+  const auto& f = l.f;
   const Reeb_graph_embedding E = embed_reeb_graph(G, g, xyz, f, 2);
   ASSERT_EQ(E.arc_polylines.size(), 1u);
   const auto& line = E.arc_polylines[0];
@@ -480,25 +494,15 @@ TEST(EmbedReebGraph, GapsAreMeasuredAtEveryScale) {
   // their squares, which underflow below about 1e-160 (nothing bridged: a straight chord) and overflow above about
   // 1e154 (every gap bridged, also one below max_gap).
   for (const double scale : {1.0, 1e-170, 1e-200, 1e170, 1e200}) {
-    std::vector<std::array<double, 3>> xyz;
-    for (int i = 0; i <= 20; ++i) xyz.push_back({scale * i, 0, 0});
-    for (int i = 1; i <= 20; ++i) xyz.push_back({scale * 20, scale * i, 0});
-    Proximity_graph g;
-    g.number_of_vertices = xyz.size();
-    for (Vertex_index v = 0; v + 1 < xyz.size(); ++v) g.edges.push_back({v, v + 1});
-    const auto last = static_cast<Vertex_index>(xyz.size() - 1);
-    Reeb_graph G;
-    G.nodes = {{0, 0.0, minimum, {}}, {last, 0.5, maximum, {}}};
-    G.arcs = {{0, 1, {}}};
-    const std::vector<double> f(xyz.size(), 0.25);
-    const auto line = embed_reeb_graph(G, g, xyz, f, 2).arc_polylines.at(0);
+    const L_shape l = l_shape(scale);
+    const auto line = embed_reeb_graph(l.G, l.g, l.xyz, l.f, 2).arc_polylines.at(0);
     EXPECT_GT(line.size(), 30u) << scale;
     std::vector<std::array<double, 3>> unscaled;
     for (const auto& p : line) unscaled.push_back({p[0] / scale, p[1] / scale, 0});
     EXPECT_LE(distance_to_corner(unscaled), 1.5) << scale;
     Embedding_options wide;
     wide.max_gap = 30 * scale;  // the chord is 28.3 long: nothing to bridge
-    EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, wide).arc_polylines[0].size(), 2u) << scale;
+    EXPECT_EQ(embed_reeb_graph(l.G, l.g, l.xyz, l.f, 2, wide).arc_polylines[0].size(), 2u) << scale;
   }
 }
 
