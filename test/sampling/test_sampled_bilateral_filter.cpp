@@ -424,3 +424,58 @@ TEST(SampledBilateralFilter, ThePatternReportsTheRadiusItWasThrownWith) {
     }
   EXPECT_GE(closest, p.radius * p.radius);
 }
+
+TEST(SampledBilateralFilter, TheLocalPoolCoversOnlyWhatTheImageReaches) {
+  // A 4 x 4 picture with a window of radius 200: the local pool was sized by the window (401^2 positions per set:
+  // 46 s and 2.7 GB). It now covers the offsets a tap inside the picture can have (radius 3), so every radius of
+  // at least 3 sees the same in-image window and the same pool: bit-identical values.
+  const Bytes a = random_image(4, 4, 1, 9);
+  Sampled_bilateral_filter_options o;
+  o.mode = Tap_mode::local;
+  o.sampling = Tap_sampling::bilateral;
+  o.kernel.sigma_spatial = 2;
+  o.kernel.radius = 3;
+  const Bilateral_filter_result small = sampled_bilateral_filter(4, 4, 1, a, o);
+  ASSERT_EQ(small.status, FeatureRecon::Status::success);
+  ASSERT_EQ(small.values.size(), 16u);
+  o.kernel.radius = 200;
+  const Bilateral_filter_result large = sampled_bilateral_filter(4, 4, 1, a, o);
+  ASSERT_EQ(large.status, FeatureRecon::Status::success);
+  EXPECT_EQ(large.values, small.values);
+  EXPECT_EQ(large.taps, small.taps);
+}
+
+TEST(SampledBilateralFilter, TheLocalModeReportsBeforeItsPixelsAndStops) {
+  // The pool and the radius calibration ran before the first report (26 s on a 512 x 512 picture at sigma 20):
+  // they now report (0-0.05 and 0.05-0.2) and a stop in either ends the run, interrupted, with no values.
+  const Bytes a = random_image(40, 40, 3, 4);
+  Sampled_bilateral_filter_options o;
+  o.mode = Tap_mode::local;
+  o.sampling = Tap_sampling::bilateral;
+  std::vector<double> seen;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  ASSERT_EQ(sampled_bilateral_filter(40, 40, 3, a, o).status, FeatureRecon::Status::success);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  auto reports = [&seen](double from, double to) {
+    return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t >= from && t < to; });
+  };
+  EXPECT_GE(reports(0, 0.05), 32);  // one per candidate set (64)
+  EXPECT_GE(reports(0.05, 0.2), 1);  // the calibration's counts
+  EXPECT_GE(reports(0.2, 1), 32);    // the rows (40)
+  for (const double stop_at : {0.02, 0.05, 0.5}) {
+    std::size_t later = 0;
+    bool refused = false;
+    o.progress = [&](double t) {
+      if (refused) ++later;
+      refused = refused || t >= stop_at;
+      return !refused;
+    };
+    const Bilateral_filter_result r = sampled_bilateral_filter(40, 40, 3, a, o);
+    EXPECT_EQ(r.status, FeatureRecon::Status::interrupted) << stop_at;
+    EXPECT_TRUE(r.values.empty()) << stop_at;
+    EXPECT_EQ(later, 0u) << stop_at;
+  }
+}

@@ -335,7 +335,10 @@ struct Local_pool {
   std::vector<std::uint32_t> first;                 // CSR of the neighbour lists, sets * per_set + 1
   std::vector<Neighbour> neighbours;
 
-  Local_pool(int R, std::size_t sets, std::size_t per, double reach, std::uint64_t seed) : per_set(per) {
+  // `progress` is asked before each set; when it says stop, `stopped` is set and the pool is left unfinished.
+  Local_pool(int R, std::size_t sets, std::size_t per, double reach, std::uint64_t seed,
+             const Progress_callback& progress, bool& stopped)
+      : per_set(per) {
     const double half = R + 0.5;
     offset.resize(sets * per);
     pixel.resize(sets * per);
@@ -344,6 +347,10 @@ struct Local_pool {
     const double cell = 2 * half / cells;
     std::vector<std::vector<std::uint32_t>> grid(std::size_t(cells) * std::size_t(cells));
     for (std::size_t s = 0; s < sets; ++s) {
+      if (!FeatureRecon::internal::report_progress(progress, double(s) / double(sets))) {
+        stopped = true;
+        return;
+      }
       Unit_random random(splitmix64(seed ^ (0x51ed27f1c0a3b9d7ULL + s)));
       for (auto& g : grid) g.clear();
       for (std::size_t k = 0; k < per; ++k) {
@@ -422,9 +429,11 @@ inline std::size_t local_set(std::uint64_t seed, std::size_t p, std::size_t sets
 }
 
 /// Calibrates the local dart radius so that the taps over the in-image window pixels of a seeded subset of
-/// windows meet the budget (secant steps on count ~ 1 / r^2, then bisection), r in (0, reach].
+/// windows meet the budget (secant steps on count ~ 1 / r^2, then bisection), r in (0, reach]. `progress` is asked
+/// before each of the (at most 30) counts; when it says stop, `stopped` is set and the radius so far returned.
 inline double calibrate_local_radius(const Filter_image& F, const Local_pool& pool, double budget, double factor,
-                                     std::uint64_t seed, double reach) {
+                                     std::uint64_t seed, double reach, const Progress_callback& progress,
+                                     bool& stopped) {
   const std::size_t n = F.pixels();
   std::vector<std::size_t> probes;
   if (n <= 4096) {
@@ -450,6 +459,10 @@ inline double calibrate_local_radius(const Filter_image& F, const Local_pool& po
   double r = std::sqrt(0.46 / budget);
   if (!(r < reach)) r = 0.5 * reach;
   for (int step = 0; step < 30; ++step) {
+    if (!FeatureRecon::internal::report_progress(progress, step / 30.0)) {
+      stopped = true;
+      return r;
+    }
     const double c = count(r);
     if (std::abs(c - target) <= 0.005 * target) return r;
     r = search.next(r, c, target, c > target);
@@ -662,15 +675,18 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
 
 /// The bilateral filter evaluated on sampled taps (dissertation Sec. 2.2.3), in the mode and with the
 /// sampling of `options`: global = bilateral_tap_pattern() then the filter on that pattern; local = a pool of
-/// `local_patterns` seeded candidate sets of candidates_per_tap * budget * (2R + 1)^2 uniform positions in the
-/// window, each output pixel thinning the set a seeded hash of its index picks by dart throwing (uniform: in
+/// `local_patterns` seeded candidate sets of candidates_per_tap * budget * (2R' + 1)^2 uniform positions in the
+/// window's square of radius R' = min(R, max(width, height) - 1) (the offsets a tap inside the image can have), each
+/// output pixel thinning the set a seeded hash of its index picks by dart throwing (uniform: in
 /// the Euclidean distance, the same taps for every window; bilateral: in xi with the window's colours), with
 /// the radius calibrated on every window of images up to 4096 pixels, else on 2048 seeded windows, so that the taps over their in-image pixels meet the
 /// budget.
 /// \param width, height, channels, data the image (as for bilateral_filter()).
 /// \param options the kernel, sampling, mode, budget, seed and progress.
 /// \returns the filtered values, the taps evaluated and their mean per kernel pixel, the dart radius, and
-///   status degenerate_input for an empty image, interrupted (no values) when stopped.
+///   status degenerate_input for an empty image, interrupted (no values) when stopped. Progress: global mode, the
+///   pattern up to 0.5 and the pixels from 0.5; local mode, the pool up to 0.05, the radius calibration up to 0.2
+///   and the pixels from 0.2.
 /// \throws std::invalid_argument naming the argument, as bilateral_tap_pattern().
 /// \note Deterministic: the same image, options and seed give bit-identical values.
 inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, int channels,
@@ -697,13 +713,31 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
     }, fn);
   }
   const double factor = internal::feature_factor(options);
-  const double kernel_pixels = double(F.side) * double(F.side);
+  // The pool covers the part of the window an in-image tap can reach: offsets beyond the image's larger side land
+  // outside from every pixel. It was sized by the whole window: a 4 x 4 image with radius 200 took 46 s and
+  // 2.7 GB, with radius 4096 more memory than there is.
+  const int pool_R = std::min(F.R, std::max(0, std::max(F.w, F.h) - 1));
+  const double pool_pixels = double(2 * pool_R + 1) * double(2 * pool_R + 1);
   const std::size_t per_set =
-      std::max<std::size_t>(2, std::size_t(std::ceil(options.candidates_per_tap * options.budget * kernel_pixels)));
+      std::max<std::size_t>(2, std::size_t(std::ceil(options.candidates_per_tap * options.budget * pool_pixels)));
   // Euclidean darts keep about 0.7 / r^2 per unit area; a bilateral radius is never larger for the same count.
   const double reach = 1.6 * std::sqrt(0.7 / options.budget);
-  const internal::Local_pool pool(F.R, options.local_patterns, per_set, reach, options.seed);
-  const double r = internal::calibrate_local_radius(F, pool, options.budget, factor, options.seed, reach);
+  // Progress: the pool up to 0.05, the radius calibration up to 0.2 (both ran before the first report: 26 s on a
+  // 512 x 512 picture at sigma 20), the pixels from 0.2.
+  auto stage = [&options](double a, double b) -> Progress_callback {
+    if (!options.progress) return {};
+    return [&options, a, b](double t) { return options.progress(a + (b - a) * t); };
+  };
+  bool stopped = false;
+  const internal::Local_pool pool(pool_R, options.local_patterns, per_set, reach, options.seed, stage(0, 0.05),
+                                  stopped);
+  const double r = stopped ? 0.0
+                           : internal::calibrate_local_radius(F, pool, options.budget, factor, options.seed, reach,
+                                                              stage(0.05, 0.2), stopped);
+  if (stopped) {
+    result.status = Status::interrupted;
+    return result;
+  }
   result.sampling_radius = r;
   const std::vector<float> comp = options.compensate_density ? internal::density_compensation(F, r, factor)
                                                              : std::vector<float>(F.pixels(), 1.0f);
@@ -721,7 +755,7 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
       });
   }
   const double per_tap = 1 / options.budget;
-  internal::filter_pixels(F, options.progress, result, [&](int x, int y, std::size_t p, internal::Tap_sum& sum) {
+  internal::filter_pixels(F, stage(0.2, 1), result, [&](int x, int y, std::size_t p, internal::Tap_sum& sum) {
     std::size_t taps = 0;
     sum.add(F, p, 1.0);  // the centre pixel exactly; the other taps stand for 1 / budget pixels each
     auto add = [&](std::uint32_t q) {
