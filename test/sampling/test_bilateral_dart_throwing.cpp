@@ -11,8 +11,10 @@
 
 #include "sampling/sampling_test_utilities.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -275,3 +277,24 @@ TEST(BilateralDartThrowing, BadInputNamesTheProblem) {
   EXPECT_TRUE(kept.empty());
 }
 }  // namespace
+
+TEST(BilateralDartThrowing, FewBisectionStepsStillBracketTheRadius) {
+  // 5000 points, 200 wanted, 3 bisection steps: the halving that finds the bracket used the steps up, and the
+  // result was the first 200 items of the visiting order at radius 0, labelled degenerate input (rho 0.035). The
+  // halving is not counted now: a radius is bracketed and the samples are spread.
+  const std::vector<Point_2> p = white_noise(5000, 21);
+  for (const std::size_t steps : {1u, 3u, 60u}) {
+    Dart_throwing_count_options o;
+    o.max_iterations = steps;
+    std::vector<std::size_t> kept;
+    const auto r = bilateral_dart_throwing_count(p, 200, std::back_inserter(kept), o);
+    EXPECT_EQ(r.status, Status::success) << steps;
+    ASSERT_EQ(kept.size(), 200u);
+    EXPECT_GT(r.radius, 0.0) << steps;
+    double closest = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < kept.size(); ++a)
+      for (std::size_t b = a + 1; b < kept.size(); ++b)
+        closest = std::min(closest, std::sqrt(CGAL::squared_distance(p[kept[a]], p[kept[b]])));
+    EXPECT_GE(closest, r.radius * (1 - 1e-12)) << steps;  // Poisson disk at the radius reported
+  }
+}

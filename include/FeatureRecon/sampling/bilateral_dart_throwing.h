@@ -222,7 +222,11 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
       high *= 2;
     }
   }
-  for (std::size_t it = 0; it < options.max_iterations; ++it) {
+  // Halving `high` until a throw keeps more than `count` items (the bracket's lower end) is not counted as a
+  // bisection step: with few steps (max_iterations 3 on 5000 points, count 200) no bracket was found and the result
+  // was the first items of the visiting order at radius 0, labelled degenerate. The halving ends by itself: mid
+  // reaches 0 after at most about 2100 halvings (duplicates: every radius above 0 keeps too few).
+  for (std::size_t it = 0; it < options.max_iterations;) {
     if (!FeatureRecon::internal::report_progress(options.darts.progress, double(it) / double(options.max_iterations))) {
       result.status = Status::interrupted;
       return result;
@@ -242,6 +246,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     } else {
       high = mid;
     }
+    if (low > 0) ++it;
   }
   if (best.size() < count) {
     // No radius keeps `count` items (duplicates: a repeated position conflicts at any radius > 0; or all items
