@@ -297,4 +297,15 @@ TEST(BilateralDartThrowing, FewBisectionStepsStillBracketTheRadius) {
         closest = std::min(closest, std::sqrt(CGAL::squared_distance(p[kept[a]], p[kept[b]])));
     EXPECT_GE(closest, r.radius * (1 - 1e-12)) << steps;  // Poisson disk at the radius reported
   }
+  // Two distinct positions and 10 wanted: no radius above 0 keeps enough. The uncounted halving is bounded (it went
+  // down to 0: about 1078 throws instead of 61).
+  std::vector<Point_2> two;
+  for (int i = 0; i < 2000; ++i) two.emplace_back(i % 2, 0);
+  std::size_t calls = 0;
+  Dart_throwing_count_options o;
+  o.darts.progress = [&calls](double) { return ++calls > 0; };
+  std::vector<std::size_t> kept;
+  EXPECT_EQ(bilateral_dart_throwing_count(two, 10, std::back_inserter(kept), o).status, Status::degenerate_input);
+  EXPECT_EQ(kept.size(), 10u);
+  EXPECT_LE(calls, 60u + 64u + 2u);
 }

@@ -8,6 +8,8 @@
 #include <FeatureRecon/sampling/image_domain.h>
 #include <FeatureRecon/sampling/kernel_relaxation.h>
 
+#include <CGAL/Simple_cartesian.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -352,3 +354,22 @@ TEST(Kernel_relaxation, BadInputNamesTheProblem) {
 }
 
 }  // namespace
+
+TEST(KernelRelaxation, StartingFeaturesAreTakenFromTheItems) {
+  // The sites' features are replaced by their items' before they are read: placeholder zero normals are fine here
+  // (refused by discrete Lloyd and kernel_energy, which read them).
+  using SK = CGAL::Simple_cartesian<double>;
+  using Tr = FeatureRecon::Point_with_normal_traits<SK>;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::pair<SK::Point_3, SK::Vector_3>> items;
+  for (int i = 0; i < 2000; ++i) items.push_back({SK::Point_3(u(rng), u(rng), 0), SK::Vector_3(0, 0, 1)});
+  std::vector<Bilateral_site<Tr>> sites;
+  for (int i = 0; i < 50; ++i) sites.push_back({{u(rng), u(rng), 0.0}, SK::Vector_3(0, 0, 0)});
+  Kernel_relaxation_options<3> o;
+  o.sigma_feature = 0.5;
+  o.max_iterations = 5;
+  const auto r = kernel_relaxation(items, sites, o);
+  EXPECT_EQ(r.status, FeatureRecon::Status::success);
+  EXPECT_EQ(r.sites.at(0).feature, SK::Vector_3(0, 0, 1));
+}

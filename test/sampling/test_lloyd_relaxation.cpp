@@ -446,4 +446,17 @@ TEST(LloydRelaxation, CopiesSeparateWhereTheFirstIsAtItsCentroid) {
   EXPECT_GE(dr.mass[1], 3.0);
   EXPECT_GT(std::hypot(dr.sites[0].position[0] - dr.sites[1].position[0],
                        dr.sites[0].position[1] - dr.sites[1].position[1]), 0.9);
+  // A box thinner than the move: the copy stays inside it (it was moved outside, and a stop at the first report
+  // returned it there); without an iteration the sites come back as given.
+  const std::vector<P2> thin{{0.5, 500}, {0.5, 500}};
+  Lloyd_options none;
+  none.max_iterations = 0;
+  EXPECT_EQ(lloyd_relaxation(thin, Pixel_density::uniform(1, 1000), none).sites, thin);
+  Lloyd_options stop;
+  stop.max_iterations = 5;
+  stop.progress = [](double) { return false; };
+  for (const P2& q : lloyd_relaxation(thin, Pixel_density::uniform(1, 1000), stop).sites) {
+    EXPECT_GE(q[0], 0.0);
+    EXPECT_LE(q[0], 1.0);
+  }
 }

@@ -224,8 +224,10 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   }
   // Halving `high` until a throw keeps more than `count` items (the bracket's lower end) is not counted as a
   // bisection step: with few steps (max_iterations 3 on 5000 points, count 200) no bracket was found and the result
-  // was the first items of the visiting order at radius 0, labelled degenerate. The halving ends by itself: mid
-  // reaches 0 after at most about 2100 halvings (duplicates: every radius above 0 keeps too few).
+  // was the first items of the visiting order at radius 0, labelled degenerate. At most 64 halvings go uncounted
+  // (a radius 2^-64 of the largest distance): more duplicates than `count` distinct positions keep too few at every
+  // radius above 0, and halving down to 0 took about 1078 throws (18 times the 60 steps).
+  std::size_t uncounted = 0;
   for (std::size_t it = 0; it < options.max_iterations;) {
     if (!FeatureRecon::internal::report_progress(options.darts.progress, double(it) / double(options.max_iterations))) {
       result.status = Status::interrupted;
@@ -246,7 +248,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     } else {
       high = mid;
     }
-    if (low > 0) ++it;
+    if (low > 0 || ++uncounted > 64) ++it;
   }
   if (best.size() < count) {
     // No radius keeps `count` items (duplicates: a repeated position conflicts at any radius > 0; or all items

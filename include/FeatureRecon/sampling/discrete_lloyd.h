@@ -140,8 +140,9 @@ class Item_domain {
 
   // Sites as items are checked: finite coordinates within +-1e100 (a site at 1e200 overflowed the grid's cell
   // arithmetic into an undefined float-to-integer cast) and, where features are compared, a feature at a finite
-  // distance from itself (a site with a zero normal silently got no item).
-  void check_sites(const std::vector<Site>& sites, const char* fn) const {
+  // distance from itself (a site with a zero normal silently got no item), unless `check_features` is false (the
+  // caller replaces the sites' features before reading them).
+  void check_sites(const std::vector<Site>& sites, const char* fn, bool check_features = true) const {
     if (sites.size() > std::numeric_limits<std::uint32_t>::max() - 1)
       FeatureRecon::internal::throw_invalid_argument(fn, "too many sites (", sites.size(), ")");
     for (std::size_t i = 0; i < sites.size(); ++i) {
@@ -153,7 +154,7 @@ class Item_domain {
           FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has coordinate ", sites[i].position[k],
                                                          " beyond +-1e100 (as items; scale the input)");
       }
-      if (compared_features) {
+      if (compared_features && check_features) {
         const double self = CGAL::to_double(S.feature_distance(sites[i].feature, sites[i].feature));
         if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))
           FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a feature at distance NaN from itself "
@@ -463,7 +464,7 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
   const double packing = engine.packing_distance(sites.size());
   // Copies of a site tie with it for every item and got none: where the first copy was already at its centroid
   // they stayed together for good. Every copy after the first moves by 1/100 of the packing distance first.
-  if (packing > 0 && std::isfinite(packing))
+  if (packing > 0 && std::isfinite(packing) && options.max_iterations > 0)  // no iteration: the sites as given
     internal::separate_copies<Traits::dimension>(sites.size(), packing / 100,
                                                  [&sites](std::size_t i) -> auto& { return sites[i].position; });
   double previous_energy = std::numeric_limits<double>::infinity();

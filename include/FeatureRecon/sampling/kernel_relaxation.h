@@ -355,7 +355,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
   constexpr int D = Traits::dimension;
   const char* fn = "kernel_relaxation";
   const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), fn);
-  engine.check_sites(sites, fn);
+  engine.check_sites(sites, fn, false);  // the features are taken from the items (settle()), never read
   Kernel_relaxation_result<Traits> result;
   result.kernel_width = engine.tau;
   result.step = options.initial_step;

@@ -543,7 +543,7 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
   const double hexagonal = std::sqrt(2 * area / (std::sqrt(3.0) * double(n)));
   // Copies of a site have empty cells and stay: where the first copy is already at its centroid they stayed
   // together for good. Every copy after the first moves by d_hex / 100 first (as kernel_relaxation() does).
-  {
+  if (options.max_iterations > 0) {  // no iteration: the sites as given
     const std::array<double, 4> b = density.box();
     const std::array<double, 2> lo{b[0], b[1]}, hi{b[2], b[3]};
     internal::separate_copies<2>(

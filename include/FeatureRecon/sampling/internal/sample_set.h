@@ -189,7 +189,7 @@ std::vector<std::array<double, D>> distinct_positions(const std::vector<std::arr
 /// Moves every copy after the first (in index order) of a position by `step` along a direction fixed by its index
 /// (golden-angle spiral: on the circle in 2D, on the sphere in 3D), so that coincident sites separate where
 /// nothing else would move them apart. `position(i)` is a reference to the D coordinates of site i. A move that
-/// would leave [lo, hi] (when given) goes the opposite way.
+/// would leave [lo, hi] (when given) goes the opposite way, clamped to the box (which may be thinner than `step`).
 template <int D, class Position>
 void separate_copies(std::size_t n, double step, Position&& position, const std::array<double, D>* lo = nullptr,
                      const std::array<double, D>* hi = nullptr) {
@@ -212,7 +212,8 @@ void separate_copies(std::size_t n, double step, Position&& position, const std:
     auto&& p = position(order[k]);
     for (int c = 0; c < D; ++c) {
       double x = original[order[k]][c] + offset[c];
-      if (lo != nullptr && hi != nullptr && (x < (*lo)[c] || x > (*hi)[c])) x = original[order[k]][c] - offset[c];
+      if (lo != nullptr && hi != nullptr && (x < (*lo)[c] || x > (*hi)[c]))
+        x = std::min((*hi)[c], std::max((*lo)[c], original[order[k]][c] - offset[c]));
       p[c] = x;
     }
   }
