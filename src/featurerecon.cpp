@@ -173,7 +173,7 @@ const std::vector<Command>& commands() {
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"
        "                                 [--bearing 45] [--crop-to-tracks TRACKS [--crop-radius 25]]\n"
        "                                 [--samples-out CSV] [--svg PICTURE] [--explain] [--tracks TRACKS] [--lonlat]\n"
-       "                                 [--matching greedy|optimal]\n"
+       "                                 [--matching greedy|optimal] [--quiet]\n"
        "\n"
        "Samples both maps every INTERVAL metres (per component, breadth-first from the point at half its edge\n"
        "length), matches ground-truth samples to reconstruction samples at most THRESHOLD metres away whose\n"
@@ -203,7 +203,8 @@ const std::vector<Command>& commands() {
        "  --matching       greedy (default): pairs accepted by increasing distance, each ground-truth sample\n"
        "                   choosing among its 10 nearest (the GraphSamplingToolkit's matching); optimal: a\n"
        "                   maximum-weight bipartite matching over all admissible pairs, weight THRESHOLD -\n"
-       "                   distance (at least the greedy weight; on the Chicago maps 0.1-0.7 % more pairs)\n",
+       "                   distance (at least the greedy weight; on the Chicago maps 0.1-0.7 % more pairs)\n"
+       "  --quiet          no progress on standard error\n",
        run_evaluate_map},
       {"synthetic-city", "Simulate GPS trips in a city whose streets are known (test data for road maps)",
        "usage: featurerecon synthetic-city --out-tracks TRACKS --out-vertices V --out-edges E\n"
@@ -211,7 +212,7 @@ const std::vector<Command>& commands() {
        "                                   [--block-height 90] [--rotation 0] [--jitter 10] [--missing 0.1]\n"
        "                                   [--curvature 0] [--trips 300] [--speed 10] [--interval 3.6] [--noise 4]\n"
        "                                   [--bias 2] [--lane-offset 2] [--seed 1]\n"
-       "                                   [--out-streets-vertices SV --out-streets-edges SE]\n"
+       "                                   [--out-streets-vertices SV --out-streets-edges SE] [--quiet]\n"
        "\n"
        "Lays out a street network and drives trips on it: shortest routes between random intersections, on the\n"
        "right-hand side, recorded every INTERVAL seconds with Gaussian noise and a constant bias per trip.\n"
@@ -227,6 +228,7 @@ const std::vector<Command>& commands() {
        "  --speed          mean speed (m/s); each trip drives at 0.7 to 1.3 times it\n"
        "  --noise, --bias  standard deviation of each fix's noise and of each trip's offset, per coordinate (m)\n"
        "  --out-streets-*  also write every street, driven or not\n"
+       "  --quiet          no progress on standard error\n"
        "\n"
        "example: featurerecon synthetic-city --layout organic --curvature 0.15 --trips 600 --out-tracks t.txt\n"
        "           --out-vertices gt_v.txt --out-edges gt_e.txt\n"

@@ -84,7 +84,7 @@ Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std
 }  // namespace
 
 int run_evaluate_map(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"explain", "lonlat"},
+  const Arguments args(argv, {"explain", "lonlat", "quiet"},
                        {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg",
                         "tracks", "matching"},
                        4);
@@ -166,7 +166,11 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     gt = crop_to_tracks(gt, crop_points, radius, options.interval);
   }
   options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
+  Progress matching_progress("matching samples", args.has("quiet"));
+  options.progress = std::ref(matching_progress);
   const Map_comparison_result r = compare_maps(gt, rec, options);
+  matching_progress.done(std::to_string(r.matched) + " pairs of " + std::to_string(r.ground_truth_samples) + " and " +
+                         std::to_string(r.reconstruction_samples) + " samples");
   if (args.has("samples-out")) {
     if (lonlat) {  // the samples' positions in degrees, as the maps were
       Map_comparison_result in_degrees = r;
@@ -225,7 +229,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
 }
 
 int run_synthetic_city(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {},
+  const Arguments args(argv, {"quiet"},
                        {"layout", "columns", "rows", "block-width", "block-height", "rotation", "jitter", "missing",
                         "curvature", "trips", "speed", "interval", "noise", "bias", "lane-offset", "seed",
                         "out-tracks", "out-vertices", "out-edges", "out-streets-vertices", "out-streets-edges"});
@@ -282,7 +286,10 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     if (seed < 0) throw Usage_error("--seed must be >= 0");
     o.seed = static_cast<std::uint64_t>(seed);
   }
+  Progress progress("driving trips", args.has("quiet"));
+  o.progress = std::ref(progress);
   const Synthetic_city city = make_synthetic_city(o);  // names a bad option (std::invalid_argument)
+  progress.done(std::to_string(city.trips.size()) + " trips");
   std::string tracks = "# trip_id x y t  (synthetic city, metres and seconds)\n";
   std::size_t fixes = 0;
   for (std::size_t t = 0; t < city.trips.size(); ++t)

@@ -185,6 +185,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   o.periodic = args.has("periodic");
   if (args.has("sigma-position")) o.sigma_position = args.get_scale("sigma-position");
   o.sigma_feature = sigma_feature_of(args);
+  Progress measuring("nearest neighbours", args.has("quiet"));
+  o.progress = std::ref(measuring);
   fs::Sampling_quality q;
   fs::Sampling_spectrum spectrum;
   bool has_spectrum = false;
@@ -235,6 +237,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       items.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2])});
     }
     q = fs::sampling_quality(items, o);
+    measuring.done(std::to_string(q.samples) + " samples");
   } else {
     const io::Point_file& f = text;
     dimension = f.dimension;
@@ -244,6 +247,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       std::vector<K::Point_2> p;
       for (std::size_t i = 0; i < f.size(); ++i) p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
       q = fs::sampling_quality(p, o);
+      measuring.done(std::to_string(q.samples) + " samples");
       if (o.periodic) {
         Progress progress("spectrum", args.has("quiet"));
         spectrum_options.progress = std::ref(progress);
@@ -265,6 +269,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       for (std::size_t i = 0; i < f.size(); ++i)
         p.emplace_back(f.coordinates[3 * i], f.coordinates[3 * i + 1], f.coordinates[3 * i + 2]);
       q = fs::sampling_quality(p, o);
+      measuring.done(std::to_string(q.samples) + " samples");
     } else {
       throw io::Input_error(input + ": expected 2 or 3 coordinates per line (or x y z nx ny nz), got " +
                             std::to_string(f.dimension));

@@ -232,6 +232,47 @@ TEST(SamplingQuality, BilateralDistancesSeparateFeatures) {
   EXPECT_NEAR(sampling_quality(p, o).minimum_distance, 1.0, 1e-12);
 }
 
+TEST(SamplingQuality, ProgressReportsAndStops) {
+  // 10000 samples: reports at 0, 4096, 8192 of them and 1, increasing; a stop at the second report leaves every
+  // statistic 0 and says interrupted. On the torus a clustered set needs the second, wider pass (as in the seam
+  // test above): its reports run on into the second half, and a stop there is honoured too.
+  const std::vector<Point_2> p = white_noise(10000, 4);
+  std::vector<double> seen;
+  Sampling_quality_options o;
+  o.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  const Sampling_quality full = sampling_quality(p, o);
+  EXPECT_EQ(full.status, Status::success);
+  ASSERT_EQ(seen.size(), 4u);
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(full.minimum_distance, sampling_quality(p).minimum_distance);
+  int calls = 0;
+  o.progress = [&](double) { return ++calls < 2; };
+  const Sampling_quality stopped = sampling_quality(p, o);
+  EXPECT_EQ(stopped.status, Status::interrupted);
+  EXPECT_EQ(stopped.samples, 10000u);
+  EXPECT_EQ(stopped.minimum_distance, 0.0);
+  EXPECT_EQ(stopped.relative_radius, 0.0);
+  EXPECT_EQ(stopped.average_minimum_distance, 0.0);
+
+  std::vector<Point_2> clustered{Point_2(0.2, 0.2), Point_2(0.8, 0.2)};
+  for (int i = 0; i < 200; ++i) clustered.emplace_back(0.45 + 0.005 * (i % 20), 0.7 + 0.01 * (i / 20));
+  o.periodic = true;
+  seen.clear();
+  o.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  EXPECT_EQ(sampling_quality(clustered, o).status, Status::success);
+  EXPECT_EQ(seen, (std::vector<double>{0.0, 0.5, 1.0}));  // first pass from 0, the second from 0.5
+  o.progress = [&](double f) { return f < 0.5; };
+  EXPECT_EQ(sampling_quality(clustered, o).status, Status::interrupted);
+}
+
 TEST(SamplingQuality, DegenerateAndBadInput) {
   EXPECT_EQ(sampling_quality(std::vector<Point_2>{}).status, Status::degenerate_input);
   EXPECT_EQ(sampling_quality(std::vector<Point_2>{Point_2(1, 1)}).status, Status::degenerate_input);

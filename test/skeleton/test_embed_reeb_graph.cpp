@@ -408,6 +408,34 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
   bool stopped = false;
   skeleton::internal::classical_mds_3d(cycle, n, [](double) { return false; }, stopped, 0);
   EXPECT_TRUE(stopped);
+  // The public overload with options: the same positions as without when it runs to the end (reports from 0 to
+  // 1, increasing), all 0 and interrupted after a stop at the second report; a stop at the start on the dense
+  // path (10 points) too.
+  std::vector<double> seen;
+  Classical_mds_options o;
+  o.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  const Classical_mds full = classical_mds_3d(cycle, n, o);
+  EXPECT_EQ(full.status, Status::success);
+  EXPECT_EQ(full.positions, classical_mds_3d(cycle, n));
+  ASSERT_GE(seen.size(), 3u);
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  int calls = 0;
+  o.progress = [&](double) { return ++calls < 2; };
+  const Classical_mds cut = classical_mds_3d(cycle, n, o);
+  EXPECT_EQ(cut.status, Status::interrupted);
+  EXPECT_EQ(cut.positions, (std::vector<std::array<double, 3>>(n, {0.0, 0.0, 0.0})));
+  const std::vector<double> small(cycle.begin(), cycle.begin() + 10);  // not a matrix: the check comes first
+  EXPECT_THROW(classical_mds_3d(small, 10, o), std::invalid_argument);
+  std::vector<double> ten(100);
+  for (std::size_t i = 0; i < 10; ++i)
+    for (std::size_t j = 0; j < 10; ++j) ten[i * 10 + j] = std::fabs(double(i) - double(j));
+  o.progress = [](double) { return false; };
+  EXPECT_EQ(classical_mds_3d(ten, 10, o).status, Status::interrupted);
 }
 
 TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {

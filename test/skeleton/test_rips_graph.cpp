@@ -346,6 +346,42 @@ TEST(DistanceMatrix, RipsAndKnnMatchPoints) {
   EXPECT_EQ(build_rips_graph_from_distance_matrix(std::vector<std::vector<double>>{}, 1.0).number_of_vertices, 0u);
 }
 
+TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
+  // 4100 points on a line (distance |i - j|): the Rips graph at radius 1 is the path. Reports every 4096 rows
+  // (Rips: fraction of the pairs; k-NN every 1024 rows: fraction of the rows), increasing, ending at 1; a stop
+  // keeps the edges of the rows visited before it.
+  const std::size_t n = 4100;
+  Eigen::MatrixXd D(n, n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) D(i, j) = std::fabs(double(i) - double(j));
+  std::vector<double> seen;
+  Proximity_graph_options o;
+  o.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(D, 1.0, o).number_of_edges(), n - 1);
+  ASSERT_EQ(seen.size(), 2u);  // row 4096, then 1
+  EXPECT_NEAR(seen[0], 1 - std::pow(1 - 4096.0 / n, 2), 1e-12);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.back(), 1.0);
+  int calls = 0;
+  o.progress = [&](double) { return ++calls < 1; };
+  const Proximity_graph stopped = build_rips_graph_from_distance_matrix(D, 1.0, o);
+  EXPECT_EQ(stopped.number_of_edges(), 4096u);  // rows 0..4095 each give their edge to the next
+  seen.clear();
+  o.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  EXPECT_EQ(build_knn_graph_from_distance_matrix(D, 1, o).number_of_edges(), n - 1);
+  EXPECT_EQ(seen, (std::vector<double>{1024.0 / n, 2048.0 / n, 3072.0 / n, 4096.0 / n, 1.0}));
+  calls = 0;
+  o.progress = [&](double) { return ++calls < 2; };
+  // Rows 0..2047; the nearest of i > 0 is i - 1 (the tie with i + 1 goes to the smaller index): the path to 2047.
+  EXPECT_EQ(build_knn_graph_from_distance_matrix(D, 1, o).number_of_edges(), 2047u);
+}
+
 TEST(DistanceMatrix, BadMatricesNameTheEntry) {
   auto expect_message = [](const std::vector<std::vector<double>>& D, const std::string& part) {
     try {

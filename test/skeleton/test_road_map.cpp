@@ -628,6 +628,35 @@ TEST(SyntheticCity, StreetsAndTrips) {
   ASSERT_EQ(again.trips.size(), c.trips.size());
   for (std::size_t t = 0; t < c.trips.size(); ++t)
     for (std::size_t i = 0; i < c.trips[t].size(); ++i) EXPECT_EQ(again.trips[t][i].x, c.trips[t][i].x);
+  // Progress: 0, then before each trip 0.05 + 0.95 t / trips, then 1. A stop before trip 10 keeps the first ten
+  // trips as they were and the streets they drove.
+  std::vector<double> seen;
+  o.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  EXPECT_EQ(make_synthetic_city(o).status, Status::success);
+  ASSERT_EQ(seen.size(), o.trips + 2);
+  EXPECT_EQ(seen[0], 0.0);
+  EXPECT_EQ(seen[1], 0.05);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  int calls = 0;
+  o.progress = [&](double) { return ++calls <= 11; };  // the start and trips 0-9
+  const Synthetic_city part = make_synthetic_city(o);
+  EXPECT_EQ(part.status, Status::interrupted);
+  ASSERT_EQ(part.trips.size(), 10u);
+  for (std::size_t t = 0; t < 10; ++t) EXPECT_EQ(part.trips[t].size(), c.trips[t].size());
+  EXPECT_LT(part.driven.edges.size(), c.driven.edges.size());
+  for (const Edge& e : part.driven.edges)
+    EXPECT_TRUE(std::find(c.driven.edges.begin(), c.driven.edges.end(), e) != c.driven.edges.end());
+  o.layout = Synthetic_city_layout::organic;  // a stop at the start: no streets, no trips
+  o.progress = [](double) { return false; };
+  const Synthetic_city none = make_synthetic_city(o);
+  EXPECT_EQ(none.status, Status::interrupted);
+  EXPECT_TRUE(none.streets.positions.empty() && none.trips.empty());
+  o.layout = Synthetic_city_layout::grid;
+  o.progress = nullptr;
   o.seed = 2;
   EXPECT_NE(make_synthetic_city(o).streets.positions, c.streets.positions);
   // Bad options are named.

@@ -41,6 +41,10 @@ struct Sampling_quality_options {
   /// Distances on the unit torus [0, 1)^d (positions are taken modulo 1), as the point-set analysis tools of
   /// Heck, Schlömer and Deussen measure them; default false.
   bool periodic = false;
+  /// Fraction of the samples measured, every 4096 samples (the periodic search, when repeated with a wider band,
+  /// counts its second pass in the second half); returning false stops: the statistics stay 0 and the status is
+  /// interrupted.
+  Progress_callback progress;
 };
 
 /// Spacing statistics of a sample set (Lagae and Dutré 2008; Schlömer's PSA conventions).
@@ -53,7 +57,9 @@ struct Sampling_quality {
   double minimum_distance = 0;  ///< smallest nearest-neighbour (bilateral) distance; 0 (not computed) when degenerate
   double relative_radius = 0;         ///< rho = minimum_distance / d_hex (1 for the hexagonal lattice)
   double average_minimum_distance = 0;  ///< mean nearest-neighbour distance / d_hex (about 0.466 for white noise in 2D)
-  Status status = Status::success;    ///< degenerate_input for fewer than two samples, a domain of zero measure or samples of lower affine dimension (collinear, coplanar)
+  /// degenerate_input for fewer than two samples, a domain of zero measure or samples of lower affine dimension
+  /// (collinear, coplanar); interrupted when the progress callback stopped the run (statistics 0)
+  Status status = Status::success;
 };
 
 /// Nearest-neighbour statistics of a sample set: the relative radius rho = d_min / d_hex and the average
@@ -106,8 +112,8 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   // Periodic images of the points within `band` of the faces of the unit cell, so the tree sees the torus. The
   // search is exact when every nearest distance found stays below the band (the images within that distance of
   // a point in the cell are then all in the tree); otherwise it is repeated with band 0.5, which holds every
-  // nearest image. Returns the largest nearest distance.
-  const auto measure_with_band = [&](double band) {
+  // nearest image. Returns the largest nearest distance, or -1 when the callback stopped the pass.
+  const auto measure_with_band = [&](double band, double from, double to) {
     double farthest = 0;
     std::vector<std::array<double, D>> points = S.positions;
     std::vector<std::size_t> source(n);
@@ -173,6 +179,11 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
       double minimum = std::numeric_limits<double>::infinity(), sum = 0;
       farthest = 0;
       for (std::size_t i = 0; i < n; ++i) {
+        if (i % 4096 == 0 &&
+            !FeatureRecon::internal::report_progress(options.progress, from + (to - from) * double(i) / double(n))) {
+          farthest = -1;
+          return;
+        }
         double best = std::numeric_limits<double>::infinity();
         if (euclidean) {
           Nearest search(tree, kd_points[i], 2, 0.0, true, tree_distance);
@@ -197,10 +208,17 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
     return farthest;
   };
   const double band = std::min(0.5, 2 * q.hexagonal_distance);
-  if (!options.periodic)
-    measure_with_band(0);
-  else if (!(measure_with_band(band) * (1 + 1e-9) < band) && band < 0.5)
-    measure_with_band(0.5);
+  double farthest = measure_with_band(options.periodic ? band : 0, 0, options.periodic && band < 0.5 ? 0.5 : 1);
+  if (farthest >= 0 && options.periodic && !(farthest * (1 + 1e-9) < band) && band < 0.5)
+    farthest = measure_with_band(0.5, 0.5, 1);
+  if (farthest < 0) {
+    Sampling_quality stopped;
+    stopped.samples = n;
+    stopped.domain_measure = measure;
+    stopped.status = Status::interrupted;
+    return stopped;
+  }
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return q;
 }
 

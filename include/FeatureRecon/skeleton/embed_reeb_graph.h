@@ -581,14 +581,21 @@ inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dens
   dense();
 }
 
+/// Throws unless D has n * n entries (n * n may wrap: compared by division).
+inline void check_mds_size(const std::vector<double>& D, std::size_t n) {
+  if (n != 0 && (D.size() / n != n || D.size() % n != 0))
+    FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "D has ", D.size(),
+                                                   " entries, not n * n for n = ", n);
+  if (n == 0 && !D.empty())
+    FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "D has ", D.size(), " entries for n = 0");
+}
+
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n,
                                                            const Progress_callback& progress, bool& stopped,
                                                            std::size_t dense_limit = 300) {
   const char* fn = "classical_mds_3d";
   stopped = false;
-  if (n != 0 && (D.size() / n != n || D.size() % n != 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "D has ", D.size(), " entries, not n * n for n = ", n);
-  if (n == 0 && !D.empty()) FeatureRecon::internal::throw_invalid_argument(fn, "D has ", D.size(), " entries for n = 0");
+  check_mds_size(D, n);
   for (std::size_t k = 0; k < D.size(); ++k)
     if (!(std::isfinite(D[k]) && D[k] >= 0))
       FeatureRecon::internal::throw_invalid_argument(fn, "entry (", k / n, ", ", k % n, ") is ", D[k],
@@ -648,9 +655,44 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
 ///         symmetric.
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
   bool stopped = false;
-  if (n != 0 && D.size() / n == n && D.size() % n == 0)  // (other sizes are refused below; n * n may wrap)
-    internal::check_distance_entries(D, n, "classical_mds_3d");
+  internal::check_mds_size(D, n);
+  internal::check_distance_entries(D, n, "classical_mds_3d");
   return internal::classical_mds_3d(D, n, Progress_callback(), stopped);
+}
+
+/// Options of classical_mds_3d() with a progress callback.
+struct Classical_mds_options {
+  /// Called with 0 at the start, between the steps of the block Krylov solver (above 300 points) with the
+  /// fraction of its column budget, and with 1 at the end; returning false stops: every position 0, status
+  /// interrupted.
+  Progress_callback progress;
+};
+
+/// Result of classical_mds_3d() with options.
+struct Classical_mds {
+  std::vector<std::array<double, 3>> positions;  ///< one per row of D, as the two-argument overload returns them
+  Status status = Status::success;  ///< interrupted when the progress callback stopped the run (positions all 0)
+};
+
+/// classical_mds_3d() that reports progress and can be stopped; the same positions when it runs to the end.
+/// \throws std::invalid_argument as the two-argument overload.
+inline Classical_mds classical_mds_3d(const std::vector<double>& D, std::size_t n,
+                                      const Classical_mds_options& options) {
+  internal::check_mds_size(D, n);
+  internal::check_distance_entries(D, n, "classical_mds_3d");
+  Classical_mds result;
+  bool stopped = !FeatureRecon::internal::report_progress(options.progress, 0.0);
+  if (stopped)
+    result.positions.assign(n, {0.0, 0.0, 0.0});
+  else
+    result.positions = internal::classical_mds_3d(D, n, options.progress, stopped);
+  if (stopped) {
+    result.status = Status::interrupted;
+    for (auto& p : result.positions) p = {0.0, 0.0, 0.0};
+  } else {
+    (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  }
+  return result;
 }
 
 /// Embeds a Reeb graph (dissertation Ch. 3.3.1): a node sits at the centroid of its points (its vertex and

@@ -532,15 +532,23 @@ std::vector<double> checked_distance_matrix(const Matrix& D, std::size_t& n, con
   return a;
 }
 /// The Rips graph of a checked n x n distance matrix `a` (row-major): i < j joined when a(i, j) <= radius.
-inline Proximity_graph rips_graph_of_distance_matrix(const std::vector<double>& a, std::size_t n, double radius) {
+/// `progress` (if set) is asked every 4096 rows with the fraction of the pairs visited; false stops: the graph
+/// holds the edges of the rows visited.
+inline Proximity_graph rips_graph_of_distance_matrix(const std::vector<double>& a, std::size_t n, double radius,
+                                                     const Progress_callback& progress = {}) {
   Proximity_graph g;
   g.number_of_vertices = n;
-  for (std::size_t i = 0; i < n; ++i)
+  const double pairs = 0.5 * double(n) * double(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i % 4096 == 0 && i > 0 && progress &&
+        !progress(1 - 0.5 * double(n - i) * double(n - i) / pairs))  // rows 0..i-1 hold n^2/2 - (n-i)^2/2 pairs
+      break;
     for (std::size_t j = i + 1; j < n; ++j)
       if (a[i * n + j] <= radius) {
         g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
         g.edge_lengths.push_back(a[i * n + j]);
       }
+  }
   return g;
 }
 /// \endcond
@@ -548,22 +556,34 @@ inline Proximity_graph rips_graph_of_distance_matrix(const std::vector<double>& 
 
 /// Rips graph of a dense distance matrix: i and j are joined when D(i, j) <= radius (inclusive).
 /// \tparam Matrix an Eigen-like matrix (`rows()`, `cols()`, `D(i, j)`) or a range of rows.
+/// \param options its `progress` is called with the fraction of the pairs visited (every 4096 rows, then 1);
+///        returning false stops: the graph holds the edges of the rows visited (`search` is not used).
 /// \pre D is square, symmetric, with a zero diagonal and finite entries >= 0; radius is finite and >= 0
 ///      (all checked; throws naming the offending entry).
 template <class Matrix>
-Proximity_graph build_rips_graph_from_distance_matrix(const Matrix& D, double radius) {
+Proximity_graph build_rips_graph_from_distance_matrix(const Matrix& D, double radius,
+                                                      const Proximity_graph_options& options = {}) {
   const char* fn = "build_rips_graph_from_distance_matrix";
   if (!(std::isfinite(radius) && radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);  // sets n
-  return internal::rips_graph_of_distance_matrix(a, n, radius);
+  bool stopped = false;
+  Proximity_graph g = internal::rips_graph_of_distance_matrix(a, n, radius, [&](double f) {
+    stopped = !FeatureRecon::internal::report_progress(options.progress, f);
+    return !stopped;
+  });
+  if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  return g;
 }
 
 /// Symmetrised k-nearest-neighbour graph of a dense distance matrix (ties broken by index).
+/// \param options its `progress` is called every 1024 rows with the fraction of the rows done, then with 1;
+///        returning false stops: the graph holds the neighbours of the rows done (`search` is not used).
 /// \pre as build_rips_graph_from_distance_matrix(), and k >= 1 (checked; throws).
 template <class Matrix>
-Proximity_graph build_knn_graph_from_distance_matrix(const Matrix& D, std::size_t k) {
+Proximity_graph build_knn_graph_from_distance_matrix(const Matrix& D, std::size_t k,
+                                                     const Proximity_graph_options& options = {}) {
   const char* fn = "build_knn_graph_from_distance_matrix";
   if (k < 1) FeatureRecon::internal::throw_invalid_argument(fn, "k must be >= 1, got ", k);
   std::size_t n = 0;
@@ -572,7 +592,13 @@ Proximity_graph build_knn_graph_from_distance_matrix(const Matrix& D, std::size_
   g.number_of_vertices = n;
   const std::size_t kk = std::min(k, n == 0 ? 0 : n - 1);
   std::vector<std::uint32_t> cand;
+  bool stopped = false;
   for (std::size_t i = 0; i < n && kk > 0; ++i) {
+    if (i % 1024 == 0 && i > 0 &&
+        !FeatureRecon::internal::report_progress(options.progress, double(i) / double(n))) {
+      stopped = true;
+      break;
+    }
     cand.clear();
     for (std::size_t j = 0; j < n; ++j)
       if (j != i) cand.push_back(static_cast<std::uint32_t>(j));
@@ -588,6 +614,7 @@ Proximity_graph build_knn_graph_from_distance_matrix(const Matrix& D, std::size_
   internal::sort_unique_edges(g.edges, nullptr);
   g.edge_lengths.resize(g.edges.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) g.edge_lengths[e] = a[g.edges[e][0] * n + g.edges[e][1]];
+  if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return g;
 }
 

@@ -11,6 +11,7 @@
 // Gaussian noise and a per-trip bias. Deterministic for a seed on every platform (internal/random.h).
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
 #include <FeatureRecon/internal/random.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
 #include <FeatureRecon/skeleton/map_comparison.h>
@@ -64,6 +65,10 @@ struct Synthetic_city_options {
   double trip_bias = 2;          ///< standard deviation of a constant offset per trip and coordinate; default 2
   double lane_offset = 2;        ///< vehicles drive this far right of the centre line; default 2
   std::uint64_t seed = 1;        ///< default 1
+  /// Fraction done: the street layout counts for the first 5 % (the organic layout reports every 65536 darts),
+  /// then one report before each trip. Returning false stops: the trips made so far are kept, `driven` holds the
+  /// streets they used, and the status is interrupted.
+  Progress_callback progress;
 };
 
 /// Result of make_synthetic_city().
@@ -73,6 +78,7 @@ struct Synthetic_city {
   Embedded_graph_2 streets;
   Embedded_graph_2 driven;    ///< the streets at least one trip used: the ground truth of a road map
   std::vector<Gps_trip> trips;  ///< the recorded fixes (trip k starts at time 10000 k)
+  Status status = Status::success;  ///< interrupted when the progress callback stopped the run (fewer trips)
 };
 
 namespace internal {
@@ -194,6 +200,14 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
 
   FeatureRecon::internal::Unit_random random(FeatureRecon::internal::splitmix64(o.seed));
   Synthetic_city city;
+  const auto report = [&](double fraction) { return FeatureRecon::internal::report_progress(o.progress, fraction); };
+  // A stop in the layout: no streets, no trips.
+  const auto stopped_city = [] {
+    Synthetic_city stopped;
+    stopped.status = Status::interrupted;
+    return stopped;
+  };
+  if (!report(0)) return stopped_city();
   const std::size_t nx = o.columns, ny = o.rows, n = nx * ny;
   // Degrees reduced to (-360, 360) first: 1e308 degrees times pi overflowed to a NaN rotation.
   const double a = std::fmod(o.rotation, 360.0) * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
@@ -229,7 +243,8 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     auto cell_of = [cell](double v, std::size_t size) {
       return std::min(size - 1, static_cast<std::size_t>(std::max(0.0, std::floor(v / cell))));
     };
-    for (std::size_t rejected = 0; q.size() < n;) {
+    for (std::size_t rejected = 0, darts = 0; q.size() < n; ++darts) {
+      if (darts % 65536 == 65535 && !report(0.05 * double(q.size()) / double(n))) return stopped_city();
       const std::array<double, 2> p{w * random(), h * random()};
       const std::size_t ci = cell_of(p[0], columns), cj = cell_of(p[1], rows);
       bool free = true;
@@ -310,6 +325,10 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   const double max_fixes = double(std::size_t(1) << 26);
   double planned_fixes = 0;
   for (std::size_t t = 0; t < o.trips; ++t) {
+    if (!report(0.05 + 0.95 * double(t) / double(o.trips))) {
+      city.status = Status::interrupted;
+      break;
+    }
     std::vector<double> factor(m);
     for (double& f : factor) f = 1 + 0.5 * random();
     const auto from = static_cast<Vertex_index>(random() * double(n));
@@ -385,6 +404,7 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   for (std::size_t k = 0; k < m; ++k)
     if (used[k])
       for (std::size_t i = 0; i + 1 < line[k].size(); ++i) city.driven.edges.push_back({line[k][i], line[k][i + 1]});
+  if (city.status == Status::success) (void)report(1);
   return city;
 }
 
