@@ -171,7 +171,7 @@ const std::vector<Command>& commands() {
        run_skeleton},
       {"evaluate-map", "Compare a reconstructed road map with a ground truth (graph-sampling metric)",
        "usage: featurerecon evaluate-map GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES [--threshold 15] [--interval 5]\n"
-       "                                 [--bearing 45] [--crop-to-tracks TRACKS [--crop-radius 25]]\n"
+       "                                 [--bearing 45] [--crop-to-tracks TRACKS [--crop-radius 25] [--crop-gap 500]]\n"
        "                                 [--samples-out CSV] [--svg PICTURE] [--explain] [--tracks TRACKS] [--lonlat]\n"
        "                                 [--matching greedy|optimal] [--quiet]\n"
        "\n"
@@ -183,8 +183,10 @@ const std::vector<Command>& commands() {
        "\n"
        "  GT_*, REC_*      vertex files 'id,x,y' and edge files 'id,v1,v2[,flag]' (metres, or degrees with --lonlat;\n"
        "                   edges undirected)\n"
-       "  --crop-to-tracks keep only ground-truth edges whose samples all lie within --crop-radius (default 25 m)\n"
-       "                   of some point of TRACKS (lines 'trip_id x y t')\n"
+       "  --crop-to-tracks keep only ground-truth edges whose 5 m samples all lie within --crop-radius (default 25 m)\n"
+       "                   of a trace point of TRACKS (lines 'trip_id x y t'): the fixes, and points every 10 m\n"
+       "                   between consecutive fixes of a trip (by time) at most --crop-gap apart (default 500 m;\n"
+       "                   0: the fixes alone). The crop of the Chicago reference ground truth trk25\n"
        "  --samples-out    write every sample: 'map,index,x,y,bearing,partner' (partner -1: unmatched)\n"
        "  --svg            picture of the match: truth green (matched) or red (missed), reconstruction blue\n"
        "                   (matched) or orange (spurious); SVG, or PNG, JPEG, PGM, PPM by the extension\n"

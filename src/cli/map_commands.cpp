@@ -6,11 +6,6 @@
 #include <FeatureRecon/skeleton/road_map.h>
 #include <FeatureRecon/skeleton/synthetic_city.h>
 
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Search_traits_2.h>
-#include <CGAL/Simple_cartesian.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -39,54 +34,12 @@ Embedded_graph_2 to_graph(const io::Map_file& m) {
   return g;
 }
 
-/// Keeps the edges all of whose samples (every `interval` metres, endpoints included) lie within `radius` of
-/// some trace point.
-Embedded_graph_2 crop_to_tracks(const Embedded_graph_2& g, const std::vector<std::array<double, 2>>& tracks,
-                                double radius, double interval) {
-  using K = CGAL::Simple_cartesian<double>;
-  using Tree = CGAL::Kd_tree<CGAL::Search_traits_2<K>>;
-  std::vector<K::Point_2> pts;
-  for (const auto& p : tracks) pts.emplace_back(p[0], p[1]);
-  Tree tree(pts.begin(), pts.end());
-  tree.build();
-  auto covered = [&](double x, double y) {
-    const CGAL::Fuzzy_sphere<CGAL::Search_traits_2<K>> ball(K::Point_2(x, y), radius, 0.0);
-    return static_cast<bool>(tree.search_any_point(ball));  // stops at the first point found
-  };
-  // The samples are counted first: a tiny interval or a huge edge must be refused, not loop (t += interval stops
-  // moving once t is large) or run for hours; the bound is compare_maps' (2^25 samples).
-  auto length = [&](const Edge& e) {
-    const auto& a = g.positions[e[0]];
-    const auto& b = g.positions[e[1]];
-    return std::hypot(b[0] - a[0], b[1] - a[1]);
-  };
-  double total = 0;
-  for (const Edge& e : g.edges) total += std::floor(length(e) / interval) + 2;
-  if (!(total < 33554432.0))
-    throw std::invalid_argument("--crop-to-tracks: the ground truth's edges at --interval " + json_number(interval) +
-                                " would give more than 2^25 samples");
-  Embedded_graph_2 out;
-  out.positions = g.positions;
-  for (const Edge& e : g.edges) {
-    const auto& a = g.positions[e[0]];
-    const auto& b = g.positions[e[1]];
-    const double len = length(e);
-    const auto steps = static_cast<std::uint64_t>(std::floor(len / interval)) + 1;  // the last one reaches b
-    bool keep = true;
-    for (std::uint64_t i = 0; keep && i <= steps; ++i) {
-      const double u = len > 0 ? std::min(1.0, static_cast<double>(i) * interval / len) : 0.0;
-      keep = covered(a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]));
-    }
-    if (keep) out.edges.push_back(e);
-  }
-  return out;
-}
 }  // namespace
 
 int run_evaluate_map(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"explain", "lonlat", "quiet"},
-                       {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "samples-out", "svg",
-                        "tracks", "matching"},
+                       {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "crop-gap", "samples-out",
+                        "svg", "tracks", "matching"},
                        4);
   if (args.positional().size() != 4)
     throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
@@ -98,7 +51,16 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   if (matching != "greedy" && matching != "optimal")
     throw Usage_error("--matching must be greedy or optimal, got '" + matching + "'");
   options.matching = matching == "optimal" ? Map_matching::optimal : Map_matching::greedy;
-  if (args.has("crop-radius") && !args.has("crop-to-tracks")) throw Usage_error("--crop-radius goes with --crop-to-tracks");
+  for (const char* crop : {"crop-radius", "crop-gap"})
+    if (args.has(crop) && !args.has("crop-to-tracks"))
+      throw Usage_error(std::string("--") + crop + " goes with --crop-to-tracks");
+  Map_crop_options crop_options;
+  if (args.has("crop-radius")) crop_options.radius = args.get_positive_double("crop-radius");
+  if (args.has("crop-gap")) {
+    crop_options.max_gap = args.get_double("crop-gap");
+    if (!(crop_options.max_gap >= 0 && std::isfinite(crop_options.max_gap)))
+      throw Usage_error("--crop-gap must be finite and >= 0, got '" + args.get("crop-gap") + "'");
+  }
   Outputs outputs(args, {"samples-out", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   const auto& p = args.positional();
@@ -117,22 +79,25 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   Embedded_graph_2 gt = read(p[0], p[1], gt_lines);
   Embedded_graph_2 rec = read(p[2], p[3], rec_lines);
   std::size_t gt_edges_before = gt.edges.size();
-  std::vector<std::array<double, 2>> crop_points, track_points;
-  if (args.has("crop-to-tracks")) crop_points = io::read_track_points(args.get("crop-to-tracks"), &crop_lines);
-  std::vector<Gps_trip> trips;
-  if (args.has("tracks")) {
+  std::vector<std::array<double, 2>> crop_points, track_points;  // for --lonlat's checks and messages
+  // Trips with their points and the lines they came from.
+  auto read_trips = [](const std::string& path, std::vector<Gps_trip>& trips,
+                       std::vector<std::array<double, 2>>& points, std::vector<std::size_t>& lines) {
     io::Track_origin origin;
-    const auto read_trips = io::read_track_trips(args.get("tracks"), &origin);
-    for (std::size_t t = 0; t < read_trips.size(); ++t) {
+    const auto read = io::read_track_trips(path, &origin);
+    for (std::size_t t = 0; t < read.size(); ++t) {
       trips.emplace_back();
-      for (std::size_t i = 0; i < read_trips[t].size(); ++i) {
-        const auto& f = read_trips[t][i];
+      for (std::size_t i = 0; i < read[t].size(); ++i) {
+        const auto& f = read[t][i];
         trips.back().push_back({f[0], f[1], f[2]});
-        track_points.push_back({f[0], f[1]});
-        track_lines.push_back(origin.lines[t][i]);
+        points.push_back({f[0], f[1]});
+        lines.push_back(origin.lines[t][i]);
       }
     }
-  }
+  };
+  std::vector<Gps_trip> trips, crop_trips;
+  if (args.has("crop-to-tracks")) read_trips(args.get("crop-to-tracks"), crop_trips, crop_points, crop_lines);
+  if (args.has("tracks")) read_trips(args.get("tracks"), trips, track_points, track_lines);
   // --lonlat: every file in degrees; all projected to metres with one projection centred on them.
   const bool lonlat = args.has("lonlat");
   if (!lonlat)  // degrees read as metres: the whole map shrinks to a few samples and everything matches
@@ -157,13 +122,19 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
                                     {p[2], &rec.positions, &rec_lines},
                                     {args.get_or("crop-to-tracks", ""), &crop_points, &crop_lines},
                                     {args.get_or("tracks", ""), &track_points, &track_lines}});
-    for (auto* points : {&gt.positions, &rec.positions, &crop_points})
+    for (auto* points : {&gt.positions, &rec.positions})
       for (auto& q : *points) q = projection.forward(q[0], q[1]);
     project_trips(trips, projection);
+    project_trips(crop_trips, projection);
   }
+  std::size_t crop_trace_points = 0;
   if (args.has("crop-to-tracks")) {
-    const double radius = args.has("crop-radius") ? args.get_positive_double("crop-radius") : 25.0;
-    gt = crop_to_tracks(gt, crop_points, radius, options.interval);
+    Progress cropping("cropping the ground truth", args.has("quiet"));
+    crop_options.progress = std::ref(cropping);
+    Cropped_map cropped = crop_map_to_trips(gt, crop_trips, crop_options);
+    cropping.done(std::to_string(cropped.map.edges.size()) + " of " + std::to_string(gt.edges.size()) + " edges");
+    gt = std::move(cropped.map);
+    crop_trace_points = cropped.trace_points;
   }
   options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
   Progress matching_progress("matching samples", args.has("quiet"));
@@ -199,6 +170,11 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
      << ", \"ground_truth_edges_before_crop\": " << gt_edges_before << ", \"threshold\": "
      << json_number(options.match_distance) << ", \"interval\": " << json_number(options.interval)
      << ", \"bearing\": " << json_number(options.bearing_limit) << ", \"matching\": \"" << matching << "\"";
+  if (args.has("crop-to-tracks"))
+    os << ", \"crop\": {\"radius\": " << json_number(crop_options.radius)
+       << ", \"sample_interval\": " << json_number(crop_options.sample_interval)
+       << ", \"trace_step\": " << json_number(crop_options.trace_step)
+       << ", \"max_gap\": " << json_number(crop_options.max_gap) << ", \"trace_points\": " << crop_trace_points << "}";
   if (lonlat)
     os << ", \"lonlat\": true, \"central_meridian\": " << json_number(projection.central_meridian)
        << ", \"origin_latitude\": " << json_number(projection.origin_latitude);

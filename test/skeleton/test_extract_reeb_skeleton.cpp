@@ -880,3 +880,91 @@ TYPED_TEST(ExtractReebSkeletonKernels, SameSkeletonAsPlainArrays) {
   for (std::size_t v = 0; v < num_vertices(a.graph); ++v) EXPECT_EQ(b.graph[v].position, a.graph[v].position);
   EXPECT_EQ(loops_of(b.graph), 2u);
 }
+
+namespace {
+// Degrees of a skeleton's nodes: {number of degree 3, number of degree 4}.
+std::pair<int, int> fork_degrees(const Skeleton_graph& g) {
+  int three = 0, four = 0;
+  for (auto v : boost::make_iterator_range(vertices(g))) {
+    three += degree(v, g) == 3;
+    four += degree(v, g) == 4;
+  }
+  return {three, four};
+}
+}  // namespace
+
+TEST(ExtractReebSkeleton, AutomaticBranchMergeDistanceIsInCoordinateUnitsForGraphs) {
+  // An H drawn as a graph: two bars of 101 vertices 50 steps apart, joined at their middles by 49 vertices, the
+  // steps s apart in coordinates. With unit edge weights the level width is 1 whatever s; the automatic merge
+  // distance was 2 of those read as coordinates, so at s = 0.01 the crossbar (0.5 long) was contracted and the H
+  // became an X. Now it is 2 s, as with Euclidean weights: two forks, five arcs, nothing merged at every scale.
+  for (const double s : {1.0, 0.01}) {
+    for (const bool unit_weights : {true, false}) {
+      Point_matrix m;
+      m.dimension = 2;
+      auto add = [&](double x, double y) {
+        m.data.push_back(x * s);
+        m.data.push_back(y * s);
+        return static_cast<Vertex_index>(m.rows++);
+      };
+      std::vector<Vertex_index> left, right, middle;
+      for (int y = 0; y <= 100; ++y) left.push_back(add(0, y));
+      for (int y = 0; y <= 100; ++y) right.push_back(add(50, y));
+      for (int x = 1; x < 50; ++x) middle.push_back(add(x, 50));
+      std::vector<Edge> e;
+      for (int y = 0; y < 100; ++y) {
+        e.push_back({left[y], left[y + 1]});
+        e.push_back({right[y], right[y + 1]});
+      }
+      e.push_back({left[50], middle.front()});
+      for (std::size_t k = 0; k + 1 < middle.size(); ++k) e.push_back({middle[k], middle[k + 1]});
+      e.push_back({middle.back(), right[50]});
+      const Simplicial_complex_2 c = make_simplicial_complex_2(m.rows, e, {});
+      Proximity_graph g;
+      g.number_of_vertices = c.number_of_vertices;
+      g.edges = c.edges;
+      if (!unit_weights)
+        for (const Edge& ed : g.edges) g.edge_lengths.push_back(skeleton::internal::euclidean_distance(m, ed[0], ed[1]));
+      const Reeb_skeleton r = extract_reeb_skeleton(g, m);
+      EXPECT_NEAR(r.branch_merge_distance, 2 * s, 1e-12 * s) << s << " " << unit_weights;
+      EXPECT_EQ(r.merged_branch_arcs, 0u) << s << " " << unit_weights;
+      EXPECT_EQ(num_vertices(r.graph), 6u) << s << " " << unit_weights;
+      EXPECT_EQ(num_edges(r.graph), 5u) << s << " " << unit_weights;
+      EXPECT_EQ(fork_degrees(r.graph), std::make_pair(2, 0)) << s << " " << unit_weights;
+    }
+  }
+}
+
+TEST(ExtractReebSkeleton, BranchMergeOfADistanceMatrixMeasuresTheMatrix) {
+  // An H in R^5: two spirals (large extent in e1..e3) joined at their middles by a crossbar 2 long along e5, a
+  // direction of little variance, so classical MDS draws the crossbar with no length (the forks 3e-14 apart) and
+  // the merge contracted it: from points 2 forks, from their exact distance matrix one node of degree 4. The
+  // matrix's own distance between the nodes' points now bounds the arc's length from below: the same H.
+  const double h = 0.1, bar = 2;
+  Point_matrix m;
+  m.dimension = 5;
+  auto add = [&](std::array<double, 5> p) {
+    m.data.insert(m.data.end(), p.begin(), p.end());
+    ++m.rows;
+  };
+  for (int side = 0; side < 2; ++side)
+    for (int i = 0; i < 300; ++i) {
+      const double t = i * h;
+      add({5 * std::cos(t / 5), 5 * std::sin(t / 5), 0.6 * t, 0, side * bar});
+    }
+  for (int i = 1; i < 20; ++i) add({5 * std::cos(3.0), 5 * std::sin(3.0), 9.0, 0, i * h});
+  const double radius = 0.25;
+  const Reeb_skeleton points = extract_reeb_skeleton(m, radius);
+  std::vector<std::vector<double>> D(m.rows, std::vector<double>(m.rows));
+  for (std::size_t i = 0; i < m.rows; ++i)
+    for (std::size_t j = i + 1; j < m.rows; ++j)
+      D[i][j] = D[j][i] = skeleton::internal::point_distance(m.row(i), m.row(j), 5);
+  const Reeb_skeleton matrix = extract_reeb_skeleton_from_distance_matrix(D, radius);
+  for (const Reeb_skeleton* r : {&points, &matrix}) {
+    EXPECT_EQ(r->merged_branch_arcs, 0u);
+    EXPECT_EQ(num_vertices(r->graph), 6u);
+    EXPECT_EQ(num_edges(r->graph), 5u);
+    EXPECT_EQ(fork_degrees(r->graph), std::make_pair(2, 0));
+  }
+  EXPECT_EQ(points.branch_merge_distance, matrix.branch_merge_distance);
+}

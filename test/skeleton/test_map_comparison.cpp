@@ -822,3 +822,145 @@ TEST(MapComparison, GreedyProgressStaysBelowOneUntilTheEnd) {
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1.0), 1);
   EXPECT_EQ(seen.back(), 1.0);
 }
+
+namespace {
+// The trace points of crop_map_to_trips() made independently: every fix, and for consecutive fixes (by time) at
+// most max_gap apart and more than trace_step apart, the points j / k of the way, k = ceil(d / trace_step).
+std::vector<std::array<double, 2>> brute_trace_points(std::vector<Gps_trip> trips, const Map_crop_options& o) {
+  std::vector<std::array<double, 2>> p;
+  for (Gps_trip& t : trips) {
+    std::stable_sort(t.begin(), t.end(), [](const Gps_fix& a, const Gps_fix& b) { return a.time < b.time; });
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      p.push_back({t[i].x, t[i].y});
+      if (i + 1 == t.size()) continue;
+      const double d = std::hypot(t[i + 1].x - t[i].x, t[i + 1].y - t[i].y);
+      if (d > o.max_gap || d <= o.trace_step) continue;
+      const int k = int(std::ceil(d / o.trace_step));
+      for (int j = 1; j < k; ++j)
+        p.push_back({t[i].x + j * (t[i + 1].x - t[i].x) / k, t[i].y + j * (t[i + 1].y - t[i].y) / k});
+    }
+  }
+  return p;
+}
+}  // namespace
+
+TEST(CropMapToTrips, MatchesABruteForceOnRandomTrips) {
+  // A 6 x 6 grid of 40 m blocks and random trips wandering over it (fixes 5-60 m apart, some far jumps, times
+  // shuffled within a trip): the edges kept are those whose 5 m samples all have a brute-force trace point
+  // within the radius (samples a little inside or outside the radius decide the same: none lies within 1e-9 of it).
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  const Embedded_graph_2 map = grid_map(6, 40);
+  for (int round = 0; round < 40; ++round) {
+    std::vector<Gps_trip> trips(1 + round % 4);
+    for (Gps_trip& t : trips) {
+      double x = 200 * u(rng), y = 200 * u(rng);
+      for (int i = 0; i < 12; ++i) {
+        t.push_back({x, y, double(i)});
+        const double step = u(rng) < 0.1 ? 300 : 5 + 55 * u(rng), a = 6.283185307179586 * u(rng);
+        x += step * std::cos(a);
+        y += step * std::sin(a);
+      }
+      std::shuffle(t.begin(), t.end(), rng);  // the crop orders them by time
+    }
+    Map_crop_options o;
+    o.radius = 8 + 10 * u(rng);
+    o.max_gap = round % 5 == 0 ? 0 : 100 + 300 * u(rng);
+    const auto points = brute_trace_points(trips, o);
+    const Cropped_map c = crop_map_to_trips(map, trips, o);
+    EXPECT_EQ(c.status, Status::success);
+    EXPECT_EQ(c.trace_points, points.size());
+    EXPECT_EQ(c.map.positions, map.positions);
+    std::vector<Edge> expected;
+    for (const Edge& e : map.edges) {
+      const auto& a = map.positions[e[0]];
+      const auto& b = map.positions[e[1]];
+      bool keep = true;
+      for (int i = 0; i <= 8 && keep; ++i) {  // 40 m edges: samples at 0, 5, ..., 40
+        const double x = a[0] + (b[0] - a[0]) * i / 8, y = a[1] + (b[1] - a[1]) * i / 8;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const auto& p : points) nearest = std::min(nearest, std::hypot(p[0] - x, p[1] - y));
+        ASSERT_GT(std::fabs(nearest - o.radius), 1e-9);
+        keep = nearest <= o.radius;
+      }
+      if (keep) expected.push_back(e);
+    }
+    EXPECT_EQ(c.map.edges, expected) << "round " << round;
+  }
+}
+
+TEST(CropMapToTrips, AStreetBetweenSparseFixesStays) {
+  // One 60 m street driven by one trip with a fix at each end: its middle lies 30 m from both, beyond the 25 m
+  // radius, so with the fixes alone (max_gap 0; what evaluate-map did before) it was cropped away; the
+  // interpolated points keep it. A gap above max_gap is not bridged; the samples are 5 m apart whatever else.
+  Embedded_graph_2 street;
+  street.positions = {{0, 0}, {60, 0}};
+  street.edges = {{0, 1}};
+  std::vector<Gps_trip> trips{{{60, 2, 1}, {0, 2, 0}}};  // in reverse file order: sorted by time
+  Map_crop_options o;
+  EXPECT_EQ(crop_map_to_trips(street, trips, o).map.edges.size(), 1u);
+  EXPECT_EQ(crop_map_to_trips(street, trips, o).trace_points, 7u);  // 2 fixes, 5 inner points 10 m apart
+  o.max_gap = 0;
+  EXPECT_TRUE(crop_map_to_trips(street, trips, o).map.edges.empty());
+  o.max_gap = 59.9;
+  EXPECT_TRUE(crop_map_to_trips(street, trips, o).map.edges.empty());
+  o.max_gap = 60;  // inclusive
+  EXPECT_EQ(crop_map_to_trips(street, trips, o).map.edges.size(), 1u);
+  // Nothing to crop to: every edge goes; an empty map stays empty.
+  EXPECT_TRUE(crop_map_to_trips(street, {}, o).map.edges.empty());
+  EXPECT_TRUE(crop_map_to_trips(Embedded_graph_2{}, trips, o).map.edges.empty());
+}
+
+TEST(CropMapToTrips, BadInputIsNamedAndProgressStops) {
+  Embedded_graph_2 street;
+  street.positions = {{0, 0}, {60, 0}};
+  street.edges = {{0, 1}};
+  const std::vector<Gps_trip> trips{{{0, 2, 0}, {60, 2, 1}}};
+  auto message = [&](const Embedded_graph_2& m, const std::vector<Gps_trip>& t, const Map_crop_options& o) {
+    try {
+      crop_map_to_trips(m, t, o);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  Map_crop_options o;
+  o.radius = 0;
+  EXPECT_EQ(message(street, trips, o), "crop_map_to_trips: radius must be positive and finite, got 0");
+  o = {};
+  o.trace_step = std::nan("");
+  EXPECT_NE(message(street, trips, o).find("trace_step must be positive"), std::string::npos);
+  o = {};
+  o.max_gap = -1;
+  EXPECT_EQ(message(street, trips, o), "crop_map_to_trips: max_gap must be finite and >= 0, got -1");
+  o = {};
+  o.sample_interval = 1e-300;
+  EXPECT_NE(message(street, trips, o).find("more than 2^25 samples"), std::string::npos);
+  o = {};
+  std::vector<Gps_trip> bad = trips;
+  bad[0][1].y = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(message(street, bad, o), "crop_map_to_trips: trip 0, fix 1 has a non-finite coordinate or time");
+  Embedded_graph_2 out_of_range = street;
+  out_of_range.edges.push_back({1, 2});
+  EXPECT_EQ(message(out_of_range, trips, o), "crop_map_to_trips: edge 1 has a vertex out of range [0, 2)");
+  o.trace_step = 1e-300;  // 60 m in pieces of 1e-300: refused before anything is made
+  EXPECT_NE(message(street, trips, o).find("more than 2^27 trace points"), std::string::npos);
+  // Progress: 0, every 4096 edges, 1; a stop keeps the edges checked so far.
+  const Embedded_graph_2 big = grid_map(60, 40);  // 7080 edges
+  std::vector<Gps_trip> cover(1);
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j) cover[0].push_back({i * 40.0, j * 40.0, double(i * 60 + j)});
+  std::vector<double> seen;
+  o = {};
+  o.progress = [&](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  const Cropped_map all = crop_map_to_trips(big, cover, o);
+  EXPECT_EQ(all.map.edges.size(), big.edges.size());
+  EXPECT_EQ(seen, (std::vector<double>{0.0, 4095.0 / 7080, 1.0}));
+  o.progress = [](double f) { return f == 0; };
+  const Cropped_map part = crop_map_to_trips(big, cover, o);
+  EXPECT_EQ(part.status, Status::interrupted);
+  EXPECT_EQ(part.map.edges.size(), 4095u);
+}

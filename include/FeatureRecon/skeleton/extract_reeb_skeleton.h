@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -67,7 +68,10 @@ struct Skeleton_options {
   /// as two forks joined by a short arc.
   /// Negative (default -1): twice the level width of the embedding (Reeb_skeleton::level_width, by default the
   /// median edge length of the complex, so about the Rips radius: where two curves cross at a right angle the
-  /// forks lie about that far apart, and closer features the complex does not resolve); 0: off.
+  /// forks lie about that far apart, and closer features the complex does not resolve), in input units: for a
+  /// graph whose edge lengths are not the coordinates' distances (unit weights, say), times the ratio of the
+  /// median coordinate distance to the median length of its edges; 0: off. For a distance matrix an arc is at
+  /// least as long as the matrix's distance between its nodes' points (the MDS drawing may shorten it).
   double branch_merge_distance = -1;
   /// Contract the spurs at the global minimum and maximum of each component when their height is at most delta
   /// (trim_essential_stubs()): on a loop the base point of the geodesic function otherwise stays a short spur.
@@ -143,10 +147,13 @@ struct Branch_node_merge_result {
 namespace internal {
 /// merge_close_branch_nodes() given the coordinates of the input points in at most 3D (`positions`, as the
 /// embedding used them: project_to_3d()) and in input space (`input`, used for input_position above 3D).
-inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g,
-                                                         const std::vector<std::array<double, 3>>& positions,
-                                                         const Point_matrix& input, double distance,
-                                                         const char* fn) {
+/// `metric` (optional): the input's own distance between two points when the coordinates only draw it (a distance
+/// matrix embedded by classical MDS, where an arc along a direction of small variance is drawn almost without
+/// length): an arc is then at least as long as the metric between its nodes' vertices, and a merged group must
+/// also stay within `distance` by the metric.
+inline Branch_node_merge_result merge_close_branch_nodes(
+    const Skeleton_graph& g, const std::vector<std::array<double, 3>>& positions, const Point_matrix& input,
+    double distance, const char* fn, const std::function<double(Vertex_index, Vertex_index)>& metric = nullptr) {
   if (!(distance >= 0 && std::isfinite(distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "distance must be finite and >= 0, got ", distance);
   const std::size_t n = num_vertices(g), none = std::numeric_limits<std::size_t>::max();
@@ -192,6 +199,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
       const double* c = arc[k]->input_polyline.data();
       for (std::size_t i = 0; i + 1 < count; ++i) length += point_distance(c + i * d, c + (i + 1) * d, d);
     }
+    if (metric && !g[lower[k]].members.empty() && !g[upper[k]].members.empty())
+      length = std::max(length, metric(g[lower[k]].members.front(), g[upper[k]].members.front()));
     if (length <= distance) candidates.push_back({length, k});
   }
   std::sort(candidates.begin(), candidates.end());
@@ -218,6 +227,9 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
         const auto [pu, du] = node_point(u);
         const auto [pw, dw] = node_point(w);
         if (du != dw || !(point_distance(pu, pw, du) <= distance)) return false;
+        if (metric && !g[u].members.empty() && !g[w].members.empty() &&
+            !(metric(g[u].members.front(), g[w].members.front()) <= distance))
+          return false;
       }
     return true;
   };
@@ -404,7 +416,7 @@ template <class Distance, class Bound>
 Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matrix& coordinates,
                                   const Distance& distance, const Skeleton_options& options, double progress_start,
                                   Bound bound, const char* fn = "extract_reeb_skeleton",
-                                  const std::vector<Vertex_index>& first = {}) {
+                                  const std::vector<Vertex_index>& first = {}, bool coordinates_are_metric = true) {
   const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
@@ -513,12 +525,32 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     std::size_t k = 0;
     for (auto e : boost::make_iterator_range(edges(result.graph))) result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);
   }
-  result.branch_merge_distance =
-      options.branch_merge_distance < 0 ? std::min(2 * eo.level_width, std::numeric_limits<double>::max())
-                                        : options.branch_merge_distance;  // 2W saturates (edges near DBL_MAX)
+  if (options.branch_merge_distance < 0) {
+    // Twice the level width, from function units (the edge lengths) to input units (`distance`) by the ratio of
+    // their medians: 1 for points and distance matrices, whose edge lengths are the distances; a graph with unit
+    // weights (or any other) on coordinates 0.01 apart merged forks 2 coordinate units apart, 200 edges.
+    double ratio = 1;
+    {
+      std::vector<double> l;
+      for (std::size_t e = 0; e < K.edges.size(); ++e)
+        if (first.empty() || (first[K.edges[e][0]] == K.edges[e][0] && first[K.edges[e][1]] == K.edges[e][1]))
+          l.push_back(distance(K.edges[e][0], K.edges[e][1]));
+      const double weight = median_edge_length(K, first);
+      if (!l.empty() && weight > 0) {
+        std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
+        if (l[l.size() / 2] > 0) ratio = l[l.size() / 2] / weight;
+      }
+    }
+    // Saturates (edges near DBL_MAX).
+    result.branch_merge_distance = std::min(2 * eo.level_width * ratio, std::numeric_limits<double>::max());
+  } else {
+    result.branch_merge_distance = options.branch_merge_distance;
+  }
   if (result.branch_merge_distance > 0) {
-    Branch_node_merge_result merged =
-        internal::merge_close_branch_nodes(result.graph, projected, coordinates, result.branch_merge_distance, fn);
+    std::function<double(Vertex_index, Vertex_index)> metric;
+    if (!coordinates_are_metric) metric = [&distance](Vertex_index a, Vertex_index b) { return distance(a, b); };
+    Branch_node_merge_result merged = internal::merge_close_branch_nodes(
+        result.graph, projected, coordinates, result.branch_merge_distance, fn, metric);
     result.graph = std::move(merged.graph);
     result.merged_branch_arcs = merged.merged;
   }
@@ -758,7 +790,7 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   return internal::skeleton_from_graph(
       g, mds,
       [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3,
-      nullptr, fn, first);
+      nullptr, fn, first, false);
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.

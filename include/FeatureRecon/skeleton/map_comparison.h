@@ -9,6 +9,8 @@
 #include <FeatureRecon/skeleton/gps_traces.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_2.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -898,6 +900,135 @@ inline Trace_support_breakdown explain_trace_support(const Map_comparison_result
   b.recall_of_driven =
       b.ground_truth_driven == 0 ? 0.0 : static_cast<double>(b.matched_driven) / static_cast<double>(b.ground_truth_driven);
   return b;
+}
+
+/// Options of crop_map_to_trips().
+struct Map_crop_options {
+  double radius = 25;           ///< an edge stays when every sample of it lies within this of a trace point; default 25
+  double sample_interval = 5;   ///< the edges' samples, from one end, the other end included; default 5
+  /// The trace points: the fixes, and between two consecutive fixes of a trip (by time) at most max_gap apart,
+  /// points that cut the segment into equal pieces of at most trace_step; default 10
+  double trace_step = 10;
+  double max_gap = 500;         ///< see trace_step; 0: the fixes alone; default 500
+  /// Called with the fraction of the edges checked (every 4096 edges; the trace points are made at 0); returning
+  /// false stops: the map holds the edges kept so far, status interrupted.
+  Progress_callback progress;
+};
+
+/// Result of crop_map_to_trips().
+struct Cropped_map {
+  Embedded_graph_2 map;            ///< the input's positions, the edges kept (in input order)
+  std::size_t trace_points = 0;    ///< fixes and interpolated points
+  Status status = Status::success; ///< interrupted when the progress callback stopped the run
+};
+
+/// Restricts a ground-truth map to the streets the trips cover, the crop of the Chicago reference ground truth
+/// `chicago_gt_trk25` (its README): an edge is kept when every one of its samples (every sample_interval from
+/// its first vertex, and its second vertex) lies within `radius` of a trace point, the trace points being the
+/// fixes and points every trace_step along the segments between consecutive fixes of a trip up to max_gap long
+/// (a trip's fixes ordered by time, equal times in the given order). The interpolation keeps a street between
+/// sparse fixes (Chicago: 20-40 m apart; with the fixes alone 40 of the reference's 1566 edges were lost, with
+/// it all are kept and 3 more). Ranges are inclusive. Exact up to the rounding of the sample positions.
+/// \throws std::invalid_argument naming the option (radius, sample_interval, trace_step: positive and finite;
+///   max_gap finite and >= 0), the edge (a vertex out of range, a non-finite coordinate), the trip and fix (a
+///   non-finite coordinate or time), or when the edges would give more than 2^25 samples or the trips more
+///   than 2^27 trace points.
+inline Cropped_map crop_map_to_trips(const Embedded_graph_2& map, const std::vector<Gps_trip>& trips,
+                                     const Map_crop_options& options = {}) {
+  const char* fn = "crop_map_to_trips";
+  using FeatureRecon::internal::throw_invalid_argument;
+  auto positive = [&](double v, const char* name) {
+    if (!(v > 0 && std::isfinite(v))) throw_invalid_argument(fn, name, " must be positive and finite, got ", v);
+  };
+  positive(options.radius, "radius");
+  positive(options.sample_interval, "sample_interval");
+  positive(options.trace_step, "trace_step");
+  if (!(options.max_gap >= 0 && std::isfinite(options.max_gap)))
+    throw_invalid_argument(fn, "max_gap must be finite and >= 0, got ", options.max_gap);
+  const std::size_t n = map.positions.size();
+  auto length = [&](const Edge& e) {
+    const auto& a = map.positions[e[0]];
+    const auto& b = map.positions[e[1]];
+    return std::hypot(b[0] - a[0], b[1] - a[1]);
+  };
+  // The samples are counted first: a tiny interval or a huge edge is refused, it does not loop (t += interval
+  // stops moving once t is large) or run for hours; the bound is compare_maps' (2^25 samples).
+  double samples = 0;
+  for (std::size_t k = 0; k < map.edges.size(); ++k) {
+    const Edge& e = map.edges[k];
+    if (e[0] >= n || e[1] >= n) throw_invalid_argument(fn, "edge ", k, " has a vertex out of range [0, ", n, ")");
+    for (const Vertex_index v : e)
+      if (!std::isfinite(map.positions[v][0]) || !std::isfinite(map.positions[v][1]))
+        throw_invalid_argument(fn, "vertex ", v, " (of edge ", k, ") has a non-finite coordinate");
+    samples += std::floor(length(e) / options.sample_interval) + 2;
+  }
+  if (!(samples < 33554432.0))
+    throw_invalid_argument(fn, "the edges at sample_interval ", options.sample_interval,
+                           " would give more than 2^25 samples");
+  Cropped_map out;
+  out.map.positions = map.positions;
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) {
+    out.status = Status::interrupted;
+    return out;
+  }
+  using K = CGAL::Simple_cartesian<double>;
+  using Tree_traits = CGAL::Search_traits_2<K>;
+  std::vector<K::Point_2> points;
+  double planned = 0;
+  for (std::size_t t = 0; t < trips.size(); ++t) {
+    const Gps_trip& trip = trips[t];
+    for (std::size_t i = 0; i < trip.size(); ++i)
+      if (!std::isfinite(trip[i].x) || !std::isfinite(trip[i].y) || !std::isfinite(trip[i].time))
+        throw_invalid_argument(fn, "trip ", t, ", fix ", i, " has a non-finite coordinate or time");
+    std::vector<std::size_t> order(trip.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [&trip](std::size_t a, std::size_t b) { return trip[a].time < trip[b].time; });
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const Gps_fix& f = trip[order[i]];
+      points.emplace_back(f.x, f.y);
+      if (i + 1 == order.size()) break;
+      const Gps_fix& g = trip[order[i + 1]];
+      const double d = std::hypot(g.x - f.x, g.y - f.y);
+      if (!(d <= options.max_gap && d > options.trace_step)) continue;
+      const double pieces = std::ceil(d / options.trace_step);
+      planned += pieces;
+      if (!(planned + double(points.size()) <= double(std::size_t(1) << 27)))
+        throw_invalid_argument(fn, "the trips would give more than 2^27 trace points at trace_step ",
+                               options.trace_step, " across gaps up to max_gap ", options.max_gap);
+      for (double j = 1; j < pieces; ++j) {
+        const double u = j / pieces;
+        points.emplace_back(f.x + u * (g.x - f.x), f.y + u * (g.y - f.y));
+      }
+    }
+  }
+  out.trace_points = points.size();
+  CGAL::Kd_tree<Tree_traits> tree(points.begin(), points.end());
+  if (!points.empty()) tree.build();  // (CGAL asserts on building an empty tree; no point keeps no edge below)
+  auto covered = [&](double x, double y) {
+    const CGAL::Fuzzy_sphere<Tree_traits> ball(K::Point_2(x, y), options.radius, 0.0);  // closed ball
+    return static_cast<bool>(tree.search_any_point(ball));                           // the first point found
+  };
+  for (std::size_t k = 0; k < map.edges.size(); ++k) {
+    if (k % 4096 == 4095 &&
+        !FeatureRecon::internal::report_progress(options.progress, double(k) / double(map.edges.size()))) {
+      out.status = Status::interrupted;
+      return out;
+    }
+    const Edge& e = map.edges[k];
+    const auto& a = map.positions[e[0]];
+    const auto& b = map.positions[e[1]];
+    const double len = length(e);
+    const auto steps = static_cast<std::uint64_t>(std::floor(len / options.sample_interval)) + 1;  // reaches b
+    bool keep = !points.empty();
+    for (std::uint64_t i = 0; keep && i <= steps; ++i) {
+      const double u = len > 0 ? std::min(1.0, static_cast<double>(i) * options.sample_interval / len) : 0.0;
+      keep = covered(a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]));
+    }
+    if (keep) out.map.edges.push_back(e);
+  }
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  return out;
 }
 
 }  // namespace skeleton
