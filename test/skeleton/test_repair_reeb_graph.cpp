@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <functional>
 #include <random>
 #include <string>
@@ -350,6 +352,142 @@ bool same_graph(const Reeb_graph& a, const Reeb_graph& b) {
   return true;
 }
 }  // namespace
+
+namespace {
+/// A comb: a street of `length` vertices on the x axis (one arc) and, over every other street vertex, a vertical
+/// stub from y = 0.5 (its dead end, 0.5 above the street) to y = 5. f = x + y / 1000 on the street; on the stubs
+/// the same (their dead ends come in node order from the bottom of the street up) or its negative (top down).
+struct Comb {
+  Line pts;
+  std::vector<double> f;
+  Reeb_graph R;
+};
+Comb comb(std::size_t length, bool top_down) {
+  Comb c;
+  std::vector<Edge> edges;
+  for (std::size_t i = 0; i < length; ++i) {
+    c.pts.p.push_back({double(i), 0.0});
+    if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
+  }
+  for (std::size_t j = 1; j + 1 < length; j += 2) {
+    const Vertex_index a = Vertex_index(c.pts.p.size());
+    c.pts.p.push_back({double(j), 0.5});
+    c.pts.p.push_back({double(j), 5.0});
+    edges.push_back({a, Vertex_index(a + 1)});
+  }
+  for (std::size_t v = 0; v < c.pts.p.size(); ++v) {
+    const double g = c.pts.p[v][0] + 1e-3 * c.pts.p[v][1];
+    c.f.push_back(top_down && v >= length ? -g : g);
+  }
+  c.R = reeb_graph_of(make(c.pts.p.size(), edges, {}, c.f));
+  return c;
+}
+}  // namespace
+
+TEST(ConnectDeadEnds, SplitsMoveTheShorterSideAndKeepNoSpareCapacity) {
+  // Every stub splits the street. Each split copied the rest of the street into a new arc and left the old
+  // vector's capacity in place: from the bottom up, about length^2 / 8 vertices copied (quadratic time, with the
+  // bound too) and a result holding 25 million vertices of capacity for 5000 at length 10000. A split now moves
+  // its shorter side (here the one street vertex since the previous stub's split, in either direction), and the
+  // result's vectors hold their vertices only. Counts, not times.
+  for (const bool top_down : {false, true}) {
+    for (const std::size_t length : {std::size_t(2000), std::size_t(20000)}) {
+      const Comb c = comb(length, top_down);
+      ASSERT_EQ(c.R.arcs.size(), length / 2);
+      Reeb_repair_options x;
+      x.bound = [&c](Vertex_index v) { return c.pts.p[v][0]; };
+      std::size_t moved = 0;
+      const Reeb_dead_end_result r =
+          skeleton::internal::connect_dead_ends_counting(c.R, c.f, 1.0, c.pts, x, moved);
+      EXPECT_EQ(r.connected, length / 2 - 1) << top_down << " " << length;
+      EXPECT_LE(moved, length / 2) << top_down << " " << length;
+      std::size_t size = 0, capacity = 0;
+      for (const auto& a : r.graph.arcs) {
+        size += a.vertices.size();
+        capacity += a.vertices.capacity();
+      }
+      EXPECT_EQ(size, length / 2 - 1) << top_down << " " << length;  // the street vertices between the stubs
+      EXPECT_LE(capacity, 2 * size) << top_down << " " << length;
+      if (length == 2000) {  // the all-pairs search (quadratic by design) gives the same graph
+        EXPECT_TRUE(same_graph(connect_dead_ends(c.R, c.f, 1.0, c.pts).graph, r.graph)) << top_down;
+        EXPECT_TRUE(same_graph(connect_dead_ends(c.R, c.f, 1.0, c.pts, x).graph, r.graph)) << top_down;
+      }
+    }
+  }
+}
+
+TEST(ConnectDeadEnds, ADeadEndNeverClosesItsOwnStreetWhateverTheOrder) {
+  // A U-shaped street (one arc): from (-5, 3) right to (10, 3), down to (10, 0) and back left to its dead end u
+  // at (0, 0), 3 below its own far part. A stub (5, -1.5) to (5, -8) ends 1.5 below the street's (5, 0): it
+  // splits the street there. Only the piece of the street at u was excluded, so u joined (0, 3) across the split,
+  // closing a loop of the street itself, when the stub came first in node order (low f) and not when it came
+  // after u (high f). Now u's whole input arc is its own street, split or not.
+  for (const double stub_f : {0.0, 1000.0}) {
+    Line pts;
+    std::vector<Edge> edges;
+    std::vector<double> f;
+    std::vector<std::array<double, 2>> street;
+    for (int x = -5; x <= 10; ++x) street.push_back({double(x), 3.0});
+    for (int y = 2; y >= 0; --y) street.push_back({10.0, double(y)});
+    for (int x = 9; x >= 0; --x) street.push_back({double(x), 0.0});
+    for (std::size_t i = 0; i < street.size(); ++i) {
+      pts.p.push_back(street[i]);
+      f.push_back(100.0 + double(i));  // rising along the street: u, its last vertex, is the maximum
+      if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
+    }
+    const Vertex_index u = Vertex_index(street.size() - 1), stub = Vertex_index(pts.p.size()), split = u - 5;
+    ASSERT_EQ(pts.p[split], (std::array<double, 2>{5.0, 0.0}));
+    for (int k = 0; k < 8; ++k) {
+      pts.p.push_back({5.0, -1.5 - k});
+      f.push_back(stub_f + 7 - k);
+      if (k > 0) edges.push_back({Vertex_index(stub + k - 1), Vertex_index(stub + k)});
+    }
+    const Reeb_graph R = reeb_graph_of(make(pts.p.size(), edges, {}, f));
+    ASSERT_EQ(R.arcs.size(), 2u);
+    for (const bool bounded : {false, true}) {
+      Reeb_repair_options x;
+      if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+      const Reeb_dead_end_result r = connect_dead_ends(R, f, 3.5, pts, x);
+      EXPECT_EQ(r.connected, 1u) << stub_f << " " << bounded;
+      EXPECT_EQ(r.graph.loops(), 0u) << stub_f << " " << bounded;
+      for (const auto& a : r.graph.arcs)  // the one link: the stub's end to the street
+        if (a.vertices.empty()) {
+          const Vertex_index p = r.graph.nodes[a.lower].vertex, q = r.graph.nodes[a.upper].vertex;
+          EXPECT_EQ(std::min(p, q), split) << stub_f << " " << bounded;
+          EXPECT_EQ(std::max(p, q), stub) << stub_f << " " << bounded;
+        }
+    }
+  }
+}
+
+TEST(RepairReebGraph, ANaNBoundIsNamedNotSorted) {
+  // std::sort needs an order: a bound that is NaN somewhere (no 1-Lipschitz function is) throws, naming the
+  // vertex. repair_reeb_graph() reads the bound at the dead ends only, connect_dead_ends() at every vertex.
+  Line pts;
+  std::vector<Edge> edges;
+  std::vector<double> f;
+  add_horizontal_street(pts, edges, f);
+  pts.p.push_back({5.0, 1.5});
+  pts.p.push_back({5.0, 4.5});
+  f.push_back(20);
+  f.push_back(23);
+  edges.push_back({11, 12});
+  const Complex_with_function c = make(pts.p.size(), edges, {}, f);
+  const Reeb_graph R = reeb_graph_of(c);
+  for (const Vertex_index nan_at : {Vertex_index(5), Vertex_index(11)}) {
+    Reeb_repair_options x;
+    x.bound = [&pts, nan_at](Vertex_index v) { return v == nan_at ? std::nan("") : pts.p[v][0]; };
+    const std::string named = "Reeb_repair_options::bound of vertex " + std::to_string(nan_at) + " is nan";
+    EXPECT_EQ(error_of([&] { connect_dead_ends(R, c.f, 2.0, pts, x); }),
+              "connect_dead_ends: " + named + " (a number needed)");
+    if (nan_at == 11) {
+      EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }),
+                "repair_reeb_graph: " + named + " (a number needed)");
+    } else {
+      EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }), "no error");  // 5 is inside an arc
+    }
+  }
+}
 
 namespace {
 /// 60 random dashes of 5 points in the plane (many dead ends, gaps of every size; on the integer lattice for

@@ -12,7 +12,6 @@
 #include <cstddef>
 #include <limits>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -80,13 +79,23 @@ inline std::vector<std::size_t> node_components(const Reeb_graph& G) {
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = find(i);
   return parent;
 }
+/// The bound of input vertex v, checked: a NaN (no 1-Lipschitz function has one) throws, naming the vertex,
+/// since std::sort needs an order.
+template <class Bound>
+double checked_bound(const Bound& bound, Vertex_index v, const char* fn) {
+  const double b = static_cast<double>(bound(v));
+  if (std::isnan(b))
+    FeatureRecon::internal::throw_invalid_argument(fn, "Reeb_repair_options::bound of vertex ", v, " is ", b,
+                                                   " (a number needed)");
+  return b;
+}
 /// The nodes `ends` (indices into G.nodes) as (bound of their vertex, node), sorted.
 template <class Bound>
 std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends, const Bound& bound,
-                                                            const Reeb_graph& G) {
+                                                            const Reeb_graph& G, const char* fn) {
   std::vector<std::pair<double, std::size_t>> swept;
   swept.reserve(ends.size());
-  for (const std::size_t e : ends) swept.emplace_back(static_cast<double>(bound(G.nodes[e].vertex)), e);
+  for (const std::size_t e : ends) swept.emplace_back(checked_bound(bound, G.nodes[e].vertex, fn), e);
   std::sort(swept.begin(), swept.end());
   return swept;
 }
@@ -115,7 +124,8 @@ struct Reeb_repair_result {
 /// asked after each end's pairs are measured; a stop adds no arc (the graph is R, status interrupted).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
 /// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its arcs
-/// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them (all checked; throws).
+/// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them; Reeb_repair_options::bound
+/// not NaN at a degree-1 node (all checked; throws).
 template <class Distance>
 Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance,
                                      const Reeb_repair_options& options = {}) {
@@ -155,7 +165,7 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
     }
   } else {
     // A sweep over the ends sorted by their bound: a pair farther apart in bound is farther apart in distance.
-    const std::vector<std::pair<double, std::size_t>> swept = internal::sorted_by_bound(ends, options.bound, G);
+    const std::vector<std::pair<double, std::size_t>> swept = internal::sorted_by_bound(ends, options.bound, G, fn);
     const double window = internal::bound_window(max_distance);
     for (std::size_t a = 0; a < swept.size(); ++a) {
       for (std::size_t b = a + 1; b < swept.size() && swept[b].first - swept[a].first <= window; ++b)
@@ -192,62 +202,76 @@ struct Reeb_dead_end_result {
   Status status = Status::success;
 };
 
-/// The other half of graph fixing: a degree-1 node whose input point is at most `max_distance` from a point of
-/// another part of the graph (a node, or an interior vertex of an arc that does not end at this node) gets an arc
-/// to the closest such point (ties: smallest vertex index), splitting that arc there: a street that stops short
-/// of the street it meets (a T junction with a gap). An isolated arc whose two ends lie within `max_distance` of
-/// each other is not connected (too short to be a street end). Dead ends are taken in node order and see the arcs added
-/// before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends
-/// and n input vertices in the graph (the bookkeeping is O(1) per dead end); the arcs come back in the order of
-/// Reeb_graph::arcs. With Reeb_repair_options::bound, only the vertices whose bound lies within max_distance of
-/// the dead end's are measured: O(n log n + k w) for w such vertices, the same result. The progress callback is
-/// asked after each dead end; a stop keeps the arcs added so far (a valid graph, status interrupted).
-/// \param values f of every input vertex (for the new nodes).
-/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
-/// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes `values`
-/// (all checked; throws).
+namespace internal {
+/// connect_dead_ends(), adding to `moved` the number of arc vertices that splits moved into a new arc (a test
+/// checks that it stays O(n log n): a split that copied the rest of a long arc made the function quadratic).
 template <class Distance>
-Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values, double max_distance,
-                                       Distance distance, const Reeb_repair_options& options = {}) {
+Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::vector<double>& values,
+                                                double max_distance, Distance distance,
+                                                const Reeb_repair_options& options, std::size_t& moved) {
   const char* fn = "connect_dead_ends";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
-  internal::check_reeb_graph(R, fn, &values);
+  check_reeb_graph(R, fn, &values);
   Reeb_dead_end_result result;
-  Reeb_graph G = R;
-  // Degrees, the arcs at each node and the node of each vertex, kept up to date as arcs split and links appear.
-  std::vector<std::size_t> degree(G.nodes.size(), 0);
-  std::vector<std::vector<std::size_t>> incident(G.nodes.size());
-  for (std::size_t a = 0; a < G.arcs.size(); ++a) {
-    ++degree[G.arcs[a].lower], ++degree[G.arcs[a].upper];
-    incident[G.arcs[a].lower].push_back(a);
-    incident[G.arcs[a].upper].push_back(a);
+  const std::size_t none = static_cast<std::size_t>(-1), n0 = R.nodes.size();
+  // The arcs as they split: pieces of R's arcs, each the range [begin, end) of the vertices of its input arc
+  // (input none: a new link, no vertices). A split cuts a range without copying it; the vertices are copied once,
+  // at the end, into vectors of their exact size.
+  struct Piece {
+    std::size_t lower, upper, input, begin, end;
+  };
+  std::vector<Piece> pieces;
+  pieces.reserve(R.arcs.size());
+  std::vector<Reeb_graph::Node> nodes = R.nodes;  // new nodes are appended: indices stay valid until the end
+  // Degrees, the input arc at each degree-1 node, the input arc each split node was a vertex of, and the pieces
+  // at the lower and the upper end of each input arc (a dead end's piece changes when its arc splits).
+  std::vector<std::size_t> degree(n0, 0), arc_at(n0, none), origin(n0, none), lower_piece, upper_piece;
+  lower_piece.reserve(R.arcs.size());
+  upper_piece.reserve(R.arcs.size());
+  for (std::size_t a = 0; a < R.arcs.size(); ++a) {
+    const Reeb_graph::Arc& arc = R.arcs[a];
+    ++degree[arc.lower], ++degree[arc.upper];
+    arc_at[arc.lower] = arc_at[arc.upper] = a;
+    pieces.push_back({arc.lower, arc.upper, a, 0, arc.vertices.size()});
+    lower_piece.push_back(a);
+    upper_piece.push_back(a);
   }
-  std::unordered_map<Vertex_index, std::size_t> node_of;
-  for (std::size_t i = 0; i < G.nodes.size(); ++i) node_of.emplace(G.nodes[i].vertex, i);
-  std::vector<Vertex_index> ends;  // by input vertex: node indices change when arcs split
-  for (std::size_t i = 0; i < G.nodes.size(); ++i)
-    if (degree[i] == 1) ends.push_back(G.nodes[i].vertex);
-  // With a bound: every vertex of the graph sorted by bound, and where it is now (a node, or an arc and the
-  // position in it; updated when an arc splits). Splits only move vertices, so the sorted list stays valid.
+  std::vector<std::size_t> ends;
+  for (std::size_t i = 0; i < n0; ++i)
+    if (degree[i] == 1) ends.push_back(i);
+  // With a bound: every vertex of the graph as a slot (node i is slot i, vertex k of input arc a is slot
+  // first_slot[a] + k) sorted by bound, and where each slot is now: a node, or the piece that holds it. Splits
+  // only move vertices between pieces and into new nodes, so the sorted list stays valid.
   const auto& bound = options.bound;
   const bool bounded = static_cast<bool>(bound);
-  const std::size_t no_node = static_cast<std::size_t>(-1);
   struct Place {
-    std::size_t node, arc, position;  // node no_node: interior vertex `position` of `arc`
+    std::size_t node, piece;  // node none: an interior vertex of `piece`
   };
-  std::vector<std::pair<double, Vertex_index>> by_bound;
-  std::unordered_map<Vertex_index, Place> place;
+  std::vector<std::size_t> first_slot;
+  std::vector<Vertex_index> vertex_of;
+  std::vector<Place> place;
+  std::vector<std::pair<double, std::size_t>> by_bound;
   if (bounded) {
-    for (std::size_t i = 0; i < G.nodes.size(); ++i) {
-      by_bound.emplace_back(static_cast<double>(bound(G.nodes[i].vertex)), G.nodes[i].vertex);
-      place[G.nodes[i].vertex] = {i, 0, 0};
+    std::size_t slots = n0;
+    first_slot.reserve(R.arcs.size());
+    for (const Reeb_graph::Arc& arc : R.arcs) {
+      first_slot.push_back(slots);
+      slots += arc.vertices.size();
     }
-    for (std::size_t a = 0; a < G.arcs.size(); ++a)
-      for (std::size_t k = 0; k < G.arcs[a].vertices.size(); ++k) {
-        by_bound.emplace_back(static_cast<double>(bound(G.arcs[a].vertices[k])), G.arcs[a].vertices[k]);
-        place[G.arcs[a].vertices[k]] = {no_node, a, k};
+    vertex_of.reserve(slots);
+    place.reserve(slots);
+    for (std::size_t i = 0; i < n0; ++i) {
+      vertex_of.push_back(R.nodes[i].vertex);
+      place.push_back({i, none});
+    }
+    for (std::size_t a = 0; a < R.arcs.size(); ++a)
+      for (const Vertex_index v : R.arcs[a].vertices) {
+        vertex_of.push_back(v);
+        place.push_back({none, a});
       }
+    by_bound.reserve(slots);
+    for (std::size_t s = 0; s < slots; ++s) by_bound.emplace_back(checked_bound(bound, vertex_of[s], fn), s);
     std::sort(by_bound.begin(), by_bound.end());
   }
   for (std::size_t e = 0; e < ends.size(); ++e) {
@@ -256,115 +280,157 @@ Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<do
       result.status = Status::interrupted;
       break;
     }
-    const Vertex_index end_vertex = ends[e];
-    const std::size_t u = node_of.at(end_vertex);
+    const std::size_t u = ends[e];
     if (degree[u] != 1) continue;
-    // The arc at u and its other end are excluded (joining them would make a tiny loop).
-    const std::size_t own = incident[u].front();
-    const std::size_t neighbour = G.arcs[own].lower == u ? G.arcs[own].upper : G.arcs[own].lower;
+    const Vertex_index end_vertex = nodes[u].vertex;
+    // u's input arc, the piece of it at u, and the node at that piece's other end.
+    const std::size_t input = arc_at[u];
+    const std::size_t own = R.arcs[input].lower == u ? lower_piece[input] : upper_piece[input];
+    const std::size_t neighbour = pieces[own].lower == u ? pieces[own].upper : pieces[own].lower;
     // An isolated segment whose ends lie within the distance is a blob, not a street that stops short: left
     // alone, as repair_reeb_graph() leaves it.
     if (degree[neighbour] == 1 &&
-        static_cast<double>(distance(end_vertex, G.nodes[neighbour].vertex)) <= max_distance)
+        static_cast<double>(distance(end_vertex, nodes[neighbour].vertex)) <= max_distance)
       continue;
+    // Excluded: every point of u's input arc and its far end, split or not (joining them would close a loop of the
+    // street itself). Excluding only the piece at u let a dead end whose arc was split for an earlier one reach the
+    // far part of its own street (a U-shaped street): the result depended on the order of the dead ends.
+    const std::size_t far = R.arcs[input].lower == u ? R.arcs[input].upper : R.arcs[input].lower;
+    auto excluded_node = [&](std::size_t i) { return i == u || i == far || origin[i] == input; };
+    auto excluded_piece = [&](std::size_t p) { return pieces[p].input == input; };
     double best = max_distance;
-    std::size_t best_node = G.nodes.size(), best_arc = G.arcs.size(), best_position = 0;
+    std::size_t best_node = none, best_piece = none, best_position = 0;
     Vertex_index best_vertex = 0;
     bool found = false;
-    auto consider = [&](Vertex_index v, std::size_t node, std::size_t arc, std::size_t position) {
+    auto consider = [&](Vertex_index v, std::size_t node, std::size_t piece, std::size_t position) {
       const double d = static_cast<double>(distance(end_vertex, v));
       if (d < best || (d == best && found && v < best_vertex) || (d == best && !found)) {
         best = d;
         best_vertex = v;
         best_node = node;
-        best_arc = arc;
+        best_piece = piece;
         best_position = position;
         found = true;
       }
     };
     if (bounded) {
       // The candidates' order does not matter: the closest wins, ties by smallest vertex.
-      const double b = static_cast<double>(bound(end_vertex)), window = internal::bound_window(max_distance);
-      auto it = std::lower_bound(by_bound.begin(), by_bound.end(), std::make_pair(b - window, Vertex_index(0)));
+      const double b = static_cast<double>(bound(end_vertex)), window = bound_window(max_distance);
+      auto it = std::lower_bound(by_bound.begin(), by_bound.end(), std::make_pair(b - window, std::size_t(0)));
       for (; it != by_bound.end() && it->first <= b + window; ++it) {
-        const Place& at = place.at(it->second);
-        if (at.node != no_node) {
-          if (at.node != u && at.node != neighbour) consider(it->second, at.node, G.arcs.size(), 0);
-        } else if (at.arc != own) {
-          consider(it->second, G.nodes.size(), at.arc, at.position);
+        const Place& at = place[it->second];
+        if (at.node != none) {
+          if (!excluded_node(at.node)) consider(vertex_of[it->second], at.node, none, 0);
+        } else if (!excluded_piece(at.piece)) {
+          consider(vertex_of[it->second], none, at.piece, it->second - first_slot[pieces[at.piece].input]);
         }
       }
     } else {
-      for (std::size_t i = 0; i < G.nodes.size(); ++i)
-        if (i != u && i != neighbour) consider(G.nodes[i].vertex, i, G.arcs.size(), 0);
-      for (std::size_t a = 0; a < G.arcs.size(); ++a)
-        if (a != own)
-          for (std::size_t k = 0; k < G.arcs[a].vertices.size(); ++k)
-            consider(G.arcs[a].vertices[k], G.nodes.size(), a, k);
+      for (std::size_t i = 0; i < nodes.size(); ++i)
+        if (!excluded_node(i)) consider(nodes[i].vertex, i, none, 0);
+      for (std::size_t p = 0; p < pieces.size(); ++p)
+        if (pieces[p].input != none && !excluded_piece(p)) {
+          const std::vector<Vertex_index>& vertices = R.arcs[pieces[p].input].vertices;
+          for (std::size_t k = pieces[p].begin; k < pieces[p].end; ++k) consider(vertices[k], none, p, k);
+        }
     }
     if (!found) continue;
     std::size_t target = best_node;
-    if (best_arc < G.arcs.size()) {
-      // Split the arc at its vertex: a new (regular, then fork) node.
-      Reeb_graph::Node n;
-      n.vertex = best_vertex;
-      n.value = values[best_vertex];
-      Reeb_graph::Arc upper_part;
-      upper_part.lower = G.nodes.size();
-      upper_part.upper = G.arcs[best_arc].upper;
-      upper_part.vertices.assign(G.arcs[best_arc].vertices.begin() + static_cast<std::ptrdiff_t>(best_position) + 1,
-                                 G.arcs[best_arc].vertices.end());
-      G.arcs[best_arc].vertices.resize(best_position);
-      const std::size_t old_upper = G.arcs[best_arc].upper;
-      target = G.nodes.size();
-      G.arcs[best_arc].upper = target;
-      G.nodes.push_back(std::move(n));
-      node_of.emplace(best_vertex, target);
-      std::replace(incident[old_upper].begin(), incident[old_upper].end(), best_arc, G.arcs.size());
-      incident.push_back({best_arc, G.arcs.size()});
+    if (best_piece != none) {
+      // Split the piece at its vertex: a new (regular, then fork) node. The shorter side moves into a new piece,
+      // the longer one stays: a vertex only moves into a piece at most half as long, O(log n) times.
+      const std::size_t a = pieces[best_piece].input, q = pieces.size();
+      target = nodes.size();
+      Reeb_graph::Node node;
+      node.vertex = best_vertex;
+      node.value = values[best_vertex];
+      nodes.push_back(std::move(node));
       degree.push_back(2);
-      if (bounded) {
-        place[best_vertex] = {target, 0, 0};
-        for (std::size_t k = 0; k < upper_part.vertices.size(); ++k)
-          place[upper_part.vertices[k]] = {no_node, G.arcs.size(), k};
+      origin.push_back(a);
+      Piece& p = pieces[best_piece];
+      Piece side;
+      if (best_position - p.begin <= p.end - best_position - 1) {
+        side = {p.lower, target, a, p.begin, best_position};
+        p.lower = target;
+        p.begin = best_position + 1;
+        if (lower_piece[a] == best_piece) lower_piece[a] = q;
+      } else {
+        side = {target, p.upper, a, best_position + 1, p.end};
+        p.upper = target;
+        p.end = best_position;
+        if (upper_piece[a] == best_piece) upper_piece[a] = q;
       }
-      G.arcs.push_back(std::move(upper_part));
+      moved += side.end - side.begin;
+      if (bounded) {
+        place[first_slot[a] + best_position] = {target, none};
+        for (std::size_t k = side.begin; k < side.end; ++k) place[first_slot[a] + k].piece = q;
+      }
+      pieces.push_back(side);
     }
-    Reeb_graph::Arc link;
-    link.lower = u;
-    link.upper = target;
-    incident[u].push_back(G.arcs.size());
-    incident[target].push_back(G.arcs.size());
+    pieces.push_back({u, target, none, 0, 0});
     ++degree[u], ++degree[target];
-    G.arcs.push_back(std::move(link));
     ++result.connected;
   }
   // Nodes back in (value, vertex) order, arcs oriented upwards and sorted, types and components.
-  std::vector<std::size_t> order(G.nodes.size()), index(G.nodes.size());
+  std::vector<std::size_t> order(nodes.size()), index(nodes.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&G](std::size_t a, std::size_t b) {
-    return G.nodes[a].value < G.nodes[b].value || (G.nodes[a].value == G.nodes[b].value && G.nodes[a].vertex < G.nodes[b].vertex);
+  std::sort(order.begin(), order.end(), [&nodes](std::size_t a, std::size_t b) {
+    return nodes[a].value < nodes[b].value || (nodes[a].value == nodes[b].value && nodes[a].vertex < nodes[b].vertex);
   });
   Reeb_graph& H = result.graph;
+  H.nodes.reserve(nodes.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     index[order[i]] = i;
-    H.nodes.push_back(std::move(G.nodes[order[i]]));
+    H.nodes.push_back(std::move(nodes[order[i]]));
   }
-  for (auto& a : G.arcs) {
-    a.lower = index[a.lower];
-    a.upper = index[a.upper];
-    if (a.lower > a.upper) std::swap(a.lower, a.upper);  // only new links (no interior vertices) can be reversed
+  H.arcs.reserve(pieces.size());
+  for (const Piece& p : pieces) {
+    Reeb_graph::Arc arc;
+    arc.lower = index[p.lower];
+    arc.upper = index[p.upper];
+    if (arc.lower > arc.upper) std::swap(arc.lower, arc.upper);  // only links (no interior vertices) can be reversed
+    if (p.input != none) {
+      const std::vector<Vertex_index>& vertices = R.arcs[p.input].vertices;
+      arc.vertices.assign(vertices.begin() + static_cast<std::ptrdiff_t>(p.begin),
+                          vertices.begin() + static_cast<std::ptrdiff_t>(p.end));
+    }
+    H.arcs.push_back(std::move(arc));
   }
-  // Arcs by lower node, then by the (f, index) order of the first vertex each reaches (Reeb_graph::arcs).
-  std::sort(G.arcs.begin(), G.arcs.end(), [&H, &values](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) {
+  // Arcs by lower node, then by the (f, index) order of the first vertex each reaches (Reeb_graph::arcs). Arcs
+  // that compare equal have the same ends and no vertices, so the result does not depend on the pieces' order.
+  std::sort(H.arcs.begin(), H.arcs.end(), [&H, &values](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) {
     const Vertex_index fa = a.vertices.empty() ? H.nodes[a.upper].vertex : a.vertices.front();
     const Vertex_index fb = b.vertices.empty() ? H.nodes[b.upper].vertex : b.vertices.front();
     return std::make_tuple(a.lower, values[fa], fa, a.upper) < std::make_tuple(b.lower, values[fb], fb, b.upper);
   });
-  H.arcs = std::move(G.arcs);
-  internal::refresh_node_types(H);
+  refresh_node_types(H);
   if (result.status == Status::success) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
+}
+}  // namespace internal
+
+/// The other half of graph fixing: a degree-1 node whose input point is at most `max_distance` from a point of
+/// another part of the graph (a node, or an interior vertex of an arc) gets an arc to the closest such point (ties:
+/// smallest vertex index), splitting that arc there: a street that stops short of the street it meets (a T junction
+/// with a gap). Not another part: the node's own arc in R, its vertices and its other end, also once the arc was
+/// split for an earlier dead end (a U-shaped street is not closed on itself, whatever the order of the dead ends).
+/// An isolated arc whose two ends lie within `max_distance` of each other is not connected (too short to be a
+/// street end). Dead ends are taken in node order and see the arcs added before them. Simplify afterwards, as
+/// after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends and n input vertices in the graph, and
+/// O(n log n) for all splits (each moves the shorter side of its arc); the arcs come back in the order of
+/// Reeb_graph::arcs, their vertex vectors no larger than they need. With Reeb_repair_options::bound, only the
+/// vertices whose bound lies within max_distance of the dead end's are measured: O(n log n + k w) for w such
+/// vertices, the same result. The progress callback is asked after each dead end; a stop keeps the arcs added so
+/// far (a valid graph, status interrupted).
+/// \param values f of every input vertex (for the new nodes).
+/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
+/// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes `values`;
+/// Reeb_repair_options::bound not NaN at any vertex of R (all checked; throws).
+template <class Distance>
+Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values, double max_distance,
+                                       Distance distance, const Reeb_repair_options& options = {}) {
+  std::size_t moved = 0;
+  return internal::connect_dead_ends_counting(R, values, max_distance, distance, options, moved);
 }
 
 /// Result of prune_reeb_graph_components().
