@@ -438,6 +438,61 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
   EXPECT_EQ(classical_mds_3d(ten, 10, o).status, Status::interrupted);
 }
 
+TEST(ClassicalMds, CrowdedTopEigenvaluesStayInTheKrylovSolverAndTheDenseFallbackReportsFirst) {
+  // Entries uniform in [1, 2]: the top eigenvalues crowd together. On 500 points the Krylov solver needs about 340
+  // vectors; it had at most min(n / 2, 320) and then ran the dense solver unannounced (on 2,000 points: 26 s without
+  // a report, a stop ignored). Restarted, it converges in the Krylov solver (every report below 0.5) past that old
+  // limit, to the dense solver's result.
+  const auto random_metric = [](std::size_t n) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(1.0, 2.0);
+    std::vector<double> D(n * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) D[i * n + j] = D[j * n + i] = u(rng);
+    return D;
+  };
+  const std::size_t n = 500;
+  const std::vector<double> D = random_metric(n);
+  std::vector<double> seen;
+  bool stopped = true;
+  const auto krylov = skeleton::internal::classical_mds_3d(
+      D, n,
+      [&](double f) {
+        seen.push_back(f);
+        return true;
+      },
+      stopped, 0);
+  EXPECT_FALSE(stopped);
+  EXPECT_GT(seen.size() * 8, n / 2);  // steps of 8 vectors beyond the old limit
+  EXPECT_LT(*std::max_element(seen.begin(), seen.end()), 0.5);
+  const auto dense = mds(D, n, 1000);
+  double worst = 0, largest = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) {
+      worst = std::max(worst, std::fabs(krylov[i][c] - dense[i][c]));
+      largest = std::max(largest, std::fabs(dense[i][c]));
+    }
+  EXPECT_LT(worst, 1e-6 * largest);
+  // On 100 points (Krylov solver forced) such a matrix falls back to the dense solver after 100 vectors: that is
+  // reported (0.5) first, a stop there is honoured, and without one the result is the dense solver's.
+  const std::size_t m = 100;
+  const std::vector<double> small = random_metric(m);
+  seen.clear();
+  const auto fallback = skeleton::internal::classical_mds_3d(
+      small, m,
+      [&](double f) {
+        seen.push_back(f);
+        return true;
+      },
+      stopped, 0);
+  EXPECT_FALSE(stopped);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.back(), 0.5);
+  EXPECT_EQ(fallback, mds(small, m, 1000));
+  skeleton::internal::classical_mds_3d(small, m, [](double f) { return f < 0.5; }, stopped, 0);
+  EXPECT_TRUE(stopped);
+}
+
 TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
   // Three arcs of 40,000 points each on three parallel wavy lines: progress is asked every 65,536 points, so before
   // the third arc (80,002 points drawn, counting one more per arc). A stop there draws the third arc as the

@@ -189,6 +189,83 @@ TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
   }
 }
 
+TEST(RipsGraph, BruteForceKeepsPairsAtTheRadiusThatUnderflowInFloat) {
+  // Two points 2^e apart close to the centre of points at +-1: scaled for float, their coordinates' products
+  // underflow (e <= -108), the float Gram matrix gave them the squared distance |p|^2 + |q|^2, and a purely relative
+  // error bound rejected the pair at exactly the radius before the exact test (0 edges; the kd-tree found 1). First
+  // the reported points, then a scan of spacings with the pair on an axis through the centre and off it, in 4 and 8
+  // dimensions; the k-nearest-neighbour search shares the filter.
+  const double s116 = std::ldexp(1.0, -116);
+  const Coords reported{{1, 0, 0, 0}, {-1, 0, 0, 0}, {s116, 0, 0, 0}, {2 * s116, 0, 0, 0}};
+  for (Neighbor_search s : {Neighbor_search::brute_force, Neighbor_search::automatic}) {
+    Proximity_graph_options o;
+    o.search = s;
+    EXPECT_EQ(build_rips_graph(reported, s116, o).edges, (std::vector<Edge>{{2, 3}}));
+  }
+  Proximity_graph_options o;
+  o.search = Neighbor_search::brute_force;
+  std::size_t compared = 0;
+  for (int e = -60; e >= -148; e -= 4)
+    for (const std::size_t d : {4u, 8u})
+      for (const bool off_axis : {false, true}) {
+        const double c = std::ldexp(1.0, e), s = std::ldexp(1.0, e - 1);
+        Coords p;
+        for (std::size_t axis = 0; axis < 3; ++axis)
+          for (const double sign : {1.0, -1.0}) {
+            p.emplace_back(d, 0.0);
+            p.back()[axis] = sign;
+          }
+        p.emplace_back(d, 0.0);
+        p.emplace_back(d, 0.0);
+        p[6][0] = c;  // the pair (c, 0) and (c + s, 0), or (c, c) and (c + s, c); the centre stays at 0
+        p[7][0] = c + s;
+        if (off_axis) p[6][1] = p[7][1] = c;
+        const Proximity_graph g = build_rips_graph(p, s, o);
+        EXPECT_EQ(g.edges, brute_rips(p, s)) << "e = " << e << ", d = " << d << ", off axis = " << off_axis;
+        EXPECT_GE(g.find_edge(6, 7), 0) << "e = " << e << ", d = " << d << ", off axis = " << off_axis;
+        EXPECT_EQ(build_rips_graph(p, std::nextafter(s, 0.0), o).find_edge(6, 7), -1) << "e = " << e;
+        // (Not brute_knn(): in double, 1 - c and 1 - c - s tie for the points at +-1.)
+        EXPECT_GE(build_knn_graph(p, 1, o).find_edge(6, 7), 0) << "e = " << e << ", d = " << d;
+        ++compared;
+      }
+  EXPECT_EQ(compared, 92u);
+}
+
+TEST(RipsGraph, OneOutlierDoesNotMakeEveryPairACandidate) {
+  // The brute force's float filter has an error growing with the squared distance from the centre: centred at the
+  // mean, one point at 1e7 moved every other point 1e3 from it and every pair went to the exact predicate (7.5 s
+  // instead of 0.4 s on 10,000 points in 50-D). Counted, not timed: with the outlier, the pairs left to the double
+  // and exact stages are those of the cloud alone plus at most the outlier's row.
+  const std::size_t n = 1500;
+  Coords p = random_points(n, 20, 9);
+  const double r = 1.2;
+  Proximity_graph_options o;
+  o.search = Neighbor_search::brute_force;
+  const auto counted = [&](const Coords& q, skeleton::internal::Rips_search_counts& counts) {
+    return skeleton::internal::rips_graph(make_point_matrix(q), r, o, &counts);
+  };
+  skeleton::internal::Rips_search_counts alone;
+  const Proximity_graph g = counted(p, alone);
+  EXPECT_EQ(g.edges, brute_rips(p, r));
+  EXPECT_GT(g.number_of_edges(), 50u);
+  EXPECT_LT(alone.refined, 200u);
+  for (const double far : {1e7, -1e30, 1e300}) {
+    Coords q = p;
+    q[n / 2][0] = far;
+    skeleton::internal::Rips_search_counts counts;
+    EXPECT_EQ(counted(q, counts).edges, brute_rips(q, r)) << far;
+    EXPECT_LE(counts.refined, alone.refined + n) << far;
+    EXPECT_LE(counts.exact, alone.exact) << far;
+    // brute_knn() ties the outlier's distances in double from 1e30 on: compared without its edges.
+    const auto without_outlier = [&](std::vector<Edge> edges) {
+      const auto touches = [&](const Edge& e) { return e[0] == n / 2 || e[1] == n / 2; };
+      edges.erase(std::remove_if(edges.begin(), edges.end(), touches), edges.end());
+      return edges;
+    };
+    EXPECT_EQ(without_outlier(build_knn_graph(q, 3, o).edges), without_outlier(brute_knn(q, 3))) << far;
+  }
+}
+
 TEST(RipsGraph, TinyAndHugeCoordinatesInTheKdTree) {
   // Squared distances of coordinates below about 1e-154 are subnormal, rounded absolutely: the kd-tree's ball
   // (with a relative slack) lost pairs within r, and its nearest neighbours were wrong. The same clouds scaled by

@@ -142,53 +142,154 @@ struct Kd_index {
 };
 
 /// All-pairs squared distances with Eigen, blockwise, from a single-precision Gram matrix (twice the SIMD
-/// width of double). Each value comes with a rigorous bound on its error, covering the rounding of the
-/// centred coordinates to float and the float products, so that candidates can be filtered safely and then
-/// decided exactly on the original doubles. The centred coordinates are scaled by a power of two (`unit`) so that
-/// the largest has magnitude in [2^30, 2^31): neither huge nor tiny coordinates overflow or vanish in float.
-/// Values passed to the visitor are in scaled units: a true squared distance is d2 / unit^2.
+/// width of double). Each pair comes with a rigorous enclosure [lo, hi] of its true squared distance (derived
+/// below), so that candidates can be filtered safely and then decided on the original doubles: by refine(), a
+/// direct sum in double with its own enclosure, and where that cannot tell either, exactly.
+///
+/// The coordinates are centred at their coordinate-wise median: the Gram matrix's error grows with the squared
+/// distance from the centre, and one outlier at 1e7 moved the mean by 1e3 for 10,000 points, which made every pair
+/// of the others a candidate for the exact predicate (18x slower). Points more than 2^15 times the median point's
+/// distance (max-norm) from the centre are "far": they are left out of the float matrix (zero columns), as they
+/// would set a scale at which the other coordinates lose their digits or underflow in float; their pairs get the
+/// enclosure [-inf, inf] for the caller to refine(). The centred halves (no overflow even next to the largest
+/// doubles) of the other points are scaled by a power of two so that the largest has magnitude in [2^30, 2^31).
+/// Values are in scaled units: a true squared distance times unit^2.
 struct Brute_force_index {
   const Point_matrix& m;
-  Eigen::MatrixXf centred;  // d x n, (coordinates minus their mean) * unit, rounded to float
-  Eigen::VectorXd norms;    // squared norms of the float columns, in double
-  double unit = 1;          // the scale (a power of two)
+  Eigen::MatrixXf centred;          // d x n, (halves minus the centre's half) * scale, rounded to float; 0 if far
+  Eigen::VectorXd norms;            // squared norms of the float columns, in double (exact products)
+  std::vector<double> weight;       // per point i, its part w_i of the Gram error bound (see block())
+  std::vector<char> far;            // 1 for a point left out of the float matrix
+  std::vector<double> half_centre;  // the coordinate-wise median, halved
+  double scale = 1;                 // applied to the centred halves (a power of two)
+  double unit = 1;                  // scale / 2: applied to differences of whole coordinates
+  double pair_constant = 0;         // the part of the Gram error bound common to all pairs
+  double refine_relative = 0, refine_absolute = 0;  // refine()'s error bound
   explicit Brute_force_index(const Point_matrix& pm) : m(pm) {
-    centred.resize(static_cast<Eigen::Index>(m.dimension), static_cast<Eigen::Index>(m.rows));
-    // Halves everywhere: no overflow in the mean or the differences even next to the largest doubles.
-    Eigen::VectorXd mean = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.dimension));
-    for (std::size_t i = 0; i < m.rows; ++i)
-      for (std::size_t c = 0; c < m.dimension; ++c) mean[c] += 0.5 * m.row(i)[c] / static_cast<double>(m.rows);
+    const std::size_t n = m.rows, d = m.dimension;
+    centred.resize(static_cast<Eigen::Index>(d), static_cast<Eigen::Index>(n));
+    far.assign(n, 0);
+    half_centre.assign(d, 0.0);
+    std::vector<double> column(n);
+    if (n > 0)
+      for (std::size_t c = 0; c < d; ++c) {
+        for (std::size_t i = 0; i < n; ++i) column[i] = m.row(i)[c];
+        std::nth_element(column.begin(), column.begin() + static_cast<std::ptrdiff_t>(n / 2), column.end());
+        half_centre[c] = column[n / 2] / 2;
+      }
+    const auto half_offset = [&](std::size_t i, std::size_t c) { return m.row(i)[c] / 2 - half_centre[c]; };
+    for (std::size_t i = 0; i < n; ++i) {
+      column[i] = 0;
+      for (std::size_t c = 0; c < d; ++c) column[i] = std::max(column[i], std::abs(half_offset(i, c)));
+    }
+    const std::vector<double> reach = column;  // max-norm distance of each point from the centre, halved
+    double typical = 0;
+    if (n > 0) {
+      std::nth_element(column.begin(), column.begin() + static_cast<std::ptrdiff_t>(n / 2), column.end());
+      typical = column[n / 2];
+    }
+    const double u = std::ldexp(1.0, -24), v = std::ldexp(1.0, -53), eta = std::ldexp(1.0, -150);
+    const double dd = static_cast<double>(d);
+    // With 2^23 coordinates or more the float dot products carry no digit: every pair is refined in double.
+    const bool float_useless = dd * u >= 0.5;
+    const double far_limit = typical > 0 ? std::ldexp(typical, 15) : std::numeric_limits<double>::infinity();
     double largest = 0;
-    for (std::size_t i = 0; i < m.rows; ++i)
-      for (std::size_t c = 0; c < m.dimension; ++c) largest = std::max(largest, std::abs(0.5 * m.row(i)[c] - mean[c]));
+    for (std::size_t i = 0; i < n; ++i) {
+      far[i] = float_useless || reach[i] > far_limit;
+      if (!far[i]) largest = std::max(largest, reach[i]);
+    }
     const int exponent = largest > 0 ? std::clamp(30 - std::ilogb(largest), -1000, 1000) : 0;
-    const double scale = std::ldexp(1.0, exponent);  // applied to the halves
+    scale = std::ldexp(1.0, exponent);
     unit = std::ldexp(1.0, exponent - 1);
-    for (std::size_t i = 0; i < m.rows; ++i)
-      for (std::size_t c = 0; c < m.dimension; ++c)
-        centred(c, i) = static_cast<float>((0.5 * m.row(i)[c] - mean[c]) * scale);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t c = 0; c < d; ++c)
+        centred(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(i)) =
+            far[i] ? 0.0f : static_cast<float>(half_offset(i, c) * scale);
     norms = centred.cast<double>().colwise().squaredNorm().transpose();
+    // The float enclosure. Notation: u = 2^-24 and v = 2^-53 the unit roundoffs of float and double, eta = 2^-150
+    // half the smallest float (the absolute error of a float rounding in the subnormal range), a = (x_i - x_j) unit
+    // the true scaled difference, f_i the float column of point i, s_i = |f_i|, N_i = s_i^2, gamma_k = k u / (1 -
+    // k u). Every constant below is at least twice what the step needs; the slack also covers the roundings of
+    // computing the bound, d2 - err and d2 + err (relative 2^-53 of values at most 2 (N_i + N_j), while
+    // err >= 2^-21 (N_i + N_j)).
+    // 1. Coordinates: f = float(y), |f - y| <= u |y| + eta, where y = (x / 2 - h) scale is computed in double: the
+    //    subtraction (relative v; the centre h is common to both points and cancels), x / 2 (absolute 2^-1075 for
+    //    subnormal x) and the scaling (absolute 2^-1075 if it underflows). So per coordinate
+    //    |(f_i - f_j) - a| <= alpha (|f_i| + |f_j|) + beta, alpha = 2^-23 >= (u + v) / (1 - u), and
+    //    beta = 4 eta + 2^-1072 max(scale, 1); over all coordinates (Minkowski) the error e = f_i - f_j - a has
+    //    E = |e| <= alpha (s_i + s_j) + b, b = beta sqrt(d).
+    // 2. Gram: d2 = (n_i + n_j) - 2 g with n_i the double sum of exact squares (error <= (d - 1) v N_i), g the float
+    //    dot product (error <= gamma_d s_i s_j + (1 + gamma_d) d eta: d roundings, each relative or, underflowing,
+    //    at most eta) and two double roundings: |d2 - |f_i - f_j|^2| <= G = g_rel (N_i + N_j) + g_abs,
+    //    g_rel = 2 (gamma_d + (d + 5) v), g_abs = 4 d eta. Without the absolute terms, products of coordinates near
+    //    the centre that underflow in float (data spread 2^100 times their spacing) made d2 overestimate a pair at
+    //    exactly the radius, and it was rejected before the exact test.
+    // 3. |a|^2 - |f_i - f_j|^2 = -(2 a.e + |e|^2), |a| <= s_i + s_j + E: the difference is at most
+    //    2 (s_i + s_j) E + 3 E^2 <= 4 alpha (N_i + N_j) + 2 b (s_i + s_j) + 12 alpha^2 (N_i + N_j) + 6 b^2
+    //    (using (s_i + s_j)^2 <= 2 (N_i + N_j) and (p + q)^2 <= 2 p^2 + 2 q^2).
+    // Altogether |true - d2| <= err = w_i + w_j + pair_constant, w_i = K N_i + 2 b s_i, K = g_rel + 4 alpha +
+    // 12 alpha^2, pair_constant = g_abs + 6 b^2.
+    const double gamma_d = float_useless ? 0.0 : dd * u / (1 - dd * u);
+    const double alpha = std::ldexp(1.0, -23);
+    const double beta = 4 * eta + std::ldexp(1.0, -1072 + std::max(exponent, 0));
+    const double b = beta * std::sqrt(dd);
+    const double K = 2 * (gamma_d + (dd + 5) * v) + 4 * alpha + 12 * alpha * alpha;
+    pair_constant = 4 * dd * eta + 6 * b * b;
+    weight.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double ni = norms[static_cast<Eigen::Index>(i)];
+      weight[i] = K * ni + 2 * b * std::sqrt(ni);
+    }
+    // refine() sums t_c^2, t_c = (x_i / 2 - x_j / 2) scale in double, scaled so that neither the squares of far
+    // pairs overflow nor those of near ones underflow. t_c = a_c (1 + delta) + kappa_c with |delta| <= v (the
+    // subtraction) and |kappa_c| <= kappa = 2^-1073 max(scale, 1) (the halvings, and the scaling if it underflows),
+    // so |t| differs from |a| by at most v |a| + k, k = kappa sqrt(d) <= 2^-72 sqrt(d); each square has an absolute
+    // error up to 2^-1075 if it underflows and the sum a relative gamma_(d-1). With 2 k |t| <= k (1 + |t|^2):
+    // |true - s| <= refine_relative s + refine_absolute, refine_relative = 2 (d + 5) v,
+    // refine_absolute = d 2^-1074 + 4 k (twice what is needed, which covers computing s (1 +- refine_relative)).
+    refine_relative = 2 * (dd + 5) * v;
+    refine_absolute = dd * std::ldexp(1.0, -1074) + 4 * std::ldexp(1.0, -1073 + std::max(exponent, 0)) * std::sqrt(dd);
   }
-  /// Calls visit(i, j, approximate squared distance, error bound) for every i in [b, e) and every j >= from.
+  /// Calls visit(i, j, lo, hi), lo <= the true squared distance (scaled) <= hi, for every i in [b, e) and every
+  /// j >= from. Pairs with a far point get [-inf, inf].
   template <class Visit>
   void block(std::size_t b, std::size_t e, std::size_t from, Visit visit) const {
     const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
     const Eigen::Index nc = static_cast<Eigen::Index>(m.rows - from);
     const Eigen::MatrixXf gram = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() *
                                  centred.middleCols(static_cast<Eigen::Index>(from), nc);
-    // |error| <= d u (|p|^2 + |q|^2) for the float dot product plus 4 u (|p|^2 + |q|^2) for rounding the
-    // coordinates to float (u = 2^-24); doubled for safety.
-    const double u = std::numeric_limits<float>::epsilon() / 2;
-    const double factor = 2 * (static_cast<double>(m.dimension) + 8) * u;
+    const double inf = std::numeric_limits<double>::infinity();
     for (Eigen::Index r = 0; r < nb; ++r) {
       const std::size_t i = b + static_cast<std::size_t>(r);
-      const double ni = norms[static_cast<Eigen::Index>(i)];
+      const double ni = norms[static_cast<Eigen::Index>(i)], wi = weight[i] + pair_constant;
       for (std::size_t j = from; j < m.rows; ++j) {
-        const double nj = norms[static_cast<Eigen::Index>(j)];
-        const double d2 = ni + nj - 2 * static_cast<double>(gram(r, static_cast<Eigen::Index>(j - from)));
-        visit(i, j, d2, factor * (ni + nj) + 1e-300);
+        if (far[i] || far[j]) {
+          visit(i, j, -inf, inf);
+          continue;
+        }
+        const double d2 = ni + norms[static_cast<Eigen::Index>(j)] -
+                          2 * static_cast<double>(gram(r, static_cast<Eigen::Index>(j - from)));
+        const double err = wi + weight[j];
+        visit(i, j, d2 - err, d2 + err);
       }
     }
+  }
+  /// Narrows the enclosure [lo, hi] of the squared distance of points i and j (scaled) by one from a direct sum in
+  /// double: about 2 d 2^-53 wide relative to it, where the float one is wide relative to the data's spread.
+  void refine(std::size_t i, std::size_t j, double& lo, double& hi) const {
+    const double *p = m.row(i), *q = m.row(j);
+    double s = 0;
+    for (std::size_t c = 0; c < m.dimension; ++c) {
+      const double t = (p[c] / 2 - q[c] / 2) * scale;
+      s += t * t;
+    }
+    if (!(s < std::numeric_limits<double>::infinity())) {  // the true value is about the largest double or more
+      lo = std::max(lo, std::numeric_limits<double>::max() / 2);
+      return;
+    }
+    const double err = refine_relative * s + refine_absolute;
+    lo = std::max(lo, s - err);
+    hi = std::min(hi, s + err);
   }
 };
 
@@ -235,9 +336,16 @@ inline void add_edge_lengths(const Point_matrix& m, Proximity_graph& g, const ch
 
 }  // namespace internal
 
-/// Rips graph of the rows of a Point_matrix (see the range version of build_rips_graph()).
-inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
-                                        const Proximity_graph_options& options = {}) {
+namespace internal {
+/// What the Rips search left to its slower stages (for tests: the work an outlier or extreme coordinates cause).
+struct Rips_search_counts {
+  std::size_t refined = 0;  ///< pairs the brute force's float enclosure could not decide, computed again in double
+  std::size_t exact = 0;    ///< pairs decided by the exact predicate
+};
+
+/// build_rips_graph() of a Point_matrix, counting its slow stages into `counts` (if not null).
+inline Proximity_graph rips_graph(const Point_matrix& m, double radius, const Proximity_graph_options& options,
+                                  Rips_search_counts* counts) {
   const char* fn = "build_rips_graph";
   if (!(std::isfinite(radius) && radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
@@ -249,6 +357,8 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
   const std::size_t n = m.rows;
   const std::size_t report_every = std::max<std::size_t>(1, n / 100);
   bool stopped = false;  // no report after the callback asked to stop
+  Rips_search_counts count;
+  if (counts) *counts = count;
   if (internal::use_kd_tree(m, options.search, fn)) {
     if (n == 0) return g;
     internal::Kd_index index(m);
@@ -262,28 +372,47 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
       index.ball(i, radius * index.unit, found);  // infinity when that overflows: every point a candidate
       std::sort(found.begin(), found.end());
       for (std::uint32_t j : found)
-        if (j > i && internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius))
+        if (j > i && (++count.exact, internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius)))
           g.edges.push_back(Edge{i, j});
     }
   } else {
     internal::Brute_force_index index(m);
     const std::size_t block = 256;
-    const double r2 = (radius * index.unit) * (radius * index.unit);  // in the index's units (may be infinite)
+    // The radius squared in the index's units, as an enclosure: radius * unit is exact unless it overflows (then
+    // infinite, as when its square overflows, and so is r2_lo: every finite upper bound is within) or underflows
+    // (absolute 2^-1075, far below the 2^-1074 added); the square rounds by a relative 2^-53.
+    const double rs = radius * index.unit, r2 = rs * rs;
+    const double r2_lo = r2 * (1 - 0x1p-50) - 0x1p-1074, r2_hi = r2 * (1 + 0x1p-50) + 0x1p-1074;
     for (std::size_t b = 0; b < n; b += block) {
       if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) {
         stopped = true;
         break;
       }
-      index.block(b, std::min(n, b + block), b, [&](std::size_t i, std::size_t j, double d2, double err) {
-        if (j > i && d2 <= r2 * (1 + 1e-12) + err &&
-            internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius))
-          g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
+      index.block(b, std::min(n, b + block), b, [&](std::size_t i, std::size_t j, double lo, double hi) {
+        if (j <= i || lo > r2_hi) return;
+        if (!(hi < r2_lo)) {  // the float enclosure straddles the radius: in double, then exactly
+          ++count.refined;
+          index.refine(i, j, lo, hi);
+          if (lo > r2_hi) return;
+          if (!(hi < r2_lo) &&
+              (++count.exact, !internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius)))
+            return;
+        }
+        g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
       });
     }
   }
   internal::add_edge_lengths(m, g, fn);
   if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (counts) *counts = count;
   return g;
+}
+}  // namespace internal
+
+/// Rips graph of the rows of a Point_matrix (see the range version of build_rips_graph()).
+inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
+                                        const Proximity_graph_options& options = {}) {
+  return internal::rips_graph(m, radius, options, nullptr);
 }
 
 /// Symmetrised k-nearest-neighbour graph of the rows of a Point_matrix (see the range version of build_knn_graph()).
@@ -399,8 +528,18 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
   } else {
     internal::Brute_force_index index(m);
     const std::size_t block = 256;
-    std::vector<std::pair<double, std::uint32_t>> row;
-    std::vector<double> errs;
+    struct Enclosure {
+      double lo, hi;  // of the squared distance to j, in the index's units
+      std::uint32_t j;
+    };
+    std::vector<Enclosure> row;
+    std::vector<double> upper;
+    const auto kth_upper = [&] {
+      upper.clear();
+      for (const Enclosure& x : row) upper.push_back(x.hi);
+      std::nth_element(upper.begin(), upper.begin() + static_cast<std::ptrdiff_t>(kk - 1), upper.end());
+      return upper[kk - 1];
+    };
     for (std::size_t b = 0; b < n; b += block) {
       if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) {
         stopped = true;
@@ -408,30 +547,32 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
       }
       std::size_t current = b;
       row.clear();
-      errs.clear();
       auto flush = [&](std::size_t i) {
-        // Candidates: every j whose approximate distance is within the error of the k-th smallest.
-        std::vector<std::pair<double, std::uint32_t>> sorted_row = row;
-        std::nth_element(sorted_row.begin(), sorted_row.begin() + static_cast<std::ptrdiff_t>(kk - 1), sorted_row.end());
-        const double kth = sorted_row[kk - 1].first;
-        double max_err = 0;
-        for (double e : errs) max_err = std::max(max_err, e);
+        // The k-th smallest upper bound is at least the k-th smallest distance: a j whose lower bound exceeds it
+        // has k points strictly nearer and is not a candidate. Enclosures too wide to exclude anything (a far
+        // point's, or the float one of a pair much closer than the data's spread) are first narrowed in double;
+        // before, one row's widest error bound was applied to the whole row, so one outlier made every point a
+        // candidate of every row.
+        double bound = kth_upper();
+        bool narrowed = false;
+        for (Enclosure& x : row)
+          if (x.lo <= bound && !(x.hi < std::numeric_limits<double>::infinity() && x.hi - x.lo <= 0x1p-10 * x.hi)) {
+            index.refine(i, x.j, x.lo, x.hi);
+            narrowed = true;
+          }
+        if (narrowed) bound = kth_upper();
         cand.clear();
-        for (const auto& [d2, j] : row)
-          if (d2 <= kth + 2 * max_err) cand.push_back(j);
+        for (const Enclosure& x : row)
+          if (x.lo <= bound) cand.push_back(x.j);
         select(i);
       };
-      index.block(b, std::min(n, b + block), 0, [&](std::size_t i, std::size_t j, double d2, double err) {
+      index.block(b, std::min(n, b + block), 0, [&](std::size_t i, std::size_t j, double lo, double hi) {
         if (i != current) {
           flush(current);
           current = i;
           row.clear();
-          errs.clear();
         }
-        if (j != i) {
-          row.emplace_back(d2, static_cast<std::uint32_t>(j));
-          errs.push_back(err);
-        }
+        if (j != i) row.push_back(Enclosure{lo, hi, static_cast<std::uint32_t>(j)});
       });
       flush(current);
     }
