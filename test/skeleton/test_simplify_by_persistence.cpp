@@ -474,3 +474,117 @@ TEST(SimplifyByPersistence, RefusesAnInterruptedAugmentedGraph) {
   EXPECT_EQ(S.graph.arcs.size(), 1u);
   EXPECT_EQ(S.graph.components, 1u);
 }
+
+namespace {
+/// A flat stem 0..n-1 (f = i * 1e-6) with a tooth at every stem vertex, n + i, up to f(i) + 0.5, or, when
+/// `falling`, up to f(i) + 0.5 - 2e-6 i with the last tooth the tallest (0.9): every tooth but the tallest dies at
+/// its stem vertex, persistence about 0.5.
+Complex_with_function flat_comb(std::size_t n, bool falling) {
+  std::vector<Edge> edges;
+  std::vector<double> f(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f[i] = 1e-6 * static_cast<double>(i);
+    f[n + i] = f[i] + (falling ? (i + 1 == n ? 0.9 : 0.5 - 2e-6 * static_cast<double>(i)) : 0.5);
+    if (i + 1 < n) edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(i + 1)});
+    edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(n + i)});
+  }
+  return make(2 * n, edges, {}, f);
+}
+}  // namespace
+
+TEST(SimplifyByPersistence, FlatStemWithTallTeethGluesEachToothOnce) {
+  // Each tooth's level is reached again only at the tallest tooth, at the far end of the stem: the path it was
+  // glued onto ran along the rest of the stem, n^2 / 2 merging edges whose strips spanned O(n) levels each (n 2000:
+  // 6 million triangles, 17 s and 1.4 GB; n 4000: 131 s, 5.5 GB). Each path now goes on as the next tooth's at the
+  // next stem vertex: a few triangles per tooth. Rising and falling teeth (the next tooth higher, or lower).
+  const std::size_t n = 2000;
+  for (const bool falling : {false, true}) {
+    const auto g = flat_comb(n, falling);
+    const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+    const Reeb_graph_persistence before = compute_reeb_graph_persistence(A.reeb_graph());
+    ASSERT_EQ(count_above(before.superlevel_branches, 0.4), n - 1);
+    const Reeb_simplification_result S = simplify_by_persistence(A, 1.0);
+    const std::string what = falling ? "falling" : "rising";
+    EXPECT_EQ(S.removed_branches, n - 1) << what;
+    EXPECT_LE(S.glued_triangles, 16 * n) << what;
+    // Every tooth merged into the tallest one's arc: one arc from the stem's bottom to the tallest tooth.
+    ASSERT_EQ(S.graph.nodes.size(), 2u) << what;
+    ASSERT_EQ(S.graph.arcs.size(), 1u) << what;
+    EXPECT_EQ(S.graph.nodes[0].vertex, 0u) << what;
+    EXPECT_EQ(S.graph.nodes[1].vertex, 2 * n - 1) << what;
+    EXPECT_EQ(S.graph.arcs[0].vertices.size(), 2 * n - 2) << what;
+    expect_partition(S.graph, 2 * n, what);
+    const Reeb_graph_persistence after = compute_reeb_graph_persistence(S.graph);
+    EXPECT_TRUE(after.superlevel_branches.empty() && after.sublevel_branches.empty()) << what;
+    ASSERT_EQ(after.essential.size(), 1u) << what;
+    EXPECT_EQ(after.essential[0].death, before.essential[0].death) << what;
+  }
+}
+
+TEST(SimplifyByPersistence, FanOfLoopsGluesEachLoopOnce) {
+  // A bottom vertex 0 joined to every vertex of a nearly flat path 1..n (f = 0.5 + 1e-6 i): n - 1 loops of height
+  // about 0.5. The arcs up from vertex 0 weigh the same in the maximum spanning forest of the loop pass, which kept
+  // the oldest, so loop i's thin cycle ran back along the whole path instead of the triangle 0, i - 1, i: n^2 / 2
+  // arcs (n 2000: 2 million, strips of 6 million triangles, 22 s and 1.4 GB). Now each cycle is a triangle.
+  const std::size_t n = 2000;
+  std::vector<Edge> edges;
+  std::vector<double> f(n + 1, 0.0);
+  for (std::size_t i = 1; i <= n; ++i) {
+    f[i] = 0.5 + 1e-6 * static_cast<double>(i);
+    edges.push_back({0, static_cast<Vertex_index>(i)});
+    if (i < n) edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(i + 1)});
+  }
+  const auto g = make(n + 1, edges, {}, f);
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+  std::vector<std::vector<std::size_t>> cycles;
+  const Reeb_graph_persistence before =
+      FeatureRecon::skeleton::internal::reeb_graph_persistence(A.reeb_graph(), &cycles, 1.0);
+  ASSERT_EQ(before.loops.size(), n - 1);
+  std::size_t cycle_arcs = 0, longest = 0, other_bottom = 0;
+  for (std::size_t i = 0; i < cycles.size(); ++i) {
+    cycle_arcs += cycles[i].size();
+    longest = std::max(longest, cycles[i].size());
+    if (before.loops[i].death_node != 0) ++other_bottom;  // the bottom stays vertex 0's node
+  }
+  EXPECT_LE(cycle_arcs, 3 * n);
+  EXPECT_LE(longest, 3u);
+  EXPECT_EQ(other_bottom, 0u);
+  const Reeb_simplification_result S = simplify_by_persistence(A, 1.0);
+  EXPECT_EQ(S.removed_loops, n - 1);
+  EXPECT_LE(S.glued_triangles, 8 * n);
+  // All loops merged: one arc from vertex 0 to the path's top.
+  ASSERT_EQ(S.graph.nodes.size(), 2u);
+  ASSERT_EQ(S.graph.arcs.size(), 1u);
+  EXPECT_EQ(S.graph.nodes[1].vertex, n);
+  EXPECT_EQ(S.graph.arcs[0].vertices.size(), n - 1);
+  EXPECT_EQ(S.graph.loops(), 0u);
+  expect_partition(S.graph, n + 1, "fan");
+}
+
+TEST(SimplifyByPersistence, ATallToothsPathGoesOnFromWhereShorterOnesStop) {
+  // Rising stem 0..19 (f = i) with a tooth i + 0.5 at each vertex, but 5.5 at vertex 0 and 22 at vertex 19. Each
+  // short tooth's path stops at the next stem vertex; the tall tooth's goes on as theirs, from where each stopped,
+  // up to 5.5. Delta 0.6 keeps the tall tooth, 6 merges it too: one arc.
+  const std::size_t n = 20;
+  std::vector<Edge> edges;
+  std::vector<double> f(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f[i] = static_cast<double>(i);
+    f[n + i] = f[i] + (i == 0 ? 5.5 : i + 1 == n ? 3 : 0.5);
+    if (i + 1 < n) edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(i + 1)});
+    edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(n + i)});
+  }
+  const auto g = make(2 * n, edges, {}, f);
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
+  const Reeb_simplification_result K = simplify_by_persistence(A, 0.6);
+  EXPECT_EQ(K.removed_branches, n - 2);
+  ASSERT_EQ(K.graph.arcs.size(), 2u);
+  EXPECT_EQ(K.graph.count(maximum), 2u);
+  expect_partition(K.graph, 2 * n, "kept");
+  const Reeb_simplification_result S = simplify_by_persistence(A, 6.0);
+  EXPECT_EQ(S.removed_branches, n - 1);
+  ASSERT_EQ(S.graph.nodes.size(), 2u);
+  ASSERT_EQ(S.graph.arcs.size(), 1u);
+  EXPECT_EQ(S.graph.nodes[1].vertex, 2 * n - 1);
+  expect_partition(S.graph, 2 * n, "merged");
+}

@@ -149,14 +149,28 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
   // paths from `branch` to s in the graph of the nodes below s and the fork's earlier arcs, the bottleneck of a
   // path being its lowest node: the lowest node on the path in a maximum spanning forest of that graph, where
   // an arc weighs its lower end. The forest is kept in a link-cut tree over the sweep (an arc is a node of its
-  // own, keyed by its lower end; graph nodes never are the minimum): an arc that closes a cycle replaces the
+  // own, keyed by its weight; graph nodes never are the minimum): an arc that closes a cycle replaces the
   // lightest arc on it when it is heavier. O((n + m) log n) in all; the thin cycle (the arc and the forest path)
   // costs its length, and only loops of persistence <= cycle_limit get one.
+  // Arcs with the same lower end weigh more the later the sweep meets them (the key is the rank in (lower,
+  // upper, index) order; the bottom is still the lowest lower end on the path, as for any maximum spanning
+  // forest). Without that tie rule the arcs up from one node kept the oldest one in the forest, and the cycle of
+  // each new loop ran back through all the older ones: a node joined to every node of a flat path gave cycles
+  // of 2, 3, ..., n arcs (quadratic merging strips in simplify_by_persistence()); now each is a triangle.
   {
     Link_cut_tree forest(n + R.arcs.size());
     const auto arc_node = [n](std::size_t k) { return static_cast<std::int32_t>(n + k); };
-    for (std::size_t k = 0; k < R.arcs.size(); ++k)
-      forest.set_key(arc_node(k), static_cast<Link_cut_tree::Key>(R.arcs[k].lower));
+    {
+      std::vector<std::size_t> by_weight(R.arcs.size());
+      std::iota(by_weight.begin(), by_weight.end(), std::size_t(0));
+      std::sort(by_weight.begin(), by_weight.end(), [&R](std::size_t a, std::size_t b) {
+        const auto& x = R.arcs[a];
+        const auto& y = R.arcs[b];
+        return x.lower != y.lower ? x.lower < y.lower : x.upper != y.upper ? x.upper < y.upper : a < b;
+      });
+      for (std::size_t r = 0; r < by_weight.size(); ++r)
+        forest.set_key(arc_node(by_weight[r]), static_cast<Link_cut_tree::Key>(r));
+    }
     std::vector<std::int32_t> on_path;
     std::size_t next_birth = 0;
     for (std::size_t v = 0; v < n; ++v) {
@@ -172,7 +186,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
                                loop_births[next_birth].arc == arc);
         ++next_birth;
         const std::int32_t lightest = forest.path_min(x, y);
-        const std::size_t bottom = forest.key(lightest);
+        const std::size_t bottom = R.arcs[static_cast<std::size_t>(lightest) - n].lower;
         P.loops.push_back(pair_of(v, bottom));
         if (loop_cycles != nullptr) {
           std::vector<std::size_t> cycle;
@@ -185,6 +199,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
           loop_cycles->push_back(std::move(cycle));
         }
         if (forest.key(lightest) < forest.key(e)) {  // the new arc is heavier: it takes the lightest one's place
+          // (on equal lower ends always: it is the latest arc)
           const std::size_t k = static_cast<std::size_t>(lightest) - n;
           forest.cut(static_cast<std::int32_t>(R.arcs[k].lower), lightest);
           forest.cut(lightest, static_cast<std::int32_t>(R.arcs[k].upper));
@@ -205,8 +220,8 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
 /// n nodes and arcs. A loop is born at a down-fork whose lower arcs are already connected below it; it is
 /// paired with the highest up-fork s' such that the two branches are connected in the part of the graph
 /// between f(s') and the fork: the lowest node on the path between them in a maximum spanning forest of the
-/// sublevel graph (an arc weighs its lower node), kept in a link-cut tree over the sweep. O(n log n) for all
-/// loops together.
+/// sublevel graph (an arc weighs its lower node; among arcs with the same lower node the later in the sweep weighs
+/// more), kept in a link-cut tree over the sweep. O(n log n) for all loops together.
 /// Nodes with several arcs below or above (degenerate forks) act as chains of binary forks, as in a
 /// simulation of simplicity; node order is the graph's (f, vertex index) order.
 /// \pre R's node values are finite and in increasing (value, vertex) order, as reeb_graph() returns them (checked;

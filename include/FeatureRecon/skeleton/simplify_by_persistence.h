@@ -27,6 +27,9 @@ struct Reeb_simplification_result {
   Reeb_graph graph;
   std::size_t removed_branches = 0;  ///< branch features of persistence <= delta that were merged away
   std::size_t removed_loops = 0;     ///< loop features of persistence <= delta that were merged away
+  /// Triangles of the glued complex whose Reeb graph is the result (the strips that glue each merging path to its
+  /// spine): the measure of the work beyond the graph's size; a statistic, as tests read it.
+  std::size_t glued_triangles = 0;
   /// success, or interrupted when the progress callback returned false (the graph is then empty).
   Status status = Status::success;
 };
@@ -55,7 +58,14 @@ struct Simplification_complex {
 /// extreme, up to e's level: the fewest arcs to a node beyond e's level that lies, beyond that level, in the
 /// elder's part (else to the nearest node beyond it). The search stays between the two levels, and one
 /// union-find sweep finds every fork's sibling, so a long stem with n short spurs, or one fork with n, costs
-/// O(n log n), not O(n^2).
+/// O(n log n), not O(n^2). When the search meets, strictly nearer than such a node and coming from the fork's
+/// near side, the fork of another merged branch with the same elder whose path it could have taken, the path
+/// goes on as that branch's path (resolved first: forks from the far end on), held in the merging set by one
+/// summary edge. On a tree the result is that of the path through that fork; a flat stem with n tall teeth costs
+/// O(n), not n strips of O(n) levels.
+/// A loop's merging path is its thin cycle: the arc that closes it and the path in a maximum spanning forest
+/// below it (reeb_graph_persistence.h; among arcs from one node the latest weighs most, so that the cycles of a
+/// node joined to every node of a flat path stay triangles).
 /// This overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
 /// regular nodes (e.g. after repair_reeb_graph()), which the result absorbs into arcs.
 /// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's vertices
@@ -182,23 +192,61 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
         }
     return order;  // the nodes reached
   };
+  // The search of pi1 (below): as bfs() with stop `target`, but a node accepted by `fork` ends it when it is
+  // strictly nearer (in arcs) than every node accepted by `target`. Returns the node it ended at, or none.
+  auto search = [&](std::size_t start, auto inside, auto target, auto fork, std::vector<std::size_t>& pred_arc) {
+    if (pred_arc.size() != nn) pred_arc.assign(nn, none);
+    ++stamp;
+    std::vector<std::size_t> order{start};
+    seen_stamp[start] = stamp;
+    pred_arc[start] = none;
+    if (target(start)) return start;
+    std::size_t found = fork(start) ? start : none;
+    for (std::size_t i = 0, layer_end = 0; i < order.size(); ++i) {
+      if (i == layer_end) {  // every node as near as order[i] is found: the rest are farther than `found`
+        if (found != none) return found;
+        layer_end = order.size();
+      }
+      for (const auto& [y, arc] : adj[order[i]])
+        if (seen_stamp[y] != stamp && inside(y)) {
+          seen_stamp[y] = stamp;
+          pred_arc[y] = arc;
+          order.push_back(y);
+          if (target(y)) return y;
+          if (found == none && fork(y)) found = y;
+        }
+    }
+    return found;
+  };
   auto other_end = [&](std::size_t arc, std::size_t node) {
     return R.arcs[arc].lower == node ? R.arcs[arc].upper : R.arcs[arc].lower;
   };
+  // Where a walk stopped: at vertex `index` of the chain of `arc` walked from node `from`; arc none: it did not
+  // stop, and ended at node `from`.
+  struct Walk_end {
+    std::size_t arc, from, index;
+  };
   // Appends to `edges` the input-vertex edges of a node path given as a sequence of arcs walked from `from`,
-  // stopping after the first vertex v with stop(v) (if any).
-  auto walk = [&](std::size_t from, const std::vector<std::size_t>& arcs, auto stop, std::vector<Edge>& edges) {
+  // starting at vertex `first_index` of the first arc's chain, stopping after the first vertex v with stop(v).
+  auto walk = [&](std::size_t from, const std::vector<std::size_t>& arcs, std::size_t first_index, auto stop,
+                  std::vector<Edge>& edges) {
     std::size_t node = from;
     for (const std::size_t arc : arcs) {
       const std::size_t first = chain_start[arc], length = chain_start[arc + 1] - first;
       const bool forward = R.arcs[arc].lower == node;
       auto at = [&](std::size_t i) { return chain_items[first + (forward ? i : length - 1 - i)]; };
-      for (std::size_t i = 0; i + 1 < length; ++i) {
+      for (std::size_t i = first_index; i + 1 < length; ++i) {
         edges.push_back(key(at(i), at(i + 1)));
-        if (stop(at(i + 1))) return;
+        if (stop(at(i + 1))) return Walk_end{arc, node, i + 1};
       }
+      first_index = 0;
       node = other_end(arc, node);
     }
+    return Walk_end{none, node, 0};
+  };
+  auto walk_end_vertex = [&](const Walk_end& w) {
+    const std::size_t first = chain_start[w.arc], length = chain_start[w.arc + 1] - first;
+    return chain_items[first + (R.arcs[w.arc].lower == w.from ? w.index : length - 1 - w.index)];
   };
   auto path_arcs = [&](std::size_t target, const std::vector<std::size_t>& pred_arc) {  // pred_arc[start] == none
     std::vector<std::size_t> arcs;  // from the BFS start to target
@@ -297,50 +345,173 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     return W;
   };
   std::vector<std::size_t> pred;  // reused: allocated once
-  auto merge_branch = [&](const Reeb_persistence_pair& pair, const Branch_choice& c, const Sweep& W, bool down) {
-    const std::size_t e = pair.birth_node, s = pair.death_node;
-    if (c.alpha == none || c.beta == none) return;  // cannot happen for a valid pair
-    auto side = [&](std::size_t y) { return down ? y < s : y > s; };
-    auto beyond_e = [&](std::size_t y) { return down ? y < e : y > e; };
-    const Vertex_index ev = R.nodes[e].vertex;
-    std::vector<Edge>& edges = merging_edges;
-    {
-      // pi2: from the fork through alpha into C2, then to the extreme e (C2 lies between the two levels).
-      std::vector<std::size_t> arcs{c.alpha};
-      const std::size_t u = other_end(c.alpha, s);
-      bfs(u, side, [&](std::size_t x) { return x == e; }, pred);
-      const std::vector<std::size_t> rest = path_arcs(e, pred);
-      arcs.insert(arcs.end(), rest.begin(), rest.end());
-      walk(s, arcs, [](Vertex_index) { return false; }, edges);
+  // A branch's pi1: where it stopped (its last vertex, at or beyond e's level, and the arc it is on), the farthest
+  // node it passed before that arc's end (none: only the fork), whether every search on it reached the elder's
+  // part (no fallback), and the helper vertices of its summary edge once made.
+  const Vertex_index no_vertex = std::numeric_limits<Vertex_index>::max();
+  struct Route {
+    Vertex_index top, low, high;
+    Walk_end end;
+    std::size_t peak;
+    bool to_elder;
+  };
+  std::vector<std::size_t> used_stamp(nn, 0);  // forks a route went on from (stamped per route)
+  std::size_t route_stamp = 0;
+  auto merge_branches = [&](const std::vector<Reeb_persistence_pair>& pairs, bool down) {
+    std::vector<Branch_choice> choice;
+    const Sweep W = sweep(pairs, down, choice);
+    auto farther = [&](std::size_t x, std::size_t y) { return down ? x < y : x > y; };
+    // Merged pairs, their forks from the far end towards the near one: a branch's pi1 can then go on as the pi1
+    // of a branch merged at a fork it meets (all farther than its own fork).
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (pairs[i].persistence() <= delta && choice[i].alpha != none && choice[i].beta != none) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return farther(pairs[a].death_node, pairs[b].death_node);
+    });
+    // At each fork the merged branch that reaches farthest: the branches merged at one fork share sibling and
+    // elder, so its pi1 covers the others'.
+    std::vector<std::size_t> reaching(nn, none);
+    for (const std::size_t i : order) {
+      std::size_t& r = reaching[pairs[i].death_node];
+      if (r == none || farther(pairs[i].birth_node, pairs[r].birth_node)) r = i;
     }
-    {
+    // Forks where a kept loop ends (its bottom for maxima, its top for minima): two arcs there lead on into the
+    // elder's part, round the loop, and the route of another branch from there need not be this branch's.
+    std::vector<char> kept_loop_end(nn, 0);
+    for (const auto& loop : P.loops)
+      if (loop.persistence() > delta) kept_loop_end[down ? loop.birth_node : loop.death_node] = 1;
+    std::vector<std::vector<Edge>> sets(pairs.size());
+    std::vector<Route> routes(pairs.size(),
+                              Route{no_vertex, no_vertex, no_vertex, Walk_end{none, none, 0}, none, true});
+    auto farthest = [&](std::size_t x, std::size_t y) { return x == none || (y != none && farther(y, x)) ? y : x; };
+    // The summary edge of branch r's merge: an edge of two helper vertices from the level of r's fork to that of
+    // its route's top, in r's merging set. It adds nothing to the quotient (r's set has a point at each of these
+    // levels, all one class there, and its classes form a monotone path), but stands in for r's whole merging
+    // path in the sets of the branches that go on through r's fork.
+    auto summary = [&](std::size_t r) {
+      Route& q = routes[r];
+      if (q.high == no_vertex) {
+        q.low = static_cast<Vertex_index>(val.size());
+        val.push_back(val[R.nodes[pairs[r].death_node].vertex]);
+        q.high = static_cast<Vertex_index>(val.size());
+        val.push_back(val[q.top]);
+        sets[r].push_back({q.low, q.high});
+      }
+      return Edge{q.low, q.high};
+    };
+    for (const std::size_t i : order) {
+      const std::size_t e = pairs[i].birth_node, s = pairs[i].death_node;
+      const Branch_choice& c = choice[i];
+      auto side = [&](std::size_t y) { return farther(y, s); };
+      auto beyond_e = [&](std::size_t y) { return farther(y, e); };
+      const Vertex_index ev = R.nodes[e].vertex;
+      auto reached_e = [&](Vertex_index v) { return down ? !less(ev, v) : !less(v, ev); };
+      std::vector<Edge>& edges = sets[i];
+      {
+        // pi2: from the fork through alpha into C2, then to the extreme e (C2 lies between the two levels).
+        std::vector<std::size_t> arcs{c.alpha};
+        const std::size_t u = other_end(c.alpha, s);
+        bfs(u, side, [&](std::size_t x) { return x == e; }, pred);
+        const std::vector<std::size_t> rest = path_arcs(e, pred);
+        arcs.insert(arcs.end(), rest.begin(), rest.end());
+        walk(s, arcs, 0, [](Vertex_index) { return false; }, edges);
+      }
       // pi1: from the fork through beta towards the elder, walked until the level of e is reached: a shortest
       // path (in arcs) between the two levels to the nearest node beyond e that is joined with the elder beyond
       // e (when the sweep reached e); if every such path first crosses into another part of the sibling beyond
       // e, the nearest node beyond e. Either search stays between the two levels.
-      std::vector<std::size_t> arcs{c.beta};
-      const std::size_t y = other_end(c.beta, s);
+      // Or, when the search meets, strictly nearer than such a node, the fork x of a merged branch r with the same
+      // elder whose pi1 it could have taken (see joinable), coming to x from x's near side: pi1 goes on as r's pi1,
+      // held in the set by r's summary edge, and on from where r's pi1 stopped if that is short of e's level. On a
+      // tree that is the same path (the merges together glue the same points); with loops it may pass a loop on
+      // its other side. But the set is short: a flat stem with n tall teeth gave each tooth a pi1 along the rest
+      // of the stem, n^2 / 2 merging edges with strips of O(n) levels.
       const std::size_t elder_root = W.find(c.elder, W.step[e]);
       auto with_elder = [&](std::size_t x) { return W.find(x, W.step[e]) == elder_root; };
-      std::vector<std::size_t> reached =
-          bfs(y, [&](std::size_t x) { return side(x) && (!beyond_e(x) || with_elder(x)); },
-              [&](std::size_t x) { return beyond_e(x); }, pred);
-      if (!beyond_e(reached.back())) reached = bfs(y, side, beyond_e, pred);
-      FEATURERECON_assertion(beyond_e(reached.back()));
-      const std::vector<std::size_t> rest = path_arcs(reached.back(), pred);
-      arcs.insert(arcs.end(), rest.begin(), rest.end());
-      walk(s, arcs, [&](Vertex_index v) { return down ? !less(ev, v) : !less(v, ev); }, edges);
+      ++route_stamp;
+      auto joinable = [&](std::size_t x, std::size_t prev) {
+        const std::size_t r = reaching[x];
+        if (r == none || beyond_e(x) || kept_loop_end[x] || choice[r].elder != c.elder) return none;
+        if (used_stamp[x] == route_stamp || farther(prev, x)) return none;  // from beyond x: need not pass x
+        const Route& q = routes[r];
+        FEATURERECON_assertion(q.top != no_vertex);  // its fork is farther: resolved before
+        // r's pi1 must be one this search could take: towards the elder, between e's level and the fork's up to
+        // its last arc, which ends beyond e's level only in the elder's part.
+        const std::size_t z = other_end(q.end.arc, q.end.from);
+        if (!q.to_elder || (q.peak != none && beyond_e(q.peak)) || (beyond_e(z) && !with_elder(z))) return none;
+        return r;
+      };
+      // The nodes a walk passed before the end of the arc it stopped on (all of them if it did not stop).
+      auto passed = [&](std::size_t node, const std::vector<std::size_t>& path, const Walk_end& end) {
+        std::size_t peak = none;
+        for (const std::size_t arc : path) {
+          if (arc == end.arc && node == end.from) break;
+          node = other_end(arc, node);
+          peak = farthest(peak, node);
+        }
+        return peak;
+      };
+      Route& route = routes[i];
+      const std::size_t y = other_end(c.beta, s), pi1_begin = edges.size();
+      std::size_t from = s, start = y, start_prev = s;
+      std::vector<std::size_t> arcs{c.beta}, joined;
+      for (;;) {
+        auto prev = [&](std::size_t x) { return x == start ? start_prev : other_end(pred[x], x); };
+        std::size_t target = search(
+            start, [&](std::size_t x) { return side(x) && (!beyond_e(x) || with_elder(x)); }, beyond_e,
+            [&](std::size_t x) { return joinable(x, prev(x)) != none; }, pred);
+        const std::size_t r = target == none || beyond_e(target) ? none : joinable(target, prev(target));
+        if (target == none) {
+          // No way on to the elder's part: the nearest node beyond e, from the start (as if nothing had been
+          // joined: on a tree the first search would have failed too).
+          edges.resize(pi1_begin);
+          joined.clear();
+          route.peak = none;
+          route.to_elder = false;
+          from = s;
+          arcs.assign(1, c.beta);
+          target = bfs(y, side, beyond_e, pred).back();
+          FEATURERECON_assertion(beyond_e(target));
+        }
+        const std::vector<std::size_t> rest = path_arcs(target, pred);
+        arcs.insert(arcs.end(), rest.begin(), rest.end());
+        Walk_end end = walk(from, arcs, 0, reached_e, edges);
+        route.peak = farthest(route.peak, passed(from, arcs, end));
+        if (end.arc == none) {  // at the fork x = target of r (a node beyond e's level stops the walk)
+          FEATURERECON_assertion(r != none && end.from == target);
+          used_stamp[target] = route_stamp;
+          joined.push_back(r);
+          const Route& q = routes[r];
+          route.peak = farthest(route.peak, q.peak);
+          if (reached_e(q.top)) {
+            route.top = q.top;
+            route.end = q.end;
+            break;
+          }
+          end = walk(q.end.from, {q.end.arc}, q.end.index, reached_e, edges);
+          if (end.arc == none) {  // on from the node at the end of r's last arc
+            route.peak = farthest(route.peak, end.from);
+            start_prev = q.end.from;
+            from = start = end.from;
+            arcs.clear();
+            continue;
+          }
+        }
+        route.top = walk_end_vertex(end);
+        route.end = end;
+        break;
+      }
+      for (const std::size_t r : joined) edges.push_back(summary(r));
     }
-    merging_start.push_back(merging_edges.size());
-    ++result.removed_branches;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      if (pairs[i].persistence() > delta || choice[i].alpha == none || choice[i].beta == none) continue;
+      merging_edges.insert(merging_edges.end(), sets[i].begin(), sets[i].end());
+      merging_start.push_back(merging_edges.size());
+      ++result.removed_branches;
+    }
   };
-  for (const bool down : {true, false}) {
-    const std::vector<Reeb_persistence_pair>& pairs = down ? P.sublevel_branches : P.superlevel_branches;
-    std::vector<Branch_choice> choice;
-    const Sweep W = sweep(pairs, down, choice);
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-      if (pairs[i].persistence() <= delta) merge_branch(pairs[i], choice[i], W, down);
-  }
+  for (const bool down : {true, false}) merge_branches(down ? P.sublevel_branches : P.superlevel_branches, down);
   for (std::size_t i = 0; i < P.loops.size(); ++i) {
     if (P.loops[i].persistence() > delta) continue;
     for (const std::size_t arc : cycles[i])
@@ -356,6 +527,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   release(adj);
   release(seen_stamp);
   release(pred);
+  release(used_stamp);
   release(cycles);
   if (stopped(0.2)) return result;
   // Spines and strips.
@@ -390,6 +562,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 
   release(merging_edges);
   release(merging_start);
+  result.glued_triangles = Y.triangles.size();
 
   // The Reeb graph of the glued complex, with zero-height arcs contracted.
   Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
