@@ -126,7 +126,7 @@ const std::vector<Command>& commands() {
        "  --segment-turn-tolerance ST  see --segment-support (degrees, default 30)\n"
        "  --straight-confirmed SC  the turn rule of --segment-support applies only where the traces show it tells\n"
        "                   streets: of the checked segments a trip drives straight through, at least SC must be\n"
-       "                   confirmed by fixes (95 % upper confidence bound; default 0.9; 0: always applies).\n"
+       "                   confirmed by fixes (95 % upper confidence bound; default 0.75; 0: always applies).\n"
        "                   Random routes sampled hundreds of metres apart run straight while their segments cut\n"
        "                   blocks: there straight segments are confirmed no more often than the others\n"
        "  --local-support K  a segment longer than 4 SS is confirmed at a local distance instead of SS: from each\n"

@@ -115,15 +115,17 @@ struct Gps_trace_options {
   /// The turn rule is trusted only where the traces show that it tells streets: a segment the trip drives straight
   /// through must be confirmed by fixes at least this often among the checked segments (the 95 % Wilson upper
   /// bound of the share confirmed reaches it; Gps_trace_sample::turn_rule_used). Bus routes follow long straight
-  /// streets and their straight segments are confirmed (thinned Chicago traces: 0.92 to 0.99 of them); random
-  /// routes between fixes hundreds of metres apart run straight for kilometres while their segments cut blocks,
-  /// and there straightness says little (a synthetic taxi city at 42 s: 0.56 of the straight segments confirmed,
-  /// 0.56 of all; 0.22 to 0.83 where the synthetic cities of benchmark/README.md do not trust it): the rule drew
-  /// lines across blocks. The unconfirmed straight segments count against the rule too, so few checked segments
-  /// with none confirmed distrust it, and where most streets are driven by one or two trips the rule, though often
-  /// wrong, adds streets no other trip draws (synthetic cities of 150 trips lose up to 0.14 in F without it).
-  /// Default 0.9; 0: always trusted.
-  double min_straight_confirmed_fraction = 0.9;
+  /// streets and their straight segments are confirmed (Chicago's traces thinned to every 3rd to 12th fix: 0.83
+  /// to 0.99 of them, counted at the local distance); random routes between fixes hundreds of metres apart run
+  /// straight for kilometres while their segments cut blocks, and there straightness says little (a synthetic
+  /// taxi city at 42 s: 0.26 of the straight segments confirmed; 0.54 to 0.62 in the synthetic cities of 600 and
+  /// 3000 trips at 20 s, which lose 0.01 to 0.07 in F with the rule): the rule drew lines across blocks. The
+  /// unconfirmed straight segments count against the rule too, so few checked segments with none confirmed
+  /// distrust it, and where most streets are driven by one or two trips the rule, though often wrong, adds streets
+  /// no other trip draws (synthetic cities of 150 trips lose up to 0.19 in F without it). Default 0.75 (0.9 until
+  /// session 39: set when confirmation was counted at segment_support, it distrusted the rule on Chicago's every
+  /// 10th fix from its first, F 0.46 instead of 0.62); 0: always trusted.
+  double min_straight_confirmed_fraction = 0.75;
   /// Refuse (std::invalid_argument, before any is made) linking that would insert more points than this along the
   /// segments: one jump of 1,000 km between two fixes within a generous max_link_gap asked for 10^8 points at a
   /// spacing of 10 m. Default 2^26 (the traces of Chicago need about 500,000); 0: no limit.
