@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -122,6 +123,31 @@ TEST(UniformGrid, DenseCellsVisitInKeyOrder) {
   for (auto& x : p3) x = {u(rng), std::round(10 * u(rng)) / 10, u(rng)};
   p3.push_back({1, 1, 1});
   expect_key_order<3>(p3, 0.1);
+}
+
+// Queries far outside the box: cells more than 2^63 away (a map compared at a tiny threshold with one far away)
+// were converted from double to int64 unclamped, which is undefined behaviour (-fsanitize=undefined reports it).
+// They find nothing and a query inside still finds its points, for packed, dense and hashed frames.
+TEST(UniformGrid, QueriesFarOutsideTheBoxAreClamped) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const bool outlier : {false, true}) {
+    std::vector<std::array<double, 2>> p{{0, 0}, {0.5, 0.5}, {1, 1}};
+    if (outlier) p.push_back({1e7, 0});  // 10^10 cells: hashed
+    const Uniform_grid<2> grid(p, 1e-3);
+    for (const std::array<double, 2> q : std::vector<std::array<double, 2>>{
+             {1e300, 0.5}, {-1e300, 0.5}, {0.5, 1e300}, {0.5, -1e300}, {inf, -inf}, {1e300, 1e300}}) {
+      std::vector<std::uint32_t> got;
+      grid.for_each_candidate(q, [&](std::uint32_t j) { got.push_back(j); });
+      EXPECT_TRUE(got.empty()) << q[0] << " " << q[1] << (outlier ? " hashed" : "");
+    }
+    std::vector<std::uint32_t> got;
+    grid.for_each_candidate({0.5, 0.5}, [&](std::uint32_t j) { got.push_back(j); });
+    EXPECT_EQ(got, (std::vector<std::uint32_t>{1}));
+  }
+  const Grid_frame<2> tiny(std::vector<std::array<double, 2>>{{0, 0}, {1, 1}}, 1e-300);  // hashed: cell 2^-60
+  EXPECT_TRUE(tiny.hashed());
+  EXPECT_EQ(tiny.cell_of({1e300, -1e300})[0], std::int64_t(1) << 62);
+  EXPECT_EQ(tiny.cell_of({1e300, -1e300})[1], -(std::int64_t(1) << 62));
 }
 
 // A dense grid filled point by point refuses a point outside the box of its frame (the hash map took it).

@@ -74,11 +74,16 @@ class Grid_frame {
     Cell q;
     visit<0>(c, q, &m_count, [&](const Cell& r) { f(dense_index(r)); });
   }
+  /// The cell of p; a query point far outside the box (more cells away than a 64-bit integer holds: a map
+  /// compared at a tiny threshold with one far away, a NaN) is clamped before the conversion, which would be
+  /// undefined behaviour: to a cell below the box with no neighbour in it (packed) or at most 2^62 away (hashed:
+  /// its neighbours' coordinates cannot overflow).
   Cell cell_of(const Point& p) const {
+    const double lo = m_hashed ? -0x1p62 : -2.0, hi = m_hashed ? 0x1p62 : double(kLimit - 1);
     Cell c;
     for (int k = 0; k < D; ++k) {
-      c[k] = static_cast<std::int64_t>(std::floor((p[k] - m_low[k]) / m_cell));
-      if (!m_hashed) c[k] = std::min<std::int64_t>(c[k], kLimit - 1);
+      const double t = std::floor((p[k] - m_low[k]) / m_cell);
+      c[k] = static_cast<std::int64_t>(t >= lo ? (t <= hi ? t : hi) : lo);  // NaN: lo
     }
     return c;
   }
