@@ -237,7 +237,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                        {"points", "image", "ink", "ink-threshold", "tracks", "distance-matrix", "graph", "radius",
                         "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density",
                         "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support",
-                        "segment-turn-tolerance", "straight-confirmed", "local-support", "min-local-support", "prune",
+                        "segment-turn-tolerance", "straight-confirmed", "quiet-ends", "local-support", "min-local-support", "prune",
                         "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap",
                         "max-triangles",
                         "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg", "picture-size"});
@@ -326,10 +326,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
                args.has("density-heading-tolerance") || args.has("undirected") || args.has("merge") ||
                args.has("first-point-positions") || args.has("segment-support") ||
                args.has("segment-turn-tolerance") || args.has("straight-confirmed") || args.has("local-support") ||
-               args.has("min-local-support")))
+               args.has("min-local-support") || args.has("quiet-ends")))
     throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --min-lateral-density, "
                       "--density-radius, --density-heading-tolerance, --first-point-positions, --segment-support, "
-                      "--segment-turn-tolerance, --straight-confirmed, --local-support, --min-local-support and "
+                      "--segment-turn-tolerance, --straight-confirmed, --quiet-ends, --local-support, --min-local-support and "
                       "--merge apply to --tracks only");
   if (!gps && args.has("lonlat")) throw Usage_error("--lonlat applies to --tracks only");
   const bool lonlat = args.has("lonlat");
@@ -439,6 +439,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
         throw Usage_error("--local-support must be a whole number of fixes in [0, 1024] (0: off)");
       go.local_support_fixes = static_cast<std::size_t>(v);
     }
+    if (args.has("quiet-ends")) {
+      const double v = args.get_double("quiet-ends");
+      if (!(v >= 0 && v <= 1024 && v == std::floor(v)))
+        throw Usage_error("--quiet-ends must be a whole number of fixes in [0, 1024] (0: off)");
+      go.quiet_end_fixes = static_cast<std::size_t>(v);
+    }
     if (args.has("min-local-support")) go.min_local_support = args.get_double("min-local-support");
     if (!(go.min_local_support > 0 && go.min_local_support <= 1))
       throw Usage_error("--min-local-support must be in (0, 1] (a fraction of the segment support)");
@@ -537,6 +543,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"min_local_support\": " + json_number(go.min_local_support) +
                  ", \"locally_checked\": " + std::to_string(sample.locally_checked) +
                  ", \"locally_rejected\": " + std::to_string(sample.locally_rejected) +
+                 ", \"quiet_ends\": " + std::to_string(go.quiet_end_fixes) +
+                 ", \"quiet_segments\": " + std::to_string(sample.quiet_segments) +
                  ", \"min_density\": " +
                  json_number(go.min_relative_density) + ", \"min_lateral_density\": " +
                  json_number(go.min_lateral_density) + ", \"density_radius\": " + json_number(sample.density_radius) +

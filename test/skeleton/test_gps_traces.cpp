@@ -845,15 +845,33 @@ TEST(GpsTraces, AStreetOneTripDrivesStraightIsKept) {
     return n;
   };
   EXPECT_GE(samples_on_street(S), 25u);  // 450 m at a spacing of 15 m
+  EXPECT_EQ(S.quiet_segments, 0u);  // the rule is trusted
   // The lone trip without the fifteen: its three straight segments are all the traces can check, and none is
-  // confirmed (the 95 % upper bound of 0 in 3 is 0.56): the rule is not trusted and the trip breaks, unless the
-  // fraction asked for is 0.
+  // confirmed (the 95 % upper bound of 0 in 3 is 0.56): the rule is not trusted. Their ends are quiet (no other
+  // fix within 20 m: no other trip could have confirmed them), so they are used all the same; without that (or
+  // with a fix of another trip near each end) the trip breaks, unless the fraction asked for is 0.
   std::vector<Gps_trip> lone = l_shaped_streets();
   lone.push_back(trips.back());
   Gps_trace_options p = o;
   p.min_confirmed_fraction = 0;  // none of the checked segments is confirmed: keep the check on anyway
+  const Gps_trace_sample Q = sample_gps_traces(lone, 30.0, p);
+  expect_segment_counts(Q, 3, 0, 3, 0, 3, false);
+  EXPECT_EQ(Q.quiet_segments, 3u);
+  EXPECT_GE(samples_on_street(Q), 25u);
+  // Two fixes of another trip within 20 m of every fix but the last: each segment has an end with 3 positions
+  // (its own counted) around it, quiet for a count of 4, not for 3.
+  std::vector<Gps_trip> crowded = lone;
+  for (const Gps_fix& f : lone.back())
+    if (f.x < 400) crowded.push_back({{f.x + 5, f.y - 8, 90000 + f.x}, {f.x - 6, f.y + 7, 90001 + f.x}});
+  p.quiet_end_fixes = 3;
+  const Gps_trace_sample C = sample_gps_traces(crowded, 30.0, p);
+  EXPECT_EQ(C.quiet_segments, 0u);
+  p.quiet_end_fixes = 4;
+  EXPECT_EQ(sample_gps_traces(crowded, 30.0, p).quiet_segments, 3u);
+  p.quiet_end_fixes = 0;
   const Gps_trace_sample L = sample_gps_traces(lone, 30.0, p);
   expect_segment_counts(L, 3, 0, 3, 0, 0, false);
+  EXPECT_EQ(L.quiet_segments, 0u);
   EXPECT_EQ(samples_on_street(L), 4u);  // the fixes only
   p.min_straight_confirmed_fraction = 0;
   const Gps_trace_sample trusted = sample_gps_traces(lone, 30.0, p);
@@ -912,6 +930,7 @@ TEST(GpsTraces, StraightRoutesThatCutBlocksDoNotTrustTheTurnRule) {
   o.max_link_gap = 200;
   const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
   expect_segment_counts(S, 60, 30, 60, 30, 0, false);
+  EXPECT_EQ(S.quiet_segments, 0u);  // the diagonals' ends lie on busy corners
   double farthest = 0;
   for (std::size_t i = 0; i < S.points.rows; ++i)
     farthest = std::max(farthest, distance_to_grid(S.points.row(i)[0], S.points.row(i)[1]));
@@ -1064,6 +1083,15 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
   }
   o.local_support_fixes = 1024;  // the largest allowed
   EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, o));
+  o.quiet_end_fixes = 1025;
+  try {
+    sample_gps_traces(trips, 20.0, o);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("quiet_end_fixes must be at most 1024, got 1025"), std::string::npos)
+        << e.what();
+  }
+  o.quiet_end_fixes = 4;
   for (const double bad : {0.0, -0.5, 1.01, std::nan("")}) {
     o.min_local_support = bad;
     try {
