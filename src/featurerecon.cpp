@@ -460,7 +460,8 @@ int main(int argc, char** argv) {
                    c.name);
       return 1;
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "featurerecon %s: error: %s\n", c.name, Outputs::name_targets(e.what()).c_str());
+      std::fprintf(stderr, "featurerecon %s: error: %s\n", c.name,
+                   name_option_flags(Outputs::name_targets(e.what())).c_str());
       return 1;
     }
   }

@@ -8,6 +8,7 @@
 #include <climits>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -327,6 +328,44 @@ skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>
       if (!source.file.empty()) files += (files.empty() ? "" : ", ") + source.file;
     throw io::Input_error(files + ": --lonlat: " + what);
   }
+}
+
+std::string name_option_flags(const std::string& message) {
+  // The option fields that commands set from a flag of another name (fields of Skeleton_options,
+  // Road_map_options, Gps_trace_options and Embedding_options).
+  static const std::pair<const char*, const char*> flags[] = {
+      {"max_triangles", "--max-triangles"},
+      {"sample_spacing", "--sample-spacing"},
+      {"max_link_gap", "--link-gap"},
+      {"heading_tolerance", "--heading-tolerance"},
+      {"min_relative_density", "--min-density"},
+      {"min_lateral_density", "--min-lateral-density"},
+      {"density_radius", "--density-radius"},
+      {"density_heading_tolerance", "--density-heading-tolerance"},
+      {"segment_support", "--segment-support"},
+      {"segment_turn_tolerance", "--segment-turn-tolerance"},
+      {"min_straight_confirmed_fraction", "--straight-confirmed"},
+      {"quiet_end_fixes", "--quiet-ends"},
+      {"local_support_fixes", "--local-support"},
+      {"min_local_support", "--min-local-support"},
+      {"merge_distance", "--merge"},
+      {"branch_merge_distance", "--branch-merge"},
+      {"repair_distance", "--repair"},
+      {"prune_height", "--prune"},
+      {"level_width", "--level-width"},
+      {"max_gap", "--max-gap"},
+      {"smoothing_iterations", "--smoothing"},
+  };
+  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::string named;
+  for (const auto& [field, flag] : flags) {
+    const std::string f = field;
+    bool found = false;
+    for (std::size_t at = message.find(f); at != std::string::npos && !found; at = message.find(f, at + 1))
+      found = (at == 0 || !word(message[at - 1])) && (at + f.size() == message.size() || !word(message[at + f.size()]));
+    if (found) named += (named.empty() ? "" : ", ") + f + " is " + flag;
+  }
+  return named.empty() ? message : message + " (on the command line: " + named + ")";
 }
 
 }  // namespace cli

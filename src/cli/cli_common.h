@@ -131,6 +131,10 @@ std::string json_statistic(double x, Status status);
 /// Quotes a string for JSON (", \ and control characters escaped).
 std::string json_string(const std::string& s);
 
+/// `message` (an error of the library, which names its options by their fields) followed by the command-line
+/// flag of every option field it names, e.g. "... (on the command line: sample_spacing is --sample-spacing)".
+std::string name_option_flags(const std::string& message);
+
 }  // namespace cli
 }  // namespace FeatureRecon
 

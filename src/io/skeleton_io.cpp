@@ -178,17 +178,29 @@ void write_skeleton_geojson(const std::string& path, const Skeleton_graph& g, bo
 }
 
 void write_skeleton_ply(const std::string& path, const Skeleton_graph& g) {
+  // The nodes first (PLY vertex i is node i), then the interior points of each arc's polyline: arcs meeting at a
+  // node share its vertex, so the edges form the skeleton's graph. A polyline end away from its node's position
+  // (not written by the embedding) gets a vertex of its own.
   std::vector<std::array<double, 3>> pts;
   std::vector<std::array<std::size_t, 2>> segs;
+  for (auto v : boost::make_iterator_range(vertices(g))) pts.push_back(g[v].position);
   for (auto e : boost::make_iterator_range(edges(g))) {
     const auto& line = g[e].polyline;
+    const std::size_t ends[2] = {static_cast<std::size_t>(source(e, g)), static_cast<std::size_t>(target(e, g))};
+    std::size_t previous = 0;
     for (std::size_t i = 0; i < line.size(); ++i) {
-      pts.push_back(line[i]);
-      if (i > 0) segs.push_back({pts.size() - 2, pts.size() - 1});
+      std::size_t index = pts.size();
+      if (i == 0 || i + 1 == line.size())
+        for (const std::size_t node : ends)
+          if (pts[node] == line[i]) index = node;
+      if (index == pts.size()) pts.push_back(line[i]);
+      if (i > 0) segs.push_back({previous, index});
+      previous = index;
     }
   }
   std::ostringstream os;
-  os << "ply\nformat ascii 1.0\ncomment FeatureRecon skeleton: arcs as polylines\nelement vertex " << pts.size()
+  os << "ply\nformat ascii 1.0\ncomment FeatureRecon skeleton: the first " << num_vertices(g)
+     << " vertices are its nodes, the edges draw its arcs as polylines\nelement vertex " << pts.size()
      << "\nproperty double x\nproperty double y\nproperty double z\nelement edge " << segs.size()
      << "\nproperty int vertex1\nproperty int vertex2\nend_header\n";
   for (const auto& p : pts) os << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";

@@ -790,7 +790,7 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
   o.max_density_pairs = 8;
   const std::string m = FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({trip}, 10.0, o); });
   EXPECT_NE(m.find("the density filter would compare 9 pairs of the 3 samples (more than max_density_pairs, 8): the "
-                   "sample spacing (1, --sample-spacing) is small for the density radius (20, --density-radius)"),
+                   "sample spacing (sample_spacing 1) is small for the density radius (density_radius 20)"),
             std::string::npos)
       << m;
   o.max_density_pairs = 9;  // exactly as many: runs
@@ -1073,25 +1073,22 @@ TEST(GpsTraces, TheLocalDistanceIsTheKthNearestPositionAtTheSparserEnd) {
 TEST(GpsTraces, LocalSupportOptionsAreChecked) {
   const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 5, 30)};
   Gps_trace_options o;
-  o.local_support_fixes = 1025;
-  try {
-    sample_gps_traces(trips, 20.0, o);
-    ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("local_support_fixes must be at most 1024, got 1025"), std::string::npos)
-        << e.what();
+  // Both counts of nearest fixes: one above the largest allowed is named, the largest is allowed.
+  for (std::size_t Gps_trace_options::*count : {&Gps_trace_options::local_support_fixes,
+                                                &Gps_trace_options::quiet_end_fixes}) {
+    const std::string name =
+        count == &Gps_trace_options::local_support_fixes ? "local_support_fixes" : "quiet_end_fixes";
+    Gps_trace_options bad = o;
+    bad.*count = 1025;
+    try {
+      sample_gps_traces(trips, 20.0, bad);
+      ADD_FAILURE() << "no error for " << name;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(name + " must be at most 1024, got 1025"), std::string::npos) << e.what();
+    }
+    bad.*count = 1024;
+    EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, bad)) << name;
   }
-  o.local_support_fixes = 1024;  // the largest allowed
-  EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, o));
-  o.quiet_end_fixes = 1025;
-  try {
-    sample_gps_traces(trips, 20.0, o);
-    ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("quiet_end_fixes must be at most 1024, got 1025"), std::string::npos)
-        << e.what();
-  }
-  o.quiet_end_fixes = 4;
   for (const double bad : {0.0, -0.5, 1.01, std::nan("")}) {
     o.min_local_support = bad;
     try {

@@ -440,7 +440,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   const Simplicial_complex_2 K = internal::flag_complex_2(
       graph, max_triangles, stage(0.0, 0.2), fn,
       max_triangles == options.max_triangles && max_triangles > 0
-          ? "max_triangles of the options, --max-triangles on the command line"
+          ? "max_triangles of the options"
           : "the Reeb graph's limit: 2^31 - 1 edges and triangles together, 2^30 edges");
   // A stage ended by the callback (its own status, or a stop the stage wrapper saw) ends the run.
   auto ended = [&stopped, &result](Status stage_status) {

@@ -302,8 +302,8 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lat
     if (pairs > static_cast<double>(max_pairs))
       FeatureRecon::internal::throw_invalid_argument(
           fn, "the density filter would compare ", pairs, " pairs of the ", S.points.rows, " samples (more than ",
-          "max_density_pairs, ", max_pairs, "): the sample spacing (", S.sample_spacing, ", --sample-spacing) is ",
-          "small for the density radius (", R, ", --density-radius); raise the spacing, lower the radius, or turn the ",
+          "max_density_pairs, ", max_pairs, "): the sample spacing (sample_spacing ", S.sample_spacing, ") ",
+          "is small for the density radius (density_radius ", R, "); raise the spacing, lower the radius, or turn the ",
           "filter off (min_relative_density and min_lateral_density 0)");
   }
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
@@ -439,12 +439,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   if (!(options.segment_turn_tolerance >= 0 && options.segment_turn_tolerance <= 180))
     FeatureRecon::internal::throw_invalid_argument(fn, "segment_turn_tolerance must be in [0, 180] degrees, got ",
                                                    options.segment_turn_tolerance);
-  if (options.local_support_fixes > 1024)
-    FeatureRecon::internal::throw_invalid_argument(fn, "local_support_fixes must be at most 1024, got ",
-                                                   options.local_support_fixes);
-  if (options.quiet_end_fixes > 1024)
-    FeatureRecon::internal::throw_invalid_argument(fn, "quiet_end_fixes must be at most 1024, got ",
-                                                   options.quiet_end_fixes);
+  auto check_fix_count = [&](const char* name, std::size_t value) {  // counts of nearest fixes looked up
+    if (value > 1024) FeatureRecon::internal::throw_invalid_argument(fn, name, " must be at most 1024, got ", value);
+  };
+  check_fix_count("local_support_fixes", options.local_support_fixes);
+  check_fix_count("quiet_end_fixes", options.quiet_end_fixes);
   if (!(options.min_local_support > 0 && options.min_local_support <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "min_local_support must be in (0, 1], got ",
                                                    options.min_local_support);
@@ -508,7 +507,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
           fn, "linking consecutive fixes would insert about ", inserted, " points along the segments (more than ",
           "max_inserted_points, ", options.max_inserted_points, "; the longest linked segment, from trip ",
           longest_trip, ", fix ", longest_fix, ", is ", longest, " long): lower max_link_gap (", S.max_link_gap,
-          ", --link-gap) or raise sample_spacing (", S.sample_spacing, ", --sample-spacing)");
+          ") or raise sample_spacing (", S.sample_spacing, ")");
   }
   const double spacing2 = S.sample_spacing * S.sample_spacing;
   const double cell = S.sample_spacing;

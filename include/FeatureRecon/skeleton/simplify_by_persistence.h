@@ -175,31 +175,35 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   const std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> seen_stamp(nn, 0);
   std::size_t stamp = 0;
-  auto bfs = [&](std::size_t start, auto inside, auto stop, std::vector<std::size_t>& pred_arc) {
+  // The start of a search (both below): a new stamp, `start` reached with no predecessor; the order of reaching.
+  auto start_search = [&](std::size_t start, std::vector<std::size_t>& pred_arc) {
     if (pred_arc.size() != nn) pred_arc.assign(nn, none);
     ++stamp;
-    std::vector<std::size_t> order{start};
     seen_stamp[start] = stamp;
     pred_arc[start] = none;
+    return std::vector<std::size_t>{start};
+  };
+  // Reaches node y over `arc` if it is new to this search and accepted by `inside`; says whether it did.
+  auto reach = [&](std::size_t y, std::size_t arc, auto inside, std::vector<std::size_t>& pred_arc,
+                   std::vector<std::size_t>& order) {
+    if (seen_stamp[y] == stamp || !inside(y)) return false;
+    seen_stamp[y] = stamp;
+    pred_arc[y] = arc;
+    order.push_back(y);
+    return true;
+  };
+  auto bfs = [&](std::size_t start, auto inside, auto stop, std::vector<std::size_t>& pred_arc) {
+    std::vector<std::size_t> order = start_search(start, pred_arc);
     if (stop(start)) return order;
     for (std::size_t i = 0; i < order.size(); ++i)
       for (const auto& [y, arc] : adj[order[i]])
-        if (seen_stamp[y] != stamp && inside(y)) {
-          seen_stamp[y] = stamp;
-          pred_arc[y] = arc;
-          order.push_back(y);
-          if (stop(y)) return order;
-        }
+        if (reach(y, arc, inside, pred_arc, order) && stop(y)) return order;
     return order;  // the nodes reached
   };
   // The search of pi1 (below): as bfs() with stop `target`, but a node accepted by `fork` ends it when it is
   // strictly nearer (in arcs) than every node accepted by `target`. Returns the node it ended at, or none.
   auto search = [&](std::size_t start, auto inside, auto target, auto fork, std::vector<std::size_t>& pred_arc) {
-    if (pred_arc.size() != nn) pred_arc.assign(nn, none);
-    ++stamp;
-    std::vector<std::size_t> order{start};
-    seen_stamp[start] = stamp;
-    pred_arc[start] = none;
+    std::vector<std::size_t> order = start_search(start, pred_arc);
     if (target(start)) return start;
     std::size_t found = fork(start) ? start : none;
     for (std::size_t i = 0, layer_end = 0; i < order.size(); ++i) {
@@ -208,10 +212,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
         layer_end = order.size();
       }
       for (const auto& [y, arc] : adj[order[i]])
-        if (seen_stamp[y] != stamp && inside(y)) {
-          seen_stamp[y] = stamp;
-          pred_arc[y] = arc;
-          order.push_back(y);
+        if (reach(y, arc, inside, pred_arc, order)) {
           if (target(y)) return y;
           if (found == none && fork(y)) found = y;
         }
