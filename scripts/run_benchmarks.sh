@@ -15,7 +15,7 @@ filter=${FILTER:-.}
 for program in bench_reeb_graph bench_rips_graph bench_skeleton_end_to_end bench_sample_elimination bench_lloyd bench_discrete_lloyd bench_bilateral_filter; do
   for name in $("$bin/$program" --benchmark_list_tests | grep -E "$filter"); do
     /usr/bin/time -f "peak_rss_kb %M" "$bin/$program" --benchmark_filter="^${name}\$" 2>&1 \
-      | grep -E "^(reeb|rips|skeleton|sampling|knn8|mds2000)/|peak_rss_kb" | tr '\n' ' ' | sed 's/$/\n/' | tee -a "$results"
+      | grep -E "^(reeb|simplify|dead_ends|rips|skeleton|sampling|knn8|mds2000)/|peak_rss_kb" | tr '\n' ' ' | sed 's/$/\n/' | tee -a "$results"
   done
 done
 echo "results in $results"

@@ -5,9 +5,12 @@
 // 30,000 Chicago GPS points at r = 12 m with the geodesic function.
 // Simplification beside the Reeb graph it starts from, on a comb of 1,000,000 vertices (a path with a spur at every
 // vertex, f rising along the path; delta 2 removes all 500,000 spurs): no library simplifies Reeb graphs, so the
-// peer is our own Reeb graph of the same input.
+// peer is our own Reeb graph of the same input. The same for the shapes that were quadratic before session 39:
+// a flat stem with a tall tooth at every vertex ("teethN") and a fan of loops ("fanN"), simplified at delta 1, and
+// joining the dead ends of a street with a stub at every other vertex ("stubsN", connect_dead_ends with a bound).
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
+#include <FeatureRecon/skeleton/repair_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 #include <FeatureRecon/skeleton/simplify_by_persistence.h>
 
@@ -39,6 +42,11 @@ struct Input {
   std::vector<std::array<double, 3>> positions;
 };
 
+/// The number at the end of an input's name ("teeth400000": 400000).
+std::size_t size_of(const std::string& name) {
+  return std::stoul(name.substr(name.find_first_of("0123456789")));
+}
+
 /// Inputs by name, built once per process.
 const Input& input(const std::string& name) {
   static std::map<std::string, std::unique_ptr<Input>> cache;
@@ -60,6 +68,42 @@ const Input& input(const std::string& name) {
     }
     for (std::size_t i = 0; i < k; ++i) slot->f.push_back(2.0 * static_cast<double>(i) + 1.5);  // spur tips
     slot->complex = sk::make_simplicial_complex_2(2 * k, std::move(edges), {});
+  } else if (name.rfind("teeth", 0) == 0) {  // the unit tests' flat comb: stem f = i * 1e-6, tooth f(i) + 0.5
+    const std::size_t n = size_of(name);
+    std::vector<sk::Edge> edges;
+    slot->f.resize(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      slot->f[i] = 1e-6 * static_cast<double>(i);
+      slot->f[n + i] = slot->f[i] + 0.5;
+      if (i + 1 < n) edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(i + 1)});
+      edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(n + i)});
+    }
+    slot->complex = sk::make_simplicial_complex_2(2 * n, std::move(edges), {});
+  } else if (name.rfind("fan", 0) == 0) {  // vertex 0 joined to every vertex of the path 1..n, f = 0.5 + 1e-6 i
+    const std::size_t n = size_of(name);
+    std::vector<sk::Edge> edges;
+    slot->f.assign(n + 1, 0.0);
+    for (std::size_t i = 1; i <= n; ++i) {
+      slot->f[i] = 0.5 + 1e-6 * static_cast<double>(i);
+      edges.push_back({0, static_cast<sk::Vertex_index>(i)});
+      if (i < n) edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(i + 1)});
+    }
+    slot->complex = sk::make_simplicial_complex_2(n + 1, std::move(edges), {});
+  } else if (name.rfind("stubs", 0) == 0) {  // a street on the x axis, a stub from y 0.5 to 5 at every odd x
+    const std::size_t length = 2 * size_of(name) + 2;
+    std::vector<sk::Edge> edges;
+    for (std::size_t i = 0; i < length; ++i) {
+      slot->positions.push_back({double(i), 0.0, 0.0});
+      if (i > 0) edges.push_back({sk::Vertex_index(i - 1), sk::Vertex_index(i)});
+    }
+    for (std::size_t j = 1; j + 1 < length; j += 2) {
+      const auto a = sk::Vertex_index(slot->positions.size());
+      slot->positions.push_back({double(j), 0.5, 0.0});
+      slot->positions.push_back({double(j), 5.0, 0.0});
+      edges.push_back({a, sk::Vertex_index(a + 1)});
+    }
+    for (const auto& p : slot->positions) slot->f.push_back(p[0] + 1e-3 * p[1]);
+    slot->complex = sk::make_simplicial_complex_2(slot->positions.size(), std::move(edges), {});
   } else {
     const std::size_t kt = std::stoul(name.substr(5));  // "torusN": N thousand triangles
     const std::size_t nu = kt == 100 ? 250 : kt == 400 ? 500 : 2000, nv = kt == 100 ? 200 : kt == 400 ? 400 : 1000;
@@ -90,16 +134,37 @@ void BM_reeb_featurerecon(benchmark::State& state, const std::string& name) {
   report(state, in, R.nodes.size(), R.arcs.size(), R.loops());
 }
 
-void BM_simplify_featurerecon(benchmark::State& state, const std::string& name) {
+void BM_simplify_featurerecon(benchmark::State& state, const std::string& name, double delta) {
   const Input& in = input(name);
   sk::Reeb_simplification_result S;
   for (auto _ : state) {
     const sk::Augmented_reeb_graph A = sk::compute_augmented_reeb_graph(in.complex, in.f);
-    S = sk::simplify_by_persistence(A, 2.0);
+    S = sk::simplify_by_persistence(A, delta);
     benchmark::DoNotOptimize(S);
   }
   state.counters["removed_branches"] = static_cast<double>(S.removed_branches);
+  state.counters["removed_loops"] = static_cast<double>(S.removed_loops);
+  state.counters["glued_triangles"] = static_cast<double>(S.glued_triangles);
   report(state, in, S.graph.nodes.size(), S.graph.arcs.size(), S.graph.loops());
+}
+
+/// The Reeb graph and the joining of its dead ends closer than 1 (each stub's end to the street below it, which is
+/// split there), the x coordinate as the bound.
+void BM_dead_ends_featurerecon(benchmark::State& state, const std::string& name) {
+  const Input& in = input(name);
+  sk::Reeb_dead_end_result J;
+  sk::Reeb_repair_options options;
+  options.bound = [&in](sk::Vertex_index v) { return in.positions[v][0]; };
+  auto distance = [&in](sk::Vertex_index a, sk::Vertex_index b) {
+    return std::hypot(in.positions[a][0] - in.positions[b][0], in.positions[a][1] - in.positions[b][1]);
+  };
+  for (auto _ : state) {
+    const sk::Reeb_graph R = sk::compute_augmented_reeb_graph(in.complex, in.f).reeb_graph();
+    J = sk::connect_dead_ends(R, in.f, 1.0, distance, options);
+    benchmark::DoNotOptimize(J);
+  }
+  state.counters["connected"] = static_cast<double>(J.connected);
+  report(state, in, J.graph.nodes.size(), J.graph.arcs.size(), J.graph.loops());
 }
 
 #ifdef FEATURERECON_WITH_VTK
@@ -159,7 +224,7 @@ void register_all() {
     else
       b->MinTime(2.0);
     if (name == "comb1M") {  // the simplification of the same input, Reeb graph included; VTK needs triangles
-      benchmark::RegisterBenchmark("simplify/featurerecon/comb1M", BM_simplify_featurerecon, name)
+      benchmark::RegisterBenchmark("simplify/featurerecon/comb1M", BM_simplify_featurerecon, name, 2.0)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime()
           ->Iterations(3);
@@ -172,6 +237,28 @@ void register_all() {
           ->UseRealTime()
           ->Iterations(1);
 #endif
+  }
+  // Shapes that were quadratic (session 39), each beside its own Reeb graph; the simplification and the repair
+  // include it. 4,000 as in the unit tests (131 s and 174 s before; stubs 40,000: 6.0 s), then tenfold sizes.
+  for (const std::string size : {"4000", "40000", "400000"}) {
+    for (const std::string shape : {"teeth", "fan", "stubs"}) {
+      const std::string name = shape + size;
+      const std::string stage = shape == "stubs" ? "dead_ends" : "simplify";
+      for (const std::string what : {std::string("reeb"), stage}) {
+        auto* b = what == "reeb" ? benchmark::RegisterBenchmark(("reeb/featurerecon/" + name).c_str(),
+                                                                BM_reeb_featurerecon, name)
+                  : what == "simplify"
+                      ? benchmark::RegisterBenchmark(("simplify/featurerecon/" + name).c_str(),
+                                                     BM_simplify_featurerecon, name, 1.0)
+                      : benchmark::RegisterBenchmark(("dead_ends/featurerecon/" + name).c_str(),
+                                                     BM_dead_ends_featurerecon, name);
+        b->Unit(benchmark::kMillisecond)->UseRealTime();
+        if (size == "4000")
+          b->MinTime(1.0);
+        else
+          b->Iterations(3);
+      }
+    }
   }
 }
 }  // namespace

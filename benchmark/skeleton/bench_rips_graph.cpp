@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
 // Rips 2-complex construction: FeatureRecon (build_rips_graph + build_flag_complex_2) vs GUDHI
-// (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius.
+// (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius; one case with an outlier far
+// away (the float filter of the brute-force search was centred at the mean: every pair went to the exact stage).
 #include <FeatureRecon/skeleton/embed_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
@@ -55,6 +56,10 @@ const Case& get_case(const std::string& name) {
       for (double& x : p) x = g(rng);
       slot->points.push_back(p);
     }
+    slot->radius = 6.5;
+  } else if (name == "gaussian50d_5k_outlier") {  // the same points, one of them moved to 1e7 on the first axis
+    slot->points = get_case("gaussian50d_5k").points;
+    slot->points[2500][0] = 1e7;
     slot->radius = 6.5;
   }
   return *slot;
@@ -133,10 +138,18 @@ void BM_knn_cgal(benchmark::State& state, const std::string& name) {
 }
 
 /// Distance matrices for classical MDS (2,000 points): "circle50d" a noisy circle of radius 10 in R^50 (noise
-/// 0.3 per axis; Euclidean); "sqrt5d" the square roots of the distances of Gaussian points in R^5 (not Euclidean).
+/// 0.3 per axis; Euclidean); "sqrt5d" the square roots of the distances of Gaussian points in R^5 (not Euclidean);
+/// "uniform12" entries uniform in [1, 2] (no geometry; the top eigenvalues crowd together, the unit tests' case).
 std::vector<double> mds_matrix(const std::string& name, std::size_t n) {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> g(0.0, 1.0);
+  if (name == "uniform12") {
+    std::uniform_real_distribution<double> u(1.0, 2.0);
+    std::vector<double> D(n * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) D[i * n + j] = D[j * n + i] = u(rng);
+    return D;
+  }
   const std::size_t d = name == "circle50d" ? 50 : 5;
   std::vector<std::vector<double>> p(n, std::vector<double>(d));
   for (std::size_t i = 0; i < n; ++i) {
@@ -172,7 +185,7 @@ void BM_mds(benchmark::State& state, const std::string& name, std::size_t dense_
 }
 
 void register_all() {
-  for (const std::string name : {"circle50d", "sqrt5d"}) {
+  for (const std::string name : {"circle50d", "sqrt5d", "uniform12"}) {
     benchmark::RegisterBenchmark(("mds2000/featurerecon/" + name).c_str(), BM_mds, name, std::size_t(300))
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
@@ -189,7 +202,8 @@ void register_all() {
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
   }
-  for (const std::string name : {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k"}) {
+  for (const std::string name :
+       {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k", "gaussian50d_5k_outlier"}) {
     benchmark::RegisterBenchmark(("rips/featurerecon/" + name).c_str(), BM_rips_featurerecon, name)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()

@@ -223,7 +223,7 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
   };
   std::vector<Piece> pieces;
   pieces.reserve(R.arcs.size());
-  std::vector<Reeb_graph::Node> nodes = R.nodes;  // new nodes are appended: indices stay valid until the end
+  std::vector<Reeb_graph::Node> nodes;  // R's, then the new ones appended: indices stay valid until the end
   // Degrees, the input arc at each degree-1 node, the input arc each split node was a vertex of, and the pieces
   // at the lower and the upper end of each input arc (a dead end's piece changes when its arc splits).
   std::vector<std::size_t> degree(n0, 0), arc_at(n0, none), origin(n0, none), lower_piece, upper_piece;
@@ -240,6 +240,12 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
   std::vector<std::size_t> ends;
   for (std::size_t i = 0; i < n0; ++i)
     if (degree[i] == 1) ends.push_back(i);
+  // Each dead end adds at most one node (a split) and two pieces: room for all, so that nothing is copied to grow.
+  nodes.reserve(n0 + ends.size());
+  nodes.assign(R.nodes.begin(), R.nodes.end());
+  degree.reserve(n0 + ends.size());
+  origin.reserve(n0 + ends.size());
+  pieces.reserve(R.arcs.size() + 2 * ends.size());
   // With a bound: every vertex of the graph as a slot (node i is slot i, vertex k of input arc a is slot
   // first_slot[a] + k) sorted by bound, and where each slot is now: a node, or the piece that holds it. Splits
   // only move vertices between pieces and into new nodes, so the sorted list stays valid.
