@@ -2,7 +2,8 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 // Rips 2-complex construction: FeatureRecon (build_rips_graph + build_flag_complex_2) vs GUDHI
 // (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius; one case with an outlier far
-// away (the float filter of the brute-force search was centred at the mean: every pair went to the exact stage).
+// away (the float filter of the brute-force search was centred at the mean: every pair went to the exact stage)
+// and one with two clusters far apart (each is searched alone since session 40).
 #include <FeatureRecon/skeleton/embed_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
@@ -60,6 +61,10 @@ const Case& get_case(const std::string& name) {
   } else if (name == "gaussian50d_5k_outlier") {  // the same points, one of them moved to 1e7 on the first axis
     slot->points = get_case("gaussian50d_5k").points;
     slot->points[2500][0] = 1e7;
+    slot->radius = 6.5;
+  } else if (name == "gaussian50d_5k_two_clusters") {  // the same points, every other one moved by 1e7
+    slot->points = get_case("gaussian50d_5k").points;
+    for (std::size_t i = 1; i < slot->points.size(); i += 2) slot->points[i][0] += 1e7;
     slot->radius = 6.5;
   }
   return *slot;
@@ -203,7 +208,8 @@ void register_all() {
         ->UseRealTime();
   }
   for (const std::string name :
-       {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k", "gaussian50d_5k_outlier"}) {
+       {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k", "gaussian50d_5k_outlier",
+        "gaussian50d_5k_two_clusters"}) {
     benchmark::RegisterBenchmark(("rips/featurerecon/" + name).c_str(), BM_rips_featurerecon, name)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()

@@ -156,6 +156,10 @@ struct Kd_index {
 /// Values are in scaled units: a true squared distance times unit^2.
 struct Brute_force_index {
   const Point_matrix& m;
+  const std::uint32_t* rows = nullptr;  // the points indexed: rows[i] of m (nullptr: all, in order)
+  std::size_t size = 0;                 // how many
+  /// Coordinates of indexed point i.
+  const double* point(std::size_t i) const { return m.row(rows ? rows[i] : i); }
   Eigen::MatrixXf centred;          // d x n, (halves minus the centre's half) * scale, rounded to float; 0 if far
   Eigen::VectorXd norms;            // squared norms of the float columns, in double (exact products)
   std::vector<double> weight;       // per point i, its part w_i of the Gram error bound (see block())
@@ -165,19 +169,22 @@ struct Brute_force_index {
   double unit = 1;                  // scale / 2: applied to differences of whole coordinates
   double pair_constant = 0;         // the part of the Gram error bound common to all pairs
   double refine_relative = 0, refine_absolute = 0;  // refine()'s error bound
-  explicit Brute_force_index(const Point_matrix& pm) : m(pm) {
-    const std::size_t n = m.rows, d = m.dimension;
+  mutable std::vector<float> gram_buffer;           // block()'s Gram matrix
+  /// Indexes every point of `pm`, or the `subset` rows of it (ascending; the index numbers them 0, 1, ...).
+  explicit Brute_force_index(const Point_matrix& pm, const std::vector<std::uint32_t>* subset = nullptr)
+      : m(pm), rows(subset ? subset->data() : nullptr), size(subset ? subset->size() : pm.rows) {
+    const std::size_t n = size, d = m.dimension;
     centred.resize(static_cast<Eigen::Index>(d), static_cast<Eigen::Index>(n));
     far.assign(n, 0);
     half_centre.assign(d, 0.0);
     std::vector<double> column(n);
     if (n > 0)
       for (std::size_t c = 0; c < d; ++c) {
-        for (std::size_t i = 0; i < n; ++i) column[i] = m.row(i)[c];
+        for (std::size_t i = 0; i < n; ++i) column[i] = point(i)[c];
         std::nth_element(column.begin(), column.begin() + static_cast<std::ptrdiff_t>(n / 2), column.end());
         half_centre[c] = column[n / 2] / 2;
       }
-    const auto half_offset = [&](std::size_t i, std::size_t c) { return m.row(i)[c] / 2 - half_centre[c]; };
+    const auto half_offset = [&](std::size_t i, std::size_t c) { return point(i)[c] / 2 - half_centre[c]; };
     for (std::size_t i = 0; i < n; ++i) {
       column[i] = 0;
       for (std::size_t c = 0; c < d; ++c) column[i] = std::max(column[i], std::abs(half_offset(i, c)));
@@ -255,14 +262,19 @@ struct Brute_force_index {
   template <class Visit>
   void block(std::size_t b, std::size_t e, std::size_t from, Visit visit) const {
     const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
-    const Eigen::Index nc = static_cast<Eigen::Index>(m.rows - from);
-    const Eigen::MatrixXf gram = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() *
-                                 centred.middleCols(static_cast<Eigen::Index>(from), nc);
+    const Eigen::Index nc = static_cast<Eigen::Index>(size - from);
+    // One buffer for every block (the first is the largest): a fresh 5 MB matrix per block of 5,000 points in
+    // 50-D went back to the system and was faulted in again whenever the allocator trimmed its heap.
+    const std::size_t cells = static_cast<std::size_t>(nb) * static_cast<std::size_t>(nc);
+    if (gram_buffer.size() < cells) gram_buffer.resize(cells);
+    Eigen::Map<Eigen::MatrixXf> gram(gram_buffer.data(), nb, nc);
+    gram.noalias() = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() *
+                     centred.middleCols(static_cast<Eigen::Index>(from), nc);
     const double inf = std::numeric_limits<double>::infinity();
     for (Eigen::Index r = 0; r < nb; ++r) {
       const std::size_t i = b + static_cast<std::size_t>(r);
       const double ni = norms[static_cast<Eigen::Index>(i)], wi = weight[i] + pair_constant;
-      for (std::size_t j = from; j < m.rows; ++j) {
+      for (std::size_t j = from; j < size; ++j) {
         if (far[i] || far[j]) {
           visit(i, j, -inf, inf);
           continue;
@@ -277,7 +289,7 @@ struct Brute_force_index {
   /// Narrows the enclosure [lo, hi] of the squared distance of points i and j (scaled) by one from a direct sum in
   /// double: about 2 d 2^-53 wide relative to it, where the float one is wide relative to the data's spread.
   void refine(std::size_t i, std::size_t j, double& lo, double& hi) const {
-    const double *p = m.row(i), *q = m.row(j);
+    const double *p = point(i), *q = point(j);
     double s = 0;
     for (std::size_t c = 0; c < m.dimension; ++c) {
       const double t = (p[c] / 2 - q[c] / 2) * scale;
@@ -292,6 +304,67 @@ struct Brute_force_index {
     hi = std::min(hi, s + err);
   }
 };
+
+/// The points split into groups that no pair within `radius` crosses: a set is cut wherever its values of the
+/// coordinate with the widest range leave a gap wider than the radius (two points on either side differ by more
+/// than the radius in that coordinate alone), and each part is cut again the same way until nothing cuts. Only
+/// that one axis is sorted per set, so the split costs O(n (d + log n)) per level and may miss gaps on other
+/// axes (a search optimisation, not a clustering). For the brute force: its float filter centres the Gram matrix
+/// at one point, and a second cluster far away made every pair of that cluster go to the double stage. Groups
+/// hold ascending indices and come in the order of their first index; all points form one group when nothing cuts.
+inline std::vector<std::vector<std::uint32_t>> separated_groups(const Point_matrix& m, double radius) {
+  const std::size_t n = m.rows, d = m.dimension;
+  std::vector<std::vector<std::uint32_t>> done, todo(1);
+  todo[0].resize(n);
+  for (std::size_t i = 0; i < n; ++i) todo[0][i] = static_cast<std::uint32_t>(i);
+  // A computed difference b - a (b >= a) rounds by a relative 2^-53 at most, and it is not 0 unless b == a: when it
+  // exceeds radius (1 + 2^-50), the true difference exceeds the radius.
+  const double gap_limit = radius * (1 + 0x1p-50);
+  std::vector<std::pair<double, std::uint32_t>> key;
+  std::vector<double> lo, hi;  // the coordinates' ranges over a set
+  while (!todo.empty()) {
+    std::vector<std::uint32_t> set = std::move(todo.back());
+    todo.pop_back();
+    std::size_t axis = 0;
+    double widest = 0;
+    if (set.size() > 1) {
+      lo.assign(m.row(set[0]), m.row(set[0]) + d);  // row by row: the matrix is row-major
+      hi = lo;
+      for (const std::uint32_t i : set)
+        for (std::size_t c = 0; c < d; ++c) {
+          lo[c] = std::min(lo[c], m.row(i)[c]);
+          hi[c] = std::max(hi[c], m.row(i)[c]);
+        }
+      for (std::size_t c = 0; c < d; ++c)
+        if (hi[c] - lo[c] > widest) {  // inf when the range overflows: still the widest
+          widest = hi[c] - lo[c];
+          axis = c;
+        }
+    }
+    if (!(widest > gap_limit)) {  // no gap can be wider than the range
+      done.push_back(std::move(set));
+      continue;
+    }
+    key.clear();
+    for (const std::uint32_t i : set) key.emplace_back(m.row(i)[axis], i);
+    std::sort(key.begin(), key.end());
+    std::vector<std::vector<std::uint32_t>> parts(1);
+    for (std::size_t k = 0; k < key.size(); ++k) {
+      if (k > 0 && key[k].first - key[k - 1].first > gap_limit) parts.emplace_back();
+      parts.back().push_back(key[k].second);
+    }
+    if (parts.size() == 1) {
+      done.push_back(std::move(set));
+      continue;
+    }
+    for (std::vector<std::uint32_t>& part : parts) {
+      std::sort(part.begin(), part.end());
+      todo.push_back(std::move(part));
+    }
+  }
+  std::sort(done.begin(), done.end(), [](const auto& a, const auto& b) { return a.front() < b.front(); });
+  return done;
+}
 
 inline bool use_kd_tree(const Point_matrix& m, Neighbor_search s, const char* fn) {
   if (s == Neighbor_search::kd_tree && m.dimension > 3)
@@ -376,30 +449,52 @@ inline Proximity_graph rips_graph(const Point_matrix& m, double radius, const Pr
           g.edges.push_back(Edge{i, j});
     }
   } else {
-    internal::Brute_force_index index(m);
-    const std::size_t block = 256;
-    // The radius squared in the index's units, as an enclosure: radius * unit is exact unless it overflows (then
-    // infinite, as when its square overflows, and so is r2_lo: every finite upper bound is within) or underflows
-    // (absolute 2^-1075, far below the 2^-1074 added); the square rounds by a relative 2^-53.
-    const double rs = radius * index.unit, r2 = rs * rs;
-    const double r2_lo = r2 * (1 - 0x1p-50) - 0x1p-1074, r2_hi = r2 * (1 + 0x1p-50) + 0x1p-1074;
-    for (std::size_t b = 0; b < n; b += block) {
-      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) {
-        stopped = true;
-        break;
-      }
-      index.block(b, std::min(n, b + block), b, [&](std::size_t i, std::size_t j, double lo, double hi) {
-        if (j <= i || lo > r2_hi) return;
-        if (!(hi < r2_lo)) {  // the float enclosure straddles the radius: in double, then exactly
-          ++count.refined;
-          index.refine(i, j, lo, hi);
-          if (lo > r2_hi) return;
-          if (!(hi < r2_lo) &&
-              (++count.exact, !internal::distance_at_most(m.row(i), m.row(j), m.dimension, radius)))
-            return;
+    // Each group of points that no edge crosses is searched alone, with its own centre (separated_groups()).
+    const std::vector<std::vector<std::uint32_t>> groups = internal::separated_groups(m, radius);
+    double pairs = 0, pairs_done = 0;  // for the progress reports
+    for (const auto& group : groups) pairs += static_cast<double>(group.size()) * static_cast<double>(group.size());
+    // The edges among the points of a group (nullptr: all points).
+    auto search = [&](const std::vector<std::uint32_t>* group) {
+      internal::Brute_force_index index(m, group);
+      const std::size_t k = index.size, block = 256;
+      // The radius squared in the index's units, as an enclosure: radius * unit is exact unless it overflows (then
+      // infinite, as when its square overflows, and so is r2_lo: every finite upper bound is within) or underflows
+      // (absolute 2^-1075, far below the 2^-1074 added); the square rounds by a relative 2^-53.
+      const double rs = radius * index.unit, r2 = rs * rs;
+      const double r2_lo = r2 * (1 - 0x1p-50) - 0x1p-1074, r2_hi = r2 * (1 + 0x1p-50) + 0x1p-1074;
+      for (std::size_t b = 0; b < k; b += block) {
+        // Rows [b, b + block) of a group of k cost about (k - b) * block of its k^2 / 2 pairs.
+        const double fraction = 1 - static_cast<double>(k - b) * static_cast<double>(k - b) / (double(k) * double(k));
+        if (!FeatureRecon::internal::report_progress(options.progress,
+                                                     (pairs_done + fraction * double(k) * double(k)) / pairs)) {
+          stopped = true;
+          return;
         }
-        g.edges.push_back(Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
-      });
+        index.block(b, std::min(k, b + block), b, [&](std::size_t i, std::size_t j, double lo, double hi) {
+          if (j <= i || lo > r2_hi) return;
+          if (!(hi < r2_lo)) {  // the float enclosure straddles the radius: in double, then exactly
+            ++count.refined;
+            index.refine(i, j, lo, hi);
+            if (lo > r2_hi) return;
+            if (!(hi < r2_lo) &&
+                (++count.exact, !internal::distance_at_most(index.point(i), index.point(j), m.dimension, radius)))
+              return;
+          }
+          // The group is ascending: i < j stays.
+          g.edges.push_back(group ? Edge{(*group)[i], (*group)[j]}
+                                  : Edge{static_cast<Vertex_index>(i), static_cast<Vertex_index>(j)});
+        });
+      }
+      pairs_done += static_cast<double>(k) * static_cast<double>(k);
+    };
+    if (groups.size() == 1) {
+      search(nullptr);
+    } else {
+      for (const auto& group : groups) {
+        if (group.size() > 1) search(&group);
+        if (stopped) break;
+      }
+      std::sort(g.edges.begin(), g.edges.end());
     }
   }
   internal::add_edge_lengths(m, g, fn);
@@ -587,8 +682,8 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
 /// (inclusive, decided exactly on the double coordinates), weighted by the Euclidean distance.
 ///
 /// Candidates come from a CGAL kd-tree (dimension <= 3) or from blocked all-pairs distances with Eigen
-/// (higher dimension), and every candidate is decided by an exact predicate. Duplicate points are joined
-/// by edges of length 0.
+/// (higher dimension; groups of points that a gap wider than the radius separates on one axis are searched each
+/// alone), and every candidate is decided by an exact predicate. Duplicate points are joined by edges of length 0.
 /// \tparam PointRange a range of points; \tparam Traits a model of PointCoordinateTraits.
 /// \pre radius is finite and >= 0 (checked; throws). All points have the same positive dimension and finite
 ///      coordinates (checked; throws, naming the point).
