@@ -476,19 +476,27 @@ TEST(SimplifyByPersistence, RefusesAnInterruptedAugmentedGraph) {
 }
 
 namespace {
-/// A flat stem 0..n-1 (f = i * 1e-6) with a tooth at every stem vertex, n + i, up to f(i) + 0.5, or, when
-/// `falling`, up to f(i) + 0.5 - 2e-6 i with the last tooth the tallest (0.9): every tooth but the tallest dies at
-/// its stem vertex, persistence about 0.5.
-Complex_with_function flat_comb(std::size_t n, bool falling) {
+/// A stem 0..n-1 with f = stem(i) and a tooth at every stem vertex, vertex n + i, up to stem(i) + tooth(i).
+template <class Stem, class Tooth>
+Complex_with_function toothed_stem(std::size_t n, Stem stem, Tooth tooth) {
   std::vector<Edge> edges;
   std::vector<double> f(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
-    f[i] = 1e-6 * static_cast<double>(i);
-    f[n + i] = f[i] + (falling ? (i + 1 == n ? 0.9 : 0.5 - 2e-6 * static_cast<double>(i)) : 0.5);
+    f[i] = stem(i);
+    f[n + i] = f[i] + tooth(i);
     if (i + 1 < n) edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(i + 1)});
     edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(n + i)});
   }
   return make(2 * n, edges, {}, f);
+}
+
+/// A flat stem 0..n-1 (f = i * 1e-6) with a tooth at every stem vertex, n + i, up to f(i) + 0.5, or, when
+/// `falling`, up to f(i) + 0.5 - 2e-6 i with the last tooth the tallest (0.9): every tooth but the tallest dies at
+/// its stem vertex, persistence about 0.5.
+Complex_with_function flat_comb(std::size_t n, bool falling) {
+  return toothed_stem(
+      n, [](std::size_t i) { return 1e-6 * static_cast<double>(i); },
+      [&](std::size_t i) { return falling ? (i + 1 == n ? 0.9 : 0.5 - 2e-6 * static_cast<double>(i)) : 0.5; });
 }
 }  // namespace
 
@@ -566,15 +574,9 @@ TEST(SimplifyByPersistence, ATallToothsPathGoesOnFromWhereShorterOnesStop) {
   // short tooth's path stops at the next stem vertex; the tall tooth's goes on as theirs, from where each stopped,
   // up to 5.5. Delta 0.6 keeps the tall tooth, 6 merges it too: one arc.
   const std::size_t n = 20;
-  std::vector<Edge> edges;
-  std::vector<double> f(2 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    f[i] = static_cast<double>(i);
-    f[n + i] = f[i] + (i == 0 ? 5.5 : i + 1 == n ? 3 : 0.5);
-    if (i + 1 < n) edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(i + 1)});
-    edges.push_back({static_cast<Vertex_index>(i), static_cast<Vertex_index>(n + i)});
-  }
-  const auto g = make(2 * n, edges, {}, f);
+  const auto g = toothed_stem(
+      n, [](std::size_t i) { return static_cast<double>(i); },
+      [&](std::size_t i) { return i == 0 ? 5.5 : i + 1 == n ? 3 : 0.5; });
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
   const Reeb_simplification_result K = simplify_by_persistence(A, 0.6);
   EXPECT_EQ(K.removed_branches, n - 2);
