@@ -433,18 +433,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("segment-turn-tolerance")) go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
     if (!(go.segment_turn_tolerance >= 0 && go.segment_turn_tolerance <= 180))
       throw Usage_error("--segment-turn-tolerance must be in [0, 180] degrees");
-    if (args.has("local-support")) {
-      const double v = args.get_double("local-support");
+    auto fix_count = [&args](const std::string& flag, std::size_t& count) {  // a number of nearest fixes
+      if (!args.has(flag)) return;
+      const double v = args.get_double(flag);
       if (!(v >= 0 && v <= 1024 && v == std::floor(v)))
-        throw Usage_error("--local-support must be a whole number of fixes in [0, 1024] (0: off)");
-      go.local_support_fixes = static_cast<std::size_t>(v);
-    }
-    if (args.has("quiet-ends")) {
-      const double v = args.get_double("quiet-ends");
-      if (!(v >= 0 && v <= 1024 && v == std::floor(v)))
-        throw Usage_error("--quiet-ends must be a whole number of fixes in [0, 1024] (0: off)");
-      go.quiet_end_fixes = static_cast<std::size_t>(v);
-    }
+        throw Usage_error("--" + flag + " must be a whole number of fixes in [0, 1024] (0: off)");
+      count = static_cast<std::size_t>(v);
+    };
+    fix_count("local-support", go.local_support_fixes);
+    fix_count("quiet-ends", go.quiet_end_fixes);
     if (args.has("min-local-support")) go.min_local_support = args.get_double("min-local-support");
     if (!(go.min_local_support > 0 && go.min_local_support <= 1))
       throw Usage_error("--min-local-support must be in (0, 1] (a fraction of the segment support)");

@@ -632,7 +632,6 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       std::size_t trip, segment;
       double length;
       bool straight;
-      bool quiet;  // both ends quiet (Gps_trace_options::quiet_end_fixes)
     };
     std::vector<Unconfirmed> unconfirmed;
     std::size_t checked_fixes = 0;
@@ -668,18 +667,22 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
           ++S.confirmed_segments;
           S.straight_confirmed += straight ? 1 : 0;
         } else {
-          const std::size_t q = options.quiet_end_fixes;
-          const bool quiet = straight && q > 0 && fixes_within(a.x, a.y, support2, q) < q &&
-                             fixes_within(b.x, b.y, support2, q) < q;
-          unconfirmed.push_back({t, i, d, straight, quiet});
+          unconfirmed.push_back({t, i, d, straight});
         }
       }
       checked_fixes += o.size();
     }
     S.turn_rule_used = internal::wilson_upper_bound(S.straight_confirmed, S.straight_checked) >=
                        options.min_straight_confirmed_fraction;
+    // Both ends quiet (Gps_trace_options::quiet_end_fixes): asked only where the turn rule is not trusted.
+    auto quiet = [&](const Unconfirmed& u) {
+      const std::size_t q = options.quiet_end_fixes;
+      const Gps_fix& a = trips[u.trip][order[u.trip][u.segment]];
+      const Gps_fix& b = trips[u.trip][order[u.trip][u.segment + 1]];
+      return q > 0 && fixes_within(a.x, a.y, support2, q) < q && fixes_within(b.x, b.y, support2, q) < q;
+    };
     for (const Unconfirmed& u : unconfirmed) {
-      if (u.straight && (S.turn_rule_used || u.quiet)) {
+      if (u.straight && (S.turn_rule_used || quiet(u))) {
         ++S.straight_segments;
         S.quiet_segments += S.turn_rule_used ? 0 : 1;
       } else if (u.length <= 4 * support) {
