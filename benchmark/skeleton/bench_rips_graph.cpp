@@ -8,7 +8,9 @@
 #include <FeatureRecon/skeleton/rips_graph.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Epick_d.h>
 #include <CGAL/Search_traits_2.h>
+#include <CGAL/Search_traits_d.h>
 #include <CGAL/Simple_cartesian.h>
 #include <benchmark/benchmark.h>
 
@@ -96,11 +98,13 @@ void BM_rips_gudhi(benchmark::State& state, const std::string& name) {
 }
 #endif
 
-// k nearest neighbours on points with many copies (8,000 of one point beside a line) and on a plain grid:
-// FeatureRecon's build_knn_graph (exact, ties by index, each distinct position searched once) against CGAL's own
-// Orthogonal_k_neighbor_search asked for k + 1 neighbours of every point (no tie rule).
+// k nearest neighbours on points with many copies (8,000 of one point beside a line), on a plain grid and on the
+// Gaussian cases in R^50 above: FeatureRecon's build_knn_graph (exact, ties by index, each distinct position
+// searched once) against CGAL's own Orthogonal_k_neighbor_search asked for k + 1 neighbours of every point (no tie
+// rule; in R^50 on Epick_d points with Search_traits_d).
 std::vector<std::vector<double>> knn_points(const std::string& name) {
   std::vector<std::vector<double>> p;
+  if (name.rfind("gaussian50d", 0) == 0) return get_case(name).points;
   if (name == "copies8100") {  // 8,000 copies of one point and a line of 100 points beside it
     for (int c = 0; c < 8000; ++c) p.push_back({0.0, 0.0});
     for (int i = 0; i < 100; ++i) p.push_back({10.0 + i, 0.0});
@@ -122,15 +126,13 @@ void BM_knn_featurerecon(benchmark::State& state, const std::string& name) {
   state.counters["edges"] = static_cast<double>(edges);
 }
 
-void BM_knn_cgal(benchmark::State& state, const std::string& name) {
-  using K = CGAL::Simple_cartesian<double>;
-  using Traits = CGAL::Search_traits_2<K>;
+/// CGAL's Orthogonal_k_neighbor_search for 9 neighbours of every point (the tree built in the loop).
+template <class Traits, class Point>
+void cgal_knn(benchmark::State& state, const std::vector<Point>& p) {
   using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
-  std::vector<K::Point_2> p;
-  for (const auto& q : knn_points(name)) p.emplace_back(q[0], q[1]);
   std::size_t found = 0;
   for (auto _ : state) {
-    Knn::Tree tree(p.begin(), p.end());
+    typename Knn::Tree tree(p.begin(), p.end());
     tree.build();
     found = 0;
     for (const auto& q : p) {
@@ -140,6 +142,21 @@ void BM_knn_cgal(benchmark::State& state, const std::string& name) {
     benchmark::DoNotOptimize(found);
   }
   state.counters["neighbours"] = static_cast<double>(found);
+}
+
+/// The peer in R^50: CGAL's kd-tree on dD points (Epick_d, dynamic dimension).
+void BM_knn_cgal_dd(benchmark::State& state, const std::string& name) {
+  using K = CGAL::Epick_d<CGAL::Dynamic_dimension_tag>;
+  std::vector<K::Point_d> p;
+  for (const auto& q : knn_points(name)) p.emplace_back(static_cast<int>(q.size()), q.begin(), q.end());
+  cgal_knn<CGAL::Search_traits_d<K>>(state, p);
+}
+
+void BM_knn_cgal(benchmark::State& state, const std::string& name) {
+  using K = CGAL::Simple_cartesian<double>;
+  std::vector<K::Point_2> p;
+  for (const auto& q : knn_points(name)) p.emplace_back(q[0], q[1]);
+  cgal_knn<CGAL::Search_traits_2<K>>(state, p);
 }
 
 /// Distance matrices for classical MDS (2,000 points): "circle50d" a noisy circle of radius 10 in R^50 (noise
@@ -206,6 +223,15 @@ void register_all() {
     benchmark::RegisterBenchmark(("knn8/cgal/" + name).c_str(), BM_knn_cgal, name)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
+  }
+  for (const std::string name : {"gaussian50d_5k", "gaussian50d_5k_outlier", "gaussian50d_5k_two_clusters"}) {
+    benchmark::RegisterBenchmark(("knn8/featurerecon/" + name).c_str(), BM_knn_featurerecon, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark(("knn8/cgal_dD/" + name).c_str(), BM_knn_cgal_dd, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
   }
   for (const std::string name :
        {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k", "gaussian50d_5k_outlier",

@@ -405,6 +405,101 @@ TEST(KnnGraph, MatchesBruteForceWithTiesByIndex) {
   EXPECT_EQ(build_knn_graph(Coords{}, 3).number_of_vertices, 0u);
 }
 
+TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
+  // The brute force (dimension > 3) splits off groups far from the rest (isolated_groups()) and searches each with
+  // its own float filter; a group answers for a point only when the k-th nearest within it lies within the group's
+  // separation, other points are searched among all. Two clusters 1e7 apart interleaved by index: one centre made
+  // every pair of one cluster go to the double stage (4 s on 10,000 points in 50-D); now the counts are the
+  // clusters' own.
+  const std::size_t n = 600, k = 4;
+  Proximity_graph_options o;
+  o.search = Neighbor_search::brute_force;
+  const Coords a = random_points(n, 12, 21), b = random_points(n, 12, 22);
+  Coords mixed;
+  for (std::size_t i = 0; i < n; ++i) {
+    mixed.push_back(a[i]);
+    mixed.push_back(b[i]);
+    mixed.back()[5] += 1e7;
+  }
+  skeleton::internal::Knn_search_counts ca, cb, both;
+  (void)skeleton::internal::knn_graph(make_point_matrix(a), k, o, &ca);
+  (void)skeleton::internal::knn_graph(make_point_matrix(b), k, o, &cb);
+  const Proximity_graph g = skeleton::internal::knn_graph(make_point_matrix(mixed), k, o, &both);
+  EXPECT_EQ(g.edges, brute_knn(mixed, k));
+  EXPECT_EQ(both.unresolved, 0u);
+  EXPECT_LE(both.refined, ca.refined + cb.refined + 2 * n);  // b's coordinates differ by the rounding at 1e7
+  EXPECT_LT(both.refined, n * n / 10);                     // one filter for both: every pair of one cluster
+  const auto groups = skeleton::internal::isolated_groups(make_point_matrix(mixed), k + 1);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0].rows.front(), 0u);
+  EXPECT_EQ(groups[1].rows.front(), 1u);
+  EXPECT_GT(groups[0].separation, 9e6);
+
+  // Two groups whose gap on the widest axis (10, from x = 9 to x = 19) exceeds both sides' widest ranges (9), but not
+  // every distance within them: A = (t, t, t, t) and B = (19 + t, 9, 9, 9), t = 0..9, shuffled. For k = 9, A's
+  // (9, 9, 9, 9) has its k-th nearest within A at 18 (the origin), beyond the separation: it is searched among all,
+  // and finds B's points at 10..18 (the one at 18 ties with the origin, decided by index).
+  Coords ab;
+  for (int t = 0; t < 10; ++t) {
+    ab.push_back({double(t), double(t), double(t), double(t)});
+    ab.push_back({19.0 + t, 9.0, 9.0, 9.0});
+  }
+  std::shuffle(ab.begin(), ab.end(), std::mt19937(3));
+  const auto cut = skeleton::internal::isolated_groups(make_point_matrix(ab), 10);
+  ASSERT_EQ(cut.size(), 2u);  // (A and B are not cut further: their gaps of 1 are not wider than their points)
+  for (const auto& group : cut) {
+    EXPECT_EQ(group.rows.size(), 10u);
+    EXPECT_EQ(group.separation, 10 * (1 - 0x1p-50));
+  }
+  for (const std::size_t kl : {1u, 3u, 8u, 9u, 10u, 12u, 19u}) {
+    skeleton::internal::Knn_search_counts c;
+    EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(ab), kl, o, &c).edges, brute_knn(ab, kl))
+        << "k = " << kl;
+    if (kl == 1) {
+      EXPECT_EQ(c.unresolved, 0u);
+    }
+    if (kl == 9) {  // every point of A has one of A at 10 or more (B's points are within 9 of each other)
+      EXPECT_EQ(c.unresolved, 10u);
+    }
+    if (kl >= 10) {
+      EXPECT_EQ(c.unresolved, 0u);  // A and B would hold fewer than k + 1 points: not cut
+    }
+  }
+  // Three clusters far apart on one axis (400, 5 and 200 points; the 5 are a group of their own for k = 4, too few
+  // for k = 5 and go with a neighbour), copies across clusters, a far point of a group's float filter; every answer
+  // the brute force's.
+  Coords three = random_points(400, 6, 23);
+  for (int c = 0; c < 5; ++c) three.push_back({1e9 + c, 0, 0, 0, 0, 0});
+  Coords other = random_points(200, 6, 24);
+  for (auto& q : other) {
+    q[0] -= 5e8;
+    three.push_back(q);
+  }
+  three.push_back(three[7]);
+  three.push_back(three[410]);
+  three.push_back({0.5, 0.5, 1e6, 0.5, 0.5, 0.5});  // within the first cluster's group, 1e6 from it
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(three), 5).size(), 3u);
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(three), 6).size(), 2u);
+  for (const std::size_t kl : {1u, 2u, 4u, 5u, 8u})
+    EXPECT_EQ(build_knn_graph(three, kl, o).edges, brute_knn(three, kl)) << "k = " << kl;
+  // Spread-out data and grids are not cut (4-D grid: every gap is 1, the parts beside it span 4); no points, no
+  // groups.
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(random_points(500, 8, 25)), 2).size(), 1u);
+  Coords grid;
+  for (int i = 0; i < 625; ++i) grid.push_back({double(i % 5), double(i / 5 % 5), double(i / 25 % 5), double(i / 125)});
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(grid), 2).size(), 1u);
+  EXPECT_EQ(build_knn_graph(grid, 8, o).edges, brute_knn(grid, 8));
+  Coords line;  // evenly spaced: every gap exceeds 1/16 of the range, but not the parts beside it
+  for (int x = 0; x < 10; ++x) line.push_back({double(x), 0, 0, 0});
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 2).size(), 1u);
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 1).size(), 10u);  // singletons allowed
+  line.push_back({1e3, 0, 0, 0});
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 2).size(), 1u);  // one point: too few
+  line.push_back({1e3 + 1, 0, 0, 0});
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 2).size(), 2u);
+  EXPECT_TRUE(skeleton::internal::isolated_groups(make_point_matrix(Coords{}), 1).empty());
+}
+
 TEST(RipsGraph, KernelsAndUserPointTypes) {
   const Coords p = random_points(80, 3, 5);
   const auto expected = build_rips_graph(p, 0.3).edges;

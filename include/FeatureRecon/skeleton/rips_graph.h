@@ -162,14 +162,15 @@ struct Brute_force_index {
   const double* point(std::size_t i) const { return m.row(rows ? rows[i] : i); }
   Eigen::MatrixXf centred;          // d x n, (halves minus the centre's half) * scale, rounded to float; 0 if far
   Eigen::VectorXd norms;            // squared norms of the float columns, in double (exact products)
-  std::vector<double> weight;       // per point i, its part w_i of the Gram error bound (see block())
+  std::vector<double> weight;       // per point i, its part w_i of the Gram error bound (see block()); inf if far
   std::vector<char> far;            // 1 for a point left out of the float matrix
   std::vector<double> half_centre;  // the coordinate-wise median, halved
   double scale = 1;                 // applied to the centred halves (a power of two)
   double unit = 1;                  // scale / 2: applied to differences of whole coordinates
   double pair_constant = 0;         // the part of the Gram error bound common to all pairs
   double refine_relative = 0, refine_absolute = 0;  // refine()'s error bound
-  mutable std::vector<float> gram_buffer;           // block()'s Gram matrix
+  mutable std::vector<float> gram_buffer;           // gram()'s products
+  mutable std::size_t gram_columns = 0;             // per row of gram_buffer
   /// Indexes every point of `pm`, or the `subset` rows of it (ascending; the index numbers them 0, 1, ...).
   explicit Brute_force_index(const Point_matrix& pm, const std::vector<std::uint32_t>* subset = nullptr)
       : m(pm), rows(subset ? subset->data() : nullptr), size(subset ? subset->size() : pm.rows) {
@@ -245,7 +246,8 @@ struct Brute_force_index {
     weight.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double ni = norms[static_cast<Eigen::Index>(i)];
-      weight[i] = K * ni + 2 * b * std::sqrt(ni);
+      // A far point's pairs have no float enclosure: an infinite weight makes every bound of its pairs infinite.
+      weight[i] = far[i] ? std::numeric_limits<double>::infinity() : K * ni + 2 * b * std::sqrt(ni);
     }
     // refine() sums t_c^2, t_c = (x_i / 2 - x_j / 2) scale in double, scaled so that neither the squares of far
     // pairs overflow nor those of near ones underflow. t_c = a_c (1 + delta) + kappa_c with |delta| <= v (the
@@ -257,30 +259,37 @@ struct Brute_force_index {
     refine_relative = 2 * (dd + 5) * v;
     refine_absolute = dd * std::ldexp(1.0, -1074) + 4 * std::ldexp(1.0, -1073 + std::max(exponent, 0)) * std::sqrt(dd);
   }
+  /// Computes the float Gram products of the indexed points [b, e) with [from, size) into gram_buffer: the
+  /// products of point b + r start at gram_row(r), one float per point from `from` on (contiguous, so that a row's
+  /// pairs are read in order). One buffer for every block (the first is the largest): a fresh 5 MB matrix per block
+  /// of 5,000 points in 50-D went back to the system and was faulted in again whenever the allocator trimmed its heap.
+  void gram(std::size_t b, std::size_t e, std::size_t from) const {
+    const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
+    const Eigen::Index nc = static_cast<Eigen::Index>(size - from);
+    const std::size_t cells = static_cast<std::size_t>(nb) * static_cast<std::size_t>(nc);
+    if (gram_buffer.size() < cells) gram_buffer.resize(cells);
+    gram_columns = static_cast<std::size_t>(nc);
+    Eigen::Map<Eigen::MatrixXf> g(gram_buffer.data(), nc, nb);
+    g.noalias() = centred.middleCols(static_cast<Eigen::Index>(from), nc).transpose() *
+                  centred.middleCols(static_cast<Eigen::Index>(b), nb);
+  }
+  /// The products of the r-th point of the last gram() block with the points from its `from` on.
+  const float* gram_row(std::size_t r) const { return gram_buffer.data() + r * gram_columns; }
   /// Calls visit(i, j, lo, hi), lo <= the true squared distance (scaled) <= hi, for every i in [b, e) and every
   /// j >= from. Pairs with a far point get [-inf, inf].
   template <class Visit>
   void block(std::size_t b, std::size_t e, std::size_t from, Visit visit) const {
-    const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
-    const Eigen::Index nc = static_cast<Eigen::Index>(size - from);
-    // One buffer for every block (the first is the largest): a fresh 5 MB matrix per block of 5,000 points in
-    // 50-D went back to the system and was faulted in again whenever the allocator trimmed its heap.
-    const std::size_t cells = static_cast<std::size_t>(nb) * static_cast<std::size_t>(nc);
-    if (gram_buffer.size() < cells) gram_buffer.resize(cells);
-    Eigen::Map<Eigen::MatrixXf> gram(gram_buffer.data(), nb, nc);
-    gram.noalias() = centred.middleCols(static_cast<Eigen::Index>(b), nb).transpose() *
-                     centred.middleCols(static_cast<Eigen::Index>(from), nc);
+    gram(b, e, from);
     const double inf = std::numeric_limits<double>::infinity();
-    for (Eigen::Index r = 0; r < nb; ++r) {
-      const std::size_t i = b + static_cast<std::size_t>(r);
+    for (std::size_t i = b; i < e; ++i) {
+      const float* g = gram_row(i - b);
       const double ni = norms[static_cast<Eigen::Index>(i)], wi = weight[i] + pair_constant;
       for (std::size_t j = from; j < size; ++j) {
         if (far[i] || far[j]) {
           visit(i, j, -inf, inf);
           continue;
         }
-        const double d2 = ni + norms[static_cast<Eigen::Index>(j)] -
-                          2 * static_cast<double>(gram(r, static_cast<Eigen::Index>(j - from)));
+        const double d2 = ni + norms[static_cast<Eigen::Index>(j)] - 2 * static_cast<double>(g[j - from]);
         const double err = wi + weight[j];
         visit(i, j, d2 - err, d2 + err);
       }
@@ -305,6 +314,29 @@ struct Brute_force_index {
   }
 };
 
+/// The coordinate whose values over the points `set` of m have the widest range, and that range (0 for fewer than
+/// two points, inf when it overflows). lo and hi are work space.
+inline std::pair<std::size_t, double> widest_axis(const Point_matrix& m, const std::vector<std::uint32_t>& set,
+                                                  std::vector<double>& lo, std::vector<double>& hi) {
+  const std::size_t d = m.dimension;
+  std::size_t axis = 0;
+  double widest = 0;
+  if (set.size() < 2) return {axis, widest};
+  lo.assign(m.row(set[0]), m.row(set[0]) + d);  // row by row: the matrix is row-major
+  hi = lo;
+  for (const std::uint32_t i : set)
+    for (std::size_t c = 0; c < d; ++c) {
+      lo[c] = std::min(lo[c], m.row(i)[c]);
+      hi[c] = std::max(hi[c], m.row(i)[c]);
+    }
+  for (std::size_t c = 0; c < d; ++c)
+    if (hi[c] - lo[c] > widest) {  // inf when the range overflows: still the widest
+      widest = hi[c] - lo[c];
+      axis = c;
+    }
+  return {axis, widest};
+}
+
 /// The points split into groups that no pair within `radius` crosses: a set is cut wherever its values of the
 /// coordinate with the widest range leave a gap wider than the radius (two points on either side differ by more
 /// than the radius in that coordinate alone), and each part is cut again the same way until nothing cuts. Only
@@ -313,7 +345,7 @@ struct Brute_force_index {
 /// at one point, and a second cluster far away made every pair of that cluster go to the double stage. Groups
 /// hold ascending indices and come in the order of their first index; all points form one group when nothing cuts.
 inline std::vector<std::vector<std::uint32_t>> separated_groups(const Point_matrix& m, double radius) {
-  const std::size_t n = m.rows, d = m.dimension;
+  const std::size_t n = m.rows;
   std::vector<std::vector<std::uint32_t>> done, todo(1);
   todo[0].resize(n);
   for (std::size_t i = 0; i < n; ++i) todo[0][i] = static_cast<std::uint32_t>(i);
@@ -325,22 +357,7 @@ inline std::vector<std::vector<std::uint32_t>> separated_groups(const Point_matr
   while (!todo.empty()) {
     std::vector<std::uint32_t> set = std::move(todo.back());
     todo.pop_back();
-    std::size_t axis = 0;
-    double widest = 0;
-    if (set.size() > 1) {
-      lo.assign(m.row(set[0]), m.row(set[0]) + d);  // row by row: the matrix is row-major
-      hi = lo;
-      for (const std::uint32_t i : set)
-        for (std::size_t c = 0; c < d; ++c) {
-          lo[c] = std::min(lo[c], m.row(i)[c]);
-          hi[c] = std::max(hi[c], m.row(i)[c]);
-        }
-      for (std::size_t c = 0; c < d; ++c)
-        if (hi[c] - lo[c] > widest) {  // inf when the range overflows: still the widest
-          widest = hi[c] - lo[c];
-          axis = c;
-        }
-    }
+    const auto [axis, widest] = widest_axis(m, set, lo, hi);
     if (!(widest > gap_limit)) {  // no gap can be wider than the range
       done.push_back(std::move(set));
       continue;
@@ -363,6 +380,84 @@ inline std::vector<std::vector<std::uint32_t>> separated_groups(const Point_matr
     }
   }
   std::sort(done.begin(), done.end(), [](const auto& a, const auto& b) { return a.front() < b.front(); });
+  return done;
+}
+
+/// A group of isolated_groups(): its points (ascending) and a lower bound on the distance from any of them to any
+/// point outside the group (the largest double when nothing is outside).
+struct Isolated_group {
+  std::vector<std::uint32_t> rows;
+  double separation = std::numeric_limits<double>::max();
+};
+
+/// The points split for the k-nearest-neighbour brute force, which has no radius to cut at: a set is cut at the
+/// gaps of the sorted values of its widest coordinate that exceed 1/16 of that coordinate's range and the extent
+/// (widest coordinate range) of the parts on both sides, when both parts have at least `min_size` points (k + 1:
+/// a smaller one could not answer for any of its points; parts between rejected gaps are one part), and each part
+/// is cut again the same way. A part's separation is the smallest of its parent's and its adjacent gaps. Clusters
+/// far apart relative to their own size end up in groups of their own, whose float filters then have their own
+/// centres; grids, evenly spaced lines and spread-out data are not cut (their gaps are not wider than the parts
+/// beside them, or those hold too few points). The cut is a heuristic for speed (it looks at one axis per set, so
+/// it may miss gaps on others): the search keeps a group's answer for a point only when its k-th nearest within
+/// the group lies within the separation, and searches the other points among all. Groups hold ascending indices
+/// and come in the order of their first index; each level sorts its sets once along one axis.
+inline std::vector<Isolated_group> isolated_groups(const Point_matrix& m, std::size_t min_size) {
+  const std::size_t n = m.rows;
+  if (n == 0) return {};
+  std::vector<Isolated_group> done, todo(1);
+  todo[0].rows.resize(n);
+  for (std::size_t i = 0; i < n; ++i) todo[0].rows[i] = static_cast<std::uint32_t>(i);
+  std::vector<std::pair<double, std::uint32_t>> key;
+  std::vector<double> lo, hi, gaps, extents;
+  std::vector<std::size_t> starts;  // of the parts, in key
+  std::vector<std::uint32_t> part;
+  while (!todo.empty()) {
+    Isolated_group set = std::move(todo.back());
+    todo.pop_back();
+    const std::size_t size = set.rows.size();
+    const auto [axis, widest] = widest_axis(m, set.rows, lo, hi);
+    key.clear();
+    for (const std::uint32_t i : set.rows) key.emplace_back(m.row(i)[axis], i);
+    std::sort(key.begin(), key.end());
+    starts.assign(1, 0);
+    gaps.clear();
+    for (std::size_t t = 1; t < size; ++t)
+      if (key[t].first - key[t - 1].first > widest / 16) {
+        starts.push_back(t);
+        gaps.push_back(key[t].first - key[t - 1].first);
+      }
+    starts.push_back(size);
+    extents.clear();
+    for (std::size_t q = 0; q + 1 < starts.size() && !gaps.empty(); ++q) {
+      part.clear();
+      for (std::size_t t = starts[q]; t < starts[q + 1]; ++t) part.push_back(key[t].second);
+      extents.push_back(widest_axis(m, part, lo, hi).second);
+    }
+    bool cut = false;
+    for (std::size_t q = 0; q < gaps.size(); ++q) {
+      // The computed difference rounds by a relative 2^-53 at most: the true gap exceeds gap (1 - 2^-50).
+      const bool kept = gaps[q] > std::max(extents[q], extents[q + 1]) && starts[q + 1] - starts[q] >= min_size &&
+                        starts[q + 2] - starts[q + 1] >= min_size;
+      gaps[q] = kept ? gaps[q] * (1 - 0x1p-50) : 0.0;
+      cut = cut || gaps[q] > 0;
+    }
+    if (!cut) {
+      done.push_back(std::move(set));
+      continue;
+    }
+    Isolated_group next;
+    next.separation = set.separation;
+    for (std::size_t q = 0; q + 1 < starts.size(); ++q) {
+      for (std::size_t t = starts[q]; t < starts[q + 1]; ++t) next.rows.push_back(key[t].second);
+      if (q < gaps.size() && gaps[q] == 0) continue;  // not cut here: the part goes on
+      if (q < gaps.size()) next.separation = std::min(next.separation, gaps[q]);
+      std::sort(next.rows.begin(), next.rows.end());
+      todo.push_back(std::move(next));
+      next = Isolated_group();
+      next.separation = q < gaps.size() ? std::min(set.separation, gaps[q]) : set.separation;
+    }
+  }
+  std::sort(done.begin(), done.end(), [](const auto& a, const auto& b) { return a.rows.front() < b.rows.front(); });
   return done;
 }
 
@@ -510,10 +605,19 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
   return internal::rips_graph(m, radius, options, nullptr);
 }
 
-/// Symmetrised k-nearest-neighbour graph of the rows of a Point_matrix (see the range version of build_knn_graph()).
-inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
-                                       const Proximity_graph_options& options = {}) {
+namespace internal {
+/// What the brute-force k-nearest-neighbour search left to its slower stages (for tests).
+struct Knn_search_counts {
+  std::size_t refined = 0;     ///< pairs whose float enclosure was too wide, computed again in double
+  std::size_t unresolved = 0;  ///< points whose group could not answer alone, searched among all points
+};
+
+/// build_knn_graph() of a Point_matrix, counting its slow stages into `counts` (if not null).
+inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Proximity_graph_options& options,
+                                 Knn_search_counts* counts) {
   const char* fn = "build_knn_graph";
+  Knn_search_counts count;
+  if (counts) *counts = count;
   if (k < 1) FeatureRecon::internal::throw_invalid_argument(fn, "k must be >= 1, got ", k);
   internal::check_point_matrix(m, fn);
   const std::size_t n = m.rows;
@@ -523,15 +627,22 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
     FeatureRecon::internal::throw_invalid_argument(fn, "too many points (", n, ")");
   const std::size_t kk = std::min(k, n == 0 ? 0 : n - 1);
   std::vector<std::uint32_t> cand;
-  // Orders candidates j of point i by exact distance, then index.
-  auto select = [&](std::size_t i) {
-    auto closer = [&](std::uint32_t a, std::uint32_t b) {
+  // Orders points by their exact distance to point i, then by index.
+  auto closer_to = [&m](std::size_t i) {
+    return [&m, i](std::uint32_t a, std::uint32_t b) {
       const int c = internal::compare_squared_distances(m.row(i), m.row(a), m.row(b), m.dimension);
       return c < 0 || (c == 0 && a < b);
     };
-    if (cand.size() > kk) std::nth_element(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(kk), cand.end(), closer);
-    for (std::size_t t = 0; t < std::min(kk, cand.size()); ++t) {
-      const Vertex_index a = static_cast<Vertex_index>(i), b = cand[t];
+  };
+  // Keeps the kk nearest candidates of point i (exact distance, then index), in no particular order.
+  auto keep_nearest = [&](std::size_t i) {
+    if (cand.size() > kk)
+      std::nth_element(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(kk), cand.end(), closer_to(i));
+    cand.resize(std::min(kk, cand.size()));
+  };
+  auto add_edges = [&](std::size_t i) {
+    for (const std::uint32_t j : cand) {
+      const Vertex_index a = static_cast<Vertex_index>(i), b = j;
       g.edges.push_back(a < b ? Edge{a, b} : Edge{b, a});
     }
   };
@@ -621,61 +732,140 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
       }
     }
   } else {
-    internal::Brute_force_index index(m);
-    const std::size_t block = 256;
+    // Blocked all-pairs distances (Brute_force_index), a row at a time: the k-th smallest upper bound of a row is at
+    // least the k-th smallest distance, so a point whose lower bound exceeds it has k points strictly nearer and is
+    // no candidate; the few others are ordered exactly. Groups of points far from the rest (isolated_groups()) are
+    // searched alone, each with its own float filter: one centre for two clusters 1e7 apart made every pair of one
+    // of them too uncertain in float. A group's answer for a point stands when the k-th nearest within the group
+    // lies within the group's separation (everything outside is farther); other points are searched among all.
     struct Enclosure {
       double lo, hi;  // of the squared distance to j, in the index's units
       std::uint32_t j;
     };
     std::vector<Enclosure> row;
-    std::vector<double> upper;
+    std::vector<double> d2, hi, heap, upper;
+    const double inf = std::numeric_limits<double>::infinity();
     const auto kth_upper = [&] {
       upper.clear();
       for (const Enclosure& x : row) upper.push_back(x.hi);
       std::nth_element(upper.begin(), upper.begin() + static_cast<std::ptrdiff_t>(kk - 1), upper.end());
       return upper[kk - 1];
     };
-    for (std::size_t b = 0; b < n; b += block) {
-      if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(b) / n)) {
-        stopped = true;
-        break;
+    // The candidates of indexed point i from its row of float Gram products `gp` (one per indexed point): the
+    // k-th smallest upper bound by a heap of the k smallest, then every point whose lower bound is within it.
+    const auto fill_row = [&](const internal::Brute_force_index& index, std::size_t i, const float* gp) {
+      const std::size_t size = index.size;
+      // A far point's weight is infinite: its pairs get [-inf, inf] from the same arithmetic, without a branch.
+      const double ni = index.norms[static_cast<Eigen::Index>(i)], wi = index.weight[i] + index.pair_constant;
+      const double* norms = index.norms.data();
+      const double* weight = index.weight.data();
+      d2.resize(size);
+      hi.resize(size);
+      for (std::size_t j = 0; j < size; ++j) {
+        d2[j] = ni + norms[j] - 2 * static_cast<double>(gp[j]);
+        hi[j] = d2[j] + (wi + weight[j]);
       }
-      std::size_t current = b;
-      row.clear();
-      auto flush = [&](std::size_t i) {
-        // The k-th smallest upper bound is at least the k-th smallest distance: a j whose lower bound exceeds it
-        // has k points strictly nearer and is not a candidate. Enclosures too wide to exclude anything (a far
-        // point's, or the float one of a pair much closer than the data's spread) are first narrowed in double;
-        // before, one row's widest error bound was applied to the whole row, so one outlier made every point a
-        // candidate of every row.
-        double bound = kth_upper();
-        bool narrowed = false;
-        for (Enclosure& x : row)
-          if (x.lo <= bound && !(x.hi < std::numeric_limits<double>::infinity() && x.hi - x.lo <= 0x1p-10 * x.hi)) {
-            index.refine(i, x.j, x.lo, x.hi);
-            narrowed = true;
-          }
-        if (narrowed) bound = kth_upper();
-        cand.clear();
-        for (const Enclosure& x : row)
-          if (x.lo <= bound) cand.push_back(x.j);
-        select(i);
-      };
-      index.block(b, std::min(n, b + block), 0, [&](std::size_t i, std::size_t j, double lo, double hi) {
-        if (i != current) {
-          flush(current);
-          current = i;
-          row.clear();
+      hi[i] = inf;  // not its own neighbour (size > kk: the bound stays one of the others')
+      heap.assign(hi.begin(), hi.begin() + static_cast<std::ptrdiff_t>(kk + 1));
+      std::make_heap(heap.begin(), heap.end());
+      std::pop_heap(heap.begin(), heap.end());
+      heap.pop_back();  // the kk smallest of the first kk + 1 (one of which may be i's inf)
+      for (std::size_t j = kk + 1; j < size; ++j)
+        if (hi[j] < heap.front()) {
+          std::pop_heap(heap.begin(), heap.end());
+          heap.back() = hi[j];
+          std::push_heap(heap.begin(), heap.end());
         }
-        if (j != i) row.push_back(Enclosure{lo, hi, static_cast<std::uint32_t>(j)});
-      });
-      flush(current);
+      const double bound = heap.front();
+      row.clear();
+      for (std::size_t j = 0; j < size; ++j) {
+        const double lo = d2[j] - (wi + weight[j]);
+        if (lo <= bound && j != i) row.push_back(Enclosure{lo, hi[j], static_cast<std::uint32_t>(j)});
+      }
+    };
+    // The kk nearest of indexed point i among the enclosures of `row` into cand (indices of m). Enclosures too
+    // wide to exclude anything (a far point's, or the float one of a pair much closer than the data's spread)
+    // are first narrowed in double; before session 15 one row's widest error bound was applied to the whole row,
+    // so one outlier made every point a candidate of every row.
+    const auto choose = [&](const internal::Brute_force_index& index, std::size_t i) {
+      double bound = kth_upper();
+      bool narrowed = false;
+      for (Enclosure& x : row)
+        if (x.lo <= bound && !(x.hi < inf && x.hi - x.lo <= 0x1p-10 * x.hi)) {
+          index.refine(i, x.j, x.lo, x.hi);
+          ++count.refined;
+          narrowed = true;
+        }
+      if (narrowed) bound = kth_upper();
+      cand.clear();
+      for (const Enclosure& x : row)
+        if (x.lo <= bound) cand.push_back(index.rows ? index.rows[x.j] : x.j);
+      keep_nearest(index.rows ? index.rows[i] : i);
+    };
+    std::size_t rows_done = 0;  // for the progress reports
+    // Calls found(i) with the kk nearest of each indexed point i within the index in cand.
+    const auto search = [&](const internal::Brute_force_index& index, auto&& found) {
+      const std::size_t size = index.size, block = 256;
+      for (std::size_t b = 0; b < size && !stopped; b += block) {
+        if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(rows_done + b) / n)) {
+          stopped = true;
+          break;
+        }
+        const std::size_t e = std::min(size, b + block);
+        index.gram(b, e, 0);
+        for (std::size_t i = b; i < e; ++i) {
+          fill_row(index, i, index.gram_row(i - b));
+          choose(index, i);
+          found(index.rows ? index.rows[i] : i);
+        }
+      }
+      rows_done += size;
+    };
+    const std::vector<internal::Isolated_group> groups = internal::isolated_groups(m, kk + 1);
+    if (groups.size() == 1) {
+      search(internal::Brute_force_index(m), add_edges);
+    } else {
+      std::vector<std::uint32_t> unresolved;
+      for (const internal::Isolated_group& group : groups) {
+        if (group.rows.size() <= kk) {  // too few to hold anyone's k nearest
+          unresolved.insert(unresolved.end(), group.rows.begin(), group.rows.end());
+          rows_done += group.rows.size();
+          continue;
+        }
+        search(internal::Brute_force_index(m, &group.rows), [&](std::size_t i) {
+          const std::uint32_t kth = *std::max_element(cand.begin(), cand.end(), closer_to(i));
+          if (internal::distance_at_most(m.row(i), m.row(kth), m.dimension, group.separation))
+            add_edges(i);
+          else
+            unresolved.push_back(static_cast<std::uint32_t>(i));
+        });
+        if (stopped) break;
+      }
+      count.unresolved = unresolved.size();
+      if (!stopped && !unresolved.empty()) {
+        const internal::Brute_force_index index(m);  // refine() only: every pair is computed in double
+        for (const std::uint32_t i : unresolved) {
+          row.clear();
+          for (std::uint32_t j = 0; j < n; ++j)
+            if (j != i) row.push_back(Enclosure{-inf, inf, j});
+          choose(index, i);
+          add_edges(i);
+        }
+      }
     }
   }
   internal::sort_unique_edges(g.edges, nullptr);
   internal::add_edge_lengths(m, g, fn);
   if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (counts) *counts = count;
   return g;
+}
+}  // namespace internal
+
+/// Symmetrised k-nearest-neighbour graph of the rows of a Point_matrix (see the range version of build_knn_graph()).
+inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
+                                       const Proximity_graph_options& options = {}) {
+  return internal::knn_graph(m, k, options, nullptr);
 }
 
 /// Rips (r-neighbourhood) graph of points: an edge between every two points at distance <= radius
@@ -702,6 +892,10 @@ Proximity_graph build_rips_graph(const PointRange& points, double radius,
 /// Symmetrised k-nearest-neighbour graph: i and j are joined when j is among the k nearest neighbours of
 /// i or i among those of j. Nearest is decided exactly; equal distances are ordered by index, so grids
 /// and duplicates give a deterministic graph. Edge lengths are Euclidean distances.
+///
+/// Candidates come from a CGAL kd-tree over the distinct positions (dimension <= 3) or from blocked all-pairs
+/// distances with Eigen (higher dimension: a float Gram filter with a rigorous error bound, then doubles, then
+/// exact comparisons; clusters far apart relative to their size are searched each alone, see isolated_groups()).
 /// \pre k >= 1 (checked; throws). Points as for build_rips_graph(). With n <= k every pair is joined.
 template <class PointRange, class Traits = Point_coordinate_traits<
                                 typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
