@@ -230,6 +230,30 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
   }
   return kept;
 }
+
+/// The median of the distances from each point to its nearest other point (NaN for fewer than two points): the
+/// spacing that a Rips radius must exceed to join the points to their neighbours.
+double median_of(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+double median_nearest_distance(const Point_matrix& m) {
+  if (m.rows < 2) return std::numeric_limits<double>::quiet_NaN();
+  const Proximity_graph g = build_knn_graph(m, 1);
+  std::vector<double> nearest(m.rows, std::numeric_limits<double>::infinity());
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    for (const Vertex_index v : g.edges[e]) nearest[v] = std::min(nearest[v], g.edge_lengths[e]);
+  return median_of(nearest);
+}
+double median_nearest_distance(const std::vector<double>& D, std::size_t n) {  // a distance matrix, row-major
+  if (n < 2) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i) nearest[i] = std::min(nearest[i], D[i * n + j]);
+  return median_of(nearest);
+}
 }  // namespace
 
 int run_skeleton(const std::vector<std::string>& argv) {
@@ -346,6 +370,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
   bool use_merged = false;
   std::string input_json;  // the JSON summary's fields of the input kind (tracks, image)
   std::size_t sampled = 0;
+  // Set when the Rips graph has fewer edges than half the points (a radius below their spacing): their median
+  // nearest-neighbour distance, for the warning.
+  double spacing_hint = std::numeric_limits<double>::quiet_NaN();
   if (args.has("points") || image) {
     Point_matrix all;
     if (image) {  // the ink pixels' centres, y up
@@ -373,6 +400,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     m.dimension = all.dimension;
     for (const std::size_t i : kept) m.data.insert(m.data.end(), all.row(i), all.row(i) + all.dimension);
     s = extract_reeb_skeleton(m, radius, options);
+    if (2 * s.rips_edges < m.rows) spacing_hint = median_nearest_distance(m);
   } else if (args.has("distance-matrix")) {
     const io::Point_file pf = io::read_points(args.get("distance-matrix"), "row", "distance");
     const std::string& path = args.get("distance-matrix");
@@ -398,6 +426,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
         pf.coordinates.data(), static_cast<Eigen::Index>(pf.size()), static_cast<Eigen::Index>(pf.size()));
     input_points = pf.size();
     s = extract_reeb_skeleton_from_distance_matrix(D, radius, options);
+    if (2 * s.rips_edges < pf.size()) spacing_hint = median_nearest_distance(pf.coordinates, pf.size());
     m.dimension = 3;
     m.rows = 0;  // no coordinates to draw: the SVG shows the skeleton only
     sampled = pf.size();
@@ -614,6 +643,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
       why = "no part of it survived";
     std::fprintf(stderr, "featurerecon skeleton: warning: the skeleton is empty: %s\n", why.c_str());
   }
+  if (!std::isnan(spacing_hint))
+    std::fprintf(stderr,
+                 "featurerecon skeleton: warning: at radius %s the Rips graph has %zu edge%s for %zu points (fewer "
+                 "than one neighbour per point), so the skeleton is mostly single points; the median distance from a "
+                 "point to its nearest neighbour is %.3g: give --radius above it (a few times it joins each point to "
+                 "its neighbours)\n",
+                 json_number(radius).c_str(), s.rips_edges, s.rips_edges == 1 ? "" : "s", sampled, spacing_hint);
   std::size_t components = 0;
   {
     std::vector<int> comp(num_vertices(graph));

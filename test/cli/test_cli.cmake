@@ -105,6 +105,15 @@ expect(rips_max_triangles_bad 2 "--max-triangles must be an integer >= 0 \\(0: n
 expect(rips_max_triangles_first 2 "--max-triangles must be an integer" rips --points ${WORK}/no_such_points.xyz --radius 0.6 --max-triangles abc --out ${WORK}/fig8_max.txt --quiet)
 expect(skeleton_max_triangles 1 "extract_reeb_skeleton: the flag complex has more than 100 triangles \\(max_triangles of the options;.*\\(on the command line: max_triangles is --max-triangles\\)" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 100 --out-vertices ${WORK}/mt_v.txt --out-edges ${WORK}/mt_e.txt --quiet)
 expect(skeleton_max_triangles_off 0 "\"rips_triangles\": 22292, \"max_triangles\": 0, .*\"loops\": 2," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-triangles 0 --out-vertices ${WORK}/mt_v.txt --out-edges ${WORK}/mt_e.txt --quiet)
+# A radius below the points' spacing: the skeleton is mostly single points; the warning gives their median
+# nearest-neighbour distance (brute force: 0.058117 for the 400 points, 0.2208 for the 100 rows of the matrix).
+expect(skeleton_radius_below_spacing 0 "warning: at radius 0.01 the Rips graph has 1 edge for 400 points \\(fewer than one neighbour per point\\).* the median distance from a point to its nearest neighbour is 0.0581: give --radius above it" skeleton --points ${DATA}/figure_eight.xyz --radius 0.01 --out-vertices ${WORK}/rs_v.txt --out-edges ${WORK}/rs_e.txt --quiet)
+expect(skeleton_radius_below_spacing_matrix 0 "at radius 0.05 the Rips graph has 0 edges for 100 points .* nearest neighbour is 0.221: " skeleton --distance-matrix ${DATA}/figure_eight_distances.txt --radius 0.05 --out-vertices ${WORK}/rs_v.txt --out-edges ${WORK}/rs_e.txt --quiet)
+execute_process(COMMAND ${FEATURERECON} skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/rs_v.txt
+                        --out-edges ${WORK}/rs_e.txt --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR err MATCHES "warning")
+  message(SEND_ERROR "skeleton_radius_above_spacing: exit ${rc}, a warning where the radius joins the points:\n${err}")
+endif()
 
 # Persistence pairs: the figure-eight has two loops, each a [birth, death] pair with birth > death.
 expect(reeb_persistence 0 "\"loops\": 2,.*\"branch_pairs\": \\[.*\"loop_pairs\": \\[\\[[-0-9.e]+, [-0-9.e]+\\], \\[[-0-9.e]+, [-0-9.e]+\\]\\]}" reeb --complex ${WORK}/fig8.txt --json --persistence)
