@@ -405,6 +405,39 @@ TEST(KnnGraph, MatchesBruteForceWithTiesByIndex) {
   EXPECT_EQ(build_knn_graph(Coords{}, 3).number_of_vertices, 0u);
 }
 
+TEST(KnnGraph, NearestByIntervalsThenExactly) {
+  // keep_nearest_exactly() orders by enclosures of the squared distances and calls the exact predicate only where
+  // they overlap and are not one exact value; the oracle sorts every candidate with the exact predicate. Candidates
+  // are exact ties with inexact squares (0.1 on different axes), neighbours in the last bit, copies, and integers.
+  std::mt19937 rng(8);
+  std::uniform_int_distribution<int> pick(0, 5);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t d = trial % 2 == 0 ? 3 : 5;
+    Point_matrix m;
+    m.dimension = d;
+    const std::vector<double> base = {0.1, 0.3, 1.0, 3.0, 0.7};
+    for (std::size_t i = 0; i < 40; ++i)
+      for (std::size_t c = 0; c < d; ++c) {
+        double x = base[(i + c) % 5] * (pick(rng) - 2);
+        if (pick(rng) == 0) x = std::nextafter(x, 10.0);
+        if (trial % 3 == 0) x = std::round(x * 10);
+        m.data.push_back(x);
+      }
+    m.rows = 40;
+    std::vector<std::uint32_t> cand;
+    for (std::uint32_t j = 1; j < 40; ++j) cand.push_back(j);
+    std::vector<std::uint32_t> oracle = cand;
+    std::sort(oracle.begin(), oracle.end(), [&](std::uint32_t a, std::uint32_t b) {
+      const int c = skeleton::internal::compare_squared_distances(m.row(0), m.row(a), m.row(b), d);
+      return c < 0 || (c == 0 && a < b);
+    });
+    const std::size_t keep = 1 + static_cast<std::size_t>(trial % 39);
+    skeleton::internal::keep_nearest_exactly(m, m.row(0), cand, keep);
+    oracle.resize(keep);
+    EXPECT_EQ(cand, oracle) << "trial " << trial;
+  }
+}
+
 TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
   // The brute force (dimension > 3) splits off groups far from the rest (isolated_groups()) and searches each with
   // its own float filter; a group answers for a point only when the k-th nearest within it lies within the group's

@@ -461,6 +461,52 @@ inline std::vector<Isolated_group> isolated_groups(const Point_matrix& m, std::s
   return done;
 }
 
+/// Keeps in `cand` the `keep` points of m nearest to p (exact squared distances, ties by index), nearest first
+/// (with `ordered` false, a list of at most `keep` is left as it is: all of it is kept).
+/// Each candidate's squared distance is enclosed once in interval arithmetic (one rounding-mode switch for all);
+/// sorted by the lower ends, only runs of overlapping enclosures that are not all the same exact value (a tie, which
+/// the index decides) are ordered by the exact predicate. On integer grids every enclosure is exact: no predicate
+/// runs at all, where ordering by the predicate took a rounding-mode switch per comparison.
+inline void keep_nearest_exactly(const Point_matrix& m, const double* p, std::vector<std::uint32_t>& cand,
+                                 std::size_t keep, bool ordered = true) {
+  if (!ordered && cand.size() <= keep) return;
+  struct Key {
+    double lo, hi;
+    std::uint32_t j;
+  };
+  thread_local std::vector<Key> keys;
+  keys.clear();
+  {
+    CGAL::Protect_FPU_rounding<true> protect;
+    for (const std::uint32_t j : cand) {
+      CGAL::Interval_nt<false> s(0);
+      for (std::size_t c = 0; c < m.dimension; ++c) s += CGAL::square(CGAL::Interval_nt<false>(p[c]) - m.row(j)[c]);
+      keys.push_back(Key{s.inf(), s.sup(), j});
+    }
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.lo < b.lo || (a.lo == b.lo && a.j < b.j); });
+  const std::size_t size = keys.size();
+  for (std::size_t start = 0; start < size && start < keep;) {
+    std::size_t end = start + 1;
+    double reach = keys[start].hi;
+    bool ties_only = keys[start].lo == keys[start].hi;
+    while (end < size && keys[end].lo <= reach) {
+      ties_only = ties_only && keys[end].lo == keys[end].hi && keys[end].lo == keys[start].lo;
+      reach = std::max(reach, keys[end].hi);
+      ++end;
+    }
+    if (end - start > 1 && !ties_only)
+      std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start), keys.begin() + static_cast<std::ptrdiff_t>(end),
+                [&](const Key& a, const Key& b) {
+                  const int c = compare_squared_distances(p, m.row(a.j), m.row(b.j), m.dimension);
+                  return c < 0 || (c == 0 && a.j < b.j);
+                });
+    start = end;
+  }
+  cand.resize(std::min(keep, size));
+  for (std::size_t t = 0; t < cand.size(); ++t) cand[t] = keys[t].j;
+}
+
 inline bool use_kd_tree(const Point_matrix& m, Neighbor_search s, const char* fn) {
   if (s == Neighbor_search::kd_tree && m.dimension > 3)
     FeatureRecon::internal::throw_invalid_argument(fn, "the kd-tree search supports dimension <= 3, got ",
@@ -627,19 +673,8 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
     FeatureRecon::internal::throw_invalid_argument(fn, "too many points (", n, ")");
   const std::size_t kk = std::min(k, n == 0 ? 0 : n - 1);
   std::vector<std::uint32_t> cand;
-  // Orders points by their exact distance to point i, then by index.
-  auto closer_to = [&m](std::size_t i) {
-    return [&m, i](std::uint32_t a, std::uint32_t b) {
-      const int c = internal::compare_squared_distances(m.row(i), m.row(a), m.row(b), m.dimension);
-      return c < 0 || (c == 0 && a < b);
-    };
-  };
-  // Keeps the kk nearest candidates of point i (exact distance, then index), in no particular order.
-  auto keep_nearest = [&](std::size_t i) {
-    if (cand.size() > kk)
-      std::nth_element(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(kk), cand.end(), closer_to(i));
-    cand.resize(std::min(kk, cand.size()));
-  };
+  // Keeps the kk nearest candidates of point i (exact distance, then index); nearest first if `ordered`.
+  auto keep_nearest = [&](std::size_t i, bool ordered) { internal::keep_nearest_exactly(m, m.row(i), cand, kk, ordered); };
   auto add_edges = [&](std::size_t i) {
     for (const std::uint32_t j : cand) {
       const Vertex_index a = static_cast<Vertex_index>(i), b = j;
@@ -647,6 +682,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
     }
   };
   if (kk == 0) return g;
+  g.edges.reserve(n * kk);  // each point adds its kk (the symmetric duplicates go at the end)
   bool stopped = false;  // no report after the callback asked to stop
   if (internal::use_kd_tree(m, options.search, fn)) {
     // Copies of a position are searched once: the kd-tree holds the distinct positions, each with its copies
@@ -708,14 +744,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
             for (std::size_t t = first[r]; t < std::min(first[r + 1], first[r] + need); ++t)
               outside.push_back(by_position[t]);
         cand = outside;
-        const std::uint32_t representative = by_position[first[q]];
-        auto closer = [&](std::uint32_t a, std::uint32_t b) {
-          const int c = internal::compare_squared_distances(m.row(representative), m.row(a), m.row(b), m.dimension);
-          return c < 0 || (c == 0 && a < b);
-        };
-        const std::size_t keep = std::min(need, cand.size());
-        std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(keep), cand.end(), closer);
-        cand.resize(keep);
+        internal::keep_nearest_exactly(m, m.row(by_position[first[q]]), cand, need, false);
       } else {
         cand.clear();
       }
@@ -787,6 +816,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
     // wide to exclude anything (a far point's, or the float one of a pair much closer than the data's spread)
     // are first narrowed in double; before session 15 one row's widest error bound was applied to the whole row,
     // so one outlier made every point a candidate of every row.
+    bool need_order = false;  // in a group's rows: the k-th nearest is compared with its separation
     const auto choose = [&](const internal::Brute_force_index& index, std::size_t i) {
       double bound = kth_upper();
       bool narrowed = false;
@@ -800,7 +830,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       cand.clear();
       for (const Enclosure& x : row)
         if (x.lo <= bound) cand.push_back(index.rows ? index.rows[x.j] : x.j);
-      keep_nearest(index.rows ? index.rows[i] : i);
+      keep_nearest(index.rows ? index.rows[i] : i, need_order);
     };
     std::size_t rows_done = 0;  // for the progress reports
     // Calls found(i) with the kk nearest of each indexed point i within the index in cand.
@@ -826,6 +856,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       search(internal::Brute_force_index(m), add_edges);
     } else {
       std::vector<std::uint32_t> unresolved;
+      need_order = true;
       for (const internal::Isolated_group& group : groups) {
         if (group.rows.size() <= kk) {  // too few to hold anyone's k nearest
           unresolved.insert(unresolved.end(), group.rows.begin(), group.rows.end());
@@ -833,7 +864,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
           continue;
         }
         search(internal::Brute_force_index(m, &group.rows), [&](std::size_t i) {
-          const std::uint32_t kth = *std::max_element(cand.begin(), cand.end(), closer_to(i));
+          const std::uint32_t kth = cand.back();  // the k-th nearest: cand is sorted
           if (internal::distance_at_most(m.row(i), m.row(kth), m.dimension, group.separation))
             add_edges(i);
           else
@@ -842,6 +873,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
         if (stopped) break;
       }
       count.unresolved = unresolved.size();
+      need_order = false;
       if (!stopped && !unresolved.empty()) {
         const internal::Brute_force_index index(m);  // refine() only: every pair is computed in double
         for (const std::uint32_t i : unresolved) {
