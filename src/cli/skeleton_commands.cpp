@@ -238,12 +238,25 @@ double median_of(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
   return v[v.size() / 2];
 }
-double median_nearest_distance(const Point_matrix& m) {
+/// Above `most` points, over `most` of them evenly spread by index (each against all): a warning needs no more, and
+/// the exact graph costs as much as the Rips search above 3-D.
+double median_nearest_distance(const Point_matrix& m, std::size_t most = 2000) {
   if (m.rows < 2) return std::numeric_limits<double>::quiet_NaN();
-  const Proximity_graph g = build_knn_graph(m, 1);
-  std::vector<double> nearest(m.rows, std::numeric_limits<double>::infinity());
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    for (const Vertex_index v : g.edges[e]) nearest[v] = std::min(nearest[v], g.edge_lengths[e]);
+  std::vector<double> nearest;
+  if (m.rows <= most) {
+    const Proximity_graph g = build_knn_graph(m, 1);
+    nearest.assign(m.rows, std::numeric_limits<double>::infinity());
+    for (std::size_t e = 0; e < g.edges.size(); ++e)
+      for (const Vertex_index v : g.edges[e]) nearest[v] = std::min(nearest[v], g.edge_lengths[e]);
+  } else {
+    for (std::size_t t = 0; t < most; ++t) {
+      const std::size_t i = t * m.rows / most;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < m.rows; ++j)
+        if (j != i) best = std::min(best, skeleton::internal::point_distance(m.row(i), m.row(j), m.dimension));
+      nearest.push_back(best);
+    }
+  }
   return median_of(nearest);
 }
 double median_nearest_distance(const std::vector<double>& D, std::size_t n) {  // a distance matrix, row-major
@@ -647,9 +660,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
     std::fprintf(stderr,
                  "featurerecon skeleton: warning: at radius %s the Rips graph has %zu edge%s for %zu points (fewer "
                  "than one neighbour per point), so the skeleton is mostly single points; the median distance from a "
-                 "point to its nearest neighbour is %.3g: give --radius above it (a few times it joins each point to "
+                 "point to its nearest neighbour is %.3g%s: give --radius above it (a few times it joins each point to "
                  "its neighbours)\n",
-                 json_number(radius).c_str(), s.rips_edges, s.rips_edges == 1 ? "" : "s", sampled, spacing_hint);
+                 json_number(radius).c_str(), s.rips_edges, s.rips_edges == 1 ? "" : "s", sampled, spacing_hint,
+                 sampled > 2000 && !args.has("distance-matrix") ? " (over 2,000 of them)" : "");
   std::size_t components = 0;
   {
     std::vector<int> comp(num_vertices(graph));

@@ -482,7 +482,7 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
   ASSERT_EQ(cut.size(), 2u);  // (A and B are not cut further: their gaps of 1 are not wider than their points)
   for (const auto& group : cut) {
     EXPECT_EQ(group.rows.size(), 10u);
-    EXPECT_EQ(group.separation, 10 * (1 - 0x1p-50));
+    EXPECT_EQ(group.separation, std::nextafter(10 * (1 - 0x1p-50), 0.0));
   }
   for (const std::size_t kl : {1u, 3u, 8u, 9u, 10u, 12u, 19u}) {
     skeleton::internal::Knn_search_counts c;
@@ -498,6 +498,39 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
       EXPECT_EQ(c.unresolved, 0u);  // A and B would hold fewer than k + 1 points: not cut
     }
   }
+  // Progress with groups: their rows in [0, 0.9], the points searched among all in [0.9, 1], non-decreasing; a stop
+  // in the second stage ends it (no report after the refusal, fewer edges).
+  {
+    std::vector<double> seen;
+    Proximity_graph_options watched = o;
+    watched.progress = [&](double t) {
+      seen.push_back(t);
+      return true;
+    };
+    const std::vector<Edge> all = build_knn_graph(ab, 9, watched).edges;
+    EXPECT_EQ(all, brute_knn(ab, 9));
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_EQ(seen.back(), 1.0);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 0.9), 1);  // the second stage's start
+    std::vector<double> after_stop;
+    bool refused = false;
+    watched.progress = [&](double t) {
+      if (refused) after_stop.push_back(t);
+      refused = refused || t >= 0.9;
+      return t < 0.9;
+    };
+    EXPECT_LT(build_knn_graph(ab, 9, watched).edges.size(), all.size());
+    EXPECT_TRUE(after_stop.empty());
+  }
+  // A gap of subnormal width: exact, and gap (1 - 2^-50) rounds back to it, so the separation is one step below.
+  // The origin's nearest (k = 1) ties at 2^-1073 between points 0, 1 (across the gap) and 3 (its own side; the
+  // brute force in double squares these to 0): point 0 by index.
+  const double eps = std::numeric_limits<double>::denorm_min();
+  const Coords tiny = {{2 * eps, 0, 0, 0, 0}, {2 * eps, 0, 0, 0, 0}, {0, 0, 0, 0, 0}, {0, eps, eps, eps, eps}};
+  const auto tiny_groups = skeleton::internal::isolated_groups(make_point_matrix(tiny), 2);
+  ASSERT_EQ(tiny_groups.size(), 2u);
+  EXPECT_LT(tiny_groups[0].separation, 2 * eps);
+  EXPECT_EQ(build_knn_graph(tiny, 1, o).edges, (std::vector<Edge>{{0, 1}, {0, 2}, {2, 3}}));
   // Three clusters far apart on one axis (400, 5 and 200 points; the 5 are a group of their own for k = 4, too few
   // for k = 5 and go with a neighbour), copies across clusters, a far point of a group's float filter; every answer
   // the brute force's.

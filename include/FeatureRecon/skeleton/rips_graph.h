@@ -273,6 +273,18 @@ struct Brute_force_index {
     g.noalias() = centred.middleCols(static_cast<Eigen::Index>(from), nc).transpose() *
                   centred.middleCols(static_cast<Eigen::Index>(b), nb);
   }
+  /// gram() for the indexed points rows[0, count) (any order) against all: the products of rows[r] start at
+  /// gram_row(r).
+  void gram_of(const std::uint32_t* list, std::size_t count) const {
+    Eigen::MatrixXf gathered(centred.rows(), static_cast<Eigen::Index>(count));
+    for (std::size_t r = 0; r < count; ++r)
+      gathered.col(static_cast<Eigen::Index>(r)) = centred.col(static_cast<Eigen::Index>(list[r]));
+    const std::size_t cells = count * size;
+    if (gram_buffer.size() < cells) gram_buffer.resize(cells);
+    gram_columns = size;
+    Eigen::Map<Eigen::MatrixXf> g(gram_buffer.data(), static_cast<Eigen::Index>(size), static_cast<Eigen::Index>(count));
+    g.noalias() = centred.transpose() * gathered;
+  }
   /// The products of the r-th point of the last gram() block with the points from its `from` on.
   const float* gram_row(std::size_t r) const { return gram_buffer.data() + r * gram_columns; }
   /// Calls visit(i, j, lo, hi), lo <= the true squared distance (scaled) <= hi, for every i in [b, e) and every
@@ -435,10 +447,11 @@ inline std::vector<Isolated_group> isolated_groups(const Point_matrix& m, std::s
     }
     bool cut = false;
     for (std::size_t q = 0; q < gaps.size(); ++q) {
-      // The computed difference rounds by a relative 2^-53 at most: the true gap exceeds gap (1 - 2^-50).
+      // The computed difference rounds by a relative 2^-53 at most: the true gap exceeds gap (1 - 2^-50) (strictly).
       const bool kept = gaps[q] > std::max(extents[q], extents[q + 1]) && starts[q + 1] - starts[q] >= min_size &&
                         starts[q + 2] - starts[q + 1] >= min_size;
-      gaps[q] = kept ? gaps[q] * (1 - 0x1p-50) : 0.0;
+      // Subnormal gaps are exact and gap (1 - 2^-50) rounds back to them: one step down keeps the bound strict.
+      gaps[q] = kept ? std::nextafter(gaps[q] * (1 - 0x1p-50), 0.0) : 0.0;
       cut = cut || gaps[q] > 0;
     }
     if (!cut) {
@@ -833,11 +846,13 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       keep_nearest(index.rows ? index.rows[i] : i, need_order);
     };
     std::size_t rows_done = 0;  // for the progress reports
+    double progress_scale = 1;  // with several groups their rows take [0, 0.9], the points searched among all the rest
     // Calls found(i) with the kk nearest of each indexed point i within the index in cand.
     const auto search = [&](const internal::Brute_force_index& index, auto&& found) {
       const std::size_t size = index.size, block = 256;
       for (std::size_t b = 0; b < size && !stopped; b += block) {
-        if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(rows_done + b) / n)) {
+        if (!FeatureRecon::internal::report_progress(options.progress,
+                                                     progress_scale * static_cast<double>(rows_done + b) / n)) {
           stopped = true;
           break;
         }
@@ -857,6 +872,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
     } else {
       std::vector<std::uint32_t> unresolved;
       need_order = true;
+      progress_scale = 0.9;
       for (const internal::Isolated_group& group : groups) {
         if (group.rows.size() <= kk) {  // too few to hold anyone's k nearest
           unresolved.insert(unresolved.end(), group.rows.begin(), group.rows.end());
@@ -874,14 +890,21 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       }
       count.unresolved = unresolved.size();
       need_order = false;
-      if (!stopped && !unresolved.empty()) {
-        const internal::Brute_force_index index(m);  // refine() only: every pair is computed in double
-        for (const std::uint32_t i : unresolved) {
-          row.clear();
-          for (std::uint32_t j = 0; j < n; ++j)
-            if (j != i) row.push_back(Enclosure{-inf, inf, j});
-          choose(index, i);
-          add_edges(i);
+      if (!stopped && !unresolved.empty()) {  // among all points, with the float filter of all of them
+        const internal::Brute_force_index index(m);
+        const std::size_t u = unresolved.size(), block = 256;
+        for (std::size_t b = 0; b < u; b += block) {
+          if (!FeatureRecon::internal::report_progress(options.progress, 0.9 + 0.1 * static_cast<double>(b) / u)) {
+            stopped = true;
+            break;
+          }
+          const std::size_t e = std::min(u, b + block);
+          index.gram_of(unresolved.data() + b, e - b);
+          for (std::size_t t = b; t < e; ++t) {
+            fill_row(index, unresolved[t], index.gram_row(t - b));
+            choose(index, unresolved[t]);
+            add_edges(unresolved[t]);
+          }
         }
       }
     }
