@@ -438,6 +438,59 @@ TEST(KnnGraph, NearestByIntervalsThenExactly) {
   }
 }
 
+TEST(KnnGraph, KdTreeSkipsTheBallOnlyPastAClearGap) {
+  // Up to 3-D the kd-tree search asks for one position more than it needs; when that one lies clearly beyond the
+  // last needed, the positions before it are the candidates and no ball query is made. Ties (exact, or of inexact
+  // squares: multiples of 0.1), copies, collinear points, UTM-sized offsets and tiny or huge scales are compared
+  // with the brute force (whose exact order is tested above), and the ball is counted.
+  std::mt19937_64 rng(7);
+  std::size_t balls = 0, positions = 0;
+  for (int trial = 0; trial < 900; ++trial) {
+    const std::size_t d = 1 + static_cast<std::size_t>(trial % 3), n = 1 + rng() % 60;
+    const int kind = (trial / 3) % 5;
+    const double scale = trial % 7 == 0 ? 1e9 : (trial % 7 == 1 ? 1e-200 : 1.0), offset = trial % 11 == 0 ? 4.6e6 : 0;
+    Point_matrix m;
+    m.dimension = d;
+    m.rows = n;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t c = 0; c < d; ++c) {
+        double x = 0;
+        if (kind == 0) x = std::uniform_real_distribution<double>(0, 1)(rng);
+        if (kind == 1) x = static_cast<double>(rng() % 5);  // a grid with copies
+        if (kind == 2) x = static_cast<double>(rng() % 3) * 0.1;
+        if (kind == 3) x = c == 0 ? static_cast<double>(rng() % 20) : 0.0;  // collinear
+        if (kind == 4) x = std::ldexp(static_cast<double>(rng() % 8), -static_cast<int>(rng() % 3));
+        m.data.push_back(offset + x * scale);
+      }
+    const std::size_t k = 1 + rng() % 10;
+    Proximity_graph_options kd, brute;
+    kd.search = Neighbor_search::kd_tree;
+    brute.search = Neighbor_search::brute_force;
+    skeleton::internal::Knn_search_counts counts;
+    EXPECT_EQ(skeleton::internal::knn_graph(m, k, kd, &counts).edges, build_knn_graph(m, k, brute).edges)
+        << "trial " << trial;
+    balls += counts.ball_queries;
+    positions += n;
+  }
+  EXPECT_GT(balls, positions / 20);  // the ties and copies need the ball
+  // A grid with k = 8: the 8 nearest (4 at 1, 4 at sqrt 2) are followed by a gap (2) everywhere but where the
+  // border makes ties at the k-th.
+  Point_matrix grid;
+  grid.dimension = 2;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) grid.data.insert(grid.data.end(), {double(i), double(j)});
+  grid.rows = 900;
+  skeleton::internal::Knn_search_counts counts;
+  Proximity_graph_options kd;
+  kd.search = Neighbor_search::kd_tree;
+  const Proximity_graph g = skeleton::internal::knn_graph(grid, 8, kd, &counts);
+  Proximity_graph_options brute;
+  brute.search = Neighbor_search::brute_force;
+  EXPECT_EQ(g.edges, build_knn_graph(grid, 8, brute).edges);
+  EXPECT_GT(counts.ball_queries, 0u);
+  EXPECT_LT(counts.ball_queries, 200u);
+}
+
 TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
   // The brute force (dimension > 3) splits off groups far from the rest (isolated_groups()) and searches each with
   // its own float filter; a group answers for a point only when the k-th nearest within it lies within the group's

@@ -134,10 +134,12 @@ struct Kd_index {
   /// absolute 1e-150 covers coordinates that vanished in the scaling (a range beyond 2^1000).
   void ball(std::uint32_t i, double r, std::vector<std::uint32_t>& out) const {
     out.clear();
-    const double slack =
-        1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z())) + 1e-150;
-    CGAL::Fuzzy_sphere<Kd_traits> query(i, r + slack, 0.0, tree->traits());
+    CGAL::Fuzzy_sphere<Kd_traits> query(i, ball_radius(i, r), 0.0, tree->traits());
     tree->search(std::back_inserter(out), query);
+  }
+  /// The radius ball(i, r) searches.
+  double ball_radius(std::uint32_t i, double r) const {
+    return r + 1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z())) + 1e-150;
   }
 };
 
@@ -669,6 +671,7 @@ namespace internal {
 struct Knn_search_counts {
   std::size_t refined = 0;     ///< pairs whose float enclosure was too wide, computed again in double
   std::size_t unresolved = 0;  ///< points whose group could not answer alone, searched among all points
+  std::size_t ball_queries = 0;  ///< kd-tree: positions whose k-th nearest had no clear gap after it (ties)
 };
 
 /// build_knn_graph() of a Point_matrix, counting its slow stages into `counts` (if not null).
@@ -737,21 +740,34 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       outside.clear();
       if (need > 0 && groups > 1) {
         // The nearest positions until their copies add up to `need`; their farthest distance bounds the ball
-        // that holds every position tied with the last one needed.
-        double far = 0;
-        for (std::size_t K = std::min(groups, need + 1);; K = std::min(groups, 2 * K)) {
+        // that holds every position tied with the last one needed. The search asks for one position more: when
+        // it lies clearly beyond that ball (and so does every position not reported, no nearer than it), the
+        // positions reported before it are exactly what the ball would hold, and the ball query is skipped.
+        double far = 0, next = -1;  // squared, in the tree's units; next: the position after them (-1: none)
+        near_groups.clear();
+        for (std::size_t K = std::min(groups, need + 2);; K = std::min(groups, 2 * K)) {
           Knn search(*index.tree, index.points[q], static_cast<unsigned>(K), 0.0, true, dist);
           std::size_t found = 0;
           far = 0;
+          next = -1;
+          near_groups.clear();
           for (const auto& nb : search) {
             if (nb.first == q) continue;
+            if (found >= need) {
+              next = nb.second;
+              break;
+            }
             found += first[nb.first + 1] - first[nb.first];
             far = std::max(far, nb.second);
-            if (found >= need) break;
+            near_groups.push_back(nb.first);
           }
           if (found >= need || K == groups) break;
         }
-        index.ball(q, std::sqrt(far), near_groups);
+        const double reach = index.ball_radius(q, std::sqrt(far));
+        if (!(next > reach * reach * (1 + 0x1p-40)) || !(far >= 0x1p-900)) {
+          index.ball(q, std::sqrt(far), near_groups);
+          ++count.ball_queries;
+        }
         for (const std::uint32_t r : near_groups)
           if (r != q)
             for (std::size_t t = first[r]; t < std::min(first[r + 1], first[r] + need); ++t)
