@@ -44,7 +44,12 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   if (args.positional().size() != 4)
     throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
   Map_comparison_options options;
-  if (args.has("threshold")) options.match_distance = args.get_positive_double("threshold");
+  if (args.has("threshold")) {
+    options.match_distance = args.get_positive_double("threshold");
+    if (!(options.match_distance >= 0x1p-450 && options.match_distance <= 0x1p450))
+      throw Usage_error("--threshold must be within [2^-450, 2^450] (about 3e-136 to 3e135: squares of distances "
+                        "near it stay normal doubles), got '" + args.get("threshold") + "'");
+  }
   if (args.has("interval")) options.interval = args.get_positive_double("interval");
   if (args.has("bearing")) options.bearing_limit = args.get_positive_double("bearing");
   const std::string matching = args.get_or("matching", "greedy");

@@ -730,6 +730,38 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
   EXPECT_EQ(b.matched, 120u);
   EXPECT_DOUBLE_EQ(matching_weight(many, few, a, o), 120 * 15.0);
   EXPECT_DOUBLE_EQ(matching_weight(few, many, b, o), 120 * 15.0);
+  // The side assigned is chosen per connected component of the admissible pairs: here the cluster's smaller side
+  // belongs to the map that is larger overall (1,000 samples elsewhere), and the surplus of the cluster still never
+  // searches (chosen by the whole maps, each of the 180 surplus samples settled the 120 matched ones: 21,600).
+  std::vector<Map_sample> few_and_far = few;
+  for (int i = 0; i < 1000; ++i) few_and_far.push_back(Map_sample{{1000.0 + 20 * i, 0}, 90});
+  for (const bool swap : {false, true}) {
+    Map_sample_matching P;
+    const std::vector<Map_sample>& H = swap ? few_and_far : many;
+    const std::vector<Map_sample>& G = swap ? many : few_and_far;
+    P.ground_truth_partner.assign(H.size(), -1);
+    P.reconstruction_partner.assign(G.size(), -1);
+    std::size_t searched = 0;
+    ASSERT_TRUE(skeleton::internal::match_optimal(H, G, o, P, "match_map_samples", std::size_t(1) << 26, &searched));
+    EXPECT_EQ(P.matched, 120u);
+    EXPECT_LT(searched, 1000u) << "swap " << swap;
+  }
+  // Components of different sizes, some with the ground truth smaller, some with the reconstruction smaller, are
+  // each matched optimally (the weight of the whole equals the sum over the parts).
+  std::vector<Map_sample> H2, G2;
+  double by_parts = 0;
+  for (int c = 0; c < 6; ++c) {
+    std::vector<Map_sample> h, g;
+    for (int i = 0; i < 2 + 3 * (c % 3); ++i) {
+      (c % 2 ? h : g).push_back(Map_sample{{100.0 * c + i, 0.5 * i}, 0});
+      if (i % 2 == 0) (c % 2 ? g : h).push_back(Map_sample{{100.0 * c + i + 0.25, 0}, 0});
+    }
+    by_parts += brute_force_weight(h, g, o);
+    H2.insert(H2.end(), h.begin(), h.end());
+    G2.insert(G2.end(), g.begin(), g.end());
+  }
+  const Map_sample_matching whole = match_map_samples(H2, G2, o);
+  EXPECT_NEAR(matching_weight(H2, G2, whole, o), by_parts, 1e-9);
   // Too many admissible pairs for memory are refused, naming the remedy.
   Map_sample_matching M;
   M.ground_truth_partner.assign(many.size(), -1);

@@ -54,7 +54,9 @@ enum class Map_matching {
 
 /// Options of compare_maps() (the graph-sampling metric of Biagioni and Eriksson, global variant).
 struct Map_comparison_options {
-  double match_distance = 15.0;  ///< samples match when at most this far apart (m); default 15
+  /// Samples match when at most this far apart (m); default 15. Within [2^-450, 2^450] (about 3e-136 to 3e135):
+  /// squares of distances near it stay normal doubles
+  double match_distance = 15.0;
   double interval = 5.0;         ///< distance between samples along edges (m); default 5
   /// Samples match when their direction-insensitive bearings (differences in [0, 90]) differ by less (degrees;
   /// above 90: bearings are ignored); default 45
@@ -98,8 +100,11 @@ struct Map_comparison_result {
 namespace internal {
 inline double bearing_of(const std::array<double, 2>& a, const std::array<double, 2>& b) {
   const double deg = std::atan2(b[0] - a[0], b[1] - a[1]) * 180.0 / std::acos(-1.0);  // from north, clockwise
-  return deg < 0 ? deg + 360.0 : deg;
+  // A hair west of north: deg + 360 rounds to 360, outside [0, 360); the largest double below it instead.
+  return deg < 0 ? std::min(deg + 360.0, std::nextafter(360.0, 0.0)) : deg;
 }
+/// The range of distances a metric accepts: their squares stay normal doubles.
+constexpr double min_metric_distance = 0x1p-450, max_metric_distance = 0x1p450;
 /// Direction-insensitive bearing difference in [0, 90].
 inline double bearing_difference(double a, double b) {
   const double d = std::abs(a - b);
@@ -266,8 +271,10 @@ struct Map_sample_matching {
 namespace internal {
 /// \cond
 inline void check_map_comparison_options(const Map_comparison_options& options, const char* fn) {
-  if (!(options.match_distance > 0 && std::isfinite(options.match_distance)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "match_distance must be > 0, got ", options.match_distance);
+  if (!(options.match_distance >= min_metric_distance && options.match_distance <= max_metric_distance))
+    FeatureRecon::internal::throw_invalid_argument(fn, "match_distance must be within [2^-450, 2^450] (positive and "
+                                                   "finite; squares of distances near it stay normal), got ",
+                                                   options.match_distance);
   if (!(options.bearing_limit > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be > 0, got ", options.bearing_limit);
   if (options.candidates < 1) FeatureRecon::internal::throw_invalid_argument(fn, "candidates must be >= 1, got 0");
@@ -303,8 +310,15 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
   using Traits =
       CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type, CGAL::Search_traits_2<K>>;
   using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  // The tree holds the positions times a power of two that brings the largest to about 2^30 (exact), so that
+  // squared distances of maps drawn at 1e-200 or 1e160 neither underflow nor overflow; distances are then taken
+  // from the positions themselves.
+  double largest = 0;
+  for (const auto* set : {&H, &G})
+    for (const Map_sample& s : *set) largest = std::max({largest, std::abs(s.position[0]), std::abs(s.position[1])});
+  const double unit = largest > 0 ? std::ldexp(1.0, std::clamp(30 - std::ilogb(largest), -1000, 1000)) : 1.0;
   std::vector<Point> gp;
-  for (const Map_sample& s : G) gp.emplace_back(s.position[0], s.position[1]);
+  for (const Map_sample& s : G) gp.emplace_back(s.position[0] * unit, s.position[1] * unit);
   std::vector<std::uint32_t> keys(G.size());
   std::iota(keys.begin(), keys.end(), 0u);
   typename Knn::Tree tree(keys.begin(), keys.end(), typename Knn::Tree::Splitter(),
@@ -314,7 +328,7 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
   std::vector<char> taken(G.size(), 0);
   // Nearest admissible (bearing) available partner among the k nearest, or none.
   auto best_partner = [&](std::size_t h, double& d) -> std::int64_t {
-    const Point q(H[h].position[0], H[h].position[1]);
+    const Point q(H[h].position[0] * unit, H[h].position[1] * unit);
     // At most |G| neighbours exist (and more than 2^32 - 1 would wrap to 0 in the cast).
     const std::size_t k = std::min<std::size_t>(options.candidates, G.size());
     Knn search(tree, q, static_cast<unsigned>(std::min<std::size_t>(k, 0xffffffffu)), 0.0, true, dist);
@@ -322,7 +336,7 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
       const std::uint32_t g = nb.first;
       if (taken[g]) continue;
       if (bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
-        d = std::sqrt(nb.second);
+        d = std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]);
         return g;
       }
     }
@@ -387,10 +401,11 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
 /// distances ends its search there), then a matched one, then an "unmatched" partner (a tie between pairing
 /// and leaving unmatched goes to pairing), smaller indices first. Returns for each sample of
 /// L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are refused (memory). Stopped
-/// by the progress callback: `stopped` set, the assignment partial.
+/// by the progress callback: `stopped` set, the assignment partial. `searched` (if not null) counts the matched
+/// samples of R that the searches settle (for tests).
 inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L, const std::vector<Map_sample>& R,
                                                    const Map_comparison_options& options, std::size_t max_pairs,
-                                                   const char* fn, bool& stopped) {
+                                                   const char* fn, bool& stopped, std::size_t* searched = nullptr) {
   const double T = options.match_distance;
   const std::size_t nl = L.size(), nr = R.size();
   // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
@@ -474,6 +489,7 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
         break;
       }
       settled_r.push_back(node);
+      if (searched) ++*searched;
       const std::size_t x = mate_r[node];
       dist_l[x] = d;
       reached_l.push_back(x);
@@ -499,25 +515,97 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
   return mate_l;
 }
 
-/// The optimal matching of H and G: the smaller set is assigned (optimal_assignment()), so that the samples
-/// left over search only while the other side still has free samples near them (with the larger set assigned,
-/// each surplus sample of a dense cluster would search all of it).
-/// Returns false when the progress callback stopped it (M then holds no pair).
+/// The optimal matching of H and G, one connected component of the admissible pairs at a time (pairs of different
+/// components do not interact): in each the smaller side is assigned (optimal_assignment(); ties: the ground
+/// truth), so that the samples left over search only while the other side still has free samples near them. With
+/// the larger side assigned, each surplus sample of a dense cluster would search all of it; choosing the side by
+/// the whole maps did that wherever a map was larger overall but smaller there (a street drawn 300 times against
+/// 600: 40 s).
+/// Returns false when the progress callback stopped it (M then holds no pair). `searched`: see optimal_assignment().
 inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
                           const Map_comparison_options& options, Map_sample_matching& M, const char* fn,
-                          std::size_t max_pairs = std::size_t(1) << 26) {
-  const bool swap = G.size() < H.size();
-  bool stopped = false;
-  const std::vector<std::size_t> mate = swap ? optimal_assignment(G, H, options, max_pairs, fn, stopped)
-                                             : optimal_assignment(H, G, options, max_pairs, fn, stopped);
-  if (stopped) return false;
-  for (std::size_t i = 0; i < mate.size(); ++i)
-    if (mate[i] != std::numeric_limits<std::size_t>::max()) {
-      if (swap)
-        pair_samples(M, mate[i], i);
-      else
-        pair_samples(M, i, mate[i]);
+                          std::size_t max_pairs = std::size_t(1) << 26, std::size_t* searched = nullptr) {
+  const std::size_t nh = H.size(), ng = G.size();
+  const double T = options.match_distance;
+  // Components: union-find over the admissible pairs (ground-truth samples 0..nh-1, then reconstruction ones).
+  std::vector<std::size_t> parent(nh + ng);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  std::vector<char> paired(nh, 0);  // a ground-truth sample with an admissible pair
+  const auto find = [&parent](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  {
+    std::vector<std::array<double, 2>> gp(ng);
+    for (std::size_t g = 0; g < ng; ++g) gp[g] = G[g].position;
+    const FeatureRecon::internal::Uniform_grid<2> grid(gp, T);
+    std::size_t pairs = 0;
+    for (std::size_t h = 0; h < nh; ++h) {
+      if (h % 4096 == 4095 &&
+          !FeatureRecon::internal::report_progress(options.progress, 0.05 * static_cast<double>(h) / nh))
+        return false;
+      grid.for_each_candidate(H[h].position, [&](std::uint32_t g) {
+        const double d = std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]);
+        if (d <= T && bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
+          ++pairs;
+          paired[h] = 1;
+          const std::size_t a = find(h), b = find(nh + g);
+          if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        }
+      });
+      if (pairs > max_pairs)
+        FeatureRecon::internal::throw_invalid_argument(fn, "more than ", max_pairs, " sample pairs lie within ",
+                                                       "match_distance (", T, " m) of each other (maps stacked on ",
+                                                       "themselves?): too many for the optimal matching; use the "
+                                                       "greedy one");
     }
+  }
+  // Members of each component with a pair, in index order (components by their smallest ground-truth sample).
+  std::vector<std::size_t> slot(nh + ng, std::numeric_limits<std::size_t>::max());
+  std::vector<std::vector<std::size_t>> members_h, members_g;
+  for (std::size_t x = 0; x < nh + ng; ++x) {
+    const std::size_t r = find(x);
+    if (x < nh ? !paired[x] : r == x) continue;  // no pair (a ground-truth sample is the root of its component)
+    if (slot[r] == std::numeric_limits<std::size_t>::max()) {
+      slot[r] = members_h.size();
+      members_h.emplace_back();
+      members_g.emplace_back();
+    }
+    (x < nh ? members_h[slot[r]] : members_g[slot[r]]).push_back(x < nh ? x : x - nh);
+  }
+  std::size_t done = 0, in_components = 0;  // samples of the components (assigned so far), for the progress
+  for (std::size_t c = 0; c < members_h.size(); ++c) in_components += members_h[c].size() + members_g[c].size();
+  const double total = static_cast<double>(std::max<std::size_t>(in_components, 1));
+  bool stopped = false;
+  std::vector<Map_sample> sub_h, sub_g;
+  for (std::size_t c = 0; c < members_h.size() && !stopped; ++c) {
+    const std::vector<std::size_t>& mh = members_h[c];
+    const std::vector<std::size_t>& mg = members_g[c];
+    const std::size_t size = mh.size() + mg.size();
+    const double from = 0.05 + 0.95 * static_cast<double>(done) / total;
+    if (c % 256 == 255 && !FeatureRecon::internal::report_progress(options.progress, from)) return false;
+    sub_h.clear();
+    sub_g.clear();
+    for (const std::size_t h : mh) sub_h.push_back(H[h]);
+    for (const std::size_t g : mg) sub_g.push_back(G[g]);
+    Map_comparison_options sub = options;
+    if (options.progress) {
+      const double share = 0.95 * static_cast<double>(size) / total;
+      sub.progress = [&options, from, share](double f) { return options.progress(from + share * f); };
+    }
+    const bool swap = sub_g.size() < sub_h.size();
+    const std::vector<std::size_t> mate = swap ? optimal_assignment(sub_g, sub_h, sub, max_pairs, fn, stopped, searched)
+                                               : optimal_assignment(sub_h, sub_g, sub, max_pairs, fn, stopped, searched);
+    if (stopped) return false;
+    for (std::size_t i = 0; i < mate.size(); ++i)
+      if (mate[i] != std::numeric_limits<std::size_t>::max()) {
+        if (swap)
+          pair_samples(M, mh[mate[i]], mg[i]);
+        else
+          pair_samples(M, mh[i], mg[mate[i]]);
+      }
+    done += size;
+  }
   return true;
 }
 /// \endcond
@@ -527,8 +615,8 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
 /// reconstruction sample g may pair when at most match_distance apart and their direction-insensitive bearings
 /// differ by less than bearing_limit; options.matching says how pairs are chosen (Map_matching). The progress
 /// callback is asked every few thousand samples; a stop leaves no pair (status interrupted).
-/// \throws std::invalid_argument for options as compare_maps() refuses them or a non-finite position or bearing
-///   (naming the map and the sample).
+/// \throws std::invalid_argument for options as compare_maps() refuses them, a non-finite position or a bearing
+///   outside [0, 360) (naming the map and the sample).
 inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& ground_truth,
                                              const std::vector<Map_sample>& reconstruction,
                                              const Map_comparison_options& options = {}) {
@@ -537,9 +625,10 @@ inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& grou
   for (const auto* set : {&ground_truth, &reconstruction})
     for (std::size_t i = 0; i < set->size(); ++i) {
       const Map_sample& s = (*set)[i];
-      if (!std::isfinite(s.position[0]) || !std::isfinite(s.position[1]) || !std::isfinite(s.bearing))
+      if (!std::isfinite(s.position[0]) || !std::isfinite(s.position[1]) || !(s.bearing >= 0 && s.bearing < 360))
         FeatureRecon::internal::throw_invalid_argument(fn, set == &ground_truth ? "ground-truth" : "reconstruction",
-                                                       " sample ", i, " has a non-finite position or bearing");
+                                                       " sample ", i, " has a non-finite position or a bearing ",
+                                                       "outside [0, 360) (", s.bearing, ")");
     }
   Map_sample_matching M = internal::no_pairs(ground_truth.size(), reconstruction.size());
   if (!ground_truth.empty() && !reconstruction.empty() &&
@@ -674,7 +763,8 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
 
 /// Options of count_trips_along() and explain_trace_support().
 struct Trace_support_options {
-  /// A trip drives along a sample when one of its segments passes this close (m); default 15 (the comparison's)
+  /// A trip drives along a sample when one of its segments passes this close (m); default 15 (the comparison's);
+  /// within [2^-450, 2^450]
   double radius = 15.0;
   /// ... with a direction-insensitive bearing difference below this (degrees); above 90 every direction counts;
   /// default 45 (the comparison's)
@@ -696,15 +786,15 @@ inline Trace_support_options trace_support_options(const Map_comparison_options&
 /// Time: per segment whose bounding box meets the samples' (grown by the radius), its length clipped to that box
 /// over the radius, or the number of samples when that is less, plus the samples met; a glitch fix far away costs
 /// nothing extra. (A segment with an end beyond 2^44 radii from the origin is checked against every sample.)
-/// \throws std::invalid_argument naming the option (radius not positive and finite, bearing limit not positive),
+/// \throws std::invalid_argument naming the option (radius outside [2^-450, 2^450], bearing limit not positive),
 ///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate or time.
 inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
                                                   const std::vector<Gps_trip>& trips,
                                                   const Trace_support_options& options = {}) {
   const char* fn = "count_trips_along";
-  if (!(options.radius > 0 && std::isfinite(options.radius)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be positive and finite, got ",
-                                                   options.radius);
+  if (!(options.radius >= internal::min_metric_distance && options.radius <= internal::max_metric_distance))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be within [2^-450, 2^450] (positive and finite; ",
+                                                   "squares of distances near it stay normal), got ", options.radius);
   if (!(options.bearing_limit > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be positive (degrees), got ",
                                                    options.bearing_limit);
