@@ -215,9 +215,9 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
       const auto it = grid.find(probe);
       if (it == grid.end()) continue;
       for (const std::size_t j : it->second) {
-        double s = 0;
-        for (std::size_t c = 0; c < m.dimension; ++c) s += (m.row(i)[c] - m.row(j)[c]) * (m.row(i)[c] - m.row(j)[c]);
-        if (s < spacing * spacing) {
+        // Scaled where squares would underflow or overflow (a spacing of 1e-200 kept copies, of 1e190 points 1e185
+        // apart).
+        if (FeatureRecon::skeleton::internal::point_distance(m.row(i), m.row(j), m.dimension) < spacing) {
           close = true;
           break;
         }
@@ -597,6 +597,14 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
                  json_number(use_merged ? road.merged.length_before : unmerged_length) + ", \"length\": " +
                  json_number(use_merged ? road.merged.length_after : unmerged_length);
+    if (use_merged) {  // how the written lines were drawn (the fields below without merge_ drew the skeleton before)
+      const Embedding_options& drawn = skeleton::road_map_merge_options(road.used).embedding;
+      input_json += std::string(", \"merge_smoothing\": \"") +
+                    (drawn.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian") +
+                    "\", \"merge_smoothing_rounds\": " + std::to_string(drawn.smoothing_iterations) +
+                    ", \"merge_level_width\": " + json_number(road.merged.level_width) +
+                    ", \"merge_max_gap\": " + json_number(road.merged.max_gap);
+    }
     if (lonlat)
       input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
                     ", \"origin_latitude\": " + json_number(projection.origin_latitude);

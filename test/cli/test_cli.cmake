@@ -308,7 +308,9 @@ expect(skeleton_tracks_unmerged_length 0 "\"merge_distance\": 0, \"length_before
 # Merging (default 8 m) draws the streets, driven both ways, once: about 720 m of lines (the block and the spur
 # are 750 m) instead of about 1310, and the merged map (which the JSON describes) has the block's one loop (two
 # in session 11, when a corner where the two directions cut differently stayed a thin loop).
-expect(skeleton_tracks_merged 0 "\"loops\": 1, \"components\": 1,.*\"merge_distance\": 8, \"length_before_merge\": 1[23][0-9][0-9]\\.[0-9]*, \"length\": 7[0-9][0-9]\\." skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+expect(skeleton_tracks_merged 0 "\"loops\": 1, \"components\": 1,.*\"merge_distance\": 8, \"length_before_merge\": 1[23][0-9][0-9]\\.[0-9]*, \"length\": 7[0-9][0-9]\\.[0-9]*, \"merge_smoothing\": \"laplacian\", \"merge_smoothing_rounds\": 20, \"merge_level_width\": [0-9.]+, \"merge_max_gap\": [0-9.]+" skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
+# The written lines are drawn by the merge: --smoothing draws the skeleton before it, and the JSON says so.
+expect(skeleton_tracks_merge_drawing 0 "\"smoothing\": \"taubin\", \"smoothing_rounds\": 0,.*\"merge_smoothing\": \"laplacian\", \"merge_smoothing_rounds\": 20," skeleton --tracks ${DATA}/block_tracks.txt --smoothing 0 --smoothing-method taubin --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 # Samples at the mean of their fixes by default; --first-point-positions keeps them where they were created.
 expect(skeleton_tracks_mean_positions 0 "\"directed\": true, \"mean_positions\": true," skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_tracks_first_point 0 "\"components\": 1,.*\"mean_positions\": false," skeleton --tracks ${DATA}/block_tracks.txt --first-point-positions --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
@@ -714,6 +716,14 @@ foreach(i RANGE 99)
 endforeach()
 file(WRITE ${WORK}/d14.xyz "${d14}")
 expect(thinning_high_dimension 0 "\"points\": 200, \"sampled\": 100," skeleton --points ${WORK}/d14.xyz --radius 2 --sample-spacing 0.5 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# The metric's distances stay where their squares are normal doubles (1e155 crashed --tracks: the square overflowed).
+expect(evaluate_map_threshold_range 2 "--threshold must be within \\[2\\^-450, 2\\^450\\].*got '1e155'" evaluate-map ${WORK}/thin_dup.xyz ${WORK}/thin_dup.xyz ${WORK}/thin_dup.xyz ${WORK}/thin_dup.xyz --threshold 1e155)
+# Thinning at extreme scales: squares of distances underflowed (copies kept at a spacing of 1e-200) or overflowed
+# (points 1e185 apart kept at 1e190).
+file(WRITE ${WORK}/thin_dup.xyz "1 1\n1 1\n1 1\n2 2\n")
+expect(thinning_tiny_spacing 0 "\"points\": 4, \"sampled\": 2," skeleton --points ${WORK}/thin_dup.xyz --radius 1e-150 --sample-spacing 1e-200 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+file(WRITE ${WORK}/thin_big.xyz "0 0\n1e185 0\n")
+expect(thinning_huge_spacing 0 "\"points\": 2, \"sampled\": 1," skeleton --points ${WORK}/thin_big.xyz --radius 1e190 --sample-spacing 1e190 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 
 # Point-cloud readers: a truncated or malformed OFF, XYZ or PLY file is an error naming the line or the reason;
 # XYZ blank lines (also CR-only and indented) and indented comments are skipped.

@@ -615,11 +615,35 @@ TEST(ExtractReebSkeleton, CopiesLeaveTheAutomaticLevelWidthAlone) {
     const Reeb_skeleton s = extract_reeb_skeleton(points, 1.0, o);
     EXPECT_EQ(s.level_width, once.level_width) << copies;
     EXPECT_EQ(s.branch_merge_distance, once.branch_merge_distance) << copies;
+    EXPECT_EQ(s.max_gap, once.max_gap) << copies;  // the embedding's automatic one, likewise (session 42)
     EXPECT_EQ(num_vertices(s.graph), num_vertices(once.graph)) << copies;
     EXPECT_EQ(num_edges(s.graph), num_edges(once.graph)) << copies;
     EXPECT_EQ(degree_4(s), 1u) << copies;
     expect_members_partition(s.graph, points.size());
   }
+}
+
+TEST(ExtractReebSkeleton, CopiesOfOneFarPointLeaveTheMaxGapAlone) {
+  // An L of points 0.5 apart and 300 copies of one point far from it: over all edges the median edge length was 0,
+  // so the automatic max_gap (twice it) turned bridging off for the whole skeleton.
+  std::vector<std::array<double, 2>> l;
+  for (int i = 0; i <= 25; ++i) l.push_back({0.5 * i, 0.0});
+  for (int i = 1; i <= 25; ++i) l.push_back({0.0, 0.5 * i});
+  Skeleton_options o;
+  o.delta = 0.5;
+  const Reeb_skeleton alone = extract_reeb_skeleton(l, 0.5, o);
+  ASSERT_EQ(alone.status, Status::success);
+  EXPECT_DOUBLE_EQ(alone.max_gap, 1.0);
+  std::vector<std::array<double, 2>> with = l;
+  for (int c = 0; c < 300; ++c) with.push_back({100.0, 100.0});
+  const Reeb_skeleton s = extract_reeb_skeleton(with, 0.5, o);
+  ASSERT_EQ(s.status, Status::success);
+  EXPECT_EQ(s.max_gap, alone.max_gap);
+  EXPECT_EQ(num_vertices(s.graph), num_vertices(alone.graph) + 1);  // the far point's node
+  // Only copies: no edge between distinct points, straight segments (nothing to bridge through).
+  const Reeb_skeleton copies = extract_reeb_skeleton(std::vector<std::array<double, 2>>(5, {1.0, 2.0}), 0.5, o);
+  EXPECT_EQ(copies.status, Status::success);
+  EXPECT_EQ(copies.max_gap, std::numeric_limits<double>::infinity());
 }
 
 TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {

@@ -99,6 +99,16 @@ TEST(TransverseMercator, ForwardRefusesPointsOffTheSphere) {
         EXPECT_NE(std::string(e.what()).find("Transverse_mercator: central_meridian"), std::string::npos) << e.what();
       }
   }
+  // inverse() of a non-finite or far-out position: an error, not the south pole (a NaN passed for -90 degrees).
+  for (const auto& [x, y] : {std::pair{std::nan(""), 0.0}, std::pair{0.0, std::nan("")}, std::pair{HUGE_VAL, 0.0},
+                             std::pair{1e9, 1e9}}) {
+    try {
+      const auto back = p.inverse(x, y);
+      ADD_FAILURE() << x << " " << y << " gave " << back[0] << " " << back[1];
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("Transverse_mercator::inverse: x "), std::string::npos) << e.what();
+    }
+  }
   EXPECT_TRUE(std::isfinite(p.forward(-87, 90)[1]));  // the poles are on it
   EXPECT_TRUE(std::isfinite(p.forward(-87, -90)[1]));
 }

@@ -509,6 +509,21 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   if (eo.level_width == 0) eo.level_width = automatic_level_width(S.graph);  // mostly duplicate points
   result.level_width = eo.level_width;
   const std::vector<std::array<double, 3>> projected = project_to_3d(coordinates);
+  if (eo.max_gap == 0 && !first.empty()) {
+    // The automatic max_gap (twice the median edge length in the embedding) over the edges between first copies,
+    // as the level width: with every point given twice (edges of length 0 and repeated lengths) it moved from
+    // 1.065 to 1.018 and one more node stayed; 300 copies of one point made it 0 (nothing bridged).
+    std::vector<double> l;
+    for (const auto& e : K.edges)
+      if (first[e[0]] == e[0] && first[e[1]] == e[1])
+        l.push_back(point_distance(projected[e[0]].data(), projected[e[1]].data(), 3));
+    double median = 0;
+    if (!l.empty()) {
+      std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
+      median = l[l.size() / 2];
+    }
+    eo.max_gap = median > 0 ? 2 * median : -1;  // none (all points copies of one): straight segments, as before
+  }
   eo.progress = stage(0.95, dimension > 3 ? 0.97 : 0.99);
   const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, projected, A.values(), dimension, eo);
   if (ended(E.status)) return result;

@@ -63,7 +63,12 @@ struct Transverse_mercator {
   }
 
   /// {longitude, latitude} in degrees of {x, y} in metres; the longitude in (-180, 180].
+  /// \throws std::invalid_argument for x or y not finite, or so far out that the series overflow (x beyond about
+  ///         700 semi-major axes: no point of the ellipsoid maps there).
   std::array<double, 2> inverse(double x, double y) const {
+    if (!std::isfinite(x) || !std::isfinite(y))
+      FeatureRecon::internal::throw_invalid_argument("Transverse_mercator::inverse", "x ", x, ", y ", y,
+                                                     ": both must be finite");
     const Constants& c = constants();
     const double xi = (y + northing_of_origin()) / c.A, eta = x / c.A;
     double xi1 = xi, eta1 = eta;
@@ -87,6 +92,9 @@ struct Transverse_mercator {
     }
     const double latitude = std::isfinite(tau) ? std::atan(tau) / degree : (chi > 0 ? 90.0 : -90.0);
     const double longitude = wrap(central_meridian + std::atan2(std::sinh(eta1), std::cos(xi1)) / degree);
+    if (std::isnan(chi) || std::isnan(longitude))  // (a NaN chi made the south pole)
+      FeatureRecon::internal::throw_invalid_argument("Transverse_mercator::inverse", "x ", x, ", y ", y,
+                                                     ": outside the range of the projection");
     return {longitude, latitude};
   }
 

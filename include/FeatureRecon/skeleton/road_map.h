@@ -122,6 +122,8 @@ struct Road_merge_result {
   std::size_t thin_loops_removed = 0;  ///< arcs removed as one side of a thin loop (see merge_road_lines())
   double spacing = 0;          ///< value used
   double delta = 0;            ///< value used
+  double level_width = 0;      ///< the embedding's level width used (Reeb_skeleton::level_width)
+  double max_gap = std::numeric_limits<double>::infinity();  ///< the embedding's max_gap used (Reeb_skeleton::max_gap)
   Status status = Status::success;  ///< degenerate_input for a map without vertices; interrupted by the callback
 };
 
@@ -502,6 +504,8 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     r.status = Status::interrupted;
     return r;
   }
+  r.level_width = k.level_width;
+  r.max_gap = k.max_gap;
   r.thin_loops_removed = internal::remove_thin_loops(k.graph, options.distance);
   r.map = skeleton_to_road_map(k.graph);
   r.skeleton = std::move(k.graph);
