@@ -147,6 +147,13 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   Road_map_options o;
   o.rips_radius = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("rips_radius"), std::string::npos);
+  o.rips_radius = 1e308;  // 5R overflowed and the skeleton named delta, repair_distance and prune_height
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("extract_road_map: rips_radius must be at most 1e300"),
+            std::string::npos);
+  o = {};
+  o.min_radius = 1e305;
+  o.max_radius = 1e306;
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("max_radius must be at most 1e300"), std::string::npos);
   o = {};
   o.min_radius = 60;
   EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("min_radius"), std::string::npos);

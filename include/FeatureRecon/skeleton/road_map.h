@@ -557,7 +557,8 @@ struct Road_map {
 
 /// The options with every automatic value of extract_road_map() filled in (delta, repair, prune and merge
 /// distance become 0 when turned off). The trace options' own automatic values are left to sample_gps_traces().
-/// \throws std::invalid_argument naming a non-finite option, a negative radius or clamp, or min_radius > max_radius.
+/// \throws std::invalid_argument naming a non-finite option, a negative radius or clamp, min_radius > max_radius, or
+///         a radius above 1e300.
 inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips, const Road_map_options& options) {
   const char* fn = "extract_road_map";
   if (!std::isfinite(options.rips_radius) || options.rips_radius < 0)
@@ -575,6 +576,10 @@ inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& tr
   const double M = median_gps_step(trips);
   const double R =
       options.rips_radius > 0 ? options.rips_radius : std::min(options.max_radius, std::max(options.min_radius, M));
+  if (!(R <= 1e300))  // the automatic delta, repair and prune (3R, 2.5R, 5R) must be finite
+    FeatureRecon::internal::throw_invalid_argument(fn, options.rips_radius > 0 ? "rips_radius" : "max_radius",
+                                                   " must be at most 1e300 (the automatic delta, repair_distance and ",
+                                                   "prune_height are 3, 2.5 and 5 times the radius), got ", R);
   u.rips_radius = R;
   auto rule = [](double value, double automatic) { return value > 0 ? value : value == 0 ? automatic : 0.0; };
   u.delta = rule(options.delta, 3 * R);
