@@ -482,26 +482,54 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud, const 
 }
 
 void estimate_normals(Point_cloud& cloud, unsigned neighbors) {
+  // Copies of a position share its normal: the fit runs on the distinct positions (a neighbourhood of 18 copies of
+  // one point has no plane, and the jet fit crashed on it: 30 copies among 500 points). Too few distinct positions
+  // for a fit (fewer than 6, or no neighbourhood spanning a plane) keep (0, 0, 1).
+  const std::size_t n = cloud.points.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&cloud](std::size_t a, std::size_t b) {
+    return cloud.points[a] < cloud.points[b] || (cloud.points[a] == cloud.points[b] && a < b);
+  });
+  std::vector<std::size_t> first(n);  // each point's first copy (by index)
+  for (std::size_t t = 0; t < n; ++t)
+    first[order[t]] = t > 0 && cloud.points[order[t]] == cloud.points[order[t - 1]] ? first[order[t - 1]] : order[t];
+  // The distinct positions in input order (without copies the fit sees the cloud as before, in its order).
+  std::vector<std::size_t> position_of(n);  // index of each point's position among the distinct ones
   std::vector<Pwn> pwn;
-  pwn.reserve(cloud.points.size());
-  for (const auto& p : cloud.points) pwn.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(0, 0, 0)});
-  CGAL::jet_estimate_normals<CGAL::Sequential_tag>(pwn, neighbors,
+  for (std::size_t i = 0; i < n; ++i) {
+    if (first[i] != i) {
+      position_of[i] = position_of[first[i]];
+      continue;
+    }
+    const auto& p = cloud.points[i];
+    position_of[i] = pwn.size();
+    pwn.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(0, 0, 0)});
+  }
+  cloud.normals.assign(n, {0, 0, 1});
+  if (pwn.size() < 6) return;
+  const unsigned k = static_cast<unsigned>(std::min<std::size_t>(neighbors, pwn.size() - 1));
+  CGAL::jet_estimate_normals<CGAL::Sequential_tag>(pwn, k,
                                                    CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   // mst_orient_normals reorders the range: orient tuples that remember the indices.
   using Indexed = std::tuple<K::Point_3, K::Vector_3, std::size_t>;
   std::vector<Indexed> indexed;
   indexed.reserve(pwn.size());
-  for (std::size_t i = 0; i < pwn.size(); ++i) indexed.emplace_back(pwn[i].first, pwn[i].second, i);
-  CGAL::mst_orient_normals(indexed, neighbors,
+  for (std::size_t i = 0; i < pwn.size(); ++i) {
+    const K::Vector_3& v = pwn[i].second;  // a fit without a plane (collinear neighbours) can leave NaN
+    const bool finite = std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+    indexed.emplace_back(pwn[i].first, finite ? v : K::Vector_3(0, 0, 1), i);
+  }
+  CGAL::mst_orient_normals(indexed, k,
                            CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Indexed>())
                                .normal_map(CGAL::Nth_of_tuple_property_map<1, Indexed>()));
-  cloud.normals.assign(pwn.size(), {0, 0, 0});
-  for (const auto& [p, n, i] : indexed) {
+  std::vector<std::array<double, 3>> normal_of(pwn.size(), {0, 0, 1});
+  for (const auto& [p, v, i] : indexed) {
     (void)p;
-    const double len = std::sqrt(n.squared_length());
-    cloud.normals[i] = len > 0 ? std::array<double, 3>{n.x() / len, n.y() / len, n.z() / len}
-                               : std::array<double, 3>{0, 0, 1};
+    const double len = std::sqrt(v.squared_length());
+    if (len > 0 && std::isfinite(len)) normal_of[i] = {v.x() / len, v.y() / len, v.z() / len};
   }
+  for (std::size_t i = 0; i < n; ++i) cloud.normals[i] = normal_of[position_of[i]];
 }
 
 }  // namespace io

@@ -483,6 +483,16 @@ expect(sample_darts 0 "\"method\": \"darts\"" sample --input ${WORK}/wall.xyz --
 expect(sample_darts_count 0 "\"kept\": 60,.*\"method\": \"darts\"" sample --input ${WORK}/wall.xyz --count 60 --method darts --out ${WORK}/d.xyz --quiet)
 # No normals in the file: estimated when the bilateral distance needs them.
 expect(sample_estimate 0 "\"normals\": \"estimated\"" sample --input ${WORK}/wall_plain.xyz --count 100 --sigma-feature 0.5 --unoriented --out ${WORK}/e.xyz --quiet)
+# Copies of a point (merged scans): the normal fit runs on the distinct positions (30 copies among the points, or a
+# file of copies only, crashed the jet fit).
+file(READ ${WORK}/wall_plain.xyz wall_with_copies)
+foreach(i RANGE 29)
+  string(APPEND wall_with_copies "0.5 0.5 0.05\n")
+endforeach()
+file(WRITE ${WORK}/wall_copies.xyz "${wall_with_copies}")
+expect(sample_estimate_copies 0 "\"normals\": \"estimated\"" sample --input ${WORK}/wall_copies.xyz --count 20 --sigma-feature 0.5 --out ${WORK}/e.xyz --quiet)
+file(WRITE ${WORK}/copies_only.xyz "1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n1 2 3\n")
+expect(sample_estimate_copies_only 0 "\"kept\": 1,.*\"normals\": \"estimated\"" sample --input ${WORK}/copies_only.xyz --count 1 --sigma-feature 0.5 --out ${WORK}/e.xyz --quiet)
 expect(sample_stats 0 "\"samples\": 200,.*\"relative_radius\": " sample-stats --input ${WORK}/euclid.xyz)
 expect(sample_stats_2d 0 "\"dimension\": 2,.*\"average_minimum_distance\": " sample-stats --input ${DATA}/figure_eight.xyz)
 expect(sample_stats_bad 2 "--intrinsic-dimension must be 2 or 3" sample-stats --input ${DATA}/figure_eight.xyz --intrinsic-dimension 4)

@@ -36,6 +36,18 @@ TEST(ContinuousDartThrowing, PoissonDiskAndNearlyMaximal) {
   o.seed = 4;
   EXPECT_NE(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.02, grey_step, squared, o).samples[0].position,
             s[0].position);
+  // Progress never goes back (a new sample resets the run of failures; the report was that run's share, and went
+  // from 0.0102 back to 0.0006 at r = 0.003), and ends at 1.
+  std::vector<double> seen;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const auto watched = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.003, grey_step, squared, o);
+  ASSERT_GT(seen.size(), 10u);
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]) << i;
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_GT(watched.samples.size(), 30000u);
 }
 
 TEST(ContinuousDartThrowing, BilateralDistancePacksBothSidesOfAnEdge) {

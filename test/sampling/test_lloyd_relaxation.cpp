@@ -141,6 +141,15 @@ TEST(PixelDensity, BadValuesNamed) {
   }
   EXPECT_THROW(Pixel_density(2, 2, {1, 1, 1}), std::invalid_argument);
   EXPECT_THROW(Pixel_density(1, 1, {std::nan("")}), std::invalid_argument);
+  // Finite values whose integrals overflow (the total was inf, every cell "empty", and Lloyd returned success with
+  // sites that never moved): refused, naming the cause.
+  try {
+    Pixel_density(2, 2, {1e308, 1e308, 1e308, 1e308});
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("Pixel_density: the values are too large"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(Pixel_density(2, 2, {1e300, 1e300, 1e300, 1e300}));
 }
 
 // Every cell holds exactly the box points whose nearest site is its own (ties aside).
@@ -148,7 +157,11 @@ void check_cells(const std::vector<P2>& sites, const std::array<double, 4>& box,
   const auto cells = clipped_voronoi_cells(sites, box);
   ASSERT_EQ(cells.size(), sites.size());
   double area = 0;
-  for (const auto& c : cells) area += c.size() >= 3 ? polygon_moments(c).mass : 0.0;
+  for (const auto& c : cells) {
+    area += c.size() >= 3 ? polygon_moments(c).mass : 0.0;
+    for (std::size_t i = 0; i < c.size() && c.size() > 1; ++i)  // vertices not repeated (clipping at a vertex did)
+      EXPECT_NE(c[i], c[(i + 1) % c.size()]) << i;
+  }
   EXPECT_NEAR(area, (box[2] - box[0]) * (box[3] - box[1]), 1e-9 * (box[2] - box[0]) * (box[3] - box[1]));
   auto inside = [](const Polygon_2d& c, const P2& q) {
     if (c.size() < 3) return false;
@@ -193,6 +206,7 @@ TEST(ClippedVoronoiCells, MatchBruteForceOnRandomAndDegenerateSites) {
     for (int j = 0; j <= 6; j += 2) grid.push_back({double(i), double(j)});  // including the box corners
   check_cells(grid, box, rng);
   check_cells({{5.0, 3.0}, {5.0, 3.0}, {2.0, 1.0}, {5.0, 3.0}}, box, rng);  // duplicates
+  check_cells({{0.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}, {0, 0, 1, 1}, rng);  // a cell's vertex on the corner (1, 0)
   const auto cells = clipped_voronoi_cells(std::vector<P2>{{5.0, 3.0}, {2.0, 1.0}, {5.0, 3.0}}, box);
   EXPECT_GE(cells[0].size(), 3u);
   EXPECT_TRUE(cells[2].empty()) << "the higher-indexed copy owns the cell";

@@ -80,13 +80,15 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
     FeatureRecon::internal::Dynamic_grid<2> grid(positions, reach,
                                                  static_cast<std::size_t>(std::min(expected, 0x1p40)) + 1);
     std::size_t failures = 0;
+    double reported = 0;  // the largest share of the failure budget seen (a success resets the run of failures)
     while (failures < options.max_consecutive_failures &&
            (options.max_samples == 0 || result.samples.size() < options.max_samples)) {
-      if ((result.darts & 65535) == 0 && result.darts != 0 &&
-          !FeatureRecon::internal::report_progress(options.progress,
-                                                   double(failures) / double(options.max_consecutive_failures))) {
-        result.status = Status::interrupted;
-        return;
+      if ((result.darts & 65535) == 0 && result.darts != 0) {
+        reported = std::max(reported, double(failures) / double(options.max_consecutive_failures));
+        if (!FeatureRecon::internal::report_progress(options.progress, reported)) {
+          result.status = Status::interrupted;
+          return;
+        }
       }
       ++result.darts;
       const std::array<double, 2> p{box[0] + (box[2] - box[0]) * uniform(), box[1] + (box[3] - box[1]) * uniform()};

@@ -283,8 +283,10 @@ struct Voronoi_builder {
     bool inside = true;
     do {
       inside = inside && f->info().inside;
-      out.push_back(f->info().circumcenter);
+      // Cocircular sites give faces with one circumcentre: a vertex once (Polygon_2d repeats none).
+      if (out.empty() || f->info().circumcenter != out.back()) out.push_back(f->info().circumcenter);
     } while (++f != end);
+    if (out.size() > 1 && out.front() == out.back()) out.pop_back();
     if (!inside) clip(box, out, scratch);
   }
 
@@ -307,9 +309,11 @@ struct Voronoi_builder {
           std::array<double, 2> p;
           p[axis] = bound;
           p[1 - axis] = a[1 - axis] + t * (b[1 - axis] - a[1 - axis]);
-          scratch.push_back(p);
+          // A vertex on the bound is its own crossing: (0, 0), (1, 1), (0, 1) in the unit box repeated (1, 0).
+          if (scratch.empty() || p != scratch.back()) scratch.push_back(p);
         }
       }
+      if (scratch.size() > 1 && scratch.front() == scratch.back()) scratch.pop_back();
       std::swap(poly, scratch);
     }
   }

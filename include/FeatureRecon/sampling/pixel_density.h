@@ -61,7 +61,8 @@ class Pixel_density {
 
   /// \param width columns (>= 0). \param height rows (>= 0).
   /// \param values width * height densities, rows from the top; each finite and >= 0 (checked; throws
-  ///   std::invalid_argument naming the first bad pixel).
+  ///   std::invalid_argument naming the first bad pixel), and small enough that their moments over the image stay
+  ///   finite (checked; throws).
   Pixel_density(int width, int height, std::vector<double> values) : m_width(width), m_height(height) {
     const char* fn = "Pixel_density";
     if (width < 0 || height < 0)
@@ -92,6 +93,11 @@ class Pixel_density {
         q += r * (k * k + k + 1.0 / 3.0);  // integral of t^2 rho
       }
       m_total += p[4 * w];
+      if (!std::isfinite(p[4 * w + 2]) || !std::isfinite(m_total))  // q bounds f and g (t^2 + t + 1/3 >= 1/3, t)
+        FeatureRecon::internal::throw_invalid_argument(fn, "the values are too large: their integrals over the image ",
+                                                       "(density times x^2 along row ", row, ", or the total) ",
+                                                       "overflow a double; scale them down (the density's scale ",
+                                                       "does not change a Lloyd step)");
     }
     // A constant density (plain Lloyd) has closed-form integrals along any segment: no pixel walk.
     if (!values.empty() && std::all_of(values.begin(), values.end(), [&](double v) { return v == values[0]; }))

@@ -243,7 +243,10 @@ inline double feature_factor(const Sampled_bilateral_filter_options& o) {
 inline std::vector<float> density_compensation(const Filter_image& F, double r, double factor, int stride = 0) {
   std::vector<float> weight(F.pixels(), 1.0f);
   if (factor == 0 || F.pixels() == 0) return weight;
-  if (stride <= 0) stride = r <= 24 ? 1 : int(std::min(std::ceil(r / 24), 1e6));
+  // Offsets beyond the image's width plus height meet no pixel: the disc is walked that far at most (a budget of
+  // 1e-300 asked for r = 1e150, and its int reach overflowed).
+  const double extent = std::min(r, double(F.w) + double(F.h));
+  if (stride <= 0) stride = extent <= 24 ? 1 : int(std::ceil(extent / 24));
   constexpr int S = 4;
   struct Offset {  // a pixel offset and the sorted squared distances of its sub-points within r
     int dx, dy;
@@ -251,7 +254,7 @@ inline std::vector<float> density_compensation(const Filter_image& F, double r, 
   };
   std::vector<Offset> offsets;
   std::vector<double> sub_d2;
-  const int reach = int(std::ceil(r)) + 1;
+  const int reach = int(std::ceil(extent)) + 1;
   const double r2 = r * r;
   for (int py = -reach / stride * stride; py <= reach; py += stride)  // multiples of the stride: 0 is one
     for (int px = -reach / stride * stride; px <= reach; px += stride) {

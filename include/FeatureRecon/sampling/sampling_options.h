@@ -183,7 +183,9 @@ struct Continuous_dart_throwing_options {
   std::size_t max_consecutive_failures = 10000;
   std::size_t max_samples = 0;  ///< stop after this many accepted samples; default 0: no limit
   std::uint64_t seed = 0;       ///< the random darts
-  Progress_callback progress;   ///< called every 65536 darts with the fraction of the failure budget used; false stops (samples so far are kept)
+  /// Called every 65536 darts with the largest fraction of the failure budget used so far (non-decreasing: a new
+  /// sample resets the run of failures, not the report); false stops (samples so far are kept)
+  Progress_callback progress;
 };
 
 }  // namespace sampling

@@ -123,8 +123,11 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost neighbour
 ///   lists quadratic in their number): of each group of copies the item of lowest seeded priority stays. When
 ///   there are more copies than eliminations, copies are removed one at a time from the largest group (whose
-///   copies weigh the most; neighbours are not weighed). Ties between equal weights are broken by a permutation
-///   drawn from `seed`, so the same input and seed give the same output on every platform.
+///   copies weigh the most; neighbours are not weighed). Ties between weights that compare equal are broken by a
+///   permutation drawn from `seed`, so the same input and seed give the same output on every platform. A weight
+///   is kept up to date by subtracting the weights of removed neighbours, so weights that are equal in exact
+///   arithmetic (on a grid) can differ in their last bits, and then that rounding, not the seed, decides
+///   (deterministically; the last few eliminations of a grid reduced to a handful of points show it).
 /// \sa sampling_quality(), bilateral_dart_throwing().
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& items, std::size_t count,

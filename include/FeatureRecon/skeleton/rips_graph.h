@@ -429,6 +429,10 @@ inline std::vector<Isolated_group> isolated_groups(const Point_matrix& m, std::s
     Isolated_group set = std::move(todo.back());
     todo.pop_back();
     const std::size_t size = set.rows.size();
+    if (size < 2 * min_size) {  // no cut leaves min_size on both sides
+      done.push_back(std::move(set));
+      continue;
+    }
     const auto [axis, widest] = widest_axis(m, set.rows, lo, hi);
     key.clear();
     for (const std::uint32_t i : set.rows) key.emplace_back(m.row(i)[axis], i);
