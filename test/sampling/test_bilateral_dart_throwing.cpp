@@ -224,6 +224,16 @@ TEST(BilateralDartThrowing, DegenerateInputs) {
   const std::vector<Point_2> two_and_one{Point_2(0, 0), Point_2(0, 0), Point_2(1, 0)};
   EXPECT_EQ(darts(two_and_one, 1e-150).size(), 2u);
   EXPECT_EQ(darts(two_and_one, 1e-170).size(), 2u);
+  // ... and the status says that such a radius cannot be trusted: white noise scaled by 2^-540 kept 220 items at
+  // r = 0.03 (scaled) instead of 566, not maximal, with status success.
+  const std::vector<Point_2> unit = white_noise(3000, 1);
+  std::vector<Point_2> tiny;
+  for (const Point_2& q : unit) tiny.emplace_back(std::ldexp(q.x(), -540), std::ldexp(q.y(), -540));
+  EXPECT_EQ(bilateral_dart_throwing(unit, 0.03, std::back_inserter(kept)).status, Status::success);
+  EXPECT_EQ(bilateral_dart_throwing(tiny, std::ldexp(0.03, -540), std::back_inserter(kept)).status,
+            Status::degenerate_input);
+  EXPECT_EQ(bilateral_dart_throwing(two_and_one, 1e-170, std::back_inserter(kept)).status, Status::degenerate_input);
+  EXPECT_EQ(bilateral_dart_throwing(two_and_one, 1e-140, std::back_inserter(kept)).status, Status::success);
   // Per-item radii: the result reports the largest (it echoed the ignored radius argument).
   Dart_throwing_options o;
   o.radii = {0.5, 2.0, 1.0};
