@@ -46,7 +46,8 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   Map_comparison_options options;
   if (args.has("threshold")) {
     options.match_distance = args.get_positive_double("threshold");
-    if (!(options.match_distance >= 0x1p-450 && options.match_distance <= 0x1p450))
+    if (!(options.match_distance >= skeleton::internal::min_metric_distance &&
+          options.match_distance <= skeleton::internal::max_metric_distance))
       throw Usage_error("--threshold must be within [2^-450, 2^450] (about 3e-136 to 3e135: squares of distances "
                         "near it stay normal doubles), got '" + args.get("threshold") + "'");
   }

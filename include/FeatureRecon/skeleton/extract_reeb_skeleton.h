@@ -387,15 +387,19 @@ namespace internal {
 /// copies of points add edges of length 0 and repeat some lengths (their edges to the first copy's neighbours),
 /// so over all edges the median moved with the number of copies (an X of points 0.4 apart: 0.754 once, 0.4 with
 /// every point twice). 0 without such edges.
-inline double median_edge_length(const Proximity_graph& g, const std::vector<Vertex_index>& first = {}) {
-  if (g.edges.empty()) return 0;
+/// The same median of another length of the edges: `length(e)` for edge index e.
+template <class Length>
+double median_edge_length(const Proximity_graph& g, const std::vector<Vertex_index>& first, Length&& length) {
   std::vector<double> l;
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     if (first.empty() || (first[g.edges[e][0]] == g.edges[e][0] && first[g.edges[e][1]] == g.edges[e][1]))
-      l.push_back(g.length(e));
-  if (l.empty()) return 0;  // every edge has a copy at an end: all points are copies of one
+      l.push_back(length(e));
+  if (l.empty()) return 0;  // no edges, or every edge has a copy at an end: all points are copies of one
   std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
   return l[l.size() / 2];
+}
+inline double median_edge_length(const Proximity_graph& g, const std::vector<Vertex_index>& first = {}) {
+  return median_edge_length(g, first, [&g](std::size_t e) { return g.length(e); });
 }
 
 inline void check_skeleton_options(const Skeleton_options& options, const char* fn) {
@@ -513,15 +517,9 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     // The automatic max_gap (twice the median edge length in the embedding) over the edges between first copies,
     // as the level width: with every point given twice (edges of length 0 and repeated lengths) it moved from
     // 1.065 to 1.018 and one more node stayed; 300 copies of one point made it 0 (nothing bridged).
-    std::vector<double> l;
-    for (const auto& e : K.edges)
-      if (first[e[0]] == e[0] && first[e[1]] == e[1])
-        l.push_back(point_distance(projected[e[0]].data(), projected[e[1]].data(), 3));
-    double median = 0;
-    if (!l.empty()) {
-      std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
-      median = l[l.size() / 2];
-    }
+    const double median = median_edge_length(K, first, [&](std::size_t e) {
+      return point_distance(projected[K.edges[e][0]].data(), projected[K.edges[e][1]].data(), 3);
+    });
     eo.max_gap = median > 0 ? 2 * median : -1;  // none (all points copies of one): straight segments, as before
   }
   eo.progress = stage(0.95, dimension > 3 ? 0.97 : 0.99);
@@ -546,15 +544,10 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     // weights (or any other) on coordinates 0.01 apart merged forks 2 coordinate units apart, 200 edges.
     double ratio = 1;
     {
-      std::vector<double> l;
-      for (std::size_t e = 0; e < K.edges.size(); ++e)
-        if (first.empty() || (first[K.edges[e][0]] == K.edges[e][0] && first[K.edges[e][1]] == K.edges[e][1]))
-          l.push_back(distance(K.edges[e][0], K.edges[e][1]));
+      const double input =
+          median_edge_length(K, first, [&](std::size_t e) { return distance(K.edges[e][0], K.edges[e][1]); });
       const double weight = median_edge_length(K, first);
-      if (!l.empty() && weight > 0) {
-        std::nth_element(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(l.size() / 2), l.end());
-        if (l[l.size() / 2] > 0) ratio = l[l.size() / 2] / weight;
-      }
+      if (input > 0 && weight > 0) ratio = input / weight;
     }
     // Saturates (edges near DBL_MAX).
     result.branch_merge_distance = std::min(2 * eo.level_width * ratio, std::numeric_limits<double>::max());
