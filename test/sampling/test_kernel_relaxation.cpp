@@ -206,6 +206,58 @@ TEST(Kernel_relaxation, DensityAdaptsTheSpacing) {
   EXPECT_LT(ratio, 6.0);
 }
 
+TEST(Kernel_relaxation, DensityFinerThanTheKernelCountsByItsMean) {
+  // Every other column dark: the kernel (about 4.7 pixels wide) sees a uniform half-density, so 40 sites spread
+  // over the picture. With the density of the one pixel under each site the scale switched between 0.7 and 8
+  // from column to column, the energy jumped from 0.23 to 150 and 24 of the 40 sites ended in the corners.
+  const int w = 64, h = 48;
+  const auto px = image(w, h, [](int c, int) { return c % 2 == 0 ? 0 : 255; });
+  Kernel_relaxation_options<2> o;
+  o.density.resize(px.size());
+  for (std::size_t i = 0; i < px.size(); ++i) o.density[i] = px[i].column % 2 == 0 ? 1.0 : 0.0;
+  std::vector<Site> start;
+  for (const auto& s : random_sites(40, px, w, h, 3)) {
+    Site t = s;
+    t.position[0] = 2 * std::floor(t.position[0] / 2) + 0.5;  // on a dark column
+    start.push_back(t);
+  }
+  const auto r = kernel_relaxation(px, start, o);
+  ASSERT_EQ(r.status, Status::success);
+  ASSERT_FALSE(r.history.empty());
+  for (const auto& s : r.history) EXPECT_LT(s.energy, 2 * r.history.front().energy) << "step " << s.iteration;
+  const double d_hex = std::sqrt(2.0 * w * h / (std::sqrt(3.0) * 40));
+  std::size_t cornered = 0;
+  double dmin = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < r.sites.size(); ++i) {
+    const auto& p = r.sites[i].position;
+    cornered += std::min(p[0], w - p[0]) < d_hex / 4 && std::min(p[1], h - p[1]) < d_hex / 4;
+    for (std::size_t j = i + 1; j < r.sites.size(); ++j)
+      dmin = std::min(dmin, std::hypot(p[0] - r.sites[j].position[0], p[1] - r.sites[j].position[1]));
+  }
+  EXPECT_EQ(cornered, 0u);
+  EXPECT_GT(dmin, 0.5 * d_hex);  // d_hex = 9.4
+}
+
+TEST(Kernel_relaxation, SitesOutsideTheBoxAreReflectedNotStacked) {
+  // Distinct sites beyond a corner of the box come back reflected across its faces, distinct, and spread (clamped
+  // they all landed on the corner point, where copies have no gradient between them, and stayed: no_descent).
+  const auto px = image(16, 16, [](int, int) { return 0; });
+  const std::vector<Site> start{Site{{-0.2, -0.3}, {0}}, Site{{-0.4, -0.1}, {0}}, Site{{-0.6, -0.6}, {0}},
+                                Site{{16.3, -0.2}, {0}}, Site{{16.1, -0.5}, {0}}};
+  Kernel_relaxation_options<2> o;
+  o.max_iterations = 300;
+  const auto r = kernel_relaxation(px, start, o);
+  ASSERT_EQ(r.status, Status::success);
+  double dmin = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < r.sites.size(); ++i) {
+    for (const double x : r.sites[i].position) EXPECT_TRUE(x >= 0 && x <= 16) << x;
+    for (std::size_t j = i + 1; j < r.sites.size(); ++j)
+      dmin = std::min(dmin, std::hypot(r.sites[i].position[0] - r.sites[j].position[0],
+                                       r.sites[i].position[1] - r.sites[j].position[1]));
+  }
+  EXPECT_GT(dmin, 3.0);  // d_hex = 7.7 for 5 sites on 16 x 16
+}
+
 TEST(Kernel_relaxation, SnapsToItemsOnSurfaces) {
   // A 40 x 40 grid of points with normals on the plane z = 0: snapped sites are distinct items.
   using K = test::K;
