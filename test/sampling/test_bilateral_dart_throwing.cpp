@@ -3,6 +3,10 @@
 // Bilateral dart throwing on discrete domains: the Poisson-disk and maximality properties by brute force,
 // adaptive radii, priorities, the target-count mode, thin walls, degenerate and bad input.
 #include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/continuous_dart_throwing.h>
+#include <FeatureRecon/sampling/discrete_lloyd.h>
+#include <FeatureRecon/sampling/kernel_relaxation.h>
+#include <FeatureRecon/sampling/weighted_sample_elimination.h>
 #include <FeatureRecon/sampling/image_domain.h>
 #include <FeatureRecon/sampling/sampling_quality.h>
 
@@ -199,6 +203,60 @@ TEST(BilateralDartThrowing, ThinWallKeepsBothSheets) {
   EXPECT_GT(double(std::min(b0, b1)), 0.8 * double(e0 + e1));
   // Euclidean: the sheets share one set, so each keeps only about half of what it needs.
   EXPECT_LT(double(std::max(e0, e1)), 0.7 * double(b0 + b1) / 2);
+}
+
+TEST(BilateralDartThrowing, PositionsTooWideForSigmaArePinnedAndRefused) {
+  // Positions and sigma_position within their own limits but whose ratio squares past the doubles (white noise
+  // scaled by 2^330 with sigma_position 2^-490: every bilateral distance became infinite, dart throwing's
+  // bisection ran to radius 9e307 and returned an arbitrary set with status success) are refused by every
+  // sampler, naming sigma_position. Up to 2^400 the samplers are scale invariant: the same indices as at scale 1.
+  const std::vector<Point_2> unit = white_noise(2000, 1);
+  auto scaled = [&](int e) {
+    std::vector<Point_2> p;
+    for (const Point_2& q : unit) p.emplace_back(std::ldexp(q.x(), e), std::ldexp(q.y(), e));
+    return p;
+  };
+  auto count = [](const std::vector<Point_2>& p, double sigma) {
+    Dart_throwing_count_options o;
+    o.darts.sigma_position = sigma;
+    std::vector<std::size_t> kept;
+    bilateral_dart_throwing_count(p, 200, std::back_inserter(kept), o);
+    return kept;
+  };
+  auto eliminate = [](const std::vector<Point_2>& p, double sigma) {
+    Elimination_options o;
+    o.sigma_position = sigma;
+    std::vector<std::size_t> kept;
+    weighted_sample_elimination(p, 200, std::back_inserter(kept), o);
+    return kept;
+  };
+  const auto wide = scaled(300);  // extent just below 2^300
+  EXPECT_EQ(count(wide, std::ldexp(1.0, -99)), count(unit, 1.0));  // span / sigma just below 2^399
+  EXPECT_EQ(eliminate(wide, std::ldexp(1.0, -99)), eliminate(unit, 1.0));
+  const double too_small = std::ldexp(1.0, -101);  // span / sigma just below 2^401
+  expect_invalid_argument([&] { count(wide, too_small); }, "sigma_position");
+  expect_invalid_argument([&] { eliminate(wide, too_small); }, "sigma_position");
+  std::vector<std::size_t> kept;
+  Dart_throwing_options d;
+  d.sigma_position = too_small;
+  expect_invalid_argument([&] { bilateral_dart_throwing(wide, 1.0, std::back_inserter(kept), d); }, "sigma_position");
+  Sampling_quality_options q;
+  q.sigma_position = too_small;
+  expect_invalid_argument([&] { sampling_quality(wide, q); }, "sigma_position");
+  Continuous_dart_throwing_options c;
+  c.sigma_position = too_small;
+  expect_invalid_argument(
+      [&] {
+        continuous_bilateral_dart_throwing({0, 0, std::ldexp(1.0, 300), 1}, 1.0, [](double, double) { return 0.0; },
+                                           [](double, double) { return 0.0; }, c);
+      },
+      "sigma_position");
+  Kernel_relaxation_options<2> k;
+  k.sigma_position = too_small;
+  expect_invalid_argument([&] { kernel_relaxation(wide, std::vector<std::size_t>{0, 5}, k); }, "sigma_position");
+  Discrete_lloyd_options<2> l;
+  l.sigma_position = too_small;
+  expect_invalid_argument([&] { discrete_bilateral_lloyd(wide, std::vector<std::size_t>{0, 5}, l); }, "sigma_position");
 }
 
 TEST(BilateralDartThrowing, DegenerateInputs) {

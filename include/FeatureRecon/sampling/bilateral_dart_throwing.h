@@ -33,8 +33,9 @@ inline std::vector<std::uint32_t> dart_order(std::size_t n, const Dart_throwing_
   return order;
 }
 
-inline void check_dart_options(const Dart_throwing_options& o, std::size_t n, const char* fn) {
+inline void check_dart_options(const Dart_throwing_options& o, std::size_t n, double extent, const char* fn) {
   check_sigmas(o.sigma_position, o.sigma_feature, fn);
+  check_position_scale(extent, o.sigma_position, fn);
   if (!o.radii.empty() && o.radii.size() != n)
     FeatureRecon::internal::throw_invalid_argument(fn, "radii has ", o.radii.size(), " values for ", n, " items");
   for (std::size_t i = 0; i < o.radii.size(); ++i)
@@ -126,7 +127,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
   if (options.radii.empty() && !(std::isfinite(radius) && radius > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
-  internal::check_dart_options(options, S.size(), fn);
+  internal::check_dart_options(options, S.size(), S.extent(), fn);
   // With per-item radii, the largest of them (the `radius` argument is ignored).
   const double used = options.radii.empty() ? radius : *std::max_element(options.radii.begin(), options.radii.end());
   Sampling_result<OutputIterator> result{selected, 0, used, Status::success};
@@ -173,7 +174,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   const char* fn = "bilateral_dart_throwing_count";
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.darts.sigma_feature));
   const std::size_t n = S.size();
-  internal::check_dart_options(options.darts, n, fn);
+  internal::check_dart_options(options.darts, n, S.extent(), fn);
   if (!options.darts.radii.empty())
     FeatureRecon::internal::throw_invalid_argument(fn, "per-item radii cannot be combined with a target count");
   if (options.darts.max_accepted != 0)

@@ -60,6 +60,7 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
   if (!(std::isfinite(radius) && radius > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
+  internal::check_position_scale(std::max(box[2] - box[0], box[3] - box[1]), options.sigma_position, fn);
   if (options.max_consecutive_failures == 0)
     FeatureRecon::internal::throw_invalid_argument(fn, "max_consecutive_failures must be >= 1");
   Continuous_sampling_result<Feature> result;

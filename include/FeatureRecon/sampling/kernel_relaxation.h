@@ -131,6 +131,7 @@ class Kernel_engine : public Item_domain<Traits> {
                 const char* fn)
       : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
     check_sigmas(o.sigma_position, o.sigma_feature, fn);
+    check_position_scale(S.extent(), o.sigma_position, fn);
     if (!(o.kernel_width >= 0) || !std::isfinite(o.kernel_width))
       FeatureRecon::internal::throw_invalid_argument(fn, "kernel_width must be finite and >= 0, got ", o.kernel_width);
     if (!(o.cutoff > 0) || !std::isfinite(o.cutoff))

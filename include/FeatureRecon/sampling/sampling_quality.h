@@ -81,6 +81,7 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
   internal::check_domain(options.domain_measure, options.intrinsic_dimension, Traits::dimension, fn);
   internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
+  internal::check_position_scale(S.extent(), options.sigma_position, fn);
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();
   Sampling_quality q;

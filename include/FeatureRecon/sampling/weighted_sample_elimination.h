@@ -146,6 +146,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   if (!(options.alpha > 0 && std::isfinite(options.alpha)))
     FeatureRecon::internal::throw_invalid_argument(fn, "alpha must be finite and > 0, got ", options.alpha);
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
+  internal::check_position_scale(S.extent(), options.sigma_position, fn);
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();
   internal::check_count(count, n, fn);

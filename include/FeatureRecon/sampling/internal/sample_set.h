@@ -79,6 +79,19 @@ struct Sample_set {
     }
   }
   std::size_t size() const { return positions.size(); }
+  /// The largest coordinate range of the positions (0 for no item or one place).
+  double extent() const {
+    double e = 0;
+    for (int k = 0; k < D; ++k) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const Point& p : positions) {
+        lo = std::min(lo, p[k]);
+        hi = std::max(hi, p[k]);
+      }
+      if (hi > lo) e = std::max(e, hi - lo);
+    }
+    return e;
+  }
   double squared_distance(std::size_t i, std::size_t j) const {
     double s = 0;
     for (int k = 0; k < D; ++k) {
@@ -111,6 +124,20 @@ inline void check_sigmas(double sigma_position, double sigma_feature, const char
   if (!(is_usable_scale(sigma_feature) || sigma_feature == std::numeric_limits<double>::infinity()))
     FeatureRecon::internal::throw_invalid_argument(
         fn, "sigma_feature must be in [1e-150, 1e150] (or infinity for Euclidean), got ", sigma_feature);
+}
+
+/// Checks that positions spanning `extent` are measured in units of sigma_position without overflow of the
+/// squared bilateral distances: extent / sigma_position at most 2^400 (each alone was accepted, but positions of
+/// 1e100 with sigma_position 1e-150 made every distance infinite, and the samplers returned arbitrary sets with
+/// status success). A span far below sigma_position is degenerate geometry (all items at about one place), which
+/// each sampler handles.
+inline void check_position_scale(double extent, double sigma_position, const char* fn) {
+  const double ratio = extent / sigma_position;
+  if (!(ratio <= 0x1p400))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "sigma_position (", sigma_position, ") is too small for positions spanning ", extent, ": the span in units ",
+        "of sigma_position (", ratio, ") must be at most 2^400 (about 2.6e120), else squared bilateral distances "
+        "overflow; scale the positions or sigma_position");
 }
 
 /// Checks a domain measure (>= 0, 0 meaning automatic) and an intrinsic dimension (0, 2 or 3, at most the
