@@ -132,6 +132,17 @@ TEST(SampledBilateralFilter, MeetsTheBudget) {
       }
   const auto p = bilateral_tap_pattern(40, 32, 1, d, sampled(Tap_mode::global, Tap_sampling::bilateral, 0.7));
   EXPECT_EQ(p.pixels.size(), std::size_t(std::llround(0.7 * 40 * 32)));
+  // RGB noise: neighbours' colours lie far apart, so local bilateral darts conflict only at radii beyond the
+  // Euclidean ones. The radius stopped at the pool's reach, 4.23 pixels, with 0.22 taps per kernel pixel for a
+  // budget of 0.1 (0.65 for 0.3, 0.086 for 0.05); the pool now grows its reach until the budget is met.
+  std::mt19937_64 rng(5);
+  Bytes noise(64 * 48 * 3);
+  for (auto& v : noise) v = std::uint8_t(rng() % 256);
+  for (double b : {0.05, 0.1, 0.3}) {
+    const auto r = sampled_bilateral_filter(64, 48, 3, noise, sampled(Tap_mode::local, Tap_sampling::bilateral, b));
+    EXPECT_NEAR(r.taps_per_kernel_pixel, b, 0.01 * b) << b;
+    if (b == 0.1) EXPECT_GT(r.sampling_radius, 4.3);
+  }
 }
 
 TEST(SampledBilateralFilter, GlobalPatternIsPoissonDiskInTheBilateralDistance) {
