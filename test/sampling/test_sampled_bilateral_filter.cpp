@@ -141,7 +141,9 @@ TEST(SampledBilateralFilter, MeetsTheBudget) {
   for (double b : {0.05, 0.1, 0.3}) {
     const auto r = sampled_bilateral_filter(64, 48, 3, noise, sampled(Tap_mode::local, Tap_sampling::bilateral, b));
     EXPECT_NEAR(r.taps_per_kernel_pixel, b, 0.01 * b) << b;
-    if (b == 0.1) EXPECT_GT(r.sampling_radius, 4.3);
+    if (b == 0.1) {
+      EXPECT_GT(r.sampling_radius, 4.3);
+    }
   }
 }
 

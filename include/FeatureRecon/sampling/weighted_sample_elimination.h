@@ -28,7 +28,7 @@ namespace internal {
 /// Binary max-heap over items 0..n-1 keyed by (weight, priority), with positions for decrease-key.
 class Elimination_heap {
  public:
-  Elimination_heap(const std::vector<double>& weight, const std::vector<std::uint32_t>& priority)
+  Elimination_heap(const std::vector<std::uint64_t>& weight, const std::vector<std::uint32_t>& priority)
       : m_weight(&weight), m_priority(&priority), m_heap(weight.size()), m_position(weight.size()) {
     std::iota(m_heap.begin(), m_heap.end(), std::uint32_t(0));
     for (std::size_t i = 0; i < m_heap.size(); ++i) m_position[i] = static_cast<std::uint32_t>(i);
@@ -47,7 +47,7 @@ class Elimination_heap {
 
  private:
   bool above(std::uint32_t a, std::uint32_t b) const {
-    const double wa = (*m_weight)[a], wb = (*m_weight)[b];
+    const std::uint64_t wa = (*m_weight)[a], wb = (*m_weight)[b];
     return wa > wb || (wa == wb && (*m_priority)[a] > (*m_priority)[b]);
   }
   void sift_down(std::size_t i) {
@@ -65,7 +65,7 @@ class Elimination_heap {
     m_heap[i] = x;
     m_position[x] = static_cast<std::uint32_t>(i);
   }
-  const std::vector<double>* m_weight;
+  const std::vector<std::uint64_t>* m_weight;
   const std::vector<std::uint32_t>* m_priority;
   std::vector<std::uint32_t> m_heap, m_position;
 };
@@ -124,10 +124,11 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   lists quadratic in their number): of each group of copies the item of lowest seeded priority stays. When
 ///   there are more copies than eliminations, copies are removed one at a time from the largest group (whose
 ///   copies weigh the most; neighbours are not weighed). Ties between weights that compare equal are broken by a
-///   permutation drawn from `seed`, so the same input and seed give the same output on every platform. A weight
-///   is kept up to date by subtracting the weights of removed neighbours, so weights that are equal in exact
-///   arithmetic (on a grid) can differ in their last bits, and then that rounding, not the seed, decides
-///   (deterministically; the last few eliminations of a grid reduced to a handful of points show it).
+///   permutation drawn from `seed`, so the same input and seed give the same output on every platform. Weights
+///   are sums of pair weights rounded to multiples of 2^-(63 - b) (2^b above the most neighbours of an item;
+///   2^-56 up to 127), kept in 64-bit integers: removing a neighbour
+///   subtracts its pair weight exactly, so weights equal in exact arithmetic (on a grid) tie and the seed
+///   decides, never the rounding of the order in which neighbours went.
 /// \sa sampling_quality(), bilateral_dart_throwing().
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& items, std::size_t count,
@@ -368,7 +369,18 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         }
         for (std::size_t i = 0; i < m; ++i) offset[i + 1] += offset[i];
         std::vector<std::uint32_t> neighbor(offset[m]);
-        std::vector<double> weight(m, 0.0);
+        // Weights in fixed point: pair weights (in [0, 1]) rounded to multiples of 2^-(63 - b), 2^b above the
+        // most neighbours any item has (2^-56 for up to 127), and summed in 64-bit integers without overflow.
+        // A weight kept up to date by subtraction is then exactly the sum over the neighbours left, and weights
+        // equal in exact arithmetic compare equal: the seed breaks their tie, not the rounding of the order in
+        // which neighbours went (doubles did that on grids).
+        std::size_t most_neighbours = 0;
+        for (std::size_t i = 0; i < m; ++i) most_neighbours = std::max(most_neighbours, offset[i + 1] - offset[i]);
+        int bits = 0;
+        while (bits < 63 && (std::uint64_t(1) << bits) <= most_neighbours) ++bits;
+        const double scale = std::ldexp(1.0, 63 - bits);
+        auto fixed = [scale](double w) { return static_cast<std::uint64_t>(std::llround(w * scale)); };
+        std::vector<std::uint64_t> weight(m, 0);
         for (std::size_t i = 0; i < m; ++i) {
           if (i > 0 && stop(i)) {
             interrupted = true;
@@ -380,7 +392,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
             const double w = pair_weight(i, j);
             if (!(w >= 0)) return;  // the test of the count
             neighbor[k++] = j;
-            weight[i] += w;
+            weight[i] += fixed(w);
           });
         }
         std::vector<std::uint32_t> priority(m);
@@ -401,7 +413,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           for (std::size_t k = offset[x]; k < offset[x + 1]; ++k) {
             const std::uint32_t y = neighbor[k];
             if (gone[y]) continue;
-            weight[y] -= pair_weight(y, x);
+            weight[y] -= fixed(pair_weight(y, x));
             heap.decreased(y);
           }
         }
