@@ -804,10 +804,25 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
   o.min_relative_density = 0.05;  // the filter on (off by default here; road_map_trace_options() turns it on)
   o.max_density_pairs = 8;
   const std::string m = FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({trip}, 10.0, o); });
-  EXPECT_NE(m.find("the density filter would compare 9 pairs of the 3 samples (more than max_density_pairs, 8): the "
-                   "sample spacing (sample_spacing 1) is small for the density radius (density_radius 20)"),
+  EXPECT_NE(m.find("the density filter would compare at least 9 pairs of the first 3 samples (more than "
+                   "max_density_pairs, 8; counted while the samples were made): the sample spacing (sample_spacing 1) "
+                   "is small for the density radius (density_radius 20)"),
             std::string::npos)
       << m;
+  {
+    // Counted as the samples are made: a 1 km segment linked at spacing 0.01 (100,000 samples, 6 * 10^8 pairs)
+    // stops after a few hundred (it made them all, then counted: 3,000 Chicago fixes at 0.01 took 38 s and 1 GB).
+    Gps_trace_options l = o;
+    l.max_link_gap = 2000;
+    l.segment_support = -1;
+    l.sample_spacing = 0.01;
+    l.max_density_pairs = 1000000;
+    const std::string n =
+        FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({{{0, 0, 0}, {1000, 0, 1}}}, 10.0, l); });
+    const std::size_t at = n.find("pairs of the first ");
+    ASSERT_NE(at, std::string::npos) << n;
+    EXPECT_LT(std::stoul(n.substr(at + 19)), 3000u) << n;
+  }
   o.max_density_pairs = 9;  // exactly as many: runs
   EXPECT_EQ(sample_gps_traces({trip}, 10.0, o).points.rows, 3u);
   o.max_density_pairs = 0;  // no limit
