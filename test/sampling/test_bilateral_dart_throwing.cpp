@@ -257,6 +257,18 @@ TEST(BilateralDartThrowing, PositionsTooWideForSigmaArePinnedAndRefused) {
   Discrete_lloyd_options<2> l;
   l.sigma_position = too_small;
   expect_invalid_argument([&] { discrete_bilateral_lloyd(wide, std::vector<std::size_t>{0, 5}, l); }, "sigma_position");
+  // The sites count too: items in the unit square, sigma_position 1e-110, a site at 1e100 (a site far outside
+  // was infinitely far from every item and tied with a nearer one: all items went to the farther site).
+  Discrete_lloyd_options<2> s;
+  s.sigma_position = 1e-110;
+  using Site2 = Bilateral_site<Default_traits_t<std::vector<Point_2>>>;
+  std::vector<Site2> sites(2);
+  sites[0].position = {1e100, 0};
+  sites[1].position = {0.9e100, 0};
+  expect_invalid_argument([&] { bilateral_voronoi_assignment(unit, sites, s); }, "sigma_position");
+  sites[0].position = {0.5, 0.5};
+  sites[1].position = {0.25, 0.25};
+  EXPECT_EQ(bilateral_voronoi_assignment(unit, sites, s).site.size(), unit.size());  // near sites: fine
 }
 
 TEST(BilateralDartThrowing, DegenerateInputs) {

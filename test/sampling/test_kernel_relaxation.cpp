@@ -256,6 +256,41 @@ TEST(Kernel_relaxation, SitesOutsideTheBoxAreReflectedNotStacked) {
                                        r.sites[i].position[1] - r.sites[j].position[1]));
   }
   EXPECT_GT(dmin, 3.0);  // d_hex = 7.7 for 5 sites on 16 x 16
+  // Far outside (many box widths): folded back as often as it takes, still distinct (reflected once and then
+  // clamped, all five landed on the opposite corner and stopped without descent).
+  std::vector<Site> far;
+  for (int k = 0; k < 5; ++k) far.push_back(Site{{-100.0 - 7 * k, -100.0 - 3 * k}, {0}});
+  const auto f = kernel_relaxation(px, far, o);
+  ASSERT_EQ(f.status, Status::success);
+  EXPECT_NE(f.stop, Lloyd_stop::no_descent);
+  dmin = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < f.sites.size(); ++i)
+    for (std::size_t j = i + 1; j < f.sites.size(); ++j)
+      dmin = std::min(dmin, std::hypot(f.sites[i].position[0] - f.sites[j].position[0],
+                                       f.sites[i].position[1] - f.sites[j].position[1]));
+  EXPECT_GT(dmin, 3.0);
+}
+
+TEST(Kernel_relaxation, AveragingTheDensityCanBeStopped) {
+  // The density is averaged before the first step (on a large image the longest part before the steps): the
+  // progress callback is asked there, and a stop returns the sites as given.
+  const auto px = image(64, 64, [](int c, int) { return c % 2 == 0 ? 0 : 255; });
+  Kernel_relaxation_options<2> o;
+  o.density.resize(px.size());
+  for (std::size_t i = 0; i < px.size(); ++i) o.density[i] = px[i].column % 2 == 0 ? 1.0 : 0.0;
+  std::size_t calls = 0;
+  o.progress = [&calls](double f) {
+    ++calls;
+    EXPECT_EQ(f, 0.0);
+    return false;
+  };
+  const auto start = random_sites(20, px, 64, 64, 9);
+  const auto r = kernel_relaxation(px, start, o);
+  EXPECT_EQ(r.status, Status::interrupted);
+  EXPECT_EQ(r.stop, Lloyd_stop::interrupted);
+  EXPECT_EQ(calls, 1u);
+  ASSERT_EQ(r.sites.size(), start.size());
+  for (std::size_t i = 0; i < start.size(); ++i) EXPECT_EQ(r.sites[i].position, start[i].position);
 }
 
 TEST(Kernel_relaxation, SnapsToItemsOnSurfaces) {

@@ -9,6 +9,7 @@
 
 #include "sampling/sampling_test_utilities.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -139,10 +140,18 @@ TEST(SampledBilateralFilter, MeetsTheBudget) {
   Bytes noise(64 * 48 * 3);
   for (auto& v : noise) v = std::uint8_t(rng() % 256);
   for (double b : {0.05, 0.1, 0.3}) {
-    const auto r = sampled_bilateral_filter(64, 48, 3, noise, sampled(Tap_mode::local, Tap_sampling::bilateral, b));
+    auto o = sampled(Tap_mode::local, Tap_sampling::bilateral, b);
+    std::vector<double> reported;
+    o.progress = [&reported](double f) {
+      reported.push_back(f);
+      return true;
+    };
+    const auto r = sampled_bilateral_filter(64, 48, 3, noise, o);
     EXPECT_NEAR(r.taps_per_kernel_pixel, b, 0.01 * b) << b;
-    if (b == 0.1) {
+    EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end())) << b;
+    if (b == 0.1) {  // the longer reaches report between the calibration (up to 0.15) and the pixels (from 0.2)
       EXPECT_GT(r.sampling_radius, 4.3);
+      EXPECT_TRUE(std::any_of(reported.begin(), reported.end(), [](double f) { return f > 0.15 && f < 0.2; }));
     }
   }
 }

@@ -137,6 +137,14 @@ TEST(WeightedSampleElimination, WeightsTieExactlyAndTheSeedBreaksTheTies) {
         if (c == 0 && count == 1) survivors.insert(kept[0]);
       }
   EXPECT_EQ(survivors, (std::set<std::size_t>{0, 4, 20, 24}));  // the corners, as the seed picks them
+  // A steep weight (alpha 64): the fixed point is scaled by the largest pair weight, 0.35^64 here (scaled by 1,
+  // every weight rounded to 0, the seed alone chose and the relative radius fell from 0.75 to 0.05).
+  const std::vector<Point_2> noise = white_noise(2000, 11);
+  Elimination_options steep;
+  steep.alpha = 64;
+  Sampling_quality_options q;
+  q.domain_measure = 1;
+  EXPECT_GT(sampling_quality(subset(noise, eliminate(noise, 200, steep)), q).relative_radius, 0.65);
 }
 
 TEST(WeightedSampleElimination, InfiniteSigmaFeatureIsEuclidean) {

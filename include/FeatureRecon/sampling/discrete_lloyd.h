@@ -142,9 +142,14 @@ class Item_domain {
   // arithmetic into an undefined float-to-integer cast) and, where features are compared, a feature at a finite
   // distance from itself (a site with a zero normal silently got no item), unless `check_features` is false (the
   // caller replaces the sites' features before reading them).
-  void check_sites(const std::vector<Site>& sites, const char* fn, bool check_features = true) const {
+  // Also: the span of the items and the sites together in units of sigma_position at most 2^400 (a site at 1e100
+  // with sigma_position 1e-110 was infinitely far from every item, and tied with a nearer site).
+  void check_sites(const std::vector<Site>& sites, const char* fn, double sigma_position,
+                   bool check_features = true) const {
     if (sites.size() > std::numeric_limits<std::uint32_t>::max() - 1)
       FeatureRecon::internal::throw_invalid_argument(fn, "too many sites (", sites.size(), ")");
+    Point slo = lo, shi = hi;
+    if (S.size() == 0 && !sites.empty()) slo = shi = sites[0].position;
     for (std::size_t i = 0; i < sites.size(); ++i) {
       for (int k = 0; k < D; ++k) {
         if (!std::isfinite(sites[i].position[k]))
@@ -153,6 +158,8 @@ class Item_domain {
         if (!(std::fabs(sites[i].position[k]) <= Sample_set<Traits>::max_coordinate))
           FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has coordinate ", sites[i].position[k],
                                                          " beyond +-1e100 (as items; scale the input)");
+        slo[k] = std::min(slo[k], sites[i].position[k]);
+        shi[k] = std::max(shi[k], sites[i].position[k]);
       }
       if (compared_features && check_features) {
         const double self = CGAL::to_double(S.feature_distance(sites[i].feature, sites[i].feature));
@@ -161,6 +168,9 @@ class Item_domain {
                                                          "(a zero normal, or NaN in the feature)");
       }
     }
+    double extent = 0;
+    for (int k = 0; k < D; ++k) extent = std::max(extent, shi[k] - slo[k]);
+    check_position_scale(extent, sigma_position, fn);
   }
 
   // The item nearest to x (Euclidean; ties to the lowest index). \pre items() > 0.
@@ -416,7 +426,7 @@ Bilateral_assignment bilateral_voronoi_assignment(const ItemRange& items, const 
                                                   const Discrete_lloyd_options<Traits::dimension>& options = {},
                                                   const Traits& traits = Traits()) {
   const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, "bilateral_voronoi_assignment");
-  engine.check_sites(sites, "bilateral_voronoi_assignment");
+  engine.check_sites(sites, "bilateral_voronoi_assignment", options.sigma_position);
   return engine.assign(sites);
 }
 
@@ -431,7 +441,7 @@ Discrete_lloyd_step_result<Traits> discrete_lloyd_step(const ItemRange& items,
                                                        const Discrete_lloyd_options<Traits::dimension>& options = {},
                                                        const Traits& traits = Traits()) {
   const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, "discrete_lloyd_step");
-  engine.check_sites(sites, "discrete_lloyd_step");
+  engine.check_sites(sites, "discrete_lloyd_step", options.sigma_position);
   return engine.step(sites);
 }
 
@@ -453,7 +463,7 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
                                                        const Traits& traits = Traits()) {
   const char* fn = "discrete_bilateral_lloyd";
   const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, fn);
-  engine.check_sites(sites, fn);
+  engine.check_sites(sites, fn, options.sigma_position);
   Discrete_lloyd_result<Traits> result;
   if (engine.items() == 0 || sites.empty()) {
     result.sites = std::move(sites);

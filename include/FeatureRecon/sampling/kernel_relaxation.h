@@ -128,7 +128,7 @@ class Kernel_engine : public Item_domain<Traits> {
 
   template <class ItemRange>
   Kernel_engine(const ItemRange& items, const Kernel_relaxation_options<D>& o, const Traits& traits, std::size_t sites,
-                const char* fn)
+                const char* fn, const Progress_callback& progress = {})
       : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
     check_sigmas(o.sigma_position, o.sigma_feature, fn);
     check_position_scale(S.extent(), o.sigma_position, fn);
@@ -180,7 +180,7 @@ class Kernel_engine : public Item_domain<Traits> {
     }
     tau = o.kernel_width > 0 ? o.kernel_width : packing / (2 * o.sigma_position);
     if (!(tau > 0)) tau = std::max(spacing, 1e-300) / o.sigma_position;
-    if (!o.density.empty()) smooth_density();
+    if (!o.density.empty()) smoothed = smooth_density(progress);
   }
 
   // The scale of a site at item `near`, from the density around that item (smooth_density()).
@@ -202,56 +202,98 @@ class Kernel_engine : public Item_domain<Traits> {
   // density of the one pixel under a site switched the scale between 0.7 and 8 from one pixel to the next (now
   // 0.87 and 1.22), the energy jumped from 0.23 to 150 in a step and 24 of 40 sites were pushed into the
   // corners. Deterministic (cells sorted by their integer coordinates, sums in index order).
-  void smooth_density() {
+  // Returns false when `progress` (asked with 0 at every level and every 65,536 items) says stop. Dense arrays of
+  // cells where they hold at most about 4 per item (images, volumes: 2048 x 2048 pixels in 0.3 s a level), else
+  // cells sorted by their coordinates. An extent above 2^40 cells of a level skips that level.
+  bool smooth_density(const Progress_callback& progress) {
     const std::size_t m = S.size();
     local_density.assign(options.density.begin(), options.density.end());
     const double w0 = tau * options.sigma_position;
-    if (!(spacing > 0) || !(w0 > 0) || !std::isfinite(w0)) return;
+    if (!(spacing > 0) || !(w0 > 0) || !std::isfinite(w0)) return true;
     double extent = 0;
     for (int k = 0; k < D; ++k) extent = std::max(extent, box_hi[k] - box_lo[k]);
     using Key = std::array<std::int64_t, D>;
     std::vector<char> climbing(m, 1);
     std::vector<Key> key(m), cell;
-    std::vector<std::uint32_t> order(m);
+    std::vector<std::uint32_t> order;
     std::vector<double> sum;
     std::vector<std::size_t> count;
     std::size_t blocks = 1;
     for (int k = 0; k < D; ++k) blocks *= 3;
+    auto asked = [&](std::size_t i) {
+      return i % 65536 != 0 || FeatureRecon::internal::report_progress(progress, 0.0);
+    };
     // Cells wider than the extent or than any kernel (8 w0) add nothing; coordinates stay below 2^41.
     for (double side = spacing; 3 * side <= 8 * w0 && side <= 2 * extent; side *= 2) {
       if (!(extent / side < 0x1p40)) continue;
+      if (!FeatureRecon::internal::report_progress(progress, 0.0)) return false;
+      Key dims{};
+      double cells = 1;
+      for (int k = 0; k < D; ++k) {
+        dims[k] = static_cast<std::int64_t>(std::floor((box_hi[k] - box_lo[k]) / side)) + 1;
+        cells *= double(dims[k]);
+      }
       for (std::size_t i = 0; i < m; ++i)
         for (int k = 0; k < D; ++k)
-          key[i][k] = static_cast<std::int64_t>(std::max(0.0, std::floor((S.positions[i][k] - box_lo[k]) / side)));
-      for (std::size_t i = 0; i < m; ++i) order[i] = static_cast<std::uint32_t>(i);
-      std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return key[a] < key[b] || (key[a] == key[b] && a < b);
-      });
-      cell.clear();
-      sum.clear();
-      count.clear();
-      for (const std::uint32_t i : order) {
-        if (cell.empty() || cell.back() != key[i]) {
-          cell.push_back(key[i]);
-          sum.push_back(0);
-          count.push_back(0);
+          key[i][k] = std::min(dims[k] - 1, static_cast<std::int64_t>(std::max(
+                                                0.0, std::floor((S.positions[i][k] - box_lo[k]) / side))));
+      const bool dense = cells <= 4.0 * double(m) + 64;
+      // Sums over a cell's items in index order (both paths).
+      auto index_of = [&dims](const Key& q) {
+        std::size_t at = 0;
+        for (int k = D; k-- > 0;) at = at * std::size_t(dims[k]) + std::size_t(q[k]);
+        return at;
+      };
+      if (dense) {
+        sum.assign(std::size_t(cells), 0.0);
+        count.assign(std::size_t(cells), 0);
+        for (std::size_t i = 0; i < m; ++i) {
+          sum[index_of(key[i])] += options.density[i];
+          ++count[index_of(key[i])];
         }
-        sum.back() += options.density[i];
-        ++count.back();
+      } else {
+        order.resize(m);
+        for (std::size_t i = 0; i < m; ++i) order[i] = static_cast<std::uint32_t>(i);
+        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+          return key[a] < key[b] || (key[a] == key[b] && a < b);
+        });
+        cell.clear();
+        sum.clear();
+        count.clear();
+        for (const std::uint32_t i : order) {
+          if (cell.empty() || cell.back() != key[i]) {
+            cell.push_back(key[i]);
+            sum.push_back(0);
+            count.push_back(0);
+          }
+          sum.back() += options.density[i];
+          ++count.back();
+        }
       }
       bool any = false;
       for (std::size_t i = 0; i < m; ++i) {
+        if (!asked(i)) return false;
         if (!climbing[i]) continue;
         double total = 0;
         std::size_t n = 0;
         for (std::size_t b = 0; b < blocks; ++b) {
           Key q = key[i];
           std::size_t code = b;
-          for (int k = 0; k < D; ++k, code /= 3) q[k] += std::int64_t(code % 3) - 1;
-          const auto at = std::lower_bound(cell.begin(), cell.end(), q);
-          if (at == cell.end() || *at != q) continue;
-          total += sum[std::size_t(at - cell.begin())];
-          n += count[std::size_t(at - cell.begin())];
+          bool inside = true;
+          for (int k = 0; k < D; ++k, code /= 3) {
+            q[k] += std::int64_t(code % 3) - 1;
+            inside = inside && q[k] >= 0 && q[k] < dims[k];
+          }
+          if (!inside) continue;
+          if (dense) {
+            total += sum[index_of(q)];
+            n += count[index_of(q)];
+          } else {
+            const auto at = std::lower_bound(cell.begin(), cell.end(), q);
+            if (at == cell.end() || *at != q) continue;
+            total += sum[std::size_t(at - cell.begin())];
+            n += count[std::size_t(at - cell.begin())];
+          }
         }
         const double rho = total / double(n);  // n >= 1: the item's own cell
         if (3 * side <= w0 * scale_of(rho)) {
@@ -263,10 +305,11 @@ class Kernel_engine : public Item_domain<Traits> {
       }
       if (!any) break;
     }
+    return true;
   }
 
   // Features and scales of sites at these positions (the constraint applied first).
-  // The constraint and the features: clamps to the box, or (snapping) keeps each site within half an item
+  // The constraint and the features: reflects into the box, or (snapping) keeps each site within half an item
   // spacing of its item, the item nearest to it unless a lower-index site took that one (then the nearest
   // free item; with more sites than items the extra ones share). Features and scales are those of the items.
   // With snapping `item` receives each site's item (the position reported to the caller).
@@ -278,11 +321,18 @@ class Kernel_engine : public Item_domain<Traits> {
     std::size_t free_items = S.size();
     for (std::size_t i = 0; i < sites.size(); ++i) {
       auto& p = sites[i].position;
-      if (!snap)  // reflected back across a face it crossed (the ghosts' mirror), clamped if still outside
+      if (!snap)  // reflected back across the faces it crossed (the ghosts' mirror), as often as it takes
         for (int k = 0; k < D; ++k) {
-          if (p[k] > box_hi[k]) p[k] = 2 * box_hi[k] - p[k];
-          if (p[k] < box_lo[k]) p[k] = 2 * box_lo[k] - p[k];
-          p[k] = std::min(box_hi[k], std::max(box_lo[k], p[k]));
+          const double width = box_hi[k] - box_lo[k];
+          if (p[k] >= box_lo[k] && p[k] <= box_hi[k]) continue;
+          if (!(width > 0)) {
+            p[k] = box_lo[k];
+            continue;
+          }
+          double t = std::fmod(p[k] - box_lo[k], 2 * width);  // exact
+          if (t < 0) t += 2 * width;
+          if (t > width) t = 2 * width - t;
+          p[k] = std::min(box_hi[k], std::max(box_lo[k], box_lo[k] + t));
         }
       std::uint32_t near = this->nearest_item(p);
       if (near >= S.size())  // a non-finite position: never after the checks above, but never read past the end
@@ -399,6 +449,7 @@ class Kernel_engine : public Item_domain<Traits> {
   double packing = 0;
   double tau = 1;
   std::vector<double> local_density;  // smooth_density()
+  bool smoothed = true;               // false: the progress callback stopped smooth_density()
 };
 /// \endcond
 }  // namespace internal
@@ -413,7 +464,7 @@ Kernel_energy<Traits::dimension> kernel_energy(const ItemRange& items, const std
                                                const Kernel_relaxation_options<Traits::dimension>& options = {},
                                                const Traits& traits = Traits()) {
   const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), "kernel_energy");
-  engine.check_sites(sites, "kernel_energy");
+  engine.check_sites(sites, "kernel_energy", options.sigma_position);
   std::vector<double> scales(sites.size(), 1.0);
   if (engine.items() > 0)
     for (std::size_t i = 0; i < sites.size(); ++i) scales[i] = engine.scale_at(engine.nearest_item(sites[i].position));
@@ -439,8 +490,9 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
                                                    const Traits& traits = Traits()) {
   constexpr int D = Traits::dimension;
   const char* fn = "kernel_relaxation";
-  const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), fn);
-  engine.check_sites(sites, fn, false);  // the features are taken from the items (settle()), never read
+  const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), fn, options.progress);
+  // The features are taken from the items (settle()), never read.
+  engine.check_sites(sites, fn, options.sigma_position, false);
   Kernel_relaxation_result<Traits> result;
   result.kernel_width = engine.tau;
   result.step = options.initial_step;
@@ -452,6 +504,12 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
   if (engine.items() == 0 || sites.size() < 2 || no_extent) {
     result.sites = std::move(sites);
     result.status = Status::degenerate_input;
+    return result;
+  }
+  if (!engine.smoothed) {  // stopped while the density was averaged: the sites as given
+    result.sites = std::move(sites);
+    result.stop = Lloyd_stop::interrupted;
+    result.status = Status::interrupted;
     return result;
   }
   // Coincident sites have no gradient between them: every copy after the first (in index order) moves by

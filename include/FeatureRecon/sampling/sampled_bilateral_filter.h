@@ -700,8 +700,10 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
 /// \param options the kernel, sampling, mode, budget, seed and progress.
 /// \returns the filtered values, the taps evaluated and their mean per kernel pixel, the dart radius, and
 ///   status degenerate_input for an empty image, interrupted (no values) when stopped. Progress: global mode, the
-///   pattern up to 0.5 and the pixels from 0.5; local mode, the pool up to 0.05, the radius calibration up to 0.2
-///   and the pixels from 0.2.
+///   pattern up to 0.5 and the pixels from 0.5; local mode, the pool up to 0.05, the radius calibration up to
+///   0.15, pools of longer reach (strongly varying colours) up to 0.2, and the pixels from 0.2. When the longest
+///   pool allowed (2^25 neighbour entries) still keeps too many taps, the result has more taps per kernel pixel
+///   than the budget (taps_per_kernel_pixel says how many).
 /// \throws std::invalid_argument naming the argument, as bilateral_tap_pattern().
 /// \note Deterministic: the same image, options and seed give bit-identical values.
 inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, int channels,
@@ -741,8 +743,8 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
   // reach, up to the window's diagonal (every pair of a set) or 2^25 neighbour entries (256 MB).
   double reach = 1.6 * std::sqrt(0.7 / options.budget);
   const double diagonal = 2 * std::sqrt(2.0) * (pool_R + 0.5);
-  // Progress: the pool up to 0.05, the radius calibration up to 0.2 (both ran before the first report: 26 s on a
-  // 512 x 512 picture at sigma 20), the pixels from 0.2.
+  // Progress: the pool up to 0.05, the radius calibration up to 0.15 and the longer reaches up to 0.2 (they ran
+  // before the first report: 26 s on a 512 x 512 picture at sigma 20), the pixels from 0.2.
   auto stage = [&options](double a, double b) -> Progress_callback {
     if (!options.progress) return {};
     return [&options, a, b](double t) { return options.progress(a + (b - a) * t); };
@@ -751,16 +753,18 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
   internal::Local_pool pool(pool_R, options.local_patterns, per_set, reach, options.seed, stage(0, 0.05), stopped);
   double r = stopped ? 0.0
                      : internal::calibrate_local_radius(F, pool, options.budget, factor, options.seed, reach,
-                                                        stage(0.05, 0.2), stopped, short_of_reach);
-  while (!stopped && short_of_reach && reach < diagonal) {
+                                                        stage(0.05, 0.15), stopped, short_of_reach);
+  // Each longer reach reports in the next half of what is left of [0.15, 0.2).
+  for (double a = 0.15, b = 0.175; !stopped && short_of_reach && reach < diagonal; a = b, b = (b + 0.2) / 2) {
     const double longer = std::min(2 * reach, diagonal);
     const double share = std::min(1.0, 3.14159 * longer * longer / (4.0 * (pool_R + 0.5) * (pool_R + 0.5)));
     if (double(options.local_patterns) * double(per_set) * double(per_set) / 2 * share > 0x1p25) break;
     reach = longer;
-    pool = internal::Local_pool(pool_R, options.local_patterns, per_set, reach, options.seed, stage(0.2, 0.2), stopped);
+    pool = internal::Local_pool(pool_R, options.local_patterns, per_set, reach, options.seed,
+                                stage(a, (a + b) / 2), stopped);
     if (!stopped)
-      r = internal::calibrate_local_radius(F, pool, options.budget, factor, options.seed, reach, stage(0.2, 0.2),
-                                           stopped, short_of_reach);
+      r = internal::calibrate_local_radius(F, pool, options.budget, factor, options.seed, reach,
+                                           stage((a + b) / 2, b), stopped, short_of_reach);
   }
   if (stopped) {
     result.status = Status::interrupted;

@@ -125,8 +125,8 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   there are more copies than eliminations, copies are removed one at a time from the largest group (whose
 ///   copies weigh the most; neighbours are not weighed). Ties between weights that compare equal are broken by a
 ///   permutation drawn from `seed`, so the same input and seed give the same output on every platform. Weights
-///   are sums of pair weights rounded to multiples of 2^-(63 - b) (2^b above the most neighbours of an item;
-///   2^-56 up to 127), kept in 64-bit integers: removing a neighbour
+///   are sums of pair weights rounded to multiples of 2^-(63 - b) times the largest pair weight (2^b above the
+///   most neighbours of an item; 2^-56 up to 127), kept in 64-bit integers: removing a neighbour
 ///   subtracts its pair weight exactly, so weights equal in exact arithmetic (on a grid) tie and the seed
 ///   decides, never the rounding of the order in which neighbours went.
 /// \sa sampling_quality(), bilateral_dart_throwing().
@@ -369,16 +369,21 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         }
         for (std::size_t i = 0; i < m; ++i) offset[i + 1] += offset[i];
         std::vector<std::uint32_t> neighbor(offset[m]);
-        // Weights in fixed point: pair weights (in [0, 1]) rounded to multiples of 2^-(63 - b), 2^b above the
-        // most neighbours any item has (2^-56 for up to 127), and summed in 64-bit integers without overflow.
-        // A weight kept up to date by subtraction is then exactly the sum over the neighbours left, and weights
-        // equal in exact arithmetic compare equal: the seed breaks their tie, not the rounding of the order in
-        // which neighbours went (doubles did that on grids).
+        // Weights in fixed point: pair weights (at most w_max, the weight of a pair at distance r_min or less)
+        // in units of 2^-(63 - b) w_max rounded up to a power of two, 2^b above the most neighbours any item has
+        // (2^-56 w_max for up to 127), summed in 64-bit integers without overflow. A weight kept up to date by
+        // subtraction is then exactly the sum over the neighbours left, and weights equal in exact arithmetic
+        // compare equal: the seed breaks their tie, not the rounding of the order in which neighbours went
+        // (doubles did that on grids). Scaled by w_max, not 1: with alpha 64, w_max = 0.35^64, every weight
+        // rounded to 0 and the seed alone chose.
         std::size_t most_neighbours = 0;
         for (std::size_t i = 0; i < m; ++i) most_neighbours = std::max(most_neighbours, offset[i + 1] - offset[i]);
         int bits = 0;
         while (bits < 63 && (std::uint64_t(1) << bits) <= most_neighbours) ++bits;
-        const double scale = std::ldexp(1.0, 63 - bits);
+        const double base_max = 1 - r_min / two_r, b2 = base_max * base_max, b4 = b2 * b2;
+        const double w_max = options.alpha == 8 ? b4 * b4 : std::pow(base_max, options.alpha);
+        const int top = w_max > 0 ? std::ilogb(w_max) + 1 : 0;  // w_max < 2^top
+        const double scale = std::ldexp(1.0, std::min(1000, 63 - bits - top));
         auto fixed = [scale](double w) { return static_cast<std::uint64_t>(std::llround(w * scale)); };
         std::vector<std::uint64_t> weight(m, 0);
         for (std::size_t i = 0; i < m; ++i) {
