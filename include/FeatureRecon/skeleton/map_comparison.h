@@ -391,52 +391,43 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
   return true;
 }
 
-/// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T = match_distance,
-/// bearings within the limit). The smaller sample set L is the side that is assigned: every sample of L also gets
-/// a private "unmatched" partner of cost T, so that minimising the total cost (d for a pair, T for an unmatched
-/// sample) is maximising the weight; this assignment problem is solved by successive shortest augmenting paths
-/// (Dijkstra on reduced costs with vertex potentials, one sample of L at a time, stopping at the first free
-/// sample reached). A search only visits what lies closer than its augmenting path: the samples around the new
-/// one on the few lines near it. At equal distance a free sample is settled first (a dense cluster of equal
-/// distances ends its search there), then a matched one, then an "unmatched" partner (a tie between pairing
-/// and leaving unmatched goes to pairing), smaller indices first. Returns for each sample of
-/// L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are refused (memory). Stopped
-/// by the progress callback: `stopped` set, the assignment partial. `searched` (if not null) counts the matched
-/// samples of R that the searches settle (for tests).
-inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L, const std::vector<Map_sample>& R,
-                                                   const Map_comparison_options& options, std::size_t max_pairs,
-                                                   const char* fn, bool& stopped, std::size_t* searched = nullptr) {
+/// Whether a and b may pair: at most match_distance apart (the box test first: hypot only for those within it)
+/// and bearings within the limit.
+inline bool admissible_pair(const Map_sample& a, const Map_sample& b, const Map_comparison_options& options) {
+  const double dx = b.position[0] - a.position[0], dy = b.position[1] - a.position[1];
   const double T = options.match_distance;
-  const std::size_t nl = L.size(), nr = R.size();
-  // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
-  std::vector<std::array<double, 2>> rp(nr);
-  for (std::size_t g = 0; g < nr; ++g) rp[g] = R[g].position;
-  const FeatureRecon::internal::Uniform_grid<2> grid(rp, T);
-  std::vector<std::size_t> first(nl + 1, 0);
+  return std::fabs(dx) <= T && std::fabs(dy) <= T && std::hypot(dx, dy) <= T &&
+         bearing_difference(a.bearing, b.bearing) < options.bearing_limit;
+}
+
+[[noreturn]] inline void throw_too_many_pairs(const char* fn, std::size_t max_pairs, double T) {
+  FeatureRecon::internal::throw_invalid_argument(fn, "more than ", max_pairs, " sample pairs lie within ",
+                                                 "match_distance (", T, " m) of each other (maps stacked on ",
+                                                 "themselves?): too many for the optimal matching; use the "
+                                                 "greedy one");
+}
+
+/// The admissible pairs of each sample of L with samples of R, as lists (CSR: first, partner, cost).
+struct Admissible_pairs {
+  std::vector<std::size_t> first{0};
   std::vector<std::uint32_t> partner;
   std::vector<double> cost;
+};
+
+/// The assignment of optimal_assignment() on admissible pairs given as lists (`nl` samples of L, `nr` of R).
+inline std::vector<std::size_t> assign_optimally(std::size_t nl, std::size_t nr, const Admissible_pairs& P,
+                                                 const Map_comparison_options& options, bool& stopped,
+                                                 std::size_t* searched = nullptr) {
+  const double T = options.match_distance;
+  const std::vector<std::size_t>& first = P.first;
+  const std::vector<std::uint32_t>& partner = P.partner;
+  const std::vector<double>& cost = P.cost;
   const std::size_t stride = 1024;  // samples between two progress reports
   auto stop_at = [&](std::size_t i, double from, double to) {
     return i % stride == stride - 1 &&
            (stopped = !FeatureRecon::internal::report_progress(
                 options.progress, from + (to - from) * static_cast<double>(i) / static_cast<double>(nl)));
   };
-  for (std::size_t h = 0; h < nl; ++h) {
-    if (stop_at(h, 0.0, 0.1)) return {};
-    grid.for_each_candidate(L[h].position, [&](std::uint32_t g) {
-      const double d = std::hypot(R[g].position[0] - L[h].position[0], R[g].position[1] - L[h].position[1]);
-      if (d <= T && bearing_difference(L[h].bearing, R[g].bearing) < options.bearing_limit) {
-        partner.push_back(g);
-        cost.push_back(d);
-      }
-    });
-    if (partner.size() > max_pairs)
-      FeatureRecon::internal::throw_invalid_argument(fn, "more than ", max_pairs, " sample pairs lie within ",
-                                                     "match_distance (", T, " m) of each other (maps stacked on ",
-                                                     "themselves?): too many for the optimal matching; use the "
-                                                     "greedy one");
-    first[h + 1] = partner.size();
-  }
   const std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<double> pot_l(nl, 0), pot_r(nr, 0), dist_r(nr, 0), dist_l(nl, 0);
   std::vector<std::size_t> mate_l(nl, none), mate_r(nr, none), from_r(nr, none), stamp_r(nr, 0);
@@ -515,6 +506,45 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
   return mate_l;
 }
 
+/// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T = match_distance,
+/// bearings within the limit). The smaller sample set L is the side that is assigned: every sample of L also gets
+/// a private "unmatched" partner of cost T, so that minimising the total cost (d for a pair, T for an unmatched
+/// sample) is maximising the weight; this assignment problem is solved by successive shortest augmenting paths
+/// (Dijkstra on reduced costs with vertex potentials, one sample of L at a time, stopping at the first free
+/// sample reached). A search only visits what lies closer than its augmenting path: the samples around the new
+/// one on the few lines near it. At equal distance a free sample is settled first (a dense cluster of equal
+/// distances ends its search there), then a matched one, then an "unmatched" partner (a tie between pairing
+/// and leaving unmatched goes to pairing), smaller indices first. Returns for each sample of
+/// L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are refused (memory). Stopped
+/// by the progress callback: `stopped` set, the assignment partial. `searched` (if not null) counts the matched
+/// samples of R that the searches settle (for tests).
+inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L, const std::vector<Map_sample>& R,
+                                                   const Map_comparison_options& options, std::size_t max_pairs,
+                                                   const char* fn, bool& stopped, std::size_t* searched = nullptr) {
+  const double T = options.match_distance;
+  const std::size_t nl = L.size(), nr = R.size();
+  // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
+  std::vector<std::array<double, 2>> rp(nr);
+  for (std::size_t g = 0; g < nr; ++g) rp[g] = R[g].position;
+  const FeatureRecon::internal::Uniform_grid<2> grid(rp, T);
+  Admissible_pairs P;
+  P.first.assign(nl + 1, 0);
+  for (std::size_t h = 0; h < nl; ++h) {
+    if (h % 1024 == 1023 &&
+        (stopped = !FeatureRecon::internal::report_progress(options.progress, 0.1 * static_cast<double>(h) / nl)))
+      return {};
+    grid.for_each_candidate(L[h].position, [&](std::uint32_t g) {
+      if (admissible_pair(L[h], R[g], options)) {
+        P.partner.push_back(g);
+        P.cost.push_back(std::hypot(R[g].position[0] - L[h].position[0], R[g].position[1] - L[h].position[1]));
+      }
+    });
+    if (P.partner.size() > max_pairs) throw_too_many_pairs(fn, max_pairs, T);
+    P.first[h + 1] = P.partner.size();
+  }
+  return assign_optimally(nl, nr, P, options, stopped, searched);
+}
+
 /// The optimal matching of H and G, one connected component of the admissible pairs at a time (pairs of different
 /// components do not interact): in each the smaller side is assigned (optimal_assignment(); ties: the ground
 /// truth), so that the samples left over search only while the other side still has free samples near them. With
@@ -535,29 +565,28 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
+  // The admissible pairs, enumerated once (by ground-truth sample; each component's lists are cut from them).
+  Admissible_pairs all;
+  all.first.assign(nh + 1, 0);
   {
     std::vector<std::array<double, 2>> gp(ng);
     for (std::size_t g = 0; g < ng; ++g) gp[g] = G[g].position;
     const FeatureRecon::internal::Uniform_grid<2> grid(gp, T);
-    std::size_t pairs = 0;
     for (std::size_t h = 0; h < nh; ++h) {
       if (h % 4096 == 4095 &&
           !FeatureRecon::internal::report_progress(options.progress, 0.05 * static_cast<double>(h) / nh))
         return false;
       grid.for_each_candidate(H[h].position, [&](std::uint32_t g) {
-        const double d = std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]);
-        if (d <= T && bearing_difference(H[h].bearing, G[g].bearing) < options.bearing_limit) {
-          ++pairs;
+        if (admissible_pair(H[h], G[g], options)) {
+          all.partner.push_back(g);
+          all.cost.push_back(std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]));
           paired[h] = 1;
           const std::size_t a = find(h), b = find(nh + g);
           if (a != b) parent[std::max(a, b)] = std::min(a, b);
         }
       });
-      if (pairs > max_pairs)
-        FeatureRecon::internal::throw_invalid_argument(fn, "more than ", max_pairs, " sample pairs lie within ",
-                                                       "match_distance (", T, " m) of each other (maps stacked on ",
-                                                       "themselves?): too many for the optimal matching; use the "
-                                                       "greedy one");
+      if (all.partner.size() > max_pairs) throw_too_many_pairs(fn, max_pairs, T);
+      all.first[h + 1] = all.partner.size();
     }
   }
   // Members of each component with a pair, in index order (components by their smallest ground-truth sample).
@@ -577,25 +606,55 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
   for (std::size_t c = 0; c < members_h.size(); ++c) in_components += members_h[c].size() + members_g[c].size();
   const double total = static_cast<double>(std::max<std::size_t>(in_components, 1));
   bool stopped = false;
-  std::vector<Map_sample> sub_h, sub_g;
+  // Each sample's position in its component's member list.
+  std::vector<std::uint32_t> local(nh + ng, 0);
+  for (std::size_t c = 0; c < members_h.size(); ++c) {
+    for (std::size_t i = 0; i < members_h[c].size(); ++i) local[members_h[c][i]] = static_cast<std::uint32_t>(i);
+    for (std::size_t j = 0; j < members_g[c].size(); ++j) local[nh + members_g[c][j]] = static_cast<std::uint32_t>(j);
+  }
+  Admissible_pairs sub_pairs;
   for (std::size_t c = 0; c < members_h.size() && !stopped; ++c) {
     const std::vector<std::size_t>& mh = members_h[c];
     const std::vector<std::size_t>& mg = members_g[c];
     const std::size_t size = mh.size() + mg.size();
     const double from = 0.05 + 0.95 * static_cast<double>(done) / total;
     if (c % 256 == 255 && !FeatureRecon::internal::report_progress(options.progress, from)) return false;
-    sub_h.clear();
-    sub_g.clear();
-    for (const std::size_t h : mh) sub_h.push_back(H[h]);
-    for (const std::size_t g : mg) sub_g.push_back(G[g]);
     Map_comparison_options sub = options;
     if (options.progress) {
       const double share = 0.95 * static_cast<double>(size) / total;
       sub.progress = [&options, from, share](double f) { return options.progress(from + share * f); };
     }
-    const bool swap = sub_g.size() < sub_h.size();
-    const std::vector<std::size_t> mate = swap ? optimal_assignment(sub_g, sub_h, sub, max_pairs, fn, stopped, searched)
-                                               : optimal_assignment(sub_h, sub_g, sub, max_pairs, fn, stopped, searched);
+    // The component's pairs, by its ground-truth samples or (the smaller side assigned) by its reconstruction
+    // ones. The order within a list does not matter: the searches pop by (distance, class, index).
+    const bool swap = mg.size() < mh.size();
+    const std::size_t nl = swap ? mg.size() : mh.size();
+    sub_pairs.first.assign(nl + 1, 0);
+    sub_pairs.partner.clear();
+    sub_pairs.cost.clear();
+    if (!swap) {
+      for (std::size_t i = 0; i < mh.size(); ++i) {
+        for (std::size_t k = all.first[mh[i]]; k < all.first[mh[i] + 1]; ++k) {
+          sub_pairs.partner.push_back(local[nh + all.partner[k]]);
+          sub_pairs.cost.push_back(all.cost[k]);
+        }
+        sub_pairs.first[i + 1] = sub_pairs.partner.size();
+      }
+    } else {  // transposed: count, then fill
+      for (const std::size_t h : mh)
+        for (std::size_t k = all.first[h]; k < all.first[h + 1]; ++k) ++sub_pairs.first[local[nh + all.partner[k]] + 1];
+      for (std::size_t j = 0; j < nl; ++j) sub_pairs.first[j + 1] += sub_pairs.first[j];
+      sub_pairs.partner.resize(sub_pairs.first[nl]);
+      sub_pairs.cost.resize(sub_pairs.first[nl]);
+      std::vector<std::size_t> fill(sub_pairs.first.begin(), sub_pairs.first.end() - 1);
+      for (std::size_t i = 0; i < mh.size(); ++i)
+        for (std::size_t k = all.first[mh[i]]; k < all.first[mh[i] + 1]; ++k) {
+          const std::size_t at = fill[local[nh + all.partner[k]]]++;
+          sub_pairs.partner[at] = static_cast<std::uint32_t>(i);
+          sub_pairs.cost[at] = all.cost[k];
+        }
+    }
+    const std::vector<std::size_t> mate =
+        assign_optimally(nl, swap ? mh.size() : mg.size(), sub_pairs, sub, stopped, searched);
     if (stopped) return false;
     for (std::size_t i = 0; i < mate.size(); ++i)
       if (mate[i] != std::numeric_limits<std::size_t>::max()) {
