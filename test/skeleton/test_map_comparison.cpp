@@ -777,6 +777,29 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
   }
 }
 
+TEST(MapComparison, PairsExactlyAtTheMatchDistanceAreSeenWhateverTheGridsCorner) {
+  // h0 and g1 lie exactly match_distance apart: an admissible pair. The grid's rounding of (p - low) / cell put
+  // them two cells apart, so whether the pair was seen depended on the grid's corner: with a far sample g2 the
+  // optimal matching paired both ground-truth samples, without it only one (and before the pairs were enumerated
+  // once, neither way round). Every pair at the limit is now a candidate.
+  Map_comparison_options o;
+  o.matching = Map_matching::optimal;
+  o.match_distance = 2.5088616021043775;
+  const double l = 2.5620754289283343, h = 5.0709370310327113, g1 = 7.5797986331370888;
+  ASSERT_EQ(std::hypot(g1 - h, 0.0), o.match_distance);
+  const std::vector<Map_sample> H{{{h, 0}, 0}, {{l, 0}, 0}};
+  std::vector<Map_sample> G{{{l, 0}, 0}, {{g1, 0}, 0}, {{-100, 1000}, 0}};
+  for (const bool far : {true, false}) {
+    if (!far) G.pop_back();
+    for (const Map_matching m : {Map_matching::optimal, Map_matching::greedy}) {
+      o.matching = m;
+      const Map_sample_matching M = match_map_samples(H, G, o);
+      EXPECT_EQ(M.matched, 2u) << far << " " << int(m);
+      EXPECT_EQ(M.ground_truth_partner, (std::vector<std::int64_t>{1, 0})) << far << " " << int(m);
+    }
+  }
+}
+
 TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
   // A grid of 30x30 blocks of 100 m (about 35,000 samples) against itself shifted by 3 m: both matchings report
   // increasing fractions ending at 1 (and below 1 before the end) and score what they score unwatched; a stop at

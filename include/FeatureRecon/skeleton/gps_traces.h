@@ -145,7 +145,8 @@ struct Gps_trace_options {
   /// default spacing, 12 m; 3.2 * 10^8 at 2 m; 2.7 * 10^10 at 0.5 m, which ran 6 minutes and took 8 GB before the
   /// complex's triangle limit refused it). The pairs are counted as the samples are made, and the sampling stops
   /// as soon as they pass the limit (3,000 Chicago fixes at spacing 0.01 made 7.3 million samples in 38 s and 1 GB
-  /// before they were counted; now 73,000 samples, 0.3 s). Default 2^30; 0: no limit.
+  /// before they were counted; now 73,000 samples, 0.3 s), so the refusal can come before a stop that the
+  /// progress callback would have asked for later in the sampling. Default 2^30; 0: no limit.
   std::size_t max_density_pairs = std::size_t(1) << 30;
   /// Called with the fraction done (per trip during the segment check and while sampling, every 4096 samples of
   /// the density filter); returning false stops the sampling (Gps_trace_sample::status interrupted).

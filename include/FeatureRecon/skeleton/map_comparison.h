@@ -391,6 +391,13 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
   return true;
 }
 
+/// The cell of a grid whose 3 x 3 candidates must hold every point within `distance` (exactly that far
+/// included): a hair wider, since the rounding of (p - low) / cell put two points exactly `distance` apart two
+/// cells apart, and which pairs at the limit were seen depended on the grid's corner (one sample 1 km away
+/// changed the optimal matching). Up to 2^20 cells per axis (the grid's dense range) the rounding stays far below
+/// the 2^-20 margin.
+inline double search_cell(double distance) { return distance * (1 + 0x1p-20); }
+
 /// Whether a and b may pair: at most match_distance apart (the box test first: hypot only for those within it)
 /// and bearings within the limit.
 inline bool admissible_pair(const Map_sample& a, const Map_sample& b, const Map_comparison_options& options) {
@@ -526,7 +533,7 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
   // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
   std::vector<std::array<double, 2>> rp(nr);
   for (std::size_t g = 0; g < nr; ++g) rp[g] = R[g].position;
-  const FeatureRecon::internal::Uniform_grid<2> grid(rp, T);
+  const FeatureRecon::internal::Uniform_grid<2> grid(rp, search_cell(T));
   Admissible_pairs P;
   P.first.assign(nl + 1, 0);
   for (std::size_t h = 0; h < nl; ++h) {
@@ -571,7 +578,7 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
   {
     std::vector<std::array<double, 2>> gp(ng);
     for (std::size_t g = 0; g < ng; ++g) gp[g] = G[g].position;
-    const FeatureRecon::internal::Uniform_grid<2> grid(gp, T);
+    const FeatureRecon::internal::Uniform_grid<2> grid(gp, search_cell(T));
     for (std::size_t h = 0; h < nh; ++h) {
       if (h % 4096 == 4095 &&
           !FeatureRecon::internal::report_progress(options.progress, 0.05 * static_cast<double>(h) / nh))
@@ -798,7 +805,7 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
     Unmatched_sample_counts c;
     std::vector<std::array<double, 2>> positions(to.size());
     for (std::size_t j = 0; j < to.size(); ++j) positions[j] = to[j].position;
-    const FeatureRecon::internal::Uniform_grid<2> grid(positions, reach);
+    const FeatureRecon::internal::Uniform_grid<2> grid(positions, internal::search_cell(reach));
     for (std::size_t i = 0; i < from.size(); ++i) {
       if (from_partner[i] >= 0) continue;
       double aligned = std::numeric_limits<double>::infinity();
