@@ -307,8 +307,7 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
   template <class ItemRange>
   Discrete_lloyd_engine(const ItemRange& items, const Discrete_lloyd_options<D>& o, const Traits& traits, const char* fn)
       : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
-    check_sigmas(o.sigma_position, o.sigma_feature, fn);
-    check_position_scale(S.extent(), o.sigma_position, fn);
+    check_sigmas(o.sigma_position, o.sigma_feature, fn);  // the span: check_sites(), items and sites together
     check_domain(o.domain_measure, o.intrinsic_dimension, D, fn);
     this->intrinsic = o.intrinsic_dimension;
     if (!o.density.empty() && o.density.size() != S.size())

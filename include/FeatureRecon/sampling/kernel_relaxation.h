@@ -130,8 +130,7 @@ class Kernel_engine : public Item_domain<Traits> {
   Kernel_engine(const ItemRange& items, const Kernel_relaxation_options<D>& o, const Traits& traits, std::size_t sites,
                 const char* fn, const Progress_callback& progress = {})
       : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
-    check_sigmas(o.sigma_position, o.sigma_feature, fn);
-    check_position_scale(S.extent(), o.sigma_position, fn);
+    check_sigmas(o.sigma_position, o.sigma_feature, fn);  // the span: check_sites(), items and sites together
     if (!(o.kernel_width >= 0) || !std::isfinite(o.kernel_width))
       FeatureRecon::internal::throw_invalid_argument(fn, "kernel_width must be finite and >= 0, got ", o.kernel_width);
     if (!(o.cutoff > 0) || !std::isfinite(o.cutoff))

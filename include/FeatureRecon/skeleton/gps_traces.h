@@ -281,41 +281,17 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
   return b;
 }
 
-/// The refusal of a density filter that would compare more than `max_pairs` pairs (`partial`: counted while the
-/// samples were made, `samples` so far).
-[[noreturn]] inline void throw_density_pairs(const char* fn, double pairs, std::size_t samples, std::size_t max_pairs,
-                                             const Gps_trace_sample& S, bool partial) {
-  FeatureRecon::internal::throw_invalid_argument(
-      fn, "the density filter would compare ", partial ? "at least " : "", pairs, " pairs of the ",
-      partial ? "first " : "", samples, " samples (more than max_density_pairs, ", max_pairs, partial ? "; counted while "
-      "the samples were made" : "", "): the sample spacing (sample_spacing ", S.sample_spacing, ") is small for the ",
-      "density radius (density_radius ", S.density_radius, "); raise the spacing, lower the radius, or turn the filter ",
-      "off (min_relative_density and min_lateral_density 0)");
-}
-
 /// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius that travels within
 /// `heading_tolerance` degrees of the same direction, or lighter than `lateral_fraction` times the heaviest such
 /// sample beside them (the offset across the sample's direction at least the offset along it; samples without a
 /// direction, per `has_direction`, neither judged nor counted); re-indexes.
 inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lateral_fraction, double heading_tolerance,
-                                const std::vector<bool>& has_direction, std::size_t max_pairs, const char* fn,
-                                const Progress_callback& progress = {}) {
+                                const std::vector<bool>& has_direction, const Progress_callback& progress = {}) {
   const double R = S.density_radius, R2 = R * R;
   constexpr double degree = 3.14159265358979323846 / 180.0;
   const std::array<double, 4> box = bounding_box(S.points);
   Planar_grid grid(box[0], box[1], box[2], box[3], R, S.points.rows);
   for (std::uint32_t i = 0; i < S.points.rows; ++i) grid.push(grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]), i);
-  if (max_pairs > 0) {  // the pairs the loop below compares, counted first (9 cell lookups a sample)
-    double pairs = 0;
-    for (std::uint32_t i = 0; i < S.points.rows; ++i) {
-      const auto c = grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]);
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy)
-          if (const std::vector<std::uint32_t>* bucket = grid.find(c[0] + dx, c[1] + dy))
-            pairs += static_cast<double>(bucket->size());
-    }
-    if (pairs > static_cast<double>(max_pairs)) throw_density_pairs(fn, pairs, S.points.rows, max_pairs, S, false);
-  }
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> new_index(S.points.rows, none);
   Gps_trace_sample T;
@@ -711,10 +687,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   }
   internal::Planar_grid grid(box[0], box[1], box[2], box[3], cell, fixes.rows);
   std::vector<bool> has_direction;  // per sample: a point of a moving trip joined it
-  // The pairs the density filter will compare (drop_sparse_samples() counts them on cells of the density radius:
-  // samples in the 3 x 3 cells around each sample), counted as samples are made, so that a spacing far below the
-  // radius is refused before it makes millions of samples (3,000 Chicago fixes at spacing 0.01 made 7.3 million
-  // samples in 38 s and 1 GB before the filter refused them).
+  // The pairs the density filter will compare (every sample with the samples in the 3 x 3 cells of side
+  // density_radius around it), counted as samples are made, so that a spacing far below the radius is refused
+  // before it makes millions of samples (3,000 Chicago fixes at spacing 0.01 made 7.3 million samples in 38 s and
+  // 1 GB when the filter counted them afterwards).
   const bool count_pairs = density_filter && options.max_density_pairs > 0;
   std::unordered_map<std::array<std::int64_t, 2>, std::uint64_t, internal::Cell_hash> per_cell;
   double density_pairs = 0;
@@ -754,7 +730,12 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         ++per_cell[d];
         density_pairs += 2 * static_cast<double>(around) + 1;  // both orders with each of them, and itself
         if (density_pairs > static_cast<double>(options.max_density_pairs))
-          internal::throw_density_pairs(fn, density_pairs, S.headings.size(), options.max_density_pairs, S, true);
+          FeatureRecon::internal::throw_invalid_argument(
+              fn, "the density filter would compare at least ", density_pairs, " pairs of the first ",
+              S.headings.size(), " samples (more than max_density_pairs, ", options.max_density_pairs, "; counted ",
+              "while the samples were made): the sample spacing (sample_spacing ", S.sample_spacing, ") is small ",
+              "for the density radius (density_radius ", S.density_radius, "); raise the spacing, lower the radius, ",
+              "or turn the filter off (min_relative_density and min_lateral_density 0)");
       }
     }
     ++S.weights[best];
@@ -836,8 +817,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     Progress_callback filter_progress;
     if (options.progress) filter_progress = [&options](double f) { return options.progress(0.8 + 0.2 * f); };
     internal::drop_sparse_samples(S, options.min_relative_density, options.min_lateral_density,
-                                  options.density_heading_tolerance, has_direction, options.max_density_pairs, fn,
-                                  filter_progress);
+                                  options.density_heading_tolerance, has_direction, filter_progress);
     if (S.status == Status::interrupted) return S;
   }
   if (options.mean_positions) {  // each sample at the mean of its fixes
