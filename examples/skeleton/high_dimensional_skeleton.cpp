@@ -3,8 +3,9 @@
 // A skeleton in R^50 with the one-call pipeline: a noisy sample of a figure-eight with a tail (two circles in
 // random planes of R^50, touching at one point, and a segment hanging off one circle), extract_reeb_skeleton()
 // with a Rips radius and a persistence threshold, then the result: its nodes, arcs and loops, how far its
-// input-space polylines are from the true graph, and (with --svg FILE) a picture of the 3D embedding (PCA of the
-// points, viewed at an angle): doc/images/high_dimensional_skeleton.svg.
+// input-space polylines are from the true graph, the same with the radius and threshold estimated from the points
+// (estimate_rips_radius()), and (with --svg FILE) a picture of the 3D embedding (PCA of the points, viewed at an
+// angle): doc/images/high_dimensional_skeleton.svg.
 
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 
@@ -195,6 +196,18 @@ int main(int argc, char** argv) {
   const double bound = 0.7 * rips_radius;  // the bound the tests state (doc/skeleton.md, "Graphs in high dimension")
   std::printf("every arc within 0.7 x radius = %.3f of the true graph: %s (farthest vertex %.2f)\n", bound,
               farthest <= bound ? "yes" : "no", farthest);
+  // Without a radius: estimate_rips_radius() reads one off the points (the scale where they look one-dimensional),
+  // and extract_reeb_skeleton(points, options) uses it; delta < 0 takes the estimate's delta too.
+  const sk::Rips_radius_estimate estimate = sk::estimate_rips_radius(points);
+  sk::Skeleton_options automatic;
+  automatic.delta = -1;
+  const sk::Reeb_skeleton a = sk::extract_reeb_skeleton(points, automatic);
+  std::vector<int> a_component(num_vertices(a.graph));
+  const std::size_t a_components = static_cast<std::size_t>(boost::connected_components(a.graph, a_component.data()));
+  std::printf("estimated: radius %.3f (scale %.3f, intrinsic dimension %.2f, gap radius %.3f), delta %.3f\n",
+              estimate.radius, estimate.scale, estimate.intrinsic_dimension, estimate.gap_radius, estimate.delta);
+  std::printf("skeleton at the estimate: %zu nodes, %zu arcs, %zu loops, %zu component(s)\n", num_vertices(a.graph),
+              num_edges(a.graph), num_edges(a.graph) + a_components - num_vertices(a.graph), a_components);
   if (!svg.empty()) {
     if (!write_svg(svg, sk::project_to_3d(points), s.graph)) {
       std::fprintf(stderr, "%s: cannot write '%s'\n", argv[0], svg.c_str());

@@ -231,6 +231,23 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
   return kept;
 }
 
+/// The thinning spacing for points whose radius was estimated: none while a point has at most 32 neighbours within
+/// R on average (the profile's count at the first radius >= R); else the smallest profile radius S after which
+/// about 32 remain (C(R) / (1 + C(S)) <= 32: each kept point stands for itself and its C(S) neighbours), at most
+/// (R - gap radius) / 2: thinning at S moves a gap g between points to at most g + 2S between kept ones, and gaps
+/// are below the gap radius (at 95 % where points lie at random).
+double thinning_spacing(const Rips_radius_estimate& e) {
+  constexpr double kept_neighbours = 32;
+  const double cap = (e.radius - e.gap_radius) / 2;
+  std::size_t at_radius = 0;
+  while (at_radius < e.radii.size() && e.radii[at_radius] < e.radius) ++at_radius;
+  if (at_radius == e.radii.size() || e.mean_neighbours_within[at_radius] <= kept_neighbours || !(cap > 0)) return 0;
+  const double within_radius = e.mean_neighbours_within[at_radius];
+  for (std::size_t k = 0; k < e.radii.size() && e.radii[k] <= cap; ++k)
+    if (within_radius / (1 + e.mean_neighbours_within[k]) <= kept_neighbours) return e.radii[k];
+  return cap;
+}
+
 /// The median of the distances from each point to its nearest other point (NaN for fewer than two points): the
 /// spacing that a Rips radius must exceed to join the points to their neighbours.
 double median_of(std::vector<double> v) {
@@ -297,8 +314,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   if (args.has("graph") && args.has("radius"))
     throw Usage_error("--radius does not apply to --graph (the graph's edges are used as they are)");
-  if (!args.has("tracks") && !args.has("graph") && !image && !args.has("radius"))
-    throw Usage_error("--radius R is required with --points and --distance-matrix");
+  // --points and --distance-matrix without --radius: estimate_rips_radius() derives it (and from it delta and, for
+  // points, the thinning spacing) once the input is read.
+  const bool estimated_radius = (args.has("points") || args.has("distance-matrix")) && !args.has("radius");
   // With --tracks every unset parameter is derived from the data (extract_road_map(): the median step between
   // fixes gives the radius, the radius the rest).
   const bool gps = args.has("tracks");
@@ -322,7 +340,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   Skeleton_options options;
   options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : image ? 2 * radius : radius;
-  if (options.delta < 0) throw Usage_error("--delta must be >= 0");
+  if (!(options.delta >= 0)) throw Usage_error("--delta must be >= 0");
   options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
   if (args.has("tracks")) options.embedding = road_map_embedding_options();  // road maps keep their corners
@@ -386,6 +404,19 @@ int run_skeleton(const std::vector<std::string>& argv) {
   // Set when the Rips graph has fewer edges than half the points (a radius below their spacing): their median
   // nearest-neighbour distance, for the warning.
   double spacing_hint = std::numeric_limits<double>::quiet_NaN();
+  // Without --radius: the estimate gives R and delta (max(R, 2.25 x its scale)), and for points the thinning
+  // spacing (R / 4, less where R barely bridges the points' random gaps).
+  auto use_estimate = [&](const Rips_radius_estimate& e, const std::string& what) {
+    if (!(e.radius <= 1e300))
+      throw io::Input_error(what + ": the radius derived from the data, " + json_number(e.radius) +
+                            ", exceeds 1e300 (lengths derived from it, up to 5R, must stay finite): give --radius");
+    radius = e.radius;
+    if (!args.has("delta")) options.delta = e.delta;
+    input_json += ", \"radius_estimate\": {\"scale\": " + json_number(e.scale) + ", \"intrinsic_dimension\": " +
+                  json_number(e.intrinsic_dimension) + ", \"mean_neighbours\": " + json_number(e.mean_neighbours) +
+                  ", \"gap_radius\": " + json_number(e.gap_radius) +
+                  ", \"reference_points\": " + std::to_string(e.reference_points) + "}";
+  };
   if (args.has("points") || image) {
     Point_matrix all;
     if (image) {  // the ink pixels' centres, y up
@@ -408,6 +439,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
       all.data = pf.coordinates;
     }
     input_points = all.rows;
+    if (estimated_radius) {
+      Progress estimate_progress("radius estimate", quiet);
+      Rips_radius_options ro;
+      ro.progress = std::ref(estimate_progress);
+      const Rips_radius_estimate e = estimate_rips_radius(all, ro);
+      use_estimate(e, args.get("points"));
+      estimate_progress.done("R " + json_number(radius));
+      if (!args.has("sample-spacing")) spacing = thinning_spacing(e);
+    }
     const std::vector<std::size_t> kept = thin_points(all, spacing);
     m.rows = kept.size();
     m.dimension = all.dimension;
@@ -438,6 +478,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
     Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> D(
         pf.coordinates.data(), static_cast<Eigen::Index>(pf.size()), static_cast<Eigen::Index>(pf.size()));
     input_points = pf.size();
+    if (estimated_radius) {
+      Progress estimate_progress("radius estimate", quiet);
+      Rips_radius_options ro;
+      ro.progress = std::ref(estimate_progress);
+      use_estimate(estimate_rips_radius_from_distance_matrix(D, ro), path);
+      estimate_progress.done("R " + json_number(radius));
+    }
     s = extract_reeb_skeleton_from_distance_matrix(D, radius, options);
     if (2 * s.rips_edges < pf.size()) spacing_hint = median_nearest_distance(pf.coordinates, pf.size());
     m.dimension = 3;

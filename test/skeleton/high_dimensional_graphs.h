@@ -6,7 +6,10 @@
 #ifndef FEATURERECON_TEST_HIGH_DIMENSIONAL_GRAPHS_H
 #define FEATURERECON_TEST_HIGH_DIMENSIONAL_GRAPHS_H
 
+#include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
+
+#include <boost/graph/connected_components.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -145,6 +148,29 @@ struct Segment_graph {
     return m;
   }
 };
+
+/// What the tests compare of a skeleton with the true graph.
+struct Topology {
+  std::size_t loops = 0, components = 0, leaves = 0, branch_excess = 0;  // branch_excess: sum of (degree - 2)
+  std::vector<std::size_t> branch_degrees;  // degrees of the branch nodes (>= 3), sorted
+};
+
+inline Topology topology(const skeleton::Skeleton_graph& g) {
+  Topology t;
+  std::vector<int> comp(num_vertices(g));
+  t.components = num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, comp.data()));
+  t.loops = num_edges(g) + t.components - num_vertices(g);
+  for (auto v : boost::make_iterator_range(vertices(g))) {
+    const std::size_t d = degree(v, g);
+    if (d == 1) ++t.leaves;
+    if (d >= 3) {
+      t.branch_excess += d - 2;
+      t.branch_degrees.push_back(d);
+    }
+  }
+  std::sort(t.branch_degrees.begin(), t.branch_degrees.end());
+  return t;
+}
 
 inline std::vector<double> random_unit_vector(std::size_t d, Portable_gaussian& g) {
   std::vector<double> v(d);

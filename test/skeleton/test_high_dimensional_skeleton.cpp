@@ -22,28 +22,6 @@ using namespace FeatureRecon::test;
 
 namespace {
 
-struct Topology {
-  std::size_t loops = 0, components = 0, leaves = 0, branch_excess = 0;  // branch_excess: sum of (degree - 2)
-  std::vector<std::size_t> branch_degrees;  // degrees of the branch nodes (>= 3), sorted
-};
-
-Topology topology(const Skeleton_graph& g) {
-  Topology t;
-  std::vector<int> comp(num_vertices(g));
-  t.components = num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, comp.data()));
-  t.loops = num_edges(g) + t.components - num_vertices(g);
-  for (auto v : boost::make_iterator_range(vertices(g))) {
-    const std::size_t d = degree(v, g);
-    if (d == 1) ++t.leaves;
-    if (d >= 3) {
-      t.branch_excess += d - 2;
-      t.branch_degrees.push_back(d);
-    }
-  }
-  std::sort(t.branch_degrees.begin(), t.branch_degrees.end());
-  return t;
-}
-
 /// Largest distance from a skeleton vertex (input space) to the true graph, and from a dense sample of the true
 /// graph to the skeleton's polylines: the two halves of the Hausdorff distance.
 std::pair<double, double> hausdorff(const Skeleton_graph& g, const Segment_graph& truth) {

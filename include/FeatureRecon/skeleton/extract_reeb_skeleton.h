@@ -7,6 +7,7 @@
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/embed_reeb_graph.h>
+#include <FeatureRecon/skeleton/estimate_rips_radius.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/repair_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
@@ -91,6 +92,9 @@ struct Skeleton_options {
 struct Reeb_skeleton {
   Skeleton_graph graph;            ///< the skeleton; its members partition the input points
   std::size_t dimension = 0;       ///< embedding dimension: min(input dimension, 3)
+  /// The Rips radius of the complex (given or estimated); NaN for a proximity graph given as it is.
+  double rips_radius = std::numeric_limits<double>::quiet_NaN();
+  double delta = 0;  ///< the persistence threshold used (Skeleton_options::delta, or the estimate's)
   /// Size of the complex (for points: the copies of a point are not joined to each other, see
   /// extract_reeb_skeleton()).
   std::size_t rips_edges = 0;
@@ -424,6 +428,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
+  result.delta = options.delta;
   if (graph.number_of_vertices == 0) {
     result.status = Status::degenerate_input;
     return result;
@@ -719,14 +724,58 @@ inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double ri
   if (stopped) {
     Reeb_skeleton interrupted;
     interrupted.dimension = std::min<std::size_t>(points.dimension, 3);
+    interrupted.rips_radius = rips_radius;
+    interrupted.delta = options.delta;
     interrupted.status = Status::interrupted;
     return interrupted;
   }
-  return internal::skeleton_from_graph(
+  Reeb_skeleton s = internal::skeleton_from_graph(
       g, points,
       [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3,
       [&points, axis = internal::widest_axis(points)](Vertex_index v) { return points.row(v)[axis]; },
       "extract_reeb_skeleton", first);
+  s.rips_radius = rips_radius;
+  return s;
+}
+
+namespace internal {
+/// Runs `run(radius, options)` at the radius `estimate()` gives, the estimate taking the first tenth of the
+/// progress range; interrupted (no skeleton) when it was stopped.
+template <class Estimate, class Run>
+Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius_options radius_options,
+                                    std::size_t dimension, const char* fn, Estimate&& estimate, Run&& run) {
+  Skeleton_options rest = options;
+  if (options.delta < 0) rest.delta = 0;  // checked with the estimate's delta standing in
+  check_skeleton_options(rest, fn);
+  if (options.progress) radius_options.progress = [&options](double t) { return options.progress(0.1 * t); };
+  const Rips_radius_estimate r = estimate(radius_options);
+  if (r.status == Status::interrupted) {
+    Reeb_skeleton interrupted;
+    interrupted.dimension = dimension;
+    interrupted.status = Status::interrupted;
+    return interrupted;
+  }
+  if (options.delta < 0) rest.delta = r.delta;
+  if (options.progress) rest.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
+  Reeb_skeleton s = run(r.radius, rest);
+  s.rips_radius = r.radius;
+  return s;
+}
+}  // namespace internal
+
+/// extract_reeb_skeleton() at the radius estimate_rips_radius() derives from the points (with `radius_options`;
+/// the radius used is Reeb_skeleton::rips_radius, the delta used Reeb_skeleton::delta). A negative
+/// `options.delta` stands for the estimate's suggested delta (Rips_radius_estimate::delta); every other value is
+/// taken from `options` as given. The estimate takes the first tenth of the progress range; a stop there returns
+/// an empty skeleton, status interrupted. Stage by stage: estimate_rips_radius(), then
+/// extract_reeb_skeleton(points, estimate.radius, options with delta = estimate.delta).
+inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, const Skeleton_options& options,
+                                           const Rips_radius_options& radius_options = {}) {
+  internal::check_point_matrix(points, "extract_reeb_skeleton");
+  return internal::with_estimated_radius(
+      options, radius_options, std::min<std::size_t>(points.dimension, 3), "extract_reeb_skeleton",
+      [&points](const Rips_radius_options& o) { return estimate_rips_radius(points, o); },
+      [&points](double radius, const Skeleton_options& o) { return extract_reeb_skeleton(points, radius, o); });
 }
 
 /// The skeleton of a proximity graph whose vertices have coordinates (any dimension; projected to 3D by PCA
@@ -792,13 +841,30 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double
   if (stopped || !FeatureRecon::internal::report_progress(options.progress, 0.3)) {
     Reeb_skeleton interrupted;
     interrupted.dimension = 3;
+    interrupted.rips_radius = rips_radius;
+    interrupted.delta = options.delta;
     interrupted.status = Status::interrupted;
     return interrupted;
   }
-  return internal::skeleton_from_graph(
+  Reeb_skeleton s = internal::skeleton_from_graph(
       g, mds,
       [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3,
       nullptr, fn, first, false);
+  s.rips_radius = rips_radius;
+  return s;
+}
+
+/// extract_reeb_skeleton_from_distance_matrix() at the radius estimate_rips_radius_from_distance_matrix() derives
+/// from the matrix, as extract_reeb_skeleton(points, options, radius_options) does for points.
+template <class Matrix>
+Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, const Skeleton_options& options,
+                                                         const Rips_radius_options& radius_options = {}) {
+  return internal::with_estimated_radius(
+      options, radius_options, 3, "extract_reeb_skeleton_from_distance_matrix",
+      [&D](const Rips_radius_options& o) { return estimate_rips_radius_from_distance_matrix(D, o); },
+      [&D](double radius, const Skeleton_options& o) {
+        return extract_reeb_skeleton_from_distance_matrix(D, radius, o);
+      });
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.
@@ -807,6 +873,15 @@ template <class PointRange, class Traits = Point_coordinate_traits<
 Reeb_skeleton extract_reeb_skeleton(const PointRange& points, double rips_radius, const Skeleton_options& options = {},
                                     const Traits& traits = Traits()) {
   return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), rips_radius, options);
+}
+
+/// extract_reeb_skeleton(points, options, radius_options) on a range of points through a PointCoordinateTraits
+/// model: the radius derived from the data.
+template <class PointRange, class Traits = Point_coordinate_traits<
+                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Reeb_skeleton extract_reeb_skeleton(const PointRange& points, const Skeleton_options& options,
+                                    const Rips_radius_options& radius_options = {}, const Traits& traits = Traits()) {
+  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), options, radius_options);
 }
 
 }  // namespace skeleton
