@@ -405,16 +405,20 @@ int run_skeleton(const std::vector<std::string>& argv) {
   // nearest-neighbour distance, for the warning.
   double spacing_hint = std::numeric_limits<double>::quiet_NaN();
   // Without --radius: the estimate gives R and delta (max(R, 2.25 x its scale)), and for points the thinning
-  // spacing (R / 4, less where R barely bridges the points' random gaps).
+  // spacing (thinning_spacing(): none up to 32 neighbours within R, else about 32 left, within (R - gap) / 2).
   auto use_estimate = [&](const Rips_radius_estimate& e, const std::string& what) {
-    if (!(e.radius <= 1e300))
-      throw io::Input_error(what + ": the radius derived from the data, " + json_number(e.radius) +
+    if (!(e.radius <= 1e300)) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%.6g", e.radius);
+      throw io::Input_error(what + ": the radius derived from the data, " + value +
                             ", exceeds 1e300 (lengths derived from it, up to 5R, must stay finite): give --radius");
+    }
     radius = e.radius;
     if (!args.has("delta")) options.delta = e.delta;
     input_json += ", \"radius_estimate\": {\"scale\": " + json_number(e.scale) + ", \"intrinsic_dimension\": " +
                   json_number(e.intrinsic_dimension) + ", \"mean_neighbours\": " + json_number(e.mean_neighbours) +
                   ", \"gap_radius\": " + json_number(e.gap_radius) +
+                  ", \"distinct_points\": " + std::to_string(e.distinct_points) +
                   ", \"reference_points\": " + std::to_string(e.reference_points) + "}";
   };
   if (args.has("points") || image) {

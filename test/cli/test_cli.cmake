@@ -284,7 +284,11 @@ expect(skeleton_image_only 2 "--ink and --ink-threshold apply to --image only" s
 expect(skeleton_image_missing 1 "no_such.png" skeleton --image ${WORK}/no_such.png --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_two_sources 2 "exactly one of" skeleton --points ${DATA}/figure_eight.xyz --graph ${DATA}/figure_eight_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 # Without --radius the radius, delta and thinning come from the data (estimate_rips_radius()); the JSON says so.
-expect(skeleton_radius_estimated 0 "\"radius\": 0\\.594[0-9]*, \"delta\": 0\\.668[0-9]*, .*\"loops\": 2, \"components\": 1, .*\"radius_estimate\": {\"scale\": 0\\.297[0-9]*, \"intrinsic_dimension\": 1\\.1[0-9]*, \"mean_neighbours\": 9\\.21, \"gap_radius\": 0\\.594[0-9]*, \"reference_points\": 400}" skeleton --points ${DATA}/figure_eight.xyz --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_radius_estimated 0 "\"radius\": 0\\.594[0-9]*, \"delta\": 0\\.668[0-9]*, .*\"loops\": 2, \"components\": 1, .*\"radius_estimate\": {\"scale\": 0\\.297[0-9]*, \"intrinsic_dimension\": 1\\.1[0-9]*, \"mean_neighbours\": 9\\.21, \"gap_radius\": 0\\.594[0-9]*, \"distinct_points\": 400, \"reference_points\": 400}" skeleton --points ${DATA}/figure_eight.xyz --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# Copies of every point are one point to the estimate (the Rips stage joins them): the same radius and skeleton.
+file(READ ${DATA}/figure_eight.xyz figure_eight_points)
+file(WRITE ${WORK}/figure_eight_thrice.xyz "${figure_eight_points}${figure_eight_points}${figure_eight_points}")
+expect(skeleton_radius_estimated_copies 0 "\"points\": 1200, \"sampled\": 1200, \"radius\": 0\\.594[0-9]*, \"delta\": 0\\.668[0-9]*, .*\"loops\": 2, \"components\": 1, .*\"distinct_points\": 400," skeleton --points ${WORK}/figure_eight_thrice.xyz --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_matrix_radius_estimated 0 "\"points\": 100, .*\"loops\": 2, \"components\": 1, .*\"radius_estimate\": {\"scale\": 1," skeleton --distance-matrix ${DATA}/figure_eight_distances.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 file(WRITE ${WORK}/one_point.xyz "1 2\n")
 expect(skeleton_radius_one_point 0 "\"radius\": 0, .*\"nodes\": 1, .*\"intrinsic_dimension\": null" skeleton --points ${WORK}/one_point.xyz --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// estimate_rips_radius(): the profile against brute-force counts, exact bins, scale invariance, degenerate input,
-// and the end-to-end property it is for: noisy samples of graphs in R^2, R^3 and R^50 give their true topology at
-// the estimated radius (delta = radius), and a fixed radius from the other samples would not.
+// estimate_rips_radius(): the profile against brute-force counts, exact bins, scale invariance, copies, degenerate
+// input, and the end-to-end property it is for: noisy samples of graphs in R^2, R^3 and R^50 give their true
+// topology at the estimated radius and delta, and a fixed radius from the other samples would not.
 #include <FeatureRecon/skeleton/estimate_rips_radius.h>
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 
@@ -100,12 +100,17 @@ TEST(EstimateRipsRadius, ProfileCountsEqualBruteForce) {
   add_point(m, {m.data[0], m.data[1], m.data[2]});  // a copy of point 0
   add_point(m, {m.data[0], m.data[1], m.data[2]});
   add_point(m, {1e3, 0, 0});
-  for (const std::size_t references : {std::size_t(60), std::size_t(7)}) {
+  // The copies of point 0 (57 and 58) are one point with it: 58 distinct points, 57 the reference ones at most.
+  std::vector<std::size_t> distinct;
+  for (std::size_t i = 0; i < 60; ++i)
+    if (i != 57 && i != 58) distinct.push_back(i);
+  for (const std::size_t references : {std::size_t(58), std::size_t(7)}) {
     Rips_radius_options o;
     o.reference_points = references;
     const Rips_radius_estimate e = estimate_rips_radius(m, o);
     ASSERT_EQ(e.status, Status::success);
     ASSERT_EQ(e.reference_points, references);
+    ASSERT_EQ(e.distinct_points, 58u);
     ASSERT_EQ(e.radii.size(), e.mean_neighbours_within.size());
     ASSERT_GT(e.radii.size(), 20u);
     for (std::size_t k = 0; k < e.radii.size(); ++k) {
@@ -116,15 +121,15 @@ TEST(EstimateRipsRadius, ProfileCountsEqualBruteForce) {
       }
       std::size_t within = 0;
       for (std::size_t t = 0; t < references; ++t) {
-        const std::size_t i = t * m.rows / references;
-        for (std::size_t j = 0; j < m.rows; ++j)
+        const std::size_t i = distinct[t * distinct.size() / references];
+        for (const std::size_t j : distinct)
           if (j != i && skeleton::internal::point_distance(m.row(i), m.row(j), 3) < e.radii[k]) ++within;
       }
       EXPECT_DOUBLE_EQ(e.mean_neighbours_within[k], static_cast<double>(within) / static_cast<double>(references))
           << "references " << references << ", r " << e.radii[k];
     }
     // The smallest positive distance lies in the first bin, the largest in the last.
-    EXPECT_EQ(e.mean_neighbours_within.back(), 59.0);
+    EXPECT_EQ(e.mean_neighbours_within.back(), 57.0);
     // The chosen scale is a profile radius with at least min_neighbours neighbours, and the radius 1.5 times it.
     EXPECT_NE(std::find(e.radii.begin(), e.radii.end(), e.scale), e.radii.end());
     EXPECT_GE(e.mean_neighbours, 8.0);
@@ -237,7 +242,7 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
   e = estimate_rips_radius(copies);
   EXPECT_EQ(e.status, Status::degenerate_input);
   EXPECT_EQ(e.radius, 0.0);
-  EXPECT_EQ(e.mean_neighbours, 4.0);  // every copy is a neighbour at radius 0
+  EXPECT_EQ(e.distinct_points, 1u);
 
   // Two points 5 apart: 5 lies in [2^(9/4), 2^(10/4)); with one neighbour each, the scale is that bin's top.
   Point_matrix two;
@@ -272,7 +277,65 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
   e = estimate_rips_radius(grid);
   EXPECT_GT(e.intrinsic_dimension, 1.5);
   EXPECT_GE(e.mean_neighbours, 8.0);
-  EXPECT_GT(e.radius, 1.0);  // joins each grid point to its 8 neighbours
+  EXPECT_GT(e.radius, std::sqrt(2.0));  // joins each grid point to its 8 neighbours
+
+  // Distances from 2^1023.75 on: the top bin's edge, 2^1024, is not a double; the largest one stands for it and
+  // the radius stays finite (it was infinite, with status success).
+  Point_matrix far;
+  add_point(far, {0});
+  add_point(far, {1.6e308});
+  e = estimate_rips_radius(far);
+  EXPECT_EQ(e.status, Status::success);
+  EXPECT_EQ(e.scale, std::numeric_limits<double>::max());
+  EXPECT_EQ(e.radius, std::numeric_limits<double>::max());
+  EXPECT_EQ(e.delta, std::numeric_limits<double>::max());
+}
+
+TEST(EstimateRipsRadius, CopiesOfThePointsLeaveTheEstimateAsItWas) {
+  // The Rips stage joins copies, so the estimate counts each point once: 4 copies of every point of a noisy circle
+  // gave a quarter of the radius and a skeleton in pieces (copies counted as neighbours at every radius).
+  const Point_matrix once = noisy_circle(500, 0.3, 11);
+  Point_matrix four;
+  four.dimension = 2;
+  for (int c = 0; c < 4; ++c) four.data.insert(four.data.end(), once.data.begin(), once.data.end());
+  four.rows = 4 * once.rows;
+  const Rips_radius_estimate a = estimate_rips_radius(once), b = estimate_rips_radius(four);
+  EXPECT_EQ(b.distinct_points, 500u);
+  EXPECT_EQ(b.radius, a.radius);
+  EXPECT_EQ(b.delta, a.delta);
+  EXPECT_EQ(b.mean_neighbours_within, a.mean_neighbours_within);
+  Skeleton_options o;
+  o.delta = -1;
+  const Topology t = topology(extract_reeb_skeleton(four, o).graph);
+  EXPECT_EQ(t.components, 1u);
+  EXPECT_EQ(t.loops, 1u);
+  // The matrix of the copies: the same.
+  std::vector<double> D(four.rows * four.rows);
+  for (std::size_t i = 0; i < four.rows; ++i)
+    for (std::size_t j = 0; j < four.rows; ++j)
+      D[i * four.rows + j] = skeleton::internal::point_distance(four.row(i), four.row(j), 2);
+  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
+      D.data(), static_cast<Eigen::Index>(four.rows), static_cast<Eigen::Index>(four.rows));
+  EXPECT_EQ(estimate_rips_radius_from_distance_matrix(matrix).radius, a.radius);
+}
+
+TEST(EstimateRipsRadius, BracesSelectTheEstimateNotRadiusZero) {
+  // extract_reeb_skeleton(points, {}) took {} for radius 0 (an exact conversion beating the options' aggregate):
+  // 200 points on a line gave 200 single nodes. The radius is any arithmetic type, so {} now means default options
+  // and the radius is estimated.
+  Point_matrix line;
+  for (int i = 0; i < 200; ++i) add_point(line, {static_cast<double>(i), 0});
+  const Reeb_skeleton a = extract_reeb_skeleton(line, {});
+  EXPECT_EQ(a.rips_radius, estimate_rips_radius(line).radius);
+  EXPECT_EQ(num_vertices(a.graph), 2u);
+  std::vector<std::array<double, 3>> range;
+  for (int i = 0; i < 200; ++i) range.push_back({static_cast<double>(i), 0, 0});
+  EXPECT_EQ(extract_reeb_skeleton(range, {}).rips_radius, a.rips_radius);
+  EXPECT_EQ(extract_reeb_skeleton(line, {}, {}).rips_radius, a.rips_radius);
+  // A radius of any arithmetic type is a radius.
+  EXPECT_EQ(extract_reeb_skeleton(line, 2).rips_radius, 2.0);
+  EXPECT_EQ(extract_reeb_skeleton(line, 1.5f).rips_radius, 1.5);
+  EXPECT_EQ(extract_reeb_skeleton(range, 3u).rips_radius, 3.0);
 }
 
 TEST(EstimateRipsRadius, DistanceMatrixGivesTheSameEstimate) {
@@ -318,7 +381,7 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   ASSERT_FALSE(seen.empty());
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_EQ(seen.front(), 0.0);
-  EXPECT_LE(seen.back(), 1.0);
+  EXPECT_EQ(seen.back(), 1.0);
   EXPECT_GT(std::count_if(seen.begin(), seen.end(), [](double t) { return t <= 0.1; }), 100);
 
   // A range of points through the traits gives the same.
@@ -335,8 +398,29 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   o.delta = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(extract_reeb_skeleton(m, o), std::invalid_argument);
 
-  // Stopped during the estimate: interrupted, nothing built.
+  // Both callbacks hear the estimate: the run's (first tenth) and the estimate's own (0 to 1).
+  Rips_radius_options ro;
+  std::vector<double> own;
+  ro.progress = [&own](double t) {
+    own.push_back(t);
+    return true;
+  };
+  seen.clear();
   o.delta = -1;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  extract_reeb_skeleton(m, o, ro);
+  ASSERT_EQ(own.size(), 601u);  // 600 reference points, then 1
+  EXPECT_EQ(own.back(), 1.0);
+  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t <= 0.1; }), 601);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  // The estimate's own callback can stop the run too.
+  ro.progress = [](double t) { return t < 0.5; };
+  EXPECT_EQ(extract_reeb_skeleton(m, o, ro).status, Status::interrupted);
+
+  // Stopped during the estimate: interrupted, nothing built.
   o.progress = [](double t) { return t < 0.05; };
   const Reeb_skeleton stopped = extract_reeb_skeleton(m, o);
   EXPECT_EQ(stopped.status, Status::interrupted);

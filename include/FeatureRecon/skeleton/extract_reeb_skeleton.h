@@ -92,7 +92,8 @@ struct Skeleton_options {
 struct Reeb_skeleton {
   Skeleton_graph graph;            ///< the skeleton; its members partition the input points
   std::size_t dimension = 0;       ///< embedding dimension: min(input dimension, 3)
-  /// The Rips radius of the complex (given or estimated); NaN for a proximity graph given as it is.
+  /// The Rips radius of the complex (given or estimated); NaN for a proximity graph given as it is, and when the
+  /// run was stopped before the radius was estimated.
   double rips_radius = std::numeric_limits<double>::quiet_NaN();
   double delta = 0;  ///< the persistence threshold used (Skeleton_options::delta, or the estimate's)
   /// Size of the complex (for points: the copies of a point are not joined to each other, see
@@ -571,34 +572,6 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   return result;
 }
 
-/// first_copies() of n rows of length d given by row(i) (a pointer to d doubles).
-template <class Row>
-bool first_copies_of(std::size_t n, std::size_t d, const Row& row, std::vector<Vertex_index>& first) {
-  first.clear();
-  std::vector<Vertex_index> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<Vertex_index>(i);
-  auto less = [&row, d](Vertex_index a, Vertex_index b) {
-    return std::lexicographical_compare(row(a), row(a) + d, row(b), row(b) + d);
-  };
-  std::sort(order.begin(), order.end(), [&less](Vertex_index a, Vertex_index b) {
-    return less(a, b) || (!less(b, a) && a < b);
-  });
-  bool any = false;
-  for (std::size_t k = 1; k < n && !any; ++k) any = !less(order[k - 1], order[k]);
-  if (!any) return false;
-  first.resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-    first[order[k]] = (k > 0 && !less(order[k - 1], order[k])) ? first[order[k - 1]] : order[k];
-  return true;
-}
-
-/// Exact copies among the rows of `m`: first[i] is the smallest index whose coordinates equal row i's (i for
-/// the first copy). O(n log n) by a lexicographic sort. Returns false, leaving `first` empty, when every row is
-/// distinct.
-inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first) {
-  return first_copies_of(m.rows, m.dimension, [&m](std::size_t i) { return m.row(i); }, first);
-}
-
 /// The graph of all points from the graph h of the first copies (h's vertex k is original[k], increasing;
 /// first[i]: the first copy of point i): each further copy joined to its first copy, the first copy's
 /// neighbours (at their distances) and the previous copy.
@@ -665,14 +638,6 @@ inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points,
   return join_copies(build_rips_graph(distinct, radius, options), first, original);
 }
 
-/// First copies of the rows of an n x n distance matrix `a` (row-major, zero diagonal): row i is a copy of the
-/// smallest j with the same row (so at distance 0 from it). A row at distance 0 from another but with other
-/// distances that differ is not a copy. O(n^2 log n) by a lexicographic sort of the rows. Returns false, leaving
-/// `first` empty, when no row is a copy.
-inline bool first_copies_of_rows(const std::vector<double>& a, std::size_t n, std::vector<Vertex_index>& first) {
-  return first_copies_of(n, n, [&a, n](std::size_t i) { return a.data() + i * n; }, first);
-}
-
 /// The coordinate axis along which the points spread the most: its coordinate bounds the Euclidean distance
 /// (1-Lipschitz) and separates the most pairs for repair_reeb_graph() and connect_dead_ends().
 inline std::size_t widest_axis(const Point_matrix& points) {
@@ -698,7 +663,7 @@ inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Ver
 
 }  // namespace internal
 
-/// One call from points to a skeleton graph (dissertation Ch. 3): Rips 2-complex at `rips_radius`, geodesic
+/// One call from points to a skeleton graph (dissertation Ch. 3): Rips 2-complex at `radius`, geodesic
 /// function, augmented Reeb graph, simplification of features of persistence <= delta, optional repair and a
 /// second simplification, embedding. Each stage is also callable alone (see doc/skeleton.md).
 /// The automatic level width of the embedding is the median edge length of the complex, copies of
@@ -706,9 +671,12 @@ inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Ver
 /// (equal coordinates) are not joined to each other, only to their first copy, its neighbours and the next copy
 /// (internal::rips_graph_of_distinct_points(): same homotopy type, level sets and critical points as the full
 /// Rips complex without the copies' cliques); every copy is a member of its first copy's node or arc.
-/// \pre rips_radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
-inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, double rips_radius,
-                                           const Skeleton_options& options = {}) {
+/// \pre radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
+/// \tparam Radius an arithmetic type: `extract_reeb_skeleton(points, {})` is not radius 0 but the overload that
+///   estimates the radius (default options).
+template <class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
+Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius, const Skeleton_options& options = {}) {
+  const double rips_radius = static_cast<double>(radius);
   internal::check_skeleton_options(options, "extract_reeb_skeleton");
   internal::check_point_matrix(points, "extract_reeb_skeleton");
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
@@ -747,11 +715,17 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
   Skeleton_options rest = options;
   if (options.delta < 0) rest.delta = 0;  // checked with the estimate's delta standing in
   check_skeleton_options(rest, fn);
-  if (options.progress) radius_options.progress = [&options](double t) { return options.progress(0.1 * t); };
+  if (options.progress) {  // both callbacks hear the estimate (its own fraction, and the first tenth of the run's)
+    radius_options.progress = [&options, own = radius_options.progress](double t) {
+      const bool go_on = !own || own(t);
+      return options.progress(0.1 * t) && go_on;
+    };
+  }
   const Rips_radius_estimate r = estimate(radius_options);
   if (r.status == Status::interrupted) {
     Reeb_skeleton interrupted;
     interrupted.dimension = dimension;
+    interrupted.delta = options.delta;
     interrupted.status = Status::interrupted;
     return interrupted;
   }
@@ -765,10 +739,12 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
 
 /// extract_reeb_skeleton() at the radius estimate_rips_radius() derives from the points (with `radius_options`;
 /// the radius used is Reeb_skeleton::rips_radius, the delta used Reeb_skeleton::delta). A negative
-/// `options.delta` stands for the estimate's suggested delta (Rips_radius_estimate::delta); every other value is
-/// taken from `options` as given. The estimate takes the first tenth of the progress range; a stop there returns
-/// an empty skeleton, status interrupted. Stage by stage: estimate_rips_radius(), then
-/// extract_reeb_skeleton(points, estimate.radius, options with delta = estimate.delta).
+/// `options.delta` stands for the estimate's suggested delta (Rips_radius_estimate::delta; the default 0 means no
+/// simplification, as in every overload); every other value is taken from `options` as given. The estimate takes
+/// the first tenth of the progress range of `options.progress`; `radius_options.progress`, when set, hears it too
+/// (with the estimate's own fraction), and either can stop it: an empty skeleton, status interrupted, rips_radius
+/// NaN. Stage by stage: estimate_rips_radius(), then extract_reeb_skeleton(points, estimate.radius, options with
+/// delta = estimate.delta).
 inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, const Skeleton_options& options,
                                            const Rips_radius_options& radius_options = {}) {
   internal::check_point_matrix(points, "extract_reeb_skeleton");
@@ -799,15 +775,16 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
       [&coordinates, axis = internal::widest_axis(coordinates)](Vertex_index v) { return coordinates.row(v)[axis]; });
 }
 
-/// The skeleton of a dense distance matrix: Rips graph at `rips_radius` on the matrix, then the stages of
-/// extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses classical MDS into 3D
+/// The skeleton of a dense distance matrix: Rips graph at `radius` (an arithmetic type) on the matrix, then the
+/// stages of extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses classical MDS into 3D
 /// (classical_mds_3d(); it takes the first 30 % of the progress range and can be stopped between its steps).
 /// Copies (a row at distance 0 from an earlier one, with the same distances to all) are joined as
 /// extract_reeb_skeleton() joins copies of points (internal::first_copies_of_rows(), internal::join_copies()).
 /// \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
-template <class Matrix>
-Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, double rips_radius,
+template <class Matrix, class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
+Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius radius,
                                                          const Skeleton_options& options = {}) {
+  const double rips_radius = static_cast<double>(radius);
   const char* fn = "extract_reeb_skeleton_from_distance_matrix";
   internal::check_skeleton_options(options, fn);
   std::size_t n = 0;
@@ -868,11 +845,14 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, const 
 }
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.
-template <class PointRange, class Traits = Point_coordinate_traits<
-                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
-Reeb_skeleton extract_reeb_skeleton(const PointRange& points, double rips_radius, const Skeleton_options& options = {},
+template <class PointRange, class Radius,
+          class Traits = Point_coordinate_traits<
+              typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>,
+          std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
+Reeb_skeleton extract_reeb_skeleton(const PointRange& points, Radius radius, const Skeleton_options& options = {},
                                     const Traits& traits = Traits()) {
-  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), rips_radius, options);
+  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), static_cast<double>(radius),
+                               options);
 }
 
 /// extract_reeb_skeleton(points, options, radius_options) on a range of points through a PointCoordinateTraits

@@ -1271,6 +1271,46 @@ Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radiu
   return build_flag_complex_2(g, stage(0.5));
 }
 
+namespace internal {
+
+/// first_copies() of n rows of length d given by row(i) (a pointer to d doubles).
+template <class Row>
+bool first_copies_of(std::size_t n, std::size_t d, const Row& row, std::vector<Vertex_index>& first) {
+  first.clear();
+  std::vector<Vertex_index> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<Vertex_index>(i);
+  auto less = [&row, d](Vertex_index a, Vertex_index b) {
+    return std::lexicographical_compare(row(a), row(a) + d, row(b), row(b) + d);
+  };
+  std::sort(order.begin(), order.end(), [&less](Vertex_index a, Vertex_index b) {
+    return less(a, b) || (!less(b, a) && a < b);
+  });
+  bool any = false;
+  for (std::size_t k = 1; k < n && !any; ++k) any = !less(order[k - 1], order[k]);
+  if (!any) return false;
+  first.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    first[order[k]] = (k > 0 && !less(order[k - 1], order[k])) ? first[order[k - 1]] : order[k];
+  return true;
+}
+
+/// Exact copies among the rows of `m`: first[i] is the smallest index whose coordinates equal row i's (i for
+/// the first copy). O(n log n) by a lexicographic sort. Returns false, leaving `first` empty, when every row is
+/// distinct.
+inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first) {
+  return first_copies_of(m.rows, m.dimension, [&m](std::size_t i) { return m.row(i); }, first);
+}
+
+/// First copies of the rows of an n x n distance matrix `a` (row-major, zero diagonal): row i is a copy of the
+/// smallest j with the same row (so at distance 0 from it). A row at distance 0 from another but with other
+/// distances that differ is not a copy. O(n^2 log n) by a lexicographic sort of the rows. Returns false, leaving
+/// `first` empty, when no row is a copy.
+inline bool first_copies_of_rows(const std::vector<double>& a, std::size_t n, std::vector<Vertex_index>& first) {
+  return first_copies_of(n, n, [&a, n](std::size_t i) { return a.data() + i * n; }, first);
+}
+
+}  // namespace internal
+
 }  // namespace skeleton
 }  // namespace FeatureRecon
 
