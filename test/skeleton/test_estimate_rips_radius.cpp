@@ -293,7 +293,7 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
 
 TEST(EstimateRipsRadius, CopiesOfThePointsLeaveTheEstimateAsItWas) {
   // The Rips stage joins copies, so the estimate counts each point once: 4 copies of every point of a noisy circle
-  // gave a quarter of the radius and a skeleton in pieces (copies counted as neighbours at every radius).
+  // shrank the radius and broke the skeleton (copies counted as neighbours at every radius).
   const Point_matrix once = noisy_circle(500, 0.3, 11);
   Point_matrix four;
   four.dimension = 2;
@@ -332,6 +332,19 @@ TEST(EstimateRipsRadius, BracesSelectTheEstimateNotRadiusZero) {
   for (int i = 0; i < 200; ++i) range.push_back({static_cast<double>(i), 0, 0});
   EXPECT_EQ(extract_reeb_skeleton(range, {}).rips_radius, a.rips_radius);
   EXPECT_EQ(extract_reeb_skeleton(line, {}, {}).rips_radius, a.rips_radius);
+  // A braced radius is a radius (not options with that delta), alone or with options.
+  Skeleton_options o;
+  EXPECT_EQ(extract_reeb_skeleton(line, {2.0}).rips_radius, 2.0);
+  EXPECT_EQ(extract_reeb_skeleton(line, {2.0}).delta, 0.0);
+  EXPECT_EQ(extract_reeb_skeleton(line, {2}, o).rips_radius, 2.0);
+  EXPECT_EQ(extract_reeb_skeleton(range, {2.5}).rips_radius, 2.5);
+  std::vector<double> D(200 * 200);
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 200; ++j) D[std::size_t(i) * 200 + std::size_t(j)] = std::abs(i - j);
+  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(D.data(), 200, 200);
+  EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, {3.0}).rips_radius, 3.0);
+  EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, {}).rips_radius,
+            estimate_rips_radius_from_distance_matrix(matrix).radius);
   // A radius of any arithmetic type is a radius.
   EXPECT_EQ(extract_reeb_skeleton(line, 2).rips_radius, 2.0);
   EXPECT_EQ(extract_reeb_skeleton(line, 1.5f).rips_radius, 1.5);

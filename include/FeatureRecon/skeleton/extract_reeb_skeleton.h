@@ -706,6 +706,14 @@ Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius, c
   return s;
 }
 
+/// extract_reeb_skeleton(points, {r}[, options]): a braced radius is a radius (a template radius cannot be deduced
+/// from {r}, and the estimating overload would take {r} for options with delta r).
+template <class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
+Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, const Radius (&radius)[1],
+                                    const Skeleton_options& options = {}) {
+  return extract_reeb_skeleton(points, radius[0], options);
+}
+
 namespace internal {
 /// Runs `run(radius, options)` at the radius `estimate()` gives, the estimate taking the first tenth of the
 /// progress range; interrupted (no skeleton) when it was stopped.
@@ -831,6 +839,13 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius
   return s;
 }
 
+/// extract_reeb_skeleton_from_distance_matrix(D, {r}[, options]): a braced radius is a radius.
+template <class Matrix, class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
+Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, const Radius (&radius)[1],
+                                                         const Skeleton_options& options = {}) {
+  return extract_reeb_skeleton_from_distance_matrix(D, radius[0], options);
+}
+
 /// extract_reeb_skeleton_from_distance_matrix() at the radius estimate_rips_radius_from_distance_matrix() derives
 /// from the matrix, as extract_reeb_skeleton(points, options, radius_options) does for points.
 template <class Matrix>
@@ -853,6 +868,16 @@ Reeb_skeleton extract_reeb_skeleton(const PointRange& points, Radius radius, con
                                     const Traits& traits = Traits()) {
   return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), static_cast<double>(radius),
                                options);
+}
+
+/// extract_reeb_skeleton(points, {r}[, options, traits]) on a range: a braced radius is a radius.
+template <class PointRange, class Radius,
+          class Traits = Point_coordinate_traits<
+              typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>,
+          std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
+Reeb_skeleton extract_reeb_skeleton(const PointRange& points, const Radius (&radius)[1],
+                                    const Skeleton_options& options = {}, const Traits& traits = Traits()) {
+  return extract_reeb_skeleton(points, radius[0], options, traits);
 }
 
 /// extract_reeb_skeleton(points, options, radius_options) on a range of points through a PointCoordinateTraits
