@@ -32,12 +32,15 @@ inline Torus torus_grid(std::size_t nu, std::size_t nv) {
   const double pi = std::acos(-1.0), R = 2.0, r = 0.7;
   Torus t;
   std::vector<skeleton::Triangle> tris;
-  auto id = [&](std::size_t i, std::size_t j) { return static_cast<skeleton::Vertex_index>((i % nu) * nv + (j % nv)); };
+  auto id = [&](std::size_t i, std::size_t j) {
+    return static_cast<skeleton::Vertex_index>((i % nu) * nv + (j % nv));
+  };
   for (std::size_t i = 0; i < nu; ++i)
     for (std::size_t j = 0; j < nv; ++j) {
       const double u = 2 * pi * static_cast<double>(i) / static_cast<double>(nu);
       const double v = 2 * pi * static_cast<double>(j) / static_cast<double>(nv);
-      const double x = (R + r * std::cos(v)) * std::cos(u), y = r * std::sin(v), z = (R + r * std::cos(v)) * std::sin(u);
+      const double x = (R + r * std::cos(v)) * std::cos(u), y = r * std::sin(v),
+                   z = (R + r * std::cos(v)) * std::sin(u);
       t.positions.push_back({x, y, z});
       t.f.push_back(z + 0.05 * x + 0.015 * y);
       tris.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
@@ -67,7 +70,8 @@ inline std::vector<Gps_row> chicago_rows(std::size_t max_rows = 0) {
     std::string line;
     while (std::getline(in, line) && (max_rows == 0 || rows.size() < max_rows)) take(line);
   } else {
-    const std::string command = "gzip -dc '" + std::string(FEATURERECON_DATA_DIR) + "/gps/chicago/tracks.txt.gz'";
+    const std::string command =
+        "gzip -dc '" + std::string(FEATURERECON_DATA_DIR) + "/gps/chicago/tracks.txt.gz'";
     FILE* pipe = popen(command.c_str(), "r");
     char buf[256];
     while (pipe && std::fgets(buf, sizeof buf, pipe) && (max_rows == 0 || rows.size() < max_rows)) take(buf);

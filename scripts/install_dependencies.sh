@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config gzip
   libcgal-dev libboost-graph-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
   libgtest-dev libbenchmark-dev
-  libgudhi-dev libhera-dev doxygen libpng-dev libjpeg-dev
+  libgudhi-dev libhera-dev doxygen clang-format libpng-dev libjpeg-dev
 )
 if [ "${FEATURERECON_WITH_VTK:-0}" = 1 ]; then packages+=(libvtk9-dev); fi
 if [ "${FEATURERECON_WITH_OPEN3D:-0}" = 1 ]; then packages+=(libopen3d-dev); fi

@@ -31,10 +31,12 @@ const std::vector<std::uint8_t>& image() {
       for (int y = std::max(0, int(cy - r)); y < std::min(side, int(cy + r) + 1); ++y)
         for (int x = std::max(0, int(cx - r)); x < std::min(side, int(cx + r) + 1); ++x)
           if ((x - cx) * (x - cx) + (y - cy) * (y - cy) < r * r)
-            for (int c = 0; c < 3; ++c) v[(std::size_t(y) * side + std::size_t(x)) * 3 + std::size_t(c)] = colour[c];
+            for (int c = 0; c < 3; ++c)
+              v[(std::size_t(y) * side + std::size_t(x)) * 3 + std::size_t(c)] = colour[c];
     }
     bytes.resize(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) bytes[i] = std::uint8_t(std::clamp(v[i] + 24 * u() - 12, 0.0, 255.0));
+    for (std::size_t i = 0; i < v.size(); ++i)
+      bytes[i] = std::uint8_t(std::clamp(v[i] + 24 * u() - 12, 0.0, 255.0));
   }
   return bytes;
 }
@@ -91,8 +93,12 @@ void budgets(benchmark::internal::Benchmark* b) {
 }
 }  // namespace
 
-BENCHMARK(BM_Exact)->Name("sampling/bilateral_filter/exact_512x512_rgb")->Unit(benchmark::kMillisecond)
-    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_Exact)
+    ->Name("sampling/bilateral_filter/exact_512x512_rgb")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
 BENCHMARK(BM_Global_pattern)->Name("sampling/bilateral_filter/global_pattern_512x512_rgb")->Apply(budgets);
 BENCHMARK(BM_Global_filter)->Name("sampling/bilateral_filter/global_filter_512x512_rgb")->Apply(budgets);
 BENCHMARK(BM_Local)->Name("sampling/bilateral_filter/local_512x512_rgb")->Apply(budgets);

@@ -40,10 +40,12 @@ const Setup& setup() {
       const double cx = u() * side, cy = u() * side, r = 10 + 60 * u(), add = 80 * u() - 30;
       for (int y = std::max(0, int(cy - r)); y < std::min(side, int(cy + r) + 1); ++y)
         for (int x = std::max(0, int(cx - r)); x < std::min(side, int(cx + r) + 1); ++x)
-          if ((x - cx) * (x - cx) + (y - cy) * (y - cy) < r * r) v[std::size_t(y) * side + std::size_t(x)] += add;
+          if ((x - cx) * (x - cx) + (y - cy) * (y - cy) < r * r)
+            v[std::size_t(y) * side + std::size_t(x)] += add;
     }
     std::vector<std::uint8_t> bytes(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) bytes[i] = std::uint8_t(std::min(255.0, std::max(0.0, v[i] + 20 * u())));
+    for (std::size_t i = 0; i < v.size(); ++i)
+      bytes[i] = std::uint8_t(std::min(255.0, std::max(0.0, v[i] + 20 * u())));
     s.pixels = fs::image_pixels<FeatureRecon::Grey_pixel>(side, side, bytes);
     std::vector<Site> sites(sites_n);
     for (auto& x : sites) x = Site{{u() * side, u() * side}, {0}};
@@ -97,7 +99,15 @@ void BM_Kernel_energy(benchmark::State& state) {
 }
 }  // namespace
 
-BENCHMARK(BM_Nearest_neighbour_pass)->Name("sampling/discrete_lloyd/nearest_neighbour_pass_1MP_10k")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Discrete_lloyd_step)->Name("sampling/discrete_lloyd/step_1MP_10k")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Kernel_energy)->Name("sampling/kernel_relaxation/energy_gradient_1MP_10k")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Nearest_neighbour_pass)
+    ->Name("sampling/discrete_lloyd/nearest_neighbour_pass_1MP_10k")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Discrete_lloyd_step)
+    ->Name("sampling/discrete_lloyd/step_1MP_10k")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Kernel_energy)
+    ->Name("sampling/kernel_relaxation/energy_gradient_1MP_10k")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

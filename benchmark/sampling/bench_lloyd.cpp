@@ -95,7 +95,9 @@ void sizes(benchmark::internal::Benchmark* b) {
 void sizes_and_threads(benchmark::internal::Benchmark* b) {
   for (int pixels : {0, 1})
     for (int threads : {1, 0})
-      b->Args({10000, 256, threads, pixels})->Args({10000, 1024, threads, pixels})->Args({100000, 1024, threads, pixels});
+      b->Args({10000, 256, threads, pixels})
+          ->Args({10000, 1024, threads, pixels})
+          ->Args({100000, 1024, threads, pixels});
   b->ArgNames({"sites", "side", "threads", "pixels"})->Unit(benchmark::kMillisecond);
 }
 

@@ -21,9 +21,9 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <stdexcept>
 #include <map>
 #include <random>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -167,7 +167,8 @@ void BM_cgal_hierarchy(benchmark::State& state) {
     state.PauseTiming();
     q = cube_points();
     state.ResumeTiming();
-    q.erase(CGAL::hierarchy_simplify_point_set(q, CGAL::parameters::size(20).maximum_variation(0.33)), q.end());
+    q.erase(CGAL::hierarchy_simplify_point_set(q, CGAL::parameters::size(20).maximum_variation(0.33)),
+            q.end());
   }
   state.counters["kept"] = double(q.size());
   state.counters["rho"] = rho_cube(q);
@@ -178,8 +179,8 @@ void BM_cgal_wlop(benchmark::State& state) {
   std::vector<K::Point_3> out;
   for (auto _ : state) {
     out.clear();
-    CGAL::wlop_simplify_and_regularize_point_set<CGAL::Sequential_tag>(q, std::back_inserter(out),
-                                                                       CGAL::parameters::select_percentage(5.0));
+    CGAL::wlop_simplify_and_regularize_point_set<CGAL::Sequential_tag>(
+        q, std::back_inserter(out), CGAL::parameters::select_percentage(5.0));
   }
   state.counters["kept"] = double(out.size());
   state.counters["rho"] = rho_cube(out);
@@ -254,7 +255,8 @@ void BM_fandisk_featurerecon(benchmark::State& state) {
     for (std::size_t i = 0; i < 5 * count; ++i) {
       const std::size_t k = std::min<std::size_t>(
           m.triangles.size() - 1,
-          std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin()));
+          std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) -
+                      cumulative.begin()));
       double u = uniform01(rng), v = uniform01(rng);
       if (u + v > 1) {
         u = 1 - u;
@@ -263,7 +265,8 @@ void BM_fandisk_featurerecon(benchmark::State& state) {
       const auto& t = m.triangles[k];
       std::array<double, 3> p;
       for (int d = 0; d < 3; ++d)
-        p[d] = m.vertices[t[0]][d] + u * (m.vertices[t[1]][d] - m.vertices[t[0]][d]) + v * (m.vertices[t[2]][d] - m.vertices[t[0]][d]);
+        p[d] = m.vertices[t[0]][d] + u * (m.vertices[t[1]][d] - m.vertices[t[0]][d]) +
+               v * (m.vertices[t[2]][d] - m.vertices[t[0]][d]);
       dense.emplace_back(p[0], p[1], p[2]);
     }
     fs::Elimination_options o;
@@ -285,7 +288,8 @@ void BM_fandisk_featurerecon(benchmark::State& state) {
 void BM_fandisk_open3d(benchmark::State& state) {
   const Soup& m = fandisk();
   std::vector<std::array<double, 3>> out;
-  for (auto _ : state) out = bench::open3d_poisson_disk(m.vertices, m.triangles, std::size_t(state.range(0)), 5);
+  for (auto _ : state)
+    out = bench::open3d_poisson_disk(m.vertices, m.triangles, std::size_t(state.range(0)), 5);
   std::vector<K::Point_3> p;
   for (const auto& x : out) p.emplace_back(x[0], x[1], x[2]);
   fs::Sampling_quality_options q;
@@ -346,38 +350,58 @@ void BM_cgal_nearest(benchmark::State& state) {
 void register_all() {
   auto ms = [](benchmark::internal::Benchmark* b) { return b->Unit(benchmark::kMillisecond)->UseRealTime(); };
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d", BM_elimination_2d<false>))
-      ->Args({50000, 10000})->Args({500000, 100000})->MinTime(1.0);
+      ->Args({50000, 10000})
+      ->Args({500000, 100000})
+      ->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d", BM_darts_2d<false>))
-      ->Args({100000, 20})->Args({1000000, 10})->MinTime(1.0);
+      ->Args({100000, 20})
+      ->Args({1000000, 10})
+      ->MinTime(1.0);
   // The same squares plus one point at (1e7, 0): the grids must keep their cell size.
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d_outlier", BM_elimination_2d<true>))
-      ->Args({50000, 10000})->MinTime(1.0);
+      ->Args({50000, 10000})
+      ->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d_outlier", BM_darts_2d<true>))
-      ->Args({100000, 20})->MinTime(1.0);
-  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_euclidean", BM_elimination_cube))
-      ->Arg(0)->MinTime(1.0);
-  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_bilateral", BM_elimination_cube))
-      ->Arg(1)->MinTime(1.0);
+      ->Args({100000, 20})
+      ->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_euclidean",
+                                  BM_elimination_cube))
+      ->Arg(0)
+      ->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_cube200k_bilateral",
+                                  BM_elimination_cube))
+      ->Arg(1)
+      ->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/quality_160k", BM_quality))->Arg(0)->Arg(1);
   ms(benchmark::RegisterBenchmark("sampling/cgal/nearest_160k", BM_cgal_nearest))->Arg(0)->Arg(1);
   ms(benchmark::RegisterBenchmark("sampling/cgal/grid_cube200k", BM_cgal_grid))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/hierarchy_cube200k", BM_cgal_hierarchy))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/wlop_cube200k", BM_cgal_wlop))->Iterations(1);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/fandisk_poisson_disk", BM_fandisk_featurerecon))
-      ->Arg(10000)->Arg(50000)->MinTime(1.0);
+      ->Arg(10000)
+      ->Arg(50000)
+      ->MinTime(1.0);
 #ifdef FEATURERECON_WITH_OPEN3D
   ms(benchmark::RegisterBenchmark("sampling/open3d/fandisk_poisson_disk", BM_fandisk_open3d))
-      ->Arg(10000)->Arg(50000)->MinTime(1.0);
+      ->Arg(10000)
+      ->Arg(50000)
+      ->MinTime(1.0);
 #endif
 #ifdef FEATURERECON_WITH_GUDHI
   ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d", BM_gudhi_farthest<false>))
-      ->Args({50000, 10000})->Iterations(3);
+      ->Args({50000, 10000})
+      ->Iterations(3);
   ms(benchmark::RegisterBenchmark("sampling/gudhi/sparsify_point_set_2d", BM_gudhi_sparsify<false>))
-      ->Args({100000, 20})->Args({1000000, 10})->Iterations(3);
-  ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d_outlier", BM_gudhi_farthest<true>))
-      ->Args({50000, 10000})->Iterations(3);
+      ->Args({100000, 20})
+      ->Args({1000000, 10})
+      ->Iterations(3);
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d_outlier",
+                                  BM_gudhi_farthest<true>))
+      ->Args({50000, 10000})
+      ->Iterations(3);
   ms(benchmark::RegisterBenchmark("sampling/gudhi/sparsify_point_set_2d_outlier", BM_gudhi_sparsify<true>))
-      ->Args({100000, 20})->Iterations(3);
+      ->Args({100000, 20})
+      ->Iterations(3);
 #endif
 }
 }  // namespace

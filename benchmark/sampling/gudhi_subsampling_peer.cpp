@@ -33,7 +33,8 @@ std::vector<std::array<double, 2>> gudhi_choose_n_farthest_points(const std::vec
   const std::vector<Point> q = to_points(p);
   std::vector<Point> out;
   Kernel k;
-  Gudhi::subsampling::choose_n_farthest_points(k.squared_distance_d_object(), q, count, 0, std::back_inserter(out));
+  Gudhi::subsampling::choose_n_farthest_points(k.squared_distance_d_object(), q, count, 0,
+                                               std::back_inserter(out));
   return from_points(out);
 }
 

@@ -46,9 +46,11 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 using Mesh_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 using Triangles = std::vector<K::Triangle_3>;
-using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+using Triangle_tree =
+    CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
 using Segments = std::vector<K::Segment_3>;
-using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segments::const_iterator>>>;
+using Segment_tree =
+    CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segments::const_iterator>>>;
 
 double uniform01(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
 
@@ -60,10 +62,14 @@ std::vector<Pwn> sample_triangles(const Triangles& t, std::size_t n, std::uint64
   std::mt19937_64 rng(seed);
   std::vector<Pwn> out;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t k = std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin());
+    const std::size_t k = std::size_t(
+        std::lower_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin());
     const auto& tr = t[std::min(k, t.size() - 1)];
     double a = uniform01(rng), b = uniform01(rng);
-    if (a + b > 1) { a = 1 - a; b = 1 - b; }
+    if (a + b > 1) {
+      a = 1 - a;
+      b = 1 - b;
+    }
     const Point p = tr[0] + a * (tr[1] - tr[0]) + b * (tr[2] - tr[0]);
     Vector nv = CGAL::cross_product(tr[1] - tr[0], tr[2] - tr[0]);
     nv = nv / std::sqrt(nv.squared_length());
@@ -86,15 +92,21 @@ Stats stats(std::vector<double> d) {
 }
 
 /// A count-controlled peer: bisects a parameter until the output size is within 3 % of the budget.
-std::vector<Point> bisect_to_budget(const std::vector<Point>& in, std::size_t budget, double lo, double hi, bool larger_keeps_fewer,
+std::vector<Point> bisect_to_budget(const std::vector<Point>& in, std::size_t budget, double lo, double hi,
+                                    bool larger_keeps_fewer,
                                     const std::function<std::vector<Point>(double)>& run) {
   std::vector<Point> best;
   for (int it = 0; it < 30; ++it) {
     const double mid = std::sqrt(lo * hi);
     std::vector<Point> out = run(mid);
-    if (best.empty() || std::abs(double(out.size()) - double(budget)) < std::abs(double(best.size()) - double(budget))) best = out;
+    if (best.empty() ||
+        std::abs(double(out.size()) - double(budget)) < std::abs(double(best.size()) - double(budget)))
+      best = out;
     if (std::abs(double(out.size()) - double(budget)) <= 0.03 * double(budget)) break;
-    if ((out.size() > budget) == larger_keeps_fewer) lo = mid; else hi = mid;
+    if ((out.size() > budget) == larger_keeps_fewer)
+      lo = mid;
+    else
+      hi = mid;
   }
   (void)in;
   return best;
@@ -121,7 +133,9 @@ int main(int argc, char** argv) {
   PMP::detect_sharp_edges(mesh, 60.0, sharp);
   Segments creases;
   for (auto e : edges(mesh))
-    if (sharp[e]) creases.emplace_back(mesh.point(source(halfedge(e, mesh), mesh)), mesh.point(target(halfedge(e, mesh), mesh)));
+    if (sharp[e])
+      creases.emplace_back(mesh.point(source(halfedge(e, mesh), mesh)),
+                           mesh.point(target(halfedge(e, mesh), mesh)));
   const Segment_tree crease_tree(creases.begin(), creases.end());
   Mesh_tree mesh_tree(faces(mesh).first, faces(mesh).second, mesh);
   mesh_tree.accelerate_distance_queries();
@@ -129,9 +143,11 @@ int main(int argc, char** argv) {
   const std::vector<Pwn> cloud = sample_triangles(mesh_triangles, dense, 1);
   std::vector<Point> cloud_points;
   for (const Pwn& p : cloud) cloud_points.push_back(p.first);
-  std::printf("mesh %s: %zu faces, area %.4f, %zu sharp edges; %zu dense samples with face normals\n\n", path.c_str(),
-              std::size_t(mesh.number_of_faces()), area, creases.size(), dense);
-  std::printf("| budget | method | samples | triangles | near creases: mean / p99 / max (h) | elsewhere: mean / p99 / max (h) | seconds (sampling) |\n");
+  std::printf("mesh %s: %zu faces, area %.4f, %zu sharp edges; %zu dense samples with face normals\n\n",
+              path.c_str(), std::size_t(mesh.number_of_faces()), area, creases.size(), dense);
+  std::printf(
+      "| budget | method | samples | triangles | near creases: mean / p99 / max (h) | elsewhere: mean / p99 "
+      "/ max (h) | seconds (sampling) |\n");
   std::printf("|---|---|---:|---:|---|---|---:|\n");
   for (const double fraction : {0.05, 0.10, 0.20}) {
     const std::size_t budget = std::size_t(fraction * double(dense));
@@ -145,7 +161,8 @@ int main(int argc, char** argv) {
     auto timed = [&](const char* name, const std::function<std::vector<Point>()>& f) {
       const auto t0 = std::chrono::steady_clock::now();
       std::vector<Point> p = f();
-      runs.push_back({name, std::move(p), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
+      runs.push_back(
+          {name, std::move(p), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
     };
     for (const bool bilateral : {true, false})
       timed(bilateral ? "bilateral elimination (sigma_f 0.5)" : "Euclidean elimination", [&] {
@@ -161,14 +178,16 @@ int main(int argc, char** argv) {
       });
     timed("CGAL WLOP", [&] {
       std::vector<Point> in = cloud_points, out;
-      CGAL::wlop_simplify_and_regularize_point_set<CGAL::Sequential_tag>(in, std::back_inserter(out),
-                                                                         CGAL::parameters::select_percentage(100 * fraction));
+      CGAL::wlop_simplify_and_regularize_point_set<CGAL::Sequential_tag>(
+          in, std::back_inserter(out), CGAL::parameters::select_percentage(100 * fraction));
       return out;
     });
     timed("CGAL hierarchy", [&] {
       return bisect_to_budget(cloud_points, budget, 2, 400, true, [&](double size) {
         std::vector<Point> p = cloud_points;
-        p.erase(CGAL::hierarchy_simplify_point_set(p, CGAL::parameters::size(unsigned(size)).maximum_variation(1.0 / 3)), p.end());
+        p.erase(CGAL::hierarchy_simplify_point_set(
+                    p, CGAL::parameters::size(unsigned(size)).maximum_variation(1.0 / 3)),
+                p.end());
         return p;
       });
     });
@@ -181,12 +200,14 @@ int main(int argc, char** argv) {
     });
     if (argc > 3 && fraction == 0.10)
       for (std::size_t k = 0; k < 2; ++k) {  // runs[0] bilateral, runs[1] Euclidean
-        const std::string out = std::string(argv[3]) + "/fandisk_sampling_" + (k == 0 ? "bilateral" : "euclidean") + ".svg";
+        const std::string out =
+            std::string(argv[3]) + "/fandisk_sampling_" + (k == 0 ? "bilateral" : "euclidean") + ".svg";
         std::FILE* f = std::fopen(out.c_str(), "w");
         if (!f) continue;
         // Orthographic view: rotate about z by 30 degrees, then about x by -60 degrees.
         auto project = [](const Point& p) {
-          const double c = std::cos(0.52), s = std::sin(0.52), x = c * p.x() - s * p.y(), y = s * p.x() + c * p.y();
+          const double c = std::cos(0.52), s = std::sin(0.52), x = c * p.x() - s * p.y(),
+                       y = s * p.x() + c * p.y();
           const double ca = std::cos(-1.05), sa = std::sin(-1.05);
           return std::array<double, 2>{x, ca * y - sa * p.z()};
         };
@@ -196,20 +217,24 @@ int main(int argc, char** argv) {
           for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], q[d]), hi[d] = std::max(hi[d], q[d]);
         }
         const double scale = 700 / std::max(hi[0] - lo[0], hi[1] - lo[1]);
-        std::fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+        std::fprintf(f,
+                     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\">\n<rect "
+                     "width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
                      (hi[0] - lo[0]) * scale + 20, (hi[1] - lo[1]) * scale + 20);
         for (const Point& p : runs[k].points) {
           const auto q = project(p);
           const bool near_crease = !creases.empty() && std::sqrt(crease_tree.squared_distance(p)) < 2 * h;
-          std::fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"1.1\" fill=\"%s\"/>\n", (q[0] - lo[0]) * scale + 10,
-                       (hi[1] - q[1]) * scale + 10, near_crease ? "#d62728" : "#1f3b73");
+          std::fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"1.1\" fill=\"%s\"/>\n",
+                       (q[0] - lo[0]) * scale + 10, (hi[1] - q[1]) * scale + 10,
+                       near_crease ? "#d62728" : "#1f3b73");
         }
         std::fprintf(f, "</svg>\n");
         std::fclose(f);
       }
     for (const Run& r : runs) {
       std::vector<std::array<std::size_t, 3>> faces_out;
-      CGAL::advancing_front_surface_reconstruction(r.points.begin(), r.points.end(), std::back_inserter(faces_out));
+      CGAL::advancing_front_surface_reconstruction(r.points.begin(), r.points.end(),
+                                                   std::back_inserter(faces_out));
       Triangles rec;
       for (const auto& f : faces_out) rec.emplace_back(r.points[f[0]], r.points[f[1]], r.points[f[2]]);
       std::vector<double> near, far;
@@ -220,15 +245,17 @@ int main(int argc, char** argv) {
           const double to_crease = creases.empty() ? 1e300 : std::sqrt(crease_tree.squared_distance(p));
           (to_crease < 2 * h ? near : far).push_back(d / h);
         };
-        // Original -> reconstruction: the dense samples (every 4th); reconstruction -> original: samples of it.
+        // Original -> reconstruction: the dense samples (every 4th); reconstruction -> original: samples of
+        // it.
         for (std::size_t i = 0; i < cloud.size(); i += 4)
           classify(cloud[i].first, std::sqrt(rec_tree.squared_distance(cloud[i].first)));
         for (const Pwn& q : sample_triangles(rec, dense / 4, 2))
           classify(mesh_tree.closest_point(q.first), std::sqrt(mesh_tree.squared_distance(q.first)));
       }
       const Stats a = stats(near), b = stats(far);
-      std::printf("| %.0f %% | %s | %zu | %zu | %.3f / %.2f / %.2f | %.3f / %.2f / %.2f | %.2f |\n", 100 * fraction, r.name,
-                  r.points.size(), rec.size(), a.mean, a.p99, a.max, b.mean, b.p99, b.max, r.seconds);
+      std::printf("| %.0f %% | %s | %zu | %zu | %.3f / %.2f / %.2f | %.3f / %.2f / %.2f | %.2f |\n",
+                  100 * fraction, r.name, r.points.size(), rec.size(), a.mean, a.p99, a.max, b.mean, b.p99,
+                  b.max, r.seconds);
       std::fflush(stdout);
     }
   }

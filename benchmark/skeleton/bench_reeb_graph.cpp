@@ -3,11 +3,12 @@
 // Augmented Reeb graph build: FeatureRecon vs VTK's vtkReebGraph (triangles only) on the same complexes:
 // upright torus grids with a tilted height (100k, 400k, 4M triangles) and the Rips complex of the first
 // 30,000 Chicago GPS points at r = 12 m with the geodesic function.
-// Simplification beside the Reeb graph it starts from, on a comb of 1,000,000 vertices (a path with a spur at every
-// vertex, f rising along the path; delta 2 removes all 500,000 spurs): no library simplifies Reeb graphs, so the
-// peer is our own Reeb graph of the same input. The same for the shapes that were quadratic before session 39:
-// a flat stem with a tall tooth at every vertex ("teethN") and a fan of loops ("fanN"), simplified at delta 1, and
-// joining the dead ends of a street with a stub at every other vertex ("stubsN", connect_dead_ends with a bound).
+// Simplification beside the Reeb graph it starts from, on a comb of 1,000,000 vertices (a path with a spur at
+// every vertex, f rising along the path; delta 2 removes all 500,000 spurs): no library simplifies Reeb
+// graphs, so the peer is our own Reeb graph of the same input. The same for the shapes that were quadratic
+// before session 39: a flat stem with a tall tooth at every vertex ("teethN") and a fan of loops ("fanN"),
+// simplified at delta 1, and joining the dead ends of a street with a stub at every other vertex ("stubsN",
+// connect_dead_ends with a bound).
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/repair_reeb_graph.h>
@@ -64,7 +65,8 @@ const Input& input(const std::string& name) {
     for (std::size_t i = 0; i < k; ++i) {
       slot->f.push_back(2.0 * static_cast<double>(i));  // the path
       edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(k + i)});
-      if (i + 1 < k) edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(i + 1)});
+      if (i + 1 < k)
+        edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(i + 1)});
     }
     for (std::size_t i = 0; i < k; ++i) slot->f.push_back(2.0 * static_cast<double>(i) + 1.5);  // spur tips
     slot->complex = sk::make_simplicial_complex_2(2 * k, std::move(edges), {});
@@ -75,11 +77,13 @@ const Input& input(const std::string& name) {
     for (std::size_t i = 0; i < n; ++i) {
       slot->f[i] = 1e-6 * static_cast<double>(i);
       slot->f[n + i] = slot->f[i] + 0.5;
-      if (i + 1 < n) edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(i + 1)});
+      if (i + 1 < n)
+        edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(i + 1)});
       edges.push_back({static_cast<sk::Vertex_index>(i), static_cast<sk::Vertex_index>(n + i)});
     }
     slot->complex = sk::make_simplicial_complex_2(2 * n, std::move(edges), {});
-  } else if (name.rfind("fan", 0) == 0) {  // vertex 0 joined to every vertex of the path 1..n, f = 0.5 + 1e-6 i
+  } else if (name.rfind("fan", 0) ==
+             0) {  // vertex 0 joined to every vertex of the path 1..n, f = 0.5 + 1e-6 i
     const std::size_t n = size_of(name);
     std::vector<sk::Edge> edges;
     slot->f.assign(n + 1, 0.0);
@@ -106,7 +110,12 @@ const Input& input(const std::string& name) {
     slot->complex = sk::make_simplicial_complex_2(slot->positions.size(), std::move(edges), {});
   } else {
     const std::size_t kt = std::stoul(name.substr(5));  // "torusN": N thousand triangles
-    const std::size_t nu = kt == 100 ? 250 : kt == 400 ? 500 : 2000, nv = kt == 100 ? 200 : kt == 400 ? 400 : 1000;
+    const std::size_t nu = kt == 100   ? 250
+                           : kt == 400 ? 500
+                                       : 2000,
+                      nv = kt == 100   ? 200
+                           : kt == 400 ? 400
+                                       : 1000;
     bench::Torus t = bench::torus_grid(nu, nv);
     slot->complex = std::move(t.complex);
     slot->f = std::move(t.f);
@@ -115,7 +124,8 @@ const Input& input(const std::string& name) {
   return *slot;
 }
 
-void report(benchmark::State& state, const Input& in, std::size_t nodes, std::size_t arcs, std::size_t loops) {
+void report(benchmark::State& state, const Input& in, std::size_t nodes, std::size_t arcs,
+            std::size_t loops) {
   state.counters["triangles"] = static_cast<double>(in.complex.number_of_triangles());
   state.counters["nodes"] = static_cast<double>(nodes);
   state.counters["arcs"] = static_cast<double>(arcs);
@@ -148,8 +158,8 @@ void BM_simplify_featurerecon(benchmark::State& state, const std::string& name, 
   report(state, in, S.graph.nodes.size(), S.graph.arcs.size(), S.graph.loops());
 }
 
-/// The Reeb graph and the joining of its dead ends closer than 1 (each stub's end to the street below it, which is
-/// split there), the x coordinate as the bound.
+/// The Reeb graph and the joining of its dead ends closer than 1 (each stub's end to the street below it,
+/// which is split there), the x coordinate as the bound.
 void BM_dead_ends_featurerecon(benchmark::State& state, const std::string& name) {
   const Input& in = input(name);
   sk::Reeb_dead_end_result J;
@@ -238,8 +248,9 @@ void register_all() {
           ->Iterations(1);
 #endif
   }
-  // Shapes that were quadratic (session 39), each beside its own Reeb graph; the simplification and the repair
-  // include it. 4,000 as in the unit tests (131 s and 174 s before; stubs 40,000: 6.0 s), then tenfold sizes.
+  // Shapes that were quadratic (session 39), each beside its own Reeb graph; the simplification and the
+  // repair include it. 4,000 as in the unit tests (131 s and 174 s before; stubs 40,000: 6.0 s), then tenfold
+  // sizes.
   for (const std::string size : {"4000", "40000", "400000"}) {
     for (const std::string shape : {"teeth", "fan", "stubs"}) {
       const std::string name = shape + size;

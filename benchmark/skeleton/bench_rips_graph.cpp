@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
 // Rips 2-complex construction: FeatureRecon (build_rips_graph + build_flag_complex_2) vs GUDHI
-// (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius; one case with an outlier far
-// away (the float filter of the brute-force search was centred at the mean: every pair went to the exact stage)
-// and one with two clusters far apart (each is searched alone since session 40).
+// (Rips_complex + create_complex(simplex_tree, 2)) on the same points and radius; one case with an outlier
+// far away (the float filter of the brute-force search was centred at the mean: every pair went to the exact
+// stage) and one with two clusters far apart (each is searched alone since session 40).
 #include <FeatureRecon/skeleton/embed_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Epick_d.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_2.h>
 #include <CGAL/Search_traits_d.h>
 #include <CGAL/Simple_cartesian.h>
@@ -60,7 +60,8 @@ const Case& get_case(const std::string& name) {
       slot->points.push_back(p);
     }
     slot->radius = 6.5;
-  } else if (name == "gaussian50d_5k_outlier") {  // the same points, one of them moved to 1e7 on the first axis
+  } else if (name ==
+             "gaussian50d_5k_outlier") {  // the same points, one of them moved to 1e7 on the first axis
     slot->points = get_case("gaussian50d_5k").points;
     slot->points[2500][0] = 1e7;
     slot->radius = 6.5;
@@ -98,10 +99,10 @@ void BM_rips_gudhi(benchmark::State& state, const std::string& name) {
 }
 #endif
 
-// k nearest neighbours on points with many copies (8,000 of one point beside a line), on a plain grid and on the
-// Gaussian cases in R^50 above: FeatureRecon's build_knn_graph (exact, ties by index, each distinct position
-// searched once) against CGAL's own Orthogonal_k_neighbor_search asked for k + 1 neighbours of every point (no tie
-// rule; in R^50 on Epick_d points with Search_traits_d).
+// k nearest neighbours on points with many copies (8,000 of one point beside a line), on a plain grid and on
+// the Gaussian cases in R^50 above: FeatureRecon's build_knn_graph (exact, ties by index, each distinct
+// position searched once) against CGAL's own Orthogonal_k_neighbor_search asked for k + 1 neighbours of every
+// point (no tie rule; in R^50 on Epick_d points with Search_traits_d).
 std::vector<std::vector<double>> knn_points(const std::string& name) {
   std::vector<std::vector<double>> p;
   if (name.rfind("gaussian50d", 0) == 0) return get_case(name).points;
@@ -160,8 +161,9 @@ void BM_knn_cgal(benchmark::State& state, const std::string& name) {
 }
 
 /// Distance matrices for classical MDS (2,000 points): "circle50d" a noisy circle of radius 10 in R^50 (noise
-/// 0.3 per axis; Euclidean); "sqrt5d" the square roots of the distances of Gaussian points in R^5 (not Euclidean);
-/// "uniform12" entries uniform in [1, 2] (no geometry; the top eigenvalues crowd together, the unit tests' case).
+/// 0.3 per axis; Euclidean); "sqrt5d" the square roots of the distances of Gaussian points in R^5 (not
+/// Euclidean); "uniform12" entries uniform in [1, 2] (no geometry; the top eigenvalues crowd together, the
+/// unit tests' case).
 std::vector<double> mds_matrix(const std::string& name, std::size_t n) {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> g(0.0, 1.0);
@@ -233,9 +235,8 @@ void register_all() {
         ->UseRealTime()
         ->Iterations(1);
   }
-  for (const std::string name :
-       {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k", "gaussian50d_5k_outlier",
-        "gaussian50d_5k_two_clusters"}) {
+  for (const std::string name : {"chicago20k_r20", "chicago118k_r4", "uniform3d_50k", "gaussian50d_5k",
+                                 "gaussian50d_5k_outlier", "gaussian50d_5k_two_clusters"}) {
     benchmark::RegisterBenchmark(("rips/featurerecon/" + name).c_str(), BM_rips_featurerecon, name)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()

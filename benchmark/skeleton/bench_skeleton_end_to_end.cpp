@@ -2,8 +2,8 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 // End to end on Chicago: FeatureRecon's whole skeleton pipeline (sampling, graph, Rips 2-complex, geodesic
 // function, Reeb graph, persistence simplification, repair, embedding) against what GUDHI needs to build the
-// same 2-complex and compute its extended persistence (issue 3, section 5). The function values GUDHI filters by
-// are our geodesic function, computed before the clock starts.
+// same 2-complex and compute its extended persistence (issue 3, section 5). The function values GUDHI filters
+// by are our geodesic function, computed before the clock starts.
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
 #include <FeatureRecon/skeleton/road_map.h>
@@ -131,16 +131,27 @@ void BM_points_gudhi(benchmark::State& state) {
 
 void register_all() {
   benchmark::RegisterBenchmark("skeleton/featurerecon/chicago_tracks", BM_tracks_featurerecon)
-      ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-  benchmark::RegisterBenchmark("skeleton/featurerecon/chicago_tracks_from_graph", BM_tracks_graph_featurerecon)
-      ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->MinTime(2.0);
+  benchmark::RegisterBenchmark("skeleton/featurerecon/chicago_tracks_from_graph",
+                               BM_tracks_graph_featurerecon)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->MinTime(2.0);
   benchmark::RegisterBenchmark("skeleton/featurerecon/chicago20k_r20", BM_points_featurerecon)
-      ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->MinTime(2.0);
 #ifdef FEATURERECON_WITH_GUDHI
   benchmark::RegisterBenchmark("skeleton/gudhi/chicago_tracks", BM_tracks_gudhi)
-      ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Iterations(3);
   benchmark::RegisterBenchmark("skeleton/gudhi/chicago20k_r20", BM_points_gudhi)
-      ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Iterations(1);
 #endif
 }
 }  // namespace

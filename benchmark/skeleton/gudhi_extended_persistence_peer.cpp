@@ -50,7 +50,8 @@ Gudhi_result gudhi_rips_extended_persistence(const std::vector<std::vector<doubl
   return extended_persistence(st, values);
 }
 
-Gudhi_result gudhi_flag_extended_persistence(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges,
+Gudhi_result gudhi_flag_extended_persistence(std::size_t n,
+                                             const std::vector<std::array<std::uint32_t, 2>>& edges,
                                              const std::vector<double>& values) {
   ST st;
   for (std::size_t v = 0; v < n; ++v) st.insert_simplex({static_cast<int>(v)}, 0.0);

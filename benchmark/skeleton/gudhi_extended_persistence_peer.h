@@ -24,7 +24,8 @@ Gudhi_result gudhi_rips_extended_persistence(const std::vector<std::vector<doubl
                                              const std::vector<double>& values);
 
 /// The same on the flag 2-complex of a graph given by its edges.
-Gudhi_result gudhi_flag_extended_persistence(std::size_t n, const std::vector<std::array<std::uint32_t, 2>>& edges,
+Gudhi_result gudhi_flag_extended_persistence(std::size_t n,
+                                             const std::vector<std::array<std::uint32_t, 2>>& edges,
                                              const std::vector<double>& values);
 
 }  // namespace bench

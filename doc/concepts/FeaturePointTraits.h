@@ -15,11 +15,11 @@
 /// The samplers check a traits class at compile time (a static_assert naming this concept).
 class FeaturePointTraits {
  public:
-  typedef unspecified_type Kernel;   ///< a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...)
-  typedef unspecified_type FT;       ///< Kernel::FT
-  typedef unspecified_type Point;    ///< Kernel::Point_2 or Kernel::Point_3
-  typedef unspecified_type Feature;  ///< any copyable type
-  typedef unspecified_type Item;     ///< the value type of the input range
+  typedef unspecified_type Kernel;     ///< a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...)
+  typedef unspecified_type FT;         ///< Kernel::FT
+  typedef unspecified_type Point;      ///< Kernel::Point_2 or Kernel::Point_3
+  typedef unspecified_type Feature;    ///< any copyable type
+  typedef unspecified_type Item;       ///< the value type of the input range
   static constexpr int dimension = 2;  ///< 2 or 3, the dimension of Point
 
   /// Functor `Point operator()(const Item&) const` (may return a reference).

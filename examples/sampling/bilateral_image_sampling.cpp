@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     for (int column = 0; column < width; ++column) {
       const double centre = 128 + 60 * std::sin(column / 40.0);  // the river's middle at this column
       const bool on_river = std::abs(row - centre) < 1.5;
-      const double shade = 170 + 60.0 * column / width;           // a gentle gradient elsewhere
+      const double shade = 170 + 60.0 * column / width;  // a gentle gradient elsewhere
       image.push_back(Grey_pixel{column, row, static_cast<std::uint8_t>(on_river ? 20 : shade)});
       river.push_back(on_river);
     }
@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
     o.seed = 1;
     if (bilateral) o.sigma_feature = 0.05;  // grey distances are in [0, 1]: the river is far from its banks
     std::vector<std::size_t> kept;
-    const auto r = fs::weighted_sample_elimination(image, count, std::back_inserter(kept), o, Grey_pixel_traits());
+    const auto r =
+        fs::weighted_sample_elimination(image, count, std::back_inserter(kept), o, Grey_pixel_traits());
     std::size_t on_river = 0;
     for (std::size_t i : kept) on_river += river[i];
     std::vector<Grey_pixel> samples;
@@ -61,10 +62,12 @@ int main(int argc, char** argv) {
       const std::string path = std::string(argv[1]) + "/bilateral_image_sampling_" + name + ".svg";
       std::ofstream svg(path);
       svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * width << "\" height=\"" << 2 * height
-          << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+          << "\" viewBox=\"0 0 " << width << ' ' << height
+          << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
       for (const Grey_pixel& p : samples)
-        svg << "<circle cx=\"" << p.column + 0.5 << "\" cy=\"" << p.row + 0.5 << "\" r=\"1.3\" fill=\"rgb(" << int(p.value)
-            << ',' << int(p.value) << ',' << int(p.value) << ")\" stroke=\"black\" stroke-width=\"0.3\"/>\n";
+        svg << "<circle cx=\"" << p.column + 0.5 << "\" cy=\"" << p.row + 0.5 << "\" r=\"1.3\" fill=\"rgb("
+            << int(p.value) << ',' << int(p.value) << ',' << int(p.value)
+            << ")\" stroke=\"black\" stroke-width=\"0.3\"/>\n";
       svg << "</svg>\n";
       svg.close();
       if (!svg) {

@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
       const bool staff = y >= 30 && y < 90 && (y - 30) % 14 < 2;
       const bool stem = (x % 45 < 3 && y > 20 && y < 100) || std::abs((x - 2 * y) % 90) < 2;
       const int paper = 215 + int(rng() % 25) - 12;
-      image[std::size_t(y) * width + std::size_t(x)] = std::uint8_t(staff || stem ? 25 + int(rng() % 10) : paper);
+      image[std::size_t(y) * width + std::size_t(x)] =
+          std::uint8_t(staff || stem ? 25 + int(rng() % 10) : paper);
     }
 
   fs::Bilateral_filter_options exact_options;  // sigma_spatial 3 (13 x 13 window), sigma_range 0.1
@@ -77,8 +78,8 @@ int main(int argc, char** argv) {
                   r.taps_per_kernel_pixel, fs::psnr(exact.values, r.values),
                   fs::ssim(width, height, 1, exact.values, r.values));
       if (argc > 1)
-        write_pgm(std::string(argv[1]) + "/sampled_bilateral_filter_" + name + "_" + where + ".pgm", width, height,
-                  r.values);
+        write_pgm(std::string(argv[1]) + "/sampled_bilateral_filter_" + name + "_" + where + ".pgm", width,
+                  height, r.values);
     }
   if (argc > 1) {
     write_pgm(std::string(argv[1]) + "/sampled_bilateral_filter_exact.pgm", width, height, exact.values);

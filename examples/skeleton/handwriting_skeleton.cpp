@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// Skeletons of handwriting (dissertation Fig. 3.5, a hand-written character): 1,000 handwritten digits, 100 of
-// each, 20 x 20 pixels (a crop of OpenCV's digits.png, data/images/). The ink pixels of each digit (grey >= 128)
-// are a point set on the pixel grid, a degenerate input full of equal distances; extract_reeb_skeleton() with a
-// Rips radius of 1.5 pixels (each pixel's 8 neighbours) and delta 3 pixels gives its skeleton. The program checks
-// the skeleton's topology against the ink's own: one component per 8-connected piece of ink, and one loop per
-// hole (4-connected background not reaching the border) of at least 3 pixels, where holes of 2 pixels may stay
-// and single pixels go (their loops have persistence below delta). It prints a table per digit; with --svg FILE
-// it draws the first 10 digits of each kind with their skeletons (doc/images/handwriting_skeleton.svg).
+// Skeletons of handwriting (dissertation Fig. 3.5, a hand-written character): 1,000 handwritten digits, 100
+// of each, 20 x 20 pixels (a crop of OpenCV's digits.png, data/images/). The ink pixels of each digit (grey
+// >= 128) are a point set on the pixel grid, a degenerate input full of equal distances;
+// extract_reeb_skeleton() with a Rips radius of 1.5 pixels (each pixel's 8 neighbours) and delta 3 pixels
+// gives its skeleton. The program checks the skeleton's topology against the ink's own: one component per
+// 8-connected piece of ink, and one loop per hole (4-connected background not reaching the border) of at
+// least 3 pixels, where holes of 2 pixels may stay and single pixels go (their loops have persistence below
+// delta). It prints a table per digit; with --svg FILE it draws the first 10 digits of each kind with their
+// skeletons (doc/images/handwriting_skeleton.svg).
 //
 // usage: handwriting_skeleton [--svg FILE]
 
@@ -56,8 +57,8 @@ Grey_image read_pgm(const std::string& path) {
 /// One digit: which of its pixels are ink, row by row.
 using Ink = std::array<bool, cell * cell>;
 
-/// The topology of the ink itself: 8-connected pieces of ink and the sizes of its holes (4-connected pieces of
-/// background that do not reach the border), by flood fill.
+/// The topology of the ink itself: 8-connected pieces of ink and the sizes of its holes (4-connected pieces
+/// of background that do not reach the border), by flood fill.
 struct Ink_topology {
   std::size_t pieces = 0;
   std::vector<std::size_t> holes;
@@ -80,15 +81,18 @@ Ink_topology ink_topology(const Ink& ink) {
       border = border || x == 0 || y == 0 || x == cell - 1 || y == cell - 1;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-          if ((dx == 0 && dy == 0) || (!is_ink && dx != 0 && dy != 0)) continue;  // ink: 8 neighbours; background: 4
+          if ((dx == 0 && dy == 0) || (!is_ink && dx != 0 && dy != 0))
+            continue;  // ink: 8 neighbours; background: 4
           const int u = x + dx, v = y + dy, q = v * cell + u;
           if (u < 0 || v < 0 || u >= cell || v >= cell || seen[q] || ink[q] != is_ink) continue;
           seen[q] = true;
           stack.push_back(q);
         }
     }
-    if (is_ink) ++t.pieces;
-    else if (!border) t.holes.push_back(size);
+    if (is_ink)
+      ++t.pieces;
+    else if (!border)
+      t.holes.push_back(size);
   }
   return t;
 }
@@ -109,19 +113,24 @@ Digit_skeleton skeleton_of(const Ink& ink) {
   d.points = points.size();
   const sk::Skeleton_graph& g = d.skeleton.graph;
   std::vector<int> component(num_vertices(g));
-  d.components = num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, component.data()));
+  d.components =
+      num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, component.data()));
   d.loops = num_edges(g) + d.components - num_vertices(g);
   return d;
 }
 
-/// The first 10 digits of each kind, ink grey, arcs coloured, nodes black; false when the file cannot be written.
-bool write_svg(const std::string& path, const Grey_image& image, const std::vector<std::vector<sk::Skeleton_graph>>& g) {
+/// The first 10 digits of each kind, ink grey, arcs coloured, nodes black; false when the file cannot be
+/// written.
+bool write_svg(const std::string& path, const Grey_image& image,
+               const std::vector<std::vector<sk::Skeleton_graph>>& g) {
   const double s = 8, gap = 12;  // SVG units per pixel, space between digits
   const double step = cell * s + gap, width = 10 * step + gap, height = 10 * step + gap + 28;
   std::ofstream out(path);
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-      << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                           "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   for (std::size_t kind = 0; kind < g.size(); ++kind)
     for (std::size_t i = 0; i < g[kind].size(); ++i) {
       const double x0 = gap + i * step, y0 = 28 + gap + kind * step;
@@ -131,13 +140,13 @@ bool write_svg(const std::string& path, const Grey_image& image, const std::vect
           const int grey = image.grey[std::size_t(kind * cell + y) * std::size_t(image.width) + i * cell + x];
           if (grey < 128) continue;
           const int shade = 255 - grey / 3;  // light grey, darker where the ink is brighter
-          out << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"1\" height=\"1\" fill=\"rgb(" << shade << ','
-              << shade << ',' << shade << ")\"/>\n";
+          out << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"1\" height=\"1\" fill=\"rgb(" << shade
+              << ',' << shade << ',' << shade << ")\"/>\n";
         }
       std::size_t k = 0;
       for (auto e : boost::make_iterator_range(edges(g[kind][i]))) {
-        out << "<polyline fill=\"none\" stroke-width=\"0.35\" stroke-linejoin=\"round\" stroke=\"" << colours[k++ % 8]
-            << "\" points=\"";
+        out << "<polyline fill=\"none\" stroke-width=\"0.35\" stroke-linejoin=\"round\" stroke=\""
+            << colours[k++ % 8] << "\" points=\"";
         for (const auto& p : g[kind][i][e].polyline) out << p[0] << ',' << p[1] << ' ';
         out << "\"/>\n";
       }
@@ -146,8 +155,10 @@ bool write_svg(const std::string& path, const Grey_image& image, const std::vect
             << "\" r=\"0.45\" fill=\"black\"/>\n";
       out << "</g>\n";
     }
-  out << "<text x=\"" << gap << "\" y=\"22\" font-family=\"sans-serif\" font-size=\"15\">Skeletons of handwritten "
-         "digits: ink pixels (grey), Rips radius 1.5, delta 3 pixels; arcs coloured, nodes black</text>\n</svg>\n";
+  out << "<text x=\"" << gap
+      << "\" y=\"22\" font-family=\"sans-serif\" font-size=\"15\">Skeletons of handwritten "
+         "digits: ink pixels (grey), Rips radius 1.5, delta 3 pixels; arcs coloured, nodes "
+         "black</text>\n</svg>\n";
   out.close();
   return static_cast<bool>(out);
 }
@@ -168,15 +179,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: cannot read '%s' (a 2000 x 200 binary PGM)\n", argv[0], path.c_str());
     return 1;
   }
-  std::printf("1000 handwritten digits (100 of each, 20 x 20 pixels), ink = grey >= 128; skeleton of the ink pixels\n"
-              "with Rips radius 1.5 pixels and delta 3 pixels\n\n");
-  std::printf("per kind of digit: ink pixels, nodes and arcs (means), how many skeletons have 0, 1, 2, 3+ loops, and\n"
-              "how many have the topology of the ink\n\n");
+  std::printf(
+      "1000 handwritten digits (100 of each, 20 x 20 pixels), ink = grey >= 128; skeleton of the ink pixels\n"
+      "with Rips radius 1.5 pixels and delta 3 pixels\n\n");
+  std::printf(
+      "per kind of digit: ink pixels, nodes and arcs (means), how many skeletons have 0, 1, 2, 3+ loops, "
+      "and\n"
+      "how many have the topology of the ink\n\n");
   std::printf("digit  ink pixels  nodes  arcs   loops 0    1    2   3+   as the ink\n");
   std::vector<std::vector<sk::Skeleton_graph>> pictured(10);
   std::size_t agree_all = 0, loops_all = 0;
   std::array<std::size_t, 3> holes_all{};  // holes of 1, 2, 3 or more pixels
-  double farthest = 0;  // from a polyline point to the nearest ink pixel centre
+  double farthest = 0;                     // from a polyline point to the nearest ink pixel centre
   for (int kind = 0; kind < 10; ++kind) {
     std::size_t ink_pixels = 0, nodes = 0, arcs = 0, agree = 0;
     std::array<std::size_t, 4> by_loops{};
@@ -184,7 +198,8 @@ int main(int argc, char** argv) {
       Ink ink{};
       for (int y = 0; y < cell; ++y)
         for (int x = 0; x < cell; ++x)
-          ink[y * cell + x] = image.grey[std::size_t(kind * cell + y) * std::size_t(image.width) + i * cell + x] >= 128;
+          ink[y * cell + x] =
+              image.grey[std::size_t(kind * cell + y) * std::size_t(image.width) + i * cell + x] >= 128;
       const Ink_topology t = ink_topology(ink);
       Digit_skeleton d = skeleton_of(ink);
       ink_pixels += d.points;
@@ -192,7 +207,8 @@ int main(int argc, char** argv) {
       arcs += num_edges(d.skeleton.graph);
       ++by_loops[std::min<std::size_t>(d.loops, 3)];
       const auto holes_of = [&t](std::size_t size) {
-        return static_cast<std::size_t>(std::count_if(t.holes.begin(), t.holes.end(), [size](std::size_t h) { return h >= size; }));
+        return static_cast<std::size_t>(
+            std::count_if(t.holes.begin(), t.holes.end(), [size](std::size_t h) { return h >= size; }));
       };
       agree += d.components == t.pieces && holes_of(3) <= d.loops && d.loops <= holes_of(2);
       loops_all += d.loops;
@@ -201,7 +217,8 @@ int main(int argc, char** argv) {
         for (const auto& p : d.skeleton.graph[e].polyline) {
           double nearest = 1e300;
           for (int q = 0; q < cell * cell; ++q)
-            if (ink[q]) nearest = std::min(nearest, std::hypot(p[0] - (q % cell + 0.5), p[1] - (q / cell + 0.5)));
+            if (ink[q])
+              nearest = std::min(nearest, std::hypot(p[0] - (q % cell + 0.5), p[1] - (q / cell + 0.5)));
           farthest = std::max(farthest, nearest);
         }
       if (i < 10) pictured[kind].push_back(std::move(d.skeleton.graph));
@@ -210,10 +227,12 @@ int main(int argc, char** argv) {
     std::printf("%5d  %10.1f  %5.1f  %4.1f  %8zu %4zu %4zu %4zu   %3zu of 100\n", kind, ink_pixels / 100.0,
                 nodes / 100.0, arcs / 100.0, by_loops[0], by_loops[1], by_loops[2], by_loops[3], agree);
   }
-  std::printf("\nskeleton topology as the ink's (components = 8-connected pieces; holes of >= 3 pixels <= loops <=\n"
-              "holes of >= 2 pixels): %zu of 1000 digits\n", agree_all);
-  std::printf("the ink's holes of 1 / 2 / 3+ pixels: %zu / %zu / %zu; the skeletons' loops: %zu\n", holes_all[0],
-              holes_all[1], holes_all[2], loops_all);
+  std::printf(
+      "\nskeleton topology as the ink's (components = 8-connected pieces; holes of >= 3 pixels <= loops <=\n"
+      "holes of >= 2 pixels): %zu of 1000 digits\n",
+      agree_all);
+  std::printf("the ink's holes of 1 / 2 / 3+ pixels: %zu / %zu / %zu; the skeletons' loops: %zu\n",
+              holes_all[0], holes_all[1], holes_all[2], loops_all);
   std::printf("every arc within %.2f pixels of an ink pixel centre\n", farthest);
   if (!svg.empty()) {
     if (!write_svg(svg, image, pictured)) {

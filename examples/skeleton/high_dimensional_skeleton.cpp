@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
 // A skeleton in R^50 with the one-call pipeline: a noisy sample of a figure-eight with a tail (two circles in
-// random planes of R^50, touching at one point, and a segment hanging off one circle), extract_reeb_skeleton()
-// with a Rips radius and a persistence threshold, then the result: its nodes, arcs and loops, how far its
-// input-space polylines are from the true graph, the same with the radius and threshold estimated from the points
-// (estimate_rips_radius()), and (with --svg FILE) a picture of the 3D embedding (PCA of the points, viewed at an
-// angle): doc/images/high_dimensional_skeleton.svg.
+// random planes of R^50, touching at one point, and a segment hanging off one circle),
+// extract_reeb_skeleton() with a Rips radius and a persistence threshold, then the result: its nodes, arcs
+// and loops, how far its input-space polylines are from the true graph, the same with the radius and
+// threshold estimated from the points (estimate_rips_radius()), and (with --svg FILE) a picture of the 3D
+// embedding (PCA of the points, viewed at an angle): doc/images/high_dimensional_skeleton.svg.
 
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 
@@ -58,18 +58,20 @@ struct Truth {
     double best = 1e300;
     for (const auto& [a, b] : segments) {
       double ab = 0, t = 0;
-      for (std::size_t k = 0; k < D; ++k) ab += (b[k] - a[k]) * (b[k] - a[k]), t += (p[k] - a[k]) * (b[k] - a[k]);
+      for (std::size_t k = 0; k < D; ++k)
+        ab += (b[k] - a[k]) * (b[k] - a[k]), t += (p[k] - a[k]) * (b[k] - a[k]);
       t = std::clamp(t / ab, 0.0, 1.0);
       double s = 0;
-      for (std::size_t k = 0; k < D; ++k) s += (a[k] + t * (b[k] - a[k]) - p[k]) * (a[k] + t * (b[k] - a[k]) - p[k]);
+      for (std::size_t k = 0; k < D; ++k)
+        s += (a[k] + t * (b[k] - a[k]) - p[k]) * (a[k] + t * (b[k] - a[k]) - p[k]);
       best = std::min(best, std::sqrt(s));
     }
     return best;
   }
 };
 
-/// Figure-eight (two circles of radius 2 in random planes, touching at the origin) with a tail of length 4 from
-/// the far point of the second circle; every segment sampled every 0.25 with noise 0.01 per coordinate.
+/// Figure-eight (two circles of radius 2 in random planes, touching at the origin) with a tail of length 4
+/// from the far point of the second circle; every segment sampled every 0.25 with noise 0.01 per coordinate.
 Truth make_truth(Gaussian& g) {
   Truth t;
   Vec far;
@@ -82,7 +84,8 @@ Truth make_truth(Gaussian& g) {
     const double side = c == 0 ? -1 : 1;
     auto at = [&](double a) {
       Vec p(D);
-      for (std::size_t k = 0; k < D; ++k) p[k] = side * 2 * (1 - std::cos(a)) * e1[k] + 2 * std::sin(a) * e2[k];
+      for (std::size_t k = 0; k < D; ++k)
+        p[k] = side * 2 * (1 - std::cos(a)) * e1[k] + 2 * std::sin(a) * e2[k];
       return p;
     };
     for (int i = 0; i < 64; ++i) t.segments.push_back({at(2 * pi * i / 64), at(2 * pi * (i + 1) / 64)});
@@ -109,9 +112,10 @@ sk::Point_matrix sample(const Truth& t, Gaussian& g) {
   return m;
 }
 
-/// The 3D embedding seen at an angle (orthographic), points grey, arcs coloured, nodes black; false when the file
-/// cannot be written.
-bool write_svg(const std::string& path, const std::vector<std::array<double, 3>>& xyz, const sk::Skeleton_graph& g) {
+/// The 3D embedding seen at an angle (orthographic), points grey, arcs coloured, nodes black; false when the
+/// file cannot be written.
+bool write_svg(const std::string& path, const std::vector<std::array<double, 3>>& xyz,
+               const sk::Skeleton_graph& g) {
   const double ca = std::cos(0.6), sa = std::sin(0.6), cb = std::cos(0.35), sb = std::sin(0.35);
   auto view = [&](const std::array<double, 3>& p) {
     const double x = ca * p[0] - sa * p[1], y = sa * p[0] + ca * p[1];
@@ -127,13 +131,15 @@ bool write_svg(const std::string& path, const std::vector<std::array<double, 3>>
   auto Y = [&](double y) { return top + (y1 - y) * s; };
   std::ofstream out(path);
   const double width = 2 * m + (x1 - x0) * s, height = top + m + (y1 - y0) * s;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-      << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const auto& p : xyz) {
     const auto q = view(p);
     out << "<circle cx=\"" << X(q[0]) << "\" cy=\"" << Y(q[1]) << "\" r=\"1.5\" fill=\"#bbbbbb\"/>\n";
   }
-  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                           "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   std::size_t k = 0;
   for (auto e : boost::make_iterator_range(edges(g))) {
     out << "<polyline fill=\"none\" stroke-width=\"3\" stroke=\"" << colours[k++ % 8] << "\" points=\"";
@@ -148,8 +154,8 @@ bool write_svg(const std::string& path, const std::vector<std::array<double, 3>>
     out << "<circle cx=\"" << X(q[0]) << "\" cy=\"" << Y(q[1]) << "\" r=\"5\" fill=\"black\"/>\n";
   }
   out << "<text x=\"" << m << "\" y=\"22\" font-family=\"sans-serif\" font-size=\"13\">Skeleton of "
-      << xyz.size() << " points in R^50 (figure-eight with a tail), PCA to 3D: " << num_vertices(g) << " nodes, "
-      << num_edges(g) << " arcs</text>\n</svg>\n";
+      << xyz.size() << " points in R^50 (figure-eight with a tail), PCA to 3D: " << num_vertices(g)
+      << " nodes, " << num_edges(g) << " arcs</text>\n</svg>\n";
   out.close();
   return static_cast<bool>(out);
 }
@@ -174,7 +180,8 @@ int main(int argc, char** argv) {
   const sk::Reeb_skeleton s = sk::extract_reeb_skeleton(points, rips_radius, options);
 
   std::vector<int> component(num_vertices(s.graph));
-  const std::size_t components = static_cast<std::size_t>(boost::connected_components(s.graph, component.data()));
+  const std::size_t components =
+      static_cast<std::size_t>(boost::connected_components(s.graph, component.data()));
   std::size_t leaves = 0, branch = 0;
   for (auto v : boost::make_iterator_range(vertices(s.graph))) {
     leaves += degree(v, s.graph) == 1;
@@ -183,31 +190,39 @@ int main(int argc, char** argv) {
   double farthest = 0;  // from a polyline vertex (in R^50) to the true graph
   for (auto e : boost::make_iterator_range(edges(s.graph))) {
     const auto& line = s.graph[e].input_polyline;
-    for (std::size_t i = 0; i + D <= line.size(); i += D) farthest = std::max(farthest, truth.distance(&line[i]));
+    for (std::size_t i = 0; i + D <= line.size(); i += D)
+      farthest = std::max(farthest, truth.distance(&line[i]));
   }
-  std::printf("%zu points in R^%zu, Rips radius %.1f, delta %.1f\n", points.rows, points.dimension, rips_radius,
-              options.delta);
+  std::printf("%zu points in R^%zu, Rips radius %.1f, delta %.1f\n", points.rows, points.dimension,
+              rips_radius, options.delta);
   std::printf("Rips 2-complex: %zu edges, %zu triangles\n", s.rips_edges, s.rips_triangles);
   std::printf("skeleton: %zu nodes, %zu arcs, %zu loops, %zu component(s), %zu leaf, %zu branch node(s)\n",
-              num_vertices(s.graph), num_edges(s.graph), num_edges(s.graph) + components - num_vertices(s.graph),
-              components, leaves, branch);
-  std::printf("true graph: 2 loops, 1 leaf, 2 branch nodes (the touching point, of degree 4, where %zu pair(s) of\n"
-              "  forks were merged, and the foot of the tail)\n", s.merged_branch_arcs);
-  const double bound = 0.7 * rips_radius;  // the bound the tests state (doc/skeleton.md, "Graphs in high dimension")
+              num_vertices(s.graph), num_edges(s.graph),
+              num_edges(s.graph) + components - num_vertices(s.graph), components, leaves, branch);
+  std::printf(
+      "true graph: 2 loops, 1 leaf, 2 branch nodes (the touching point, of degree 4, where %zu pair(s) of\n"
+      "  forks were merged, and the foot of the tail)\n",
+      s.merged_branch_arcs);
+  const double bound =
+      0.7 * rips_radius;  // the bound the tests state (doc/skeleton.md, "Graphs in high dimension")
   std::printf("every arc within 0.7 x radius = %.3f of the true graph: %s (farthest vertex %.2f)\n", bound,
               farthest <= bound ? "yes" : "no", farthest);
-  // Without a radius: estimate_rips_radius() reads one off the points (the scale where they look one-dimensional),
-  // and extract_reeb_skeleton(points, options) uses it; delta < 0 takes the estimate's delta too.
+  // Without a radius: estimate_rips_radius() reads one off the points (the scale where they look
+  // one-dimensional), and extract_reeb_skeleton(points, options) uses it; delta < 0 takes the estimate's
+  // delta too.
   const sk::Rips_radius_estimate estimate = sk::estimate_rips_radius(points);
   sk::Skeleton_options automatic;
   automatic.delta = -1;
   const sk::Reeb_skeleton a = sk::extract_reeb_skeleton(points, automatic);
   std::vector<int> a_component(num_vertices(a.graph));
-  const std::size_t a_components = static_cast<std::size_t>(boost::connected_components(a.graph, a_component.data()));
+  const std::size_t a_components =
+      static_cast<std::size_t>(boost::connected_components(a.graph, a_component.data()));
   std::printf("estimated: radius %.3f (scale %.3f, intrinsic dimension %.2f, gap radius %.3f), delta %.3f\n",
-              estimate.radius, estimate.scale, estimate.intrinsic_dimension, estimate.gap_radius, estimate.delta);
-  std::printf("skeleton at the estimate: %zu nodes, %zu arcs, %zu loops, %zu component(s)\n", num_vertices(a.graph),
-              num_edges(a.graph), num_edges(a.graph) + a_components - num_vertices(a.graph), a_components);
+              estimate.radius, estimate.scale, estimate.intrinsic_dimension, estimate.gap_radius,
+              estimate.delta);
+  std::printf("skeleton at the estimate: %zu nodes, %zu arcs, %zu loops, %zu component(s)\n",
+              num_vertices(a.graph), num_edges(a.graph),
+              num_edges(a.graph) + a_components - num_vertices(a.graph), a_components);
   if (!svg.empty()) {
     if (!write_svg(svg, sk::project_to_3d(points), s.graph)) {
       std::fprintf(stderr, "%s: cannot write '%s'\n", argv[0], svg.c_str());

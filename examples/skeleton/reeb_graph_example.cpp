@@ -38,11 +38,13 @@ bool write_svg(const std::string& path, const std::vector<std::array<double, 2>>
   auto Y = [&](double y) { return top + (y1 - y) * scale; };
   std::ofstream out(path);
   const double height = top + margin + (y1 - y0) * scale;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-      << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const auto& p : points)
     out << "<circle cx=\"" << X(p[0]) << "\" cy=\"" << Y(p[1]) << "\" r=\"1.6\" fill=\"#bbbbbb\"/>\n";
-  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                           "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   std::size_t k = 0;
   for (const auto& arc : reeb.arcs) {
     out << "<polyline fill=\"none\" stroke-width=\"2.5\" stroke=\"" << colours[k++ % 8] << "\" points=\"";
@@ -53,15 +55,19 @@ bool write_svg(const std::string& path, const std::vector<std::array<double, 2>>
     out << "\"/>\n";
   }
   for (const auto& node : reeb.nodes) {
-    const char* fill = (node.type & sk::minimum) ? "#000000" : (node.type & sk::maximum) ? "#ffffff"
-                       : (node.type & sk::down_fork) ? "#d62728" : "#2ca02c";
+    const char* fill = (node.type & sk::minimum)     ? "#000000"
+                       : (node.type & sk::maximum)   ? "#ffffff"
+                       : (node.type & sk::down_fork) ? "#d62728"
+                                                     : "#2ca02c";
     out << "<circle cx=\"" << X(points[node.vertex][0]) << "\" cy=\"" << Y(points[node.vertex][1])
         << "\" r=\"6\" stroke=\"black\" stroke-width=\"1.5\" fill=\"" << fill << "\"/>\n";
   }
-  out << "<text x=\"" << margin << "\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">Reeb graph of the geodesic"
+  out << "<text x=\"" << margin
+      << "\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">Reeb graph of the geodesic"
       << " function: " << reeb.nodes.size() << " nodes, " << reeb.arcs.size() << " arcs, " << reeb.loops()
       << " loops</text>\n<text x=\"" << margin
-      << "\" y=\"33\" font-family=\"sans-serif\" font-size=\"12\">arcs through their input points; nodes: black minimum, white maximum, green up-fork,"
+      << "\" y=\"33\" font-family=\"sans-serif\" font-size=\"12\">arcs through their input points; nodes: "
+         "black minimum, white maximum, green up-fork,"
       << " red down-fork</text>\n</svg>\n";
   out.close();
   return static_cast<bool>(out);
@@ -70,8 +76,9 @@ bool write_svg(const std::string& path, const std::vector<std::array<double, 2>>
 
 int main(int argc, char** argv) {
   namespace sk = FeatureRecon::skeleton;
-  const char* usage = "usage: %s [POINTS_FILE [RADIUS]] [--svg FILE]\n"
-                      "  POINTS_FILE  'x y' lines (default: a noisy figure-eight of 400 points), RADIUS default 0.6\n";
+  const char* usage =
+      "usage: %s [POINTS_FILE [RADIUS]] [--svg FILE]\n"
+      "  POINTS_FILE  'x y' lines (default: a noisy figure-eight of 400 points), RADIUS default 0.6\n";
   std::string svg;
   if (argc > 2 && std::strcmp(argv[argc - 2], "--svg") == 0) {
     svg = argv[argc - 1];
@@ -115,7 +122,8 @@ int main(int argc, char** argv) {
     for (int c = 0; c < 2; ++c)
       for (int i = 0; i < 200; ++i) {
         const double a = 2 * pi * i / 200;
-        points.push_back({2 * std::sin(a) + noise(rng), (c == 0 ? -2 * std::cos(a) : 4 + 2 * std::cos(a)) + noise(rng)});
+        points.push_back(
+            {2 * std::sin(a) + noise(rng), (c == 0 ? -2 * std::cos(a) : 4 + 2 * std::cos(a)) + noise(rng)});
       }
   }
 
@@ -132,8 +140,8 @@ int main(int argc, char** argv) {
   // Stage 3: augmented Reeb graph (every vertex is a node), then the Reeb graph proper.
   const sk::Augmented_reeb_graph augmented = sk::compute_augmented_reeb_graph(complex, geodesic.values);
   const sk::Reeb_graph reeb = augmented.reeb_graph();
-  std::printf("Reeb graph: %zu nodes, %zu arcs, %zu loops, %zu components\n", reeb.nodes.size(), reeb.arcs.size(),
-              reeb.loops(), reeb.components);
+  std::printf("Reeb graph: %zu nodes, %zu arcs, %zu loops, %zu components\n", reeb.nodes.size(),
+              reeb.arcs.size(), reeb.loops(), reeb.components);
   for (const auto& node : reeb.nodes) {
     std::printf("  node at vertex %u, f = %.3f:", node.vertex, node.value);
     if (node.type & sk::minimum) std::printf(" minimum");

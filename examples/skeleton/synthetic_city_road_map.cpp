@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// A road map from GPS traces where the true streets are known: make_synthetic_city() lays out a perturbed grid
-// and simulates trips on it; extract_road_map() builds the map with every parameter derived from the traces;
-// compare_maps() scores it against the streets that were driven (graph-sampling metric, 15 m), before and after
-// the last stage merges the two directions of each street into one line. The same city
-// recorded every 1, 3.6 and 7 seconds shows how the derived parameters follow the sampling rate. Then a city
-// of another shape with the same defaults: random intersections joined by bent streets (the organic layout,
+// A road map from GPS traces where the true streets are known: make_synthetic_city() lays out a perturbed
+// grid and simulates trips on it; extract_road_map() builds the map with every parameter derived from the
+// traces; compare_maps() scores it against the streets that were driven (graph-sampling metric, 15 m), before
+// and after the last stage merges the two directions of each street into one line. The same city recorded
+// every 1, 3.6 and 7 seconds shows how the derived parameters follow the sampling rate. Then a city of
+// another shape with the same defaults: random intersections joined by bent streets (the organic layout,
 // curvature 0.15). With --svg FILE: a picture of the 3.6 s grid city (traces, true streets, map);
-// doc/images/synthetic_city_road_map.png is that picture converted with rsvg-convert. With --svg-organic FILE:
-// the same for the organic city (doc/images/synthetic_city_organic.png).
+// doc/images/synthetic_city_road_map.png is that picture converted with rsvg-convert. With --svg-organic
+// FILE: the same for the organic city (doc/images/synthetic_city_organic.png).
 #include <FeatureRecon/skeleton/road_map.h>
 #include <FeatureRecon/skeleton/synthetic_city.h>
 
@@ -34,8 +34,9 @@ void write_svg(const std::string& path, const sk::Synthetic_city& city, const sk
   auto Y = [&](double y) { return margin + (y1 - y) * s; };
   std::ofstream out(path);
   const double width = 2 * margin + (x1 - x0) * s, height = 2 * margin + (y1 - y0) * s + 20;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-      << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const auto& trip : city.trips)
     for (const auto& f : trip)
       out << "<circle cx=\"" << X(f.x) << "\" cy=\"" << Y(f.y) << "\" r=\"1\" fill=\"#bbbbbb\"/>\n";
@@ -63,15 +64,16 @@ sk::Road_map run(const sk::Synthetic_city& city, double interval) {
   const sk::Road_map m = sk::extract_road_map(city.trips);
   const sk::Map_comparison_result score = sk::compare_maps(city.driven, m.map);
   // The same skeleton before its last stage, merge_road_lines(): both directions of every street drawn.
-  const sk::Map_comparison_result unmerged = sk::compare_maps(city.driven, sk::skeleton_to_road_map(m.skeleton.graph));
-  std::printf("every %.1f s: %zu fixes, median step %.1f m -> radius %.1f m, delta %.1f m; %zu samples\n", interval,
-              fixes, m.sample.median_step, m.used.rips_radius, m.used.delta, m.sample.points.rows);
+  const sk::Map_comparison_result unmerged =
+      sk::compare_maps(city.driven, sk::skeleton_to_road_map(m.skeleton.graph));
+  std::printf("every %.1f s: %zu fixes, median step %.1f m -> radius %.1f m, delta %.1f m; %zu samples\n",
+              interval, fixes, m.sample.median_step, m.used.rips_radius, m.used.delta, m.sample.points.rows);
   std::printf("  skeleton: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n",
               num_vertices(m.skeleton.graph), num_edges(m.skeleton.graph), m.merged.length_before,
               unmerged.precision, unmerged.recall, unmerged.f_score);
-  std::printf("  merged at %.0f m: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n", m.used.merge_distance,
-              num_vertices(m.merged.skeleton), num_edges(m.merged.skeleton), m.merged.length_after, score.precision,
-              score.recall, score.f_score);
+  std::printf("  merged at %.0f m: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n",
+              m.used.merge_distance, num_vertices(m.merged.skeleton), num_edges(m.merged.skeleton),
+              m.merged.length_after, score.precision, score.recall, score.f_score);
   return m;
 }
 }  // namespace

@@ -41,12 +41,12 @@ template <class... Args>
 }  // namespace FeatureRecon
 
 #if !defined(NDEBUG) || defined(FEATURERECON_DEBUG)
-#define FEATURERECON_precondition(EXPR)                                                          \
-  do {                                                                                           \
+#define FEATURERECON_precondition(EXPR)                                                                  \
+  do {                                                                                                   \
     if (!(EXPR)) ::FeatureRecon::internal::precondition_fail("precondition", #EXPR, __FILE__, __LINE__); \
   } while (0)
-#define FEATURERECON_assertion(EXPR)                                                           \
-  do {                                                                                         \
+#define FEATURERECON_assertion(EXPR)                                                                  \
+  do {                                                                                                \
     if (!(EXPR)) ::FeatureRecon::internal::precondition_fail("assertion", #EXPR, __FILE__, __LINE__); \
   } while (0)
 #else

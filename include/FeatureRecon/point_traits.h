@@ -23,8 +23,9 @@ struct Has_cartesian<P, std::void_t<decltype(std::declval<const P&>().dimension(
 template <class P, class = void>
 struct Is_indexable_range : std::false_type {};
 template <class P>
-struct Is_indexable_range<P, std::void_t<decltype(std::declval<const P&>().size()),
-                                         decltype(std::declval<const P&>()[0])>> : std::true_type {};
+struct Is_indexable_range<
+    P, std::void_t<decltype(std::declval<const P&>().size()), decltype(std::declval<const P&>()[0])>>
+    : std::true_type {};
 }  // namespace internal
 
 /// Default model of PointCoordinateTraits.

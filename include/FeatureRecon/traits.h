@@ -60,17 +60,17 @@ enum class Normal_orientation {
 
 /// Point with normal: `Item` is `std::pair<Point_3, Vector_3>`; the feature is the normal, compared by the
 /// squared distance of the unit normals (so it lies in [0, 4]). Normals need not be unit length; a zero
-/// normal is rejected by the samplers and sampling_quality() when they compare features (finite sigma_feature;
-/// checked; throws naming the item: every item's feature must then be at a finite distance from itself).
-/// \tparam K a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...).
+/// normal is rejected by the samplers and sampling_quality() when they compare features (finite
+/// sigma_feature; checked; throws naming the item: every item's feature must then be at a finite distance
+/// from itself). \tparam K a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...).
 template <class K>
 struct Point_with_normal_traits {
-  using Kernel = K;                                ///< the CGAL kernel
-  using FT = typename K::FT;                       ///< the kernel's number type
-  using Point = typename K::Point_3;               ///< the position type
-  using Feature = typename K::Vector_3;            ///< the normal
-  using Item = std::pair<Point, Feature>;          ///< the input range's value type
-  static constexpr int dimension = 3;              ///< positions are 3D
+  using Kernel = K;                                               ///< the CGAL kernel
+  using FT = typename K::FT;                                      ///< the kernel's number type
+  using Point = typename K::Point_3;                              ///< the position type
+  using Feature = typename K::Vector_3;                           ///< the normal
+  using Item = std::pair<Point, Feature>;                         ///< the input range's value type
+  static constexpr int dimension = 3;                             ///< positions are 3D
   Normal_orientation orientation = Normal_orientation::oriented;  ///< how normals are compared
   /// The position of an item.
   struct Construct_point {
@@ -86,9 +86,10 @@ struct Point_with_normal_traits {
     /// -1 (not a distance: the samplers refuse the item, naming it) when a or b is zero or not finite.
     FT operator()(const Feature& a, const Feature& b) const {
       // |a/|a| - b/|b||^2 = 2 - 2 cos; computed in doubles (a square root is needed for the cosine), on the
-      // vectors scaled by the power of two of their largest component (exact), so that lengths of 1e-170 or 1e160
-      // neither underflow nor overflow. A zero normal made the cosine NaN, and FT(NaN) failed inside an exact kernel (Epeck: an
-      // assertion, or SIGFPE in GMP without assertions) before the samplers could name the item.
+      // vectors scaled by the power of two of their largest component (exact), so that lengths of 1e-170 or
+      // 1e160 neither underflow nor overflow. A zero normal made the cosine NaN, and FT(NaN) failed inside an
+      // exact kernel (Epeck: an assertion, or SIGFPE in GMP without assertions) before the samplers could
+      // name the item.
       std::array<double, 3> u{CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z())};
       std::array<double, 3> v{CGAL::to_double(b.x()), CGAL::to_double(b.y()), CGAL::to_double(b.z())};
       for (auto* w : {&u, &v}) {
@@ -113,16 +114,16 @@ struct Point_with_normal_traits {
 /// A pixel of a grey image: integer column and row, value in [0, 255] (or any scale: the distance is the
 /// squared difference of the values divided by 255^2).
 struct Grey_pixel {
-  int column = 0;           ///< x, from the left
-  int row = 0;              ///< y, from the top
-  std::uint8_t value = 0;   ///< grey value
+  int column = 0;          ///< x, from the left
+  int row = 0;             ///< y, from the top
+  std::uint8_t value = 0;  ///< grey value
 };
 
 /// A pixel of an RGB image.
 struct Rgb_pixel {
-  int column = 0;                       ///< x, from the left
-  int row = 0;                          ///< y, from the top
-  std::array<std::uint8_t, 3> rgb{};    ///< red, green, blue
+  int column = 0;                     ///< x, from the left
+  int row = 0;                        ///< y, from the top
+  std::array<std::uint8_t, 3> rgb{};  ///< red, green, blue
 };
 
 /// Pixels of a grey or RGB image as samples: the position is the pixel centre (column + 1/2, row + 1/2) in
@@ -131,12 +132,12 @@ struct Rgb_pixel {
 /// \tparam K the kernel of the positions (default Epick).
 template <class Pixel_, class K = CGAL::Epick>
 struct Pixel_traits {
-  using Kernel = K;                         ///< the CGAL kernel
-  using FT = typename K::FT;                ///< the kernel's number type
-  using Point = typename K::Point_2;        ///< the pixel centre
-  using Item = Pixel_;                      ///< Grey_pixel or Rgb_pixel
+  using Kernel = K;                   ///< the CGAL kernel
+  using FT = typename K::FT;          ///< the kernel's number type
+  using Point = typename K::Point_2;  ///< the pixel centre
+  using Item = Pixel_;                ///< Grey_pixel or Rgb_pixel
   using Feature = std::array<std::uint8_t, std::is_same<Pixel_, Rgb_pixel>::value ? 3 : 1>;  ///< channels
-  static constexpr int dimension = 2;       ///< positions are 2D
+  static constexpr int dimension = 2;  ///< positions are 2D
   /// The pixel centre.
   struct Construct_point {
     Point operator()(const Item& p) const { return Point(p.column + 0.5, p.row + 0.5); }  ///< centre
@@ -182,23 +183,24 @@ using Rgb_pixel_traits = Pixel_traits<Rgb_pixel>;
 template <class K, int Dimension, class Item_, class PointMap, class FeatureMap, class FeatureDistance>
 struct Property_map_traits {
   static_assert(Dimension == 2 || Dimension == 3, "FeatureRecon: Property_map_traits: Dimension is 2 or 3");
-  using Kernel = K;                                                                      ///< the kernel
-  using FT = typename K::FT;                                                             ///< number type
+  using Kernel = K;           ///< the kernel
+  using FT = typename K::FT;  ///< number type
   using Point = std::conditional_t<Dimension == 2, typename K::Point_2, typename K::Point_3>;  ///< position
-  using Item = Item_;                                                                    ///< value type
-  using Feature = std::decay_t<decltype(std::declval<const FeatureMap&>()(std::declval<const Item&>()))>;  ///< feature
-  static constexpr int dimension = Dimension;                                            ///< 2 or 3
-  PointMap point_map;                 ///< item -> position
-  FeatureMap feature_map;             ///< item -> feature
-  FeatureDistance feature_distance;   ///< squared feature distance
+  using Item = Item_;                                                                          ///< value type
+  using Feature =
+      std::decay_t<decltype(std::declval<const FeatureMap&>()(std::declval<const Item&>()))>;  ///< feature
+  static constexpr int dimension = Dimension;                                                  ///< 2 or 3
+  PointMap point_map;                ///< item -> position
+  FeatureMap feature_map;            ///< item -> feature
+  FeatureDistance feature_distance;  ///< squared feature distance
   /// The position of an item, through the point map.
   struct Construct_point {
-    const PointMap* map;                                               ///< the traits' map
+    const PointMap* map;                                                ///< the traits' map
     Point operator()(const Item& i) const { return Point((*map)(i)); }  ///< position
   };
   /// The feature of an item, through the feature map.
   struct Construct_feature {
-    const FeatureMap* map;                                        ///< the traits' map
+    const FeatureMap* map;                                         ///< the traits' map
     Feature operator()(const Item& i) const { return (*map)(i); }  ///< feature
   };
   /// The user's squared feature distance.
@@ -206,9 +208,11 @@ struct Property_map_traits {
     const FeatureDistance* distance;  ///< the traits' functor
     FT operator()(const Feature& a, const Feature& b) const { return FT((*distance)(a, b)); }  ///< distance
   };
-  Construct_point construct_point_object() const { return {&point_map}; }                        ///< functor
-  Construct_feature construct_feature_object() const { return {&feature_map}; }                  ///< functor
-  Compute_feature_distance compute_feature_distance_object() const { return {&feature_distance}; }  ///< functor
+  Construct_point construct_point_object() const { return {&point_map}; }        ///< functor
+  Construct_feature construct_feature_object() const { return {&feature_map}; }  ///< functor
+  Compute_feature_distance compute_feature_distance_object() const {
+    return {&feature_distance};
+  }  ///< functor
 };
 
 /// Makes a Property_map_traits, deducing the map types.
@@ -223,10 +227,11 @@ template <class T, class = void>
 struct Is_feature_point_traits : std::false_type {};
 template <class T>
 struct Is_feature_point_traits<
-    T, std::void_t<typename T::Kernel, typename T::FT, typename T::Point, typename T::Feature, typename T::Item,
-                   decltype(T::dimension), decltype(std::declval<const T&>().construct_point_object()),
-                   decltype(std::declval<const T&>().construct_feature_object()),
-                   decltype(std::declval<const T&>().compute_feature_distance_object())>> : std::true_type {};
+    T,
+    std::void_t<typename T::Kernel, typename T::FT, typename T::Point, typename T::Feature, typename T::Item,
+                decltype(T::dimension), decltype(std::declval<const T&>().construct_point_object()),
+                decltype(std::declval<const T&>().construct_feature_object()),
+                decltype(std::declval<const T&>().compute_feature_distance_object())>> : std::true_type {};
 
 template <class Item, class = void>
 struct Default_traits {
@@ -235,14 +240,16 @@ struct Default_traits {
                 "doc/concepts/FeaturePointTraits.h), e.g. make_property_map_traits()");
 };
 template <class P>
-struct Default_traits<P, std::enable_if_t<std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_2>::value ||
-                                          std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_3>::value>> {
+struct Default_traits<
+    P, std::enable_if_t<std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_2>::value ||
+                        std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_3>::value>> {
   using type = Point_traits<P>;
 };
 template <class P, class V>
-struct Default_traits<std::pair<P, V>,
-                      std::enable_if_t<std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_3>::value &&
-                                       std::is_same<V, typename CGAL::Kernel_traits<P>::Kernel::Vector_3>::value>> {
+struct Default_traits<
+    std::pair<P, V>,
+    std::enable_if_t<std::is_same<P, typename CGAL::Kernel_traits<P>::Kernel::Point_3>::value &&
+                     std::is_same<V, typename CGAL::Kernel_traits<P>::Kernel::Vector_3>::value>> {
   using type = Point_with_normal_traits<typename CGAL::Kernel_traits<P>::Kernel>;
 };
 template <>
@@ -259,8 +266,8 @@ struct Default_traits<Rgb_pixel> {
 /// Point_with_normal_traits for `std::pair<Point_3, Vector_3>` items, Pixel_traits for Grey_pixel and
 /// Rgb_pixel items.
 template <class ItemRange>
-using Default_traits_t =
-    typename internal::Default_traits<std::decay_t<decltype(*std::begin(std::declval<const ItemRange&>()))>>::type;
+using Default_traits_t = typename internal::Default_traits<
+    std::decay_t<decltype(*std::begin(std::declval<const ItemRange&>()))>>::type;
 
 }  // namespace FeatureRecon
 

@@ -35,8 +35,8 @@ io::Image rounded(const io::Image& like, const std::vector<float>& values) {
 
 int run_bilateral_filter(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"grey", "quiet", "no-compensation"},
-                       {"sampling", "mode", "budget", "sigma-spatial", "sigma-range", "radius", "sampling-sigma",
-                        "candidates", "seed", "out", "exact-out"},
+                       {"sampling", "mode", "budget", "sigma-spatial", "sigma-range", "radius",
+                        "sampling-sigma", "candidates", "seed", "out", "exact-out"},
                        1);
   if (args.positional().size() != 1)
     throw Usage_error("give the picture to filter: featurerecon bilateral-filter IMAGE ...");
@@ -45,24 +45,30 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
   if (sampling != "uniform" && sampling != "bilateral" && sampling != "exact")
     throw Usage_error("--sampling must be uniform, bilateral or exact, got '" + sampling + "'");
   const std::string mode = args.get_or("mode", "global");
-  if (mode != "local" && mode != "global") throw Usage_error("--mode must be local or global, got '" + mode + "'");
+  if (mode != "local" && mode != "global")
+    throw Usage_error("--mode must be local or global, got '" + mode + "'");
   fs::Sampled_bilateral_filter_options o;
   o.sampling = sampling == "uniform" ? fs::Tap_sampling::uniform : fs::Tap_sampling::bilateral;
   o.mode = mode == "local" ? fs::Tap_mode::local : fs::Tap_mode::global;
   if (args.has("budget")) o.budget = args.get_positive_double("budget");
-  if (o.budget > 16) throw Usage_error("--budget must be in (0, 16] taps per kernel pixel, got " + args.get("budget"));
-  if (args.has("sigma-spatial")) {  // large with --radius: a flat spatial kernel; below 1e-150 its weights are NaN
+  if (o.budget > 16)
+    throw Usage_error("--budget must be in (0, 16] taps per kernel pixel, got " + args.get("budget"));
+  if (args.has(
+          "sigma-spatial")) {  // large with --radius: a flat spatial kernel; below 1e-150 its weights are NaN
     o.kernel.sigma_spatial = args.get_positive_double("sigma-spatial");
     if (o.kernel.sigma_spatial < 1e-150)
       throw Usage_error("--sigma-spatial must be at least 1e-150, got " + args.get("sigma-spatial"));
   }
   if (args.has("sigma-spatial") && !args.has("radius") && o.kernel.sigma_spatial > 2048)
-    throw Usage_error("--sigma-spatial must be at most 2048 without --radius (the radius 2 sigma would exceed 4096), "
-                      "got " + args.get("sigma-spatial"));
+    throw Usage_error(
+        "--sigma-spatial must be at most 2048 without --radius (the radius 2 sigma would exceed 4096), "
+        "got " +
+        args.get("sigma-spatial"));
   if (args.has("sigma-range")) o.kernel.sigma_range = args.get_scale("sigma-range");
   if (args.has("radius")) {
     const long long r = args.get_int("radius");
-    if (r < 1 || r > 4096) throw Usage_error("--radius must be between 1 and 4096 pixels, got " + std::to_string(r));
+    if (r < 1 || r > 4096)
+      throw Usage_error("--radius must be between 1 and 4096 pixels, got " + std::to_string(r));
     o.kernel.radius = int(r);
   }
   if (args.has("sampling-sigma")) o.sampling_sigma_feature = args.get_scale("sampling-sigma");
@@ -73,7 +79,8 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
   o.seed = static_cast<std::uint64_t>(seed);
-  if (!args.has("out")) throw Usage_error("give --out FILE.png (or .jpg, .pgm, .ppm) for the filtered picture");
+  if (!args.has("out"))
+    throw Usage_error("give --out FILE.png (or .jpg, .pgm, .ppm) for the filtered picture");
   const std::string out = args.get("out");
   for (const std::string& file : {out, args.get_or("exact-out", out)}) {
     const std::string ext = io::file_extension(file);
@@ -90,7 +97,8 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
   fs::Bilateral_filter_options eo;
   eo.kernel = o.kernel;
   eo.progress = std::ref(exact_progress);
-  const fs::Bilateral_filter_result exact = fs::bilateral_filter(image.width, image.height, image.channels, image.data, eo);
+  const fs::Bilateral_filter_result exact =
+      fs::bilateral_filter(image.width, image.height, image.channels, image.data, eo);
   exact_progress.done();
   const double exact_seconds = exact_progress.seconds();
 
@@ -109,19 +117,23 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
   if (args.has("exact-out")) io::write_image(outputs.path("exact-out"), rounded(image, exact.values));
   outputs.commit();
 
-  const int radius = o.kernel.radius > 0 ? o.kernel.radius : std::max(1, int(std::ceil(2 * o.kernel.sigma_spatial)));
+  const int radius =
+      o.kernel.radius > 0 ? o.kernel.radius : std::max(1, int(std::ceil(2 * o.kernel.sigma_spatial)));
   std::ostringstream os;
-  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width << ", \"height\": " << image.height
-     << ", \"channels\": " << image.channels << ", \"sampling\": \"" << sampling << "\", \"mode\": \""
-     << (sampling == "exact" ? "exact" : mode) << "\", \"budget\": " << json_number(sampling == "exact" ? 1 : o.budget)
+  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width
+     << ", \"height\": " << image.height << ", \"channels\": " << image.channels << ", \"sampling\": \""
+     << sampling << "\", \"mode\": \"" << (sampling == "exact" ? "exact" : mode)
+     << "\", \"budget\": " << json_number(sampling == "exact" ? 1 : o.budget)
      << ", \"taps_per_kernel_pixel\": " << json_number(sampled.taps_per_kernel_pixel)
      << ", \"sampling_radius\": " << json_number(sampled.sampling_radius)
      << ", \"density_compensation\": " << (o.compensate_density && sampling == "bilateral" ? "true" : "false")
      << ", \"sigma_spatial\": " << json_number(o.kernel.sigma_spatial)
      << ", \"sigma_range\": " << json_number(o.kernel.sigma_range) << ", \"radius\": " << radius
      << ", \"seed\": " << seed << ", \"psnr_db\": " << json_number(fs::psnr(exact.values, sampled.values))
-     << ", \"ssim\": " << json_number(fs::ssim(image.width, image.height, image.channels, exact.values, sampled.values))
-     << ", \"seconds\": " << json_number(seconds) << ", \"exact_seconds\": " << json_number(exact_seconds) << "}\n";
+     << ", \"ssim\": "
+     << json_number(fs::ssim(image.width, image.height, image.channels, exact.values, sampled.values))
+     << ", \"seconds\": " << json_number(seconds) << ", \"exact_seconds\": " << json_number(exact_seconds)
+     << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;
 }

@@ -96,13 +96,17 @@ long long Arguments::get_int(const std::string& name) const {
   char* end = nullptr;
   errno = 0;
   const long long x = std::strtoll(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || errno == ERANGE) throw Usage_error("--" + name + " must be an integer, got '" + s + "'");
+  if (s.empty() || *end != '\0' || errno == ERANGE)
+    throw Usage_error("--" + name + " must be an integer, got '" + s + "'");
   return x;
 }
 
 Progress::Progress(std::string stage, bool quiet)
-    : m_stage(std::move(stage)), m_quiet(quiet), m_tty(isatty(STDERR_FILENO) != 0),
-      m_start(std::chrono::steady_clock::now()), m_last(m_start) {}
+    : m_stage(std::move(stage)),
+      m_quiet(quiet),
+      m_tty(isatty(STDERR_FILENO) != 0),
+      m_start(std::chrono::steady_clock::now()),
+      m_last(m_start) {}
 
 bool Progress::operator()(double fraction) {
   if (m_quiet) return true;
@@ -128,8 +132,8 @@ void Progress::done(const std::string& details) {
   if (m_finished) return;
   m_finished = true;
   if (m_quiet) return;
-  std::fprintf(stderr, "%s%s: done%s%s%s in %.2f s\n", m_tty ? "\r" : "", m_stage.c_str(), details.empty() ? "" : " (",
-               details.c_str(), details.empty() ? "" : ")", seconds());
+  std::fprintf(stderr, "%s%s: done%s%s%s in %.2f s\n", m_tty ? "\r" : "", m_stage.c_str(),
+               details.empty() ? "" : " (", details.c_str(), details.empty() ? "" : ")", seconds());
 }
 
 Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options) {
@@ -149,11 +153,14 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
     if (::lstat(destination.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
       throw Usage_error("--" + name + ": " + path + " is a loop of symbolic links");
     const std::size_t slash = destination.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : destination.substr(0, slash);
+    const std::string dir = slash == std::string::npos ? "."
+                            : slash == 0               ? "/"
+                                                       : destination.substr(0, slash);
     if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
       throw Usage_error("--" + name + ": the directory " + dir + " of " + path + " does not exist");
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
-      throw Usage_error("--" + name + ": cannot write into the directory " + dir + " (" + std::strerror(errno) + ")");
+      throw Usage_error("--" + name + ": cannot write into the directory " + dir + " (" +
+                        std::strerror(errno) + ")");
     // The same file may be spelt two ways (v.txt and ./v.txt, a symbolic link): compare resolved paths.
     char resolved[PATH_MAX];
     std::string key = destination;
@@ -173,14 +180,14 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
       struct stat in {};
       return ::stat(other.c_str(), &in) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino;
     };
-    // A number given to an option that takes one (--radius 0.6) names no input, whatever files exist; the options
-    // that read files are compared whatever their value (an input named 12 stays an input).
+    // A number given to an option that takes one (--radius 0.6) names no input, whatever files exist; the
+    // options that read files are compared whatever their value (an input named 12 stays an input).
     static const std::set<std::string> file_inputs{"points",  "tracks", "distance-matrix", "graph",
                                                    "complex", "input",  "crop-to-tracks"};
     double number = 0;
     for (const auto& [option, value] : args.values())
-      if (m_targets.count(option) == 0 && (file_inputs.count(option) > 0 || !io::parse_decimal(value, number)) &&
-          same(value))
+      if (m_targets.count(option) == 0 &&
+          (file_inputs.count(option) > 0 || !io::parse_decimal(value, number)) && same(value))
         throw Usage_error("--" + name + ": " + path + " is also the input --" + option);
     for (const std::string& value : args.positional())
       if (same(value)) throw Usage_error("--" + name + ": " + path + " is also the input " + value);
@@ -196,7 +203,8 @@ void Outputs::require_extension(const std::string& name, const std::vector<std::
   std::string list;
   for (std::size_t i = 0; i < extensions.size(); ++i)
     list += (i == 0 ? "." : i + 1 == extensions.size() ? " or ." : ", .") + extensions[i];
-  throw Usage_error("--" + name + " writes " + what + ": give a file ending in " + list + ", got '" + it->second + "'");
+  throw Usage_error("--" + name + " writes " + what + ": give a file ending in " + list + ", got '" +
+                    it->second + "'");
 }
 
 namespace {
@@ -232,8 +240,8 @@ std::string Outputs::path(const std::string& name) {
 }
 
 void Outputs::commit() {
-  // Renames cannot be undone, but they fail only in odd cases (the directory vanished): the writing, which fails
-  // for full disks and the like, is over by now.
+  // Renames cannot be undone, but they fail only in odd cases (the directory vanished): the writing, which
+  // fails for full disks and the like, is over by now.
   for (const auto& f : m_staged) io::move_into_place(f.second, f.first);
   m_staged.clear();
 }
@@ -244,12 +252,17 @@ std::size_t utf8_length(const std::string& s, std::size_t i) {
   const auto at = [&s](std::size_t k) { return static_cast<unsigned char>(s[k]); };
   const unsigned char u = at(i);
   std::size_t n = 0;
-  unsigned char lo = 0x80, hi = 0xBF;  // range of the second byte (no overlong forms, no surrogates, <= U+10FFFF)
+  unsigned char lo = 0x80,
+                hi = 0xBF;  // range of the second byte (no overlong forms, no surrogates, <= U+10FFFF)
   if (u < 0x80) return 1;
-  if (u >= 0xC2 && u <= 0xDF) n = 2;
-  else if (u >= 0xE0 && u <= 0xEF) n = 3, lo = u == 0xE0 ? 0xA0 : 0x80, hi = u == 0xED ? 0x9F : 0xBF;
-  else if (u >= 0xF0 && u <= 0xF4) n = 4, lo = u == 0xF0 ? 0x90 : 0x80, hi = u == 0xF4 ? 0x8F : 0xBF;
-  else return 0;
+  if (u >= 0xC2 && u <= 0xDF)
+    n = 2;
+  else if (u >= 0xE0 && u <= 0xEF)
+    n = 3, lo = u == 0xE0 ? 0xA0 : 0x80, hi = u == 0xED ? 0x9F : 0xBF;
+  else if (u >= 0xF0 && u <= 0xF4)
+    n = 4, lo = u == 0xF0 ? 0x90 : 0x80, hi = u == 0xF4 ? 0x8F : 0xBF;
+  else
+    return 0;
   if (i + n > s.size() || at(i + 1) < lo || at(i + 1) > hi) return 0;
   for (std::size_t k = 2; k < n; ++k)
     if (at(i + k) < 0x80 || at(i + k) > 0xBF) return 0;
@@ -313,14 +326,14 @@ skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>
     return skeleton::local_transverse_mercator(all);
   } catch (const std::invalid_argument& e) {
     const std::string what = std::string(e.what()).substr(std::string("local_transverse_mercator: ").size());
-    // The projection numbers the points of all the files together ("point N (longitude ..."): name the file and
-    // the line instead.
+    // The projection numbers the points of all the files together ("point N (longitude ..."): name the file
+    // and the line instead.
     std::size_t index = 0;
     if (std::sscanf(what.c_str(), "point %zu ", &index) == 1)
       for (const Lonlat_source& source : sources) {
         if (index < source.points->size())
-          throw io::Input_error(source.file + ":" + std::to_string((*source.lines)[index]) + ": --lonlat: " +
-                                what.substr(what.find(' ', 6) + 1));
+          throw io::Input_error(source.file + ":" + std::to_string((*source.lines)[index]) +
+                                ": --lonlat: " + what.substr(what.find(' ', 6) + 1));
         index -= source.points->size();
       }
     std::string files;  // the files given (an option not given has no name)
@@ -362,7 +375,8 @@ std::string name_option_flags(const std::string& message) {
     const std::string f = field;
     bool found = false;
     for (std::size_t at = message.find(f); at != std::string::npos && !found; at = message.find(f, at + 1))
-      found = (at == 0 || !word(message[at - 1])) && (at + f.size() == message.size() || !word(message[at + f.size()]));
+      found = (at == 0 || !word(message[at - 1])) &&
+              (at + f.size() == message.size() || !word(message[at + f.size()]));
     if (found) named += (named.empty() ? "" : ", ") + f + " is " + flag;
   }
   return named.empty() ? message : message + " (on the command line: " + named + ")";

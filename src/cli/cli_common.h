@@ -65,14 +65,15 @@ class Progress {
 };
 
 /// The files one command writes, made to appear together. The constructor checks every given output option
-/// before any work is done (a file name, not a directory, in an existing writable directory, no file named twice;
-/// Usage_error naming the option otherwise). path() hands out a new temporary file beside the target (same
-/// extension) for the writers; commit() renames them all into place once everything is written. Destroyed
-/// without commit() (an error), it removes the temporaries: a failed run leaves neither partial output nor a
-/// new vertices file beside an old edges file, and earlier files of the same names stay as they were. A symbolic
-/// link is written through (the file it points to is replaced, the link stays); a device, FIFO or the like
-/// (/dev/null, /dev/stdout) is written in place, without a temporary. An output that is also an input (another
-/// argument naming the same existing file) is refused.
+/// before any work is done (a file name, not a directory, in an existing writable directory, no file named
+/// twice; Usage_error naming the option otherwise). path() hands out a new temporary file beside the target
+/// (same extension) for the writers; commit() renames them all into place once everything is written.
+/// Destroyed without commit() (an error), it removes the temporaries: a failed run leaves neither partial
+/// output nor a new vertices file beside an old edges file, and earlier files of the same names stay as they
+/// were. A symbolic link is written through (the file it points to is replaced, the link stays); a device,
+/// FIFO or the like
+/// (/dev/null, /dev/stdout) is written in place, without a temporary. An output that is also an input
+/// (another argument naming the same existing file) is refused.
 class Outputs {
  public:
   Outputs(const Arguments& args, const std::vector<std::string>& options);
@@ -85,17 +86,17 @@ class Outputs {
   /// The temporary file to write the output of option `name` to (created on the first call).
   std::string path(const std::string& name);
   void commit();
-  /// Refuses, before any work, an output of option `name` (when given) whose extension is none of `extensions`
-  /// (lower case, without the dot); `what` names the kind of file in the message.
+  /// Refuses, before any work, an output of option `name` (when given) whose extension is none of
+  /// `extensions` (lower case, without the dot); `what` names the kind of file in the message.
   void require_extension(const std::string& name, const std::vector<std::string>& extensions,
                          const std::string& what) const;
-  /// `message` with every temporary file handed out by path() (in this run) replaced by its target, so that an
-  /// error raised while writing names the file the user asked for.
+  /// `message` with every temporary file handed out by path() (in this run) replaced by its target, so that
+  /// an error raised while writing names the file the user asked for.
   static std::string name_targets(std::string message);
 
  private:
-  std::map<std::string, std::string> m_targets;                 // option -> target file
-  std::vector<std::pair<std::string, std::string>> m_staged;    // (target, temporary)
+  std::map<std::string, std::string> m_targets;               // option -> target file
+  std::vector<std::pair<std::string, std::string>> m_staged;  // (target, temporary)
 };
 
 /// A file of --lonlat positions: its name ("" for an option not given), its points ({longitude, latitude} in
@@ -107,8 +108,8 @@ struct Lonlat_source {
 };
 
 /// --lonlat: the points of each source are checked (Input_error naming the file, the line and the values) and
-/// the transverse Mercator centred on all of them is returned (Input_error naming the file and line of a point too
-/// far from its central meridian: they span too much for one projection). The caller projects them.
+/// the transverse Mercator centred on all of them is returned (Input_error naming the file and line of a
+/// point too far from its central meridian: they span too much for one projection). The caller projects them.
 skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>& sources);
 
 /// --lonlat: every fix (a type with x and y, as skeleton::Gps_fix) of the trips from degrees to metres.
@@ -125,7 +126,8 @@ void project_trips(Trips& trips, const skeleton::Transverse_mercator& projection
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);
 
-/// A spacing statistic for JSON: null when its set is degenerate (too few samples, no area), where it is undefined.
+/// A spacing statistic for JSON: null when its set is degenerate (too few samples, no area), where it is
+/// undefined.
 std::string json_statistic(double x, Status status);
 
 /// Quotes a string for JSON (", \ and control characters escaped).

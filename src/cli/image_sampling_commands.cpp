@@ -82,8 +82,9 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_set
     o.max_radius = s.radius;
     o.seed = s.seed;
     o.progress = std::ref(progress);
-    used_radius = fs::weighted_sample_elimination(pixels, static_cast<std::size_t>(s.count), std::back_inserter(kept), o,
-                                                  traits).radius;
+    used_radius = fs::weighted_sample_elimination(pixels, static_cast<std::size_t>(s.count),
+                                                  std::back_inserter(kept), o, traits)
+                      .radius;
   } else if (s.radius > 0) {
     fs::Dart_throwing_options o;
     o.sigma_feature = s.sigma_feature;
@@ -96,8 +97,9 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_set
     o.darts.sigma_feature = s.sigma_feature;
     o.darts.seed = s.seed;
     o.darts.progress = std::ref(progress);
-    used_radius = fs::bilateral_dart_throwing_count(pixels, static_cast<std::size_t>(s.count), std::back_inserter(kept),
-                                                    o, traits).radius;
+    used_radius = fs::bilateral_dart_throwing_count(pixels, static_cast<std::size_t>(s.count),
+                                                    std::back_inserter(kept), o, traits)
+                      .radius;
   }
   for (const std::size_t i : kept) {
     const Pixel& p = pixels[i];
@@ -113,7 +115,9 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_set
   return out;
 }
 
-std::uint8_t to_byte(double v) { return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255)); }
+std::uint8_t to_byte(double v) {
+  return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255));
+}
 
 /// Text samples: "x y value" (grey) or "x y r g b", channels in [0, 1]; with .csv a header and commas.
 void write_samples(const std::string& path, const std::vector<Image_sample>& samples, std::size_t channels) {
@@ -133,16 +137,18 @@ void write_samples(const std::string& path, const std::vector<Image_sample>& sam
 constexpr double dot_background = 0.55;
 
 /// SVG: each sample a dot of its colour on grey, in pixel coordinates.
-void write_samples_svg(const std::string& path, const std::vector<Image_sample>& samples, int width, int height,
-                       double dot) {
+void write_samples_svg(const std::string& path, const std::vector<Image_sample>& samples, int width,
+                       int height, double dot) {
   std::ostringstream os;
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-     << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#8c8c8c\"/>\n";
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+     << "\" viewBox=\"0 0 " << width << ' ' << height
+     << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#8c8c8c\"/>\n";
   char colour[8];
   for (const Image_sample& s : samples) {
-    std::snprintf(colour, sizeof colour, "#%02x%02x%02x", to_byte(s.colour[0]), to_byte(s.colour[1]), to_byte(s.colour[2]));
-    os << "<circle cx=\"" << json_number(s.x) << "\" cy=\"" << json_number(s.y) << "\" r=\"" << json_number(dot)
-       << "\" fill=\"" << colour << "\"/>\n";
+    std::snprintf(colour, sizeof colour, "#%02x%02x%02x", to_byte(s.colour[0]), to_byte(s.colour[1]),
+                  to_byte(s.colour[2]));
+    os << "<circle cx=\"" << json_number(s.x) << "\" cy=\"" << json_number(s.y) << "\" r=\""
+       << json_number(dot) << "\" fill=\"" << colour << "\"/>\n";
   }
   os << "</svg>\n";
   io::write_text_file(path, os.str());
@@ -150,16 +156,18 @@ void write_samples_svg(const std::string& path, const std::vector<Image_sample>&
 
 /// Raster picture (PNG, JPEG, PGM/PPM) of the same dots at the input's size, anti-aliased by 4 x 4
 /// supersampling of each pixel's coverage.
-void write_samples_raster(const std::string& path, const std::vector<Image_sample>& samples, int width, int height,
-                          double dot) {
+void write_samples_raster(const std::string& path, const std::vector<Image_sample>& samples, int width,
+                          int height, double dot) {
   io::Image picture;
   picture.width = width;
   picture.height = height;
   picture.channels = 3;
   std::vector<double> rgb(std::size_t(width) * std::size_t(height) * 3, dot_background);
   for (const Image_sample& s : samples) {
-    const int c0 = std::max(0, static_cast<int>(std::floor(s.x - dot))), c1 = std::min(width - 1, static_cast<int>(s.x + dot));
-    const int r0 = std::max(0, static_cast<int>(std::floor(s.y - dot))), r1 = std::min(height - 1, static_cast<int>(s.y + dot));
+    const int c0 = std::max(0, static_cast<int>(std::floor(s.x - dot))),
+              c1 = std::min(width - 1, static_cast<int>(s.x + dot));
+    const int r0 = std::max(0, static_cast<int>(std::floor(s.y - dot))),
+              r1 = std::min(height - 1, static_cast<int>(s.y + dot));
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c) {
         int inside = 0;
@@ -225,7 +233,8 @@ double psnr(const io::Image& image, const io::Image& picture) {
   const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
   for (std::size_t i = 0; i < n; ++i)
     for (int c = 0; c < image.channels; ++c) {
-      const double d = double(image.data[i * std::size_t(image.channels) + std::size_t(c)]) - double(picture.data[3 * i + std::size_t(c)]);
+      const double d = double(image.data[i * std::size_t(image.channels) + std::size_t(c)]) -
+                       double(picture.data[3 * i + std::size_t(c)]);
       sum += d * d;
     }
   const double mse = sum / double(n * std::size_t(image.channels));
@@ -234,8 +243,9 @@ double psnr(const io::Image& image, const io::Image& picture) {
 }  // namespace
 
 int run_sample_image(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"grey", "quiet"},
-                       {"input", "count", "radius", "method", "sigma-feature", "seed", "out", "svg", "picture", "mosaic"});
+  const Arguments args(
+      argv, {"grey", "quiet"},
+      {"input", "count", "radius", "method", "sigma-feature", "seed", "out", "svg", "picture", "mosaic"});
   const std::string input = args.get("input");
   Sampler_settings s;
   s.method = args.get_or("method", "elimination");
@@ -247,9 +257,11 @@ int run_sample_image(const std::vector<std::string>& argv) {
   }
   if (args.has("radius")) s.radius = args.get_positive_double("radius");
   if (s.method == "elimination" && s.count == 0) throw Usage_error("--method elimination needs --count M");
-  if (s.method == "darts" && s.count == 0 && s.radius == 0) throw Usage_error("--method darts needs --count M or --radius R");
+  if (s.method == "darts" && s.count == 0 && s.radius == 0)
+    throw Usage_error("--method darts needs --count M or --radius R");
   if (s.method == "continuous" && s.radius == 0)
-    throw Usage_error("--method continuous needs --radius R (pixels); --count M then caps the number of samples");
+    throw Usage_error(
+        "--method continuous needs --radius R (pixels); --count M then caps the number of samples");
   if (args.has("sigma-feature")) s.sigma_feature = args.get_scale("sigma-feature");
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
@@ -265,8 +277,8 @@ int run_sample_image(const std::vector<std::string>& argv) {
   if (args.has("grey")) image = io::to_grey(image);
   const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
   if (s.method != "continuous" && s.count > static_cast<long long>(pixels))
-    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) + " pixels of " +
-                      input);
+    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) +
+                      " pixels of " + input);
   if (s.method == "continuous") {
     // Samples at least d apart in a W x H rectangle number at most 2 W H / (sqrt(3) d^2) + (W + H) / d + 1
     // (Groemer). Colours count in the distance: with --sigma-feature S two samples are at least
@@ -281,10 +293,12 @@ int run_sample_image(const std::vector<std::string>& argv) {
     if (bound > most && (s.count == 0 || double(s.count) > most)) {
       char up_to[32];
       std::snprintf(up_to, sizeof up_to, "%.3g", bound);
-      throw Usage_error("--radius " + args.get("radius") + " lets up to " + up_to + " samples into the " +
-                        std::to_string(image.width) + " x " + std::to_string(image.height) +
-                        " picture (more than 2^27 = 134217728): give --count M (at most 2^27) to cap them, or a "
-                        "larger radius" + std::string(std::isinf(s.sigma_feature) ? "" : " or --sigma-feature"));
+      throw Usage_error(
+          "--radius " + args.get("radius") + " lets up to " + up_to + " samples into the " +
+          std::to_string(image.width) + " x " + std::to_string(image.height) +
+          " picture (more than 2^27 = 134217728): give --count M (at most 2^27) to cap them, or a "
+          "larger radius" +
+          std::string(std::isinf(s.sigma_feature) ? "" : " or --sigma-feature"));
     }
   }
 
@@ -304,11 +318,13 @@ int run_sample_image(const std::vector<std::string>& argv) {
   q.intrinsic_dimension = 2;
   // Fewer than two samples: degenerate_input, printed as null (a default Sampling_quality printed 0).
   const fs::Sampling_quality quality = fs::sampling_quality(positions, q);
-  const double d_hex = samples.empty() ? 1.0 : std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(samples.size())));
+  const double d_hex =
+      samples.empty() ? 1.0 : std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(samples.size())));
   const double dot = 0.3 * d_hex;
   if (args.has("out")) write_samples(outputs.path("out"), samples, std::size_t(image.channels));
   if (args.has("svg")) write_samples_svg(outputs.path("svg"), samples, image.width, image.height, dot);
-  if (args.has("picture")) write_samples_raster(outputs.path("picture"), samples, image.width, image.height, dot);
+  if (args.has("picture"))
+    write_samples_raster(outputs.path("picture"), samples, image.width, image.height, dot);
   double mosaic_psnr = std::numeric_limits<double>::quiet_NaN();
   if (args.has("mosaic")) {
     const io::Image mosaic = make_mosaic(samples, image.width, image.height);
@@ -318,10 +334,11 @@ int run_sample_image(const std::vector<std::string>& argv) {
   outputs.commit();
 
   std::ostringstream os;
-  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width << ", \"height\": " << image.height
-     << ", \"channels\": " << image.channels << ", \"method\": \"" << s.method << "\", \"samples\": " << samples.size()
-     << ", \"radius\": " << json_number(used_radius) << ", \"sigma_feature\": " << json_number(s.sigma_feature)
-     << ", \"seed\": " << seed << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
+  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width
+     << ", \"height\": " << image.height << ", \"channels\": " << image.channels << ", \"method\": \""
+     << s.method << "\", \"samples\": " << samples.size() << ", \"radius\": " << json_number(used_radius)
+     << ", \"sigma_feature\": " << json_number(s.sigma_feature) << ", \"seed\": " << seed
+     << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
      << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
      << ", \"seconds\": " << json_number(seconds);
   if (args.has("mosaic")) os << ", \"mosaic_psnr_db\": " << json_number(mosaic_psnr);

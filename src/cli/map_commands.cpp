@@ -38,8 +38,8 @@ Embedded_graph_2 to_graph(const io::Map_file& m) {
 
 int run_evaluate_map(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"explain", "lonlat", "quiet"},
-                       {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "crop-gap", "samples-out",
-                        "svg", "tracks", "matching"},
+                       {"threshold", "interval", "bearing", "crop-to-tracks", "crop-radius", "crop-gap",
+                        "samples-out", "svg", "tracks", "matching"},
                        4);
   if (args.positional().size() != 4)
     throw Usage_error("expected four files: GT_VERTICES GT_EDGES REC_VERTICES REC_EDGES");
@@ -48,8 +48,10 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     options.match_distance = args.get_positive_double("threshold");
     if (!(options.match_distance >= skeleton::internal::min_metric_distance &&
           options.match_distance <= skeleton::internal::max_metric_distance))
-      throw Usage_error("--threshold must be within [2^-450, 2^450] (about 3e-136 to 3e135: squares of distances "
-                        "near it stay normal doubles), got '" + args.get("threshold") + "'");
+      throw Usage_error(
+          "--threshold must be within [2^-450, 2^450] (about 3e-136 to 3e135: squares of distances "
+          "near it stay normal doubles), got '" +
+          args.get("threshold") + "'");
   }
   if (args.has("interval")) options.interval = args.get_positive_double("interval");
   if (args.has("bearing")) options.bearing_limit = args.get_positive_double("bearing");
@@ -75,11 +77,12 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     io::Map_file m = io::read_map(vertices, edges);
     lines = std::move(m.vertex_lines);
     if (m.self_loops > 0)
-      std::fprintf(stderr,
-                   "featurerecon evaluate-map: warning: %s line %zu: an edge joins a vertex to itself; %zu such "
-                   "edge%s no length and %s ignored\n",
-                   edges.c_str(), m.first_self_loop_line, m.self_loops, m.self_loops == 1 ? " has" : "s have",
-                   m.self_loops == 1 ? "is" : "are");
+      std::fprintf(
+          stderr,
+          "featurerecon evaluate-map: warning: %s line %zu: an edge joins a vertex to itself; %zu such "
+          "edge%s no length and %s ignored\n",
+          edges.c_str(), m.first_self_loop_line, m.self_loops, m.self_loops == 1 ? " has" : "s have",
+          m.self_loops == 1 ? "is" : "are");
     return to_graph(m);
   };
   Embedded_graph_2 gt = read(p[0], p[1], gt_lines);
@@ -110,7 +113,8 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     for (const auto& [file, graph] : {std::make_pair(p[0], &gt), std::make_pair(p[2], &rec)}) {
       std::vector<double> lengths;
       bool degrees = true;
-      for (const auto& q : graph->positions) degrees = degrees && std::abs(q[0]) <= 180 && std::abs(q[1]) <= 90;
+      for (const auto& q : graph->positions)
+        degrees = degrees && std::abs(q[0]) <= 180 && std::abs(q[1]) <= 90;
       for (const Edge& e : graph->edges)
         lengths.push_back(std::hypot(graph->positions[e[1]][0] - graph->positions[e[0]][0],
                                      graph->positions[e[1]][1] - graph->positions[e[0]][1]));
@@ -118,8 +122,10 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
       std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2), lengths.end());
       const double median = lengths[lengths.size() / 2];
       if (median > 0 && median < 0.01)
-        throw io::Input_error(file + ": the vertices look like longitude and latitude in degrees (median edge " +
-                              json_number(median) + ", all within +-180 and +-90), but the maps are read in metres: "
+        throw io::Input_error(file +
+                              ": the vertices look like longitude and latitude in degrees (median edge " +
+                              json_number(median) +
+                              ", all within +-180 and +-90), but the maps are read in metres: "
                               "give --lonlat, or project them to metres first");
     }
   Transverse_mercator projection;
@@ -138,16 +144,18 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     Progress cropping("cropping the ground truth", args.has("quiet"));
     crop_options.progress = std::ref(cropping);
     Cropped_map cropped = crop_map_to_trips(gt, crop_trips, crop_options);
-    cropping.done(std::to_string(cropped.map.edges.size()) + " of " + std::to_string(gt.edges.size()) + " edges");
+    cropping.done(std::to_string(cropped.map.edges.size()) + " of " + std::to_string(gt.edges.size()) +
+                  " edges");
     gt = std::move(cropped.map);
     crop_trace_points = cropped.trace_points;
   }
-  options.keep_samples = args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
+  options.keep_samples =
+      args.has("samples-out") || args.has("svg") || args.has("explain") || args.has("tracks");
   Progress matching_progress("matching samples", args.has("quiet"));
   options.progress = std::ref(matching_progress);
   const Map_comparison_result r = compare_maps(gt, rec, options);
-  matching_progress.done(std::to_string(r.matched) + " pairs of " + std::to_string(r.ground_truth_samples) + " and " +
-                         std::to_string(r.reconstruction_samples) + " samples");
+  matching_progress.done(std::to_string(r.matched) + " pairs of " + std::to_string(r.ground_truth_samples) +
+                         " and " + std::to_string(r.reconstruction_samples) + " samples");
   if (args.has("samples-out")) {
     if (lonlat) {  // the samples' positions in degrees, as the maps were
       Map_comparison_result in_degrees = r;
@@ -169,18 +177,21 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   const double undefined = std::numeric_limits<double>::quiet_NaN();
   os << "{\"precision\": " << json_number(r.reconstruction_samples > 0 ? r.precision : undefined)
      << ", \"recall\": " << json_number(r.ground_truth_samples > 0 ? r.recall : undefined)
-     << ", \"f_score\": " << json_number(r.reconstruction_samples + r.ground_truth_samples > 0 ? r.f_score : undefined)
-     << ", \"matched\": " << r.matched
-     << ", \"ground_truth_samples\": " << r.ground_truth_samples
-     << ", \"reconstruction_samples\": " << r.reconstruction_samples << ", \"ground_truth_edges\": " << gt.edges.size()
-     << ", \"ground_truth_edges_before_crop\": " << gt_edges_before << ", \"threshold\": "
-     << json_number(options.match_distance) << ", \"interval\": " << json_number(options.interval)
+     << ", \"f_score\": "
+     << json_number(r.reconstruction_samples + r.ground_truth_samples > 0 ? r.f_score : undefined)
+     << ", \"matched\": " << r.matched << ", \"ground_truth_samples\": " << r.ground_truth_samples
+     << ", \"reconstruction_samples\": " << r.reconstruction_samples
+     << ", \"ground_truth_edges\": " << gt.edges.size()
+     << ", \"ground_truth_edges_before_crop\": " << gt_edges_before
+     << ", \"threshold\": " << json_number(options.match_distance)
+     << ", \"interval\": " << json_number(options.interval)
      << ", \"bearing\": " << json_number(options.bearing_limit) << ", \"matching\": \"" << matching << "\"";
   if (args.has("crop-to-tracks"))
     os << ", \"crop\": {\"radius\": " << json_number(crop_options.radius)
        << ", \"sample_interval\": " << json_number(crop_options.sample_interval)
        << ", \"trace_step\": " << json_number(crop_options.trace_step)
-       << ", \"max_gap\": " << json_number(crop_options.max_gap) << ", \"trace_points\": " << crop_trace_points << "}";
+       << ", \"max_gap\": " << json_number(crop_options.max_gap)
+       << ", \"trace_points\": " << crop_trace_points << "}";
   if (lonlat)
     os << ", \"lonlat\": true, \"central_meridian\": " << json_number(projection.central_meridian)
        << ", \"origin_latitude\": " << json_number(projection.origin_latitude);
@@ -203,7 +214,8 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     list("missed_by_trips", b.missed_by_trips);
     list("spurious_by_trips", b.spurious_by_trips);
     os << "\"ground_truth_driven\": " << b.ground_truth_driven << ", \"matched_driven\": " << b.matched_driven
-       << ", \"recall_of_driven\": " << json_number(b.ground_truth_driven > 0 ? b.recall_of_driven : undefined) << "}";
+       << ", \"recall_of_driven\": "
+       << json_number(b.ground_truth_driven > 0 ? b.recall_of_driven : undefined) << "}";
   }
   os << "}\n";
   std::fputs(os.str().c_str(), stdout);
@@ -212,14 +224,33 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
 
 int run_synthetic_city(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet"},
-                       {"layout", "columns", "rows", "block-width", "block-height", "rotation", "jitter", "missing",
-                        "curvature", "trips", "speed", "interval", "noise", "bias", "lane-offset", "seed",
-                        "out-tracks", "out-vertices", "out-edges", "out-streets-vertices", "out-streets-edges"});
+                       {"layout",
+                        "columns",
+                        "rows",
+                        "block-width",
+                        "block-height",
+                        "rotation",
+                        "jitter",
+                        "missing",
+                        "curvature",
+                        "trips",
+                        "speed",
+                        "interval",
+                        "noise",
+                        "bias",
+                        "lane-offset",
+                        "seed",
+                        "out-tracks",
+                        "out-vertices",
+                        "out-edges",
+                        "out-streets-vertices",
+                        "out-streets-edges"});
   for (const char* required : {"out-tracks", "out-vertices", "out-edges"})
     if (!args.has(required)) throw Usage_error(std::string("--") + required + " is required");
   if (args.has("out-streets-vertices") != args.has("out-streets-edges"))
     throw Usage_error("--out-streets-vertices and --out-streets-edges go together");
-  Outputs outputs(args, {"out-tracks", "out-vertices", "out-edges", "out-streets-vertices", "out-streets-edges"});
+  Outputs outputs(args,
+                  {"out-tracks", "out-vertices", "out-edges", "out-streets-vertices", "out-streets-edges"});
   Synthetic_city_options o;
   const std::string layout = args.get_or("layout", "grid");
   if (layout == "organic")
@@ -232,7 +263,8 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     const long long v = args.get_int(name);
     if (v < least) throw Usage_error(std::string("--") + name + " must be >= " + std::to_string(least));
     if (v > most)
-      throw Usage_error(std::string("--") + name + " must be at most " + std::to_string(most) + ", got " + args.get(name));
+      throw Usage_error(std::string("--") + name + " must be at most " + std::to_string(most) + ", got " +
+                        args.get(name));
     field = static_cast<std::size_t>(v);
   };
   const long long any_count = std::numeric_limits<long long>::max();
@@ -246,9 +278,11 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     if (!args.has(name)) return;
     const double v = args.get_double(name);
     if (open_low ? !(v > low) : !(v >= low))
-      throw Usage_error(std::string("--") + name + " must be " + (open_low ? "> " : ">= ") + json_number(low) +
-                        ", got '" + args.get(name) + "'");
-    if (v > high) throw Usage_error(std::string("--") + name + " must be <= " + json_number(high) + ", got '" + args.get(name) + "'");
+      throw Usage_error(std::string("--") + name + " must be " + (open_low ? "> " : ">= ") +
+                        json_number(low) + ", got '" + args.get(name) + "'");
+    if (v > high)
+      throw Usage_error(std::string("--") + name + " must be <= " + json_number(high) + ", got '" +
+                        args.get(name) + "'");
     field = v;
   };
   const double any = std::numeric_limits<double>::max();
@@ -281,19 +315,26 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
       ++fixes;
     }
   io::write_text_file(outputs.path("out-tracks"), tracks);
-  io::write_map(outputs.path("out-vertices"), outputs.path("out-edges"), city.driven.positions, city.driven.edges);
+  io::write_map(outputs.path("out-vertices"), outputs.path("out-edges"), city.driven.positions,
+                city.driven.edges);
   if (args.has("out-streets-vertices"))
-    io::write_map(outputs.path("out-streets-vertices"), outputs.path("out-streets-edges"), city.streets.positions,
-                  city.streets.edges);
+    io::write_map(outputs.path("out-streets-vertices"), outputs.path("out-streets-edges"),
+                  city.streets.positions, city.streets.edges);
   outputs.commit();
   if (fixes == 0 && !city.trips.empty())
-    std::fprintf(stderr, "featurerecon synthetic-city: warning: no trip lasted one sampling interval, no fix was "
-                         "recorded (--interval %g s, --speed %g m/s)\n", o.sampling_interval, o.speed);
-  auto length = [](const Embedded_graph_2& g) { return skeleton::internal::map_length(g.positions, g.edges); };
+    std::fprintf(stderr,
+                 "featurerecon synthetic-city: warning: no trip lasted one sampling interval, no fix was "
+                 "recorded (--interval %g s, --speed %g m/s)\n",
+                 o.sampling_interval, o.speed);
+  auto length = [](const Embedded_graph_2& g) {
+    return skeleton::internal::map_length(g.positions, g.edges);
+  };
   std::ostringstream os;
   os << "{\"layout\": \"" << layout << "\", \"intersections\": " << o.columns * o.rows
-     << ", \"vertices\": " << city.streets.positions.size() << ", \"street_edges\": " << city.streets.edges.size()
-     << ", \"driven_edges\": " << city.driven.edges.size() << ", \"street_length\": " << json_number(length(city.streets))
+     << ", \"vertices\": " << city.streets.positions.size()
+     << ", \"street_edges\": " << city.streets.edges.size()
+     << ", \"driven_edges\": " << city.driven.edges.size()
+     << ", \"street_length\": " << json_number(length(city.streets))
      << ", \"driven_length\": " << json_number(length(city.driven)) << ", \"trips\": " << city.trips.size()
      << ", \"fixes\": " << fixes << ", \"interval\": " << json_number(o.sampling_interval)
      << ", \"noise\": " << json_number(o.noise) << ", \"curvature\": " << json_number(o.curvature)

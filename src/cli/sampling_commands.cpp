@@ -29,29 +29,33 @@ using Pwn = std::pair<K::Point_3, K::Vector_3>;
 namespace fs = FeatureRecon::sampling;
 
 double sigma_feature_of(const Arguments& args) {
-  return args.has("sigma-feature") ? args.get_scale("sigma-feature") : std::numeric_limits<double>::infinity();
+  return args.has("sigma-feature") ? args.get_scale("sigma-feature")
+                                   : std::numeric_limits<double>::infinity();
 }
 
 /// Intrinsic dimension and measure of a 3D cloud, as the elimination derives them.
 std::pair<int, double> domain_of(const std::vector<std::array<double, 3>>& p) {
   const fs::internal::Knn_3 knn(p);
   const int dim = fs::internal::estimate_intrinsic_dimension(p, knn);
-  return {dim, dim == 2 ? fs::internal::estimate_surface_area(p, knn) : fs::internal::bounding_box_measure<3>(p)};
+  return {dim,
+          dim == 2 ? fs::internal::estimate_surface_area(p, knn) : fs::internal::bounding_box_measure<3>(p)};
 }
 }  // namespace
 
 int run_sample(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"unoriented", "quiet"},
-                       {"input", "count", "radius", "method", "sigma-position", "sigma-feature", "seed", "out",
-                        "normal-neighbors"});
+                       {"input", "count", "radius", "method", "sigma-position", "sigma-feature", "seed",
+                        "out", "normal-neighbors"});
   const std::string input = args.get("input"), output = args.get("out");
   Outputs outputs(args, {"out"});
   outputs.require_extension("out", {"ply", "off", "xyz"}, "a point cloud");
   const std::string method = args.get_or("method", "elimination");
   if (method != "elimination" && method != "darts")
     throw Usage_error("--method must be elimination or darts, got '" + method + "'");
-  if (!args.has("count") && !args.has("radius")) throw Usage_error("give --count M (exact count) or --radius R");
-  if (method == "elimination" && !args.has("count")) throw Usage_error("--method elimination needs --count M");
+  if (!args.has("count") && !args.has("radius"))
+    throw Usage_error("give --count M (exact count) or --radius R");
+  if (method == "elimination" && !args.has("count"))
+    throw Usage_error("--method elimination needs --count M");
   long long count = 0;
   if (args.has("count")) {
     count = args.get_int("count");
@@ -63,15 +67,15 @@ int run_sample(const std::vector<std::string>& argv) {
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
   const long long neighbors = args.has("normal-neighbors") ? args.get_int("normal-neighbors") : 18;
-  // K neighbours of every point are held at once: beyond a million that is no longer a neighbourhood (and 2^32
-  // wrapped to 0 in the estimator's unsigned count).
+  // K neighbours of every point are held at once: beyond a million that is no longer a neighbourhood (and
+  // 2^32 wrapped to 0 in the estimator's unsigned count).
   if (neighbors < 3 || neighbors > 1000000) throw Usage_error("--normal-neighbors must be in [3, 1000000]");
   const bool quiet = args.has("quiet");
 
   io::Point_cloud cloud = io::read_point_cloud(input);
   if (count > static_cast<long long>(cloud.points.size()))
-    throw Usage_error("--count " + std::to_string(count) + " exceeds the " + std::to_string(cloud.points.size()) +
-                      " points of " + input);
+    throw Usage_error("--count " + std::to_string(count) + " exceeds the " +
+                      std::to_string(cloud.points.size()) + " points of " + input);
   std::string normals = cloud.has_normals() ? "file" : "none";
   if (!cloud.has_normals() && std::isfinite(sigma_feature)) {
     Progress p("estimating normals", quiet);
@@ -102,14 +106,17 @@ int run_sample(const std::vector<std::string>& argv) {
     o.max_radius = radius;
     o.seed = static_cast<std::uint64_t>(seed);
     o.progress = std::ref(progress);
-    used_radius = fs::weighted_sample_elimination(items, static_cast<std::size_t>(count), std::back_inserter(kept), o, traits).radius;
+    used_radius = fs::weighted_sample_elimination(items, static_cast<std::size_t>(count),
+                                                  std::back_inserter(kept), o, traits)
+                      .radius;
   } else if (args.has("radius")) {
     fs::Dart_throwing_options o;
     o.sigma_position = sigma_position;
     o.sigma_feature = sigma_feature;
     o.seed = static_cast<std::uint64_t>(seed);
     o.progress = std::ref(progress);
-    if (args.has("count")) o.max_accepted = static_cast<std::size_t>(count);  // the first M in the visiting order
+    if (args.has("count"))
+      o.max_accepted = static_cast<std::size_t>(count);  // the first M in the visiting order
     used_radius = fs::bilateral_dart_throwing(items, radius, std::back_inserter(kept), o, traits).radius;
   } else {
     fs::Dart_throwing_count_options o;
@@ -117,7 +124,9 @@ int run_sample(const std::vector<std::string>& argv) {
     o.darts.sigma_feature = sigma_feature;
     o.darts.seed = static_cast<std::uint64_t>(seed);
     o.darts.progress = std::ref(progress);
-    used_radius = fs::bilateral_dart_throwing_count(items, static_cast<std::size_t>(count), std::back_inserter(kept), o, traits).radius;
+    used_radius = fs::bilateral_dart_throwing_count(items, static_cast<std::size_t>(count),
+                                                    std::back_inserter(kept), o, traits)
+                      .radius;
   }
   progress.done(std::to_string(kept.size()) + " of " + std::to_string(items.size()) + " points kept");
   const double seconds = progress.seconds();
@@ -141,11 +150,15 @@ int run_sample(const std::vector<std::string>& argv) {
     bilateral_rho = fs::sampling_quality(kept_items, q, traits).relative_radius;
   }
   std::ostringstream os;
-  os << "{\"input\": " << json_string(input) << ", \"points\": " << items.size() << ", \"kept\": " << kept.size()
-     << ", \"method\": \"" << method << "\", \"radius\": " << json_number(used_radius)
-     << ", \"sigma_position\": " << json_number(sigma_position) << ", \"sigma_feature\": " << json_number(sigma_feature)
-     << ", \"normals\": \"" << normals << "\", \"colors\": \""
-     << (!cloud.has_colors() ? "none" : io::file_extension(outputs.path("out")) == "ply" ? "file" : "dropped")
+  os << "{\"input\": " << json_string(input) << ", \"points\": " << items.size()
+     << ", \"kept\": " << kept.size() << ", \"method\": \"" << method
+     << "\", \"radius\": " << json_number(used_radius)
+     << ", \"sigma_position\": " << json_number(sigma_position)
+     << ", \"sigma_feature\": " << json_number(sigma_feature) << ", \"normals\": \"" << normals
+     << "\", \"colors\": \""
+     << (!cloud.has_colors()                                ? "none"
+         : io::file_extension(outputs.path("out")) == "ply" ? "file"
+                                                            : "dropped")
      << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
      << "\", \"seed\": " << seed << ", \"intrinsic_dimension\": " << dimension
      << ", \"domain_measure\": " << json_number(measure)
@@ -159,19 +172,22 @@ int run_sample(const std::vector<std::string>& argv) {
 
 int run_sample_stats(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"periodic", "quiet"},
-                       {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature", "spectrum",
-                        "max-frequency"});
+                       {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature",
+                        "spectrum", "max-frequency"});
   if (args.has("spectrum") && !args.has("periodic"))
     throw Usage_error("--spectrum needs --periodic (2D samples on the unit torus)");
   Outputs outputs(args, {"spectrum"});
   fs::Sampling_spectrum_options spectrum_options;
   if (args.has("max-frequency")) {
-    if (!args.has("periodic")) throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
+    if (!args.has("periodic"))
+      throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
     const long long f = args.get_int("max-frequency");
     if (f < 1) throw Usage_error("--max-frequency must be >= 1");
     if (f > 16384)  // the library's limit, named here as the option
-      throw Usage_error("--max-frequency must be at most 16384 (the periodogram holds (2 F + 1)(F + 1) complex sums, "
-                        "8.6 GB at 16384), got " + args.get("max-frequency"));
+      throw Usage_error(
+          "--max-frequency must be at most 16384 (the periodogram holds (2 F + 1)(F + 1) complex sums, "
+          "8.6 GB at 16384), got " +
+          args.get("max-frequency"));
     spectrum_options.max_frequency = static_cast<std::size_t>(f);
   }
   const std::string input = args.get("input");
@@ -191,8 +207,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   fs::Sampling_spectrum spectrum;
   bool has_spectrum = false;
   std::size_t dimension = 0;
-  // PLY, OFF and XYZ (x y z [nx ny nz]) are point clouds, as `sample` reads them; other text files have 2 or 3
-  // columns (points in the plane or in a volume) or 6 (a cloud with normals).
+  // PLY, OFF and XYZ (x y z [nx ny nz]) are point clouds, as `sample` reads them; other text files have 2 or
+  // 3 columns (points in the plane or in a volume) or 6 (a cloud with normals).
   io::Point_file text;
   const std::string extension = io::file_extension(input);
   const bool cloud_format = extension == "ply" || extension == "off";
@@ -213,8 +229,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   if ((args.has("spectrum") || args.has("max-frequency")) && empty)
     throw io::Input_error(input + ": no samples to take the spectrum of");
   if ((args.has("spectrum") || args.has("max-frequency")) && columns != 2)
-    throw Usage_error("--spectrum and --max-frequency need 2-D samples on the unit torus; " + input + " has " +
-                      std::to_string(columns) + " numbers per line");
+    throw Usage_error("--spectrum and --max-frequency need 2-D samples on the unit torus; " + input +
+                      " has " + std::to_string(columns) + " numbers per line");
   if (empty) {
     q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
     q.domain_measure = o.domain_measure != 0 ? o.domain_measure : o.periodic ? 1.0 : 0.0;
@@ -242,10 +258,12 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     const io::Point_file& f = text;
     dimension = f.dimension;
     if (std::isfinite(o.sigma_feature))  // was silently ignored
-      throw Usage_error("--sigma-feature needs normals in " + input + " (lines 'x y z nx ny nz', or PLY / OFF)");
+      throw Usage_error("--sigma-feature needs normals in " + input +
+                        " (lines 'x y z nx ny nz', or PLY / OFF)");
     if (f.dimension == 2) {
       std::vector<K::Point_2> p;
-      for (std::size_t i = 0; i < f.size(); ++i) p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
+      for (std::size_t i = 0; i < f.size(); ++i)
+        p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
       q = fs::sampling_quality(p, o);
       measuring.done(std::to_string(q.samples) + " samples");
       if (o.periodic) {
@@ -276,9 +294,11 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     }
   }
   std::ostringstream os;
-  os << "{\"input\": " << json_string(input) << ", \"samples\": " << q.samples << ", \"dimension\": " << dimension
+  os << "{\"input\": " << json_string(input) << ", \"samples\": " << q.samples
+     << ", \"dimension\": " << dimension
      << ", \"intrinsic_dimension\": " << (o.intrinsic_dimension == 0 ? int(dimension) : o.intrinsic_dimension)
-     << ", \"domain_measure\": " << json_number(q.domain_measure) << ", \"periodic\": " << (o.periodic ? "true" : "false")
+     << ", \"domain_measure\": " << json_number(q.domain_measure)
+     << ", \"periodic\": " << (o.periodic ? "true" : "false")
      << ", \"hexagonal_distance\": " << json_statistic(q.hexagonal_distance, q.status)
      << ", \"minimum_distance\": " << json_statistic(q.minimum_distance, q.status)
      << ", \"relative_radius\": " << json_statistic(q.relative_radius, q.status)
@@ -286,9 +306,8 @@ int run_sample_stats(const std::vector<std::string>& argv) {
      << ", \"degenerate\": " << (q.status == Status::degenerate_input ? "true" : "false");
   if (has_spectrum)
     os << ", \"effective_nyquist\": " << json_number(spectrum.effective_nyquist)
-       << ", \"oscillation\": " << json_number(spectrum.oscillation)
-       << ", \"oscillation_band\": [" << json_number(spectrum.oscillation_from) << ", "
-       << json_number(spectrum.oscillation_to) << "]";
+       << ", \"oscillation\": " << json_number(spectrum.oscillation) << ", \"oscillation_band\": ["
+       << json_number(spectrum.oscillation_from) << ", " << json_number(spectrum.oscillation_to) << "]";
   os << "}\n";
   std::fputs(os.str().c_str(), stdout);
   return 0;

@@ -6,21 +6,21 @@
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
-#include <FeatureRecon/skeleton/road_map.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
-#include <FeatureRecon/skeleton/simplify_by_persistence.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
+#include <FeatureRecon/skeleton/road_map.h>
+#include <FeatureRecon/skeleton/simplify_by_persistence.h>
 
 #include <boost/graph/connected_components.hpp>
 
 #include <Eigen/Core>
 
+#include <array>
 #include <chrono>
 #include <cmath>
-#include <array>
+#include <cstdio>
 #include <limits>
 #include <map>
-#include <cstdio>
 #include <sstream>
 
 #include "../io/featurerecon_io.h"
@@ -39,8 +39,9 @@ namespace {
 std::size_t max_triangles_option(const Arguments& args) {
   if (!args.has("max-triangles")) return Skeleton_options().max_triangles;
   const long long n = args.get_int("max-triangles");
-  if (n < 0) throw Usage_error("--max-triangles must be an integer >= 0 (0: no limit), got '" +
-                               args.get("max-triangles") + "'");
+  if (n < 0)
+    throw Usage_error("--max-triangles must be an integer >= 0 (0: no limit), got '" +
+                      args.get("max-triangles") + "'");
   return static_cast<std::size_t>(n);
 }
 }  // namespace
@@ -74,7 +75,8 @@ int run_rips(const std::vector<std::string>& argv) {
   const std::size_t max_triangles = max_triangles_option(args);  // checked before any work
 
   const io::Point_file pf = io::read_points(points_path);
-  if (pf.size() == 0) std::fprintf(stderr, "featurerecon rips: warning: %s holds no points\n", points_path.c_str());
+  if (pf.size() == 0)
+    std::fprintf(stderr, "featurerecon rips: warning: %s holds no points\n", points_path.c_str());
   Point_matrix m;
   m.rows = pf.size();
   m.dimension = pf.dimension;
@@ -92,8 +94,8 @@ int run_rips(const std::vector<std::string>& argv) {
   Progress complex_progress("triangles", quiet);
   // build_flag_complex_2() with the limit named as the command line spells it.
   const Simplicial_complex_2 K = skeleton::internal::flag_complex_2(
-      g, max_triangles > 0 ? max_triangles : std::numeric_limits<std::size_t>::max(), std::ref(complex_progress),
-      "build_flag_complex_2", "--max-triangles");
+      g, max_triangles > 0 ? max_triangles : std::numeric_limits<std::size_t>::max(),
+      std::ref(complex_progress), "build_flag_complex_2", "--max-triangles");
   complex_progress.done(std::to_string(K.number_of_triangles()) + " triangles");
 
   Progress geodesic_progress("geodesic function", quiet);
@@ -105,11 +107,12 @@ int run_rips(const std::vector<std::string>& argv) {
   std::vector<std::array<double, 3>> positions(m.rows, {0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < m.rows; ++i)
     for (std::size_t c = 0; c < std::min<std::size_t>(3, m.dimension); ++c) positions[i][c] = m.row(i)[c];
-  io::write_complex(outputs.path("out"), K, positions, geo.values.empty() ? std::vector<double>(m.rows, 0.0) : geo.values);
+  io::write_complex(outputs.path("out"), K, positions,
+                    geo.values.empty() ? std::vector<double>(m.rows, 0.0) : geo.values);
   outputs.commit();
-  std::printf("wrote %s: %zu vertices, %zu edges, %zu triangles, %zu components (dimension %zu)\n", out_path.c_str(),
-              K.number_of_vertices, K.number_of_edges(), K.number_of_triangles(), geo.base_points.size(),
-              m.dimension);
+  std::printf("wrote %s: %zu vertices, %zu edges, %zu triangles, %zu components (dimension %zu)\n",
+              out_path.c_str(), K.number_of_vertices, K.number_of_edges(), K.number_of_triangles(),
+              geo.base_points.size(), m.dimension);
   return 0;
 }
 
@@ -150,16 +153,18 @@ int run_reeb(const std::vector<std::string>& argv) {
   if (args.has("json")) {
     os << "{\"vertices\": " << K.number_of_vertices << ", \"edges\": " << K.number_of_edges()
        << ", \"triangles\": " << K.number_of_triangles() << ", \"nodes\": " << R.nodes.size()
-       << ", \"arcs\": " << R.arcs.size() << ", \"loops\": " << R.loops() << ", \"minima\": " << R.count(minimum)
-       << ", \"maxima\": " << R.count(maximum) << ", \"up_forks\": " << R.count(up_fork)
-       << ", \"down_forks\": " << R.count(down_fork) << ", \"components\": " << R.components
-       << ", \"augmented_arcs\": " << augmented.number_of_arcs() << ", \"seconds\": " << json_number(seconds);
+       << ", \"arcs\": " << R.arcs.size() << ", \"loops\": " << R.loops()
+       << ", \"minima\": " << R.count(minimum) << ", \"maxima\": " << R.count(maximum)
+       << ", \"up_forks\": " << R.count(up_fork) << ", \"down_forks\": " << R.count(down_fork)
+       << ", \"components\": " << R.components << ", \"augmented_arcs\": " << augmented.number_of_arcs()
+       << ", \"seconds\": " << json_number(seconds);
     if (delta >= 0)
       os << ", \"simplified_by\": " << json_number(delta) << ", \"removed_branches\": " << removed_branches
          << ", \"removed_loops\": " << removed_loops;
     if (args.has("persistence")) {
       const Reeb_graph_persistence P = compute_reeb_graph_persistence(R);
-      auto list = [&os](const char* name, std::initializer_list<const std::vector<Reeb_persistence_pair>*> parts) {
+      auto list = [&os](const char* name,
+                        std::initializer_list<const std::vector<Reeb_persistence_pair>*> parts) {
         os << ", \"" << name << "\": [";
         bool first = true;
         for (const auto* part : parts)
@@ -176,8 +181,8 @@ int run_reeb(const std::vector<std::string>& argv) {
   } else {
     os << "complex: " << K.number_of_vertices << " vertices, " << K.number_of_edges() << " edges, "
        << K.number_of_triangles() << " triangles\n"
-       << "Reeb graph: " << R.nodes.size() << " nodes, " << R.arcs.size() << " arcs, " << R.loops() << " loops, "
-       << R.components << " components\n"
+       << "Reeb graph: " << R.nodes.size() << " nodes, " << R.arcs.size() << " arcs, " << R.loops()
+       << " loops, " << R.components << " components\n"
        << "nodes: " << R.count(minimum) << " minima, " << R.count(maximum) << " maxima, " << R.count(up_fork)
        << " up-forks, " << R.count(down_fork) << " down-forks\n"
        << "time: " << seconds << " s\n";
@@ -188,8 +193,9 @@ int run_reeb(const std::vector<std::string>& argv) {
 
 namespace {
 /// Greedy thinning in input order: a point is kept when no kept point lies within `spacing`. Kept points are
-/// hashed by the cells of their first (up to) three coordinates: points within `spacing` lie in neighbouring cells
-/// of any projection, so 27 cells are probed in any dimension (not 3^d), and the distance is checked in full.
+/// hashed by the cells of their first (up to) three coordinates: points within `spacing` lie in neighbouring
+/// cells of any projection, so 27 cells are probed in any dimension (not 3^d), and the distance is checked in
+/// full.
 std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
   std::vector<std::size_t> kept;
   if (spacing <= 0) {
@@ -203,7 +209,8 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
   for (std::size_t i = 0; i < m.rows; ++i) {
     std::array<long long, 3> cell{0, 0, 0};
     for (std::size_t c = 0; c < hashed; ++c) {
-      // Clamped so that far-out coordinates cannot overflow the cast (they only share cells, checked exactly).
+      // Clamped so that far-out coordinates cannot overflow the cast (they only share cells, checked
+      // exactly).
       const double q = std::floor(m.row(i)[c] / spacing);
       cell[c] = static_cast<long long>(std::max(-4e18, std::min(4e18, q)));
     }
@@ -215,8 +222,8 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
       const auto it = grid.find(probe);
       if (it == grid.end()) continue;
       for (const std::size_t j : it->second) {
-        // Scaled where squares would underflow or overflow (a spacing of 1e-200 kept copies, of 1e190 points 1e185
-        // apart).
+        // Scaled where squares would underflow or overflow (a spacing of 1e-200 kept copies, of 1e190 points
+        // 1e185 apart).
         if (FeatureRecon::skeleton::internal::point_distance(m.row(i), m.row(j), m.dimension) < spacing) {
           close = true;
           break;
@@ -233,20 +240,21 @@ std::vector<std::size_t> thin_points(const Point_matrix& m, double spacing) {
 
 /// The thinning of points whose radius was estimated.
 struct Thinning {
-  double spacing = 0;        ///< 0: none
-  double cap = 0;            ///< (R - gap radius) / 2
-  bool beyond_cap = false;   ///< the spacing exceeds the cap (see thinning_spacing())
+  double spacing = 0;           ///< 0: none
+  double cap = 0;               ///< (R - gap radius) / 2
+  bool beyond_cap = false;      ///< the spacing exceeds the cap (see thinning_spacing())
   double triangles_at_cap = 0;  ///< the rough triangle count at the cap, when beyond_cap
 };
 
-/// None while a point has at most 32 neighbours within R on average (the profile's count at the first radius >= R);
-/// else the smallest profile radius S after which about 32 remain (C(R) / (1 + C(S)) <= 32: each kept point stands
-/// for itself and its C(S) neighbours), at most (R - gap radius) / 2: thinning at S moves a gap g between points to
-/// at most g + 2S between kept ones, and gaps are below the gap radius (at 95 % where points lie at random). The cap
-/// is passed when at the cap the complex would still hold more than a quarter of `max_triangles` (roughly n' C'^2 /
-/// 6 for n' = n / (1 + C(cap)) kept points with C' = C(R) / (1 + C(cap)) neighbours each): noise in many dimensions
-/// keeps every point farther than the cap from all others (20,000 points of a curve in R^50 with noise 0.2: 1.7
-/// apart, radius 5.05, cap 1.52, about 2 x 10^10 triangles there; thinned at 2: 1,214 points and the two loops).
+/// None while a point has at most 32 neighbours within R on average (the profile's count at the first radius
+/// >= R); else the smallest profile radius S after which about 32 remain (C(R) / (1 + C(S)) <= 32: each kept
+/// point stands for itself and its C(S) neighbours), at most (R - gap radius) / 2: thinning at S moves a gap
+/// g between points to at most g + 2S between kept ones, and gaps are below the gap radius (at 95 % where
+/// points lie at random). The cap is passed when at the cap the complex would still hold more than a quarter
+/// of `max_triangles` (roughly n' C'^2 / 6 for n' = n / (1 + C(cap)) kept points with C' = C(R) / (1 +
+/// C(cap)) neighbours each): noise in many dimensions keeps every point farther than the cap from all others
+/// (20,000 points of a curve in R^50 with noise 0.2: 1.7 apart, radius 5.05, cap 1.52, about 2 x 10^10
+/// triangles there; thinned at 2: 1,214 points and the two loops).
 Thinning thinning_spacing(const Rips_radius_estimate& e, std::size_t max_triangles) {
   constexpr double kept_neighbours = 32;
   Thinning t;
@@ -266,7 +274,8 @@ Thinning thinning_spacing(const Rips_radius_estimate& e, std::size_t max_triangl
     return t;
   }
   double within_cap = 0;  // neighbours closer than the cap (the largest profile radius not above it)
-  for (std::size_t k = 0; k < e.radii.size() && e.radii[k] <= t.cap; ++k) within_cap = e.mean_neighbours_within[k];
+  for (std::size_t k = 0; k < e.radii.size() && e.radii[k] <= t.cap; ++k)
+    within_cap = e.mean_neighbours_within[k];
   const double kept = static_cast<double>(e.distinct_points) / (1 + within_cap),
                neighbours = within_radius / (1 + within_cap);
   t.triangles_at_cap = kept * neighbours * neighbours / 6;
@@ -279,15 +288,15 @@ Thinning thinning_spacing(const Rips_radius_estimate& e, std::size_t max_triangl
   return t;
 }
 
-/// The median of the distances from each point to its nearest other point (NaN for fewer than two points): the
-/// spacing that a Rips radius must exceed to join the points to their neighbours.
+/// The median of the distances from each point to its nearest other point (NaN for fewer than two points):
+/// the spacing that a Rips radius must exceed to join the points to their neighbours.
 double median_of(std::vector<double> v) {
   if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
   return v[v.size() / 2];
 }
-/// Above `most` points, over `most` of them evenly spread by index (each against all): a warning needs no more, and
-/// the exact graph costs as much as the Rips search above 3-D.
+/// Above `most` points, over `most` of them evenly spread by index (each against all): a warning needs no
+/// more, and the exact graph costs as much as the Rips search above 3-D.
 double median_nearest_distance(const Point_matrix& m, std::size_t most = 2000) {
   if (m.rows < 2) return std::numeric_limits<double>::quiet_NaN();
   std::vector<double> nearest;
@@ -301,7 +310,8 @@ double median_nearest_distance(const Point_matrix& m, std::size_t most = 2000) {
       const std::size_t i = t * m.rows / most;
       double best = std::numeric_limits<double>::infinity();
       for (std::size_t j = 0; j < m.rows; ++j)
-        if (j != i) best = std::min(best, skeleton::internal::point_distance(m.row(i), m.row(j), m.dimension));
+        if (j != i)
+          best = std::min(best, skeleton::internal::point_distance(m.row(i), m.row(j), m.dimension));
       nearest.push_back(best);
     }
   }
@@ -319,18 +329,50 @@ double median_nearest_distance(const std::vector<double>& D, std::size_t n) {  /
 
 int run_skeleton(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"quiet", "undirected", "first-point-positions", "lonlat"},
-                       {"points", "image", "ink", "ink-threshold", "tracks", "distance-matrix", "graph", "radius",
-                        "delta", "repair", "sample-spacing", "link-gap", "heading-tolerance", "min-density",
-                        "min-lateral-density", "density-radius", "density-heading-tolerance", "segment-support",
-                        "segment-turn-tolerance", "straight-confirmed", "quiet-ends", "local-support", "min-local-support", "prune",
-                        "merge", "branch-merge", "level-width", "smoothing", "smoothing-method", "max-gap",
+                       {"points",
+                        "image",
+                        "ink",
+                        "ink-threshold",
+                        "tracks",
+                        "distance-matrix",
+                        "graph",
+                        "radius",
+                        "delta",
+                        "repair",
+                        "sample-spacing",
+                        "link-gap",
+                        "heading-tolerance",
+                        "min-density",
+                        "min-lateral-density",
+                        "density-radius",
+                        "density-heading-tolerance",
+                        "segment-support",
+                        "segment-turn-tolerance",
+                        "straight-confirmed",
+                        "quiet-ends",
+                        "local-support",
+                        "min-local-support",
+                        "prune",
+                        "merge",
+                        "branch-merge",
+                        "level-width",
+                        "smoothing",
+                        "smoothing-method",
+                        "max-gap",
                         "max-triangles",
-                        "out-vertices", "out-edges", "graphml", "geojson", "ply", "svg", "picture-size"});
+                        "out-vertices",
+                        "out-edges",
+                        "graphml",
+                        "geojson",
+                        "ply",
+                        "svg",
+                        "picture-size"});
   const int inputs = int(args.has("points")) + int(args.has("image")) + int(args.has("tracks")) +
                      int(args.has("distance-matrix")) + int(args.has("graph"));
   if (inputs != 1)
-    throw Usage_error("give exactly one of --points FILE, --image FILE, --tracks FILE, --distance-matrix FILE and "
-                      "--graph FILE");
+    throw Usage_error(
+        "give exactly one of --points FILE, --image FILE, --tracks FILE, --distance-matrix FILE and "
+        "--graph FILE");
   const bool image = args.has("image");
   if (!image && (args.has("ink") || args.has("ink-threshold")))
     throw Usage_error("--ink and --ink-threshold apply to --image only");
@@ -340,13 +382,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (args.has("ink-threshold")) {
     ink_threshold = args.get_int("ink-threshold");
     if (ink_threshold < 1 || ink_threshold > 255)
-      throw Usage_error("--ink-threshold must be an integer grey level in [1, 255], got '" + args.get("ink-threshold") +
-                        "'");
+      throw Usage_error("--ink-threshold must be an integer grey level in [1, 255], got '" +
+                        args.get("ink-threshold") + "'");
   }
   if (args.has("graph") && args.has("radius"))
     throw Usage_error("--radius does not apply to --graph (the graph's edges are used as they are)");
-  // --points and --distance-matrix without --radius: estimate_rips_radius() derives it (and from it delta and, for
-  // points, the thinning spacing) once the input is read.
+  // --points and --distance-matrix without --radius: estimate_rips_radius() derives it (and from it delta
+  // and, for points, the thinning spacing) once the input is read.
   const bool estimated_radius = (args.has("points") || args.has("distance-matrix")) && !args.has("radius");
   // With --tracks every unset parameter is derived from the data (extract_road_map(): the median step between
   // fixes gives the radius, the radius the rest).
@@ -354,8 +396,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
   double radius = args.has("radius") ? args.get_positive_double("radius") : image ? 1.5 : 0.0;
   // Lengths derived from R and W go up to 5R (the prune height of tracks) and 2W (branch merging, the gap).
   if (radius > 1e300)
-    throw Usage_error("--radius must be at most 1e300 (lengths derived from it, up to 5R, must stay finite), got '" +
-                      args.get("radius") + "'");
+    throw Usage_error(
+        "--radius must be at most 1e300 (lengths derived from it, up to 5R, must stay finite), got '" +
+        args.get("radius") + "'");
   const std::string out_v = args.get("out-vertices"), out_e = args.get("out-edges");
   Outputs outputs(args, {"out-vertices", "out-edges", "graphml", "geojson", "ply", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
@@ -380,7 +423,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     throw Usage_error("--level-width must be >= 0 and at most 1e300 (2W must stay finite), got '" +
                       args.get("level-width") + "'");
   options.embedding.max_gap = args.has("max-gap") ? args.get_double("max-gap") : 0.0;
-  if (std::isnan(options.embedding.max_gap)) throw Usage_error("--max-gap must be a number (0: automatic, < 0: off)");
+  if (std::isnan(options.embedding.max_gap))
+    throw Usage_error("--max-gap must be a number (0: automatic, < 0: off)");
   if (args.has("smoothing")) {
     const long long it = args.get_int("smoothing");
     if (it < 0 || it > 1000000)
@@ -401,7 +445,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (args.has("branch-merge")) {
     options.branch_merge_distance = args.get_double("branch-merge");
     if (!(options.branch_merge_distance >= 0 && std::isfinite(options.branch_merge_distance)))
-      throw Usage_error("--branch-merge must be finite and >= 0 (0: off), got '" + args.get("branch-merge") + "'");
+      throw Usage_error("--branch-merge must be finite and >= 0 (0: off), got '" + args.get("branch-merge") +
+                        "'");
   }
   options.max_triangles = max_triangles_option(args);
   double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
@@ -411,12 +456,14 @@ int run_skeleton(const std::vector<std::string>& argv) {
                args.has("min-lateral-density") || args.has("density-radius") ||
                args.has("density-heading-tolerance") || args.has("undirected") || args.has("merge") ||
                args.has("first-point-positions") || args.has("segment-support") ||
-               args.has("segment-turn-tolerance") || args.has("straight-confirmed") || args.has("local-support") ||
-               args.has("min-local-support") || args.has("quiet-ends")))
-    throw Usage_error("--link-gap, --heading-tolerance, --undirected, --min-density, --min-lateral-density, "
-                      "--density-radius, --density-heading-tolerance, --first-point-positions, --segment-support, "
-                      "--segment-turn-tolerance, --straight-confirmed, --quiet-ends, --local-support, --min-local-support and "
-                      "--merge apply to --tracks only");
+               args.has("segment-turn-tolerance") || args.has("straight-confirmed") ||
+               args.has("local-support") || args.has("min-local-support") || args.has("quiet-ends")))
+    throw Usage_error(
+        "--link-gap, --heading-tolerance, --undirected, --min-density, --min-lateral-density, "
+        "--density-radius, --density-heading-tolerance, --first-point-positions, --segment-support, "
+        "--segment-turn-tolerance, --straight-confirmed, --quiet-ends, --local-support, --min-local-support "
+        "and "
+        "--merge apply to --tracks only");
   if (!gps && args.has("lonlat")) throw Usage_error("--lonlat applies to --tracks only");
   const bool lonlat = args.has("lonlat");
   Transverse_mercator projection;  // --lonlat: degrees <-> metres
@@ -442,13 +489,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (!(e.radius <= 1e300)) {
       char value[32];
       std::snprintf(value, sizeof value, "%.6g", e.radius);
-      throw io::Input_error(what + ": the radius derived from the data, " + value +
-                            ", exceeds 1e300 (lengths derived from it, up to 5R, must stay finite): give --radius");
+      throw io::Input_error(
+          what + ": the radius derived from the data, " + value +
+          ", exceeds 1e300 (lengths derived from it, up to 5R, must stay finite): give --radius");
     }
     radius = e.radius;
     if (!args.has("delta")) options.delta = e.delta;
-    input_json += ", \"radius_estimate\": {\"scale\": " + json_number(e.scale) + ", \"intrinsic_dimension\": " +
-                  json_number(e.intrinsic_dimension) + ", \"mean_neighbours\": " + json_number(e.mean_neighbours) +
+    input_json += ", \"radius_estimate\": {\"scale\": " + json_number(e.scale) +
+                  ", \"intrinsic_dimension\": " + json_number(e.intrinsic_dimension) +
+                  ", \"mean_neighbours\": " + json_number(e.mean_neighbours) +
                   ", \"gap_radius\": " + json_number(e.gap_radius) +
                   ", \"distinct_points\": " + std::to_string(e.distinct_points) +
                   ", \"reference_points\": " + std::to_string(e.reference_points) + "}";
@@ -465,9 +514,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
             all.data.push_back(picture.height - row - 0.5);
             ++all.rows;
           }
-      input_json = ", \"image_width\": " + std::to_string(picture.width) + ", \"image_height\": " +
-                   std::to_string(picture.height) + ", \"ink\": \"" + ink + "\", \"ink_threshold\": " +
-                   std::to_string(ink_threshold);
+      input_json = ", \"image_width\": " + std::to_string(picture.width) +
+                   ", \"image_height\": " + std::to_string(picture.height) + ", \"ink\": \"" + ink +
+                   "\", \"ink_threshold\": " + std::to_string(ink_threshold);
     } else {
       const io::Point_file pf = io::read_points(args.get("points"));
       all.rows = pf.size();
@@ -486,12 +535,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
         const Thinning thin = thinning_spacing(e, options.max_triangles);
         spacing = thin.spacing;
         if (thin.beyond_cap)
-          std::fprintf(stderr,
-                       "featurerecon skeleton: warning: the points are thinned at %.4g, beyond (R - gap radius) / 2 = "
-                       "%.4g, where gaps between kept points stay below R: thinned that little, the complex would "
-                       "hold about %.3g triangles (a quarter of --max-triangles is %.3g); give --sample-spacing to "
-                       "choose\n",
-                       spacing, thin.cap, thin.triangles_at_cap, static_cast<double>(options.max_triangles) / 4);
+          std::fprintf(
+              stderr,
+              "featurerecon skeleton: warning: the points are thinned at %.4g, beyond (R - gap radius) / 2 = "
+              "%.4g, where gaps between kept points stay below R: thinned that little, the complex would "
+              "hold about %.3g triangles (a quarter of --max-triangles is %.3g); give --sample-spacing to "
+              "choose\n",
+              spacing, thin.cap, thin.triangles_at_cap, static_cast<double>(options.max_triangles) / 4);
       }
     }
     const std::vector<std::size_t> kept = thin_points(all, spacing);
@@ -504,21 +554,24 @@ int run_skeleton(const std::vector<std::string>& argv) {
     const io::Point_file pf = io::read_points(args.get("distance-matrix"), "row", "distance");
     const std::string& path = args.get("distance-matrix");
     if (pf.dimension != pf.size())
-      throw io::Input_error(path + ": a distance matrix needs n rows of n numbers; got " + std::to_string(pf.size()) +
-                            " rows of " + std::to_string(pf.dimension));
+      throw io::Input_error(path + ": a distance matrix needs n rows of n numbers; got " +
+                            std::to_string(pf.size()) + " rows of " + std::to_string(pf.dimension));
     // Checked here too (the library checks the same) so that the message names the line of the file.
     const std::size_t n = pf.size();
     for (std::size_t i = 0; i < n; ++i) {
       const double* row = pf.coordinates.data() + i * n;
       const std::string at = path + ":" + std::to_string(pf.lines[i]) + ": ";
-      if (row[i] != 0) throw io::Input_error(at + "the diagonal entry of row " + std::to_string(i) + " is not 0");
+      if (row[i] != 0)
+        throw io::Input_error(at + "the diagonal entry of row " + std::to_string(i) + " is not 0");
       for (std::size_t j = 0; j < n; ++j) {
         if (row[j] < 0)
-          throw io::Input_error(at + "negative distance in column " + std::to_string(j) + " of row " + std::to_string(i));
+          throw io::Input_error(at + "negative distance in column " + std::to_string(j) + " of row " +
+                                std::to_string(i));
         if (j < i && row[j] != pf.coordinates[j * n + i])
-          throw io::Input_error(at + "not symmetric: entry (" + std::to_string(i) + ", " + std::to_string(j) + ") is " +
-                                json_number(row[j]) + ", entry (" + std::to_string(j) + ", " + std::to_string(i) +
-                                ") on line " + std::to_string(pf.lines[j]) + " is " + json_number(pf.coordinates[j * n + i]));
+          throw io::Input_error(at + "not symmetric: entry (" + std::to_string(i) + ", " + std::to_string(j) +
+                                ") is " + json_number(row[j]) + ", entry (" + std::to_string(j) + ", " +
+                                std::to_string(i) + ") on line " + std::to_string(pf.lines[j]) + " is " +
+                                json_number(pf.coordinates[j * n + i]));
       }
     }
     Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> D(
@@ -542,13 +595,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
     g.number_of_vertices = cf.complex.number_of_vertices;
     g.edges = cf.complex.edges;
     for (const Edge& e : g.edges) {
-      // hypot scales: no overflow of the squares; a length beyond the largest double is refused naming its points
-      // (the edge's place in the file is lost: the complex sorts its edges).
+      // hypot scales: no overflow of the squares; a length beyond the largest double is refused naming its
+      // points (the edge's place in the file is lost: the complex sorts its edges).
       const auto &a = cf.positions[e[0]], &b = cf.positions[e[1]];
       const double length = std::hypot(std::hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]);
       if (!std::isfinite(length))
-        throw io::Input_error(args.get("graph") + ": the edge between points " + std::to_string(e[0]) + " and " +
-                              std::to_string(e[1]) + " is longer than the largest double");
+        throw io::Input_error(args.get("graph") + ": the edge between points " + std::to_string(e[0]) +
+                              " and " + std::to_string(e[1]) + " is longer than the largest double");
       g.edge_lengths.push_back(length);
     }
     m.rows = cf.positions.size();
@@ -562,10 +615,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
     go.max_link_gap = args.has("link-gap") ? args.get_double("link-gap") : 0.0;
     if (args.has("segment-support")) {  // unset: automatic; 0: no check
       const double v = args.get_double("segment-support");
-      if (!(v >= 0 && std::isfinite(v))) throw Usage_error("--segment-support must be >= 0 metres (0: no check)");
+      if (!(v >= 0 && std::isfinite(v)))
+        throw Usage_error("--segment-support must be >= 0 metres (0: no check)");
       go.segment_support = v > 0 ? v : -1.0;
     }
-    if (args.has("segment-turn-tolerance")) go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
+    if (args.has("segment-turn-tolerance"))
+      go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
     if (!(go.segment_turn_tolerance >= 0 && go.segment_turn_tolerance <= 180))
       throw Usage_error("--segment-turn-tolerance must be in [0, 180] degrees");
     auto fix_count = [&args](const std::string& flag, std::size_t& count) {  // a number of nearest fixes
@@ -580,14 +635,16 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("min-local-support")) go.min_local_support = args.get_double("min-local-support");
     if (!(go.min_local_support > 0 && go.min_local_support <= 1))
       throw Usage_error("--min-local-support must be in (0, 1] (a fraction of the segment support)");
-    if (args.has("straight-confirmed")) go.min_straight_confirmed_fraction = args.get_double("straight-confirmed");
+    if (args.has("straight-confirmed"))
+      go.min_straight_confirmed_fraction = args.get_double("straight-confirmed");
     if (!(go.min_straight_confirmed_fraction >= 0 && go.min_straight_confirmed_fraction <= 1))
       throw Usage_error("--straight-confirmed must be in [0, 1] (0: the turn rule always applies)");
     if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
     go.density_radius = args.has("density-radius") ? args.get_positive_double("density-radius") : 0.0;
     if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
     if (args.has("min-lateral-density")) go.min_lateral_density = args.get_double("min-lateral-density");
-    if (args.has("density-heading-tolerance")) go.density_heading_tolerance = args.get_double("density-heading-tolerance");
+    if (args.has("density-heading-tolerance"))
+      go.density_heading_tolerance = args.get_double("density-heading-tolerance");
     if (!(go.density_heading_tolerance >= 0 && go.density_heading_tolerance <= 180))
       throw Usage_error("--density-heading-tolerance must be in [0, 180] degrees");
     go.directed = !args.has("undirected");
@@ -599,7 +656,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
       throw Usage_error("--heading-tolerance must be in [0, 180] degrees");
     std::vector<Gps_trip> trips;
-    io::Track_origin origin;  // to name the file, line and trip id where the library names trip and fix indices
+    io::Track_origin
+        origin;  // to name the file, line and trip id where the library names trip and fix indices
     for (const auto& trip : io::read_track_trips(args.get("tracks"), &origin)) {
       trips.emplace_back();
       for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
@@ -622,7 +680,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     ro.delta = value("delta", options.delta);
     ro.repair_distance = value("repair", options.repair_distance);
     ro.prune_height = value("prune", options.prune_height);
-    if (args.has("merge") && !(args.get_double("merge") >= 0)) throw Usage_error("--merge must be >= 0 (0: off)");
+    if (args.has("merge") && !(args.get_double("merge") >= 0))
+      throw Usage_error("--merge must be >= 0 (0: off)");
     ro.merge_distance = value("merge", args.has("merge") ? args.get_double("merge") : 0.0);
     ro.traces = go;
     ro.max_triangles = options.max_triangles;
@@ -642,8 +701,11 @@ int run_skeleton(const std::vector<std::string>& argv) {
       for (const Gps_trip& trip : trips)
         for (const Gps_fix& f : trip) degrees = degrees && std::abs(f.x) <= 180 && std::abs(f.y) <= 90;
       if (degrees)
-        throw io::Input_error(args.get("tracks") + ": the fixes look like longitude and latitude in degrees (median "
-                              "step " + json_number(sample.median_step) + ", all within +-180 and +-90), but the "
+        throw io::Input_error(args.get("tracks") +
+                              ": the fixes look like longitude and latitude in degrees (median "
+                              "step " +
+                              json_number(sample.median_step) +
+                              ", all within +-180 and +-90), but the "
                               "tracks are read in metres: give --lonlat, or project them to metres first");
     }
     radius = road.used.rips_radius;
@@ -657,8 +719,10 @@ int run_skeleton(const std::vector<std::string>& argv) {
     use_merged = road.used.merge_distance > 0 && road.status != Status::degenerate_input;
     if (use_merged) merged = std::move(road.merged.skeleton);
     // Without merging the map is the skeleton itself: its length before and after.
-    const double unmerged_length = use_merged ? 0.0 : skeleton::internal::map_length(road.map.positions, road.map.edges);
-    input_json = ", \"trips\": " + std::to_string(trips.size()) + ", \"median_step\": " + json_number(sample.median_step) +
+    const double unmerged_length =
+        use_merged ? 0.0 : skeleton::internal::map_length(road.map.positions, road.map.edges);
+    input_json = ", \"trips\": " + std::to_string(trips.size()) +
+                 ", \"median_step\": " + json_number(sample.median_step) +
                  ", \"link_gap\": " + json_number(sample.max_link_gap) +
                  ", \"segment_support\": " + json_number(std::max(0.0, sample.segment_support)) +
                  ", \"segment_turn_tolerance\": " + json_number(sample.segment_turn_tolerance) +
@@ -677,20 +741,23 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"locally_rejected\": " + std::to_string(sample.locally_rejected) +
                  ", \"quiet_ends\": " + std::to_string(go.quiet_end_fixes) +
                  ", \"quiet_segments\": " + std::to_string(sample.quiet_segments) +
-                 ", \"min_density\": " +
-                 json_number(go.min_relative_density) + ", \"min_lateral_density\": " +
-                 json_number(go.min_lateral_density) + ", \"density_radius\": " + json_number(sample.density_radius) +
+                 ", \"min_density\": " + json_number(go.min_relative_density) +
+                 ", \"min_lateral_density\": " + json_number(go.min_lateral_density) +
+                 ", \"density_radius\": " + json_number(sample.density_radius) +
                  ", \"density_heading_tolerance\": " + json_number(sample.density_heading_tolerance) +
                  ", \"directed\": " + (go.directed ? "true" : "false") +
                  ", \"mean_positions\": " + (go.mean_positions ? "true" : "false") +
                  ", \"dropped\": " + std::to_string(sample.dropped) +  // by either filter
                  ", \"dropped_sparse\": " + std::to_string(sample.dropped - sample.dropped_lateral) +
-                 ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) + ", \"trip_links\": " +
-                 std::to_string(sample.trip_links.size()) + ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
-                 ", \"merge_distance\": " + json_number(road.used.merge_distance) + ", \"length_before_merge\": " +
-                 json_number(use_merged ? road.merged.length_before : unmerged_length) + ", \"length\": " +
-                 json_number(use_merged ? road.merged.length_after : unmerged_length);
-    if (use_merged) {  // how the written lines were drawn (the fields below without merge_ drew the skeleton before)
+                 ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) +
+                 ", \"trip_links\": " + std::to_string(sample.trip_links.size()) +
+                 ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
+                 ", \"merge_distance\": " + json_number(road.used.merge_distance) +
+                 ", \"length_before_merge\": " +
+                 json_number(use_merged ? road.merged.length_before : unmerged_length) +
+                 ", \"length\": " + json_number(use_merged ? road.merged.length_after : unmerged_length);
+    if (use_merged) {  // how the written lines were drawn (the fields below without merge_ drew the skeleton
+                       // before)
       const Embedding_options& drawn = skeleton::road_map_merge_options(road.used).embedding;
       input_json += std::string(", \"merge_smoothing\": \"") +
                     (drawn.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian") +
@@ -727,14 +794,17 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (args.has("geojson")) io::write_skeleton_geojson(outputs.path("geojson"), written, lonlat);
   if (args.has("ply")) io::write_skeleton_ply(outputs.path("ply"), written);
   if (args.has("svg")) {
-    // The points as the skeleton is drawn: their first two coordinates, above 3-D those of the PCA projection.
+    // The points as the skeleton is drawn: their first two coordinates, above 3-D those of the PCA
+    // projection.
     std::vector<std::array<double, 2>> xy;
     if (m.dimension > 3) {
       for (const auto& p : project_to_3d(m)) xy.push_back({p[0], p[1]});
     } else {
-      for (std::size_t i = 0; i < m.rows; ++i) xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
+      for (std::size_t i = 0; i < m.rows; ++i)
+        xy.push_back({m.row(i)[0], m.dimension > 1 ? m.row(i)[1] : 0.0});
     }
-    // The radius used (derived from tracks); a graph has none: its level width (median edge length) stands in.
+    // The radius used (derived from tracks); a graph has none: its level width (median edge length) stands
+    // in.
     picture.feature_size = args.has("graph") ? s.level_width : radius;
     io::write_skeleton_picture(outputs.path("svg"), xy, graph, picture);
   }
@@ -745,48 +815,56 @@ int run_skeleton(const std::vector<std::string>& argv) {
                        : args.has("graph")           ? "vertices"
                        : image                       ? "ink pixels (--ink, --ink-threshold)"
                                                      : "points";
-    std::fprintf(stderr, "featurerecon skeleton: warning: the input holds no %s: the skeleton is empty\n", what);
+    std::fprintf(stderr, "featurerecon skeleton: warning: the input holds no %s: the skeleton is empty\n",
+                 what);
   } else if (num_vertices(graph) == 0) {  // every part removed: say by which stage
     std::string why;
     if (gps && m.rows == 0)
       why = "the density filter dropped every sample (--min-density 0 --min-lateral-density 0 keep them)";
     else if (s.pruned_components > 0)
-      why = "pruning removed all " + std::to_string(s.pruned_components) + " component(s), each of height at most " +
-            json_number(options.prune_height) + " (--prune 0 keeps them)";
+      why = "pruning removed all " + std::to_string(s.pruned_components) +
+            " component(s), each of height at most " + json_number(options.prune_height) +
+            " (--prune 0 keeps them)";
     else
       why = "no part of it survived";
     std::fprintf(stderr, "featurerecon skeleton: warning: the skeleton is empty: %s\n", why.c_str());
   }
   if (!std::isnan(spacing_hint))
-    std::fprintf(stderr,
-                 "featurerecon skeleton: warning: at radius %s the Rips graph has %zu edge%s for %zu points (fewer "
-                 "than one neighbour per point), so the skeleton is mostly single points; the median distance from a "
-                 "point to its nearest neighbour is %.3g%s: give --radius above it (a few times it joins each point to "
-                 "its neighbours)\n",
-                 json_number(radius).c_str(), s.rips_edges, s.rips_edges == 1 ? "" : "s", sampled, spacing_hint,
-                 sampled > 2000 && !args.has("distance-matrix") ? " (over 2,000 of them)" : "");
+    std::fprintf(
+        stderr,
+        "featurerecon skeleton: warning: at radius %s the Rips graph has %zu edge%s for %zu points (fewer "
+        "than one neighbour per point), so the skeleton is mostly single points; the median distance from a "
+        "point to its nearest neighbour is %.3g%s: give --radius above it (a few times it joins each point "
+        "to "
+        "its neighbours)\n",
+        json_number(radius).c_str(), s.rips_edges, s.rips_edges == 1 ? "" : "s", sampled, spacing_hint,
+        sampled > 2000 && !args.has("distance-matrix") ? " (over 2,000 of them)" : "");
   std::size_t components = 0;
   {
     std::vector<int> comp(num_vertices(graph));
     if (!comp.empty()) components = static_cast<std::size_t>(boost::connected_components(graph, comp.data()));
   }
-  std::printf("{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, \"sample_spacing\": %s, "
-              "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, \"loops\": %zu, "
-              "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
-              "\"branch_merge\": %s, \"merged_branch_arcs\": %zu, \"prune\": %s, "
-              "\"level_width\": %s, \"max_gap\": %s, \"smoothing\": \"%s\", \"smoothing_rounds\": %zu%s, "
-              "\"seconds\": %s, "
-              "\"vertices_file\": %s, \"edges_file\": %s}\n",
-              input_points, sampled,
-              json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(), json_number(options.delta).c_str(),
-              json_number(options.repair_distance).c_str(), json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles,
-              num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph),
-              components, s.removed_branches, s.removed_loops, s.repaired, json_number(s.branch_merge_distance).c_str(),
-              s.merged_branch_arcs, json_number(options.prune_height).c_str(), json_number(s.level_width).c_str(),
-              json_number(s.max_gap).c_str(),
-              options.embedding.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian",
-              options.embedding.smoothing_iterations, input_json.c_str(), json_number(seconds).c_str(),
-              json_string(out_v).c_str(), json_string(out_e).c_str());
+  std::printf(
+      "{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, "
+      "\"sample_spacing\": %s, "
+      "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, "
+      "\"loops\": %zu, "
+      "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
+      "\"branch_merge\": %s, \"merged_branch_arcs\": %zu, \"prune\": %s, "
+      "\"level_width\": %s, \"max_gap\": %s, \"smoothing\": \"%s\", \"smoothing_rounds\": %zu%s, "
+      "\"seconds\": %s, "
+      "\"vertices_file\": %s, \"edges_file\": %s}\n",
+      input_points, sampled,
+      json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(),
+      json_number(options.delta).c_str(), json_number(options.repair_distance).c_str(),
+      json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles,
+      num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph), components,
+      s.removed_branches, s.removed_loops, s.repaired, json_number(s.branch_merge_distance).c_str(),
+      s.merged_branch_arcs, json_number(options.prune_height).c_str(), json_number(s.level_width).c_str(),
+      json_number(s.max_gap).c_str(),
+      options.embedding.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian",
+      options.embedding.smoothing_iterations, input_json.c_str(), json_number(seconds).c_str(),
+      json_string(out_v).c_str(), json_string(out_e).c_str());
   return 0;
 }
 

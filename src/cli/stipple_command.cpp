@@ -69,7 +69,8 @@ std::vector<std::array<double, 3>> make_palette(const io::Image& image, std::siz
   const std::size_t stride = std::max<std::size_t>(1, n / 65536);
   std::vector<std::array<double, 3>> colours;
   for (std::size_t i = 0; i < n; i += stride)
-    colours.push_back({image.data[3 * i] / 255.0, image.data[3 * i + 1] / 255.0, image.data[3 * i + 2] / 255.0});
+    colours.push_back(
+        {image.data[3 * i] / 255.0, image.data[3 * i + 1] / 255.0, image.data[3 * i + 2] / 255.0});
   auto d2 = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
   };
@@ -104,11 +105,13 @@ std::vector<std::array<double, 3>> make_palette(const io::Image& image, std::siz
   return centres;
 }
 
-std::size_t nearest_colour(const std::vector<std::array<double, 3>>& palette, const std::array<double, 3>& c) {
+std::size_t nearest_colour(const std::vector<std::array<double, 3>>& palette,
+                           const std::array<double, 3>& c) {
   std::size_t arg = 0;
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < palette.size(); ++j) {
-    const double d = (palette[j][0] - c[0]) * (palette[j][0] - c[0]) + (palette[j][1] - c[1]) * (palette[j][1] - c[1]) +
+    const double d = (palette[j][0] - c[0]) * (palette[j][0] - c[0]) +
+                     (palette[j][1] - c[1]) * (palette[j][1] - c[1]) +
                      (palette[j][2] - c[2]) * (palette[j][2] - c[2]);
     if (d < best) {
       best = d;
@@ -119,8 +122,10 @@ std::size_t nearest_colour(const std::vector<std::array<double, 3>>& palette, co
 }
 
 /// `count` distinct pixels drawn with probability proportional to the density (weighted sampling without
-/// replacement, Efraimidis-Spirakis keys u^(1/w) from the seed; ties by index): the start of the Lloyd methods.
-std::vector<std::size_t> weighted_pixels(const std::vector<double>& density, std::size_t count, std::uint64_t seed) {
+/// replacement, Efraimidis-Spirakis keys u^(1/w) from the seed; ties by index): the start of the Lloyd
+/// methods.
+std::vector<std::size_t> weighted_pixels(const std::vector<double>& density, std::size_t count,
+                                         std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::vector<std::pair<double, std::size_t>> key;
   key.reserve(density.size());
@@ -131,7 +136,9 @@ std::vector<std::size_t> weighted_pixels(const std::vector<double>& density, std
   }
   count = std::min(count, key.size());
   std::partial_sort(key.begin(), key.begin() + std::ptrdiff_t(count), key.end(),
-                    [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+                    [](const auto& a, const auto& b) {
+                      return a.first != b.first ? a.first > b.first : a.second < b.second;
+                    });
   std::vector<std::size_t> out(count);
   for (std::size_t i = 0; i < count; ++i) out[i] = key[i].second;
   return out;
@@ -157,13 +164,14 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& pixels, const 
     o.radii.resize(shape.size());
     for (std::size_t i = 0; i < shape.size(); ++i) o.radii[i] = R * shape[i];
     std::vector<std::size_t> kept;
-    fs::bilateral_dart_throwing(pixels, 1.0, std::back_inserter(kept), o);  // the radius is ignored with radii
+    fs::bilateral_dart_throwing(pixels, 1.0, std::back_inserter(kept),
+                                o);  // the radius is ignored with radii
     return kept;
   };
   double lo = 0, hi = 2.0;  // in units of sigma_position: d_hex is about 1
   std::vector<std::size_t> best = run(lo + 1e-9);
-  // Grow until a throw keeps fewer than `count` dots, or a single one (then every larger radius keeps one too:
-  // count 1 needs no bracket).
+  // Grow until a throw keeps fewer than `count` dots, or a single one (then every larger radius keeps one
+  // too: count 1 needs no bracket).
   for (std::size_t kept = run(hi).size(); kept >= count && kept > 1; kept = run(hi).size()) hi *= 2;
   for (int it = 0; it < 30; ++it) {
     const double mid = 0.5 * (lo + hi);
@@ -201,19 +209,26 @@ struct Stipple_report {
 
 const char* stop_name(fs::Lloyd_stop s) {
   switch (s) {
-    case fs::Lloyd_stop::iteration_cap: return "iteration_cap";
-    case fs::Lloyd_stop::energy_tolerance: return "energy_tolerance";
-    case fs::Lloyd_stop::move_tolerance: return "move_tolerance";
-    case fs::Lloyd_stop::callback: return "callback";
-    case fs::Lloyd_stop::interrupted: return "interrupted";
-    case fs::Lloyd_stop::no_descent: return "no_descent";
+    case fs::Lloyd_stop::iteration_cap:
+      return "iteration_cap";
+    case fs::Lloyd_stop::energy_tolerance:
+      return "energy_tolerance";
+    case fs::Lloyd_stop::move_tolerance:
+      return "move_tolerance";
+    case fs::Lloyd_stop::callback:
+      return "callback";
+    case fs::Lloyd_stop::interrupted:
+      return "interrupted";
+    case fs::Lloyd_stop::no_descent:
+      return "no_descent";
   }
   return "";
 }
 
 template <class Pixel, std::size_t C>
 std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
-                         const std::vector<std::array<double, 3>>& palette, Progress& progress, Stipple_report& report) {
+                         const std::vector<std::array<double, 3>>& palette, Progress& progress,
+                         Stipple_report& report) {
   const std::vector<Pixel> pixels = fs::image_pixels<Pixel>(image.width, image.height, image.data);
   const std::vector<double> density = darkness(image, s.gamma);
   const double area = double(pixels.size());
@@ -222,7 +237,8 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
   auto colour_at = [&](const std::array<double, 2>& p) {
     const int c = std::min(image.width - 1, std::max(0, int(std::floor(p[0]))));
     const int r = std::min(image.height - 1, std::max(0, int(std::floor(p[1]))));
-    return nearest_colour(palette, colour_of<Pixel, C>(pixels[std::size_t(r) * std::size_t(image.width) + std::size_t(c)]));
+    return nearest_colour(
+        palette, colour_of<Pixel, C>(pixels[std::size_t(r) * std::size_t(image.width) + std::size_t(c)]));
   };
   if (s.method == "lloyd") {
     const std::vector<std::size_t> start = weighted_pixels(density, s.count, s.seed);
@@ -231,7 +247,8 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
     fs::Lloyd_options o;
     o.max_iterations = s.iterations;
     o.progress = std::ref(progress);
-    const fs::Lloyd_result r = fs::lloyd_relaxation(sites, fs::Pixel_density(image.width, image.height, density), o);
+    const fs::Lloyd_result r =
+        fs::lloyd_relaxation(sites, fs::Pixel_density(image.width, image.height, density), o);
     for (const auto& p : r.sites) dots.push_back({p, colour_at(p)});
     report.iterations = r.history.size();
     report.stop = stop_name(r.stop);
@@ -275,13 +292,16 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
   return dots;
 }
 
-std::uint8_t to_byte(double v) { return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255)); }
+std::uint8_t to_byte(double v) {
+  return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255));
+}
 
-void write_svg(const std::string& path, const std::vector<Dot>& dots, const std::vector<std::array<double, 3>>& palette,
-               int width, int height, double dot) {
+void write_svg(const std::string& path, const std::vector<Dot>& dots,
+               const std::vector<std::array<double, 3>>& palette, int width, int height, double dot) {
   std::ostringstream os;
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-     << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+     << "\" viewBox=\"0 0 " << width << ' ' << height
+     << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
   char colour[8];
   for (std::size_t k = 0; k < palette.size(); ++k) {
     std::snprintf(colour, sizeof colour, "#%02x%02x%02x", to_byte(palette[k][0]), to_byte(palette[k][1]),
@@ -289,8 +309,8 @@ void write_svg(const std::string& path, const std::vector<Dot>& dots, const std:
     os << "<g fill=\"" << colour << "\">\n";
     for (const Dot& d : dots)
       if (d.colour == k)
-        os << "<circle cx=\"" << json_number(d.position[0]) << "\" cy=\"" << json_number(d.position[1]) << "\" r=\""
-           << json_number(dot) << "\"/>\n";
+        os << "<circle cx=\"" << json_number(d.position[0]) << "\" cy=\"" << json_number(d.position[1])
+           << "\" r=\"" << json_number(dot) << "\"/>\n";
     os << "</g>\n";
   }
   os << "</svg>\n";
@@ -298,8 +318,8 @@ void write_svg(const std::string& path, const std::vector<Dot>& dots, const std:
 }
 
 /// The same dots on white at the image's size, anti-aliased by 4 x 4 supersampling.
-void write_raster(const std::string& path, const std::vector<Dot>& dots, const std::vector<std::array<double, 3>>& palette,
-                  int width, int height, double dot) {
+void write_raster(const std::string& path, const std::vector<Dot>& dots,
+                  const std::vector<std::array<double, 3>>& palette, int width, int height, double dot) {
   std::vector<double> rgb(std::size_t(width) * std::size_t(height) * 3, 1.0);
   for (const Dot& d : dots) {
     const double x = d.position[0], y = d.position[1];
@@ -329,9 +349,11 @@ void write_raster(const std::string& path, const std::vector<Dot>& dots, const s
 }  // namespace
 
 int run_stipple(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"grey", "quiet"},
-                       {"count", "method", "sigma-feature", "iterations", "palette", "gamma", "seed", "out", "png"}, 1);
-  if (args.positional().size() != 1) throw Usage_error("give the picture to stipple: featurerecon stipple IMAGE ...");
+  const Arguments args(
+      argv, {"grey", "quiet"},
+      {"count", "method", "sigma-feature", "iterations", "palette", "gamma", "seed", "out", "png"}, 1);
+  if (args.positional().size() != 1)
+    throw Usage_error("give the picture to stipple: featurerecon stipple IMAGE ...");
   const std::string input = args.positional()[0];
   Stipple_settings s;
   s.method = args.get_or("method", "lloyd");
@@ -341,7 +363,8 @@ int run_stipple(const std::vector<std::string>& argv) {
   if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   s.count = static_cast<std::size_t>(count);
   if (args.has("sigma-feature")) s.sigma_feature = args.get_scale("sigma-feature");
-  const long long iterations = args.has("iterations") ? args.get_int("iterations") : (s.method == "kernel" ? 100 : 50);
+  const long long iterations =
+      args.has("iterations") ? args.get_int("iterations") : (s.method == "kernel" ? 100 : 50);
   if (iterations < 0 || iterations > 1000000)
     throw Usage_error("--iterations must be in [0, 1000000], got " + std::to_string(iterations));
   s.iterations = static_cast<std::size_t>(iterations);
@@ -354,7 +377,8 @@ int run_stipple(const std::vector<std::string>& argv) {
   s.seed = static_cast<std::uint64_t>(seed);
   if (!args.has("out") && !args.has("png")) throw Usage_error("give --out FILE.svg and/or --png FILE.png");
   if (args.has("out") && io::file_extension(args.get("out")) != "svg")
-    throw Usage_error("--out writes an SVG picture: give a file ending in .svg, got '" + args.get("out") + "'");
+    throw Usage_error("--out writes an SVG picture: give a file ending in .svg, got '" + args.get("out") +
+                      "'");
   Outputs outputs(args, {"out", "png"});
   outputs.require_extension("png", {"png", "jpg", "jpeg", "pgm", "ppm"}, "a raster picture");
 
@@ -362,7 +386,8 @@ int run_stipple(const std::vector<std::string>& argv) {
   if (args.has("grey")) image = io::to_grey(image);
   const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
   if (s.count > pixels)
-    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) + " pixels of " + input);
+    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) +
+                      " pixels of " + input);
   const std::vector<double> density = darkness(image, s.gamma);
   double total = 0, peak = 0;
   std::size_t inked = 0;
@@ -372,7 +397,8 @@ int run_stipple(const std::vector<std::string>& argv) {
     inked += d > 0;
   }
   if (!(total > 0)) {
-    double ink = 0;  // the darkness itself: a large --gamma makes every power of a darkness below 1 underflow to 0
+    double ink =
+        0;  // the darkness itself: a large --gamma makes every power of a darkness below 1 underflow to 0
     for (const double d : darkness(image, 1.0)) ink += d;
     if (ink > 0)
       throw Usage_error("--gamma " + json_number(s.gamma) + " makes the darkness of every pixel of " + input +
@@ -382,17 +408,19 @@ int run_stipple(const std::vector<std::string>& argv) {
   // More dots than pixels with ink: the extra dots had nowhere to go (kernel relaxation pushed them into the
   // picture's white corners, Lloyd left them on white pixels).
   if (s.count > inked)
-    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(inked) + " pixels of " +
-                      input + " with any darkness (of " + std::to_string(pixels) + ")");
+    throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(inked) +
+                      " pixels of " + input + " with any darkness (of " + std::to_string(pixels) + ")");
 
   const std::vector<std::array<double, 3>> palette = make_palette(image, std::size_t(palette_size), s.seed);
   Progress progress("stippling", args.has("quiet"));
   Stipple_report report;
-  const std::vector<Dot> dots = image.channels == 3 ? stipple<Rgb_pixel, 3>(image, s, palette, progress, report)
-                                                    : stipple<Grey_pixel, 1>(image, s, palette, progress, report);
+  const std::vector<Dot> dots = image.channels == 3
+                                    ? stipple<Rgb_pixel, 3>(image, s, palette, progress, report)
+                                    : stipple<Grey_pixel, 1>(image, s, palette, progress, report);
   progress.done(std::to_string(dots.size()) + " dots");
   const double seconds = progress.seconds();
-  // Dots of one size: at the darkest density their spacing is d_hex sqrt(mean / peak); half of that covers it.
+  // Dots of one size: at the darkest density their spacing is d_hex sqrt(mean / peak); half of that covers
+  // it.
   const double d_hex = std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(dots.size())));
   const double dot = std::max(0.5, 0.5 * d_hex * std::sqrt(total / double(pixels) / peak));
   if (args.has("out")) write_svg(outputs.path("out"), dots, palette, image.width, image.height, dot);
@@ -400,9 +428,10 @@ int run_stipple(const std::vector<std::string>& argv) {
   outputs.commit();
 
   std::ostringstream os;
-  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width << ", \"height\": " << image.height
-     << ", \"channels\": " << image.channels << ", \"method\": \"" << s.method << "\", \"dots\": " << dots.size()
-     << ", \"palette\": " << palette.size() << ", \"sigma_feature\": "
+  os << "{\"input\": " << json_string(input) << ", \"width\": " << image.width
+     << ", \"height\": " << image.height << ", \"channels\": " << image.channels << ", \"method\": \""
+     << s.method << "\", \"dots\": " << dots.size() << ", \"palette\": " << palette.size()
+     << ", \"sigma_feature\": "
      << json_number(s.method == "lloyd" ? std::numeric_limits<double>::infinity() : s.sigma_feature)
      << ", \"seed\": " << seed << ", \"iterations\": " << report.iterations << ", \"stop\": "
      << (report.stop.empty() ? "null" : "\"" + report.stop + "\"")  // darts: no iterations, no reason to stop

@@ -7,10 +7,10 @@
 #include <unistd.h>
 
 #include <cctype>
-#include <climits>
-#include <csignal>
 #include <cerrno>
+#include <climits>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -30,12 +30,14 @@ std::string where(const std::string& path, std::size_t line) {
 
 double parse_double(const std::string& t, const std::string& path, std::size_t line, const char* what) {
   double x = 0;
-  if (!parse_decimal(t, x)) throw Input_error(where(path, line) + "'" + t + "' is not a number (" + what + ")");
+  if (!parse_decimal(t, x))
+    throw Input_error(where(path, line) + "'" + t + "' is not a number (" + what + ")");
   if (!std::isfinite(x)) throw Input_error(where(path, line) + what + " is not finite ('" + t + "')");
   return x;
 }
 
-unsigned long long parse_index(const std::string& t, const std::string& path, std::size_t line, const char* what) {
+unsigned long long parse_index(const std::string& t, const std::string& path, std::size_t line,
+                               const char* what) {
   const char* s = t.c_str();
   char* end = nullptr;
   errno = 0;
@@ -54,9 +56,10 @@ std::ifstream open_input(const std::string& path) {
   return in;
 }
 
-/// std::getline that counts lines and drops a UTF-8 byte-order mark (some editors write one) from the first: it
-/// made the first trip id another trip's, and the first vertex id "not a number". Stripped from the line read, not
-/// skipped in the stream: a pipe (`<(command)`, /dev/stdin) can neither seek back nor always put bytes back.
+/// std::getline that counts lines and drops a UTF-8 byte-order mark (some editors write one) from the first:
+/// it made the first trip id another trip's, and the first vertex id "not a number". Stripped from the line
+/// read, not skipped in the stream: a pipe (`<(command)`, /dev/stdin) can neither seek back nor always put
+/// bytes back.
 bool read_line(std::istream& in, std::string& line, std::size_t& number) {
   if (!std::getline(in, line)) return false;
   if (++number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
@@ -88,8 +91,8 @@ Point_file read_points(const std::string& path, const std::string& row, const st
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (pf.dimension == 0) pf.dimension = t.size();
     if (t.size() != pf.dimension)
-      throw Input_error(where(path, number) + row + " has " + std::to_string(t.size()) + " " + value + "s, the first " +
-                        row + " has " + std::to_string(pf.dimension));
+      throw Input_error(where(path, number) + row + " has " + std::to_string(t.size()) + " " + value +
+                        "s, the first " + row + " has " + std::to_string(pf.dimension));
     for (const std::string& s : t) pf.coordinates.push_back(parse_double(s, path, number, value.c_str()));
     pf.lines.push_back(number);
   });
@@ -124,11 +127,11 @@ Complex_file read_complex(const std::string& path) {
   cf.values.reserve(reserve);
   for (unsigned long long i = 0; i < n; ++i) {
     if (!next(t))
-      throw Input_error(path + ": unexpected end of file after " + std::to_string(i) + " of " + std::to_string(n) +
-                        " vertex lines");
+      throw Input_error(path + ": unexpected end of file after " + std::to_string(i) + " of " +
+                        std::to_string(n) + " vertex lines");
     if (t.size() != 4)
-      throw Input_error(where(path, number) + "vertex " + std::to_string(i) + " must be 'x y z f' (4 numbers), got " +
-                        std::to_string(t.size()));
+      throw Input_error(where(path, number) + "vertex " + std::to_string(i) +
+                        " must be 'x y z f' (4 numbers), got " + std::to_string(t.size()));
     cf.positions.push_back({parse_double(t[0], path, number, "x"), parse_double(t[1], path, number, "y"),
                             parse_double(t[2], path, number, "z")});
     cf.values.push_back(parse_double(t[3], path, number, "f"));
@@ -137,16 +140,17 @@ Complex_file read_complex(const std::string& path) {
   std::vector<skeleton::Triangle> triangles;
   for (unsigned long long i = 0; i < m; ++i) {
     if (!next(t))
-      throw Input_error(path + ": unexpected end of file after " + std::to_string(i) + " of " + std::to_string(m) +
-                        " simplex lines");
+      throw Input_error(path + ": unexpected end of file after " + std::to_string(i) + " of " +
+                        std::to_string(m) + " simplex lines");
     if (t.size() != 2 && t.size() != 3)
-      throw Input_error(where(path, number) + "simplex " + std::to_string(i) + " must list 2 or 3 vertex indices, got " +
-                        std::to_string(t.size()));
+      throw Input_error(where(path, number) + "simplex " + std::to_string(i) +
+                        " must list 2 or 3 vertex indices, got " + std::to_string(t.size()));
     std::array<skeleton::Vertex_index, 3> v{};
     for (std::size_t c = 0; c < t.size(); ++c) {
       const unsigned long long x = parse_index(t[c], path, number, "vertex index");
       if (x >= n)
-        throw Input_error(where(path, number) + "vertex index " + t[c] + " out of range [0, " + std::to_string(n) + ")");
+        throw Input_error(where(path, number) + "vertex index " + t[c] + " out of range [0, " +
+                          std::to_string(n) + ")");
       v[c] = static_cast<skeleton::Vertex_index>(x);
     }
     if (v[0] == v[1] || (t.size() == 3 && (v[1] == v[2] || v[0] == v[2])))
@@ -156,7 +160,9 @@ Complex_file read_complex(const std::string& path) {
     else
       triangles.push_back({v[0], v[1], v[2]});
   }
-  if (next(t)) throw Input_error(where(path, number) + "unexpected content after the " + std::to_string(m) + " simplices");
+  if (next(t))
+    throw Input_error(where(path, number) + "unexpected content after the " + std::to_string(m) +
+                      " simplices");
   cf.complex = skeleton::make_simplicial_complex_2(n, std::move(edges), std::move(triangles));
   return cf;
 }
@@ -168,10 +174,12 @@ std::vector<std::string> split_csv(const std::string& line) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = line.find(',', start);
-    const std::string field = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string field =
+        line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const std::size_t first = field.find_first_not_of(" \t\r");
-    out.push_back(first == std::string::npos ? std::string()
-                                             : field.substr(first, field.find_last_not_of(" \t\r") - first + 1));
+    out.push_back(first == std::string::npos
+                      ? std::string()
+                      : field.substr(first, field.find_last_not_of(" \t\r") - first + 1));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -196,9 +204,10 @@ void for_each_csv_row(const std::string& path, Row row) {
 }  // namespace
 
 namespace {
-/// A vertex id of a map file: an integer (a decimal with a zero fraction, as some tools write them, is accepted when
-/// it is exact).
-long long parse_id(const std::string& t, const std::string& path, std::size_t line, const std::string& what = "vertex id") {
+/// A vertex id of a map file: an integer (a decimal with a zero fraction, as some tools write them, is
+/// accepted when it is exact).
+long long parse_id(const std::string& t, const std::string& path, std::size_t line,
+                   const std::string& what = "vertex id") {
   const char* s = t.c_str();
   char* end = nullptr;
   errno = 0;
@@ -219,17 +228,19 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
   std::map<long long, std::uint32_t> index;
   for_each_csv_row(vertices_path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() != 3)
-      throw Input_error(where(vertices_path, number) + "expected 'id,x,y', got " + std::to_string(t.size()) + " fields");
+      throw Input_error(where(vertices_path, number) + "expected 'id,x,y', got " + std::to_string(t.size()) +
+                        " fields");
     const long long id = parse_id(t[0], vertices_path, number);
     if (index.count(id)) throw Input_error(where(vertices_path, number) + "vertex id " + t[0] + " repeated");
     index[id] = static_cast<std::uint32_t>(m.positions.size());
-    m.positions.push_back({parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
+    m.positions.push_back(
+        {parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
     m.vertex_lines.push_back(number);
   });
   for_each_csv_row(edges_path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3 || t.size() > 4)
-      throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]', got " + std::to_string(t.size()) +
-                        " fields");
+      throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]', got " +
+                        std::to_string(t.size()) + " fields");
     std::array<std::uint32_t, 2> e{};
     for (int k = 0; k < 2; ++k) {
       const long long id = parse_id(t[1 + k], edges_path, number);
@@ -237,18 +248,21 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
       if (it == index.end()) throw Input_error(where(edges_path, number) + "unknown vertex id " + t[1 + k]);
       e[k] = it->second;
     }
-    if (t.size() == 4) (void)parse_id(t[3], edges_path, number, "edge flag");  // read and ignored, but an integer
+    if (t.size() == 4)
+      (void)parse_id(t[3], edges_path, number, "edge flag");  // read and ignored, but an integer
     if (e[0] == e[1] && m.self_loops++ == 0) m.first_self_loop_line = number;
     m.edges.push_back(e);
   });
   return m;
 }
 
-std::vector<std::array<double, 2>> read_track_points(const std::string& path, std::vector<std::size_t>* lines) {
+std::vector<std::array<double, 2>> read_track_points(const std::string& path,
+                                                     std::vector<std::size_t>* lines) {
   std::vector<std::array<double, 2>> p;
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3 || t.size() > 4)
-      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) + " values");
+      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) +
+                        " values");
     p.push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y")});
     if (lines != nullptr) lines->push_back(number);
   });
@@ -264,17 +278,20 @@ std::string Track_origin::locate(const std::string& path, const std::string& mes
   return message + " [" + path + ":" + std::to_string(lines[t][i]) + ", trip id '" + trip_ids[t] + "']";
 }
 
-std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path, Track_origin* origin) {
+std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path,
+                                                                 Track_origin* origin) {
   std::vector<std::vector<std::array<double, 3>>> trips;
   std::map<std::string, std::size_t> index;
   int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3 || t.size() > 4)
-      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) + " values");
+      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) +
+                        " values");
     if (timed < 0) timed = t.size() > 3 ? 1 : 0;
     if ((t.size() > 3) != (timed == 1))
-      throw Input_error(where(path, number) + (timed ? "no time t, but the first line has one ('trip_id x y t')"
-                                                     : "a time t, but the first line has none ('trip_id x y')"));
+      throw Input_error(where(path, number) +
+                        (timed ? "no time t, but the first line has one ('trip_id x y t')"
+                               : "a time t, but the first line has none ('trip_id x y')"));
     const auto it = index.emplace(t[0], trips.size()).first;
     if (it->second == trips.size()) {
       trips.emplace_back();
@@ -284,18 +301,21 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
       }
     }
     if (origin != nullptr) origin->lines[it->second].push_back(number);
-    trips[it->second].push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y"),
-                                 t.size() > 3 ? parse_double(t[3], path, number, "t") : static_cast<double>(number)});
+    trips[it->second].push_back(
+        {parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y"),
+         t.size() > 3 ? parse_double(t[3], path, number, "t") : static_cast<double>(number)});
   });
   return trips;
 }
 
 void write_map(const std::string& vertices_path, const std::string& edges_path,
-               const std::vector<std::array<double, 2>>& positions, const std::vector<std::array<std::uint32_t, 2>>& edges) {
+               const std::vector<std::array<double, 2>>& positions,
+               const std::vector<std::array<std::uint32_t, 2>>& edges) {
   std::string v, e;
   char buf[128];
   for (std::size_t i = 0; i < positions.size(); ++i)
-    v += std::to_string(i) + "," + format_double(positions[i][0]) + "," + format_double(positions[i][1]) + "\n";
+    v += std::to_string(i) + "," + format_double(positions[i][0]) + "," + format_double(positions[i][1]) +
+         "\n";
   for (std::size_t i = 0; i < edges.size(); ++i) {
     std::snprintf(buf, sizeof buf, "%zu,%u,%u\n", i, edges[i][0], edges[i][1]);
     e += buf;
@@ -311,7 +331,8 @@ std::string system_reason() { return std::strerror(errno); }
 void require_readable_file(const std::string& path) {
   if (path.empty()) throw Input_error("an empty file name was given for reading");
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw Input_error(path + ": cannot open for reading (" + system_reason() + ")");
+  if (::stat(path.c_str(), &st) != 0)
+    throw Input_error(path + ": cannot open for reading (" + system_reason() + ")");
   if (S_ISDIR(st.st_mode)) throw Input_error(path + ": is a directory, not a file");
 }
 
@@ -325,8 +346,9 @@ std::string format_double(double x) {
 }
 
 namespace {
-// Temporaries not yet moved into place, for remove_temporaries_now(): fixed slots, so that a signal handler can
-// read them while the program is anywhere (a slot is filled before it is counted, and emptied before reuse).
+// Temporaries not yet moved into place, for remove_temporaries_now(): fixed slots, so that a signal handler
+// can read them while the program is anywhere (a slot is filled before it is counted, and emptied before
+// reuse).
 constexpr std::size_t temporary_slots = 64;
 char registered[temporary_slots][PATH_MAX];
 volatile std::sig_atomic_t slot_used[temporary_slots] = {};
@@ -397,8 +419,8 @@ std::string write_destination(const std::string& path) {
   char resolved[PATH_MAX];
   if (!(::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode))) return path;
   if (::realpath(path.c_str(), resolved) != nullptr) return resolved;
-  // A dangling link: follow it by hand (relative targets from the link's directory), so that the file it names is
-  // created and the link stays (it was replaced by a regular file).
+  // A dangling link: follow it by hand (relative targets from the link's directory), so that the file it
+  // names is created and the link stays (it was replaced by a regular file).
   std::string at = path;
   for (int hops = 0; hops < 40 && ::lstat(at.c_str(), &st) == 0 && S_ISLNK(st.st_mode); ++hops) {
     char target[PATH_MAX];
@@ -406,7 +428,8 @@ std::string write_destination(const std::string& path) {
     if (n < 0) return path;
     target[n] = '\0';
     const std::size_t slash = at.find_last_of('/');
-    at = target[0] == '/' || slash == std::string::npos ? std::string(target) : at.substr(0, slash + 1) + target;
+    at = target[0] == '/' || slash == std::string::npos ? std::string(target)
+                                                        : at.substr(0, slash + 1) + target;
   }
   return at;
 }
@@ -437,7 +460,8 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
   // Edges implied by a triangle are not listed.
   std::vector<char> implied(k.edges.size(), 0);
   for (const skeleton::Triangle& t : k.triangles)
-    for (const skeleton::Edge& e : {skeleton::Edge{t[0], t[1]}, skeleton::Edge{t[1], t[2]}, skeleton::Edge{t[0], t[2]}})
+    for (const skeleton::Edge& e :
+         {skeleton::Edge{t[0], t[1]}, skeleton::Edge{t[1], t[2]}, skeleton::Edge{t[0], t[2]}})
       implied[static_cast<std::size_t>(k.find_edge(e[0], e[1]))] = 1;
   std::size_t free_edges = 0;
   for (char c : implied) free_edges += c ? 0 : 1;
@@ -447,8 +471,8 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
   std::snprintf(buf, sizeof buf, "%zu %zu\n", k.number_of_vertices, free_edges + k.triangles.size());
   s += buf;
   for (std::size_t v = 0; v < k.number_of_vertices; ++v) {
-    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g\n", positions[v][0], positions[v][1], positions[v][2],
-                  values[v]);
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g\n", positions[v][0], positions[v][1],
+                  positions[v][2], values[v]);
     s += buf;
   }
   for (std::size_t e = 0; e < k.edges.size(); ++e)
@@ -467,7 +491,8 @@ bool parse_decimal(const std::string& token, double& value) {
   const char* s = token.c_str();
   char* end = nullptr;
   value = std::strtod(s, &end);
-  return end != s && *end == '\0' && token.find_first_of("xX") == std::string::npos;  // strtod also reads 0x10
+  return end != s && *end == '\0' &&
+         token.find_first_of("xX") == std::string::npos;  // strtod also reads 0x10
 }
 
 std::vector<std::string> line_tokens(const std::string& line) {

@@ -38,7 +38,7 @@ Point_file read_points(const std::string& path, const std::string& row = "point"
 /// zero-based vertex indices (edges and triangles; the edges of a triangle are implied). '#' comments
 /// and blank lines are allowed anywhere.
 struct Complex_file {
-  skeleton::Simplicial_complex_2 complex;       ///< canonical
+  skeleton::Simplicial_complex_2 complex;        ///< canonical
   std::vector<std::array<double, 3>> positions;  ///< x y z of each vertex
   std::vector<double> values;                    ///< f of each vertex
   std::size_t simplices_listed = 0;              ///< m of the header
@@ -56,14 +56,14 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
 struct Map_file {
   std::vector<std::array<double, 2>> positions;
   std::vector<std::array<std::uint32_t, 2>> edges;
-  std::size_t self_loops = 0;            ///< edges from a vertex to itself (kept in `edges`; they have no length)
-  std::size_t first_self_loop_line = 0;  ///< line of the first of them in the edge file (0: none)
+  std::size_t self_loops = 0;  ///< edges from a vertex to itself (kept in `edges`; they have no length)
+  std::size_t first_self_loop_line = 0;   ///< line of the first of them in the edge file (0: none)
   std::vector<std::size_t> vertex_lines;  ///< the line of each vertex in the vertex file
 };
 Map_file read_map(const std::string& vertices_path, const std::string& edges_path);
 
-/// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y), and with
-/// `lines` the line of each.
+/// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y), and
+/// with `lines` the line of each.
 std::vector<std::array<double, 2>> read_track_points(const std::string& path,
                                                      std::vector<std::size_t>* lines = nullptr);
 
@@ -71,17 +71,21 @@ std::vector<std::array<double, 2>> read_track_points(const std::string& path,
 struct Track_origin {
   std::vector<std::string> trip_ids;
   std::vector<std::vector<std::size_t>> lines;
-  /// Appends to a message that names "trip T, fix I" (indices as read) the file, line and trip id; else returns it.
+  /// Appends to a message that names "trip T, fix I" (indices as read) the file, line and trip id; else
+  /// returns it.
   std::string locate(const std::string& path, const std::string& message) const;
 };
 
 /// GPS tracks grouped by trip: trips in order of first appearance, each a list of (x, y, t) in file order.
-/// A missing t is the line number (file order). Trip ids are any token. With `origin`, also where each came from.
-std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path, Track_origin* origin = nullptr);
+/// A missing t is the line number (file order). Trip ids are any token. With `origin`, also where each came
+/// from.
+std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path,
+                                                                 Track_origin* origin = nullptr);
 
 /// Writes a road map in the benchmark's format (vertices `id,x,y`, edges `id,v1,v2`), each file atomically.
 void write_map(const std::string& vertices_path, const std::string& edges_path,
-               const std::vector<std::array<double, 2>>& positions, const std::vector<std::array<std::uint32_t, 2>>& edges);
+               const std::vector<std::array<double, 2>>& positions,
+               const std::vector<std::array<std::uint32_t, 2>>& edges);
 
 /// The extension of a file name, lower case, without the dot ("" when there is none).
 std::string file_extension(const std::string& path);
@@ -89,25 +93,25 @@ std::string file_extension(const std::string& path);
 /// The whitespace-separated tokens of a text line, without its '#' comment (a trailing CR is whitespace).
 std::vector<std::string> line_tokens(const std::string& line);
 
-/// Reads `token` as a decimal number (what strtod takes, except hexadecimal such as 0x10); true when all of it is
-/// one. The value may be infinite or NaN ("inf", "nan"): callers that need finite numbers check.
+/// Reads `token` as a decimal number (what strtod takes, except hexadecimal such as 0x10); true when all of
+/// it is one. The value may be infinite or NaN ("inf", "nan"): callers that need finite numbers check.
 bool parse_decimal(const std::string& token, double& value);
 
-/// Writes `text` to `path` atomically: to a new temporary file beside it, renamed into place (an existing file of
-/// any other name is never touched). Throws std::runtime_error with the system's reason if it cannot.
+/// Writes `text` to `path` atomically: to a new temporary file beside it, renamed into place (an existing
+/// file of any other name is never touched). Throws std::runtime_error with the system's reason if it cannot.
 void write_text_file(const std::string& path, const std::string& text);
 
-/// Throws Input_error unless `path` exists and is not a directory (std::ifstream opens a directory on Linux and then
-/// reads nothing, which would pass for an empty file).
+/// Throws Input_error unless `path` exists and is not a directory (std::ifstream opens a directory on Linux
+/// and then reads nothing, which would pass for an empty file).
 void require_readable_file(const std::string& path);
 
 /// The shortest of 15, 16 or 17 significant digits that reads back as exactly `x` ("447123.456", not
 /// "447123.45600000001"): coordinates keep every bit at any scale.
 std::string format_double(double x);
 
-/// Creates a new, empty file beside `path` (same directory, a unique hidden name ending in the same extension, so
-/// that writers which choose the format by extension still do) and returns its name. Throws std::runtime_error
-/// with the system's reason if the directory does not take it. The name is registered for
+/// Creates a new, empty file beside `path` (same directory, a unique hidden name ending in the same
+/// extension, so that writers which choose the format by extension still do) and returns its name. Throws
+/// std::runtime_error with the system's reason if the directory does not take it. The name is registered for
 /// remove_temporaries_now() until move_into_place() or discard_temporary() takes it.
 std::string temporary_beside(const std::string& path);
 
@@ -120,8 +124,9 @@ void discard_temporary(const std::string& temporary);
 /// Removes every registered temporary; async-signal-safe (for a SIGINT or SIGTERM handler).
 void remove_temporaries_now();
 
-/// True when `path` exists and is not a regular file (after symbolic links): a device such as /dev/null, a FIFO,
-/// a socket, /dev/stdout. Such outputs are written in place: renaming a temporary over them would replace them.
+/// True when `path` exists and is not a regular file (after symbolic links): a device such as /dev/null, a
+/// FIFO, a socket, /dev/stdout. Such outputs are written in place: renaming a temporary over them would
+/// replace them.
 bool is_special_file(const std::string& path);
 
 /// Where a write to `path` should land: the file a symbolic link points to (so that the link stays a link),

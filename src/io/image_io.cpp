@@ -6,26 +6,28 @@
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
 #include <cerrno>
-#include <cstring>
-#include <limits>
+#include <cmath>
 #include <csetjmp>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
-#include <jpeglib.h>
 #include <jerror.h>
+#include <jpeglib.h>
 
 #include "io/featurerecon_io.h"
 
 namespace FeatureRecon {
 namespace io {
 namespace {
-[[noreturn]] void fail(const std::string& path, const std::string& what) { throw Input_error(path + ": " + what); }
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw Input_error(path + ": " + what);
+}
 
 struct File {
   std::FILE* f;
@@ -35,12 +37,12 @@ struct File {
   }
 };
 
-/// A header whose size the file cannot hold is corrupt: refused before the pixels are allocated (a 69-byte PNG
-/// claiming 30000 x 30000 pixels took 2.6 GB, a 30 KB JPEG claiming 60000 x 60000 10.5 GB). At most
-/// `pixels_per_byte` pixels a byte of file (deflate packs at most 1032 bytes into one, eight 1-bit pixels to a
-/// byte; a JPEG codes every 8 x 8 block in a bit or more) and 2^30 pixels in all.
-void check_image_size(const std::string& path, const char* kind, unsigned long long width, unsigned long long height,
-                      unsigned long long pixels_per_byte) {
+/// A header whose size the file cannot hold is corrupt: refused before the pixels are allocated (a 69-byte
+/// PNG claiming 30000 x 30000 pixels took 2.6 GB, a 30 KB JPEG claiming 60000 x 60000 10.5 GB). At most
+/// `pixels_per_byte` pixels a byte of file (deflate packs at most 1032 bytes into one, eight 1-bit pixels to
+/// a byte; a JPEG codes every 8 x 8 block in a bit or more) and 2^30 pixels in all.
+void check_image_size(const std::string& path, const char* kind, unsigned long long width,
+                      unsigned long long height, unsigned long long pixels_per_byte) {
   const unsigned long long pixels = width * height;
   const std::string size = std::to_string(width) + " x " + std::to_string(height);
   if (pixels > (1ull << 30)) fail(path, "a " + size + " " + kind + " is beyond 2^30 pixels");
@@ -55,7 +57,8 @@ Image read_png(const std::string& path) {
   png_image img;
   std::fill(reinterpret_cast<char*>(&img), reinterpret_cast<char*>(&img) + sizeof img, 0);
   img.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&img, path.c_str())) fail(path, std::string("not a readable PNG (") + img.message + ")");
+  if (!png_image_begin_read_from_file(&img, path.c_str()))
+    fail(path, std::string("not a readable PNG (") + img.message + ")");
   try {
     check_image_size(path, "PNG", img.width, img.height, 8 * 1032);
   } catch (...) {
@@ -69,8 +72,8 @@ Image read_png(const std::string& path) {
   out.height = int(img.height);
   out.channels = colour ? 3 : 1;
   out.data.resize(PNG_IMAGE_SIZE(img));
-  // Transparency is composited onto white, the paper a picture is drawn on (without a background libpng composites
-  // onto the buffer, which was zero: a transparent background read as black ink).
+  // Transparency is composited onto white, the paper a picture is drawn on (without a background libpng
+  // composites onto the buffer, which was zero: a transparent background read as black ink).
   png_color white;
   white.red = white.green = white.blue = 255;
   if (!png_image_finish_read(&img, &white, out.data.data(), 0, nullptr)) {
@@ -102,11 +105,12 @@ void jpeg_fail(j_common_ptr info) {
   (*info->err->format_message)(info, e->message);
   std::longjmp(e->jump, 1);
 }
-/// Reading: the warnings that mean missing data (a truncated file: "premature end of JPEG file", "premature end
-/// of data segment") are errors, or the file would decode to a picture padded with grey; other warnings (such as
-/// extraneous bytes before a marker, which most viewers ignore) are not.
+/// Reading: the warnings that mean missing data (a truncated file: "premature end of JPEG file", "premature
+/// end of data segment") are errors, or the file would decode to a picture padded with grey; other warnings
+/// (such as extraneous bytes before a marker, which most viewers ignore) are not.
 void jpeg_warning_fails(j_common_ptr info, int level) {
-  if (level < 0 && (info->err->msg_code == JWRN_JPEG_EOF || info->err->msg_code == JWRN_HIT_MARKER)) jpeg_fail(info);
+  if (level < 0 && (info->err->msg_code == JWRN_JPEG_EOF || info->err->msg_code == JWRN_HIT_MARKER))
+    jpeg_fail(info);
 }
 
 Image read_jpeg(const std::string& path) {
@@ -142,7 +146,8 @@ Image read_jpeg(const std::string& path) {
   out.channels = int(info.output_components);
   out.data.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels));
   while (info.output_scanline < info.output_height) {
-    JSAMPROW row = out.data.data() + std::size_t(info.output_scanline) * std::size_t(out.width) * std::size_t(out.channels);
+    JSAMPROW row = out.data.data() +
+                   std::size_t(info.output_scanline) * std::size_t(out.width) * std::size_t(out.channels);
     jpeg_read_scanlines(&info, &row, 1);
   }
   jpeg_finish_decompress(&info);
@@ -171,18 +176,21 @@ void write_jpeg(const std::string& path, const Image& image) {
   jpeg_set_quality(&info, 95, TRUE);
   jpeg_start_compress(&info, TRUE);
   while (info.next_scanline < info.image_height) {
-    JSAMPROW row = const_cast<JSAMPROW>(image.data.data() + std::size_t(info.next_scanline) * std::size_t(image.width) *
-                                                              std::size_t(image.channels));
+    JSAMPROW row =
+        const_cast<JSAMPROW>(image.data.data() + std::size_t(info.next_scanline) * std::size_t(image.width) *
+                                                     std::size_t(image.channels));
     jpeg_write_scanlines(&info, &row, 1);
   }
   jpeg_finish_compress(&info);
   jpeg_destroy_compress(&info);
-  if (std::fflush(file.f) != 0 || std::ferror(file.f)) fail(path, "write failed (" + std::string(std::strerror(errno)) + ")");
+  if (std::fflush(file.f) != 0 || std::ferror(file.f))
+    fail(path, "write failed (" + std::string(std::strerror(errno)) + ")");
 }
 
 /// PGM/PPM, binary (P5/P6) or ASCII (P2/P3), maximum value up to 255 (values are rescaled to 0..255). Every
-/// header field and ASCII value must be a plain decimal integer; the size is checked against the file's length
-/// before anything is allocated; a value above the maximum is an error (binary values too, not wrapped).
+/// header field and ASCII value must be a plain decimal integer; the size is checked against the file's
+/// length before anything is allocated; a value above the maximum is an error (binary values too, not
+/// wrapped).
 Image read_pnm(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot open");
@@ -230,35 +238,39 @@ Image read_pnm(const std::string& path) {
     const std::string t = token();
     header[k] = integer(t, std::numeric_limits<int>::max());
     if (header[k] <= 0)
-      fail(path, std::string("bad PGM/PPM header: the ") + names[k] + " must be a positive integer, got '" + t + "'");
+      fail(path, std::string("bad PGM/PPM header: the ") + names[k] + " must be a positive integer, got '" +
+                     t + "'");
   }
   if (header[2] > 255)
-    fail(path, "unsupported PGM/PPM maximum value " + std::to_string(header[2]) + " (8-bit only, at most 255)");
+    fail(path,
+         "unsupported PGM/PPM maximum value " + std::to_string(header[2]) + " (8-bit only, at most 255)");
   out.width = int(header[0]);
   out.height = int(header[1]);
   const long long max_value = header[2];
   const unsigned long long n =
       static_cast<unsigned long long>(header[0]) * static_cast<unsigned long long>(header[1]) * out.channels;
-  // Binary data needs n bytes, ASCII data at least 2n - 1 (a digit and a separator per value). From a pipe, at
-  // most 2^30 values are accepted.
+  // Binary data needs n bytes, ASCII data at least 2n - 1 (a digit and a separator per value). From a pipe,
+  // at most 2^30 values are accepted.
   if (!sized && n > (1ull << 30))
     fail(path, "a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " + magic +
                    " image read from a pipe is beyond 2^30 values");
-  // What follows the header (the whitespace that ends the maximum value is read with it; a header that ends the
-  // file leaves the stream failed, and nothing follows).
+  // What follows the header (the whitespace that ends the maximum value is read with it; a header that ends
+  // the file leaves the stream failed, and nothing follows).
   if (!in) in.clear(), in.seekg(0, std::ios::end);
   const std::streamoff at = in.tellg();
   const unsigned long long left = at >= 0 && static_cast<unsigned long long>(at) <= file_size
                                       ? file_size - static_cast<unsigned long long>(at)
                                       : file_size;
   if (sized && (n > left || (!binary && 2 * n - 1 > left)))
-    fail(path, "truncated pixel data: a " + std::to_string(out.width) + "x" + std::to_string(out.height) + " " +
-                   magic + " image needs " + std::to_string(binary ? n : 2 * n - 1) +
-                   " bytes of pixel data or more, the file has " + std::to_string(left) + " after its header");
+    fail(path, "truncated pixel data: a " + std::to_string(out.width) + "x" + std::to_string(out.height) +
+                   " " + magic + " image needs " + std::to_string(binary ? n : 2 * n - 1) +
+                   " bytes of pixel data or more, the file has " + std::to_string(left) +
+                   " after its header");
   out.data.resize(static_cast<std::size_t>(n));
   if (binary) {
     if (!in.read(reinterpret_cast<char*>(out.data.data()), std::streamsize(n)))
-      fail(path, "truncated pixel data (" + std::to_string(in.gcount()) + " of " + std::to_string(n) + " bytes)");
+      fail(path,
+           "truncated pixel data (" + std::to_string(in.gcount()) + " of " + std::to_string(n) + " bytes)");
     for (std::size_t i = 0; i < out.data.size(); ++i)
       if (out.data[i] > max_value)
         fail(path, "pixel value " + std::to_string(out.data[i]) + " at byte " + std::to_string(i) +
@@ -266,7 +278,8 @@ Image read_pnm(const std::string& path) {
   } else {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string t = token();
-      if (t.empty()) fail(path, "truncated pixel data (value " + std::to_string(i) + " of " + std::to_string(n) + ")");
+      if (t.empty())
+        fail(path, "truncated pixel data (value " + std::to_string(i) + " of " + std::to_string(n) + ")");
       const long long v = integer(t, max_value);
       if (v < 0)
         fail(path, "pixel value " + std::to_string(i) + " '" + t + "' is not an integer in [0, " +
@@ -325,7 +338,8 @@ Image to_grey(const Image& image) {
   g.channels = 1;
   g.data.resize(std::size_t(image.width) * std::size_t(image.height));
   for (std::size_t i = 0; i < g.data.size(); ++i) {
-    const double y = 0.299 * image.data[3 * i] + 0.587 * image.data[3 * i + 1] + 0.114 * image.data[3 * i + 2];
+    const double y =
+        0.299 * image.data[3 * i] + 0.587 * image.data[3 * i + 1] + 0.114 * image.data[3 * i + 2];
     g.data[i] = static_cast<std::uint8_t>(std::lround(y));
   }
   return g;

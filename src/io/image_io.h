@@ -19,7 +19,8 @@ struct Image {
   int channels = 0;                ///< 1 (grey) or 3 (RGB)
   std::vector<std::uint8_t> data;  ///< width * height * channels values
   std::uint8_t at(int column, int row, int channel = 0) const {
-    return data[(std::size_t(row) * std::size_t(width) + std::size_t(column)) * std::size_t(channels) + std::size_t(channel)];
+    return data[(std::size_t(row) * std::size_t(width) + std::size_t(column)) * std::size_t(channels) +
+                std::size_t(channel)];
   }
 };
 

@@ -44,7 +44,8 @@ std::array<double, 3> parse_colour(const std::string& c) {
 }
 
 /// Distance from p to the segment ab.
-double segment_distance(double px, double py, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+double segment_distance(double px, double py, const std::array<double, 2>& a,
+                        const std::array<double, 2>& b) {
   const double dx = b[0] - a[0], dy = b[1] - a[1];
   const double len2 = dx * dx + dy * dy;
   double t = len2 > 0 ? ((px - a[0]) * dx + (py - a[1]) * dy) / len2 : 0.0;
@@ -53,8 +54,9 @@ double segment_distance(double px, double py, const std::array<double, 2>& a, co
 }
 
 bool all_finite(const std::vector<std::array<double, 2>>& points) {
-  return std::all_of(points.begin(), points.end(),
-                     [](const std::array<double, 2>& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); });
+  return std::all_of(points.begin(), points.end(), [](const std::array<double, 2>& p) {
+    return std::isfinite(p[0]) && std::isfinite(p[1]);
+  });
 }
 
 }  // namespace
@@ -79,7 +81,8 @@ void Picture::line(double x1, double y1, double x2, double y2, double width, con
   m_shapes.push_back({Kind::line, {{x1, y1}, {x2, y2}}, width, colour});
 }
 
-void Picture::polyline(const std::vector<std::array<double, 2>>& points, double width, const std::string& colour) {
+void Picture::polyline(const std::vector<std::array<double, 2>>& points, double width,
+                       const std::string& colour) {
   parse_colour(colour);
   m_shapes.push_back({Kind::polyline, points, width, colour});
 }
@@ -87,10 +90,12 @@ void Picture::polyline(const std::vector<std::array<double, 2>>& points, double 
 std::string Picture::svg() const {
   std::ostringstream os;
   // The viewBox makes the picture scale, not crop, where it is shown at another size.
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << pixel(m_width) << "\" height=\"" << pixel(m_height)
-     << "\" viewBox=\"0 0 " << pixel(m_width) << " " << pixel(m_height) << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << pixel(m_width) << "\" height=\""
+     << pixel(m_height) << "\" viewBox=\"0 0 " << pixel(m_width) << " " << pixel(m_height)
+     << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (const Shape& s : m_shapes) {
-    if (!all_finite(s.points)) continue;  // a point at infinity (coordinates beyond the largest double): not drawn
+    if (!all_finite(s.points))
+      continue;  // a point at infinity (coordinates beyond the largest double): not drawn
     switch (s.kind) {
       case Kind::disc:
         os << "<circle cx=\"" << pixel(s.points[0][0]) << "\" cy=\"" << pixel(s.points[0][1]) << "\" r=\""
@@ -131,7 +136,8 @@ Image Picture::raster() const {
     const long r0 = std::max(0L, static_cast<long>(std::floor(y0 - reach)));
     const long r1 = std::min(static_cast<long>(h) - 1, static_cast<long>(std::ceil(y1 + reach)));
     for (long r = r0; r <= r1; ++r)
-      for (long c = c0; c <= c1; ++c) visit(static_cast<std::size_t>(r) * w + static_cast<std::size_t>(c), c + 0.5, r + 0.5);
+      for (long c = c0; c <= c1; ++c)
+        visit(static_cast<std::size_t>(r) * w + static_cast<std::size_t>(c), c + 0.5, r + 0.5);
   };
   // Coverage of a pixel whose centre lies at distance d from the skeleton of a shape of half-width `half`.
   auto coverage = [](double d, double half) { return std::min(1.0, std::max(0.0, half + 0.5 - d)); };
@@ -152,8 +158,8 @@ Image Picture::raster() const {
     for (std::size_t k = 0; k + 1 < s.points.size(); ++k) {
       const auto& a = s.points[k];
       const auto& b = s.points[k + 1];
-      for_pixels(std::min(a[0], b[0]), std::min(a[1], b[1]), std::max(a[0], b[0]), std::max(a[1], b[1]), half + 1,
-                 [&](std::size_t i, double x, double y) {
+      for_pixels(std::min(a[0], b[0]), std::min(a[1], b[1]), std::max(a[0], b[0]), std::max(a[1], b[1]),
+                 half + 1, [&](std::size_t i, double x, double y) {
                    const double c = coverage(segment_distance(x, y, a, b), half);
                    if (c > 0) {
                      double& slot = cover[i];
@@ -173,7 +179,8 @@ void Picture::write(const std::string& path) const {
   const std::string e = file_extension(path);
   if (e == "svg") return write_text_file(path, svg());
   if (is_picture_file(path)) return write_image(path, raster());
-  throw Input_error(path + ": unknown picture format '." + e + "' (expected .svg, .png, .jpg, .jpeg, .pgm or .ppm)");
+  throw Input_error(path + ": unknown picture format '." + e +
+                    "' (expected .svg, .png, .jpg, .jpeg, .pgm or .ppm)");
 }
 
 }  // namespace io

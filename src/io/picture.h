@@ -3,9 +3,9 @@
 #ifndef FEATURERECON_SRC_IO_PICTURE_H
 #define FEATURERECON_SRC_IO_PICTURE_H
 
-// A vector picture (discs, lines, polylines on a white page) written as SVG text or rasterised, anti-aliased, as
-// PNG, JPEG, PGM or PPM: the same drawing either way, chosen by the file's extension.
-// Shapes with a non-finite coordinate are left out of both.
+// A vector picture (discs, lines, polylines on a white page) written as SVG text or rasterised, anti-aliased,
+// as PNG, JPEG, PGM or PPM: the same drawing either way, chosen by the file's extension. Shapes with a
+// non-finite coordinate are left out of both.
 
 #include <array>
 #include <cstdint>
@@ -17,7 +17,8 @@
 namespace FeatureRecon {
 namespace io {
 
-/// Whether `path` names a format Picture::write knows (.svg, .png, .jpg, .jpeg, .pgm, .ppm; case-insensitive).
+/// Whether `path` names a format Picture::write knows (.svg, .png, .jpg, .jpeg, .pgm, .ppm;
+/// case-insensitive).
 bool is_picture_file(const std::string& path);
 
 class Picture {
@@ -32,7 +33,8 @@ class Picture {
 
   /// The SVG text (coordinates with two decimals).
   std::string svg() const;
-  /// The raster (RGB, ceil(width) x ceil(height)); coverage from the distance of each pixel centre to the shape.
+  /// The raster (RGB, ceil(width) x ceil(height)); coverage from the distance of each pixel centre to the
+  /// shape.
   Image raster() const;
   /// Writes by the extension of `path` (see is_picture_file); throws Input_error for another extension.
   void write(const std::string& path) const;

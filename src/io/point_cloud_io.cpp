@@ -5,10 +5,10 @@
 #include "io/featurerecon_io.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/read_points.h>
-#include <CGAL/IO/write_points.h>
 #include <CGAL/IO/read_ply_points.h>
+#include <CGAL/IO/read_points.h>
 #include <CGAL/IO/write_ply_points.h>
+#include <CGAL/IO/write_points.h>
 #include <CGAL/array.h>
 #include <CGAL/jet_estimate_normals.h>
 #include <CGAL/mst_orient_normals.h>
@@ -18,8 +18,8 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -51,14 +51,18 @@ struct Channel_of_tuple {
   friend unsigned char get(const Channel_of_tuple&, const Pwnc& row) { return std::get<2>(row)[I]; }
 };
 
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw Input_error(path + ": " + what);
+}
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) { throw Input_error(path + ": " + what); }
+/// A number of a point-cloud file: the whole token must parse (no "12abc"); inf and nan are refused later
+/// with the point's index.
+std::string at_line(const std::string& path, std::size_t line) {
+  return path + ":" + std::to_string(line) + ": ";
+}
 
-/// A number of a point-cloud file: the whole token must parse (no "12abc"); inf and nan are refused later with
-/// the point's index.
-std::string at_line(const std::string& path, std::size_t line) { return path + ":" + std::to_string(line) + ": "; }
-
-/// XYZ: one point per line, `x y z` or `x y z nx ny nz`; every line has the count of the first; blank lines and
+/// XYZ: one point per line, `x y z` or `x y z nx ny nz`; every line has the count of the first; blank lines
+/// and
 /// '#' comments (also indented) are skipped.
 void read_xyz(const std::string& path, Point_cloud& c) {
   std::ifstream in(path, std::ios::binary);
@@ -71,12 +75,14 @@ void read_xyz(const std::string& path, Point_cloud& c) {
     if (t.empty()) continue;
     if (columns == 0) {
       if (t.size() != 3 && t.size() != 6)
-        throw Input_error(at_line(path, number) + "expected 3 or 6 numbers per line (x y z [nx ny nz]), got " +
+        throw Input_error(at_line(path, number) +
+                          "expected 3 or 6 numbers per line (x y z [nx ny nz]), got " +
                           std::to_string(t.size()));
       columns = t.size();
     } else if (t.size() != columns) {
       throw Input_error(at_line(path, number) + "point " + std::to_string(c.points.size()) + " has " +
-                        std::to_string(t.size()) + " numbers, the first point has " + std::to_string(columns));
+                        std::to_string(t.size()) + " numbers, the first point has " +
+                        std::to_string(columns));
     }
     std::array<double, 6> v{};
     for (std::size_t k = 0; k < columns; ++k)
@@ -89,9 +95,9 @@ void read_xyz(const std::string& path, Point_cloud& c) {
   if (in.bad()) fail(path, "read error");
 }
 
-/// OFF (Geomview): a header keyword [C][N]OFF, the counts `nv nf ne` (on the keyword's line or the next), then nv
-/// vertex lines `x y z [nx ny nz] [colour]`; the faces are not needed and not read. The header's count is checked
-/// against the file (a truncated file is an error), never trusted for an allocation.
+/// OFF (Geomview): a header keyword [C][N]OFF, the counts `nv nf ne` (on the keyword's line or the next),
+/// then nv vertex lines `x y z [nx ny nz] [colour]`; the faces are not needed and not read. The header's
+/// count is checked against the file (a truncated file is an error), never trusted for an allocation.
 void read_off(const std::string& path, Point_cloud& c) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot open");
@@ -110,18 +116,23 @@ void read_off(const std::string& path, Point_cloud& c) {
   if (!next()) fail(path, "empty file (expected an OFF header)");
   std::string keyword = t[0];
   std::string prefix = keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0
-                           ? keyword.substr(0, keyword.size() - 3) : std::string("?");
+                           ? keyword.substr(0, keyword.size() - 3)
+                           : std::string("?");
   bool normals = false, colours = false;
   for (const char ch : prefix) {
-    if (ch == 'N' && !normals) normals = true;
-    else if (ch == 'C' && !colours) colours = true;
+    if (ch == 'N' && !normals)
+      normals = true;
+    else if (ch == 'C' && !colours)
+      colours = true;
     else {
-      throw Input_error(at_line(path, number) + "'" + keyword +
-                        "' is not a supported OFF header (OFF, NOFF, COFF or CNOFF; 4OFF, nOFF, STOFF are not)");
+      throw Input_error(
+          at_line(path, number) + "'" + keyword +
+          "' is not a supported OFF header (OFF, NOFF, COFF or CNOFF; 4OFF, nOFF, STOFF are not)");
     }
   }
   t.erase(t.begin());
-  if (!t.empty() && t[0] == "BINARY") throw Input_error(at_line(path, number) + "binary OFF is not supported");
+  if (!t.empty() && t[0] == "BINARY")
+    throw Input_error(at_line(path, number) + "binary OFF is not supported");
   if (t.empty() && !next()) fail(path, "unexpected end of file (expected the counts 'vertices faces edges')");
   if (t.size() < 2 || t.size() > 3)
     throw Input_error(at_line(path, number) + "expected the counts 'vertices faces [edges]', got " +
@@ -136,15 +147,17 @@ void read_off(const std::string& path, Point_cloud& c) {
   c.points.reserve(static_cast<std::size_t>(std::min<unsigned long long>(n, 1u << 20)));
   for (unsigned long long i = 0; i < n; ++i) {
     if (!next())
-      fail(path, "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(n) + " vertex lines");
+      fail(path, "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(n) +
+                     " vertex lines");
     if (t.size() < per_vertex || (!colours && t.size() != per_vertex))
       throw Input_error(at_line(path, number) + "vertex " + std::to_string(i) + " must be " +
-                        (normals ? "'x y z nx ny nz'" : "'x y z'") + (colours ? " and a colour" : "") + ", got " +
-                        std::to_string(t.size()) + " fields");
+                        (normals ? "'x y z nx ny nz'" : "'x y z'") + (colours ? " and a colour" : "") +
+                        ", got " + std::to_string(t.size()) + " fields");
     std::array<double, 6> v{};
     for (std::size_t k = 0; k < per_vertex; ++k)
       if (!parse_decimal(t[k], v[k]))
-        throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (vertex " + std::to_string(i) + ")");
+        throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (vertex " +
+                          std::to_string(i) + ")");
     c.points.push_back({v[0], v[1], v[2]});
     if (normals) c.normals.push_back({v[3], v[4], v[5]});
   }
@@ -154,17 +167,19 @@ void read_off(const std::string& path, Point_cloud& c) {
 std::size_t ply_type_size(const std::string& type) {
   if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
   if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+      type == "float32")
     return 4;
   if (type == "double" || type == "float64") return 8;
   return 0;
 }
 
-/// A binary PLY list count of `size` bytes (unsigned, or signed and >= 0; -1 when negative) in either byte order.
+/// A binary PLY list count of `size` bytes (unsigned, or signed and >= 0; -1 when negative) in either byte
+/// order.
 long long ply_list_count(const unsigned char* b, std::size_t size, bool big_endian, bool is_signed) {
   unsigned long long v = 0;
-  for (std::size_t k = 0; k < size; ++k) v |= static_cast<unsigned long long>(b[big_endian ? k : size - 1 - k])
-                                              << (8 * (size - 1 - k));
+  for (std::size_t k = 0; k < size; ++k)
+    v |= static_cast<unsigned long long>(b[big_endian ? k : size - 1 - k]) << (8 * (size - 1 - k));
   if (is_signed && size < 8 && (v >> (8 * size - 1)) != 0) return -1;
   return static_cast<long long>(v);
 }
@@ -182,8 +197,8 @@ bool ply_integer_range(const std::string& type, double& low, double& high) {
 
 struct Ply_property {
   std::string name;
-  std::string type;            // of the value (of each item for a list)
-  bool integer = false;        // an integer type, of range [low, high] (ply_integer_range)
+  std::string type;      // of the value (of each item for a list)
+  bool integer = false;  // an integer type, of range [low, high] (ply_integer_range)
   double low = 0, high = 0;
   std::size_t size = 0;        // of the value (of each item for a list)
   std::size_t count_size = 0;  // of a list's count; 0 for a scalar
@@ -197,13 +212,13 @@ struct Ply_element {
 
 /// What would make CGAL misread a PLY file (or crash, or allocate what the file only claims), found before it
 /// reads: the vertex element needs properties x, y, z (and nx, ny, nz all or none) of a floating-point type
-/// (CGAL's reader crashes on integer coordinates); every element's data must be there as the header declares it:
-/// in binary, every list count must fit in the bytes left (a count of 4e9 in an 80-byte file made CGAL allocate
-/// 16 GB) and the data must be as long as the header says; in ASCII, every line of an element must hold as many
-/// finite numbers as its properties (and list counts) declare (CGAL reads a line too long or too short shifted
-/// onto the next rows). Colours are the vertex properties red, green, blue, all three of type uchar (uint8); some
-/// of them, or another type, is a problem (they would be dropped without a word). Returns the problem, or "" with
-/// `normals` and `colors` set. One pass over the file.
+/// (CGAL's reader crashes on integer coordinates); every element's data must be there as the header declares
+/// it: in binary, every list count must fit in the bytes left (a count of 4e9 in an 80-byte file made CGAL
+/// allocate 16 GB) and the data must be as long as the header says; in ASCII, every line of an element must
+/// hold as many finite numbers as its properties (and list counts) declare (CGAL reads a line too long or too
+/// short shifted onto the next rows). Colours are the vertex properties red, green, blue, all three of type
+/// uchar (uint8); some of them, or another type, is a problem (they would be dropped without a word). Returns
+/// the problem, or "" with `normals` and `colors` set. One pass over the file.
 std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
   std::ifstream in(path, std::ios::binary);
   std::string line, format;
@@ -234,14 +249,17 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
       Ply_property q;
       q.name = t.back();
       if (t[1] == "list") {
-        if (t.size() != 5) return "property list of element " + elements.back().name + " must be 'property list "
-                                  "COUNT_TYPE ITEM_TYPE NAME'";
+        if (t.size() != 5)
+          return "property list of element " + elements.back().name +
+                 " must be 'property list "
+                 "COUNT_TYPE ITEM_TYPE NAME'";
         q.count_size = ply_type_size(t[2]);
         q.count_signed = t[2][0] != 'u';
         q.size = ply_type_size(t[3]);
         q.type = t[3];
         q.integer = ply_integer_range(q.type, q.low, q.high);
-        if (q.count_size == 0 || t[2] == "float" || t[2] == "float32" || t[2] == "double" || t[2] == "float64")
+        if (q.count_size == 0 || t[2] == "float" || t[2] == "float32" || t[2] == "double" ||
+            t[2] == "float64")
           return "list " + q.name + " has count type " + t[2] + " (an integer type needed)";
         if (q.size == 0) return "list " + q.name + " has item type " + t[3];
       } else {
@@ -263,7 +281,8 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
     }
     const std::string& type = it->second;
     if (!(type == "float" || type == "double" || type == "float32" || type == "float64"))
-      return std::string("vertex property ") + name + " is " + type + ": coordinates and normals must be float or "
+      return std::string("vertex property ") + name + " is " + type +
+             ": coordinates and normals must be float or "
              "double";
   }
   const int n = int(type_of.count("nx")) + int(type_of.count("ny")) + int(type_of.count("nz"));
@@ -273,7 +292,8 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
   if (c != 0 && c != 3) return "the vertex element has only some of the colour properties red, green, blue";
   for (const char* name : {"red", "green", "blue"})
     if (c == 3 && type_of[name] != "uchar" && type_of[name] != "uint8")
-      return std::string("vertex property ") + name + " is " + type_of[name] + ": colours must be uchar (0-255)";
+      return std::string("vertex property ") + name + " is " + type_of[name] +
+             ": colours must be uchar (0-255)";
   colors = c == 3;
   if (format == "binary_little_endian" || format == "binary_big_endian") {
     const bool big = format == "binary_big_endian";
@@ -290,13 +310,16 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
       }
       const std::string rows = e.name == "vertex" ? "vertices" : e.name + " rows";
       auto truncated = [&](unsigned long long i) {
-        return "truncated: the data ends in row " + std::to_string(i) + " of " + std::to_string(e.rows) + " " + rows;
+        return "truncated: the data ends in row " + std::to_string(i) + " of " + std::to_string(e.rows) +
+               " " + rows;
       };
       if (!lists) {  // one check for the whole element, without overflow
         if (row > 0 && e.rows > left / row)
-          return "truncated: " + std::to_string(e.rows) + " " + rows + " of " + std::to_string(row) + " bytes need " +
-                 (e.rows > std::numeric_limits<unsigned long long>::max() / row ? std::string("more than 2^64")
-                                                                               : std::to_string(e.rows * row)) +
+          return "truncated: " + std::to_string(e.rows) + " " + rows + " of " + std::to_string(row) +
+                 " bytes need " +
+                 (e.rows > std::numeric_limits<unsigned long long>::max() / row
+                      ? std::string("more than 2^64")
+                      : std::to_string(e.rows * row)) +
                  " bytes of data, the file has " + std::to_string(left);
         left -= e.rows * row;
         in.seekg(static_cast<std::streamoff>(e.rows * row), std::ios::cur);
@@ -308,15 +331,17 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
           if (q.count_size == 0) {
             if (left < q.size) return truncated(i);
             left -= q.size;
-            in.ignore(static_cast<std::streamsize>(q.size));  // not seekg: that drops the read buffer every time
+            in.ignore(
+                static_cast<std::streamsize>(q.size));  // not seekg: that drops the read buffer every time
             continue;
           }
           if (left < q.count_size || !in.read(reinterpret_cast<char*>(count), std::streamsize(q.count_size)))
             return truncated(i);
           left -= q.count_size;
           const long long items = ply_list_count(count, q.count_size, big, q.count_signed);
-          if (items < 0) return "element " + e.name + " row " + std::to_string(i) + ": list " + q.name +
-                                " has a negative count";
+          if (items < 0)
+            return "element " + e.name + " row " + std::to_string(i) + ": list " + q.name +
+                   " has a negative count";
           if (static_cast<unsigned long long>(items) > left / q.size)
             return "element " + e.name + " row " + std::to_string(i) + ": list " + q.name + " claims " +
                    std::to_string(items) + " items, the file has " + std::to_string(left) + " bytes left";
@@ -342,11 +367,14 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
         if (q.count_size > 0) {
           lists = true;
           double c = 0;
-          if (k >= t.size() || t[k].find_first_not_of("0123456789") != std::string::npos || !parse_decimal(t[k], c))
+          if (k >= t.size() || t[k].find_first_not_of("0123456789") != std::string::npos ||
+              !parse_decimal(t[k], c))
             return what + ": list " + q.name + " has no count (a non-negative integer)";
           if (c > double(t.size() - k - 1))
-            return what + " has " + std::to_string(t.size()) + " values, too few for the " + t[k] + " items of its "
-                   "list " + q.name;
+            return what + " has " + std::to_string(t.size()) + " values, too few for the " + t[k] +
+                   " items of its "
+                   "list " +
+                   q.name;
           items = static_cast<std::size_t>(c);
           ++k;
         }
@@ -361,13 +389,14 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
         }
       }
       if (t.size() != k)
-        return what + " has " + std::to_string(t.size()) + " values, the header declares " + std::to_string(k) +
-               (lists ? "" : " properties");
+        return what + " has " + std::to_string(t.size()) + " values, the header declares " +
+               std::to_string(k) + (lists ? "" : " properties");
     }
   return "";
 }
 
-/// PLY through CGAL; what CGAL reports on std::cerr, or what ply_problem finds, becomes the reason of an error.
+/// PLY through CGAL; what CGAL reports on std::cerr, or what ply_problem finds, becomes the reason of an
+/// error.
 void read_ply(const std::string& path, Point_cloud& c) {
   bool normals = false, colors = false;
   const std::string problem = ply_problem(path, normals, colors);
@@ -379,9 +408,9 @@ void read_ply(const std::string& path, Point_cloud& c) {
   try {
     std::ifstream in(path, std::ios::binary);
     auto color_reader = [] {  // CGAL takes the handlers as rvalues
-      return std::make_tuple(Color_of_tuple(), CGAL::Construct_array(), CGAL::IO::PLY_property<unsigned char>("red"),
-                             CGAL::IO::PLY_property<unsigned char>("green"),
-                             CGAL::IO::PLY_property<unsigned char>("blue"));
+      return std::make_tuple(
+          Color_of_tuple(), CGAL::Construct_array(), CGAL::IO::PLY_property<unsigned char>("red"),
+          CGAL::IO::PLY_property<unsigned char>("green"), CGAL::IO::PLY_property<unsigned char>("blue"));
     };
     auto rows = std::back_inserter(pwn);
     auto points = [] { return CGAL::IO::make_ply_point_reader(Point_of_tuple()); };
@@ -441,7 +470,8 @@ Point_cloud read_point_cloud(const std::string& path, bool allow_empty) {
   return c;
 }
 
-void write_point_cloud(const std::string& path, const Point_cloud& cloud, const std::vector<std::size_t>& indices) {
+void write_point_cloud(const std::string& path, const Point_cloud& cloud,
+                       const std::vector<std::size_t>& indices) {
   const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "off" && ext != "xyz")
     throw Input_error(path + ": unknown point-cloud format '." + ext + "' (expected .ply, .off or .xyz)");
@@ -462,16 +492,16 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud, const 
       return std::make_pair(map, CGAL::IO::PLY_property<unsigned char>(name));
     };
     if (cloud.has_normals())
-      ok = out && CGAL::IO::write_PLY_with_properties(out, rows, CGAL::IO::make_ply_point_writer(Point_of_tuple()),
-                                                      CGAL::IO::make_ply_normal_writer(Normal_of_tuple()),
-                                                      channel(Channel_of_tuple<0>(), "red"),
-                                                      channel(Channel_of_tuple<1>(), "green"),
-                                                      channel(Channel_of_tuple<2>(), "blue"));
+      ok = out &&
+           CGAL::IO::write_PLY_with_properties(
+               out, rows, CGAL::IO::make_ply_point_writer(Point_of_tuple()),
+               CGAL::IO::make_ply_normal_writer(Normal_of_tuple()), channel(Channel_of_tuple<0>(), "red"),
+               channel(Channel_of_tuple<1>(), "green"), channel(Channel_of_tuple<2>(), "blue"));
     else
-      ok = out && CGAL::IO::write_PLY_with_properties(out, rows, CGAL::IO::make_ply_point_writer(Point_of_tuple()),
-                                                      channel(Channel_of_tuple<0>(), "red"),
-                                                      channel(Channel_of_tuple<1>(), "green"),
-                                                      channel(Channel_of_tuple<2>(), "blue"));
+      ok = out && CGAL::IO::write_PLY_with_properties(
+                      out, rows, CGAL::IO::make_ply_point_writer(Point_of_tuple()),
+                      channel(Channel_of_tuple<0>(), "red"), channel(Channel_of_tuple<1>(), "green"),
+                      channel(Channel_of_tuple<2>(), "blue"));
     ok = ok && out.flush();
   } else {
     const auto np = CGAL::parameters::point_map(Point_of_tuple()).stream_precision(17).use_binary_mode(false);
@@ -482,9 +512,9 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud, const 
 }
 
 void estimate_normals(Point_cloud& cloud, unsigned neighbors) {
-  // Copies of a position share its normal: the fit runs on the distinct positions (a neighbourhood of 18 copies of
-  // one point has no plane, and the jet fit crashed on it: 30 copies among 500 points). Too few distinct positions
-  // for a fit (fewer than 6, or no neighbourhood spanning a plane) keep (0, 0, 1).
+  // Copies of a position share its normal: the fit runs on the distinct positions (a neighbourhood of 18
+  // copies of one point has no plane, and the jet fit crashed on it: 30 copies among 500 points). Too few
+  // distinct positions for a fit (fewer than 6, or no neighbourhood spanning a plane) keep (0, 0, 1).
   const std::size_t n = cloud.points.size();
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
@@ -493,7 +523,8 @@ void estimate_normals(Point_cloud& cloud, unsigned neighbors) {
   });
   std::vector<std::size_t> first(n);  // each point's first copy (by index)
   for (std::size_t t = 0; t < n; ++t)
-    first[order[t]] = t > 0 && cloud.points[order[t]] == cloud.points[order[t - 1]] ? first[order[t - 1]] : order[t];
+    first[order[t]] =
+        t > 0 && cloud.points[order[t]] == cloud.points[order[t - 1]] ? first[order[t - 1]] : order[t];
   // The distinct positions in input order (without copies the fit sees the cloud as before, in its order).
   std::vector<std::size_t> position_of(n);  // index of each point's position among the distinct ones
   std::vector<Pwn> pwn;
@@ -509,8 +540,8 @@ void estimate_normals(Point_cloud& cloud, unsigned neighbors) {
   cloud.normals.assign(n, {0, 0, 1});
   if (pwn.size() < 6) return;
   const unsigned k = static_cast<unsigned>(std::min<std::size_t>(neighbors, pwn.size() - 1));
-  CGAL::jet_estimate_normals<CGAL::Sequential_tag>(pwn, k,
-                                                   CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  CGAL::jet_estimate_normals<CGAL::Sequential_tag>(
+      pwn, k, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   // mst_orient_normals reorders the range: orient tuples that remember the indices.
   using Indexed = std::tuple<K::Point_3, K::Vector_3, std::size_t>;
   std::vector<Indexed> indexed;

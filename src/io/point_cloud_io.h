@@ -17,20 +17,22 @@ namespace io {
 struct Point_cloud {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<double, 3>> normals;  ///< empty when the file has none
-  std::vector<std::array<unsigned char, 3>> colors;  ///< red, green, blue; empty when the file has none (PLY only)
+  std::vector<std::array<unsigned char, 3>>
+      colors;  ///< red, green, blue; empty when the file has none (PLY only)
   bool has_normals() const { return !normals.empty(); }
   bool has_colors() const { return !colors.empty(); }
 };
 
 /// Reads PLY, OFF or XYZ by extension (case-insensitive). Normals are read when the file has them (PLY
 /// properties nx ny nz, an NOFF header, six numbers per XYZ line), colours from PLY (red green blue, uchar).
-/// Throws Input_error naming the file and the problem (unknown extension, unreadable, empty unless `allow_empty`,
-/// non-finite coordinates with the point's index, colour properties partial or not uchar).
+/// Throws Input_error naming the file and the problem (unknown extension, unreadable, empty unless
+/// `allow_empty`, non-finite coordinates with the point's index, colour properties partial or not uchar).
 Point_cloud read_point_cloud(const std::string& path, bool allow_empty = false);
 
-/// Writes the points `indices` of `cloud` (with normals when it has them, and colours in PLY) as PLY (ASCII), OFF
-/// (NOFF with normals) or XYZ by the extension of `path`, with 17 significant digits.
-void write_point_cloud(const std::string& path, const Point_cloud& cloud, const std::vector<std::size_t>& indices);
+/// Writes the points `indices` of `cloud` (with normals when it has them, and colours in PLY) as PLY (ASCII),
+/// OFF (NOFF with normals) or XYZ by the extension of `path`, with 17 significant digits.
+void write_point_cloud(const std::string& path, const Point_cloud& cloud,
+                       const std::vector<std::size_t>& indices);
 
 /// Estimates unit normals (jet fitting over `neighbors` nearest neighbours, then orientation along a
 /// minimum spanning tree, CGAL); normals that cannot be oriented keep the fitted direction.

@@ -40,9 +40,10 @@ class Picture_frame {
     x1 = std::max(x1, x);
     y1 = std::max(y1, y);
   }
-  /// The page (white), `size` pixels on the longer side of the box plus a margin; call after the last extend().
-  /// Differences are taken of halves (x / 2 - x0 / 2): a box from -1e308 to 1e308 is wider than the largest double.
-  /// A box of one position (or of a span below the denormals) gets a square page with that position in its centre.
+  /// The page (white), `size` pixels on the longer side of the box plus a margin; call after the last
+  /// extend(). Differences are taken of halves (x / 2 - x0 / 2): a box from -1e308 to 1e308 is wider than the
+  /// largest double. A box of one position (or of a span below the denormals) gets a square page with that
+  /// position in its centre.
   Picture open(double size) {
     if (!(x0 <= x1)) x0 = y0 = 0, x1 = y1 = 1;
     double half = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
@@ -81,9 +82,10 @@ void write_skeleton_graphml(const std::string& path, const Skeleton_graph& g) {
         "  <graph id=\"skeleton\" edgedefault=\"undirected\">\n";
   for (auto v : boost::make_iterator_range(vertices(g))) {
     const auto& n = g[v];
-    os << "    <node id=\"n" << v << "\"><data key=\"x\">" << number(n.position[0]) << "</data><data key=\"y\">"
-       << number(n.position[1]) << "</data><data key=\"z\">" << number(n.position[2]) << "</data><data key=\"value\">"
-       << number(n.value) << "</data><data key=\"type\">" << type_name(n.type) << "</data></node>\n";
+    os << "    <node id=\"n" << v << "\"><data key=\"x\">" << number(n.position[0])
+       << "</data><data key=\"y\">" << number(n.position[1]) << "</data><data key=\"z\">"
+       << number(n.position[2]) << "</data><data key=\"value\">" << number(n.value)
+       << "</data><data key=\"type\">" << type_name(n.type) << "</data></node>\n";
   }
   std::size_t k = 0;
   for (auto e : boost::make_iterator_range(edges(g))) {
@@ -102,10 +104,11 @@ void write_skeleton_graphml(const std::string& path, const Skeleton_graph& g) {
 
 namespace {
 
-/// The parts of a polyline of (longitude, latitude) in degrees cut where a step crosses the antimeridian (changes
-/// longitude by more than 180 degrees: the short way round goes across +-180). Each cut ends one part at +-180 and
-/// starts the next at -+180, at the latitude interpolated along the step.
-std::vector<std::vector<std::array<double, 2>>> cut_at_antimeridian(const std::vector<std::array<double, 3>>& line) {
+/// The parts of a polyline of (longitude, latitude) in degrees cut where a step crosses the antimeridian
+/// (changes longitude by more than 180 degrees: the short way round goes across +-180). Each cut ends one
+/// part at +-180 and starts the next at -+180, at the latitude interpolated along the step.
+std::vector<std::vector<std::array<double, 2>>> cut_at_antimeridian(
+    const std::vector<std::array<double, 3>>& line) {
   std::vector<std::vector<std::array<double, 2>>> parts(1);
   for (std::size_t i = 0; i < line.size(); ++i) {
     const std::array<double, 2> p{line[i][0], line[i][1]};
@@ -168,9 +171,11 @@ void write_skeleton_geojson(const std::string& path, const Skeleton_graph& g, bo
   }
   for (auto v : boost::make_iterator_range(vertices(g))) {
     const auto& n = g[v];
-    os << (first ? "" : ",\n") << "{\"type\": \"Feature\", \"geometry\": {\"type\": \"Point\", \"coordinates\": ["
-       << number(n.position[0]) << ", " << number(n.position[1]) << "]}, \"properties\": {\"kind\": \"node\", \"type\": \""
-       << type_name(n.type) << "\", \"value\": " << number(n.value) << "}}";
+    os << (first ? "" : ",\n")
+       << "{\"type\": \"Feature\", \"geometry\": {\"type\": \"Point\", \"coordinates\": ["
+       << number(n.position[0]) << ", " << number(n.position[1])
+       << "]}, \"properties\": {\"kind\": \"node\", \"type\": \"" << type_name(n.type)
+       << "\", \"value\": " << number(n.value) << "}}";
     first = false;
   }
   os << "\n]}\n";
@@ -178,15 +183,16 @@ void write_skeleton_geojson(const std::string& path, const Skeleton_graph& g, bo
 }
 
 void write_skeleton_ply(const std::string& path, const Skeleton_graph& g) {
-  // The nodes first (PLY vertex i is node i), then the interior points of each arc's polyline: arcs meeting at a
-  // node share its vertex, so the edges form the skeleton's graph. A polyline end away from its node's position
-  // (not written by the embedding) gets a vertex of its own.
+  // The nodes first (PLY vertex i is node i), then the interior points of each arc's polyline: arcs meeting
+  // at a node share its vertex, so the edges form the skeleton's graph. A polyline end away from its node's
+  // position (not written by the embedding) gets a vertex of its own.
   std::vector<std::array<double, 3>> pts;
   std::vector<std::array<std::size_t, 2>> segs;
   for (auto v : boost::make_iterator_range(vertices(g))) pts.push_back(g[v].position);
   for (auto e : boost::make_iterator_range(edges(g))) {
     const auto& line = g[e].polyline;
-    const std::size_t ends[2] = {static_cast<std::size_t>(source(e, g)), static_cast<std::size_t>(target(e, g))};
+    const std::size_t ends[2] = {static_cast<std::size_t>(source(e, g)),
+                                 static_cast<std::size_t>(target(e, g))};
     std::size_t previous = 0;
     for (std::size_t i = 0; i < line.size(); ++i) {
       std::size_t index = pts.size();
@@ -209,9 +215,11 @@ void write_skeleton_ply(const std::string& path, const Skeleton_graph& g) {
 }
 
 double skeleton_picture_long_side(double data_long_side, double feature_size) {
-  if (!(feature_size > 0 && std::isfinite(feature_size) && data_long_side > 0 && std::isfinite(data_long_side)))
+  if (!(feature_size > 0 && std::isfinite(feature_size) && data_long_side > 0 &&
+        std::isfinite(data_long_side)))
     return 1000.0;
-  return std::clamp(3 * (data_long_side / feature_size), 1000.0, 4000.0);  // NaN-free: both finite and positive
+  return std::clamp(3 * (data_long_side / feature_size), 1000.0,
+                    4000.0);  // NaN-free: both finite and positive
 }
 
 void write_skeleton_picture(const std::string& path, const std::vector<std::array<double, 2>>& points,
@@ -223,17 +231,20 @@ void write_skeleton_picture(const std::string& path, const std::vector<std::arra
     for (const auto& p : g[e].polyline) frame.extend(p[0], p[1]);
   const double feature_size = options.feature_size;
   const bool scaled = feature_size > 0 && std::isfinite(feature_size);
-  Picture picture = frame.open(options.long_side > 0 ? options.long_side
-                                                     : skeleton_picture_long_side(frame.long_side(), feature_size));
+  Picture picture =
+      frame.open(options.long_side > 0 ? options.long_side
+                                       : skeleton_picture_long_side(frame.long_side(), feature_size));
   // Mark sizes in pixels: at most 1 (points), 2 (arc width) and 3 (nodes); a fifth, a half and a half of the
-  // feature size drawn (finer below 5, 4 and 6 pixels), so that points a feature size apart and the arcs between
-  // them stay apart.
-  const double feature_pixels = scaled && frame.pixels_per_unit() > 0 ? feature_size * frame.pixels_per_unit() : 10.0;
+  // feature size drawn (finer below 5, 4 and 6 pixels), so that points a feature size apart and the arcs
+  // between them stay apart.
+  const double feature_pixels =
+      scaled && frame.pixels_per_unit() > 0 ? feature_size * frame.pixels_per_unit() : 10.0;
   const double point_radius = std::clamp(feature_pixels / 5, 0.3, 1.0);
   const double arc_width = std::clamp(feature_pixels / 2, 0.5, 2.0);
   const double node_radius = std::clamp(feature_pixels / 2, 0.75, 3.0);
   for (const auto& p : points) picture.disc(frame.X(p[0]), frame.Y(p[1]), point_radius, "#c0c0c0");
-  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                           "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   std::size_t k = 0;
   for (auto e : boost::make_iterator_range(edges(g))) {
     std::vector<std::array<double, 2>> line;
@@ -273,8 +284,8 @@ void write_map_comparison_csv(const std::string& path, const skeleton::Map_compa
   auto rows = [&](const char* name, const std::vector<skeleton::Map_sample>& list,
                   const std::vector<std::int64_t>& partner) {
     for (std::size_t i = 0; i < list.size(); ++i)
-      os << name << ',' << i << ',' << number(list[i].position[0]) << ',' << number(list[i].position[1]) << ','
-         << number(list[i].bearing) << ',' << partner[i] << '\n';
+      os << name << ',' << i << ',' << number(list[i].position[0]) << ',' << number(list[i].position[1])
+         << ',' << number(list[i].bearing) << ',' << partner[i] << '\n';
   };
   rows("truth", r.ground_truth_sample_list, r.ground_truth_partner);
   rows("reconstruction", r.reconstruction_sample_list, r.reconstruction_partner);

@@ -42,8 +42,8 @@ class Scratch_file_remover : public ::testing::EmptyTestEventListener {
 /// the directory), removed when the test ends.
 inline std::string scratch_path(const std::string& name) {
   const ::testing::TestInfo* t = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string path = ::testing::TempDir() + "/featurerecon_" + t->test_suite_name() + "_" + t->name() + "_" +
-                           std::to_string(::getpid()) + "_" + name;
+  const std::string path = ::testing::TempDir() + "/featurerecon_" + t->test_suite_name() + "_" + t->name() +
+                           "_" + std::to_string(::getpid()) + "_" + name;
   Scratch_file_remover::instance().add(path);
   return path;
 }

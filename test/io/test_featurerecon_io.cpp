@@ -117,7 +117,8 @@ TEST(FormatDouble, ShortestThatReadsBackExactly) {
   EXPECT_EQ(io::format_double(-6.020081e-5), "-6.020081e-05");
   EXPECT_EQ(io::format_double(1e300), "1e+300");
   EXPECT_EQ(io::format_double(0.0), "0");
-  EXPECT_EQ(io::format_double(0.1 + 0.2), "0.30000000000000004");  // 17 digits when 15 and 16 do not read back
+  EXPECT_EQ(io::format_double(0.1 + 0.2),
+            "0.30000000000000004");  // 17 digits when 15 and 16 do not read back
   // Any finite double reads back as itself (random bit patterns, fixed seed).
   std::mt19937_64 random(7);
   for (int i = 0; i < 20000; ++i) {
@@ -132,7 +133,8 @@ TEST(FormatDouble, ShortestThatReadsBackExactly) {
 }
 
 TEST(MapFile, RoundTripKeepsEveryBit) {
-  const std::vector<std::array<double, 2>> positions{{447123.456, 4636005.123456789}, {1e-9, -3.0e-7}, {1e22, 0.0}};
+  const std::vector<std::array<double, 2>> positions{
+      {447123.456, 4636005.123456789}, {1e-9, -3.0e-7}, {1e22, 0.0}};
   const std::vector<std::array<std::uint32_t, 2>> edges{{0, 1}, {1, 2}};
   const std::string v = scratch_path("map_v.txt"), e = scratch_path("map_e.txt");
   io::write_map(v, e, positions, edges);
@@ -144,7 +146,8 @@ TEST(MapFile, RoundTripKeepsEveryBit) {
 TEST(MapFile, IdsAreIntegers) {
   // Ids above 2^53 stay apart; an integral decimal is the integer; a fraction is refused with its line.
   const std::string v = write_temp("ids_v.txt", "9007199254740993,0,0\n9007199254740992,1,0\n7.0,2,0\n");
-  const io::Map_file m = io::read_map(v, write_temp("ids_e.txt", "0,9007199254740992,9007199254740993\n1,7,9007199254740992\n"));
+  const io::Map_file m =
+      io::read_map(v, write_temp("ids_e.txt", "0,9007199254740992,9007199254740993\n1,7,9007199254740992\n"));
   EXPECT_EQ(m.edges, (std::vector<std::array<std::uint32_t, 2>>{{1, 0}, {2, 1}}));
   auto error_of = [&](const std::string& edges) {
     try {
@@ -154,7 +157,8 @@ TEST(MapFile, IdsAreIntegers) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(error_of("0,7,1.9\n").find("ids_bad.txt:1: vertex id '1.9' is not an integer"), std::string::npos);
+  EXPECT_NE(error_of("0,7,1.9\n").find("ids_bad.txt:1: vertex id '1.9' is not an integer"),
+            std::string::npos);
   EXPECT_NE(error_of("\n0,7,8\n").find("ids_bad.txt:2: unknown vertex id 8"), std::string::npos);
   EXPECT_NE(error_of("0,7,99999999999999999999\n").find("out of range"), std::string::npos);
 }
@@ -189,7 +193,8 @@ TEST(WriteTextFile, UsesATemporaryOfItsOwn) {
   EXPECT_EQ(line, "new");
   std::getline(std::ifstream(user_tmp), line);
   EXPECT_EQ(line, "precious");
-  // A temporary keeps the extension (writers that choose the format by extension still do), and fails with the reason.
+  // A temporary keeps the extension (writers that choose the format by extension still do), and fails with
+  // the reason.
   const std::string tmp = io::temporary_beside(scratch_path("picture.png"));
   EXPECT_EQ(io::file_extension(tmp), "png");
   const std::string name = tmp.substr(tmp.find_last_of('/') + 1);
@@ -215,9 +220,9 @@ TEST(SkeletonPicture, PageResolvesTheFeatureSize) {
     EXPECT_EQ(io::skeleton_picture_long_side(400, bad), 1000.0) << bad;
     EXPECT_EQ(io::skeleton_picture_long_side(bad, 1), 1000.0) << bad;
   }
-  // 100 points 1 apart on a line: at feature size 0.1 the page is 2970 pixels (+ 2 x 10 margin) and the points
-  // 30 pixels apart; the feature size is 3 pixels, so the dots have a fifth of it as radius; at feature size 1 the
-  // page is the least, 1000, and the dots the full radius 1.
+  // 100 points 1 apart on a line: at feature size 0.1 the page is 2970 pixels (+ 2 x 10 margin) and the
+  // points 30 pixels apart; the feature size is 3 pixels, so the dots have a fifth of it as radius; at
+  // feature size 1 the page is the least, 1000, and the dots the full radius 1.
   std::vector<std::array<double, 2>> points;
   for (int i = 0; i < 100; ++i) points.push_back({double(i), 0.0});
   const skeleton::Skeleton_graph none;
@@ -236,8 +241,8 @@ TEST(SkeletonPicture, PageResolvesTheFeatureSize) {
   text = svg(0.5, 200);  // the page given: 200 pixels, the feature size 1 pixel, dots of the least radius 0.3
   EXPECT_NE(text.find("viewBox=\"0 0 220.00 20.00\""), std::string::npos) << text.substr(0, 200);
   EXPECT_NE(text.find(" r=\"0.3\" fill"), std::string::npos);
-  // One position, or two so close that the page over their span is beyond the largest double: a square page, the
-  // position in its centre, full marks.
+  // One position, or two so close that the page over their span is beyond the largest double: a square page,
+  // the position in its centre, full marks.
   for (const double apart : {0.0, 1e-322}) {
     points = {{0.0, 0.0}, {apart, 0.0}};
     text = svg(1, 500);

@@ -50,7 +50,7 @@ TEST(ImageIo, LosslessRoundTrips) {
 }
 
 TEST(ImageIo, JpegIsCloseAndAsciiPnmReads) {
-  const io::Image a = gradient(3, 2, 3);  // smooth (no wrap-around edges): what JPEG is made for
+  const io::Image a = gradient(3, 2, 3);      // smooth (no wrap-around edges): what JPEG is made for
   const std::string path = scratch("g.JPG");  // extensions are case-insensitive
   io::write_image(path, a);
   const io::Image b = io::read_image(path);
@@ -94,7 +94,8 @@ TEST(ImageIo, ErrorsNameTheFile) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
   };
-  expect_short("t.pgm", "P5\n4 4\n255\nab", "needs 16 bytes of pixel data or more, the file has 2 after its header");
+  expect_short("t.pgm", "P5\n4 4\n255\nab",
+               "needs 16 bytes of pixel data or more, the file has 2 after its header");
   expect_short("header_only.pgm", "P5\n2 2\n255",  // the file ends with the maximum value
                "needs 4 bytes of pixel data or more, the file has 0 after its header");
   const std::string exact = scratch("exact.pgm");  // exactly the bytes needed: read
@@ -142,7 +143,8 @@ TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
   big_endian(bytes, 29, ~crc, 4);
   write_bytes(png, bytes);
   EXPECT_NE(message_of(png).find("huge.png: corrupt PNG header: 30000 x 30000 pixels cannot be stored in "),
-            std::string::npos) << message_of(png);
+            std::string::npos)
+      << message_of(png);
   // JPEG: the height and width of the start-of-frame segment (after FFC0, length, precision).
   const std::string jpg = scratch("huge.jpg");
   io::write_image(jpg, small);
@@ -153,7 +155,8 @@ TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
   big_endian(bytes, sof + 7, 20000, 2);
   write_bytes(jpg, bytes);
   EXPECT_NE(message_of(jpg).find("huge.jpg: corrupt JPEG header: 20000 x 20000 pixels cannot be stored in "),
-            std::string::npos) << message_of(jpg);
+            std::string::npos)
+      << message_of(jpg);
   big_endian(bytes, sof + 5, 60000, 2);
   big_endian(bytes, sof + 7, 60000, 2);
   write_bytes(jpg, bytes);
@@ -165,8 +168,8 @@ TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
 
 TEST(ImageIo, TransparencyIsCompositedOntoWhite) {
   // A black vertical line on a fully transparent background (RGBA and grey + alpha): the background reads as
-  // white paper (libpng composited it onto the zeroed buffer: black, so every pixel was ink), the line as black,
-  // and a half-transparent black pixel as a middle grey.
+  // white paper (libpng composited it onto the zeroed buffer: black, so every pixel was ink), the line as
+  // black, and a half-transparent black pixel as a middle grey.
   const int w = 16, h = 16;
   for (const bool colour : {true, false}) {
     const int channels = colour ? 4 : 2;

@@ -5,10 +5,10 @@
 #include <FeatureRecon/sampling/bilateral_dart_throwing.h>
 #include <FeatureRecon/sampling/continuous_dart_throwing.h>
 #include <FeatureRecon/sampling/discrete_lloyd.h>
-#include <FeatureRecon/sampling/kernel_relaxation.h>
-#include <FeatureRecon/sampling/weighted_sample_elimination.h>
 #include <FeatureRecon/sampling/image_domain.h>
+#include <FeatureRecon/sampling/kernel_relaxation.h>
 #include <FeatureRecon/sampling/sampling_quality.h>
+#include <FeatureRecon/sampling/weighted_sample_elimination.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
@@ -147,7 +147,8 @@ TEST(BilateralDartThrowing, TargetCountWithTheExponentialForm) {
     o.darts.form = Bilateral_form::exponential;
     o.darts.sigma_feature = 0.03;
     std::vector<std::size_t> kept;
-    const auto r = bilateral_dart_throwing_count(pixels, count, std::back_inserter(kept), o, Grey_pixel_traits());
+    const auto r =
+        bilateral_dart_throwing_count(pixels, count, std::back_inserter(kept), o, Grey_pixel_traits());
     EXPECT_EQ(r.status, Status::success) << count;
     ASSERT_EQ(kept.size(), count);
     EXPECT_GT(r.radius, 0) << count;
@@ -157,12 +158,13 @@ TEST(BilateralDartThrowing, TargetCountWithTheExponentialForm) {
       for (std::size_t b = a + 1; b < kept.size(); ++b) {
         const Grey_pixel &x = pixels[kept[a]], &y = pixels[kept[b]];
         if (x.value == y.value) {
-          ASSERT_GE(std::hypot(x.column - y.column, x.row - y.row) / o.darts.sigma_position, r.radius * (1 - 1e-12));
+          ASSERT_GE(std::hypot(x.column - y.column, x.row - y.row) / o.darts.sigma_position,
+                    r.radius * (1 - 1e-12));
         }
       }
   }
-  // The radius doubling before the bisection asks the callback at every throw (about 1000 throws here, none of
-  // which could be stopped: 44 s on a 512 x 512 picture), and a stop there ends the run.
+  // The radius doubling before the bisection asks the callback at every throw (about 1000 throws here, none
+  // of which could be stopped: 44 s on a 512 x 512 picture), and a stop there ends the run.
   Dart_throwing_count_options o;
   o.darts.form = Bilateral_form::exponential;
   o.darts.sigma_feature = 0.03;
@@ -206,10 +208,11 @@ TEST(BilateralDartThrowing, ThinWallKeepsBothSheets) {
 }
 
 TEST(BilateralDartThrowing, PositionsTooWideForSigmaArePinnedAndRefused) {
-  // Positions and sigma_position within their own limits but whose ratio squares past the doubles (white noise
-  // scaled by 2^330 with sigma_position 2^-490: every bilateral distance became infinite, dart throwing's
-  // bisection ran to radius 9e307 and returned an arbitrary set with status success) are refused by every
-  // sampler, naming sigma_position. Up to 2^400 the samplers are scale invariant: the same indices as at scale 1.
+  // Positions and sigma_position within their own limits but whose ratio squares past the doubles (white
+  // noise scaled by 2^330 with sigma_position 2^-490: every bilateral distance became infinite, dart
+  // throwing's bisection ran to radius 9e307 and returned an arbitrary set with status success) are refused
+  // by every sampler, naming sigma_position. Up to 2^400 the samplers are scale invariant: the same indices
+  // as at scale 1.
   const std::vector<Point_2> unit = white_noise(2000, 1);
   auto scaled = [&](int e) {
     std::vector<Point_2> p;
@@ -230,7 +233,7 @@ TEST(BilateralDartThrowing, PositionsTooWideForSigmaArePinnedAndRefused) {
     weighted_sample_elimination(p, 200, std::back_inserter(kept), o);
     return kept;
   };
-  const auto wide = scaled(300);  // extent just below 2^300
+  const auto wide = scaled(300);                                   // extent just below 2^300
   EXPECT_EQ(count(wide, std::ldexp(1.0, -99)), count(unit, 1.0));  // span / sigma just below 2^399
   EXPECT_EQ(eliminate(wide, std::ldexp(1.0, -99)), eliminate(unit, 1.0));
   const double too_small = std::ldexp(1.0, -101);  // span / sigma just below 2^401
@@ -239,7 +242,8 @@ TEST(BilateralDartThrowing, PositionsTooWideForSigmaArePinnedAndRefused) {
   std::vector<std::size_t> kept;
   Dart_throwing_options d;
   d.sigma_position = too_small;
-  expect_invalid_argument([&] { bilateral_dart_throwing(wide, 1.0, std::back_inserter(kept), d); }, "sigma_position");
+  expect_invalid_argument([&] { bilateral_dart_throwing(wide, 1.0, std::back_inserter(kept), d); },
+                          "sigma_position");
   Sampling_quality_options q;
   q.sigma_position = too_small;
   expect_invalid_argument([&] { sampling_quality(wide, q); }, "sigma_position");
@@ -247,16 +251,25 @@ TEST(BilateralDartThrowing, PositionsTooWideForSigmaArePinnedAndRefused) {
   c.sigma_position = too_small;
   expect_invalid_argument(
       [&] {
-        continuous_bilateral_dart_throwing({0, 0, std::ldexp(1.0, 300), 1}, 1.0, [](double, double) { return 0.0; },
-                                           [](double, double) { return 0.0; }, c);
+        continuous_bilateral_dart_throwing(
+            {0, 0, std::ldexp(1.0, 300), 1}, 1.0, [](double, double) { return 0.0; },
+            [](double, double) { return 0.0; }, c);
       },
       "sigma_position");
   Kernel_relaxation_options<2> k;
   k.sigma_position = too_small;
-  expect_invalid_argument([&] { kernel_relaxation(wide, std::vector<std::size_t>{0, 5}, k); }, "sigma_position");
+  expect_invalid_argument(
+      [&] {
+        kernel_relaxation(wide, std::vector<std::size_t>{0, 5}, k);
+      },
+      "sigma_position");
   Discrete_lloyd_options<2> l;
   l.sigma_position = too_small;
-  expect_invalid_argument([&] { discrete_bilateral_lloyd(wide, std::vector<std::size_t>{0, 5}, l); }, "sigma_position");
+  expect_invalid_argument(
+      [&] {
+        discrete_bilateral_lloyd(wide, std::vector<std::size_t>{0, 5}, l);
+      },
+      "sigma_position");
   // The sites count too: items in the unit square, sigma_position 1e-110, a site at 1e100 (a site far outside
   // was infinitely far from every item and tied with a nearer one: all items went to the farther site).
   Discrete_lloyd_options<2> s;
@@ -281,7 +294,8 @@ TEST(BilateralDartThrowing, DegenerateInputs) {
   for (int c = 0; c < 5; ++c)
     for (int i = 0; i < 4; ++i) dup.emplace_back(i, 0);
   EXPECT_EQ(darts(dup, 0.5).size(), 4u);
-  const auto r = bilateral_dart_throwing_count(std::vector<Point_2>(6, Point_2(1, 1)), 3, std::back_inserter(kept));
+  const auto r =
+      bilateral_dart_throwing_count(std::vector<Point_2>(6, Point_2(1, 1)), 3, std::back_inserter(kept));
   EXPECT_EQ(r.status, Status::degenerate_input);
   EXPECT_EQ(r.selected, 3u);
   // A grid: exact distances equal to the radius do not conflict (strict test), so r = 1 keeps every pixel.
@@ -294,15 +308,16 @@ TEST(BilateralDartThrowing, DegenerateInputs) {
   const std::vector<Point_2> two_and_one{Point_2(0, 0), Point_2(0, 0), Point_2(1, 0)};
   EXPECT_EQ(darts(two_and_one, 1e-150).size(), 2u);
   EXPECT_EQ(darts(two_and_one, 1e-170).size(), 2u);
-  // ... and the status says that such a radius cannot be trusted: white noise scaled by 2^-540 kept 220 items at
-  // r = 0.03 (scaled) instead of 566, not maximal, with status success.
+  // ... and the status says that such a radius cannot be trusted: white noise scaled by 2^-540 kept 220 items
+  // at r = 0.03 (scaled) instead of 566, not maximal, with status success.
   const std::vector<Point_2> unit = white_noise(3000, 1);
   std::vector<Point_2> tiny;
   for (const Point_2& q : unit) tiny.emplace_back(std::ldexp(q.x(), -540), std::ldexp(q.y(), -540));
   EXPECT_EQ(bilateral_dart_throwing(unit, 0.03, std::back_inserter(kept)).status, Status::success);
   EXPECT_EQ(bilateral_dart_throwing(tiny, std::ldexp(0.03, -540), std::back_inserter(kept)).status,
             Status::degenerate_input);
-  EXPECT_EQ(bilateral_dart_throwing(two_and_one, 1e-170, std::back_inserter(kept)).status, Status::degenerate_input);
+  EXPECT_EQ(bilateral_dart_throwing(two_and_one, 1e-170, std::back_inserter(kept)).status,
+            Status::degenerate_input);
   EXPECT_EQ(bilateral_dart_throwing(two_and_one, 1e-140, std::back_inserter(kept)).status, Status::success);
   // Per-item radii: the result reports the largest (it echoed the ignored radius argument).
   Dart_throwing_options o;
@@ -336,7 +351,8 @@ TEST(BilateralDartThrowing, BadInputNamesTheProblem) {
   EXPECT_THROW(bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o), std::invalid_argument);
   EXPECT_THROW(bilateral_dart_throwing_count(p, 11, std::back_inserter(kept)), std::invalid_argument);
   Dart_throwing_count_options no_steps;
-  no_steps.max_iterations = 0;  // returned the first 5 items of the order with radius 0, as "degenerate input"
+  no_steps.max_iterations =
+      0;  // returned the first 5 items of the order with radius 0, as "degenerate input"
   expect_invalid_argument([&] { bilateral_dart_throwing_count(p, 5, std::back_inserter(kept), no_steps); },
                           "max_iterations must be >= 1");
   // Scales whose square is not a normal double (1e-160 squared is 0: the count search never ended).
@@ -360,8 +376,8 @@ TEST(BilateralDartThrowing, BadInputNamesTheProblem) {
 
 TEST(BilateralDartThrowing, FewBisectionStepsStillBracketTheRadius) {
   // 5000 points, 200 wanted, 3 bisection steps: the halving that finds the bracket used the steps up, and the
-  // result was the first 200 items of the visiting order at radius 0, labelled degenerate input (rho 0.035). The
-  // halving is not counted now: a radius is bracketed and the samples are spread.
+  // result was the first 200 items of the visiting order at radius 0, labelled degenerate input (rho 0.035).
+  // The halving is not counted now: a radius is bracketed and the samples are spread.
   const std::vector<Point_2> p = white_noise(5000, 21);
   for (const std::size_t steps : {1u, 3u, 60u}) {
     Dart_throwing_count_options o;
@@ -377,15 +393,16 @@ TEST(BilateralDartThrowing, FewBisectionStepsStillBracketTheRadius) {
         closest = std::min(closest, std::sqrt(CGAL::squared_distance(p[kept[a]], p[kept[b]])));
     EXPECT_GE(closest, r.radius * (1 - 1e-12)) << steps;  // Poisson disk at the radius reported
   }
-  // Two distinct positions and 10 wanted: no radius above 0 keeps enough. The uncounted halving is bounded (it went
-  // down to 0: about 1078 throws instead of 61).
+  // Two distinct positions and 10 wanted: no radius above 0 keeps enough. The uncounted halving is bounded
+  // (it went down to 0: about 1078 throws instead of 61).
   std::vector<Point_2> two;
   for (int i = 0; i < 2000; ++i) two.emplace_back(i % 2, 0);
   std::size_t calls = 0;
   Dart_throwing_count_options o;
   o.darts.progress = [&calls](double) { return ++calls > 0; };
   std::vector<std::size_t> kept;
-  EXPECT_EQ(bilateral_dart_throwing_count(two, 10, std::back_inserter(kept), o).status, Status::degenerate_input);
+  EXPECT_EQ(bilateral_dart_throwing_count(two, 10, std::back_inserter(kept), o).status,
+            Status::degenerate_input);
   EXPECT_EQ(kept.size(), 10u);
   EXPECT_LE(calls, 60u + 64u + 2u);
 }

@@ -24,7 +24,8 @@ TEST(ContinuousDartThrowing, PoissonDiskAndNearlyMaximal) {
   double d_min = 1;
   for (std::size_t a = 0; a < s.size(); ++a)
     for (std::size_t b = a + 1; b < s.size(); ++b)
-      d_min = std::min(d_min, std::hypot(s[a].position[0] - s[b].position[0], s[a].position[1] - s[b].position[1]));
+      d_min = std::min(d_min,
+                       std::hypot(s[a].position[0] - s[b].position[0], s[a].position[1] - s[b].position[1]));
   EXPECT_GE(d_min, 0.02);
   const double d_hex = std::sqrt(2.0 / (std::sqrt(3.0) * double(s.size())));
   EXPECT_GE(0.02 / d_hex, 0.74) << s.size() << " samples";  // near-maximal Poisson disk
@@ -36,8 +37,8 @@ TEST(ContinuousDartThrowing, PoissonDiskAndNearlyMaximal) {
   o.seed = 4;
   EXPECT_NE(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.02, grey_step, squared, o).samples[0].position,
             s[0].position);
-  // Progress never goes back (a new sample resets the run of failures; the report was that run's share, and went
-  // from 0.0102 back to 0.0006 at r = 0.003), and ends at 1.
+  // Progress never goes back (a new sample resets the run of failures; the report was that run's share, and
+  // went from 0.0102 back to 0.0006 at r = 0.003), and ends at 1.
   std::vector<double> seen;
   o.progress = [&seen](double t) {
     seen.push_back(t);
@@ -72,14 +73,17 @@ TEST(ContinuousDartThrowing, BilateralDistancePacksBothSidesOfAnEdge) {
 TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
   Continuous_dart_throwing_options o;
   o.max_samples = 25;
-  EXPECT_EQ(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.01, grey_step, squared, o).samples.size(), 25u);
+  EXPECT_EQ(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.01, grey_step, squared, o).samples.size(),
+            25u);
   const auto flat = continuous_bilateral_dart_throwing({0, 0, 1, 0}, 0.01, grey_step, squared);
   EXPECT_EQ(flat.status, FeatureRecon::Status::degenerate_input);
   EXPECT_TRUE(flat.samples.empty());
   // A radius larger than the box: exactly one sample.
   EXPECT_EQ(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 5.0, grey_step, squared).samples.size(), 1u);
-  EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.0, grey_step, squared), std::invalid_argument);
-  EXPECT_THROW(continuous_bilateral_dart_throwing({1, 0, 0, 1}, 0.1, grey_step, squared), std::invalid_argument);
+  EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.0, grey_step, squared),
+               std::invalid_argument);
+  EXPECT_THROW(continuous_bilateral_dart_throwing({1, 0, 0, 1}, 0.1, grey_step, squared),
+               std::invalid_argument);
   EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, std::nan(""), 1}, 0.1, grey_step, squared),
                std::invalid_argument);
   // A finite box whose width overflows put every dart at x = inf (and never ended without a cap).
@@ -87,13 +91,15 @@ TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
     continuous_bilateral_dart_throwing({-1e308, 0, 1e308, 1}, 0.1, grey_step, squared, o);
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("box[0] = -1e+308 lies beyond +-1e100"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("box[0] = -1e+308 lies beyond +-1e100"), std::string::npos)
+        << e.what();
   }
   // A radius whose square underflows: the metric decides (the prefilter rejected every pair, so no dart
   // conflicted and the 5,000-dart cap was reached). The same as the problem scaled by 1e161.
   Continuous_dart_throwing_options capped;
   capped.max_samples = 5000;
-  const auto tiny = continuous_bilateral_dart_throwing({0, 0, 1e-161, 1e-161}, 1e-162, grey_step, squared, capped);
+  const auto tiny =
+      continuous_bilateral_dart_throwing({0, 0, 1e-161, 1e-161}, 1e-162, grey_step, squared, capped);
   const auto unit = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.1, grey_step, squared, capped);
   EXPECT_LT(tiny.samples.size(), 200u);
   EXPECT_LT(unit.samples.size(), 200u);

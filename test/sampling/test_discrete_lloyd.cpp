@@ -50,7 +50,8 @@ std::vector<Site> random_sites(std::size_t n, int w, int h, unsigned seed) {
 
 // Brute-force assignment: every site, smallest xi, ties to the lowest index.
 template <class Metric>
-std::vector<std::uint32_t> brute_force(const std::vector<Grey_pixel>& px, const std::vector<Site>& sites, Metric m) {
+std::vector<std::uint32_t> brute_force(const std::vector<Grey_pixel>& px, const std::vector<Site>& sites,
+                                       Metric m) {
   std::vector<std::uint32_t> out;
   const Grey_pixel_traits t;
   for (const auto& p : px) {
@@ -59,7 +60,8 @@ std::vector<std::uint32_t> brute_force(const std::vector<Grey_pixel>& px, const 
     std::uint32_t arg = 0;
     for (std::size_t j = 0; j < sites.size(); ++j) {
       const double dx = x - sites[j].position[0], dy = y - sites[j].position[1];
-      const double xi = m(dx * dx + dy * dy, t.compute_feature_distance_object()({p.value}, sites[j].feature));
+      const double xi =
+          m(dx * dx + dy * dy, t.compute_feature_distance_object()({p.value}, sites[j].feature));
       if (xi < best) {
         best = xi;
         arg = static_cast<std::uint32_t>(j);
@@ -91,8 +93,9 @@ TEST(Discrete_lloyd, AssignmentMatchesBruteForceInBothForms) {
 }
 
 TEST(Discrete_lloyd, GridOfANearlyFlatPatchStaysSmall) {
-  // A 100 x 100 patch 1e-12 thick (rounding noise on a plane in 3-D): the thin axis gets one cell and the grid
-  // about the cells asked for (it used to count the thin axis in the cell size: about n^2 cells, 784 MB).
+  // A 100 x 100 patch 1e-12 thick (rounding noise on a plane in 3-D): the thin axis gets one cell and the
+  // grid about the cells asked for (it used to count the thin axis in the cell size: about n^2 cells, 784
+  // MB).
   using Grid = FeatureRecon::sampling::internal::Ring_grid<3>;
   const Grid flat({0, 0, 0.1}, {100, 100, 0.1 + 1e-12}, 10000);
   EXPECT_LE(flat.number_of_cells(), 4u * 10000u);
@@ -160,8 +163,8 @@ TEST(Discrete_lloyd, EuclideanEnergyDecreasesAndSitesSpreadOut) {
     EXPECT_LE(r.history[i].energy, r.history[i - 1].energy * (1 + 1e-12)) << "iteration " << i + 1;
   EXPECT_LT(r.history.back().energy, 0.7 * r.history.front().energy);
   EXPECT_LT(r.history.front().relative_radius, 0.3);  // random sites clump
-  EXPECT_GT(r.history.back().relative_radius, 0.6);  // evenly spread over the image
-  for (const double m : r.mass) EXPECT_GT(m, 40.0);  // every cell holds a fair share of the 4096 pixels
+  EXPECT_GT(r.history.back().relative_radius, 0.6);   // evenly spread over the image
+  for (const double m : r.mass) EXPECT_GT(m, 40.0);   // every cell holds a fair share of the 4096 pixels
   EXPECT_EQ(r.stop, Lloyd_stop::iteration_cap);
   EXPECT_EQ(r.status, Status::success);
 }
@@ -304,7 +307,8 @@ TEST(Discrete_lloyd, PointsWithNormalsIn3D) {
 
 TEST(Discrete_lloyd, ExponentialFormWithCopiesOfFarFeatures) {
   // Two items at one place with opposite normals: exp(4 / 0.05^2) overflows, and 0 * inf was NaN, which no
-  // site's score beat (site index 2^32 - 1 written to). Identical positions are at distance 0: site 0 takes both.
+  // site's score beat (site index 2^32 - 1 written to). Identical positions are at distance 0: site 0 takes
+  // both.
   using K = test::K;
   const std::vector<std::pair<K::Point_3, K::Vector_3>> items{{K::Point_3(0, 0, 0), K::Vector_3(0, 0, 1)},
                                                               {K::Point_3(0, 0, 0), K::Vector_3(0, 0, -1)},
@@ -312,7 +316,8 @@ TEST(Discrete_lloyd, ExponentialFormWithCopiesOfFarFeatures) {
   Discrete_lloyd_options<3> o;
   o.form = Bilateral_form::exponential;
   o.sigma_feature = 0.05;
-  const auto a = bilateral_voronoi_assignment(items, sites_at_items(items, std::vector<std::size_t>{0, 2}), o);
+  const auto a =
+      bilateral_voronoi_assignment(items, sites_at_items(items, std::vector<std::size_t>{0, 2}), o);
   EXPECT_EQ(a.site, (std::vector<std::uint32_t>{0, 0, 1}));
   EXPECT_EQ(a.mass, (std::vector<double>{2, 1}));
   // Dart throwing: the copy conflicts with the first (it was kept: NaN < r is false).
@@ -326,8 +331,8 @@ TEST(Discrete_lloyd, ExponentialFormWithCopiesOfFarFeatures) {
 
 TEST(Discrete_lloyd, VolumesZeroNormalsAndNoIteration) {
   using K = test::K;
-  // Items filling the unit cube (21^3 grid), sites on a 5^3 cubic lattice of spacing 0.25: rho against the FCC
-  // packing, as sampling_quality() measures it (the hexagonal formula with the volume gave 2.60).
+  // Items filling the unit cube (21^3 grid), sites on a 5^3 cubic lattice of spacing 0.25: rho against the
+  // FCC packing, as sampling_quality() measures it (the hexagonal formula with the volume gave 2.60).
   std::vector<K::Point_3> cube;
   for (int i = 0; i <= 20; ++i)
     for (int j = 0; j <= 20; ++j)
@@ -346,7 +351,8 @@ TEST(Discrete_lloyd, VolumesZeroNormalsAndNoIteration) {
               0.25 / std::cbrt(std::sqrt(2.0) * std::pow(1.05, 3) / 125), 1e-9);
   o.intrinsic_dimension = 4;
   EXPECT_THROW(discrete_bilateral_lloyd(cube, lattice, o), std::invalid_argument);
-  // A zero normal is refused only where normals are compared (finite sigma_feature), as by the other samplers.
+  // A zero normal is refused only where normals are compared (finite sigma_feature), as by the other
+  // samplers.
   std::vector<std::pair<K::Point_3, K::Vector_3>> sheet;
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 10; ++j) sheet.push_back({K::Point_3(i, j, 0), K::Vector_3(0, 0, 1)});
@@ -356,9 +362,10 @@ TEST(Discrete_lloyd, VolumesZeroNormalsAndNoIteration) {
   const auto r = discrete_bilateral_lloyd(sheet, std::vector<std::size_t>{0, 50, 99}, e);
   EXPECT_EQ(r.history.size(), 2u);
   e.sigma_feature = 0.5;
-  EXPECT_THROW(discrete_bilateral_lloyd(sheet, std::vector<std::size_t>{0, 50, 99}, e), std::invalid_argument);
-  // A site with a zero normal is refused as such an item is, naming the site (it silently got no item, or alone
-  // an infinite energy).
+  EXPECT_THROW(discrete_bilateral_lloyd(sheet, std::vector<std::size_t>{0, 50, 99}, e),
+               std::invalid_argument);
+  // A site with a zero normal is refused as such an item is, naming the site (it silently got no item, or
+  // alone an infinite energy).
   sheet[5].second = K::Vector_3(0, 0, 1);
   auto sites = sites_at_items(sheet, std::vector<std::size_t>{0, 77});
   sites[1].feature = K::Vector_3(0, 0, 0);
@@ -398,8 +405,10 @@ TEST(Discrete_lloyd, BadInputNamesTheProblem) {
   // float-to-integer cast).
   bad = sites;
   bad[1].position[0] = 1e200;
-  expect_message([&] { discrete_bilateral_lloyd(px, bad, o); }, "site 1 has coordinate 1e+200 beyond +-1e100");
-  expect_message([&] { bilateral_voronoi_assignment(px, bad, o); }, "site 1 has coordinate 1e+200 beyond +-1e100");
+  expect_message([&] { discrete_bilateral_lloyd(px, bad, o); },
+                 "site 1 has coordinate 1e+200 beyond +-1e100");
+  expect_message([&] { bilateral_voronoi_assignment(px, bad, o); },
+                 "site 1 has coordinate 1e+200 beyond +-1e100");
   bad[1].position[0] = -1e100;  // the bound itself is allowed
   EXPECT_NO_THROW(discrete_lloyd_step(px, bad, o));
   expect_message([&] { sites_at_items(px, std::vector<int>{0, 5, 36}); }, "indices[2] = 36");
@@ -408,7 +417,8 @@ TEST(Discrete_lloyd, BadInputNamesTheProblem) {
   expect_message([&] { discrete_bilateral_lloyd(px, sites, o); }, "domain_measure");
   o.domain_measure = 0;
   o.energy_tolerance = std::numeric_limits<double>::infinity();  // stopped every run after two iterations
-  expect_message([&] { discrete_bilateral_lloyd(px, sites, o); }, "energy_tolerance and move_tolerance must be finite");
+  expect_message([&] { discrete_bilateral_lloyd(px, sites, o); },
+                 "energy_tolerance and move_tolerance must be finite");
 }
 
 }  // namespace

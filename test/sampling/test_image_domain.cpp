@@ -35,7 +35,8 @@ TEST(ImageDomain, PixelsInRowOrder) {
     (void)image_pixels<Rgb_pixel>(2, 2, rgb);
     FAIL() << "size mismatch accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("data has 6 values, a 2 x 2 image with 3 channel(s) needs 12"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("data has 6 values, a 2 x 2 image with 3 channel(s) needs 12"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_THROW((void)image_pixels<Grey_pixel>(-1, 2, {}), std::invalid_argument);
@@ -47,10 +48,10 @@ TEST(ImageDomain, BilinearColours) {
   EXPECT_EQ(g.box(), (std::array<double, 4>{0, 0, 2, 2}));
   EXPECT_DOUBLE_EQ(g(0.5, 0.5)[0], 0.0);  // pixel centres give the pixel values
   EXPECT_DOUBLE_EQ(g(1.5, 0.5)[0], 1.0);
-  EXPECT_DOUBLE_EQ(g(1.0, 0.5)[0], 0.5);   // halfway along the top row
-  EXPECT_DOUBLE_EQ(g(1.0, 1.0)[0], 0.5);   // the middle: the mean of four
+  EXPECT_DOUBLE_EQ(g(1.0, 0.5)[0], 0.5);    // halfway along the top row
+  EXPECT_DOUBLE_EQ(g(1.0, 1.0)[0], 0.5);    // the middle: the mean of four
   EXPECT_DOUBLE_EQ(g(0.75, 0.5)[0], 0.25);  // linear in between
-  EXPECT_DOUBLE_EQ(g(0.0, 0.0)[0], 0.0);   // constant beyond the outer centres
+  EXPECT_DOUBLE_EQ(g(0.0, 0.0)[0], 0.0);    // constant beyond the outer centres
   EXPECT_DOUBLE_EQ(g(1.99, 0.1)[0], 1.0);
   // RGB keeps the channels apart.
   const Bilinear_image<3> c(2, 1, {255, 0, 0, 0, 0, 255});
@@ -62,8 +63,9 @@ TEST(ImageDomain, BilinearColours) {
   EXPECT_THROW(Bilinear_image<1>(2, 2, {1, 2, 3}), std::invalid_argument);
   // The same scale as the pixel traits' feature distance.
   const auto px = image_pixels<Rgb_pixel>(2, 1, {255, 0, 0, 0, 0, 255});
-  EXPECT_DOUBLE_EQ(Rgb_pixel_traits().compute_feature_distance_object()(Rgb_pixel_traits().construct_feature_object()(px[0]),
-                                                                         Rgb_pixel_traits().construct_feature_object()(px[1])),
+  EXPECT_DOUBLE_EQ(Rgb_pixel_traits().compute_feature_distance_object()(
+                       Rgb_pixel_traits().construct_feature_object()(px[0]),
+                       Rgb_pixel_traits().construct_feature_object()(px[1])),
                    2.0 / 3.0);
 }
 
@@ -83,9 +85,11 @@ TEST(ImageDomain, ContinuousDartsKeepAThinLine) {
   };
   Continuous_dart_throwing_options o;
   o.seed = 5;
-  const auto euclidean = continuous_bilateral_dart_throwing(image.box(), 4.0, image, Mean_squared_channel_distance(), o);
+  const auto euclidean =
+      continuous_bilateral_dart_throwing(image.box(), 4.0, image, Mean_squared_channel_distance(), o);
   o.sigma_feature = 0.1;
-  const auto bilateral = continuous_bilateral_dart_throwing(image.box(), 4.0, image, Mean_squared_channel_distance(), o);
+  const auto bilateral =
+      continuous_bilateral_dart_throwing(image.box(), 4.0, image, Mean_squared_channel_distance(), o);
   // The line is narrower than the radius: Euclidean darts hit it by chance (~1.5 px of every 4-5 px column
   // spacing), bilateral darts fill it, because a dark sample is far from the light ones beside it.
   EXPECT_GE(on_line(bilateral.samples), 2 * on_line(euclidean.samples))
@@ -96,9 +100,11 @@ TEST(ImageDomain, ContinuousDartsKeepAThinLine) {
     EXPECT_LT(s.position[0], 96.0);
     EXPECT_EQ(s.feature, image(s.position[0], s.position[1]));
   }
-  const auto again = continuous_bilateral_dart_throwing(image.box(), 4.0, image, Mean_squared_channel_distance(), o);
+  const auto again =
+      continuous_bilateral_dart_throwing(image.box(), 4.0, image, Mean_squared_channel_distance(), o);
   ASSERT_EQ(again.samples.size(), bilateral.samples.size());
-  for (std::size_t i = 0; i < again.samples.size(); ++i) EXPECT_EQ(again.samples[i].position, bilateral.samples[i].position);
+  for (std::size_t i = 0; i < again.samples.size(); ++i)
+    EXPECT_EQ(again.samples[i].position, bilateral.samples[i].position);
 }
 
 TEST(ImageDomain, PixelEliminationKeepsAThinLine) {

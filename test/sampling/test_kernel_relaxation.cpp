@@ -36,7 +36,8 @@ std::vector<Grey_pixel> image(int w, int h, const std::function<int(int, int)>& 
   return image_pixels<Grey_pixel>(w, h, v);
 }
 
-std::vector<Site> random_sites(std::size_t n, const std::vector<Grey_pixel>& px, int w, int h, unsigned seed) {
+std::vector<Site> random_sites(std::size_t n, const std::vector<Grey_pixel>& px, int w, int h,
+                               unsigned seed) {
   std::mt19937_64 rng(seed);
   auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
   std::vector<Site> s(n);
@@ -63,7 +64,8 @@ void expect_gradient(const Items& items, const Sites& sites, const Options& o) {
       auto plus = sites, minus = sites;
       plus[i].position[k] += h;
       minus[i].position[k] -= h;
-      const double fd = (kernel_energy(items, plus, o).energy - kernel_energy(items, minus, o).energy) / (2 * h);
+      const double fd =
+          (kernel_energy(items, plus, o).energy - kernel_energy(items, minus, o).energy) / (2 * h);
       EXPECT_NEAR(e.gradient[i][k], fd, 1e-6 * largest + 1e-12) << "site " << i << " coordinate " << k;
     }
 }
@@ -80,15 +82,16 @@ TEST(Kernel_relaxation, GradientMatchesFiniteDifferences) {
   o.sigma_position = 2;
   o.kernel_width = 2.0;
   o.density.assign(px.size(), 1.0);
-  for (std::size_t i = 0; i < px.size(); ++i) o.density[i] = px[i].value < 100 ? 4.0 : 1.0;  // adaptive scales
+  for (std::size_t i = 0; i < px.size(); ++i)
+    o.density[i] = px[i].value < 100 ? 4.0 : 1.0;  // adaptive scales
   expect_gradient(px, sites, o);
   // Ghosts count: a single site near a face feels its mirror image.
   Kernel_relaxation_options<2> one;
   one.kernel_width = 3;
   const std::vector<Site> lone{{{1.0, 10.0}, {30}}, {{20.0, 10.0}, {30}}};
   const auto e = kernel_energy(px, lone, one);
-  // Site 0 at x = 1: its ghost across x = 0 at distance 2; site 1 at x = 20, ghost across x = 24 at distance 8
-  // (within 3 * 3 = 9); the pair itself is 19 apart (cut off at 9); y faces are 10 away (cut off).
+  // Site 0 at x = 1: its ghost across x = 0 at distance 2; site 1 at x = 20, ghost across x = 24 at distance
+  // 8 (within 3 * 3 = 9); the pair itself is 19 apart (cut off at 9); y faces are 10 away (cut off).
   EXPECT_NEAR(e.energy, (std::exp(-4.0 / 9) + std::exp(-64.0 / 9) - 2 * std::exp(-9.0)) / 2, 1e-15);
   EXPECT_EQ(e.pairs, 2u);
   EXPECT_LT(e.gradient[0][0], 0);  // the energy falls as site 0 moves away from the face at x = 0
@@ -178,7 +181,7 @@ TEST(Kernel_relaxation, FeaturesFollowAndEdgesAttract) {
     for (const auto& a : sites) n += std::abs(a.position[0] - 30) < 1.0;
     return n;
   };
-  EXPECT_GE(near_edge(bilateral.sites), 2 * near_edge(euclidean.sites));  // 8 and 3 here
+  EXPECT_GE(near_edge(bilateral.sites), 2 * near_edge(euclidean.sites));       // 8 and 3 here
   EXPECT_LT(min_across(bilateral.sites), 0.85 * min_across(euclidean.sites));  // 3.1 and 4.0
   for (const auto* r : {&euclidean, &bilateral})
     for (const auto& s : r->sites) {
@@ -207,9 +210,10 @@ TEST(Kernel_relaxation, DensityAdaptsTheSpacing) {
 }
 
 TEST(Kernel_relaxation, DensityFinerThanTheKernelCountsByItsMean) {
-  // Every other column dark: the kernel (about 4.7 pixels wide) sees a uniform half-density, so 40 sites spread
-  // over the picture. With the density of the one pixel under each site the scale switched between 0.7 and 8
-  // from column to column, the energy jumped from 0.23 to 150 and 24 of the 40 sites ended in the corners.
+  // Every other column dark: the kernel (about 4.7 pixels wide) sees a uniform half-density, so 40 sites
+  // spread over the picture. With the density of the one pixel under each site the scale switched between 0.7
+  // and 8 from column to column, the energy jumped from 0.23 to 150 and 24 of the 40 sites ended in the
+  // corners.
   const int w = 64, h = 48;
   const auto px = image(w, h, [](int c, int) { return c % 2 == 0 ? 0 : 255; });
   Kernel_relaxation_options<2> o;
@@ -239,8 +243,9 @@ TEST(Kernel_relaxation, DensityFinerThanTheKernelCountsByItsMean) {
 }
 
 TEST(Kernel_relaxation, SitesOutsideTheBoxAreReflectedNotStacked) {
-  // Distinct sites beyond a corner of the box come back reflected across its faces, distinct, and spread (clamped
-  // they all landed on the corner point, where copies have no gradient between them, and stayed: no_descent).
+  // Distinct sites beyond a corner of the box come back reflected across its faces, distinct, and spread
+  // (clamped they all landed on the corner point, where copies have no gradient between them, and stayed:
+  // no_descent).
   const auto px = image(16, 16, [](int, int) { return 0; });
   const std::vector<Site> start{Site{{-0.2, -0.3}, {0}}, Site{{-0.4, -0.1}, {0}}, Site{{-0.6, -0.6}, {0}},
                                 Site{{16.3, -0.2}, {0}}, Site{{16.1, -0.5}, {0}}};
@@ -301,7 +306,7 @@ TEST(Kernel_relaxation, SnapsToItemsOnSurfaces) {
     for (int j = 0; j < 40; ++j) items.push_back({K::Point_3(i, j, 0), K::Vector_3(0, 0, 1)});
   std::vector<std::size_t> start;
   for (std::size_t k = 0; k < 60; ++k) start.push_back((k * 7919) % 400);  // crowded in the first 10 rows
-  start.push_back(start[0]);                                              // and one duplicate
+  start.push_back(start[0]);                                               // and one duplicate
   Kernel_relaxation_options<3> o;
   EXPECT_EQ(o.constraint, Kernel_constraint::snap_to_item);
   o.max_iterations = 80;
@@ -428,7 +433,8 @@ TEST(Kernel_relaxation, BadInputNamesTheProblem) {
   expect_message([&] { kernel_relaxation(px, bad, o); }, "site 1");
   expect_message([&] { kernel_relaxation(px, std::vector<std::size_t>{0, 99}, o); }, "indices[1] = 99");
   o.energy_tolerance = std::numeric_limits<double>::infinity();  // stopped every run after two iterations
-  expect_message([&] { kernel_relaxation(px, sites, o); }, "energy_tolerance and move_tolerance must be finite");
+  expect_message([&] { kernel_relaxation(px, sites, o); },
+                 "energy_tolerance and move_tolerance must be finite");
   o.energy_tolerance = 0;
   // A tiny kernel width and a far site are accepted and need no more grid cells than points (both threw
   // std::bad_alloc: volume / (cutoff width)^2 cells).
@@ -443,8 +449,8 @@ TEST(Kernel_relaxation, BadInputNamesTheProblem) {
 }  // namespace
 
 TEST(KernelRelaxation, StartingFeaturesAreTakenFromTheItems) {
-  // The sites' features are replaced by their items' before they are read: placeholder zero normals are fine here
-  // (refused by discrete Lloyd and kernel_energy, which read them).
+  // The sites' features are replaced by their items' before they are read: placeholder zero normals are fine
+  // here (refused by discrete Lloyd and kernel_energy, which read them).
   using SK = CGAL::Simple_cartesian<double>;
   using Tr = FeatureRecon::Point_with_normal_traits<SK>;
   std::mt19937 rng(3);

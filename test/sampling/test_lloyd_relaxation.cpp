@@ -35,7 +35,8 @@ Density_moments polygon_moments(const Polygon_2d& poly) {
     m.mass += c / 2;
     m.moment_x += (a[0] + b[0]) * c / 6;
     m.moment_y += (a[1] + b[1]) * c / 6;
-    m.moment_2 += (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] + b[1] * b[1]) * c / 12;
+    m.moment_2 +=
+        (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] + b[1] * b[1]) * c / 12;
   }
   return m;
 }
@@ -46,7 +47,8 @@ Density_moments brute_force_moments(const Polygon_2d& poly, const Pixel_density&
   for (int row = 0; row < d.height(); ++row)
     for (int column = 0; column < d.width(); ++column) {
       Polygon_2d piece = poly, scratch;
-      sampling::internal::Voronoi_builder::clip({double(column), double(row), column + 1.0, row + 1.0}, piece, scratch);
+      sampling::internal::Voronoi_builder::clip({double(column), double(row), column + 1.0, row + 1.0}, piece,
+                                                scratch);
       if (piece.size() < 3) continue;
       Density_moments m = polygon_moments(piece);
       const double r = d.value(column, row);
@@ -141,13 +143,14 @@ TEST(PixelDensity, BadValuesNamed) {
   }
   EXPECT_THROW(Pixel_density(2, 2, {1, 1, 1}), std::invalid_argument);
   EXPECT_THROW(Pixel_density(1, 1, {std::nan("")}), std::invalid_argument);
-  // Finite values whose integrals overflow (the total was inf, every cell "empty", and Lloyd returned success with
-  // sites that never moved): refused, naming the cause.
+  // Finite values whose integrals overflow (the total was inf, every cell "empty", and Lloyd returned success
+  // with sites that never moved): refused, naming the cause.
   try {
     Pixel_density(2, 2, {1e308, 1e308, 1e308, 1e308});
     ADD_FAILURE() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("Pixel_density: the values are too large"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("Pixel_density: the values are too large"), std::string::npos)
+        << e.what();
   }
   EXPECT_NO_THROW(Pixel_density(2, 2, {1e300, 1e300, 1e300, 1e300}));
 }
@@ -159,7 +162,8 @@ void check_cells(const std::vector<P2>& sites, const std::array<double, 4>& box,
   double area = 0;
   for (const auto& c : cells) {
     area += c.size() >= 3 ? polygon_moments(c).mass : 0.0;
-    for (std::size_t i = 0; i < c.size() && c.size() > 1; ++i)  // vertices not repeated (clipping at a vertex did)
+    for (std::size_t i = 0; i < c.size() && c.size() > 1;
+         ++i)  // vertices not repeated (clipping at a vertex did)
       EXPECT_NE(c[i], c[(i + 1) % c.size()]) << i;
   }
   EXPECT_NEAR(area, (box[2] - box[0]) * (box[3] - box[1]), 1e-9 * (box[2] - box[0]) * (box[3] - box[1]));
@@ -188,7 +192,8 @@ void check_cells(const std::vector<P2>& sites, const std::array<double, 4>& box,
       }
     }
     if (second - bd < 1e-7) continue;  // a tie: either cell may hold it
-    EXPECT_TRUE(inside(cells[best], q)) << "point (" << q[0] << ", " << q[1] << ") not in the cell of site " << best;
+    EXPECT_TRUE(inside(cells[best], q))
+        << "point (" << q[0] << ", " << q[1] << ") not in the cell of site " << best;
   }
 }
 
@@ -199,14 +204,15 @@ TEST(ClippedVoronoiCells, MatchBruteForceOnRandomAndDegenerateSites) {
   std::vector<P2> random(50);
   for (auto& s : random) s = {ux(rng), uy(rng)};
   check_cells(random, box, rng);
-  check_cells({{3.0, 2.0}}, box, rng);                                       // one site: the whole box
+  check_cells({{3.0, 2.0}}, box, rng);                                      // one site: the whole box
   check_cells({{1.0, 1.0}, {2.0, 2.0}, {3.0, 3.0}, {4.0, 4.0}}, box, rng);  // collinear: parallel strips
-  std::vector<P2> grid;                                                      // cocircular everywhere
+  std::vector<P2> grid;                                                     // cocircular everywhere
   for (int i = 0; i <= 10; i += 2)
     for (int j = 0; j <= 6; j += 2) grid.push_back({double(i), double(j)});  // including the box corners
   check_cells(grid, box, rng);
   check_cells({{5.0, 3.0}, {5.0, 3.0}, {2.0, 1.0}, {5.0, 3.0}}, box, rng);  // duplicates
-  check_cells({{0.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}, {0, 0, 1, 1}, rng);  // a cell's vertex on the corner (1, 0)
+  check_cells({{0.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}, {0, 0, 1, 1},
+              rng);  // a cell's vertex on the corner (1, 0)
   const auto cells = clipped_voronoi_cells(std::vector<P2>{{5.0, 3.0}, {2.0, 1.0}, {5.0, 3.0}}, box);
   EXPECT_GE(cells[0].size(), 3u);
   EXPECT_TRUE(cells[2].empty()) << "the higher-indexed copy owns the cell";
@@ -223,11 +229,13 @@ TEST(ClippedVoronoiCells, BadSitesNamed) {
     (void)clipped_voronoi_cells(std::vector<P2>{{1, 1}, {2, 2}, {4.5, 1}}, box);
     FAIL() << "site outside the box accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("site 2 (4.5, 1) lies outside the box"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("site 2 (4.5, 1) lies outside the box"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW((void)clipped_voronoi_cells(std::vector<P2>{{1, std::nan("")}}, box), std::invalid_argument);
   EXPECT_THROW((void)clipped_voronoi_cells(std::vector<P2>{{1, 1}}, {0, 0, -1, 4}), std::invalid_argument);
-  EXPECT_THROW((void)clipped_voronoi_cells(std::vector<std::vector<double>>{{1, 1, 1}}, box), std::invalid_argument);
+  EXPECT_THROW((void)clipped_voronoi_cells(std::vector<std::vector<double>>{{1, 1, 1}}, box),
+               std::invalid_argument);
 }
 
 TEST(LloydStep, FixedPointsAndKnownCentroids) {
@@ -257,8 +265,8 @@ TEST(LloydStep, FixedPointsAndKnownCentroids) {
   EXPECT_EQ(two.mass[0], 0.0);
 }
 
-// Interior cells over zero density: their edge moments cancel to rounding noise, whose ratio sent the site to a
-// corner of the box (stippling stacked dots in white corners). They stay, as a whole empty cell does.
+// Interior cells over zero density: their edge moments cancel to rounding noise, whose ratio sent the site to
+// a corner of the box (stippling stacked dots in white corners). They stay, as a whole empty cell does.
 TEST(LloydStep, SitesOverZeroDensityStay) {
   const int w = 200, h = 120;
   std::vector<double> v(std::size_t(w) * h, 0.0);
@@ -313,7 +321,8 @@ TEST(LloydStep, ThreadsDoNotChangeABit) {
   std::mt19937_64 rng(5);
   const Pixel_density d = random_density(120, 90, rng);
   std::vector<P2> sites;
-  for (int k = 0; k < 3000; ++k) sites.push_back({120 * double(rng() >> 11) * 0x1.0p-53, 90 * double(rng() >> 11) * 0x1.0p-53});
+  for (int k = 0; k < 3000; ++k)
+    sites.push_back({120 * double(rng() >> 11) * 0x1.0p-53, 90 * double(rng() >> 11) * 0x1.0p-53});
   std::vector<sampling::Lloyd_step_result> results;
   for (unsigned threads : {1u, 2u, 3u}) {
     sampling::internal::Voronoi_builder voronoi;
@@ -423,7 +432,8 @@ TEST(LloydRelaxation, StoppingRulesAndDegenerateInput) {
   options.energy_tolerance = -1;
   EXPECT_THROW((void)lloyd_relaxation(sites, d, options), std::invalid_argument);
   // Collinear sites: the cells are vertical strips, whose centroids stay on the line.
-  const auto strips = lloyd_step(std::vector<P2>{{0.0, 5.0}, {1.0, 5.0}, {2.0, 5.0}, {3.0, 5.0}, {4.0, 5.0}}, d);
+  const auto strips =
+      lloyd_step(std::vector<P2>{{0.0, 5.0}, {1.0, 5.0}, {2.0, 5.0}, {3.0, 5.0}, {4.0, 5.0}}, d);
   const double expected[5] = {0.25, 1.0, 2.0, 3.0, 6.75};
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_NEAR(strips.centroids[i][0], expected[i], 1e-12);
@@ -435,9 +445,9 @@ TEST(LloydRelaxation, StoppingRulesAndDegenerateInput) {
 }  // namespace
 
 TEST(LloydRelaxation, CopiesSeparateWhereTheFirstIsAtItsCentroid) {
-  // Four sites at the centres of a 2 x 2 box's pixels, and a copy of the first: the first copy's cell is already
-  // centroidal, so the copy (an empty cell) stayed with it for good, and the run reported success. The copies are
-  // moved apart before the first iteration; so are two sites on one item in discrete Lloyd.
+  // Four sites at the centres of a 2 x 2 box's pixels, and a copy of the first: the first copy's cell is
+  // already centroidal, so the copy (an empty cell) stayed with it for good, and the run reported success.
+  // The copies are moved apart before the first iteration; so are two sites on one item in discrete Lloyd.
   const std::vector<P2> sites{{0.5, 0.5}, {1.5, 0.5}, {0.5, 1.5}, {1.5, 1.5}, {0.5, 0.5}};
   Lloyd_options o;
   o.max_iterations = 50;
@@ -459,9 +469,10 @@ TEST(LloydRelaxation, CopiesSeparateWhereTheFirstIsAtItsCentroid) {
   EXPECT_GE(dr.mass[0], 3.0);
   EXPECT_GE(dr.mass[1], 3.0);
   EXPECT_GT(std::hypot(dr.sites[0].position[0] - dr.sites[1].position[0],
-                       dr.sites[0].position[1] - dr.sites[1].position[1]), 0.9);
-  // A box thinner than the move: the copy stays inside it (it was moved outside, and a stop at the first report
-  // returned it there); without an iteration the sites come back as given.
+                       dr.sites[0].position[1] - dr.sites[1].position[1]),
+            0.9);
+  // A box thinner than the move: the copy stays inside it (it was moved outside, and a stop at the first
+  // report returned it there); without an iteration the sites come back as given.
   const std::vector<P2> thin{{0.5, 500}, {0.5, 500}};
   Lloyd_options none;
   none.max_iterations = 0;

@@ -35,7 +35,8 @@ Bytes disk_image(int w, int h, unsigned seed, int noise = 10) {
     for (int x = 0; x < w; ++x) {
       const double dx = x - 0.45 * w, dy = y - 0.55 * h;
       const int base = dx * dx + dy * dy < 0.09 * w * h ? 60 : 190;
-      d[std::size_t(y) * std::size_t(w) + std::size_t(x)] = std::uint8_t(base + int(rng() % unsigned(2 * noise + 1)) - noise);
+      d[std::size_t(y) * std::size_t(w) + std::size_t(x)] =
+          std::uint8_t(base + int(rng() % unsigned(2 * noise + 1)) - noise);
     }
   return d;
 }
@@ -50,7 +51,8 @@ std::vector<double> brute_force(int w, int h, int c, const Bytes& d, double ss, 
         for (int qx = std::max(0, x - R); qx <= std::min(w - 1, x + R); ++qx) {
           double range2 = 0;
           for (int k = 0; k < c; ++k) {
-            const double diff = (d[(std::size_t(qy) * w + qx) * c + k] - d[(std::size_t(y) * w + x) * c + k]) / 255.0;
+            const double diff =
+                (d[(std::size_t(qy) * w + qx) * c + k] - d[(std::size_t(y) * w + x) * c + k]) / 255.0;
             range2 += diff * diff;
           }
           const double wgt = std::exp(-double((qx - x) * (qx - x) + (qy - y) * (qy - y)) / (2 * ss * ss)) *
@@ -68,7 +70,8 @@ void expect_invalid(F f, const std::string& part) {
   FeatureRecon::test::expect_invalid_argument(f, part);
 }
 
-Sampled_bilateral_filter_options sampled(Tap_mode mode, Tap_sampling sampling, double budget, std::uint64_t seed = 1) {
+Sampled_bilateral_filter_options sampled(Tap_mode mode, Tap_sampling sampling, double budget,
+                                         std::uint64_t seed = 1) {
   Sampled_bilateral_filter_options o;
   o.mode = mode;
   o.sampling = sampling;
@@ -95,7 +98,8 @@ TEST(BilateralFilter, ExactMatchesTheDefinitionGreyAndRgb) {
     std::size_t window = 0;
     for (int y = 0; y < 9; ++y)
       for (int x = 0; x < 13; ++x)
-        window += std::size_t(std::min(12, x + 4) - std::max(0, x - 4) + 1) * std::size_t(std::min(8, y + 4) - std::max(0, y - 4) + 1);
+        window += std::size_t(std::min(12, x + 4) - std::max(0, x - 4) + 1) *
+                  std::size_t(std::min(8, y + 4) - std::max(0, y - 4) + 1);
     EXPECT_EQ(r.taps, window);
   }
 }
@@ -134,8 +138,8 @@ TEST(SampledBilateralFilter, MeetsTheBudget) {
   const auto p = bilateral_tap_pattern(40, 32, 1, d, sampled(Tap_mode::global, Tap_sampling::bilateral, 0.7));
   EXPECT_EQ(p.pixels.size(), std::size_t(std::llround(0.7 * 40 * 32)));
   // RGB noise: neighbours' colours lie far apart, so local bilateral darts conflict only at radii beyond the
-  // Euclidean ones. The radius stopped at the pool's reach, 4.23 pixels, with 0.22 taps per kernel pixel for a
-  // budget of 0.1 (0.65 for 0.3, 0.086 for 0.05); the pool now grows its reach until the budget is met.
+  // Euclidean ones. The radius stopped at the pool's reach, 4.23 pixels, with 0.22 taps per kernel pixel for
+  // a budget of 0.1 (0.65 for 0.3, 0.086 for 0.05); the pool now grows its reach until the budget is met.
   std::mt19937_64 rng(5);
   Bytes noise(64 * 48 * 3);
   for (auto& v : noise) v = std::uint8_t(rng() % 256);
@@ -149,9 +153,11 @@ TEST(SampledBilateralFilter, MeetsTheBudget) {
     const auto r = sampled_bilateral_filter(64, 48, 3, noise, o);
     EXPECT_NEAR(r.taps_per_kernel_pixel, b, 0.01 * b) << b;
     EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end())) << b;
-    if (b == 0.1) {  // the longer reaches report between the calibration (up to 0.15) and the pixels (from 0.2)
+    if (b ==
+        0.1) {  // the longer reaches report between the calibration (up to 0.15) and the pixels (from 0.2)
       EXPECT_GT(r.sampling_radius, 4.3);
-      EXPECT_TRUE(std::any_of(reported.begin(), reported.end(), [](double f) { return f > 0.15 && f < 0.2; }));
+      EXPECT_TRUE(
+          std::any_of(reported.begin(), reported.end(), [](double f) { return f > 0.15 && f < 0.2; }));
     }
   }
 }
@@ -162,7 +168,8 @@ TEST(SampledBilateralFilter, GlobalPatternIsPoissonDiskInTheBilateralDistance) {
     auto o = sampled(Tap_mode::global, s, 0.5, 11);
     const auto p = bilateral_tap_pattern(36, 30, 1, d, o);
     ASSERT_EQ(p.positions.size(), p.pixels.size());
-    const double f = s == Tap_sampling::uniform ? 0 : 1 / (255.0 * 255.0 * o.kernel.sigma_range * o.kernel.sigma_range);
+    const double f =
+        s == Tap_sampling::uniform ? 0 : 1 / (255.0 * 255.0 * o.kernel.sigma_range * o.kernel.sigma_range);
     for (std::size_t i = 0; i < p.pixels.size(); ++i) {
       // Each tap reads the pixel it lies in, taps sorted by pixel.
       EXPECT_EQ(p.pixels[i], std::uint32_t(p.positions[i][1]) * 36u + std::uint32_t(p.positions[i][0]));
@@ -185,7 +192,8 @@ TEST(SampledBilateralFilter, GlobalPatternIsPoissonDiskInTheBilateralDistance) {
 
 TEST(SampledBilateralFilter, BilateralTapsCrowdAtEdgesAndCompensationWeighsThemDown) {
   const Bytes d = disk_image(48, 48, 4);
-  const auto p = bilateral_tap_pattern(48, 48, 1, d, sampled(Tap_mode::global, Tap_sampling::bilateral, 0.5, 3));
+  const auto p =
+      bilateral_tap_pattern(48, 48, 1, d, sampled(Tap_mode::global, Tap_sampling::bilateral, 0.5, 3));
   // Pixels next to the disk's boundary (a neighbour differs by more than 80) against the others.
   double edge_taps = 0, edge_pixels = 0, flat_taps = 0, flat_pixels = 0, edge_weight = 0, flat_weight = 0;
   std::vector<int> taps(48 * 48, 0);
@@ -205,8 +213,8 @@ TEST(SampledBilateralFilter, BilateralTapsCrowdAtEdgesAndCompensationWeighsThemD
   EXPECT_LT(edge_weight / edge_taps, 0.9 * flat_weight / flat_taps);
 }
 
-// The compensation reads every pixel of the disc up to r = 24 and every ceil(r / 24)-th beyond (a budget of 1e-4
-// gave r = 74 and took 30 s on 256 x 256 pixels): the same weights below, close ones above.
+// The compensation reads every pixel of the disc up to r = 24 and every ceil(r / 24)-th beyond (a budget of
+// 1e-4 gave r = 74 and took 30 s on 256 x 256 pixels): the same weights below, close ones above.
 TEST(SampledBilateralFilter, CompensationOfLargeRadiiReadsEveryFewPixels) {
   const Bytes d = disk_image(40, 40, 6);
   const internal::Filter_image F(40, 40, 1, d, Bilateral_kernel(), "test");
@@ -220,7 +228,7 @@ TEST(SampledBilateralFilter, CompensationOfLargeRadiiReadsEveryFewPixels) {
     worst = std::max(worst, std::abs(double(few[p]) - double(every[p])));
     lowest = std::min(lowest, double(every[p]));
   }
-  EXPECT_LT(lowest, 0.8);  // the disk's edge matters at this radius
+  EXPECT_LT(lowest, 0.8);          // the disk's edge matters at this radius
   EXPECT_LT(mean, 0.02) << worst;  // 0.015, the worst 0.035: the 4 x 4 sub-pixels approximate too
   EXPECT_LT(worst, 0.05);
 }
@@ -230,7 +238,8 @@ TEST(SampledBilateralFilter, ConvergesToTheExactFilterAsTheBudgetGrows) {
   const auto exact = bilateral_filter(48, 40, 1, d);
   for (Tap_mode m : modes)
     for (Tap_sampling s : samplings) {
-      const double low = psnr(exact.values, sampled_bilateral_filter(48, 40, 1, d, sampled(m, s, 0.1)).values);
+      const double low =
+          psnr(exact.values, sampled_bilateral_filter(48, 40, 1, d, sampled(m, s, 0.1)).values);
       const double high = psnr(exact.values, sampled_bilateral_filter(48, 40, 1, d, sampled(m, s, 4)).values);
       EXPECT_GT(high, low + 6) << int(m) << " " << int(s);
       EXPECT_GT(high, 40) << int(m) << " " << int(s);
@@ -245,10 +254,12 @@ TEST(SampledBilateralFilter, BilateralTapsBeatUniformTapsAtAFixedBudgetOnAnEdge)
   for (Tap_mode m : modes) {
     double uniform = 0, bilateral = 0;
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-      uniform += psnr(exact.values,
-                      sampled_bilateral_filter(64, 64, 1, d, sampled(m, Tap_sampling::uniform, 0.25, seed)).values);
-      bilateral += psnr(exact.values,
-                        sampled_bilateral_filter(64, 64, 1, d, sampled(m, Tap_sampling::bilateral, 0.25, seed)).values);
+      uniform +=
+          psnr(exact.values,
+               sampled_bilateral_filter(64, 64, 1, d, sampled(m, Tap_sampling::uniform, 0.25, seed)).values);
+      bilateral += psnr(
+          exact.values,
+          sampled_bilateral_filter(64, 64, 1, d, sampled(m, Tap_sampling::bilateral, 0.25, seed)).values);
     }
     EXPECT_GT(bilateral, uniform + 3 * 1.0) << int(m);  // at least 1 dB better on average
   }
@@ -370,7 +381,8 @@ TEST(SampledBilateralFilter, BadArgumentsAreNamed) {
   Tap_pattern p = bilateral_tap_pattern(4, 3, 1, d, o);
   Tap_pattern other = p;
   other.width = 5;
-  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern is 5 x 3, the image 4 x 3");
+  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); },
+                 "pattern is 5 x 3, the image 4 x 3");
   other = p;
   other.pixels.at(1) = 12;
   expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern.pixels[1] = 12");
@@ -387,7 +399,8 @@ TEST(SampledBilateralFilter, BadArgumentsAreNamed) {
   other.pixels.clear();
   other.weights.clear();
   other.positions.clear();
-  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern has no taps for a 4 x 3");
+  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); },
+                 "pattern has no taps for a 4 x 3");
 }
 
 TEST(ImageQuality, PsnrAndSsimOnKnownCases) {
@@ -425,7 +438,8 @@ TEST(ImageQuality, PsnrAndSsimOnKnownCases) {
 
 TEST(SampledBilateralFilter, ThePatternReportsTheRadiusItWasThrownWith) {
   // A 16 x 17 picture, budget 0.3, seed 8: the secant search ends its 40 steps without a hit, and the pattern
-  // reported the next radius to try, not the one its taps were thrown with (a pair of taps lay closer than it).
+  // reported the next radius to try, not the one its taps were thrown with (a pair of taps lay closer than
+  // it).
   const int w = 16, h = 17;
   std::vector<std::uint8_t> img(std::size_t(w * h));
   for (int i = 0; i < w * h; ++i) img[std::size_t(i)] = std::uint8_t((i * 37 % 7) * 40);
@@ -448,9 +462,9 @@ TEST(SampledBilateralFilter, ThePatternReportsTheRadiusItWasThrownWith) {
 }
 
 TEST(SampledBilateralFilter, TheLocalPoolCoversOnlyWhatTheImageReaches) {
-  // A 4 x 4 picture with a window of radius 200: the local pool was sized by the window (401^2 positions per set:
-  // 46 s and 2.7 GB). It now covers the offsets a tap inside the picture can have (radius 3), so every radius of
-  // at least 3 sees the same in-image window and the same pool: bit-identical values.
+  // A 4 x 4 picture with a window of radius 200: the local pool was sized by the window (401^2 positions per
+  // set: 46 s and 2.7 GB). It now covers the offsets a tap inside the picture can have (radius 3), so every
+  // radius of at least 3 sees the same in-image window and the same pool: bit-identical values.
   const Bytes a = random_image(4, 4, 1, 9);
   Sampled_bilateral_filter_options o;
   o.mode = Tap_mode::local;
@@ -468,8 +482,9 @@ TEST(SampledBilateralFilter, TheLocalPoolCoversOnlyWhatTheImageReaches) {
 }
 
 TEST(SampledBilateralFilter, TheLocalModeReportsBeforeItsPixelsAndStops) {
-  // The pool and the radius calibration ran before the first report (26 s on a 512 x 512 picture at sigma 20):
-  // they now report (0-0.05 and 0.05-0.2) and a stop in either ends the run, interrupted, with no values.
+  // The pool and the radius calibration ran before the first report (26 s on a 512 x 512 picture at sigma
+  // 20): they now report (0-0.05 and 0.05-0.2) and a stop in either ends the run, interrupted, with no
+  // values.
   const Bytes a = random_image(40, 40, 3, 4);
   Sampled_bilateral_filter_options o;
   o.mode = Tap_mode::local;
@@ -484,7 +499,7 @@ TEST(SampledBilateralFilter, TheLocalModeReportsBeforeItsPixelsAndStops) {
   auto reports = [&seen](double from, double to) {
     return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t >= from && t < to; });
   };
-  EXPECT_GE(reports(0, 0.05), 32);  // one per candidate set (64)
+  EXPECT_GE(reports(0, 0.05), 32);   // one per candidate set (64)
   EXPECT_GE(reports(0.05, 0.2), 1);  // the calibration's counts
   EXPECT_GE(reports(0.2, 1), 32);    // the rows (40)
   for (const double stop_at : {0.02, 0.05, 0.5}) {

@@ -43,7 +43,8 @@ TEST(BilateralMetric, GaussianAndExponentialForms) {
 
 TEST(FeaturePointTraits, ReadyModels) {
   static_assert(std::is_same<Default_traits_t<std::vector<Point_2>>, Point_traits<Point_2>>::value);
-  static_assert(std::is_same<Default_traits_t<std::vector<std::pair<Point_3, Vector_3>>>, Point_with_normal_traits<K>>::value);
+  static_assert(std::is_same<Default_traits_t<std::vector<std::pair<Point_3, Vector_3>>>,
+                             Point_with_normal_traits<K>>::value);
   static_assert(FeatureRecon::internal::Is_feature_point_traits<Rgb_pixel_traits>::value);
   static_assert(!FeatureRecon::internal::Is_feature_point_traits<Point_2>::value);
 
@@ -51,7 +52,7 @@ TEST(FeaturePointTraits, ReadyModels) {
   const auto d = oriented.compute_feature_distance_object();
   EXPECT_NEAR(CGAL::to_double(d(Vector_3(0, 0, 2), Vector_3(0, 0, -1))), 4.0, 1e-12);  // two sides of a wall
   EXPECT_NEAR(CGAL::to_double(d(Vector_3(0, 0, 1), Vector_3(3, 0, 0))), 2.0, 1e-12);   // perpendicular
-  EXPECT_NEAR(CGAL::to_double(d(Vector_3(1, 1, 0), Vector_3(2, 2, 0))), 0.0, 1e-12);   // lengths do not matter
+  EXPECT_NEAR(CGAL::to_double(d(Vector_3(1, 1, 0), Vector_3(2, 2, 0))), 0.0, 1e-12);  // lengths do not matter
   Point_with_normal_traits<K> unoriented{Normal_orientation::unoriented};
   const auto du = unoriented.compute_feature_distance_object();
   EXPECT_NEAR(CGAL::to_double(du(Vector_3(0, 0, 2), Vector_3(0, 0, -1))), 0.0, 1e-12);
@@ -65,8 +66,9 @@ TEST(FeaturePointTraits, ReadyModels) {
   EXPECT_DOUBLE_EQ(CGAL::to_double(fd(f(black), f(white))), 1.0);
   EXPECT_DOUBLE_EQ(CGAL::to_double(fd(f(black), f(red))), 1.0 / 3.0);
   const Grey_pixel_traits grey;
-  EXPECT_DOUBLE_EQ(CGAL::to_double(grey.compute_feature_distance_object()(grey.construct_feature_object()(Grey_pixel{0, 0, 0}),
-                                                                        grey.construct_feature_object()(Grey_pixel{0, 0, 255}))),
+  EXPECT_DOUBLE_EQ(CGAL::to_double(grey.compute_feature_distance_object()(
+                       grey.construct_feature_object()(Grey_pixel{0, 0, 0}),
+                       grey.construct_feature_object()(Grey_pixel{0, 0, 255}))),
                    1.0);
 
   // A user's struct through property maps.
@@ -78,8 +80,8 @@ TEST(FeaturePointTraits, ReadyModels) {
       [](double a, double b) { return (a - b) * (a - b); });
   const Sample a{1, 2, 10}, b{1, 2, 13};
   EXPECT_EQ(traits.construct_point_object()(a), Point_2(1, 2));
-  EXPECT_DOUBLE_EQ(CGAL::to_double(traits.compute_feature_distance_object()(traits.construct_feature_object()(a),
-                                                                           traits.construct_feature_object()(b))),
+  EXPECT_DOUBLE_EQ(CGAL::to_double(traits.compute_feature_distance_object()(
+                       traits.construct_feature_object()(a), traits.construct_feature_object()(b))),
                    9.0);
 }
 
@@ -117,8 +119,10 @@ TEST(SamplingQuality, TorusNeighboursAcrossTheSeamOfAClusteredSet) {
       double nearest = std::numeric_limits<double>::infinity();
       for (std::size_t j = 0; j < p.size(); ++j)
         for (int shift = 0; shift < 27 && j != i; ++shift) {
-          const Vector_3 d = p[i].first - p[j].first - Vector_3(shift % 3 - 1, shift / 3 % 3 - 1, shift / 9 - 1);
-          const double f = std::isinf(sigma_feature) ? 0 : (p[i].second - p[j].second).squared_length() / 0.25;
+          const Vector_3 d =
+              p[i].first - p[j].first - Vector_3(shift % 3 - 1, shift / 3 % 3 - 1, shift / 9 - 1);
+          const double f =
+              std::isinf(sigma_feature) ? 0 : (p[i].second - p[j].second).squared_length() / 0.25;
           nearest = std::min(nearest, std::sqrt(d.squared_length() + f));
         }
       smallest = std::min(smallest, nearest);
@@ -132,8 +136,8 @@ TEST(SamplingQuality, TorusNeighboursAcrossTheSeamOfAClusteredSet) {
 }
 
 TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
-  // Half the points in a corner 0.01 wide, the rest spread out, some duplicates: the minimum and the mean of the
-  // nearest-neighbour distances against a scan of all pairs, in 2-D and 3-D.
+  // Half the points in a corner 0.01 wide, the rest spread out, some duplicates: the minimum and the mean of
+  // the nearest-neighbour distances against a scan of all pairs, in 2-D and 3-D.
   std::mt19937_64 rng(21);
   std::uniform_real_distribution<double> u(0, 1), c(0, 0.01);
   std::vector<Point_2> p2;
@@ -150,7 +154,8 @@ TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
     std::vector<double> nearest(p.size(), std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < p.size(); ++i)
       for (std::size_t j = 0; j < p.size(); ++j)
-        if (i != j) nearest[i] = std::min(nearest[i], std::sqrt(CGAL::to_double(CGAL::squared_distance(p[i], p[j]))));
+        if (i != j)
+          nearest[i] = std::min(nearest[i], std::sqrt(CGAL::to_double(CGAL::squared_distance(p[i], p[j]))));
     const Sampling_quality q = sampling_quality(p);
     ASSERT_EQ(q.status, Status::success);
     EXPECT_EQ(q.minimum_distance, *std::min_element(nearest.begin(), nearest.end()));
@@ -171,16 +176,17 @@ TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < pn.size(); ++j)
       if (i != j)
-        nearest = std::min(nearest,
-                           std::sqrt(CGAL::to_double(CGAL::squared_distance(pn[i].first, pn[j].first)) +
-                                     CGAL::to_double((pn[i].second - pn[j].second).squared_length()) / 0.0025));
+        nearest = std::min(
+            nearest, std::sqrt(CGAL::to_double(CGAL::squared_distance(pn[i].first, pn[j].first)) +
+                               CGAL::to_double((pn[i].second - pn[j].second).squared_length()) / 0.0025));
     smallest = std::min(smallest, nearest);
     mean += nearest / double(pn.size());
   }
   EXPECT_NEAR(q.minimum_distance, smallest, 1e-12);
   EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, mean, 1e-12);
   const Sampling_quality euclidean = sampling_quality(p3);
-  EXPECT_GT(mean, 1.05 * euclidean.average_minimum_distance * euclidean.hexagonal_distance);  // the features count
+  EXPECT_GT(mean,
+            1.05 * euclidean.average_minimum_distance * euclidean.hexagonal_distance);  // the features count
 }
 
 TEST(SamplingQuality, HexagonalLatticeHasRelativeRadiusOne) {
@@ -233,9 +239,9 @@ TEST(SamplingQuality, BilateralDistancesSeparateFeatures) {
 }
 
 TEST(SamplingQuality, ProgressReportsAndStops) {
-  // 10000 samples: reports at 0, 4096, 8192 of them and 1, increasing; a stop at the second report leaves every
-  // statistic 0 and says interrupted. On the torus a clustered set needs the second, wider pass (as in the seam
-  // test above): its reports run on into the second half, and a stop there is honoured too.
+  // 10000 samples: reports at 0, 4096, 8192 of them and 1, increasing; a stop at the second report leaves
+  // every statistic 0 and says interrupted. On the torus a clustered set needs the second, wider pass (as in
+  // the seam test above): its reports run on into the second half, and a stop there is honoured too.
   const std::vector<Point_2> p = white_noise(10000, 4);
   std::vector<double> seen;
   Sampling_quality_options o;
@@ -338,12 +344,12 @@ TEST(SamplingSpectrum, WhiteNoiseIsFlatAndIsotropic) {
     aniso += s.anisotropy[b] / double(s.radial_power.size() - 8);
   }
   EXPECT_NEAR(mean, 1.0, 0.02);
-  EXPECT_NEAR(aniso, 0.0, 0.5);          // an exponential distribution per frequency: variance = mean^2
-  EXPECT_EQ(s.effective_nyquist, 0.0);   // no zero region: the mean power of the first disc is already ~1
-  EXPECT_LT(s.oscillation, 0.5);          // flat: only the noise of ten averaged periodograms
-  EXPECT_LT(s.oscillation_from, 0.2);     // the power reaches 0.98 almost at once
+  EXPECT_NEAR(aniso, 0.0, 0.5);         // an exponential distribution per frequency: variance = mean^2
+  EXPECT_EQ(s.effective_nyquist, 0.0);  // no zero region: the mean power of the first disc is already ~1
+  EXPECT_LT(s.oscillation, 0.5);        // flat: only the noise of ten averaged periodograms
+  EXPECT_LT(s.oscillation_from, 0.2);   // the power reaches 0.98 almost at once
   EXPECT_NEAR(s.oscillation_to - s.oscillation_from, 10.0, 1.0 / 16);  // a whole band of 10 units
-  EXPECT_NEAR(s.radial_power[0], 1024.0, 1e-6);  // the DC term is N
+  EXPECT_NEAR(s.radial_power[0], 1024.0, 1e-6);                        // the DC term is N
   EXPECT_THROW(average_sampling_spectra(all, 0.5), std::invalid_argument);
   Sampling_spectrum_options bad;
   bad.threshold = 0;

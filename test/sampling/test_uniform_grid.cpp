@@ -32,7 +32,8 @@ std::vector<std::uint32_t> within(const std::vector<std::array<double, D>>& p, c
 
 // Every point within the cell size of a query is a candidate exactly once, for both grids.
 template <int D>
-void expect_exact_candidates(const std::vector<std::array<double, D>>& p, double r, std::size_t max_candidates) {
+void expect_exact_candidates(const std::vector<std::array<double, D>>& p, double r,
+                             std::size_t max_candidates) {
   const Uniform_grid<D> grid(p, r);
   Dynamic_grid<D> dynamic(p, r);
   for (std::uint32_t i = 0; i < p.size(); ++i) dynamic.insert(i);
@@ -41,10 +42,13 @@ void expect_exact_candidates(const std::vector<std::array<double, D>>& p, double
     for (int which = 0; which < 2; ++which) {
       std::vector<std::uint32_t> candidates, near;
       auto take = [&](std::uint32_t j) { candidates.push_back(j); };
-      if (which == 0) grid.for_each_candidate(p[i], take);
-      else dynamic.for_each_candidate(p[i], take);
+      if (which == 0)
+        grid.for_each_candidate(p[i], take);
+      else
+        dynamic.for_each_candidate(p[i], take);
       std::sort(candidates.begin(), candidates.end());
-      EXPECT_TRUE(std::adjacent_find(candidates.begin(), candidates.end()) == candidates.end()) << "point " << i;
+      EXPECT_TRUE(std::adjacent_find(candidates.begin(), candidates.end()) == candidates.end())
+          << "point " << i;
       EXPECT_LE(candidates.size(), max_candidates) << "point " << i;
       for (std::uint32_t j : candidates) {
         double d2 = 0;
@@ -81,7 +85,8 @@ TEST(UniformGrid, AFarOutlierKeepsTheCellSize) {
 // The dense array of cells (a small box: at most four cells per point) visits the same candidates in the same
 // order as the hash map of packed keys: cells in key order (nested over the axes), points by index within a
 // cell. Checked against that order built by brute force, with queries inside, on the border and outside the
-// box, in 2D and 3D, for the grid built at once and the one filled point by point (with a hint of many points).
+// box, in 2D and 3D, for the grid built at once and the one filled point by point (with a hint of many
+// points).
 template <int D>
 void expect_key_order(const std::vector<std::array<double, D>>& p, double r) {
   const Grid_frame<D> frame(p, r);
@@ -125,9 +130,10 @@ TEST(UniformGrid, DenseCellsVisitInKeyOrder) {
   expect_key_order<3>(p3, 0.1);
 }
 
-// Queries far outside the box: cells more than 2^63 away (a map compared at a tiny threshold with one far away)
-// were converted from double to int64 unclamped, which is undefined behaviour (-fsanitize=undefined reports it).
-// They find nothing and a query inside still finds its points, for packed, dense and hashed frames.
+// Queries far outside the box: cells more than 2^63 away (a map compared at a tiny threshold with one far
+// away) were converted from double to int64 unclamped, which is undefined behaviour (-fsanitize=undefined
+// reports it). They find nothing and a query inside still finds its points, for packed, dense and hashed
+// frames.
 TEST(UniformGrid, QueriesFarOutsideTheBoxAreClamped) {
   const double inf = std::numeric_limits<double>::infinity();
   for (const bool outlier : {false, true}) {

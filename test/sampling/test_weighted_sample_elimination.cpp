@@ -52,7 +52,7 @@ TEST(WeightedSampleElimination, ExactCountSubsetAndBlueNoise) {
   const Sampling_quality q = sampling_quality(subset(p, kept), o);
   // White noise has rho near 0 and average minimum distance 0.47; elimination from 5x oversampling gives a
   // Poisson-disk set (the design notes measured rho 0.69 for Yuksel's code).
-  EXPECT_GT(q.relative_radius, 0.69) << q.relative_radius;  // measured 0.699
+  EXPECT_GT(q.relative_radius, 0.69) << q.relative_radius;                    // measured 0.699
   EXPECT_GT(q.average_minimum_distance, 0.78) << q.average_minimum_distance;  // measured 0.800
   const Sampling_quality white = sampling_quality(white_noise(2000, 6), o);
   EXPECT_LT(white.relative_radius, 0.1);
@@ -75,8 +75,9 @@ TEST(WeightedSampleElimination, SameSeedSameOutputAndSeedBreaksGridTies) {
   EXPECT_GT(sampling_quality(subset(grid, a), qo).relative_radius, 0.5);
 }
 
-// Brute force of one stage of elimination (Euclidean, alpha 8, weight limiting): every step sums the pair weights
-// of the items left in exact rational arithmetic and removes the heaviest, ties to the higher seeded priority.
+// Brute force of one stage of elimination (Euclidean, alpha 8, weight limiting): every step sums the pair
+// weights of the items left in exact rational arithmetic and removes the heaviest, ties to the higher seeded
+// priority.
 std::vector<std::size_t> eliminate_exactly(const std::vector<Point_2>& p, std::size_t count, double r_max,
                                            std::uint64_t seed) {
   const std::size_t n = p.size();
@@ -114,14 +115,16 @@ std::vector<std::size_t> eliminate_exactly(const std::vector<Point_2>& p, std::s
 }
 
 TEST(WeightedSampleElimination, WeightsTieExactlyAndTheSeedBreaksTheTies) {
-  // Grids (every weight a sum of a few distinct pair weights) and jittered points, reduced to 1..9 items under 12
-  // seeds: the same items as the exact brute force. With weights kept in doubles the rounding of the order in
-  // which neighbours went decided grid ties: a 5 x 5 grid reduced to one point kept item 20 for every seed.
+  // Grids (every weight a sum of a few distinct pair weights) and jittered points, reduced to 1..9 items
+  // under 12 seeds: the same items as the exact brute force. With weights kept in doubles the rounding of the
+  // order in which neighbours went decided grid ties: a 5 x 5 grid reduced to one point kept item 20 for
+  // every seed.
   std::vector<std::vector<Point_2>> sets(3);
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 5; ++j) sets[0].emplace_back(i, j);
   for (int i = 0; i < 7; ++i)
-    for (int j = 0; j < 4; ++j) sets[1].emplace_back(0.5 * i, 0.5 * j + 0.25 * (i % 2));  // a hexagonal-ish grid
+    for (int j = 0; j < 4; ++j)
+      sets[1].emplace_back(0.5 * i, 0.5 * j + 0.25 * (i % 2));  // a hexagonal-ish grid
   sets[2] = white_noise(30, 4);
   std::set<std::size_t> survivors;
   for (std::size_t c = 0; c < sets.size(); ++c)
@@ -132,13 +135,13 @@ TEST(WeightedSampleElimination, WeightsTieExactlyAndTheSeedBreaksTheTies) {
         std::vector<std::size_t> kept;
         const auto r = weighted_sample_elimination(sets[c], count, std::back_inserter(kept), o);
         std::sort(kept.begin(), kept.end());
-        EXPECT_EQ(kept, eliminate_exactly(sets[c], count, r.radius, seed)) << "set " << c << " count " << count
-                                                                            << " seed " << seed;
+        EXPECT_EQ(kept, eliminate_exactly(sets[c], count, r.radius, seed))
+            << "set " << c << " count " << count << " seed " << seed;
         if (c == 0 && count == 1) survivors.insert(kept[0]);
       }
   EXPECT_EQ(survivors, (std::set<std::size_t>{0, 4, 20, 24}));  // the corners, as the seed picks them
-  // A steep weight (alpha 64): the fixed point is scaled by the largest pair weight, 0.35^64 here (scaled by 1,
-  // every weight rounded to 0, the seed alone chose and the relative radius fell from 0.75 to 0.05).
+  // A steep weight (alpha 64): the fixed point is scaled by the largest pair weight, 0.35^64 here (scaled by
+  // 1, every weight rounded to 0, the seed alone chose and the relative radius fell from 0.75 to 0.05).
   const std::vector<Point_2> noise = white_noise(2000, 11);
   Elimination_options steep;
   steep.alpha = 64;
@@ -199,7 +202,8 @@ TEST(WeightedSampleElimination, ThinWallKeepsBothSheetsWhenBilateral) {
   // Bilateral: each sheet is a blue-noise set of about m/2 samples on its own, no hole wider than ~2.5 r_max.
   EXPECT_LT(hole(bilateral, false), 2.5 * r_max);
   EXPECT_LT(hole(bilateral, true), 2.5 * r_max);
-  // Euclidean: the sheets share one set of spacing r_max, so each sheet alone has holes of about 2 r_max more.
+  // Euclidean: the sheets share one set of spacing r_max, so each sheet alone has holes of about 2 r_max
+  // more.
   EXPECT_GT(std::max(hole(euclidean, false), hole(euclidean, true)), 2.5 * r_max);
 }
 
@@ -233,8 +237,9 @@ TEST(WeightedSampleElimination, DegenerateInputs) {
 }
 
 TEST(WeightedSampleElimination, ManyCopiesOfOnePlaceAreRemovedFirst) {
-  // 2000 white-noise points and 150,000 copies of (0.5, 0.5): the copies would give one another neighbour lists
-  // of 150,000 ids each (2.25e10 in all: this test ran out of memory before they were removed up front).
+  // 2000 white-noise points and 150,000 copies of (0.5, 0.5): the copies would give one another neighbour
+  // lists of 150,000 ids each (2.25e10 in all: this test ran out of memory before they were removed up
+  // front).
   std::vector<Point_2> p = white_noise(2000, 8);
   p.insert(p.begin() + 1000, 150000, Point_2(0.5, 0.5));
   const std::vector<std::size_t> kept = eliminate(p, 100);
@@ -332,10 +337,10 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   oriented[13].second = K::Vector_3(0, 0, 0);
   Elimination_options bilateral;
   bilateral.sigma_feature = 0.5;
-  for (const auto* name : {"elimination", "quality", "darts"})
-    try {
+  for (const auto* name : {"elimination", "quality", "darts"}) try {
       const std::string which = name;
-      if (which == "elimination") weighted_sample_elimination(oriented, 5, std::back_inserter(kept), bilateral);
+      if (which == "elimination")
+        weighted_sample_elimination(oriented, 5, std::back_inserter(kept), bilateral);
       Sampling_quality_options q;
       q.sigma_feature = 0.5;
       Dart_throwing_options d;
@@ -344,15 +349,16 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
       if (which == "darts") bilateral_dart_throwing(oriented, 0.1, std::back_inserter(kept), d);
       FAIL() << name << ": expected an exception";
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("item 13 has a feature at distance NaN from itself (a zero normal"),
-                std::string::npos)
+      EXPECT_NE(
+          std::string(e.what()).find("item 13 has a feature at distance NaN from itself (a zero normal"),
+          std::string::npos)
           << name << ": " << e.what();
     }
   EXPECT_TRUE(kept.empty());
   // Euclidean sampling never compares normals: the zero normal is carried along.
   EXPECT_EQ(weighted_sample_elimination(oriented, 5, std::back_inserter(kept)).selected, 5u);
-  // The same with an exact kernel: the NaN cosine went into Epeck's number type before the item could be named
-  // (an assertion in Interval_nt, or SIGFPE in GMP without assertions).
+  // The same with an exact kernel: the NaN cosine went into Epeck's number type before the item could be
+  // named (an assertion in Interval_nt, or SIGFPE in GMP without assertions).
   using E = CGAL::Epeck;
   std::vector<std::pair<E::Point_3, E::Vector_3>> exact;
   for (const Point_2& q : p) exact.push_back({E::Point_3(q.x(), q.y(), 0), E::Vector_3(0, 0, 1)});
@@ -370,8 +376,8 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
 }
 
 TEST(WeightedSampleElimination, NormalsOfAnyLengthAreDirections) {
-  // Normals about 1e-170 or 1e160 long are directions like unit ones (their squared lengths underflowed to 0 or
-  // overflowed: refused as zero normals); scaled by powers of two, the bilateral result is the same.
+  // Normals about 1e-170 or 1e160 long are directions like unit ones (their squared lengths underflowed to 0
+  // or overflowed: refused as zero normals); scaled by powers of two, the bilateral result is the same.
   using K = CGAL::Epick;
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -395,9 +401,10 @@ TEST(WeightedSampleElimination, NormalsOfAnyLengthAreDirections) {
   EXPECT_EQ(a, c);
 }
 
-// Far fewer kept than given: one elimination stage would give every point about 3.6 n / count neighbours (200,000
-// points to 3: 2.4e11 neighbour ids, beyond any memory; to 1000: 1.5e8 ids and minutes). The progressive stages
-// keep the lists within 2^24 ids, and the result is still the exact count, well spread and seeded.
+// Far fewer kept than given: one elimination stage would give every point about 3.6 n / count neighbours
+// (200,000 points to 3: 2.4e11 neighbour ids, beyond any memory; to 1000: 1.5e8 ids and minutes). The
+// progressive stages keep the lists within 2^24 ids, and the result is still the exact count, well spread and
+// seeded.
 TEST(WeightedSampleElimination, FarFewerKeptThanGivenIsProgressive) {
   const std::vector<Point_2> p = white_noise(200000, 11);
   Elimination_options o;
@@ -439,8 +446,8 @@ TEST(WeightedSampleElimination, ProgressCanInterrupt) {
   const auto r = weighted_sample_elimination(white_noise(1000, 3), 100, std::back_inserter(kept), o);
   EXPECT_EQ(r.status, Status::interrupted);
   EXPECT_TRUE(kept.empty());
-  // With a copy removed first, the first elimination of the stage is not the 16,384th of the run: the callback
-  // is still asked at the start of the stage (it was asked only at the end, and ignored).
+  // With a copy removed first, the first elimination of the stage is not the 16,384th of the run: the
+  // callback is still asked at the start of the stage (it was asked only at the end, and ignored).
   std::vector<Point_2> with_copy = white_noise(10000, 4);
   with_copy.push_back(with_copy[17]);
   calls = 0;
@@ -451,9 +458,9 @@ TEST(WeightedSampleElimination, ProgressCanInterrupt) {
   EXPECT_TRUE(kept.empty());
 }
 
-// A max_radius far above the packing radius makes every item a neighbour of every other: the lists are refused
-// while they are counted, before they are stored, once they pass max_neighbor_entries (exactly the limit passes),
-// and the count asks the callback by its work, not only every 16,384 items.
+// A max_radius far above the packing radius makes every item a neighbour of every other: the lists are
+// refused while they are counted, before they are stored, once they pass max_neighbor_entries (exactly the
+// limit passes), and the count asks the callback by its work, not only every 16,384 items.
 TEST(WeightedSampleElimination, NeighbourListsBeyondTheLimitAreRefusedWhileCounted) {
   const std::vector<Point_2> p = white_noise(100, 5);
   Elimination_options o;
@@ -467,15 +474,17 @@ TEST(WeightedSampleElimination, NeighbourListsBeyondTheLimitAreRefusedWhileCount
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
-    EXPECT_EQ(what.rfind("weighted_sample_elimination: the neighbour lists within 2 r_max would hold more than 9899 "
-                         "entries (Elimination_options::max_neighbor_entries; r_max 100 in the stage from 100 items "
-                         "to 10; the first 100 items have 9900 neighbours)",
-                         0),
+    EXPECT_EQ(what.rfind(
+                  "weighted_sample_elimination: the neighbour lists within 2 r_max would hold more than 9899 "
+                  "entries (Elimination_options::max_neighbor_entries; r_max 100 in the stage from 100 items "
+                  "to 10; the first 100 items have 9900 neighbours)",
+                  0),
               0u)
         << what;
   }
   EXPECT_TRUE(kept.empty());
-  // Default: automatic, at least 2^29 entries (the lists of 30,000 points of a sphere at r_max 100 took 3.5 GB).
+  // Default: automatic, at least 2^29 entries (the lists of 30,000 points of a sphere at r_max 100 took 3.5
+  // GB).
   EXPECT_EQ(Elimination_options().max_neighbor_entries, 0u);
   {
     std::vector<Point_2> many = white_noise(24000, 9);  // every pair: 5.8e8 entries, more than 2^29
@@ -487,13 +496,15 @@ TEST(WeightedSampleElimination, NeighbourListsBeyondTheLimitAreRefusedWhileCount
     } catch (const std::invalid_argument& e) {
       what = e.what();
     }
-    EXPECT_NE(what.find("would hold more than 536870912 entries (automatic Elimination_options::max_neighbor_entries; "
-                        "r_max "),
-              std::string::npos)
+    EXPECT_NE(
+        what.find(
+            "would hold more than 536870912 entries (automatic Elimination_options::max_neighbor_entries; "
+            "r_max "),
+        std::string::npos)
         << what;
   }
-  // 3,000 items, each a neighbour of all others: the callback is asked during the count (it used to be asked at
-  // the start of the stage and then only at the end, where a stop was ignored).
+  // 3,000 items, each a neighbour of all others: the callback is asked during the count (it used to be asked
+  // at the start of the stage and then only at the end, where a stop was ignored).
   o = {};
   o.max_radius = 100;
   int calls = 0;
@@ -525,8 +536,9 @@ TEST(WeightedSampleElimination, ExactKernelPointsAndSurfaceEstimates) {
 }
 
 TEST(WeightedSampleElimination, CopiesAndFlatInputIn3D) {
-  // A 30 x 30 grid on z = 0, every place 9 times: the surface area was estimated from the 8th neighbour, a copy
-  // at distance 0 (area 0, r_max 0: a random choice that kept copies). Estimated on the places: as without copies.
+  // A 30 x 30 grid on z = 0, every place 9 times: the surface area was estimated from the 8th neighbour, a
+  // copy at distance 0 (area 0, r_max 0: a random choice that kept copies). Estimated on the places: as
+  // without copies.
   std::vector<Point_3> grid, copies;
   for (int i = 0; i < 30; ++i)
     for (int j = 0; j < 30; ++j) grid.emplace_back(i / 29.0, j / 29.0, 0);
@@ -572,7 +584,8 @@ TEST(WeightedSampleElimination, RadiiAtTheEndsOfTheDoubles) {
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("max_radius (1e+308) times sigma_position (1) is beyond 1e100"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   // Tiny coordinates: (2 r_max)^2 underflows; the metric still decides, and copies go first.
   std::vector<Point_2> tiny;

@@ -18,7 +18,8 @@ namespace test {
 Extended_diagrams gudhi_extended_persistence(std::size_t n, const std::vector<std::vector<int>>& simplices,
                                              const std::vector<long>& value) {
   using ST = Gudhi::Simplex_tree<>;
-  using PCoh = Gudhi::persistent_cohomology::Persistent_cohomology<ST, Gudhi::persistent_cohomology::Field_Zp>;
+  using PCoh =
+      Gudhi::persistent_cohomology::Persistent_cohomology<ST, Gudhi::persistent_cohomology::Field_Zp>;
   ST st;
   for (std::size_t v = 0; v < n; ++v) st.insert_simplex({static_cast<int>(v)}, static_cast<double>(value[v]));
   for (const auto& s : simplices) {
@@ -38,7 +39,8 @@ Extended_diagrams gudhi_extended_persistence(std::size_t n, const std::vector<st
     const int dim = st.dimension(b_sh);
     const auto b = st.decode_extended_filtration(st.filtration(b_sh), efd);
     const auto e = st.decode_extended_filtration(st.filtration(d_sh), efd);
-    if (b.second == Gudhi::Extended_simplex_type::EXTRA || e.second == Gudhi::Extended_simplex_type::EXTRA) continue;
+    if (b.second == Gudhi::Extended_simplex_type::EXTRA || e.second == Gudhi::Extended_simplex_type::EXTRA)
+      continue;
     const Point_pair p{std::lround(b.first), std::lround(e.first)};
     if (p.first == p.second) continue;
     if (dim > 2) continue;

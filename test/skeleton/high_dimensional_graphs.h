@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// True graphs in R^d made of segments (a random tree, a figure-eight of two polygonal circles) and their noisy
-// samples, for the high-dimensional skeleton tests and the example. Deterministic for a seed (std::mt19937 and
-// a Box-Muller transform of our own, so the numbers do not depend on the standard library).
+// True graphs in R^d made of segments (a random tree, a figure-eight of two polygonal circles) and their
+// noisy samples, for the high-dimensional skeleton tests and the example. Deterministic for a seed
+// (std::mt19937 and a Box-Muller transform of our own, so the numbers do not depend on the standard library).
 #ifndef FEATURERECON_TEST_HIGH_DIMENSIONAL_GRAPHS_H
 #define FEATURERECON_TEST_HIGH_DIMENSIONAL_GRAPHS_H
 
@@ -65,7 +65,8 @@ struct Segment_graph {
   std::size_t dimension = 0;
   std::vector<std::vector<double>> vertices;
   std::vector<std::array<std::size_t, 2>> segments;
-  std::vector<std::size_t> graph_vertices;  ///< vertices that are nodes of the graph (polygon corners are not)
+  std::vector<std::size_t>
+      graph_vertices;  ///< vertices that are nodes of the graph (polygon corners are not)
 
   std::vector<std::size_t> degrees() const {
     std::vector<std::size_t> deg(vertices.size(), 0);
@@ -93,7 +94,8 @@ struct Segment_graph {
   double distance(const double* p) const {
     double best = std::numeric_limits<double>::infinity();
     for (const auto& s : segments)
-      best = std::min(best, point_segment_distance(p, vertices[s[0]].data(), vertices[s[1]].data(), dimension));
+      best =
+          std::min(best, point_segment_distance(p, vertices[s[0]].data(), vertices[s[1]].data(), dimension));
     return best;
   }
   /// Points every `spacing` along every segment (both ends included).
@@ -103,18 +105,20 @@ struct Segment_graph {
       const auto &a = vertices[s[0]], &b = vertices[s[1]];
       double len = 0;
       for (std::size_t k = 0; k < dimension; ++k) len += (b[k] - a[k]) * (b[k] - a[k]);
-      const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::sqrt(len) / spacing)));
+      const std::size_t n =
+          std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::sqrt(len) / spacing)));
       for (std::size_t i = 0; i <= n; ++i) {
         std::vector<double> p(dimension);
-        for (std::size_t k = 0; k < dimension; ++k) p[k] = a[k] + (b[k] - a[k]) * static_cast<double>(i) / static_cast<double>(n);
+        for (std::size_t k = 0; k < dimension; ++k)
+          p[k] = a[k] + (b[k] - a[k]) * static_cast<double>(i) / static_cast<double>(n);
         out.push_back(std::move(p));
       }
     }
     return out;
   }
-  /// One point every `spacing` of arc length along chains of consecutive segments (a segment continues the chain
-  /// when it starts where the previous one ended; a new chain starts at its first vertex): no point twice, also
-  /// where segments are shorter than the spacing.
+  /// One point every `spacing` of arc length along chains of consecutive segments (a segment continues the
+  /// chain when it starts where the previous one ended; a new chain starts at its first vertex): no point
+  /// twice, also where segments are shorter than the spacing.
   std::vector<std::vector<double>> sample_along(double spacing) const {
     std::vector<std::vector<double>> out;
     double next = 0;  // arc length into the current segment of the next point
@@ -135,9 +139,11 @@ struct Segment_graph {
     }
     return out;
   }
-  /// sample(spacing) (or sample_along(spacing)) with independent Gaussian noise of standard deviation `noise` per
-  /// coordinate; with sample(), points shared by two segments are taken once per segment (duplicates up to noise).
-  skeleton::Point_matrix noisy_sample(double spacing, double noise, std::uint32_t seed, bool along = false) const {
+  /// sample(spacing) (or sample_along(spacing)) with independent Gaussian noise of standard deviation `noise`
+  /// per coordinate; with sample(), points shared by two segments are taken once per segment (duplicates up
+  /// to noise).
+  skeleton::Point_matrix noisy_sample(double spacing, double noise, std::uint32_t seed,
+                                      bool along = false) const {
     Portable_gaussian g(seed * 7919u + 17u);
     skeleton::Point_matrix m;
     m.dimension = dimension;
@@ -158,7 +164,8 @@ struct Topology {
 inline Topology topology(const skeleton::Skeleton_graph& g) {
   Topology t;
   std::vector<int> comp(num_vertices(g));
-  t.components = num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, comp.data()));
+  t.components =
+      num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, comp.data()));
   t.loops = num_edges(g) + t.components - num_vertices(g);
   for (auto v : boost::make_iterator_range(vertices(g))) {
     const std::size_t d = degree(v, g);
@@ -183,8 +190,8 @@ inline std::vector<double> random_unit_vector(std::size_t d, Portable_gaussian& 
   return v;
 }
 
-/// A random tree in R^d with `n` vertices and degrees at most 3: vertex i > 0 hangs off a random earlier vertex
-/// of degree < 3 (at most 2 for the root), by a segment of length in [4, 6] in a random direction.
+/// A random tree in R^d with `n` vertices and degrees at most 3: vertex i > 0 hangs off a random earlier
+/// vertex of degree < 3 (at most 2 for the root), by a segment of length in [4, 6] in a random direction.
 inline Segment_graph random_tree(std::size_t d, std::size_t n, std::uint32_t seed) {
   Portable_gaussian g(seed);
   Segment_graph t;
@@ -215,8 +222,8 @@ inline Segment_graph figure_eight(std::size_t d, double radius, std::uint32_t se
   t.dimension = d;
   t.vertices.push_back(std::vector<double>(d, 0.0));  // the touching point
   for (int c = 0; c < 2; ++c) {
-    // Orthonormal pair (Gram-Schmidt) spanning the circle's plane; the centre is at -radius * e1 (first circle)
-    // or +radius * e1 (second), so both pass through the origin.
+    // Orthonormal pair (Gram-Schmidt) spanning the circle's plane; the centre is at -radius * e1 (first
+    // circle) or +radius * e1 (second), so both pass through the origin.
     std::vector<double> e1 = random_unit_vector(d, g), e2 = random_unit_vector(d, g);
     double dot = 0;
     for (std::size_t k = 0; k < d; ++k) dot += e1[k] * e2[k];

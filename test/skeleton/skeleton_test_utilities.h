@@ -42,7 +42,9 @@ std::string invalid_argument_message(Call&& call) {
 /// Input distance between planar points (the repair stages' Distance): Euclidean.
 struct Planar_points {
   std::vector<std::array<double, 2>> p;
-  double operator()(Vertex_index a, Vertex_index b) const { return std::hypot(p[a][0] - p[b][0], p[a][1] - p[b][1]); }
+  double operator()(Vertex_index a, Vertex_index b) const {
+    return std::hypot(p[a][0] - p[b][0], p[a][1] - p[b][1]);
+  }
 };
 
 struct Complex_with_function {
@@ -50,7 +52,8 @@ struct Complex_with_function {
   std::vector<double> f;
 };
 
-inline Complex_with_function make(std::size_t n, std::vector<Edge> e, std::vector<Triangle> t, std::vector<double> f) {
+inline Complex_with_function make(std::size_t n, std::vector<Edge> e, std::vector<Triangle> t,
+                                  std::vector<double> f) {
   return {skeleton::make_simplicial_complex_2(n, std::move(e), std::move(t)), std::move(f)};
 }
 
@@ -83,7 +86,8 @@ inline Complex_with_function upright_torus(std::size_t nu, std::size_t nv, doubl
     for (std::size_t j = 0; j < nv; ++j) {
       const double u = 2 * pi * static_cast<double>(i) / static_cast<double>(nu);
       const double v = 2 * pi * static_cast<double>(j) / static_cast<double>(nv);
-      const double x = (R + r * std::cos(v)) * std::cos(u), y = r * std::sin(v), z = (R + r * std::cos(v)) * std::sin(u);
+      const double x = (R + r * std::cos(v)) * std::cos(u), y = r * std::sin(v),
+                   z = (R + r * std::cos(v)) * std::sin(u);
       f.push_back(z + tilt * x + 0.3 * tilt * y);
       t.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
@@ -115,8 +119,8 @@ struct Sampled_graph {
   std::vector<std::array<double, 2>> points;
 };
 
-inline Sampled_graph sample_segments(const std::vector<std::array<double, 4>>& segments, double spacing, double noise,
-                                     std::uint32_t seed) {
+inline Sampled_graph sample_segments(const std::vector<std::array<double, 4>>& segments, double spacing,
+                                     double noise, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> gauss(0.0, noise);
   Sampled_graph s;
@@ -125,7 +129,8 @@ inline Sampled_graph sample_segments(const std::vector<std::array<double, 4>>& s
     const std::size_t k = std::max<std::size_t>(1, static_cast<std::size_t>(len / spacing));
     for (std::size_t i = 0; i <= k; ++i) {
       const double a = static_cast<double>(i) / static_cast<double>(k);
-      s.points.push_back({seg[0] + a * (seg[2] - seg[0]) + gauss(rng), seg[1] + a * (seg[3] - seg[1]) + gauss(rng)});
+      s.points.push_back(
+          {seg[0] + a * (seg[2] - seg[0]) + gauss(rng), seg[1] + a * (seg[3] - seg[1]) + gauss(rng)});
     }
   }
   return s;
@@ -133,7 +138,8 @@ inline Sampled_graph sample_segments(const std::vector<std::array<double, 4>>& s
 
 /// Segments of a figure-eight (two squares sharing a corner), a tree and a 3x3 grid.
 inline std::vector<std::array<double, 4>> figure_eight_segments() {
-  return {{0, 0, 4, 0}, {4, 0, 4, 4}, {4, 4, 0, 4}, {0, 4, 0, 0}, {4, 4, 8, 4}, {8, 4, 8, 8}, {8, 8, 4, 8}, {4, 8, 4, 4}};
+  return {{0, 0, 4, 0}, {4, 0, 4, 4}, {4, 4, 0, 4}, {0, 4, 0, 0},
+          {4, 4, 8, 4}, {8, 4, 8, 8}, {8, 8, 4, 8}, {4, 8, 4, 4}};
 }
 inline std::vector<std::array<double, 4>> tree_segments() {
   return {{0, 0, 0, 5}, {0, 5, -4, 9}, {0, 5, 4, 9}, {4, 9, 4, 13}, {4, 9, 8, 10}, {-4, 9, -7, 6}};
@@ -148,7 +154,8 @@ inline std::vector<std::array<double, 4>> grid_segments() {
 }
 
 /// Augmented arcs as a sorted multiset of (lower vertex, upper vertex).
-inline std::vector<std::pair<Vertex_index, Vertex_index>> arc_multiset(const skeleton::Augmented_reeb_graph& R) {
+inline std::vector<std::pair<Vertex_index, Vertex_index>> arc_multiset(
+    const skeleton::Augmented_reeb_graph& R) {
   std::vector<std::pair<Vertex_index, Vertex_index>> a;
   for (const auto& arc : R.arcs()) a.emplace_back(arc.lower, arc.upper);
   std::sort(a.begin(), a.end());
@@ -158,12 +165,13 @@ inline std::vector<std::pair<Vertex_index, Vertex_index>> arc_multiset(const ske
 /// Brute-force augmented Reeb graph: for every slab between consecutive vertices (in (f, index) order) the
 /// components of the level set are recomputed from scratch with union-find over the crossing edges, joined by
 /// the crossing triangles. O(n (m + t)). Returns the sorted arc multiset.
-inline std::vector<std::pair<Vertex_index, Vertex_index>> brute_force_reeb_arcs(const Simplicial_complex_2& K,
-                                                                                const std::vector<double>& f) {
+inline std::vector<std::pair<Vertex_index, Vertex_index>> brute_force_reeb_arcs(
+    const Simplicial_complex_2& K, const std::vector<double>& f) {
   const std::size_t n = K.number_of_vertices, E = K.number_of_edges();
   std::vector<Vertex_index> order(n), rank(n);
   std::iota(order.begin(), order.end(), Vertex_index(0));
-  std::sort(order.begin(), order.end(), [&](Vertex_index a, Vertex_index b) { return f[a] < f[b] || (f[a] == f[b] && a < b); });
+  std::sort(order.begin(), order.end(),
+            [&](Vertex_index a, Vertex_index b) { return f[a] < f[b] || (f[a] == f[b] && a < b); });
   for (std::size_t i = 0; i < n; ++i) rank[order[i]] = static_cast<Vertex_index>(i);
   auto lo = [&](std::size_t e) { return std::min(rank[K.edges[e][0]], rank[K.edges[e][1]]); };
   auto hi = [&](std::size_t e) { return std::max(rank[K.edges[e][0]], rank[K.edges[e][1]]); };

@@ -24,7 +24,9 @@ using namespace FeatureRecon::test;
 
 namespace {
 
-Reeb_graph reeb(const Complex_with_function& c) { return compute_augmented_reeb_graph(c.complex, c.f).reeb_graph(); }
+Reeb_graph reeb(const Complex_with_function& c) {
+  return compute_augmented_reeb_graph(c.complex, c.f).reeb_graph();
+}
 
 /// Checks the structural invariants of an augmented Reeb graph and its Reeb graph.
 void expect_invariants(const Simplicial_complex_2& K, const std::vector<double>& f) {
@@ -111,7 +113,8 @@ TEST(AugmentedReebGraph, UprightTorusHasOneLoop) {
   EXPECT_EQ(R.count(maximum), 1u);
   EXPECT_EQ(R.count(up_fork), 1u);
   EXPECT_EQ(R.count(down_fork), 1u);
-  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)), brute_force_reeb_arcs(c.complex, c.f));
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)),
+            brute_force_reeb_arcs(c.complex, c.f));
   expect_invariants(c.complex, c.f);
 }
 
@@ -130,7 +133,8 @@ TEST(AugmentedReebGraph, Cylinder) {
   EXPECT_EQ(R.arcs.size(), 1u);
   EXPECT_EQ(R.nodes[0].type, unsigned(minimum));
   EXPECT_EQ(R.nodes[1].type, unsigned(maximum));
-  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)), brute_force_reeb_arcs(c.complex, c.f));
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)),
+            brute_force_reeb_arcs(c.complex, c.f));
 }
 
 TEST(AugmentedReebGraph, NonManifoldMixAgainstBruteForce) {
@@ -141,8 +145,9 @@ TEST(AugmentedReebGraph, NonManifoldMixAgainstBruteForce) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 60; ++trial) {
     std::vector<double> f(16);
-    for (double& x : f) x = trial % 2 ? std::uniform_real_distribution<double>(0, 1)(rng)
-                                      : static_cast<double>(std::uniform_int_distribution<int>(0, 3)(rng));
+    for (double& x : f)
+      x = trial % 2 ? std::uniform_real_distribution<double>(0, 1)(rng)
+                    : static_cast<double>(std::uniform_int_distribution<int>(0, 3)(rng));
     const auto c = make(16, edges, tris, f);
     const Augmented_reeb_graph A = compute_augmented_reeb_graph(c.complex, c.f);
     EXPECT_EQ(arc_multiset(A), brute_force_reeb_arcs(c.complex, c.f)) << "trial " << trial;
@@ -155,15 +160,15 @@ TEST(AugmentedReebGraph, NonManifoldMixAgainstBruteForce) {
 
 TEST(AugmentedReebGraph, FansWithScatteredRimNumbersAgainstBruteForce) {
   // A disk fan: centre 0 and a rim of D vertices, triangles (0, rim p, rim p + 1), the rim numbered in order,
-  // interleaved (even positions first) and at random. The triangles of the centre find their edges far apart in
-  // its edge list (the search gallops there; it walked them one by one, quadratic in the degree).
+  // interleaved (even positions first) and at random. The triangles of the centre find their edges far apart
+  // in its edge list (the search gallops there; it walked them one by one, quadratic in the degree).
   std::mt19937 rng(41);
   for (int trial = 0; trial < 12; ++trial) {
     const int D = 40 + 37 * trial;
     std::vector<Vertex_index> rim(static_cast<std::size_t>(D));
     for (int p = 0; p < D; ++p)
-      rim[static_cast<std::size_t>(p)] = static_cast<Vertex_index>(
-          1 + (trial % 3 == 1 ? (p % 2 == 0 ? p / 2 : (D + 1) / 2 + p / 2) : p));
+      rim[static_cast<std::size_t>(p)] =
+          static_cast<Vertex_index>(1 + (trial % 3 == 1 ? (p % 2 == 0 ? p / 2 : (D + 1) / 2 + p / 2) : p));
     if (trial % 3 == 2) std::shuffle(rim.begin(), rim.end(), rng);
     std::vector<Edge> edges;
     std::vector<Triangle> tris;
@@ -180,26 +185,38 @@ TEST(AugmentedReebGraph, FansWithScatteredRimNumbersAgainstBruteForce) {
       f[rim[static_cast<std::size_t>(p)]] = std::cos(6.283185307179586 * 3 * p / D) + 0.01 * (p % 5);
     f[0] = 0.1 * (trial % 5) - 0.2;
     const auto c = make(static_cast<std::size_t>(D) + 1, edges, tris, f);
-    EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)), brute_force_reeb_arcs(c.complex, c.f))
+    EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(c.complex, c.f)),
+              brute_force_reeb_arcs(c.complex, c.f))
         << "trial " << trial;
     expect_invariants(c.complex, c.f);
   }
 }
 
 TEST(AugmentedReebGraph, RandomRipsComplexesAgainstBruteForce) {
-  const std::vector<std::vector<std::array<double, 4>>> shapes{figure_eight_segments(), tree_segments(), grid_segments()};
+  const std::vector<std::vector<std::array<double, 4>>> shapes{figure_eight_segments(), tree_segments(),
+                                                               grid_segments()};
   std::mt19937 rng(11);
   for (int trial = 0; trial < 24; ++trial) {
     const auto s = sample_segments(shapes[trial % 3], 0.45, 0.12, 100 + trial);
     const Simplicial_complex_2 K = build_rips_complex_2(s.points, 0.9);
     std::vector<double> f;
     switch (trial % 4) {
-      case 0: f = compute_geodesic_function(K).values; break;
-      case 1: for (const auto& p : s.points) f.push_back(p[1] + 0.3 * p[0]); break;
-      case 2: for (std::size_t i = 0; i < s.points.size(); ++i) f.push_back(std::uniform_real_distribution<double>()(rng)); break;
-      default: for (std::size_t i = 0; i < s.points.size(); ++i) f.push_back(std::uniform_int_distribution<int>(0, 5)(rng));
+      case 0:
+        f = compute_geodesic_function(K).values;
+        break;
+      case 1:
+        for (const auto& p : s.points) f.push_back(p[1] + 0.3 * p[0]);
+        break;
+      case 2:
+        for (std::size_t i = 0; i < s.points.size(); ++i)
+          f.push_back(std::uniform_real_distribution<double>()(rng));
+        break;
+      default:
+        for (std::size_t i = 0; i < s.points.size(); ++i)
+          f.push_back(std::uniform_int_distribution<int>(0, 5)(rng));
     }
-    EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(K, f)), brute_force_reeb_arcs(K, f)) << "trial " << trial;
+    EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(K, f)), brute_force_reeb_arcs(K, f))
+        << "trial " << trial;
     expect_invariants(K, f);
   }
 }
@@ -216,15 +233,18 @@ TEST(AugmentedReebGraph, DenseRipsComplexesAgainstBruteForce) {
     std::vector<std::array<double, 2>> p(static_cast<std::size_t>(n));
     for (auto& q : p) {
       q = {static_cast<double>(rng() % 1000) / 1000.0, static_cast<double>(rng() % 1000) / 1000.0};
-      if (rng() % 4 == 0) q[1] = 0.5;                                    // on a line
+      if (rng() % 4 == 0) q[1] = 0.5;                                                         // on a line
       if (rng() % 8 == 0) q = p[static_cast<std::size_t>(rng() % static_cast<unsigned>(n))];  // a duplicate
     }
     const Simplicial_complex_2 K = build_rips_complex_2(p, r);
     std::vector<double> f(p.size());
     const int levels = 2 + static_cast<int>(rng() % 10);
-    for (double& x : f) x = trial % 3 == 0 ? std::uniform_real_distribution<double>()(rng) : static_cast<double>(rng() % levels);
+    for (double& x : f)
+      x = trial % 3 == 0 ? std::uniform_real_distribution<double>()(rng)
+                         : static_cast<double>(rng() % levels);
     triangles += K.number_of_triangles();
-    ASSERT_EQ(arc_multiset(compute_augmented_reeb_graph(K, f)), brute_force_reeb_arcs(K, f)) << "trial " << trial;
+    ASSERT_EQ(arc_multiset(compute_augmented_reeb_graph(K, f)), brute_force_reeb_arcs(K, f))
+        << "trial " << trial;
   }
   EXPECT_GT(triangles, 100000u);  // dense enough to matter
 }
@@ -239,7 +259,8 @@ TEST(AugmentedReebGraph, ConstantFunctionUsesIndexOrder) {
   auto t = upright_torus(10, 6);
   std::fill(t.f.begin(), t.f.end(), 0.0);
   EXPECT_EQ(reeb(t).loops(), 1u);
-  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(t.complex, t.f)), brute_force_reeb_arcs(t.complex, t.f));
+  EXPECT_EQ(arc_multiset(compute_augmented_reeb_graph(t.complex, t.f)),
+            brute_force_reeb_arcs(t.complex, t.f));
 }
 
 TEST(AugmentedReebGraph, SymmetricTiesAreDeterministic) {
@@ -256,7 +277,8 @@ TEST(AugmentedReebGraph, SymmetricTiesAreDeterministic) {
 }
 
 TEST(AugmentedReebGraph, EmptyAndSingleVertex) {
-  const Augmented_reeb_graph empty = compute_augmented_reeb_graph(Simplicial_complex_2{}, std::vector<double>{});
+  const Augmented_reeb_graph empty =
+      compute_augmented_reeb_graph(Simplicial_complex_2{}, std::vector<double>{});
   EXPECT_EQ(empty.status(), Status::degenerate_input);
   EXPECT_EQ(empty.number_of_nodes(), 0u);
   const Reeb_graph R0 = empty.reeb_graph();
@@ -323,7 +345,8 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   EXPECT_NE(message(bad).find("has a vertex beyond the 6 vertices"), std::string::npos) << message(bad);
   bad = c.complex;
   bad.triangles = {{0, 1, 2}, {0, 1, 2}};
-  EXPECT_NE(message(bad).find("triangle 1 (0, 1, 2) is not after triangle 0"), std::string::npos) << message(bad);
+  EXPECT_NE(message(bad).find("triangle 1 (0, 1, 2) is not after triangle 0"), std::string::npos)
+      << message(bad);
   bad.triangles = {{1, 0, 2}};
   EXPECT_NE(message(bad).find("triangle 0 (1, 0, 2) is not in increasing order"), std::string::npos)
       << message(bad);
@@ -337,7 +360,8 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   EXPECT_THROW(make_simplicial_complex_2(3, {}, {{0, 1, 1}}), std::invalid_argument);
   EXPECT_THROW(make_simplicial_complex_2(3, {{2, 2}}, {}), std::invalid_argument);
   // The length of edges implied by triangles is checked like the given ones, even when no triangle uses it.
-  for (const double bad_length : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  for (const double bad_length :
+       {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     try {
       make_simplicial_complex_2(3, {}, {{0, 1, 2}}, {}, bad_length);
       ADD_FAILURE() << "expected an exception for " << bad_length;
@@ -365,8 +389,8 @@ TEST(AugmentedReebGraph, SurfaceMeshWithRemovedVertices) {
   using K = CGAL::Simple_cartesian<double>;
   using Mesh = CGAL::Surface_mesh<K::Point_3>;
   Mesh mesh;
-  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({9, 9, 9}), v2 = mesh.add_vertex({1, 0, 0}),
-             v3 = mesh.add_vertex({0, 1, 0});
+  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({9, 9, 9}),
+             v2 = mesh.add_vertex({1, 0, 0}), v3 = mesh.add_vertex({0, 1, 0});
   mesh.add_vertex({5, 5, 5});
   mesh.add_face(v0, v2, v3);
   mesh.remove_vertex(v1);
@@ -388,8 +412,8 @@ TEST(AugmentedReebGraph, SurfaceMeshWithVertexPropertyMap) {
   using Mesh = CGAL::Surface_mesh<K::Point_3>;
   // A tetrahedron's surface (a sphere): a single arc; and a square with a hole? Keep to the sphere + tube.
   Mesh mesh;
-  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({1, 0, 0.2}), v2 = mesh.add_vertex({0, 1, 0.5}),
-             v3 = mesh.add_vertex({0, 0, 1});
+  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({1, 0, 0.2}),
+             v2 = mesh.add_vertex({0, 1, 0.5}), v3 = mesh.add_vertex({0, 0, 1});
   mesh.add_face(v0, v2, v1);
   mesh.add_face(v0, v1, v3);
   mesh.add_face(v1, v2, v3);
@@ -412,8 +436,8 @@ TEST(AugmentedReebGraph, SurfaceMeshWithVertexPropertyMap) {
 }
 
 TEST(AugmentedReebGraph, DuplicatedPointsKeepTheLoops) {
-  // Every point of a noisy figure-eight twice: duplicates are joined at length 0, so the geodesic function has
-  // ties everywhere; the Reeb graph still has the two loops.
+  // Every point of a noisy figure-eight twice: duplicates are joined at length 0, so the geodesic function
+  // has ties everywhere; the Reeb graph still has the two loops.
   const auto s = sample_segments(figure_eight_segments(), 0.3, 0.05, 21);
   std::vector<std::array<double, 2>> doubled;
   for (const auto& p : s.points) {
@@ -430,9 +454,10 @@ TEST(AugmentedReebGraph, DuplicatedPointsKeepTheLoops) {
 }
 
 TEST(AugmentedReebGraph, CollinearAndGridPointClouds) {
-  // A line of points (a path): one arc. A 6x6 unit grid at r = 1 (4-neighbour graph, no triangles): the geodesic
-  // function from a corner has many ties; every square of the grid is a loop of the 1-skeleton, and with the
-  // Manhattan distance each square has a unique top and bottom, so the Reeb graph keeps all 25 of them.
+  // A line of points (a path): one arc. A 6x6 unit grid at r = 1 (4-neighbour graph, no triangles): the
+  // geodesic function from a corner has many ties; every square of the grid is a loop of the 1-skeleton, and
+  // with the Manhattan distance each square has a unique top and bottom, so the Reeb graph keeps all 25 of
+  // them.
   std::vector<std::array<double, 2>> line, grid;
   for (int i = 0; i < 20; ++i) line.push_back({double(i), 0.0});
   for (int i = 0; i < 6; ++i)
@@ -452,9 +477,10 @@ TEST(AugmentedReebGraph, CollinearAndGridPointClouds) {
 }
 
 TEST(AugmentedReebGraph, TheSetUpReportsAndAStopThereLeavesNoArc) {
-  // The complete graph on 200 points: 1,313,400 triangles, so both passes over the triangles and the bucketing
-  // after them report on their way (every 2^20 triangles). Until session 37 the first report after 0 came when the
-  // sweep began: on a dense Rips complex two thirds of the time passed without one, and a stop waited as long.
+  // The complete graph on 200 points: 1,313,400 triangles, so both passes over the triangles and the
+  // bucketing after them report on their way (every 2^20 triangles). Until session 37 the first report after
+  // 0 came when the sweep began: on a dense Rips complex two thirds of the time passed without one, and a
+  // stop waited as long.
   std::vector<std::array<double, 2>> points;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -477,9 +503,9 @@ TEST(AugmentedReebGraph, TheSetUpReportsAndAStopThereLeavesNoArc) {
   auto reports = [&seen](double from, double to) {
     return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t > from && t < to; });
   };
-  EXPECT_GE(reports(0.05, 0.2), 1);   // counting the triangles by their first edge
-  EXPECT_GE(reports(0.2, 0.35), 1);   // storing them
-  EXPECT_GE(reports(0.35, 0.4), 2);   // bucketing them by their middle vertex (two passes)
+  EXPECT_GE(reports(0.05, 0.2), 1);  // counting the triangles by their first edge
+  EXPECT_GE(reports(0.2, 0.35), 1);  // storing them
+  EXPECT_GE(reports(0.35, 0.4), 2);  // bucketing them by their middle vertex (two passes)
   for (const double stop_at : {0.0, 0.05, 0.1, 0.2, 0.3, 0.35, 0.38, 0.4}) {
     std::size_t later = 0;
     bool refused = false;
@@ -493,20 +519,22 @@ TEST(AugmentedReebGraph, TheSetUpReportsAndAStopThereLeavesNoArc) {
     EXPECT_EQ(A.number_of_arcs(), 0u) << stop_at;
     EXPECT_EQ(A.order(), full.order()) << stop_at;
     EXPECT_EQ(later, 0u) << stop_at;
-    EXPECT_EQ(A.reeb_graph().nodes.size(), 200u) << stop_at;  // every vertex isolated: a minimum and a maximum
+    EXPECT_EQ(A.reeb_graph().nodes.size(), 200u)
+        << stop_at;  // every vertex isolated: a minimum and a maximum
   }
 }
 
 TEST(LargeArrayAllocator, HonoursTheAlignmentOfItsType) {
-  // The link-cut tree's nodes are aligned to 32 bytes; blocks below 4 MiB came from malloc (16 bytes), so about
-  // every second array of them was misaligned (undefined behaviour, reported by -fsanitize=alignment).
+  // The link-cut tree's nodes are aligned to 32 bytes; blocks below 4 MiB came from malloc (16 bytes), so
+  // about every second array of them was misaligned (undefined behaviour, reported by -fsanitize=alignment).
   struct alignas(32) Wide {
     double x[4];
   };
   std::vector<FeatureRecon::internal::Large_vector<Wide>> arrays;
   for (std::size_t n = 1; n <= 64; ++n) arrays.emplace_back(n);
   arrays.emplace_back((std::size_t(5) << 20) / sizeof(Wide));  // the huge-page path
-  for (const auto& a : arrays) EXPECT_EQ(reinterpret_cast<std::uintptr_t>(a.data()) % alignof(Wide), 0u) << a.size();
+  for (const auto& a : arrays)
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(a.data()) % alignof(Wide), 0u) << a.size();
   FeatureRecon::internal::Large_vector<char> bytes(3);  // ordinary types keep malloc
   EXPECT_EQ(bytes.size(), 3u);
 }

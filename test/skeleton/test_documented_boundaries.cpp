@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// Documented boundaries, tie-breaks and constants that no other test pinned (found by mutation testing: each test
-// below fails when the behaviour it names is changed).
+// Documented boundaries, tie-breaks and constants that no other test pinned (found by mutation testing: each
+// test below fails when the behaviour it names is changed).
 #include <FeatureRecon/skeleton/embed_reeb_graph.h>
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
@@ -41,7 +41,8 @@ Reeb_graph::Node node(Vertex_index v, double f, std::vector<Vertex_index> member
 }  // namespace
 
 // "Input vertices keep their place (node, node members, or arc vertices)": a member on its node's level (as a
-// first simplification leaves where f ties) stays a member of that node, it does not become a node of its own.
+// first simplification leaves where f ties) stays a member of that node, it does not become a node of its
+// own.
 TEST(DocumentedBoundaries, SimplificationKeepsLevelMembersWithTheirNode) {
   Reeb_graph R;  // a Y: minimum v0 (f 0) -> fork v1 (f 1, member v4 at f 1) -> maxima v2 (f 2) and v3 (f 3)
   R.nodes = {node(0, 0), node(1, 1, {4}), node(2, 2), node(3, 3)};
@@ -59,8 +60,8 @@ TEST(DocumentedBoundaries, SimplificationKeepsLevelMembersWithTheirNode) {
   EXPECT_TRUE(fork->type & up_fork);
 }
 
-// repair_reeb_graph(): when the two ends of an isolated segment are each other's closest free end, "the segment
-// is left as it is ... and neither end joins anything farther".
+// repair_reeb_graph(): when the two ends of an isolated segment are each other's closest free end, "the
+// segment is left as it is ... and neither end joins anything farther".
 TEST(DocumentedBoundaries, RepairAnIsolatedSegmentsEndsJoinNothingFarther) {
   Planar_points pts;  // segment 0-1 (x 0 and 1), segment 2-3 (x 3 and 13); f = x
   for (const double x : {0.0, 1.0, 3.0, 13.0}) pts.p.push_back({x, 0.0});
@@ -90,7 +91,8 @@ TEST(DocumentedBoundaries, ConnectDeadEndsBreaksDistanceTiesBySmallestVertex) {
   const Reeb_dead_end_result r = connect_dead_ends(R, f, 1.2, pts);
   ASSERT_EQ(r.connected, 1u);
   auto has_node = [&](Vertex_index v) {
-    return std::any_of(r.graph.nodes.begin(), r.graph.nodes.end(), [v](const auto& n) { return n.vertex == v; });
+    return std::any_of(r.graph.nodes.begin(), r.graph.nodes.end(),
+                       [v](const auto& n) { return n.vertex == v; });
   };
   EXPECT_TRUE(has_node(1));
   EXPECT_FALSE(has_node(2));
@@ -98,7 +100,8 @@ TEST(DocumentedBoundaries, ConnectDeadEndsBreaksDistanceTiesBySmallestVertex) {
 
 // Embedding_options::level_width: "0 (default) means automatic: 1/64 of the range of f over the graph".
 TEST(DocumentedBoundaries, AutomaticLevelWidthIsOneSixtyFourthOfTheRange) {
-  Reeb_graph G;  // one arc from f 0 to f 64 with a point at every f 0.5, 1.5, ..., 63.5: one per bin of width 1
+  Reeb_graph
+      G;  // one arc from f 0 to f 64 with a point at every f 0.5, 1.5, ..., 63.5: one per bin of width 1
   G.nodes = {node(0, 0), node(1, 64)};
   Reeb_graph::Arc arc;
   arc.lower = 0;
@@ -118,9 +121,9 @@ TEST(DocumentedBoundaries, AutomaticLevelWidthIsOneSixtyFourthOfTheRange) {
 }
 
 // project_to_3d(): "Deterministic sign: the largest component of each axis is positive". Points spread along
-// three orthonormal directions u0, u1, u2 of R^4 (variances 100, 9, 1, nothing along the fourth): coordinate c
-// of a point is its coefficient along u_c, with the sign that makes u_c's largest component positive. The basis
-// is tried with its coordinates shifted cyclically (the solver returns other signs for some).
+// three orthonormal directions u0, u1, u2 of R^4 (variances 100, 9, 1, nothing along the fourth): coordinate
+// c of a point is its coefficient along u_c, with the sign that makes u_c's largest component positive. The
+// basis is tried with its coordinates shifted cyclically (the solver returns other signs for some).
 TEST(DocumentedBoundaries, ProjectionAxesHaveTheDocumentedSigns) {
   const double basis[3][4] = {{0.36, 0.48, -0.8, 0}, {0.8, -0.6, 0, 0}, {-0.48, -0.64, -0.6, 0}};
   // Coefficients: orthogonal, centred columns (so the covariance has exactly these axes).
@@ -144,12 +147,13 @@ TEST(DocumentedBoundaries, ProjectionAxesHaveTheDocumentedSigns) {
     const std::vector<std::array<double, 3>> p = project_to_3d(m);
     for (int i = 0; i < 8; ++i)
       for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(p[i][c], sign(u[c]) * a[i][c], 1e-9) << "shift " << shift << " point " << i << " axis " << c;
+        EXPECT_NEAR(p[i][c], sign(u[c]) * a[i][c], 1e-9)
+            << "shift " << shift << " point " << i << " axis " << c;
   }
 }
 
-// merge_close_branch_nodes(): "A merged node takes the value of its lowest node (ties: the smaller index), whose
-// members come first".
+// merge_close_branch_nodes(): "A merged node takes the value of its lowest node (ties: the smaller index),
+// whose members come first".
 TEST(DocumentedBoundaries, MergedBranchNodesOfEqualValueTakeTheSmallerIndexFirst) {
   Point_matrix coordinates;  // 0, 1: the two forks 0.1 apart; 2..5: the leaves
   coordinates.rows = 6;
@@ -179,13 +183,13 @@ TEST(DocumentedBoundaries, MergedBranchNodesOfEqualValueTakeTheSmallerIndexFirst
   EXPECT_EQ(merged.members.front(), 0u);
 }
 
-// The greedy matching of the map comparison: "at most match_distance apart", bearings that "differ by less than"
-// the limit, and "proposals are accepted by increasing distance (ties: smaller h)".
+// The greedy matching of the map comparison: "at most match_distance apart", bearings that "differ by less
+// than" the limit, and "proposals are accepted by increasing distance (ties: smaller h)".
 TEST(DocumentedBoundaries, GreedyMatchingBoundariesAndTies) {
-  const Map_comparison_options o;  // 15 m, 45 degrees
-  EXPECT_EQ(match_map_samples({{{0, 0}, 0}}, {{{15, 0}, 0}}, o).matched, 1u);   // exactly 15 m apart
+  const Map_comparison_options o;                                              // 15 m, 45 degrees
+  EXPECT_EQ(match_map_samples({{{0, 0}, 0}}, {{{15, 0}, 0}}, o).matched, 1u);  // exactly 15 m apart
   EXPECT_EQ(match_map_samples({{{0, 0}, 0}}, {{{16, 0}, 0}}, o).matched, 0u);
-  EXPECT_EQ(match_map_samples({{{0, 0}, 0}}, {{{1, 0}, 45}}, o).matched, 0u);   // exactly 45 degrees: not less
+  EXPECT_EQ(match_map_samples({{{0, 0}, 0}}, {{{1, 0}, 45}}, o).matched, 0u);  // exactly 45 degrees: not less
   EXPECT_EQ(match_map_samples({{{0, 0}, 0}}, {{{1, 0}, 44}}, o).matched, 1u);
   // Two ground-truth samples 1 m on either side of one reconstruction sample: the smaller index takes it.
   const Map_sample_matching M = match_map_samples({{{-1, 0}, 0}, {{1, 0}, 0}}, {{{0, 0}, 0}}, o);
@@ -205,10 +209,12 @@ TEST(DocumentedBoundaries, TraceGraphHeadingToleranceIsInclusive) {
   EXPECT_EQ(build_gps_trace_graph(S, 5.0, tolerance_of(29.5)).edges.size(), 0u);
 }
 
-// explain_unmatched_samples(): taken = an aligned sample "within the threshold"; offset = the nearest aligned one
-// "between 1 and 2 thresholds away"; crossing = samples within 2 thresholds, none aligned; absent = nothing there.
+// explain_unmatched_samples(): taken = an aligned sample "within the threshold"; offset = the nearest aligned
+// one "between 1 and 2 thresholds away"; crossing = samples within 2 thresholds, none aligned; absent =
+// nothing there.
 TEST(DocumentedBoundaries, UnmatchedSampleClassesAtTheirBoundaries) {
-  Map_comparison_result r;  // every sample unmatched; distances exact: 15 (= threshold) and 27 (1.8 thresholds)
+  Map_comparison_result
+      r;  // every sample unmatched; distances exact: 15 (= threshold) and 27 (1.8 thresholds)
   r.ground_truth_sample_list = {{{0, 0}, 0}, {{0, 100}, 0}, {{0, 200}, 0}, {{0, 500}, 0}};
   r.reconstruction_sample_list = {{{15, 0}, 0}, {{27, 100}, 0}, {{10, 200}, 90}};
   r.ground_truth_samples = 4;
@@ -240,8 +246,9 @@ TEST(DocumentedBoundaries, RoadMapOptionSetsHaveTheDocumentedValues) {
   EXPECT_EQ(m.smoothing_iterations, 20u);
 }
 
-// Embedding_options::smoothing_iterations rounds are made (a Laplacian round at weight 0.5 moves a point halfway to
-// its neighbours' mean), and max_gap 0 means "twice the median edge length of the graph", reported back.
+// Embedding_options::smoothing_iterations rounds are made (a Laplacian round at weight 0.5 moves a point
+// halfway to its neighbours' mean), and max_gap 0 means "twice the median edge length of the graph", reported
+// back.
 TEST(DocumentedBoundaries, EmbeddingSmoothingRoundsAndAutomaticMaxGap) {
   Reeb_graph G;  // one arc from vertex 0 to vertex 3 through vertex 1; vertex 2 is only in the graph
   G.nodes = {node(0, 0), node(3, 3)};
@@ -268,8 +275,8 @@ TEST(DocumentedBoundaries, EmbeddingSmoothingRoundsAndAutomaticMaxGap) {
   EXPECT_DOUBLE_EQ(F.max_gap, 2 * std::sqrt(5.0));
 }
 
-// repair_reeb_graph(): "each node at most once": of three dead ends within the distance of one another only the
-// closest pair is joined.
+// repair_reeb_graph(): "each node at most once": of three dead ends within the distance of one another only
+// the closest pair is joined.
 TEST(DocumentedBoundaries, RepairJoinsEachNodeAtMostOnce) {
   Planar_points pts;  // segments 0-1, 2-3, 4-5 whose ends 1, 3, 5 lie close together; f = index
   pts.p = {{-10, 0}, {0, 0}, {10, 0}, {1, 0}, {0, 10}, {0, 1.5}};
@@ -282,13 +289,13 @@ TEST(DocumentedBoundaries, RepairJoinsEachNodeAtMostOnce) {
   EXPECT_EQ(fixed.graph.components, 2u);
 }
 
-// extract_reeb_skeleton() with a repair distance: repair, connect_dead_ends, "then simplify again", and prune_height;
-// a T junction whose stem stops 1.5 short of the street, and a short far-away piece.
+// extract_reeb_skeleton() with a repair distance: repair, connect_dead_ends, "then simplify again", and
+// prune_height; a T junction whose stem stops 1.5 short of the street, and a short far-away piece.
 TEST(DocumentedBoundaries, PipelineConnectsDeadEndsSimplifiesAgainAndPrunes) {
   std::vector<std::array<double, 2>> pts;
-  for (int i = 0; i <= 40; ++i) pts.push_back({0.5 * i, 0.0});        // the street, x 0..20
-  for (int i = 3; i <= 20; ++i) pts.push_back({10.0, 0.5 * i});       // the stem, y 1.5..10
-  pts.push_back({50.0, 50.0});                                         // a piece of height 0.5
+  for (int i = 0; i <= 40; ++i) pts.push_back({0.5 * i, 0.0});   // the street, x 0..20
+  for (int i = 3; i <= 20; ++i) pts.push_back({10.0, 0.5 * i});  // the stem, y 1.5..10
+  pts.push_back({50.0, 50.0});                                   // a piece of height 0.5
   pts.push_back({50.5, 50.0});
   Skeleton_options o;
   o.repair_distance = 2.0;
@@ -311,13 +318,14 @@ TEST(DocumentedBoundaries, PipelineConnectsDeadEndsSimplifiesAgainAndPrunes) {
 }
 
 // Loop persistence (doc/skeleton.md): "an arc that closes a cycle replaces the lightest arc on it when it is
-// heavier" (strictly: of two arcs with the same lower node the forest keeps the first). Which thin cycle a loop
-// gets then decides the simplification where several loops share a bottom: here the loop that survives delta 3
-// keeps its bottom at the up-fork of value 2 (replacing on ties moved it to value 1). A pinned regression result.
+// heavier" (strictly: of two arcs with the same lower node the forest keeps the first). Which thin cycle a
+// loop gets then decides the simplification where several loops share a bottom: here the loop that survives
+// delta 3 keeps its bottom at the up-fork of value 2 (replacing on ties moved it to value 1). A pinned
+// regression result.
 TEST(DocumentedBoundaries, ThinCyclesOnTiedBottomsArePinned) {
-  const auto c = make(8,
-                      {{0, 1}, {1, 2}, {0, 3}, {1, 4}, {4, 5}, {0, 6}, {0, 7}, {2, 6}, {5, 7}, {1, 6}, {3, 4}, {0, 5}},
-                      {}, {1, 0, 2, 5, 3, 0, 2, 3});
+  const auto c = make(
+      8, {{0, 1}, {1, 2}, {0, 3}, {1, 4}, {4, 5}, {0, 6}, {0, 7}, {2, 6}, {5, 7}, {1, 6}, {3, 4}, {0, 5}}, {},
+      {1, 0, 2, 5, 3, 0, 2, 3});
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(c.complex, c.f);
   const Reeb_simplification_result S = simplify_by_persistence(A, 3.0);
   EXPECT_EQ(S.removed_branches, 3u);

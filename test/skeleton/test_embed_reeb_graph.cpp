@@ -27,7 +27,8 @@ Point_matrix circle_in(std::size_t d, std::uint32_t seed) {
     frame.setIdentity();
   } else {
     for (Eigen::Index r = 0; r < frame.rows(); ++r) frame(r, 0) = g(rng), frame(r, 1) = g(rng);
-    frame = Eigen::HouseholderQR<Eigen::MatrixXd>(frame).householderQ() * Eigen::MatrixXd::Identity(frame.rows(), 2);
+    frame = Eigen::HouseholderQR<Eigen::MatrixXd>(frame).householderQ() *
+            Eigen::MatrixXd::Identity(frame.rows(), 2);
   }
   Point_matrix m;
   m.rows = 400;
@@ -35,7 +36,8 @@ Point_matrix circle_in(std::size_t d, std::uint32_t seed) {
   std::normal_distribution<double> noise(0.0, 0.05);
   for (int i = 0; i < 400; ++i) {
     const double a = 2 * std::acos(-1.0) * i / 400;
-    const Eigen::VectorXd x = frame * Eigen::Vector2d(10 * std::cos(a) + noise(rng), 10 * std::sin(a) + noise(rng));
+    const Eigen::VectorXd x =
+        frame * Eigen::Vector2d(10 * std::cos(a) + noise(rng), 10 * std::sin(a) + noise(rng));
     for (Eigen::Index c = 0; c < x.size(); ++c) m.data.push_back(x[c]);
   }
   return m;
@@ -61,8 +63,8 @@ TEST(EmbedReebGraph, CirclePolylinesStayOnTheCircle) {
       EXPECT_EQ(line.front(), E.node_positions[G.arcs[k].lower]);
       EXPECT_EQ(line.back(), E.node_positions[G.arcs[k].upper]);
       for (const auto& p : line) {
-        // The circle's centre is the origin in 2D and the projected mean in 50D; centroids of level-set pieces
-        // lie a little inside the circle (chords), never far.
+        // The circle's centre is the origin in 2D and the projected mean in 50D; centroids of level-set
+        // pieces lie a little inside the circle (chords), never far.
         EXPECT_NEAR(norm3(p), 10.0, 0.6) << "d = " << d;
         ++points;
       }
@@ -71,15 +73,17 @@ TEST(EmbedReebGraph, CirclePolylinesStayOnTheCircle) {
   }
 }
 
-// A loop of 8 vertices on the unit circle gives arcs of 3 level-set pieces. Laplacian rounds shrink such a coarse
-// arc onto the chord between its ends (10 rounds: a fifth of the width left); Taubin rounds keep its shape.
+// A loop of 8 vertices on the unit circle gives arcs of 3 level-set pieces. Laplacian rounds shrink such a
+// coarse arc onto the chord between its ends (10 rounds: a fifth of the width left); Taubin rounds keep its
+// shape.
 TEST(EmbedReebGraph, TaubinSmoothingKeepsTheShapeOfCoarseArcs) {
   Proximity_graph g;
   g.number_of_vertices = 8;
   std::vector<std::array<double, 3>> xyz;
   for (int i = 0; i < 8; ++i) {
     xyz.push_back({std::cos(std::acos(-1.0) * i / 4), std::sin(std::acos(-1.0) * i / 4), 0.0});
-    g.edges.push_back({static_cast<Vertex_index>(std::min(i, (i + 1) % 8)), static_cast<Vertex_index>(std::max(i, (i + 1) % 8))});
+    g.edges.push_back({static_cast<Vertex_index>(std::min(i, (i + 1) % 8)),
+                       static_cast<Vertex_index>(std::max(i, (i + 1) % 8))});
   }
   std::sort(g.edges.begin(), g.edges.end());
   g.edge_lengths.assign(8, 2 * std::sin(std::acos(-1.0) / 8));
@@ -95,7 +99,8 @@ TEST(EmbedReebGraph, TaubinSmoothingKeepsTheShapeOfCoarseArcs) {
     double widest = 0;  // distance from the line through the two nodes (the minimum and the maximum of f)
     smallest_radius = 2;
     const auto a = E.node_positions[G.arcs.front().lower], b = E.node_positions[G.arcs.front().upper];
-    const double ux = (b[0] - a[0]) / std::hypot(b[0] - a[0], b[1] - a[1]), uy = (b[1] - a[1]) / std::hypot(b[0] - a[0], b[1] - a[1]);
+    const double ux = (b[0] - a[0]) / std::hypot(b[0] - a[0], b[1] - a[1]),
+                 uy = (b[1] - a[1]) / std::hypot(b[0] - a[0], b[1] - a[1]);
     for (const auto& line : E.arc_polylines) {
       EXPECT_EQ(line.size(), 5u);  // the two nodes and three pieces
       for (const auto& p : line) {
@@ -110,8 +115,8 @@ TEST(EmbedReebGraph, TaubinSmoothingKeepsTheShapeOfCoarseArcs) {
   const double laplacian = extent(Embedding_options::Smoothing::laplacian, r_laplacian);
   EXPECT_GT(taubin, 0.85);
   EXPECT_GT(r_taubin, 0.75) << r_laplacian;
-  EXPECT_LT(r_laplacian, 0.5);  // the middle piece near the centre
-  EXPECT_LT(laplacian, 0.25);  // 0.854^10 = 0.21 of the middle piece's offset
+  EXPECT_LT(r_laplacian, 0.5);     // the middle piece near the centre
+  EXPECT_LT(laplacian, 0.25);      // 0.854^10 = 0.21 of the middle piece's offset
   EXPECT_LE(taubin, 1.0 + 1e-12);  // no overshoot beyond the circle
 }
 
@@ -130,8 +135,8 @@ TEST(EmbedReebGraph, ProjectionKeepsDistancesOfPlanarData) {
 }
 
 TEST(EmbedReebGraph, ProjectionKeepsTinyAndHugeCoordinates) {
-  // Ten collinear points in 4D, spacing s along the first axis: projected to 3D they span +-4.5 s on the first
-  // axis. The covariance of s = 1e-170 underflowed and of s = 1e200 overflowed: every projection was 0.
+  // Ten collinear points in 4D, spacing s along the first axis: projected to 3D they span +-4.5 s on the
+  // first axis. The covariance of s = 1e-170 underflowed and of s = 1e200 overflowed: every projection was 0.
   for (const double spacing : {1.0, 1e-170, 1e-300, 1e200, 1e300}) {
     Point_matrix m;
     m.dimension = 4;
@@ -155,8 +160,9 @@ TEST(EmbedReebGraph, BadInput) {
   EXPECT_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o), std::invalid_argument);
   // Taubin's inflating step grows the zigzag above a weight of 2/3; Laplacian rounds take up to 1.
   o.smoothing_weight = 0.7;
-  EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] { embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o); })
-                .find("[0, 2/3] for Taubin smoothing"),
+  EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] {
+              embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o);
+            }).find("[0, 2/3] for Taubin smoothing"),
             std::string::npos);
   o.smoothing = Embedding_options::Smoothing::laplacian;
   EXPECT_NO_THROW(embed_reeb_graph(Reeb_graph{}, {}, {}, 2, o));
@@ -170,31 +176,47 @@ TEST(EmbedReebGraph, BadInput) {
   two.arcs = {{0, 1, {}}, {0, 5, {}}};
   auto message = [](auto&& call) { return FeatureRecon::test::invalid_argument_message(call); };
   const std::vector<std::array<double, 3>> positions{{0, 0, 0}, {1, 0, 0}};
-  EXPECT_NE(message([&] { embed_reeb_graph(two, positions, {0.0, 1.0}, 2); }).find("arc 1"), std::string::npos);
+  EXPECT_NE(message([&] {
+              embed_reeb_graph(two, positions, {0.0, 1.0}, 2);
+            }).find("arc 1"),
+            std::string::npos);
   two.arcs.pop_back();
   Proximity_graph g;
   g.number_of_vertices = 2;
   g.edges = {{0, 7}};
-  EXPECT_NE(message([&] { embed_reeb_graph(two, g, positions, {0.0, 1.0}, 2); }).find("graph edge 0"),
+  EXPECT_NE(message([&] {
+              embed_reeb_graph(two, g, positions, {0.0, 1.0}, 2);
+            }).find("graph edge 0"),
             std::string::npos);
   // Non-finite values and positions of the graph's vertices are named (a NaN position gave NaN polylines).
-  EXPECT_NE(message([&] { embed_reeb_graph(two, positions, {0.0, std::nan("")}, 2); }).find("vertex 1 has value"),
+  EXPECT_NE(message([&] {
+              embed_reeb_graph(two, positions, {0.0, std::nan("")}, 2);
+            }).find("vertex 1 has value"),
             std::string::npos);
-  EXPECT_NE(message([&] { embed_reeb_graph(two, {{0, 0, 0}, {std::nan(""), 0, 0}}, {0.0, 1.0}, 2); })
-                .find("vertex 1 has coordinate"),
+  EXPECT_NE(message([&] {
+              embed_reeb_graph(two, {{0, 0, 0}, {std::nan(""), 0, 0}}, {0.0, 1.0}, 2);
+            }).find("vertex 1 has coordinate"),
             std::string::npos);
   // classical_mds_3d checks its matrix.
   EXPECT_NE(message([] { classical_mds_3d({0, 1, 1}, 2); }).find("entries"), std::string::npos);
-  EXPECT_NE(message([] { classical_mds_3d({0, std::nan(""), 1, 0}, 2); }).find("entry (0, 1)"), std::string::npos);
+  EXPECT_NE(message([] {
+              classical_mds_3d({0, std::nan(""), 1, 0}, 2);
+            }).find("entry (0, 1)"),
+            std::string::npos);
   EXPECT_NE(message([] { classical_mds_3d({0, -1, -1, 0}, 2); }).find("entry (0, 1)"), std::string::npos);
-  EXPECT_NE(message([] { classical_mds_3d({0, -1, 1, 0}, 2); }).find("entry (0, 1) of the distance matrix is -1"),
+  EXPECT_NE(message([] {
+              classical_mds_3d({0, -1, 1, 0}, 2);
+            }).find("entry (0, 1) of the distance matrix is -1"),
             std::string::npos);
   EXPECT_NE(message([] { classical_mds_3d({}, std::size_t(1) << 32); }).find("entries"), std::string::npos);
-  EXPECT_NE(message([] { classical_mds_3d({0, 1, 1, 1, 7, 1, 1, 1, 0}, 3); }).find("diagonal entry (1, 1) is 7"),
+  EXPECT_NE(message([] {
+              classical_mds_3d({0, 1, 1, 1, 7, 1, 1, 1, 0}, 3);
+            }).find("diagonal entry (1, 1) is 7"),
             std::string::npos);
-  EXPECT_NE(
-      message([] { classical_mds_3d({0, 1, 2, 1, 0, 3, 2, 100, 0}, 3); }).find("not symmetric at (1, 2): 3 vs 100"),
-      std::string::npos);
+  EXPECT_NE(message([] {
+              classical_mds_3d({0, 1, 2, 1, 0, 3, 2, 100, 0}, 3);
+            }).find("not symmetric at (1, 2): 3 vs 100"),
+            std::string::npos);
   const auto two_points = classical_mds_3d({0, 2, 2, 0}, 2);
   EXPECT_NEAR(std::abs(two_points[0][0] - two_points[1][0]), 2.0, 1e-12);
 }
@@ -211,8 +233,8 @@ double distance_to_corner(const std::vector<std::array<double, 3>>& line) {
   for (const auto& p : line) best = std::min(best, std::hypot(p[0] - 20, p[1]));
   return best;
 }
-// An L of 41 points spaced `scale` (corner at (20, 0) scale), its path graph, and a Reeb graph of one arc without
-// points of its own between the two ends.
+// An L of 41 points spaced `scale` (corner at (20, 0) scale), its path graph, and a Reeb graph of one arc
+// without points of its own between the two ends.
 struct L_shape {
   std::vector<std::array<double, 3>> xyz;
   Proximity_graph g;
@@ -308,8 +330,8 @@ double distance_error(const std::vector<std::array<double, 3>>& x, const std::ve
   double worst = 0;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j)
-      worst = std::max(worst,
-                       std::fabs(std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]) - D[i * n + j]));
+      worst = std::max(worst, std::fabs(std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]) -
+                                        D[i * n + j]));
   return worst;
 }
 /// Per embedding axis, the sum of squares: the eigenvalue behind it.
@@ -322,8 +344,9 @@ std::array<double, 3> axis_eigenvalues(const std::vector<std::array<double, 3>>&
 }  // namespace
 
 TEST(ClassicalMds, KrylovSolverAgreesWithTheDenseOne) {
-  // 500 points in R^6 with distinct spreads per axis: three well separated eigenvalues on top, so both solvers give
-  // the same coordinates (signs fixed by the largest coordinate), and they give the top three principal axes.
+  // 500 points in R^6 with distinct spreads per axis: three well separated eigenvalues on top, so both
+  // solvers give the same coordinates (signs fixed by the largest coordinate), and they give the top three
+  // principal axes.
   std::mt19937 rng(11);
   std::normal_distribution<double> g(0.0, 1.0);
   const double spread[6] = {10, 6, 3, 1, 0.5, 0.2};
@@ -344,7 +367,8 @@ TEST(ClassicalMds, KrylovSolverAgreesWithTheDenseOne) {
   const auto pub = classical_mds_3d(D, pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i)
     for (int c = 0; c < 3; ++c) EXPECT_EQ(pub[i][c], krylov[i][c]);
-  // Distances of 1e150 or 1e-150 (squares overflow or underflow): the same picture, scaled (before: off by 98 %).
+  // Distances of 1e150 or 1e-150 (squares overflow or underflow): the same picture, scaled (before: off by 98
+  // %).
   for (const double factor : {0x1p500, 0x1p-500}) {
     std::vector<double> scaled = D;
     for (double& d : scaled) d *= factor;
@@ -358,9 +382,9 @@ TEST(ClassicalMds, KrylovSolverAgreesWithTheDenseOne) {
 }
 
 TEST(ClassicalMds, KrylovSolverFindsTheWeakAxesOfElongatedData) {
-  // Spreads 1e6, 1 and 0.5 in R^3: the second and third eigenvalues are 1e-12 of the first. Both solvers recover
-  // the weak axes (before: the Krylov solver stopped on a tolerance relative to the largest eigenvalue and
-  // returned noise there).
+  // Spreads 1e6, 1 and 0.5 in R^3: the second and third eigenvalues are 1e-12 of the first. Both solvers
+  // recover the weak axes (before: the Krylov solver stopped on a tolerance relative to the largest
+  // eigenvalue and returned noise there).
   std::mt19937 rng(5);
   std::normal_distribution<double> g(0.0, 1.0);
   std::vector<std::vector<double>> pts(400, std::vector<double>(3));
@@ -406,11 +430,12 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
   EXPECT_NEAR(a[0], a[1], 1e-8 * a[0]);
   // The callback can stop it between steps.
   bool stopped = false;
-  skeleton::internal::classical_mds_3d(cycle, n, [](double) { return false; }, stopped, 0);
+  skeleton::internal::classical_mds_3d(
+      cycle, n, [](double) { return false; }, stopped, 0);
   EXPECT_TRUE(stopped);
-  // The public overload with options: the same positions as without when it runs to the end (reports from 0 to
-  // 1, increasing), all 0 and interrupted after a stop at the second report; a stop at the start on the dense
-  // path (10 points) too.
+  // The public overload with options: the same positions as without when it runs to the end (reports from 0
+  // to 1, increasing), all 0 and interrupted after a stop at the second report; a stop at the start on the
+  // dense path (10 points) too.
   std::vector<double> seen;
   Classical_mds_options o;
   o.progress = [&](double f) {
@@ -439,10 +464,10 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
 }
 
 TEST(ClassicalMds, CrowdedTopEigenvaluesStayInTheKrylovSolverAndTheDenseFallbackReportsFirst) {
-  // Entries uniform in [1, 2]: the top eigenvalues crowd together. On 500 points the Krylov solver needs about 340
-  // vectors; it had at most min(n / 2, 320) and then ran the dense solver unannounced (on 2,000 points: 26 s without
-  // a report, a stop ignored). Restarted, it converges in the Krylov solver (every report below 0.5) past that old
-  // limit, to the dense solver's result.
+  // Entries uniform in [1, 2]: the top eigenvalues crowd together. On 500 points the Krylov solver needs
+  // about 340 vectors; it had at most min(n / 2, 320) and then ran the dense solver unannounced (on 2,000
+  // points: 26 s without a report, a stop ignored). Restarted, it converges in the Krylov solver (every
+  // report below 0.5) past that old limit, to the dense solver's result.
   const auto random_metric = [](std::size_t n) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(1.0, 2.0);
@@ -473,8 +498,8 @@ TEST(ClassicalMds, CrowdedTopEigenvaluesStayInTheKrylovSolverAndTheDenseFallback
       largest = std::max(largest, std::fabs(dense[i][c]));
     }
   EXPECT_LT(worst, 1e-6 * largest);
-  // On 100 points (Krylov solver forced) such a matrix falls back to the dense solver after 100 vectors: that is
-  // reported (0.5) first, a stop there is honoured, and without one the result is the dense solver's.
+  // On 100 points (Krylov solver forced) such a matrix falls back to the dense solver after 100 vectors: that
+  // is reported (0.5) first, a stop there is honoured, and without one the result is the dense solver's.
   const std::size_t m = 100;
   const std::vector<double> small = random_metric(m);
   seen.clear();
@@ -489,14 +514,15 @@ TEST(ClassicalMds, CrowdedTopEigenvaluesStayInTheKrylovSolverAndTheDenseFallback
   ASSERT_FALSE(seen.empty());
   EXPECT_EQ(seen.back(), 0.5);
   EXPECT_EQ(fallback, mds(small, m, 1000));
-  skeleton::internal::classical_mds_3d(small, m, [](double f) { return f < 0.5; }, stopped, 0);
+  skeleton::internal::classical_mds_3d(
+      small, m, [](double f) { return f < 0.5; }, stopped, 0);
   EXPECT_TRUE(stopped);
 }
 
 TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
-  // Three arcs of 40,000 points each on three parallel wavy lines: progress is asked every 65,536 points, so before
-  // the third arc (80,002 points drawn, counting one more per arc). A stop there draws the third arc as the
-  // segment between its nodes and leaves the first two as without a stop.
+  // Three arcs of 40,000 points each on three parallel wavy lines: progress is asked every 65,536 points, so
+  // before the third arc (80,002 points drawn, counting one more per arc). A stop there draws the third arc
+  // as the segment between its nodes and leaves the first two as without a stop.
   const std::size_t per_arc = 40000;
   Reeb_graph G;
   std::vector<std::array<double, 3>> positions;
@@ -556,7 +582,8 @@ TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
   path.number_of_vertices = P.rows;
   for (const auto& arc : G.arcs) {
     path.edges.push_back({G.nodes[arc.lower].vertex, arc.vertices.front()});
-    for (std::size_t i = 0; i + 1 < arc.vertices.size(); ++i) path.edges.push_back({arc.vertices[i], arc.vertices[i + 1]});
+    for (std::size_t i = 0; i + 1 < arc.vertices.size(); ++i)
+      path.edges.push_back({arc.vertices[i], arc.vertices[i + 1]});
     path.edges.push_back({arc.vertices.back(), G.nodes[arc.upper].vertex});
   }
   for (auto& e : path.edges)
@@ -573,9 +600,9 @@ TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
 }
 
 TEST(EmbedReebGraph, GapsAreMeasuredAtEveryScale) {
-  // The L of ArcsWithoutPointsFollowTheGraph, scaled: bridged the same way at every scale. Gaps were measured by
-  // their squares, which underflow below about 1e-160 (nothing bridged: a straight chord) and overflow above about
-  // 1e154 (every gap bridged, also one below max_gap).
+  // The L of ArcsWithoutPointsFollowTheGraph, scaled: bridged the same way at every scale. Gaps were measured
+  // by their squares, which underflow below about 1e-160 (nothing bridged: a straight chord) and overflow
+  // above about 1e154 (every gap bridged, also one below max_gap).
   for (const double scale : {1.0, 1e-170, 1e-200, 1e170, 1e200}) {
     const L_shape l = l_shape(scale);
     const auto line = embed_reeb_graph(l.G, l.g, l.xyz, l.f, 2).arc_polylines.at(0);
@@ -590,9 +617,9 @@ TEST(EmbedReebGraph, GapsAreMeasuredAtEveryScale) {
 }
 
 TEST(EmbedReebGraph, AnEdgeLongerThanTheLargestDoubleEnds) {
-  // Two clusters near -1e308 and +1e308 joined by one edge whose length exceeds the largest double: its length
-  // was NaN (inf * sqrt(0)), the shortest-path search never ended and filled the memory. It is infinite now,
-  // and the skeleton is drawn.
+  // Two clusters near -1e308 and +1e308 joined by one edge whose length exceeds the largest double: its
+  // length was NaN (inf * sqrt(0)), the shortest-path search never ended and filled the memory. It is
+  // infinite now, and the skeleton is drawn.
   const double a[2] = {1e308, 0}, b[2] = {-1e308, 0}, c[2] = {-5e307, 0};
   EXPECT_EQ(skeleton::internal::point_distance(a, b, 2), std::numeric_limits<double>::infinity());
   EXPECT_EQ(skeleton::internal::point_distance(a, c, 2), 1.5e308);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// estimate_rips_radius(): the profile against brute-force counts, exact bins, scale invariance, copies, degenerate
-// input, and the end-to-end property it is for: noisy samples of graphs in R^2, R^3 and R^50 give their true
-// topology at the estimated radius and delta, and a fixed radius from the other samples would not.
+// estimate_rips_radius(): the profile against brute-force counts, exact bins, scale invariance, copies,
+// degenerate input, and the end-to-end property it is for: noisy samples of graphs in R^2, R^3 and R^50 give
+// their true topology at the estimated radius and delta, and a fixed radius from the other samples would not.
 #include <FeatureRecon/skeleton/estimate_rips_radius.h>
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 
@@ -36,7 +36,8 @@ void add_point(Point_matrix& m, std::initializer_list<double> p) {
   ++m.rows;
 }
 
-/// A circle of radius 10 in the plane, points at uniform random angles, Gaussian noise `noise` per coordinate.
+/// A circle of radius 10 in the plane, points at uniform random angles, Gaussian noise `noise` per
+/// coordinate.
 Point_matrix noisy_circle(std::size_t n, double noise, std::uint32_t seed) {
   Portable_gaussian g(seed);
   Point_matrix m;
@@ -64,8 +65,8 @@ Point_matrix noisy_trefoil(std::size_t n, double noise, std::uint32_t seed) {
   Point_matrix m;
   for (std::size_t i = 0; i < n; ++i) {
     const double t = 2 * pi * g.uniform();
-    add_point(m, {std::sin(t) + 2 * std::sin(2 * t) + noise * g(), std::cos(t) - 2 * std::cos(2 * t) + noise * g(),
-                  -std::sin(3 * t) + noise * g()});
+    add_point(m, {std::sin(t) + 2 * std::sin(2 * t) + noise * g(),
+                  std::cos(t) - 2 * std::cos(2 * t) + noise * g(), -std::sin(3 * t) + noise * g()});
   }
   return m;
 }
@@ -93,14 +94,16 @@ TEST(EstimateRipsRadius, QuarterOctaveBinsAreExact) {
 }
 
 TEST(EstimateRipsRadius, ProfileCountsEqualBruteForce) {
-  // 60 points in R^3 with copies and a far point; every reference point (m = n) and 7 of them (i = t * n / 7).
+  // 60 points in R^3 with copies and a far point; every reference point (m = n) and 7 of them (i = t * n /
+  // 7).
   Portable_gaussian g(5);
   Point_matrix m;
   for (int i = 0; i < 57; ++i) add_point(m, {g(), g(), 0.1 * g()});
   add_point(m, {m.data[0], m.data[1], m.data[2]});  // a copy of point 0
   add_point(m, {m.data[0], m.data[1], m.data[2]});
   add_point(m, {1e3, 0, 0});
-  // The copies of point 0 (57 and 58) are one point with it: 58 distinct points, 57 the reference ones at most.
+  // The copies of point 0 (57 and 58) are one point with it: 58 distinct points, 57 the reference ones at
+  // most.
   std::vector<std::size_t> distinct;
   for (std::size_t i = 0; i < 60; ++i)
     if (i != 57 && i != 58) distinct.push_back(i);
@@ -125,12 +128,14 @@ TEST(EstimateRipsRadius, ProfileCountsEqualBruteForce) {
         for (const std::size_t j : distinct)
           if (j != i && skeleton::internal::point_distance(m.row(i), m.row(j), 3) < e.radii[k]) ++within;
       }
-      EXPECT_DOUBLE_EQ(e.mean_neighbours_within[k], static_cast<double>(within) / static_cast<double>(references))
+      EXPECT_DOUBLE_EQ(e.mean_neighbours_within[k],
+                       static_cast<double>(within) / static_cast<double>(references))
           << "references " << references << ", r " << e.radii[k];
     }
     // The smallest positive distance lies in the first bin, the largest in the last.
     EXPECT_EQ(e.mean_neighbours_within.back(), 57.0);
-    // The chosen scale is a profile radius with at least min_neighbours neighbours, and the radius 1.5 times it.
+    // The chosen scale is a profile radius with at least min_neighbours neighbours, and the radius 1.5 times
+    // it.
     EXPECT_NE(std::find(e.radii.begin(), e.radii.end(), e.scale), e.radii.end());
     EXPECT_GE(e.mean_neighbours, 8.0);
     EXPECT_EQ(e.radius, std::max(1.5 * e.scale, e.gap_radius));
@@ -138,9 +143,9 @@ TEST(EstimateRipsRadius, ProfileCountsEqualBruteForce) {
 }
 
 TEST(EstimateRipsRadius, NoisySamplesOfGraphsGiveTheirTopology) {
-  // Each sample, its true loops / leaves / branch excess, and the window of radii that gives them (measured by a
-  // sweep of fixed radii 1.19 apart from 0.2, delta = radius): the estimate must land inside, and its delta give
-  // them too. The windows differ: 0.2-0.96 for the trefoil, 0.96 and more for the circle.
+  // Each sample, its true loops / leaves / branch excess, and the window of radii that gives them (measured
+  // by a sweep of fixed radii 1.19 apart from 0.2, delta = radius): the estimate must land inside, and its
+  // delta give them too. The windows differ: 0.2-0.96 for the trefoil, 0.96 and more for the circle.
   struct Case {
     const char* name;
     Point_matrix points;
@@ -150,12 +155,17 @@ TEST(EstimateRipsRadius, NoisySamplesOfGraphsGiveTheirTopology) {
   std::vector<Case> cases;
   cases.push_back({"circle, 1000 points, noise 0.3", noisy_circle(1000, 0.3, 1), {{1, 1, 0, 0}}, 0.95, 4.5});
   cases.push_back({"Y, 1500 points, noise 0.2", noisy_y(1500, 0.2, 2), {{0, 1, 3, 1}}, 0.34, 1.9});
-  cases.push_back({"trefoil, 1500 points, noise 0.05", noisy_trefoil(1500, 0.05, 3), {{1, 1, 0, 0}}, 0.2, 0.95});
+  cases.push_back(
+      {"trefoil, 1500 points, noise 0.05", noisy_trefoil(1500, 0.05, 3), {{1, 1, 0, 0}}, 0.2, 0.95});
   const Segment_graph eight = figure_eight(50, 2.0, 1);
-  cases.push_back({"figure-eight in R^50, noise 0.01", eight.noisy_sample(0.25, 0.01, 1), {{2, 1, 0, 2}}, 0.28, 2.7});
+  cases.push_back(
+      {"figure-eight in R^50, noise 0.01", eight.noisy_sample(0.25, 0.01, 1), {{2, 1, 0, 2}}, 0.28, 2.7});
   const Segment_graph tree = random_tree(50, 9, 2);
-  cases.push_back({"random tree in R^50, noise 0.01", tree.noisy_sample(0.25, 0.01, 2),
-                   {{0, 1, tree.leaves(), tree.branch_excess()}}, 0.34, 2.28});
+  cases.push_back({"random tree in R^50, noise 0.01",
+                   tree.noisy_sample(0.25, 0.01, 2),
+                   {{0, 1, tree.leaves(), tree.branch_excess()}},
+                   0.34,
+                   2.28});
   for (const Case& c : cases) {
     const Rips_radius_estimate e = estimate_rips_radius(c.points);
     ASSERT_EQ(e.status, Status::success) << c.name;
@@ -190,9 +200,9 @@ TEST(EstimateRipsRadius, TheSuggestedDeltaRemovesTheSpursOfADenseBand) {
 }
 
 TEST(EstimateRipsRadius, SparseSamplesGetARadiusAcrossTheirGaps) {
-  // 400 points at random along a trefoil about 29 long (noise 0.05; 14 points per unit length): at 1.5 times the
-  // scale (0.45-0.53) random gaps split the loop on 7 of these 10 seeds; the gap rule (2 ln(400 / 0.05) = 18
-  // neighbours) takes the radius to 0.71, and every seed gives the loop.
+  // 400 points at random along a trefoil about 29 long (noise 0.05; 14 points per unit length): at 1.5 times
+  // the scale (0.45-0.53) random gaps split the loop on 7 of these 10 seeds; the gap rule (2 ln(400 / 0.05) =
+  // 18 neighbours) takes the radius to 0.71, and every seed gives the loop.
   std::size_t split = 0;
   for (std::uint32_t seed = 1; seed <= 10; ++seed) {
     const Point_matrix m = noisy_trefoil(400, 0.05, seed);
@@ -252,12 +262,14 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
   EXPECT_EQ(e.status, Status::success);
   EXPECT_TRUE(std::isnan(e.intrinsic_dimension));
   EXPECT_EQ(e.scale, std::exp2(2.5));
-  EXPECT_EQ(e.radius, 1.5 * std::exp2(2.5));  // the gap rule asks for (n - 1) / 2 = 0.5 neighbours: the same bin
+  EXPECT_EQ(e.radius,
+            1.5 * std::exp2(2.5));  // the gap rule asks for (n - 1) / 2 = 0.5 neighbours: the same bin
   EXPECT_EQ(e.gap_radius, std::exp2(2.5));
 
-  // 100 collinear points 1 apart: dimension 1, and 8 neighbours on average first within 2^(10/4) = 5.66 (5 on each
-  // side inside, fewer at the ends: 9.7 on average); 2 ln(100 / 0.05) = 15.2 neighbours first within 2^(13/4) =
-  // 9.51 (15.28 on average), which is above 1.5 * 5.66: the radius. The line's skeleton is one arc.
+  // 100 collinear points 1 apart: dimension 1, and 8 neighbours on average first within 2^(10/4) = 5.66 (5 on
+  // each side inside, fewer at the ends: 9.7 on average); 2 ln(100 / 0.05) = 15.2 neighbours first within
+  // 2^(13/4) = 9.51 (15.28 on average), which is above 1.5 * 5.66: the radius. The line's skeleton is one
+  // arc.
   Point_matrix line;
   for (int i = 0; i < 100; ++i) add_point(line, {static_cast<double>(i), 0});
   e = estimate_rips_radius(line);
@@ -270,7 +282,8 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
   EXPECT_EQ(s.components, 1u);
   EXPECT_EQ(s.leaves, 2u);
 
-  // A 30 x 30 grid (every distance repeats, every square cocircular) reads as two-dimensional, not as a curve.
+  // A 30 x 30 grid (every distance repeats, every square cocircular) reads as two-dimensional, not as a
+  // curve.
   Point_matrix grid;
   for (int i = 0; i < 30; ++i)
     for (int j = 0; j < 30; ++j) add_point(grid, {static_cast<double>(i), static_cast<double>(j)});
@@ -279,8 +292,8 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
   EXPECT_GE(e.mean_neighbours, 8.0);
   EXPECT_GT(e.radius, std::sqrt(2.0));  // joins each grid point to its 8 neighbours
 
-  // Distances from 2^1023.75 on: the top bin's edge, 2^1024, is not a double; the largest one stands for it and
-  // the radius stays finite (it was infinite, with status success).
+  // Distances from 2^1023.75 on: the top bin's edge, 2^1024, is not a double; the largest one stands for it
+  // and the radius stays finite (it was infinite, with status success).
   Point_matrix far;
   add_point(far, {0});
   add_point(far, {1.6e308});
@@ -292,8 +305,8 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
 }
 
 TEST(EstimateRipsRadius, CopiesOfThePointsLeaveTheEstimateAsItWas) {
-  // The Rips stage joins copies, so the estimate counts each point once: 4 copies of every point of a noisy circle
-  // shrank the radius and broke the skeleton (copies counted as neighbours at every radius).
+  // The Rips stage joins copies, so the estimate counts each point once: 4 copies of every point of a noisy
+  // circle shrank the radius and broke the skeleton (copies counted as neighbours at every radius).
   const Point_matrix once = noisy_circle(500, 0.3, 11);
   Point_matrix four;
   four.dimension = 2;
@@ -320,9 +333,9 @@ TEST(EstimateRipsRadius, CopiesOfThePointsLeaveTheEstimateAsItWas) {
 }
 
 TEST(EstimateRipsRadius, BracesSelectTheEstimateNotRadiusZero) {
-  // extract_reeb_skeleton(points, {}) took {} for radius 0 (an exact conversion beating the options' aggregate):
-  // 200 points on a line gave 200 single nodes. The radius is any arithmetic type, so {} now means default options
-  // and the radius is estimated.
+  // extract_reeb_skeleton(points, {}) took {} for radius 0 (an exact conversion beating the options'
+  // aggregate): 200 points on a line gave 200 single nodes. The radius is any arithmetic type, so {} now
+  // means default options and the radius is estimated.
   Point_matrix line;
   for (int i = 0; i < 200; ++i) add_point(line, {static_cast<double>(i), 0});
   const Reeb_skeleton a = extract_reeb_skeleton(line, {});
@@ -341,7 +354,8 @@ TEST(EstimateRipsRadius, BracesSelectTheEstimateNotRadiusZero) {
   std::vector<double> D(200 * 200);
   for (int i = 0; i < 200; ++i)
     for (int j = 0; j < 200; ++j) D[std::size_t(i) * 200 + std::size_t(j)] = std::abs(i - j);
-  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(D.data(), 200, 200);
+  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(D.data(),
+                                                                                                  200, 200);
   EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, {3.0}).rips_radius, 3.0);
   EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, {}).rips_radius,
             estimate_rips_radius_from_distance_matrix(matrix).radius);
@@ -355,10 +369,12 @@ TEST(EstimateRipsRadius, DistanceMatrixGivesTheSameEstimate) {
   const Point_matrix m = noisy_trefoil(400, 0.05, 6);
   std::vector<double> D(m.rows * m.rows);
   for (std::size_t i = 0; i < m.rows; ++i)
-    for (std::size_t j = 0; j < m.rows; ++j) D[i * m.rows + j] = skeleton::internal::point_distance(m.row(i), m.row(j), 3);
+    for (std::size_t j = 0; j < m.rows; ++j)
+      D[i * m.rows + j] = skeleton::internal::point_distance(m.row(i), m.row(j), 3);
   Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
       D.data(), static_cast<Eigen::Index>(m.rows), static_cast<Eigen::Index>(m.rows));
-  const Rips_radius_estimate a = estimate_rips_radius(m), b = estimate_rips_radius_from_distance_matrix(matrix);
+  const Rips_radius_estimate a = estimate_rips_radius(m),
+                             b = estimate_rips_radius_from_distance_matrix(matrix);
   EXPECT_EQ(a.radius, b.radius);
   EXPECT_EQ(a.mean_neighbours_within, b.mean_neighbours_within);
   Skeleton_options o;

@@ -26,7 +26,8 @@ using namespace FeatureRecon::test;
 namespace {
 std::size_t loops_of(const Skeleton_graph& g) {
   std::vector<int> comp(num_vertices(g));
-  const std::size_t c = num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, comp.data()));
+  const std::size_t c =
+      num_vertices(g) == 0 ? 0 : static_cast<std::size_t>(boost::connected_components(g, comp.data()));
   return num_edges(g) + c - num_vertices(g);
 }
 void expect_members_partition(const Skeleton_graph& g, std::size_t n) {
@@ -112,7 +113,8 @@ TEST(ExtractReebSkeleton, StageByStageEqualsOneCall) {
   Embedding_options eo;
   eo.level_width = one.level_width;  // the median edge length of K
   const Reeb_graph_embedding E = embed_reeb_graph(T.graph, K, project_to_3d(P), A.values(), 2, eo);
-  const Branch_node_merge_result M = merge_close_branch_nodes(make_skeleton_graph(T.graph, E), P, 2 * eo.level_width);
+  const Branch_node_merge_result M =
+      merge_close_branch_nodes(make_skeleton_graph(T.graph, E), P, 2 * eo.level_width);
   EXPECT_EQ(S.removed_branches, one.removed_branches);
   EXPECT_EQ(T.trimmed, one.trimmed_stubs);
   EXPECT_EQ(M.merged, one.merged_branch_arcs);
@@ -136,8 +138,9 @@ TEST(ExtractReebSkeleton, StageByStageEqualsOneCall) {
 }
 
 namespace {
-/// An X drawn as the Reeb graph draws a crossing: minima 0 and 1 join at the down-fork 2 (value 1), which an arc
-/// of length 0.1 through point 6 joins to the up-fork 3 (value 1.1), which splits into the maxima 4 and 5.
+/// An X drawn as the Reeb graph draws a crossing: minima 0 and 1 join at the down-fork 2 (value 1), which an
+/// arc of length 0.1 through point 6 joins to the up-fork 3 (value 1.1), which splits into the maxima 4
+/// and 5.
 struct Crossing {
   Point_matrix points;
   Skeleton_graph graph;
@@ -226,7 +229,8 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   Point_matrix few = x.points;
   few.rows = 6;
   few.data.resize(12);
-  const std::string few_message = invalid_argument_message([&] { merge_close_branch_nodes(x.graph, few, 0.2); });
+  const std::string few_message =
+      invalid_argument_message([&] { merge_close_branch_nodes(x.graph, few, 0.2); });
   EXPECT_NE(few_message.find("arc 2 has member 6"), std::string::npos) << few_message;
   // Empty graph.
   EXPECT_EQ(num_vertices(merge_close_branch_nodes(Skeleton_graph(), x.points, 1).graph), 0u);
@@ -260,8 +264,8 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
 }
 
 TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
-  // Three forks in a row, 0.1 apart: at distance 0.2 one node of degree 5 after two rounds; at 0.15 the first two
-  // only (the third would lie 0.2 from the first: a cluster stays within the distance).
+  // Three forks in a row, 0.1 apart: at distance 0.2 one node of degree 5 after two rounds; at 0.15 the first
+  // two only (the third would lie 0.2 from the first: a cluster stays within the distance).
   Point_matrix p;
   p.dimension = 2;
   p.data = {-1, -1, 1, -1, 0, 0, 0, 0.1, 0, 0.2, -1, 1, 1, 1, 2, 1};
@@ -276,7 +280,8 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
   auto arc = [&](Skeleton_graph& h, std::size_t a, std::size_t b) {
     add_edge(a, b, Skeleton_arc{{h[a].position, h[b].position}, {}, {}}, h);
   };
-  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 3}, {3, 5}, {3, 4}, {4, 6}, {4, 7}})
+  for (const auto& [a, b] :
+       std::vector<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 3}, {3, 5}, {3, 4}, {4, 6}, {4, 7}})
     arc(g, a, b);
   const Branch_node_merge_result r = merge_close_branch_nodes(g, p, 0.2);
   EXPECT_EQ(r.merged, 2u);
@@ -292,8 +297,8 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
   EXPECT_EQ(degree(2, pair.graph), 4u);
   EXPECT_EQ(pair.graph[3].members, std::vector<Vertex_index>{4});
   expect_members_partition(pair.graph, 8);
-  // An up-fork below a down-fork: a's arc up to b is short; the leaf d (value 1.05) joins b from below. Merged
-  // at a's value 1, the arc from d now runs up from the merged node to d, which becomes a maximum.
+  // An up-fork below a down-fork: a's arc up to b is short; the leaf d (value 1.05) joins b from below.
+  // Merged at a's value 1, the arc from d now runs up from the merged node to d, which becomes a maximum.
   Point_matrix q;
   q.dimension = 2;
   q.data = {0, -1, 0, 0, 0, 0.1, 1, 0.1, -1, 1, 0, 2};
@@ -307,7 +312,8 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
     h[v].type = ht[v];
     h[v].members = {static_cast<Vertex_index>(v)};
   }
-  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {1, 4}, {3, 2}, {2, 5}}) arc(h, a, b);
+  for (const auto& [a, b] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {1, 4}, {3, 2}, {2, 5}})
+    arc(h, a, b);
   const Branch_node_merge_result s = merge_close_branch_nodes(h, q, 0.2);
   EXPECT_EQ(s.merged, 1u);
   ASSERT_EQ(num_vertices(s.graph), 5u);
@@ -322,10 +328,10 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
 }
 
 TEST(MergeCloseBranchNodes, ALatticeIsNotChainedIntoALine) {
-  // A 10 x 10 grid at radius 1.01 (no triangle: 81 cells, each a loop): nearly every node is a fork and every arc
-  // about one level width (1), the default merge distance 2. Merging in rounds chained the forks into 15 nodes on
-  // a line with fans of coincident arcs; each cluster now stays at most 2 across, so a node's points lie near it
-  // and the nodes still span the grid.
+  // A 10 x 10 grid at radius 1.01 (no triangle: 81 cells, each a loop): nearly every node is a fork and every
+  // arc about one level width (1), the default merge distance 2. Merging in rounds chained the forks into 15
+  // nodes on a line with fans of coincident arcs; each cluster now stays at most 2 across, so a node's points
+  // lie near it and the nodes still span the grid.
   std::vector<std::array<double, 2>> grid;
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 10; ++j) grid.push_back({double(i), double(j)});
@@ -369,7 +375,8 @@ TEST(ExtractReebSkeleton, RepairJoinsAGap) {
 }
 
 TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
-  EXPECT_EQ(extract_reeb_skeleton(std::vector<std::array<double, 2>>{}, 1.0).status, Status::degenerate_input);
+  EXPECT_EQ(extract_reeb_skeleton(std::vector<std::array<double, 2>>{}, 1.0).status,
+            Status::degenerate_input);
   const Reeb_skeleton one = extract_reeb_skeleton(std::vector<std::array<double, 2>>{{1.0, 2.0}}, 1.0);
   EXPECT_EQ(one.status, Status::success);
   EXPECT_EQ(num_vertices(one.graph), 1u);
@@ -393,26 +400,32 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   high.data.clear();
   high.rows = 21;
   for (int k = 0; k <= 20; ++k)
-    for (int c = 0; c < 6; ++c) high.data.push_back(0.5 * k * (c + 1));  // along (1, ..., 6), 0.5 * sqrt(91) apart
+    for (int c = 0; c < 6; ++c)
+      high.data.push_back(0.5 * k * (c + 1));  // along (1, ..., 6), 0.5 * sqrt(91) apart
   const Reeb_skeleton collinear = extract_reeb_skeleton(high, 5.0);
   EXPECT_EQ(collinear.status, Status::success);
   EXPECT_EQ(loops_of(collinear.graph), 0u);
   std::size_t leaves = 0;
-  for (auto v : boost::make_iterator_range(vertices(collinear.graph))) leaves += degree(v, collinear.graph) == 1 ? 1 : 0;
+  for (auto v : boost::make_iterator_range(vertices(collinear.graph)))
+    leaves += degree(v, collinear.graph) == 1 ? 1 : 0;
   EXPECT_EQ(leaves, 2u);  // a segment
   expect_members_partition(collinear.graph, 21);
   Skeleton_options bad;
   bad.delta = -1;
-  EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad), std::invalid_argument);
+  EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad),
+               std::invalid_argument);
   // Messages name the function called, not the stage that noticed (they began with build_rips_graph and
   // build_flag_complex_2), and say what is wrong.
   auto message = [](auto&& call) { return invalid_argument_message(call); };
-  EXPECT_EQ(message([] { extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, std::nan("")); })
-                .rfind("extract_reeb_skeleton: rips_radius must be finite and >= 0", 0),
+  EXPECT_EQ(message([] {
+              extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, std::nan(""));
+            }).rfind("extract_reeb_skeleton: rips_radius must be finite and >= 0", 0),
             0u);
-  EXPECT_EQ(message([] { extract_reeb_skeleton_from_distance_matrix(Eigen::MatrixXd(Eigen::MatrixXd::Zero(2, 2)), -1.0); })
-                .rfind("extract_reeb_skeleton_from_distance_matrix: rips_radius must be finite and >= 0, got -1", 0),
-            0u);
+  EXPECT_EQ(
+      message([] {
+        extract_reeb_skeleton_from_distance_matrix(Eigen::MatrixXd(Eigen::MatrixXd::Zero(2, 2)), -1.0);
+      }).rfind("extract_reeb_skeleton_from_distance_matrix: rips_radius must be finite and >= 0, got -1", 0),
+      0u);
   Proximity_graph g;
   g.number_of_vertices = 2;
   g.edges = {{1, 0}};
@@ -420,9 +433,11 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   two.rows = 2;
   two.dimension = 2;
   two.data = {0, 0, 1, 0};
-  EXPECT_EQ(message([&] { extract_reeb_skeleton(g, two); })
-                .rfind("extract_reeb_skeleton: the graph is not canonical (see Proximity_graph): edge 0 (1, 0)", 0),
-            0u);
+  EXPECT_EQ(
+      message([&] {
+        extract_reeb_skeleton(g, two);
+      }).rfind("extract_reeb_skeleton: the graph is not canonical (see Proximity_graph): edge 0 (1, 0)", 0),
+      0u);
   bad = {};
   bad.prune_height = -1;
   EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("got 0, 0 and -1"), std::string::npos);
@@ -434,7 +449,8 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   bad.progress = [&calls](double) { return ++calls > 0; };
   const std::vector<std::array<double, 2>> pair{{0.0, 0.0}, {1.0, 0.0}};
   EXPECT_EQ(message([&] { extract_reeb_skeleton(pair, 2.0, bad); }),
-            "extract_reeb_skeleton: embedding smoothing_weight must lie in [0, 2/3] for Taubin smoothing (Laplacian: "
+            "extract_reeb_skeleton: embedding smoothing_weight must lie in [0, 2/3] for Taubin smoothing "
+            "(Laplacian: "
             "[0, 1]), got 2");
   bad.embedding.smoothing = Embedding_options::Smoothing::laplacian;
   EXPECT_EQ(message([&] { extract_reeb_skeleton(pair, 2.0, bad); }),
@@ -454,7 +470,8 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   std::vector<std::array<double, 2>> far_apart;
   for (int i = 0; i < 20; ++i) far_apart.push_back({(i - 9.5) * 1e307, 0.0});
   EXPECT_EQ(message([&] { extract_reeb_skeleton(far_apart, 1.5e307); }),
-            "extract_reeb_skeleton: the geodesic distance of vertex 18 overflows the largest double; scale the edge "
+            "extract_reeb_skeleton: the geodesic distance of vertex 18 overflows the largest double; scale "
+            "the edge "
             "lengths down (in compute_geodesic_function)");
   // make_skeleton_graph() checks that the embedding is the graph's (it read out of bounds).
   Reeb_graph line;
@@ -465,7 +482,8 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   Reeb_graph_embedding wrong;
   wrong.node_positions.resize(1);
   EXPECT_EQ(message([&] { make_skeleton_graph(line, wrong); }),
-            "make_skeleton_graph: the embedding has 1 node positions and 0 arc polylines for a graph of 2 nodes and 1 "
+            "make_skeleton_graph: the embedding has 1 node positions and 0 arc polylines for a graph of 2 "
+            "nodes and 1 "
             "arcs (not its embedding)");
 }
 
@@ -486,15 +504,17 @@ TEST(ExtractReebSkeleton, TriangleLimitIsCheckedWhileCounting) {
   EXPECT_EQ(num_edges(exact.graph), num_edges(all.graph));
   o.max_triangles = all.rips_triangles - 1;
   const std::string what = invalid_argument_message([&] { extract_reeb_skeleton(m, 1.0, o); });
-  EXPECT_EQ(what.rfind("extract_reeb_skeleton: the flag complex has more than " +
-                           std::to_string(all.rips_triangles - 1) + " triangles (max_triangles of the options",
-                       0),
-            0u)
+  EXPECT_EQ(
+      what.rfind("extract_reeb_skeleton: the flag complex has more than " +
+                     std::to_string(all.rips_triangles - 1) + " triangles (max_triangles of the options",
+                 0),
+      0u)
       << what;
 }
 
 TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
-  // The callback says stop once, inside the Rips stage, and go on afterwards: the run still ends, interrupted.
+  // The callback says stop once, inside the Rips stage, and go on afterwards: the run still ends,
+  // interrupted.
   const Point_matrix m = circle_points(2000);
   int calls = 0;
   Skeleton_options o;
@@ -508,8 +528,8 @@ TEST(ExtractReebSkeleton, AStopDuringTheRipsStageEndsTheRun) {
 }
 
 TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
-  // The two simplifications, the repair, the dead-end connection and the embedding report in their stages (the
-  // simplifications reported nothing: a long one looked hung) and a stop in any of them ends the run.
+  // The two simplifications, the repair, the dead-end connection and the embedding report in their stages
+  // (the simplifications reported nothing: a long one looked hung) and a stop in any of them ends the run.
   const Point_matrix m = circle_points(2000);
   Skeleton_options o;
   o.delta = 1;
@@ -545,9 +565,9 @@ TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
 }
 
 TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {
-  // Most points are copies of one point: the median edge length over all edges is 0 (the embedding fell back to
-  // 1/64 of the range of f); over the edges between distinct points it is the spacing, 1, as without the copies.
-  // The result reports that width, and giving it explicitly draws the same skeleton.
+  // Most points are copies of one point: the median edge length over all edges is 0 (the embedding fell back
+  // to 1/64 of the range of f); over the edges between distinct points it is the spacing, 1, as without the
+  // copies. The result reports that width, and giving it explicitly draws the same skeleton.
   Point_matrix m;
   m.dimension = 2;
   for (int i = 0; i < 20; ++i) m.data.insert(m.data.end(), {double(i), 0.0});
@@ -587,10 +607,10 @@ skeleton_signature(const Skeleton_graph& g) {
 }  // namespace
 
 TEST(ExtractReebSkeleton, CopiesLeaveTheAutomaticLevelWidthAlone) {
-  // An X of two lines of points 0.4 apart crossing at 1.2 rad, r = 1: the median edge length (the automatic level
-  // width, and twice it the branch-merge distance) was taken over all edges, so copies of the points, with their
-  // edges of length 0, moved it (0.754 once, 0.4 twice) and the crossing became two forks instead of one node of
-  // degree 4.
+  // An X of two lines of points 0.4 apart crossing at 1.2 rad, r = 1: the median edge length (the automatic
+  // level width, and twice it the branch-merge distance) was taken over all edges, so copies of the points,
+  // with their edges of length 0, moved it (0.754 once, 0.4 twice) and the crossing became two forks instead
+  // of one node of degree 4.
   auto x_of = [](int copies) {
     std::vector<std::array<double, 2>> p;
     for (int i = -30; i <= 30; ++i) {
@@ -624,8 +644,8 @@ TEST(ExtractReebSkeleton, CopiesLeaveTheAutomaticLevelWidthAlone) {
 }
 
 TEST(ExtractReebSkeleton, CopiesOfOneFarPointLeaveTheMaxGapAlone) {
-  // An L of points 0.5 apart and 300 copies of one point far from it: over all edges the median edge length was 0,
-  // so the automatic max_gap (twice it) turned bridging off for the whole skeleton.
+  // An L of points 0.5 apart and 300 copies of one point far from it: over all edges the median edge length
+  // was 0, so the automatic max_gap (twice it) turned bridging off for the whole skeleton.
   std::vector<std::array<double, 2>> l;
   for (int i = 0; i <= 25; ++i) l.push_back({0.5 * i, 0.0});
   for (int i = 1; i <= 25; ++i) l.push_back({0.0, 0.5 * i});
@@ -641,16 +661,17 @@ TEST(ExtractReebSkeleton, CopiesOfOneFarPointLeaveTheMaxGapAlone) {
   EXPECT_EQ(s.max_gap, alone.max_gap);
   EXPECT_EQ(num_vertices(s.graph), num_vertices(alone.graph) + 1);  // the far point's node
   // Only copies: no edge between distinct points, straight segments (nothing to bridge through).
-  const Reeb_skeleton copies = extract_reeb_skeleton(std::vector<std::array<double, 2>>(5, {1.0, 2.0}), 0.5, o);
+  const Reeb_skeleton copies =
+      extract_reeb_skeleton(std::vector<std::array<double, 2>>(5, {1.0, 2.0}), 0.5, o);
   EXPECT_EQ(copies.status, Status::success);
   EXPECT_EQ(copies.max_gap, std::numeric_limits<double>::infinity());
 }
 
 TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {
   // A noisy figure-eight with copies: 40 more of its point 7 (a regular point), 40 of point 0 (the smallest
-  // index, where the geodesic base search starts), two more copies of every point (maxima included). The skeleton is exactly the
-  // one of the full Rips complex, where the copies form cliques: same nodes with their types and members, same
-  // arcs, same counts of removed features.
+  // index, where the geodesic base search starts), two more copies of every point (maxima included). The
+  // skeleton is exactly the one of the full Rips complex, where the copies form cliques: same nodes with
+  // their types and members, same arcs, same counts of removed features.
   const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
   const std::size_t n = eight.points.size();
   auto with_copies_of = [&](std::size_t copies) {
@@ -703,13 +724,15 @@ TEST(ExtractReebSkeleton, CopiesOfAPointAreNotJoinedToEachOther) {
   q.rows = 3;
   EXPECT_FALSE(skeleton::internal::first_copies(q, first));
   EXPECT_TRUE(first.empty());
-  EXPECT_EQ(skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {}, found).edges, build_rips_graph(q, 1.0).edges);
+  EXPECT_EQ(skeleton::internal::rips_graph_of_distinct_points(q, 1.0, {}, found).edges,
+            build_rips_graph(q, 1.0).edges);
   EXPECT_TRUE(found.empty());
 }
 
 namespace {
 
-/// Two noisy half circles of radius 10 (300 points on the circle, seed 3) with gaps of about 1.5 at angles 0, pi.
+/// Two noisy half circles of radius 10 (300 points on the circle, seed 3) with gaps of about 1.5 at angles 0,
+/// pi.
 std::vector<std::array<double, 2>> half_circles_with_gaps() {
   std::mt19937 rng(3);
   std::normal_distribution<double> noise(0, 0.1);
@@ -748,8 +771,8 @@ TEST(ExtractReebSkeleton, RepairGivesTheSameGraphAtEveryScale) {
 
 TEST(ExtractReebSkeleton, NodesAndArcsNearTheLargestDouble) {
   // The two half circles of the test above, 1e305 times larger and moved to 1.5e308 (a coordinate's double is
-  // about 1.7e308 at most): the skeleton is the same, nodes and polylines at the same places. Node and level-set
-  // centroids summed their points (inf for two of them) and smoothing summed two neighbours.
+  // about 1.7e308 at most): the skeleton is the same, nodes and polylines at the same places. Node and
+  // level-set centroids summed their points (inf for two of them) and smoothing summed two neighbours.
   const std::vector<std::array<double, 2>> unit = half_circles_with_gaps();
   const double s = 1e305, offset = 1.5e308;
   auto run = [&](double scale, double shift) {
@@ -775,7 +798,8 @@ TEST(ExtractReebSkeleton, NodesAndArcsNearTheLargestDouble) {
     const auto& b = far.graph[*f].polyline;
     ASSERT_EQ(b.size(), a.size());
     for (std::size_t t = 0; t < a.size(); ++t)
-      for (int c = 0; c < 2; ++c) EXPECT_NEAR(b[t][c], offset + s * a[t][c], tolerance) << "polyline vertex " << t;
+      for (int c = 0; c < 2; ++c)
+        EXPECT_NEAR(b[t][c], offset + s * a[t][c], tolerance) << "polyline vertex " << t;
   }
 }
 
@@ -789,8 +813,8 @@ Eigen::MatrixXd planar_distance_matrix(const std::vector<std::array<double, 2>>&
   return D;
 }
 
-/// The skeleton of a figure-eight from its points and from their distance matrix D: the same complex and skeleton
-/// (two loops; every point a member once).
+/// The skeleton of a figure-eight from its points and from their distance matrix D: the same complex and
+/// skeleton (two loops; every point a member once).
 void expect_matrix_skeleton_as_points(const std::vector<std::array<double, 2>>& p, const Eigen::MatrixXd& D) {
   Skeleton_options o;
   o.delta = 1.0;
@@ -808,8 +832,9 @@ void expect_matrix_skeleton_as_points(const std::vector<std::array<double, 2>>& 
 }  // namespace
 
 TEST(ExtractReebSkeleton, CopiesInADistanceMatrixAreJoinedAsCopiesOfPoints) {
-  // Rows at distance 0 with equal rows are copies: joined as copies of points are (first copy, its neighbours,
-  // the previous copy), not as a clique. 1000 copies of one point were 1.7 * 10^8 triangles, refused by the limit.
+  // Rows at distance 0 with equal rows are copies: joined as copies of points are (first copy, its
+  // neighbours, the previous copy), not as a clique. 1000 copies of one point were 1.7 * 10^8 triangles,
+  // refused by the limit.
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(1000, 1000);
   const Reeb_skeleton one_place = extract_reeb_skeleton_from_distance_matrix(zero, 1.0);
   ASSERT_EQ(one_place.status, Status::success);
@@ -822,8 +847,9 @@ TEST(ExtractReebSkeleton, CopiesInADistanceMatrixAreJoinedAsCopiesOfPoints) {
   for (std::size_t k = 0; k < 30; ++k) p.push_back(eight.points[7]);
   for (std::size_t i = 0; i < eight.points.size(); i += 3) p.push_back(eight.points[i]);
   expect_matrix_skeleton_as_points(p, planar_distance_matrix(p));
-  // Rows at distance 0 whose other distances differ are not copies (a matrix that is not a metric): they count
-  // for the level width like any other (40 points on a line, 2i and 2i + 1 at distance 0: median 1, not 2).
+  // Rows at distance 0 whose other distances differ are not copies (a matrix that is not a metric): they
+  // count for the level width like any other (40 points on a line, 2i and 2i + 1 at distance 0: median 1, not
+  // 2).
   Eigen::MatrixXd pairs(40, 40);
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 40; ++j) pairs(i, j) = i / 2 == j / 2 && i != j ? 0.0 : std::abs(i - j);
@@ -845,7 +871,8 @@ TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
   const auto mds = classical_mds_3d(flat, n);
   for (std::size_t i = 0; i < n; i += 7)
     for (std::size_t j = 0; j < n; j += 5)
-      EXPECT_NEAR(std::hypot(mds[i][0] - mds[j][0], mds[i][1] - mds[j][1]) + std::fabs(mds[i][2] - mds[j][2]), D(i, j), 1e-6);
+      EXPECT_NEAR(std::hypot(mds[i][0] - mds[j][0], mds[i][1] - mds[j][1]) + std::fabs(mds[i][2] - mds[j][2]),
+                  D(i, j), 1e-6);
   // The same Rips graph handed over as a graph with coordinates.
   const Point_matrix m = make_point_matrix(eight.points);
   const Reeb_skeleton from_graph = extract_reeb_skeleton(build_rips_graph(m, 0.7), m, o);
@@ -885,8 +912,8 @@ TEST(ExtractReebSkeleton, StubsAtTheBasePointAreTrimmedOnLoops) {
 // The pipeline through every kernel's points: the same skeleton as from std::array points.
 template <class Point>
 class ExtractReebSkeletonKernels : public ::testing::Test {};
-using Skeleton_kernel_points = ::testing::Types<CGAL::Simple_cartesian<double>::Point_2, CGAL::Epick::Point_2,
-                                                CGAL::Epeck::Point_2>;
+using Skeleton_kernel_points =
+    ::testing::Types<CGAL::Simple_cartesian<double>::Point_2, CGAL::Epick::Point_2, CGAL::Epeck::Point_2>;
 TYPED_TEST_SUITE(ExtractReebSkeletonKernels, Skeleton_kernel_points);
 
 TYPED_TEST(ExtractReebSkeletonKernels, SameSkeletonAsPlainArrays) {
@@ -918,10 +945,11 @@ std::pair<int, int> fork_degrees(const Skeleton_graph& g) {
 }  // namespace
 
 TEST(ExtractReebSkeleton, AutomaticBranchMergeDistanceIsInCoordinateUnitsForGraphs) {
-  // An H drawn as a graph: two bars of 101 vertices 50 steps apart, joined at their middles by 49 vertices, the
-  // steps s apart in coordinates. With unit edge weights the level width is 1 whatever s; the automatic merge
-  // distance was 2 of those read as coordinates, so at s = 0.01 the crossbar (0.5 long) was contracted and the H
-  // became an X. Now it is 2 s, as with Euclidean weights: two forks, five arcs, nothing merged at every scale.
+  // An H drawn as a graph: two bars of 101 vertices 50 steps apart, joined at their middles by 49 vertices,
+  // the steps s apart in coordinates. With unit edge weights the level width is 1 whatever s; the automatic
+  // merge distance was 2 of those read as coordinates, so at s = 0.01 the crossbar (0.5 long) was contracted
+  // and the H became an X. Now it is 2 s, as with Euclidean weights: two forks, five arcs, nothing merged at
+  // every scale.
   for (const double s : {1.0, 0.01}) {
     for (const bool unit_weights : {true, false}) {
       Point_matrix m;
@@ -948,7 +976,8 @@ TEST(ExtractReebSkeleton, AutomaticBranchMergeDistanceIsInCoordinateUnitsForGrap
       g.number_of_vertices = c.number_of_vertices;
       g.edges = c.edges;
       if (!unit_weights)
-        for (const Edge& ed : g.edges) g.edge_lengths.push_back(skeleton::internal::euclidean_distance(m, ed[0], ed[1]));
+        for (const Edge& ed : g.edges)
+          g.edge_lengths.push_back(skeleton::internal::euclidean_distance(m, ed[0], ed[1]));
       const Reeb_skeleton r = extract_reeb_skeleton(g, m);
       EXPECT_NEAR(r.branch_merge_distance, 2 * s, 1e-12 * s) << s << " " << unit_weights;
       EXPECT_EQ(r.merged_branch_arcs, 0u) << s << " " << unit_weights;
@@ -960,10 +989,11 @@ TEST(ExtractReebSkeleton, AutomaticBranchMergeDistanceIsInCoordinateUnitsForGrap
 }
 
 TEST(ExtractReebSkeleton, BranchMergeOfADistanceMatrixMeasuresTheMatrix) {
-  // An H in R^5: two spirals (large extent in e1..e3) joined at their middles by a crossbar 2 long along e5, a
-  // direction of little variance, so classical MDS draws the crossbar with no length (the forks 3e-14 apart) and
-  // the merge contracted it: from points 2 forks, from their exact distance matrix one node of degree 4. The
-  // matrix's own distance between the nodes' points now bounds the arc's length from below: the same H.
+  // An H in R^5: two spirals (large extent in e1..e3) joined at their middles by a crossbar 2 long along e5,
+  // a direction of little variance, so classical MDS draws the crossbar with no length (the forks 3e-14
+  // apart) and the merge contracted it: from points 2 forks, from their exact distance matrix one node of
+  // degree 4. The matrix's own distance between the nodes' points now bounds the arc's length from below: the
+  // same H.
   const double h = 0.1, bar = 2;
   Point_matrix m;
   m.dimension = 5;

@@ -82,7 +82,8 @@ TEST(GeodesicFunction, UserBasePointsAndComponents) {
     compute_geodesic_function(g, o);
     ADD_FAILURE() << "expected an exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("base points 1 and 2 (vertices 0 and 2)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("base points 1 and 2 (vertices 0 and 2)"), std::string::npos)
+        << e.what();
   }
   o.base_points = {9};
   try {

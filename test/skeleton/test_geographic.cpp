@@ -25,17 +25,20 @@ std::string message_of(const std::vector<std::array<double, 2>>& points) {
   return "";
 }
 
-// UTM zone 16N (EPSG:32616) is this projection with central meridian -87, scale 0.9996 and false easting 500 km.
-// Reference positions from PROJ 9.1.1 (`cs2cs -f %.6f EPSG:4326 EPSG:32616`), among them a Chicago fix, points
-// 1,100 km off the central meridian, in the southern hemisphere and next to the pole.
+// UTM zone 16N (EPSG:32616) is this projection with central meridian -87, scale 0.9996 and false easting 500
+// km. Reference positions from PROJ 9.1.1 (`cs2cs -f %.6f EPSG:4326 EPSG:32616`), among them a Chicago fix,
+// points 1,100 km off the central meridian, in the southern hemisphere and next to the pole.
 TEST(TransverseMercator, ForwardAgreesWithProjToAMillimetre) {
   struct Case {
     double lon, lat, easting, northing;
   };
   const Case cases[] = {
-      {-87.6496270, 41.8791761, 446097.654553, 4636565.422789}, {-87.0, 41.0, 500000.000000, 4538757.061913},
-      {-84.0, 60.0, 667294.821124, 6655205.483635},             {-80.0, 10.0, 1268980.132218, 1113599.929721},
-      {-93.0, -45.0, 27108.208731, -5000491.005461},            {-87.0, 89.9, 500000.000000, 9986800.012939},
+      {-87.6496270, 41.8791761, 446097.654553, 4636565.422789},
+      {-87.0, 41.0, 500000.000000, 4538757.061913},
+      {-84.0, 60.0, 667294.821124, 6655205.483635},
+      {-80.0, 10.0, 1268980.132218, 1113599.929721},
+      {-93.0, -45.0, 27108.208731, -5000491.005461},
+      {-87.0, 89.9, 500000.000000, 9986800.012939},
       {-77.0, 0.5, 1618438.135590, 56123.425557},
   };
   const Transverse_mercator utm16{-87, 0};
@@ -86,27 +89,30 @@ TEST(TransverseMercator, ForwardRefusesPointsOffTheSphere) {
       (void)p.forward(lon, lat);
       ADD_FAILURE() << lon << " " << lat << " was projected";
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("Transverse_mercator::forward: longitude"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("Transverse_mercator::forward: longitude"), std::string::npos)
+          << e.what();
     }
   }
   // Settings out of range are named as settings, by forward() and inverse().
   for (const Transverse_mercator& bad : {Transverse_mercator{10, 95}, Transverse_mercator{std::nan(""), 0}}) {
-    for (int direction = 0; direction < 2; ++direction)
-      try {
+    for (int direction = 0; direction < 2; ++direction) try {
         (void)(direction == 0 ? bad.forward(10, 45) : bad.inverse(0, 0));
         ADD_FAILURE() << "projected with bad settings";
       } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("Transverse_mercator: central_meridian"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("Transverse_mercator: central_meridian"), std::string::npos)
+            << e.what();
       }
   }
-  // inverse() of a non-finite or far-out position: an error, not the south pole (a NaN passed for -90 degrees).
-  for (const auto& [x, y] : {std::pair{std::nan(""), 0.0}, std::pair{0.0, std::nan("")}, std::pair{HUGE_VAL, 0.0},
-                             std::pair{1e9, 1e9}}) {
+  // inverse() of a non-finite or far-out position: an error, not the south pole (a NaN passed for -90
+  // degrees).
+  for (const auto& [x, y] : {std::pair{std::nan(""), 0.0}, std::pair{0.0, std::nan("")},
+                             std::pair{HUGE_VAL, 0.0}, std::pair{1e9, 1e9}}) {
     try {
       const auto back = p.inverse(x, y);
       ADD_FAILURE() << x << " " << y << " gave " << back[0] << " " << back[1];
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("Transverse_mercator::inverse: x "), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("Transverse_mercator::inverse: x "), std::string::npos)
+          << e.what();
     }
   }
   EXPECT_TRUE(std::isfinite(p.forward(-87, 90)[1]));  // the poles are on it
@@ -150,9 +156,9 @@ TEST(LocalTransverseMercator, PointsAcrossTheAntimeridianStayTogether) {
   EXPECT_NEAR(tm.inverse(east[0], east[1])[0], -179.9, 1e-9);
 }
 
-// Around a pole: fixes 1.1 m from it at longitudes 0, 90, 180 and -120 (the circular mean is 8 degrees), on all
-// sides of it. They lie metres apart in the projection, as on the ground, and the round trip holds (they were
-// refused: "inf km" from the central meridian, beyond 89 degrees of longitude).
+// Around a pole: fixes 1.1 m from it at longitudes 0, 90, 180 and -120 (the circular mean is 8 degrees), on
+// all sides of it. They lie metres apart in the projection, as on the ground, and the round trip holds (they
+// were refused: "inf km" from the central meridian, beyond 89 degrees of longitude).
 TEST(LocalTransverseMercator, PointsAroundAPole) {
   const double lat = 89.99999;  // 1.1 m from the pole
   const std::vector<std::array<double, 2>> pole = {{0, lat}, {90, lat}, {180, lat}, {-120, lat}};
@@ -163,7 +169,8 @@ TEST(LocalTransverseMercator, PointsAroundAPole) {
   EXPECT_NEAR(std::hypot(xy[1][0] - xy[0][0], xy[1][1] - xy[0][1]), 2.23 / std::sqrt(2.0), 0.01);
   for (std::size_t i = 0; i < pole.size(); ++i) {
     const auto back = tm.inverse(xy[i][0], xy[i][1]);
-    EXPECT_NEAR(back[1], lat, 1e-7);  // 1 cm (3.4e-8 degrees, 4 mm, measured: asin near 90 degrees loses digits)
+    EXPECT_NEAR(back[1], lat,
+                1e-7);  // 1 cm (3.4e-8 degrees, 4 mm, measured: asin near 90 degrees loses digits)
     EXPECT_NEAR(std::remainder(back[0] - pole[i][0], 360.0), 0, 1e-5);  // 2e-7 m at 1.1 m from the pole
   }
 }
@@ -171,7 +178,8 @@ TEST(LocalTransverseMercator, PointsAroundAPole) {
 TEST(LocalTransverseMercator, BadPointsAreNamed) {
   EXPECT_EQ(message_of({{-87.6, 41.8}, {-87.6, 95}}),
             "local_transverse_mercator: point 1 has latitude 95, not in [-90, 90]");
-  EXPECT_EQ(message_of({{200, 41.8}}), "local_transverse_mercator: point 0 has longitude 200, not in [-180, 180]");
+  EXPECT_EQ(message_of({{200, 41.8}}),
+            "local_transverse_mercator: point 0 has longitude 200, not in [-180, 180]");
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(message_of({{-87.6, 41.8}, {-87.6, 41.8}, {nan, 41.8}}),
             "local_transverse_mercator: point 2 has longitude nan, not in [-180, 180]");
@@ -183,10 +191,12 @@ TEST(LocalTransverseMercator, BadPointsAreNamed) {
   // infinitely far.
   EXPECT_NE(message_of({{0, 0}, {100, 0}, {-100, 0}}).find("point 1 (longitude 100, latitude 0) lies 15"),
             std::string::npos);
-  EXPECT_EQ(message_of({{0, 0}, {90, 0}, {-90, 0}}),
-            "local_transverse_mercator: point 1 (longitude 90, latitude 0) lies on the equator 90 degrees of longitude "
-            "from the central meridian 0 of the points, where the projection is infinite: the points span too much "
-            "for one projection");
+  EXPECT_EQ(
+      message_of({{0, 0}, {90, 0}, {-90, 0}}),
+      "local_transverse_mercator: point 1 (longitude 90, latitude 0) lies on the equator 90 degrees of "
+      "longitude "
+      "from the central meridian 0 of the points, where the projection is infinite: the points span too much "
+      "for one projection");
   // Within the bound it is accepted.
   EXPECT_EQ(message_of({{-87.6, 41.8}, {-84, 41.8}}), "");
 }

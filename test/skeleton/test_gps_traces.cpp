@@ -40,9 +40,9 @@ double dist(const Gps_trace_sample& S, std::size_t a, std::size_t b) {
 }  // namespace
 
 TEST(GpsTraces, SpacingLinksAndDerivedParameters) {
-  // Two trips east along y = 0 and y = 3 (fixes 30 m apart) with radius 20: median step 30, spacing 10, link gap
-  // max(120, 40) = 120; every segment is densified, so samples cover the line and consecutive ones are linked.
-  // Samples where they were created (mean_positions off): pairwise at least the spacing apart.
+  // Two trips east along y = 0 and y = 3 (fixes 30 m apart) with radius 20: median step 30, spacing 10, link
+  // gap max(120, 40) = 120; every segment is densified, so samples cover the line and consecutive ones are
+  // linked. Samples where they were created (mean_positions off): pairwise at least the spacing apart.
   std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 11, 30), straight(0, 3, 1, 0, 11, 30, 100)};
   Gps_trace_options raw;
   raw.mean_positions = false;
@@ -53,8 +53,10 @@ TEST(GpsTraces, SpacingLinksAndDerivedParameters) {
   EXPECT_DOUBLE_EQ(S.max_link_gap, 120.0);
   ASSERT_GT(S.points.rows, 25u);
   for (std::size_t a = 0; a < S.points.rows; ++a)
-    for (std::size_t b = a + 1; b < S.points.rows; ++b) EXPECT_GE(dist(S, a, b), S.sample_spacing) << a << " " << b;
-  // Every fix is within the spacing of its sample; every link joins samples at most a spacing plus a step apart.
+    for (std::size_t b = a + 1; b < S.points.rows; ++b)
+      EXPECT_GE(dist(S, a, b), S.sample_spacing) << a << " " << b;
+  // Every fix is within the spacing of its sample; every link joins samples at most a spacing plus a step
+  // apart.
   std::size_t k = 0;
   for (const auto& trip : trips)
     for (const auto& f : trip) {
@@ -81,7 +83,8 @@ TEST(GpsTraces, SpacingLinksAndDerivedParameters) {
 
 TEST(GpsTraces, TimeOrderGapsAndHeadings) {
   // Fixes given out of time order are sorted: the result equals the sorted trip's.
-  Gps_trip sorted = straight(0, 0, 1, 0, 6, 25), shuffled{sorted[3], sorted[0], sorted[5], sorted[1], sorted[4], sorted[2]};
+  Gps_trip sorted = straight(0, 0, 1, 0, 6, 25),
+           shuffled{sorted[3], sorted[0], sorted[5], sorted[1], sorted[4], sorted[2]};
   EXPECT_EQ(sample_gps_traces({shuffled}, 20.0).points.data, sample_gps_traces({sorted}, 20.0).points.data);
   // A gap longer than the link gap splits the trip: no link across it, no inserted points in it.
   Gps_trip gap = straight(0, 0, 1, 0, 4, 20);
@@ -91,7 +94,8 @@ TEST(GpsTraces, TimeOrderGapsAndHeadings) {
   o.max_link_gap = 50;
   const Gps_trace_sample S = sample_gps_traces({gap}, 20.0, o);
   for (const Edge& e : S.trip_links) EXPECT_LT(dist(S, e[0], e[1]), 100.0);
-  for (std::size_t i = 0; i < S.points.rows; ++i) EXPECT_TRUE(S.points.row(i)[0] <= 60 || S.points.row(i)[0] >= 1000);
+  for (std::size_t i = 0; i < S.points.rows; ++i)
+    EXPECT_TRUE(S.points.row(i)[0] <= 60 || S.points.row(i)[0] >= 1000);
   // No linking at all with a negative gap.
   o.max_link_gap = -1;
   EXPECT_TRUE(sample_gps_traces({gap}, 20.0, o).trip_links.empty());
@@ -104,7 +108,8 @@ TEST(GpsTraces, TimeOrderGapsAndHeadings) {
   auto crossing_edges = [&](const Proximity_graph& g) {
     std::size_t n = 0;
     for (const Edge& e : g.edges)
-      n += skeleton::internal::heading_difference(C.headings[e[0]], C.headings[e[1]], C.directed) > 30 ? 1 : 0;
+      n +=
+          skeleton::internal::heading_difference(C.headings[e[0]], C.headings[e[1]], C.directed) > 30 ? 1 : 0;
     return n;
   };
   EXPECT_EQ(crossing_edges(build_gps_trace_graph(C, 20.0, tolerance_of(30))), 0u);
@@ -117,7 +122,8 @@ TEST(GpsTraces, TimeOrderGapsAndHeadings) {
   std::vector<Gps_trip> two_way{straight(0, 0, 1, 0, 9, 25), straight(200, 3, -1, 0, 9, 25, 100)};
   const Gps_trace_sample T = sample_gps_traces(two_way, 20.0, h);
   EXPECT_TRUE(T.directed);
-  for (std::size_t i = 0; i < T.points.rows; ++i) EXPECT_TRUE(T.headings[i] == 0 || T.headings[i] == 180) << T.headings[i];
+  for (std::size_t i = 0; i < T.points.rows; ++i)
+    EXPECT_TRUE(T.headings[i] == 0 || T.headings[i] == 180) << T.headings[i];
   const Proximity_graph directed_graph = build_gps_trace_graph(T, 20.0, tolerance_of(30));
   EXPECT_EQ(connected_components(directed_graph).count, 2u);
   h.directed = false;
@@ -166,11 +172,12 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   EXPECT_EQ(watched.status, Status::success);
   EXPECT_EQ(watched.points.data, plain.points.data);  // watching changes nothing
   ASSERT_GE(seen.size(), 43u);  // each trip in the segment check, each trip sampled, then the density filter
-  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.3; }), 21);  // the segment check
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.3; }),
+            21);  // the segment check
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_GE(seen.front(), 0.0);
   EXPECT_LE(seen.back(), 1.0);
-  EXPECT_GE(seen.back(), 0.8);  // the density filter reported
+  EXPECT_GE(seen.back(), 0.8);                    // the density filter reported
   for (const double stop_at : {0.0, 0.5, 0.8}) {  // before the first trip, among the trips, in the filter
     o.progress = [stop_at](double t) { return t < stop_at; };
     EXPECT_EQ(sample_gps_traces(trips, 20.0, o).status, Status::interrupted) << stop_at;
@@ -208,9 +215,10 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
 }
 
 TEST(GpsTraces, AQuietCarriagewayBesideABusyOneIsKept) {
-  // A divided road: forty trips east along y = 0 and two trips west along y = 18. Compared with every sample within
-  // the density radius, the westbound samples weigh 1/20 of their busy neighbours and are dropped as scatter;
-  // compared only with samples travelling their way (the default 45 degrees), they are a street of their own.
+  // A divided road: forty trips east along y = 0 and two trips west along y = 18. Compared with every sample
+  // within the density radius, the westbound samples weigh 1/20 of their busy neighbours and are dropped as
+  // scatter; compared only with samples travelling their way (the default 45 degrees), they are a street of
+  // their own.
   std::vector<Gps_trip> trips;
   for (int k = 0; k < 40; ++k) trips.push_back(straight(0, 0.05 * k, 1, 0, 13, 25, 100.0 * k));
   for (int k = 0; k < 2; ++k) trips.push_back(straight(300, 18 + 0.5 * k, -1, 0, 13, 25, 9000.0 + 100 * k));
@@ -236,14 +244,17 @@ TEST(GpsTraces, AQuietCarriagewayBesideABusyOneIsKept) {
 
 TEST(GpsTraces, ScatterBesideABusyStreetIsDroppedWhereTheStreetAheadStays) {
   // Twenty trips along y = 0 up to x = 400, three of them on to x = 700 (a quiet continuation of the busy
-  // street), and three trips along y = 24 between x = 100 and 300 (scatter beside the street: 3 of 20 trips, 0.15
-  // of its weight). The relative rule at 0.1 keeps the scatter; the lateral rule at 0.3 drops it and keeps the
-  // continuation, whose busy samples lie behind it; the relative rule at 0.3 would drop the continuation's start.
-  // The scene is turned by several angles (the rule works on headings in degrees), directed and undirected.
+  // street), and three trips along y = 24 between x = 100 and 300 (scatter beside the street: 3 of 20 trips,
+  // 0.15 of its weight). The relative rule at 0.1 keeps the scatter; the lateral rule at 0.3 drops it and
+  // keeps the continuation, whose busy samples lie behind it; the relative rule at 0.3 would drop the
+  // continuation's start. The scene is turned by several angles (the rule works on headings in degrees),
+  // directed and undirected.
   for (const double degrees : {0.0, 90.0, 135.0, 200.0})
     for (const bool directed : {true, false}) {
-      SCOPED_TRACE("turned by " + std::to_string(degrees) + (directed ? " degrees, directed" : " degrees, undirected"));
-      const double radians = degrees * 3.14159265358979323846 / 180, c = std::cos(radians), s = std::sin(radians);
+      SCOPED_TRACE("turned by " + std::to_string(degrees) +
+                   (directed ? " degrees, directed" : " degrees, undirected"));
+      const double radians = degrees * 3.14159265358979323846 / 180, c = std::cos(radians),
+                   s = std::sin(radians);
       auto trip = [&](double x0, double y0, int n, double t0) {
         Gps_trip t = straight(x0, y0, 1, 0, n, 25, t0);
         for (Gps_fix& f : t) f = {c * f.x - s * f.y, s * f.x + c * f.y, f.time};
@@ -272,8 +283,9 @@ TEST(GpsTraces, ScatterBesideABusyStreetIsDroppedWhereTheStreetAheadStays) {
       const Gps_trace_sample lateral = sample_gps_traces(trips, 20.0, o);
       EXPECT_EQ(count(lateral, 100, 300, 12, 40), 0u);
       EXPECT_GT(lateral.dropped_lateral, 10u);
-      // The lateral count comes on top of what the relative rule drops (the scatter's last sample, at x = 300,
-      // stands for fewer points than 0.1 of the street's at some angles, where the samples fall differently).
+      // The lateral count comes on top of what the relative rule drops (the scatter's last sample, at x =
+      // 300, stands for fewer points than 0.1 of the street's at some angles, where the samples fall
+      // differently).
       EXPECT_EQ(lateral.dropped, relative.dropped + lateral.dropped_lateral);
       EXPECT_GE(count(lateral, 405, 440, -5, 5), 3u);  // the continuation next to the busy street's end
       EXPECT_EQ(count(lateral, 405, 700, -5, 5), count(relative, 405, 700, -5, 5));
@@ -311,8 +323,9 @@ TEST(GpsTraces, SamplesWithoutADirectionAreNotJudgedByTheLateralRule) {
 }
 
 TEST(GpsTraces, AParkedVehicleDoesNotDropTheStreetBesideIt) {
-  // Three trips east along y = 0 and a vehicle parked 20 m north of the street with 60 fixes at one place: its
-  // sample is the heaviest around but has no direction, so it is no busy neighbour of the street's samples.
+  // Three trips east along y = 0 and a vehicle parked 20 m north of the street with 60 fixes at one place:
+  // its sample is the heaviest around but has no direction, so it is no busy neighbour of the street's
+  // samples.
   std::vector<Gps_trip> trips;
   for (int k = 0; k < 3; ++k) trips.push_back(straight(0, 0.5 * k, 1, 0, 17, 25, 100.0 * k));
   Gps_trace_options o;
@@ -377,12 +390,13 @@ TEST(GpsTraces, DegenerateAndBadInput) {
     sample_gps_traces({{{0, 0, 0}, {1e20, 0, 1}, {2e20, 0, 2}}}, 10.0);
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("trip 0, fix 1 at (1e+20, 0) lies more than 2^50 times"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("trip 0, fix 1 at (1e+20, 0) lies more than 2^50 times"),
+              std::string::npos)
         << e.what();
   }
-  // Each option is named with its value; a density radius so small that position / radius overflows the density
-  // filter's grid cells is refused like a small spacing (it ran into undefined behaviour before), and only when
-  // that filter is on.
+  // Each option is named with its value; a density radius so small that position / radius overflows the
+  // density filter's grid cells is refused like a small spacing (it ran into undefined behaviour before), and
+  // only when that filter is on.
   auto message = [](const Gps_trace_options& o) -> std::string {
     try {
       sample_gps_traces({{{0, 0, 0}, {100, 0, 1}, {200, 0, 2}}}, 10.0, o);
@@ -391,14 +405,16 @@ TEST(GpsTraces, DegenerateAndBadInput) {
     }
     return "(no exception)";
   };
-  EXPECT_NE(message(bad).find("sample_spacing must be finite and >= 0 (0: automatic), got -1"), std::string::npos);
+  EXPECT_NE(message(bad).find("sample_spacing must be finite and >= 0 (0: automatic), got -1"),
+            std::string::npos);
   bad = {};
   bad.max_link_gap = std::numeric_limits<double>::infinity();
   EXPECT_NE(message(bad).find("max_link_gap must be finite"), std::string::npos) << message(bad);
   bad = {};
   bad.heading_tolerance = -2;
   EXPECT_NE(message(bad).find("heading_tolerance must be >= 0 degrees, got -2"), std::string::npos);
-  for (const double r : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  for (const double r :
+       {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     bad = {};
     bad.density_radius = r;
     EXPECT_NE(message(bad).find("density_radius must be finite and >= 0"), std::string::npos) << r;
@@ -407,17 +423,18 @@ TEST(GpsTraces, DegenerateAndBadInput) {
   bad.density_radius = 1e-300;
   EXPECT_EQ(message(bad), "(no exception)");  // the density filter is off
   bad.min_relative_density = 0.1;
-  EXPECT_NE(message(bad).find("trip 0, fix 1 at (100, 0) lies more than 2^50 times the sample spacing, radius or "
-                              "density radius (1e-300)"),
-            std::string::npos)
+  EXPECT_NE(
+      message(bad).find("trip 0, fix 1 at (100, 0) lies more than 2^50 times the sample spacing, radius or "
+                        "density radius (1e-300)"),
+      std::string::npos)
       << message(bad);
   bad.density_radius = 1;
   EXPECT_EQ(message(bad), "(no exception)");
 }
 
 TEST(GpsTraces, SkeletonOfABlock) {
-  // Three trips drive once around a 200 x 100 m block (fixes 25 m apart): the skeleton is one loop, no spur. With a
-  // heading tolerance the corners connect through the turning trips' links.
+  // Three trips drive once around a 200 x 100 m block (fixes 25 m apart): the skeleton is one loop, no spur.
+  // With a heading tolerance the corners connect through the turning trips' links.
   std::vector<Gps_trip> trips;
   for (int k = 0; k < 3; ++k) {
     const double o = 2.0 * k;
@@ -436,7 +453,8 @@ TEST(GpsTraces, SkeletonOfABlock) {
   const Gps_trace_sample S = sample_gps_traces(trips, 25.0, go);
   Skeleton_options so;
   so.delta = 75;
-  const Reeb_skeleton s = extract_reeb_skeleton(build_gps_trace_graph(S, 25.0, tolerance_of(30)), S.points, so);
+  const Reeb_skeleton s =
+      extract_reeb_skeleton(build_gps_trace_graph(S, 25.0, tolerance_of(30)), S.points, so);
   std::vector<int> comp(num_vertices(s.graph));
   const int c = boost::connected_components(s.graph, comp.data());
   EXPECT_EQ(c, 1);
@@ -445,9 +463,9 @@ TEST(GpsTraces, SkeletonOfABlock) {
 }
 
 TEST(GpsTraces, SamplesSitAtTheMeanOfTheirFixes) {
-  // Two trips east, fixes 1 m apart along y = 0 and y = 2, radius 20 (spacing 10): the first sample is created
-  // at the first fix (0, 0) and joined by the fixes x = 0..9 of both trips, so it moves to (4.5, 1). Turned off,
-  // it stays at (0, 0). Fixes 1 m apart get no inserted points.
+  // Two trips east, fixes 1 m apart along y = 0 and y = 2, radius 20 (spacing 10): the first sample is
+  // created at the first fix (0, 0) and joined by the fixes x = 0..9 of both trips, so it moves to (4.5, 1).
+  // Turned off, it stays at (0, 0). Fixes 1 m apart get no inserted points.
   const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 31, 1), straight(0, 2, 1, 0, 31, 1, 100)};
   const Gps_trace_sample S = sample_gps_traces(trips, 20.0);
   ASSERT_EQ(S.sample_of_fix[0], 0u);
@@ -479,8 +497,9 @@ TEST(GpsTraces, SamplesSitAtTheMeanOfTheirFixes) {
 }
 
 TEST(GpsTraces, TheOrderOfATripsLinesDoesNotMoveItsSamples) {
-  // Fixes are summed in time order (ties by line): summed in file order, a trip given with its lines out of order
-  // moved a sample by a rounding (0.2 + 0.1 + 0.3 against 0.3 + 0.2 + 0.1: (0.2, 0) became (0.19999999999999998, 0)).
+  // Fixes are summed in time order (ties by line): summed in file order, a trip given with its lines out of
+  // order moved a sample by a rounding (0.2 + 0.1 + 0.3 against 0.3 + 0.2 + 0.1: (0.2, 0) became
+  // (0.19999999999999998, 0)).
   const std::vector<Gps_trip> in_order{{{0.1, 0, 0}, {0.2, 0, 1}, {0.3, 0, 2}, {100, 0, 3}}};
   std::mt19937 rng(3);
   for (int trial = 0; trial < 20; ++trial) {
@@ -493,9 +512,10 @@ TEST(GpsTraces, TheOrderOfATripsLinesDoesNotMoveItsSamples) {
 }
 
 TEST(GpsTraces, AWaitingVehicleKeepsItsDirection) {
-  // Northbound trips that wait 10 fixes at a light at y = 200, and one that ends with 5 fixes parked at y = 400:
-  // every sample points north (a waiting fix takes the direction the vehicle drives off in, or arrived from at
-  // the end of the trip), so the stop makes no eastbound sample that the heading tolerance would cut off.
+  // Northbound trips that wait 10 fixes at a light at y = 200, and one that ends with 5 fixes parked at y =
+  // 400: every sample points north (a waiting fix takes the direction the vehicle drives off in, or arrived
+  // from at the end of the trip), so the stop makes no eastbound sample that the heading tolerance would cut
+  // off.
   std::vector<Gps_trip> trips;
   for (int k = 0; k < 20; ++k) {
     Gps_trip t;
@@ -520,9 +540,9 @@ TEST(GpsTraces, AWaitingVehicleKeepsItsDirection) {
 }
 
 TEST(GpsTraces, SamplesFarApartUseLittleMemory) {
-  // Two short trips 40 km apart at a spacing of 5 m: 64 million cells if the grid were dense. The sampling must
-  // give the same samples as for the trips 1 km apart, shifted (a sparse grid; this test would take seconds and
-  // hundreds of megabytes with a dense one, but it asserts only the result).
+  // Two short trips 40 km apart at a spacing of 5 m: 64 million cells if the grid were dense. The sampling
+  // must give the same samples as for the trips 1 km apart, shifted (a sparse grid; this test would take
+  // seconds and hundreds of megabytes with a dense one, but it asserts only the result).
   auto pair_at = [](double gap) {
     return std::vector<Gps_trip>{straight(0, 0, 1, 0, 20, 10), straight(gap, gap, 1, 0, 20, 10, 100)};
   };
@@ -567,7 +587,8 @@ TEST(GpsTraces, TraceGraphChecksItsInput) {
   EXPECT_NE(message(T, 30).find("trip link"), std::string::npos) << message(T, 30);
   T = S;
   T.points.data[3] = std::numeric_limits<double>::infinity();
-  EXPECT_NE(message(T, 30).find("point 1 has a non-finite coordinate 1"), std::string::npos) << message(T, 30);
+  EXPECT_NE(message(T, 30).find("point 1 has a non-finite coordinate 1"), std::string::npos)
+      << message(T, 30);
   T = S;
   T.points.dimension = 3;
   EXPECT_NE(message(T, 30).find("planar"), std::string::npos) << message(T, 30);
@@ -591,7 +612,8 @@ TEST(GpsTraces, HandMadePointMatricesAreChecked) {
       call(m);
       ADD_FAILURE() << "expected an exception";
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("point 1 has a non-finite coordinate 1"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("point 1 has a non-finite coordinate 1"), std::string::npos)
+          << e.what();
     }
   }
   m.data[3] = 0;
@@ -638,7 +660,8 @@ TEST(GpsTraces, SegmentsTheTracesDoNotConfirmAreNotDensified) {
   o.max_link_gap = 300;
   auto farthest_from_streets = [](const Gps_trace_sample& S) {
     double d = 0;
-    for (std::size_t i = 0; i < S.points.rows; ++i) d = std::max(d, distance_to_l(S.points.row(i)[0], S.points.row(i)[1]));
+    for (std::size_t i = 0; i < S.points.rows; ++i)
+      d = std::max(d, distance_to_l(S.points.row(i)[0], S.points.row(i)[1]));
     return d;
   };
   auto farthest_link_middle = [](const Gps_trace_sample& S) {  // links along the streets have theirs on them
@@ -682,7 +705,8 @@ TEST(GpsTraces, SegmentsTheTracesDoNotConfirmAreNotDensified) {
 
 TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
   // A corner cut of 42.4 m, from (370, 0) to (400, 30): with support 12 it is checked (> 24 m), its middle
-  // (385, 15) lies 15 m from the streets, and it is at most 4 x 12 long: its ends are linked, no point inserted.
+  // (385, 15) lies 15 m from the streets, and it is at most 4 x 12 long: its ends are linked, no point
+  // inserted.
   std::vector<Gps_trip> trips = l_shaped_streets();
   trips.push_back({{300, 0, 0}, {370, 0, 7}, {400, 30, 11}, {400, 100, 18}});
   const std::size_t first = 20 * 41;
@@ -696,7 +720,8 @@ TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
   EXPECT_EQ(S.straight_segments, 0u);
   EXPECT_EQ(S.linked_segments, 1u);
   EXPECT_TRUE(linked(S, first + 1, first + 2));
-  // The chain goes on: the trip's first fix reaches its last through its own links (densified, link, densified).
+  // The chain goes on: the trip's first fix reaches its last through its own links (densified, link,
+  // densified).
   std::vector<std::vector<std::uint32_t>> next(S.points.rows);
   for (const Edge& e : S.trip_links) {
     next[e[0]].push_back(e[1]);
@@ -720,9 +745,9 @@ TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
 }
 
 TEST(GpsTraces, TracesTooSparseToConfirmOneAnotherUseEverySegment) {
-  // One sparse trip alone, turning by 45 degrees at every fix: none of its long segments is confirmed (no other
-  // fix lies along them), fewer than min_confirmed_fraction, so the check stands down and the samples are those
-  // without it.
+  // One sparse trip alone, turning by 45 degrees at every fix: none of its long segments is confirmed (no
+  // other fix lies along them), fewer than min_confirmed_fraction, so the check stands down and the samples
+  // are those without it.
   const std::vector<Gps_trip> trips{{{0, 0, 0}, {200, 0, 20}, {300, 100, 40}, {300, 300, 60}}};
   Gps_trace_options o;
   o.segment_support = 20;
@@ -770,7 +795,8 @@ TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
 
 TEST(GpsTraces, ALongJumpWithinTheLinkGapIsRefusedBeforeDensifying) {
   // Three fixes 10 m apart, then a jump of 10^6 m: with a link gap of 10^9 the jump was densified every half
-  // spacing (198,183 samples from 4 fixes; at 10^9 m, gigabytes). Refused, naming the segment and the options.
+  // spacing (198,183 samples from 4 fixes; at 10^9 m, gigabytes). Refused, naming the segment and the
+  // options.
   Gps_trip trip{{0, 0, 0}, {10, 0, 1}, {20, 0, 2}, {1e6, 0, 3}};
   Gps_trace_options o;
   o.max_link_gap = 1e9;
@@ -780,22 +806,24 @@ TEST(GpsTraces, ALongJumpWithinTheLinkGapIsRefusedBeforeDensifying) {
     sample_gps_traces({trip}, 20.0, o);
     ADD_FAILURE() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("would insert about 199997 points along the segments (more than "
-                                         "max_inserted_points, 100000; the longest linked segment, from trip 0, fix 2, "
-                                         "is 999980 long): lower max_link_gap (1e+09"),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "would insert about 199997 points along the segments (more than "
+                  "max_inserted_points, 100000; the longest linked segment, from trip 0, fix 2, "
+                  "is 999980 long): lower max_link_gap (1e+09"),
+              std::string::npos)
+        << e.what();
   }
   o.max_inserted_points = 199996;  // one fewer than needed: refused
   EXPECT_THROW(sample_gps_traces({trip}, 20.0, o), std::invalid_argument);
   o.max_inserted_points = 199997;  // exactly as many (1 + 1 + 199,995 inserted): runs
   EXPECT_GT(sample_gps_traces({trip}, 20.0, o).points.rows, 90000u);  // one per 10 m
-  o.max_inserted_points = 0;  // no limit
+  o.max_inserted_points = 0;                                          // no limit
   EXPECT_GT(sample_gps_traces({trip}, 20.0, o).points.rows, 90000u);  // one per 10 m
 }
 
 TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
-  // Three samples (no linking, spacing 1) with a density radius of 20: the grid cells of side 20 put (0, 0) and
-  // (10, 0) in one cell and (20, 0) in the next, so every sample meets all three: 9 pairs.
+  // Three samples (no linking, spacing 1) with a density radius of 20: the grid cells of side 20 put (0, 0)
+  // and (10, 0) in one cell and (20, 0) in the next, so every sample meets all three: 9 pairs.
   Gps_trip trip{{0, 0, 0}, {10, 0, 1}, {20, 0, 2}};
   Gps_trace_options o;
   o.max_link_gap = -1;
@@ -803,22 +831,27 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
   o.density_radius = 20;
   o.min_relative_density = 0.05;  // the filter on (off by default here; road_map_trace_options() turns it on)
   o.max_density_pairs = 8;
-  const std::string m = FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({trip}, 10.0, o); });
-  EXPECT_NE(m.find("the density filter would compare at least 9 pairs of the first 3 samples (more than "
-                   "max_density_pairs, 8; counted while the samples were made): the sample spacing (sample_spacing 1) "
-                   "is small for the density radius (density_radius 20)"),
-            std::string::npos)
+  const std::string m =
+      FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({trip}, 10.0, o); });
+  EXPECT_NE(
+      m.find(
+          "the density filter would compare at least 9 pairs of the first 3 samples (more than "
+          "max_density_pairs, 8; counted while the samples were made): the sample spacing (sample_spacing 1) "
+          "is small for the density radius (density_radius 20)"),
+      std::string::npos)
       << m;
   {
-    // Counted as the samples are made: a 1 km segment linked at spacing 0.01 (100,000 samples, 6 * 10^8 pairs)
-    // stops after a few hundred (it made them all, then counted: 3,000 Chicago fixes at 0.01 took 38 s and 1 GB).
+    // Counted as the samples are made: a 1 km segment linked at spacing 0.01 (100,000 samples, 6 * 10^8
+    // pairs) stops after a few hundred (it made them all, then counted: 3,000 Chicago fixes at 0.01 took 38 s
+    // and 1 GB).
     Gps_trace_options l = o;
     l.max_link_gap = 2000;
     l.segment_support = -1;
     l.sample_spacing = 0.01;
     l.max_density_pairs = 1000000;
-    const std::string n =
-        FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({{{0, 0, 0}, {1000, 0, 1}}}, 10.0, l); });
+    const std::string n = FeatureRecon::test::invalid_argument_message([&] {
+      sample_gps_traces({{{0, 0, 0}, {1000, 0, 1}}}, 10.0, l);
+    });
     const std::size_t at = n.find("pairs of the first ");
     ASSERT_NE(at, std::string::npos) << n;
     EXPECT_LT(std::stoul(n.substr(at + 19)), 3000u) << n;
@@ -835,11 +868,11 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
 
 namespace {
 
-// The segment check's counts of S: checked, confirmed, checked straight, confirmed straight, kept straight; the
-// rule used; the check applied (not all segments used).
+// The segment check's counts of S: checked, confirmed, checked straight, confirmed straight, kept straight;
+// the rule used; the check applied (not all segments used).
 void expect_segment_counts(const Gps_trace_sample& S, std::size_t checked, std::size_t confirmed,
-                           std::size_t straight_checked, std::size_t straight_confirmed, std::size_t straight_kept,
-                           bool rule_used) {
+                           std::size_t straight_checked, std::size_t straight_confirmed,
+                           std::size_t straight_kept, bool rule_used) {
   EXPECT_EQ(S.checked_segments, checked);
   EXPECT_EQ(S.confirmed_segments, confirmed);
   EXPECT_EQ(S.straight_checked, straight_checked);
@@ -852,11 +885,12 @@ void expect_segment_counts(const Gps_trace_sample& S, std::size_t checked, std::
 }  // namespace
 
 TEST(GpsTraces, AStreetOneTripDrivesStraightIsKept) {
-  // Beside the L, one trip drives east along y = 200 with fixes 150 m apart: no other fix confirms its segments,
-  // but it does not turn (within 2 degrees), so they are densified: samples every few metres along the street.
-  // Fifteen sparse trips drive the L's east street straight, fixes 150 m apart, and the dense trips confirm their
-  // 30 segments: straight segments are confirmed 30 times in 33, so the turn rule is trusted.
-  // With a turn tolerance of 1 degree the same segments count as turns, and the 150 m segments break the trip.
+  // Beside the L, one trip drives east along y = 200 with fixes 150 m apart: no other fix confirms its
+  // segments, but it does not turn (within 2 degrees), so they are densified: samples every few metres along
+  // the street. Fifteen sparse trips drive the L's east street straight, fixes 150 m apart, and the dense
+  // trips confirm their 30 segments: straight segments are confirmed 30 times in 33, so the turn rule is
+  // trusted. With a turn tolerance of 1 degree the same segments count as turns, and the 150 m segments break
+  // the trip.
   std::vector<Gps_trip> trips = l_shaped_streets();
   for (int k = 0; k < 15; ++k)
     trips.push_back({{2.0 * k, 1, 5000.0 + 100 * k},
@@ -875,11 +909,11 @@ TEST(GpsTraces, AStreetOneTripDrivesStraightIsKept) {
     return n;
   };
   EXPECT_GE(samples_on_street(S), 25u);  // 450 m at a spacing of 15 m
-  EXPECT_EQ(S.quiet_segments, 0u);  // the rule is trusted
+  EXPECT_EQ(S.quiet_segments, 0u);       // the rule is trusted
   // The lone trip without the fifteen: its three straight segments are all the traces can check, and none is
-  // confirmed (the 95 % upper bound of 0 in 3 is 0.56): the rule is not trusted. Their ends are quiet (no other
-  // fix within 20 m: no other trip could have confirmed them), so they are used all the same; without that (or
-  // with a fix of another trip near each end) the trip breaks, unless the fraction asked for is 0.
+  // confirmed (the 95 % upper bound of 0 in 3 is 0.56): the rule is not trusted. Their ends are quiet (no
+  // other fix within 20 m: no other trip could have confirmed them), so they are used all the same; without
+  // that (or with a fix of another trip near each end) the trip breaks, unless the fraction asked for is 0.
   std::vector<Gps_trip> lone = l_shaped_streets();
   lone.push_back(trips.back());
   Gps_trace_options p = o;
@@ -908,7 +942,8 @@ TEST(GpsTraces, AStreetOneTripDrivesStraightIsKept) {
   EXPECT_TRUE(trusted.turn_rule_used);
   EXPECT_EQ(trusted.straight_segments, 3u);
   EXPECT_GE(samples_on_street(trusted), 25u);
-  // A vehicle waiting at (150, 205) wobbles 2 m: the directions are taken over 20 m, so it still does not turn.
+  // A vehicle waiting at (150, 205) wobbles 2 m: the directions are taken over 20 m, so it still does not
+  // turn.
   std::vector<Gps_trip> wobbling = trips;
   wobbling.back().insert(wobbling.back().begin() + 2, Gps_fix{151, 207, 20});
   const Gps_trace_sample W = sample_gps_traces(wobbling, 30.0, o);
@@ -930,12 +965,12 @@ double distance_to_grid(double x, double y) {  // streets x = 0, 100, 200, 300 a
 }  // namespace
 
 TEST(GpsTraces, StraightRoutesThatCutBlocksDoNotTrustTheTurnRule) {
-  // A grid of 100 m blocks, every street driven densely both ways. Ten sparse trips drive along the streets with
-  // fixes 100 m apart (30 straight segments, all confirmed); ten staircase routes are recorded at every other
-  // corner, so that their 141 m segments run straight along diagonals through the blocks (30 straight segments,
-  // none confirmed: the middles lie 50 m from any street). Straight segments are confirmed 30 times in 60 (upper
-  // bound 0.62 < 0.75): straightness does not tell streets here, and the diagonals are not drawn. With the rule
-  // always trusted they are densified across the blocks.
+  // A grid of 100 m blocks, every street driven densely both ways. Ten sparse trips drive along the streets
+  // with fixes 100 m apart (30 straight segments, all confirmed); ten staircase routes are recorded at every
+  // other corner, so that their 141 m segments run straight along diagonals through the blocks (30 straight
+  // segments, none confirmed: the middles lie 50 m from any street). Straight segments are confirmed 30 times
+  // in 60 (upper bound 0.62 < 0.75): straightness does not tell streets here, and the diagonals are not
+  // drawn. With the rule always trusted they are densified across the blocks.
   std::vector<Gps_trip> trips;
   double t0 = 0;
   for (int k = 0; k <= 3; ++k)
@@ -947,13 +982,18 @@ TEST(GpsTraces, StraightRoutesThatCutBlocksDoNotTrustTheTurnRule) {
   for (int k = 0; k < 10; ++k) {
     const double y = 100.0 * (k % 4), jitter = 0.5 * k;
     t0 += 1000;
-    trips.push_back({{jitter, y, t0}, {100 + jitter, y, t0 + 10}, {200 + jitter, y, t0 + 20}, {300 - jitter, y, t0 + 30}});
+    trips.push_back({{jitter, y, t0},
+                     {100 + jitter, y, t0 + 10},
+                     {200 + jitter, y, t0 + 20},
+                     {300 - jitter, y, t0 + 30}});
   }
   for (int k = 0; k < 10; ++k) {
     const double jitter = 0.5 * k;
     t0 += 1000;
-    trips.push_back(
-        {{jitter, 0, t0}, {100, 100 + jitter, t0 + 14}, {200 + jitter, 200, t0 + 28}, {300, 300 - jitter, t0 + 42}});
+    trips.push_back({{jitter, 0, t0},
+                     {100, 100 + jitter, t0 + 14},
+                     {200 + jitter, 200, t0 + 28},
+                     {300, 300 - jitter, t0 + 42}});
   }
   Gps_trace_options o;
   o.mean_positions = false;
@@ -973,9 +1013,9 @@ TEST(GpsTraces, StraightRoutesThatCutBlocksDoNotTrustTheTurnRule) {
   for (std::size_t i = 0; i < T.points.rows; ++i)
     inside += distance_to_grid(T.points.row(i)[0], T.points.row(i)[1]) > 30 ? 1 : 0;
   EXPECT_GE(inside, 5u);  // samples along the diagonals, in the middle of the blocks
-  // More evidence for the rule (every sparse street trip twice: 60 confirmed of 90, upper bound 0.755) tips it at
-  // the default 0.75, not at 0.8 (the default until session 39, 0.9, distrusted it on Chicago's traces thinned to
-  // every 10th fix, where it is right).
+  // More evidence for the rule (every sparse street trip twice: 60 confirmed of 90, upper bound 0.755) tips
+  // it at the default 0.75, not at 0.8 (the default until session 39, 0.9, distrusted it on Chicago's traces
+  // thinned to every 10th fix, where it is right).
   std::vector<Gps_trip> more = trips;
   for (int k = 0; k < 10; ++k) {
     Gps_trip again = trips[16 + k];  // after the 16 dense trips
@@ -1021,11 +1061,12 @@ std::size_t samples_inside_blocks(const Gps_trace_sample& S) {  // more than 8 m
 }  // namespace
 
 TEST(GpsTraces, WhereFixesAreDenseAChordAcrossBlocksIsNotConfirmed) {
-  // Fixes every 2 m on every street of 30 m blocks: the diagonal passes through the middle of each block, 15 m
-  // from the nearest fix, within the 20 m segment support. At its ends the 8th nearest distinct fix position
-  // (both directions share positions) is 8 m away, so the segment, longer than 4 x 20 m, is confirmed at
-  // max(8, 0.6 x 20) = 12 m: it is not, and the trip breaks there. The stand-down of min_confirmed_fraction
-  // counts it as confirmed at 20 m (else 0 confirmed of 1 checked would turn the check off).
+  // Fixes every 2 m on every street of 30 m blocks: the diagonal passes through the middle of each block, 15
+  // m from the nearest fix, within the 20 m segment support. At its ends the 8th nearest distinct fix
+  // position (both directions share positions) is 8 m away, so the segment, longer than 4 x 20 m, is
+  // confirmed at max(8, 0.6 x 20) = 12 m: it is not, and the trip breaks there. The stand-down of
+  // min_confirmed_fraction counts it as confirmed at 20 m (else 0 confirmed of 1 checked would turn the check
+  // off).
   const std::vector<Gps_trip> dense = small_blocks_and_a_diagonal(2);
   Gps_trace_options o;
   o.mean_positions = false;
@@ -1037,8 +1078,8 @@ TEST(GpsTraces, WhereFixesAreDenseAChordAcrossBlocksIsNotConfirmed) {
   EXPECT_EQ(S.locally_checked, 1u);
   EXPECT_EQ(S.locally_rejected, 1u);
   EXPECT_EQ(samples_inside_blocks(S), 0u);
-  // The local distance has a floor: at 0.75 x 20 = 15 m (exactly the block's half-width) the chord is confirmed
-  // and densified through the blocks, as with the local distance off.
+  // The local distance has a floor: at 0.75 x 20 = 15 m (exactly the block's half-width) the chord is
+  // confirmed and densified through the blocks, as with the local distance off.
   for (const auto& [fixes, floor] : {std::pair<std::size_t, double>{0, 0.6}, {8, 0.75}}) {
     Gps_trace_options p = o;
     p.local_support_fixes = fixes;
@@ -1049,8 +1090,8 @@ TEST(GpsTraces, WhereFixesAreDenseAChordAcrossBlocksIsNotConfirmed) {
     EXPECT_EQ(T.locally_rejected, 0u);
     EXPECT_GE(samples_inside_blocks(T), 3u) << fixes << " " << floor;
   }
-  // Fixes every 15 m: at the corners the 8th nearest position lies beyond the segment support, which is used as
-  // it is, and the chord is confirmed. Nothing changes where fixes are sparse.
+  // Fixes every 15 m: at the corners the 8th nearest position lies beyond the segment support, which is used
+  // as it is, and the chord is confirmed. Nothing changes where fixes are sparse.
   const Gps_trace_sample L = sample_gps_traces(small_blocks_and_a_diagonal(15), 30.0, o);
   expect_segment_counts(L, 1, 1, 0, 0, 0, true);
   EXPECT_EQ(L.locally_checked, 0u);
@@ -1067,12 +1108,13 @@ TEST(GpsTraces, WhereFixesAreDenseAChordAcrossBlocksIsNotConfirmed) {
 }
 
 TEST(GpsTraces, TheLocalDistanceIsTheKthNearestPositionAtTheSparserEnd) {
-  // A street y = 0 driven both ways with fixes every 2 m (51 positions), and a trip along it in one 100 m segment
-  // (longer than 4 x 20 m; its points lie on fixes, so it is confirmed at any distance). At (0, 0) the k-th nearest
-  // position, its own counted, is 2 (k - 1) m away: k = 8 gives 14 m, k = 10 18 m (checked locally), k = 11 20 m
-  // (the support itself: not below it), k = 51 100 m; k = 52 is more than there are positions.
-  std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 51, 2), straight(100, 0, -1, 0, 51, 2, 1000),
-                              {{0, 0, 2000}, {100, 0, 2010}}};
+  // A street y = 0 driven both ways with fixes every 2 m (51 positions), and a trip along it in one 100 m
+  // segment (longer than 4 x 20 m; its points lie on fixes, so it is confirmed at any distance). At (0, 0)
+  // the k-th nearest position, its own counted, is 2 (k - 1) m away: k = 8 gives 14 m, k = 10 18 m (checked
+  // locally), k = 11 20 m (the support itself: not below it), k = 51 100 m; k = 52 is more than there are
+  // positions.
+  std::vector<Gps_trip> trips{
+      straight(0, 0, 1, 0, 51, 2), straight(100, 0, -1, 0, 51, 2, 1000), {{0, 0, 2000}, {100, 0, 2010}}};
   Gps_trace_options o;
   o.max_link_gap = 200;
   for (const auto& [k, local] : std::vector<std::pair<std::size_t, bool>>{
@@ -1084,15 +1126,16 @@ TEST(GpsTraces, TheLocalDistanceIsTheKthNearestPositionAtTheSparserEnd) {
     EXPECT_EQ(S.locally_checked, local ? 1u : 0u) << k;
     EXPECT_EQ(S.locally_rejected, 0u) << k;
   }
-  // The larger of the two ends counts: beyond x = 50 the fixes lie 10 m apart, so at (100, 0) the 8th nearest is
-  // 70 m away and the segment keeps the support, although at (0, 0) it is 14 m.
-  std::vector<Gps_trip> sparse_end{straight(0, 0, 1, 0, 26, 2), straight(60, 0, 1, 0, 5, 10, 1000),
-                                   {{0, 0, 2000}, {100, 0, 2010}}};
+  // The larger of the two ends counts: beyond x = 50 the fixes lie 10 m apart, so at (100, 0) the 8th nearest
+  // is 70 m away and the segment keeps the support, although at (0, 0) it is 14 m.
+  std::vector<Gps_trip> sparse_end{
+      straight(0, 0, 1, 0, 26, 2), straight(60, 0, 1, 0, 5, 10, 1000), {{0, 0, 2000}, {100, 0, 2010}}};
   o.local_support_fixes = 8;
   const Gps_trace_sample E = sample_gps_traces(sparse_end, 30.0, o);
   EXPECT_EQ(E.checked_segments, 1u);
   EXPECT_EQ(E.locally_checked, 0u);
-  // Exactly 4 x 20 m long: the segment support (an unconfirmed one would link its ends); a little longer: local.
+  // Exactly 4 x 20 m long: the segment support (an unconfirmed one would link its ends); a little longer:
+  // local.
   std::vector<Gps_trip> eighty = trips;
   eighty.back() = {{0, 0, 2000}, {80, 0, 2010}};
   EXPECT_EQ(sample_gps_traces(eighty, 30.0, o).locally_checked, 0u);
@@ -1104,8 +1147,8 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
   const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 5, 30)};
   Gps_trace_options o;
   // Both counts of nearest fixes: one above the largest allowed is named, the largest is allowed.
-  for (std::size_t Gps_trace_options::*count : {&Gps_trace_options::local_support_fixes,
-                                                &Gps_trace_options::quiet_end_fixes}) {
+  for (std::size_t Gps_trace_options::*count :
+       {&Gps_trace_options::local_support_fixes, &Gps_trace_options::quiet_end_fixes}) {
     const std::string name =
         count == &Gps_trace_options::local_support_fixes ? "local_support_fixes" : "quiet_end_fixes";
     Gps_trace_options bad = o;
@@ -1114,7 +1157,8 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
       sample_gps_traces(trips, 20.0, bad);
       ADD_FAILURE() << "no error for " << name;
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(name + " must be at most 1024, got 1025"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(name + " must be at most 1024, got 1025"), std::string::npos)
+          << e.what();
     }
     bad.*count = 1024;
     EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, bad)) << name;
@@ -1125,7 +1169,8 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
       sample_gps_traces(trips, 20.0, o);
       ADD_FAILURE() << "no error for " << bad;
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("min_local_support must be in (0, 1]"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("min_local_support must be in (0, 1]"), std::string::npos)
+          << e.what();
     }
   }
 }

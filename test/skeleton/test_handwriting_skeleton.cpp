@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// Skeletons of handwriting: the 1,000 digits of data/images/digits_1000.pgm (the example handwriting_skeleton).
-// The oracle is the ink's own topology, computed otherwise than the example's flood fill: the Euler characteristic
-// of the union of the closed ink squares (its pieces are the 8-connected pieces of ink, its holes the 4-connected
-// pieces of background inside), pieces by union-find, holes of one and two pixels by their local pattern.
+// Skeletons of handwriting: the 1,000 digits of data/images/digits_1000.pgm (the example
+// handwriting_skeleton). The oracle is the ink's own topology, computed otherwise than the example's flood
+// fill: the Euler characteristic of the union of the closed ink squares (its pieces are the 8-connected
+// pieces of ink, its holes the 4-connected pieces of background inside), pieces by union-find, holes of one
+// and two pixels by their local pattern.
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 
 #include <boost/graph/connected_components.hpp>
@@ -48,8 +49,10 @@ Ink_oracle ink_oracle(const std::vector<bool>& ink) {
     for (int x = 0; x < cell; ++x) {
       if (!at(x, y)) continue;
       ++squares;
-      corners.insert({{x, y}}), corners.insert({{x + 1, y}}), corners.insert({{x, y + 1}}), corners.insert({{x + 1, y + 1}});
-      sides.insert({{x, y, 0}}), sides.insert({{x, y + 1, 0}}), sides.insert({{x, y, 1}}), sides.insert({{x + 1, y, 1}});
+      corners.insert({{x, y}}), corners.insert({{x + 1, y}}), corners.insert({{x, y + 1}}),
+          corners.insert({{x + 1, y + 1}});
+      sides.insert({{x, y, 0}}), sides.insert({{x, y + 1, 0}}), sides.insert({{x, y, 1}}),
+          sides.insert({{x + 1, y, 1}});
       for (const auto& [dx, dy] : {std::array<int, 2>{1, 0}, {0, 1}, {1, 1}, {-1, 1}})
         if (at(x + dx, y + dy)) parent[find(y * cell + x)] = find((y + dy) * cell + x + dx);
     }
@@ -76,10 +79,10 @@ Ink_oracle ink_oracle(const std::vector<bool>& ink) {
 
 }  // namespace
 
-// Every digit's skeleton (Rips radius 1.5 pixels: the 8 neighbours; delta 3 pixels) has one component per piece
-// of ink and one loop per hole of 3 or more pixels; holes of 2 pixels may stay (their loops' persistence is about
-// delta), single pixels go. Its arcs stay within one pixel of the ink. The same holds for the transposed digit
-// (another base point, other ties on the grid).
+// Every digit's skeleton (Rips radius 1.5 pixels: the 8 neighbours; delta 3 pixels) has one component per
+// piece of ink and one loop per hole of 3 or more pixels; holes of 2 pixels may stay (their loops'
+// persistence is about delta), single pixels go. Its arcs stay within one pixel of the ink. The same holds
+// for the transposed digit (another base point, other ties on the grid).
 TEST(HandwritingSkeleton, TopologyOfTheInkOnAThousandDigits) {
   const io::Image image = io::read_image(std::string(FEATURERECON_DATA_DIR) + "/images/digits_1000.pgm");
   ASSERT_EQ(image.width, 100 * cell);
@@ -104,7 +107,8 @@ TEST(HandwritingSkeleton, TopologyOfTheInkOnAThousandDigits) {
       const Reeb_skeleton s = extract_reeb_skeleton(points, 1.5, options);
       const Skeleton_graph& g = s.graph;
       std::vector<int> component(num_vertices(g));
-      const std::size_t components = static_cast<std::size_t>(boost::connected_components(g, component.data()));
+      const std::size_t components =
+          static_cast<std::size_t>(boost::connected_components(g, component.data()));
       const std::size_t loops = num_edges(g) + components - num_vertices(g);
       SCOPED_TRACE("digit " + std::to_string(digit) + (transposed ? " transposed" : ""));
       EXPECT_EQ(components, o.pieces);

@@ -22,8 +22,8 @@ using namespace FeatureRecon::test;
 
 namespace {
 
-/// Largest distance from a skeleton vertex (input space) to the true graph, and from a dense sample of the true
-/// graph to the skeleton's polylines: the two halves of the Hausdorff distance.
+/// Largest distance from a skeleton vertex (input space) to the true graph, and from a dense sample of the
+/// true graph to the skeleton's polylines: the two halves of the Hausdorff distance.
 std::pair<double, double> hausdorff(const Skeleton_graph& g, const Segment_graph& truth) {
   const std::size_t d = truth.dimension;
   std::vector<std::vector<double>> lines;
@@ -55,22 +55,24 @@ std::pair<double, double> hausdorff(const Skeleton_graph& g, const Segment_graph
 }  // namespace
 
 // The stated bound: with per-coordinate noise 0.01 in R^50 (displacement about 0.07), sample spacing 0.25 and
-// Rips radius r = 0.7, the Hausdorff distance between the skeleton and the true graph is at most 0.7 r (0.49),
-// measured both ways along the polylines, not only at their vertices. What limits it: at a bend a level-set piece
-// holds points of both legs up to about r from the corner, and its centroid cuts the corner, the more the sharper
-// the bend. Random directions in R^50 meet at 90 +- 8 degrees; over 1000 random trees the worst distance was 0.442
-// (0.63 r, seed 9, a bend of 62 degrees; mean 0.25 at bends of 90-95 degrees, 0.38 at 65-70); 0.6 r failed 7 of
-// them, all at bends of 58-70 degrees. The figure-eights stay under 0.15: their circles bend little.
+// Rips radius r = 0.7, the Hausdorff distance between the skeleton and the true graph is at most 0.7 r
+// (0.49), measured both ways along the polylines, not only at their vertices. What limits it: at a bend a
+// level-set piece holds points of both legs up to about r from the corner, and its centroid cuts the corner,
+// the more the sharper the bend. Random directions in R^50 meet at 90 +- 8 degrees; over 1000 random trees
+// the worst distance was 0.442 (0.63 r, seed 9, a bend of 62 degrees; mean 0.25 at bends of 90-95 degrees,
+// 0.38 at 65-70); 0.6 r failed 7 of them, all at bends of 58-70 degrees. The figure-eights stay under 0.15:
+// their circles bend little.
 constexpr double rips_radius = 0.7;
 constexpr double hausdorff_bound = 0.7 * rips_radius;
-// The figure-eight's touching point is one node of degree 4 within one sample spacing of it: its position comes
-// from the few samples around it (measured: 0.02-0.10 with these samples, which take each vertex of the 64-gons
-// twice, their edges being shorter than the spacing; 0.10-0.15 with one sample every 0.25 along the circles,
-// where the node's three members lie on one side of the point).
+// The figure-eight's touching point is one node of degree 4 within one sample spacing of it: its position
+// comes from the few samples around it (measured: 0.02-0.10 with these samples, which take each vertex of the
+// 64-gons twice, their edges being shorter than the spacing; 0.10-0.15 with one sample every 0.25 along the
+// circles, where the node's three members lie on one side of the point).
 constexpr double sample_spacing = 0.25;
 
 TEST(HighDimensionalSkeleton, RandomTreesInR50) {
-  for (const std::uint32_t seed : {1u, 2u, 3u, 4u, 5u, 9u}) {  // 9: the sharpest bend of 1000 seeds, the worst
+  for (const std::uint32_t seed :
+       {1u, 2u, 3u, 4u, 5u, 9u}) {  // 9: the sharpest bend of 1000 seeds, the worst
     const Segment_graph tree = random_tree(50, 9, seed);
     const Point_matrix points = tree.noisy_sample(sample_spacing, 0.01, seed);
     Skeleton_options o;
@@ -87,12 +89,14 @@ TEST(HighDimensionalSkeleton, RandomTreesInR50) {
     const auto [to_truth, to_skeleton] = hausdorff(s.graph, tree);
     EXPECT_LE(to_truth, hausdorff_bound) << "seed " << seed;
     EXPECT_LE(to_skeleton, hausdorff_bound) << "seed " << seed;
-    for (auto v : boost::make_iterator_range(vertices(s.graph))) EXPECT_EQ(s.graph[v].input_position.size(), 50u);
+    for (auto v : boost::make_iterator_range(vertices(s.graph)))
+      EXPECT_EQ(s.graph[v].input_position.size(), 50u);
   }
 }
 
-// Both samplings of the figure-eight: the fixture's (every 64-gon vertex twice) and one sample every 0.25 along the
-// circles, where the touching point's node lies 0.10-0.15 away (0.1 was stated before: it failed there).
+// Both samplings of the figure-eight: the fixture's (every 64-gon vertex twice) and one sample every 0.25
+// along the circles, where the touching point's node lies 0.10-0.15 away (0.1 was stated before: it failed
+// there).
 class HighDimensionalFigureEight : public ::testing::TestWithParam<bool> {};
 
 TEST_P(HighDimensionalFigureEight, InR50) {
@@ -116,7 +120,7 @@ TEST_P(HighDimensionalFigureEight, InR50) {
       if (degree(v, s.graph) == 4) {  // at the touching point, the origin
         ASSERT_EQ(s.graph[v].input_position.size(), 50u);
         EXPECT_LT(FeatureRecon::skeleton::internal::point_distance(s.graph[v].input_position.data(),
-                                                                    eight.vertices[0].data(), 50),
+                                                                   eight.vertices[0].data(), 50),
                   sample_spacing)
             << "seed " << seed;
       }
@@ -142,7 +146,8 @@ TEST(HighDimensionalSkeleton, MoreNoiseBreaksTheBound) {
   const Topology t = topology(s.graph);
   const auto [to_truth, to_skeleton] = hausdorff(s.graph, eight);
   EXPECT_TRUE(t.loops != 2 || to_truth > hausdorff_bound || to_skeleton > hausdorff_bound);
-  const Reeb_skeleton clean = extract_reeb_skeleton(eight.noisy_sample(sample_spacing, 0.01, 1), rips_radius, o);
+  const Reeb_skeleton clean =
+      extract_reeb_skeleton(eight.noisy_sample(sample_spacing, 0.01, 1), rips_radius, o);
   const auto [a, b] = hausdorff(clean.graph, figure_eight(50, 2.0, 2));
   EXPECT_GT(std::max(a, b), hausdorff_bound);
 }

@@ -132,8 +132,8 @@ TEST(MapComparison, IdenticalShiftedAndPerpendicularMaps) {
 
 TEST(MapComparison, KeptSamplesShowWhatMatched) {
   // A 300 m street against a reconstruction of its first 150 m plus a parallel 150 m line 40 m away: the kept
-  // samples say which truth samples were missed (the second half) and which reconstruction samples are spurious
-  // (the far line); partners are one to one, within the threshold and agree with the counts.
+  // samples say which truth samples were missed (the second half) and which reconstruction samples are
+  // spurious (the far line); partners are one to one, within the threshold and agree with the counts.
   Embedded_graph_2 truth, rec;
   truth.positions = {{0, 0}, {300, 0}};
   truth.edges = {{0, 1}};
@@ -168,9 +168,10 @@ TEST(MapComparison, KeptSamplesShowWhatMatched) {
 }
 
 TEST(MapComparison, UnmatchedSamplesAreExplained) {
-  // Truth: two parallel streets 10 m apart (y = 0 and y = 10, x in [0, 300]). Reconstruction: one line along y = 0
-  // for x in [0, 300] (the second street is 'taken'), a line 20 m off the truth for x in [400, 500] next to a truth
-  // street there ('offset'), a north-south line crossing the truth at x = 250 ('crossing'), and a line far away
+  // Truth: two parallel streets 10 m apart (y = 0 and y = 10, x in [0, 300]). Reconstruction: one line along
+  // y = 0 for x in [0, 300] (the second street is 'taken'), a line 20 m off the truth for x in [400, 500]
+  // next to a truth street there ('offset'), a north-south line crossing the truth at x = 250 ('crossing'),
+  // and a line far away
   // ('absent'). Truth x in [600, 700] has no reconstruction near it ('absent').
   Embedded_graph_2 truth, rec;
   truth.positions = {{0, 0}, {300, 0}, {0, 10}, {300, 10}, {400, 0}, {500, 0}, {600, 0}, {700, 0}};
@@ -196,8 +197,8 @@ TEST(MapComparison, UnmatchedSamplesAreExplained) {
 }
 
 TEST(MapComparison, UnmatchedSamplesAgreeWithBruteForce) {
-  // Random road-like maps (segments at random angles, some near-parallel copies): every unmatched sample's class
-  // equals the one found by checking all samples of the other map (brute force instead of the grid).
+  // Random road-like maps (segments at random angles, some near-parallel copies): every unmatched sample's
+  // class equals the one found by checking all samples of the other map (brute force instead of the grid).
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-200, 200), a(0, 6.283185307179586), len(20, 120), off(-35, 35);
   Embedded_graph_2 truth, rec;
@@ -211,7 +212,8 @@ TEST(MapComparison, UnmatchedSamplesAgreeWithBruteForce) {
       const double d = off(rng), s = k % 4 == 0 ? 0.1 : 1.6;
       const std::uint32_t j = static_cast<std::uint32_t>(rec.positions.size());
       rec.positions.push_back({x - d * std::sin(t), y + d * std::cos(t)});
-      rec.positions.push_back({x - d * std::sin(t) + l * std::cos(t + s), y + d * std::cos(t) + l * std::sin(t + s)});
+      rec.positions.push_back(
+          {x - d * std::sin(t) + l * std::cos(t + s), y + d * std::cos(t) + l * std::sin(t + s)});
       rec.edges.push_back({j, j + 1});
     }
   }
@@ -243,8 +245,10 @@ TEST(MapComparison, UnmatchedSamplesAgreeWithBruteForce) {
     }
     return c;
   };
-  const Unmatched_sample_counts m = brute(r.ground_truth_sample_list, r.ground_truth_partner, r.reconstruction_sample_list);
-  const Unmatched_sample_counts s = brute(r.reconstruction_sample_list, g_partner, r.ground_truth_sample_list);
+  const Unmatched_sample_counts m =
+      brute(r.ground_truth_sample_list, r.ground_truth_partner, r.reconstruction_sample_list);
+  const Unmatched_sample_counts s =
+      brute(r.reconstruction_sample_list, g_partner, r.ground_truth_sample_list);
   EXPECT_EQ(b.missed.taken, m.taken);
   EXPECT_EQ(b.missed.offset, m.offset);
   EXPECT_EQ(b.missed.crossing, m.crossing);
@@ -292,14 +296,16 @@ Gps_trip trip_of(std::initializer_list<std::array<double, 2>> points) {
 TEST(TraceSupport, PinnedCases) {
   // One sample at the origin on an east-west street (bearing 90).
   const std::vector<Map_sample> s{sample_at(0, 0, 90)};
-  auto along = [&](std::vector<Gps_trip> trips, Trace_support_options o = {}) { return count_trips_along(s, trips, o)[0]; };
-  EXPECT_EQ(along({trip_of({{-100, 5}, {100, 5}})}), 1u);     // eastward, 5 m beside
-  EXPECT_EQ(along({trip_of({{100, -5}, {-100, -5}})}), 1u);   // westward counts too: bearings ignore direction
-  EXPECT_EQ(along({trip_of({{-100, 15}, {100, 15}})}), 1u);   // exactly at the radius
+  auto along = [&](std::vector<Gps_trip> trips, Trace_support_options o = {}) {
+    return count_trips_along(s, trips, o)[0];
+  };
+  EXPECT_EQ(along({trip_of({{-100, 5}, {100, 5}})}), 1u);    // eastward, 5 m beside
+  EXPECT_EQ(along({trip_of({{100, -5}, {-100, -5}})}), 1u);  // westward counts too: bearings ignore direction
+  EXPECT_EQ(along({trip_of({{-100, 15}, {100, 15}})}), 1u);  // exactly at the radius
   EXPECT_EQ(along({trip_of({{-100, 15.01}, {100, 15.01}})}), 0u);
-  EXPECT_EQ(along({trip_of({{-100, 0}, {-15, 0}})}), 1u);     // the segment's end point is the closest point
+  EXPECT_EQ(along({trip_of({{-100, 0}, {-15, 0}})}), 1u);  // the segment's end point is the closest point
   EXPECT_EQ(along({trip_of({{-100, 0}, {-15.01, 0}})}), 0u);
-  EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}), 0u);     // a crossing street: bearing 0 against 90
+  EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}), 0u);       // a crossing street: bearing 0 against 90
   EXPECT_EQ(along({trip_of({{-100, -100}, {100, 100}})}), 0u);  // 45 degrees off: not below the limit
   EXPECT_EQ(along({trip_of({{-100, -80}, {100, 80}})}), 1u);    // 38.7 degrees off
   EXPECT_EQ(along({trip_of({{0, 0}, {0, 0}, {0, 0}})}), 0u);    // a parked car has no bearing
@@ -313,7 +319,8 @@ TEST(TraceSupport, PinnedCases) {
   wide.radius = 20;
   EXPECT_EQ(along({trip_of({{-100, 15.01}, {100, 15.01}})}, wide), 1u);
   Trace_support_options any;
-  any.bearing_limit = 90;  // differences lie in [0, 90] and must be below the limit: perpendicular still fails
+  any.bearing_limit =
+      90;  // differences lie in [0, 90] and must be below the limit: perpendicular still fails
   EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}, any), 0u);
   any.bearing_limit = 90.5;
   EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}, any), 1u);
@@ -325,7 +332,8 @@ TEST(TraceSupport, PinnedCases) {
   EXPECT_EQ(along({trip_of({{-1e200, 0}, {1e200, 0}})}), 1u);
   EXPECT_EQ(along({trip_of({{-1e308, 5}, {1.7e308, 5}})}), 1u);
   EXPECT_EQ(along({trip_of({{-1e308, 16}, {1.7e308, 16}})}), 0u);
-  EXPECT_EQ(along({trip_of({{1e155, 0}, {0, 0}})}), 1u);  // the walk from the far end stops at the samples' box
+  EXPECT_EQ(along({trip_of({{1e155, 0}, {0, 0}})}),
+            1u);  // the walk from the far end stops at the samples' box
   EXPECT_EQ(along({trip_of({{1e155, 0}, {15.5, 0}})}), 0u);
   // Sloped segments between far-off fixes (beyond 2^44 radii, where the sample's position is lost in p - a):
   // decided exactly. Slope 1/1000 through (0, 10) passes 9.999995 m from the sample; through (0, 15.0078125),
@@ -335,8 +343,8 @@ TEST(TraceSupport, PinnedCases) {
   EXPECT_EQ(along({trip_of({{-1e15, 15 - 1e12}, {1e15, 15 + 1e12}})}), 1u);  // 14.9999925 m
   {
     // Samples 50 m apart on the x axis and a trip between fixes 0.8e20 and 1.1e20 m away along the direction
-    // (cos 1, sin 1), which passes 3.2-3.6 km from them (CGAL's exact kernel); in doubles p - a loses the samples'
-    // positions and every one of them seemed on the line.
+    // (cos 1, sin 1), which passes 3.2-3.6 km from them (CGAL's exact kernel); in doubles p - a loses the
+    // samples' positions and every one of them seemed on the line.
     const double bearing = std::atan2(std::cos(1.0), std::sin(1.0)) * 180 / std::acos(-1.0);
     std::vector<Map_sample> row;
     for (int i = -5; i <= 5; ++i) row.push_back(sample_at(50.0 * i, 0, bearing));
@@ -356,8 +364,8 @@ TEST(TraceSupport, PinnedCases) {
 }
 
 TEST(TraceSupport, AgreesWithBruteForce) {
-  // Random samples and random trips with long chords, repeated fixes and far-off segments against a direct check
-  // of every segment of every trip.
+  // Random samples and random trips with long chords, repeated fixes and far-off segments against a direct
+  // check of every segment of every trip.
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-150, 150), b(0, 360), step(-60, 60);
   std::vector<Map_sample> samples;
@@ -387,9 +395,11 @@ TEST(TraceSupport, AgreesWithBruteForce) {
         if (ax == bx && ay == by) continue;
         // every segment of every trip, without a grid: the projection onto the segment, clamped to its ends
         const double len2 = (bx - ax) * (bx - ax) + (by - ay) * (by - ay);
-        double s = ((samples[j].position[0] - ax) * (bx - ax) + (samples[j].position[1] - ay) * (by - ay)) / len2;
+        double s =
+            ((samples[j].position[0] - ax) * (bx - ax) + (samples[j].position[1] - ay) * (by - ay)) / len2;
         s = std::max(0.0, std::min(1.0, s));
-        const double d = std::hypot(ax + s * (bx - ax) - samples[j].position[0], ay + s * (by - ay) - samples[j].position[1]);
+        const double d = std::hypot(ax + s * (bx - ax) - samples[j].position[0],
+                                    ay + s * (by - ay) - samples[j].position[1]);
         double bearing = std::atan2(bx - ax, by - ay) * 180 / std::acos(-1.0);
         if (bearing < 0) bearing += 360;
         double diff = std::fabs(bearing - samples[j].bearing);
@@ -407,24 +417,27 @@ TEST(TraceSupport, AgreesWithBruteForce) {
 }
 
 TEST(TraceSupport, LongSegmentsAndTinyRadiiStayBounded) {
-  // 1001 samples along an east-west street from x = 0 to 1000, and trips along it whose walk over the grid would
-  // be long (a far-off fix, a radius of a millimetre or a micrometre): every sample is counted, quickly, by
-  // the grid walk or by a scan of the samples, whichever is shorter.
+  // 1001 samples along an east-west street from x = 0 to 1000, and trips along it whose walk over the grid
+  // would be long (a far-off fix, a radius of a millimetre or a micrometre): every sample is counted,
+  // quickly, by the grid walk or by a scan of the samples, whichever is shorter.
   std::vector<Map_sample> s;
   for (int i = 0; i <= 1000; ++i) s.push_back(sample_at(i, 0, 90));
   for (const double radius : {15.0, 1e-3, 1e-6})
-    for (const auto& ends : {std::array<double, 4>{1e155, 0, 0, 0}, std::array<double, 4>{-1e300, 0, 1e300, 0},
-                             std::array<double, 4>{-10, 0, 1010, 0}, std::array<double, 4>{-10, 0, 500, 0}}) {
+    for (const auto& ends :
+         {std::array<double, 4>{1e155, 0, 0, 0}, std::array<double, 4>{-1e300, 0, 1e300, 0},
+          std::array<double, 4>{-10, 0, 1010, 0}, std::array<double, 4>{-10, 0, 500, 0}}) {
       Trace_support_options o;
       o.radius = radius;
-      const std::vector<std::size_t> c = count_trips_along(s, {trip_of({{ends[0], ends[1]}, {ends[2], ends[3]}})}, o);
+      const std::vector<std::size_t> c =
+          count_trips_along(s, {trip_of({{ends[0], ends[1]}, {ends[2], ends[3]}})}, o);
       const std::size_t hit = static_cast<std::size_t>(std::count(c.begin(), c.end(), std::size_t(1)));
       const std::size_t expected = ends[2] != 500 ? 1001 : radius == 15 ? 516 : 501;  // x <= 500 + radius
       EXPECT_EQ(hit, expected) << radius << " " << ends[0] << " " << ends[2];
       EXPECT_EQ(static_cast<std::size_t>(std::count(c.begin(), c.end(), std::size_t(0))), 1001 - expected);
     }
-  // A line of slope 1/1000 through the origin between fixes at +-1e300: sample i lies i / 1000 m from it (times
-  // 0.9999995), decided exactly for each sample: all within 15 m, samples 0 and 1 within 1 mm, 0 alone within 1 um.
+  // A line of slope 1/1000 through the origin between fixes at +-1e300: sample i lies i / 1000 m from it
+  // (times 0.9999995), decided exactly for each sample: all within 15 m, samples 0 and 1 within 1 mm, 0 alone
+  // within 1 um.
   for (const auto& [radius, expected] : {std::pair{15.0, 1001}, std::pair{1e-3, 2}, std::pair{1e-6, 1}}) {
     Trace_support_options o;
     o.radius = radius;
@@ -435,8 +448,8 @@ TEST(TraceSupport, LongSegmentsAndTinyRadiiStayBounded) {
 }
 
 TEST(TraceSupport, SplitsAComparisonByTheTripsAlongItsSamples) {
-  // The truth: two parallel east-west streets 100 m apart, 200 m long; trips drive the southern one only (three
-  // trips) and the reconstruction has the southern one plus a spur that a single trip drove.
+  // The truth: two parallel east-west streets 100 m apart, 200 m long; trips drive the southern one only
+  // (three trips) and the reconstruction has the southern one plus a spur that a single trip drove.
   Embedded_graph_2 truth;
   truth.positions = {{0, 0}, {200, 0}, {0, 100}, {200, 100}};
   truth.edges = {{0, 1}, {2, 3}};
@@ -466,8 +479,8 @@ TEST(TraceSupport, SplitsAComparisonByTheTripsAlongItsSamples) {
   EXPECT_GT(b.spurious_by_trips[1], 20u);
   EXPECT_EQ(b.spurious_by_trips[0] + b.spurious_by_trips[2] + b.spurious_by_trips[3], 0u);
   EXPECT_EQ(b.spurious_by_trips[1], r.reconstruction_samples - r.matched);
-  // With a 1 m threshold the trips 2 m beside the southern street no longer drive along it: the options that go
-  // with a comparison carry its threshold and bearing limit.
+  // With a 1 m threshold the trips 2 m beside the southern street no longer drive along it: the options that
+  // go with a comparison carry its threshold and bearing limit.
   Map_comparison_options tight = o;
   tight.match_distance = 1;
   tight.bearing_limit = 30;
@@ -519,7 +532,8 @@ TEST(MapComparison, BadMapsAreNamed) {
   Embedded_graph_2 good;
   good.positions = {{0, 0}, {100, 0}};
   good.edges = {{0, 1}};
-  auto error_of = [&](const Embedded_graph_2& truth, const Embedded_graph_2& rec, Map_comparison_options o = {}) {
+  auto error_of = [&](const Embedded_graph_2& truth, const Embedded_graph_2& rec,
+                      Map_comparison_options o = {}) {
     try {
       compare_maps(truth, rec, o);
     } catch (const std::invalid_argument& e) {
@@ -530,7 +544,8 @@ TEST(MapComparison, BadMapsAreNamed) {
   // A non-finite vertex looped forever (inf) or silently dropped the samples behind it (NaN).
   Embedded_graph_2 bad = good;
   bad.positions[1][0] = std::numeric_limits<double>::infinity();
-  EXPECT_NE(error_of(good, bad).find("compare_maps: reconstruction: sample_map: vertex 1 (of edge 0) has a non-finite"),
+  EXPECT_NE(error_of(good, bad).find(
+                "compare_maps: reconstruction: sample_map: vertex 1 (of edge 0) has a non-finite"),
             std::string::npos);
   bad.positions[1][0] = std::nan("");
   EXPECT_NE(error_of(bad, good).find("compare_maps: ground truth: "), std::string::npos);
@@ -559,8 +574,8 @@ TEST(MapComparison, BadMapsAreNamed) {
 namespace {
 // Total weight (threshold - distance) of a matching given as ground-truth partners; checks that every pair is
 // admissible and the two partner lists are inverse to each other.
-double matching_weight(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G, const Map_sample_matching& M,
-                       const Map_comparison_options& o) {
+double matching_weight(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
+                       const Map_sample_matching& M, const Map_comparison_options& o) {
   EXPECT_EQ(M.ground_truth_partner.size(), H.size());
   EXPECT_EQ(M.reconstruction_partner.size(), G.size());
   double w = 0;
@@ -573,7 +588,8 @@ double matching_weight(const std::vector<Map_sample>& H, const std::vector<Map_s
     const double d = std::hypot(H[h].position[0] - G[std::size_t(g)].position[0],
                                 H[h].position[1] - G[std::size_t(g)].position[1]);
     EXPECT_LE(d, o.match_distance);
-    EXPECT_LT(skeleton::internal::bearing_difference(H[h].bearing, G[std::size_t(g)].bearing), o.bearing_limit);
+    EXPECT_LT(skeleton::internal::bearing_difference(H[h].bearing, G[std::size_t(g)].bearing),
+              o.bearing_limit);
     w += o.match_distance - d;
   }
   std::size_t back = 0;
@@ -630,7 +646,8 @@ TEST(MapComparison, OptimalMatchingPinned) {
   EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{1, 0}, 0}}, o).matched, 0u);
   EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{1, 0}, 270}}, o).matched, 1u);
   // Ties between coincident samples go to the smaller index.
-  const Map_sample_matching tie = match_map_samples({{{0, 0}, 90}}, {{{5, 0}, 90}, {{5, 0}, 90}, {{-5, 0}, 90}}, o);
+  const Map_sample_matching tie =
+      match_map_samples({{{0, 0}, 90}}, {{{5, 0}, 90}, {{5, 0}, 90}, {{-5, 0}, 90}}, o);
   EXPECT_EQ(tie.ground_truth_partner, (std::vector<std::int64_t>{0}));
   // Empty sides.
   EXPECT_EQ(match_map_samples({}, G, o).reconstruction_partner, (std::vector<std::int64_t>{-1, -1}));
@@ -655,7 +672,8 @@ TEST(MapComparison, OptimalMatchingAgreesWithBruteForce) {
           ++repeated;
           continue;
         }
-        const double x = on_lattice ? 10.0 * lattice(rng) : u(rng), y = on_lattice ? 10.0 * lattice(rng) : u(rng);
+        const double x = on_lattice ? 10.0 * lattice(rng) : u(rng),
+                     y = on_lattice ? 10.0 * lattice(rng) : u(rng);
         s.push_back({{x, y}, 30.0 * bearing(rng)});
       }
       return s;
@@ -720,8 +738,8 @@ TEST(MapComparison, BadSamplesAreNamed) {
 
 TEST(MapComparison, OptimalMatchingOfDenseClusters) {
   // Samples stacked on one point (a degenerate map): every sample of the smaller set pairs, whichever map is
-  // larger. The larger set's surplus never searches (a search through the whole cluster per surplus sample took
-  // 14 s at 3,000 against 1,500).
+  // larger. The larger set's surplus never searches (a search through the whole cluster per surplus sample
+  // took 14 s at 3,000 against 1,500).
   Map_comparison_options o;
   o.matching = Map_matching::optimal;
   const std::vector<Map_sample> many(300, Map_sample{{1, 1}, 0}), few(120, Map_sample{{1, 1}, 180});
@@ -730,9 +748,10 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
   EXPECT_EQ(b.matched, 120u);
   EXPECT_DOUBLE_EQ(matching_weight(many, few, a, o), 120 * 15.0);
   EXPECT_DOUBLE_EQ(matching_weight(few, many, b, o), 120 * 15.0);
-  // The side assigned is chosen per connected component of the admissible pairs: here the cluster's smaller side
-  // belongs to the map that is larger overall (1,000 samples elsewhere), and the surplus of the cluster still never
-  // searches (chosen by the whole maps, each of the 180 surplus samples settled the 120 matched ones: 21,600).
+  // The side assigned is chosen per connected component of the admissible pairs: here the cluster's smaller
+  // side belongs to the map that is larger overall (1,000 samples elsewhere), and the surplus of the cluster
+  // still never searches (chosen by the whole maps, each of the 180 surplus samples settled the 120 matched
+  // ones: 21,600).
   std::vector<Map_sample> few_and_far = few;
   for (int i = 0; i < 1000; ++i) few_and_far.push_back(Map_sample{{1000.0 + 20 * i, 0}, 90});
   for (const bool swap : {false, true}) {
@@ -742,12 +761,13 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
     P.ground_truth_partner.assign(H.size(), -1);
     P.reconstruction_partner.assign(G.size(), -1);
     std::size_t searched = 0;
-    ASSERT_TRUE(skeleton::internal::match_optimal(H, G, o, P, "match_map_samples", std::size_t(1) << 26, &searched));
+    ASSERT_TRUE(
+        skeleton::internal::match_optimal(H, G, o, P, "match_map_samples", std::size_t(1) << 26, &searched));
     EXPECT_EQ(P.matched, 120u);
     EXPECT_LT(searched, 1000u) << "swap " << swap;
   }
-  // Components of different sizes, some with the ground truth smaller, some with the reconstruction smaller, are
-  // each matched optimally (the weight of the whole equals the sum over the parts).
+  // Components of different sizes, some with the ground truth smaller, some with the reconstruction smaller,
+  // are each matched optimally (the weight of the whole equals the sum over the parts).
   std::vector<Map_sample> H2, G2;
   double by_parts = 0;
   for (int c = 0; c < 6; ++c) {
@@ -778,10 +798,10 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
 }
 
 TEST(MapComparison, PairsExactlyAtTheMatchDistanceAreSeenWhateverTheGridsCorner) {
-  // h0 and g1 lie exactly match_distance apart: an admissible pair. The grid's rounding of (p - low) / cell put
-  // them two cells apart, so whether the pair was seen depended on the grid's corner: with a far sample g2 the
-  // optimal matching paired both ground-truth samples, without it only one (and before the pairs were enumerated
-  // once, neither way round). Every pair at the limit is now a candidate.
+  // h0 and g1 lie exactly match_distance apart: an admissible pair. The grid's rounding of (p - low) / cell
+  // put them two cells apart, so whether the pair was seen depended on the grid's corner: with a far sample
+  // g2 the optimal matching paired both ground-truth samples, without it only one (and before the pairs were
+  // enumerated once, neither way round). Every pair at the limit is now a candidate.
   Map_comparison_options o;
   o.matching = Map_matching::optimal;
   o.match_distance = 2.5088616021043775;
@@ -801,9 +821,10 @@ TEST(MapComparison, PairsExactlyAtTheMatchDistanceAreSeenWhateverTheGridsCorner)
 }
 
 TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
-  // A grid of 30x30 blocks of 100 m (about 35,000 samples) against itself shifted by 3 m: both matchings report
-  // increasing fractions ending at 1 (and below 1 before the end) and score what they score unwatched; a stop at
-  // any report leaves the samples, no pair and status interrupted, and the callback is not asked again.
+  // A grid of 30x30 blocks of 100 m (about 35,000 samples) against itself shifted by 3 m: both matchings
+  // report increasing fractions ending at 1 (and below 1 before the end) and score what they score unwatched;
+  // a stop at any report leaves the samples, no pair and status interrupted, and the callback is not asked
+  // again.
   const Embedded_graph_2 gt = grid_map(31, 100.0), rec = grid_map(31, 100.0, 3.0, 0.0);
   for (const Map_matching matching : {Map_matching::greedy, Map_matching::optimal}) {
     Map_comparison_options options;
@@ -840,7 +861,8 @@ TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
       EXPECT_EQ(stopped.reconstruction_samples, plain.reconstruction_samples) << allowed;
       EXPECT_EQ(stopped.ground_truth_sample_list.size(), plain.ground_truth_samples) << allowed;
       EXPECT_EQ(stopped.reconstruction_sample_list.size(), plain.reconstruction_samples) << allowed;
-      EXPECT_EQ(stopped.ground_truth_partner, std::vector<std::int64_t>(plain.ground_truth_samples, -1)) << allowed;
+      EXPECT_EQ(stopped.ground_truth_partner, std::vector<std::int64_t>(plain.ground_truth_samples, -1))
+          << allowed;
       EXPECT_EQ(stopped.reconstruction_partner, std::vector<std::int64_t>(plain.reconstruction_samples, -1))
           << allowed;
     }
@@ -858,9 +880,9 @@ TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
 
 TEST(MapComparison, GreedyProgressStaysBelowOneUntilTheEnd) {
   // 5,000 ground-truth samples in a cluster of 0.1 m against 10 reconstruction samples 1 to 10 m from it in a
-  // row: every sample proposes to each of the 10 in turn, each taken before it comes back. The greedy matching's
-  // fraction counts settled samples, not searches, and 1 comes only at the end (it reached 1 eleven times before
-  // the end when it counted searches).
+  // row: every sample proposes to each of the 10 in turn, each taken before it comes back. The greedy
+  // matching's fraction counts settled samples, not searches, and 1 comes only at the end (it reached 1
+  // eleven times before the end when it counted searches).
   std::vector<Map_sample> H, G;
   for (int i = 0; i < 5000; ++i) H.push_back({{0.001 * (i % 100), 0.001 * (i / 100)}, 0.0});
   for (int i = 0; i < 10; ++i) G.push_back({{1.0 + i, 0.0}, 0.0});
@@ -879,9 +901,11 @@ TEST(MapComparison, GreedyProgressStaysBelowOneUntilTheEnd) {
 }
 
 namespace {
-// The trace points of crop_map_to_trips() made independently: every fix, and for consecutive fixes (by time) at
-// most max_gap apart and more than trace_step apart, the points j / k of the way, k = ceil(d / trace_step).
-std::vector<std::array<double, 2>> brute_trace_points(std::vector<Gps_trip> trips, const Map_crop_options& o) {
+// The trace points of crop_map_to_trips() made independently: every fix, and for consecutive fixes (by time)
+// at most max_gap apart and more than trace_step apart, the points j / k of the way, k = ceil(d /
+// trace_step).
+std::vector<std::array<double, 2>> brute_trace_points(std::vector<Gps_trip> trips,
+                                                      const Map_crop_options& o) {
   std::vector<std::array<double, 2>> p;
   for (Gps_trip& t : trips) {
     std::stable_sort(t.begin(), t.end(), [](const Gps_fix& a, const Gps_fix& b) { return a.time < b.time; });
@@ -902,7 +926,8 @@ std::vector<std::array<double, 2>> brute_trace_points(std::vector<Gps_trip> trip
 TEST(CropMapToTrips, MatchesABruteForceOnRandomTrips) {
   // A 6 x 6 grid of 40 m blocks and random trips wandering over it (fixes 5-60 m apart, some far jumps, times
   // shuffled within a trip): the edges kept are those whose 5 m samples all have a brute-force trace point
-  // within the radius (samples a little inside or outside the radius decide the same: none lies within 1e-9 of it).
+  // within the radius (samples a little inside or outside the radius decide the same: none lies within 1e-9
+  // of it).
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> u(0, 1);
   const Embedded_graph_2 map = grid_map(6, 40);
@@ -945,8 +970,8 @@ TEST(CropMapToTrips, MatchesABruteForceOnRandomTrips) {
 }
 
 TEST(CropMapToTrips, AStreetBetweenSparseFixesStays) {
-  // One 60 m street driven by one trip with a fix at each end: its middle lies 30 m from both, beyond the 25 m
-  // radius, so with the fixes alone (max_gap 0; what evaluate-map did before) it was cropped away; the
+  // One 60 m street driven by one trip with a fix at each end: its middle lies 30 m from both, beyond the 25
+  // m radius, so with the fixes alone (max_gap 0; what evaluate-map did before) it was cropped away; the
   // interpolated points keep it. A gap above max_gap is not bridged; the samples are 5 m apart whatever else.
   Embedded_graph_2 street;
   street.positions = {{0, 0}, {60, 0}};

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
-// compute_reeb_graph_persistence() against GUDHI's extended persistence of the complex (lower-star filtration),
-// design notes 1.2: sublevel branches = Ord0(K), superlevel branches = Rel1(K), loops = Ext-1(K),
-// essential = Ext+0(K). Values are the simulation-of-simplicity ranks, so the comparison is exact.
+// compute_reeb_graph_persistence() against GUDHI's extended persistence of the complex (lower-star
+// filtration), design notes 1.2: sublevel branches = Ord0(K), superlevel branches = Rel1(K), loops =
+// Ext-1(K), essential = Ext+0(K). Values are the simulation-of-simplicity ranks, so the comparison is exact.
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
@@ -33,11 +33,13 @@ std::vector<Point_pair> as_pairs(const std::vector<Reeb_persistence_pair>& v) {
 std::size_t compared_points = 0, compared_loops = 0;
 
 /// Compares the Reeb graph persistence of (K, f) with GUDHI's diagrams of K, in rank space.
-void expect_matches_gudhi(const Simplicial_complex_2& K, const std::vector<double>& f, const std::string& what) {
+void expect_matches_gudhi(const Simplicial_complex_2& K, const std::vector<double>& f,
+                          const std::string& what) {
   const Augmented_reeb_graph A0 = compute_augmented_reeb_graph(K, f);
   std::vector<double> rank_f(K.number_of_vertices);
   std::vector<long> rank_l(K.number_of_vertices);
-  for (std::size_t v = 0; v < K.number_of_vertices; ++v) rank_l[v] = static_cast<long>(rank_f[v] = A0.rank()[v]);
+  for (std::size_t v = 0; v < K.number_of_vertices; ++v)
+    rank_l[v] = static_cast<long>(rank_f[v] = A0.rank()[v]);
   const Reeb_graph R = compute_augmented_reeb_graph(K, rank_f).reeb_graph();
   const Reeb_graph_persistence P = compute_reeb_graph_persistence(R);
   std::vector<std::vector<int>> simplices;
@@ -48,7 +50,8 @@ void expect_matches_gudhi(const Simplicial_complex_2& K, const std::vector<doubl
   EXPECT_EQ(as_pairs(P.superlevel_branches), d.rel[1]) << what << ": superlevel branches vs Rel1";
   EXPECT_EQ(as_pairs(P.loops), d.ext_minus[1]) << what << ": loops vs Ext-1";
   std::vector<Point_pair> essential = as_pairs(P.essential);
-  essential.erase(std::remove_if(essential.begin(), essential.end(), [](const Point_pair& p) { return p.first == p.second; }),
+  essential.erase(std::remove_if(essential.begin(), essential.end(),
+                                 [](const Point_pair& p) { return p.first == p.second; }),
                   essential.end());
   EXPECT_EQ(essential, d.ext_plus[0]) << what << ": essential vs Ext+0";
   EXPECT_EQ(P.loops.size(), R.loops()) << what;
@@ -80,16 +83,20 @@ TEST(ReebGraphPersistence, MatchesGudhiOnRandomRipsComplexes) {
     const Simplicial_complex_2 K = build_rips_complex_2(s.points, radius);
     std::vector<double> f;
     switch (trial % 3) {
-      case 0: f = compute_geodesic_function(K).values; break;
+      case 0:
+        f = compute_geodesic_function(K).values;
+        break;
       case 1: {
         const double a = std::uniform_real_distribution<double>(0, 6.3)(rng);
         for (const auto& p : s.points) f.push_back(std::cos(a) * p[0] + std::sin(a) * p[1]);
         break;
       }
       default:  // a rough random function: many branches and loops
-        for (std::size_t i = 0; i < s.points.size(); ++i) f.push_back(std::uniform_real_distribution<double>()(rng));
+        for (std::size_t i = 0; i < s.points.size(); ++i)
+          f.push_back(std::uniform_real_distribution<double>()(rng));
     }
-    expect_matches_gudhi(K, f, (trial % 4 == 3 ? std::string("cloud") : shape.first) + " trial " + std::to_string(trial));
+    expect_matches_gudhi(
+        K, f, (trial % 4 == 3 ? std::string("cloud") : shape.first) + " trial " + std::to_string(trial));
   }
   // The comparisons covered many branches and loops (the random functions make hundreds).
   EXPECT_GT(compared_points, 200u) << compared_loops << " loops";
@@ -99,8 +106,8 @@ TEST(ReebGraphPersistence, MatchesGudhiOnRandomRipsComplexes) {
 
 TEST(ReebGraphPersistence, MatchesGudhiOnStreetGridsWithManyLoops) {
   // Street grids (the 1-skeleton of an m x m grid, no triangles) with random functions and with ties: every
-  // block is a loop, and the loops' thin cycles cross each other. The loop pass keeps a maximum spanning forest
-  // over the sweep; this checks its swaps on hundreds of loops at once.
+  // block is a loop, and the loops' thin cycles cross each other. The loop pass keeps a maximum spanning
+  // forest over the sweep; this checks its swaps on hundreds of loops at once.
   std::mt19937 rng(17);
   const std::size_t before = compared_loops;
   for (const int m : {12, 25}) {
@@ -113,7 +120,9 @@ TEST(ReebGraphPersistence, MatchesGudhiOnStreetGridsWithManyLoops) {
           if (j + 1 < m) edges.push_back({k, static_cast<Vertex_index>(k + 1)});
         }
       std::vector<double> f(static_cast<std::size_t>(m * m));
-      for (double& x : f) x = ties ? std::uniform_int_distribution<int>(0, 5)(rng) : std::uniform_real_distribution<double>()(rng);
+      for (double& x : f)
+        x = ties ? std::uniform_int_distribution<int>(0, 5)(rng)
+                 : std::uniform_real_distribution<double>()(rng);
       const auto c = make(f.size(), edges, {}, f);
       expect_matches_gudhi(c.complex, c.f, "grid " + std::to_string(m) + (ties ? " with ties" : ""));
     }
@@ -160,8 +169,8 @@ TEST(ReebGraphPersistence, HandExamples) {
     EXPECT_EQ(p.persistence(), 10.0);
   }
   // Two stacked loops: the thin upper loop (bottom 5, top 6) and the tall lower one (bottom 0, top 4).
-  const auto eight = make(7, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}, {4, 5}, {4, 6}, {5, 6}}, {},
-                          {0, 1, 2, 4, 5, 5.5, 6});
+  const auto eight =
+      make(7, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}, {4, 5}, {4, 6}, {5, 6}}, {}, {0, 1, 2, 4, 5, 5.5, 6});
   const Reeb_graph_persistence Pe = compute_reeb_graph_persistence(reeb_graph_of(eight));
   ASSERT_EQ(Pe.loops.size(), 2u);
   EXPECT_DOUBLE_EQ(Pe.loops[0].persistence(), 4.0);  // born at 3 (f = 4), dies at 0
@@ -212,8 +221,8 @@ TEST(ReebGraphPersistence, EmptyAndBadInput) {
 }
 
 TEST(ReebGraphPersistence, ForkOfHighDegree) {
-  // Two nodes joined by k parallel arcs: k - 1 loops, each of persistence 1. The fork's earlier arcs are marked
-  // once per fork (a copy per loop took O(k^2) memory: 3 GB at k = 20000).
+  // Two nodes joined by k parallel arcs: k - 1 loops, each of persistence 1. The fork's earlier arcs are
+  // marked once per fork (a copy per loop took O(k^2) memory: 3 GB at k = 20000).
   const std::size_t k = 5000;
   Reeb_graph R;
   R.nodes.resize(2);

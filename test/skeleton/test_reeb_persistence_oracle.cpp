@@ -9,7 +9,6 @@
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,14 +29,16 @@ using FeatureRecon::test::gudhi_extended_persistence;
 
 /// Diagrams of the complex K and of its Reeb graph R (each arc subdivided once so that parallel arcs become
 /// simplicial: a midpoint with value 2*rank(lower)+1, nodes at 2*rank).
-std::pair<Extended_diagrams, Extended_diagrams> diagrams(const Simplicial_complex_2& K, const std::vector<double>& f) {
+std::pair<Extended_diagrams, Extended_diagrams> diagrams(const Simplicial_complex_2& K,
+                                                         const std::vector<double>& f) {
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, f);
   const std::size_t n = K.number_of_vertices;
   std::vector<long> rank2(n);
   for (std::size_t v = 0; v < n; ++v) rank2[v] = 2 * static_cast<long>(A.rank()[v]);
   std::vector<std::vector<int>> ks;
   for (const Edge& e : K.edges) ks.push_back({static_cast<int>(e[0]), static_cast<int>(e[1])});
-  for (const Triangle& t : K.triangles) ks.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+  for (const Triangle& t : K.triangles)
+    ks.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
   std::vector<std::vector<int>> rs;
   std::vector<long> rvalue = rank2;
   for (const auto& a : A.arcs()) {
@@ -49,8 +50,8 @@ std::pair<Extended_diagrams, Extended_diagrams> diagrams(const Simplicial_comple
   return {gudhi_extended_persistence(n, ks, rank2), gudhi_extended_persistence(rvalue.size(), rs, rvalue)};
 }
 
-/// Compares the diagrams; returns the number of diagram points of K compared (Ord0, Rel1, Ext+0, Ext-1) and adds
-/// the loops (Ext-1) to `loops` when given.
+/// Compares the diagrams; returns the number of diagram points of K compared (Ord0, Rel1, Ext+0, Ext-1) and
+/// adds the loops (Ext-1) to `loops` when given.
 std::size_t expect_reeb_diagrams_match(const Simplicial_complex_2& K, const std::vector<double>& f,
                                        const std::string& what, std::size_t* loops = nullptr) {
   const auto [dk, dr] = diagrams(K, f);

@@ -46,7 +46,7 @@ TEST(RepairReebGraph, JoinsABrokenPathAndSimplifies) {
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(c.complex, c.f);
   const Reeb_graph R = A.reeb_graph();
   ASSERT_EQ(R.components, 2u);
-  EXPECT_EQ(repair_reeb_graph(R, 0.5, pts).joined, 0u);  // too far
+  EXPECT_EQ(repair_reeb_graph(R, 0.5, pts).joined, 0u);             // too far
   const Reeb_repair_result fixed = repair_reeb_graph(R, 1.0, pts);  // inclusive
   EXPECT_EQ(fixed.joined, 1u);
   EXPECT_EQ(fixed.graph.components, 1u);
@@ -95,8 +95,8 @@ TEST(RepairReebGraph, NeverJoinsTheEndsOfOneSegment) {
   EXPECT_EQ(fixed.joined, 0u);
   EXPECT_EQ(fixed.graph.loops(), 0u);
   EXPECT_EQ(fixed.graph.arcs.size(), A.reeb_graph().arcs.size());
-  // With the segment 5-6 (1.5 to 2.5) beside it, the closest ends of the two segments join (2 and 5, 0.5 apart)
-  // and then no other pair is free.
+  // With the segment 5-6 (1.5 to 2.5) beside it, the closest ends of the two segments join (2 and 5, 0.5
+  // apart) and then no other pair is free.
   const auto c2 = make(7, {{0, 1}, {1, 2}, {3, 4}, {5, 6}}, {}, f);
   const Augmented_reeb_graph B = compute_augmented_reeb_graph(c2.complex, c2.f);
   const Reeb_repair_result two = repair_reeb_graph(B.reeb_graph(), 2.0, pts);
@@ -108,9 +108,9 @@ TEST(RepairReebGraph, NeverJoinsTheEndsOfOneSegment) {
 }
 
 namespace {
-/// A "lollipop": a stub 0-1-2 from the minimum (f = 0, 0.1, 0.2) into a cycle 2..9 (f rising to 1 at vertex 6),
-/// plus a separate short path 10-11 (f = 5, 5.25: its height 0.25 is exact in binary, so that the pruning test
-/// below checks the boundary; 5.3 - 5 rounds to 0.29999999999999982).
+/// A "lollipop": a stub 0-1-2 from the minimum (f = 0, 0.1, 0.2) into a cycle 2..9 (f rising to 1 at vertex
+/// 6), plus a separate short path 10-11 (f = 5, 5.25: its height 0.25 is exact in binary, so that the pruning
+/// test below checks the boundary; 5.3 - 5 rounds to 0.29999999999999982).
 Complex_with_function lollipop() {
   std::vector<Edge> e{{0, 1}, {1, 2}};
   std::vector<double> f{0.0, 0.1, 0.2};
@@ -128,8 +128,8 @@ Complex_with_function lollipop() {
 TEST(TrimEssentialStubs, ContractsTheSpurAtTheMinimumOnly) {
   const Reeb_graph R = reeb_graph_of(lollipop());
   ASSERT_EQ(R.loops(), 1u);
-  // Stub height 0.2: kept at 0.1, contracted at 0.2 (inclusive). The maximum (vertex 6) closes the loop (degree 2):
-  // not a stub. The path 10-11 has no fork: untouched.
+  // Stub height 0.2: kept at 0.1, contracted at 0.2 (inclusive). The maximum (vertex 6) closes the loop
+  // (degree 2): not a stub. The path 10-11 has no fork: untouched.
   EXPECT_EQ(trim_essential_stubs(R, 0.1).trimmed, 0u);
   const Reeb_trim_result t = trim_essential_stubs(R, 0.2);
   EXPECT_EQ(t.trimmed, 1u);
@@ -138,7 +138,8 @@ TEST(TrimEssentialStubs, ContractsTheSpurAtTheMinimumOnly) {
   EXPECT_EQ(t.graph.loops(), 1u);
   EXPECT_EQ(t.graph.components, 2u);
   // The fork (vertex 2) became the minimum of its component and holds the stub's points.
-  const auto fork = std::find_if(t.graph.nodes.begin(), t.graph.nodes.end(), [](const auto& n) { return n.vertex == 2; });
+  const auto fork =
+      std::find_if(t.graph.nodes.begin(), t.graph.nodes.end(), [](const auto& n) { return n.vertex == 2; });
   ASSERT_NE(fork, t.graph.nodes.end());
   EXPECT_TRUE(fork->type & minimum);
   std::vector<Vertex_index> m = fork->members;
@@ -149,10 +150,12 @@ TEST(TrimEssentialStubs, ContractsTheSpurAtTheMinimumOnly) {
 }
 
 TEST(TrimEssentialStubs, AYLosesOneStubNotItsBranch) {
-  // Minimum 0 (f 0) -> fork 1 (f 1) -> maxima 2 (f 1.5) and 3 (f 1.8): both ends are stubs of the fork. Trimming
-  // both contracted the branch (1.5, 1) too; now the minimum goes and the fork, left with two arcs, stays.
+  // Minimum 0 (f 0) -> fork 1 (f 1) -> maxima 2 (f 1.5) and 3 (f 1.8): both ends are stubs of the fork.
+  // Trimming both contracted the branch (1.5, 1) too; now the minimum goes and the fork, left with two arcs,
+  // stays.
   Reeb_graph R;
-  for (const auto& [v, f] : std::vector<std::pair<Vertex_index, double>>{{0, 0}, {1, 1}, {2, 1.5}, {3, 1.8}}) {
+  for (const auto& [v, f] :
+       std::vector<std::pair<Vertex_index, double>>{{0, 0}, {1, 1}, {2, 1.5}, {3, 1.8}}) {
     Reeb_graph::Node n;
     n.vertex = v;
     n.value = f;
@@ -173,7 +176,7 @@ TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   const Reeb_graph R = reeb_graph_of(lollipop());
   ASSERT_EQ(R.components, 2u);
   EXPECT_EQ(prune_reeb_graph_components(R, 0.24).removed_components, 0u);  // 10-11 has height 0.25
-  const Reeb_prune_result p = prune_reeb_graph_components(R, 0.25);  // at most: inclusive
+  const Reeb_prune_result p = prune_reeb_graph_components(R, 0.25);        // at most: inclusive
   EXPECT_EQ(p.removed_components, 1u);
   EXPECT_EQ(p.removed_vertices, (std::vector<Vertex_index>{10, 11}));
   EXPECT_EQ(p.graph.components, 1u);
@@ -211,7 +214,8 @@ TEST(ConnectDeadEnds, ClosesATJunctionGap) {
   const Complex_with_function c = make(pts.p.size(), edges, {}, f);
   const Reeb_graph R = reeb_graph_of(c);
   ASSERT_EQ(R.components, 2u);
-  // 1.4 is too short; 1.5 reaches vertex 5 (at (5, 0)), an interior vertex of the horizontal arc: it is split.
+  // 1.4 is too short; 1.5 reaches vertex 5 (at (5, 0)), an interior vertex of the horizontal arc: it is
+  // split.
   EXPECT_EQ(connect_dead_ends(R, c.f, 1.4, pts).connected, 0u);
   const Reeb_dead_end_result joined = connect_dead_ends(R, c.f, 1.5, pts);
   EXPECT_EQ(joined.connected, 1u);
@@ -239,15 +243,16 @@ TEST(ConnectDeadEnds, ClosesATJunctionGap) {
     }
   }
   EXPECT_EQ(degree_three, 1u);
-  // Arcs in the order of Reeb_graph::arcs: by lower node, then by the (f, index) order of the first vertex each
-  // reaches. At the split node (vertex 5) the horizontal arc's first vertex 6 (f 6) comes before the link to the
-  // dead end at vertex 11 (f 6.5), although the link's upper node has the smaller index.
+  // Arcs in the order of Reeb_graph::arcs: by lower node, then by the (f, index) order of the first vertex
+  // each reaches. At the split node (vertex 5) the horizontal arc's first vertex 6 (f 6) comes before the
+  // link to the dead end at vertex 11 (f 6.5), although the link's upper node has the smaller index.
   auto first_reached = [&G](const Reeb_graph::Arc& a) {
     return a.vertices.empty() ? G.nodes[a.upper].vertex : a.vertices.front();
   };
   for (std::size_t k = 1; k < G.arcs.size(); ++k) {
     const Vertex_index p = first_reached(G.arcs[k - 1]), q = first_reached(G.arcs[k]);
-    EXPECT_LE(std::make_tuple(G.arcs[k - 1].lower, c.f[p], p), std::make_tuple(G.arcs[k].lower, c.f[q], q)) << k;
+    EXPECT_LE(std::make_tuple(G.arcs[k - 1].lower, c.f[p], p), std::make_tuple(G.arcs[k].lower, c.f[q], q))
+        << k;
   }
   // The dead end of the horizontal path at vertex 0 or 10 has nothing else in reach; the result is the same
   // whatever order the ends come in (deterministic), and simplification accepts it.
@@ -257,9 +262,9 @@ TEST(ConnectDeadEnds, ClosesATJunctionGap) {
 }
 
 TEST(ConnectDeadEnds, LeavesShortIsolatedSegmentsAlone) {
-  // A horizontal path 0..10 and a short vertical segment (vertices 11, 12 at (5, 1.5) and (5, 2.5)): its ends are
-  // 1 apart, within the distance 2, so it is a blob rather than a street that stops short, and stays apart. A
-  // segment of length 3 (ends 3 apart) is a street end: its lower end connects.
+  // A horizontal path 0..10 and a short vertical segment (vertices 11, 12 at (5, 1.5) and (5, 2.5)): its ends
+  // are 1 apart, within the distance 2, so it is a blob rather than a street that stops short, and stays
+  // apart. A segment of length 3 (ends 3 apart) is a street end: its lower end connects.
   for (const double length : {1.0, 3.0}) {
     Line pts;
     std::vector<Edge> edges;
@@ -315,10 +320,12 @@ TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
   Reeb_graph bad = R;
   bad.arcs[0].upper = 7;  // was a heap overflow in all four
   for (const std::string& e : all(bad, f))
-    EXPECT_NE(e.find("arc 0 joins nodes 0 and 7: it must go up between nodes in [0, 2)"), std::string::npos) << e;
+    EXPECT_NE(e.find("arc 0 joins nodes 0 and 7: it must go up between nodes in [0, 2)"), std::string::npos)
+        << e;
   bad = R;
   std::swap(bad.arcs[0].lower, bad.arcs[0].upper);
-  for (const std::string& e : all(bad, f)) EXPECT_NE(e.find("arc 0 joins nodes 1 and 0"), std::string::npos) << e;
+  for (const std::string& e : all(bad, f))
+    EXPECT_NE(e.find("arc 0 joins nodes 1 and 0"), std::string::npos) << e;
   bad = R;
   bad.nodes[1].value = std::nan("");
   for (const std::string& e : all(bad, f)) EXPECT_NE(e.find("node 1 has value nan"), std::string::npos) << e;
@@ -328,13 +335,15 @@ TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
     EXPECT_NE(e.find("nodes 0 and 1 are not in increasing (value, vertex) order"), std::string::npos) << e;
   bad = R;
   bad.arcs[0].vertices.push_back(9);  // connect_dead_ends reads the values of the vertices it splits at
-  EXPECT_NE(error_of([&] { connect_dead_ends(bad, f, 1.0, pts); }).find("arc 0 has vertex 9 out of range [0, 4)"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { connect_dead_ends(bad, f, 1.0, pts); }).find("arc 0 has vertex 9 out of range [0, 4)"),
+      std::string::npos);
   // An arc vertex of value NaN would become a node of value NaN (out of order) where a dead end joins it.
   std::vector<double> nan_at_1 = f;
   nan_at_1[1] = std::nan("");
-  EXPECT_NE(error_of([&] { connect_dead_ends(R, nan_at_1, 1.0, pts); }).find("arc 0 has vertex 1 of value nan"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { connect_dead_ends(R, nan_at_1, 1.0, pts); }).find("arc 0 has vertex 1 of value nan"),
+      std::string::npos);
 }
 
 namespace {
@@ -354,9 +363,10 @@ bool same_graph(const Reeb_graph& a, const Reeb_graph& b) {
 }  // namespace
 
 namespace {
-/// A comb: a street of `length` vertices on the x axis (one arc) and, over every other street vertex, a vertical
-/// stub from y = 0.5 (its dead end, 0.5 above the street) to y = 5. f = x + y / 1000 on the street; on the stubs
-/// the same (their dead ends come in node order from the bottom of the street up) or its negative (top down).
+/// A comb: a street of `length` vertices on the x axis (one arc) and, over every other street vertex, a
+/// vertical stub from y = 0.5 (its dead end, 0.5 above the street) to y = 5. f = x + y / 1000 on the street;
+/// on the stubs the same (their dead ends come in node order from the bottom of the street up) or its
+/// negative (top down).
 struct Comb {
   Line pts;
   std::vector<double> f;
@@ -386,10 +396,10 @@ Comb comb(std::size_t length, bool top_down) {
 
 TEST(ConnectDeadEnds, SplitsMoveTheShorterSideAndKeepNoSpareCapacity) {
   // Every stub splits the street. Each split copied the rest of the street into a new arc and left the old
-  // vector's capacity in place: from the bottom up, about length^2 / 8 vertices copied (quadratic time, with the
-  // bound too) and a result holding 25 million vertices of capacity for 5000 at length 10000. A split now moves
-  // its shorter side (here the one street vertex since the previous stub's split, in either direction), and the
-  // result's vectors hold their vertices only. Counts, not times.
+  // vector's capacity in place: from the bottom up, about length^2 / 8 vertices copied (quadratic time, with
+  // the bound too) and a result holding 25 million vertices of capacity for 5000 at length 10000. A split now
+  // moves its shorter side (here the one street vertex since the previous stub's split, in either direction),
+  // and the result's vectors hold their vertices only. Counts, not times.
   for (const bool top_down : {false, true}) {
     for (const std::size_t length : {std::size_t(2000), std::size_t(20000)}) {
       const Comb c = comb(length, top_down);
@@ -417,11 +427,11 @@ TEST(ConnectDeadEnds, SplitsMoveTheShorterSideAndKeepNoSpareCapacity) {
 }
 
 TEST(ConnectDeadEnds, ADeadEndNeverClosesItsOwnStreetWhateverTheOrder) {
-  // A U-shaped street (one arc): from (-5, 3) right to (10, 3), down to (10, 0) and back left to its dead end u
-  // at (0, 0), 3 below its own far part. A stub (5, -1.5) to (5, -8) ends 1.5 below the street's (5, 0): it
-  // splits the street there. Only the piece of the street at u was excluded, so u joined (0, 3) across the split,
-  // closing a loop of the street itself, when the stub came first in node order (low f) and not when it came
-  // after u (high f). Now u's whole input arc is its own street, split or not.
+  // A U-shaped street (one arc): from (-5, 3) right to (10, 3), down to (10, 0) and back left to its dead end
+  // u at (0, 0), 3 below its own far part. A stub (5, -1.5) to (5, -8) ends 1.5 below the street's (5, 0): it
+  // splits the street there. Only the piece of the street at u was excluded, so u joined (0, 3) across the
+  // split, closing a loop of the street itself, when the stub came first in node order (low f) and not when
+  // it came after u (high f). Now u's whole input arc is its own street, split or not.
   for (const double stub_f : {0.0, 1000.0}) {
     Line pts;
     std::vector<Edge> edges;
@@ -509,9 +519,9 @@ Point_matrix random_dashes(std::uint32_t seed) {
 }  // namespace
 
 TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
-  // Random dashes in the plane (ties on a lattice in half the runs): repair and dead-end connection with the x
-  // coordinate as a 1-Lipschitz bound give exactly the graphs of the all-pairs search, and measure far fewer
-  // pairs.
+  // Random dashes in the plane (ties on a lattice in half the runs): repair and dead-end connection with the
+  // x coordinate as a 1-Lipschitz bound give exactly the graphs of the all-pairs search, and measure far
+  // fewer pairs.
   for (std::uint32_t seed = 1; seed <= 12; ++seed) {
     const Point_matrix m = random_dashes(seed);
     const Proximity_graph g = build_rips_graph(m, 1.0);
@@ -532,8 +542,10 @@ TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
       const Reeb_repair_result fast = repair_reeb_graph(R, reach, distance(&bounded_pairs), x);
       EXPECT_EQ(plain.joined, fast.joined) << "seed " << seed << ", reach " << reach;
       EXPECT_TRUE(same_graph(plain.graph, fast.graph)) << "seed " << seed << ", reach " << reach;
-      const Reeb_dead_end_result ends = connect_dead_ends(plain.graph, geo.values, reach, distance(&all_pairs));
-      const Reeb_dead_end_result quick = connect_dead_ends(plain.graph, geo.values, reach, distance(&bounded_pairs), x);
+      const Reeb_dead_end_result ends =
+          connect_dead_ends(plain.graph, geo.values, reach, distance(&all_pairs));
+      const Reeb_dead_end_result quick =
+          connect_dead_ends(plain.graph, geo.values, reach, distance(&bounded_pairs), x);
       EXPECT_GT(ends.connected, 0u) << "seed " << seed << ", reach " << reach;
       EXPECT_EQ(ends.connected, quick.connected) << "seed " << seed << ", reach " << reach;
       EXPECT_TRUE(same_graph(ends.graph, quick.graph)) << "seed " << seed << ", reach " << reach;
@@ -543,9 +555,9 @@ TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
 }
 
 TEST(RepairReebGraph, ProgressIsReportedAndAStopLeavesAValidGraph) {
-  // Both repair functions report increasing fractions ending at 1 and return what they return unwatched; a stop
-  // adds no arc in repair_reeb_graph() (the graph is the input) and keeps the dead ends connected before it in
-  // connect_dead_ends(): a valid graph that simplifies, with fewer arcs added the earlier the stop.
+  // Both repair functions report increasing fractions ending at 1 and return what they return unwatched; a
+  // stop adds no arc in repair_reeb_graph() (the graph is the input) and keeps the dead ends connected before
+  // it in connect_dead_ends(): a valid graph that simplifies, with fewer arcs added the earlier the stop.
   const Point_matrix m = random_dashes(3);
   const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(m, 1.0));
   const Geodesic_result geo = compute_geodesic_function(K);
@@ -596,8 +608,9 @@ TEST(RepairReebGraph, ProgressIsReportedAndAStopLeavesAValidGraph) {
       EXPECT_LE(partial.connected, ends.connected) << allowed;
       previous = partial.connected;
       EXPECT_NO_THROW(skeleton::internal::check_reeb_graph(partial.graph, "partial", &geo.values)) << allowed;
-      EXPECT_TRUE(std::is_sorted(partial.graph.arcs.begin(), partial.graph.arcs.end(),
-                                 [](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) { return a.lower < b.lower; }))
+      EXPECT_TRUE(std::is_sorted(
+          partial.graph.arcs.begin(), partial.graph.arcs.end(),
+          [](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) { return a.lower < b.lower; }))
           << allowed;
       EXPECT_NO_THROW(simplify_by_persistence(partial.graph, geo.values, 0.5)) << allowed;
     }

@@ -59,7 +59,8 @@ std::vector<Edge> brute_knn(const Coords& p, std::size_t k) {
       if (j != i) d.emplace_back(dist(p[i], p[j]), j);
     std::sort(d.begin(), d.end());
     for (std::size_t t = 0; t < std::min(k, d.size()); ++t) {
-      const auto a = static_cast<Vertex_index>(std::min(i, d[t].second)), b = static_cast<Vertex_index>(std::max(i, d[t].second));
+      const auto a = static_cast<Vertex_index>(std::min(i, d[t].second)),
+                 b = static_cast<Vertex_index>(std::max(i, d[t].second));
       e.push_back({a, b});
     }
   }
@@ -75,7 +76,8 @@ std::vector<Triangle> brute_triangles(const Proximity_graph& g) {
   for (Vertex_index a = 0; a < n; ++a)
     for (Vertex_index b = a + 1; b < n; ++b)
       for (Vertex_index c = b + 1; c < n; ++c)
-        if (g.find_edge(a, b) >= 0 && g.find_edge(b, c) >= 0 && g.find_edge(a, c) >= 0) t.push_back({a, b, c});
+        if (g.find_edge(a, b) >= 0 && g.find_edge(b, c) >= 0 && g.find_edge(a, c) >= 0)
+          t.push_back({a, b, c});
   return t;
 }
 
@@ -86,7 +88,8 @@ TEST(RipsGraph, MatchesBruteForceInEveryDimensionAndSearch) {
     const Coords p = random_points(300, d, static_cast<std::uint32_t>(d));
     const double r = 0.12 * std::sqrt(static_cast<double>(d));
     const auto expected = brute_rips(p, r);
-    for (Neighbor_search s : {Neighbor_search::automatic, Neighbor_search::brute_force, Neighbor_search::kd_tree}) {
+    for (Neighbor_search s :
+         {Neighbor_search::automatic, Neighbor_search::brute_force, Neighbor_search::kd_tree}) {
       if (s == Neighbor_search::kd_tree && d > 3) {
         Proximity_graph_options o;
         o.search = s;
@@ -148,7 +151,8 @@ TEST(RipsGraph, DegenerateInputs) {
 TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
   // The brute-force search filters candidates in float: coordinates far outside float's range (2^130, 2^-130)
   // must still find every pair, with the exact decision on the doubles. A 4 x 4 grid of spacing s in 5-D (the
-  // automatic search is brute force above 3-D) and in 2-D with the brute force asked for, radius s (inclusive).
+  // automatic search is brute force above 3-D) and in 2-D with the brute force asked for, radius s
+  // (inclusive).
   for (const double s : {std::ldexp(1.0, 130), std::ldexp(1.0, -130)}) {
     for (const std::size_t d : {2u, 5u}) {
       Coords p;
@@ -164,7 +168,8 @@ TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
       o.search = Neighbor_search::brute_force;
       const Proximity_graph g = build_rips_graph(p, s, o);
       EXPECT_EQ(g.edges, brute_rips(p, s)) << "s = " << s << ", d = " << d;
-      EXPECT_EQ(g.number_of_edges(), 24u + 5u) << "s = " << s;  // grid edges plus the duplicate's 4 and itself
+      EXPECT_EQ(g.number_of_edges(), 24u + 5u)
+          << "s = " << s;  // grid edges plus the duplicate's 4 and itself
       EXPECT_EQ(build_knn_graph(p, 1, o).edges, brute_knn(p, 1)) << "s = " << s << ", d = " << d;
     }
   }
@@ -173,7 +178,8 @@ TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
   EXPECT_EQ(build_rips_graph(far, 1.0).edges, (std::vector<Edge>{{0, 1}}));
   const Proximity_graph knn = build_knn_graph(far, 1);
   EXPECT_EQ(knn.edges, (std::vector<Edge>{{0, 1}, {0, 2}}));
-  // Lengths whose squares overflow (6e300) or underflow (3e-200) come out right, and the graph stays canonical.
+  // Lengths whose squares overflow (6e300) or underflow (3e-200) come out right, and the graph stays
+  // canonical.
   EXPECT_EQ(knn.edge_lengths, (std::vector<double>{0.0, 6e300}));
   EXPECT_TRUE(is_canonical(knn));
   const Coords tiny{{0, 0}, {3e-200, 0}, {1, 0}};
@@ -184,17 +190,19 @@ TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
     build_knn_graph(beyond, 1);
     ADD_FAILURE() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("build_knn_graph: edge 0 (points 0 and 1) is longer than the largest double"),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "build_knn_graph: edge 0 (points 0 and 1) is longer than the largest double"),
+              std::string::npos)
+        << e.what();
   }
 }
 
 TEST(RipsGraph, BruteForceKeepsPairsAtTheRadiusThatUnderflowInFloat) {
   // Two points 2^e apart close to the centre of points at +-1: scaled for float, their coordinates' products
-  // underflow (e <= -108), the float Gram matrix gave them the squared distance |p|^2 + |q|^2, and a purely relative
-  // error bound rejected the pair at exactly the radius before the exact test (0 edges; the kd-tree found 1). First
-  // the reported points, then a scan of spacings with the pair on an axis through the centre and off it, in 4 and 8
-  // dimensions; the k-nearest-neighbour search shares the filter.
+  // underflow (e <= -108), the float Gram matrix gave them the squared distance |p|^2 + |q|^2, and a purely
+  // relative error bound rejected the pair at exactly the radius before the exact test (0 edges; the kd-tree
+  // found 1). First the reported points, then a scan of spacings with the pair on an axis through the centre
+  // and off it, in 4 and 8 dimensions; the k-nearest-neighbour search shares the filter.
   const double s116 = std::ldexp(1.0, -116);
   const Coords reported{{1, 0, 0, 0}, {-1, 0, 0, 0}, {s116, 0, 0, 0}, {2 * s116, 0, 0, 0}};
   for (Neighbor_search s : {Neighbor_search::brute_force, Neighbor_search::automatic}) {
@@ -232,10 +240,10 @@ TEST(RipsGraph, BruteForceKeepsPairsAtTheRadiusThatUnderflowInFloat) {
 }
 
 TEST(RipsGraph, OneOutlierDoesNotMakeEveryPairACandidate) {
-  // The brute force's float filter has an error growing with the squared distance from the centre: centred at the
-  // mean, one point at 1e7 moved every other point 1e3 from it and every pair went to the exact predicate (7.5 s
-  // instead of 0.4 s on 10,000 points in 50-D). Counted, not timed: with the outlier, the pairs left to the double
-  // and exact stages are those of the cloud alone plus at most the outlier's row.
+  // The brute force's float filter has an error growing with the squared distance from the centre: centred at
+  // the mean, one point at 1e7 moved every other point 1e3 from it and every pair went to the exact predicate
+  // (7.5 s instead of 0.4 s on 10,000 points in 50-D). Counted, not timed: with the outlier, the pairs left
+  // to the double and exact stages are those of the cloud alone plus at most the outlier's row.
   const std::size_t n = 1500;
   Coords p = random_points(n, 20, 9);
   const double r = 1.2;
@@ -267,10 +275,10 @@ TEST(RipsGraph, OneOutlierDoesNotMakeEveryPairACandidate) {
 }
 
 TEST(RipsGraph, FarApartClustersAreSearchedEachWithItsOwnCentre) {
-  // Two equal clusters 1e7 apart: the float filter's centre (the coordinate-wise median) lies in one of them, and
-  // every pair of the other went to the double stage (4.1 s on 10,000 points in 50-D). Each group that no edge
-  // crosses is now searched alone: with the second cluster interleaved by index (odd indices; the edges map back to
-  // them) the counts are those of the two clusters alone, and the graph the brute force's.
+  // Two equal clusters 1e7 apart: the float filter's centre (the coordinate-wise median) lies in one of them,
+  // and every pair of the other went to the double stage (4.1 s on 10,000 points in 50-D). Each group that no
+  // edge crosses is now searched alone: with the second cluster interleaved by index (odd indices; the edges
+  // map back to them) the counts are those of the two clusters alone, and the graph the brute force's.
   const std::size_t n = 1500;
   const double r = 1.2;
   Coords a = random_points(n, 20, 9), b = random_points(n, 20, 10);
@@ -291,29 +299,31 @@ TEST(RipsGraph, FarApartClustersAreSearchedEachWithItsOwnCentre) {
   EXPECT_GT(ea, 50u);
   EXPECT_LE(both.refined, ca.refined + cb.refined + n);  // b's coordinates differ by the rounding at 1e7
   EXPECT_EQ(both.exact, ca.exact + cb.exact);
-  // The groups: a gap wider than the radius on the widest axis cuts, one of exactly the radius does not (the pair
-  // across it is an edge), and each part is cut again on its own widest axis.
+  // The groups: a gap wider than the radius on the widest axis cuts, one of exactly the radius does not (the
+  // pair across it is an edge), and each part is cut again on its own widest axis.
   const auto groups = [](const Coords& p, double radius) {
     return skeleton::internal::separated_groups(make_point_matrix(p), radius);
   };
   using Groups = std::vector<std::vector<std::uint32_t>>;
   EXPECT_EQ(groups({{0, 0}, {10, 0}, {1, 0}, {11, 0.5}}, 1.0), (Groups{{0, 2}, {1, 3}}));
   EXPECT_EQ(groups({{0, 0}, {10, 0}, {1, 0}, {11, 0.5}}, 9.0), (Groups{{0, 1, 2, 3}}));
-  EXPECT_EQ(groups({{0, 0}, {1, 0}, {2, 0}}, 1.0), (Groups{{0, 1, 2}}));                        // gaps of exactly r
-  EXPECT_EQ(groups({{0, 0}, {std::nextafter(1.0, 2.0), 0}}, 1.0), (Groups{{0, 1}}));           // within the slack
-  EXPECT_EQ(groups({{0, 0}, {0, 0}, {0, 0}}, 0.0), (Groups{{0, 1, 2}}));                       // duplicates
-  EXPECT_EQ(groups({{0, 0}, {0, 5}, {8, 0}, {8, 5}}, 2.0), (Groups{{0}, {1}, {2}, {3}}));      // x, then y
-  EXPECT_EQ(groups({{0, 0}, {1e308, 0}, {-1e308, 0}}, 1.0), (Groups{{0}, {1}, {2}}));          // the range overflows
+  EXPECT_EQ(groups({{0, 0}, {1, 0}, {2, 0}}, 1.0), (Groups{{0, 1, 2}}));              // gaps of exactly r
+  EXPECT_EQ(groups({{0, 0}, {std::nextafter(1.0, 2.0), 0}}, 1.0), (Groups{{0, 1}}));  // within the slack
+  EXPECT_EQ(groups({{0, 0}, {0, 0}, {0, 0}}, 0.0), (Groups{{0, 1, 2}}));              // duplicates
+  EXPECT_EQ(groups({{0, 0}, {0, 5}, {8, 0}, {8, 5}}, 2.0), (Groups{{0}, {1}, {2}, {3}}));  // x, then y
+  EXPECT_EQ(groups({{0, 0}, {1e308, 0}, {-1e308, 0}}, 1.0), (Groups{{0}, {1}, {2}}));  // the range overflows
   EXPECT_EQ(groups({}, 1.0).size(), 1u);
-  for (const double radius : {0.0, 1.0, 2.0})  // the same graphs as the brute force on small grids with copies
-    for (const Coords& p : {Coords{{0, 0}, {0, 0}, {3, 0}, {3, 1}, {6, 1}}, Coords{{0, 0, 0}, {2, 2, 2}, {2, 2, 4}}})
+  for (const double radius :
+       {0.0, 1.0, 2.0})  // the same graphs as the brute force on small grids with copies
+    for (const Coords& p :
+         {Coords{{0, 0}, {0, 0}, {3, 0}, {3, 1}, {6, 1}}, Coords{{0, 0, 0}, {2, 2, 2}, {2, 2, 4}}})
       EXPECT_EQ(build_rips_graph(p, radius, o).edges, brute_rips(p, radius)) << radius;
 }
 
 TEST(RipsGraph, TinyAndHugeCoordinatesInTheKdTree) {
   // Squared distances of coordinates below about 1e-154 are subnormal, rounded absolutely: the kd-tree's ball
-  // (with a relative slack) lost pairs within r, and its nearest neighbours were wrong. The same clouds scaled by
-  // 2^537 (exactly) are the oracle. Also scaled by 2^500 up, where squares overflowed.
+  // (with a relative slack) lost pairs within r, and its nearest neighbours were wrong. The same clouds
+  // scaled by 2^537 (exactly) are the oracle. Also scaled by 2^500 up, where squares overflowed.
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(0, 1);
   std::size_t compared = 0;
@@ -328,7 +338,8 @@ TEST(RipsGraph, TinyAndHugeCoordinatesInTheKdTree) {
         for (double& c : x) c = std::ldexp(c, e);
       Proximity_graph_options o;
       o.search = Neighbor_search::kd_tree;
-      EXPECT_EQ(build_rips_graph(scaled, std::ldexp(r, e), o).edges, brute_rips(unit_cloud, r)) << trial << " " << e;
+      EXPECT_EQ(build_rips_graph(scaled, std::ldexp(r, e), o).edges, brute_rips(unit_cloud, r))
+          << trial << " " << e;
       EXPECT_EQ(build_knn_graph(scaled, 2, o).edges, brute_knn(unit_cloud, 2)) << trial << " " << e;
       ++compared;
     }
@@ -358,7 +369,8 @@ TEST(RipsGraph, BadInputNamesThePoint) {
     EXPECT_NE(std::string(e.what()).find("point 1"), std::string::npos) << e.what();
   }
   EXPECT_THROW(build_rips_graph(random_points(3, 2, 1), -1.0), std::invalid_argument);
-  EXPECT_THROW(build_rips_graph(random_points(3, 2, 1), std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+  EXPECT_THROW(build_rips_graph(random_points(3, 2, 1), std::numeric_limits<double>::quiet_NaN()),
+               std::invalid_argument);
   EXPECT_THROW(build_knn_graph(random_points(3, 2, 1), 0), std::invalid_argument);
 }
 
@@ -398,7 +410,8 @@ TEST(KnnGraph, MatchesBruteForceWithTiesByIndex) {
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j)
       for (int c = 0; c <= (i + j) % 3; ++c) ties.push_back({double(i), double(j)});
-  for (std::size_t k : {1u, 2u, 4u, 5u, 9u}) EXPECT_EQ(build_knn_graph(ties, k).edges, brute_knn(ties, k)) << "k = " << k;
+  for (std::size_t k : {1u, 2u, 4u, 5u, 9u})
+    EXPECT_EQ(build_knn_graph(ties, k).edges, brute_knn(ties, k)) << "k = " << k;
   // n <= k: the complete graph.
   EXPECT_EQ(build_knn_graph(random_points(4, 2, 3), 10).number_of_edges(), 6u);
   EXPECT_EQ(build_knn_graph(Coords{{0.0, 0.0}}, 3).number_of_edges(), 0u);
@@ -406,9 +419,10 @@ TEST(KnnGraph, MatchesBruteForceWithTiesByIndex) {
 }
 
 TEST(KnnGraph, NearestByIntervalsThenExactly) {
-  // keep_nearest_exactly() orders by enclosures of the squared distances and calls the exact predicate only where
-  // they overlap and are not one exact value; the oracle sorts every candidate with the exact predicate. Candidates
-  // are exact ties with inexact squares (0.1 on different axes), neighbours in the last bit, copies, and integers.
+  // keep_nearest_exactly() orders by enclosures of the squared distances and calls the exact predicate only
+  // where they overlap and are not one exact value; the oracle sorts every candidate with the exact
+  // predicate. Candidates are exact ties with inexact squares (0.1 on different axes), neighbours in the last
+  // bit, copies, and integers.
   std::mt19937 rng(8);
   std::uniform_int_distribution<int> pick(0, 5);
   for (int trial = 0; trial < 300; ++trial) {
@@ -439,16 +453,17 @@ TEST(KnnGraph, NearestByIntervalsThenExactly) {
 }
 
 TEST(KnnGraph, KdTreeSkipsTheBallOnlyPastAClearGap) {
-  // Up to 3-D the kd-tree search asks for one position more than it needs; when that one lies clearly beyond the
-  // last needed, the positions before it are the candidates and no ball query is made. Ties (exact, or of inexact
-  // squares: multiples of 0.1), copies, collinear points, UTM-sized offsets and tiny or huge scales are compared
-  // with the brute force (whose exact order is tested above), and the ball is counted.
+  // Up to 3-D the kd-tree search asks for one position more than it needs; when that one lies clearly beyond
+  // the last needed, the positions before it are the candidates and no ball query is made. Ties (exact, or of
+  // inexact squares: multiples of 0.1), copies, collinear points, UTM-sized offsets and tiny or huge scales
+  // are compared with the brute force (whose exact order is tested above), and the ball is counted.
   std::mt19937_64 rng(7);
   std::size_t balls = 0, positions = 0;
   for (int trial = 0; trial < 900; ++trial) {
     const std::size_t d = 1 + static_cast<std::size_t>(trial % 3), n = 1 + rng() % 60;
     const int kind = (trial / 3) % 5;
-    const double scale = trial % 7 == 0 ? 1e9 : (trial % 7 == 1 ? 1e-200 : 1.0), offset = trial % 11 == 0 ? 4.6e6 : 0;
+    const double scale = trial % 7 == 0 ? 1e9 : (trial % 7 == 1 ? 1e-200 : 1.0),
+                 offset = trial % 11 == 0 ? 4.6e6 : 0;
     Point_matrix m;
     m.dimension = d;
     m.rows = n;
@@ -492,11 +507,11 @@ TEST(KnnGraph, KdTreeSkipsTheBallOnlyPastAClearGap) {
 }
 
 TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
-  // The brute force (dimension > 3) splits off groups far from the rest (isolated_groups()) and searches each with
-  // its own float filter; a group answers for a point only when the k-th nearest within it lies within the group's
-  // separation, other points are searched among all. Two clusters 1e7 apart interleaved by index: one centre made
-  // every pair of one cluster go to the double stage (4 s on 10,000 points in 50-D); now the counts are the
-  // clusters' own.
+  // The brute force (dimension > 3) splits off groups far from the rest (isolated_groups()) and searches each
+  // with its own float filter; a group answers for a point only when the k-th nearest within it lies within
+  // the group's separation, other points are searched among all. Two clusters 1e7 apart interleaved by index:
+  // one centre made every pair of one cluster go to the double stage (4 s on 10,000 points in 50-D); now the
+  // counts are the clusters' own.
   const std::size_t n = 600, k = 4;
   Proximity_graph_options o;
   o.search = Neighbor_search::brute_force;
@@ -514,17 +529,18 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
   EXPECT_EQ(g.edges, brute_knn(mixed, k));
   EXPECT_EQ(both.unresolved, 0u);
   EXPECT_LE(both.refined, ca.refined + cb.refined + 2 * n);  // b's coordinates differ by the rounding at 1e7
-  EXPECT_LT(both.refined, n * n / 10);                     // one filter for both: every pair of one cluster
+  EXPECT_LT(both.refined, n * n / 10);                       // one filter for both: every pair of one cluster
   const auto groups = skeleton::internal::isolated_groups(make_point_matrix(mixed), k + 1);
   ASSERT_EQ(groups.size(), 2u);
   EXPECT_EQ(groups[0].rows.front(), 0u);
   EXPECT_EQ(groups[1].rows.front(), 1u);
   EXPECT_GT(groups[0].separation, 9e6);
 
-  // Two groups whose gap on the widest axis (10, from x = 9 to x = 19) exceeds both sides' widest ranges (9), but not
-  // every distance within them: A = (t, t, t, t) and B = (19 + t, 9, 9, 9), t = 0..9, shuffled. For k = 9, A's
-  // (9, 9, 9, 9) has its k-th nearest within A at 18 (the origin), beyond the separation: it is searched among all,
-  // and finds B's points at 10..18 (the one at 18 ties with the origin, decided by index).
+  // Two groups whose gap on the widest axis (10, from x = 9 to x = 19) exceeds both sides' widest ranges (9),
+  // but not every distance within them: A = (t, t, t, t) and B = (19 + t, 9, 9, 9), t = 0..9, shuffled. For k
+  // = 9, A's (9, 9, 9, 9) has its k-th nearest within A at 18 (the origin), beyond the separation: it is
+  // searched among all, and finds B's points at 10..18 (the one at 18 ties with the origin, decided by
+  // index).
   Coords ab;
   for (int t = 0; t < 10; ++t) {
     ab.push_back({double(t), double(t), double(t), double(t)});
@@ -532,7 +548,8 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
   }
   std::shuffle(ab.begin(), ab.end(), std::mt19937(3));
   const auto cut = skeleton::internal::isolated_groups(make_point_matrix(ab), 10);
-  ASSERT_EQ(cut.size(), 2u);  // (A and B are not cut further: their gaps of 1 are not wider than their points)
+  ASSERT_EQ(cut.size(),
+            2u);  // (A and B are not cut further: their gaps of 1 are not wider than their points)
   for (const auto& group : cut) {
     EXPECT_EQ(group.rows.size(), 10u);
     EXPECT_EQ(group.separation, std::nextafter(10 * (1 - 0x1p-50), 0.0));
@@ -551,8 +568,8 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
       EXPECT_EQ(c.unresolved, 0u);  // A and B would hold fewer than k + 1 points: not cut
     }
   }
-  // Progress with groups: their rows in [0, 0.9], the points searched among all in [0.9, 1], non-decreasing; a stop
-  // in the second stage ends it (no report after the refusal, fewer edges).
+  // Progress with groups: their rows in [0, 0.9], the points searched among all in [0.9, 1], non-decreasing;
+  // a stop in the second stage ends it (no report after the refusal, fewer edges).
   {
     std::vector<double> seen;
     Proximity_graph_options watched = o;
@@ -575,18 +592,19 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
     EXPECT_LT(build_knn_graph(ab, 9, watched).edges.size(), all.size());
     EXPECT_TRUE(after_stop.empty());
   }
-  // A gap of subnormal width: exact, and gap (1 - 2^-50) rounds back to it, so the separation is one step below.
-  // The origin's nearest (k = 1) ties at 2^-1073 between points 0, 1 (across the gap) and 3 (its own side; the
-  // brute force in double squares these to 0): point 0 by index.
+  // A gap of subnormal width: exact, and gap (1 - 2^-50) rounds back to it, so the separation is one step
+  // below. The origin's nearest (k = 1) ties at 2^-1073 between points 0, 1 (across the gap) and 3 (its own
+  // side; the brute force in double squares these to 0): point 0 by index.
   const double eps = std::numeric_limits<double>::denorm_min();
-  const Coords tiny = {{2 * eps, 0, 0, 0, 0}, {2 * eps, 0, 0, 0, 0}, {0, 0, 0, 0, 0}, {0, eps, eps, eps, eps}};
+  const Coords tiny = {
+      {2 * eps, 0, 0, 0, 0}, {2 * eps, 0, 0, 0, 0}, {0, 0, 0, 0, 0}, {0, eps, eps, eps, eps}};
   const auto tiny_groups = skeleton::internal::isolated_groups(make_point_matrix(tiny), 2);
   ASSERT_EQ(tiny_groups.size(), 2u);
   EXPECT_LT(tiny_groups[0].separation, 2 * eps);
   EXPECT_EQ(build_knn_graph(tiny, 1, o).edges, (std::vector<Edge>{{0, 1}, {0, 2}, {2, 3}}));
-  // Three clusters far apart on one axis (400, 5 and 200 points; the 5 are a group of their own for k = 4, too few
-  // for k = 5 and go with a neighbour), copies across clusters, a far point of a group's float filter; every answer
-  // the brute force's.
+  // Three clusters far apart on one axis (400, 5 and 200 points; the 5 are a group of their own for k = 4,
+  // too few for k = 5 and go with a neighbour), copies across clusters, a far point of a group's float
+  // filter; every answer the brute force's.
   Coords three = random_points(400, 6, 23);
   for (int c = 0; c < 5; ++c) three.push_back({1e9 + c, 0, 0, 0, 0, 0});
   Coords other = random_points(200, 6, 24);
@@ -601,19 +619,22 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
   EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(three), 6).size(), 2u);
   for (const std::size_t kl : {1u, 2u, 4u, 5u, 8u})
     EXPECT_EQ(build_knn_graph(three, kl, o).edges, brute_knn(three, kl)) << "k = " << kl;
-  // Spread-out data and grids are not cut (4-D grid: every gap is 1, the parts beside it span 4); no points, no
-  // groups.
+  // Spread-out data and grids are not cut (4-D grid: every gap is 1, the parts beside it span 4); no points,
+  // no groups.
   EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(random_points(500, 8, 25)), 2).size(), 1u);
   Coords grid;
-  for (int i = 0; i < 625; ++i) grid.push_back({double(i % 5), double(i / 5 % 5), double(i / 25 % 5), double(i / 125)});
+  for (int i = 0; i < 625; ++i)
+    grid.push_back({double(i % 5), double(i / 5 % 5), double(i / 25 % 5), double(i / 125)});
   EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(grid), 2).size(), 1u);
   EXPECT_EQ(build_knn_graph(grid, 8, o).edges, brute_knn(grid, 8));
   Coords line;  // evenly spaced: every gap exceeds 1/16 of the range, but not the parts beside it
   for (int x = 0; x < 10; ++x) line.push_back({double(x), 0, 0, 0});
   EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 2).size(), 1u);
-  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 1).size(), 10u);  // singletons allowed
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 1).size(),
+            10u);  // singletons allowed
   line.push_back({1e3, 0, 0, 0});
-  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 2).size(), 1u);  // one point: too few
+  EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 2).size(),
+            1u);  // one point: too few
   line.push_back({1e3 + 1, 0, 0, 0});
   EXPECT_EQ(skeleton::internal::isolated_groups(make_point_matrix(line), 2).size(), 2u);
   EXPECT_TRUE(skeleton::internal::isolated_groups(make_point_matrix(Coords{}), 1).empty());
@@ -678,13 +699,14 @@ TEST(DistanceMatrix, RipsAndKnnMatchPoints) {
   std::vector<std::vector<double>> E{{0, 1, 2}, {1, 0, 1}, {2, 1, 0}};
   EXPECT_EQ(build_rips_graph_from_distance_matrix(E, 1.0).number_of_edges(), 2u);
   EXPECT_EQ(build_rips_graph_from_distance_matrix(E, 2.0).number_of_edges(), 3u);
-  EXPECT_EQ(build_rips_graph_from_distance_matrix(std::vector<std::vector<double>>{}, 1.0).number_of_vertices, 0u);
+  EXPECT_EQ(build_rips_graph_from_distance_matrix(std::vector<std::vector<double>>{}, 1.0).number_of_vertices,
+            0u);
 }
 
 TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
   // 4100 points on a line (distance |i - j|): the Rips graph at radius 1 is the path. Reports every 4096 rows
-  // (Rips: fraction of the pairs; k-NN every 1024 rows: fraction of the rows), increasing, ending at 1; a stop
-  // keeps the edges of the rows visited before it.
+  // (Rips: fraction of the pairs; k-NN every 1024 rows: fraction of the rows), increasing, ending at 1; a
+  // stop keeps the edges of the rows visited before it.
   const std::size_t n = 4100;
   Eigen::MatrixXd D(n, n);
   for (std::size_t i = 0; i < n; ++i)
@@ -713,7 +735,8 @@ TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
   EXPECT_EQ(seen, (std::vector<double>{1024.0 / n, 2048.0 / n, 3072.0 / n, 4096.0 / n, 1.0}));
   calls = 0;
   o.progress = [&](double) { return ++calls < 2; };
-  // Rows 0..2047; the nearest of i > 0 is i - 1 (the tie with i + 1 goes to the smaller index): the path to 2047.
+  // Rows 0..2047; the nearest of i > 0 is i - 1 (the tie with i + 1 goes to the smaller index): the path to
+  // 2047.
   EXPECT_EQ(build_knn_graph_from_distance_matrix(D, 1, o).number_of_edges(), 2047u);
 }
 
@@ -772,8 +795,9 @@ TEST(FlagComplex, TrianglesAreTheThreeCliques) {
   EXPECT_THROW(build_flag_complex_2(bad), std::invalid_argument);
 }
 
-// The triangle limit is checked while counting: exactly the limit passes, one less is refused with the counts;
-// progress covers both passes (counting below one half), and a stop during counting stores no triangle.
+// The triangle limit is checked while counting: exactly the limit passes, one less is refused with the
+// counts; progress covers both passes (counting below one half), and a stop during counting stores no
+// triangle.
 TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   Proximity_graph complete;  // K_12: C(12, 3) = 220 triangles
   complete.number_of_vertices = 12;
@@ -793,16 +817,18 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_EQ(seen.front(), 0.0);
   EXPECT_EQ(seen.back(), 1.0);
-  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.5; }), 12);  // counting: 12 vertices
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.5; }),
+            12);  // counting: 12 vertices
   o.max_triangles = 219;
   try {
     build_flag_complex_2(complete, o);
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("build_flag_complex_2: the flag complex has more than 219 triangles "
-                                         "(Flag_complex_options::max_triangles; 12 vertices, 66 edges, the limit "
-                                         "was passed at vertex 9)"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("build_flag_complex_2: the flag complex has more than 219 triangles "
+                                   "(Flag_complex_options::max_triangles; 12 vertices, 66 edges, the limit "
+                                   "was passed at vertex 9)"),
+        std::string::npos)
         << e.what();
   }
   // 0: no limit.
@@ -879,8 +905,9 @@ TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
   auto expect_in = [](const std::string& what, const std::string& part) {
     EXPECT_NE(what.find(part), std::string::npos) << what;
   };
-  expect_in(problem(3, {{0, 1}, {1, 1}}), "build_flag_complex_2: the graph is not canonical (see Proximity_graph): "
-                                          "edge 1 (1, 1) is a loop");
+  expect_in(problem(3, {{0, 1}, {1, 1}}),
+            "build_flag_complex_2: the graph is not canonical (see Proximity_graph): "
+            "edge 1 (1, 1) is a loop");
   expect_in(problem(3, {{0, 1}, {1, 7}}), "edge 1 (1, 7) has a vertex beyond the 3 vertices");
   expect_in(problem(3, {{2, 0}}), "edge 0 (2, 0) is not in increasing order");
   expect_in(problem(3, {{0, 2}, {0, 1}}), "edge 1 (0, 1) is not after edge 0 (0, 2)");
@@ -899,13 +926,14 @@ TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
   }
 }
 
-// make_simplicial_complex_2 sorts edges by a comparison sort below 1024 edges and by radix sorts on 64-bit keys
-// from 1024 on: both give the lexicographic order without repetitions, each edge with its first occurrence's
-// length, for vertex indices up to the largest 32-bit one.
+// make_simplicial_complex_2 sorts edges by a comparison sort below 1024 edges and by radix sorts on 64-bit
+// keys from 1024 on: both give the lexicographic order without repetitions, each edge with its first
+// occurrence's length, for vertex indices up to the largest 32-bit one.
 TEST(MakeSimplicialComplex, EdgeOrderAndFirstLengthsOnBothSortPaths) {
   std::mt19937 rng(2026);
   for (const std::size_t m : {0u, 1u, 1023u, 1024u, 1025u, 50000u}) {
-    for (const std::size_t n : {std::size_t(2), std::size_t(40), std::size_t(5000), std::size_t(4294967295u)}) {
+    for (const std::size_t n :
+         {std::size_t(2), std::size_t(40), std::size_t(5000), std::size_t(4294967295u)}) {
       std::vector<Edge> edges;
       std::vector<double> lengths;
       while (edges.size() < m) {
@@ -918,7 +946,8 @@ TEST(MakeSimplicialComplex, EdgeOrderAndFirstLengthsOnBothSortPaths) {
       // Reference: the first occurrence of each edge by a map.
       std::map<Edge, double> first;
       for (std::size_t i = 0; i < edges.size(); ++i)
-        first.emplace(Edge{std::min(edges[i][0], edges[i][1]), std::max(edges[i][0], edges[i][1])}, lengths[i]);
+        first.emplace(Edge{std::min(edges[i][0], edges[i][1]), std::max(edges[i][0], edges[i][1])},
+                      lengths[i]);
       const Simplicial_complex_2 weighted = make_simplicial_complex_2(n, edges, {}, lengths);
       const Simplicial_complex_2 plain = make_simplicial_complex_2(n, edges, {});
       ASSERT_EQ(weighted.edges.size(), first.size()) << m << " edges on " << n << " vertices";
@@ -945,10 +974,12 @@ TEST(MakeSimplicialComplex, RadixSortsMatchComparisonSorts) {
     for (const int b : {1, 5, 11, 22, 32}) {
       const std::uint64_t range = std::uint64_t(1) << b;
       std::vector<Edge> edges(m);
-      for (Edge& e : edges) e = {static_cast<Vertex_index>(rng() % range), static_cast<Vertex_index>(rng() % range)};
+      for (Edge& e : edges)
+        e = {static_cast<Vertex_index>(rng() % range), static_cast<Vertex_index>(rng() % range)};
       std::vector<Edge> expected = edges;
       std::sort(expected.begin(), expected.end());
-      skeleton::internal::flag_sort_edges(edges.data(), edges.data() + edges.size(), b, 2 * b >= 8 ? 2 * b - 8 : 0);
+      skeleton::internal::flag_sort_edges(edges.data(), edges.data() + edges.size(), b,
+                                          2 * b >= 8 ? 2 * b - 8 : 0);
       EXPECT_EQ(edges, expected) << m << " edges, " << b << " bits";
       std::vector<std::uint64_t> keys(m);
       std::vector<std::size_t> payload(m);
@@ -957,7 +988,8 @@ TEST(MakeSimplicialComplex, RadixSortsMatchComparisonSorts) {
         payload[i] = i;
       }
       std::vector<std::size_t> order = payload;
-      std::stable_sort(order.begin(), order.end(), [&keys](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
+      std::stable_sort(order.begin(), order.end(),
+                       [&keys](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
       std::vector<std::uint64_t> sorted_keys(m);
       for (std::size_t i = 0; i < m; ++i) sorted_keys[i] = keys[order[i]];
       skeleton::internal::radix_sort(keys, payload, 2 * b);
@@ -977,7 +1009,8 @@ TEST(MakeSimplicialComplex, RadixSortsMatchComparisonSorts) {
   const Simplicial_complex_2 K = make_simplicial_complex_2(1500, given, triangles, lengths, 2.5);
   ASSERT_EQ(K.edges.size(), 1499u + 1498u);  // the path and the chords v, v + 2
   for (std::size_t e = 0; e < K.edges.size(); ++e) {
-    const bool is_given = K.edges[e][1] == K.edges[e][0] + 1 && K.edges[e][0] < 1498;  // (1498, 1499) is implied
+    const bool is_given =
+        K.edges[e][1] == K.edges[e][0] + 1 && K.edges[e][0] < 1498;  // (1498, 1499) is implied
     EXPECT_EQ(K.edge_lengths[e], is_given ? 0.5 : 2.5) << "edge " << e;
   }
 }
@@ -1003,7 +1036,8 @@ TEST(EveryEntryPoint, EmptyAndTiedInputs) {
   // Each vertex picks the two smallest other indices: 0->{1,2}, 1->{0,2}, 2->{0,1}, 3->{0,1}, 4->{0,1}.
   EXPECT_EQ(build_knn_graph_from_distance_matrix(equal, 2).edges,
             (std::vector<Edge>{{0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {1, 4}}));
-  EXPECT_EQ(build_knn_graph_from_distance_matrix(std::vector<std::vector<double>>{{0}}, 2).number_of_edges(), 0u);
+  EXPECT_EQ(build_knn_graph_from_distance_matrix(std::vector<std::vector<double>>{{0}}, 2).number_of_edges(),
+            0u);
   // Points: all the same (a single cluster of duplicates) gives the complete graph at any radius and k.
   const Coords same(6, std::vector<double>{1.5, -2.0, 3.0});
   EXPECT_EQ(build_rips_graph(same, 0.0).number_of_edges(), 15u);
@@ -1019,8 +1053,9 @@ TEST(EveryEntryPoint, EmptyAndTiedInputs) {
 // The same point set through every kernel: Simple_cartesian<double>, Epick and Epeck, in 2D and 3D.
 template <class Point>
 class RipsGraphKernels : public ::testing::Test {};
-using Kernel_points = ::testing::Types<CGAL::Simple_cartesian<double>::Point_2, CGAL::Epick::Point_2, CGAL::Epeck::Point_2,
-                                       CGAL::Simple_cartesian<double>::Point_3, CGAL::Epick::Point_3, CGAL::Epeck::Point_3>;
+using Kernel_points =
+    ::testing::Types<CGAL::Simple_cartesian<double>::Point_2, CGAL::Epick::Point_2, CGAL::Epeck::Point_2,
+                     CGAL::Simple_cartesian<double>::Point_3, CGAL::Epick::Point_3, CGAL::Epeck::Point_3>;
 TYPED_TEST_SUITE(RipsGraphKernels, Kernel_points);
 
 TYPED_TEST(RipsGraphKernels, SameGraphAsBruteForceOnAGridWithTies) {

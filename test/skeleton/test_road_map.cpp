@@ -9,9 +9,9 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <vector>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -25,7 +25,8 @@ std::vector<Gps_trip> street(double step) {
   return trips;
 }
 
-double segment_distance(const std::array<double, 2>& p, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+double segment_distance(const std::array<double, 2>& p, const std::array<double, 2>& a,
+                        const std::array<double, 2>& b) {
   const double dx = b[0] - a[0], dy = b[1] - a[1];
   const double t = std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
   return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
@@ -123,9 +124,9 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
 }
 
 TEST(RoadMap, SkeletonLinesDoNotGoOutAndBack) {
-  // Where a wide gap is bridged through the graph and the next bridge leaves through the same vertex, the line
-  // went out to the piece's centroid and back: X B X, twice the same point two steps apart (about 1 % of the
-  // length of the city's skeleton lines were such spikes).
+  // Where a wide gap is bridged through the graph and the next bridge leaves through the same vertex, the
+  // line went out to the piece's centroid and back: X B X, twice the same point two steps apart (about 1 % of
+  // the length of the city's skeleton lines were such spikes).
   for (const std::uint64_t seed : {3u, 4u, 5u}) {
     const Synthetic_city city = small_city(seed);
     Road_map_options off;
@@ -148,12 +149,15 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   o.rips_radius = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("rips_radius"), std::string::npos);
   o.rips_radius = 1e308;  // 5R overflowed and the skeleton named delta, repair_distance and prune_height
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("extract_road_map: rips_radius must be at most 1e300"),
+  EXPECT_NE(message_of([&] {
+              extract_road_map(trips, o);
+            }).find("extract_road_map: rips_radius must be at most 1e300"),
             std::string::npos);
   o = {};
   o.min_radius = 1e305;
   o.max_radius = 1e306;
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("max_radius must be at most 1e300"), std::string::npos);
+  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("max_radius must be at most 1e300"),
+            std::string::npos);
   o = {};
   o.min_radius = 60;
   EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("min_radius"), std::string::npos);
@@ -219,8 +223,8 @@ TEST(RoadMap, ProgressIsMonotoneAndCancelStops) {
 }
 
 namespace {
-/// Straight lines y = offset[k] from x = 0 to x = length, each a chain of 10 m edges; optionally joined at both
-/// ends by short vertical edges (one street drawn once per direction).
+/// Straight lines y = offset[k] from x = 0 to x = length, each a chain of 10 m edges; optionally joined at
+/// both ends by short vertical edges (one street drawn once per direction).
 Embedded_graph_2 parallel_lines(const std::vector<double>& offsets, double length, bool joined) {
   Embedded_graph_2 g;
   std::vector<Vertex_index> first, last;
@@ -228,7 +232,8 @@ Embedded_graph_2 parallel_lines(const std::vector<double>& offsets, double lengt
     const auto n = static_cast<std::size_t>(length / 10);
     for (std::size_t i = 0; i <= n; ++i) {
       g.positions.push_back({10.0 * double(i), y});
-      if (i > 0) g.edges.push_back({Vertex_index(g.positions.size() - 2), Vertex_index(g.positions.size() - 1)});
+      if (i > 0)
+        g.edges.push_back({Vertex_index(g.positions.size() - 2), Vertex_index(g.positions.size() - 1)});
     }
     first.push_back(Vertex_index(g.positions.size() - n - 1));
     last.push_back(Vertex_index(g.positions.size() - 1));
@@ -293,14 +298,17 @@ TEST(MergeRoadLines, TwoDirectionsOfAStreetBecomeOneLineInTheMiddle) {
 }
 
 // A map drawn with vertices centimetres apart (a skeleton at a small radius) is thinned to half the spacing
-// before the neighbourhood is built: the same one line as the sparse map, from about as many samples (each of the
-// 60,000 vertices was a sample, and the neighbourhood graph held 800 neighbours each: 35 s and 4.4 GB in the CLI).
+// before the neighbourhood is built: the same one line as the sparse map, from about as many samples (each of
+// the 60,000 vertices was a sample, and the neighbourhood graph held 800 neighbours each: 35 s and 4.4 GB in
+// the CLI).
 TEST(MergeRoadLines, AMapWithVerticesCentimetresApartIsThinnedFirst) {
   Embedded_graph_2 dense;
   for (const double y : {0.0, 4.0})
     for (int i = 0; i <= 30000; ++i) {
       dense.positions.push_back({0.01 * i, y});
-      if (i > 0) dense.edges.push_back({Vertex_index(dense.positions.size() - 2), Vertex_index(dense.positions.size() - 1)});
+      if (i > 0)
+        dense.edges.push_back(
+            {Vertex_index(dense.positions.size() - 2), Vertex_index(dense.positions.size() - 1)});
     }
   const Road_merge_result sparse = merge_road_lines(parallel_lines({0.0, 4.0}, 300, false));
   const Road_merge_result r = merge_road_lines(dense);
@@ -315,8 +323,8 @@ TEST(MergeRoadLines, AMapWithVerticesCentimetresApartIsThinnedFirst) {
     }
 }
 
-// Chains of degree-2 vertices keep a vertex every `min_step` along them; junctions, ends and isolated vertices
-// stay; a cycle of degree-2 vertices keeps its smallest index; no vertex dropped: no edges returned.
+// Chains of degree-2 vertices keep a vertex every `min_step` along them; junctions, ends and isolated
+// vertices stay; a cycle of degree-2 vertices keeps its smallest index; no vertex dropped: no edges returned.
 TEST(MergeRoadLines, ThinningKeepsJunctionsAndEnds) {
   Embedded_graph_2 g;
   // A T: a line along x (0..10 by 0.25) with a branch up from x = 5 (0.25 steps to y = 3), a square cycle of
@@ -328,29 +336,33 @@ TEST(MergeRoadLines, ThinningKeepsJunctionsAndEnds) {
   edges.push_back({20, 41});
   for (Vertex_index i = 41; i < 52; ++i) edges.push_back({i, i + 1});
   const Vertex_index square = Vertex_index(g.positions.size());  // 53..56
-  for (const auto& p : {std::array<double, 2>{20, 0}, {20.5, 0}, {20.5, 0.5}, {20, 0.5}}) g.positions.push_back(p);
-  for (Vertex_index k = 0; k < 4; ++k) edges.push_back({std::min<Vertex_index>(square + k, square + (k + 1) % 4),
-                                                         std::max<Vertex_index>(square + k, square + (k + 1) % 4)});
+  for (const auto& p : {std::array<double, 2>{20, 0}, {20.5, 0}, {20.5, 0.5}, {20, 0.5}})
+    g.positions.push_back(p);
+  for (Vertex_index k = 0; k < 4; ++k)
+    edges.push_back({std::min<Vertex_index>(square + k, square + (k + 1) % 4),
+                     std::max<Vertex_index>(square + k, square + (k + 1) % 4)});
   g.positions.push_back({50, 50});  // isolated: 57
   std::sort(edges.begin(), edges.end());
   std::vector<char> kept;
-  const std::vector<Edge> thinned = FeatureRecon::skeleton::internal::thin_map_chains(g.positions, edges, 1.0, kept);
+  const std::vector<Edge> thinned =
+      FeatureRecon::skeleton::internal::thin_map_chains(g.positions, edges, 1.0, kept);
   // Along x: 0, 1, 2, 3, 4, then the junction (5) ... every fourth vertex, as along the branch.
   for (Vertex_index v : {0u, 4u, 8u, 12u, 16u, 20u, 24u, 28u, 32u, 36u, 40u, 44u, 48u, 52u, 53u, 55u, 57u})
     EXPECT_TRUE(kept[v]) << v;
   for (Vertex_index v : {1u, 2u, 3u, 21u, 39u, 41u, 51u, 54u, 56u}) EXPECT_FALSE(kept[v]) << v;
   EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 17);
   // Edges join consecutive kept vertices; the square becomes one edge between its two kept corners.
-  const std::vector<Edge> expected = {{0, 4}, {4, 8}, {8, 12}, {12, 16}, {16, 20}, {20, 24}, {20, 44}, {24, 28},
-                                      {28, 32}, {32, 36}, {36, 40}, {44, 48}, {48, 52}, {53, 55}};
+  const std::vector<Edge> expected = {{0, 4},   {4, 8},   {8, 12},  {12, 16}, {16, 20}, {20, 24}, {20, 44},
+                                      {24, 28}, {28, 32}, {32, 36}, {36, 40}, {44, 48}, {48, 52}, {53, 55}};
   EXPECT_EQ(thinned, expected);
   // Vertices already farther apart than the step: nothing dropped, no edges returned.
   EXPECT_TRUE(FeatureRecon::skeleton::internal::thin_map_chains(g.positions, edges, 0.2, kept).empty());
   EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 58);
 }
 
-// Greedy contraction against brute force: points on a half-unit lattice (duplicates and ties at exactly h) and
-// continuous ones; every removed point joins the nearest earlier kept point closer than h (ties: smaller index).
+// Greedy contraction against brute force: points on a half-unit lattice (duplicates and ties at exactly h)
+// and continuous ones; every removed point joins the nearest earlier kept point closer than h (ties: smaller
+// index).
 TEST(MergeRoadLines, ContractCloseSamplesEqualsBruteForce) {
   std::mt19937_64 rng(11);
   for (const double h : {1.0, 0.5, 2.5}) {
@@ -405,7 +417,8 @@ TEST(MergeRoadLines, ContractCloseSamplesEqualsBruteForce) {
     // The kept points are pairwise at least h apart.
     for (std::size_t i = 0; i < P.rows; ++i)
       for (std::size_t j = i + 1; j < P.rows; ++j)
-        EXPECT_GE(std::hypot(P.data[2 * i] - P.data[2 * j], P.data[2 * i + 1] - P.data[2 * j + 1]), h) << i << " " << j;
+        EXPECT_GE(std::hypot(P.data[2 * i] - P.data[2 * j], P.data[2 * i + 1] - P.data[2 * j + 1]), h)
+            << i << " " << j;
   }
   // Nothing closer than h: nothing changes; a tiny h against the extent: left alone.
   Point_matrix Q;
@@ -419,20 +432,22 @@ TEST(MergeRoadLines, ContractCloseSamplesEqualsBruteForce) {
   EXPECT_EQ(e, (std::vector<Edge>{{0, 1}}));
 }
 
-// Forty copies of one street, each with its own vertices (a skeleton's arcs that follow the same path across a
-// gap), and a crossing street: sampled once, so the merge equals that of one copy (the copies' samples stacked 40
-// deep made cliques of 320 samples; the Chicago map at delta 1000 took 52 s and 6 GB, 0.9 s and 58 MB now).
+// Forty copies of one street, each with its own vertices (a skeleton's arcs that follow the same path across
+// a gap), and a crossing street: sampled once, so the merge equals that of one copy (the copies' samples
+// stacked 40 deep made cliques of 320 samples; the Chicago map at delta 1000 took 52 s and 6 GB, 0.9 s and 58
+// MB now).
 TEST(MergeRoadLines, StackedCopiesOfALineAreSampledOnce) {
   auto with_crossing = [](Embedded_graph_2 g) {
     for (int i = 0; i <= 20; ++i) {
       g.positions.push_back({150, -100.0 + 10.0 * i});
-      if (i > 0) g.edges.push_back({Vertex_index(g.positions.size() - 2), Vertex_index(g.positions.size() - 1)});
+      if (i > 0)
+        g.edges.push_back({Vertex_index(g.positions.size() - 2), Vertex_index(g.positions.size() - 1)});
     }
     return g;
   };
   const Road_merge_result one = merge_road_lines(with_crossing(parallel_lines({0.0}, 300, false)));
-  const Road_merge_result stacked = merge_road_lines(with_crossing(parallel_lines(std::vector<double>(40, 0.0), 300,
-                                                                                  false)));
+  const Road_merge_result stacked =
+      merge_road_lines(with_crossing(parallel_lines(std::vector<double>(40, 0.0), 300, false)));
   ASSERT_EQ(stacked.status, Status::success);
   EXPECT_EQ(stacked.samples, one.samples);
   EXPECT_EQ(stacked.samples_contracted, one.samples_contracted + 39 * (31 + 30 * 4));
@@ -459,7 +474,8 @@ TEST(MergeRoadLines, LinesFartherApartStay) {
     const Road_merge_result r = merge_road_lines(parallel_lines({0.0, gap}, 300, false));
     EXPECT_EQ(map_components(r.map), 2u) << gap;
     EXPECT_NEAR(r.length_after, 600, 30) << gap;
-    for (const auto& p : r.map.positions) EXPECT_LT(std::min(std::fabs(p[1]), std::fabs(p[1] - gap)), 0.5) << gap;
+    for (const auto& p : r.map.positions)
+      EXPECT_LT(std::min(std::fabs(p[1]), std::fabs(p[1] - gap)), 0.5) << gap;
   }
   // ... unless the distance asks for it.
   Road_merge_options o;
@@ -476,7 +492,8 @@ TEST(MergeRoadLines, LinesFartherApartStay) {
   o = {};
   o.max_triangles = 1;
   const std::string m = message_of([&] { merge_road_lines(parallel_lines({0.0, 4.0}, 300, false), o); });
-  EXPECT_NE(m.find("the flag complex has more than 1 triangles (max_triangles of the options"), std::string::npos)
+  EXPECT_NE(m.find("the flag complex has more than 1 triangles (max_triangles of the options"),
+            std::string::npos)
       << m;
 }
 
@@ -527,37 +544,42 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   bad = street;
   bad.positions[5][1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { merge_road_lines(bad); }).find("vertex 5"), std::string::npos);
-  // A far-off vertex: an edge of 2e9 m would be sampled every 2 m (a billion points), one of 2e308 m overflows.
-  // Both are refused before any sampling, naming the edge; max_samples 0 lifts the limit.
+  // A far-off vertex: an edge of 2e9 m would be sampled every 2 m (a billion points), one of 2e308 m
+  // overflows. Both are refused before any sampling, naming the edge; max_samples 0 lifts the limit.
   bad = street;
   bad.positions[5] = {1e9, 0};
   bad.positions[6] = {-1e9, 0};
   bad.edges.push_back({5, 6});
   std::string far = message_of([&] { merge_road_lines(bad); });
-  EXPECT_NE(far.find("points, more than max_samples (67108864); the longest edge, from (1e+09, 0) to (-1e+09, 0), "
-                     "is 2e+09"),
-            std::string::npos) << far;
+  EXPECT_NE(
+      far.find("points, more than max_samples (67108864); the longest edge, from (1e+09, 0) to (-1e+09, 0), "
+               "is 2e+09"),
+      std::string::npos)
+      << far;
   o = {};
   o.spacing = 1e5;
   EXPECT_EQ(merge_road_lines(bad, o).status, Status::success);  // 20,000 samples
   o.spacing = 100;
   o.max_samples = 1000;
   EXPECT_NE(message_of([&] { merge_road_lines(bad, o); }).find("max_samples (1000)"), std::string::npos);
-  // The limit counts the points inserted along edges, not the vertices: a 1,000 km edge at spacing 100 m takes 9,999.
+  // The limit counts the points inserted along edges, not the vertices: a 1,000 km edge at spacing 100 m
+  // takes 9,999.
   Embedded_graph_2 one_edge;
   one_edge.positions = {{0, 0}, {1e6, 0}};
   one_edge.edges = {{0, 1}};
   o.max_samples = 9999;
   EXPECT_EQ(merge_road_lines(one_edge, o).status, Status::success);
   o.max_samples = 9998;
-  EXPECT_NE(message_of([&] { merge_road_lines(one_edge, o); }).find("would insert about 9999 points, more than "
-                                                                     "max_samples (9998)"),
+  EXPECT_NE(message_of([&] { merge_road_lines(one_edge, o); })
+                .find("would insert about 9999 points, more than "
+                      "max_samples (9998)"),
             std::string::npos)
       << message_of([&] { merge_road_lines(one_edge, o); });
   bad.positions[5] = {1e308, 0};
   bad.positions[6] = {-1e308, 0};
   far = message_of([&] { merge_road_lines(bad); });
-  EXPECT_NE(far.find("the edge from (1e+308, 0) to (-1e+308, 0) has a length that overflows"), std::string::npos)
+  EXPECT_NE(far.find("the edge from (1e+308, 0) to (-1e+308, 0) has a length that overflows"),
+            std::string::npos)
       << far;
   for (const double stop_at : {0.0, 0.2, 0.5}) {
     o = {};
@@ -609,7 +631,8 @@ TEST(SyntheticCity, StreetsAndTrips) {
   const Synthetic_city c = make_synthetic_city(o);
   const std::size_t grid = (o.columns - 1) * o.rows + o.columns * (o.rows - 1);
   EXPECT_EQ(c.streets.positions.size(), o.columns * o.rows);
-  EXPECT_EQ(c.streets.edges.size(), grid - std::size_t(std::floor(o.missing_streets * double(grid))) + std::min(o.columns, o.rows) - 1);
+  EXPECT_EQ(c.streets.edges.size(), grid - std::size_t(std::floor(o.missing_streets * double(grid))) +
+                                        std::min(o.columns, o.rows) - 1);
   EXPECT_LE(c.driven.edges.size(), c.streets.edges.size());
   EXPECT_EQ(c.trips.size(), o.trips);
   // Without noise and bias every fix lies lane_offset from a driven street, and consecutive fixes are at most
@@ -619,11 +642,13 @@ TEST(SyntheticCity, StreetsAndTrips) {
     for (std::size_t i = 0; i < t.size(); ++i) {
       double d = std::numeric_limits<double>::infinity();
       for (const Edge& e : c.driven.edges)
-        d = std::min(d, segment_distance({t[i].x, t[i].y}, c.driven.positions[e[0]], c.driven.positions[e[1]]));
+        d = std::min(d,
+                     segment_distance({t[i].x, t[i].y}, c.driven.positions[e[0]], c.driven.positions[e[1]]));
       EXPECT_LE(d, o.lane_offset + 1e-9);
       if (i > 0) {
         EXPECT_LT(t[i - 1].time, t[i].time);
-        EXPECT_LE(std::hypot(t[i].x - t[i - 1].x, t[i].y - t[i - 1].y), 1.3 * o.speed * o.sampling_interval + 1e-9);
+        EXPECT_LE(std::hypot(t[i].x - t[i - 1].x, t[i].y - t[i - 1].y),
+                  1.3 * o.speed * o.sampling_interval + 1e-9);
       }
     }
     fixes += t.size();
@@ -635,8 +660,8 @@ TEST(SyntheticCity, StreetsAndTrips) {
   ASSERT_EQ(again.trips.size(), c.trips.size());
   for (std::size_t t = 0; t < c.trips.size(); ++t)
     for (std::size_t i = 0; i < c.trips[t].size(); ++i) EXPECT_EQ(again.trips[t][i].x, c.trips[t][i].x);
-  // Progress: 0, then before each trip 0.05 + 0.95 t / trips, then 1. A stop before trip 10 keeps the first ten
-  // trips as they were and the streets they drove.
+  // Progress: 0, then before each trip 0.05 + 0.95 t / trips, then 1. A stop before trip 10 keeps the first
+  // ten trips as they were and the streets they drove.
   std::vector<double> seen;
   o.progress = [&](double f) {
     seen.push_back(f);
@@ -683,13 +708,15 @@ TEST(SyntheticCity, StreetsAndTrips) {
   // range (a noise of 1e308 wrote inf into the tracks).
   b = {};
   b.trips = (std::size_t(1) << 26) + 1;
-  EXPECT_EQ(message_of([&] { make_synthetic_city(b); }),
-            "make_synthetic_city: trips must be at most 2^26 (the most fixes the trips may record), got 67108865");
+  EXPECT_EQ(
+      message_of([&] { make_synthetic_city(b); }),
+      "make_synthetic_city: trips must be at most 2^26 (the most fixes the trips may record), got 67108865");
   b = {};
   b.noise = 1e308;
-  EXPECT_EQ(message_of([&] { make_synthetic_city(b); }),
-            "make_synthetic_city: fix 0 of trip 0 lies beyond the largest double: noise (1e+308), trip_bias (2) or "
-            "lane_offset (2) too large");
+  EXPECT_EQ(
+      message_of([&] { make_synthetic_city(b); }),
+      "make_synthetic_city: fix 0 of trip 0 lies beyond the largest double: noise (1e+308), trip_bias (2) or "
+      "lane_offset (2) too large");
   b.noise = 4;
   b.trip_bias = 1e308;
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("trip_bias (1e+308)"), std::string::npos);
@@ -705,7 +732,8 @@ TEST(SyntheticCity, StreetsAndTrips) {
 
 TEST(SyntheticCity, StreetRemovalEqualsTheGreedySearch) {
   // The union-find removal against the definition: try the edges in order, remove one when a search finds the
-  // rest still connected, until `count` are gone. Random multigraphs (loops, parallel edges, disconnected ones).
+  // rest still connected, until `count` are gone. Random multigraphs (loops, parallel edges, disconnected
+  // ones).
   std::mt19937_64 rng(5);
   for (int round = 0; round < 400; ++round) {
     const std::size_t n = 1 + rng() % 9, m = rng() % 20;
@@ -750,7 +778,8 @@ TEST(SyntheticCity, GabrielEdgesOfDegenerateInput) {
   // Collinear: the middle point lies in the outer pair's disc.
   EXPECT_EQ(gabriel_edges({{0, 0}, {2, 0}, {1, 0}}), (std::vector<Edge>{{0, 2}, {1, 2}}));
   // A square: its sides, not its diagonals (each has the two other corners on its circle).
-  EXPECT_EQ(gabriel_edges({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), (std::vector<Edge>{{0, 1}, {0, 3}, {1, 2}, {2, 3}}));
+  EXPECT_EQ(gabriel_edges({{0, 0}, {1, 0}, {1, 1}, {0, 1}}),
+            (std::vector<Edge>{{0, 1}, {0, 3}, {1, 2}, {2, 3}}));
   // A grid of 3 x 3: the 12 unit streets.
   std::vector<std::array<double, 2>> grid;
   for (int j = 0; j < 3; ++j)
@@ -760,7 +789,9 @@ TEST(SyntheticCity, GabrielEdgesOfDegenerateInput) {
   for (const Edge& e : g)
     EXPECT_DOUBLE_EQ(std::hypot(grid[e[0]][0] - grid[e[1]][0], grid[e[0]][1] - grid[e[1]][1]), 1.0);
   // Duplicates are refused, naming both points.
-  EXPECT_NE(message_of([] { gabriel_edges({{0, 0}, {1, 0}, {0, 0}, {0, 1}}); }).find("points 0 and 2 coincide"),
+  EXPECT_NE(message_of([] {
+              gabriel_edges({{0, 0}, {1, 0}, {0, 0}, {0, 1}});
+            }).find("points 0 and 2 coincide"),
             std::string::npos);
 }
 
@@ -792,13 +823,15 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
     adj[e[1]].push_back(e[0]);
   }
   for (std::size_t v = n; v < adj.size(); ++v) EXPECT_EQ(adj[v].size(), 2u) << v;
-  // Walk each street from an intersection to the next: its middle lies at most curvature x chord off the chord,
-  // and its ends form a Gabriel pair.
+  // Walk each street from an intersection to the next: its middle lies at most curvature x chord off the
+  // chord, and its ends form a Gabriel pair.
   std::size_t streets = 0, bent = 0;
   for (Vertex_index a = 0; a < n; ++a)
     for (const Vertex_index first : adj[a]) {
       std::vector<Vertex_index> line{a, first};
-      while (line.back() >= n) line.push_back(adj[line.back()][0] == line[line.size() - 2] ? adj[line.back()][1] : adj[line.back()][0]);
+      while (line.back() >= n)
+        line.push_back(adj[line.back()][0] == line[line.size() - 2] ? adj[line.back()][1]
+                                                                    : adj[line.back()][0]);
       const Vertex_index b = line.back();
       if (b < a) continue;  // each street once
       ++streets;
@@ -814,8 +847,8 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
           EXPECT_GT(std::hypot(P[w][0] - mid[0], P[w][1] - mid[1]), L / 2) << a << "-" << b;
         }
     }
-  EXPECT_GT(streets, n);            // more streets than a tree
-  EXPECT_GT(bent, streets / 2);     // most streets bend
+  EXPECT_GT(streets, n);         // more streets than a tree
+  EXPECT_GT(bent, streets / 2);  // most streets bend
   std::vector<char> seen(n, 0);
   std::vector<Vertex_index> stack{0};
   seen[0] = 1;

@@ -23,16 +23,18 @@ std::vector<std::pair<double, double>> diagram(const std::vector<Reeb_persistenc
   return d;
 }
 std::size_t count_above(const std::vector<Reeb_persistence_pair>& v, double t) {
-  return static_cast<std::size_t>(std::count_if(v.begin(), v.end(), [t](const auto& p) { return p.persistence() > t; }));
+  return static_cast<std::size_t>(
+      std::count_if(v.begin(), v.end(), [t](const auto& p) { return p.persistence() > t; }));
 }
 
-/// A random connected graph (a random tree plus extra edges) with a random function; integer values on odd seeds
-/// (many ties).
+/// A random connected graph (a random tree plus extra edges) with a random function; integer values on odd
+/// seeds (many ties).
 Complex_with_function random_graph(std::mt19937& rng, bool ties, int max_n = 40) {
   const int n = std::uniform_int_distribution<int>(2, max_n)(rng);
   std::vector<Edge> edges;
   for (int v = 1; v < n; ++v)
-    edges.push_back({static_cast<Vertex_index>(std::uniform_int_distribution<int>(0, v - 1)(rng)), static_cast<Vertex_index>(v)});
+    edges.push_back({static_cast<Vertex_index>(std::uniform_int_distribution<int>(0, v - 1)(rng)),
+                     static_cast<Vertex_index>(v)});
   const int extra = std::uniform_int_distribution<int>(0, n / 2 + 1)(rng);
   for (int k = 0; k < extra; ++k) {
     const auto a = static_cast<Vertex_index>(std::uniform_int_distribution<int>(0, n - 1)(rng));
@@ -42,7 +44,9 @@ Complex_with_function random_graph(std::mt19937& rng, bool ties, int max_n = 40)
   std::vector<Triangle> triangles;
   if (n >= 3 && std::uniform_int_distribution<int>(0, 3)(rng) == 0) triangles.push_back({0, 1, 2});
   std::vector<double> f(static_cast<std::size_t>(n));
-  for (double& x : f) x = ties ? std::uniform_int_distribution<int>(0, 6)(rng) : std::uniform_real_distribution<double>(0, 1)(rng);
+  for (double& x : f)
+    x = ties ? std::uniform_int_distribution<int>(0, 6)(rng)
+             : std::uniform_real_distribution<double>(0, 1)(rng);
   return make(static_cast<std::size_t>(n), edges, triangles, f);
 }
 
@@ -62,14 +66,14 @@ void expect_partition(const Reeb_graph& G, std::size_t n, const std::string& wha
 
 namespace {
 std::size_t count_between(const std::vector<Reeb_persistence_pair>& v, double lo, double hi) {  // in (lo, hi]
-  return static_cast<std::size_t>(std::count_if(v.begin(), v.end(), [lo, hi](const auto& p) {
-    return p.persistence() > lo && p.persistence() <= hi;
-  }));
+  return static_cast<std::size_t>(std::count_if(
+      v.begin(), v.end(), [lo, hi](const auto& p) { return p.persistence() > lo && p.persistence() <= hi; }));
 }
-/// Runs random graphs and thresholds until `effective` trials both removed a feature and had one of persistence
-/// above 2 delta to keep (at most 4 times as many trials in all), checking the guarantee on every trial.
-void check_guarantee_on_random_graphs(unsigned seed, std::size_t effective, int max_n, std::size_t min_removed,
-                                      std::size_t min_loops_removed) {
+/// Runs random graphs and thresholds until `effective` trials both removed a feature and had one of
+/// persistence above 2 delta to keep (at most 4 times as many trials in all), checking the guarantee on every
+/// trial.
+void check_guarantee_on_random_graphs(unsigned seed, std::size_t effective, int max_n,
+                                      std::size_t min_removed, std::size_t min_loops_removed) {
   std::mt19937 rng(seed);
   std::size_t removed = 0, loops_removed = 0, counted = 0;
   for (std::size_t trial = 0; counted < effective && trial < 4 * effective; ++trial) {
@@ -85,20 +89,25 @@ void check_guarantee_on_random_graphs(unsigned seed, std::size_t effective, int 
     removed += S.removed_branches + S.removed_loops;
     loops_removed += S.removed_loops;
     // The diagrams move by at most 2 delta (branches), 6 delta (loops).
-    EXPECT_LE(hera_bottleneck(diagram(before.sublevel_branches), diagram(after.sublevel_branches)), 2 * delta + 1e-9) << what;
-    EXPECT_LE(hera_bottleneck(diagram(before.superlevel_branches), diagram(after.superlevel_branches)), 2 * delta + 1e-9) << what;
+    EXPECT_LE(hera_bottleneck(diagram(before.sublevel_branches), diagram(after.sublevel_branches)),
+              2 * delta + 1e-9)
+        << what;
+    EXPECT_LE(hera_bottleneck(diagram(before.superlevel_branches), diagram(after.superlevel_branches)),
+              2 * delta + 1e-9)
+        << what;
     EXPECT_LE(hera_bottleneck(diagram(before.loops), diagram(after.loops)), 6 * delta + 1e-9) << what;
     EXPECT_EQ(S.graph.components, A.reeb_graph().components) << what;
-    const std::vector<Reeb_persistence_pair>* diagrams[3][2] = {{&before.sublevel_branches, &after.sublevel_branches},
-                                                                {&before.superlevel_branches, &after.superlevel_branches},
-                                                                {&before.loops, &after.loops}};
+    const std::vector<Reeb_persistence_pair>* diagrams[3][2] = {
+        {&before.sublevel_branches, &after.sublevel_branches},
+        {&before.superlevel_branches, &after.superlevel_branches},
+        {&before.loops, &after.loops}};
     for (const auto& [b, a] : diagrams) {
       // Features above 2 delta survive, and as more than noise: above delta.
       EXPECT_GE(count_above(*a, delta), count_above(*b, 2 * delta)) << what;
-      // Every feature of persistence <= delta is merged away. A feature of at most delta left afterwards is one
-      // of persistence in (delta, 2 delta] that a merge shortened, never an original small one: there are at most
-      // as many, and none of them has an original small feature's birth and death (distinct values only: with
-      // ties, two features can share them).
+      // Every feature of persistence <= delta is merged away. A feature of at most delta left afterwards is
+      // one of persistence in (delta, 2 delta] that a merge shortened, never an original small one: there are
+      // at most as many, and none of them has an original small feature's birth and death (distinct values
+      // only: with ties, two features can share them).
       EXPECT_LE(count_between(*a, 0, delta), count_between(*b, delta, 2 * delta)) << what;
       if (!ties)
         for (const auto& q : *a)
@@ -108,27 +117,33 @@ void check_guarantee_on_random_graphs(unsigned seed, std::size_t effective, int 
                   << what << ": the feature (" << p.birth << ", " << p.death << ") survived";
             }
     }
-    const bool keeps = count_above(before.sublevel_branches, 2 * delta) + count_above(before.superlevel_branches, 2 * delta) +
-                           count_above(before.loops, 2 * delta) > 0;
+    const bool keeps = count_above(before.sublevel_branches, 2 * delta) +
+                           count_above(before.superlevel_branches, 2 * delta) +
+                           count_above(before.loops, 2 * delta) >
+                       0;
     if (S.removed_branches + S.removed_loops > 0 && keeps) ++counted;
     if (::testing::Test::HasFailure()) break;
   }
-  EXPECT_GE(counted, effective);  // trials that both removed and kept something
+  EXPECT_GE(counted, effective);    // trials that both removed and kept something
   EXPECT_GT(removed, min_removed);  // the property was exercised
   EXPECT_GT(loops_removed, min_loops_removed);
 }
 }  // namespace
 
-TEST(SimplifyByPersistence, GuaranteeOnRandomGraphs) { check_guarantee_on_random_graphs(2026, 1000, 40, 1000, 100); }
+TEST(SimplifyByPersistence, GuaranteeOnRandomGraphs) {
+  check_guarantee_on_random_graphs(2026, 1000, 40, 1000, 100);
+}
 
 // Larger graphs: nested branches, forks of sibling components with several parts beyond a spur's top level.
-TEST(SimplifyByPersistence, GuaranteeOnLargerRandomGraphs) { check_guarantee_on_random_graphs(7, 150, 300, 3000, 100); }
+TEST(SimplifyByPersistence, GuaranteeOnLargerRandomGraphs) {
+  check_guarantee_on_random_graphs(7, 150, 300, 3000, 100);
+}
 
 TEST(SimplifyByPersistence, RemovesSmallFeaturesOnly) {
   // A figure-eight-like graph with a short spur: delta between the spur and the loops removes the spur only.
   // Loop 0-1-3-2 (bottom 0, top 3, height 4), spur 1-5 (f 1 -> 1.5, persistence 0.5 as a superlevel branch).
-  // "Persistence at most delta": the spur's persistence is exactly the delta below, and so is the loop's at delta 4
-  // (values exact in binary).
+  // "Persistence at most delta": the spur's persistence is exactly the delta below, and so is the loop's at
+  // delta 4 (values exact in binary).
   const auto g = make(6, {{0, 1}, {0, 2}, {1, 3}, {2, 3}, {3, 4}, {1, 5}}, {}, {0, 1, 2, 4, 6, 1.5});
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
   const Reeb_simplification_result S = simplify_by_persistence(A, 0.5);
@@ -157,8 +172,8 @@ TEST(SimplifyByPersistence, RemovesSmallFeaturesOnly) {
 }
 
 TEST(SimplifyByPersistence, UnusedValuesSubnormalsAndTrimmedStubs) {
-  // An index the graph does not use may hold NaN or inf (the glued complex checked every value and the message
-  // named compute_augmented_reeb_graph).
+  // An index the graph does not use may hold NaN or inf (the glued complex checked every value and the
+  // message named compute_augmented_reeb_graph).
   const auto g = make(2, {{0, 1}}, {}, {0, 1});
   const Reeb_graph R = compute_augmented_reeb_graph(g.complex, g.f).reeb_graph();
   for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
@@ -167,8 +182,8 @@ TEST(SimplifyByPersistence, UnusedValuesSubnormalsAndTrimmedStubs) {
     EXPECT_EQ(S.graph.arcs.size(), 1u);
     EXPECT_TRUE(S.graph.nodes[0].members.empty() && S.graph.nodes[1].members.empty());
   }
-  // Two parallel arcs between nodes of the smallest subnormal value: the helper midpoint rounded to 0, below both
-  // (an assertion, or a node on a helper vertex). Level: one node with the other as a member.
+  // Two parallel arcs between nodes of the smallest subnormal value: the helper midpoint rounded to 0, below
+  // both (an assertion, or a node on a helper vertex). Level: one node with the other as a member.
   const double t = std::numeric_limits<double>::denorm_min();
   Reeb_graph P;
   P.nodes.resize(2);
@@ -182,10 +197,11 @@ TEST(SimplifyByPersistence, UnusedValuesSubnormalsAndTrimmedStubs) {
   ASSERT_EQ(Q.graph.nodes.size(), 1u);
   EXPECT_EQ(Q.graph.nodes[0].vertex, 0u);
   EXPECT_EQ(Q.graph.nodes[0].members, (std::vector<Vertex_index>{1}));
-  // Trimming the stub 0 -> 2 leaves the fork 2 regular; simplifying then put vertex 0 (f 0) inside the arc from
-  // vertex 1 (f 1) to vertex 3 (f 5), after vertex 2. It goes to the arc's lower node, on its side.
+  // Trimming the stub 0 -> 2 leaves the fork 2 regular; simplifying then put vertex 0 (f 0) inside the arc
+  // from vertex 1 (f 1) to vertex 3 (f 5), after vertex 2. It goes to the arc's lower node, on its side.
   const auto h = make(4, {{0, 2}, {1, 2}, {2, 3}}, {}, {0, 1, 2, 5});
-  const Reeb_trim_result T = trim_essential_stubs(compute_augmented_reeb_graph(h.complex, h.f).reeb_graph(), 2.0);
+  const Reeb_trim_result T =
+      trim_essential_stubs(compute_augmented_reeb_graph(h.complex, h.f).reeb_graph(), 2.0);
   ASSERT_EQ(T.trimmed, 1u);
   const Reeb_simplification_result U = simplify_by_persistence(T.graph, h.f, 0.0);
   ASSERT_EQ(U.graph.nodes.size(), 2u);
@@ -222,7 +238,8 @@ TEST(SimplifyByPersistence, BadGraphsAreNamed) {
   bad = R;
   bad.nodes[1].members = {7};
   EXPECT_NE(error_of(bad, g.f).find("node 1 has vertex 7 out of range"), std::string::npos);
-  EXPECT_NE(error_of(R, {0, std::nan(""), 2}).find("the value of vertex 1 (arc 0) is nan"), std::string::npos);
+  EXPECT_NE(error_of(R, {0, std::nan(""), 2}).find("the value of vertex 1 (arc 0) is nan"),
+            std::string::npos);
   EXPECT_NE(error_of(R, {0, 1, -5}).find("node 1 has value 2 but its vertex 2 has -5"), std::string::npos);
   bad = R;
   bad.arcs[0].upper = 9;
@@ -231,8 +248,12 @@ TEST(SimplifyByPersistence, BadGraphsAreNamed) {
   bad = R;
   std::swap(bad.nodes[0], bad.nodes[1]);
   std::swap(bad.arcs[0].lower, bad.arcs[0].upper);
-  EXPECT_EQ(error_of(bad, g.f).rfind("simplify_by_persistence: nodes 0 and 1 are not in increasing (value, vertex) "
-                                     "order", 0), 0u) << error_of(bad, g.f);
+  EXPECT_EQ(
+      error_of(bad, g.f).rfind("simplify_by_persistence: nodes 0 and 1 are not in increasing (value, vertex) "
+                               "order",
+                               0),
+      0u)
+      << error_of(bad, g.f);
 }
 
 TEST(SimplifyByPersistence, OnlyTheGraphsVerticesComeBack) {
@@ -258,8 +279,8 @@ TEST(SimplifyByPersistence, OnlyTheGraphsVerticesComeBack) {
 
 TEST(SimplifyByPersistence, TrimmedStubsStayTrimmed) {
   // Lollipop: stub 0 (f 0) - 1 (f 1) up to the fork 2 (f 2), loop 2-3-5 / 2-4-5 (f 3, 3.5, 6). Trimming puts
-  // vertices 0 and 1 into the fork's members, off its level; simplifying again keeps them there (an edge to the
-  // fork would not be level and brought the stub back as two minima).
+  // vertices 0 and 1 into the fork's members, off its level; simplifying again keeps them there (an edge to
+  // the fork would not be level and brought the stub back as two minima).
   const auto g = make(6, {{0, 1}, {1, 2}, {2, 3}, {2, 4}, {3, 5}, {4, 5}}, {}, {0, 1, 2, 3, 3.5, 6});
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
   const Reeb_trim_result T = trim_essential_stubs(A.reeb_graph(), 2.5);
@@ -297,7 +318,8 @@ namespace {
 /// The arc holding input vertex v (or none).
 std::size_t arc_of(const Reeb_graph& G, Vertex_index v) {
   for (std::size_t k = 0; k < G.arcs.size(); ++k)
-    if (std::find(G.arcs[k].vertices.begin(), G.arcs[k].vertices.end(), v) != G.arcs[k].vertices.end()) return k;
+    if (std::find(G.arcs[k].vertices.begin(), G.arcs[k].vertices.end(), v) != G.arcs[k].vertices.end())
+      return k;
   return G.arcs.size();
 }
 }  // namespace
@@ -305,11 +327,11 @@ std::size_t arc_of(const Reeb_graph& G, Vertex_index v) {
 TEST(SimplifyByPersistence, ASpurIsMergedOnTheWayToTheElder) {
   // Fork s = vertex 1 (f 0) above the minimum 0 (f -1). Spur 1 - 2 - 3 (f 0.75, 1): the maximum 3 dies at s,
   // persistence 1. The sibling goes up to the fork a = 4 (f 0.5), which splits into a short branch 4 - 5 - 6
-  // (f 0.6, 3; persistence 2.5, kept at delta 1.5) and the way to the elder 4 - 7 - 8 - 9 - 10 (f 0.7, 0.9, 2,
-  // 10). Both branches leave a by one arc and cross the spur's top level, the short one first in arc order; the
-  // dissertation's path runs towards the elder, so the spur lies on that arc afterwards.
-  const auto g = make(11, {{0, 1}, {1, 2}, {2, 3}, {1, 4}, {4, 5}, {5, 6}, {4, 7}, {7, 8}, {8, 9}, {9, 10}}, {},
-                      {-1, 0, 0.75, 1, 0.5, 0.6, 3, 0.7, 0.9, 2, 10});
+  // (f 0.6, 3; persistence 2.5, kept at delta 1.5) and the way to the elder 4 - 7 - 8 - 9 - 10 (f 0.7, 0.9,
+  // 2, 10). Both branches leave a by one arc and cross the spur's top level, the short one first in arc
+  // order; the dissertation's path runs towards the elder, so the spur lies on that arc afterwards.
+  const auto g = make(11, {{0, 1}, {1, 2}, {2, 3}, {1, 4}, {4, 5}, {5, 6}, {4, 7}, {7, 8}, {8, 9}, {9, 10}},
+                      {}, {-1, 0, 0.75, 1, 0.5, 0.6, 3, 0.7, 0.9, 2, 10});
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
   ASSERT_EQ(A.reeb_graph().count(maximum), 3u);
   const Reeb_simplification_result S = simplify_by_persistence(A, 1.5);
@@ -331,10 +353,11 @@ TEST(SimplifyByPersistence, ASpurIsMergedOnTheWayToTheElder) {
 }
 
 TEST(SimplifyByPersistence, ManySpursAtOneForkGoTowardsTheElder) {
-  // Fork s = vertex 1 (f 0) above the minimum 0 (f -1), with k one-vertex spurs (f up to 0.1), a kept branch to
-  // the maximum 2 (f 5) and the elder branch to the maximum 3 (f 10), the spurs' arcs before, between and after
-  // the two. Every spur dies at s; each is merged along the arc towards the elder. The sibling components of a
-  // fork are found once per fork (they were searched for each pair: quadratic in the fork's degree).
+  // Fork s = vertex 1 (f 0) above the minimum 0 (f -1), with k one-vertex spurs (f up to 0.1), a kept branch
+  // to the maximum 2 (f 5) and the elder branch to the maximum 3 (f 10), the spurs' arcs before, between and
+  // after the two. Every spur dies at s; each is merged along the arc towards the elder. The sibling
+  // components of a fork are found once per fork (they were searched for each pair: quadratic in the fork's
+  // degree).
   const std::size_t k = 300, n = 4 + k;
   std::vector<Edge> edges{{0, 1}};
   std::vector<double> f{-1, 0, 5, 10};
@@ -397,9 +420,10 @@ TEST(SimplifyByPersistence, LongStemWithManySpursBecomesOneArc) {
 }
 
 TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
-  // The spurs at one fork of the test above: reports from 0 to 1 in order, the same graph as without a callback;
-  // a stop at the start, after the persistence or during the glued complex's Reeb graph gives interrupted and no
-  // graph, and no later report; the last report (1, the work done) does not undo the result.
+  // The spurs at one fork of the test above: reports from 0 to 1 in order, the same graph as without a
+  // callback; a stop at the start, after the persistence or during the glued complex's Reeb graph gives
+  // interrupted and no graph, and no later report; the last report (1, the work done) does not undo the
+  // result.
   const std::size_t k = 300, n = 4 + k;
   std::vector<Edge> edges{{0, 1}, {1, 2}, {1, 3}};
   std::vector<double> f{-1, 0, 5, 10};
@@ -426,7 +450,8 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_EQ(seen.front(), 0.0);
   EXPECT_EQ(seen.back(), 1.0);
-  EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.9; }));  // glued sweep
+  EXPECT_TRUE(
+      std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.9; }));  // glued sweep
   for (const double stop_at : {0.0, 0.15, 0.5, 0.95}) {
     std::size_t later = 0;
     bool refused = false;
@@ -437,7 +462,8 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
       return t < stop_at;
     };
     const Reeb_simplification_result S = simplify_by_persistence(A, 1.0, stopping);
-    EXPECT_EQ(S.status, stop_at < 0.95 ? Status::interrupted : Status::success) << stop_at;  // 1.0 is not asked
+    EXPECT_EQ(S.status, stop_at < 0.95 ? Status::interrupted : Status::success)
+        << stop_at;  // 1.0 is not asked
     if (stop_at < 0.95) {
       EXPECT_TRUE(S.graph.nodes.empty()) << stop_at;
       EXPECT_EQ(S.removed_branches, 0u) << stop_at;
@@ -447,8 +473,8 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
 }
 
 TEST(SimplifyByPersistence, RefusesAnInterruptedAugmentedGraph) {
-  // A path stopped half way has half its arcs: simplifying that partial graph would report success on a graph of
-  // thousands of components. Refused, naming the argument; the complete graph simplifies to one arc.
+  // A path stopped half way has half its arcs: simplifying that partial graph would report success on a graph
+  // of thousands of components. Refused, naming the argument; the complete graph simplifies to one arc.
   const std::size_t n = 8192;
   std::vector<Edge> edges;
   std::vector<double> f(n);
@@ -466,9 +492,11 @@ TEST(SimplifyByPersistence, RefusesAnInterruptedAugmentedGraph) {
     (void)simplify_by_persistence(partial, 1.0);
     ADD_FAILURE() << "an interrupted graph was simplified";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("augmented Reeb graph A is incomplete"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("augmented Reeb graph A is incomplete"), std::string::npos)
+        << e.what();
   }
-  const Reeb_simplification_result S = simplify_by_persistence(compute_augmented_reeb_graph(g.complex, g.f), 1.0);
+  const Reeb_simplification_result S =
+      simplify_by_persistence(compute_augmented_reeb_graph(g.complex, g.f), 1.0);
   EXPECT_EQ(S.status, Status::success);
   EXPECT_EQ(S.graph.nodes.size(), 2u);
   EXPECT_EQ(S.graph.arcs.size(), 1u);
@@ -491,20 +519,23 @@ Complex_with_function toothed_stem(std::size_t n, Stem stem, Tooth tooth) {
 }
 
 /// A flat stem 0..n-1 (f = i * 1e-6) with a tooth at every stem vertex, n + i, up to f(i) + 0.5, or, when
-/// `falling`, up to f(i) + 0.5 - 2e-6 i with the last tooth the tallest (0.9): every tooth but the tallest dies at
-/// its stem vertex, persistence about 0.5.
+/// `falling`, up to f(i) + 0.5 - 2e-6 i with the last tooth the tallest (0.9): every tooth but the tallest
+/// dies at its stem vertex, persistence about 0.5.
 Complex_with_function flat_comb(std::size_t n, bool falling) {
   return toothed_stem(
       n, [](std::size_t i) { return 1e-6 * static_cast<double>(i); },
-      [&](std::size_t i) { return falling ? (i + 1 == n ? 0.9 : 0.5 - 2e-6 * static_cast<double>(i)) : 0.5; });
+      [&](std::size_t i) {
+        return falling ? (i + 1 == n ? 0.9 : 0.5 - 2e-6 * static_cast<double>(i)) : 0.5;
+      });
 }
 }  // namespace
 
 TEST(SimplifyByPersistence, FlatStemWithTallTeethGluesEachToothOnce) {
-  // Each tooth's level is reached again only at the tallest tooth, at the far end of the stem: the path it was
-  // glued onto ran along the rest of the stem, n^2 / 2 merging edges whose strips spanned O(n) levels each (n 2000:
-  // 6 million triangles, 17 s and 1.4 GB; n 4000: 131 s, 5.5 GB). Each path now goes on as the next tooth's at the
-  // next stem vertex: a few triangles per tooth. Rising and falling teeth (the next tooth higher, or lower).
+  // Each tooth's level is reached again only at the tallest tooth, at the far end of the stem: the path it
+  // was glued onto ran along the rest of the stem, n^2 / 2 merging edges whose strips spanned O(n) levels
+  // each (n 2000: 6 million triangles, 17 s and 1.4 GB; n 4000: 131 s, 5.5 GB). Each path now goes on as the
+  // next tooth's at the next stem vertex: a few triangles per tooth. Rising and falling teeth (the next tooth
+  // higher, or lower).
   const std::size_t n = 2000;
   for (const bool falling : {false, true}) {
     const auto g = flat_comb(n, falling);
@@ -530,10 +561,11 @@ TEST(SimplifyByPersistence, FlatStemWithTallTeethGluesEachToothOnce) {
 }
 
 TEST(SimplifyByPersistence, FanOfLoopsGluesEachLoopOnce) {
-  // A bottom vertex 0 joined to every vertex of a nearly flat path 1..n (f = 0.5 + 1e-6 i): n - 1 loops of height
-  // about 0.5. The arcs up from vertex 0 weigh the same in the maximum spanning forest of the loop pass, which kept
-  // the oldest, so loop i's thin cycle ran back along the whole path instead of the triangle 0, i - 1, i: n^2 / 2
-  // arcs (n 2000: 2 million, strips of 6 million triangles, 22 s and 1.4 GB). Now each cycle is a triangle.
+  // A bottom vertex 0 joined to every vertex of a nearly flat path 1..n (f = 0.5 + 1e-6 i): n - 1 loops of
+  // height about 0.5. The arcs up from vertex 0 weigh the same in the maximum spanning forest of the loop
+  // pass, which kept the oldest, so loop i's thin cycle ran back along the whole path instead of the triangle
+  // 0, i - 1, i: n^2 / 2 arcs (n 2000: 2 million, strips of 6 million triangles, 22 s and 1.4 GB). Now each
+  // cycle is a triangle.
   const std::size_t n = 2000;
   std::vector<Edge> edges;
   std::vector<double> f(n + 1, 0.0);
@@ -570,13 +602,15 @@ TEST(SimplifyByPersistence, FanOfLoopsGluesEachLoopOnce) {
 }
 
 TEST(SimplifyByPersistence, ATallToothsPathGoesOnFromWhereShorterOnesStop) {
-  // Rising stem 0..19 (f = i) with a tooth i + 0.5 at each vertex, but 5.5 at vertex 0 and 22 at vertex 19. Each
-  // short tooth's path stops at the next stem vertex; the tall tooth's goes on as theirs, from where each stopped,
-  // up to 5.5. Delta 0.6 keeps the tall tooth, 6 merges it too: one arc.
+  // Rising stem 0..19 (f = i) with a tooth i + 0.5 at each vertex, but 5.5 at vertex 0 and 22 at vertex 19.
+  // Each short tooth's path stops at the next stem vertex; the tall tooth's goes on as theirs, from where
+  // each stopped, up to 5.5. Delta 0.6 keeps the tall tooth, 6 merges it too: one arc.
   const std::size_t n = 20;
   const auto g = toothed_stem(
       n, [](std::size_t i) { return static_cast<double>(i); },
-      [&](std::size_t i) { return i == 0 ? 5.5 : i + 1 == n ? 3 : 0.5; });
+      [&](std::size_t i) { return i == 0       ? 5.5
+                                  : i + 1 == n ? 3
+                                               : 0.5; });
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(g.complex, g.f);
   const Reeb_simplification_result K = simplify_by_persistence(A, 0.6);
   EXPECT_EQ(K.removed_branches, n - 2);

@@ -13,10 +13,10 @@ namespace FeatureRecon {
 namespace internal {
 
 /// \cond
-/// Lists 0..n-1 in two flat arrays (two allocations for all the lists, where a vector per list costs one each):
-/// list k is items[offset[k], offset[k + 1]), holding the values emitted with key k in the order emitted.
-/// build(n, each) calls each(emit) twice, to count and then to fill; each must emit the same (key < n, value)
-/// pairs both times (with FEATURERECON_DEBUG, keys >= n and writes beyond the items are caught).
+/// Lists 0..n-1 in two flat arrays (two allocations for all the lists, where a vector per list costs one
+/// each): list k is items[offset[k], offset[k + 1]), holding the values emitted with key k in the order
+/// emitted. build(n, each) calls each(emit) twice, to count and then to fill; each must emit the same (key <
+/// n, value) pairs both times (with FEATURERECON_DEBUG, keys >= n and writes beyond the items are caught).
 template <class T, class Allocator = std::allocator<T>>
 struct Compressed_lists {
   using Offset_allocator = typename std::allocator_traits<Allocator>::template rebind_alloc<std::size_t>;

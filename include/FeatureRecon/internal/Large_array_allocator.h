@@ -42,7 +42,8 @@ struct Large_array_allocator {
       if (p != nullptr) (void)madvise(p, rounded, MADV_HUGEPAGE);
 #endif
     } else if (alignof(T) > alignof(std::max_align_t)) {  // the link-cut tree's nodes are aligned to 32 bytes
-      p = std::aligned_alloc(alignof(T), (std::max<std::size_t>(bytes, 1) + alignof(T) - 1) / alignof(T) * alignof(T));
+      p = std::aligned_alloc(alignof(T),
+                             (std::max<std::size_t>(bytes, 1) + alignof(T) - 1) / alignof(T) * alignof(T));
     } else {
       p = std::malloc(bytes == 0 ? 1 : bytes);
     }

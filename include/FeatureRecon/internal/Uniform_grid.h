@@ -17,14 +17,15 @@ namespace FeatureRecon {
 namespace internal {
 
 /// \cond
-/// The frame of a grid over points of dimension D (2 or 3, doubles): cubic cells of side `cell` keyed by their
-/// integer coordinates relative to the bounding box. When the box holds at most 2^20 cells per axis the key packs
-/// the coordinates (21 bits per axis, keys ordered like the cells); beyond that (one far outlier, a tiny radius)
-/// the key is a 64-bit mix of the coordinates, so the cells keep their side (the side used to grow to
-/// extent / 2^20, putting a unit square's points in one cell beside an outlier at 1e7: quadratic). Keys of
-/// distinct cells may then collide: a cell's list may hold points of another cell, which callers drop by their
-/// exact distance test, and for_each_neighbor_key() visits each key once. A packed frame over few cells
-/// (use_dense_cells()) also numbers them densely, in key order, so that a grid can keep its cells in an array.
+/// The frame of a grid over points of dimension D (2 or 3, doubles): cubic cells of side `cell` keyed by
+/// their integer coordinates relative to the bounding box. When the box holds at most 2^20 cells per axis the
+/// key packs the coordinates (21 bits per axis, keys ordered like the cells); beyond that (one far outlier, a
+/// tiny radius) the key is a 64-bit mix of the coordinates, so the cells keep their side (the side used to
+/// grow to extent / 2^20, putting a unit square's points in one cell beside an outlier at 1e7: quadratic).
+/// Keys of distinct cells may then collide: a cell's list may hold points of another cell, which callers drop
+/// by their exact distance test, and for_each_neighbor_key() visits each key once. A packed frame over few
+/// cells (use_dense_cells()) also numbers them densely, in key order, so that a grid can keep its cells in an
+/// array.
 template <int D>
 class Grid_frame {
  public:
@@ -76,8 +77,8 @@ class Grid_frame {
   }
   /// The cell of p; a query point far outside the box (more cells away than a 64-bit integer holds: a map
   /// compared at a tiny threshold with one far away, a NaN) is clamped before the conversion, which would be
-  /// undefined behaviour: to a cell below the box with no neighbour in it (packed) or at most 2^62 away (hashed:
-  /// its neighbours' coordinates cannot overflow).
+  /// undefined behaviour: to a cell below the box with no neighbour in it (packed) or at most 2^62 away
+  /// (hashed: its neighbours' coordinates cannot overflow).
   Cell cell_of(const Point& p) const {
     const double lo = m_hashed ? -0x1p62 : -2.0, hi = m_hashed ? 0x1p62 : double(kLimit - 1);
     Cell c;
@@ -114,8 +115,8 @@ class Grid_frame {
     std::size_t count = 0;
     visit<0>(c, q, nullptr, [&](const Cell& r) { keys[count++] = key(r); });
     std::sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count));
-    count = static_cast<std::size_t>(std::unique(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count)) -
-                                     keys.begin());
+    count = static_cast<std::size_t>(
+        std::unique(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count)) - keys.begin());
     for (std::size_t i = 0; i < count; ++i) f(keys[i]);
   }
 
@@ -179,7 +180,8 @@ class Uniform_grid {
       return;
     }
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
-    for (std::size_t i = 0; i < n; ++i) keyed[i] = {m_frame.key(m_frame.cell_of(points[i])), static_cast<std::uint32_t>(i)};
+    for (std::size_t i = 0; i < n; ++i)
+      keyed[i] = {m_frame.key(m_frame.cell_of(points[i])), static_cast<std::uint32_t>(i)};
     std::sort(keyed.begin(), keyed.end());
     m_items.resize(n);
     m_cells.reserve(n / 2 + 1);
@@ -200,7 +202,8 @@ class Uniform_grid {
   void for_each_candidate(const Point& p, F&& f) const {
     if (m_dense) {
       m_frame.for_each_neighbor_index(p, [&](std::int64_t c) {
-        for (std::uint32_t i = m_offsets[std::size_t(c)]; i < m_offsets[std::size_t(c) + 1]; ++i) f(m_items[i]);
+        for (std::uint32_t i = m_offsets[std::size_t(c)]; i < m_offsets[std::size_t(c) + 1]; ++i)
+          f(m_items[i]);
       });
       return;
     }
@@ -227,8 +230,8 @@ class Dynamic_grid {
   using Point = std::array<double, D>;
 
   /// `expected_items`: about how many points will be inserted (default: as many as `points` holds), which
-  /// decides between a dense array of cells and a hash map (use_dense_cells()). Inserted points must lie in the
-  /// bounding box of `points`.
+  /// decides between a dense array of cells and a hash map (use_dense_cells()). Inserted points must lie in
+  /// the bounding box of `points`.
   Dynamic_grid(const std::vector<Point>& points, double cell, std::size_t expected_items = 0)
       : m_points(&points), m_frame(points, cell) {
     if (!points.empty() && use_dense_cells(m_frame, expected_items > 0 ? expected_items : points.size()))

@@ -26,7 +26,8 @@ inline unsigned thread_count(unsigned requested) {
 /// a block is rethrown after every thread has joined.
 template <class Body>
 void parallel_blocks(std::size_t n, unsigned threads, std::size_t min_per_thread, Body body) {
-  const std::size_t t = std::min<std::size_t>(thread_count(threads), std::max<std::size_t>(1, n / std::max<std::size_t>(1, min_per_thread)));
+  const std::size_t t = std::min<std::size_t>(
+      thread_count(threads), std::max<std::size_t>(1, n / std::max<std::size_t>(1, min_per_thread)));
   if (t <= 1) {
     body(std::size_t(0), n);
     return;

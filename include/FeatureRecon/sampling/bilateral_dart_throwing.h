@@ -37,10 +37,12 @@ inline void check_dart_options(const Dart_throwing_options& o, std::size_t n, do
   check_sigmas(o.sigma_position, o.sigma_feature, fn);
   check_position_scale(extent, o.sigma_position, fn);
   if (!o.radii.empty() && o.radii.size() != n)
-    FeatureRecon::internal::throw_invalid_argument(fn, "radii has ", o.radii.size(), " values for ", n, " items");
+    FeatureRecon::internal::throw_invalid_argument(fn, "radii has ", o.radii.size(), " values for ", n,
+                                                   " items");
   for (std::size_t i = 0; i < o.radii.size(); ++i)
     if (!(std::isfinite(o.radii[i]) && o.radii[i] > 0))
-      FeatureRecon::internal::throw_invalid_argument(fn, "radii[", i, "] must be finite and > 0, got ", o.radii[i]);
+      FeatureRecon::internal::throw_invalid_argument(fn, "radii[", i, "] must be finite and > 0, got ",
+                                                     o.radii[i]);
   if (!o.priority.empty() && o.priority.size() != n)
     FeatureRecon::internal::throw_invalid_argument(fn, "priority has ", o.priority.size(), " values for ", n,
                                                    " items");
@@ -52,7 +54,8 @@ inline void check_dart_options(const Dart_throwing_options& o, std::size_t n, do
 /// One pass of dart throwing over the items in `order`; returns the accepted items in acceptance order, or
 /// nothing with `interrupted` set.
 template <class Traits>
-std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radius, const Dart_throwing_options& o,
+std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radius,
+                                       const Dart_throwing_options& o,
                                        const std::vector<std::uint32_t>& order, bool& interrupted) {
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();
@@ -64,7 +67,8 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
     const double reach2 = prefilter_bound(largest * metric.spatial_scale());
     std::size_t failures = 0;
     for (std::size_t step = 0; step < n; ++step) {
-      if ((step & 65535) == 0 && !FeatureRecon::internal::report_progress(o.progress, double(step) / double(n))) {
+      if ((step & 65535) == 0 &&
+          !FeatureRecon::internal::report_progress(o.progress, double(step) / double(n))) {
         interrupted = true;
         accepted.clear();
         return;
@@ -105,15 +109,19 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
 ///
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam OutputIterator accepts std::size_t.
 /// \tparam Traits a model of FeaturePointTraits (default: Default_traits_t<ItemRange>).
-/// \param items the input samples. \param radius the conflict radius in bilateral units (> 0, checked; throws;
+/// \param items the input samples. \param radius the conflict radius in bilateral units (> 0, checked;
+/// throws;
 ///   ignored when `options.radii` is set). \param selected receives the kept indices in increasing order.
-/// \param options metric, per-item radii, priority, seed, early stops (consecutive failures, a cap on the count),
+/// \param options metric, per-item radii, priority, seed, early stops (consecutive failures, a cap on the
+/// count),
 ///   progress. \param traits accessors.
-/// \returns the advanced iterator, the number kept, the radius and the status (`degenerate_input` for an empty
+/// \returns the advanced iterator, the number kept, the radius and the status (`degenerate_input` for an
+/// empty
 ///   input, and for a radius below about 1e-144 position units, whose square lies below 2^-960: the squared
-///   distances it is compared with have lost their digits, and the set kept may be neither a packing nor maximal;
-///   `interrupted`, with nothing written, when the callback stopped).
-/// \throws std::invalid_argument naming the argument: radius <= 0, radii or priority of the wrong size or with
+///   distances it is compared with have lost their digits, and the set kept may be neither a packing nor
+///   maximal; `interrupted`, with nothing written, when the callback stopped).
+/// \throws std::invalid_argument naming the argument: radius <= 0, radii or priority of the wrong size or
+/// with
 ///   bad values (naming the index), non-finite coordinates (naming the item), bad sigmas.
 /// \note Conflicts are strict (xi < r): two items at distance exactly r may both be kept. The same input and
 ///   seed give the same output.
@@ -129,7 +137,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   internal::check_dart_options(options, S.size(), S.extent(), fn);
   // With per-item radii, the largest of them (the `radius` argument is ignored).
-  const double used = options.radii.empty() ? radius : *std::max_element(options.radii.begin(), options.radii.end());
+  const double used =
+      options.radii.empty() ? radius : *std::max_element(options.radii.begin(), options.radii.end());
   Sampling_result<OutputIterator> result{selected, 0, used, Status::success};
   if (S.size() == 0) {
     result.status = Status::degenerate_input;
@@ -146,8 +155,9 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
   std::sort(kept.begin(), kept.end());
   for (const std::uint32_t i : kept) *result.out++ = i;
   result.selected = kept.size();
-  // A radius whose square (in position units) is below 2^-960 cannot be compared with squared distances that keep
-  // their digits (3000 points of spread 3e-163 at r = 1e-164 kept 220 instead of 566, success): reported.
+  // A radius whose square (in position units) is below 2^-960 cannot be compared with squared distances that
+  // keep their digits (3000 points of spread 3e-163 at r = 1e-164 kept 220 instead of 566, success):
+  // reported.
   const bool tiny = internal::with_metric(options, [&](const auto& metric) {
     const double reach = used * metric.spatial_scale();
     return reach > 0 && reach * reach < 0x1p-960;
@@ -159,12 +169,12 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
 /// Bilateral dart throwing with a target count: bisects the uniform radius until a maximal throw (same order
 /// every time) keeps exactly `count` items. When no radius gives exactly `count` (the count is a step
 /// function of the radius), the throw at the smallest radius that keeps more than `count` is cut to its first
-/// `count` accepted items, which still respect that radius but are no longer maximal. With the exponential form,
-/// items of very different features may never conflict (their distance overflows): when no finite radius keeps
-/// as few as `count`, the throw at the largest radius tried (doubling from the largest finite distance) is cut.
-/// \param count the number of items to keep, 0 <= count <= number of items (checked; throws).
-/// \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set.
-/// \throws std::invalid_argument as bilateral_dart_throwing(), when `options.darts.radii` or
+/// `count` accepted items, which still respect that radius but are no longer maximal. With the exponential
+/// form, items of very different features may never conflict (their distance overflows): when no finite
+/// radius keeps as few as `count`, the throw at the largest radius tried (doubling from the largest finite
+/// distance) is cut. \param count the number of items to keep, 0 <= count <= number of items (checked;
+/// throws). \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set. \throws
+/// std::invalid_argument as bilateral_dart_throwing(), when `options.darts.radii` or
 ///   `options.darts.max_accepted` is set, and for max_iterations 0.
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& items, std::size_t count,
@@ -176,12 +186,15 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   const std::size_t n = S.size();
   internal::check_dart_options(options.darts, n, S.extent(), fn);
   if (!options.darts.radii.empty())
-    FeatureRecon::internal::throw_invalid_argument(fn, "per-item radii cannot be combined with a target count");
+    FeatureRecon::internal::throw_invalid_argument(fn,
+                                                   "per-item radii cannot be combined with a target count");
   if (options.darts.max_accepted != 0)
-    FeatureRecon::internal::throw_invalid_argument(fn, "darts.max_accepted cannot be combined with a target count");
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "darts.max_accepted cannot be combined with a target count");
   internal::check_count(count, n, fn);
   if (options.max_iterations == 0)
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_iterations must be >= 1 (bisection steps on the radius)");
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "max_iterations must be >= 1 (bisection steps on the radius)");
   Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
   if (n == 0) {
     result.status = Status::degenerate_input;
@@ -196,7 +209,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   // form, a metric; for the exponential form a heuristic start: the bisection only needs a bracket).
   const double high_start = internal::with_metric(quiet, [&](const auto& m) {
     double r = 0;
-    for (std::size_t i = 0; i < n; ++i) r = std::max(r, m(S.squared_distance(0, i), S.squared_feature_distance(0, i)));
+    for (std::size_t i = 0; i < n; ++i)
+      r = std::max(r, m(S.squared_distance(0, i), S.squared_feature_distance(0, i)));
     return 2 * r;
   });
   double high = high_start;
@@ -205,8 +219,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   std::vector<std::uint32_t> best;  // the throw at `low` (more than count items) or an exact hit
   double best_radius = 0;
   if (!std::isfinite(high)) {
-    // The exponential form overflows for far-apart features: start from the largest finite distance from item 0
-    // and double until a throw keeps at most `count` items (or the radius overflows: no bracket).
+    // The exponential form overflows for far-apart features: start from the largest finite distance from item
+    // 0 and double until a throw keeps at most `count` items (or the radius overflows: no bracket).
     const double finite_largest = internal::with_metric(quiet, [&](const auto& m) {
       double r = 0;
       for (std::size_t i = 0; i < n; ++i) {
@@ -219,8 +233,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     // the first `count` items of the throw at the largest finite radius tried.
     high = finite_largest > 0 ? 2 * finite_largest : 1.0;
     while (std::isfinite(high)) {
-      // Up to about 2000 throws when classes never conflict (a 512 x 512 picture: 44 s); each is a chance to stop
-      // (at fraction 0: the bisection's share is not known yet).
+      // Up to about 2000 throws when classes never conflict (a 512 x 512 picture: 44 s); each is a chance to
+      // stop (at fraction 0: the bisection's share is not known yet).
       if (!FeatureRecon::internal::report_progress(options.darts.progress, 0.0)) {
         result.status = Status::interrupted;
         return result;
@@ -233,13 +247,14 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     }
   }
   // Halving `high` until a throw keeps more than `count` items (the bracket's lower end) is not counted as a
-  // bisection step: with few steps (max_iterations 3 on 5000 points, count 200) no bracket was found and the result
-  // was the first items of the visiting order at radius 0, labelled degenerate. At most 64 halvings go uncounted
-  // (a radius 2^-64 of the largest distance): more duplicates than `count` distinct positions keep too few at every
-  // radius above 0, and halving down to 0 took about 1078 throws (18 times the 60 steps).
+  // bisection step: with few steps (max_iterations 3 on 5000 points, count 200) no bracket was found and the
+  // result was the first items of the visiting order at radius 0, labelled degenerate. At most 64 halvings go
+  // uncounted (a radius 2^-64 of the largest distance): more duplicates than `count` distinct positions keep
+  // too few at every radius above 0, and halving down to 0 took about 1078 throws (18 times the 60 steps).
   std::size_t uncounted = 0;
   for (std::size_t it = 0; it < options.max_iterations;) {
-    if (!FeatureRecon::internal::report_progress(options.darts.progress, double(it) / double(options.max_iterations))) {
+    if (!FeatureRecon::internal::report_progress(options.darts.progress,
+                                                 double(it) / double(options.max_iterations))) {
       result.status = Status::interrupted;
       return result;
     }
@@ -261,8 +276,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     if (low > 0 || ++uncounted > 64) ++it;
   }
   if (best.size() < count) {
-    // No radius keeps `count` items (duplicates: a repeated position conflicts at any radius > 0; or all items
-    // at one position): the first `count` items of the visiting order, at radius 0.
+    // No radius keeps `count` items (duplicates: a repeated position conflicts at any radius > 0; or all
+    // items at one position): the first `count` items of the visiting order, at radius 0.
     best.assign(order.begin(), order.end());
     best_radius = 0;
     result.status = Status::degenerate_input;

@@ -35,7 +35,7 @@ template <class Feature>
 struct Continuous_sampling_result {
   std::vector<Continuous_sample<Feature>> samples;  ///< in acceptance order
   std::size_t darts = 0;                            ///< darts thrown
-  Status status = Status::success;                  ///< degenerate_input for an empty box; interrupted when stopped
+  Status status = Status::success;  ///< degenerate_input for an empty box; interrupted when stopped
 };
 
 /// Bilateral dart throwing in a continuous 2D domain (dissertation Sec. 2.2.2): uniform random darts in the
@@ -44,15 +44,15 @@ struct Continuous_sampling_result {
 /// `max_consecutive_failures` rejections in a row (then the set is close to maximal: rho about 0.75 for
 /// Euclidean darts) or `max_samples` samples. Kept samples sit in a hash grid of side r sigma_position.
 /// \tparam FeatureFunction callable `(double x, double y) -> Feature`.
-/// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, the squared feature distance.
-/// \param box {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1, finite (checked; throws).
-/// \param radius the conflict radius in bilateral units (> 0, checked; throws).
-/// \throws std::invalid_argument also when a dart's feature is not at a finite distance from itself (NaN).
-/// \note Random numbers come from std::mt19937_64 turned into doubles by bit manipulation, so the same seed
+/// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, the squared feature
+/// distance. \param box {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1, finite (checked; throws). \param radius
+/// the conflict radius in bilateral units (> 0, checked; throws). \throws std::invalid_argument also when a
+/// dart's feature is not at a finite distance from itself (NaN). \note Random numbers come from
+/// std::mt19937_64 turned into doubles by bit manipulation, so the same seed
 ///   gives the same samples on every platform.
 template <class FeatureFunction, class FeatureDistance>
-auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double radius, FeatureFunction feature_at,
-                                        FeatureDistance feature_distance,
+auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double radius,
+                                        FeatureFunction feature_at, FeatureDistance feature_distance,
                                         const Continuous_dart_throwing_options& options = {}) {
   using Feature = std::decay_t<decltype(feature_at(0.0, 0.0))>;
   const char* fn = "continuous_bilateral_dart_throwing";
@@ -81,7 +81,8 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
     FeatureRecon::internal::Dynamic_grid<2> grid(positions, reach,
                                                  static_cast<std::size_t>(std::min(expected, 0x1p40)) + 1);
     std::size_t failures = 0;
-    double reported = 0;  // the largest share of the failure budget seen (a success resets the run of failures)
+    double reported =
+        0;  // the largest share of the failure budget seen (a success resets the run of failures)
     while (failures < options.max_consecutive_failures &&
            (options.max_samples == 0 || result.samples.size() < options.max_samples)) {
       if ((result.darts & 65535) == 0 && result.darts != 0) {
@@ -92,13 +93,15 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
         }
       }
       ++result.darts;
-      const std::array<double, 2> p{box[0] + (box[2] - box[0]) * uniform(), box[1] + (box[3] - box[1]) * uniform()};
+      const std::array<double, 2> p{box[0] + (box[2] - box[0]) * uniform(),
+                                    box[1] + (box[3] - box[1]) * uniform()};
       const Feature f = feature_at(p[0], p[1]);
       const double self = double(feature_distance(f, f));
       if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))  // a NaN feature never conflicts
-        FeatureRecon::internal::throw_invalid_argument(fn, "feature_at(", p[0], ", ", p[1], ") is at distance ",
-                                                       std::isnan(self) ? std::string("NaN") : std::to_string(self),
-                                                       " from itself (NaN in the feature?)");
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "feature_at(", p[0], ", ", p[1], ") is at distance ",
+            std::isnan(self) ? std::string("NaN") : std::to_string(self),
+            " from itself (NaN in the feature?)");
       bool conflict = false;
       grid.for_each_candidate(p, [&](std::uint32_t j) {
         if (conflict) return;
@@ -117,7 +120,8 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
       result.samples.push_back({p, f});
     }
   });
-  if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (result.status != Status::interrupted)
+    (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
 }
 

@@ -52,36 +52,41 @@ enum class Site_update {
 /// \tparam Dimension the items' dimension (2 or 3), the dimension of the positions on_iteration sees.
 template <int Dimension>
 struct Discrete_lloyd_options {
-  double sigma_position = 1;                                        ///< spatial scale of xi; default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
-  Bilateral_form form = Bilateral_form::gaussian;                   ///< form of xi
+  double sigma_position = 1;  ///< spatial scale of xi; default 1
+  double sigma_feature =
+      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  Bilateral_form form = Bilateral_form::gaussian;  ///< form of xi
   /// Density rho of each item (>= 0, finite), aligned with the items: the weight in the centroids and the
   /// energy (for stippling, the darkness). Default empty: 1 for every item.
   std::vector<double> density;
   Site_update update = Site_update::nearest_item;  ///< how features follow the sites
-  std::size_t max_iterations = 50;  ///< iteration cap; default 50
+  std::size_t max_iterations = 50;                 ///< iteration cap; default 50
   /// Stop when (E_prev - E) / E_prev < energy_tolerance after an iteration; default 0 (never). The bilateral
   /// energy need not decrease monotonically (features change with the positions); a rise also stops it then.
   double energy_tolerance = 0;
-  double move_tolerance = 0;  ///< stop when no site moved farther than this (units of the positions); default 0
-  /// Area (2D items, surfaces) or volume of the domain for the relative radius; default 0: the bounding box of
-  /// 2D items widened by one item spacing (so a W x H image of pixels has area W H), the estimated surface area
-  /// of 3D surface items, the bounding box of volume items widened by one item spacing.
+  double move_tolerance =
+      0;  ///< stop when no site moved farther than this (units of the positions); default 0
+  /// Area (2D items, surfaces) or volume of the domain for the relative radius; default 0: the bounding box
+  /// of 2D items widened by one item spacing (so a W x H image of pixels has area W H), the estimated surface
+  /// area of 3D surface items, the bounding box of volume items widened by one item spacing.
   double domain_measure = 0;
-  /// 2 (images, surfaces: rho against the hexagonal packing) or 3 (volumes: against the FCC packing). Default 0:
-  /// 2 for 2D items; for 3D items, 2 when most have a flat neighbourhood (as weighted_sample_elimination()).
+  /// 2 (images, surfaces: rho against the hexagonal packing) or 3 (volumes: against the FCC packing). Default
+  /// 0: 2 for 2D items; for 3D items, 2 when most have a flat neighbourhood (as
+  /// weighted_sample_elimination()).
   int intrinsic_dimension = 0;
   /// Called after each iteration with its statistics and the sites' positions after the move; returning
   /// false stops there (early stopping on rho or on an oscillation the callback computes). Default: none.
-  std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)> on_iteration;
+  std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)>
+      on_iteration;
   Progress_callback progress;  ///< fraction of max_iterations done; returning false stops (sites so far kept)
 };
 
 /// The discrete bilateral Voronoi sets of some sites: bilateral_voronoi_assignment().
 struct Bilateral_assignment {
-  std::vector<std::uint32_t> site;  ///< per item: the index of its site (nearest in xi, ties to the lowest index)
-  std::vector<double> mass;         ///< per site: the density of its items
-  double energy = 0;                ///< sum over items of rho(x) xi(x, site)^2
+  std::vector<std::uint32_t>
+      site;                  ///< per item: the index of its site (nearest in xi, ties to the lowest index)
+  std::vector<double> mass;  ///< per site: the density of its items
+  double energy = 0;         ///< sum over items of rho(x) xi(x, site)^2
 };
 
 /// Result of discrete_lloyd_step().
@@ -96,13 +101,14 @@ struct Discrete_lloyd_step_result {
 /// Result of discrete_bilateral_lloyd().
 template <class Traits>
 struct Discrete_lloyd_result {
-  std::vector<Bilateral_site<Traits>> sites;         ///< final sites, in input order
+  std::vector<Bilateral_site<Traits>> sites;  ///< final sites, in input order
   /// Per item: its site at the last iteration (with no iteration done: among the starting sites).
   std::vector<std::uint32_t> assignment;
-  std::vector<double> mass;                          ///< per site: the density of its items, as `assignment`
-  std::vector<Lloyd_iteration_statistics> history;   ///< one entry per iteration done
-  Lloyd_stop stop = Lloyd_stop::iteration_cap;       ///< why it stopped
-  /// degenerate_input for no items or no sites (nothing moves); interrupted when the progress callback stopped it.
+  std::vector<double> mass;                         ///< per site: the density of its items, as `assignment`
+  std::vector<Lloyd_iteration_statistics> history;  ///< one entry per iteration done
+  Lloyd_stop stop = Lloyd_stop::iteration_cap;      ///< why it stopped
+  /// degenerate_input for no items or no sites (nothing moves); interrupted when the progress callback
+  /// stopped it.
   Status status = Status::success;
 };
 
@@ -119,10 +125,12 @@ class Item_domain {
   template <class ItemRange>
   // `compared`: whether features are compared (finite sigma_feature); only then must each be at a finite
   // distance from itself (a zero normal is fine for Euclidean relaxation).
-  Item_domain(const ItemRange& items, const Traits& traits, double domain_measure, const char* fn, bool compared)
+  Item_domain(const ItemRange& items, const Traits& traits, double domain_measure, const char* fn,
+              bool compared)
       : S(items, traits, fn, compared), measure(domain_measure), compared_features(compared) {
     if (!(domain_measure >= 0) || !std::isfinite(domain_measure))
-      FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ", domain_measure);
+      FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ",
+                                                     domain_measure);
     if (S.size() > std::numeric_limits<std::uint32_t>::max() - 1)
       FeatureRecon::internal::throw_invalid_argument(fn, "too many items (", S.size(), ")");
     if (S.size() == 0) return;
@@ -139,11 +147,11 @@ class Item_domain {
   std::size_t items() const { return S.size(); }
 
   // Sites as items are checked: finite coordinates within +-1e100 (a site at 1e200 overflowed the grid's cell
-  // arithmetic into an undefined float-to-integer cast) and, where features are compared, a feature at a finite
-  // distance from itself (a site with a zero normal silently got no item), unless `check_features` is false (the
-  // caller replaces the sites' features before reading them).
-  // Also: the span of the items and the sites together in units of sigma_position at most 2^400 (a site at 1e100
-  // with sigma_position 1e-110 was infinitely far from every item, and tied with a nearer site).
+  // arithmetic into an undefined float-to-integer cast) and, where features are compared, a feature at a
+  // finite distance from itself (a site with a zero normal silently got no item), unless `check_features` is
+  // false (the caller replaces the sites' features before reading them). Also: the span of the items and the
+  // sites together in units of sigma_position at most 2^400 (a site at 1e100 with sigma_position 1e-110 was
+  // infinitely far from every item, and tied with a nearer site).
   void check_sites(const std::vector<Site>& sites, const char* fn, double sigma_position,
                    bool check_features = true) const {
     if (sites.size() > std::numeric_limits<std::uint32_t>::max() - 1)
@@ -156,7 +164,8 @@ class Item_domain {
           FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a non-finite coordinate (",
                                                          sites[i].position[k], ")");
         if (!(std::fabs(sites[i].position[k]) <= Sample_set<Traits>::max_coordinate))
-          FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has coordinate ", sites[i].position[k],
+          FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has coordinate ",
+                                                         sites[i].position[k],
                                                          " beyond +-1e100 (as items; scale the input)");
         slo[k] = std::min(slo[k], sites[i].position[k]);
         shi[k] = std::max(shi[k], sites[i].position[k]);
@@ -164,7 +173,8 @@ class Item_domain {
       if (compared_features && check_features) {
         const double self = CGAL::to_double(S.feature_distance(sites[i].feature, sites[i].feature));
         if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))
-          FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a feature at distance NaN from itself "
+          FeatureRecon::internal::throw_invalid_argument(fn, "site ", i,
+                                                         " has a feature at distance NaN from itself "
                                                          "(a zero normal, or NaN in the feature)");
       }
     }
@@ -176,7 +186,8 @@ class Item_domain {
   // The item nearest to x (Euclidean; ties to the lowest index). \pre items() > 0.
   std::uint32_t nearest_item(const Point& x) const {
     double best;
-    return item_grid.nearest(x, 1.0, [&](std::uint32_t j) { return std::sqrt(squared(x, S.positions[j])); }, best);
+    return item_grid.nearest(
+        x, 1.0, [&](std::uint32_t j) { return std::sqrt(squared(x, S.positions[j])); }, best);
   }
 
   static std::vector<Point> positions_of(const std::vector<Site>& sites, Point& flo, Point& fhi) {
@@ -203,12 +214,15 @@ class Item_domain {
     double shortest = std::numeric_limits<double>::infinity();
     for (std::size_t s = 0; s < sites.size(); ++s) {
       double best;
-      grid.nearest(positions[s], 1.0, [&](std::uint32_t j) {
-        if (j == s) return std::numeric_limits<double>::infinity();
-        const double d = std::sqrt(squared(positions[s], positions[j]));
-        if (d == 0) coincide = true;
-        return d == 0 ? std::numeric_limits<double>::infinity() : d;
-      }, best);
+      grid.nearest(
+          positions[s], 1.0,
+          [&](std::uint32_t j) {
+            if (j == s) return std::numeric_limits<double>::infinity();
+            const double d = std::sqrt(squared(positions[s], positions[j]));
+            if (d == 0) coincide = true;
+            return d == 0 ? std::numeric_limits<double>::infinity() : d;
+          },
+          best);
       shortest = std::min(shortest, best);
     }
     return shortest;
@@ -289,7 +303,8 @@ class Item_domain {
   Sample_set<Traits> S;
   double measure = 0;
   bool compared_features = true;  // features compared (finite sigma_feature): sites' features are checked too
-  int intrinsic = 0;  // 2 or 3; 0: estimated when the packing distance asks (not for every step of a stage call)
+  int intrinsic =
+      0;  // 2 or 3; 0: estimated when the packing distance asks (not for every step of a stage call)
   Point lo{}, hi{};
   Ring_grid<D> item_grid;
 };
@@ -305,22 +320,24 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
   using Base::S;
 
   template <class ItemRange>
-  Discrete_lloyd_engine(const ItemRange& items, const Discrete_lloyd_options<D>& o, const Traits& traits, const char* fn)
+  Discrete_lloyd_engine(const ItemRange& items, const Discrete_lloyd_options<D>& o, const Traits& traits,
+                        const char* fn)
       : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
     check_sigmas(o.sigma_position, o.sigma_feature, fn);  // the span: check_sites(), items and sites together
     check_domain(o.domain_measure, o.intrinsic_dimension, D, fn);
     this->intrinsic = o.intrinsic_dimension;
     if (!o.density.empty() && o.density.size() != S.size())
-      FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ", S.size(),
-                                                     " items");
+      FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ",
+                                                     S.size(), " items");
     for (std::size_t i = 0; i < o.density.size(); ++i)
       if (!(o.density[i] >= 0 && std::isfinite(o.density[i])))
         FeatureRecon::internal::throw_invalid_argument(fn, "density[", i, "] must be finite and >= 0, got ",
                                                        o.density[i]);
     if (!(o.energy_tolerance >= 0 && std::isfinite(o.energy_tolerance)) ||
         !(o.move_tolerance >= 0 && std::isfinite(o.move_tolerance)))
-      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ",
-                                                     o.energy_tolerance, " and ", o.move_tolerance);
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ", o.energy_tolerance,
+          " and ", o.move_tolerance);
   }
 
   double density(std::size_t i) const { return options.density.empty() ? 1.0 : options.density[i]; }
@@ -339,10 +356,13 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       for (std::size_t i = 0; i < S.size(); ++i) {
         const Point& x = S.positions[i];
         double best;
-        const std::uint32_t s = grid.nearest(x, scale, [&](std::uint32_t j) {
-          return metric(Base::squared(x, positions[j]),
-                        double(CGAL::to_double(S.feature_distance(S.features[i], sites[j].feature))));
-        }, best);
+        const std::uint32_t s = grid.nearest(
+            x, scale,
+            [&](std::uint32_t j) {
+              return metric(Base::squared(x, positions[j]),
+                            double(CGAL::to_double(S.feature_distance(S.features[i], sites[j].feature))));
+            },
+            best);
         a.site[i] = s;
         a.mass[s] += density(i);
         a.energy += density(i) * best * best;
@@ -421,10 +441,11 @@ std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const
 /// \param items the domain. \param sites the sites (finite positions, checked; throws).
 /// \param options metric and density (the iteration settings are not used). \param traits FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
-Bilateral_assignment bilateral_voronoi_assignment(const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,
-                                                  const Discrete_lloyd_options<Traits::dimension>& options = {},
-                                                  const Traits& traits = Traits()) {
-  const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, "bilateral_voronoi_assignment");
+Bilateral_assignment bilateral_voronoi_assignment(
+    const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,
+    const Discrete_lloyd_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
+  const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits,
+                                                       "bilateral_voronoi_assignment");
   engine.check_sites(sites, "bilateral_voronoi_assignment", options.sigma_position);
   return engine.assign(sites);
 }
@@ -435,10 +456,9 @@ Bilateral_assignment bilateral_voronoi_assignment(const ItemRange& items, const 
 /// \param items the domain. \param sites the sites. \param options metric, density and update rule.
 /// \param traits FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
-Discrete_lloyd_step_result<Traits> discrete_lloyd_step(const ItemRange& items,
-                                                       const std::vector<Bilateral_site<Traits>>& sites,
-                                                       const Discrete_lloyd_options<Traits::dimension>& options = {},
-                                                       const Traits& traits = Traits()) {
+Discrete_lloyd_step_result<Traits> discrete_lloyd_step(
+    const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,
+    const Discrete_lloyd_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, "discrete_lloyd_step");
   engine.check_sites(sites, "discrete_lloyd_step", options.sigma_position);
   return engine.step(sites);
@@ -446,20 +466,20 @@ Discrete_lloyd_step_result<Traits> discrete_lloyd_step(const ItemRange& items,
 
 /// Discrete bilateral Lloyd relaxation (dissertation Sec. 2.2.2): discrete_lloyd_step() until a stopping
 /// rule holds (iteration cap, relative energy decrease, largest move, the on_iteration callback), with the
-/// energy, the moves and the relative radius of every iteration (Lloyd drifts towards a lattice: stop early on
-/// rho or the oscillation through on_iteration). Deterministic: no randomness beyond the starting sites (use
-/// a seeded sampler for those); ties go to the lowest index. With an infinite sigma_feature it is discrete
-/// (Euclidean, weighted) Lloyd, i.e. weighted k-means of the items' positions.
-/// \param items the domain: a range of items read through the traits (positions finite, checked).
-/// \param sites the starting sites, e.g. sites_at_items() of a dart-throwing result (finite, checked).
-/// \param options metric, density, update rule, stopping rules, callbacks (checked; throws naming the field).
-/// \param traits a model of FeaturePointTraits.
-/// \return the sites, the last assignment and the history. No items or no sites: degenerate_input, sites
+/// energy, the moves and the relative radius of every iteration (Lloyd drifts towards a lattice: stop early
+/// on rho or the oscillation through on_iteration). Deterministic: no randomness beyond the starting sites
+/// (use a seeded sampler for those); ties go to the lowest index. With an infinite sigma_feature it is
+/// discrete (Euclidean, weighted) Lloyd, i.e. weighted k-means of the items' positions. \param items the
+/// domain: a range of items read through the traits (positions finite, checked). \param sites the starting
+/// sites, e.g. sites_at_items() of a dart-throwing result (finite, checked). \param options metric, density,
+/// update rule, stopping rules, callbacks (checked; throws naming the field). \param traits a model of
+/// FeaturePointTraits. \return the sites, the last assignment and the history. No items or no sites:
+/// degenerate_input, sites
 ///   returned unchanged.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
-Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, std::vector<Bilateral_site<Traits>> sites,
-                                                       const Discrete_lloyd_options<Traits::dimension>& options = {},
-                                                       const Traits& traits = Traits()) {
+Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
+    const ItemRange& items, std::vector<Bilateral_site<Traits>> sites,
+    const Discrete_lloyd_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   const char* fn = "discrete_bilateral_lloyd";
   const internal::Discrete_lloyd_engine<Traits> engine(items, options, traits, fn);
   engine.check_sites(sites, fn, options.sigma_position);
@@ -472,18 +492,21 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
     return result;
   }
   const double packing = engine.packing_distance(sites.size());
-  // Copies of a site tie with it for every item and got none: where the first copy was already at its centroid
-  // they stayed together for good. Every copy after the first moves by 1/100 of the packing distance first.
-  if (packing > 0 && std::isfinite(packing) && options.max_iterations > 0)  // no iteration: the sites as given
-    internal::separate_copies<Traits::dimension>(sites.size(), packing / 100,
-                                                 [&sites](std::size_t i) -> auto& { return sites[i].position; });
+  // Copies of a site tie with it for every item and got none: where the first copy was already at its
+  // centroid they stayed together for good. Every copy after the first moves by 1/100 of the packing distance
+  // first.
+  if (packing > 0 && std::isfinite(packing) &&
+      options.max_iterations > 0)  // no iteration: the sites as given
+    internal::separate_copies<Traits::dimension>(
+        sites.size(), packing / 100, [&sites](std::size_t i) -> auto& { return sites[i].position; });
   double previous_energy = std::numeric_limits<double>::infinity();
   for (std::size_t it = 0;; ++it) {
     if (it == options.max_iterations) {
       result.stop = Lloyd_stop::iteration_cap;
       break;
     }
-    if (!FeatureRecon::internal::report_progress(options.progress, double(it) / double(options.max_iterations))) {
+    if (!FeatureRecon::internal::report_progress(options.progress,
+                                                 double(it) / double(options.max_iterations))) {
       result.stop = Lloyd_stop::interrupted;
       result.status = Status::interrupted;
       break;
@@ -509,12 +532,14 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
       break;
     previous_energy = s.energy;
   }
-  if (result.history.empty()) {  // no iteration (max_iterations 0, or stopped at once): the starting sites' sets
+  if (result.history
+          .empty()) {  // no iteration (max_iterations 0, or stopped at once): the starting sites' sets
     Bilateral_assignment a = engine.assign(sites);
     result.assignment = std::move(a.site);
     result.mass = std::move(a.mass);
   }
-  if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (result.status != Status::interrupted)
+    (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   result.sites = std::move(sites);
   return result;
 }
@@ -523,9 +548,9 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, s
 /// \param items the domain. \param initial indices of the starting items (checked).
 /// \param options as for discrete_bilateral_lloyd(). \param traits FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
-Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(const ItemRange& items, const std::vector<std::size_t>& initial,
-                                                       const Discrete_lloyd_options<Traits::dimension>& options = {},
-                                                       const Traits& traits = Traits()) {
+Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
+    const ItemRange& items, const std::vector<std::size_t>& initial,
+    const Discrete_lloyd_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   return discrete_bilateral_lloyd(items, sites_at_items(items, initial, traits), options, traits);
 }
 

@@ -27,11 +27,13 @@ namespace internal {
 /// \cond
 inline void check_image(int width, int height, std::size_t channels, std::size_t values, const char* fn) {
   if (width < 0 || height < 0)
-    FeatureRecon::internal::throw_invalid_argument(fn, "width and height must be >= 0, got ", width, " x ", height);
+    FeatureRecon::internal::throw_invalid_argument(fn, "width and height must be >= 0, got ", width, " x ",
+                                                   height);
   const std::size_t expected = std::size_t(width) * std::size_t(height) * channels;
   if (values != expected)
-    FeatureRecon::internal::throw_invalid_argument(fn, "data has ", values, " values, a ", width, " x ", height,
-                                                   " image with ", channels, " channel(s) needs ", expected);
+    FeatureRecon::internal::throw_invalid_argument(fn, "data has ", values, " values, a ", width, " x ",
+                                                   height, " image with ", channels, " channel(s) needs ",
+                                                   expected);
 }
 /// \endcond
 }  // namespace internal

@@ -4,8 +4,8 @@
 #define FEATURERECON_SAMPLING_KERNEL_RELAXATION_H
 
 /// \file
-/// Kernel relaxation of a bilateral sampling (dissertation Sec. 2.1.2 and 2.2.2, "Kernel function"): the global
-/// Gaussian energy over the bilateral distances of the sites,
+/// Kernel relaxation of a bilateral sampling (dissertation Sec. 2.1.2 and 2.2.2, "Kernel function"): the
+/// global Gaussian energy over the bilateral distances of the sites,
 ///
 ///     E = (1/N) sum_i sum_{j != i} s_ij^k exp(-xi_ij^2 / (tau^2 s_ij^2)),
 ///     xi_ij^2 = |dp|^2 / sigma_p^2 + |deta|^2 / sigma_eta^2,
@@ -17,13 +17,13 @@
 /// it is halved and tried again. Features follow the positions: after each step every site takes the feature
 /// of the item nearest to it. s_ij = min(s_i, s_j) is 1 for a constant density and adapts the kernel width to
 /// a density (stippling); the factor s_ij^k (k the intrinsic dimension) balances the pressure between regions
-/// of different scale, so the number of sites per area follows the density. In a box a site that crosses a face
-/// is reflected back across it and mirrored ghost sites across the faces stand for the missing neighbours
-/// outside, so the sites do not pile up on the boundary. Start from dart throwing (sites_at_items() of bilateral_dart_throwing_count()), as
-/// the dissertation does: the energy then falls quickly. When sites snap to items (point clouds on surfaces)
-/// each keeps a free position within half an item spacing of its item, so small steps add up; the caller sees
-/// the items' positions. Stages: kernel_energy() (energy and gradient) and kernel_relaxation() (the
-/// iterations).
+/// of different scale, so the number of sites per area follows the density. In a box a site that crosses a
+/// face is reflected back across it and mirrored ghost sites across the faces stand for the missing
+/// neighbours outside, so the sites do not pile up on the boundary. Start from dart throwing
+/// (sites_at_items() of bilateral_dart_throwing_count()), as the dissertation does: the energy then falls
+/// quickly. When sites snap to items (point clouds on surfaces) each keeps a free position within half an
+/// item spacing of its item, so small steps add up; the caller sees the items' positions. Stages:
+/// kernel_energy() (energy and gradient) and kernel_relaxation() (the iterations).
 
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/sampling/discrete_lloyd.h>
@@ -61,36 +61,42 @@ enum class Kernel_constraint {
 /// \tparam Dimension the items' dimension (2 or 3), the dimension of the positions on_iteration sees.
 template <int Dimension>
 struct Kernel_relaxation_options {
-  double sigma_position = 1;                                        ///< spatial scale of xi; default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
+  double sigma_position = 1;  ///< spatial scale of xi; default 1
+  double sigma_feature =
+      std::numeric_limits<double>::infinity();  ///< feature scale; default infinity (Euclidean)
   /// tau, the kernel width in units of xi (the spatial width is tau sigma_position). Default 0:
   /// d_hex / (2 sigma_position) with d_hex = sqrt(2 A / (sqrt(3) N)), the spacing of N sites on a hexagonal
   /// lattice over the domain's area A (measured on 200 sites from dart throwing and from white noise, 100
   /// steps: rho 0.85 and 0.81 at d_hex / 2, 0.69 and 0.65 at d_hex, 0.79 and 0.73 at 0.3 d_hex).
   double kernel_width = 0;
-  double cutoff = 3;  ///< pairs farther apart than cutoff kernel widths are ignored (exp(-9) ~ 1e-4); default 3
+  double cutoff =
+      3;  ///< pairs farther apart than cutoff kernel widths are ignored (exp(-9) ~ 1e-4); default 3
   /// Density rho of each item (>= 0, finite), aligned with the items. A site takes the scale
   /// s = (mean rho / rho_bar)^(1/k) of the item nearest to it, clamped to [1/8, 8] (k = 2 for images and
   /// surfaces, 3 for volumes), so sites crowd where rho is high (stippling: the darkness). rho_bar is rho
-  /// averaged over about the kernel's footprint at that scale (blocks of cells of growing size around the item,
-  /// widened while the block stays within the kernel width it gives): a thin dark line keeps its own density, a
-  /// pattern finer than the kernel counts by its mean. Default empty: s = 1.
+  /// averaged over about the kernel's footprint at that scale (blocks of cells of growing size around the
+  /// item, widened while the block stays within the kernel width it gives): a thin dark line keeps its own
+  /// density, a pattern finer than the kernel counts by its mean. Default empty: s = 1.
   std::vector<double> density;
   /// Where sites may go. Default: bounding_box for 2D items, snap_to_item for 3D items (surfaces).
-  Kernel_constraint constraint = Dimension == 2 ? Kernel_constraint::bounding_box : Kernel_constraint::snap_to_item;
+  Kernel_constraint constraint =
+      Dimension == 2 ? Kernel_constraint::bounding_box : Kernel_constraint::snap_to_item;
   std::size_t max_iterations = 100;  ///< iteration cap (accepted steps); default 100
-  /// The first step length as a fraction of the distance to the neighbours (a single pair at distance d, close
-  /// enough for the kernel to be ~1, moves apart by step * d); doubled or halved by the step control; default 0.25.
+  /// The first step length as a fraction of the distance to the neighbours (a single pair at distance d,
+  /// close enough for the kernel to be ~1, moves apart by step * d); doubled or halved by the step control;
+  /// default 0.25.
   double initial_step = 0.25;
   /// Stop when an accepted step lowers E by less than this fraction of E; default 1e-6.
   double energy_tolerance = 1e-6;
-  double move_tolerance = 0;  ///< stop when no site moved farther than this (units of the positions); default 0
+  double move_tolerance =
+      0;  ///< stop when no site moved farther than this (units of the positions); default 0
   /// Area (2D items, surfaces) or volume of the domain for the default kernel width and the relative radius;
   /// default 0: as discrete_bilateral_lloyd() estimates it.
   double domain_measure = 0;
   /// Called after each accepted step with its statistics and the sites' positions after the move; returning
   /// false stops there. Default: none.
-  std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)> on_iteration;
+  std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)>
+      on_iteration;
   Progress_callback progress;  ///< fraction of max_iterations done; returning false stops (sites so far kept)
 };
 
@@ -100,7 +106,7 @@ template <int Dimension>
 struct Kernel_energy {
   double energy = 0;                                    ///< E (including the ghost pairs in a box)
   std::vector<std::array<double, Dimension>> gradient;  ///< dE/dp_i per site, features and scales held fixed
-  std::size_t pairs = 0;                                ///< ordered pairs within the cut-off (ghosts included)
+  std::size_t pairs = 0;  ///< ordered pairs within the cut-off (ghosts included)
 };
 
 /// Result of kernel_relaxation().
@@ -127,23 +133,26 @@ class Kernel_engine : public Item_domain<Traits> {
   using Base::S;
 
   template <class ItemRange>
-  Kernel_engine(const ItemRange& items, const Kernel_relaxation_options<D>& o, const Traits& traits, std::size_t sites,
-                const char* fn, const Progress_callback& progress = {})
+  Kernel_engine(const ItemRange& items, const Kernel_relaxation_options<D>& o, const Traits& traits,
+                std::size_t sites, const char* fn, const Progress_callback& progress = {})
       : Base(items, traits, o.domain_measure, fn, std::isfinite(o.sigma_feature)), options(o) {
     check_sigmas(o.sigma_position, o.sigma_feature, fn);  // the span: check_sites(), items and sites together
     if (!(o.kernel_width >= 0) || !std::isfinite(o.kernel_width))
-      FeatureRecon::internal::throw_invalid_argument(fn, "kernel_width must be finite and >= 0, got ", o.kernel_width);
+      FeatureRecon::internal::throw_invalid_argument(fn, "kernel_width must be finite and >= 0, got ",
+                                                     o.kernel_width);
     if (!(o.cutoff > 0) || !std::isfinite(o.cutoff))
       FeatureRecon::internal::throw_invalid_argument(fn, "cutoff must be finite and > 0, got ", o.cutoff);
     if (!(o.initial_step > 0) || !std::isfinite(o.initial_step))
-      FeatureRecon::internal::throw_invalid_argument(fn, "initial_step must be finite and > 0, got ", o.initial_step);
+      FeatureRecon::internal::throw_invalid_argument(fn, "initial_step must be finite and > 0, got ",
+                                                     o.initial_step);
     if (!(o.energy_tolerance >= 0 && std::isfinite(o.energy_tolerance)) ||
         !(o.move_tolerance >= 0 && std::isfinite(o.move_tolerance)))
-      FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ",
-                                                     o.energy_tolerance, " and ", o.move_tolerance);
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ", o.energy_tolerance,
+          " and ", o.move_tolerance);
     if (!o.density.empty() && o.density.size() != S.size())
-      FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ", S.size(),
-                                                     " items");
+      FeatureRecon::internal::throw_invalid_argument(fn, "density has ", o.density.size(), " values for ",
+                                                     S.size(), " items");
     double total = 0;
     for (std::size_t i = 0; i < o.density.size(); ++i) {
       if (!(o.density[i] >= 0 && std::isfinite(o.density[i])))
@@ -198,13 +207,13 @@ class Kernel_engine : public Item_domain<Traits> {
   // (anchored at the box corner) around the item's cell. An item takes level l while the block fits in one
   // kernel width, 3 c_l <= w0 s(level l's mean) (w0 the spatial kernel width at scale 1); the first failure
   // ends the climb. A thin dark line keeps the density of its own pixels (its small kernel sees only them); a
-  // pattern finer than the kernel counts by its mean: on a picture whose columns alternate black and white the
-  // density of the one pixel under a site switched the scale between 0.7 and 8 from one pixel to the next (now
-  // 0.87 and 1.22), the energy jumped from 0.23 to 150 in a step and 24 of 40 sites were pushed into the
+  // pattern finer than the kernel counts by its mean: on a picture whose columns alternate black and white
+  // the density of the one pixel under a site switched the scale between 0.7 and 8 from one pixel to the next
+  // (now 0.87 and 1.22), the energy jumped from 0.23 to 150 in a step and 24 of 40 sites were pushed into the
   // corners. Deterministic (cells sorted by their integer coordinates, sums in index order).
-  // Returns false when `progress` (asked with 0 at every level and every 65,536 items) says stop. Dense arrays of
-  // cells where they hold at most about 4 per item (images, volumes: 2048 x 2048 pixels in 0.3 s a level), else
-  // cells sorted by their coordinates. An extent above 2^40 cells of a level skips that level.
+  // Returns false when `progress` (asked with 0 at every level and every 65,536 items) says stop. Dense
+  // arrays of cells where they hold at most about 4 per item (images, volumes: 2048 x 2048 pixels in 0.3 s a
+  // level), else cells sorted by their coordinates. An extent above 2^40 cells of a level skips that level.
   bool smooth_density(const Progress_callback& progress) {
     const std::size_t m = S.size();
     local_density.assign(options.density.begin(), options.density.end());
@@ -335,14 +344,19 @@ class Kernel_engine : public Item_domain<Traits> {
           p[k] = std::min(box_hi[k], std::max(box_lo[k], box_lo[k] + t));
         }
       std::uint32_t near = this->nearest_item(p);
-      if (near >= S.size())  // a non-finite position: never after the checks above, but never read past the end
+      if (near >=
+          S.size())  // a non-finite position: never after the checks above, but never read past the end
         throw std::runtime_error("kernel_relaxation: a site has no nearest item (non-finite position)");
       if (snap) {
         if (taken[near] && free_items > 0) {
           double best;
-          near = this->item_grid.nearest(p, 1.0, [&](std::uint32_t j) {
-            return taken[j] ? std::numeric_limits<double>::max() : std::sqrt(Base::squared(p, S.positions[j]));
-          }, best);
+          near = this->item_grid.nearest(
+              p, 1.0,
+              [&](std::uint32_t j) {
+                return taken[j] ? std::numeric_limits<double>::max()
+                                : std::sqrt(Base::squared(p, S.positions[j]));
+              },
+              best);
         }
         if (!taken[near]) --free_items;
         taken[near] = 1;
@@ -357,7 +371,8 @@ class Kernel_engine : public Item_domain<Traits> {
   }
 
   // E and (optionally) its gradient, features and scales fixed.
-  Kernel_energy<D> energy(const std::vector<Site>& sites, const std::vector<double>& scales, bool gradient) const {
+  Kernel_energy<D> energy(const std::vector<Site>& sites, const std::vector<double>& scales,
+                          bool gradient) const {
     Kernel_energy<D> out;
     const std::size_t n = sites.size();
     if (gradient) out.gradient.assign(n, Point{});
@@ -396,8 +411,8 @@ class Kernel_engine : public Item_domain<Traits> {
       }
     double volume = 1;
     for (int k = 0; k < D; ++k) volume *= std::max(fhi[k] - flo[k], options.cutoff * w0);
-    // Cells about the cutoff radius wide, but never more than about 4 per point: a tiny kernel width or one far
-    // site asked for volume / (cutoff w)^D cells (a 64 x 64 image at width 1e-4: std::bad_alloc).
+    // Cells about the cutoff radius wide, but never more than about 4 per point: a tiny kernel width or one
+    // far site asked for volume / (cutoff w)^D cells (a 64 x 64 image at width 1e-4: std::bad_alloc).
     const double cells = std::min(volume / std::pow(options.cutoff * w0, D), 4.0 * double(q.size()) + 16);
     Ring_grid<D> grid(flo, fhi, std::max(1.0, cells));
     grid.assign(q);
@@ -421,7 +436,9 @@ class Kernel_engine : public Item_domain<Traits> {
         const double w = options.cutoff * w0 * s;
         if (d2 > w * w) return;
         const double f2 =
-            features ? double(CGAL::to_double(S.feature_distance(sites[i].feature, sites[j].feature))) * inv_sf2 : 0.0;
+            features
+                ? double(CGAL::to_double(S.feature_distance(sites[i].feature, sites[j].feature))) * inv_sf2
+                : 0.0;
         const double a = inv_tau2 / (s * s);
         const double weight = std::pow(s, intrinsic);
         // The kernel minus its value at the cut-off distance (same features), so E is continuous.
@@ -458,25 +475,27 @@ class Kernel_engine : public Item_domain<Traits> {
 /// scales held at their values: they are piecewise constant in the positions). The sites are used as given
 /// (not clamped, features not refreshed).
 /// \param items the domain (for the kernel width, the box and the density). \param sites the sites (finite,
-/// checked). \param options metric, kernel width, cut-off, density, constraint. \param traits FeaturePointTraits.
+/// checked). \param options metric, kernel width, cut-off, density, constraint. \param traits
+/// FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
-Kernel_energy<Traits::dimension> kernel_energy(const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,
-                                               const Kernel_relaxation_options<Traits::dimension>& options = {},
-                                               const Traits& traits = Traits()) {
+Kernel_energy<Traits::dimension> kernel_energy(
+    const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,
+    const Kernel_relaxation_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), "kernel_energy");
   engine.check_sites(sites, "kernel_energy", options.sigma_position);
   std::vector<double> scales(sites.size(), 1.0);
   if (engine.items() > 0)
-    for (std::size_t i = 0; i < sites.size(); ++i) scales[i] = engine.scale_at(engine.nearest_item(sites[i].position));
+    for (std::size_t i = 0; i < sites.size(); ++i)
+      scales[i] = engine.scale_at(engine.nearest_item(sites[i].position));
   return engine.energy(sites, scales, true);
 }
 
-/// Kernel relaxation (dissertation Sec. 2.2.2): gradient steps on the kernel energy with step control, features
-/// following the positions, until a stopping rule holds (iteration cap, relative energy decrease, largest move,
-/// no descent, the on_iteration callback). Each site moves by -step (w_i^2 N / 4) dE/dp_i (w_i its spatial
-/// kernel width), a descent direction that moves an isolated close pair apart by about step times its
-/// distance; a step that does not lower E is halved (up to 30 times, then the run stops with no_descent), an
-/// accepted one makes the next 1.25 times longer. Deterministic: no randomness beyond the starting sites.
+/// Kernel relaxation (dissertation Sec. 2.2.2): gradient steps on the kernel energy with step control,
+/// features following the positions, until a stopping rule holds (iteration cap, relative energy decrease,
+/// largest move, no descent, the on_iteration callback). Each site moves by -step (w_i^2 N / 4) dE/dp_i (w_i
+/// its spatial kernel width), a descent direction that moves an isolated close pair apart by about step times
+/// its distance; a step that does not lower E is halved (up to 30 times, then the run stops with no_descent),
+/// an accepted one makes the next 1.25 times longer. Deterministic: no randomness beyond the starting sites.
 /// \param items the domain: a range of items read through the traits (positions finite, checked).
 /// \param sites the starting sites, e.g. sites_at_items() of a dart-throwing result (finite, checked).
 /// \param options metric, kernel, density, constraint, step control, stopping rules (checked; throws naming
@@ -485,9 +504,9 @@ Kernel_energy<Traits::dimension> kernel_energy(const ItemRange& items, const std
 /// \return the sites and the history. No items, fewer than two sites, or items without spatial extent (all at
 ///   one position): degenerate_input, sites unchanged.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
-Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::vector<Bilateral_site<Traits>> sites,
-                                                   const Kernel_relaxation_options<Traits::dimension>& options = {},
-                                                   const Traits& traits = Traits()) {
+Kernel_relaxation_result<Traits> kernel_relaxation(
+    const ItemRange& items, std::vector<Bilateral_site<Traits>> sites,
+    const Kernel_relaxation_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   constexpr int D = Traits::dimension;
   const char* fn = "kernel_relaxation";
   const internal::Kernel_engine<Traits> engine(items, options, traits, sites.size(), fn, options.progress);
@@ -514,7 +533,8 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
   }
   // Coincident sites have no gradient between them: every copy after the first (in index order) moves by
   // w0 / 100 along a direction fixed by its index (golden-angle spiral), then the energy separates them.
-  internal::separate_copies<D>(sites.size(), w0 / 100, [&sites](std::size_t i) -> auto& { return sites[i].position; });
+  internal::separate_copies<D>(
+      sites.size(), w0 / 100, [&sites](std::size_t i) -> auto& { return sites[i].position; });
   std::vector<double> scales;
   std::vector<std::uint32_t> item;
   engine.settle(sites, scales, item);
@@ -539,7 +559,8 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
       result.stop = Lloyd_stop::iteration_cap;
       break;
     }
-    if (!FeatureRecon::internal::report_progress(options.progress, double(it) / double(options.max_iterations))) {
+    if (!FeatureRecon::internal::report_progress(options.progress,
+                                                 double(it) / double(options.max_iterations))) {
       result.stop = Lloyd_stop::interrupted;
       result.status = Status::interrupted;
       break;
@@ -582,7 +603,8 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
       break;
     }
     for (std::size_t i = 0; i < sites.size(); ++i) {
-      const double m = std::sqrt(internal::Item_domain<Traits>::squared(trial[i].position, sites[i].position));
+      const double m =
+          std::sqrt(internal::Item_domain<Traits>::squared(trial[i].position, sites[i].position));
       max_move = std::max(max_move, m);
       total_move += m;
     }
@@ -600,7 +622,8 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
     step = std::min(step * 1.25, 4.0);
     const bool keep_going = !options.on_iteration || [&] {
       std::vector<std::array<double, D>> positions(sites.size());
-      for (std::size_t k = 0; k < sites.size(); ++k) positions[k] = snap ? engine.S.positions[item[k]] : sites[k].position;
+      for (std::size_t k = 0; k < sites.size(); ++k)
+        positions[k] = snap ? engine.S.positions[item[k]] : sites[k].position;
       return options.on_iteration(s, positions);
     }();
     result.history.push_back(s);
@@ -608,7 +631,8 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
                                   options.energy_tolerance, result.stop))
       break;
   }
-  if (result.status != Status::interrupted) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (result.status != Status::interrupted)
+    (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   result.sites = reported(sites, item);
   result.step = step;
   return result;
@@ -619,9 +643,9 @@ Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, std::
 /// \param items the domain. \param initial indices of the starting items (checked).
 /// \param options as for kernel_relaxation(). \param traits FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
-Kernel_relaxation_result<Traits> kernel_relaxation(const ItemRange& items, const std::vector<std::size_t>& initial,
-                                                   const Kernel_relaxation_options<Traits::dimension>& options = {},
-                                                   const Traits& traits = Traits()) {
+Kernel_relaxation_result<Traits> kernel_relaxation(
+    const ItemRange& items, const std::vector<std::size_t>& initial,
+    const Kernel_relaxation_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   return kernel_relaxation(items, sites_at_items(items, initial, traits), options, traits);
 }
 

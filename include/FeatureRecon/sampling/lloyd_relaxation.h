@@ -62,19 +62,21 @@ struct Lloyd_options {
 
 /// Result of lloyd_step().
 struct Lloyd_step_result {
-  std::vector<std::array<double, 2>> centroids;  ///< per site: the centroid of its cell (the site itself when the cell has no mass)
-  std::vector<double> mass;                      ///< per site: the density integral over its cell
-  double energy = 0;           ///< CVT energy of the sites given to the step
-  double minimum_distance = 0;  ///< shortest distance between two sites at distinct positions (infinity for fewer than two)
+  std::vector<std::array<double, 2>>
+      centroids;  ///< per site: the centroid of its cell (the site itself when the cell has no mass)
+  std::vector<double> mass;  ///< per site: the density integral over its cell
+  double energy = 0;         ///< CVT energy of the sites given to the step
+  double minimum_distance =
+      0;  ///< shortest distance between two sites at distinct positions (infinity for fewer than two)
   std::size_t duplicates = 0;  ///< sites at the position of a lower-indexed site (their cells are empty)
 };
 
 /// Result of lloyd_relaxation().
 struct Lloyd_result {
-  std::vector<std::array<double, 2>> sites;           ///< final positions, in input order
-  std::vector<double> mass;                           ///< density mass of each site's cell at the last iteration
-  std::vector<Lloyd_iteration_statistics> history;    ///< one entry per iteration done
-  Lloyd_stop stop = Lloyd_stop::iteration_cap;        ///< why it stopped
+  std::vector<std::array<double, 2>> sites;  ///< final positions, in input order
+  std::vector<double> mass;                  ///< density mass of each site's cell at the last iteration
+  std::vector<Lloyd_iteration_statistics> history;  ///< one entry per iteration done
+  Lloyd_stop stop = Lloyd_stop::iteration_cap;      ///< why it stopped
   /// degenerate_input for no sites, an empty box or a density that is zero everywhere (nothing moves);
   /// interrupted when the progress callback stopped it.
   Status status = Status::success;
@@ -100,7 +102,7 @@ struct Voronoi_builder {
   std::size_t duplicates = 0;
   std::size_t sites = 0;
   std::array<double, 4> frame{0, 0, 0, 0};
-  std::vector<Dt::Vertex_handle> vertex;  // per site (owners only)
+  std::vector<Dt::Vertex_handle> vertex;       // per site (owners only)
   std::size_t rebuilds = 0, flip_updates = 0;  // how each triangulation was made (for benchmarks and tests)
   // A Voronoi edge to integrate: from *p to *q, counter-clockwise around the lower-ranked of sites a and b.
   struct Edge_task {
@@ -128,7 +130,8 @@ struct Voronoi_builder {
   // keeps its orientation (exact predicate) the triangulation stays valid and Lawson flips (exact, perturbed
   // in-circle test, as CGAL's insertion) make it Delaunay again; otherwise it is rebuilt.
   void build(const std::vector<std::array<double, 2>>& points, const std::array<double, 4>& box) {
-    if (!(sites == points.size() && duplicates == 0 && box == frame && sites != 0 && move(points))) rebuild(points, box);
+    if (!(sites == points.size() && duplicates == 0 && box == frame && sites != 0 && move(points)))
+      rebuild(points, box);
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
       // The vertices in rank order, so the rounded circumcentre does not depend on how the face stores them.
       std::array<Dt::Vertex_handle, 3> v{f->vertex(0), f->vertex(1), f->vertex(2)};
@@ -156,7 +159,8 @@ struct Voronoi_builder {
     const double reach = 3 * std::max({box[2] - box[0], box[3] - box[1], 1.0});
     std::vector<std::pair<K::Point_2, std::uint32_t>> input;
     input.reserve(n + 4);
-    for (std::size_t i = 0; i < n; ++i) input.emplace_back(K::Point_2(points[i][0], points[i][1]), std::uint32_t(i));
+    for (std::size_t i = 0; i < n; ++i)
+      input.emplace_back(K::Point_2(points[i][0], points[i][1]), std::uint32_t(i));
     const double xs[2] = {box[0] - reach, box[2] + reach}, ys[2] = {box[1] - reach, box[3] + reach};
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b) input.emplace_back(K::Point_2(xs[a], ys[b]), dummy);
@@ -190,7 +194,8 @@ struct Voronoi_builder {
     const std::size_t n = points.size();
     std::vector<K::Point_2>& old = work.old;
     old.resize(n);
-    // In the vertices' memory order (spatially sorted at the build), not the sites' order: far fewer cache misses.
+    // In the vertices' memory order (spatially sorted at the build), not the sites' order: far fewer cache
+    // misses.
     for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
       const std::uint32_t i = v->info();
       if (i == dummy) continue;
@@ -205,7 +210,8 @@ struct Voronoi_builder {
     for (bool inverted = true; inverted;) {
       inverted = false;
       for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-        if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) == CGAL::POSITIVE)
+        if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) ==
+            CGAL::POSITIVE)
           continue;
         inverted = true;
         for (int k = 0; k < 3; ++k) {
@@ -247,7 +253,8 @@ struct Voronoi_builder {
       }
     std::sort(held.begin(), held.end());  // a fixed order: the result does not depend on the face order
     for (const std::uint32_t i : held)
-      if (dt.move_if_no_collision(vertex[i], K::Point_2(points[i][0], points[i][1])) != vertex[i]) return false;
+      if (dt.move_if_no_collision(vertex[i], K::Point_2(points[i][0], points[i][1])) != vertex[i])
+        return false;
     ++flip_updates;
     return true;
   }
@@ -277,7 +284,8 @@ struct Voronoi_builder {
 
   // The cell of a vertex (a convex polygon, counter-clockwise, from first_face), clipped to the box; empty
   // when it misses the box.
-  void cell(Dt::Vertex_handle v, const std::array<double, 4>& box, Polygon_2d& out, Polygon_2d& scratch) const {
+  void cell(Dt::Vertex_handle v, const std::array<double, 4>& box, Polygon_2d& out,
+            Polygon_2d& scratch) const {
     out.clear();
     auto f = first_face(v), end = f;
     bool inside = true;
@@ -293,8 +301,8 @@ struct Voronoi_builder {
   // Sutherland-Hodgman against the four sides of the box (convex polygon, so the result is one polygon).
   static void clip(const std::array<double, 4>& box, Polygon_2d& poly, Polygon_2d& scratch) {
     for (int side = 0; side < 4 && !poly.empty(); ++side) {
-      const int axis = side & 1;                // 0: x, 1: y
-      const bool lower = side < 2;              // keep coordinate >= box[axis] or <= box[2 + axis]
+      const int axis = side & 1;    // 0: x, 1: y
+      const bool lower = side < 2;  // keep coordinate >= box[axis] or <= box[2 + axis]
       const double bound = lower ? box[std::size_t(axis)] : box[std::size_t(2 + axis)];
       auto in = [&](const std::array<double, 2>& p) { return lower ? p[axis] >= bound : p[axis] <= bound; };
       scratch.clear();
@@ -309,7 +317,8 @@ struct Voronoi_builder {
           std::array<double, 2> p;
           p[axis] = bound;
           p[1 - axis] = a[1 - axis] + t * (b[1 - axis] - a[1 - axis]);
-          // A vertex on the bound is its own crossing: (0, 0), (1, 1), (0, 1) in the unit box repeated (1, 0).
+          // A vertex on the bound is its own crossing: (0, 0), (1, 1), (0, 1) in the unit box repeated (1,
+          // 0).
           if (scratch.empty() || p != scratch.back()) scratch.push_back(p);
         }
       }
@@ -333,8 +342,9 @@ std::vector<std::array<double, 2>> read_sites(const PointRange& points, const st
     if (!(std::isfinite(q[0]) && std::isfinite(q[1])))
       FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a non-finite coordinate");
     if (!(q[0] >= box[0] && q[0] <= box[2] && q[1] >= box[1] && q[1] <= box[3]))
-      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " (", q[0], ", ", q[1], ") lies outside the box [",
-                                                     box[0], ", ", box[2], "] x [", box[1], ", ", box[3], "]");
+      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " (", q[0], ", ", q[1],
+                                                     ") lies outside the box [", box[0], ", ", box[2],
+                                                     "] x [", box[1], ", ", box[3], "]");
     sites.push_back(q);
     ++i;
   }
@@ -344,8 +354,9 @@ std::vector<std::array<double, 2>> read_sites(const PointRange& points, const st
 // One Lloyd step on checked sites. A cell whose Voronoi vertices all lie in the box (an interior cell) is
 // integrated edge by edge: each Voronoi edge between two interior cells once, added to one and subtracted
 // from the other; the cells that touch the box are clipped and integrated whole.
-inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>>& sites, const Pixel_density& density,
-                                         Voronoi_builder& voronoi, unsigned threads) {
+inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>>& sites,
+                                         const Pixel_density& density, Voronoi_builder& voronoi,
+                                         unsigned threads) {
   using Dt = Voronoi_builder::Dt;
   Lloyd_step_result r;
   const std::size_t n = sites.size();
@@ -373,7 +384,8 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
   using Edge_task = Voronoi_builder::Edge_task;
   std::vector<Edge_task>& edges = work.edges;
   edges.clear();
-  std::vector<std::uint32_t>& ring_start = work.ring_start;  // per interior site: its edges (counts, then offsets)
+  std::vector<std::uint32_t>& ring_start =
+      work.ring_start;  // per interior site: its edges (counts, then offsets)
   ring_start.assign(n + 1, 0);
   for (auto e = voronoi.dt.finite_edges_begin(); e != voronoi.dt.finite_edges_end(); ++e) {
     const auto f = e->first;
@@ -381,8 +393,10 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
     const auto g = f->neighbor(i);
     // An edge with an infinite face joins two far corners (the hull); the site cache is for finite faces.
     if (voronoi.dt.is_infinite(f) || voronoi.dt.is_infinite(g)) continue;
-    const std::uint32_t a = f->info().site[std::size_t(Dt::ccw(i))], b = f->info().site[std::size_t(Dt::cw(i))];
-    const bool ia = a != Voronoi_builder::dummy && interior[a], ib = b != Voronoi_builder::dummy && interior[b];
+    const std::uint32_t a = f->info().site[std::size_t(Dt::ccw(i))],
+                        b = f->info().site[std::size_t(Dt::cw(i))];
+    const bool ia = a != Voronoi_builder::dummy && interior[a],
+               ib = b != Voronoi_builder::dummy && interior[b];
     if (!ia && !ib) continue;
     // Around a counter-clockwise, g comes just before f: the edge runs c(g) -> c(f) on a's cell.
     const bool from_a = a < b;  // rank_less: at least one is a site, and sites rank below the far corners
@@ -390,8 +404,8 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
     if (ib) ++ring_start[b + 1];
     edges.push_back({&(from_a ? g : f)->info().circumcenter, &(from_a ? f : g)->info().circumcenter, a, b});
   }
-  // Each interior cell's edges as (neighbour, edge) pairs, summed later in increasing neighbour order: a fixed
-  // order that needs no walk around the cell (the walks were bound by cache misses on the faces).
+  // Each interior cell's edges as (neighbour, edge) pairs, summed later in increasing neighbour order: a
+  // fixed order that needs no walk around the cell (the walks were bound by cache misses on the faces).
   for (std::size_t i = 0; i < n; ++i) ring_start[i + 1] += ring_start[i];
   auto& ring = work.ring;
   ring.resize(ring_start[n]);
@@ -451,9 +465,9 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
       }
     }
   });
-  // A cell over zero density sums its edges' moments to rounding noise, not to 0: its "centroid" was that noise
-  // divided by noise, clamped to a corner of the box, where such sites then stacked (stippling's white corners).
-  // Masses below a billionth of the mean cell's count as empty (the site stays).
+  // A cell over zero density sums its edges' moments to rounding noise, not to 0: its "centroid" was that
+  // noise divided by noise, clamped to a corner of the box, where such sites then stacked (stippling's white
+  // corners). Masses below a billionth of the mean cell's count as empty (the site stays).
   const double negligible = 1e-9 * density.total_mass() / static_cast<double>(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (voronoi.owner[i] != i) continue;  // a duplicate: empty cell, stays
@@ -461,7 +475,8 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
     const auto& p = sites[i];
     r.mass[i] = m.mass;
     // integral of rho |x - p|^2 = M2 - 2 p . M1 + |p|^2 M0; clamped at 0 against rounding.
-    r.energy += std::max(0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
+    r.energy += std::max(
+        0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
     if (m.mass > negligible) {
       // The centroid lies in the convex cell, inside the box; clamp against rounding.
       r.centroids[i] = {std::min(std::max(m.moment_x / m.mass, box[0]), box[2]),
@@ -473,15 +488,16 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
 /// \endcond
 }  // namespace internal
 
-/// The Voronoi cells of the sites clipped to the box [x0, x1] x [y0, y1], from CGAL's Delaunay_triangulation_2
-/// (exact predicates; the Voronoi vertices are the circumcentres, computed in double). Sites at the position
-/// of a lower-indexed site get an empty cell (ties go to the lowest index).
+/// The Voronoi cells of the sites clipped to the box [x0, x1] x [y0, y1], from CGAL's
+/// Delaunay_triangulation_2 (exact predicates; the Voronoi vertices are the circumcentres, computed in
+/// double). Sites at the position of a lower-indexed site get an empty cell (ties go to the lowest index).
 /// \tparam PointRange a range of 2D points. \tparam Traits a model of PointCoordinateTraits.
 /// \param points the sites, inside the box.
 /// \param box {x0, y0, x1, y1}, finite with x0 <= x1 and y0 <= y1 (checked; throws).
 /// \param traits reads the sites' coordinates.
 /// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box.
-template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<
+                                decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
 std::vector<Polygon_2d> clipped_voronoi_cells(const PointRange& points, const std::array<double, 4>& box,
                                               const Traits& traits = Traits()) {
   const char* fn = "clipped_voronoi_cells";
@@ -505,8 +521,10 @@ std::vector<Polygon_2d> clipped_voronoi_cells(const PointRange& points, const st
 /// \param density the density and its box.
 /// \param traits reads the sites' coordinates.
 /// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box.
-template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
-Lloyd_step_result lloyd_step(const PointRange& points, const Pixel_density& density, const Traits& traits = Traits()) {
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<
+                                decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+Lloyd_step_result lloyd_step(const PointRange& points, const Pixel_density& density,
+                             const Traits& traits = Traits()) {
   const auto sites = internal::read_sites(points, density.box(), traits, "lloyd_step");
   internal::Voronoi_builder voronoi;
   return internal::lloyd_step_impl(sites, density, voronoi, 0);
@@ -525,9 +543,10 @@ Lloyd_step_result lloyd_step(const PointRange& points, const Pixel_density& dens
 /// \param traits reads the sites' coordinates.
 /// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box,
 ///   or for a negative or non-finite tolerance.
-template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
-Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& density, const Lloyd_options& options = {},
-                              const Traits& traits = Traits()) {
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<
+                                decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& density,
+                              const Lloyd_options& options = {}, const Traits& traits = Traits()) {
   const char* fn = "lloyd_relaxation";
   if (!(std::isfinite(options.energy_tolerance) && options.energy_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "energy_tolerance must be finite and >= 0, got ",
@@ -556,7 +575,8 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
   internal::Voronoi_builder voronoi;
   double previous_energy = std::numeric_limits<double>::infinity();
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
-    if (!FeatureRecon::internal::report_progress(options.progress, double(it) / double(options.max_iterations))) {
+    if (!FeatureRecon::internal::report_progress(options.progress,
+                                                 double(it) / double(options.max_iterations))) {
       result.stop = Lloyd_stop::interrupted;
       result.status = Status::interrupted;
       return result;
@@ -565,11 +585,14 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
     Lloyd_iteration_statistics s;
     s.iteration = it + 1;
     s.energy = step.energy;
-    s.relative_radius = n < 2 ? 0.0 : std::isinf(step.minimum_distance) ? 0.0 : step.minimum_distance / hexagonal;
+    s.relative_radius = n < 2                               ? 0.0
+                        : std::isinf(step.minimum_distance) ? 0.0
+                                                            : step.minimum_distance / hexagonal;
     if (step.duplicates != 0) s.relative_radius = 0;
     double total_move = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const double d = std::hypot(step.centroids[i][0] - result.sites[i][0], step.centroids[i][1] - result.sites[i][1]);
+      const double d =
+          std::hypot(step.centroids[i][0] - result.sites[i][0], step.centroids[i][1] - result.sites[i][1]);
       s.max_move = std::max(s.max_move, d);
       total_move += d;
     }

@@ -25,10 +25,10 @@ namespace sampling {
 
 /// Integrals of a density rho over a region R.
 struct Density_moments {
-  double mass = 0;       ///< integral of rho
-  double moment_x = 0;   ///< integral of x rho
-  double moment_y = 0;   ///< integral of y rho
-  double moment_2 = 0;   ///< integral of (x^2 + y^2) rho
+  double mass = 0;      ///< integral of rho
+  double moment_x = 0;  ///< integral of x rho
+  double moment_y = 0;  ///< integral of y rho
+  double moment_2 = 0;  ///< integral of (x^2 + y^2) rho
   /// Adds the integrals of another region (disjoint from this one). \param o the other region's integrals.
   Density_moments& operator+=(const Density_moments& o) {
     mass += o.mass;
@@ -61,21 +61,22 @@ class Pixel_density {
 
   /// \param width columns (>= 0). \param height rows (>= 0).
   /// \param values width * height densities, rows from the top; each finite and >= 0 (checked; throws
-  ///   std::invalid_argument naming the first bad pixel), and small enough that their moments over the image stay
-  ///   finite (checked; throws).
+  ///   std::invalid_argument naming the first bad pixel), and small enough that their moments over the image
+  ///   stay finite (checked; throws).
   Pixel_density(int width, int height, std::vector<double> values) : m_width(width), m_height(height) {
     const char* fn = "Pixel_density";
     if (width < 0 || height < 0)
-      FeatureRecon::internal::throw_invalid_argument(fn, "width and height must be >= 0, got ", width, " x ", height);
+      FeatureRecon::internal::throw_invalid_argument(fn, "width and height must be >= 0, got ", width, " x ",
+                                                     height);
     const std::size_t w = std::size_t(width), h = std::size_t(height);
     if (values.size() != w * h)
-      FeatureRecon::internal::throw_invalid_argument(fn, "values has ", values.size(), " entries, a ", width, " x ",
-                                                     height, " density needs ", w * h);
+      FeatureRecon::internal::throw_invalid_argument(fn, "values has ", values.size(), " entries, a ", width,
+                                                     " x ", height, " density needs ", w * h);
     for (std::size_t i = 0; i < values.size(); ++i)
       if (!(std::isfinite(values[i]) && values[i] >= 0))
-        FeatureRecon::internal::throw_invalid_argument(fn, "values[", i, "] (column ", i % std::max<std::size_t>(w, 1),
-                                                       ", row ", i / std::max<std::size_t>(w, 1),
-                                                       ") must be finite and >= 0, got ", values[i]);
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "values[", i, "] (column ", i % std::max<std::size_t>(w, 1), ", row ",
+            i / std::max<std::size_t>(w, 1), ") must be finite and >= 0, got ", values[i]);
     // Per row and pixel side k = 0..width: F, G, Q at x = k and the density of pixel k (0 past the last), one
     // 32-byte record, so a piece of boundary reads one cache line.
     m_prefix.resize(4 * (w + 1) * h);
@@ -93,14 +94,16 @@ class Pixel_density {
         q += r * (k * k + k + 1.0 / 3.0);  // integral of t^2 rho
       }
       m_total += p[4 * w];
-      if (!std::isfinite(p[4 * w + 2]) || !std::isfinite(m_total))  // q bounds f and g (t^2 + t + 1/3 >= 1/3, t)
-        FeatureRecon::internal::throw_invalid_argument(fn, "the values are too large: their integrals over the image ",
-                                                       "(density times x^2 along row ", row, ", or the total) ",
-                                                       "overflow a double; scale them down (the density's scale ",
-                                                       "does not change a Lloyd step)");
+      if (!std::isfinite(p[4 * w + 2]) ||
+          !std::isfinite(m_total))  // q bounds f and g (t^2 + t + 1/3 >= 1/3, t)
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "the values are too large: their integrals over the image ", "(density times x^2 along row ",
+            row, ", or the total) ", "overflow a double; scale them down (the density's scale ",
+            "does not change a Lloyd step)");
     }
     // A constant density (plain Lloyd) has closed-form integrals along any segment: no pixel walk.
-    if (!values.empty() && std::all_of(values.begin(), values.end(), [&](double v) { return v == values[0]; }))
+    if (!values.empty() &&
+        std::all_of(values.begin(), values.end(), [&](double v) { return v == values[0]; }))
       m_constant = values[0];
   }
 
@@ -108,8 +111,8 @@ class Pixel_density {
   /// \param width columns (>= 0). \param height rows (>= 0).
   static Pixel_density uniform(int width, int height) {
     if (width < 0 || height < 0)
-      FeatureRecon::internal::throw_invalid_argument("Pixel_density::uniform", "width and height must be >= 0, got ",
-                                                     width, " x ", height);
+      FeatureRecon::internal::throw_invalid_argument(
+          "Pixel_density::uniform", "width and height must be >= 0, got ", width, " x ", height);
     return Pixel_density(width, height, std::vector<double>(std::size_t(width) * std::size_t(height), 1.0));
   }
 
@@ -128,15 +131,16 @@ class Pixel_density {
   bool is_constant() const { return m_constant >= 0; }
 
   /// Adds the boundary integrals of the directed segment a -> b to `moments`. Summed over the edges of a
-  /// counter-clockwise simple polygon inside the box (CGAL's orientation: positive determinant), they give the
-  /// polygon's mass and moments; a clockwise polygon gives their negatives. Each edge contributes in time
+  /// counter-clockwise simple polygon inside the box (CGAL's orientation: positive determinant), they give
+  /// the polygon's mass and moments; a clockwise polygon gives their negatives. Each edge contributes in time
   /// proportional to the number of pixel sides it crosses. \pre a and b lie in the box.
   /// \param ax, ay the start a. \param bx, by the end b. \param moments receives the integrals.
   void integrate_segment(double ax, double ay, double bx, double by, Density_moments& moments) const {
     const double dx = bx - ax, dy = by - ay;
     if (dy == 0 || m_width == 0 || m_height == 0) return;  // every integrand has the factor dy
     if (m_constant >= 0) {
-      // F = c x, G = c x^2 / 2, S = c x^3 / 3 + y^2 c x: cubic along the segment, so one Simpson step is exact.
+      // F = c x, G = c x^2 / 2, S = c x^3 / 3 + y^2 c x: cubic along the segment, so one Simpson step is
+      // exact.
       const double c = m_constant, xm = 0.5 * (ax + bx), ym = 0.5 * (ay + by), w = dy * (1.0 / 6.0);
       moments.mass += w * c * (ax + 4 * xm + bx);
       moments.moment_x += w * c * 0.5 * (ax * ax + 4 * xm * xm + bx * bx);
@@ -226,8 +230,8 @@ class Pixel_density {
   }
 
  private:
-  // Values at (x, y) of F, G and S = Q + y^2 F, where F, G, Q are the integrals of rho, t rho, t^2 rho from 0 to
-  // x along the row of y. Inside one pixel they are polynomials of degree 1, 2 and 3 in x, hence along a
+  // Values at (x, y) of F, G and S = Q + y^2 F, where F, G, Q are the integrals of rho, t rho, t^2 rho from 0
+  // to x along the row of y. Inside one pixel they are polynomials of degree 1, 2 and 3 in x, hence along a
   // straight piece in y, so Simpson's rule integrates them exactly.
   // floor and ceil for coordinates in the box (>= 0, below 2^31), without a call into libm.
   static double floor_nonnegative(double x) { return double(static_cast<long long>(x)); }
@@ -243,7 +247,9 @@ class Pixel_density {
     const double* p;
     double r, k;
     Pixel(const Pixel_density& d, int column, int row)
-        : p(&d.m_prefix[4 * ((std::size_t(d.m_width) + 1) * std::size_t(row) + std::size_t(column))]), r(p[3]), k(column) {}
+        : p(&d.m_prefix[4 * ((std::size_t(d.m_width) + 1) * std::size_t(row) + std::size_t(column))]),
+          r(p[3]),
+          k(column) {}
     Integrands operator()(double x, double y) const {
       const double u = x - k;
       Integrands v;
@@ -256,7 +262,8 @@ class Pixel_density {
 
   int m_width = 0, m_height = 0;
   // Huge pages: a boundary walk jumps a row (32 (width + 1) bytes) at every horizontal pixel side.
-  std::vector<double, FeatureRecon::internal::Large_array_allocator<double>> m_prefix;  // per row, per pixel side k = 0..width: F, G, Q at x = k, density of pixel k
+  std::vector<double, FeatureRecon::internal::Large_array_allocator<double>>
+      m_prefix;  // per row, per pixel side k = 0..width: F, G, Q at x = k, density of pixel k
   double m_total = 0;
   double m_constant = -1;  // the density when every pixel has the same one, else -1
 };

@@ -4,7 +4,8 @@
 #define FEATURERECON_SAMPLING_SAMPLED_BILATERAL_FILTER_H
 
 /// \file
-/// Image subsampling for bilateral filtering (dissertation Sec. 2.2.3). The bilateral filter of an 8-bit image,
+/// Image subsampling for bilateral filtering (dissertation Sec. 2.2.3). The bilateral filter of an 8-bit
+/// image,
 ///
 ///     out(x) = sum_q w_s(q - x) w_r(I(q) - I(x)) I(q) / sum_q w_s(q - x) w_r(I(q) - I(x)),
 ///
@@ -45,9 +46,9 @@ namespace sampling {
 
 /// The weights of a bilateral filter.
 struct Bilateral_kernel {
-  double sigma_spatial = 3;   ///< spatial Gaussian width in pixels (> 0, finite); default 3
-  double sigma_range = 0.1;   ///< range Gaussian width on channels scaled to [0, 1] (> 0, finite); default 0.1
-  int radius = 0;             ///< window half-width R in pixels (>= 0); default 0: ceil(2 sigma_spatial)
+  double sigma_spatial = 3;  ///< spatial Gaussian width in pixels (> 0, finite); default 3
+  double sigma_range = 0.1;  ///< range Gaussian width on channels scaled to [0, 1] (> 0, finite); default 0.1
+  int radius = 0;            ///< window half-width R in pixels (>= 0); default 0: ceil(2 sigma_spatial)
 };
 
 /// Options of bilateral_filter() (the exact filter).
@@ -70,39 +71,41 @@ enum class Tap_mode {
 
 /// Options of sampled_bilateral_filter() and bilateral_tap_pattern().
 struct Sampled_bilateral_filter_options {
-  Bilateral_kernel kernel;                   ///< the filter's weights
+  Bilateral_kernel kernel;                          ///< the filter's weights
   Tap_sampling sampling = Tap_sampling::bilateral;  ///< uniform or bilateral taps; default bilateral
-  Tap_mode mode = Tap_mode::global;          ///< local or global patterns; default global
-  double budget = 0.5;                       ///< taps per kernel pixel (> 0, <= 16); default 0.5
+  Tap_mode mode = Tap_mode::global;                 ///< local or global patterns; default global
+  double budget = 0.5;                              ///< taps per kernel pixel (> 0, <= 16); default 0.5
   /// sigma_feature of the bilateral sampling distance on [0, 1] channels (> 0); default 0: sigma_range
   double sampling_sigma_feature = 0;
-  bool compensate_density = true;            ///< weight bilateral taps by their inverse relative density
-  double candidates_per_tap = 4;             ///< uniform candidates thrown per tap of the budget (>= 2); default 4
-  std::size_t local_patterns = 64;           ///< local mode: candidate sets in the pool (>= 1); default 64
-  std::uint64_t seed = 0;                    ///< random seed; the same seed gives the same output
-  Progress_callback progress;                ///< fraction of the work done; returning false stops (empty result)
+  bool compensate_density = true;   ///< weight bilateral taps by their inverse relative density
+  double candidates_per_tap = 4;    ///< uniform candidates thrown per tap of the budget (>= 2); default 4
+  std::size_t local_patterns = 64;  ///< local mode: candidate sets in the pool (>= 1); default 64
+  std::uint64_t seed = 0;           ///< random seed; the same seed gives the same output
+  Progress_callback progress;       ///< fraction of the work done; returning false stops (empty result)
 };
 
 /// Output of bilateral_filter() and sampled_bilateral_filter().
 struct Bilateral_filter_result {
   /// The filtered image, width * height * channels values on the 0..255 scale, unrounded, rows from the top.
   std::vector<float> values;
-  std::size_t taps = 0;                ///< sampled taps over all output pixels (with multiplicity)
-  double taps_per_kernel_pixel = 0;    ///< sampled taps over the in-image pixels of all windows (the centre pixel read besides them is not counted; 1 for the exact filter)
-  double sampling_radius = 0;          ///< the dart radius in xi units (pixels); 0 for the exact filter
-  Status status = Status::success;     ///< degenerate_input for an empty image; interrupted when stopped
+  std::size_t taps = 0;              ///< sampled taps over all output pixels (with multiplicity)
+  double taps_per_kernel_pixel = 0;  ///< sampled taps over the in-image pixels of all windows (the centre
+                                     ///< pixel read besides them is not counted; 1 for the exact filter)
+  double sampling_radius = 0;        ///< the dart radius in xi units (pixels); 0 for the exact filter
+  Status status = Status::success;   ///< degenerate_input for an empty image; interrupted when stopped
 };
 
 /// A global tap pattern: blue-noise taps over the image, sorted by pixel (row-major), ties in the order the
 /// darts were accepted.
 struct Tap_pattern {
-  int width = 0;                                  ///< the image's width
-  int height = 0;                                 ///< the image's height
-  std::vector<std::array<double, 2>> positions;   ///< continuous positions, x right, y down, in [0, w) x [0, h)
-  std::vector<std::uint32_t> pixels;              ///< the pixel each tap reads, row * width + column
-  std::vector<float> weights;                     ///< the taps' density compensation (1 without it)
-  double radius = 0;                              ///< the dart radius in xi units
-  Status status = Status::success;                ///< degenerate_input for an empty image; interrupted when stopped
+  int width = 0;   ///< the image's width
+  int height = 0;  ///< the image's height
+  std::vector<std::array<double, 2>>
+      positions;                      ///< continuous positions, x right, y down, in [0, w) x [0, h)
+  std::vector<std::uint32_t> pixels;  ///< the pixel each tap reads, row * width + column
+  std::vector<float> weights;         ///< the taps' density compensation (1 without it)
+  double radius = 0;                  ///< the dart radius in xi units
+  Status status = Status::success;    ///< degenerate_input for an empty image; interrupted when stopped
 };
 
 namespace internal {
@@ -116,25 +119,29 @@ class Filter_image {
                const Bilateral_kernel& kernel, const char* fn)
       : w(width), h(height), c(channels), I(data.data()) {
     if (width < 0 || height < 0)
-      FeatureRecon::internal::throw_invalid_argument(fn, "width and height must be >= 0, got ", width, " x ", height);
+      FeatureRecon::internal::throw_invalid_argument(fn, "width and height must be >= 0, got ", width, " x ",
+                                                     height);
     if (channels != 1 && channels != 3)
       FeatureRecon::internal::throw_invalid_argument(fn, "channels must be 1 or 3, got ", channels);
     const std::size_t expected = std::size_t(width) * std::size_t(height) * std::size_t(channels);
     if (data.size() != expected)
-      FeatureRecon::internal::throw_invalid_argument(fn, "data has ", data.size(), " values, a ", width, " x ",
-                                                     height, " image with ", channels, " channel(s) needs ",
-                                                     expected);
+      FeatureRecon::internal::throw_invalid_argument(fn, "data has ", data.size(), " values, a ", width,
+                                                     " x ", height, " image with ", channels,
+                                                     " channel(s) needs ", expected);
     if (!(std::isfinite(kernel.sigma_spatial) && kernel.sigma_spatial > 0))
       FeatureRecon::internal::throw_invalid_argument(fn, "kernel.sigma_spatial must be finite and > 0, got ",
                                                      kernel.sigma_spatial);
     if (!(kernel.sigma_range >= 1e-150 && kernel.sigma_range <= 1e150))  // its square a normal double
-      FeatureRecon::internal::throw_invalid_argument(fn, "kernel.sigma_range must be in [1e-150, 1e150], got ",
-                                                     kernel.sigma_range);
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "kernel.sigma_range must be in [1e-150, 1e150], got ", kernel.sigma_range);
     if (kernel.radius < 0 || kernel.radius > 4096)
-      FeatureRecon::internal::throw_invalid_argument(fn, "kernel.radius must be in [0, 4096], got ", kernel.radius);
+      FeatureRecon::internal::throw_invalid_argument(fn, "kernel.radius must be in [0, 4096], got ",
+                                                     kernel.radius);
     if (kernel.radius == 0 && kernel.sigma_spatial > 2048)
-      FeatureRecon::internal::throw_invalid_argument(fn, "kernel.sigma_spatial must be <= 2048 when the radius "
-                                                     "is derived from it, got ", kernel.sigma_spatial);
+      FeatureRecon::internal::throw_invalid_argument(fn,
+                                                     "kernel.sigma_spatial must be <= 2048 when the radius "
+                                                     "is derived from it, got ",
+                                                     kernel.sigma_spatial);
     R = kernel.radius > 0 ? kernel.radius : std::max(1, int(std::ceil(2 * kernel.sigma_spatial)));
     side = 2 * R + 1;
     spatial.resize(std::size_t(side) * std::size_t(side));
@@ -161,7 +168,8 @@ class Filter_image {
   }
   /// In-image pixels of the window of (x, y).
   std::size_t window_pixels(int x, int y) const {
-    return std::size_t(std::min(R, w - 1 - x) + std::min(R, x) + 1) * std::size_t(std::min(R, h - 1 - y) + std::min(R, y) + 1);
+    return std::size_t(std::min(R, w - 1 - x) + std::min(R, x) + 1) *
+           std::size_t(std::min(R, h - 1 - y) + std::min(R, y) + 1);
   }
 
   int w, h, c;
@@ -214,11 +222,14 @@ void filter_pixels(const Filter_image& F, const Progress_callback& progress, Bil
 
 inline void check_sampled_options(const Sampled_bilateral_filter_options& o, const char* fn) {
   if (!(std::isfinite(o.budget) && o.budget > 0 && o.budget <= 16))
-    FeatureRecon::internal::throw_invalid_argument(fn, "budget must be in (0, 16] taps per kernel pixel, got ",
-                                                   o.budget);
-  if (!(o.sampling_sigma_feature == 0 || (o.sampling_sigma_feature >= 1e-150 && o.sampling_sigma_feature <= 1e150)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "sampling_sigma_feature must be in [1e-150, 1e150] (or 0 "
-                                                   "for sigma_range), got ", o.sampling_sigma_feature);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "budget must be in (0, 16] taps per kernel pixel, got ", o.budget);
+  if (!(o.sampling_sigma_feature == 0 ||
+        (o.sampling_sigma_feature >= 1e-150 && o.sampling_sigma_feature <= 1e150)))
+    FeatureRecon::internal::throw_invalid_argument(fn,
+                                                   "sampling_sigma_feature must be in [1e-150, 1e150] (or 0 "
+                                                   "for sigma_range), got ",
+                                                   o.sampling_sigma_feature);
   if (!(std::isfinite(o.candidates_per_tap) && o.candidates_per_tap >= 2 && o.candidates_per_tap <= 64))
     FeatureRecon::internal::throw_invalid_argument(fn, "candidates_per_tap must be in [2, 64], got ",
                                                    o.candidates_per_tap);
@@ -237,14 +248,16 @@ inline double feature_factor(const Sampled_bilateral_filter_options& o) {
 
 /// Density compensation per pixel for bilateral darts of radius r: the pixel's exclusion area in the stacked
 /// space (sub-pixel points within xi < r of its centre, 4 x 4 per pixel, each reading its pixel's colour)
-/// over that of a flat image with the same in-image points. 1 everywhere for uniform sampling. The pixels of the
-/// disc are read every `stride` pixels in x and y (0: automatic, 1 up to r = 24, then ceil(r / 24)): the cost per
-/// pixel stays about 1,800 offsets (a tiny budget asks for r = 74 at 1e-4 and took 30 s on 256 x 256 pixels).
-inline std::vector<float> density_compensation(const Filter_image& F, double r, double factor, int stride = 0) {
+/// over that of a flat image with the same in-image points. 1 everywhere for uniform sampling. The pixels of
+/// the disc are read every `stride` pixels in x and y (0: automatic, 1 up to r = 24, then ceil(r / 24)): the
+/// cost per pixel stays about 1,800 offsets (a tiny budget asks for r = 74 at 1e-4 and took 30 s on 256 x 256
+/// pixels).
+inline std::vector<float> density_compensation(const Filter_image& F, double r, double factor,
+                                               int stride = 0) {
   std::vector<float> weight(F.pixels(), 1.0f);
   if (factor == 0 || F.pixels() == 0) return weight;
-  // Offsets beyond the image's width plus height meet no pixel: the disc is walked that far at most (a budget of
-  // 1e-300 asked for r = 1e150, and its int reach overflowed).
+  // Offsets beyond the image's width plus height meet no pixel: the disc is walked that far at most (a budget
+  // of 1e-300 asked for r = 1e150, and its int reach overflowed).
   const double extent = std::min(r, double(F.w) + double(F.h));
   if (stride <= 0) stride = extent <= 24 ? 1 : int(std::ceil(extent / 24));
   constexpr int S = 4;
@@ -276,7 +289,8 @@ inline std::vector<float> density_compensation(const Filter_image& F, double r, 
         const int qx = x + o.dx, qy = y + o.dy;
         if (qx < 0 || qy < 0 || qx >= F.w || qy >= F.h) continue;
         inside += o.end - o.begin;
-        const double room = r2 - factor * double(F.d2(p, std::size_t(qy) * std::size_t(F.w) + std::size_t(qx)));
+        const double room =
+            r2 - factor * double(F.d2(p, std::size_t(qy) * std::size_t(F.w) + std::size_t(qx)));
         if (room <= sub_d2[o.begin]) continue;
         std::size_t k = o.begin;
         while (k < o.end && sub_d2[k] < room) ++k;
@@ -292,8 +306,10 @@ using FeatureRecon::internal::Unit_random;
 
 /// Global darts: candidates (continuous positions, in the order thrown) thinned with radius r; returns the
 /// accepted candidates in acceptance order. Conflicts are strict (xi < r).
-inline std::vector<std::uint32_t> global_darts(const Filter_image& F, const std::vector<std::array<double, 2>>& cand,
-                                               const std::vector<std::uint32_t>& cand_pixel, double r, double factor) {
+inline std::vector<std::uint32_t> global_darts(const Filter_image& F,
+                                               const std::vector<std::array<double, 2>>& cand,
+                                               const std::vector<std::uint32_t>& cand_pixel, double r,
+                                               double factor) {
   const double cell = r;
   const int gw = int(std::ceil(F.w / cell)) + 1, gh = int(std::ceil(F.h / cell)) + 1;
   std::vector<std::int32_t> head(std::size_t(gw) * std::size_t(gh), -1), next;
@@ -333,9 +349,9 @@ struct Local_pool {
     float d2;
   };
   std::size_t per_set = 0;
-  std::vector<std::array<double, 2>> offset;        // sets * per_set
-  std::vector<std::array<int, 2>> pixel;            // integer pixel offsets
-  std::vector<std::uint32_t> first;                 // CSR of the neighbour lists, sets * per_set + 1
+  std::vector<std::array<double, 2>> offset;  // sets * per_set
+  std::vector<std::array<int, 2>> pixel;      // integer pixel offsets
+  std::vector<std::uint32_t> first;           // CSR of the neighbour lists, sets * per_set + 1
   std::vector<Neighbour> neighbours;
 
   // `progress` is asked before each set; when it says stop, `stopped` is set and the pool is left unfinished.
@@ -360,8 +376,10 @@ struct Local_pool {
         const std::size_t i = s * per + k;
         const double ox = -half + 2 * half * random(), oy = -half + 2 * half * random();
         offset[i] = {ox, oy};
-        pixel[i] = {std::clamp(int(std::floor(ox + 0.5)), -R, R), std::clamp(int(std::floor(oy + 0.5)), -R, R)};
-        const int cx = std::min(cells - 1, int((ox + half) / cell)), cy = std::min(cells - 1, int((oy + half) / cell));
+        pixel[i] = {std::clamp(int(std::floor(ox + 0.5)), -R, R),
+                    std::clamp(int(std::floor(oy + 0.5)), -R, R)};
+        const int cx = std::min(cells - 1, int((ox + half) / cell)),
+                  cy = std::min(cells - 1, int((oy + half) / cell));
         for (int yy = std::max(0, cy - 1); yy <= std::min(cells - 1, cy + 1); ++yy)
           for (int xx = std::max(0, cx - 1); xx <= std::min(cells - 1, cx + 1); ++xx)
             for (std::uint32_t j : grid[std::size_t(yy) * std::size_t(cells) + std::size_t(xx)]) {
@@ -379,10 +397,11 @@ struct Local_pool {
 
 /// Runs darts of radius r over candidate set `s` in the window of (x, y); calls on_tap(q) for every accepted
 /// candidate inside the image. Bilateral darts (factor > 0) skip candidates outside the image; Euclidean ones
-/// thin them too, so that the taps are those of the window-independent pattern clipped to the image. `accepted` and `pix` are scratch of size per_set.
+/// thin them too, so that the taps are those of the window-independent pattern clipped to the image.
+/// `accepted` and `pix` are scratch of size per_set.
 template <class OnTap>
-void local_darts(const Filter_image& F, const Local_pool& pool, std::size_t s, int x, int y, double r, double factor,
-                 std::vector<char>& accepted, std::vector<std::uint32_t>& pix, OnTap on_tap) {
+void local_darts(const Filter_image& F, const Local_pool& pool, std::size_t s, int x, int y, double r,
+                 double factor, std::vector<char>& accepted, std::vector<std::uint32_t>& pix, OnTap on_tap) {
   const double r2 = r * r;
   for (std::size_t k = 0; k < pool.per_set; ++k) {
     const std::size_t i = s * pool.per_set + k;
@@ -414,7 +433,10 @@ struct Radius_search {
   double lo = 0, hi = std::numeric_limits<double>::infinity();
   double last_r = 0, last_c = 0;
   double next(double r, double c, double goal, bool enough) {
-    if (enough) lo = std::max(lo, r); else hi = std::min(hi, r);
+    if (enough)
+      lo = std::max(lo, r);
+    else
+      hi = std::min(hi, r);
     double k = 2;
     if (last_r > 0 && last_c > 0 && c > 0 && last_c != c && last_r != r)
       k = std::clamp(-(std::log(c) - std::log(last_c)) / (std::log(r) - std::log(last_r)), 0.5, 8.0);
@@ -432,13 +454,13 @@ inline std::size_t local_set(std::uint64_t seed, std::size_t p, std::size_t sets
 }
 
 /// Calibrates the local dart radius so that the taps over the in-image window pixels of a seeded subset of
-/// windows meet the budget (secant steps on count ~ 1 / r^2, then bisection), r in (0, reach]. `progress` is asked
-/// before each of the (at most 30) counts; when it says stop, `stopped` is set and the radius so far returned.
-/// `short_of_reach` is set when the budget was not met because even radii next to `reach` keep too many taps
-/// (then a pool with a longer reach can do better).
-inline double calibrate_local_radius(const Filter_image& F, const Local_pool& pool, double budget, double factor,
-                                     std::uint64_t seed, double reach, const Progress_callback& progress,
-                                     bool& stopped, bool& short_of_reach) {
+/// windows meet the budget (secant steps on count ~ 1 / r^2, then bisection), r in (0, reach]. `progress` is
+/// asked before each of the (at most 30) counts; when it says stop, `stopped` is set and the radius so far
+/// returned. `short_of_reach` is set when the budget was not met because even radii next to `reach` keep too
+/// many taps (then a pool with a longer reach can do better).
+inline double calibrate_local_radius(const Filter_image& F, const Local_pool& pool, double budget,
+                                     double factor, std::uint64_t seed, double reach,
+                                     const Progress_callback& progress, bool& stopped, bool& short_of_reach) {
   short_of_reach = false;
   const std::size_t n = F.pixels();
   std::vector<std::size_t> probes;
@@ -449,15 +471,16 @@ inline double calibrate_local_radius(const Filter_image& F, const Local_pool& po
     for (int k = 0; k < 2048; ++k) probes.push_back(std::size_t(rng() % n));
   }
   std::size_t window = 0;
-  for (std::size_t p : probes) window += F.window_pixels(int(p % std::size_t(F.w)), int(p / std::size_t(F.w)));
+  for (std::size_t p : probes)
+    window += F.window_pixels(int(p % std::size_t(F.w)), int(p / std::size_t(F.w)));
   const double target = budget * double(window);
   std::vector<char> accepted(pool.per_set);
   std::vector<std::uint32_t> pix(pool.per_set);
   auto count = [&](double r) {
     std::size_t taps = 0;
     for (std::size_t p : probes)
-      local_darts(F, pool, local_set(seed, p, pool.sets()), int(p % std::size_t(F.w)), int(p / std::size_t(F.w)), r,
-                  factor, accepted, pix, [&](std::uint32_t) { ++taps; });
+      local_darts(F, pool, local_set(seed, p, pool.sets()), int(p % std::size_t(F.w)),
+                  int(p / std::size_t(F.w)), r, factor, accepted, pix, [&](std::uint32_t) { ++taps; });
     return double(taps);
   };
   Radius_search search;
@@ -505,15 +528,16 @@ inline Bilateral_filter_result bilateral_filter(int width, int height, int chann
     result.status = Status::degenerate_input;
     return result;
   }
-  internal::filter_pixels(F, options.progress, result, [&](int x, int y, std::size_t p, internal::Tap_sum& sum) {
-    std::size_t taps = 0;
-    for (int dy = -std::min(F.R, y); dy <= std::min(F.R, F.h - 1 - y); ++dy)
-      for (int dx = -std::min(F.R, x); dx <= std::min(F.R, F.w - 1 - x); ++dx, ++taps) {
-        const std::size_t q = std::size_t(y + dy) * std::size_t(F.w) + std::size_t(x + dx);
-        sum.add(F, q, double(F.spatial_weight(dx, dy) * F.range[std::size_t(F.d2(p, q))]));
-      }
-    return taps;
-  });
+  internal::filter_pixels(
+      F, options.progress, result, [&](int x, int y, std::size_t p, internal::Tap_sum& sum) {
+        std::size_t taps = 0;
+        for (int dy = -std::min(F.R, y); dy <= std::min(F.R, F.h - 1 - y); ++dy)
+          for (int dx = -std::min(F.R, x); dx <= std::min(F.R, F.w - 1 - x); ++dx, ++taps) {
+            const std::size_t q = std::size_t(y + dy) * std::size_t(F.w) + std::size_t(x + dx);
+            sum.add(F, q, double(F.spatial_weight(dx, dy) * F.range[std::size_t(F.d2(p, q))]));
+          }
+        return taps;
+      });
   return result;
 }
 
@@ -529,7 +553,8 @@ inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_fi
     return pattern;
   }
   const double factor = feature_factor(options);
-  const std::size_t target = std::max<std::size_t>(1, std::size_t(std::llround(options.budget * double(F.pixels()))));
+  const std::size_t target =
+      std::max<std::size_t>(1, std::size_t(std::llround(options.budget * double(F.pixels()))));
   const std::size_t m = std::size_t(std::ceil(options.candidates_per_tap * double(target)));
   std::vector<std::array<double, 2>> cand(m);
   std::vector<std::uint32_t> cand_pixel(m);
@@ -556,8 +581,8 @@ inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_fi
     if (c >= double(target) && c <= 1.01 * double(target) + 1) break;
     r = search.next(r, c, 1.005 * double(target), c >= double(target));
   }
-  // After the 40 steps r is the next radius to try, not the one the taps were thrown with (the pattern reported it
-  // and compensated the density for it).
+  // After the 40 steps r is the next radius to try, not the one the taps were thrown with (the pattern
+  // reported it and compensated the density for it).
   r = thrown;
   if (kept.size() < target) {  // fall back to the largest radius known to keep enough
     r = search.lo;
@@ -594,7 +619,8 @@ inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_fi
 ///   interrupted (no taps) when stopped.
 /// \throws std::invalid_argument naming the argument (as bilateral_filter(), and the budget in (0, 16],
 ///   candidates_per_tap in [2, 64], a non-positive sampling_sigma_feature).
-inline Tap_pattern bilateral_tap_pattern(int width, int height, int channels, const std::vector<std::uint8_t>& data,
+inline Tap_pattern bilateral_tap_pattern(int width, int height, int channels,
+                                         const std::vector<std::uint8_t>& data,
                                          const Sampled_bilateral_filter_options& options) {
   const char* fn = "bilateral_tap_pattern";
   const internal::Filter_image F(width, height, channels, data, options.kernel, fn);
@@ -606,7 +632,7 @@ namespace internal {
 /// \cond
 /// The second stage of the global mode on a checked image.
 inline Bilateral_filter_result filter_on_pattern(const Filter_image& F, const Tap_pattern& pattern,
-                                                const Progress_callback& progress, const char* fn) {
+                                                 const Progress_callback& progress, const char* fn) {
   if (pattern.width != F.w || pattern.height != F.h)
     FeatureRecon::internal::throw_invalid_argument(fn, "pattern is ", pattern.width, " x ", pattern.height,
                                                    ", the image ", F.w, " x ", F.h);
@@ -615,17 +641,20 @@ inline Bilateral_filter_result filter_on_pattern(const Filter_image& F, const Ta
                                                    pattern.weights.size(), " weights");
   // A stopped pattern (or one without taps) filtered nothing: every pixel came back as it was.
   if (pattern.status == Status::interrupted)
-    FeatureRecon::internal::throw_invalid_argument(fn, "pattern was stopped while it was made (status interrupted): "
-                                                   "make it again");
+    FeatureRecon::internal::throw_invalid_argument(
+        fn,
+        "pattern was stopped while it was made (status interrupted): "
+        "make it again");
   if (pattern.pixels.empty() && F.pixels() > 0)
-    FeatureRecon::internal::throw_invalid_argument(fn, "pattern has no taps for a ", F.w, " x ", F.h, " image");
+    FeatureRecon::internal::throw_invalid_argument(fn, "pattern has no taps for a ", F.w, " x ", F.h,
+                                                   " image");
   for (std::size_t i = 0; i < pattern.pixels.size(); ++i) {
     if (pattern.pixels[i] >= F.pixels())
       FeatureRecon::internal::throw_invalid_argument(fn, "pattern.pixels[", i, "] = ", pattern.pixels[i],
                                                      " is outside the image");
     if (!(std::isfinite(pattern.weights[i]) && pattern.weights[i] >= 0))
-      FeatureRecon::internal::throw_invalid_argument(fn, "pattern.weights[", i, "] must be finite and >= 0, got ",
-                                                     pattern.weights[i]);
+      FeatureRecon::internal::throw_invalid_argument(fn, "pattern.weights[", i,
+                                                     "] must be finite and >= 0, got ", pattern.weights[i]);
   }
   Bilateral_filter_result result;
   result.sampling_radius = pattern.radius;
@@ -690,20 +719,19 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
 
 /// The bilateral filter evaluated on sampled taps (dissertation Sec. 2.2.3), in the mode and with the
 /// sampling of `options`: global = bilateral_tap_pattern() then the filter on that pattern; local = a pool of
-/// `local_patterns` seeded candidate sets of candidates_per_tap * budget * (2R' + 1)^2 uniform positions in the
-/// window's square of radius R' = min(R, max(width, height) - 1) (the offsets a tap inside the image can have), each
-/// output pixel thinning the set a seeded hash of its index picks by dart throwing (uniform: in
+/// `local_patterns` seeded candidate sets of candidates_per_tap * budget * (2R' + 1)^2 uniform positions in
+/// the window's square of radius R' = min(R, max(width, height) - 1) (the offsets a tap inside the image can
+/// have), each output pixel thinning the set a seeded hash of its index picks by dart throwing (uniform: in
 /// the Euclidean distance, the same taps for every window; bilateral: in xi with the window's colours), with
-/// the radius calibrated on every window of images up to 4096 pixels, else on 2048 seeded windows, so that the taps over their in-image pixels meet the
-/// budget.
-/// \param width, height, channels, data the image (as for bilateral_filter()).
-/// \param options the kernel, sampling, mode, budget, seed and progress.
-/// \returns the filtered values, the taps evaluated and their mean per kernel pixel, the dart radius, and
-///   status degenerate_input for an empty image, interrupted (no values) when stopped. Progress: global mode, the
-///   pattern up to 0.5 and the pixels from 0.5; local mode, the pool up to 0.05, the radius calibration up to
-///   0.15, pools of longer reach (strongly varying colours) up to 0.2, and the pixels from 0.2. When the longest
-///   pool allowed (2^25 neighbour entries) still keeps too many taps, the result has more taps per kernel pixel
-///   than the budget (taps_per_kernel_pixel says how many).
+/// the radius calibrated on every window of images up to 4096 pixels, else on 2048 seeded windows, so that
+/// the taps over their in-image pixels meet the budget. \param width, height, channels, data the image (as
+/// for bilateral_filter()). \param options the kernel, sampling, mode, budget, seed and progress. \returns
+/// the filtered values, the taps evaluated and their mean per kernel pixel, the dart radius, and
+///   status degenerate_input for an empty image, interrupted (no values) when stopped. Progress: global mode,
+///   the pattern up to 0.5 and the pixels from 0.5; local mode, the pool up to 0.05, the radius calibration
+///   up to 0.15, pools of longer reach (strongly varying colours) up to 0.2, and the pixels from 0.2. When
+///   the longest pool allowed (2^25 neighbour entries) still keeps too many taps, the result has more taps
+///   per kernel pixel than the budget (taps_per_kernel_pixel says how many).
 /// \throws std::invalid_argument naming the argument, as bilateral_tap_pattern().
 /// \note Deterministic: the same image, options and seed give bit-identical values.
 inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, int channels,
@@ -719,38 +747,42 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
   }
   if (options.mode == Tap_mode::global) {
     Sampled_bilateral_filter_options first_stage = options;
-    first_stage.progress = [&](double f) { return FeatureRecon::internal::report_progress(options.progress, 0.5 * f); };
+    first_stage.progress = [&](double f) {
+      return FeatureRecon::internal::report_progress(options.progress, 0.5 * f);
+    };
     const Tap_pattern pattern = internal::tap_pattern(F, first_stage);
     if (pattern.status == Status::interrupted) {
       result.status = Status::interrupted;
       return result;
     }
-    return internal::filter_on_pattern(F, pattern, [&](double f) {
-      return FeatureRecon::internal::report_progress(options.progress, 0.5 + 0.5 * f);
-    }, fn);
+    return internal::filter_on_pattern(
+        F, pattern,
+        [&](double f) { return FeatureRecon::internal::report_progress(options.progress, 0.5 + 0.5 * f); },
+        fn);
   }
   const double factor = internal::feature_factor(options);
-  // The pool covers the part of the window an in-image tap can reach: offsets beyond the image's larger side land
-  // outside from every pixel. It was sized by the whole window: a 4 x 4 image with radius 200 took 46 s and
-  // 2.7 GB, with radius 4096 more memory than there is.
+  // The pool covers the part of the window an in-image tap can reach: offsets beyond the image's larger side
+  // land outside from every pixel. It was sized by the whole window: a 4 x 4 image with radius 200 took 46 s
+  // and 2.7 GB, with radius 4096 more memory than there is.
   const int pool_R = std::min(F.R, std::max(0, std::max(F.w, F.h) - 1));
   const double pool_pixels = double(2 * pool_R + 1) * double(2 * pool_R + 1);
-  const std::size_t per_set =
-      std::max<std::size_t>(2, std::size_t(std::ceil(options.candidates_per_tap * options.budget * pool_pixels)));
+  const std::size_t per_set = std::max<std::size_t>(
+      2, std::size_t(std::ceil(options.candidates_per_tap * options.budget * pool_pixels)));
   // Euclidean darts keep about 0.7 / r^2 per unit area, so Euclidean radii stay below this reach. A bilateral
-  // radius may need more (colours far apart conflict only at long spatial distances: on RGB noise at budget 0.1
-  // the radius stopped at this reach with 0.22 taps per kernel pixel); the pool is then rebuilt with twice the
-  // reach, up to the window's diagonal (every pair of a set) or 2^25 neighbour entries (256 MB).
+  // radius may need more (colours far apart conflict only at long spatial distances: on RGB noise at budget
+  // 0.1 the radius stopped at this reach with 0.22 taps per kernel pixel); the pool is then rebuilt with
+  // twice the reach, up to the window's diagonal (every pair of a set) or 2^25 neighbour entries (256 MB).
   double reach = 1.6 * std::sqrt(0.7 / options.budget);
   const double diagonal = 2 * std::sqrt(2.0) * (pool_R + 0.5);
-  // Progress: the pool up to 0.05, the radius calibration up to 0.15 and the longer reaches up to 0.2 (they ran
-  // before the first report: 26 s on a 512 x 512 picture at sigma 20), the pixels from 0.2.
+  // Progress: the pool up to 0.05, the radius calibration up to 0.15 and the longer reaches up to 0.2 (they
+  // ran before the first report: 26 s on a 512 x 512 picture at sigma 20), the pixels from 0.2.
   auto stage = [&options](double a, double b) -> Progress_callback {
     if (!options.progress) return {};
     return [&options, a, b](double t) { return options.progress(a + (b - a) * t); };
   };
   bool stopped = false, short_of_reach = false;
-  internal::Local_pool pool(pool_R, options.local_patterns, per_set, reach, options.seed, stage(0, 0.05), stopped);
+  internal::Local_pool pool(pool_R, options.local_patterns, per_set, reach, options.seed, stage(0, 0.05),
+                            stopped);
   double r = stopped ? 0.0
                      : internal::calibrate_local_radius(F, pool, options.budget, factor, options.seed, reach,
                                                         stage(0.05, 0.15), stopped, short_of_reach);
@@ -783,7 +815,8 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
     uniform_taps.resize(pool.sets());
     for (std::size_t s = 0; s < pool.sets(); ++s)
       internal::local_darts(open, pool, s, F.R, F.R, r, 0, accepted, pix, [&](std::uint32_t q) {
-        uniform_taps[s].push_back({int(q % std::uint32_t(open.w)) - F.R, int(q / std::uint32_t(open.w)) - F.R});
+        uniform_taps[s].push_back(
+            {int(q % std::uint32_t(open.w)) - F.R, int(q / std::uint32_t(open.w)) - F.R});
       });
   }
   const double per_tap = 1 / options.budget;
@@ -794,14 +827,16 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
       ++taps;
       if (q == p) return;
       const int dx = int(q % std::uint32_t(F.w)) - x, dy = int(q / std::uint32_t(F.w)) - y;
-      sum.add(F, q, per_tap * double(comp[q]) * double(F.spatial_weight(dx, dy)) *
-                        double(F.range[std::size_t(F.d2(p, q))]));
+      sum.add(F, q,
+              per_tap * double(comp[q]) * double(F.spatial_weight(dx, dy)) *
+                  double(F.range[std::size_t(F.d2(p, q))]));
     };
     const std::size_t s = internal::local_set(options.seed, p, pool.sets());
     if (factor == 0) {
       for (const auto& t : uniform_taps[s]) {
         const int qx = x + t[0], qy = y + t[1];
-        if (qx >= 0 && qy >= 0 && qx < F.w && qy < F.h) add(std::uint32_t(qy) * std::uint32_t(F.w) + std::uint32_t(qx));
+        if (qx >= 0 && qy >= 0 && qx < F.w && qy < F.h)
+          add(std::uint32_t(qy) * std::uint32_t(F.w) + std::uint32_t(qx));
       }
     } else {
       internal::local_darts(F, pool, s, x, y, r, factor, accepted, pix, add);

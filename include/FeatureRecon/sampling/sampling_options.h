@@ -19,17 +19,20 @@ namespace sampling {
 /// Which form of the bilateral distance the samplers use (dissertation Eqns 2.4 and 2.5).
 enum class Bilateral_form {
   gaussian,    ///< xi = sqrt(|dp|^2 / sigma_p^2 + |deta|^2 / sigma_eta^2): Euclidean in the stacked space
-  exponential  ///< xi = |dp| / sigma_p * exp(|deta|^2 / sigma_eta^2): the spatial distance over the feature similarity
+  exponential  ///< xi = |dp| / sigma_p * exp(|deta|^2 / sigma_eta^2): the spatial distance over the feature
+               ///< similarity
 };
 
 /// Gaussian bilateral distance (Eqn 2.4): xi = sqrt(|dp|^2 / sigma_position^2 + |deta|^2 / sigma_feature^2).
-/// A model of BilateralMetric: xi >= |dp| / sigma_position. sigma_feature = infinity gives |dp| / sigma_position.
+/// A model of BilateralMetric: xi >= |dp| / sigma_position. sigma_feature = infinity gives |dp| /
+/// sigma_position.
 struct Gaussian_bilateral_metric {
-  double sigma_position = 1;                                         ///< spatial scale (> 0); default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();    ///< feature scale (> 0); default infinity
+  double sigma_position = 1;                                       ///< spatial scale (> 0); default 1
+  double sigma_feature = std::numeric_limits<double>::infinity();  ///< feature scale (> 0); default infinity
   /// xi from the squared spatial and squared feature distances.
   double operator()(double squared_position_distance, double squared_feature_distance) const {
-    const double f = std::isinf(sigma_feature) ? 0.0 : squared_feature_distance / (sigma_feature * sigma_feature);
+    const double f =
+        std::isinf(sigma_feature) ? 0.0 : squared_feature_distance / (sigma_feature * sigma_feature);
     return std::sqrt(squared_position_distance / (sigma_position * sigma_position) + f);
   }
   /// The scale s of the lower bound xi >= |dp| / s.
@@ -42,12 +45,13 @@ struct Gaussian_bilateral_metric {
 /// which would make different features closer; the code and the paper's text mean the opposite.) A model of
 /// BilateralMetric: xi >= |dp| / sigma_position; identical positions are at distance 0 whatever the features.
 struct Exponential_bilateral_metric {
-  double sigma_position = 1;                                         ///< spatial scale (> 0); default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();    ///< feature scale (> 0); default infinity
+  double sigma_position = 1;                                       ///< spatial scale (> 0); default 1
+  double sigma_feature = std::numeric_limits<double>::infinity();  ///< feature scale (> 0); default infinity
   /// xi from the squared spatial and squared feature distances.
   double operator()(double squared_position_distance, double squared_feature_distance) const {
     if (squared_position_distance == 0) return 0;  // not 0 * exp(f) = 0 * infinity = NaN for far features
-    const double f = std::isinf(sigma_feature) ? 0.0 : squared_feature_distance / (sigma_feature * sigma_feature);
+    const double f =
+        std::isinf(sigma_feature) ? 0.0 : squared_feature_distance / (sigma_feature * sigma_feature);
     return std::sqrt(squared_position_distance) / sigma_position * std::exp(f);
   }
   /// The scale s of the lower bound xi >= |dp| / s.
@@ -57,9 +61,10 @@ struct Exponential_bilateral_metric {
 /// Result of the discrete samplers (indices into the input go to the output iterator).
 template <class OutputIterator>
 struct Sampling_result {
-  OutputIterator out;             ///< the output iterator, advanced past the selected indices
-  std::size_t selected = 0;       ///< number of indices written
-  double radius = 0;  ///< the bilateral radius used (elimination: r_max in xi units; per-item radii: the largest)
+  OutputIterator out;        ///< the output iterator, advanced past the selected indices
+  std::size_t selected = 0;  ///< number of indices written
+  double radius =
+      0;  ///< the bilateral radius used (elimination: r_max in xi units; per-item radii: the largest)
   Status status = Status::success;  ///< degenerate_input for an empty input; interrupted when stopped
 };
 
@@ -118,12 +123,13 @@ inline bool iteration_stops(bool keep_going, double max_move, double move_tolera
 
 /// Options of weighted_sample_elimination().
 struct Elimination_options {
-  double sigma_position = 1;                                        ///< spatial scale of the metric; default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
-  Bilateral_form form = Bilateral_form::gaussian;                   ///< form of the bilateral distance
+  double sigma_position = 1;  ///< spatial scale of the metric; default 1
+  double sigma_feature =
+      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// r_max, the neighbourhood is 2 r_max, in units of the bilateral distance. Default 0: from the domain
-  /// measure and the intrinsic dimension (hexagonal packing in 2D, r_max = sqrt(A / (2 sqrt(3) M)); FCC in 3D,
-  /// r_max = cbrt(V / (4 sqrt(2) M))), divided by sigma_position.
+  /// measure and the intrinsic dimension (hexagonal packing in 2D, r_max = sqrt(A / (2 sqrt(3) M)); FCC in
+  /// 3D, r_max = cbrt(V / (4 sqrt(2) M))), divided by sigma_position.
   double max_radius = 0;
   /// Area (intrinsic dimension 2) or volume (3) of the sampled domain. Default 0: estimated from the input
   /// (bounding box for 2D input and 3D volumes; for surfaces, the sum over points of the area of a disc of
@@ -132,38 +138,42 @@ struct Elimination_options {
   /// 2 (images, surfaces) or 3 (volumes). Default 0: 2 for 2D positions; for 3D positions, 2 when most points
   /// have a flat neighbourhood (local PCA of 12 neighbours), else 3.
   int intrinsic_dimension = 0;
-  double alpha = 8;             ///< exponent of the weight (1 - d / (2 r_max))^alpha (Yuksel 2015); default 8
-  bool weight_limiting = true;  ///< clamp d below d_min = 2 r_max beta (1 - (M/N)^gamma), beta 0.65, gamma 1.5
-  /// Refuse (std::invalid_argument) neighbour lists of more entries than this, found while they are counted and
-  /// before they are stored (4 bytes an entry): a max_radius far above the packing radius makes every item a
-  /// neighbour of every other (a 512 x 480 image at r_max 100,000 asks for 6e10; 30,000 points of a unit sphere at
-  /// r_max 100 took 50 s and 3.5 GB). Default 0: automatic, per stage of m items down to t, 64 times the entries the
-  /// automatic r_max needs (about c m^2 / t, c = 3.6 on surfaces and images, 5.9 in volumes), at least 2^29 (2 GB):
-  /// a max_radius up to 8 times the automatic one in 2D (4 times in 3D) always passes.
+  double alpha = 8;  ///< exponent of the weight (1 - d / (2 r_max))^alpha (Yuksel 2015); default 8
+  bool weight_limiting =
+      true;  ///< clamp d below d_min = 2 r_max beta (1 - (M/N)^gamma), beta 0.65, gamma 1.5
+  /// Refuse (std::invalid_argument) neighbour lists of more entries than this, found while they are counted
+  /// and before they are stored (4 bytes an entry): a max_radius far above the packing radius makes every
+  /// item a neighbour of every other (a 512 x 480 image at r_max 100,000 asks for 6e10; 30,000 points of a
+  /// unit sphere at r_max 100 took 50 s and 3.5 GB). Default 0: automatic, per stage of m items down to t, 64
+  /// times the entries the automatic r_max needs (about c m^2 / t, c = 3.6 on surfaces and images, 5.9 in
+  /// volumes), at least 2^29 (2 GB): a max_radius up to 8 times the automatic one in 2D (4 times in 3D)
+  /// always passes.
   std::size_t max_neighbor_entries = 0;
-  std::uint64_t seed = 0;       ///< breaks ties between equal weights (grids, images): a seeded permutation
-  Progress_callback progress;   ///< fraction of the eliminations done; returning false stops (nothing is output)
+  std::uint64_t seed = 0;  ///< breaks ties between equal weights (grids, images): a seeded permutation
+  Progress_callback
+      progress;  ///< fraction of the eliminations done; returning false stops (nothing is output)
 };
 
 /// Options of bilateral_dart_throwing().
 struct Dart_throwing_options {
-  double sigma_position = 1;                                        ///< spatial scale of the metric; default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
-  Bilateral_form form = Bilateral_form::gaussian;                   ///< form of the bilateral distance
+  double sigma_position = 1;  ///< spatial scale of the metric; default 1
+  double sigma_feature =
+      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// Per-item radius r(s) in bilateral units (adaptive sampling), aligned with the items; two items conflict
   /// when xi < max(r(s), r(t)). Default empty: the uniform radius passed to the call.
   std::vector<double> radii;
   /// Visiting order: items by decreasing priority (ties by index), aligned with the items. Default empty: a
   /// random order drawn from `seed`.
   std::vector<double> priority;
-  /// Stop after this many consecutive rejected items. Default 0: visit every item once, which makes the result
-  /// maximal on the discrete domain (every rejected item conflicts with a kept one).
+  /// Stop after this many consecutive rejected items. Default 0: visit every item once, which makes the
+  /// result maximal on the discrete domain (every rejected item conflicts with a kept one).
   std::size_t max_consecutive_failures = 0;
   /// Stop once this many items are kept: the first ones in the visiting order, spread over the whole domain
   /// (the result is then no longer maximal). Default 0: no cap.
   std::size_t max_accepted = 0;
-  std::uint64_t seed = 0;       ///< the random visiting order (ignored when `priority` is given)
-  Progress_callback progress;   ///< fraction of the items visited; returning false stops (nothing is output)
+  std::uint64_t seed = 0;      ///< the random visiting order (ignored when `priority` is given)
+  Progress_callback progress;  ///< fraction of the items visited; returning false stops (nothing is output)
 };
 
 /// Options of bilateral_dart_throwing_count().
@@ -176,15 +186,16 @@ struct Dart_throwing_count_options {
 
 /// Options of continuous_bilateral_dart_throwing().
 struct Continuous_dart_throwing_options {
-  double sigma_position = 1;                                        ///< spatial scale of the metric; default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
-  Bilateral_form form = Bilateral_form::gaussian;                   ///< form of the bilateral distance
+  double sigma_position = 1;  ///< spatial scale of the metric; default 1
+  double sigma_feature =
+      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// Stop after this many consecutive rejected darts (the set is then close to maximal); default 10000.
   std::size_t max_consecutive_failures = 10000;
   std::size_t max_samples = 0;  ///< stop after this many accepted samples; default 0: no limit
   std::uint64_t seed = 0;       ///< the random darts
-  /// Called every 65536 darts with the largest fraction of the failure budget used so far (non-decreasing: a new
-  /// sample resets the run of failures, not the report); false stops (samples so far are kept)
+  /// Called every 65536 darts with the largest fraction of the failure budget used so far (non-decreasing: a
+  /// new sample resets the run of failures, not the report); false stops (samples so far are kept)
   Progress_callback progress;
 };
 

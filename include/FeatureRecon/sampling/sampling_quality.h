@@ -29,9 +29,10 @@ namespace sampling {
 
 /// Options of sampling_quality().
 struct Sampling_quality_options {
-  double sigma_position = 1;                                        ///< spatial scale of the metric; default 1
-  double sigma_feature = std::numeric_limits<double>::infinity();   ///< feature scale; default infinity (Euclidean)
-  Bilateral_form form = Bilateral_form::gaussian;                   ///< form of the bilateral distance
+  double sigma_position = 1;  ///< spatial scale of the metric; default 1
+  double sigma_feature =
+      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// Area (2D) or volume (3D) of the domain. Default 0: the bounding box of the samples (or the unit square /
   /// cube when `periodic`); for 3D positions with intrinsic_dimension 2, the area of the surface they sample,
   /// estimated as weighted_sample_elimination() estimates it (discs reaching the 8th nearest neighbour).
@@ -41,36 +42,38 @@ struct Sampling_quality_options {
   /// Distances on the unit torus [0, 1)^d (positions are taken modulo 1), as the point-set analysis tools of
   /// Heck, Schlömer and Deussen measure them; default false.
   bool periodic = false;
-  /// Fraction of the samples measured, every 4096 samples (the periodic search, when repeated with a wider band,
-  /// counts its second pass in the second half); returning false stops: the statistics stay 0 and the status is
-  /// interrupted.
+  /// Fraction of the samples measured, every 4096 samples (the periodic search, when repeated with a wider
+  /// band, counts its second pass in the second half); returning false stops: the statistics stay 0 and the
+  /// status is interrupted.
   Progress_callback progress;
 };
 
 /// Spacing statistics of a sample set (Lagae and Dutré 2008; Schlömer's PSA conventions).
 struct Sampling_quality {
-  std::size_t samples = 0;            ///< number of samples N
-  double domain_measure = 0;          ///< the area or volume used: the option's, or the default it stands for
-  /// d_hex: nearest distance of the densest packing of N points (hexagonal in 2D, FCC in 3D); 0 (not computed)
-  /// when the status is degenerate_input.
+  std::size_t samples = 0;    ///< number of samples N
+  double domain_measure = 0;  ///< the area or volume used: the option's, or the default it stands for
+  /// d_hex: nearest distance of the densest packing of N points (hexagonal in 2D, FCC in 3D); 0 (not
+  /// computed) when the status is degenerate_input.
   double hexagonal_distance = 0;
-  double minimum_distance = 0;  ///< smallest nearest-neighbour (bilateral) distance; 0 (not computed) when degenerate
-  double relative_radius = 0;         ///< rho = minimum_distance / d_hex (1 for the hexagonal lattice)
-  double average_minimum_distance = 0;  ///< mean nearest-neighbour distance / d_hex (about 0.466 for white noise in 2D)
-  /// degenerate_input for fewer than two samples, a domain of zero measure or samples of lower affine dimension
-  /// (collinear, coplanar); interrupted when the progress callback stopped the run (statistics 0)
+  double minimum_distance =
+      0;  ///< smallest nearest-neighbour (bilateral) distance; 0 (not computed) when degenerate
+  double relative_radius = 0;  ///< rho = minimum_distance / d_hex (1 for the hexagonal lattice)
+  double average_minimum_distance =
+      0;  ///< mean nearest-neighbour distance / d_hex (about 0.466 for white noise in 2D)
+  /// degenerate_input for fewer than two samples, a domain of zero measure or samples of lower affine
+  /// dimension (collinear, coplanar); interrupted when the progress callback stopped the run (statistics 0)
   Status status = Status::success;
 };
 
 /// Nearest-neighbour statistics of a sample set: the relative radius rho = d_min / d_hex and the average
 /// minimum distance, both relative to the nearest distance d_hex of the densest packing of N points in the
 /// domain (d_hex = sqrt(2 A / (sqrt(3) N)) in 2D, cbrt(sqrt(2) V / N) in 3D). With a finite sigma_feature the
-/// distances are bilateral (in units of xi times sigma_position), which measures spacing in the stacked space.
-/// Nearest neighbours are found exactly with a CGAL kd-tree: Euclidean (infinite sigma_feature), its two nearest
-/// points; bilateral, visiting samples by increasing spatial distance until it exceeds the best bilateral
-/// distance (O(n log n) in practice, also for sparse or clustered sets).
-/// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
-/// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
+/// distances are bilateral (in units of xi times sigma_position), which measures spacing in the stacked
+/// space. Nearest neighbours are found exactly with a CGAL kd-tree: Euclidean (infinite sigma_feature), its
+/// two nearest points; bilateral, visiting samples by increasing spatial distance until it exceeds the best
+/// bilateral distance (O(n log n) in practice, also for sparse or clustered sets). \tparam ItemRange a
+/// forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits. \throws
+/// std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure, an intrinsic_dimension other than 0, 2 or 3 or above the
 ///   positions' dimension, or with a finite sigma_feature a feature at a non-finite distance from itself (a
 ///   zero normal; naming the item).
@@ -94,9 +97,9 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   double measure = options.domain_measure;
   if (measure == 0 && options.periodic) measure = 1.0;
   if constexpr (D == 3) {
-    // A surface in space: its area, not the volume of its bounding box (which read a flat grid as measure 0 and a
-    // wall 0.5 thick as 185 for an area of 524). Estimated on the distinct positions: copies would be neighbours at
-    // distance 0.
+    // A surface in space: its area, not the volume of its bounding box (which read a flat grid as measure 0
+    // and a wall 0.5 thick as 185 for an area of 524). Estimated on the distinct positions: copies would be
+    // neighbours at distance 0.
     if (measure == 0 && dim == 2 && affine >= 2) {
       const std::vector<std::array<double, 3>> places = internal::distinct_positions(S.positions);
       measure = internal::estimate_surface_area(places, internal::Knn_3(places));
@@ -110,10 +113,11 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   }
   q.hexagonal_distance = dim == 2 ? std::sqrt(2 * measure / (std::sqrt(3.0) * double(n)))
                                   : std::cbrt(std::sqrt(2.0) * measure / double(n));
-  // Periodic images of the points within `band` of the faces of the unit cell, so the tree sees the torus. The
-  // search is exact when every nearest distance found stays below the band (the images within that distance of
-  // a point in the cell are then all in the tree); otherwise it is repeated with band 0.5, which holds every
-  // nearest image. Returns the largest nearest distance, or -1 when the callback stopped the pass.
+  // Periodic images of the points within `band` of the faces of the unit cell, so the tree sees the torus.
+  // The search is exact when every nearest distance found stays below the band (the images within that
+  // distance of a point in the cell are then all in the tree); otherwise it is repeated with band 0.5, which
+  // holds every nearest image. Returns the largest nearest distance, or -1 when the callback stopped the
+  // pass.
   const auto measure_with_band = [&](double band, double from, double to) {
     double farthest = 0;
     std::vector<std::array<double, D>> points = S.positions;
@@ -139,15 +143,16 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
     }
     internal::with_metric(options, [&](const auto& metric) {
       const double scale = metric.spatial_scale();
-      // Nearest neighbours from a CGAL kd-tree (sliding midpoint: clusters and isolated samples alike), visited by
-      // increasing spatial distance until it exceeds the best bilateral distance so far (xi >= the spatial
-      // distance), so the minimum is exact.
+      // Nearest neighbours from a CGAL kd-tree (sliding midpoint: clusters and isolated samples alike),
+      // visited by increasing spatial distance until it exceeds the best bilateral distance so far (xi >= the
+      // spatial distance), so the minimum is exact.
       using Kd_kernel = CGAL::Simple_cartesian<double>;
       using Kd_point = std::conditional_t<D == 2, Kd_kernel::Point_2, Kd_kernel::Point_3>;
       using Base_traits =
           std::conditional_t<D == 2, CGAL::Search_traits_2<Kd_kernel>, CGAL::Search_traits_3<Kd_kernel>>;
       using Traits_with_index =
-          CGAL::Search_traits_adapter<std::uint32_t, typename CGAL::Pointer_property_map<Kd_point>::type, Base_traits>;
+          CGAL::Search_traits_adapter<std::uint32_t, typename CGAL::Pointer_property_map<Kd_point>::type,
+                                      Base_traits>;
       using Incremental = CGAL::Orthogonal_incremental_neighbor_search<Traits_with_index>;
       std::vector<Kd_point> kd_points;
       kd_points.reserve(points.size());
@@ -171,17 +176,18 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
         }
         return metric(d2, S.squared_feature_distance(i, source[j_point])) * scale;
       };
-      // Euclidean (infinite sigma_feature): the nearest other point is among the two nearest (the point itself is
-      // one of them unless two copies of it are, and then the answer is 0 either way). The tree sums the same
-      // squared coordinate differences in the same order as xi(), so it ranks the candidates as xi() does. A
-      // k-nearest search costs a quarter of the incremental one, which the bilateral distance needs.
+      // Euclidean (infinite sigma_feature): the nearest other point is among the two nearest (the point
+      // itself is one of them unless two copies of it are, and then the answer is 0 either way). The tree
+      // sums the same squared coordinate differences in the same order as xi(), so it ranks the candidates as
+      // xi() does. A k-nearest search costs a quarter of the incremental one, which the bilateral distance
+      // needs.
       using Nearest = CGAL::Orthogonal_k_neighbor_search<Traits_with_index>;
       const bool euclidean = std::isinf(options.sigma_feature);
       double minimum = std::numeric_limits<double>::infinity(), sum = 0;
       farthest = 0;
       for (std::size_t i = 0; i < n; ++i) {
-        if (i % 4096 == 0 &&
-            !FeatureRecon::internal::report_progress(options.progress, from + (to - from) * double(i) / double(n))) {
+        if (i % 4096 == 0 && !FeatureRecon::internal::report_progress(
+                                 options.progress, from + (to - from) * double(i) / double(n))) {
           farthest = -1;
           return;
         }
@@ -209,7 +215,8 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
     return farthest;
   };
   const double band = std::min(0.5, 2 * q.hexagonal_distance);
-  double farthest = measure_with_band(options.periodic ? band : 0, 0, options.periodic && band < 0.5 ? 0.5 : 1);
+  double farthest =
+      measure_with_band(options.periodic ? band : 0, 0, options.periodic && band < 0.5 ? 0.5 : 1);
   if (farthest >= 0 && options.periodic && !(farthest * (1 + 1e-9) < band) && band < 0.5)
     farthest = measure_with_band(0.5, 0.5, 1);
   if (farthest < 0) {
@@ -237,25 +244,26 @@ struct Sampling_spectrum_options {
 
 /// Fourier statistics of a 2D sample set on the unit torus (positions modulo 1), as the point-set analysis
 /// of Lagae and Dutre (2008) and Heck, Schloemer and Deussen (2013) defines them. Frequencies are in units of
-/// nu_N = sqrt(N)/2, the Nyquist frequency of a square lattice of N points (the point-set analysis tool's unit).
+/// nu_N = sqrt(N)/2, the Nyquist frequency of a square lattice of N points (the point-set analysis tool's
+/// unit).
 struct Sampling_spectrum {
-  std::size_t samples = 0;              ///< N
-  std::vector<double> frequency;        ///< annulus k (k = 0, 1, ...): integer radius k, in units of nu_N
-  std::vector<double> radial_power;     ///< radially averaged periodogram per annulus (white noise: 1)
-  std::vector<double> anisotropy;       ///< 10 log10(variance / mean^2) of the periodogram in each annulus (dB)
+  std::size_t samples = 0;           ///< N
+  std::vector<double> frequency;     ///< annulus k (k = 0, 1, ...): integer radius k, in units of nu_N
+  std::vector<double> radial_power;  ///< radially averaged periodogram per annulus (white noise: 1)
+  std::vector<double> anisotropy;    ///< 10 log10(variance / mean^2) of the periodogram in each annulus (dB)
   std::vector<std::size_t> annulus_size;  ///< number of integer frequencies f with round(|f|) = k
-  /// Effective Nyquist frequency nu_eff (Heck et al.): half the radius nu* of the largest disc of frequencies,
-  /// centred on 0 and without the DC term, whose mean power stays below `threshold`, taken below the first
-  /// radius of at least one unit where that mean exceeds 0.5 (interpolated between annuli). In units of nu_N,
-  /// so a square lattice has nu_eff = 1 and white noise nu_eff = 0.
+  /// Effective Nyquist frequency nu_eff (Heck et al.): half the radius nu* of the largest disc of
+  /// frequencies, centred on 0 and without the DC term, whose mean power stays below `threshold`, taken below
+  /// the first radius of at least one unit where that mean exceeds 0.5 (interpolated between annuli). In
+  /// units of nu_N, so a square lattice has nu_eff = 1 and white noise nu_eff = 0.
   double effective_nyquist = 0;
-  /// Oscillation Omega (Heck et al.): 10 times the root mean square of P - 1 over the ring of frequencies from
-  /// `oscillation_from` (the first annulus after DC where the radial power reaches 0.98) to `oscillation_to`
-  /// (10 units further, or the end of the spectrum when that comes first), weighted by area. A sampling that
-  /// is flat beyond its zero region has Omega near 0; a lattice-like one has large Omega.
+  /// Oscillation Omega (Heck et al.): 10 times the root mean square of P - 1 over the ring of frequencies
+  /// from `oscillation_from` (the first annulus after DC where the radial power reaches 0.98) to
+  /// `oscillation_to` (10 units further, or the end of the spectrum when that comes first), weighted by area.
+  /// A sampling that is flat beyond its zero region has Omega near 0; a lattice-like one has large Omega.
   double oscillation = 0;
-  double oscillation_from = 0;  ///< start of the oscillation band, units of nu_N
-  double oscillation_to = 0;    ///< end of the oscillation band, units of nu_N
+  double oscillation_from = 0;      ///< start of the oscillation band, units of nu_N
+  double oscillation_to = 0;        ///< end of the oscillation band, units of nu_N
   Status status = Status::success;  ///< degenerate_input for fewer than two samples; interrupted when stopped
 };
 
@@ -328,16 +336,17 @@ inline void finish_spectrum(Sampling_spectrum& s, double threshold) {
 /// effective Nyquist frequency; the point-set analysis literature averages ten). Recomputes the effective
 /// Nyquist frequency and the oscillation from the averaged radial power.
 /// \throws std::invalid_argument when the spectra are empty or differ in size or number of annuli.
-inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spectrum>& spectra, double threshold = 0.1) {
+inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spectrum>& spectra,
+                                                  double threshold = 0.1) {
   const char* fn = "average_sampling_spectra";
   internal::check_spectrum_threshold(threshold, fn);
   if (spectra.empty()) FeatureRecon::internal::throw_invalid_argument(fn, "no spectra");
   Sampling_spectrum a = spectra[0];
   for (std::size_t k = 1; k < spectra.size(); ++k) {
     if (spectra[k].samples != a.samples || spectra[k].radial_power.size() != a.radial_power.size())
-      FeatureRecon::internal::throw_invalid_argument(fn, "spectrum ", k, " has ", spectra[k].samples, " samples and ",
-                                                     spectra[k].radial_power.size(), " annuli, spectrum 0 has ",
-                                                     a.samples, " and ", a.radial_power.size());
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "spectrum ", k, " has ", spectra[k].samples, " samples and ", spectra[k].radial_power.size(),
+          " annuli, spectrum 0 has ", a.samples, " and ", a.radial_power.size());
     for (std::size_t b = 0; b < a.radial_power.size(); ++b) {
       a.radial_power[b] += spectra[k].radial_power[b];
       a.anisotropy[b] += spectra[k].anisotropy[b];
@@ -351,12 +360,13 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
   return a;
 }
 
-/// Periodogram P(f) = |sum_k exp(-2 pi i f . x_k)|^2 / N over the integer frequencies |f_x|, |f_y| <= F of a 2D
-/// sample set taken on the unit torus, its radial average and anisotropy over annuli of width 1, the effective
-/// Nyquist frequency and the oscillation. O(N F^2) time.
-/// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
+/// Periodogram P(f) = |sum_k exp(-2 pi i f . x_k)|^2 / N over the integer frequencies |f_x|, |f_y| <= F of a
+/// 2D sample set taken on the unit torus, its radial average and anisotropy over annuli of width 1, the
+/// effective Nyquist frequency and the oscillation. O(N F^2) time. \tparam ItemRange a forward range of
+/// `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
-/// \throws std::invalid_argument for non-finite coordinates (naming the item), a threshold outside (0, 0.5) or a
+/// \throws std::invalid_argument for non-finite coordinates (naming the item), a threshold outside (0, 0.5)
+/// or a
 ///   max_frequency above 16384.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spectrum_options& options = {},
@@ -365,8 +375,11 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
   static_assert(Traits::dimension == 2, "FeatureRecon: sampling_spectrum takes 2D positions");
   internal::check_spectrum_threshold(options.threshold, fn);
   if (options.max_frequency > 16384)
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_frequency must be at most 16384 (the periodogram holds (2 F "
-                                                   "+ 1)(F + 1) complex sums), got ", options.max_frequency);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn,
+        "max_frequency must be at most 16384 (the periodogram holds (2 F "
+        "+ 1)(F + 1) complex sums), got ",
+        options.max_frequency);
   const internal::Sample_set<Traits> S(items, traits, fn, false);
   const std::size_t n = S.size();
   Sampling_spectrum result;
@@ -376,7 +389,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
     return result;
   }
   const long F = options.max_frequency != 0 ? static_cast<long>(options.max_frequency)
-                                             : static_cast<long>(std::ceil(6 * std::sqrt(double(n))));
+                                            : static_cast<long>(std::ceil(6 * std::sqrt(double(n))));
   const long W = 2 * F + 1;
   // S(fx, fy) = sum_k exp(-2 pi i fx x_k) exp(-2 pi i fy y_k) for fy >= 0 (P(-f) = P(f)) is the product
   // Ex^T Ey of the per-sample exponentials: blocks of samples go through Eigen's blocked matrix product.

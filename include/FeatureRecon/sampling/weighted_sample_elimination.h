@@ -111,24 +111,24 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   `degenerate_input` for an empty input and for input of lower affine dimension than the domain, decided
 ///   by exact predicates: collinear points (r_max = L / (2 count) for the segment of length L), coplanar 3D
 ///   points asked to be sampled as a volume (sampled as a surface), one repeated position (the seed picks the
-///   items), and positions so close together (spans below about 1e-154) that the automatic r_max underflows to
-///   0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
+///   items), and positions so close together (spans below about 1e-154) that the automatic r_max underflows
+///   to 0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
 /// \throws std::invalid_argument naming the argument: neighbour lists longer than max_neighbor_entries (a
 ///   max_radius far too large; found while counting them, before they are stored), count larger than the
 ///   input, non-finite coordinates (naming the item), sigma_position <= 0, sigma_feature <= 0, negative
-///   max_radius or domain_measure, intrinsic_dimension other than 0, 2 or 3 or above the positions' dimension, alpha <= 0, with a finite
-///   sigma_feature a feature at a non-finite distance from itself (a zero normal, NaN; naming the item). The
-///   input is never modified.
+///   max_radius or domain_measure, intrinsic_dimension other than 0, 2 or 3 or above the positions'
+///   dimension, alpha <= 0, with a finite sigma_feature a feature at a non-finite distance from itself (a
+///   zero normal, NaN; naming the item). The input is never modified.
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the
-///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost neighbour
-///   lists quadratic in their number): of each group of copies the item of lowest seeded priority stays. When
-///   there are more copies than eliminations, copies are removed one at a time from the largest group (whose
-///   copies weigh the most; neighbours are not weighed). Ties between weights that compare equal are broken by a
-///   permutation drawn from `seed`, so the same input and seed give the same output on every platform. Weights
-///   are sums of pair weights rounded to multiples of 2^-(63 - b) times the largest pair weight (2^b above the
-///   most neighbours of an item; 2^-56 up to 127), kept in 64-bit integers: removing a neighbour
-///   subtracts its pair weight exactly, so weights equal in exact arithmetic (on a grid) tie and the seed
-///   decides, never the rounding of the order in which neighbours went.
+///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost
+///   neighbour lists quadratic in their number): of each group of copies the item of lowest seeded priority
+///   stays. When there are more copies than eliminations, copies are removed one at a time from the largest
+///   group (whose copies weigh the most; neighbours are not weighed). Ties between weights that compare equal
+///   are broken by a permutation drawn from `seed`, so the same input and seed give the same output on every
+///   platform. Weights are sums of pair weights rounded to multiples of 2^-(63 - b) times the largest pair
+///   weight (2^b above the most neighbours of an item; 2^-56 up to 127), kept in 64-bit integers: removing a
+///   neighbour subtracts its pair weight exactly, so weights equal in exact arithmetic (on a grid) tie and
+///   the seed decides, never the rounding of the order in which neighbours went.
 /// \sa sampling_quality(), bilateral_dart_throwing().
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& items, std::size_t count,
@@ -138,10 +138,12 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   const char* fn = "weighted_sample_elimination";
   internal::check_sigmas(options.sigma_position, options.sigma_feature, fn);
   if (!(options.max_radius >= 0 && std::isfinite(options.max_radius)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_radius must be finite and >= 0, got ", options.max_radius);
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_radius must be finite and >= 0, got ",
+                                                   options.max_radius);
   if (!(options.max_radius * options.sigma_position <= 1e100))  // items lie within +-1e100
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_radius (", options.max_radius, ") times sigma_position (",
-                                                   options.sigma_position, ") is beyond 1e100, farther than any two "
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_radius (", options.max_radius,
+                                                   ") times sigma_position (", options.sigma_position,
+                                                   ") is beyond 1e100, farther than any two "
                                                    "items can lie apart");
   internal::check_domain(options.domain_measure, options.intrinsic_dimension, Traits::dimension, fn);
   if (!(options.alpha > 0 && std::isfinite(options.alpha)))
@@ -190,7 +192,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       r_max = internal::packing_radius(measure, count, dim) / options.sigma_position;
       packing_dimension = dim;
     }
-    if (!(r_max > 0)) result.status = Status::degenerate_input;  // one place, or an extent whose squares underflow
+    if (!(r_max > 0))
+      result.status = Status::degenerate_input;  // one place, or an extent whose squares underflow
   }
   result.radius = r_max;
 
@@ -236,12 +239,14 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           for (std::size_t k = 0; k + 1 < g.size(); ++k) removed[g[k]] = 1;
         eliminated_before = surplus;
       } else {
-        // More copies than eliminations: only copies go, each time one of the largest group, whose copies weigh
-        // the most (ties: the higher priority of the next copy to go; other neighbours are not weighed).
+        // More copies than eliminations: only copies go, each time one of the largest group, whose copies
+        // weigh the most (ties: the higher priority of the next copy to go; other neighbours are not
+        // weighed).
         std::vector<std::size_t> next(groups.size(), 0);  // copies removed from each group so far
         auto lighter = [&](std::size_t u, std::size_t v) {
           const std::size_t su = groups[u].size() - next[u], sv = groups[v].size() - next[v];
-          return su != sv ? su < sv : global_priority[groups[u][next[u]]] < global_priority[groups[v][next[v]]];
+          return su != sv ? su < sv
+                          : global_priority[groups[u][next[u]]] < global_priority[groups[v][next[v]]];
         };
         std::vector<std::size_t> heap;
         for (std::size_t g = 0; g < groups.size(); ++g)
@@ -265,11 +270,11 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       if (!removed[i]) active.push_back(static_cast<std::uint32_t>(i));
     const std::size_t n_active = active.size();
     // Progressive elimination. Every item has about k = c n / count neighbours within 2 r_max (c = 3.6 for a
-    // surface or image, 5.9 for a volume, 2 on a line): far fewer kept than given items would need O(n^2 / count)
-    // memory and time. The last stage, Yuksel's elimination itself, therefore starts from at most
-    // max(16 count, sqrt(2^24 count / c)) items (neighbour lists of at most 2^24 ids, 64 MB, beyond 16 count);
-    // more items are first reduced to that many in stages of factor 4, each with the r_max of its own count,
-    // r_max (count / target)^(1 / dimension). Inputs within the bound are eliminated in one stage.
+    // surface or image, 5.9 for a volume, 2 on a line): far fewer kept than given items would need O(n^2 /
+    // count) memory and time. The last stage, Yuksel's elimination itself, therefore starts from at most
+    // max(16 count, sqrt(2^24 count / c)) items (neighbour lists of at most 2^24 ids, 64 MB, beyond 16
+    // count); more items are first reduced to that many in stages of factor 4, each with the r_max of its own
+    // count, r_max (count / target)^(1 / dimension). Inputs within the bound are eliminated in one stage.
     const double per_neighbor = packing_dimension >= 3 ? 5.92 : packing_dimension == 2 ? 3.63 : 2.0;
     const double fit = std::sqrt(16777216.0 * double(count) / per_neighbor);
     std::vector<std::size_t> targets;  // decreasing, the last one count
@@ -288,9 +293,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
                                  ? r_max
                                  : r_max * std::pow(double(count) / double(target), 1.0 / packing_dimension);
       const double two_r = 2 * stage_r;
-      const double r_min = options.weight_limiting
-                               ? two_r * 0.65 * (1 - std::pow(double(target) / double(m), 1.5))
-                               : 0.0;
+      const double r_min =
+          options.weight_limiting ? two_r * 0.65 * (1 - std::pow(double(target) / double(m), 1.5)) : 0.0;
       std::vector<std::array<double, D>> positions(m);
       for (std::size_t i = 0; i < m; ++i) positions[i] = S.positions[active[i]];
       // Neighbour lists (CSR, local ids only: 4 bytes per neighbour; the weights are recomputed when an item
@@ -300,7 +304,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         // Weight of the pair (i, j) (local ids), or a negative number when j is not within 2 r of i.
         auto pair_weight = [&](std::size_t i, std::size_t j) {
           double d2 = 0;  // from the stage's own copy of the positions (contiguous, no indirection)
-          for (int k = 0; k < D; ++k) d2 += (positions[i][k] - positions[j][k]) * (positions[i][k] - positions[j][k]);
+          for (int k = 0; k < D; ++k)
+            d2 += (positions[i][k] - positions[j][k]) * (positions[i][k] - positions[j][k]);
           if (!(d2 < spatial2)) return -1.0;
           const double xi = metric(d2, S.squared_feature_distance(active[i], active[j]));
           if (!(xi < two_r)) return -1.0;
@@ -312,9 +317,9 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           return std::pow(base, options.alpha);
         };
         {
-          // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory. The
-          // result does not depend on it: within a cell the order stays the input order, the weight of an item
-          // sums its neighbours in the same order, and the heap pops by (weight, priority) alone.
+          // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory.
+          // The result does not depend on it: within a cell the order stays the input order, the weight of an
+          // item sums its neighbours in the same order, and the heap pops by (weight, priority) alone.
           const FeatureRecon::internal::Grid_frame<D> frame(positions, spatial);
           std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m);
           for (std::size_t i = 0; i < m; ++i) keyed[i] = {frame.key(frame.cell_of(positions[i])), active[i]};
@@ -328,18 +333,18 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         // The callback is asked at the start of every stage and every 16,384 items or eliminations after it,
         // the neighbour lists included (dense clusters make them the long part).
         auto stop = [&](std::size_t step) {
-          return (step & 16383) == 0 &&
-                 !FeatureRecon::internal::report_progress(options.progress,
-                                                          double(eliminated_before) / total_eliminations);
+          return (step & 16383) == 0 && !FeatureRecon::internal::report_progress(
+                                            options.progress, double(eliminated_before) / total_eliminations);
         };
         std::vector<std::size_t> offset(m + 1, 0);
         std::size_t entries = 0, since_asked = 0;
-        // Elimination_options::max_neighbor_entries, 0: 64 times what this stage needs at the automatic r_max.
-        const double automatic_limit =
-            std::max(536870912.0, 64 * per_neighbor * double(m) * double(m) / double(std::max<std::size_t>(target, 1)));
+        // Elimination_options::max_neighbor_entries, 0: 64 times what this stage needs at the automatic
+        // r_max.
+        const double automatic_limit = std::max(536870912.0, 64 * per_neighbor * double(m) * double(m) /
+                                                                 double(std::max<std::size_t>(target, 1)));
         const std::size_t limit = options.max_neighbor_entries > 0 ? options.max_neighbor_entries
-                                  : automatic_limit >= 1e18     ? std::numeric_limits<std::size_t>::max()
-                                                                : static_cast<std::size_t>(automatic_limit);
+                                  : automatic_limit >= 1e18        ? std::numeric_limits<std::size_t>::max()
+                                                            : static_cast<std::size_t>(automatic_limit);
         for (std::size_t i = 0; i < m; ++i) {
           // Asked at the start and then about every 16,384 items, sooner when they have many candidates (the
           // count's work grows with them).
@@ -364,20 +369,22 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
                 options.max_neighbor_entries > 0 ? "" : "automatic ",
                 "Elimination_options::max_neighbor_entries; r_max ", stage_r, " in the stage from ", m,
                 " items to ", target, "; the first ", i + 1, " items have ", entries,
-                " neighbours): max_radius is too large for these items (0: the automatic r_max) or they crowd "
+                " neighbours): max_radius is too large for these items (0: the automatic r_max) or they "
+                "crowd "
                 "at one spot; raise the limit for a larger run");
         }
         for (std::size_t i = 0; i < m; ++i) offset[i + 1] += offset[i];
         std::vector<std::uint32_t> neighbor(offset[m]);
-        // Weights in fixed point: pair weights (at most w_max, the weight of a pair at distance r_min or less)
-        // in units of 2^-(63 - b) w_max rounded up to a power of two, 2^b above the most neighbours any item has
-        // (2^-56 w_max for up to 127), summed in 64-bit integers without overflow. A weight kept up to date by
-        // subtraction is then exactly the sum over the neighbours left, and weights equal in exact arithmetic
-        // compare equal: the seed breaks their tie, not the rounding of the order in which neighbours went
-        // (doubles did that on grids). Scaled by w_max, not 1: with alpha 64, w_max = 0.35^64, every weight
-        // rounded to 0 and the seed alone chose.
+        // Weights in fixed point: pair weights (at most w_max, the weight of a pair at distance r_min or
+        // less) in units of 2^-(63 - b) w_max rounded up to a power of two, 2^b above the most neighbours any
+        // item has (2^-56 w_max for up to 127), summed in 64-bit integers without overflow. A weight kept up
+        // to date by subtraction is then exactly the sum over the neighbours left, and weights equal in exact
+        // arithmetic compare equal: the seed breaks their tie, not the rounding of the order in which
+        // neighbours went (doubles did that on grids). Scaled by w_max, not 1: with alpha 64, w_max =
+        // 0.35^64, every weight rounded to 0 and the seed alone chose.
         std::size_t most_neighbours = 0;
-        for (std::size_t i = 0; i < m; ++i) most_neighbours = std::max(most_neighbours, offset[i + 1] - offset[i]);
+        for (std::size_t i = 0; i < m; ++i)
+          most_neighbours = std::max(most_neighbours, offset[i + 1] - offset[i]);
         int bits = 0;
         while (bits < 63 && (std::uint64_t(1) << bits) <= most_neighbours) ++bits;
         const double base_max = 1 - r_min / two_r, b2 = base_max * base_max, b4 = b2 * b2;
@@ -425,8 +432,9 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         eliminated_before += eliminations;
       });
       if (interrupted) break;
-      active.erase(std::remove_if(active.begin(), active.end(), [&](std::uint32_t i) { return removed[i] != 0; }),
-                   active.end());
+      active.erase(
+          std::remove_if(active.begin(), active.end(), [&](std::uint32_t i) { return removed[i] != 0; }),
+          active.end());
     }
     if (interrupted) {
       result.status = Status::interrupted;

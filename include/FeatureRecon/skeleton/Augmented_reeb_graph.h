@@ -37,10 +37,10 @@ std::size_t count_components(const Reeb_graph& G);
 /// above is a down-fork and an up-fork). A regular node (one arc below, one above) has no flag.
 enum Node_type : unsigned {
   regular = 0,
-  minimum = 1,    ///< no arc below
-  maximum = 2,    ///< no arc above
-  up_fork = 4,    ///< two or more arcs above
-  down_fork = 8   ///< two or more arcs below
+  minimum = 1,   ///< no arc below
+  maximum = 2,   ///< no arc above
+  up_fork = 4,   ///< two or more arcs above
+  down_fork = 8  ///< two or more arcs below
 };
 
 /// Node type from the numbers of arcs below and above a node.
@@ -62,21 +62,22 @@ struct Reeb_graph {
     Vertex_index vertex = 0;  ///< input vertex whose image is this node
     double value = 0;         ///< f(vertex)
     unsigned type = regular;  ///< Node_type flags
-    std::vector<Vertex_index> members;  ///< other input vertices identified with this node (after simplification)
+    std::vector<Vertex_index>
+        members;  ///< other input vertices identified with this node (after simplification)
   };
   /// An arc between two nodes, with the regular input vertices mapped into it.
   struct Arc {
-    std::size_t lower = 0;                ///< index into `nodes`
-    std::size_t upper = 0;                ///< index into `nodes`
+    std::size_t lower = 0;               ///< index into `nodes`
+    std::size_t upper = 0;               ///< index into `nodes`
     std::vector<Vertex_index> vertices;  ///< regular input vertices mapped into the arc, in increasing order
   };
-  std::vector<Node> nodes;          ///< critical nodes, by increasing (f, vertex index)
+  std::vector<Node> nodes;  ///< critical nodes, by increasing (f, vertex index)
   /// Arcs of reeb_graph() by lower node; the arcs out of one node by the (f, vertex index) order of the first
   /// vertex each reaches (its first interior vertex, or its upper node when it has none). The graphs that
   /// simplification, repair and trimming return do not keep this order.
   std::vector<Arc> arcs;
-  /// Connected components of the graph: set by every function that returns a Reeb_graph; a graph built by hand
-  /// must set it for loops().
+  /// Connected components of the graph: set by every function that returns a Reeb_graph; a graph built by
+  /// hand must set it for loops().
   std::size_t components = 0;
   /// First Betti number: arcs + components - nodes (0 when `components` is too small for that to be one).
   std::size_t loops() const {
@@ -120,14 +121,15 @@ class Augmented_reeb_graph {
   std::size_t up_degree(Vertex_index v) const { return m_up_offset[m_rank[v] + 1] - m_up_offset[m_rank[v]]; }
   /// Node_type flags of the image of v.
   unsigned type(Vertex_index v) const { return node_type_from_degrees(down_degree(v), up_degree(v)); }
-  /// Indices into arcs() of the arcs leaving v upwards (consecutive: arcs() is sorted by its lower ends' ranks).
+  /// Indices into arcs() of the arcs leaving v upwards (consecutive: arcs() is sorted by its lower ends'
+  /// ranks).
   std::vector<std::size_t> up_arcs(Vertex_index v) const {
     std::vector<std::size_t> k(up_degree(v));
     std::iota(k.begin(), k.end(), m_up_offset[m_rank[v]]);
     return k;
   }
-  /// Completed, interrupted by the progress callback (arcs still open are missing; no arc at all after a stop in the
-  /// set-up passes), or degenerate (empty input).
+  /// Completed, interrupted by the progress callback (arcs still open are missing; no arc at all after a stop
+  /// in the set-up passes), or degenerate (empty input).
   Status status() const { return m_status; }
 
   /// Derives the Reeb graph (critical nodes only; chains of regular nodes become arcs). O(n + arcs).
@@ -143,7 +145,8 @@ class Augmented_reeb_graph {
   std::vector<Vertex_index> m_order, m_rank;
   std::vector<Arc> m_arcs;
   std::vector<std::uint32_t> m_down_degree;
-  std::vector<std::size_t> m_up_offset;  // by rank r: the arcs whose lower end has rank r, [m_up_offset[r], [r + 1])
+  std::vector<std::size_t>
+      m_up_offset;  // by rank r: the arcs whose lower end has rank r, [m_up_offset[r], [r + 1])
   Status m_status = Status::success;
 };
 
@@ -171,7 +174,8 @@ using Buckets = FeatureRecon::internal::Compressed_lists<T, FeatureRecon::intern
 ///
 /// \param K a canonical complex (see Simplicial_complex_2).
 /// \param f one finite value per vertex (any random-access range convertible to double).
-/// \pre K is canonical. Its simplices are checked (sorted, unique, in range; throws); its edge lengths are not
+/// \pre K is canonical. Its simplices are checked (sorted, unique, in range; throws); its edge lengths are
+/// not
 ///      used and not checked. f has K.number_of_vertices finite values (checked; throws, naming the first bad
 ///      index). Fewer than 2^31 - 1 vertices, 2^30 edges and 2^31 - 1 edges and triangles together (checked).
 /// \returns the augmented Reeb graph; `status()` is `degenerate_input` for an empty complex and
@@ -190,12 +194,13 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
                                                    "; build it with make_simplicial_complex_2()");
   // 32-bit indices: the link-cut forest has 2E nodes; arcs and triangles are counted in int32 too.
   const std::size_t index_limit = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
-  if (K.number_of_edges() + K.number_of_triangles() >= index_limit || 2 * K.number_of_edges() >= index_limit ||
-      n >= index_limit)
-    FeatureRecon::internal::throw_invalid_argument(fn, "the complex is too large (", n, " vertices, ",
-                                                   K.number_of_edges(), " edges, ", K.number_of_triangles(),
-                                                   " triangles; fewer than 2^31 - 1 vertices, 2^30 edges and 2^31 - 1 "
-                                                   "edges and triangles together are supported)");
+  if (K.number_of_edges() + K.number_of_triangles() >= index_limit ||
+      2 * K.number_of_edges() >= index_limit || n >= index_limit)
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the complex is too large (", n, " vertices, ", K.number_of_edges(), " edges, ",
+        K.number_of_triangles(),
+        " triangles; fewer than 2^31 - 1 vertices, 2^30 edges and 2^31 - 1 "
+        "edges and triangles together are supported)");
 
   Augmented_reeb_graph R;
   R.m_values.reserve(n);
@@ -210,9 +215,9 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     }
   }
   const std::vector<double>& val = R.m_values;
-  // Progress: the set-up passes (sorting, bucketing, two passes over the triangles) report up to 0.4, the sweep
-  // from 0.4 to 1; on a dense Rips complex the set-up takes about two thirds of the time. A stop in the set-up
-  // returns the graph without arcs.
+  // Progress: the set-up passes (sorting, bucketing, two passes over the triangles) report up to 0.4, the
+  // sweep from 0.4 to 1; on a dense Rips complex the set-up takes about two thirds of the time. A stop in the
+  // set-up returns the graph without arcs.
   const double sweep_start = 0.4;
   auto interrupt = [&R]() {
     R.m_status = Status::interrupted;
@@ -225,7 +230,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     return true;
   };
   {
-    FeatureRecon::internal::Large_vector<std::pair<double, Vertex_index>> keyed(n);  // contiguous keys sort faster than indirection
+    FeatureRecon::internal::Large_vector<std::pair<double, Vertex_index>> keyed(
+        n);  // contiguous keys sort faster than indirection
     for (std::size_t i = 0; i < n; ++i) keyed[i] = {val[i], static_cast<Vertex_index>(i)};
     std::sort(keyed.begin(), keyed.end());
     R.m_order.resize(n);
@@ -253,7 +259,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   });
   up_edges.build(n, [&](auto emit) {
     for (std::size_t step = n; step-- > 0;)
-      for (const std::uint32_t* e = down_edges.begin(step); e != down_edges.end(step); ++e) emit(lower_of(*e), *e);
+      for (const std::uint32_t* e = down_edges.begin(step); e != down_edges.end(step); ++e)
+        emit(lower_of(*e), *e);
   });
 
   // Sweep numbering: edges are renumbered in the order of up_edges, so that the level-set nodes alive at one
@@ -288,14 +295,16 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
                                                      ") of a triangle is missing");
     return i;
   };
-  // Reports every 2^20 triangles, from `from` to `to`; false when the callback asked to stop (the walk ends there).
+  // Reports every 2^20 triangles, from `from` to `to`; false when the callback asked to stop (the walk ends
+  // there).
   auto for_each_triangle = [&](double from, double to, auto&& visit) {
     constexpr Vertex_index none = std::numeric_limits<Vertex_index>::max();
     Vertex_index u = none, v = none;
     std::size_t uv = 0, uw = 0, vw = 0;
     for (std::size_t i = 0; i < T; ++i) {
       if ((i & ((std::size_t(1) << 20) - 1)) == 0 && i > 0 &&
-          !FeatureRecon::internal::report_progress(options.progress, from + (to - from) * static_cast<double>(i) / T))
+          !FeatureRecon::internal::report_progress(options.progress,
+                                                   from + (to - from) * static_cast<double>(i) / T))
         return false;
       const Triangle& t = K.triangles[i];
       if (t[0] != u) {
@@ -332,34 +341,37 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
       if (ru < rw) return Tri{uw, vw, uv};  // u w v
       return Tri{uw, uv, vw};               // w u v
     }
-    if (ru < rw) return Tri{uv, uw, vw};    // v u w
-    if (rv < rw) return Tri{vw, uw, uv};    // v w u
-    return Tri{vw, uv, uw};                 // w v u
+    if (ru < rw) return Tri{uv, uw, vw};  // v u w
+    if (rv < rw) return Tri{vw, uw, uv};  // v w u
+    return Tri{vw, uv, uw};               // w v u
   };
   FeatureRecon::internal::Large_vector<Tri> tri(T);
-  FeatureRecon::internal::Large_vector<std::size_t> by_min(n + 1);  // triangles [by_min[s], by_min[s + 1]) have a at step s
-  internal::Buckets<std::uint32_t> by_mid;                          // triangles by the step of b
+  FeatureRecon::internal::Large_vector<std::size_t> by_min(
+      n + 1);                               // triangles [by_min[s], by_min[s + 1]) have a at step s
+  internal::Buckets<std::uint32_t> by_mid;  // triangles by the step of b
   {
     FeatureRecon::internal::Large_vector<std::size_t> first_tri(E + 1, 0);
-    if (!for_each_triangle(0.05, 0.2, [&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
-          ++first_tri[roles(t, uv, vw, uw).ab + 1];
-        })) {
+    if (!for_each_triangle(0.05, 0.2,
+                           [&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
+                             ++first_tri[roles(t, uv, vw, uw).ab + 1];
+                           })) {
       interrupt();
       return R;
     }
     if (stop_here(0.2)) return R;
     for (std::size_t e = 0; e < E; ++e) first_tri[e + 1] += first_tri[e];
     for (std::size_t step = 0; step <= n; ++step) by_min[step] = first_tri[up_edges.offset[step]];
-    if (!for_each_triangle(0.2, 0.35, [&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
-          const Tri r = roles(t, uv, vw, uw);
-          tri[first_tri[r.ab]++] = r;
-        })) {
+    if (!for_each_triangle(0.2, 0.35,
+                           [&](const Triangle& t, std::uint32_t uv, std::uint32_t vw, std::uint32_t uw) {
+                             const Tri r = roles(t, uv, vw, uw);
+                             tri[first_tri[r.ab]++] = r;
+                           })) {
       interrupt();
       return R;
     }
     if (stop_here(0.35)) return R;
-    // Two passes (count, fill) that report every 2^20 triangles. After a stop nothing more is emitted: the fill
-    // then writes fewer items than were counted, never more, and the lists are dropped.
+    // Two passes (count, fill) that report every 2^20 triangles. After a stop nothing more is emitted: the
+    // fill then writes fewer items than were counted, never more, and the lists are dropped.
     bool stopped = false;
     int pass = 0;
     by_mid.build(n, [&](auto emit) {
@@ -399,7 +411,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   free_nodes.reserve(E);
   for (std::size_t i = E; i-- > 0;) free_nodes.push_back(static_cast<std::int32_t>(E + i));
   FeatureRecon::internal::Large_vector<std::int32_t> arc_of_root(E, -1);
-  FeatureRecon::internal::Large_vector<std::uint32_t> stamp(E, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
+  FeatureRecon::internal::Large_vector<std::uint32_t> stamp(
+      E, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
 
   // Number of forest edges at each level-set vertex: a vertex without any is its own tree, which lets
   // most links skip the connectivity query (every edge of K starts isolated).
@@ -409,8 +422,10 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     forest.cut_middle(x, fe.ends[0], fe.ends[1]);
     --forest_degree[fe.ends[0]];
     --forest_degree[fe.ends[1]];
-    if (fe.prev != LCT::null) edge_of(fe.prev).next = fe.next;
-    else deleted_at[forest.key(x)] = fe.next;
+    if (fe.prev != LCT::null)
+      edge_of(fe.prev).next = fe.next;
+    else
+      deleted_at[forest.key(x)] = fe.next;
     if (fe.next != LCT::null) edge_of(fe.next).prev = fe.prev;
     free_nodes.push_back(x);
   };
@@ -436,8 +451,10 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     deleted_at[key] = x;
     // p is a tree of its own or the root of its tree (and a splay root): hang x below q and p below x.
     forest.attach_isolated(x, q);
-    if (forest_degree[p] == 0) forest.attach_isolated(p, x);
-    else forest.attach_root(p, x);
+    if (forest_degree[p] == 0)
+      forest.attach_isolated(p, x);
+    else
+      forest.attach_root(p, x);
     ++forest_degree[p];
     ++forest_degree[q];
   };
@@ -463,8 +480,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   if (stop_here(sweep_start)) return R;
   for (std::size_t step = 0; step < n; ++step) {
     if ((step & 1023) == 0 && step > 0 &&
-        !FeatureRecon::internal::report_progress(options.progress,
-                                                 sweep_start + (1 - sweep_start) * static_cast<double>(step) / n)) {
+        !FeatureRecon::internal::report_progress(
+            options.progress, sweep_start + (1 - sweep_start) * static_cast<double>(step) / n)) {
       R.m_status = Status::interrupted;
       break;
     }
@@ -502,7 +519,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
       const std::int32_t i = find(slot[tr.ab]), j = find(slot[tr.ac]);
       if (i == j) continue;
       group_parent[std::max(i, j)] = std::min(i, j);
-      insert_level_edge(static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ab], true);
+      insert_level_edge(static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ab],
+                        true);
     }
     //    Then the upper halves (bc, ac) of triangles with x in the middle (deleted at c). Both ends are edges
     //    of K into c, and so are the ends of every upper half with c on top. Those halves all live until c,
@@ -513,7 +531,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
       const std::uint32_t i = fan_find(tr.bc), j = fan_find(tr.ac);
       if (i == j) continue;
       fan_parent[std::max(i, j)] = std::min(i, j);
-      insert_level_edge(static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ac], false);
+      insert_level_edge(static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ac],
+                        false);
     }
     // 4. The components just above x that contain an edge leaving x: each starts an arc at x. Edges out
     //    of x joined by a triangle (x, b, c), one class of the Kruskal above, are in one component.

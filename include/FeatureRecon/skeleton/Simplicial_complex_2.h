@@ -55,9 +55,9 @@ struct Simplicial_complex_2 : Proximity_graph {
 
 namespace internal {
 /// \cond
-// Sorts `keys` (all below 2^bits) into increasing order, stably, moving `payload` (aligned with keys) with them:
-// least-significant-digit radix sort on 11-bit digits; a digit that every key shares is skipped. O(bits / 11 n)
-// time, 2 n keys and payloads of memory.
+// Sorts `keys` (all below 2^bits) into increasing order, stably, moving `payload` (aligned with keys) with
+// them: least-significant-digit radix sort on 11-bit digits; a digit that every key shares is skipped. O(bits
+// / 11 n) time, 2 n keys and payloads of memory.
 template <class Payload>
 void radix_sort(std::vector<std::uint64_t>& keys, std::vector<Payload>& payload, int bits) {
   constexpr int digit = 11;
@@ -81,9 +81,9 @@ void radix_sort(std::vector<std::uint64_t>& keys, std::vector<Payload>& payload,
   }
 }
 
-// Sorts [first, last) in place by key(e) = e[0] << b | e[1] (vertices below 2^b), the lexicographic order of the
-// pairs: most-significant-digit radix sort (American flag sort) on the 8-bit digit at `shift` and below, small
-// ranges by a comparison sort. O(b / 4 n) time and no memory beyond the edges.
+// Sorts [first, last) in place by key(e) = e[0] << b | e[1] (vertices below 2^b), the lexicographic order of
+// the pairs: most-significant-digit radix sort (American flag sort) on the 8-bit digit at `shift` and below,
+// small ranges by a comparison sort. O(b / 4 n) time and no memory beyond the edges.
 inline void flag_sort_edges(Edge* first, Edge* last, int b, int shift) {
   auto key = [b](const Edge& e) { return (std::uint64_t(e[0]) << b) | e[1]; };
   if (last - first < 64) {
@@ -97,7 +97,8 @@ inline void flag_sort_edges(Edge* first, Edge* last, int b, int shift) {
   std::array<std::size_t, 256> next;
   std::copy(start.begin(), start.end() - 1, next.begin());
   for (std::size_t d = 0; d < 256; ++d)
-    while (next[d] < start[d + 1]) {  // place the edge at next[d], and the edges it displaces, until one is d's
+    while (next[d] <
+           start[d + 1]) {  // place the edge at next[d], and the edges it displaces, until one is d's
       Edge e = first[next[d]];
       for (std::size_t de = digit(e); de != d; de = digit(e)) std::swap(e, first[next[de]++]);
       first[next[d]++] = e;
@@ -108,9 +109,9 @@ inline void flag_sort_edges(Edge* first, Edge* last, int b, int shift) {
     if (start[d + 1] - start[d] > 1) flag_sort_edges(first + start[d], first + start[d + 1], b, lower);
 }
 
-// Sorts edges lexicographically and removes repetitions; with lengths (aligned with edges), each edge keeps the
-// length of its first occurrence. From 1024 edges on, by radix sorts on keys u << b | v (vertices below 2^b),
-// which order as the pairs do: in place without lengths, stable (on a copy of the keys) with them.
+// Sorts edges lexicographically and removes repetitions; with lengths (aligned with edges), each edge keeps
+// the length of its first occurrence. From 1024 edges on, by radix sorts on keys u << b | v (vertices below
+// 2^b), which order as the pairs do: in place without lengths, stable (on a copy of the keys) with them.
 inline void sort_unique_edges(std::vector<Edge>& edges, std::vector<double>* lengths) {
   const bool weighted = lengths != nullptr && !lengths->empty();
   Vertex_index largest = 0;
@@ -118,15 +119,18 @@ inline void sort_unique_edges(std::vector<Edge>& edges, std::vector<double>* len
   int b = 1;
   while (b < 32 && (largest >> b) != 0) ++b;
   if (!weighted) {
-    if (edges.size() < 1024) std::sort(edges.begin(), edges.end());
-    else flag_sort_edges(edges.data(), edges.data() + edges.size(), b, 2 * b >= 8 ? 2 * b - 8 : 0);
+    if (edges.size() < 1024)
+      std::sort(edges.begin(), edges.end());
+    else
+      flag_sort_edges(edges.data(), edges.data() + edges.size(), b, 2 * b >= 8 ? 2 * b - 8 : 0);
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     return;
   }
   if (edges.size() < 1024) {
     std::vector<std::size_t> order(edges.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return edges[a] < edges[c]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t c) { return edges[a] < edges[c]; });
     std::vector<Edge> e;
     std::vector<double> l;
     for (const std::size_t i : order) {
@@ -261,7 +265,8 @@ inline bool is_canonical(const Simplicial_complex_2& k) {
     const Triangle& t = k.triangles[i];
     if (!(t[0] < t[1] && t[1] < t[2] && t[2] < k.number_of_vertices)) return false;
     if (i > 0 && !(k.triangles[i - 1] < t)) return false;
-    if (k.find_edge(t[0], t[1]) < 0 || k.find_edge(t[1], t[2]) < 0 || k.find_edge(t[0], t[2]) < 0) return false;
+    if (k.find_edge(t[0], t[1]) < 0 || k.find_edge(t[1], t[2]) < 0 || k.find_edge(t[0], t[2]) < 0)
+      return false;
   }
   return true;
 }
@@ -274,7 +279,8 @@ inline std::string canonical_order_problem(const Simplicial_complex_2& k) {
   std::ostringstream os;
   for (std::size_t i = 0; i < k.triangles.size(); ++i) {
     const Triangle& t = k.triangles[i];
-    if (t[0] < t[1] && t[1] < t[2] && t[2] < k.number_of_vertices && (i == 0 || k.triangles[i - 1] < t)) continue;
+    if (t[0] < t[1] && t[1] < t[2] && t[2] < k.number_of_vertices && (i == 0 || k.triangles[i - 1] < t))
+      continue;
     os << "triangle " << i << " (" << t[0] << ", " << t[1] << ", " << t[2] << ")";
     if (std::max({t[0], t[1], t[2]}) >= k.number_of_vertices)
       os << " has a vertex beyond the " << k.number_of_vertices << " vertices";
@@ -299,8 +305,8 @@ struct Connected_components {
 inline Connected_components connected_components(const Proximity_graph& g) {
   for (std::size_t i = 0; i < g.edges.size(); ++i)
     if (std::max(g.edges[i][0], g.edges[i][1]) >= g.number_of_vertices)
-      FeatureRecon::internal::throw_invalid_argument("connected_components", "edge ", i, " (", g.edges[i][0], ", ",
-                                                     g.edges[i][1], ") has a vertex beyond the ",
+      FeatureRecon::internal::throw_invalid_argument("connected_components", "edge ", i, " (", g.edges[i][0],
+                                                     ", ", g.edges[i][1], ") has a vertex beyond the ",
                                                      g.number_of_vertices, " vertices");
   std::vector<std::uint32_t> parent(g.number_of_vertices);
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<std::uint32_t>(i);

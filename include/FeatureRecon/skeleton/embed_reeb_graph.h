@@ -15,8 +15,8 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -29,39 +29,41 @@ struct Embedding_options {
   /// Width of the function-value bins that cut an arc's points into level-set pieces (same unit as f);
   /// 0 (default) means automatic: 1/64 of the range of f over the graph.
   double level_width = 0;
-  /// How a polyline is smoothed (endpoints fixed). Taubin (default): each round moves every interior point towards
-  /// the mean of its two neighbours by smoothing_weight (lambda), then away from it by mu = 1 / (0.1 - 1 / lambda)
-  /// (the pass band of Taubin's lambda|mu filter at 0.1): the jitter of level-set centroids goes, the shape stays.
-  /// Laplacian: the first step only; it also shrinks, pulling a coarse arc onto the chord between its ends (a loop of
-  /// 8 vertices on a circle keeps 0.21 of its half-width after 10 Laplacian rounds, 0.86 after 10 Taubin rounds).
+  /// How a polyline is smoothed (endpoints fixed). Taubin (default): each round moves every interior point
+  /// towards the mean of its two neighbours by smoothing_weight (lambda), then away from it by mu = 1 / (0.1
+  /// - 1 / lambda) (the pass band of Taubin's lambda|mu filter at 0.1): the jitter of level-set centroids
+  /// goes, the shape stays. Laplacian: the first step only; it also shrinks, pulling a coarse arc onto the
+  /// chord between its ends (a loop of 8 vertices on a circle keeps 0.21 of its half-width after 10 Laplacian
+  /// rounds, 0.86 after 10 Taubin rounds).
   enum class Smoothing {
     taubin,    ///< lambda step, then mu step (no shrinking)
     laplacian  ///< lambda step only (shrinks)
   };
   Smoothing smoothing = Smoothing::taubin;  ///< how the polylines are smoothed; default Taubin
-  std::size_t smoothing_iterations = 10;  ///< smoothing rounds of each polyline; default 10
-  /// Move towards the neighbours' mean per round: in [0, 1] for Laplacian rounds, [0, 2/3] for Taubin rounds (above,
-  /// the inflating step makes the zigzag of a polyline grow); default 0.5.
+  std::size_t smoothing_iterations = 10;    ///< smoothing rounds of each polyline; default 10
+  /// Move towards the neighbours' mean per round: in [0, 1] for Laplacian rounds, [0, 2/3] for Taubin rounds
+  /// (above, the inflating step makes the zigzag of a polyline grow); default 0.5.
   double smoothing_weight = 0.5;
   /// With a graph: where two consecutive points of a polyline lie farther apart than this (distance in the
   /// embedding space), the polyline follows the graph's shortest path between their input points (a node's
   /// vertex; the point of a level-set piece closest to its centroid), each path vertex drawn at the mean of
-  /// itself and its graph neighbours. Simplification can leave an arc with few or no points of its own between
-  /// nodes far apart; it is then drawn through the data instead of straight across. 0 (default): twice the median
-  /// edge length of the graph; negative: straight segments.
+  /// itself and its graph neighbours. Simplification can leave an arc with few or no points of its own
+  /// between nodes far apart; it is then drawn through the data instead of straight across. 0 (default):
+  /// twice the median edge length of the graph; negative: straight segments.
   double max_gap = 0;
-  /// Called with the fraction of the arcs' points drawn; returning false stops: the arcs not drawn yet are straight
-  /// segments between their nodes, and the embedding's status is Status::interrupted.
+  /// Called with the fraction of the arcs' points drawn; returning false stops: the arcs not drawn yet are
+  /// straight segments between their nodes, and the embedding's status is Status::interrupted.
   Progress_callback progress;
 };
 
 /// A Reeb graph drawn in space: node positions and one polyline per arc (from its lower to its upper node).
 struct Reeb_graph_embedding {
-  std::size_t dimension = 0;                                    ///< 1, 2 or 3: min(input dimension, 3)
-  std::vector<std::array<double, 3>> node_positions;            ///< per node (unused coordinates 0)
-  std::vector<std::vector<std::array<double, 3>>> arc_polylines;  ///< per arc, first and last = node positions
-  /// Gaps of a polyline wider than this were bridged through the graph (Embedding_options::max_gap, or the value
-  /// the automatic setting chose); infinity when nothing was bridged (no graph, or max_gap < 0).
+  std::size_t dimension = 0;                          ///< 1, 2 or 3: min(input dimension, 3)
+  std::vector<std::array<double, 3>> node_positions;  ///< per node (unused coordinates 0)
+  std::vector<std::vector<std::array<double, 3>>>
+      arc_polylines;  ///< per arc, first and last = node positions
+  /// Gaps of a polyline wider than this were bridged through the graph (Embedding_options::max_gap, or the
+  /// value the automatic setting chose); infinity when nothing was bridged (no graph, or max_gap < 0).
   double max_gap = std::numeric_limits<double>::infinity();
   Status status = Status::success;  ///< interrupted when the progress callback stopped the drawing
 };
@@ -79,8 +81,8 @@ inline std::vector<std::array<double, 3>> project_to_3d(const Point_matrix& m) {
   }
   const Eigen::Index d = static_cast<Eigen::Index>(m.dimension);
   // Coordinates are scaled by a power of two (exact) to a largest magnitude in [0.5, 1): the covariance of
-  // coordinates near 1e-170 or 1e200 would underflow or overflow (every projection 0), the mean near the largest
-  // doubles too.
+  // coordinates near 1e-170 or 1e200 would underflow or overflow (every projection 0), the mean near the
+  // largest doubles too.
   double largest = 0;
   for (const double c : m.data) largest = std::max(largest, std::fabs(c));
   int exponent = 0;
@@ -125,8 +127,9 @@ struct Adjacency {
 inline Adjacency make_adjacency(const Proximity_graph& g, const char* fn = "embed_reeb_graph") {
   for (std::size_t k = 0; k < g.edges.size(); ++k)
     if (g.edges[k][0] >= g.number_of_vertices || g.edges[k][1] >= g.number_of_vertices)
-      FeatureRecon::internal::throw_invalid_argument(fn, "graph edge ", k, " (", g.edges[k][0], ", ", g.edges[k][1],
-                                                     ") has a vertex out of range [0, ", g.number_of_vertices, ")");
+      FeatureRecon::internal::throw_invalid_argument(fn, "graph edge ", k, " (", g.edges[k][0], ", ",
+                                                     g.edges[k][1], ") has a vertex out of range [0, ",
+                                                     g.number_of_vertices, ")");
   Adjacency a;
   a.offsets.assign(g.number_of_vertices + 1, 0);
   for (const auto& e : g.edges) {
@@ -143,14 +146,16 @@ inline Adjacency make_adjacency(const Proximity_graph& g, const char* fn = "embe
   return a;
 }
 
-/// Shortest paths in a graph with Euclidean edge lengths (Dijkstra, ties by vertex index), reusing its arrays.
+/// Shortest paths in a graph with Euclidean edge lengths (Dijkstra, ties by vertex index), reusing its
+/// arrays.
 class Graph_path_finder {
  public:
   Graph_path_finder(const Adjacency& adjacency, const Point_matrix& P)
       : m_adjacency(adjacency), m_P(P), m_distance(P.rows), m_previous(P.rows), m_stamp(P.rows, 0) {}
 
   double length(Vertex_index a, Vertex_index b) const {
-    // Scaled where the squares overflow: edges 1e200 long made the automatic max_gap infinite (nothing bridged).
+    // Scaled where the squares overflow: edges 1e200 long made the automatic max_gap infinite (nothing
+    // bridged).
     return point_distance(m_P.row(a), m_P.row(b), m_P.dimension);
   }
 
@@ -159,9 +164,11 @@ class Graph_path_finder {
     std::vector<double> lengths;
     for (std::size_t v = 0; v < m_P.rows; ++v)
       for (std::size_t k = m_adjacency.offsets[v]; k < m_adjacency.offsets[v + 1]; ++k)
-        if (m_adjacency.targets[k] > v) lengths.push_back(length(static_cast<Vertex_index>(v), m_adjacency.targets[k]));
+        if (m_adjacency.targets[k] > v)
+          lengths.push_back(length(static_cast<Vertex_index>(v), m_adjacency.targets[k]));
     if (lengths.empty()) return 0;
-    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2),
+                     lengths.end());
     return lengths[lengths.size() / 2];
   }
 
@@ -216,9 +223,9 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
   return x;
 }
 
-/// The mean of the `count` finite numbers x(0), ..., x(count - 1): their sum in that order divided by count, or,
-/// when the sum overflows (numbers near the largest double), the sum of each divided by count. 0 when count = 0;
-/// the sum starts from x(0), so that the mean of -0.0s is -0.0.
+/// The mean of the `count` finite numbers x(0), ..., x(count - 1): their sum in that order divided by count,
+/// or, when the sum overflows (numbers near the largest double), the sum of each divided by count. 0 when
+/// count = 0; the sum starts from x(0), so that the mean of -0.0s is -0.0.
 template <class X>
 double mean_of(std::size_t count, const X& x) {
   if (count == 0) return 0.0;
@@ -236,11 +243,11 @@ struct Flat_embedding {
   std::vector<std::vector<double>> nodes;  ///< per node, P.dimension coordinates
   std::vector<std::vector<double>> arcs;   ///< per arc, P.dimension coordinates per polyline vertex
   double max_gap = std::numeric_limits<double>::infinity();  ///< see Reeb_graph_embedding::max_gap
-  Status status = Status::success;                          ///< see Reeb_graph_embedding::status
+  Status status = Status::success;                           ///< see Reeb_graph_embedding::status
 };
 
-/// The level width used when Embedding_options::level_width is 0: 1/64 of the range of the node values (1 when
-/// the range is empty).
+/// The level width used when Embedding_options::level_width is 0: 1/64 of the range of the node values (1
+/// when the range is empty).
 inline double automatic_level_width(const Reeb_graph& G) {
   if (G.nodes.empty()) return 1.0;
   double fmin = G.nodes.front().value, fmax = fmin;
@@ -254,22 +261,25 @@ inline double automatic_level_width(const Reeb_graph& G) {
 /// Checks the values of Embedding_options (throws naming `fn`).
 inline void check_embedding_options(const Embedding_options& options, const char* fn) {
   if (!(options.level_width >= 0))  // infinity: one piece per arc
-    FeatureRecon::internal::throw_invalid_argument(fn, "embedding level_width must be >= 0 (0: automatic), got ",
-                                                   options.level_width);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "embedding level_width must be >= 0 (0: automatic), got ", options.level_width);
   if (options.smoothing != Embedding_options::Smoothing::taubin &&
       options.smoothing != Embedding_options::Smoothing::laplacian)
-    FeatureRecon::internal::throw_invalid_argument(fn, "embedding smoothing must be taubin or laplacian, got ",
-                                                   static_cast<int>(options.smoothing));
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "embedding smoothing must be taubin or laplacian, got ", static_cast<int>(options.smoothing));
   if (options.smoothing == Embedding_options::Smoothing::taubin &&
       !(options.smoothing_weight >= 0 && options.smoothing_weight <= 2.0 / 3))
-    FeatureRecon::internal::throw_invalid_argument(fn, "embedding smoothing_weight must lie in [0, 2/3] for Taubin ",
-                                                   "smoothing (Laplacian: [0, 1]), got ", options.smoothing_weight);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "embedding smoothing_weight must lie in [0, 2/3] for Taubin ",
+        "smoothing (Laplacian: [0, 1]), got ", options.smoothing_weight);
   if (!(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "embedding smoothing_weight must lie in [0, 1], got ",
                                                    options.smoothing_weight);
   if (std::isnan(options.max_gap))
-    FeatureRecon::internal::throw_invalid_argument(fn, "embedding max_gap must not be NaN (0: automatic, negative: "
-                                                   "off)");
+    FeatureRecon::internal::throw_invalid_argument(
+        fn,
+        "embedding max_gap must not be NaN (0: automatic, negative: "
+        "off)");
 }
 
 inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency, const Point_matrix& P,
@@ -277,8 +287,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   const char* fn = "embed_reeb_graph";
   const std::size_t d = P.dimension;
   if (P.rows != values.size())
-    FeatureRecon::internal::throw_invalid_argument(fn, "positions and values differ in size (", P.rows, " vs ",
-                                                   values.size(), ")");
+    FeatureRecon::internal::throw_invalid_argument(fn, "positions and values differ in size (", P.rows,
+                                                   " vs ", values.size(), ")");
   if (adjacency != nullptr && adjacency->offsets.size() != P.rows + 1)
     FeatureRecon::internal::throw_invalid_argument(fn, "the graph has ", adjacency->offsets.size() - 1,
                                                    " vertices but there are ", P.rows, " positions");
@@ -287,7 +297,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     if (v >= P.rows)
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " out of range [0, ", P.rows, ")");
     if (!std::isfinite(values[v]))
-      FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has value ", values[v], " (finite needed)");
+      FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has value ", values[v],
+                                                     " (finite needed)");
     for (std::size_t c = 0; c < d; ++c)
       if (!std::isfinite(P.row(v)[c]))
         FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has coordinate ", P.row(v)[c],
@@ -324,7 +335,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   for (std::size_t a = 0; a < G.arcs.size(); ++a)
     if (!(G.arcs[a].lower < G.nodes.size() && G.arcs[a].upper < G.nodes.size()))
       FeatureRecon::internal::throw_invalid_argument(fn, "arc ", a, " joins nodes (", G.arcs[a].lower, ", ",
-                                                     G.arcs[a].upper, ") out of range [0, ", G.nodes.size(), ")");
+                                                     G.arcs[a].upper, ") out of range [0, ", G.nodes.size(),
+                                                     ")");
   // Progress by points drawn (an arc counts its points and one more), reported every 2^16 of them.
   double total_work = 0, work = 0, reported = 0;
   for (const auto& arc : G.arcs) total_work += static_cast<double>(arc.vertices.size() + 1);
@@ -374,7 +386,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     size.assign(vs.size(), 0);
     for (std::size_t i = 0; i < vs.size(); ++i) ++size[find_root(parent, i)];
     std::vector<double> line(E.nodes[arc.lower]);
-    std::vector<Vertex_index> origin{G.nodes[arc.lower].vertex};  // the input point each polyline point stands for
+    std::vector<Vertex_index> origin{
+        G.nodes[arc.lower].vertex};  // the input point each polyline point stands for
     std::size_t i = 0;
     while (i < vs.size()) {
       // The largest piece of the run (ties: the one holding the earliest point) carries the polyline.
@@ -393,8 +406,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       origin.push_back(vs[i]);
       for (std::size_t t = i; finder && t < j; ++t) {
         if (find_root(parent, t) != best) continue;
-        // Distances scaled as point_distance() scales them: squares underflowed below about 1e-160 (every point
-        // tied at 0) and overflowed above about 1e154.
+        // Distances scaled as point_distance() scales them: squares underflowed below about 1e-160 (every
+        // point tied at 0) and overflowed above about 1e154.
         const double s = point_distance(P.row(vs[t]), line.data() + at, d);
         if (s < closest) {
           closest = s;
@@ -408,8 +421,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     if (finder) {  // bridge wide gaps through the graph
       std::vector<double> bridged(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(d));
       // Appends a point, except where the polyline would go out and back to the same point: a bridge's last
-      // vertex X, the piece's centroid B beside it, the next bridge leaving through X again (X B X C becomes X B C;
-      // at the upper node, W X B X becomes W X, and X B X stays).
+      // vertex X, the piece's centroid B beside it, the next bridge leaving through X again (X B X C becomes
+      // X B C; at the upper node, W X B X becomes W X, and X B X stays).
       auto append = [&](const double* p, bool last) {
         const std::size_t n = bridged.size() / d;
         if (n >= 2 && std::equal(p, p + d, bridged.begin() + static_cast<std::ptrdiff_t>((n - 2) * d)) &&
@@ -421,10 +434,11 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       };
       std::vector<double> mean(d);
       for (std::size_t t = 1; t < origin.size(); ++t) {
-        // As the graph's edge lengths are measured (the squares made bridging depend on the scale: nothing was
-        // bridged below about 1e-160, every gap above about 1e154).
+        // As the graph's edge lengths are measured (the squares made bridging depend on the scale: nothing
+        // was bridged below about 1e-160, every gap above about 1e154).
         const double gap = point_distance(line.data() + (t - 1) * d, line.data() + t * d, d);
-        if (gap > max_gap && origin[t] != origin[t - 1] && finder->path(origin[t - 1], origin[t], 4 * gap + max_gap, path))
+        if (gap > max_gap && origin[t] != origin[t - 1] &&
+            finder->path(origin[t - 1], origin[t], 4 * gap + max_gap, path))
           for (const Vertex_index v : path) {
             const std::size_t first = adjacency->offsets[v], count = 1 + adjacency->offsets[v + 1] - first;
             for (std::size_t c = 0; c < d; ++c)  // the mean of v and its neighbours
@@ -447,7 +461,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       for (std::size_t t = 1; t + 1 < n; ++t)
         for (std::size_t k = 0; k < d; ++k) {
           const double x = line[t * d + k];
-          const double mean = 0.5 * line[(t - 1) * d + k] + 0.5 * line[(t + 1) * d + k];  // a sum could overflow
+          const double mean =
+              0.5 * line[(t - 1) * d + k] + 0.5 * line[(t + 1) * d + k];  // a sum could overflow
           next[t * d + k] = (1 - w) * x + w * mean;
           // Near the largest double, Taubin's (1 - w) x with w < 0 overflows: the same step as a move of x.
           if (!std::isfinite(next[t * d + k])) next[t * d + k] = x + w * (mean - x);
@@ -489,16 +504,17 @@ inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacenc
 }  // namespace internal
 
 namespace internal {
-/// Eigenpairs (descending algebraic eigenvalues, unit eigenvectors as columns) of the `count` largest eigenvalues
-/// of the symmetric matrix B. Dense (Eigen's SelfAdjointEigenSolver, O(n^3)) when n <= dense_limit or n < 64;
-/// otherwise a block Krylov subspace with full reorthogonalisation and Rayleigh-Ritz (block Lanczos), a fixed
-/// seeded start block of 8 vectors (eigenvalues of multiplicity up to 8 are found), grown until every wanted Ritz
-/// pair has residual |B v - theta v| <= max(1e-10 |theta|, 1e-14 |B|_inf); O(n^2) per block. At 128 columns the
-/// basis restarts from its 64 best Ritz vectors and the next block (thick restart), which bounds the memory and the
-/// Rayleigh-Ritz cost per block. Falls back to the dense solver when that is not reached after n columns (products
-/// costing about what the dense solver costs). B should be scaled so that |B|_inf is about 1 (residual norms are not
-/// rescaled). `progress` is asked after each block with half the fraction of that n-column budget used, and with
-/// 0.5 before a dense fallback; false sets `stopped` and returns what has been computed so far (maybe nothing).
+/// Eigenpairs (descending algebraic eigenvalues, unit eigenvectors as columns) of the `count` largest
+/// eigenvalues of the symmetric matrix B. Dense (Eigen's SelfAdjointEigenSolver, O(n^3)) when n <=
+/// dense_limit or n < 64; otherwise a block Krylov subspace with full reorthogonalisation and Rayleigh-Ritz
+/// (block Lanczos), a fixed seeded start block of 8 vectors (eigenvalues of multiplicity up to 8 are found),
+/// grown until every wanted Ritz pair has residual |B v - theta v| <= max(1e-10 |theta|, 1e-14 |B|_inf);
+/// O(n^2) per block. At 128 columns the basis restarts from its 64 best Ritz vectors and the next block
+/// (thick restart), which bounds the memory and the Rayleigh-Ritz cost per block. Falls back to the dense
+/// solver when that is not reached after n columns (products costing about what the dense solver costs). B
+/// should be scaled so that |B|_inf is about 1 (residual norms are not rescaled). `progress` is asked after
+/// each block with half the fraction of that n-column budget used, and with 0.5 before a dense fallback;
+/// false sets `stopped` and returns what has been computed so far (maybe nothing).
 inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dense_limit,
                            const Progress_callback& progress, bool& stopped, Eigen::VectorXd& values,
                            Eigen::MatrixXd& vectors) {
@@ -523,9 +539,10 @@ inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dens
     }
     dense();
   };
-  // Unrestarted, Gaussian noise in R^1000 (n = 2000) needed 328 columns and a metric of entries uniform in [1, 2]
-  // 568: past the old limit of 320, where the dense solver then took 7-26 s, and the Rayleigh-Ritz step on 568
-  // columns alone costs 5 s. Restarted at 128 columns they converge after 43 and 76 blocks of 8 (0.8 and 1.4 s).
+  // Unrestarted, Gaussian noise in R^1000 (n = 2000) needed 328 columns and a metric of entries uniform in
+  // [1, 2] 568: past the old limit of 320, where the dense solver then took 7-26 s, and the Rayleigh-Ritz
+  // step on 568 columns alone costs 5 s. Restarted at 128 columns they converge after 43 and 76 blocks of 8
+  // (0.8 and 1.4 s).
   const Eigen::Index block = 8, basis = std::min<Eigen::Index>(N / 2, 128), keep = basis / 2, budget = N;
   const double scale = B.cwiseAbs().rowwise().sum().maxCoeff();  // |B|_inf >= |B|_2
   values = Eigen::VectorXd::Zero(wanted);
@@ -539,8 +556,9 @@ inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dens
   for (Eigen::Index j = 0; j < block; ++j)
     for (Eigen::Index i = 0; i < N; ++i) W(i, j) = random.normal();
   Eigen::MatrixXd Q(N, 0), BQ(N, 0), T(0, 0);
-  // Orthonormalises the columns of X against Q and one another (two Gram-Schmidt passes), dropping columns that
-  // vanish (the subspace is then invariant in that direction); returns how many are left (the first columns of X).
+  // Orthonormalises the columns of X against Q and one another (two Gram-Schmidt passes), dropping columns
+  // that vanish (the subspace is then invariant in that direction); returns how many are left (the first
+  // columns of X).
   const auto orthonormalise = [&](Eigen::MatrixXd& X) {
     Eigen::Index kept = 0;
     for (Eigen::Index j = 0; j < X.cols(); ++j) {
@@ -594,8 +612,8 @@ inline void top_eigenpairs(const Eigen::MatrixXd& B, int count, std::size_t dens
     W = product;
     fresh = orthonormalise(W);  // against the whole basis, also before a restart: B Q stays in span(Q, W)
     if (k + fresh > basis) {
-      // Thick restart: the best Ritz vectors Y = Q S satisfy B Y = Y Theta + W R, so Y and the next block W still
-      // span a Krylov subspace, and the search goes on in it.
+      // Thick restart: the best Ritz vectors Y = Q S satisfy B Y = Y Theta + W R, so Y and the next block W
+      // still span a Krylov subspace, and the search goes on in it.
       const Eigen::MatrixXd S = ritz.eigenvectors().rightCols(std::min(keep, k));
       Q = (Q * S).eval();
       BQ = (BQ * S).eval();
@@ -613,7 +631,8 @@ inline void check_mds_size(const std::vector<double>& D, std::size_t n) {
     FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "D has ", D.size(),
                                                    " entries, not n * n for n = ", n);
   if (n == 0 && !D.empty())
-    FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "D has ", D.size(), " entries for n = 0");
+    FeatureRecon::internal::throw_invalid_argument("classical_mds_3d", "D has ", D.size(),
+                                                   " entries for n = 0");
 }
 
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n,
@@ -637,7 +656,8 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
   Eigen::MatrixXd B(N, N);
   for (Eigen::Index i = 0; i < N; ++i)
     for (Eigen::Index j = 0; j < N; ++j) {
-      const double d = std::ldexp(D[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)], -distance_exponent);
+      const double d =
+          std::ldexp(D[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)], -distance_exponent);
       B(i, j) = -0.5 * d * d;
     }
   const Eigen::VectorXd row_mean = B.rowwise().mean();
@@ -662,26 +682,27 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
     if (v[k] < 0) v = -v;
     const double length = std::sqrt(lambda);
     for (Eigen::Index i = 0; i < N; ++i)
-      out[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = std::ldexp(v[i] * length, distance_exponent);
+      out[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
+          std::ldexp(v[i] * length, distance_exponent);
   }
   return out;
 }
 }  // namespace internal
 
 /// Classical multidimensional scaling of a dense distance matrix (row-major n x n) into at most 3 dimensions:
-/// the eigenvectors of the double-centred squared distances for the three largest eigenvalues, scaled by their
-/// square roots (negative eigenvalues give 0). Deterministic signs as in project_to_3d(). Up to n = 300 a dense
-/// eigendecomposition; above, a seeded block Krylov (Lanczos) solver for the three largest eigenpairs, O(n^2) per
-/// step of 8 vectors, restarted at 128 vectors. n = 2000: 0.1-0.3 s in a few steps when the top eigenvalues stand
-/// apart (points near a curve or surface; the dense solver needs 6-9 s); where they crowd together (Gaussian noise
-/// in R^1000, a metric of entries uniform in [1, 2]) 43-76 steps, 0.8-1.4 s where the dense solver takes 8-15 s on
-/// them. The dense solver again, announced and stoppable, when the Krylov one has not converged after n vectors
-/// (those two converge within a third of that). Eigenvalues of multiplicity up to 8 are found. Coordinates inside
-/// an eigenspace of multiplicity above one are one orthonormal basis of it (distances between the embedded points
-/// do not depend on which).
-/// \throws std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
-///         or not finite, the first diagonal entry that is not 0, or the first pair (i, j), i < j, where D is not
-///         symmetric.
+/// the eigenvectors of the double-centred squared distances for the three largest eigenvalues, scaled by
+/// their square roots (negative eigenvalues give 0). Deterministic signs as in project_to_3d(). Up to n = 300
+/// a dense eigendecomposition; above, a seeded block Krylov (Lanczos) solver for the three largest
+/// eigenpairs, O(n^2) per step of 8 vectors, restarted at 128 vectors. n = 2000: 0.1-0.3 s in a few steps
+/// when the top eigenvalues stand apart (points near a curve or surface; the dense solver needs 6-9 s); where
+/// they crowd together (Gaussian noise in R^1000, a metric of entries uniform in [1, 2]) 43-76 steps, 0.8-1.4
+/// s where the dense solver takes 8-15 s on them. The dense solver again, announced and stoppable, when the
+/// Krylov one has not converged after n vectors (those two converge within a third of that). Eigenvalues of
+/// multiplicity up to 8 are found. Coordinates inside an eigenspace of multiplicity above one are one
+/// orthonormal basis of it (distances between the embedded points do not depend on which). \throws
+/// std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
+///         or not finite, the first diagonal entry that is not 0, or the first pair (i, j), i < j, where D is
+///         not symmetric.
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
   bool stopped = false;
   internal::check_mds_size(D, n);
@@ -691,16 +712,18 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
 
 /// Options of classical_mds_3d() with a progress callback.
 struct Classical_mds_options {
-  /// Called with 0 at the start, between the steps of the block Krylov solver (above 300 points) with half the
-  /// fraction of its budget of n vectors, with 0.5 before the dense solver when the Krylov one falls back to it, and
-  /// with 1 at the end; returning false stops: every position 0, status interrupted.
+  /// Called with 0 at the start, between the steps of the block Krylov solver (above 300 points) with half
+  /// the fraction of its budget of n vectors, with 0.5 before the dense solver when the Krylov one falls back
+  /// to it, and with 1 at the end; returning false stops: every position 0, status interrupted.
   Progress_callback progress;
 };
 
 /// Result of classical_mds_3d() with options.
 struct Classical_mds {
-  std::vector<std::array<double, 3>> positions;  ///< one per row of D, as the two-argument overload returns them
-  Status status = Status::success;  ///< interrupted when the progress callback stopped the run (positions all 0)
+  std::vector<std::array<double, 3>>
+      positions;  ///< one per row of D, as the two-argument overload returns them
+  Status status =
+      Status::success;  ///< interrupted when the progress callback stopped the run (positions all 0)
 };
 
 /// classical_mds_3d() that reports progress and can be stopped; the same positions when it runs to the end.
@@ -726,13 +749,14 @@ inline Classical_mds classical_mds_3d(const std::vector<double>& D, std::size_t 
 
 /// Embeds a Reeb graph (dissertation Ch. 3.3.1): a node sits at the centroid of its points (its vertex and
 /// members); an arc becomes a polyline from its lower node through the centroids of its level-set pieces (its
-/// points cut into bins of function value) to its upper node, then smoothed with fixed ends (Taubin or Laplacian
-/// rounds, Embedding_options::smoothing).
-/// Without a graph, all of an arc's points in one bin form one piece.
-/// \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param values f per point.
-/// \pre every vertex of G indexes positions and values, with finite coordinates and value (checked; throws
+/// points cut into bins of function value) to its upper node, then smoothed with fixed ends (Taubin or
+/// Laplacian rounds, Embedding_options::smoothing). Without a graph, all of an arc's points in one bin form
+/// one piece. \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param
+/// values f per point. \pre every vertex of G indexes positions and values, with finite coordinates and value
+/// (checked; throws
 ///      naming the vertex); level_width >= 0, weight in [0, 1] (checked; throws).
-inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const std::vector<std::array<double, 3>>& positions,
+inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G,
+                                             const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,
                                              const Embedding_options& options = {}) {
   return internal::embed_reeb_graph(G, nullptr, positions, values, dimension, options);
@@ -743,13 +767,14 @@ struct Reeb_graph_input_embedding {
   std::size_t dimension = 0;                        ///< dimension of the input points
   std::vector<std::vector<double>> node_positions;  ///< per node, `dimension` coordinates
   std::vector<std::vector<double>> arc_polylines;   ///< per arc, `dimension` coordinates per polyline vertex
-  Status status = Status::success;                  ///< interrupted when the progress callback stopped the drawing
+  Status status = Status::success;  ///< interrupted when the progress callback stopped the drawing
 };
 
-/// embed_reeb_graph() in the input space itself (no projection): the same centroids of level-set pieces and the
-/// same smoothing, in any dimension. Used to measure how far arcs are from a true graph in R^d.
-/// \pre graph.number_of_vertices == points.rows == values.size(); coordinates finite (checked; throws).
-inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_graph& G, const Proximity_graph& graph,
+/// embed_reeb_graph() in the input space itself (no projection): the same centroids of level-set pieces and
+/// the same smoothing, in any dimension. Used to measure how far arcs are from a true graph in R^d. \pre
+/// graph.number_of_vertices == points.rows == values.size(); coordinates finite (checked; throws).
+inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_graph& G,
+                                                                  const Proximity_graph& graph,
                                                                   const Point_matrix& points,
                                                                   const std::vector<double>& values,
                                                                   const Embedding_options& options = {}) {
@@ -764,12 +789,13 @@ inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_gra
   return E;
 }
 
-/// embed_reeb_graph() where a level-set piece is a connected component, in `graph` (the 1-skeleton of the complex
-/// the Reeb graph was computed on), of an arc's points in one bin. When simplification merged several pieces into
-/// one arc (a removed branch or the two sides of a thin loop), the polyline goes through the largest piece, so
-/// removed features do not pull it off the surviving path. Where consecutive polyline points lie farther apart
-/// than Embedding_options::max_gap, the polyline follows the graph's shortest path between them.
-/// \pre graph.number_of_vertices == positions.size() (checked; throws); max_gap not NaN (checked; throws).
+/// embed_reeb_graph() where a level-set piece is a connected component, in `graph` (the 1-skeleton of the
+/// complex the Reeb graph was computed on), of an arc's points in one bin. When simplification merged several
+/// pieces into one arc (a removed branch or the two sides of a thin loop), the polyline goes through the
+/// largest piece, so removed features do not pull it off the surviving path. Where consecutive polyline
+/// points lie farther apart than Embedding_options::max_gap, the polyline follows the graph's shortest path
+/// between them. \pre graph.number_of_vertices == positions.size() (checked; throws); max_gap not NaN
+/// (checked; throws).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Proximity_graph& graph,
                                              const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,

@@ -4,8 +4,8 @@
 #define FEATURERECON_SKELETON_ESTIMATE_RIPS_RADIUS_H
 
 // A Rips radius derived from the data: the scale at which a sample of a graph (a curve network with noise)
-// starts to look one-dimensional, read off the correlation integral (the mean number of neighbours within r as
-// a function of r, whose log-log slope is the dimension the points show at scale r).
+// starts to look one-dimensional, read off the correlation integral (the mean number of neighbours within r
+// as a function of r, whose log-log slope is the dimension the points show at scale r).
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
@@ -25,24 +25,24 @@ namespace skeleton {
 
 /// Options of estimate_rips_radius().
 struct Rips_radius_options {
-  /// Points whose distances to all points are measured, spread evenly by index (point t * n / m for t < m); all
-  /// points when there are fewer. The work is m * n distances. Default 1000.
+  /// Points whose distances to all points are measured, spread evenly by index (point t * n / m for t < m);
+  /// all points when there are fewer. The work is m * n distances. Default 1000.
   std::size_t reference_points = 1000;
   /// The scale is not below the radius at which a point has this many neighbours on average. Default 8.
   double min_neighbours = 8;
-  /// The scale is the smallest radius at which the points show at most the intrinsic dimension plus this. Default
-  /// 0.5.
+  /// The scale is the smallest radius at which the points show at most the intrinsic dimension plus this.
+  /// Default 0.5.
   double dimension_margin = 0.5;
   /// The radius is this times the scale. Default 1.5.
   double radius_factor = 1.5;
-  /// The radius is also at least the first profile radius within which a point has 2 ln(n / max_expected_gaps)
-  /// neighbours on average (at most (n - 1) / 2): where n points lie at random (Poisson) along curves, a point has
-  /// 2 lambda r neighbours within r (lambda points per unit length), and the expected number of gaps wider than r,
-  /// n exp(-lambda r), is then at most max_expected_gaps. A gap wider than the radius splits the skeleton. Default
-  /// 0.05.
+  /// The radius is also at least the first profile radius within which a point has 2 ln(n /
+  /// max_expected_gaps) neighbours on average (at most (n - 1) / 2): where n points lie at random (Poisson)
+  /// along curves, a point has 2 lambda r neighbours within r (lambda points per unit length), and the
+  /// expected number of gaps wider than r, n exp(-lambda r), is then at most max_expected_gaps. A gap wider
+  /// than the radius splits the skeleton. Default 0.05.
   double max_expected_gaps = 0.05;
-  /// The suggested persistence threshold is at least this times the scale (Rips_radius_estimate::delta). Default
-  /// 2.25 (1.5 times the default radius_factor).
+  /// The suggested persistence threshold is at least this times the scale (Rips_radius_estimate::delta).
+  /// Default 2.25 (1.5 times the default radius_factor).
   double delta_factor = 2.25;
   Progress_callback progress;  ///< called with the fraction of reference points done; returning false stops
 };
@@ -50,43 +50,44 @@ struct Rips_radius_options {
 /// Result of estimate_rips_radius().
 struct Rips_radius_estimate {
   double radius = 0;  ///< max(radius_factor * scale, gap_radius): the Rips radius to use
-  /// The scale read off the profile: the upper edge 2^((b+1)/4) of the first quarter-octave bin b at which the
-  /// mean number of neighbours is at least min_neighbours and the local dimension at most intrinsic_dimension +
-  /// dimension_margin. 0 when every distance is 0 or there are fewer than two points.
+  /// The scale read off the profile: the upper edge 2^((b+1)/4) of the first quarter-octave bin b at which
+  /// the mean number of neighbours is at least min_neighbours and the local dimension at most
+  /// intrinsic_dimension + dimension_margin. 0 when every distance is 0 or there are fewer than two points.
   double scale = 0;
-  /// The smallest local dimension (slope of log mean neighbours against log r over one octave) where a point has
-  /// min_neighbours to (n - 1) / 4 neighbours on average; NaN when no bin lies in that range (few points, or the
-  /// count jumps across it: then the scale is the first radius with min(min_neighbours, (n - 1) / 2) neighbours).
+  /// The smallest local dimension (slope of log mean neighbours against log r over one octave) where a point
+  /// has min_neighbours to (n - 1) / 4 neighbours on average; NaN when no bin lies in that range (few points,
+  /// or the count jumps across it: then the scale is the first radius with min(min_neighbours, (n - 1) / 2)
+  /// neighbours).
   double intrinsic_dimension = std::numeric_limits<double>::quiet_NaN();
-  double mean_neighbours = 0;            ///< mean number of other points within `scale` of a reference point
-  /// The first profile radius with 2 ln(n / max_expected_gaps) neighbours (at most (n - 1) / 2) on average: the
-  /// radius is the larger of it and radius_factor * scale. 0 when the scale is 0.
+  double mean_neighbours = 0;  ///< mean number of other points within `scale` of a reference point
+  /// The first profile radius with 2 ln(n / max_expected_gaps) neighbours (at most (n - 1) / 2) on average:
+  /// the radius is the larger of it and radius_factor * scale. 0 when the scale is 0.
   double gap_radius = 0;
   /// A persistence threshold for the skeleton at this radius: max(radius, delta_factor * scale). Noise makes
-  /// branches and loops of persistence up to about the band's width plus the radius: with delta = radius, 7 of 20
-  /// noisy circles of 3,000 points kept a spur; with this delta none, while the branches of sparse trees (4 to 6
-  /// long, radius 2 from gap_radius) all stay (doc/skeleton.md).
+  /// branches and loops of persistence up to about the band's width plus the radius: with delta = radius, 7
+  /// of 20 noisy circles of 3,000 points kept a spur; with this delta none, while the branches of sparse
+  /// trees (4 to 6 long, radius 2 from gap_radius) all stay (doc/skeleton.md).
   double delta = 0;
-  /// The distinct points measured: copies (equal coordinates; for a matrix, equal rows) are one point, as the Rips
-  /// stage of extract_reeb_skeleton() joins them (counted apart, 3 copies of every point of
+  /// The distinct points measured: copies (equal coordinates; for a matrix, equal rows) are one point, as the
+  /// Rips stage of extract_reeb_skeleton() joins them (counted apart, 3 copies of every point of
   /// test/data/figure_eight.xyz took the radius from 0.59 to 0.25).
   std::size_t distinct_points = 0;
-  std::size_t reference_points = 0;      ///< how many distinct points were measured against all distinct points
-  /// The profile: radii[k] = 2^((b+1)/4) for consecutive bins b from the smallest positive distance to the largest
-  /// (rounded: below 2^-1022 two edges can be equal; the last at most the largest double), and
+  std::size_t reference_points = 0;  ///< how many distinct points were measured against all distinct points
+  /// The profile: radii[k] = 2^((b+1)/4) for consecutive bins b from the smallest positive distance to the
+  /// largest (rounded: below 2^-1022 two edges can be equal; the last at most the largest double), and
   /// mean_neighbours_within[k] the mean number of other distinct points at distance < radii[k] of a reference
   /// point (rows of a matrix at distance 0 that are not copies count at every radius).
   std::vector<double> radii;
   std::vector<double> mean_neighbours_within;  ///< see radii
-  /// degenerate_input: fewer than two points or every distance 0 (radius 0); interrupted: the callback stopped
-  /// the measurement (radius 0, empty profile).
+  /// degenerate_input: fewer than two points or every distance 0 (radius 0); interrupted: the callback
+  /// stopped the measurement (radius 0, empty profile).
   Status status = Status::success;
 };
 
 namespace internal {
 
-/// The quarter-octave bin of a distance d > 0: the b with 2^(b/4) <= d < 2^((b+1)/4), from its binary exponent and
-/// three exact comparisons of the mantissa (no logarithm: the same on every platform).
+/// The quarter-octave bin of a distance d > 0: the b with 2^(b/4) <= d < 2^((b+1)/4), from its binary
+/// exponent and three exact comparisons of the mantissa (no logarithm: the same on every platform).
 inline int quarter_octave_bin(double d) {
   int e = 0;
   const double f = std::frexp(d, &e);  // d = f * 2^e, f in [0.5, 1)
@@ -109,7 +110,8 @@ class Correlation_profile {
       ++zeros_;
       return;
     }
-    // A distance beyond the largest double (point_distance() of coordinates near +-1e308) is binned at 2^1024.
+    // A distance beyond the largest double (point_distance() of coordinates near +-1e308) is binned at
+    // 2^1024.
     const int b = d < std::numeric_limits<double>::infinity() ? quarter_octave_bin(d) : 4096;
     if (counts_.empty()) {
       low_ = b;
@@ -143,10 +145,13 @@ class Correlation_profile {
     }
     out.mean_neighbours_within = within;
     // The local dimension at bin k: the slope over the octave from k - 2 to k + 2 (4 bins).
-    auto slope = [&](std::size_t k) { return (std::log(within[k + 2]) - std::log(within[k - 2])) / std::log(2.0); };
+    auto slope = [&](std::size_t k) {
+      return (std::log(within[k + 2]) - std::log(within[k - 2])) / std::log(2.0);
+    };
     const double top = static_cast<double>(n - 1) / 4;
     auto in_range = [&](std::size_t k) {
-      return k >= 2 && k + 2 < bins && within[k - 2] > 0 && within[k] >= options.min_neighbours && within[k] <= top;
+      return k >= 2 && k + 2 < bins && within[k - 2] > 0 && within[k] >= options.min_neighbours &&
+             within[k] <= top;
     };
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < bins; ++k)
@@ -169,8 +174,8 @@ class Correlation_profile {
     }
     out.scale = out.radii[chosen];
     out.mean_neighbours = within[chosen];
-    const double gap_need =
-        std::min(2 * std::log(static_cast<double>(n) / options.max_expected_gaps), static_cast<double>(n - 1) / 2);
+    const double gap_need = std::min(2 * std::log(static_cast<double>(n) / options.max_expected_gaps),
+                                     static_cast<double>(n - 1) / 2);
     for (std::size_t k = 0; k < bins; ++k)
       if (within[k] >= gap_need) {
         out.gap_radius = out.radii[k];
@@ -189,7 +194,8 @@ class Correlation_profile {
 };
 
 inline void check_rips_radius_options(const Rips_radius_options& o, const char* fn) {
-  if (o.reference_points == 0) FeatureRecon::internal::throw_invalid_argument(fn, "reference_points must be >= 1");
+  if (o.reference_points == 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, "reference_points must be >= 1");
   if (!(o.min_neighbours >= 1 && std::isfinite(o.min_neighbours)))
     FeatureRecon::internal::throw_invalid_argument(fn, "min_neighbours must be finite and >= 1, got ",
                                                    o.min_neighbours);
@@ -197,17 +203,19 @@ inline void check_rips_radius_options(const Rips_radius_options& o, const char* 
     FeatureRecon::internal::throw_invalid_argument(fn, "dimension_margin must be finite and >= 0, got ",
                                                    o.dimension_margin);
   if (!(o.radius_factor > 0 && o.radius_factor <= 0x1p100))
-    FeatureRecon::internal::throw_invalid_argument(fn, "radius_factor must be in (0, 2^100], got ", o.radius_factor);
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius_factor must be in (0, 2^100], got ",
+                                                   o.radius_factor);
   if (!(o.delta_factor >= 0 && o.delta_factor <= 0x1p100))
-    FeatureRecon::internal::throw_invalid_argument(fn, "delta_factor must be in [0, 2^100], got ", o.delta_factor);
+    FeatureRecon::internal::throw_invalid_argument(fn, "delta_factor must be in [0, 2^100], got ",
+                                                   o.delta_factor);
   if (!(o.max_expected_gaps > 0 && o.max_expected_gaps <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "max_expected_gaps must be in (0, 1], got ",
                                                    o.max_expected_gaps);
 }
 
-/// The estimate over the distinct points (`first[i]` the first copy of point i, empty when all are distinct) of
-/// n points, `distance(i, j)` the distance of points i and j: reference points evenly spread over the distinct
-/// ones, each measured against every other distinct one.
+/// The estimate over the distinct points (`first[i]` the first copy of point i, empty when all are distinct)
+/// of n points, `distance(i, j)` the distance of points i and j: reference points evenly spread over the
+/// distinct ones, each measured against every other distinct one.
 template <class Distance>
 Rips_radius_estimate estimate_over_distinct(std::size_t n, const std::vector<Vertex_index>& first,
                                             const Rips_radius_options& options, Distance&& distance) {
@@ -224,7 +232,8 @@ Rips_radius_estimate estimate_over_distinct(std::size_t n, const std::vector<Ver
   };
   Correlation_profile profile;
   for (std::size_t t = 0; t < m; ++t) {
-    if (!FeatureRecon::internal::report_progress(options.progress, static_cast<double>(t) / static_cast<double>(m)))
+    if (!FeatureRecon::internal::report_progress(options.progress,
+                                                 static_cast<double>(t) / static_cast<double>(m)))
       return stopped();
     // floor(t * d / m) without forming t * d (m <= d; t * (d % m) < m^2).
     const std::size_t i = distinct[m == d ? t : t * (d / m) + t * (d % m) / m];
@@ -239,42 +248,47 @@ Rips_radius_estimate estimate_over_distinct(std::size_t n, const std::vector<Ver
 
 }  // namespace internal
 
-/// A Rips radius for extract_reeb_skeleton() from the points alone: the scale at which they look like a graph.
+/// A Rips radius for extract_reeb_skeleton() from the points alone: the scale at which they look like a
+/// graph.
 ///
 /// A noisy sample of a curve network looks as many-dimensional as its noise below the noise's width and
-/// one-dimensional above it, up to the size of its loops and branches. The mean number N(r) of other points within
-/// r of a point (the correlation integral, measured from `reference_points` points evenly spread by index against
-/// all) has a log-log slope that reads that dimension at each scale. The intrinsic dimension is the smallest slope
-/// over one octave where a point has between min_neighbours and (n - 1) / 4 neighbours on average (1 for curves; 2
-/// for a sampled surface); the scale is the first radius, on a grid of quarter octaves, with min_neighbours
-/// neighbours where the slope has come down to within dimension_margin of it; the radius is radius_factor times
-/// the scale, or more where the points are too few for it to bridge the random gaps between them (gap_radius).
-/// A 2D band of width w around a curve gives a scale of about w, so the Rips complex joins across the band (its
-/// level sets are then pieces of the curve) while branches and loops wider than a few times w stay apart.
-/// Measured on noisy trees, circles, a trefoil, a Y and figure-eights in R^2, R^3 and R^50 (doc/skeleton.md,
-/// "A radius from the data"): at the estimated radius and delta all but 1 of 120 samples give their true loops
-/// and branches (a trefoil of 1,000 points with a random gap wider than the radius).
+/// one-dimensional above it, up to the size of its loops and branches. The mean number N(r) of other points
+/// within r of a point (the correlation integral, measured from `reference_points` points evenly spread by
+/// index against all) has a log-log slope that reads that dimension at each scale. The intrinsic dimension is
+/// the smallest slope over one octave where a point has between min_neighbours and (n - 1) / 4 neighbours on
+/// average (1 for curves; 2 for a sampled surface); the scale is the first radius, on a grid of quarter
+/// octaves, with min_neighbours neighbours where the slope has come down to within dimension_margin of it;
+/// the radius is radius_factor times the scale, or more where the points are too few for it to bridge the
+/// random gaps between them (gap_radius). A 2D band of width w around a curve gives a scale of about w, so
+/// the Rips complex joins across the band (its level sets are then pieces of the curve) while branches and
+/// loops wider than a few times w stay apart. Measured on noisy trees, circles, a trefoil, a Y and
+/// figure-eights in R^2, R^3 and R^50 (doc/skeleton.md, "A radius from the data"): at the estimated radius
+/// and delta all but 1 of 120 samples give their true loops and branches (a trefoil of 1,000 points with a
+/// random gap wider than the radius).
 ///
-/// Copies of a point count once (Rips_radius_estimate::distinct_points): the Rips stage joins them, and duplicating
-/// the input leaves the estimate as it was. Deterministic: distances are binned by exact comparisons of their
-/// mantissas. Work: a sort to find the copies, then m * n distances (m = min(n, reference_points), n distinct).
-/// \returns radius 0 and status degenerate_input for fewer than two distinct points; status interrupted (radius
+/// Copies of a point count once (Rips_radius_estimate::distinct_points): the Rips stage joins them, and
+/// duplicating the input leaves the estimate as it was. Deterministic: distances are binned by exact
+/// comparisons of their mantissas. Work: a sort to find the copies, then m * n distances (m = min(n,
+/// reference_points), n distinct). \returns radius 0 and status degenerate_input for fewer than two distinct
+/// points; status interrupted (radius
 ///   0, empty profile) when the callback stopped it.
 /// \throws std::invalid_argument for options out of range and points as build_rips_graph() refuses them.
-inline Rips_radius_estimate estimate_rips_radius(const Point_matrix& points, const Rips_radius_options& options = {}) {
+inline Rips_radius_estimate estimate_rips_radius(const Point_matrix& points,
+                                                 const Rips_radius_options& options = {}) {
   const char* fn = "estimate_rips_radius";
   internal::check_rips_radius_options(options, fn);
   internal::check_point_matrix(points, fn);
   std::vector<Vertex_index> first;
   internal::first_copies(points, first);
-  return internal::estimate_over_distinct(points.rows, first, options, [&points](std::size_t i, std::size_t j) {
-    return internal::point_distance(points.row(i), points.row(j), points.dimension);
-  });
+  return internal::estimate_over_distinct(
+      points.rows, first, options, [&points](std::size_t i, std::size_t j) {
+        return internal::point_distance(points.row(i), points.row(j), points.dimension);
+      });
 }
 
 /// estimate_rips_radius() on a range of points through a PointCoordinateTraits model.
-template <class PointRange, class Traits = Point_coordinate_traits<
-                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
+                                decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Rips_radius_estimate estimate_rips_radius(const PointRange& points, const Rips_radius_options& options = {},
                                           const Traits& traits = Traits()) {
   return estimate_rips_radius(make_point_matrix(points, traits, "estimate_rips_radius"), options);
@@ -291,9 +305,8 @@ Rips_radius_estimate estimate_rips_radius_from_distance_matrix(const Matrix& D,
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   std::vector<Vertex_index> first;
   internal::first_copies_of_rows(a, n, first);
-  return internal::estimate_over_distinct(n, first, options, [&a, n](std::size_t i, std::size_t j) {
-    return a[i * n + j];
-  });
+  return internal::estimate_over_distinct(n, first, options,
+                                          [&a, n](std::size_t i, std::size_t j) { return a[i * n + j]; });
 }
 
 }  // namespace skeleton

@@ -43,92 +43,96 @@ struct Skeleton_node {
 /// Edge bundle of a skeleton graph: an arc of the Reeb graph.
 struct Skeleton_arc {
   std::vector<std::array<double, 3>> polyline;  ///< from the lower node to the upper node
-  std::vector<Vertex_index> members;            ///< input points mapped into the arc, in increasing function value
+  std::vector<Vertex_index> members;  ///< input points mapped into the arc, in increasing function value
   /// Above 3D: the polyline in input space, row-major (input dimension per vertex); its PCA projection is
   /// `polyline`. Empty up to 3D, where `polyline` is in input space.
   std::vector<double> input_polyline;
 };
 
-/// The skeleton graph: nodes and arcs of the simplified Reeb graph with their embedding (parallel arcs allowed).
-using Skeleton_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, Skeleton_node, Skeleton_arc>;
+/// The skeleton graph: nodes and arcs of the simplified Reeb graph with their embedding (parallel arcs
+/// allowed).
+using Skeleton_graph =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, Skeleton_node, Skeleton_arc>;
 
 /// Options of extract_reeb_skeleton().
 struct Skeleton_options {
   double delta = 0;            ///< persistence threshold of the simplification (function unit); default 0
-  double repair_distance = 0;  ///< join degree-1 nodes at most this far apart in input space, then simplify again;
-                               ///< 0 (default): no repair
-  /// With a repair distance: also join each remaining degree-1 node to the closest point of another arc within
-  /// that distance, splitting the arc (connect_dead_ends(): T junctions with a gap). Default true.
+  double repair_distance = 0;  ///< join degree-1 nodes at most this far apart in input space, then simplify
+                               ///< again; 0 (default): no repair
+  /// With a repair distance: also join each remaining degree-1 node to the closest point of another arc
+  /// within that distance, splitting the arc (connect_dead_ends(): T junctions with a gap). Default true.
   bool connect_dead_ends = true;
   /// Remove connected components of height (range of f) at most this after simplification and repair; their
   /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all.
   double prune_height = 0;
-  /// Contract each arc joining two branch nodes (degree >= 3) that is at most this long in input space into one
-  /// node, each merged cluster at most this across (merge_close_branch_nodes()): where two curves cross or touch,
-  /// the level sets merge and split at slightly different values, and the Reeb graph draws one point of degree 4
-  /// as two forks joined by a short arc.
-  /// Negative (default -1): twice the level width of the embedding (Reeb_skeleton::level_width, by default the
-  /// median edge length of the complex, so about the Rips radius: where two curves cross at a right angle the
-  /// forks lie about that far apart, and closer features the complex does not resolve), in input units: for a
-  /// graph whose edge lengths are not the coordinates' distances (unit weights, say), times the ratio of the
-  /// median coordinate distance to the median length of its edges; 0: off. For a distance matrix an arc is at
-  /// least as long as the matrix's distance between its nodes' points (the MDS drawing may shorten it).
+  /// Contract each arc joining two branch nodes (degree >= 3) that is at most this long in input space into
+  /// one node, each merged cluster at most this across (merge_close_branch_nodes()): where two curves cross
+  /// or touch, the level sets merge and split at slightly different values, and the Reeb graph draws one
+  /// point of degree 4 as two forks joined by a short arc. Negative (default -1): twice the level width of
+  /// the embedding (Reeb_skeleton::level_width, by default the median edge length of the complex, so about
+  /// the Rips radius: where two curves cross at a right angle the forks lie about that far apart, and closer
+  /// features the complex does not resolve), in input units: for a graph whose edge lengths are not the
+  /// coordinates' distances (unit weights, say), times the ratio of the median coordinate distance to the
+  /// median length of its edges; 0: off. For a distance matrix an arc is at least as long as the matrix's
+  /// distance between its nodes' points (the MDS drawing may shorten it).
   double branch_merge_distance = -1;
-  /// Contract the spurs at the global minimum and maximum of each component when their height is at most delta
-  /// (trim_essential_stubs()): on a loop the base point of the geodesic function otherwise stays a short spur.
-  /// Default true.
+  /// Contract the spurs at the global minimum and maximum of each component when their height is at most
+  /// delta (trim_essential_stubs()): on a loop the base point of the geodesic function otherwise stays a
+  /// short spur. Default true.
   bool trim_stubs = true;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips graph
-  /// Refuse (std::invalid_argument, before storing any triangle) a Rips complex with more triangles than this: a
-  /// radius too large for the data asks for billions, and the pipeline needs about 40 bytes per triangle.
-  /// Default 2^27 (134,217,728 triangles, about 5.5 GB); 0: only the Reeb graph's own limit (2^31 - 1 edges and
-  /// triangles together).
+  /// Refuse (std::invalid_argument, before storing any triangle) a Rips complex with more triangles than
+  /// this: a radius too large for the data asks for billions, and the pipeline needs about 40 bytes per
+  /// triangle. Default 2^27 (134,217,728 triangles, about 5.5 GB); 0: only the Reeb graph's own limit (2^31 -
+  /// 1 edges and triangles together).
   std::size_t max_triangles = std::size_t(1) << 27;
-  Embedding_options embedding;                          ///< how arcs are drawn
-  Progress_callback progress;  ///< called with the fraction done; returning false stops (status interrupted)
+  Embedding_options embedding;  ///< how arcs are drawn
+  Progress_callback progress;   ///< called with the fraction done; returning false stops (status interrupted)
 };
 
 /// Result of extract_reeb_skeleton(): the skeleton and what the stages produced.
 struct Reeb_skeleton {
-  Skeleton_graph graph;            ///< the skeleton; its members partition the input points
-  std::size_t dimension = 0;       ///< embedding dimension: min(input dimension, 3)
-  /// The Rips radius of the complex (given or estimated); NaN for a proximity graph given as it is, and when the
-  /// run was stopped before the radius was estimated.
+  Skeleton_graph graph;       ///< the skeleton; its members partition the input points
+  std::size_t dimension = 0;  ///< embedding dimension: min(input dimension, 3)
+  /// The Rips radius of the complex (given or estimated); NaN for a proximity graph given as it is, and when
+  /// the run was stopped before the radius was estimated.
   double rips_radius = std::numeric_limits<double>::quiet_NaN();
   double delta = 0;  ///< the persistence threshold used (Skeleton_options::delta, or the estimate's)
   /// Size of the complex (for points: the copies of a point are not joined to each other, see
   /// extract_reeb_skeleton()).
   std::size_t rips_edges = 0;
-  std::size_t rips_triangles = 0;  ///< size of the complex, as rips_edges
-  std::size_t removed_branches = 0;  ///< branches removed by the simplifications
-  std::size_t removed_loops = 0;     ///< loops removed by the simplifications
-  std::size_t repaired = 0;          ///< arcs added by repair_reeb_graph()
-  std::size_t connected_dead_ends = 0;                     ///< arcs added by connect_dead_ends()
-  std::size_t trimmed_stubs = 0;                           ///< spurs at essential extrema contracted
-  std::size_t pruned_components = 0;                       ///< components removed (Skeleton_options::prune_height)
-  std::vector<Vertex_index> pruned_points;                 ///< their input points (sorted)
+  std::size_t rips_triangles = 0;           ///< size of the complex, as rips_edges
+  std::size_t removed_branches = 0;         ///< branches removed by the simplifications
+  std::size_t removed_loops = 0;            ///< loops removed by the simplifications
+  std::size_t repaired = 0;                 ///< arcs added by repair_reeb_graph()
+  std::size_t connected_dead_ends = 0;      ///< arcs added by connect_dead_ends()
+  std::size_t trimmed_stubs = 0;            ///< spurs at essential extrema contracted
+  std::size_t pruned_components = 0;        ///< components removed (Skeleton_options::prune_height)
+  std::vector<Vertex_index> pruned_points;  ///< their input points (sorted)
   std::size_t merged_branch_arcs = 0;  ///< arcs between close branch nodes contracted (branch_merge_distance)
-  double branch_merge_distance = 0;  ///< the distance merge_close_branch_nodes() used (0: not run)
-  double level_width = 0;          ///< level width the embedding used
+  double branch_merge_distance = 0;    ///< the distance merge_close_branch_nodes() used (0: not run)
+  double level_width = 0;              ///< level width the embedding used
   /// Gaps wider than this were bridged through the complex (Reeb_graph_embedding::max_gap; infinity: none).
   double max_gap = std::numeric_limits<double>::infinity();
-  Status status = Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
+  Status status =
+      Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
 };
 
 /// Builds the skeleton graph from a Reeb graph and its embedding (the last stage).
-/// \throws std::invalid_argument when E has another number of node positions or arc polylines than G has nodes
+/// \throws std::invalid_argument when E has another number of node positions or arc polylines than G has
+/// nodes
 ///   and arcs, or an arc joins nodes out of range.
 inline Skeleton_graph make_skeleton_graph(const Reeb_graph& G, const Reeb_graph_embedding& E) {
   const char* fn = "make_skeleton_graph";
   if (E.node_positions.size() != G.nodes.size() || E.arc_polylines.size() != G.arcs.size())
     FeatureRecon::internal::throw_invalid_argument(fn, "the embedding has ", E.node_positions.size(),
                                                    " node positions and ", E.arc_polylines.size(),
-                                                   " arc polylines for a graph of ", G.nodes.size(), " nodes and ",
-                                                   G.arcs.size(), " arcs (not its embedding)");
+                                                   " arc polylines for a graph of ", G.nodes.size(),
+                                                   " nodes and ", G.arcs.size(), " arcs (not its embedding)");
   for (std::size_t k = 0; k < G.arcs.size(); ++k)
     if (!(G.arcs[k].lower < G.nodes.size() && G.arcs[k].upper < G.nodes.size()))
-      FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " joins nodes out of range [0, ", G.nodes.size(),
-                                                     ")");
+      FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " joins nodes out of range [0, ",
+                                                     G.nodes.size(), ")");
   Skeleton_graph g(G.nodes.size());
   for (std::size_t i = 0; i < G.nodes.size(); ++i) {
     Skeleton_node& s = g[i];
@@ -152,13 +156,14 @@ struct Branch_node_merge_result {
 namespace internal {
 /// merge_close_branch_nodes() given the coordinates of the input points in at most 3D (`positions`, as the
 /// embedding used them: project_to_3d()) and in input space (`input`, used for input_position above 3D).
-/// `metric` (optional): the input's own distance between two points when the coordinates only draw it (a distance
-/// matrix embedded by classical MDS, where an arc along a direction of small variance is drawn almost without
-/// length): an arc is then at least as long as the metric between its nodes' vertices, and a merged group must
-/// also stay within `distance` by the metric.
+/// `metric` (optional): the input's own distance between two points when the coordinates only draw it (a
+/// distance matrix embedded by classical MDS, where an arc along a direction of small variance is drawn
+/// almost without length): an arc is then at least as long as the metric between its nodes' vertices, and a
+/// merged group must also stay within `distance` by the metric.
 inline Branch_node_merge_result merge_close_branch_nodes(
     const Skeleton_graph& g, const std::vector<std::array<double, 3>>& positions, const Point_matrix& input,
-    double distance, const char* fn, const std::function<double(Vertex_index, Vertex_index)>& metric = nullptr) {
+    double distance, const char* fn,
+    const std::function<double(Vertex_index, Vertex_index)>& metric = nullptr) {
   if (!(distance >= 0 && std::isfinite(distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "distance must be finite and >= 0, got ", distance);
   const std::size_t n = num_vertices(g), none = std::numeric_limits<std::size_t>::max();
@@ -174,8 +179,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(
   for (std::size_t v = 0; v < n; ++v)
     for (const Vertex_index p : g[v].members)
       if (p >= positions.size() || (high && p >= input.rows))
-        FeatureRecon::internal::throw_invalid_argument(fn, "node ", v, " has member ", p, " out of range [0, ",
-                                                       positions.size(), ")");
+        FeatureRecon::internal::throw_invalid_argument(fn, "node ", v, " has member ", p,
+                                                       " out of range [0, ", positions.size(), ")");
   for (std::size_t k = 0; k < m; ++k)
     for (const Vertex_index p : arc[k]->members)
       if (p >= positions.size() || (high && p >= input.rows))
@@ -184,13 +189,14 @@ inline Branch_node_merge_result merge_close_branch_nodes(
   for (std::size_t v = 0; v < n; ++v)
     if (!g[v].input_position.empty() && g[v].input_position.size() != input.dimension)
       FeatureRecon::internal::throw_invalid_argument(fn, "node ", v, " has an input position of ",
-                                                     g[v].input_position.size(), " coordinates, the coordinates have ",
-                                                     input.dimension);
+                                                     g[v].input_position.size(),
+                                                     " coordinates, the coordinates have ", input.dimension);
   for (std::size_t k = 0; k < m; ++k)
-    if (input.dimension == 0 ? !arc[k]->input_polyline.empty() : arc[k]->input_polyline.size() % input.dimension != 0)
-      FeatureRecon::internal::throw_invalid_argument(fn, "arc ", k, " has an input polyline of ",
-                                                     arc[k]->input_polyline.size(), " numbers, not a multiple of the ",
-                                                     "dimension ", input.dimension);
+    if (input.dimension == 0 ? !arc[k]->input_polyline.empty()
+                             : arc[k]->input_polyline.size() % input.dimension != 0)
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "arc ", k, " has an input polyline of ", arc[k]->input_polyline.size(),
+          " numbers, not a multiple of the ", "dimension ", input.dimension);
   // Arc lengths in input space (the input polyline above 3D), candidates shortest first (ties by arc index).
   std::vector<std::pair<double, std::size_t>> candidates;
   for (std::size_t k = 0; k < m; ++k) {
@@ -198,7 +204,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(
     double length = 0;
     if (arc[k]->input_polyline.empty()) {
       const auto& l = arc[k]->polyline;
-      for (std::size_t i = 0; i + 1 < l.size(); ++i) length += point_distance(l[i].data(), l[i + 1].data(), 3);
+      for (std::size_t i = 0; i + 1 < l.size(); ++i)
+        length += point_distance(l[i].data(), l[i + 1].data(), 3);
     } else {
       const std::size_t d = input.dimension, count = arc[k]->input_polyline.size() / d;
       const double* c = arc[k]->input_polyline.data();
@@ -209,21 +216,24 @@ inline Branch_node_merge_result merge_close_branch_nodes(
     if (length <= distance) candidates.push_back({length, k});
   }
   std::sort(candidates.begin(), candidates.end());
-  // Rounds: in each, over the arcs between groups of merged nodes, contract a matching of the candidates whose
-  // groups have degree >= 3 and are joined by this arc alone (a short loop stays a loop: no arc becomes a self-loop).
+  // Rounds: in each, over the arcs between groups of merged nodes, contract a matching of the candidates
+  // whose groups have degree >= 3 and are joined by this arc alone (a short loop stays a loop: no arc becomes
+  // a self-loop).
   std::vector<std::size_t> group(n);
   std::iota(group.begin(), group.end(), std::size_t(0));
   auto find = [&group](std::size_t x) {
     while (group[x] != x) x = group[x] = group[group[x]];
     return x;
   };
-  // The nodes of each group (by its root), and whether two groups stay within `distance` of each other once merged:
-  // every node of one within `distance` of every node of the other (input space above 3D). Without this bound the
-  // rounds chained the forks of a lattice (every cell a loop, every arc about the level width) into one line.
+  // The nodes of each group (by its root), and whether two groups stay within `distance` of each other once
+  // merged: every node of one within `distance` of every node of the other (input space above 3D). Without
+  // this bound the rounds chained the forks of a lattice (every cell a loop, every arc about the level width)
+  // into one line.
   std::vector<std::vector<std::size_t>> group_nodes(candidates.empty() ? 0 : n);
   for (std::size_t v = 0; v < group_nodes.size(); ++v) group_nodes[v] = {v};
   auto node_point = [&](std::size_t v) -> std::pair<const double*, std::size_t> {
-    if (high && g[v].input_position.size() == input.dimension) return {g[v].input_position.data(), input.dimension};
+    if (high && g[v].input_position.size() == input.dimension)
+      return {g[v].input_position.data(), input.dimension};
     return {g[v].position.data(), 3};
   };
   auto close_groups = [&](std::size_t a, std::size_t b) {
@@ -273,8 +283,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(
       changed = true;
     }
   }
-  // The new nodes: one per group, in order of their smallest node; a merged node takes the value of its lowest
-  // node (ties: smaller index), whose members come first, and sits at the centroid of all its points.
+  // The new nodes: one per group, in order of their smallest node; a merged node takes the value of its
+  // lowest node (ties: smaller index), whose members come first, and sits at the centroid of all its points.
   std::vector<std::size_t> index(n, none), lowest(n, none);
   std::vector<std::vector<std::size_t>> nodes_of;
   for (std::size_t v = 0; v < n; ++v) {
@@ -320,7 +330,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(
       node.position[c] = mean_of(points.size(), [&](std::size_t q) { return positions[points[q]][c]; });
     if (high && !node.input_position.empty())
       for (std::size_t c = 0; c < input.dimension; ++c)
-        node.input_position[c] = mean_of(points.size(), [&](std::size_t q) { return input.row(points[q])[c]; });
+        node.input_position[c] =
+            mean_of(points.size(), [&](std::size_t q) { return input.row(points[q])[c]; });
   }
   // The other arcs, their ends moved to the merged nodes; an arc whose lower end moved above its upper end is
   // reversed (its members stay in increasing function value).
@@ -347,7 +358,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(
     }
     const std::size_t d = h[a].input_position.size();
     if (d > 0 && copy.input_polyline.size() >= d && h[b].input_position.size() == d) {
-      if (moved_a) std::copy(h[a].input_position.begin(), h[a].input_position.end(), copy.input_polyline.begin());
+      if (moved_a)
+        std::copy(h[a].input_position.begin(), h[a].input_position.end(), copy.input_polyline.begin());
       if (moved_b)
         std::copy(h[b].input_position.begin(), h[b].input_position.end(),
                   copy.input_polyline.end() - static_cast<std::ptrdiff_t>(d));
@@ -362,25 +374,27 @@ inline Branch_node_merge_result merge_close_branch_nodes(
 }
 }  // namespace internal
 
-/// Merges branch nodes that lie close together: contracts every arc that joins two nodes of degree >= 3 and is at most
-/// `distance` long in input space (its input_polyline above 3D, else its polyline) into one node, unless another arc
-/// joins the same two nodes (a short loop is kept). Where two curves cross or touch (a figure-eight, a road crossing)
-/// the level sets merge and split at slightly different values, so the Reeb graph draws one point of degree 4 as two
-/// forks joined by a short arc; this draws it as one node. Contractions go in rounds until no such arc is left, each
-/// round a greedy matching of the candidate arcs, shortest first (ties by arc index), so a cluster of forks joined by
-/// short arcs becomes one node, as long as its nodes stay within `distance` of each other (node positions, input space
-/// above 3D): the forks of a lattice whose cells are about `distance` wide are not chained into one line. A merged node
-/// takes the value of its lowest node (ties: the smaller index), whose members come first, then the other nodes' and
-/// the contracted arcs' members (the members still partition the points); it sits at the centroid of its points (above
-/// 3D its input_position is the centroid in `coordinates`, its position the centroid's projection, project_to_3d();
-/// without points, at the mean of the merged nodes). The arcs' polylines end at the new positions; an arc whose lower
-/// end moved above its upper end is reversed (its polylines; its members stay in increasing function value), and the
-/// types of the merged nodes and of the ends of reversed arcs follow from the arcs below and above them. Nodes and arcs
-/// that take no part are copied unchanged; the new nodes are ordered by the smallest original node of each.
-/// \pre distance >= 0 and finite; the members index `coordinates`; above 3D input positions and polylines have its
-/// dimension (all checked; throws naming the node or arc).
-inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g, const Point_matrix& coordinates,
-                                                         double distance) {
+/// Merges branch nodes that lie close together: contracts every arc that joins two nodes of degree >= 3 and
+/// is at most `distance` long in input space (its input_polyline above 3D, else its polyline) into one node,
+/// unless another arc joins the same two nodes (a short loop is kept). Where two curves cross or touch (a
+/// figure-eight, a road crossing) the level sets merge and split at slightly different values, so the Reeb
+/// graph draws one point of degree 4 as two forks joined by a short arc; this draws it as one node.
+/// Contractions go in rounds until no such arc is left, each round a greedy matching of the candidate arcs,
+/// shortest first (ties by arc index), so a cluster of forks joined by short arcs becomes one node, as long
+/// as its nodes stay within `distance` of each other (node positions, input space above 3D): the forks of a
+/// lattice whose cells are about `distance` wide are not chained into one line. A merged node takes the value
+/// of its lowest node (ties: the smaller index), whose members come first, then the other nodes' and the
+/// contracted arcs' members (the members still partition the points); it sits at the centroid of its points
+/// (above 3D its input_position is the centroid in `coordinates`, its position the centroid's projection,
+/// project_to_3d(); without points, at the mean of the merged nodes). The arcs' polylines end at the new
+/// positions; an arc whose lower end moved above its upper end is reversed (its polylines; its members stay
+/// in increasing function value), and the types of the merged nodes and of the ends of reversed arcs follow
+/// from the arcs below and above them. Nodes and arcs that take no part are copied unchanged; the new nodes
+/// are ordered by the smallest original node of each. \pre distance >= 0 and finite; the members index
+/// `coordinates`; above 3D input positions and polylines have its dimension (all checked; throws naming the
+/// node or arc).
+inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g,
+                                                         const Point_matrix& coordinates, double distance) {
   internal::check_point_matrix(coordinates, "merge_close_branch_nodes", "coordinates");
   return internal::merge_close_branch_nodes(g, project_to_3d(coordinates), coordinates, distance,
                                             "merge_close_branch_nodes");
@@ -389,10 +403,10 @@ inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g
 namespace internal {
 
 /// The median length of the edges between first copies (first[v] == v; every vertex when `first` is empty):
-/// copies of points add edges of length 0 and repeat some lengths (their edges to the first copy's neighbours),
-/// so over all edges the median moved with the number of copies (an X of points 0.4 apart: 0.754 once, 0.4 with
-/// every point twice). 0 without such edges.
-/// The same median of another length of the edges: `length(e)` for edge index e.
+/// copies of points add edges of length 0 and repeat some lengths (their edges to the first copy's
+/// neighbours), so over all edges the median moved with the number of copies (an X of points 0.4 apart: 0.754
+/// once, 0.4 with every point twice). 0 without such edges. The same median of another length of the edges:
+/// `length(e)` for edge index e.
 template <class Length>
 double median_edge_length(const Proximity_graph& g, const std::vector<Vertex_index>& first, Length&& length) {
   std::vector<double> l;
@@ -409,23 +423,31 @@ inline double median_edge_length(const Proximity_graph& g, const std::vector<Ver
 
 inline void check_skeleton_options(const Skeleton_options& options, const char* fn) {
   if (!(options.delta >= 0 && std::isfinite(options.delta)) ||
-      !(options.repair_distance >= 0 && std::isfinite(options.repair_distance)) || !(options.prune_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "delta and repair_distance must be finite and >= 0, "
-                                                   "prune_height >= 0 (infinity: prune all), got ", options.delta,
-                                                   ", ", options.repair_distance, " and ", options.prune_height);
+      !(options.repair_distance >= 0 && std::isfinite(options.repair_distance)) ||
+      !(options.prune_height >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn,
+                                                   "delta and repair_distance must be finite and >= 0, "
+                                                   "prune_height >= 0 (infinity: prune all), got ",
+                                                   options.delta, ", ", options.repair_distance, " and ",
+                                                   options.prune_height);
   if (std::isnan(options.branch_merge_distance) || std::isinf(options.branch_merge_distance))
-    FeatureRecon::internal::throw_invalid_argument(fn, "branch_merge_distance must be finite (negative: the level "
-                                                   "width), got ", options.branch_merge_distance);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn,
+        "branch_merge_distance must be finite (negative: the level "
+        "width), got ",
+        options.branch_merge_distance);
   check_embedding_options(options.embedding, fn);  // before the pipeline runs, with the caller's values
 }
 
-/// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr or
-/// 1-Lipschitz for it (repair_reeb_graph()); `first`: the first copy of each vertex, or empty (no copies).
+/// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr
+/// or 1-Lipschitz for it (repair_reeb_graph()); `first`: the first copy of each vertex, or empty (no copies).
 template <class Distance, class Bound>
 Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matrix& coordinates,
-                                  const Distance& distance, const Skeleton_options& options, double progress_start,
-                                  Bound bound, const char* fn = "extract_reeb_skeleton",
-                                  const std::vector<Vertex_index>& first = {}, bool coordinates_are_metric = true) {
+                                  const Distance& distance, const Skeleton_options& options,
+                                  double progress_start, Bound bound,
+                                  const char* fn = "extract_reeb_skeleton",
+                                  const std::vector<Vertex_index>& first = {},
+                                  bool coordinates_are_metric = true) {
   const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
@@ -440,7 +462,9 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     if (!options.progress) return {};
     a = progress_start + (1 - progress_start) * a;
     b = progress_start + (1 - progress_start) * b;
-    return [&options, &stopped, a, b](double t) { return !(stopped = stopped || !options.progress(a + (b - a) * t)); };
+    return [&options, &stopped, a, b](double t) {
+      return !(stopped = stopped || !options.progress(a + (b - a) * t));
+    };
   };
   // The Reeb graph takes fewer than 2^31 - 1 edges and triangles together, and fewer than 2^30 edges.
   const std::size_t capacity = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()) - 1;
@@ -465,7 +489,8 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   Geodesic_result geo;
   try {
     geo = compute_geodesic_function(K, go);
-  } catch (const std::invalid_argument& e) {  // the complex is ours: only a distance beyond the largest double
+  } catch (
+      const std::invalid_argument& e) {  // the complex is ours: only a distance beyond the largest double
     const std::string what = e.what(), stage_name = "compute_geodesic_function: ";
     FeatureRecon::internal::throw_invalid_argument(
         fn, what.compare(0, stage_name.size(), stage_name) == 0 ? what.substr(stage_name.size()) : what,
@@ -492,7 +517,8 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     Reeb_graph joined = std::move(fixed.graph);
     if (options.connect_dead_ends) {
       repair.progress = stage(0.89, 0.91);
-      Reeb_dead_end_result ends = connect_dead_ends(joined, A.values(), options.repair_distance, distance, repair);
+      Reeb_dead_end_result ends =
+          connect_dead_ends(joined, A.values(), options.repair_distance, distance, repair);
       if (ended(ends.status)) return result;
       result.connected_dead_ends = ends.connected;
       joined = std::move(ends.graph);
@@ -520,13 +546,15 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   result.level_width = eo.level_width;
   const std::vector<std::array<double, 3>> projected = project_to_3d(coordinates);
   if (eo.max_gap == 0 && !first.empty()) {
-    // The automatic max_gap (twice the median edge length in the embedding) over the edges between first copies,
-    // as the level width: with every point given twice (edges of length 0 and repeated lengths) it moved from
-    // 1.065 to 1.018 and one more node stayed; 300 copies of one point made it 0 (nothing bridged).
+    // The automatic max_gap (twice the median edge length in the embedding) over the edges between first
+    // copies, as the level width: with every point given twice (edges of length 0 and repeated lengths) it
+    // moved from 1.065 to 1.018 and one more node stayed; 300 copies of one point made it 0 (nothing
+    // bridged).
     const double median = median_edge_length(K, first, [&](std::size_t e) {
       return point_distance(projected[K.edges[e][0]].data(), projected[K.edges[e][1]].data(), 3);
     });
-    eo.max_gap = median > 0 ? 2 * median : -1;  // none (all points copies of one): straight segments, as before
+    eo.max_gap =
+        median > 0 ? 2 * median : -1;  // none (all points copies of one): straight segments, as before
   }
   eo.progress = stage(0.95, dimension > 3 ? 0.97 : 0.99);
   const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, projected, A.values(), dimension, eo);
@@ -540,14 +568,17 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
       result.graph = Skeleton_graph();
       return result;
     }
-    for (std::size_t i = 0; i < I.node_positions.size(); ++i) result.graph[i].input_position = std::move(I.node_positions[i]);
+    for (std::size_t i = 0; i < I.node_positions.size(); ++i)
+      result.graph[i].input_position = std::move(I.node_positions[i]);
     std::size_t k = 0;
-    for (auto e : boost::make_iterator_range(edges(result.graph))) result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);
+    for (auto e : boost::make_iterator_range(edges(result.graph)))
+      result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);
   }
   if (options.branch_merge_distance < 0) {
-    // Twice the level width, from function units (the edge lengths) to input units (`distance`) by the ratio of
-    // their medians: 1 for points and distance matrices, whose edge lengths are the distances; a graph with unit
-    // weights (or any other) on coordinates 0.01 apart merged forks 2 coordinate units apart, 200 edges.
+    // Twice the level width, from function units (the edge lengths) to input units (`distance`) by the ratio
+    // of their medians: 1 for points and distance matrices, whose edge lengths are the distances; a graph
+    // with unit weights (or any other) on coordinates 0.01 apart merged forks 2 coordinate units apart, 200
+    // edges.
     double ratio = 1;
     {
       const double input =
@@ -562,7 +593,8 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   }
   if (result.branch_merge_distance > 0) {
     std::function<double(Vertex_index, Vertex_index)> metric;
-    if (!coordinates_are_metric) metric = [&distance](Vertex_index a, Vertex_index b) { return distance(a, b); };
+    if (!coordinates_are_metric)
+      metric = [&distance](Vertex_index a, Vertex_index b) { return distance(a, b); };
     Branch_node_merge_result merged = internal::merge_close_branch_nodes(
         result.graph, projected, coordinates, result.branch_merge_distance, fn, metric);
     result.graph = std::move(merged.graph);
@@ -600,7 +632,8 @@ inline Proximity_graph join_copies(const Proximity_graph& h, const std::vector<V
     g.edges.push_back({std::min(a, b), std::max(a, b)});
     g.edge_lengths.push_back(length);
   };
-  for (std::size_t e = 0; e < h.edges.size(); ++e) join(original[h.edges[e][0]], original[h.edges[e][1]], h.length(e));
+  for (std::size_t e = 0; e < h.edges.size(); ++e)
+    join(original[h.edges[e][0]], original[h.edges[e][1]], h.length(e));
   std::vector<Vertex_index> previous(n);  // the last copy seen of each first copy
   for (std::size_t i = 0; i < n; ++i) previous[i] = static_cast<Vertex_index>(i);
   for (std::size_t i = 0; i < n; ++i) {
@@ -615,8 +648,8 @@ inline Proximity_graph join_copies(const Proximity_graph& h, const std::vector<V
   return g;
 }
 
-/// The Rips graph of the distinct points, where each further copy of a point is joined to its first copy, to the
-/// first copy's neighbours (at their distances) and to the next copy (index order), but not to the other
+/// The Rips graph of the distinct points, where each further copy of a point is joined to its first copy, to
+/// the first copy's neighbours (at their distances) and to the next copy (index order), but not to the other
 /// copies. Every copy's closed neighbourhood lies in its first copy's, and has its value under any geodesic
 /// function, so the copies collapse onto it: the flag complex keeps the homotopy type, the level sets and the
 /// critical points of the full Rips complex, where the copies also form a clique; k copies of a point with d
@@ -668,25 +701,30 @@ inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Ver
 /// second simplification, embedding. Each stage is also callable alone (see doc/skeleton.md).
 /// The automatic level width of the embedding is the median edge length of the complex, copies of
 /// points left out (internal::median_edge_length()). Further copies of a point
-/// (equal coordinates) are not joined to each other, only to their first copy, its neighbours and the next copy
-/// (internal::rips_graph_of_distinct_points(): same homotopy type, level sets and critical points as the full
-/// Rips complex without the copies' cliques); every copy is a member of its first copy's node or arc.
+/// (equal coordinates) are not joined to each other, only to their first copy, its neighbours and the next
+/// copy (internal::rips_graph_of_distinct_points(): same homotopy type, level sets and critical points as the
+/// full Rips complex without the copies' cliques); every copy is a member of its first copy's node or arc.
 /// \pre radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
-/// \tparam Radius an arithmetic type: `extract_reeb_skeleton(points, {})` is not radius 0 but the overload that
+/// \tparam Radius an arithmetic type: `extract_reeb_skeleton(points, {})` is not radius 0 but the overload
+/// that
 ///   estimates the radius (default options).
 template <class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
-Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius, const Skeleton_options& options = {}) {
+Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius,
+                                    const Skeleton_options& options = {}) {
   const double rips_radius = static_cast<double>(radius);
   internal::check_skeleton_options(options, "extract_reeb_skeleton");
   internal::check_point_matrix(points, "extract_reeb_skeleton");
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
-    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "rips_radius must be finite and >= 0, got ",
-                                                   rips_radius);
+    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton",
+                                                   "rips_radius must be finite and >= 0, got ", rips_radius);
   Proximity_graph_options po;
   po.search = options.search;
-  bool stopped = false;  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
+  bool stopped =
+      false;  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
   if (options.progress)
-    po.progress = [&options, &stopped](double t) { return !(stopped = stopped || !options.progress(0.3 * t)); };
+    po.progress = [&options, &stopped](double t) {
+      return !(stopped = stopped || !options.progress(0.3 * t));
+    };
   std::vector<Vertex_index> first;  // empty: no copies
   const Proximity_graph g = internal::rips_graph_of_distinct_points(points, rips_radius, po, first);
   if (stopped) {
@@ -699,15 +737,16 @@ Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius, c
   }
   Reeb_skeleton s = internal::skeleton_from_graph(
       g, points,
-      [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); }, options, 0.3,
+      [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); },
+      options, 0.3,
       [&points, axis = internal::widest_axis(points)](Vertex_index v) { return points.row(v)[axis]; },
       "extract_reeb_skeleton", first);
   s.rips_radius = rips_radius;
   return s;
 }
 
-/// extract_reeb_skeleton(points, {r}[, options]): a braced radius is a radius (a template radius cannot be deduced
-/// from {r}, and the estimating overload would take {r} for options with delta r).
+/// extract_reeb_skeleton(points, {r}[, options]): a braced radius is a radius (a template radius cannot be
+/// deduced from {r}, and the estimating overload would take {r} for options with delta r).
 template <class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
 Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, const Radius (&radius)[1],
                                     const Skeleton_options& options = {}) {
@@ -723,7 +762,8 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
   Skeleton_options rest = options;
   if (options.delta < 0) rest.delta = 0;  // checked with the estimate's delta standing in
   check_skeleton_options(rest, fn);
-  if (options.progress) {  // both callbacks hear the estimate (its own fraction, and the first tenth of the run's)
+  if (options.progress) {  // both callbacks hear the estimate (its own fraction, and the first tenth of the
+                           // run's)
     radius_options.progress = [&options, own = radius_options.progress](double t) {
       const bool go_on = !own || own(t);
       return options.progress(0.1 * t) && go_on;
@@ -745,21 +785,23 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
 }
 }  // namespace internal
 
-/// extract_reeb_skeleton() at the radius estimate_rips_radius() derives from the points (with `radius_options`;
-/// the radius used is Reeb_skeleton::rips_radius, the delta used Reeb_skeleton::delta). A negative
-/// `options.delta` stands for the estimate's suggested delta (Rips_radius_estimate::delta; the default 0 means no
-/// simplification, as in every overload); every other value is taken from `options` as given. The estimate takes
-/// the first tenth of the progress range of `options.progress`; `radius_options.progress`, when set, hears it too
-/// (with the estimate's own fraction), and either can stop it: an empty skeleton, status interrupted, rips_radius
-/// NaN. Stage by stage: estimate_rips_radius(), then extract_reeb_skeleton(points, estimate.radius, options with
-/// delta = estimate.delta).
+/// extract_reeb_skeleton() at the radius estimate_rips_radius() derives from the points (with
+/// `radius_options`; the radius used is Reeb_skeleton::rips_radius, the delta used Reeb_skeleton::delta). A
+/// negative `options.delta` stands for the estimate's suggested delta (Rips_radius_estimate::delta; the
+/// default 0 means no simplification, as in every overload); every other value is taken from `options` as
+/// given. The estimate takes the first tenth of the progress range of `options.progress`;
+/// `radius_options.progress`, when set, hears it too (with the estimate's own fraction), and either can stop
+/// it: an empty skeleton, status interrupted, rips_radius NaN. Stage by stage: estimate_rips_radius(), then
+/// extract_reeb_skeleton(points, estimate.radius, options with delta = estimate.delta).
 inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, const Skeleton_options& options,
                                            const Rips_radius_options& radius_options = {}) {
   internal::check_point_matrix(points, "extract_reeb_skeleton");
   return internal::with_estimated_radius(
       options, radius_options, std::min<std::size_t>(points.dimension, 3), "extract_reeb_skeleton",
       [&points](const Rips_radius_options& o) { return estimate_rips_radius(points, o); },
-      [&points](double radius, const Skeleton_options& o) { return extract_reeb_skeleton(points, radius, o); });
+      [&points](double radius, const Skeleton_options& o) {
+        return extract_reeb_skeleton(points, radius, o);
+      });
 }
 
 /// The skeleton of a proximity graph whose vertices have coordinates (any dimension; projected to 3D by PCA
@@ -770,25 +812,31 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
                                            const Skeleton_options& options = {}) {
   internal::check_skeleton_options(options, "extract_reeb_skeleton");
   if (coordinates.rows != graph.number_of_vertices)
-    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "the graph has ", graph.number_of_vertices,
-                                                   " vertices but coordinates has ", coordinates.rows, " rows");
+    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton", "the graph has ",
+                                                   graph.number_of_vertices, " vertices but coordinates has ",
+                                                   coordinates.rows, " rows");
   internal::check_point_matrix(coordinates, "extract_reeb_skeleton", "coordinates");
   if (const std::string problem = internal::canonical_form_problem(graph); !problem.empty())
-    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton",
-                                                   "the graph is not canonical (see Proximity_graph): ", problem);
+    FeatureRecon::internal::throw_invalid_argument(
+        "extract_reeb_skeleton", "the graph is not canonical (see Proximity_graph): ", problem);
   return internal::skeleton_from_graph(
       graph, coordinates,
-      [&coordinates](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(coordinates, a, b); },
+      [&coordinates](Vertex_index a, Vertex_index b) {
+        return internal::euclidean_distance(coordinates, a, b);
+      },
       options, 0.0,
-      [&coordinates, axis = internal::widest_axis(coordinates)](Vertex_index v) { return coordinates.row(v)[axis]; });
+      [&coordinates, axis = internal::widest_axis(coordinates)](Vertex_index v) {
+        return coordinates.row(v)[axis];
+      });
 }
 
-/// The skeleton of a dense distance matrix: Rips graph at `radius` (an arithmetic type) on the matrix, then the
-/// stages of extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses classical MDS into 3D
-/// (classical_mds_3d(); it takes the first 30 % of the progress range and can be stopped between its steps).
-/// Copies (a row at distance 0 from an earlier one, with the same distances to all) are joined as
-/// extract_reeb_skeleton() joins copies of points (internal::first_copies_of_rows(), internal::join_copies()).
-/// \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
+/// The skeleton of a dense distance matrix: Rips graph at `radius` (an arithmetic type) on the matrix, then
+/// the stages of extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses
+/// classical MDS into 3D (classical_mds_3d(); it takes the first 30 % of the progress range and can be
+/// stopped between its steps). Copies (a row at distance 0 from an earlier one, with the same distances to
+/// all) are joined as extract_reeb_skeleton() joins copies of points (internal::first_copies_of_rows(),
+/// internal::join_copies()). \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way;
+/// throws).
 template <class Matrix, class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
 Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius radius,
                                                          const Skeleton_options& options = {}) {
@@ -798,9 +846,10 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0, got ", rips_radius);
-  // Copies (rows at distance 0 with equal rows) are joined as extract_reeb_skeleton() joins copies of points: n
-  // copies of one point formed a clique of n^3 / 6 triangles.
+    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0, got ",
+                                                   rips_radius);
+  // Copies (rows at distance 0 with equal rows) are joined as extract_reeb_skeleton() joins copies of points:
+  // n copies of one point formed a clique of n^3 / 6 triangles.
   std::vector<Vertex_index> first;
   Proximity_graph g;
   if (internal::first_copies_of_rows(a, n, first)) {
@@ -811,7 +860,8 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius
     std::vector<double> distinct(m * m);
     for (std::size_t r = 0; r < m; ++r)
       for (std::size_t c = 0; c < m; ++c) distinct[r * m + c] = a[original[r] * n + original[c]];
-    g = internal::join_copies(internal::rips_graph_of_distance_matrix(distinct, m, rips_radius), first, original);
+    g = internal::join_copies(internal::rips_graph_of_distance_matrix(distinct, m, rips_radius), first,
+                              original);
   } else {  // from the checked copy: a second copy of the matrix would double the memory
     g = internal::rips_graph_of_distance_matrix(a, n, rips_radius);
   }
@@ -832,9 +882,8 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius
     return interrupted;
   }
   Reeb_skeleton s = internal::skeleton_from_graph(
-      g, mds,
-      [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; }, options, 0.3,
-      nullptr, fn, first, false);
+      g, mds, [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; },
+      options, 0.3, nullptr, fn, first, false);
   s.rips_radius = rips_radius;
   return s;
 }
@@ -846,8 +895,8 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, const 
   return extract_reeb_skeleton_from_distance_matrix(D, radius[0], options);
 }
 
-/// extract_reeb_skeleton_from_distance_matrix() at the radius estimate_rips_radius_from_distance_matrix() derives
-/// from the matrix, as extract_reeb_skeleton(points, options, radius_options) does for points.
+/// extract_reeb_skeleton_from_distance_matrix() at the radius estimate_rips_radius_from_distance_matrix()
+/// derives from the matrix, as extract_reeb_skeleton(points, options, radius_options) does for points.
 template <class Matrix>
 Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, const Skeleton_options& options,
                                                          const Rips_radius_options& radius_options = {}) {
@@ -861,32 +910,34 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, const 
 
 /// extract_reeb_skeleton() on a range of points through a PointCoordinateTraits model.
 template <class PointRange, class Radius,
-          class Traits = Point_coordinate_traits<
-              typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>,
+          class Traits = Point_coordinate_traits<typename std::iterator_traits<
+              decltype(std::begin(std::declval<const PointRange&>()))>::value_type>,
           std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
-Reeb_skeleton extract_reeb_skeleton(const PointRange& points, Radius radius, const Skeleton_options& options = {},
-                                    const Traits& traits = Traits()) {
-  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), static_cast<double>(radius),
-                               options);
+Reeb_skeleton extract_reeb_skeleton(const PointRange& points, Radius radius,
+                                    const Skeleton_options& options = {}, const Traits& traits = Traits()) {
+  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"),
+                               static_cast<double>(radius), options);
 }
 
 /// extract_reeb_skeleton(points, {r}[, options, traits]) on a range: a braced radius is a radius.
 template <class PointRange, class Radius,
-          class Traits = Point_coordinate_traits<
-              typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>,
+          class Traits = Point_coordinate_traits<typename std::iterator_traits<
+              decltype(std::begin(std::declval<const PointRange&>()))>::value_type>,
           std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
 Reeb_skeleton extract_reeb_skeleton(const PointRange& points, const Radius (&radius)[1],
                                     const Skeleton_options& options = {}, const Traits& traits = Traits()) {
   return extract_reeb_skeleton(points, radius[0], options, traits);
 }
 
-/// extract_reeb_skeleton(points, options, radius_options) on a range of points through a PointCoordinateTraits
-/// model: the radius derived from the data.
-template <class PointRange, class Traits = Point_coordinate_traits<
-                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+/// extract_reeb_skeleton(points, options, radius_options) on a range of points through a
+/// PointCoordinateTraits model: the radius derived from the data.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
+                                decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Reeb_skeleton extract_reeb_skeleton(const PointRange& points, const Skeleton_options& options,
-                                    const Rips_radius_options& radius_options = {}, const Traits& traits = Traits()) {
-  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), options, radius_options);
+                                    const Rips_radius_options& radius_options = {},
+                                    const Traits& traits = Traits()) {
+  return extract_reeb_skeleton(make_point_matrix(points, traits, "extract_reeb_skeleton"), options,
+                               radius_options);
 }
 
 }  // namespace skeleton

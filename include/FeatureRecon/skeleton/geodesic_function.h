@@ -22,10 +22,10 @@ namespace skeleton {
 
 /// Result of compute_geodesic_function().
 struct Geodesic_result {
-  std::vector<double> values;             ///< shortest-path distance of each vertex to its component's base point
-  std::vector<std::size_t> base_points;   ///< the base point of each connected component, by component number
-  std::vector<std::uint32_t> component;   ///< connected component of each vertex (numbered by smallest vertex)
-  Status status = Status::success;        ///< degenerate_input for an empty graph; interrupted if stopped
+  std::vector<double> values;  ///< shortest-path distance of each vertex to its component's base point
+  std::vector<std::size_t> base_points;  ///< the base point of each connected component, by component number
+  std::vector<std::uint32_t> component;  ///< connected component of each vertex (numbered by smallest vertex)
+  Status status = Status::success;       ///< degenerate_input for an empty graph; interrupted if stopped
 };
 
 namespace internal {
@@ -36,7 +36,8 @@ struct Csr_edge_weight {
 using Csr_graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, Csr_edge_weight>;
 
 /// Multi-source Dijkstra on the (symmetrised) graph; distances of unreachable vertices stay infinite.
-inline std::vector<double> multi_source_dijkstra(const Csr_graph& csr, const std::vector<std::size_t>& sources) {
+inline std::vector<double> multi_source_dijkstra(const Csr_graph& csr,
+                                                 const std::vector<std::size_t>& sources) {
   const std::size_t n = num_vertices(csr);
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
   std::vector<std::size_t> pred(n);
@@ -81,15 +82,17 @@ inline Csr_graph make_csr_graph(const Proximity_graph& g) {
 ///      naming them); g canonical (checked); no shortest path longer than the largest double (checked: throws
 ///      naming a vertex whose distance overflows).
 /// \returns per-vertex values, per-component base points; `degenerate_input` for an empty graph.
-inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const Geodesic_options& options = {}) {
+inline Geodesic_result compute_geodesic_function(const Proximity_graph& g,
+                                                 const Geodesic_options& options = {}) {
   const char* fn = "compute_geodesic_function";
   if (const std::string problem = internal::canonical_form_problem(g); !problem.empty())
-    FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph): ", problem);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the graph is not canonical (see Proximity_graph): ", problem);
   const std::size_t n = g.number_of_vertices;
   for (std::size_t i = 0; i < options.base_points.size(); ++i)
     if (options.base_points[i] >= n)
-      FeatureRecon::internal::throw_invalid_argument(fn, "base point ", i, " is vertex ", options.base_points[i],
-                                                     ", out of range [0, ", n, ")");
+      FeatureRecon::internal::throw_invalid_argument(fn, "base point ", i, " is vertex ",
+                                                     options.base_points[i], ", out of range [0, ", n, ")");
   Geodesic_result result;
   if (n == 0) {
     result.status = Status::degenerate_input;
@@ -103,10 +106,11 @@ inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const
   for (std::size_t i = 0; i < options.base_points.size(); ++i) {
     const std::size_t b = options.base_points[i], c = cc.label[b];
     if (given_as[c] != none)
-      FeatureRecon::internal::throw_invalid_argument(fn, "base points ", given_as[c], " and ", i, " (vertices ",
-                                                     options.base_points[given_as[c]], " and ", b,
-                                                     ") lie in the same connected component; give at most one "
-                                                     "per component");
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "base points ", given_as[c], " and ", i, " (vertices ", options.base_points[given_as[c]],
+          " and ", b,
+          ") lie in the same connected component; give at most one "
+          "per component");
     given_as[c] = i;
     chosen[c] = b;
   }
@@ -117,9 +121,11 @@ inline Geodesic_result compute_geodesic_function(const Proximity_graph& g, const
   // overflowed.
   auto check_finite = [&](const std::vector<double>& d, bool every_component) {
     for (std::size_t v = 0; v < n; ++v)
-      if ((every_component || chosen[cc.label[v]] == none) && !(d[v] < std::numeric_limits<double>::infinity()))
-        FeatureRecon::internal::throw_invalid_argument(fn, "the geodesic distance of vertex ", v,
-                                                       " overflows the largest double; scale the edge lengths down");
+      if ((every_component || chosen[cc.label[v]] == none) &&
+          !(d[v] < std::numeric_limits<double>::infinity()))
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "the geodesic distance of vertex ", v,
+            " overflows the largest double; scale the edge lengths down");
   };
   if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) {
     result.status = Status::interrupted;

@@ -33,135 +33,143 @@ struct Gps_fix {
   double time = 0;  ///< seconds
 };
 
-/// A trip: fixes of one vehicle; sample_gps_traces() sorts them by time (stable, so equal times keep file order).
+/// A trip: fixes of one vehicle; sample_gps_traces() sorts them by time (stable, so equal times keep file
+/// order).
 using Gps_trip = std::vector<Gps_fix>;
 
-/// Options of sample_gps_traces(). A value of 0 asks for the automatic rule given on the field; the values used
-/// are returned in Gps_trace_sample.
+/// Options of sample_gps_traces(). A value of 0 asks for the automatic rule given on the field; the values
+/// used are returned in Gps_trace_sample.
 struct Gps_trace_options {
-  /// Greedy thinning in trip order: a trace point joins the first sample created less than this far from it (the
-  /// samples' creation points are this far apart; see mean_positions). 0: half the Rips radius.
+  /// Greedy thinning in trip order: a trace point joins the first sample created less than this far from it
+  /// (the samples' creation points are this far apart; see mean_positions). 0: half the Rips radius.
   double sample_spacing = 0;
-  /// Consecutive fixes of a trip at most this far apart are linked: points are inserted along the segment every
-  /// half sample spacing, and consecutive samples become graph edges. 0: four times the median step of the data,
-  /// at least twice the Rips radius. Negative: no linking.
+  /// Consecutive fixes of a trip at most this far apart are linked: points are inserted along the segment
+  /// every half sample spacing, and consecutive samples become graph edges. 0: four times the median step of
+  /// the data, at least twice the Rips radius. Negative: no linking.
   double max_link_gap = 0;
-  /// Rips edges join samples whose travel directions (modulo 180 degrees) differ by at most this angle. Samples
-  /// of crossing streets then touch only where vehicles turn. 180 (default): directions are ignored.
+  /// Rips edges join samples whose travel directions (modulo 180 degrees) differ by at most this angle.
+  /// Samples of crossing streets then touch only where vehicles turn. 180 (default): directions are ignored.
   double heading_tolerance = 180;
-  /// Headings are driving directions in [0, 360) (true, default: opposite carriageways of a divided road and the
-  /// two directions of a street stay apart under a heading tolerance), or undirected lines in [0, 180) (false).
+  /// Headings are driving directions in [0, 360) (true, default: opposite carriageways of a divided road and
+  /// the two directions of a street stay apart under a heading tolerance), or undirected lines in [0, 180)
+  /// (false).
   bool directed = true;
-  /// Each sample is moved, after sampling and the density filter, to the mean of the fixes that joined it (true,
-  /// default), or stays at the first trace point that created it (false). Points inserted along a trip's
-  /// segments do not count (they cut corners); a sample that only inserted points joined stays where it was
-  /// created.
+  /// Each sample is moved, after sampling and the density filter, to the mean of the fixes that joined it
+  /// (true, default), or stays at the first trace point that created it (false). Points inserted along a
+  /// trip's segments do not count (they cut corners); a sample that only inserted points joined stays where
+  /// it was created.
   bool mean_positions = true;
   /// Drops samples that stand for fewer trace points than this fraction of the most any sample within
-  /// `density_radius` stands for: scattered fixes (multipath next to tall buildings) away from the dense band of
-  /// the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all. In
-  /// [0, 1] (1 keeps only local maxima).
+  /// `density_radius` stands for: scattered fixes (multipath next to tall buildings) away from the dense band
+  /// of the street they belong to. A lone street keeps its samples (its own maximum). 0 (default): keep all.
+  /// In [0, 1] (1 keeps only local maxima).
   double min_relative_density = 0;
   /// Drops samples that stand for fewer trace points than this fraction of the most any sample beside them
-  /// stands for: within `density_radius`, travelling within `density_heading_tolerance` of the same direction, and
-  /// lying at least 45 degrees off the sample's direction (the offset across it at least the offset along it).
-  /// Scatter lies beside the band of its street, and it is sparse there relative to the band (multipath zones of
-  /// Chicago drew loops through such fixes; benchmark/README.md, "Scatter beside a street"). A quiet street that
-  /// continues a busy one, or crosses it, has the busy samples behind it or travelling another way and is judged
-  /// by `min_relative_density` alone; one that forks off a busy street at an acute angle (within
-  /// `density_heading_tolerance`: a slip road) has busy samples beside it near the fork and loses them. Samples
-  /// that only fixes of trips that never move joined (parked vehicles, one-fix trips: no direction, they point
-  /// east) are neither judged nor count as heavy neighbours. 0 (default): off; road maps use 0.3. In [0, 1].
+  /// stands for: within `density_radius`, travelling within `density_heading_tolerance` of the same
+  /// direction, and lying at least 45 degrees off the sample's direction (the offset across it at least the
+  /// offset along it). Scatter lies beside the band of its street, and it is sparse there relative to the
+  /// band (multipath zones of Chicago drew loops through such fixes; benchmark/README.md, "Scatter beside a
+  /// street"). A quiet street that continues a busy one, or crosses it, has the busy samples behind it or
+  /// travelling another way and is judged by `min_relative_density` alone; one that forks off a busy street
+  /// at an acute angle (within `density_heading_tolerance`: a slip road) has busy samples beside it near the
+  /// fork and loses them. Samples that only fixes of trips that never move joined (parked vehicles, one-fix
+  /// trips: no direction, they point east) are neither judged nor count as heavy neighbours. 0 (default):
+  /// off; road maps use 0.3. In [0, 1].
   double min_lateral_density = 0;
   /// Radius of the local maxima above. 0: twice the Rips radius.
   double density_radius = 0;
   /// A sample is compared only with samples whose travel directions differ from its own by at most this angle
-  /// (degrees; directed as sampled): the lightly used carriageway of a divided road next to a busy opposite one,
-  /// or a side street crossing a main road, is not mistaken for scatter. 180 or more: all samples within
+  /// (degrees; directed as sampled): the lightly used carriageway of a divided road next to a busy opposite
+  /// one, or a side street crossing a main road, is not mistaken for scatter. 180 or more: all samples within
   /// `density_radius` (directions ignored). Default 45.
   double density_heading_tolerance = 45;
   /// A segment between consecutive fixes is densified only where the traces confirm it: every point inserted
-  /// along it lies within this distance of some fix (of any trip), or the trip drives straight through it (see
-  /// segment_turn_tolerance). Between sparse fixes (tens of seconds apart) a vehicle that turned cuts the
-  /// corner, and the segment crosses a block where no fix lies. An unconfirmed segment up to four times this long
-  /// still links its two ends (no points inserted: the vehicle went from one to the other, the way is unknown); a
-  /// longer one breaks the trip like a gap. Segments up to twice this long are confirmed by their own ends.
-  /// 0: two thirds of the Rips radius, at least 20 m (GPS scatter across a street plus half the gap between the
-  /// fixes of light traffic along it; thinned Chicago traces lose recall below 20 m). Negative: no check, every
-  /// segment up to the link gap is used (`featurerecon skeleton --segment-support 0`, as for its other stages).
+  /// along it lies within this distance of some fix (of any trip), or the trip drives straight through it
+  /// (see segment_turn_tolerance). Between sparse fixes (tens of seconds apart) a vehicle that turned cuts
+  /// the corner, and the segment crosses a block where no fix lies. An unconfirmed segment up to four times
+  /// this long still links its two ends (no points inserted: the vehicle went from one to the other, the way
+  /// is unknown); a longer one breaks the trip like a gap. Segments up to twice this long are confirmed by
+  /// their own ends. 0: two thirds of the Rips radius, at least 20 m (GPS scatter across a street plus half
+  /// the gap between the fixes of light traffic along it; thinned Chicago traces lose recall below 20 m).
+  /// Negative: no check, every segment up to the link gap is used (`featurerecon skeleton --segment-support
+  /// 0`, as for its other stages).
   double segment_support = 0;
-  /// An unconfirmed segment is still used when the trip does not turn there: the directions in which it arrives
-  /// at the segment and leaves it (each from the nearest fix at least segment_support away, so that a vehicle
-  /// wobbling at a stop does not turn, and not across a gap; those that exist, at least one) lie within this
-  /// angle of the segment (degrees). A street driven by one trip is confirmed by no other. Default 30.
+  /// An unconfirmed segment is still used when the trip does not turn there: the directions in which it
+  /// arrives at the segment and leaves it (each from the nearest fix at least segment_support away, so that a
+  /// vehicle wobbling at a stop does not turn, and not across a gap; those that exist, at least one) lie
+  /// within this angle of the segment (degrees). A street driven by one trip is confirmed by no other.
+  /// Default 30.
   double segment_turn_tolerance = 30;
-  /// Where fixes lie densely, a chord that cuts a block still passes within segment_support of the fixes on the
-  /// streets around it (a taxi-like city at 42 s with 8 m of noise confirmed 0.56 of its segments, most of them
-  /// diagonals). A segment longer than 4 segment_support is therefore confirmed at a local distance: from each
-  /// end, the distance to the local_support_fixes-th nearest distinct fix position (the end's own counted), the
-  /// larger of the two, at least min_local_support times segment_support; segment_support where fewer than
-  /// local_support_fixes positions lie within it. On a street the fixes lie about that far apart, so a point of a
-  /// driven street is within it of one. Shorter segments, whose unconfirmed ones still link their ends, keep
-  /// segment_support. The turn rule's evidence (Gps_trace_sample::straight_confirmed) counts confirmation at the
-  /// local distance; the stand-down of min_confirmed_fraction counts it at segment_support (dense traces whose
-  /// chords fail are not too sparse to judge). Default 8; 0: segment_support everywhere. At most 1024.
+  /// Where fixes lie densely, a chord that cuts a block still passes within segment_support of the fixes on
+  /// the streets around it (a taxi-like city at 42 s with 8 m of noise confirmed 0.56 of its segments, most
+  /// of them diagonals). A segment longer than 4 segment_support is therefore confirmed at a local distance:
+  /// from each end, the distance to the local_support_fixes-th nearest distinct fix position (the end's own
+  /// counted), the larger of the two, at least min_local_support times segment_support; segment_support where
+  /// fewer than local_support_fixes positions lie within it. On a street the fixes lie about that far apart,
+  /// so a point of a driven street is within it of one. Shorter segments, whose unconfirmed ones still link
+  /// their ends, keep segment_support. The turn rule's evidence (Gps_trace_sample::straight_confirmed) counts
+  /// confirmation at the local distance; the stand-down of min_confirmed_fraction counts it at
+  /// segment_support (dense traces whose chords fail are not too sparse to judge). Default 8; 0:
+  /// segment_support everywhere. At most 1024.
   std::size_t local_support_fixes = 8;
-  /// Lower bound of the local distance above, as a fraction of segment_support, in (0, 1]. Default 0.6 (12 m at
-  /// the automatic 20 m: GPS scatter across a street).
+  /// Lower bound of the local distance above, as a fraction of segment_support, in (0, 1]. Default 0.6 (12 m
+  /// at the automatic 20 m: GPS scatter across a street).
   double min_local_support = 0.6;
-  /// Traces too sparse to confirm one another: when fewer than this fraction of the segments that need a check
-  /// are confirmed, every segment is used (Gps_trace_sample::all_segments_used). Default 0.2; 0: never.
+  /// Traces too sparse to confirm one another: when fewer than this fraction of the segments that need a
+  /// check are confirmed, every segment is used (Gps_trace_sample::all_segments_used). Default 0.2; 0: never.
   double min_confirmed_fraction = 0.2;
-  /// The turn rule is trusted only where the traces show that it tells streets: a segment the trip drives straight
-  /// through must be confirmed by fixes at least this often among the checked segments (the 95 % Wilson upper
-  /// bound of the share confirmed reaches it; Gps_trace_sample::turn_rule_used). Bus routes follow long straight
-  /// streets and their straight segments are confirmed (Chicago's traces thinned to every 3rd to 12th fix: 0.83
-  /// to 0.99 of them, counted at the local distance); random routes between fixes hundreds of metres apart run
-  /// straight for kilometres while their segments cut blocks, and there straightness says little (a synthetic
-  /// taxi city at 42 s: 0.26 of the straight segments confirmed; 0.54 to 0.62 in the synthetic cities of 600 and
-  /// 3000 trips at 20 s, which lose 0.01 to 0.07 in F with the rule): the rule drew lines across blocks. The
-  /// unconfirmed straight segments count against the rule too, so few checked segments with none confirmed
-  /// distrust it, and where most streets are driven by one or two trips the rule, though often wrong, adds streets
-  /// no other trip draws (synthetic cities of 150 trips lose up to 0.19 in F without it). Default 0.75 (0.9 until
-  /// session 39: set when confirmation was counted at segment_support, it distrusted the rule on Chicago's every
-  /// 10th fix from its first, F 0.46 instead of 0.62); 0: always trusted.
+  /// The turn rule is trusted only where the traces show that it tells streets: a segment the trip drives
+  /// straight through must be confirmed by fixes at least this often among the checked segments (the 95 %
+  /// Wilson upper bound of the share confirmed reaches it; Gps_trace_sample::turn_rule_used). Bus routes
+  /// follow long straight streets and their straight segments are confirmed (Chicago's traces thinned to
+  /// every 3rd to 12th fix: 0.83 to 0.99 of them, counted at the local distance); random routes between fixes
+  /// hundreds of metres apart run straight for kilometres while their segments cut blocks, and there
+  /// straightness says little (a synthetic taxi city at 42 s: 0.26 of the straight segments confirmed; 0.54
+  /// to 0.62 in the synthetic cities of 600 and 3000 trips at 20 s, which lose 0.01 to 0.07 in F with the
+  /// rule): the rule drew lines across blocks. The unconfirmed straight segments count against the rule too,
+  /// so few checked segments with none confirmed distrust it, and where most streets are driven by one or two
+  /// trips the rule, though often wrong, adds streets no other trip draws (synthetic cities of 150 trips lose
+  /// up to 0.19 in F without it). Default 0.75 (0.9 until session 39: set when confirmation was counted at
+  /// segment_support, it distrusted the rule on Chicago's every 10th fix from its first, F 0.46 instead of
+  /// 0.62); 0: always trusted.
   double min_straight_confirmed_fraction = 0.75;
-  /// Where the turn rule is not trusted, an unconfirmed segment the trip drives straight through is still used
-  /// when both its ends are quiet: fewer than this many distinct fix positions (the end's own counted) lie within
-  /// segment_support of each. The rule is distrusted because many trips' fixes leave chords unconfirmed; where
-  /// hardly any other fix is around, no other trip could have confirmed the segment, and it is a street one
-  /// trip drives as often as a chord (Chicago's traces thinned to every 15th or 20th fix: F 0.43 / 0.40 without,
-  /// 0.57 / 0.52 with, above the rule always trusted; synthetic cities of 150 trips at 20 s +0.02 to +0.16, the
-  /// others within -0.007 and +0.003, the taxi-like city -0.001; 8 cost the 600-trip cities up to 0.04).
-  /// Default 4 (session 39); 0: never. At most 1024.
+  /// Where the turn rule is not trusted, an unconfirmed segment the trip drives straight through is still
+  /// used when both its ends are quiet: fewer than this many distinct fix positions (the end's own counted)
+  /// lie within segment_support of each. The rule is distrusted because many trips' fixes leave chords
+  /// unconfirmed; where hardly any other fix is around, no other trip could have confirmed the segment, and
+  /// it is a street one trip drives as often as a chord (Chicago's traces thinned to every 15th or 20th fix:
+  /// F 0.43 / 0.40 without, 0.57 / 0.52 with, above the rule always trusted; synthetic cities of 150 trips at
+  /// 20 s +0.02 to +0.16, the others within -0.007 and +0.003, the taxi-like city -0.001; 8 cost the 600-trip
+  /// cities up to 0.04). Default 4 (session 39); 0: never. At most 1024.
   std::size_t quiet_end_fixes = 4;
-  /// Refuse (std::invalid_argument, before any is made) linking that would insert more points than this along the
-  /// segments: one jump of 1,000 km between two fixes within a generous max_link_gap asked for 10^8 points at a
-  /// spacing of 10 m. Default 2^26 (the traces of Chicago need about 500,000); 0: no limit.
+  /// Refuse (std::invalid_argument, before any is made) linking that would insert more points than this along
+  /// the segments: one jump of 1,000 km between two fixes within a generous max_link_gap asked for 10^8
+  /// points at a spacing of 10 m. Default 2^26 (the traces of Chicago need about 500,000); 0: no limit.
   std::size_t max_inserted_points = std::size_t(1) << 26;
-  /// Refuse (std::invalid_argument, before comparing any) a density filter that would compare more pairs of samples
-  /// than this (every sample with the samples in the grid cells of side density_radius around it): a sample spacing
-  /// far below the radius fills the scatter around the streets with samples (Chicago: 0.8 million pairs at the
-  /// default spacing, 12 m; 3.2 * 10^8 at 2 m; 2.7 * 10^10 at 0.5 m, which ran 6 minutes and took 8 GB before the
-  /// complex's triangle limit refused it). The pairs are counted as the samples are made, and the sampling stops
-  /// as soon as they pass the limit (3,000 Chicago fixes at spacing 0.01 made 7.3 million samples in 38 s and 1 GB
-  /// before they were counted; now 73,000 samples, 0.3 s), so the refusal can come before a stop that the
-  /// progress callback would have asked for later in the sampling. Default 2^30; 0: no limit.
+  /// Refuse (std::invalid_argument, before comparing any) a density filter that would compare more pairs of
+  /// samples than this (every sample with the samples in the grid cells of side density_radius around it): a
+  /// sample spacing far below the radius fills the scatter around the streets with samples (Chicago: 0.8
+  /// million pairs at the default spacing, 12 m; 3.2 * 10^8 at 2 m; 2.7 * 10^10 at 0.5 m, which ran 6 minutes
+  /// and took 8 GB before the complex's triangle limit refused it). The pairs are counted as the samples are
+  /// made, and the sampling stops as soon as they pass the limit (3,000 Chicago fixes at spacing 0.01
+  /// made 7.3 million samples in 38 s and 1 GB before they were counted; now 73,000 samples, 0.3 s), so the
+  /// refusal can come before a stop that the progress callback would have asked for later in the sampling.
+  /// Default 2^30; 0: no limit.
   std::size_t max_density_pairs = std::size_t(1) << 30;
-  /// Called with the fraction done (per trip during the segment check and while sampling, every 4096 samples of
-  /// the density filter); returning false stops the sampling (Gps_trace_sample::status interrupted).
+  /// Called with the fraction done (per trip during the segment check and while sampling, every 4096 samples
+  /// of the density filter); returning false stops the sampling (Gps_trace_sample::status interrupted).
   Progress_callback progress;
 };
 
 /// Samples of GPS traces with the parameters used.
 struct Gps_trace_sample {
-  Point_matrix points;                       ///< sample positions (dimension 2; see Gps_trace_options::mean_positions)
-  std::vector<double> headings;              ///< travel direction of each sample: [0, 360) degrees, or [0, 180)
-  bool directed = true;                      ///< which of the two (Gps_trace_options::directed)
+  Point_matrix points;           ///< sample positions (dimension 2; see Gps_trace_options::mean_positions)
+  std::vector<double> headings;  ///< travel direction of each sample: [0, 360) degrees, or [0, 180)
+  bool directed = true;          ///< which of the two (Gps_trace_options::directed)
   /// Gps_trace_options::heading_tolerance (degrees): build_gps_trace_graph() uses it unless told otherwise
   double heading_tolerance = 180;
-  std::vector<std::uint32_t> weights;        ///< trace points (fixes and inserted points) each sample stands for
-  std::vector<Edge> trip_links;              ///< consecutive samples of a trip (sorted, unique, u < v)
+  std::vector<std::uint32_t> weights;  ///< trace points (fixes and inserted points) each sample stands for
+  std::vector<Edge> trip_links;        ///< consecutive samples of a trip (sorted, unique, u < v)
   std::vector<std::uint32_t> sample_of_fix;  ///< per input fix (trips concatenated in order): its sample
   std::size_t fixes = 0;                     ///< number of input fixes
   double sample_spacing = 0;                 ///< value used
@@ -173,20 +181,20 @@ struct Gps_trace_sample {
   std::size_t dropped_lateral = 0;           ///< ... of which only min_lateral_density dropped
   double segment_support = 0;                ///< value used (negative: no check)
   double segment_turn_tolerance = 0;         ///< value used
-  std::size_t checked_segments = 0;          ///< segments within the link gap, longer than 2 segment_support, with
-                                             ///< points to insert
-  std::size_t confirmed_segments = 0;        ///< ... of which every inserted point lies near a fix
-  std::size_t locally_checked = 0;           ///< checked segments confirmed at a local distance below
-                                             ///< segment_support (Gps_trace_options::local_support_fixes)
-  std::size_t locally_rejected = 0;          ///< ... of which confirmed at segment_support but not at that distance
-  std::size_t straight_segments = 0;         ///< ... of the others, driven straight through (used)
-  std::size_t quiet_segments = 0;            ///< ... of which used for their quiet ends alone (the turn rule not
-                                             ///< trusted; Gps_trace_options::quiet_end_fixes)
-  std::size_t straight_checked = 0;          ///< checked segments driven straight through (confirmed or not)
-  std::size_t straight_confirmed = 0;        ///< ... of which confirmed by fixes
-  bool turn_rule_used = true;                ///< straight unconfirmed segments kept (min_straight_confirmed_fraction)
-  std::size_t linked_segments = 0;           ///< ... of the rest, up to 4 segment_support: ends linked only
-  bool all_segments_used = false;            ///< the check was off or too few were confirmed (see the options)
+  std::size_t checked_segments = 0;    ///< segments within the link gap, longer than 2 segment_support, with
+                                       ///< points to insert
+  std::size_t confirmed_segments = 0;  ///< ... of which every inserted point lies near a fix
+  std::size_t locally_checked = 0;     ///< checked segments confirmed at a local distance below
+                                       ///< segment_support (Gps_trace_options::local_support_fixes)
+  std::size_t locally_rejected = 0;    ///< ... of which confirmed at segment_support but not at that distance
+  std::size_t straight_segments = 0;   ///< ... of the others, driven straight through (used)
+  std::size_t quiet_segments = 0;      ///< ... of which used for their quiet ends alone (the turn rule not
+                                       ///< trusted; Gps_trace_options::quiet_end_fixes)
+  std::size_t straight_checked = 0;    ///< checked segments driven straight through (confirmed or not)
+  std::size_t straight_confirmed = 0;  ///< ... of which confirmed by fixes
+  bool turn_rule_used = true;       ///< straight unconfirmed segments kept (min_straight_confirmed_fraction)
+  std::size_t linked_segments = 0;  ///< ... of the rest, up to 4 segment_support: ends linked only
+  bool all_segments_used = false;   ///< the check was off or too few were confirmed (see the options)
   /// success, or interrupted when Gps_trace_options::progress returned false (the sample is then incomplete:
   /// not to be used)
   Status status = Status::success;
@@ -228,8 +236,8 @@ inline std::vector<std::size_t> time_order(const Gps_trip& trip) {
 }
 
 /// Buckets of sample indices on a square grid over a bounding box: a dense array of cells when there are at
-/// most 2^24 of them and at most 16 per expected item (`expected_items`), a hash map otherwise (sparse data over
-/// a large extent: two trips 40 km apart must not allocate millions of empty cells).
+/// most 2^24 of them and at most 16 per expected item (`expected_items`), a hash map otherwise (sparse data
+/// over a large extent: two trips 40 km apart must not allocate millions of empty cells).
 class Planar_grid {
  public:
   Planar_grid(double xmin, double ymin, double xmax, double ymax, double cell, std::size_t expected_items)
@@ -281,23 +289,26 @@ inline std::array<double, 4> bounding_box(const Point_matrix& m) {
   return b;
 }
 
-/// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius that travels within
-/// `heading_tolerance` degrees of the same direction, or lighter than `lateral_fraction` times the heaviest such
-/// sample beside them (the offset across the sample's direction at least the offset along it; samples without a
-/// direction, per `has_direction`, neither judged nor counted); re-indexes.
-inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lateral_fraction, double heading_tolerance,
-                                const std::vector<bool>& has_direction, const Progress_callback& progress = {}) {
+/// Removes samples lighter than `fraction` times the heaviest sample within S.density_radius that travels
+/// within `heading_tolerance` degrees of the same direction, or lighter than `lateral_fraction` times the
+/// heaviest such sample beside them (the offset across the sample's direction at least the offset along it;
+/// samples without a direction, per `has_direction`, neither judged nor counted); re-indexes.
+inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lateral_fraction,
+                                double heading_tolerance, const std::vector<bool>& has_direction,
+                                const Progress_callback& progress = {}) {
   const double R = S.density_radius, R2 = R * R;
   constexpr double degree = 3.14159265358979323846 / 180.0;
   const std::array<double, 4> box = bounding_box(S.points);
   Planar_grid grid(box[0], box[1], box[2], box[3], R, S.points.rows);
-  for (std::uint32_t i = 0; i < S.points.rows; ++i) grid.push(grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]), i);
+  for (std::uint32_t i = 0; i < S.points.rows; ++i)
+    grid.push(grid.cell_of(S.points.row(i)[0], S.points.row(i)[1]), i);
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> new_index(S.points.rows, none);
   Gps_trace_sample T;
   T.points.dimension = 2;
   for (std::uint32_t i = 0; i < S.points.rows; ++i) {
-    if (i % 4096 == 0 && !FeatureRecon::internal::report_progress(progress, double(i) / double(S.points.rows))) {
+    if (i % 4096 == 0 &&
+        !FeatureRecon::internal::report_progress(progress, double(i) / double(S.points.rows))) {
       S.status = Status::interrupted;  // S unfiltered
       return;
     }
@@ -340,7 +351,8 @@ inline void drop_sparse_samples(Gps_trace_sample& S, double fraction, double lat
   std::vector<Edge> links;
   for (const Edge& e : S.trip_links)
     if (new_index[e[0]] != none && new_index[e[1]] != none)
-      links.push_back({std::min(new_index[e[0]], new_index[e[1]]), std::max(new_index[e[0]], new_index[e[1]])});
+      links.push_back(
+          {std::min(new_index[e[0]], new_index[e[1]]), std::max(new_index[e[0]], new_index[e[1]])});
   S.trip_links = std::move(links);
 }
 
@@ -353,8 +365,8 @@ inline Proximity_graph planar_graph(const Point_matrix& points, std::vector<Edge
   g.edges = std::move(edges);
   g.edge_lengths.reserve(g.edges.size());
   for (const Edge& e : g.edges)
-    g.edge_lengths.push_back(std::hypot(points.row(e[0])[0] - points.row(e[1])[0],
-                                        points.row(e[0])[1] - points.row(e[1])[1]));
+    g.edge_lengths.push_back(
+        std::hypot(points.row(e[0])[0] - points.row(e[1])[0], points.row(e[0])[1] - points.row(e[1])[1]));
   return g;
 }
 
@@ -376,40 +388,43 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
   return steps[steps.size() / 2];
 }
 
-/// Densifies and samples GPS traces (see Gps_trace_options). Each sample carries the direction of the segment it
-/// came from (for a fix, the segment to the next fix at another place, or from the last one at the end of the
-/// trip, so that fixes of a waiting vehicle point the way it drives; a trip that never moves points east); a
-/// trace point joins the first earlier sample within the spacing whose direction differs by at most
+/// Densifies and samples GPS traces (see Gps_trace_options). Each sample carries the direction of the segment
+/// it came from (for a fix, the segment to the next fix at another place, or from the last one at the end of
+/// the trip, so that fixes of a waiting vehicle point the way it drives; a trip that never moves points
+/// east); a trace point joins the first earlier sample within the spacing whose direction differs by at most
 /// the heading tolerance, so opposite sides of a crossing stay apart when directions are used. Segments are
-/// checked first (Gps_trace_options::segment_support): one that leaves the traces where the trip turns (a corner
-/// cut between sparse fixes) is not densified. Time O(F + P) grid look-ups for F fixes and P inserted points, plus
-/// a kd-tree of the distinct fix positions and a k-nearest query per position that ends a long segment where
-/// fixes lie densely (Gps_trace_options::local_support_fixes): O(F log F).
-/// \param rips_radius the radius the samples will be joined at (for the automatic rules).
-/// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a non-positive
-///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite link gap
-///         or segment support, a negative heading tolerance, a negative or non-finite density radius, a turn
-///         tolerance outside [0, 180], a confirmed fraction or a density fraction outside [0, 1]), fixes beyond
-///         2^50 sample spacings (or radii, or density radii) from the origin, linking that would insert more than
-///         options.max_inserted_points points, or a density filter that would compare more than
-///         options.max_density_pairs pairs of samples.
+/// checked first (Gps_trace_options::segment_support): one that leaves the traces where the trip turns (a
+/// corner cut between sparse fixes) is not densified. Time O(F + P) grid look-ups for F fixes and P inserted
+/// points, plus a kd-tree of the distinct fix positions and a k-nearest query per position that ends a long
+/// segment where fixes lie densely (Gps_trace_options::local_support_fixes): O(F log F). \param rips_radius
+/// the radius the samples will be joined at (for the automatic rules). \throws std::invalid_argument naming
+/// the trip and fix with a non-finite coordinate or time, or a non-positive
+///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite
+///         link gap or segment support, a negative heading tolerance, a negative or non-finite density
+///         radius, a turn tolerance outside [0, 180], a confirmed fraction or a density fraction outside [0,
+///         1]), fixes beyond 2^50 sample spacings (or radii, or density radii) from the origin, linking that
+///         would insert more than options.max_inserted_points points, or a density filter that would compare
+///         more than options.max_density_pairs pairs of samples.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
   if (!(rips_radius > 0 && std::isfinite(rips_radius)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ", rips_radius);
+    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ",
+                                                   rips_radius);
   if (!(options.sample_spacing >= 0 && std::isfinite(options.sample_spacing)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing must be finite and >= 0 (0: automatic), got ",
-                                                   options.sample_spacing);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "sample_spacing must be finite and >= 0 (0: automatic), got ", options.sample_spacing);
   if (!std::isfinite(options.max_link_gap))
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_link_gap must be finite (0: automatic, negative: no ",
+    FeatureRecon::internal::throw_invalid_argument(fn,
+                                                   "max_link_gap must be finite (0: automatic, negative: no ",
                                                    "linking), got ", options.max_link_gap);
   if (!(options.heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees, got ",
                                                    options.heading_tolerance);
   if (!(options.density_radius >= 0 && std::isfinite(options.density_radius)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "density_radius must be finite and >= 0 (0: twice the Rips ",
-                                                   "radius), got ", options.density_radius);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "density_radius must be finite and >= 0 (0: twice the Rips ", "radius), got ",
+        options.density_radius);
   auto check_fraction = [fn](const char* name, double value) {  // in [0, 1], NaN refused
     if (!(value >= 0 && value <= 1))
       FeatureRecon::internal::throw_invalid_argument(fn, name, " must be in [0, 1], got ", value);
@@ -420,13 +435,15 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     FeatureRecon::internal::throw_invalid_argument(fn, "density_heading_tolerance must be >= 0 degrees, got ",
                                                    options.density_heading_tolerance);
   if (!std::isfinite(options.segment_support))
-    FeatureRecon::internal::throw_invalid_argument(fn, "segment_support must be finite (0: automatic, negative: no ",
-                                                   "check), got ", options.segment_support);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "segment_support must be finite (0: automatic, negative: no ", "check), got ",
+        options.segment_support);
   if (!(options.segment_turn_tolerance >= 0 && options.segment_turn_tolerance <= 180))
-    FeatureRecon::internal::throw_invalid_argument(fn, "segment_turn_tolerance must be in [0, 180] degrees, got ",
-                                                   options.segment_turn_tolerance);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "segment_turn_tolerance must be in [0, 180] degrees, got ", options.segment_turn_tolerance);
   auto check_fix_count = [&](const char* name, std::size_t value) {  // counts of nearest fixes looked up
-    if (value > 1024) FeatureRecon::internal::throw_invalid_argument(fn, name, " must be at most 1024, got ", value);
+    if (value > 1024)
+      FeatureRecon::internal::throw_invalid_argument(fn, name, " must be at most 1024, got ", value);
   };
   check_fix_count("local_support_fixes", options.local_support_fixes);
   check_fix_count("quiet_end_fixes", options.quiet_end_fixes);
@@ -436,8 +453,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   check_fraction("min_confirmed_fraction", options.min_confirmed_fraction);
   check_fraction("min_straight_confirmed_fraction", options.min_straight_confirmed_fraction);
   Gps_trace_sample S;
-  // Progress through the fixes: `done` of S.fixes at the stage [from, from + width]; true (status interrupted) when
-  // the callback says stop. Asked before each trip and every `progress_stride` fixes within one.
+  // Progress through the fixes: `done` of S.fixes at the stage [from, from + width]; true (status
+  // interrupted) when the callback says stop. Asked before each trip and every `progress_stride` fixes within
+  // one.
   constexpr std::size_t progress_stride = 4096;
   auto stop_at = [&](double from, double width, std::size_t done) {
     const double fraction = from + width * double(done) / double(std::max<std::size_t>(S.fixes, 1));
@@ -452,26 +470,32 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     for (std::size_t i = 0; i < trips[t].size(); ++i) {
       const Gps_fix& f = trips[t][i];
       if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.time))
-        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " has a non-finite value");
+        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i,
+                                                       " has a non-finite value");
     }
     order[t] = internal::time_order(trips[t]);
     S.fixes += trips[t].size();
   }
   S.median_step = median_gps_step(trips);
   S.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : rips_radius / 2;
-  S.max_link_gap = options.max_link_gap != 0 ? options.max_link_gap : std::max(4 * S.median_step, 2 * rips_radius);
+  S.max_link_gap =
+      options.max_link_gap != 0 ? options.max_link_gap : std::max(4 * S.median_step, 2 * rips_radius);
   S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
-  // Grid cells are 64-bit integers of position / spacing (or density radius, when that filter is on): beyond 2^50
-  // cells from the origin they would overflow.
+  // Grid cells are 64-bit integers of position / spacing (or density radius, when that filter is on): beyond
+  // 2^50 cells from the origin they would overflow.
   const bool density_filter = options.min_relative_density > 0 || options.min_lateral_density > 0;
-  const double finest = std::min({S.sample_spacing, rips_radius, density_filter ? S.density_radius : HUGE_VAL});
+  const double finest =
+      std::min({S.sample_spacing, rips_radius, density_filter ? S.density_radius : HUGE_VAL});
   for (std::size_t t = 0; t < trips.size(); ++t)
     for (std::size_t i = 0; i < trips[t].size(); ++i)
       if (std::max(std::fabs(trips[t][i].x), std::fabs(trips[t][i].y)) / finest > 0x1p50)
-        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " at (", trips[t][i].x, ", ",
-                                                       trips[t][i].y, ") lies more than 2^50 times the sample "
-                                                       "spacing, radius or density radius (", finest, ") from the "
-                                                       "origin; shift or scale the traces, or raise that length");
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "trip ", t, ", fix ", i, " at (", trips[t][i].x, ", ", trips[t][i].y,
+            ") lies more than 2^50 times the sample "
+            "spacing, radius or density radius (",
+            finest,
+            ") from the "
+            "origin; shift or scale the traces, or raise that length");
   const double insert_step = S.sample_spacing / 2;
   if (S.max_link_gap > 0 && options.max_inserted_points > 0) {  // the most points linking could insert
     double inserted = 0, longest = 0;
@@ -490,10 +514,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       }
     if (inserted > static_cast<double>(options.max_inserted_points))
       FeatureRecon::internal::throw_invalid_argument(
-          fn, "linking consecutive fixes would insert about ", inserted, " points along the segments (more than ",
-          "max_inserted_points, ", options.max_inserted_points, "; the longest linked segment, from trip ",
-          longest_trip, ", fix ", longest_fix, ", is ", longest, " long): lower max_link_gap (", S.max_link_gap,
-          ") or raise sample_spacing (", S.sample_spacing, ")");
+          fn, "linking consecutive fixes would insert about ", inserted,
+          " points along the segments (more than ", "max_inserted_points, ", options.max_inserted_points,
+          "; the longest linked segment, from trip ", longest_trip, ", fix ", longest_fix, ", is ", longest,
+          " long): lower max_link_gap (", S.max_link_gap, ") or raise sample_spacing (", S.sample_spacing,
+          ")");
   }
   const double spacing2 = S.sample_spacing * S.sample_spacing;
   const double cell = S.sample_spacing;
@@ -506,11 +531,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       ++fixes.rows;
     }
   const std::array<double, 4> box = internal::bounding_box(fixes);  // inserted points lie inside it too
-  // Which segments the traces confirm (Gps_trace_options::segment_support): use[t][i] for the segment from the
-  // i-th to the (i+1)-th fix of trip t in time order.
+  // Which segments the traces confirm (Gps_trace_options::segment_support): use[t][i] for the segment from
+  // the i-th to the (i+1)-th fix of trip t in time order.
   enum Segment_use : char { break_trip, densify, link_ends };
-  S.segment_support = options.segment_support != 0 ? options.segment_support
-                                                   : std::max(20.0, 2 * rips_radius / 3);
+  S.segment_support =
+      options.segment_support != 0 ? options.segment_support : std::max(20.0, 2 * rips_radius / 3);
   S.segment_turn_tolerance = options.segment_turn_tolerance;
   std::vector<std::vector<char>> use(trips.size());
   for (std::size_t t = 0; t < trips.size(); ++t) use[t].assign(trips[t].size(), densify);
@@ -523,10 +548,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     std::sort(places.begin(), places.end());
     places.erase(std::unique(places.begin(), places.end()), places.end());
     const double extent = std::max(box[2] - box[0], box[3] - box[1]);
-    const double fix_cell =
-        std::max(support, std::isfinite(extent) ? std::ldexp(extent, -20) : std::numeric_limits<double>::max());
+    const double fix_cell = std::max(
+        support, std::isfinite(extent) ? std::ldexp(extent, -20) : std::numeric_limits<double>::max());
     internal::Planar_grid fix_grid(box[0], box[1], box[2], box[3], fix_cell, places.size());
-    for (std::uint32_t i = 0; i < places.size(); ++i) fix_grid.push(fix_grid.cell_of(places[i][0], places[i][1]), i);
+    for (std::uint32_t i = 0; i < places.size(); ++i)
+      fix_grid.push(fix_grid.cell_of(places[i][0], places[i][1]), i);
     // The local distance at a fix (Gps_trace_options::local_support_fixes): the distance to the k-th nearest
     // distinct fix position, its own counted; `support` where that is farther (or there are fewer positions).
     std::unique_ptr<internal::Kd_index> place_index;
@@ -556,8 +582,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     };
     auto near_a_fix = [&](double x, double y, double within2) { return fixes_within(x, y, within2, 1) == 1; };
     const double min_local = options.min_local_support * support;
-    // Once per position (ends of long segments only): where fewer than k positions lie within `support` (counted
-    // on the grid, stopping at k) no search is needed.
+    // Once per position (ends of long segments only): where fewer than k positions lie within `support`
+    // (counted on the grid, stopping at k) no search is needed.
     std::vector<double> local_at(place_index ? places.size() : 0, -1.0);
     auto local_support = [&](const Gps_fix& f) {
       if (!place_index) return support;
@@ -586,7 +612,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     auto drives_straight = [&](std::size_t t, std::size_t i) {
       const auto& o = order[t];
       auto at = [&](std::size_t k) -> const Gps_fix& { return trips[t][o[k]]; };
-      auto far_enough = [&](const Gps_fix& p, const Gps_fix& q) { return std::hypot(q.x - p.x, q.y - p.y) >= support; };
+      auto far_enough = [&](const Gps_fix& p, const Gps_fix& q) {
+        return std::hypot(q.x - p.x, q.y - p.y) >= support;
+      };
       auto linked_step = [&](std::size_t k) {  // the segment from the k-th fix to the next is not a gap
         return std::hypot(at(k + 1).x - at(k).x, at(k + 1).y - at(k).y) <= S.max_link_gap;
       };
@@ -689,8 +717,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   std::vector<bool> has_direction;  // per sample: a point of a moving trip joined it
   // The pairs the density filter will compare (every sample with the samples in the 3 x 3 cells of side
   // density_radius around it), counted as samples are made, so that a spacing far below the radius is refused
-  // before it makes millions of samples (3,000 Chicago fixes at spacing 0.01 made 7.3 million samples in 38 s and
-  // 1 GB when the filter counted them afterwards).
+  // before it makes millions of samples (3,000 Chicago fixes at spacing 0.01 made 7.3 million samples in 38 s
+  // and 1 GB when the filter counted them afterwards).
   const bool count_pairs = density_filter && options.max_density_pairs > 0;
   std::unordered_map<std::array<std::int64_t, 2>, std::uint64_t, internal::Cell_hash> per_cell;
   double density_pairs = 0;
@@ -706,7 +734,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
           if (s >= best) break;  // cells hold samples in creation order
           const double ex = S.points.data[2 * s] - x, ey = S.points.data[2 * s + 1] - y;
           if (ex * ex + ey * ey < spacing2 &&
-              internal::heading_difference(S.headings[s], heading, options.directed) <= options.heading_tolerance)
+              internal::heading_difference(S.headings[s], heading, options.directed) <=
+                  options.heading_tolerance)
             best = s;
         }
       }
@@ -732,9 +761,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         if (density_pairs > static_cast<double>(options.max_density_pairs))
           FeatureRecon::internal::throw_invalid_argument(
               fn, "the density filter would compare at least ", density_pairs, " pairs of the first ",
-              S.headings.size(), " samples (more than max_density_pairs, ", options.max_density_pairs, "; counted ",
-              "while the samples were made): the sample spacing (sample_spacing ", S.sample_spacing, ") is small ",
-              "for the density radius (density_radius ", S.density_radius, "); raise the spacing, lower the radius, ",
+              S.headings.size(), " samples (more than max_density_pairs, ", options.max_density_pairs,
+              "; counted ", "while the samples were made): the sample spacing (sample_spacing ",
+              S.sample_spacing, ") is small ", "for the density radius (density_radius ", S.density_radius,
+              "); raise the spacing, lower the radius, ",
               "or turn the filter off (min_relative_density and min_lateral_density 0)");
       }
     }
@@ -770,9 +800,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       return trips[t][o[i]].x == trips[t][o[j]].x && trips[t][o[i]].y == trips[t][o[j]].y;
     };
     std::vector<std::size_t> next_move(o.size(), none), previous_move(o.size(), none);
-    for (std::size_t i = o.size(); i-- > 1;)
-      next_move[i - 1] = same_place(i - 1, i) ? next_move[i] : i;
-    for (std::size_t i = 1; i < o.size(); ++i) previous_move[i] = same_place(i - 1, i) ? previous_move[i - 1] : i - 1;
+    for (std::size_t i = o.size(); i-- > 1;) next_move[i - 1] = same_place(i - 1, i) ? next_move[i] : i;
+    for (std::size_t i = 1; i < o.size(); ++i)
+      previous_move[i] = same_place(i - 1, i) ? previous_move[i - 1] : i - 1;
     for (std::size_t i = 0; i < o.size(); ++i) {
       if (i % progress_stride == progress_stride - 1 && stop_at(0.3, 0.5, first_fix + i)) return S;
       const Gps_fix& f = trips[t][o[i]];
@@ -794,8 +824,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       S.sample_of_fix[first_fix + o[i]] = s;
       if (i > 0) {
         const Gps_fix& p = trips[t][o[i - 1]];
-        if (!(S.max_link_gap > 0 && std::hypot(f.x - p.x, f.y - p.y) <= S.max_link_gap) || use[t][i - 1] == break_trip)
-          previous = std::numeric_limits<std::uint32_t>::max();  // a gap or a corner cut: the trip restarts here
+        if (!(S.max_link_gap > 0 && std::hypot(f.x - p.x, f.y - p.y) <= S.max_link_gap) ||
+            use[t][i - 1] == break_trip)
+          previous =
+              std::numeric_limits<std::uint32_t>::max();  // a gap or a corner cut: the trip restarts here
       }
       link(s);
       if (i + 1 < o.size() && S.max_link_gap > 0) {
@@ -849,20 +881,20 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
 
 /// Options of build_gps_trace_graph().
 struct Gps_trace_graph_options {
-  /// Rips edges join samples whose travel directions differ by at most this angle (degrees; directed or not, as
-  /// sampled). Negative (default -1): the sample's, Gps_trace_sample::heading_tolerance (the
-  /// Gps_trace_options::heading_tolerance it was sampled with); 180 or more (90 or more for undirected samples):
-  /// directions are ignored.
+  /// Rips edges join samples whose travel directions differ by at most this angle (degrees; directed or not,
+  /// as sampled). Negative (default -1): the sample's, Gps_trace_sample::heading_tolerance (the
+  /// Gps_trace_options::heading_tolerance it was sampled with); 180 or more (90 or more for undirected
+  /// samples): directions are ignored.
   double heading_tolerance = -1;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips edges
   /// Called with the fraction done; returning false stops (the graph is partial; as build_rips_graph()).
   Progress_callback progress;
 };
 
-/// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose headings
-/// differ by at most the heading tolerance (Gps_trace_graph_options::heading_tolerance; directed or not, as
-/// sampled), plus the trip links; lengths are Euclidean.
-/// \throws std::invalid_argument when the heading tolerance is NaN (or negative in S), when S is inconsistent
+/// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose
+/// headings differ by at most the heading tolerance (Gps_trace_graph_options::heading_tolerance; directed or
+/// not, as sampled), plus the trip links; lengths are Euclidean. \throws std::invalid_argument when the
+/// heading tolerance is NaN (or negative in S), when S is inconsistent
 ///         (points not planar or not one heading per point, a heading outside its range, a trip link naming a
 ///         missing sample or joining a sample to itself), or as build_rips_graph().
 inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double rips_radius,
@@ -870,29 +902,29 @@ inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double r
   const char* fn = "build_gps_trace_graph";
   if (std::isnan(options.heading_tolerance))
     FeatureRecon::internal::throw_invalid_argument(fn, "the option heading_tolerance is NaN");
-  const double heading_tolerance = options.heading_tolerance < 0 ? S.heading_tolerance : options.heading_tolerance;
+  const double heading_tolerance =
+      options.heading_tolerance < 0 ? S.heading_tolerance : options.heading_tolerance;
   if (!(heading_tolerance >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "the sample's heading_tolerance must be >= 0 degrees, got ",
-                                                   heading_tolerance);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the sample's heading_tolerance must be >= 0 degrees, got ", heading_tolerance);
   if (S.points.dimension != 2 || S.points.data.size() != 2 * S.points.rows)
-    FeatureRecon::internal::throw_invalid_argument(fn, "the samples must be planar points (dimension 2, ",
-                                                   "2 coordinates per row), got dimension ", S.points.dimension,
-                                                   " with ", S.points.data.size(), " values for ", S.points.rows,
-                                                   " rows");
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the samples must be planar points (dimension 2, ", "2 coordinates per row), got dimension ",
+        S.points.dimension, " with ", S.points.data.size(), " values for ", S.points.rows, " rows");
   if (S.headings.size() != S.points.rows)
     FeatureRecon::internal::throw_invalid_argument(fn, "there are ", S.points.rows, " samples but ",
                                                    S.headings.size(), " headings");
   const double period = S.directed ? 360 : 180;
   for (std::size_t i = 0; i < S.headings.size(); ++i)
     if (!(S.headings[i] >= 0 && S.headings[i] < period))
-      FeatureRecon::internal::throw_invalid_argument(fn, "heading ", i, " (", S.headings[i], ") is not in [0, ",
-                                                     period, ")");
+      FeatureRecon::internal::throw_invalid_argument(fn, "heading ", i, " (", S.headings[i],
+                                                     ") is not in [0, ", period, ")");
   for (std::size_t k = 0; k < S.trip_links.size(); ++k)
     if (S.trip_links[k][0] >= S.points.rows || S.trip_links[k][1] >= S.points.rows ||
         S.trip_links[k][0] == S.trip_links[k][1])
       FeatureRecon::internal::throw_invalid_argument(fn, "trip link ", k, " (", S.trip_links[k][0], ", ",
-                                                     S.trip_links[k][1], ") is a loop or names a sample >= ",
-                                                     S.points.rows);
+                                                     S.trip_links[k][1],
+                                                     ") is a loop or names a sample >= ", S.points.rows);
   Proximity_graph_options ro;
   ro.search = options.search;
   ro.progress = options.progress;

@@ -18,8 +18,6 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
-#include <stdexcept>
-#include <string>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -27,6 +25,8 @@
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <unordered_map>
 #include <utility>
@@ -38,15 +38,17 @@ namespace skeleton {
 /// A graph embedded in the plane (a road map): vertex positions and undirected edges.
 struct Embedded_graph_2 {
   std::vector<std::array<double, 2>> positions;  ///< vertex coordinates (metres)
-  std::vector<Edge> edges;                        ///< undirected; repeated and reversed pairs are merged
+  std::vector<Edge> edges;                       ///< undirected; repeated and reversed pairs are merged
 };
 
 /// How compare_maps() pairs the samples of the two maps.
 enum class Map_matching {
-  /// Pairs accepted by increasing distance, each ground-truth sample taking the nearest available admissible one
+  /// Pairs accepted by increasing distance, each ground-truth sample taking the nearest available admissible
+  /// one
   /// among its `candidates` nearest reconstruction samples (the GraphSamplingToolkit's matching; the default)
   greedy,
-  /// A maximum-weight bipartite matching over every admissible pair, weight = match_distance - distance (exact up
+  /// A maximum-weight bipartite matching over every admissible pair, weight = match_distance - distance
+  /// (exact up
   /// to rounding; deterministic). It matches at least as much weight as the greedy one; on the Chicago maps
   /// 0.1-0.7 % more samples
   optimal
@@ -54,21 +56,21 @@ enum class Map_matching {
 
 /// Options of compare_maps() (the graph-sampling metric of Biagioni and Eriksson, global variant).
 struct Map_comparison_options {
-  /// Samples match when at most this far apart (m); default 15. Within [2^-450, 2^450] (about 3e-136 to 3e135):
-  /// squares of distances near it stay normal doubles
+  /// Samples match when at most this far apart (m); default 15. Within [2^-450, 2^450] (about 3e-136 to
+  /// 3e135): squares of distances near it stay normal doubles
   double match_distance = 15.0;
-  double interval = 5.0;         ///< distance between samples along edges (m); default 5
-  /// Samples match when their direction-insensitive bearings (differences in [0, 90]) differ by less (degrees;
-  /// above 90: bearings are ignored); default 45
+  double interval = 5.0;  ///< distance between samples along edges (m); default 5
+  /// Samples match when their direction-insensitive bearings (differences in [0, 90]) differ by less
+  /// (degrees; above 90: bearings are ignored); default 45
   double bearing_limit = 45.0;
   /// Nearest reconstruction samples the greedy matching considers per ground-truth sample; default 10 (the
   /// optimal matching considers every admissible pair)
   std::size_t candidates = 10;
   Map_matching matching = Map_matching::greedy;  ///< how samples are paired; default greedy
-  bool keep_samples = false;     ///< also return both sample sets with their match flags (for diagnosis)
-  /// Called with the fraction done (compare_maps(): both maps sampled at 0.1, then the matching); returning false
-  /// stops: status interrupted, no pair (matched 0, scores 0, every partner -1; the sample counts and, with
-  /// keep_samples, the sample lists stay).
+  bool keep_samples = false;  ///< also return both sample sets with their match flags (for diagnosis)
+  /// Called with the fraction done (compare_maps(): both maps sampled at 0.1, then the matching); returning
+  /// false stops: status interrupted, no pair (matched 0, scores 0, every partner -1; the sample counts and,
+  /// with keep_samples, the sample lists stay).
   Progress_callback progress;
 };
 
@@ -80,12 +82,12 @@ struct Map_sample {
 
 /// Result of compare_maps().
 struct Map_comparison_result {
-  std::size_t ground_truth_samples = 0;     ///< |H|
-  std::size_t reconstruction_samples = 0;   ///< |G|
-  std::size_t matched = 0;                  ///< m
-  double precision = 0;                     ///< m / |G| (0 when G is empty)
-  double recall = 0;                        ///< m / |H| (0 when H is empty)
-  double f_score = 0;                       ///< 2m / (|G| + |H|)
+  std::size_t ground_truth_samples = 0;    ///< |H|
+  std::size_t reconstruction_samples = 0;  ///< |G|
+  std::size_t matched = 0;                 ///< m
+  double precision = 0;                    ///< m / |G| (0 when G is empty)
+  double recall = 0;                       ///< m / |H| (0 when H is empty)
+  double f_score = 0;                      ///< 2m / (|G| + |H|)
   /// With Map_comparison_options::keep_samples: the ground-truth samples H (sample_map() order), else empty.
   std::vector<Map_sample> ground_truth_sample_list;
   /// With keep_samples: the reconstruction samples G, else empty.
@@ -126,10 +128,12 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
   for (std::size_t k = 0; k < g.edges.size(); ++k) {
     Edge e = g.edges[k];
     if (e[0] >= n || e[1] >= n)
-      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", k, " has a vertex out of range [0, ", n, ")");
+      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", k, " has a vertex out of range [0, ", n,
+                                                     ")");
     for (const Vertex_index v : e)
       if (!std::isfinite(g.positions[v][0]) || !std::isfinite(g.positions[v][1]))
-        FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " (of edge ", k, ") has a non-finite coordinate");
+        FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " (of edge ", k,
+                                                       ") has a non-finite coordinate");
     if (e[0] == e[1]) continue;
     if (e[0] > e[1]) std::swap(e[0], e[1]);
     edges.push_back(e);
@@ -152,10 +156,11 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
   double total = 0;
   for (std::size_t e = 0; e < edges.size(); ++e) total += length(e);
   if (!(total / interval < 33554432.0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "the map's ", total, " m of edges at interval ", interval,
-                                                   " would give more than 2^25 samples");
+    FeatureRecon::internal::throw_invalid_argument(fn, "the map's ", total, " m of edges at interval ",
+                                                   interval, " would give more than 2^25 samples");
   std::vector<Map_sample> samples;
-  // `listed` marks edges put in a component's order; an edge belongs to one component, so one array serves all.
+  // `listed` marks edges put in a component's order; an edge belongs to one component, so one array serves
+  // all.
   std::vector<char> edge_done(edges.size(), 0), vertex_seen(n, 0), listed(edges.size(), 0);
   // A walk step: traverse edge e from vertex `from`, first sample at `offset` metres along it.
   struct Step {
@@ -170,7 +175,8 @@ inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double inte
     const auto& b = g.positions[to];
     const double len = length(s.edge), bearing = internal::bearing_of(a, b);
     double t = s.offset;
-    for (; len > 0 && t <= len; t += interval) {  // an edge of length 0 has no bearing: no sample, offset kept
+    for (; len > 0 && t <= len;
+         t += interval) {  // an edge of length 0 has no bearing: no sample, offset kept
       const double u = len > 0 ? t / len : 0.0;
       samples.push_back({{a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])}, bearing});
     }
@@ -272,12 +278,16 @@ namespace internal {
 /// \cond
 inline void check_map_comparison_options(const Map_comparison_options& options, const char* fn) {
   if (!(options.match_distance >= min_metric_distance && options.match_distance <= max_metric_distance))
-    FeatureRecon::internal::throw_invalid_argument(fn, "match_distance must be within [2^-450, 2^450] (positive and "
-                                                   "finite; squares of distances near it stay normal), got ",
-                                                   options.match_distance);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn,
+        "match_distance must be within [2^-450, 2^450] (positive and "
+        "finite; squares of distances near it stay normal), got ",
+        options.match_distance);
   if (!(options.bearing_limit > 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be > 0, got ", options.bearing_limit);
-  if (options.candidates < 1) FeatureRecon::internal::throw_invalid_argument(fn, "candidates must be >= 1, got 0");
+    FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be > 0, got ",
+                                                   options.bearing_limit);
+  if (options.candidates < 1)
+    FeatureRecon::internal::throw_invalid_argument(fn, "candidates must be >= 1, got 0");
   if (options.matching != Map_matching::greedy && options.matching != Map_matching::optimal)
     FeatureRecon::internal::throw_invalid_argument(fn, "matching must be greedy or optimal, got ",
                                                    static_cast<int>(options.matching));
@@ -307,15 +317,16 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
   const std::size_t stride = 4096;  // samples between two progress reports
   using K = CGAL::Simple_cartesian<double>;
   using Point = K::Point_2;
-  using Traits =
-      CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type, CGAL::Search_traits_2<K>>;
+  using Traits = CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type,
+                                             CGAL::Search_traits_2<K>>;
   using Knn = CGAL::Orthogonal_k_neighbor_search<Traits>;
   // The tree holds the positions times a power of two that brings the largest to about 2^30 (exact), so that
-  // squared distances of maps drawn at 1e-200 or 1e160 neither underflow nor overflow; distances are then taken
-  // from the positions themselves.
+  // squared distances of maps drawn at 1e-200 or 1e160 neither underflow nor overflow; distances are then
+  // taken from the positions themselves.
   double largest = 0;
   for (const auto* set : {&H, &G})
-    for (const Map_sample& s : *set) largest = std::max({largest, std::abs(s.position[0]), std::abs(s.position[1])});
+    for (const Map_sample& s : *set)
+      largest = std::max({largest, std::abs(s.position[0]), std::abs(s.position[1])});
   const double unit = largest > 0 ? std::ldexp(1.0, std::clamp(30 - std::ilogb(largest), -1000, 1000)) : 1.0;
   std::vector<Point> gp;
   for (const Map_sample& s : G) gp.emplace_back(s.position[0] * unit, s.position[1] * unit);
@@ -353,15 +364,16 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
   std::vector<Candidate> heap;
   for (std::size_t h = 0; h < H.size(); ++h) {
     if (h % stride == stride - 1 &&
-        !FeatureRecon::internal::report_progress(options.progress,
-                                                 0.8 * static_cast<double>(h) / static_cast<double>(H.size())))
+        !FeatureRecon::internal::report_progress(
+            options.progress, 0.8 * static_cast<double>(h) / static_cast<double>(H.size())))
       return false;
     double d = 0;
     const std::int64_t g = best_partner(h, d);
     if (g >= 0) heap.push_back({d, h, g});
   }
   std::make_heap(heap.begin(), heap.end(), later);
-  // The fraction is the share of the first proposals settled (paired or given up); searches again do not count.
+  // The fraction is the share of the first proposals settled (paired or given up); searches again do not
+  // count.
   const double proposals = static_cast<double>(std::max<std::size_t>(heap.size(), 1));
   std::size_t settled = 0;
   for (std::size_t pops = 1; !heap.empty(); ++pops) {
@@ -392,14 +404,14 @@ inline bool match_greedy(const std::vector<Map_sample>& H, const std::vector<Map
 }
 
 /// The cell of a grid whose 3 x 3 candidates must hold every point within `distance` (exactly that far
-/// included): a hair wider, since the rounding of (p - low) / cell put two points exactly `distance` apart two
-/// cells apart, and which pairs at the limit were seen depended on the grid's corner (one sample 1 km away
-/// changed the optimal matching). Up to 2^20 cells per axis (the grid's dense range) the rounding stays far below
-/// the 2^-20 margin.
+/// included): a hair wider, since the rounding of (p - low) / cell put two points exactly `distance` apart
+/// two cells apart, and which pairs at the limit were seen depended on the grid's corner (one sample 1 km
+/// away changed the optimal matching). Up to 2^20 cells per axis (the grid's dense range) the rounding stays
+/// far below the 2^-20 margin.
 inline double search_cell(double distance) { return distance * (1 + 0x1p-20); }
 
-/// Whether a and b may pair: at most match_distance apart (the box test first: hypot only for those within it)
-/// and bearings within the limit.
+/// Whether a and b may pair: at most match_distance apart (the box test first: hypot only for those within
+/// it) and bearings within the limit.
 inline bool admissible_pair(const Map_sample& a, const Map_sample& b, const Map_comparison_options& options) {
   const double dx = b.position[0] - a.position[0], dy = b.position[1] - a.position[1];
   const double T = options.match_distance;
@@ -440,8 +452,8 @@ inline std::vector<std::size_t> assign_optimally(std::size_t nl, std::size_t nr,
   std::vector<std::size_t> mate_l(nl, none), mate_r(nr, none), from_r(nr, none), stamp_r(nr, 0);
   std::vector<char> done_r(nr, 0);
   std::vector<std::size_t> reached_l, settled_r;
-  // Heap of (distance, class, node): node < nr a sample of R (class 0 free, 1 matched), nr + x the "unmatched"
-  // partner of x (class 2).
+  // Heap of (distance, class, node): node < nr a sample of R (class 0 free, 1 matched), nr + x the
+  // "unmatched" partner of x (class 2).
   using Entry = std::tuple<double, int, std::size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   for (std::size_t s = 0; s < nl; ++s) {
@@ -513,21 +525,23 @@ inline std::vector<std::size_t> assign_optimally(std::size_t nl, std::size_t nr,
   return mate_l;
 }
 
-/// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T = match_distance,
-/// bearings within the limit). The smaller sample set L is the side that is assigned: every sample of L also gets
-/// a private "unmatched" partner of cost T, so that minimising the total cost (d for a pair, T for an unmatched
-/// sample) is maximising the weight; this assignment problem is solved by successive shortest augmenting paths
-/// (Dijkstra on reduced costs with vertex potentials, one sample of L at a time, stopping at the first free
-/// sample reached). A search only visits what lies closer than its augmenting path: the samples around the new
-/// one on the few lines near it. At equal distance a free sample is settled first (a dense cluster of equal
-/// distances ends its search there), then a matched one, then an "unmatched" partner (a tie between pairing
-/// and leaving unmatched goes to pairing), smaller indices first. Returns for each sample of
-/// L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are refused (memory). Stopped
-/// by the progress callback: `stopped` set, the assignment partial. `searched` (if not null) counts the matched
-/// samples of R that the searches settle (for tests).
-inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L, const std::vector<Map_sample>& R,
-                                                   const Map_comparison_options& options, std::size_t max_pairs,
-                                                   const char* fn, bool& stopped, std::size_t* searched = nullptr) {
+/// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T =
+/// match_distance, bearings within the limit). The smaller sample set L is the side that is assigned: every
+/// sample of L also gets a private "unmatched" partner of cost T, so that minimising the total cost (d for a
+/// pair, T for an unmatched sample) is maximising the weight; this assignment problem is solved by successive
+/// shortest augmenting paths (Dijkstra on reduced costs with vertex potentials, one sample of L at a time,
+/// stopping at the first free sample reached). A search only visits what lies closer than its augmenting
+/// path: the samples around the new one on the few lines near it. At equal distance a free sample is settled
+/// first (a dense cluster of equal distances ends its search there), then a matched one, then an "unmatched"
+/// partner (a tie between pairing and leaving unmatched goes to pairing), smaller indices first. Returns for
+/// each sample of L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are
+/// refused (memory). Stopped by the progress callback: `stopped` set, the assignment partial. `searched` (if
+/// not null) counts the matched samples of R that the searches settle (for tests).
+inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L,
+                                                   const std::vector<Map_sample>& R,
+                                                   const Map_comparison_options& options,
+                                                   std::size_t max_pairs, const char* fn, bool& stopped,
+                                                   std::size_t* searched = nullptr) {
   const double T = options.match_distance;
   const std::size_t nl = L.size(), nr = R.size();
   // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
@@ -537,13 +551,14 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
   Admissible_pairs P;
   P.first.assign(nl + 1, 0);
   for (std::size_t h = 0; h < nl; ++h) {
-    if (h % 1024 == 1023 &&
-        (stopped = !FeatureRecon::internal::report_progress(options.progress, 0.1 * static_cast<double>(h) / nl)))
+    if (h % 1024 == 1023 && (stopped = !FeatureRecon::internal::report_progress(
+                                 options.progress, 0.1 * static_cast<double>(h) / nl)))
       return {};
     grid.for_each_candidate(L[h].position, [&](std::uint32_t g) {
       if (admissible_pair(L[h], R[g], options)) {
         P.partner.push_back(g);
-        P.cost.push_back(std::hypot(R[g].position[0] - L[h].position[0], R[g].position[1] - L[h].position[1]));
+        P.cost.push_back(
+            std::hypot(R[g].position[0] - L[h].position[0], R[g].position[1] - L[h].position[1]));
       }
     });
     if (P.partner.size() > max_pairs) throw_too_many_pairs(fn, max_pairs, T);
@@ -552,19 +567,20 @@ inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>
   return assign_optimally(nl, nr, P, options, stopped, searched);
 }
 
-/// The optimal matching of H and G, one connected component of the admissible pairs at a time (pairs of different
-/// components do not interact): in each the smaller side is assigned (optimal_assignment(); ties: the ground
-/// truth), so that the samples left over search only while the other side still has free samples near them. With
-/// the larger side assigned, each surplus sample of a dense cluster would search all of it; choosing the side by
-/// the whole maps did that wherever a map was larger overall but smaller there (a street drawn 300 times against
-/// 600: 40 s).
-/// Returns false when the progress callback stopped it (M then holds no pair). `searched`: see optimal_assignment().
+/// The optimal matching of H and G, one connected component of the admissible pairs at a time (pairs of
+/// different components do not interact): in each the smaller side is assigned (optimal_assignment(); ties:
+/// the ground truth), so that the samples left over search only while the other side still has free samples
+/// near them. With the larger side assigned, each surplus sample of a dense cluster would search all of it;
+/// choosing the side by the whole maps did that wherever a map was larger overall but smaller there (a street
+/// drawn 300 times against 600: 40 s). Returns false when the progress callback stopped it (M then holds no
+/// pair). `searched`: see optimal_assignment().
 inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
                           const Map_comparison_options& options, Map_sample_matching& M, const char* fn,
                           std::size_t max_pairs = std::size_t(1) << 26, std::size_t* searched = nullptr) {
   const std::size_t nh = H.size(), ng = G.size();
   const double T = options.match_distance;
-  // Components: union-find over the admissible pairs (ground-truth samples 0..nh-1, then reconstruction ones).
+  // Components: union-find over the admissible pairs (ground-truth samples 0..nh-1, then reconstruction
+  // ones).
   std::vector<std::size_t> parent(nh + ng);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   std::vector<char> paired(nh, 0);  // a ground-truth sample with an admissible pair
@@ -586,7 +602,8 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
       grid.for_each_candidate(H[h].position, [&](std::uint32_t g) {
         if (admissible_pair(H[h], G[g], options)) {
           all.partner.push_back(g);
-          all.cost.push_back(std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]));
+          all.cost.push_back(
+              std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]));
           paired[h] = 1;
           const std::size_t a = find(h), b = find(nh + g);
           if (a != b) parent[std::max(a, b)] = std::min(a, b);
@@ -601,7 +618,8 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
   std::vector<std::vector<std::size_t>> members_h, members_g;
   for (std::size_t x = 0; x < nh + ng; ++x) {
     const std::size_t r = find(x);
-    if (x < nh ? !paired[x] : r == x) continue;  // no pair (a ground-truth sample is the root of its component)
+    if (x < nh ? !paired[x] : r == x)
+      continue;  // no pair (a ground-truth sample is the root of its component)
     if (slot[r] == std::numeric_limits<std::size_t>::max()) {
       slot[r] = members_h.size();
       members_h.emplace_back();
@@ -610,14 +628,17 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
     (x < nh ? members_h[slot[r]] : members_g[slot[r]]).push_back(x < nh ? x : x - nh);
   }
   std::size_t done = 0, in_components = 0;  // samples of the components (assigned so far), for the progress
-  for (std::size_t c = 0; c < members_h.size(); ++c) in_components += members_h[c].size() + members_g[c].size();
+  for (std::size_t c = 0; c < members_h.size(); ++c)
+    in_components += members_h[c].size() + members_g[c].size();
   const double total = static_cast<double>(std::max<std::size_t>(in_components, 1));
   bool stopped = false;
   // Each sample's position in its component's member list.
   std::vector<std::uint32_t> local(nh + ng, 0);
   for (std::size_t c = 0; c < members_h.size(); ++c) {
-    for (std::size_t i = 0; i < members_h[c].size(); ++i) local[members_h[c][i]] = static_cast<std::uint32_t>(i);
-    for (std::size_t j = 0; j < members_g[c].size(); ++j) local[nh + members_g[c][j]] = static_cast<std::uint32_t>(j);
+    for (std::size_t i = 0; i < members_h[c].size(); ++i)
+      local[members_h[c][i]] = static_cast<std::uint32_t>(i);
+    for (std::size_t j = 0; j < members_g[c].size(); ++j)
+      local[nh + members_g[c][j]] = static_cast<std::uint32_t>(j);
   }
   Admissible_pairs sub_pairs;
   for (std::size_t c = 0; c < members_h.size() && !stopped; ++c) {
@@ -648,7 +669,8 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
       }
     } else {  // transposed: count, then fill
       for (const std::size_t h : mh)
-        for (std::size_t k = all.first[h]; k < all.first[h + 1]; ++k) ++sub_pairs.first[local[nh + all.partner[k]] + 1];
+        for (std::size_t k = all.first[h]; k < all.first[h + 1]; ++k)
+          ++sub_pairs.first[local[nh + all.partner[k]] + 1];
       for (std::size_t j = 0; j < nl; ++j) sub_pairs.first[j + 1] += sub_pairs.first[j];
       sub_pairs.partner.resize(sub_pairs.first[nl]);
       sub_pairs.cost.resize(sub_pairs.first[nl]);
@@ -678,10 +700,10 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
 }  // namespace internal
 
 /// Matches the samples of two maps (the pairing step of compare_maps()): a ground-truth sample h and a
-/// reconstruction sample g may pair when at most match_distance apart and their direction-insensitive bearings
-/// differ by less than bearing_limit; options.matching says how pairs are chosen (Map_matching). The progress
-/// callback is asked every few thousand samples; a stop leaves no pair (status interrupted).
-/// \throws std::invalid_argument for options as compare_maps() refuses them, a non-finite position or a bearing
+/// reconstruction sample g may pair when at most match_distance apart and their direction-insensitive
+/// bearings differ by less than bearing_limit; options.matching says how pairs are chosen (Map_matching). The
+/// progress callback is asked every few thousand samples; a stop leaves no pair (status interrupted). \throws
+/// std::invalid_argument for options as compare_maps() refuses them, a non-finite position or a bearing
 ///   outside [0, 360) (naming the map and the sample).
 inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& ground_truth,
                                              const std::vector<Map_sample>& reconstruction,
@@ -691,29 +713,31 @@ inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& grou
   for (const auto* set : {&ground_truth, &reconstruction})
     for (std::size_t i = 0; i < set->size(); ++i) {
       const Map_sample& s = (*set)[i];
-      if (!std::isfinite(s.position[0]) || !std::isfinite(s.position[1]) || !(s.bearing >= 0 && s.bearing < 360))
-        FeatureRecon::internal::throw_invalid_argument(fn, set == &ground_truth ? "ground-truth" : "reconstruction",
-                                                       " sample ", i, " has a non-finite position or a bearing ",
-                                                       "outside [0, 360) (", s.bearing, ")");
+      if (!std::isfinite(s.position[0]) || !std::isfinite(s.position[1]) ||
+          !(s.bearing >= 0 && s.bearing < 360))
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, set == &ground_truth ? "ground-truth" : "reconstruction", " sample ", i,
+            " has a non-finite position or a bearing ", "outside [0, 360) (", s.bearing, ")");
     }
   Map_sample_matching M = internal::no_pairs(ground_truth.size(), reconstruction.size());
   if (!ground_truth.empty() && !reconstruction.empty() &&
-      !(options.matching == Map_matching::optimal ? internal::match_optimal(ground_truth, reconstruction, options, M, fn)
-                                                   : internal::match_greedy(ground_truth, reconstruction, options, M)))
+      !(options.matching == Map_matching::optimal
+            ? internal::match_optimal(ground_truth, reconstruction, options, M, fn)
+            : internal::match_greedy(ground_truth, reconstruction, options, M)))
     return internal::no_pairs(ground_truth.size(), reconstruction.size(), Status::interrupted);
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return M;
 }
 
 /// Compares a reconstructed map with a ground truth by the graph-sampling metric: both maps are sampled
-/// (sample_map()) and their samples matched (match_map_samples(); by default greedily: each ground-truth sample
-/// h takes the nearest of its `candidates` nearest reconstruction samples whose bearing differs by less than
-/// the limit; pairs are accepted by increasing distance up to `match_distance`, a ground-truth sample whose
-/// partner was taken looking again among its nearest available ones). precision = m/|G|, recall = m/|H|,
-/// F = 2m/(|G| + |H|). A stop through the progress callback leaves the sample counts, no pair and status
-/// interrupted.
-/// \pre positive, finite options (checked; throws).
-inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, const Embedded_graph_2& reconstruction,
+/// (sample_map()) and their samples matched (match_map_samples(); by default greedily: each ground-truth
+/// sample h takes the nearest of its `candidates` nearest reconstruction samples whose bearing differs by
+/// less than the limit; pairs are accepted by increasing distance up to `match_distance`, a ground-truth
+/// sample whose partner was taken looking again among its nearest available ones). precision = m/|G|, recall
+/// = m/|H|, F = 2m/(|G| + |H|). A stop through the progress callback leaves the sample counts, no pair and
+/// status interrupted. \pre positive, finite options (checked; throws).
+inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth,
+                                          const Embedded_graph_2& reconstruction,
                                           const Map_comparison_options& options = {}) {
   const char* fn = "compare_maps";
   internal::check_map_comparison_options(options, fn);
@@ -755,19 +779,22 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth, 
 
 /// Why the unmatched samples of one map found no partner in the other (see explain_unmatched_samples()).
 struct Unmatched_sample_counts {
-  std::size_t taken = 0;     ///< an aligned sample of the other map lies within the threshold, yet the
-                             ///< matching paired the two with nothing or with others: mostly because that sample
-                             ///< was matched to another, where the maps differ in multiplicity (a parallel line, e.g.
-                             ///< the second carriageway of a divided road, present in one map only); rarely because
-                             ///< it was not among the `candidates` nearest ones the greedy matching considers
-  std::size_t offset = 0;    ///< the nearest aligned sample of the other map lies between 1 and 2 thresholds away
-  std::size_t crossing = 0;  ///< within 2 thresholds the other map has samples, none aligned (a street crossing)
-  std::size_t absent = 0;    ///< the other map has nothing within 2 thresholds
+  std::size_t taken =
+      0;  ///< an aligned sample of the other map lies within the threshold, yet the
+          ///< matching paired the two with nothing or with others: mostly because that sample
+          ///< was matched to another, where the maps differ in multiplicity (a parallel line, e.g.
+          ///< the second carriageway of a divided road, present in one map only); rarely because
+          ///< it was not among the `candidates` nearest ones the greedy matching considers
+  std::size_t offset =
+      0;  ///< the nearest aligned sample of the other map lies between 1 and 2 thresholds away
+  std::size_t crossing =
+      0;  ///< within 2 thresholds the other map has samples, none aligned (a street crossing)
+  std::size_t absent = 0;  ///< the other map has nothing within 2 thresholds
 };
 
 namespace internal {
-/// Counts one unmatched sample given the distance to the nearest aligned sample of the other map (infinity when
-/// none lies within 2 thresholds) and whether any sample of the other map lies within 2 thresholds.
+/// Counts one unmatched sample given the distance to the nearest aligned sample of the other map (infinity
+/// when none lies within 2 thresholds) and whether any sample of the other map lies within 2 thresholds.
 inline void count_unmatched(double aligned, bool any, double threshold, Unmatched_sample_counts& c) {
   if (aligned <= threshold)
     ++c.taken;
@@ -786,9 +813,9 @@ struct Unmatched_samples_breakdown {
   Unmatched_sample_counts spurious;  ///< reconstruction samples without a partner (lost precision)
 };
 
-/// Sorts every unmatched sample of a comparison into the classes of Unmatched_sample_counts: a diagnosis of what a
-/// reconstruction lacks (missed) and adds (spurious). Aligned means a bearing difference below the limit.
-/// \pre `r` was computed with options.keep_samples and the same `options` (checked; throws).
+/// Sorts every unmatched sample of a comparison into the classes of Unmatched_sample_counts: a diagnosis of
+/// what a reconstruction lacks (missed) and adds (spurious). Aligned means a bearing difference below the
+/// limit. \pre `r` was computed with options.keep_samples and the same `options` (checked; throws).
 inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_comparison_result& r,
                                                              const Map_comparison_options& options = {}) {
   const auto& H = r.ground_truth_sample_list;
@@ -799,7 +826,8 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
                                                    "the comparison was not computed with keep_samples");
   internal::check_map_comparison_options(options, "explain_unmatched_samples");
   const double t = options.match_distance, reach = 2 * t;
-  // Classifies the unmatched samples of `from` against the samples of `to` (bucketed on a grid of cell `reach`).
+  // Classifies the unmatched samples of `from` against the samples of `to` (bucketed on a grid of cell
+  // `reach`).
   auto classify = [&](const std::vector<Map_sample>& from, const std::vector<std::int64_t>& from_partner,
                       const std::vector<Map_sample>& to) {
     Unmatched_sample_counts c;
@@ -811,7 +839,8 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
       double aligned = std::numeric_limits<double>::infinity();
       bool any = false;
       grid.for_each_candidate(from[i].position, [&](std::uint32_t j) {
-        const double d = std::hypot(to[j].position[0] - from[i].position[0], to[j].position[1] - from[i].position[1]);
+        const double d =
+            std::hypot(to[j].position[0] - from[i].position[0], to[j].position[1] - from[i].position[1]);
         if (d > reach) return;
         any = true;
         if (internal::bearing_difference(from[i].bearing, to[j].bearing) < options.bearing_limit)
@@ -829,11 +858,11 @@ inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_compariso
 
 /// Options of count_trips_along() and explain_trace_support().
 struct Trace_support_options {
-  /// A trip drives along a sample when one of its segments passes this close (m); default 15 (the comparison's);
-  /// within [2^-450, 2^450]
+  /// A trip drives along a sample when one of its segments passes this close (m); default 15 (the
+  /// comparison's); within [2^-450, 2^450]
   double radius = 15.0;
-  /// ... with a direction-insensitive bearing difference below this (degrees); above 90 every direction counts;
-  /// default 45 (the comparison's)
+  /// ... with a direction-insensitive bearing difference below this (degrees); above 90 every direction
+  /// counts; default 45 (the comparison's)
   double bearing_limit = 45.0;
 };
 
@@ -845,22 +874,24 @@ inline Trace_support_options trace_support_options(const Map_comparison_options&
   return o;
 }
 
-/// For each sample, the number of distinct trips that drive along it: trips with a segment between consecutive
-/// fixes (by time, as sample_gps_traces() orders them) that passes within `radius` of the sample (exact point-segment distance) with a bearing that differs by
-/// less than `bearing_limit` from the sample's, regardless of direction. Segments between fixes at the same
-/// place have no bearing and count for nothing.
-/// Time: per segment whose bounding box meets the samples' (grown by the radius), its length clipped to that box
-/// over the radius, or the number of samples when that is less, plus the samples met; a glitch fix far away costs
-/// nothing extra. (A segment with an end beyond 2^44 radii from the origin is checked against every sample.)
-/// \throws std::invalid_argument naming the option (radius outside [2^-450, 2^450], bearing limit not positive),
+/// For each sample, the number of distinct trips that drive along it: trips with a segment between
+/// consecutive fixes (by time, as sample_gps_traces() orders them) that passes within `radius` of the sample
+/// (exact point-segment distance) with a bearing that differs by less than `bearing_limit` from the sample's,
+/// regardless of direction. Segments between fixes at the same place have no bearing and count for nothing.
+/// Time: per segment whose bounding box meets the samples' (grown by the radius), its length clipped to that
+/// box over the radius, or the number of samples when that is less, plus the samples met; a glitch fix far
+/// away costs nothing extra. (A segment with an end beyond 2^44 radii from the origin is checked against
+/// every sample.) \throws std::invalid_argument naming the option (radius outside [2^-450, 2^450], bearing
+/// limit not positive),
 ///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate or time.
 inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
                                                   const std::vector<Gps_trip>& trips,
                                                   const Trace_support_options& options = {}) {
   const char* fn = "count_trips_along";
   if (!(options.radius >= internal::min_metric_distance && options.radius <= internal::max_metric_distance))
-    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be within [2^-450, 2^450] (positive and finite; ",
-                                                   "squares of distances near it stay normal), got ", options.radius);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "radius must be within [2^-450, 2^450] (positive and finite; ",
+        "squares of distances near it stay normal), got ", options.radius);
   if (!(options.bearing_limit > 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "bearing_limit must be positive (degrees), got ",
                                                    options.bearing_limit);
@@ -909,18 +940,21 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
       if (std::max(fa.x, fb.x) < box[0] || std::min(fa.x, fb.x) > box[2] || std::max(fa.y, fb.y) < box[1] ||
           std::min(fa.y, fb.y) > box[3])
         continue;
-      // The segment from a to b, a the end nearer the samples' box (its coordinates are exact where the samples
-      // are): a + t h, t in [0, 2], with h half of b - a (halves of finite coordinates do not overflow).
+      // The segment from a to b, a the end nearer the samples' box (its coordinates are exact where the
+      // samples are): a + t h, t in [0, 2], with h half of b - a (halves of finite coordinates do not
+      // overflow).
       const double cx = 0.5 * box[0] + 0.5 * box[2], cy = 0.5 * box[1] + 0.5 * box[3];
       const bool a_first = std::max(std::fabs(fa.x - cx), std::fabs(fa.y - cy)) <=
                            std::max(std::fabs(fb.x - cx), std::fabs(fb.y - cy));
-      const std::array<double, 2> a = a_first ? std::array<double, 2>{fa.x, fa.y} : std::array<double, 2>{fb.x, fb.y};
-      const std::array<double, 2> b = a_first ? std::array<double, 2>{fb.x, fb.y} : std::array<double, 2>{fa.x, fa.y};
+      const std::array<double, 2> a =
+          a_first ? std::array<double, 2>{fa.x, fa.y} : std::array<double, 2>{fb.x, fb.y};
+      const std::array<double, 2> b =
+          a_first ? std::array<double, 2>{fb.x, fb.y} : std::array<double, 2>{fa.x, fa.y};
       const double hx = 0.5 * b[0] - 0.5 * a[0], hy = 0.5 * b[1] - 0.5 * a[1];
       const double bearing = internal::bearing_of({0.0, 0.0}, {hx, hy});  // direction does not matter
-      // Below 2^44 cells (and 2^500) from the origin, points a + t h are placed to within a 256th of a cell and
-      // distances in doubles are exact to far below the radius; beyond, every sample is decided exactly (a filtered
-      // CGAL predicate) instead: only absurd fixes get there.
+      // Below 2^44 cells (and 2^500) from the origin, points a + t h are placed to within a 256th of a cell
+      // and distances in doubles are exact to far below the radius; beyond, every sample is decided exactly
+      // (a filtered CGAL predicate) instead: only absurd fixes get there.
       const double magnitude = std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(b[0]), std::fabs(b[1])});
       const bool placed = magnitude < std::min(0x1p44 * cell_size, 0x1p500);
       if (!placed) {
@@ -930,7 +964,8 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
         const auto compare = Exact_predicates().compare_squared_distance_2_object();
         for (std::size_t j = 0; j < samples.size(); ++j) {
           const auto& p = samples[j].position;
-          if (last_trip[j] == t || !(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit))
+          if (last_trip[j] == t ||
+              !(internal::bearing_difference(bearing, samples[j].bearing) < options.bearing_limit))
             continue;
           if (compare(Exact_predicates::Point_2(p[0], p[1]), segment, r2) != CGAL::LARGER) {
             last_trip[j] = t;
@@ -940,7 +975,7 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
         continue;
       }
       const double half = std::hypot(hx, hy);
-      if (!(half > 0)) continue;  // (halves of two subnormals apart can round together)
+      if (!(half > 0)) continue;                    // (halves of two subnormals apart can round together)
       const double wx = hx / half, wy = hy / half;  // unit direction
       // Clip the parameter range [t0, t1] of a + t h to the box (Liang-Barsky).
       double t0 = 0, t1 = 2;
@@ -956,7 +991,8 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
       }
       if (!(t0 <= t1)) continue;
       const double steps = std::ceil((t1 - t0) * (half / cell_size));
-      // A walk longer than the samples are many (a tiny radius against a wide box) visits every sample instead.
+      // A walk longer than the samples are many (a tiny radius against a wide box) visits every sample
+      // instead.
       const bool scan_all = !(steps * 25 <= static_cast<double>(samples.size()));
       cells.clear();
       if (scan_all) {
@@ -981,9 +1017,9 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
       auto consider = [&](std::uint32_t j) {
         if (last_trip[j] == t) return;
         const auto& p = samples[j].position;
-        // Distance to the segment: to an end when the projection s (along it from a) falls outside [0, 2 |h|],
-        // else across it, from the cross product (no cancellation between s and a). A distance that overflows
-        // (or is NaN, far beyond any radius) does not count.
+        // Distance to the segment: to an end when the projection s (along it from a) falls outside [0, 2
+        // |h|], else across it, from the cross product (no cancellation between s and a). A distance that
+        // overflows (or is NaN, far beyond any radius) does not count.
         const double px = p[0] - a[0], py = p[1] - a[1], s = px * wx + py * wy;
         double d2;
         if (s <= 0) {
@@ -1012,7 +1048,8 @@ inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>&
 }
 
 /// How the samples of a comparison are supported by the GPS trips the reconstruction came from (see
-/// explain_trace_support()). Counts are split by the number of trips driving along a sample: 0, 1, 2-3, 4 or more.
+/// explain_trace_support()). Counts are split by the number of trips driving along a sample: 0, 1, 2-3, 4 or
+/// more.
 struct Trace_support_breakdown {
   std::array<std::size_t, 4> ground_truth_by_trips{};  ///< all ground-truth samples
   std::array<std::size_t, 4> missed_by_trips{};        ///< ground-truth samples without a partner
@@ -1024,15 +1061,18 @@ struct Trace_support_breakdown {
 };
 
 /// Bins a trip count: 0, 1, 2-3, 4 or more.
-inline std::size_t trip_count_bin(std::size_t trips) { return trips == 0 ? 0 : trips == 1 ? 1 : trips <= 3 ? 2 : 3; }
+inline std::size_t trip_count_bin(std::size_t trips) {
+  return trips == 0 ? 0 : trips == 1 ? 1 : trips <= 3 ? 2 : 3;
+}
 
-/// Splits the samples of a comparison by the number of trips that drive along them (count_trips_along()): which
-/// part of the truth no trip drives along (no reconstruction from these traces can be expected to find it), the
-/// recall within the driven part, and how well the spurious lines are supported. The default radius and bearing
-/// limit are those of Map_comparison_options; for other comparison options pass
+/// Splits the samples of a comparison by the number of trips that drive along them (count_trips_along()):
+/// which part of the truth no trip drives along (no reconstruction from these traces can be expected to find
+/// it), the recall within the driven part, and how well the spurious lines are supported. The default radius
+/// and bearing limit are those of Map_comparison_options; for other comparison options pass
 /// trace_support_options(comparison_options).
 /// \pre `r` was computed with options.keep_samples (checked; throws).
-inline Trace_support_breakdown explain_trace_support(const Map_comparison_result& r, const std::vector<Gps_trip>& trips,
+inline Trace_support_breakdown explain_trace_support(const Map_comparison_result& r,
+                                                     const std::vector<Gps_trip>& trips,
                                                      const Trace_support_options& options = {}) {
   if (r.ground_truth_sample_list.size() != r.ground_truth_samples ||
       r.reconstruction_sample_list.size() != r.reconstruction_samples ||
@@ -1053,39 +1093,42 @@ inline Trace_support_breakdown explain_trace_support(const Map_comparison_result
   }
   for (std::size_t j = 0; j < g.size(); ++j)
     if (r.reconstruction_partner[j] < 0) ++b.spurious_by_trips[trip_count_bin(g[j])];
-  b.recall_of_driven =
-      b.ground_truth_driven == 0 ? 0.0 : static_cast<double>(b.matched_driven) / static_cast<double>(b.ground_truth_driven);
+  b.recall_of_driven = b.ground_truth_driven == 0 ? 0.0
+                                                  : static_cast<double>(b.matched_driven) /
+                                                        static_cast<double>(b.ground_truth_driven);
   return b;
 }
 
 /// Options of crop_map_to_trips().
 struct Map_crop_options {
-  double radius = 25;           ///< an edge stays when every sample of it lies within this of a trace point; default 25
-  double sample_interval = 5;   ///< the edges' samples, from one end, the other end included; default 5
-  /// The trace points: the fixes, and between two consecutive fixes of a trip (by time) at most max_gap apart,
-  /// points that cut the segment into equal pieces of at most trace_step; default 10
+  double radius =
+      25;  ///< an edge stays when every sample of it lies within this of a trace point; default 25
+  double sample_interval = 5;  ///< the edges' samples, from one end, the other end included; default 5
+  /// The trace points: the fixes, and between two consecutive fixes of a trip (by time) at most max_gap
+  /// apart, points that cut the segment into equal pieces of at most trace_step; default 10
   double trace_step = 10;
-  double max_gap = 500;         ///< see trace_step; 0: the fixes alone; default 500
-  /// Called with the fraction of the edges checked (every 4096 edges; the trace points are made at 0); returning
-  /// false stops: the map holds the edges kept so far, status interrupted.
+  double max_gap = 500;  ///< see trace_step; 0: the fixes alone; default 500
+  /// Called with the fraction of the edges checked (every 4096 edges; the trace points are made at 0);
+  /// returning false stops: the map holds the edges kept so far, status interrupted.
   Progress_callback progress;
 };
 
 /// Result of crop_map_to_trips().
 struct Cropped_map {
-  Embedded_graph_2 map;            ///< the input's positions, the edges kept (in input order)
-  std::size_t trace_points = 0;    ///< fixes and interpolated points
-  Status status = Status::success; ///< interrupted when the progress callback stopped the run
+  Embedded_graph_2 map;             ///< the input's positions, the edges kept (in input order)
+  std::size_t trace_points = 0;     ///< fixes and interpolated points
+  Status status = Status::success;  ///< interrupted when the progress callback stopped the run
 };
 
-/// Restricts a ground-truth map to the streets the trips cover, the crop of the Chicago reference ground truth
-/// `chicago_gt_trk25` (its README): an edge is kept when every one of its samples (every sample_interval from
-/// its first vertex, and its second vertex) lies within `radius` of a trace point, the trace points being the
-/// fixes and points every trace_step along the segments between consecutive fixes of a trip up to max_gap long
-/// (a trip's fixes ordered by time, equal times in the given order). The interpolation keeps a street between
-/// sparse fixes (Chicago: 20-40 m apart; with the fixes alone 40 of the reference's 1566 edges were lost, with
-/// it all are kept and 3 more). Ranges are inclusive. Exact up to the rounding of the sample positions.
-/// \throws std::invalid_argument naming the option (radius, sample_interval, trace_step: positive and finite;
+/// Restricts a ground-truth map to the streets the trips cover, the crop of the Chicago reference ground
+/// truth `chicago_gt_trk25` (its README): an edge is kept when every one of its samples (every
+/// sample_interval from its first vertex, and its second vertex) lies within `radius` of a trace point, the
+/// trace points being the fixes and points every trace_step along the segments between consecutive fixes of a
+/// trip up to max_gap long (a trip's fixes ordered by time, equal times in the given order). The
+/// interpolation keeps a street between sparse fixes (Chicago: 20-40 m apart; with the fixes alone 40 of the
+/// reference's 1566 edges were lost, with it all are kept and 3 more). Ranges are inclusive. Exact up to the
+/// rounding of the sample positions. \throws std::invalid_argument naming the option (radius,
+/// sample_interval, trace_step: positive and finite;
 ///   max_gap finite and >= 0), the edge (a vertex out of range, a non-finite coordinate), the trip and fix (a
 ///   non-finite coordinate or time), or when the edges would give more than 2^25 samples or the trips more
 ///   than 2^27 trace points.
@@ -1094,7 +1137,8 @@ inline Cropped_map crop_map_to_trips(const Embedded_graph_2& map, const std::vec
   const char* fn = "crop_map_to_trips";
   using FeatureRecon::internal::throw_invalid_argument;
   auto positive = [&](double v, const char* name) {
-    if (!(v > 0 && std::isfinite(v))) throw_invalid_argument(fn, name, " must be positive and finite, got ", v);
+    if (!(v > 0 && std::isfinite(v)))
+      throw_invalid_argument(fn, name, " must be positive and finite, got ", v);
   };
   positive(options.radius, "radius");
   positive(options.sample_interval, "sample_interval");
@@ -1112,7 +1156,8 @@ inline Cropped_map crop_map_to_trips(const Embedded_graph_2& map, const std::vec
   double samples = 0;
   for (std::size_t k = 0; k < map.edges.size(); ++k) {
     const Edge& e = map.edges[k];
-    if (e[0] >= n || e[1] >= n) throw_invalid_argument(fn, "edge ", k, " has a vertex out of range [0, ", n, ")");
+    if (e[0] >= n || e[1] >= n)
+      throw_invalid_argument(fn, "edge ", k, " has a vertex out of range [0, ", n, ")");
     for (const Vertex_index v : e)
       if (!std::isfinite(map.positions[v][0]) || !std::isfinite(map.positions[v][1]))
         throw_invalid_argument(fn, "vertex ", v, " (of edge ", k, ") has a non-finite coordinate");
@@ -1160,10 +1205,11 @@ inline Cropped_map crop_map_to_trips(const Embedded_graph_2& map, const std::vec
   }
   out.trace_points = points.size();
   CGAL::Kd_tree<Tree_traits> tree(points.begin(), points.end());
-  if (!points.empty()) tree.build();  // (CGAL asserts on building an empty tree; no point keeps no edge below)
+  if (!points.empty())
+    tree.build();  // (CGAL asserts on building an empty tree; no point keeps no edge below)
   auto covered = [&](double x, double y) {
     const CGAL::Fuzzy_sphere<Tree_traits> ball(K::Point_2(x, y), options.radius, 0.0);  // closed ball
-    return static_cast<bool>(tree.search_any_point(ball));                           // the first point found
+    return static_cast<bool>(tree.search_any_point(ball));  // the first point found
   };
   for (std::size_t k = 0; k < map.edges.size(); ++k) {
     if (k % 4096 == 4095 &&
@@ -1175,7 +1221,8 @@ inline Cropped_map crop_map_to_trips(const Embedded_graph_2& map, const std::vec
     const auto& a = map.positions[e[0]];
     const auto& b = map.positions[e[1]];
     const double len = length(e);
-    const auto steps = static_cast<std::uint64_t>(std::floor(len / options.sample_interval)) + 1;  // reaches b
+    const auto steps =
+        static_cast<std::uint64_t>(std::floor(len / options.sample_interval)) + 1;  // reaches b
     bool keep = !points.empty();
     for (std::uint64_t i = 0; keep && i <= steps; ++i) {
       const double u = len > 0 ? std::min(1.0, static_cast<double>(i) * options.sample_interval / len) : 0.0;

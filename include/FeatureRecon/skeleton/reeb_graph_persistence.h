@@ -29,8 +29,8 @@ struct Reeb_persistence_pair {
 };
 
 /// The features of a Reeb graph and their persistence (dissertation Ch. 5.1).
-/// \note The diagrams correspond to the extended persistence of the lower-star filtration of f on the complex:
-/// `sublevel_branches` = Ord0, `superlevel_branches` = Rel1, `essential` = Ext+0, `loops` = Ext-1.
+/// \note The diagrams correspond to the extended persistence of the lower-star filtration of f on the
+/// complex: `sublevel_branches` = Ord0, `superlevel_branches` = Rel1, `essential` = Ext+0, `loops` = Ext-1.
 struct Reeb_graph_persistence {
   /// 0-dim sublevel persistence: a minimum (birth) paired with the down-fork where its component merges into
   /// an older one (death); birth <= death (equal when f ties: a pair on the diagonal).
@@ -39,20 +39,20 @@ struct Reeb_graph_persistence {
   /// one with a higher maximum (death); birth >= death (equal on ties).
   std::vector<Reeb_persistence_pair> superlevel_branches;
   /// 1-dim extended persistence: an essential down-fork (birth) paired with the essential up-fork at the
-  /// bottom of the thinnest loop born there (death); birth >= death (equal on ties), persistence = height of that
-  /// loop.
+  /// bottom of the thinnest loop born there (death); birth >= death (equal on ties), persistence = height of
+  /// that loop.
   std::vector<Reeb_persistence_pair> loops;
   /// One pair per connected component: its global minimum and maximum (birth <= death).
   std::vector<Reeb_persistence_pair> essential;
 };
 
 namespace internal {
-/// compute_reeb_graph_persistence(), optionally also giving for each loop (in the order of `loops`) the arcs of
-/// its thin cycle; errors name `fn`.
-inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
-                                                     std::vector<std::vector<std::size_t>>* loop_cycles,
-                                                     double cycle_limit = std::numeric_limits<double>::infinity(),
-                                                     const char* fn = "compute_reeb_graph_persistence") {
+/// compute_reeb_graph_persistence(), optionally also giving for each loop (in the order of `loops`) the arcs
+/// of its thin cycle; errors name `fn`.
+inline Reeb_graph_persistence reeb_graph_persistence(
+    const Reeb_graph& R, std::vector<std::vector<std::size_t>>* loop_cycles,
+    double cycle_limit = std::numeric_limits<double>::infinity(),
+    const char* fn = "compute_reeb_graph_persistence") {
   const std::size_t n = R.nodes.size();
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(R.nodes[i].value))
@@ -145,18 +145,18 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
     }
   }
 
-  // Loops: the cycle born at fork s through its arc from `branch` has its best bottom at the maximin value over
-  // paths from `branch` to s in the graph of the nodes below s and the fork's earlier arcs, the bottleneck of a
-  // path being its lowest node: the lowest node on the path in a maximum spanning forest of that graph, where
-  // an arc weighs its lower end. The forest is kept in a link-cut tree over the sweep (an arc is a node of its
-  // own, keyed by its weight; graph nodes never are the minimum): an arc that closes a cycle replaces the
-  // lightest arc on it when it is heavier. O((n + m) log n) in all; the thin cycle (the arc and the forest path)
-  // costs its length, and only loops of persistence <= cycle_limit get one.
-  // Arcs with the same lower end weigh more the later the sweep meets them (the key is the rank in (lower,
-  // upper, index) order; the bottom is still the lowest lower end on the path, as for any maximum spanning
-  // forest). Without that tie rule the arcs up from one node kept the oldest one in the forest, and the cycle of
-  // each new loop ran back through all the older ones: a node joined to every node of a flat path gave cycles
-  // of 2, 3, ..., n arcs (quadratic merging strips in simplify_by_persistence()); now each is a triangle.
+  // Loops: the cycle born at fork s through its arc from `branch` has its best bottom at the maximin value
+  // over paths from `branch` to s in the graph of the nodes below s and the fork's earlier arcs, the
+  // bottleneck of a path being its lowest node: the lowest node on the path in a maximum spanning forest of
+  // that graph, where an arc weighs its lower end. The forest is kept in a link-cut tree over the sweep (an
+  // arc is a node of its own, keyed by its weight; graph nodes never are the minimum): an arc that closes a
+  // cycle replaces the lightest arc on it when it is heavier. O((n + m) log n) in all; the thin cycle (the
+  // arc and the forest path) costs its length, and only loops of persistence <= cycle_limit get one. Arcs
+  // with the same lower end weigh more the later the sweep meets them (the key is the rank in (lower, upper,
+  // index) order; the bottom is still the lowest lower end on the path, as for any maximum spanning forest).
+  // Without that tie rule the arcs up from one node kept the oldest one in the forest, and the cycle of each
+  // new loop ran back through all the older ones: a node joined to every node of a flat path gave cycles of
+  // 2, 3, ..., n arcs (quadratic merging strips in simplify_by_persistence()); now each is a triangle.
   {
     Link_cut_tree forest(n + R.arcs.size());
     const auto arc_node = [n](std::size_t k) { return static_cast<std::int32_t>(n + k); };
@@ -175,7 +175,8 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
     std::size_t next_birth = 0;
     for (std::size_t v = 0; v < n; ++v) {
       for (const auto& [u, arc] : below[v]) {
-        const std::int32_t e = arc_node(arc), x = static_cast<std::int32_t>(u), y = static_cast<std::int32_t>(v);
+        const std::int32_t e = arc_node(arc), x = static_cast<std::int32_t>(u),
+                           y = static_cast<std::int32_t>(v);
         if (!forest.connected(x, y)) {
           forest.link(x, e);
           forest.link(e, y);
@@ -198,7 +199,8 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
           }
           loop_cycles->push_back(std::move(cycle));
         }
-        if (forest.key(lightest) < forest.key(e)) {  // the new arc is heavier: it takes the lightest one's place
+        if (forest.key(lightest) <
+            forest.key(e)) {  // the new arc is heavier: it takes the lightest one's place
           // (on equal lower ends always: it is the latest arc)
           const std::size_t k = static_cast<std::size_t>(lightest) - n;
           forest.cut(static_cast<std::int32_t>(R.arcs[k].lower), lightest);
@@ -220,12 +222,11 @@ inline Reeb_graph_persistence reeb_graph_persistence(const Reeb_graph& R,
 /// n nodes and arcs. A loop is born at a down-fork whose lower arcs are already connected below it; it is
 /// paired with the highest up-fork s' such that the two branches are connected in the part of the graph
 /// between f(s') and the fork: the lowest node on the path between them in a maximum spanning forest of the
-/// sublevel graph (an arc weighs its lower node; among arcs with the same lower node the later in the sweep weighs
-/// more), kept in a link-cut tree over the sweep. O(n log n) for all loops together.
-/// Nodes with several arcs below or above (degenerate forks) act as chains of binary forks, as in a
-/// simulation of simplicity; node order is the graph's (f, vertex index) order.
-/// \pre R's node values are finite and in increasing (value, vertex) order, as reeb_graph() returns them (checked;
-/// throws).
+/// sublevel graph (an arc weighs its lower node; among arcs with the same lower node the later in the sweep
+/// weighs more), kept in a link-cut tree over the sweep. O(n log n) for all loops together. Nodes with
+/// several arcs below or above (degenerate forks) act as chains of binary forks, as in a simulation of
+/// simplicity; node order is the graph's (f, vertex index) order. \pre R's node values are finite and in
+/// increasing (value, vertex) order, as reeb_graph() returns them (checked; throws).
 inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R) {
   return internal::reeb_graph_persistence(R, nullptr);
 }

@@ -30,11 +30,12 @@ inline void refresh_node_types(Reeb_graph& G) {
   G.components = count_components(G);
 }
 
-/// Checks what the repair functions rely on, naming the first offending node or arc: node values finite and in
-/// strictly increasing (value, vertex) order, every arc going up between two nodes of the graph (lower < upper).
-/// With `values`, every vertex the graph uses (nodes, members, arc vertices) indexes it, and arc vertices (which
-/// can become nodes) have finite values.
-inline void check_reeb_graph(const Reeb_graph& G, const char* fn, const std::vector<double>* values = nullptr) {
+/// Checks what the repair functions rely on, naming the first offending node or arc: node values finite and
+/// in strictly increasing (value, vertex) order, every arc going up between two nodes of the graph (lower <
+/// upper). With `values`, every vertex the graph uses (nodes, members, arc vertices) indexes it, and arc
+/// vertices (which can become nodes) have finite values.
+inline void check_reeb_graph(const Reeb_graph& G, const char* fn,
+                             const std::vector<double>* values = nullptr) {
   using FeatureRecon::internal::throw_invalid_argument;
   for (std::size_t i = 0; i < G.nodes.size(); ++i) {
     const auto& node = G.nodes[i];
@@ -50,7 +51,8 @@ inline void check_reeb_graph(const Reeb_graph& G, const char* fn, const std::vec
   if (!values) return;
   auto check = [&](Vertex_index v, const char* what, std::size_t index) {
     if (v >= values->size())
-      throw_invalid_argument(fn, what, " ", index, " has vertex ", v, " out of range [0, ", values->size(), ")");
+      throw_invalid_argument(fn, what, " ", index, " has vertex ", v, " out of range [0, ", values->size(),
+                             ")");
   };
   for (std::size_t i = 0; i < G.nodes.size(); ++i) {
     check(G.nodes[i].vertex, "node", i);
@@ -60,7 +62,8 @@ inline void check_reeb_graph(const Reeb_graph& G, const char* fn, const std::vec
     for (const Vertex_index v : G.arcs[k].vertices) {
       check(v, "arc", k);
       if (!std::isfinite((*values)[v]))
-        throw_invalid_argument(fn, "arc ", k, " has vertex ", v, " of value ", (*values)[v], " (finite needed)");
+        throw_invalid_argument(fn, "arc ", k, " has vertex ", v, " of value ", (*values)[v],
+                               " (finite needed)");
     }
 }
 
@@ -91,8 +94,9 @@ double checked_bound(const Bound& bound, Vertex_index v, const char* fn) {
 }
 /// The nodes `ends` (indices into G.nodes) as (bound of their vertex, node), sorted.
 template <class Bound>
-std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends, const Bound& bound,
-                                                            const Reeb_graph& G, const char* fn) {
+std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends,
+                                                            const Bound& bound, const Reeb_graph& G,
+                                                            const char* fn) {
   std::vector<std::pair<double, std::size_t>> swept;
   swept.reserve(ends.size());
   for (const std::size_t e : ends) swept.emplace_back(checked_bound(bound, G.nodes[e].vertex, fn), e);
@@ -108,30 +112,31 @@ inline double bound_window(double max_distance) {
 
 /// Result of repair_reeb_graph().
 struct Reeb_repair_result {
-  Reeb_graph graph;         ///< the graph with the new arcs; may contain regular nodes (simplify next)
-  std::size_t joined = 0;   ///< number of arcs added
+  Reeb_graph graph;        ///< the graph with the new arcs; may contain regular nodes (simplify next)
+  std::size_t joined = 0;  ///< number of arcs added
   Status status = Status::success;  ///< interrupted when the progress callback returned false (no arc added)
 };
 
 /// Graph fixing of dissertation Ch. 3.3.2: joins pairs of degree-1 nodes whose input points are at most
-/// `max_distance` apart (the input distance, not the distance in the complex), closest pairs first, each node at
-/// most once. A joined pair gets a new arc (no interior vertices) from the lower node to the higher one. The two
-/// ends of one arc (an isolated segment) are never joined: when they are each other's closest free end, the
-/// segment is left as it is (no loop of two arcs), and neither end joins anything farther. The new features are
-/// not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and
-/// absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes; with Reeb_repair_options::bound, only
-/// pairs whose bounds differ by at most max_distance are measured (the same result). The progress callback is
-/// asked after each end's pairs are measured; a stop adds no arc (the graph is R, status interrupted).
-/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
-/// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its arcs
-/// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them; Reeb_repair_options::bound
-/// not NaN at a degree-1 node (all checked; throws).
+/// `max_distance` apart (the input distance, not the distance in the complex), closest pairs first, each node
+/// at most once. A joined pair gets a new arc (no interior vertices) from the lower node to the higher one.
+/// The two ends of one arc (an isolated segment) are never joined: when they are each other's closest free
+/// end, the segment is left as it is (no loop of two arcs), and neither end joins anything farther. The new
+/// features are not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones
+/// and absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes; with Reeb_repair_options::bound,
+/// only pairs whose bounds differ by at most max_distance are measured (the same result). The progress
+/// callback is asked after each end's pairs are measured; a stop adds no arc (the graph is R, status
+/// interrupted). \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two
+/// input points. \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex)
+/// order, its arcs going up between its nodes, as reeb_graph() and simplify_by_persistence() return them;
+/// Reeb_repair_options::bound not NaN at a degree-1 node (all checked; throws).
 template <class Distance>
 Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance,
                                      const Reeb_repair_options& options = {}) {
   const char* fn = "repair_reeb_graph";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ",
+                                                   max_distance);
   internal::check_reeb_graph(R, fn);
   Reeb_repair_result result;
   result.graph = R;
@@ -152,8 +157,8 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
     if (d <= max_distance) candidates.emplace_back(d, x, y);
   };
   auto stopped_after = [&](std::size_t a) {  // the pairs of a + 1 ends are measured
-    if (FeatureRecon::internal::report_progress(options.progress,
-                                                0.9 * static_cast<double>(a + 1) / static_cast<double>(ends.size())))
+    if (FeatureRecon::internal::report_progress(
+            options.progress, 0.9 * static_cast<double>(a + 1) / static_cast<double>(ends.size())))
       return false;
     result.status = Status::interrupted;
     return true;
@@ -164,8 +169,10 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
       if (stopped_after(a)) return result;
     }
   } else {
-    // A sweep over the ends sorted by their bound: a pair farther apart in bound is farther apart in distance.
-    const std::vector<std::pair<double, std::size_t>> swept = internal::sorted_by_bound(ends, options.bound, G, fn);
+    // A sweep over the ends sorted by their bound: a pair farther apart in bound is farther apart in
+    // distance.
+    const std::vector<std::pair<double, std::size_t>> swept =
+        internal::sorted_by_bound(ends, options.bound, G, fn);
     const double window = internal::bound_window(max_distance);
     for (std::size_t a = 0; a < swept.size(); ++a) {
       for (std::size_t b = a + 1; b < swept.size() && swept[b].first - swept[a].first <= window; ++b)
@@ -196,9 +203,10 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
 
 /// Result of connect_dead_ends().
 struct Reeb_dead_end_result {
-  Reeb_graph graph;              ///< the graph with the new arcs (and nodes where arcs were split)
-  std::size_t connected = 0;     ///< number of arcs added
-  /// interrupted when the progress callback returned false: the graph holds the arcs of the dead ends taken before
+  Reeb_graph graph;           ///< the graph with the new arcs (and nodes where arcs were split)
+  std::size_t connected = 0;  ///< number of arcs added
+  /// interrupted when the progress callback returned false: the graph holds the arcs of the dead ends taken
+  /// before
   Status status = Status::success;
 };
 
@@ -211,21 +219,22 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
                                                 const Reeb_repair_options& options, std::size_t& moved) {
   const char* fn = "connect_dead_ends";
   if (!(max_distance >= 0 && std::isfinite(max_distance)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ", max_distance);
+    FeatureRecon::internal::throw_invalid_argument(fn, "max_distance must be finite and >= 0, got ",
+                                                   max_distance);
   check_reeb_graph(R, fn, &values);
   Reeb_dead_end_result result;
   const std::size_t none = static_cast<std::size_t>(-1), n0 = R.nodes.size();
   // The arcs as they split: pieces of R's arcs, each the range [begin, end) of the vertices of its input arc
-  // (input none: a new link, no vertices). A split cuts a range without copying it; the vertices are copied once,
-  // at the end, into vectors of their exact size.
+  // (input none: a new link, no vertices). A split cuts a range without copying it; the vertices are copied
+  // once, at the end, into vectors of their exact size.
   struct Piece {
     std::size_t lower, upper, input, begin, end;
   };
   std::vector<Piece> pieces;
   pieces.reserve(R.arcs.size());
   std::vector<Reeb_graph::Node> nodes;  // R's, then the new ones appended: indices stay valid until the end
-  // Degrees, the input arc at each degree-1 node, the input arc each split node was a vertex of, and the pieces
-  // at the lower and the upper end of each input arc (a dead end's piece changes when its arc splits).
+  // Degrees, the input arc at each degree-1 node, the input arc each split node was a vertex of, and the
+  // pieces at the lower and the upper end of each input arc (a dead end's piece changes when its arc splits).
   std::vector<std::size_t> degree(n0, 0), arc_at(n0, none), origin(n0, none), lower_piece, upper_piece;
   lower_piece.reserve(R.arcs.size());
   upper_piece.reserve(R.arcs.size());
@@ -240,15 +249,16 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
   std::vector<std::size_t> ends;
   for (std::size_t i = 0; i < n0; ++i)
     if (degree[i] == 1) ends.push_back(i);
-  // Each dead end adds at most one node (a split) and two pieces: room for all, so that nothing is copied to grow.
+  // Each dead end adds at most one node (a split) and two pieces: room for all, so that nothing is copied to
+  // grow.
   nodes.reserve(n0 + ends.size());
   nodes.assign(R.nodes.begin(), R.nodes.end());
   degree.reserve(n0 + ends.size());
   origin.reserve(n0 + ends.size());
   pieces.reserve(R.arcs.size() + 2 * ends.size());
   // With a bound: every vertex of the graph as a slot (node i is slot i, vertex k of input arc a is slot
-  // first_slot[a] + k) sorted by bound, and where each slot is now: a node, or the piece that holds it. Splits
-  // only move vertices between pieces and into new nodes, so the sorted list stays valid.
+  // first_slot[a] + k) sorted by bound, and where each slot is now: a node, or the piece that holds it.
+  // Splits only move vertices between pieces and into new nodes, so the sorted list stays valid.
   const auto& bound = options.bound;
   const bool bounded = static_cast<bool>(bound);
   struct Place {
@@ -298,9 +308,10 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     if (degree[neighbour] == 1 &&
         static_cast<double>(distance(end_vertex, nodes[neighbour].vertex)) <= max_distance)
       continue;
-    // Excluded: every point of u's input arc and its far end, split or not (joining them would close a loop of the
-    // street itself). Excluding only the piece at u let a dead end whose arc was split for an earlier one reach the
-    // far part of its own street (a U-shaped street): the result depended on the order of the dead ends.
+    // Excluded: every point of u's input arc and its far end, split or not (joining them would close a loop
+    // of the street itself). Excluding only the piece at u let a dead end whose arc was split for an earlier
+    // one reach the far part of its own street (a U-shaped street): the result depended on the order of the
+    // dead ends.
     const std::size_t far = R.arcs[input].lower == u ? R.arcs[input].upper : R.arcs[input].lower;
     auto excluded_node = [&](std::size_t i) { return i == u || i == far || origin[i] == input; };
     auto excluded_piece = [&](std::size_t p) { return pieces[p].input == input; };
@@ -322,7 +333,8 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     if (bounded) {
       // The candidates' order does not matter: the closest wins, ties by smallest vertex.
       const double b = static_cast<double>(bound(end_vertex)), window = bound_window(max_distance);
-      auto it = std::lower_bound(by_bound.begin(), by_bound.end(), std::make_pair(b - window, std::size_t(0)));
+      auto it =
+          std::lower_bound(by_bound.begin(), by_bound.end(), std::make_pair(b - window, std::size_t(0)));
       for (; it != by_bound.end() && it->first <= b + window; ++it) {
         const Place& at = place[it->second];
         if (at.node != none) {
@@ -343,8 +355,8 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     if (!found) continue;
     std::size_t target = best_node;
     if (best_piece != none) {
-      // Split the piece at its vertex: a new (regular, then fork) node. The shorter side moves into a new piece,
-      // the longer one stays: a vertex only moves into a piece at most half as long, O(log n) times.
+      // Split the piece at its vertex: a new (regular, then fork) node. The shorter side moves into a new
+      // piece, the longer one stays: a vertex only moves into a piece at most half as long, O(log n) times.
       const std::size_t a = pieces[best_piece].input, q = pieces.size();
       target = nodes.size();
       Reeb_graph::Node node;
@@ -381,7 +393,8 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
   std::vector<std::size_t> order(nodes.size()), index(nodes.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&nodes](std::size_t a, std::size_t b) {
-    return nodes[a].value < nodes[b].value || (nodes[a].value == nodes[b].value && nodes[a].vertex < nodes[b].vertex);
+    return nodes[a].value < nodes[b].value ||
+           (nodes[a].value == nodes[b].value && nodes[a].vertex < nodes[b].vertex);
   });
   Reeb_graph& H = result.graph;
   H.nodes.reserve(nodes.size());
@@ -394,7 +407,8 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     Reeb_graph::Arc arc;
     arc.lower = index[p.lower];
     arc.upper = index[p.upper];
-    if (arc.lower > arc.upper) std::swap(arc.lower, arc.upper);  // only links (no interior vertices) can be reversed
+    if (arc.lower > arc.upper)
+      std::swap(arc.lower, arc.upper);  // only links (no interior vertices) can be reversed
     if (p.input != none) {
       const std::vector<Vertex_index>& vertices = R.arcs[p.input].vertices;
       arc.vertices.assign(vertices.begin() + static_cast<std::ptrdiff_t>(p.begin),
@@ -402,12 +416,14 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     }
     H.arcs.push_back(std::move(arc));
   }
-  // Arcs by lower node, then by the (f, index) order of the first vertex each reaches (Reeb_graph::arcs). Arcs
-  // that compare equal have the same ends and no vertices, so the result does not depend on the pieces' order.
+  // Arcs by lower node, then by the (f, index) order of the first vertex each reaches (Reeb_graph::arcs).
+  // Arcs that compare equal have the same ends and no vertices, so the result does not depend on the pieces'
+  // order.
   std::sort(H.arcs.begin(), H.arcs.end(), [&H, &values](const Reeb_graph::Arc& a, const Reeb_graph::Arc& b) {
     const Vertex_index fa = a.vertices.empty() ? H.nodes[a.upper].vertex : a.vertices.front();
     const Vertex_index fb = b.vertices.empty() ? H.nodes[b.upper].vertex : b.vertices.front();
-    return std::make_tuple(a.lower, values[fa], fa, a.upper) < std::make_tuple(b.lower, values[fb], fb, b.upper);
+    return std::make_tuple(a.lower, values[fa], fa, a.upper) <
+           std::make_tuple(b.lower, values[fb], fb, b.upper);
   });
   refresh_node_types(H);
   if (result.status == Status::success) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
@@ -415,45 +431,46 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
 }
 }  // namespace internal
 
-/// The other half of graph fixing: a degree-1 node whose input point is at most `max_distance` from a point of
-/// another part of the graph (a node, or an interior vertex of an arc) gets an arc to the closest such point (ties:
-/// smallest vertex index), splitting that arc there: a street that stops short of the street it meets (a T junction
-/// with a gap). Not another part: the node's own arc in R, its vertices and its other end, also once the arc was
-/// split for an earlier dead end (a U-shaped street is not closed on itself, whatever the order of the dead ends).
-/// An isolated arc whose two ends lie within `max_distance` of each other is not connected (too short to be a
-/// street end). Dead ends are taken in node order and see the arcs added before them. Simplify afterwards, as
-/// after repair_reeb_graph(). O(k * n) distance evaluations for k dead ends and n input vertices in the graph, and
-/// O(n log n) for all splits (each moves the shorter side of its arc); the arcs come back in the order of
-/// Reeb_graph::arcs, their vertex vectors no larger than they need. With Reeb_repair_options::bound, only the
-/// vertices whose bound lies within max_distance of the dead end's are measured: O(n log n + k w) for w such
-/// vertices, the same result. The progress callback is asked after each dead end; a stop keeps the arcs added so
-/// far (a valid graph, status interrupted).
-/// \param values f of every input vertex (for the new nodes).
-/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
-/// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes `values`;
-/// Reeb_repair_options::bound not NaN at any vertex of R (all checked; throws).
+/// The other half of graph fixing: a degree-1 node whose input point is at most `max_distance` from a point
+/// of another part of the graph (a node, or an interior vertex of an arc) gets an arc to the closest such
+/// point (ties: smallest vertex index), splitting that arc there: a street that stops short of the street it
+/// meets (a T junction with a gap). Not another part: the node's own arc in R, its vertices and its other
+/// end, also once the arc was split for an earlier dead end (a U-shaped street is not closed on itself,
+/// whatever the order of the dead ends). An isolated arc whose two ends lie within `max_distance` of each
+/// other is not connected (too short to be a street end). Dead ends are taken in node order and see the arcs
+/// added before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k
+/// dead ends and n input vertices in the graph, and O(n log n) for all splits (each moves the shorter side of
+/// its arc); the arcs come back in the order of Reeb_graph::arcs, their vertex vectors no larger than they
+/// need. With Reeb_repair_options::bound, only the vertices whose bound lies within max_distance of the dead
+/// end's are measured: O(n log n + k w) for w such vertices, the same result. The progress callback is asked
+/// after each dead end; a stop keeps the arcs added so far (a valid graph, status interrupted). \param values
+/// f of every input vertex (for the new nodes). \tparam Distance callable `double(Vertex_index,
+/// Vertex_index)`, the input distance. \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and
+/// every vertex it uses indexes `values`; Reeb_repair_options::bound not NaN at any vertex of R (all checked;
+/// throws).
 template <class Distance>
-Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values, double max_distance,
-                                       Distance distance, const Reeb_repair_options& options = {}) {
+Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values,
+                                       double max_distance, Distance distance,
+                                       const Reeb_repair_options& options = {}) {
   std::size_t moved = 0;
   return internal::connect_dead_ends_counting(R, values, max_distance, distance, options, moved);
 }
 
 /// Result of prune_reeb_graph_components().
 struct Reeb_prune_result {
-  Reeb_graph graph;                   ///< the graph without the pruned components
+  Reeb_graph graph;                            ///< the graph without the pruned components
   std::size_t removed_components = 0;          ///< number of components removed
   std::vector<Vertex_index> removed_vertices;  ///< input vertices of the removed components (sorted)
 };
 
 /// Removes every connected component of height (maximum minus minimum of f over its nodes) at most
-/// `max_height`: the essential 0-dimensional features of persistence <= max_height, which simplification keeps
-/// (a component is never merged into another). Small isolated pieces of noise go; nodes keep their order.
-/// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
+/// `max_height`: the essential 0-dimensional features of persistence <= max_height, which simplification
+/// keeps (a component is never merged into another). Small isolated pieces of noise go; nodes keep their
+/// order. \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components", "max_height must be >= 0, got ",
-                                                   max_height);
+    FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components",
+                                                   "max_height must be >= 0, got ", max_height);
   internal::check_reeb_graph(R, "prune_reeb_graph_components");
   const std::vector<std::size_t> component = internal::node_components(R);
   auto find = [&component](std::size_t x) { return component[x]; };
@@ -475,10 +492,12 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
     if (high[c] - low[c] <= max_height) {
       if (c == i) ++result.removed_components;
       result.removed_vertices.push_back(R.nodes[i].vertex);
-      result.removed_vertices.insert(result.removed_vertices.end(), R.nodes[i].members.begin(), R.nodes[i].members.end());
+      result.removed_vertices.insert(result.removed_vertices.end(), R.nodes[i].members.begin(),
+                                     R.nodes[i].members.end());
       continue;
     }
-    if (c == i) ++result.graph.components;  // counted here: the input's field may be unset (a graph built by hand)
+    if (c == i)
+      ++result.graph.components;  // counted here: the input's field may be unset (a graph built by hand)
     index[i] = result.graph.nodes.size();
     result.graph.nodes.push_back(R.nodes[i]);
   }
@@ -498,21 +517,22 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
 
 /// Result of trim_essential_stubs().
 struct Reeb_trim_result {
-  Reeb_graph graph;          ///< the graph with the stubs contracted into their forks
-  std::size_t trimmed = 0;   ///< number of stubs contracted
+  Reeb_graph graph;         ///< the graph with the stubs contracted into their forks
+  std::size_t trimmed = 0;  ///< number of stubs contracted
 };
 
-/// Contracts, in every component, the arc from the global minimum (and the one to the global maximum) into the
-/// fork at its other end when that arc is a stub: the extremum has degree 1, the fork degree >= 3 (counting only
-/// arcs not contracted before: of a Y whose two ends are both stubs, one is contracted), and the arc's
-/// height is at most `max_height`. Simplification never removes these arcs (the global extrema are an essential
-/// pair), so on a loop the base point of the geodesic function and the farthest point stay as spurs of height
-/// about half the Rips radius. Contracting them moves the essential pair by at most `max_height` and leaves every
-/// other feature as it is; the stub's points join the fork node's members.
-/// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
+/// Contracts, in every component, the arc from the global minimum (and the one to the global maximum) into
+/// the fork at its other end when that arc is a stub: the extremum has degree 1, the fork degree >= 3
+/// (counting only arcs not contracted before: of a Y whose two ends are both stubs, one is contracted), and
+/// the arc's height is at most `max_height`. Simplification never removes these arcs (the global extrema are
+/// an essential pair), so on a loop the base point of the geodesic function and the farthest point stay as
+/// spurs of height about half the Rips radius. Contracting them moves the essential pair by at most
+/// `max_height` and leaves every other feature as it is; the stub's points join the fork node's members. \pre
+/// max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0, got ", max_height);
+    FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0, got ",
+                                                   max_height);
   internal::check_reeb_graph(R, "trim_essential_stubs");
   Reeb_trim_result result;
   const std::size_t n = R.nodes.size();
@@ -532,7 +552,8 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
     highest[c] = i;
   }
   std::vector<bool> drop_node(n, false), drop_arc(R.arcs.size(), false);
-  std::vector<std::size_t> degree(n);  // as stubs go: a fork left with two arcs is no fork (a Y keeps a branch)
+  std::vector<std::size_t> degree(
+      n);  // as stubs go: a fork left with two arcs is no fork (a Y keeps a branch)
   for (std::size_t i = 0; i < n; ++i) degree[i] = incident[i].size();
   std::vector<Reeb_graph::Node> nodes = R.nodes;
   for (std::size_t c = 0; c < n; ++c) {

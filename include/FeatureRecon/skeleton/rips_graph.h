@@ -4,8 +4,8 @@
 #define FEATURERECON_SKELETON_RIPS_GRAPH_H
 
 #include <FeatureRecon/assertions.h>
-#include <FeatureRecon/internal/Large_array_allocator.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Large_array_allocator.h>
 #include <FeatureRecon/point_traits.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/internal/exact_distance.h>
@@ -41,21 +41,22 @@ namespace skeleton {
 
 /// Points as a dense row-major n x d matrix of doubles (the form every neighbour search works on).
 struct Point_matrix {
-  std::size_t rows = 0;       ///< number of points
-  std::size_t dimension = 0;  ///< coordinates per point
-  std::vector<double> data;   ///< row-major coordinates
+  std::size_t rows = 0;                                                           ///< number of points
+  std::size_t dimension = 0;                                                      ///< coordinates per point
+  std::vector<double> data;                                                       ///< row-major coordinates
   const double* row(std::size_t i) const { return data.data() + i * dimension; }  ///< coordinates of point i
 };
 
 /// Copies the coordinates of `points` through `traits` into a Point_matrix.
 /// \throws std::invalid_argument naming the first point whose dimension differs from the first point's,
 /// that has dimension 0, or that has a NaN or infinite coordinate.
-template <class PointRange, class Traits = Point_coordinate_traits<
-                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
+                                decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Point_matrix make_point_matrix(const PointRange& points, const Traits& traits = Traits(),
                                const char* caller = "make_point_matrix") {
-  static_assert(FeatureRecon::internal::Is_point_coordinate_traits<Traits>::value,
-                "FeatureRecon: Traits must model PointCoordinateTraits (doc/concepts/PointCoordinateTraits.h)");
+  static_assert(
+      FeatureRecon::internal::Is_point_coordinate_traits<Traits>::value,
+      "FeatureRecon: Traits must model PointCoordinateTraits (doc/concepts/PointCoordinateTraits.h)");
   Point_matrix m;
   std::size_t i = 0;
   for (const auto& p : points) {
@@ -70,8 +71,8 @@ Point_matrix make_point_matrix(const PointRange& points, const Traits& traits = 
     for (std::size_t c = 0; c < d; ++c) {
       const double x = traits.coordinate(p, c);
       if (!std::isfinite(x))
-        FeatureRecon::internal::throw_invalid_argument(caller, "point ", i, " has a non-finite coordinate ", c,
-                                                       " (", x, ")");
+        FeatureRecon::internal::throw_invalid_argument(caller, "point ", i, " has a non-finite coordinate ",
+                                                       c, " (", x, ")");
       m.data.push_back(x);
     }
     ++i;
@@ -85,18 +86,19 @@ namespace internal {
 /// Checks a Point_matrix built by hand: rows * dimension values, dimension >= 1 when there are rows, every
 /// coordinate finite (naming the point and coordinate).
 inline void check_point_matrix(const Point_matrix& m, const char* fn, const char* name = "points") {
-  const bool consistent = m.dimension == 0 ? m.data.empty()
-                                           : m.data.size() % m.dimension == 0 && m.data.size() / m.dimension == m.rows;
+  const bool consistent = m.dimension == 0
+                              ? m.data.empty()
+                              : m.data.size() % m.dimension == 0 && m.data.size() / m.dimension == m.rows;
   if (!consistent)
-    FeatureRecon::internal::throw_invalid_argument(fn, name, " has ", m.rows, " rows of dimension ", m.dimension,
-                                                   " but ", m.data.size(), " values");
+    FeatureRecon::internal::throw_invalid_argument(fn, name, " has ", m.rows, " rows of dimension ",
+                                                   m.dimension, " but ", m.data.size(), " values");
   if (m.rows > 0 && m.dimension == 0)
     FeatureRecon::internal::throw_invalid_argument(fn, name, " has dimension 0");
   for (std::size_t i = 0; i < m.rows; ++i)
     for (std::size_t c = 0; c < m.dimension; ++c)
       if (!std::isfinite(m.row(i)[c]))
-        FeatureRecon::internal::throw_invalid_argument(fn, name, ": point ", i, " has a non-finite coordinate ", c,
-                                                       " (", m.row(i)[c], ")");
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, name, ": point ", i, " has a non-finite coordinate ", c, " (", m.row(i)[c], ")");
 }
 
 /// \cond
@@ -122,7 +124,8 @@ struct Kd_index {
     points.reserve(m.rows);
     for (std::size_t i = 0; i < m.rows; ++i) {
       const double* r = m.row(i);
-      points.emplace_back(r[0] * unit, m.dimension > 1 ? r[1] * unit : 0.0, m.dimension > 2 ? r[2] * unit : 0.0);
+      points.emplace_back(r[0] * unit, m.dimension > 1 ? r[1] * unit : 0.0,
+                          m.dimension > 2 ? r[2] * unit : 0.0);
     }
     keys.resize(m.rows);
     for (std::size_t i = 0; i < m.rows; ++i) keys[i] = static_cast<std::uint32_t>(i);
@@ -130,8 +133,8 @@ struct Kd_index {
                                      Kd_traits(CGAL::make_property_map(points)));
     tree->build();
   }
-  /// Candidates within (slightly more than) r of point i, r in the tree's units (`unit` times the points'). The
-  /// absolute 1e-150 covers coordinates that vanished in the scaling (a range beyond 2^1000).
+  /// Candidates within (slightly more than) r of point i, r in the tree's units (`unit` times the points').
+  /// The absolute 1e-150 covers coordinates that vanished in the scaling (a range beyond 2^1000).
   void ball(std::uint32_t i, double r, std::vector<std::uint32_t>& out) const {
     out.clear();
     CGAL::Fuzzy_sphere<Kd_traits> query(i, ball_radius(i, r), 0.0, tree->traits());
@@ -139,7 +142,8 @@ struct Kd_index {
   }
   /// The radius ball(i, r) searches.
   double ball_radius(std::uint32_t i, double r) const {
-    return r + 1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z())) + 1e-150;
+    return r + 1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z())) +
+           1e-150;
   }
 };
 
@@ -148,28 +152,29 @@ struct Kd_index {
 /// below), so that candidates can be filtered safely and then decided on the original doubles: by refine(), a
 /// direct sum in double with its own enclosure, and where that cannot tell either, exactly.
 ///
-/// The coordinates are centred at their coordinate-wise median: the Gram matrix's error grows with the squared
-/// distance from the centre, and one outlier at 1e7 moved the mean by 1e3 for 10,000 points, which made every pair
-/// of the others a candidate for the exact predicate (18x slower). Points more than 2^15 times the median point's
-/// distance (max-norm) from the centre are "far": they are left out of the float matrix (zero columns), as they
-/// would set a scale at which the other coordinates lose their digits or underflow in float; their pairs get the
-/// enclosure [-inf, inf] for the caller to refine(). The centred halves (no overflow even next to the largest
-/// doubles) of the other points are scaled by a power of two so that the largest has magnitude in [2^30, 2^31).
-/// Values are in scaled units: a true squared distance times unit^2.
+/// The coordinates are centred at their coordinate-wise median: the Gram matrix's error grows with the
+/// squared distance from the centre, and one outlier at 1e7 moved the mean by 1e3 for 10,000 points, which
+/// made every pair of the others a candidate for the exact predicate (18x slower). Points more than 2^15
+/// times the median point's distance (max-norm) from the centre are "far": they are left out of the float
+/// matrix (zero columns), as they would set a scale at which the other coordinates lose their digits or
+/// underflow in float; their pairs get the enclosure [-inf, inf] for the caller to refine(). The centred
+/// halves (no overflow even next to the largest doubles) of the other points are scaled by a power of two so
+/// that the largest has magnitude in [2^30, 2^31). Values are in scaled units: a true squared distance times
+/// unit^2.
 struct Brute_force_index {
   const Point_matrix& m;
   const std::uint32_t* rows = nullptr;  // the points indexed: rows[i] of m (nullptr: all, in order)
   std::size_t size = 0;                 // how many
   /// Coordinates of indexed point i.
   const double* point(std::size_t i) const { return m.row(rows ? rows[i] : i); }
-  Eigen::MatrixXf centred;          // d x n, (halves minus the centre's half) * scale, rounded to float; 0 if far
-  Eigen::VectorXd norms;            // squared norms of the float columns, in double (exact products)
-  std::vector<double> weight;       // per point i, its part w_i of the Gram error bound (see block()); inf if far
-  std::vector<char> far;            // 1 for a point left out of the float matrix
-  std::vector<double> half_centre;  // the coordinate-wise median, halved
-  double scale = 1;                 // applied to the centred halves (a power of two)
-  double unit = 1;                  // scale / 2: applied to differences of whole coordinates
-  double pair_constant = 0;         // the part of the Gram error bound common to all pairs
+  Eigen::MatrixXf centred;     // d x n, (halves minus the centre's half) * scale, rounded to float; 0 if far
+  Eigen::VectorXd norms;       // squared norms of the float columns, in double (exact products)
+  std::vector<double> weight;  // per point i, its part w_i of the Gram error bound (see block()); inf if far
+  std::vector<char> far;       // 1 for a point left out of the float matrix
+  std::vector<double> half_centre;                  // the coordinate-wise median, halved
+  double scale = 1;                                 // applied to the centred halves (a power of two)
+  double unit = 1;                                  // scale / 2: applied to differences of whole coordinates
+  double pair_constant = 0;                         // the part of the Gram error bound common to all pairs
   double refine_relative = 0, refine_absolute = 0;  // refine()'s error bound
   mutable std::vector<float> gram_buffer;           // gram()'s products
   mutable std::size_t gram_columns = 0;             // per row of gram_buffer
@@ -216,24 +221,26 @@ struct Brute_force_index {
         centred(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(i)) =
             far[i] ? 0.0f : static_cast<float>(half_offset(i, c) * scale);
     norms = centred.cast<double>().colwise().squaredNorm().transpose();
-    // The float enclosure. Notation: u = 2^-24 and v = 2^-53 the unit roundoffs of float and double, eta = 2^-150
-    // half the smallest float (the absolute error of a float rounding in the subnormal range), a = (x_i - x_j) unit
-    // the true scaled difference, f_i the float column of point i, s_i = |f_i|, N_i = s_i^2, gamma_k = k u / (1 -
-    // k u). Every constant below is at least twice what the step needs; the slack also covers the roundings of
-    // computing the bound, d2 - err and d2 + err (relative 2^-53 of values at most 2 (N_i + N_j), while
-    // err >= 2^-21 (N_i + N_j)).
-    // 1. Coordinates: f = float(y), |f - y| <= u |y| + eta, where y = (x / 2 - h) scale is computed in double: the
-    //    subtraction (relative v; the centre h is common to both points and cancels), x / 2 (absolute 2^-1075 for
-    //    subnormal x) and the scaling (absolute 2^-1075 if it underflows). So per coordinate
+    // The float enclosure. Notation: u = 2^-24 and v = 2^-53 the unit roundoffs of float and double, eta =
+    // 2^-150 half the smallest float (the absolute error of a float rounding in the subnormal range), a =
+    // (x_i - x_j) unit the true scaled difference, f_i the float column of point i, s_i = |f_i|, N_i = s_i^2,
+    // gamma_k = k u / (1 - k u). Every constant below is at least twice what the step needs; the slack also
+    // covers the roundings of computing the bound, d2 - err and d2 + err (relative 2^-53 of values at most 2
+    // (N_i + N_j), while err >= 2^-21 (N_i + N_j)).
+    // 1. Coordinates: f = float(y), |f - y| <= u |y| + eta, where y = (x / 2 - h) scale is computed in
+    // double: the
+    //    subtraction (relative v; the centre h is common to both points and cancels), x / 2 (absolute 2^-1075
+    //    for subnormal x) and the scaling (absolute 2^-1075 if it underflows). So per coordinate
     //    |(f_i - f_j) - a| <= alpha (|f_i| + |f_j|) + beta, alpha = 2^-23 >= (u + v) / (1 - u), and
-    //    beta = 4 eta + 2^-1072 max(scale, 1); over all coordinates (Minkowski) the error e = f_i - f_j - a has
-    //    E = |e| <= alpha (s_i + s_j) + b, b = beta sqrt(d).
-    // 2. Gram: d2 = (n_i + n_j) - 2 g with n_i the double sum of exact squares (error <= (d - 1) v N_i), g the float
-    //    dot product (error <= gamma_d s_i s_j + (1 + gamma_d) d eta: d roundings, each relative or, underflowing,
-    //    at most eta) and two double roundings: |d2 - |f_i - f_j|^2| <= G = g_rel (N_i + N_j) + g_abs,
-    //    g_rel = 2 (gamma_d + (d + 5) v), g_abs = 4 d eta. Without the absolute terms, products of coordinates near
-    //    the centre that underflow in float (data spread 2^100 times their spacing) made d2 overestimate a pair at
-    //    exactly the radius, and it was rejected before the exact test.
+    //    beta = 4 eta + 2^-1072 max(scale, 1); over all coordinates (Minkowski) the error e = f_i - f_j - a
+    //    has E = |e| <= alpha (s_i + s_j) + b, b = beta sqrt(d).
+    // 2. Gram: d2 = (n_i + n_j) - 2 g with n_i the double sum of exact squares (error <= (d - 1) v N_i), g
+    // the float
+    //    dot product (error <= gamma_d s_i s_j + (1 + gamma_d) d eta: d roundings, each relative or,
+    //    underflowing, at most eta) and two double roundings: |d2 - |f_i - f_j|^2| <= G = g_rel (N_i + N_j) +
+    //    g_abs, g_rel = 2 (gamma_d + (d + 5) v), g_abs = 4 d eta. Without the absolute terms, products of
+    //    coordinates near the centre that underflow in float (data spread 2^100 times their spacing) made d2
+    //    overestimate a pair at exactly the radius, and it was rejected before the exact test.
     // 3. |a|^2 - |f_i - f_j|^2 = -(2 a.e + |e|^2), |a| <= s_i + s_j + E: the difference is at most
     //    2 (s_i + s_j) E + 3 E^2 <= 4 alpha (N_i + N_j) + 2 b (s_i + s_j) + 12 alpha^2 (N_i + N_j) + 6 b^2
     //    (using (s_i + s_j)^2 <= 2 (N_i + N_j) and (p + q)^2 <= 2 p^2 + 2 q^2).
@@ -248,23 +255,27 @@ struct Brute_force_index {
     weight.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double ni = norms[static_cast<Eigen::Index>(i)];
-      // A far point's pairs have no float enclosure: an infinite weight makes every bound of its pairs infinite.
+      // A far point's pairs have no float enclosure: an infinite weight makes every bound of its pairs
+      // infinite.
       weight[i] = far[i] ? std::numeric_limits<double>::infinity() : K * ni + 2 * b * std::sqrt(ni);
     }
-    // refine() sums t_c^2, t_c = (x_i / 2 - x_j / 2) scale in double, scaled so that neither the squares of far
-    // pairs overflow nor those of near ones underflow. t_c = a_c (1 + delta) + kappa_c with |delta| <= v (the
-    // subtraction) and |kappa_c| <= kappa = 2^-1073 max(scale, 1) (the halvings, and the scaling if it underflows),
-    // so |t| differs from |a| by at most v |a| + k, k = kappa sqrt(d) <= 2^-72 sqrt(d); each square has an absolute
-    // error up to 2^-1075 if it underflows and the sum a relative gamma_(d-1). With 2 k |t| <= k (1 + |t|^2):
-    // |true - s| <= refine_relative s + refine_absolute, refine_relative = 2 (d + 5) v,
-    // refine_absolute = d 2^-1074 + 4 k (twice what is needed, which covers computing s (1 +- refine_relative)).
+    // refine() sums t_c^2, t_c = (x_i / 2 - x_j / 2) scale in double, scaled so that neither the squares of
+    // far pairs overflow nor those of near ones underflow. t_c = a_c (1 + delta) + kappa_c with |delta| <= v
+    // (the subtraction) and |kappa_c| <= kappa = 2^-1073 max(scale, 1) (the halvings, and the scaling if it
+    // underflows), so |t| differs from |a| by at most v |a| + k, k = kappa sqrt(d) <= 2^-72 sqrt(d); each
+    // square has an absolute error up to 2^-1075 if it underflows and the sum a relative gamma_(d-1). With 2
+    // k |t| <= k (1 + |t|^2): |true - s| <= refine_relative s + refine_absolute, refine_relative = 2 (d + 5)
+    // v, refine_absolute = d 2^-1074 + 4 k (twice what is needed, which covers computing s (1 +-
+    // refine_relative)).
     refine_relative = 2 * (dd + 5) * v;
-    refine_absolute = dd * std::ldexp(1.0, -1074) + 4 * std::ldexp(1.0, -1073 + std::max(exponent, 0)) * std::sqrt(dd);
+    refine_absolute =
+        dd * std::ldexp(1.0, -1074) + 4 * std::ldexp(1.0, -1073 + std::max(exponent, 0)) * std::sqrt(dd);
   }
   /// Computes the float Gram products of the indexed points [b, e) with [from, size) into gram_buffer: the
-  /// products of point b + r start at gram_row(r), one float per point from `from` on (contiguous, so that a row's
-  /// pairs are read in order). One buffer for every block (the first is the largest): a fresh 5 MB matrix per block
-  /// of 5,000 points in 50-D went back to the system and was faulted in again whenever the allocator trimmed its heap.
+  /// products of point b + r start at gram_row(r), one float per point from `from` on (contiguous, so that a
+  /// row's pairs are read in order). One buffer for every block (the first is the largest): a fresh 5 MB
+  /// matrix per block of 5,000 points in 50-D went back to the system and was faulted in again whenever the
+  /// allocator trimmed its heap.
   void gram(std::size_t b, std::size_t e, std::size_t from) const {
     const Eigen::Index nb = static_cast<Eigen::Index>(e - b);
     const Eigen::Index nc = static_cast<Eigen::Index>(size - from);
@@ -284,13 +295,14 @@ struct Brute_force_index {
     const std::size_t cells = count * size;
     if (gram_buffer.size() < cells) gram_buffer.resize(cells);
     gram_columns = size;
-    Eigen::Map<Eigen::MatrixXf> g(gram_buffer.data(), static_cast<Eigen::Index>(size), static_cast<Eigen::Index>(count));
+    Eigen::Map<Eigen::MatrixXf> g(gram_buffer.data(), static_cast<Eigen::Index>(size),
+                                  static_cast<Eigen::Index>(count));
     g.noalias() = centred.transpose() * gathered;
   }
   /// The products of the r-th point of the last gram() block with the points from its `from` on.
   const float* gram_row(std::size_t r) const { return gram_buffer.data() + r * gram_columns; }
-  /// Calls visit(i, j, lo, hi), lo <= the true squared distance (scaled) <= hi, for every i in [b, e) and every
-  /// j >= from. Pairs with a far point get [-inf, inf].
+  /// Calls visit(i, j, lo, hi), lo <= the true squared distance (scaled) <= hi, for every i in [b, e) and
+  /// every j >= from. Pairs with a far point get [-inf, inf].
   template <class Visit>
   void block(std::size_t b, std::size_t e, std::size_t from, Visit visit) const {
     gram(b, e, from);
@@ -309,8 +321,9 @@ struct Brute_force_index {
       }
     }
   }
-  /// Narrows the enclosure [lo, hi] of the squared distance of points i and j (scaled) by one from a direct sum in
-  /// double: about 2 d 2^-53 wide relative to it, where the float one is wide relative to the data's spread.
+  /// Narrows the enclosure [lo, hi] of the squared distance of points i and j (scaled) by one from a direct
+  /// sum in double: about 2 d 2^-53 wide relative to it, where the float one is wide relative to the data's
+  /// spread.
   void refine(std::size_t i, std::size_t j, double& lo, double& hi) const {
     const double *p = point(i), *q = point(j);
     double s = 0;
@@ -318,7 +331,8 @@ struct Brute_force_index {
       const double t = (p[c] / 2 - q[c] / 2) * scale;
       s += t * t;
     }
-    if (!(s < std::numeric_limits<double>::infinity())) {  // the true value is about the largest double or more
+    if (!(s <
+          std::numeric_limits<double>::infinity())) {  // the true value is about the largest double or more
       lo = std::max(lo, std::numeric_limits<double>::max() / 2);
       return;
     }
@@ -328,9 +342,10 @@ struct Brute_force_index {
   }
 };
 
-/// The coordinate whose values over the points `set` of m have the widest range, and that range (0 for fewer than
-/// two points, inf when it overflows). lo and hi are work space.
-inline std::pair<std::size_t, double> widest_axis(const Point_matrix& m, const std::vector<std::uint32_t>& set,
+/// The coordinate whose values over the points `set` of m have the widest range, and that range (0 for fewer
+/// than two points, inf when it overflows). lo and hi are work space.
+inline std::pair<std::size_t, double> widest_axis(const Point_matrix& m,
+                                                  const std::vector<std::uint32_t>& set,
                                                   std::vector<double>& lo, std::vector<double>& hi) {
   const std::size_t d = m.dimension;
   std::size_t axis = 0;
@@ -352,19 +367,20 @@ inline std::pair<std::size_t, double> widest_axis(const Point_matrix& m, const s
 }
 
 /// The points split into groups that no pair within `radius` crosses: a set is cut wherever its values of the
-/// coordinate with the widest range leave a gap wider than the radius (two points on either side differ by more
-/// than the radius in that coordinate alone), and each part is cut again the same way until nothing cuts. Only
-/// that one axis is sorted per set, so the split costs O(n (d + log n)) per level and may miss gaps on other
-/// axes (a search optimisation, not a clustering). For the brute force: its float filter centres the Gram matrix
-/// at one point, and a second cluster far away made every pair of that cluster go to the double stage. Groups
-/// hold ascending indices and come in the order of their first index; all points form one group when nothing cuts.
+/// coordinate with the widest range leave a gap wider than the radius (two points on either side differ by
+/// more than the radius in that coordinate alone), and each part is cut again the same way until nothing
+/// cuts. Only that one axis is sorted per set, so the split costs O(n (d + log n)) per level and may miss
+/// gaps on other axes (a search optimisation, not a clustering). For the brute force: its float filter
+/// centres the Gram matrix at one point, and a second cluster far away made every pair of that cluster go to
+/// the double stage. Groups hold ascending indices and come in the order of their first index; all points
+/// form one group when nothing cuts.
 inline std::vector<std::vector<std::uint32_t>> separated_groups(const Point_matrix& m, double radius) {
   const std::size_t n = m.rows;
   std::vector<std::vector<std::uint32_t>> done, todo(1);
   todo[0].resize(n);
   for (std::size_t i = 0; i < n; ++i) todo[0][i] = static_cast<std::uint32_t>(i);
-  // A computed difference b - a (b >= a) rounds by a relative 2^-53 at most, and it is not 0 unless b == a: when it
-  // exceeds radius (1 + 2^-50), the true difference exceeds the radius.
+  // A computed difference b - a (b >= a) rounds by a relative 2^-53 at most, and it is not 0 unless b == a:
+  // when it exceeds radius (1 + 2^-50), the true difference exceeds the radius.
   const double gap_limit = radius * (1 + 0x1p-50);
   std::vector<std::pair<double, std::uint32_t>> key;
   std::vector<double> lo, hi;  // the coordinates' ranges over a set
@@ -397,24 +413,25 @@ inline std::vector<std::vector<std::uint32_t>> separated_groups(const Point_matr
   return done;
 }
 
-/// A group of isolated_groups(): its points (ascending) and a lower bound on the distance from any of them to any
-/// point outside the group (the largest double when nothing is outside).
+/// A group of isolated_groups(): its points (ascending) and a lower bound on the distance from any of them to
+/// any point outside the group (the largest double when nothing is outside).
 struct Isolated_group {
   std::vector<std::uint32_t> rows;
   double separation = std::numeric_limits<double>::max();
 };
 
-/// The points split for the k-nearest-neighbour brute force, which has no radius to cut at: a set is cut at the
-/// gaps of the sorted values of its widest coordinate that exceed 1/16 of that coordinate's range and the extent
-/// (widest coordinate range) of the parts on both sides, when both parts have at least `min_size` points (k + 1:
-/// a smaller one could not answer for any of its points; parts between rejected gaps are one part), and each part
-/// is cut again the same way. A part's separation is the smallest of its parent's and its adjacent gaps. Clusters
-/// far apart relative to their own size end up in groups of their own, whose float filters then have their own
-/// centres; grids, evenly spaced lines and spread-out data are not cut (their gaps are not wider than the parts
-/// beside them, or those hold too few points). The cut is a heuristic for speed (it looks at one axis per set, so
-/// it may miss gaps on others): the search keeps a group's answer for a point only when its k-th nearest within
-/// the group lies within the separation, and searches the other points among all. Groups hold ascending indices
-/// and come in the order of their first index; each level sorts its sets once along one axis.
+/// The points split for the k-nearest-neighbour brute force, which has no radius to cut at: a set is cut at
+/// the gaps of the sorted values of its widest coordinate that exceed 1/16 of that coordinate's range and the
+/// extent (widest coordinate range) of the parts on both sides, when both parts have at least `min_size`
+/// points (k + 1: a smaller one could not answer for any of its points; parts between rejected gaps are one
+/// part), and each part is cut again the same way. A part's separation is the smallest of its parent's and
+/// its adjacent gaps. Clusters far apart relative to their own size end up in groups of their own, whose
+/// float filters then have their own centres; grids, evenly spaced lines and spread-out data are not cut
+/// (their gaps are not wider than the parts beside them, or those hold too few points). The cut is a
+/// heuristic for speed (it looks at one axis per set, so it may miss gaps on others): the search keeps a
+/// group's answer for a point only when its k-th nearest within the group lies within the separation, and
+/// searches the other points among all. Groups hold ascending indices and come in the order of their first
+/// index; each level sorts its sets once along one axis.
 inline std::vector<Isolated_group> isolated_groups(const Point_matrix& m, std::size_t min_size) {
   const std::size_t n = m.rows;
   if (n == 0) return {};
@@ -453,10 +470,12 @@ inline std::vector<Isolated_group> isolated_groups(const Point_matrix& m, std::s
     }
     bool cut = false;
     for (std::size_t q = 0; q < gaps.size(); ++q) {
-      // The computed difference rounds by a relative 2^-53 at most: the true gap exceeds gap (1 - 2^-50) (strictly).
-      const bool kept = gaps[q] > std::max(extents[q], extents[q + 1]) && starts[q + 1] - starts[q] >= min_size &&
-                        starts[q + 2] - starts[q + 1] >= min_size;
-      // Subnormal gaps are exact and gap (1 - 2^-50) rounds back to them: one step down keeps the bound strict.
+      // The computed difference rounds by a relative 2^-53 at most: the true gap exceeds gap (1 - 2^-50)
+      // (strictly).
+      const bool kept = gaps[q] > std::max(extents[q], extents[q + 1]) &&
+                        starts[q + 1] - starts[q] >= min_size && starts[q + 2] - starts[q + 1] >= min_size;
+      // Subnormal gaps are exact and gap (1 - 2^-50) rounds back to them: one step down keeps the bound
+      // strict.
       gaps[q] = kept ? std::nextafter(gaps[q] * (1 - 0x1p-50), 0.0) : 0.0;
       cut = cut || gaps[q] > 0;
     }
@@ -476,16 +495,18 @@ inline std::vector<Isolated_group> isolated_groups(const Point_matrix& m, std::s
       next.separation = q < gaps.size() ? std::min(set.separation, gaps[q]) : set.separation;
     }
   }
-  std::sort(done.begin(), done.end(), [](const auto& a, const auto& b) { return a.rows.front() < b.rows.front(); });
+  std::sort(done.begin(), done.end(),
+            [](const auto& a, const auto& b) { return a.rows.front() < b.rows.front(); });
   return done;
 }
 
-/// Keeps in `cand` the `keep` points of m nearest to p (exact squared distances, ties by index), nearest first
-/// (with `ordered` false, a list of at most `keep` is left as it is: all of it is kept).
-/// Each candidate's squared distance is enclosed once in interval arithmetic (one rounding-mode switch for all);
-/// sorted by the lower ends, only runs of overlapping enclosures that are not all the same exact value (a tie, which
-/// the index decides) are ordered by the exact predicate. On integer grids every enclosure is exact: no predicate
-/// runs at all, where ordering by the predicate took a rounding-mode switch per comparison.
+/// Keeps in `cand` the `keep` points of m nearest to p (exact squared distances, ties by index), nearest
+/// first (with `ordered` false, a list of at most `keep` is left as it is: all of it is kept). Each
+/// candidate's squared distance is enclosed once in interval arithmetic (one rounding-mode switch for all);
+/// sorted by the lower ends, only runs of overlapping enclosures that are not all the same exact value (a
+/// tie, which the index decides) are ordered by the exact predicate. On integer grids every enclosure is
+/// exact: no predicate runs at all, where ordering by the predicate took a rounding-mode switch per
+/// comparison.
 inline void keep_nearest_exactly(const Point_matrix& m, const double* p, std::vector<std::uint32_t>& cand,
                                  std::size_t keep, bool ordered = true) {
   if (!ordered && cand.size() <= keep) return;
@@ -499,11 +520,13 @@ inline void keep_nearest_exactly(const Point_matrix& m, const double* p, std::ve
     CGAL::Protect_FPU_rounding<true> protect;
     for (const std::uint32_t j : cand) {
       CGAL::Interval_nt<false> s(0);
-      for (std::size_t c = 0; c < m.dimension; ++c) s += CGAL::square(CGAL::Interval_nt<false>(p[c]) - m.row(j)[c]);
+      for (std::size_t c = 0; c < m.dimension; ++c)
+        s += CGAL::square(CGAL::Interval_nt<false>(p[c]) - m.row(j)[c]);
       keys.push_back(Key{s.inf(), s.sup(), j});
     }
   }
-  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.lo < b.lo || (a.lo == b.lo && a.j < b.j); });
+  std::sort(keys.begin(), keys.end(),
+            [](const Key& a, const Key& b) { return a.lo < b.lo || (a.lo == b.lo && a.j < b.j); });
   const std::size_t size = keys.size();
   for (std::size_t start = 0; start < size && start < keep;) {
     std::size_t end = start + 1;
@@ -515,8 +538,8 @@ inline void keep_nearest_exactly(const Point_matrix& m, const double* p, std::ve
       ++end;
     }
     if (end - start > 1 && !ties_only)
-      std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start), keys.begin() + static_cast<std::ptrdiff_t>(end),
-                [&](const Key& a, const Key& b) {
+      std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start),
+                keys.begin() + static_cast<std::ptrdiff_t>(end), [&](const Key& a, const Key& b) {
                   const int c = compare_squared_distances(p, m.row(a.j), m.row(b.j), m.dimension);
                   return c < 0 || (c == 0 && a.j < b.j);
                 });
@@ -548,8 +571,8 @@ inline double point_distance(const double* p, const double* q, std::size_t dimen
     return a * std::sqrt(s);
   }
   if (!(a > 0)) return 0;
-  // A difference of two finite coordinates overflowed (1e308 and -1e308): the halves' differences do not. This
-  // returned inf * sqrt(0), NaN, and a NaN edge length hung the embedding's shortest paths.
+  // A difference of two finite coordinates overflowed (1e308 and -1e308): the halves' differences do not.
+  // This returned inf * sqrt(0), NaN, and a NaN edge length hung the embedding's shortest paths.
   a = 0;
   for (std::size_t c = 0; c < dimension; ++c) a = std::max(a, std::fabs(p[c] / 2 - q[c] / 2));
   for (std::size_t c = 0; c < dimension; ++c) s += ((p[c] / 2 - q[c] / 2) / a) * ((p[c] / 2 - q[c] / 2) / a);
@@ -570,15 +593,17 @@ inline void add_edge_lengths(const Point_matrix& m, Proximity_graph& g, const ch
 }  // namespace internal
 
 namespace internal {
-/// What the Rips search left to its slower stages (for tests: the work an outlier or extreme coordinates cause).
+/// What the Rips search left to its slower stages (for tests: the work an outlier or extreme coordinates
+/// cause).
 struct Rips_search_counts {
-  std::size_t refined = 0;  ///< pairs the brute force's float enclosure could not decide, computed again in double
-  std::size_t exact = 0;    ///< pairs decided by the exact predicate
+  std::size_t refined =
+      0;  ///< pairs the brute force's float enclosure could not decide, computed again in double
+  std::size_t exact = 0;  ///< pairs decided by the exact predicate
 };
 
 /// build_rips_graph() of a Point_matrix, counting its slow stages into `counts` (if not null).
-inline Proximity_graph rips_graph(const Point_matrix& m, double radius, const Proximity_graph_options& options,
-                                  Rips_search_counts* counts) {
+inline Proximity_graph rips_graph(const Point_matrix& m, double radius,
+                                  const Proximity_graph_options& options, Rips_search_counts* counts) {
   const char* fn = "build_rips_graph";
   if (!(std::isfinite(radius) && radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
@@ -612,21 +637,23 @@ inline Proximity_graph rips_graph(const Point_matrix& m, double radius, const Pr
     // Each group of points that no edge crosses is searched alone, with its own centre (separated_groups()).
     const std::vector<std::vector<std::uint32_t>> groups = internal::separated_groups(m, radius);
     double pairs = 0, pairs_done = 0;  // for the progress reports
-    for (const auto& group : groups) pairs += static_cast<double>(group.size()) * static_cast<double>(group.size());
+    for (const auto& group : groups)
+      pairs += static_cast<double>(group.size()) * static_cast<double>(group.size());
     // The edges among the points of a group (nullptr: all points).
     auto search = [&](const std::vector<std::uint32_t>* group) {
       internal::Brute_force_index index(m, group);
       const std::size_t k = index.size, block = 256;
-      // The radius squared in the index's units, as an enclosure: radius * unit is exact unless it overflows (then
-      // infinite, as when its square overflows, and so is r2_lo: every finite upper bound is within) or underflows
-      // (absolute 2^-1075, far below the 2^-1074 added); the square rounds by a relative 2^-53.
+      // The radius squared in the index's units, as an enclosure: radius * unit is exact unless it overflows
+      // (then infinite, as when its square overflows, and so is r2_lo: every finite upper bound is within) or
+      // underflows (absolute 2^-1075, far below the 2^-1074 added); the square rounds by a relative 2^-53.
       const double rs = radius * index.unit, r2 = rs * rs;
       const double r2_lo = r2 * (1 - 0x1p-50) - 0x1p-1074, r2_hi = r2 * (1 + 0x1p-50) + 0x1p-1074;
       for (std::size_t b = 0; b < k; b += block) {
         // Rows [b, b + block) of a group of k cost about (k - b) * block of its k^2 / 2 pairs.
-        const double fraction = 1 - static_cast<double>(k - b) * static_cast<double>(k - b) / (double(k) * double(k));
-        if (!FeatureRecon::internal::report_progress(options.progress,
-                                                     (pairs_done + fraction * double(k) * double(k)) / pairs)) {
+        const double fraction =
+            1 - static_cast<double>(k - b) * static_cast<double>(k - b) / (double(k) * double(k));
+        if (!FeatureRecon::internal::report_progress(
+                options.progress, (pairs_done + fraction * double(k) * double(k)) / pairs)) {
           stopped = true;
           return;
         }
@@ -636,8 +663,8 @@ inline Proximity_graph rips_graph(const Point_matrix& m, double radius, const Pr
             ++count.refined;
             index.refine(i, j, lo, hi);
             if (lo > r2_hi) return;
-            if (!(hi < r2_lo) &&
-                (++count.exact, !internal::distance_at_most(index.point(i), index.point(j), m.dimension, radius)))
+            if (!(hi < r2_lo) && (++count.exact, !internal::distance_at_most(index.point(i), index.point(j),
+                                                                             m.dimension, radius)))
               return;
           }
           // The group is ascending: i < j stays.
@@ -673,8 +700,8 @@ inline Proximity_graph build_rips_graph(const Point_matrix& m, double radius,
 namespace internal {
 /// What the brute-force k-nearest-neighbour search left to its slower stages (for tests).
 struct Knn_search_counts {
-  std::size_t refined = 0;     ///< pairs whose float enclosure was too wide, computed again in double
-  std::size_t unresolved = 0;  ///< points whose group could not answer alone, searched among all points
+  std::size_t refined = 0;       ///< pairs whose float enclosure was too wide, computed again in double
+  std::size_t unresolved = 0;    ///< points whose group could not answer alone, searched among all points
   std::size_t ball_queries = 0;  ///< kd-tree: positions whose k-th nearest had no clear gap after it (ties)
 };
 
@@ -694,7 +721,9 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
   const std::size_t kk = std::min(k, n == 0 ? 0 : n - 1);
   std::vector<std::uint32_t> cand;
   // Keeps the kk nearest candidates of point i (exact distance, then index); nearest first if `ordered`.
-  auto keep_nearest = [&](std::size_t i, bool ordered) { internal::keep_nearest_exactly(m, m.row(i), cand, kk, ordered); };
+  auto keep_nearest = [&](std::size_t i, bool ordered) {
+    internal::keep_nearest_exactly(m, m.row(i), cand, kk, ordered);
+  };
   auto add_edges = [&](std::size_t i) {
     for (const std::uint32_t j : cand) {
       const Vertex_index a = static_cast<Vertex_index>(i), b = j;
@@ -703,12 +732,12 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
   };
   if (kk == 0) return g;
   g.edges.reserve(n * kk);  // each point adds its kk (the symmetric duplicates go at the end)
-  bool stopped = false;  // no report after the callback asked to stop
+  bool stopped = false;     // no report after the callback asked to stop
   if (internal::use_kd_tree(m, options.search, fn)) {
     // Copies of a position are searched once: the kd-tree holds the distinct positions, each with its copies
-    // (by index). A point's neighbours are the other copies of its position first (distance 0, by index), then
-    // the nearest of the other positions, each contributing its lowest-index copies. A position with more than
-    // k copies needs no search at all (D copies used to cost O(D^2)).
+    // (by index). A point's neighbours are the other copies of its position first (distance 0, by index),
+    // then the nearest of the other positions, each contributing its lowest-index copies. A position with
+    // more than k copies needs no search at all (D copies used to cost O(D^2)).
     std::vector<std::uint32_t> by_position(n);
     for (std::uint32_t i = 0; i < n; ++i) by_position[i] = i;
     std::sort(by_position.begin(), by_position.end(), [&m](std::uint32_t a, std::uint32_t b) {
@@ -726,7 +755,8 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
     distinct.dimension = m.dimension;
     distinct.rows = groups;
     for (std::size_t q = 0; q < groups; ++q)
-      distinct.data.insert(distinct.data.end(), m.row(by_position[first[q]]), m.row(by_position[first[q]]) + m.dimension);
+      distinct.data.insert(distinct.data.end(), m.row(by_position[first[q]]),
+                           m.row(by_position[first[q]]) + m.dimension);
     internal::Kd_index index(distinct);
     using Knn = CGAL::Orthogonal_k_neighbor_search<internal::Kd_traits>;
     using Distance = Knn::Distance;
@@ -744,9 +774,10 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       outside.clear();
       if (need > 0 && groups > 1) {
         // The nearest positions until their copies add up to `need`; their farthest distance bounds the ball
-        // that holds every position tied with the last one needed. The search asks for one position more: when
-        // it lies clearly beyond that ball (and so does every position not reported, no nearer than it), the
-        // positions reported before it are exactly what the ball would hold, and the ball query is skipped.
+        // that holds every position tied with the last one needed. The search asks for one position more:
+        // when it lies clearly beyond that ball (and so does every position not reported, no nearer than it),
+        // the positions reported before it are exactly what the ball would hold, and the ball query is
+        // skipped.
         double far = 0, next = -1;  // squared, in the tree's units; next: the position after them (-1: none)
         near_groups.clear();
         for (std::size_t K = std::min(groups, need + 2);; K = std::min(groups, 2 * K)) {
@@ -794,12 +825,13 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       }
     }
   } else {
-    // Blocked all-pairs distances (Brute_force_index), a row at a time: the k-th smallest upper bound of a row is at
-    // least the k-th smallest distance, so a point whose lower bound exceeds it has k points strictly nearer and is
-    // no candidate; the few others are ordered exactly. Groups of points far from the rest (isolated_groups()) are
-    // searched alone, each with its own float filter: one centre for two clusters 1e7 apart made every pair of one
-    // of them too uncertain in float. A group's answer for a point stands when the k-th nearest within the group
-    // lies within the group's separation (everything outside is farther); other points are searched among all.
+    // Blocked all-pairs distances (Brute_force_index), a row at a time: the k-th smallest upper bound of a
+    // row is at least the k-th smallest distance, so a point whose lower bound exceeds it has k points
+    // strictly nearer and is no candidate; the few others are ordered exactly. Groups of points far from the
+    // rest (isolated_groups()) are searched alone, each with its own float filter: one centre for two
+    // clusters 1e7 apart made every pair of one of them too uncertain in float. A group's answer for a point
+    // stands when the k-th nearest within the group lies within the group's separation (everything outside is
+    // farther); other points are searched among all.
     struct Enclosure {
       double lo, hi;  // of the squared distance to j, in the index's units
       std::uint32_t j;
@@ -817,7 +849,8 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
     // k-th smallest upper bound by a heap of the k smallest, then every point whose lower bound is within it.
     const auto fill_row = [&](const internal::Brute_force_index& index, std::size_t i, const float* gp) {
       const std::size_t size = index.size;
-      // A far point's weight is infinite: its pairs get [-inf, inf] from the same arithmetic, without a branch.
+      // A far point's weight is infinite: its pairs get [-inf, inf] from the same arithmetic, without a
+      // branch.
       const double ni = index.norms[static_cast<Eigen::Index>(i)], wi = index.weight[i] + index.pair_constant;
       const double* norms = index.norms.data();
       const double* weight = index.weight.data();
@@ -845,10 +878,10 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
         if (lo <= bound && j != i) row.push_back(Enclosure{lo, hi[j], static_cast<std::uint32_t>(j)});
       }
     };
-    // The kk nearest of indexed point i among the enclosures of `row` into cand (indices of m). Enclosures too
-    // wide to exclude anything (a far point's, or the float one of a pair much closer than the data's spread)
-    // are first narrowed in double; before session 15 one row's widest error bound was applied to the whole row,
-    // so one outlier made every point a candidate of every row.
+    // The kk nearest of indexed point i among the enclosures of `row` into cand (indices of m). Enclosures
+    // too wide to exclude anything (a far point's, or the float one of a pair much closer than the data's
+    // spread) are first narrowed in double; before session 15 one row's widest error bound was applied to the
+    // whole row, so one outlier made every point a candidate of every row.
     bool need_order = false;  // in a group's rows: the k-th nearest is compared with its separation
     const auto choose = [&](const internal::Brute_force_index& index, std::size_t i) {
       double bound = kth_upper();
@@ -866,13 +899,14 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       keep_nearest(index.rows ? index.rows[i] : i, need_order);
     };
     std::size_t rows_done = 0;  // for the progress reports
-    double progress_scale = 1;  // with several groups their rows take [0, 0.9], the points searched among all the rest
+    double progress_scale =
+        1;  // with several groups their rows take [0, 0.9], the points searched among all the rest
     // Calls found(i) with the kk nearest of each indexed point i within the index in cand.
     const auto search = [&](const internal::Brute_force_index& index, auto&& found) {
       const std::size_t size = index.size, block = 256;
       for (std::size_t b = 0; b < size && !stopped; b += block) {
-        if (!FeatureRecon::internal::report_progress(options.progress,
-                                                     progress_scale * static_cast<double>(rows_done + b) / n)) {
+        if (!FeatureRecon::internal::report_progress(
+                options.progress, progress_scale * static_cast<double>(rows_done + b) / n)) {
           stopped = true;
           break;
         }
@@ -914,7 +948,8 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
         const internal::Brute_force_index index(m);
         const std::size_t u = unresolved.size(), block = 256;
         for (std::size_t b = 0; b < u; b += block) {
-          if (!FeatureRecon::internal::report_progress(options.progress, 0.9 + 0.1 * static_cast<double>(b) / u)) {
+          if (!FeatureRecon::internal::report_progress(options.progress,
+                                                       0.9 + 0.1 * static_cast<double>(b) / u)) {
             stopped = true;
             break;
           }
@@ -937,7 +972,8 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
 }
 }  // namespace internal
 
-/// Symmetrised k-nearest-neighbour graph of the rows of a Point_matrix (see the range version of build_knn_graph()).
+/// Symmetrised k-nearest-neighbour graph of the rows of a Point_matrix (see the range version of
+/// build_knn_graph()).
 inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
                                        const Proximity_graph_options& options = {}) {
   return internal::knn_graph(m, k, options, nullptr);
@@ -947,16 +983,17 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
 /// (inclusive, decided exactly on the double coordinates), weighted by the Euclidean distance.
 ///
 /// Candidates come from a CGAL kd-tree (dimension <= 3) or from blocked all-pairs distances with Eigen
-/// (higher dimension; groups of points that a gap wider than the radius separates on one axis are searched each
-/// alone), and every candidate is decided by an exact predicate. Duplicate points are joined by edges of length 0.
-/// \tparam PointRange a range of points; \tparam Traits a model of PointCoordinateTraits.
-/// \pre radius is finite and >= 0 (checked; throws). All points have the same positive dimension and finite
+/// (higher dimension; groups of points that a gap wider than the radius separates on one axis are searched
+/// each alone), and every candidate is decided by an exact predicate. Duplicate points are joined by edges of
+/// length 0. \tparam PointRange a range of points; \tparam Traits a model of PointCoordinateTraits. \pre
+/// radius is finite and >= 0 (checked; throws). All points have the same positive dimension and finite
 ///      coordinates (checked; throws, naming the point).
 /// \returns a canonical Proximity_graph on the points' indices.
-template <class PointRange, class Traits = Point_coordinate_traits<
-                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
+                                decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Proximity_graph build_rips_graph(const PointRange& points, double radius,
-                                 const Proximity_graph_options& options = {}, const Traits& traits = Traits()) {
+                                 const Proximity_graph_options& options = {},
+                                 const Traits& traits = Traits()) {
   const char* fn = "build_rips_graph";
   if (!(std::isfinite(radius) && radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", radius);
@@ -969,12 +1006,14 @@ Proximity_graph build_rips_graph(const PointRange& points, double radius,
 /// and duplicates give a deterministic graph. Edge lengths are Euclidean distances.
 ///
 /// Candidates come from a CGAL kd-tree over the distinct positions (dimension <= 3) or from blocked all-pairs
-/// distances with Eigen (higher dimension: a float Gram filter with a rigorous error bound, then doubles, then
-/// exact comparisons; clusters far apart relative to their size are searched each alone, see isolated_groups()).
-/// \pre k >= 1 (checked; throws). Points as for build_rips_graph(). With n <= k every pair is joined.
-template <class PointRange, class Traits = Point_coordinate_traits<
-                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
-Proximity_graph build_knn_graph(const PointRange& points, std::size_t k, const Proximity_graph_options& options = {},
+/// distances with Eigen (higher dimension: a float Gram filter with a rigorous error bound, then doubles,
+/// then exact comparisons; clusters far apart relative to their size are searched each alone, see
+/// isolated_groups()). \pre k >= 1 (checked; throws). Points as for build_rips_graph(). With n <= k every
+/// pair is joined.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
+                                decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Proximity_graph build_knn_graph(const PointRange& points, std::size_t k,
+                                const Proximity_graph_options& options = {},
                                 const Traits& traits = Traits()) {
   const char* fn = "build_knn_graph";
   if (k < 1) FeatureRecon::internal::throw_invalid_argument(fn, "k must be >= 1, got ", k);
@@ -990,21 +1029,21 @@ template <class Matrix>
 struct Is_eigen_like<Matrix, std::void_t<decltype(std::declval<const Matrix&>().rows()),
                                          decltype(std::declval<const Matrix&>()(0, 0))>> : std::true_type {};
 
-/// Checks the entries of a flat row-major n x n distance matrix `a` (a.size() == n * n): finite, >= 0, 0 on the
-/// diagonal, symmetric; throws naming the first entry (by row) that is not.
+/// Checks the entries of a flat row-major n x n distance matrix `a` (a.size() == n * n): finite, >= 0, 0 on
+/// the diagonal, symmetric; throws naming the first entry (by row) that is not.
 inline void check_distance_entries(const std::vector<double>& a, std::size_t n, const char* fn) {
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
       const double x = a[i * n + j];
       if (!std::isfinite(x) || x < 0)
-        FeatureRecon::internal::throw_invalid_argument(fn, "entry (", i, ", ", j, ") of the distance matrix is ",
-                                                       x, " (must be finite and >= 0)");
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "entry (", i, ", ", j, ") of the distance matrix is ", x, " (must be finite and >= 0)");
       if (i == j && x != 0)
         FeatureRecon::internal::throw_invalid_argument(fn, "diagonal entry (", i, ", ", i, ") is ", x,
                                                        " (must be 0)");
       if (j > i && x != a[j * n + i])
-        FeatureRecon::internal::throw_invalid_argument(fn, "the distance matrix is not symmetric at (", i, ", ",
-                                                       j, "): ", x, " vs ", a[j * n + i]);
+        FeatureRecon::internal::throw_invalid_argument(fn, "the distance matrix is not symmetric at (", i,
+                                                       ", ", j, "): ", x, " vs ", a[j * n + i]);
     }
 }
 
@@ -1037,16 +1076,17 @@ std::vector<double> checked_distance_matrix(const Matrix& D, std::size_t& n, con
   return a;
 }
 /// The Rips graph of a checked n x n distance matrix `a` (row-major): i < j joined when a(i, j) <= radius.
-/// `progress` (if set) is asked every 4096 rows with the fraction of the pairs visited; false stops: the graph
-/// holds the edges of the rows visited.
-inline Proximity_graph rips_graph_of_distance_matrix(const std::vector<double>& a, std::size_t n, double radius,
-                                                     const Progress_callback& progress = {}) {
+/// `progress` (if set) is asked every 4096 rows with the fraction of the pairs visited; false stops: the
+/// graph holds the edges of the rows visited.
+inline Proximity_graph rips_graph_of_distance_matrix(const std::vector<double>& a, std::size_t n,
+                                                     double radius, const Progress_callback& progress = {}) {
   Proximity_graph g;
   g.number_of_vertices = n;
   const double pairs = 0.5 * double(n) * double(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (i % 4096 == 0 && i > 0 && progress &&
-        !progress(1 - 0.5 * double(n - i) * double(n - i) / pairs))  // rows 0..i-1 hold n^2/2 - (n-i)^2/2 pairs
+        !progress(1 -
+                  0.5 * double(n - i) * double(n - i) / pairs))  // rows 0..i-1 hold n^2/2 - (n-i)^2/2 pairs
       break;
     for (std::size_t j = i + 1; j < n; ++j)
       if (a[i * n + j] <= radius) {
@@ -1169,7 +1209,8 @@ inline Simplicial_complex_2 flag_complex_2(const Proximity_graph& g, std::size_t
                                            const Progress_callback& progress, const char* fn,
                                            const char* limit_name) {
   if (const std::string problem = internal::canonical_form_problem(g); !problem.empty())
-    FeatureRecon::internal::throw_invalid_argument(fn, "the graph is not canonical (see Proximity_graph): ", problem);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the graph is not canonical (see Proximity_graph): ", problem);
   Simplicial_complex_2 k;
   k.number_of_vertices = g.number_of_vertices;
   FeatureRecon::internal::reserve_huge(k.edges, g.edges.size());
@@ -1231,24 +1272,26 @@ inline Simplicial_complex_2 flag_complex_2(const Proximity_graph& g, std::size_t
 /// \pre g is canonical (checked; throws).
 /// \throws std::invalid_argument for a graph that is not canonical, or more triangles than
 ///         `options.max_triangles` (found while counting, nothing stored).
-inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Flag_complex_options& options) {
+inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g,
+                                                 const Flag_complex_options& options) {
   return internal::flag_complex_2(
-      g, options.max_triangles > 0 ? options.max_triangles : std::numeric_limits<std::size_t>::max(), options.progress,
-      "build_flag_complex_2", "Flag_complex_options::max_triangles");
+      g, options.max_triangles > 0 ? options.max_triangles : std::numeric_limits<std::size_t>::max(),
+      options.progress, "build_flag_complex_2", "Flag_complex_options::max_triangles");
 }
 
 /// build_flag_complex_2() without a triangle limit.
-inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, const Progress_callback& progress = {}) {
+inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g,
+                                                 const Progress_callback& progress = {}) {
   Flag_complex_options o;
   o.progress = progress;
   return build_flag_complex_2(g, o);
 }
 
 /// One call: the Rips 2-complex of points at scale `radius` (build_rips_graph() then build_flag_complex_2()).
-/// options.progress sees the graph up to 0.5 and the triangles up to 1; when it returns false the work stops and
-/// the complex returned has the edges (and triangles) found so far, as the two stages document.
-template <class PointRange, class Traits = Point_coordinate_traits<
-                                typename std::iterator_traits<decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+/// options.progress sees the graph up to 0.5 and the triangles up to 1; when it returns false the work stops
+/// and the complex returned has the edges (and triangles) found so far, as the two stages document.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
+                                decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radius,
                                           const Proximity_graph_options& options = {},
                                           const Traits& traits = Traits()) {
@@ -1282,9 +1325,8 @@ bool first_copies_of(std::size_t n, std::size_t d, const Row& row, std::vector<V
   auto less = [&row, d](Vertex_index a, Vertex_index b) {
     return std::lexicographical_compare(row(a), row(a) + d, row(b), row(b) + d);
   };
-  std::sort(order.begin(), order.end(), [&less](Vertex_index a, Vertex_index b) {
-    return less(a, b) || (!less(b, a) && a < b);
-  });
+  std::sort(order.begin(), order.end(),
+            [&less](Vertex_index a, Vertex_index b) { return less(a, b) || (!less(b, a) && a < b); });
   bool any = false;
   for (std::size_t k = 1; k < n && !any; ++k) any = !less(order[k - 1], order[k]);
   if (!any) return false;
@@ -1295,18 +1337,21 @@ bool first_copies_of(std::size_t n, std::size_t d, const Row& row, std::vector<V
 }
 
 /// Exact copies among the rows of `m`: first[i] is the smallest index whose coordinates equal row i's (i for
-/// the first copy). O(n log n) by a lexicographic sort. Returns false, leaving `first` empty, when every row is
-/// distinct.
+/// the first copy). O(n log n) by a lexicographic sort. Returns false, leaving `first` empty, when every row
+/// is distinct.
 inline bool first_copies(const Point_matrix& m, std::vector<Vertex_index>& first) {
-  return first_copies_of(m.rows, m.dimension, [&m](std::size_t i) { return m.row(i); }, first);
+  return first_copies_of(
+      m.rows, m.dimension, [&m](std::size_t i) { return m.row(i); }, first);
 }
 
-/// First copies of the rows of an n x n distance matrix `a` (row-major, zero diagonal): row i is a copy of the
-/// smallest j with the same row (so at distance 0 from it). A row at distance 0 from another but with other
-/// distances that differ is not a copy. O(n^2 log n) by a lexicographic sort of the rows. Returns false, leaving
-/// `first` empty, when no row is a copy.
-inline bool first_copies_of_rows(const std::vector<double>& a, std::size_t n, std::vector<Vertex_index>& first) {
-  return first_copies_of(n, n, [&a, n](std::size_t i) { return a.data() + i * n; }, first);
+/// First copies of the rows of an n x n distance matrix `a` (row-major, zero diagonal): row i is a copy of
+/// the smallest j with the same row (so at distance 0 from it). A row at distance 0 from another but with
+/// other distances that differ is not a copy. O(n^2 log n) by a lexicographic sort of the rows. Returns
+/// false, leaving `first` empty, when no row is a copy.
+inline bool first_copies_of_rows(const std::vector<double>& a, std::size_t n,
+                                 std::vector<Vertex_index>& first) {
+  return first_copies_of(
+      n, n, [&a, n](std::size_t i) { return a.data() + i * n; }, first);
 }
 
 }  // namespace internal

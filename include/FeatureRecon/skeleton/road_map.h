@@ -12,7 +12,8 @@
 //   const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius);
 //   const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
 //   const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
-//   const Embedded_graph_2 map = merge_road_lines(lines, road_map_merge_options(used)).map;  // when used.merge_distance > 0
+//   const Embedded_graph_2 map = merge_road_lines(lines, road_map_merge_options(used)).map;  // when
+//   used.merge_distance > 0
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
@@ -32,10 +33,10 @@
 namespace FeatureRecon {
 namespace skeleton {
 
-/// The trace options road maps start from: directions kept (heading tolerance 30 degrees), samples lighter than
-/// 5 % of their direction's local maximum or 30 % of its maximum beside them dropped (since session 27, which
-/// added the second rule and lowered the first from 10 %: Chicago 0.672 -> 0.702, benchmark/README.md, "Scatter
-/// beside a street"); spacing, link gap and density radius automatic.
+/// The trace options road maps start from: directions kept (heading tolerance 30 degrees), samples lighter
+/// than 5 % of their direction's local maximum or 30 % of its maximum beside them dropped (since session 27,
+/// which added the second rule and lowered the first from 10 %: Chicago 0.672 -> 0.702, benchmark/README.md,
+/// "Scatter beside a street"); spacing, link gap and density radius automatic.
 inline Gps_trace_options road_map_trace_options() {
   Gps_trace_options o;
   o.heading_tolerance = 30;
@@ -44,12 +45,12 @@ inline Gps_trace_options road_map_trace_options() {
   return o;
 }
 
-/// The embedding road maps draw their skeleton with: 2 smoothing rounds instead of 10, so that streets keep their
-/// corners (the pieces of a road-map skeleton lie about half the Rips radius apart, and 10 rounds round a corner
-/// over about 30 m). With road_merge_embedding_options() for the last stage this lifts the synthetic city at
-/// every sampling rate and Chicago a little (benchmark/README.md, "Road maps"). Laplacian rounds: Taubin rounds, which
-/// do not shrink, scored lower on every road map measured in session 25 (Chicago 0.672 -> 0.667, the grid city at
-/// 12 s 0.755 -> 0.699).
+/// The embedding road maps draw their skeleton with: 2 smoothing rounds instead of 10, so that streets keep
+/// their corners (the pieces of a road-map skeleton lie about half the Rips radius apart, and 10 rounds round
+/// a corner over about 30 m). With road_merge_embedding_options() for the last stage this lifts the synthetic
+/// city at every sampling rate and Chicago a little (benchmark/README.md, "Road maps"). Laplacian rounds:
+/// Taubin rounds, which do not shrink, scored lower on every road map measured in session 25 (Chicago 0.672
+/// -> 0.667, the grid city at 12 s 0.755 -> 0.699).
 inline Embedding_options road_map_embedding_options() {
   Embedding_options o;
   o.smoothing = Embedding_options::Smoothing::laplacian;
@@ -57,9 +58,9 @@ inline Embedding_options road_map_embedding_options() {
   return o;
 }
 
-/// The embedding merge_road_lines() draws the merged lines with: 20 smoothing rounds. Its level-set pieces lie
-/// a few metres apart (the map is sampled every distance / 4), so more rounds smooth over a similar length.
-/// Laplacian rounds, as road_map_embedding_options().
+/// The embedding merge_road_lines() draws the merged lines with: 20 smoothing rounds. Its level-set pieces
+/// lie a few metres apart (the map is sampled every distance / 4), so more rounds smooth over a similar
+/// length. Laplacian rounds, as road_map_embedding_options().
 inline Embedding_options road_merge_embedding_options() {
   Embedding_options o;
   o.smoothing = Embedding_options::Smoothing::laplacian;
@@ -71,7 +72,8 @@ inline Embedding_options road_merge_embedding_options() {
 /// points of every arc's polyline in edge order; each polyline becomes a chain of edges between its nodes.
 inline Embedded_graph_2 skeleton_to_road_map(const Skeleton_graph& g) {
   Embedded_graph_2 map;
-  for (auto v : boost::make_iterator_range(vertices(g))) map.positions.push_back({g[v].position[0], g[v].position[1]});
+  for (auto v : boost::make_iterator_range(vertices(g)))
+    map.positions.push_back({g[v].position[0], g[v].position[1]});
   for (auto e : boost::make_iterator_range(edges(g))) {
     const auto& line = g[e].polyline;
     const auto s = static_cast<Vertex_index>(source(e, g)), t = static_cast<Vertex_index>(target(e, g));
@@ -95,41 +97,46 @@ struct Road_merge_options {
   /// the 3-5 m that separate the two directions of a street and the 10 m or more of a divided road's
   /// carriageways.
   double distance = 8;
-  /// The edges are sampled at most this far apart before the neighbourhood is built. 0 (default): distance / 4.
+  /// The edges are sampled at most this far apart before the neighbourhood is built. 0 (default): distance
+  /// / 4.
   double spacing = 0;
   /// Branches and loops of persistence up to this (along the map) are removed from the skeleton: stubs where
   /// two lines meet at an angle. 0 (default): `distance`.
   double delta = 0;
   /// How the merged lines are drawn (level width 0: automatic); default road_merge_embedding_options().
   Embedding_options embedding = road_merge_embedding_options();
-  /// Skeleton_options::max_triangles of the neighbourhood's complex (its samples lie at least spacing / 2 apart,
-  /// so it stays far below the default unless `distance` is very large against `spacing`).
+  /// Skeleton_options::max_triangles of the neighbourhood's complex (its samples lie at least spacing / 2
+  /// apart, so it stays far below the default unless `distance` is very large against `spacing`).
   std::size_t max_triangles = Skeleton_options().max_triangles;
-  /// The most points inserted along the edges (the vertices not counted): a long edge against a short spacing is
-  /// refused before it fills the memory. Default 2^26; 0: no limit (but for 2^50, which no memory would hold).
+  /// The most points inserted along the edges (the vertices not counted): a long edge against a short spacing
+  /// is refused before it fills the memory. Default 2^26; 0: no limit (but for 2^50, which no memory would
+  /// hold).
   std::size_t max_samples = std::size_t(1) << 26;
-  Progress_callback progress;   ///< fraction done; returning false stops (status interrupted, map empty)
+  Progress_callback progress;  ///< fraction done; returning false stops (status interrupted, map empty)
 };
 
 /// Result of merge_road_lines().
 struct Road_merge_result {
-  Embedded_graph_2 map;        ///< the merged map: skeleton nodes first, then polyline interior points
-  Skeleton_graph skeleton;     ///< its skeleton graph (nodes and arcs with polylines)
-  double length_before = 0;    ///< total edge length of the input map (repeated edges once)
-  double length_after = 0;     ///< total edge length of the merged map
-  std::size_t samples = 0;     ///< points the neighbourhood was built on
+  Embedded_graph_2 map;      ///< the merged map: skeleton nodes first, then polyline interior points
+  Skeleton_graph skeleton;   ///< its skeleton graph (nodes and arcs with polylines)
+  double length_before = 0;  ///< total edge length of the input map (repeated edges once)
+  double length_after = 0;   ///< total edge length of the merged map
+  std::size_t samples = 0;   ///< points the neighbourhood was built on
   std::size_t samples_contracted = 0;  ///< samples within spacing / 2 of an earlier one, merged into it
   std::size_t thin_loops_removed = 0;  ///< arcs removed as one side of a thin loop (see merge_road_lines())
-  double spacing = 0;          ///< value used
-  double delta = 0;            ///< value used
-  double level_width = 0;      ///< the embedding's level width used (Reeb_skeleton::level_width)
-  double max_gap = std::numeric_limits<double>::infinity();  ///< the embedding's max_gap used (Reeb_skeleton::max_gap)
-  Status status = Status::success;  ///< degenerate_input for a map without vertices; interrupted by the callback
+  double spacing = 0;                  ///< value used
+  double delta = 0;                    ///< value used
+  double level_width = 0;              ///< the embedding's level width used (Reeb_skeleton::level_width)
+  double max_gap =
+      std::numeric_limits<double>::infinity();  ///< the embedding's max_gap used (Reeb_skeleton::max_gap)
+  Status status =
+      Status::success;  ///< degenerate_input for a map without vertices; interrupted by the callback
 };
 
 namespace internal {
 
-inline double map_length(const std::vector<std::array<double, 2>>& positions, const std::vector<Edge>& edges) {
+inline double map_length(const std::vector<std::array<double, 2>>& positions,
+                         const std::vector<Edge>& edges) {
   double L = 0;
   for (const Edge& e : edges)
     L += std::hypot(positions[e[1]][0] - positions[e[0]][0], positions[e[1]][1] - positions[e[0]][1]);
@@ -139,7 +146,8 @@ inline double map_length(const std::vector<std::array<double, 2>>& positions, co
 using Polyline_3 = std::vector<std::array<double, 3>>;
 
 /// Distance from p to the closest point of any segment of the polylines (first two coordinates).
-inline double distance_to_polylines(const std::array<double, 3>& p, const std::vector<const Polyline_3*>& lines) {
+inline double distance_to_polylines(const std::array<double, 3>& p,
+                                    const std::vector<const Polyline_3*>& lines) {
   double best = std::numeric_limits<double>::infinity();
   for (const Polyline_3* line : lines)
     for (std::size_t i = 0; i < line->size(); ++i) {
@@ -153,7 +161,8 @@ inline double distance_to_polylines(const std::array<double, 3>& p, const std::v
 }
 
 /// True when every vertex of each side lies within `d` of the other side (both sides as sets of polylines).
-inline bool sides_within(const std::vector<const Polyline_3*>& a, const std::vector<const Polyline_3*>& b, double d) {
+inline bool sides_within(const std::vector<const Polyline_3*>& a, const std::vector<const Polyline_3*>& b,
+                         double d) {
   for (const auto* side : {&a, &b})
     for (const Polyline_3* line : *side)
       for (const auto& p : *line)
@@ -163,14 +172,15 @@ inline bool sides_within(const std::vector<const Polyline_3*>& a, const std::vec
 
 inline double polyline_length(const Polyline_3& line) {
   double L = 0;
-  for (std::size_t i = 1; i < line.size(); ++i) L += std::hypot(line[i][0] - line[i - 1][0], line[i][1] - line[i - 1][1]);
+  for (std::size_t i = 1; i < line.size(); ++i)
+    L += std::hypot(line[i][0] - line[i - 1][0], line[i][1] - line[i - 1][1]);
   return L;
 }
 
 /// Removes the thin loops merging leaves behind where two lines diverge for a short stretch: two arcs between
-/// the same nodes, or an arc u-w beside a path u-v-w, whose sides lie within `d` of each other. The longer side
-/// goes (the direct arc when v has other arcs); its members join the side that stays. Nodes left without arcs
-/// are removed. Returns the number of arcs removed.
+/// the same nodes, or an arc u-w beside a path u-v-w, whose sides lie within `d` of each other. The longer
+/// side goes (the direct arc when v has other arcs); its members join the side that stays. Nodes left without
+/// arcs are removed. Returns the number of arcs removed.
 inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
   using Arc = Skeleton_graph::edge_descriptor;
   std::size_t removed = 0;
@@ -229,11 +239,11 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
   return removed;
 }
 
-/// Greedy contraction of a planar point set: in index order, a point with an earlier kept point closer than `h`
-/// joins the nearest such point (ties: the smaller index); the others are kept. `P` keeps the kept points in
-/// their order and `edges` are renamed to them, loops dropped, repeats once, sorted. Returns the number of points
-/// removed. Deterministic. When some point lies farther than 2^52 h from the origin (h tiny against the
-/// coordinates) nothing is contracted.
+/// Greedy contraction of a planar point set: in index order, a point with an earlier kept point closer than
+/// `h` joins the nearest such point (ties: the smaller index); the others are kept. `P` keeps the kept points
+/// in their order and `edges` are renamed to them, loops dropped, repeats once, sorted. Returns the number of
+/// points removed. Deterministic. When some point lies farther than 2^52 h from the origin (h tiny against
+/// the coordinates) nothing is contracted.
 inline std::size_t contract_close_samples(Point_matrix& P, double h, std::vector<Edge>& edges) {
   const std::size_t n = P.rows;
   if (n < 2 || !(h > 0)) return 0;
@@ -297,14 +307,16 @@ inline std::size_t contract_close_samples(Point_matrix& P, double h, std::vector
   return removed;
 }
 
-/// The vertices merge_road_lines() keeps: every vertex not of degree 2 in `edges` (unique, no loops), and along
-/// each chain of degree-2 vertices the first one at least `min_step` along the chain from the last kept one (a
-/// cycle of degree-2 vertices keeps its smallest index). With `min_step` a fraction of the sampling spacing this
-/// drops only vertices closer together than the samples (a skeleton drawn at a small radius has polylines with
-/// vertices centimetres apart, which made the neighbourhood graph quadratic); returns the kept vertices' flags and
-/// the edges between consecutive kept vertices (unique, sorted), or no edges when every vertex is kept.
+/// The vertices merge_road_lines() keeps: every vertex not of degree 2 in `edges` (unique, no loops), and
+/// along each chain of degree-2 vertices the first one at least `min_step` along the chain from the last kept
+/// one (a cycle of degree-2 vertices keeps its smallest index). With `min_step` a fraction of the sampling
+/// spacing this drops only vertices closer together than the samples (a skeleton drawn at a small radius has
+/// polylines with vertices centimetres apart, which made the neighbourhood graph quadratic); returns the kept
+/// vertices' flags and the edges between consecutive kept vertices (unique, sorted), or no edges when every
+/// vertex is kept.
 inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>>& positions,
-                                         const std::vector<Edge>& edges, double min_step, std::vector<char>& kept) {
+                                         const std::vector<Edge>& edges, double min_step,
+                                         std::vector<char>& kept) {
   const std::size_t n = positions.size();
   std::vector<std::vector<std::pair<Vertex_index, std::size_t>>> around(n);  // (neighbour, edge)
   for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -363,26 +375,28 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 
 }  // namespace internal
 
-/// Merges the lines of a road map that run closer than `options.distance` (see the file comment). Vertices come
-/// first in the samples (a map with more vertices than twice the samples its length calls for first loses those
-/// closer together along a line than half the spacing, thin_map_chains()), then every edge longer than the
-/// spacing gets evenly spaced interior points, and a sample closer than half the spacing to an earlier one joins
-/// it (contract_close_samples(): lines that share a stretch are sampled once; a vertex with no edge stays a node
-/// unless it lies that close to an earlier sample). The graph of the Rips edges at `distance` and the edges' own
-/// chains is passed to extract_reeb_skeleton() with delta, no repair and no pruning. Where two lines diverge
-/// beyond `distance` for a short stretch the skeleton keeps a thin loop; loops whose two sides lie within
-/// `distance` of each other (two arcs between the same nodes, or an arc beside a two-arc path) lose their longer
-/// side. Deterministic. The map is not modified.
-/// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose length
+/// Merges the lines of a road map that run closer than `options.distance` (see the file comment). Vertices
+/// come first in the samples (a map with more vertices than twice the samples its length calls for first
+/// loses those closer together along a line than half the spacing, thin_map_chains()), then every edge longer
+/// than the spacing gets evenly spaced interior points, and a sample closer than half the spacing to an
+/// earlier one joins it (contract_close_samples(): lines that share a stretch are sampled once; a vertex with
+/// no edge stays a node unless it lies that close to an earlier sample). The graph of the Rips edges at
+/// `distance` and the edges' own chains is passed to extract_reeb_skeleton() with delta, no repair and no
+/// pruning. Where two lines diverge beyond `distance` for a short stretch the skeleton keeps a thin loop;
+/// loops whose two sides lie within `distance` of each other (two arcs between the same nodes, or an arc
+/// beside a two-arc path) lose their longer side. Deterministic. The map is not modified. \throws
+/// std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose length
 ///         overflows, edges that would need more than `max_samples` points inserted along them (naming the
 ///         longest edge), or a non-positive or non-finite distance, negative spacing or delta.
-inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Road_merge_options& options = {}) {
+inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
+                                          const Road_merge_options& options = {}) {
   const char* fn = "merge_road_lines";
   if (!(options.distance > 0 && std::isfinite(options.distance)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "distance must be positive and finite, got ", options.distance);
+    FeatureRecon::internal::throw_invalid_argument(fn, "distance must be positive and finite, got ",
+                                                   options.distance);
   if (!(options.spacing >= 0 && std::isfinite(options.spacing)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "spacing must be finite and >= 0 (0: distance / 4), got ",
-                                                   options.spacing);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "spacing must be finite and >= 0 (0: distance / 4), got ", options.spacing);
   if (!(options.delta >= 0 && std::isfinite(options.delta)))
     FeatureRecon::internal::throw_invalid_argument(fn, "delta must be finite and >= 0 (0: distance), got ",
                                                    options.delta);
@@ -391,9 +405,9 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has a non-finite coordinate");
   for (std::size_t e = 0; e < map.edges.size(); ++e)
     if (map.edges[e][0] >= map.positions.size() || map.edges[e][1] >= map.positions.size())
-      FeatureRecon::internal::throw_invalid_argument(fn, "edge ", e, " (", map.edges[e][0], ", ", map.edges[e][1],
-                                                     ") has an end out of range: the map has ", map.positions.size(),
-                                                     " vertices");
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "edge ", e, " (", map.edges[e][0], ", ", map.edges[e][1],
+          ") has an end out of range: the map has ", map.positions.size(), " vertices");
   Road_merge_result r;
   r.spacing = options.spacing > 0 ? options.spacing : options.distance / 4;
   r.delta = options.delta > 0 ? options.delta : options.distance;
@@ -405,9 +419,9 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   r.length_before = internal::map_length(map.positions, edges);
   // A map with more vertices than twice the samples its length calls for (a skeleton drawn at a small radius:
-  // polyline vertices centimetres apart made the neighbourhood graph quadratic, 35 s and 4.4 GB for 164 fixes at
-  // radius 0.5) loses the vertices closer together along a line than half the spacing; other maps are sampled
-  // as they are.
+  // polyline vertices centimetres apart made the neighbourhood graph quadratic, 35 s and 4.4 GB for 164 fixes
+  // at radius 0.5) loses the vertices closer together along a line than half the spacing; other maps are
+  // sampled as they are.
   std::vector<char> kept;
   std::vector<Edge> thinned;
   if (static_cast<double>(map.positions.size()) > 2 * (r.length_before / r.spacing + 1))
@@ -441,8 +455,8 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     const auto a = positions[e[0]], b = positions[e[1]];
     const double L = std::hypot(b[0] - a[0], b[1] - a[1]);
     if (!std::isfinite(L))
-      FeatureRecon::internal::throw_invalid_argument(fn, "the edge from (", a[0], ", ", a[1], ") to (", b[0], ", ",
-                                                     b[1], ") has a length that overflows");
+      FeatureRecon::internal::throw_invalid_argument(fn, "the edge from (", a[0], ", ", a[1], ") to (", b[0],
+                                                     ", ", b[1], ") has a length that overflows");
     sample_count += std::max(0.0, std::ceil(L / r.spacing) - 1);
     if (L > longest) {
       longest = L;
@@ -454,8 +468,8 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     FeatureRecon::internal::throw_invalid_argument(
         fn, "sampling the map's ", r.length_before, " m of edges every ", r.spacing, " m would insert about ",
         sample_count, " points, more than max_samples (", max_samples, "); the longest edge, from (",
-        longest_ends[0], ", ", longest_ends[1], ") to (", longest_ends[2], ", ", longest_ends[3], "), is ", longest,
-        " long: raise spacing or max_samples");
+        longest_ends[0], ", ", longest_ends[1], ") to (", longest_ends[2], ", ", longest_ends[3], "), is ",
+        longest, " long: raise spacing or max_samples");
   Point_matrix P;
   P.dimension = 2;
   P.rows = positions.size();
@@ -476,16 +490,19 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
     chain.push_back({std::min(previous, e[1]), std::max(previous, e[1])});
   }
   // Samples closer than half the spacing (or half the distance, if smaller) to an earlier one become that one
-  // (the nearest, ties by index): arcs that share a stretch (a skeleton's arcs following the same shortest path
-  // across gaps, or coincident polylines) would otherwise stack their samples, and the neighbourhood's cliques
-  // grow with the cube of the stack (the Chicago map at delta 1000 stacks up to 26 arcs: 52 s and 6 GB).
-  // Afterwards no disk of radius `distance` holds more than about (2 distance / spacing + 1)^2 samples.
-  r.samples_contracted = internal::contract_close_samples(P, std::min(r.spacing, options.distance) / 2, chain);
+  // (the nearest, ties by index): arcs that share a stretch (a skeleton's arcs following the same shortest
+  // path across gaps, or coincident polylines) would otherwise stack their samples, and the neighbourhood's
+  // cliques grow with the cube of the stack (the Chicago map at delta 1000 stacks up to 26 arcs: 52 s and 6
+  // GB). Afterwards no disk of radius `distance` holds more than about (2 distance / spacing + 1)^2 samples.
+  r.samples_contracted =
+      internal::contract_close_samples(P, std::min(r.spacing, options.distance) / 2, chain);
   r.samples = P.rows;
   Proximity_graph_options po;
   bool stopped = false;  // a stop inside the Rips stage counts even if the callback answers true afterwards
   if (options.progress)
-    po.progress = [&options, &stopped](double t) { return !(stopped = stopped || !options.progress(0.3 * t)); };
+    po.progress = [&options, &stopped](double t) {
+      return !(stopped = stopped || !options.progress(0.3 * t));
+    };
   std::vector<Edge> neighbourhood = build_rips_graph(P, options.distance, po).edges;
   if (stopped || !FeatureRecon::internal::report_progress(options.progress, 0.3)) {
     r.status = Status::interrupted;
@@ -513,9 +530,9 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map, const Roa
   return r;
 }
 
-/// Options of extract_road_map(). Coordinates are metres. A value of 0 asks for the rule on the field, derived
-/// from the median step M between consecutive fixes of a trip (median_gps_step()) through the Rips radius R;
-/// a negative value turns the stage off. resolve_road_map_options() returns the values used.
+/// Options of extract_road_map(). Coordinates are metres. A value of 0 asks for the rule on the field,
+/// derived from the median step M between consecutive fixes of a trip (median_gps_step()) through the Rips
+/// radius R; a negative value turns the stage off. resolve_road_map_options() returns the values used.
 struct Road_map_options {
   double rips_radius = 0;      ///< 0: M clamped to [min_radius, max_radius]
   double min_radius = 10;      ///< lower clamp of the automatic radius (m); default 10
@@ -523,8 +540,9 @@ struct Road_map_options {
   double delta = 0;            ///< persistence threshold of the simplification; 0: 3 R; negative: none
   double repair_distance = 0;  ///< join dead ends at most this far apart; 0: 2.5 R; negative: no repair
   double prune_height = 0;     ///< drop components of smaller height (range of f); 0: 5 R; negative: keep all
-  /// Sampling, linking and density filter (sample_gps_traces()); its own automatic rules (spacing R/2, link gap
-  /// max(4M, 2R), segment support max(20 m, 2R/3), density radius 2R) apply and are reported in Road_map::sample.
+  /// Sampling, linking and density filter (sample_gps_traces()); its own automatic rules (spacing R/2, link
+  /// gap max(4M, 2R), segment support max(20 m, 2R/3), density radius 2R) apply and are reported in
+  /// Road_map::sample.
   Gps_trace_options traces = road_map_trace_options();
   bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
   bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
@@ -534,13 +552,14 @@ struct Road_map_options {
   double branch_merge_distance = 0;
   /// Skeleton_options::max_triangles of the skeleton and of the merging stage (Road_merge_options).
   std::size_t max_triangles = Skeleton_options().max_triangles;
-  /// How arcs are drawn (level width 0: median edge length of the complex); default road_map_embedding_options().
+  /// How arcs are drawn (level width 0: median edge length of the complex); default
+  /// road_map_embedding_options().
   Embedding_options embedding = road_map_embedding_options();
   /// Last stage: lines of the map closer than this become one (merge_road_lines()). Driving directions keep a
   /// divided road's carriageways apart but also draw the two directions of a two-way street, a few metres
   /// apart. 0: 8 m (Road_merge_options::distance); negative: no merging.
   double merge_distance = 0;
-  Progress_callback progress;     ///< fraction done; returning false stops (Road_map::status interrupted)
+  Progress_callback progress;  ///< fraction done; returning false stops (Road_map::status interrupted)
 };
 
 /// Result of extract_road_map().
@@ -548,38 +567,43 @@ struct Road_map {
   /// The road map. Without merging: skeleton nodes first (same indices), then polyline interior points; with
   /// merging: merged.skeleton's nodes first, then its polylines' interior points.
   Embedded_graph_2 map;
-  Reeb_skeleton skeleton;    ///< the skeleton graph of the samples with its stage counts (before merging)
-  Road_merge_result merged;  ///< the merging stage (its `map` is moved to `map`); status success and empty if off
-  Gps_trace_sample sample;   ///< the samples the skeleton is built on, with the trace parameters used
-  Road_map_options used;     ///< the options with every automatic value filled in (no progress callback)
+  Reeb_skeleton skeleton;  ///< the skeleton graph of the samples with its stage counts (before merging)
+  Road_merge_result
+      merged;  ///< the merging stage (its `map` is moved to `map`); status success and empty if off
+  Gps_trace_sample sample;  ///< the samples the skeleton is built on, with the trace parameters used
+  Road_map_options used;    ///< the options with every automatic value filled in (no progress callback)
   Status status = Status::success;  ///< degenerate_input when no fix is left; interrupted by the callback
 };
 
 /// The options with every automatic value of extract_road_map() filled in (delta, repair, prune and merge
-/// distance become 0 when turned off). The trace options' own automatic values are left to sample_gps_traces().
-/// \throws std::invalid_argument naming a non-finite option, a negative radius or clamp, min_radius > max_radius, or
+/// distance become 0 when turned off). The trace options' own automatic values are left to
+/// sample_gps_traces(). \throws std::invalid_argument naming a non-finite option, a negative radius or clamp,
+/// min_radius > max_radius, or
 ///         a radius above 1e300.
-inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips, const Road_map_options& options) {
+inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips,
+                                                 const Road_map_options& options) {
   const char* fn = "extract_road_map";
   if (!std::isfinite(options.rips_radius) || options.rips_radius < 0)
-    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0 (0: automatic), got ",
-                                                   options.rips_radius);
-  if (!(options.min_radius > 0 && options.min_radius <= options.max_radius && std::isfinite(options.max_radius)))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "rips_radius must be finite and >= 0 (0: automatic), got ", options.rips_radius);
+  if (!(options.min_radius > 0 && options.min_radius <= options.max_radius &&
+        std::isfinite(options.max_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "need 0 < min_radius <= max_radius < infinity, got ",
                                                    options.min_radius, " and ", options.max_radius);
-  if (!std::isfinite(options.delta) || !std::isfinite(options.repair_distance) || std::isnan(options.prune_height) ||
-      !std::isfinite(options.merge_distance))
-    FeatureRecon::internal::throw_invalid_argument(fn,
-                                                   "delta, repair_distance, prune_height and merge_distance must be finite");
+  if (!std::isfinite(options.delta) || !std::isfinite(options.repair_distance) ||
+      std::isnan(options.prune_height) || !std::isfinite(options.merge_distance))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "delta, repair_distance, prune_height and merge_distance must be finite");
   Road_map_options u = options;
   u.progress = nullptr;
   const double M = median_gps_step(trips);
-  const double R =
-      options.rips_radius > 0 ? options.rips_radius : std::min(options.max_radius, std::max(options.min_radius, M));
+  const double R = options.rips_radius > 0 ? options.rips_radius
+                                           : std::min(options.max_radius, std::max(options.min_radius, M));
   if (!(R <= 1e300))  // the automatic delta, repair and prune (3R, 2.5R, 5R) must be finite
-    FeatureRecon::internal::throw_invalid_argument(fn, options.rips_radius > 0 ? "rips_radius" : "max_radius",
-                                                   " must be at most 1e300 (the automatic delta, repair_distance and ",
-                                                   "prune_height are 3, 2.5 and 5 times the radius), got ", R);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, options.rips_radius > 0 ? "rips_radius" : "max_radius",
+        " must be at most 1e300 (the automatic delta, repair_distance and ",
+        "prune_height are 3, 2.5 and 5 times the radius), got ", R);
   u.rips_radius = R;
   auto rule = [](double value, double automatic) { return value > 0 ? value : value == 0 ? automatic : 0.0; };
   u.delta = rule(options.delta, 3 * R);
@@ -616,9 +640,11 @@ inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
 /// (unless turned off). Deterministic (no
 /// randomness; the same trips in the same order give the same map bit for bit). Trips with no or one fix are
 /// allowed; with no fix at all the map is empty and the status degenerate_input.
-/// \throws std::invalid_argument for bad options (resolve_road_map_options(), sample_gps_traces()), a skeleton
-///         whose lines would need more than Road_merge_options::max_samples points to merge (merge_road_lines()),
-///         or a fix with a non-finite coordinate or time (naming the trip and the fix). `trips` is not modified.
+/// \throws std::invalid_argument for bad options (resolve_road_map_options(), sample_gps_traces()), a
+/// skeleton
+///         whose lines would need more than Road_merge_options::max_samples points to merge
+///         (merge_road_lines()), or a fix with a non-finite coordinate or time (naming the trip and the fix).
+///         `trips` is not modified.
 inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_map_options& options = {}) {
   Road_map r;
   r.used = resolve_road_map_options(trips, options);
@@ -629,7 +655,8 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
   Gps_trace_options to = r.used.traces;
   if (options.progress) to.progress = [&options](double t) { return options.progress(0.1 * t); };
   r.sample = sample_gps_traces(trips, r.used.rips_radius, to);
-  if (r.sample.status == Status::interrupted || !FeatureRecon::internal::report_progress(options.progress, 0.1)) {
+  if (r.sample.status == Status::interrupted ||
+      !FeatureRecon::internal::report_progress(options.progress, 0.1)) {
     r.status = Status::interrupted;
     return r;
   }

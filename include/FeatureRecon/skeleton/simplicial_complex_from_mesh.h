@@ -20,14 +20,14 @@ namespace skeleton {
 /// `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`): vertex i of the complex is the mesh vertex with index i
 /// in CGAL's initialized vertex index map (`v.idx()` for a Surface_mesh without removed elements).
 /// \pre every face is a triangle (checked; throws naming the face's index and size: triangulate first,
-///      e.g. with CGAL::Polygon_mesh_processing::triangulate_faces()); the vertex indices are 0 .. n-1 for the
-///      n vertices (checked; throws: a Surface_mesh with removed elements needs collect_garbage() first).
+///      e.g. with CGAL::Polygon_mesh_processing::triangulate_faces()); the vertex indices are 0 .. n-1 for
+///      the n vertices (checked; throws: a Surface_mesh with removed elements needs collect_garbage() first).
 template <class FaceGraph>
 Simplicial_complex_2 simplicial_complex_from_mesh(const FaceGraph& mesh) {
   const char* fn = "simplicial_complex_from_mesh";
   const auto vindex = CGAL::get_initialized_vertex_index_map(mesh);
-  // The indices must be 0 .. n-1 for the n vertices the mesh has (a Surface_mesh with removed but not collected
-  // vertices has gaps: each would become an isolated vertex of the complex).
+  // The indices must be 0 .. n-1 for the n vertices the mesh has (a Surface_mesh with removed but not
+  // collected vertices has gaps: each would become an isolated vertex of the complex).
   std::size_t live = 0;
   for (auto v : vertices(mesh)) {
     (void)v;
@@ -35,7 +35,8 @@ Simplicial_complex_2 simplicial_complex_from_mesh(const FaceGraph& mesh) {
   }
   for (auto v : vertices(mesh))
     if (static_cast<std::size_t>(get(vindex, v)) >= live)
-      FeatureRecon::internal::throw_invalid_argument(fn, "vertex index ", get(vindex, v), " is not below the ", live,
+      FeatureRecon::internal::throw_invalid_argument(fn, "vertex index ", get(vindex, v),
+                                                     " is not below the ", live,
                                                      " vertices of the mesh (removed elements? call "
                                                      "collect_garbage() first)");
   std::vector<Edge> edges_out;
@@ -56,8 +57,7 @@ Simplicial_complex_2 simplicial_complex_from_mesh(const FaceGraph& mesh) {
     triangles_out.push_back({vs[0], vs[1], vs[2]});
     ++face_number;
   }
-  return make_simplicial_complex_2(live, std::move(edges_out),
-                                   std::move(triangles_out));
+  return make_simplicial_complex_2(live, std::move(edges_out), std::move(triangles_out));
 }
 
 /// Augmented Reeb graph of a function given by a vertex property map on a triangle mesh

@@ -23,12 +23,13 @@ namespace skeleton {
 /// Result of simplify_by_persistence().
 struct Reeb_simplification_result {
   /// The simplified Reeb graph. Every vertex of the input graph is in exactly one place: a node's `vertex`, a
-  /// node's `members`, or an arc's `vertices` (indices of `values` that the input graph does not use stay out).
+  /// node's `members`, or an arc's `vertices` (indices of `values` that the input graph does not use stay
+  /// out).
   Reeb_graph graph;
   std::size_t removed_branches = 0;  ///< branch features of persistence <= delta that were merged away
   std::size_t removed_loops = 0;     ///< loop features of persistence <= delta that were merged away
-  /// Triangles of the glued complex whose Reeb graph is the result (the strips that glue each merging path to its
-  /// spine): the measure of the work beyond the graph's size; a statistic, as tests read it.
+  /// Triangles of the glued complex whose Reeb graph is the result (the strips that glue each merging path to
+  /// its spine): the measure of the work beyond the graph's size; a statistic, as tests read it.
   std::size_t glued_triangles = 0;
   /// success, or interrupted when the progress callback returned false (the graph is then empty).
   Status status = Status::success;
@@ -46,9 +47,9 @@ struct Simplification_complex {
 
 /// Removes every branch and loop feature of persistence at most `delta` from a Reeb graph, by the
 /// merges of dissertation Ch. 5.3.1: a branch's monotone path is glued by function value onto a path into
-/// its sibling component; the two sides of a thin loop are glued into one monotone arc. All merges are applied
-/// together (the transitive closure of the identifications), so features of persistence above 2 delta survive
-/// and the diagrams move by at most 2 delta (branches) and 6 delta (loops).
+/// its sibling component; the two sides of a thin loop are glued into one monotone arc. All merges are
+/// applied together (the transitive closure of the identifications), so features of persistence above 2 delta
+/// survive and the diagrams move by at most 2 delta (branches) and 6 delta (loops).
 ///
 /// Method: the quotient is computed as a Reeb graph. Each merging path gets a spine, a path with one vertex
 /// per function value on it, and every edge of the merging path a strip of triangles to the spine segment of
@@ -61,45 +62,49 @@ struct Simplification_complex {
 /// O(n log n), not O(n^2). When the search meets, strictly nearer than such a node and coming from the fork's
 /// near side, the fork of another merged branch with the same elder whose path it could have taken, the path
 /// goes on as that branch's path (resolved first: forks from the far end on), held in the merging set by one
-/// summary edge. On a tree the result is that of the path through that fork; a flat stem with n tall teeth costs
-/// O(n), not n strips of O(n) levels.
-/// A loop's merging path is its thin cycle: the arc that closes it and the path in a maximum spanning forest
-/// below it (reeb_graph_persistence.h; among arcs from one node the latest weighs most, so that the cycles of a
-/// node joined to every node of a flat path stay triangles).
-/// This overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
+/// summary edge. On a tree the result is that of the path through that fork; a flat stem with n tall teeth
+/// costs O(n), not n strips of O(n) levels. A loop's merging path is its thin cycle: the arc that closes it
+/// and the path in a maximum spanning forest below it (reeb_graph_persistence.h; among arcs from one node the
+/// latest weighs most, so that the cycles of a node joined to every node of a flat path stay triangles). This
+/// overload takes a Reeb graph and the function value of every input vertex; the graph may also contain
 /// regular nodes (e.g. after repair_reeb_graph()), which the result absorbs into arcs.
-/// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's vertices
-/// there) are not level with it: they take no part in the merges and stay with the node of their node's vertex
-/// (when that vertex ends up inside an arc: with the arc's lower or upper node, on their side of the vertex).
-/// Indices of `values` the graph does not use stay out of the result, whatever their value.
+/// Members of a node with another value than the node's (trim_essential_stubs() puts a trimmed stub's
+/// vertices there) are not level with it: they take no part in the merges and stay with the node of their
+/// node's vertex (when that vertex ends up inside an arc: with the arc's lower or upper node, on their side
+/// of the vertex). Indices of `values` the graph does not use stay out of the result, whatever their value.
 /// \pre delta >= 0 and finite; every vertex of R (nodes, members, arc vertices) indexes `values` and is used
 /// once; the values R uses are finite and each node's value is `values[vertex]`; the nodes are in increasing
-/// (value, vertex) order, as every function returning a Reeb_graph leaves them (all checked; throws naming the
-/// node or arc).
-/// A stop through Simplification_options::progress leaves status interrupted and an empty graph.
-inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, const std::vector<double>& values,
-                                                          double delta, const Simplification_options& options = {}) {
+/// (value, vertex) order, as every function returning a Reeb_graph leaves them (all checked; throws naming
+/// the node or arc). A stop through Simplification_options::progress leaves status interrupted and an empty
+/// graph.
+inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R,
+                                                          const std::vector<double>& values, double delta,
+                                                          const Simplification_options& options = {}) {
   const char* fn = "simplify_by_persistence";
   const Progress_callback& progress = options.progress;
   using FeatureRecon::internal::Compressed_lists;
   using FeatureRecon::internal::release;
   using FeatureRecon::internal::throw_invalid_argument;
-  if (!(delta >= 0 && std::isfinite(delta))) throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
+  if (!(delta >= 0 && std::isfinite(delta)))
+    throw_invalid_argument(fn, "delta must be finite and >= 0, got ", delta);
   // Which vertices the graph uses, each once: 1 = in the complex, 2 = a member off its node's level.
   std::vector<char> used(values.size(), 0);
   auto use = [&](Vertex_index v, const char* what, std::size_t index, char how) {
     if (v >= values.size())
-      throw_invalid_argument(fn, what, " ", index, " has vertex ", v, " out of range [0, ", values.size(), ")");
-    if (!std::isfinite(values[v])) throw_invalid_argument(fn, "the value of vertex ", v, " (", what, " ", index, ") is ", values[v]);
-    if (used[v]) throw_invalid_argument(fn, "vertex ", v, " appears twice in the graph (", what, " ", index, ")");
+      throw_invalid_argument(fn, what, " ", index, " has vertex ", v, " out of range [0, ", values.size(),
+                             ")");
+    if (!std::isfinite(values[v]))
+      throw_invalid_argument(fn, "the value of vertex ", v, " (", what, " ", index, ") is ", values[v]);
+    if (used[v])
+      throw_invalid_argument(fn, "vertex ", v, " appears twice in the graph (", what, " ", index, ")");
     used[v] = how;
   };
   for (std::size_t i = 0; i < R.nodes.size(); ++i) {
     const auto& node = R.nodes[i];
     use(node.vertex, "node", i, 1);
     if (!(values[node.vertex] == node.value))
-      throw_invalid_argument(fn, "node ", i, " has value ", node.value, " but its vertex ", node.vertex, " has ",
-                             values[node.vertex]);
+      throw_invalid_argument(fn, "node ", i, " has value ", node.value, " but its vertex ", node.vertex,
+                             " has ", values[node.vertex]);
   }
   for (std::size_t i = 0; i < R.nodes.size(); ++i)
     for (const Vertex_index v : R.nodes[i].members) {
@@ -117,7 +122,9 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     result.status = Status::interrupted;
     return true;
   };
-  auto stopped = [&](double t) { return !FeatureRecon::internal::report_progress(progress, t) && interrupted(); };
+  auto stopped = [&](double t) {
+    return !FeatureRecon::internal::report_progress(progress, t) && interrupted();
+  };
   if (stopped(0.0)) return result;
   std::vector<std::vector<std::size_t>> cycles;
   const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles, delta, fn);
@@ -126,14 +133,15 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   internal::Simplification_complex Y;
   Y.values = values;
   std::vector<double>& val = Y.values;
-  for (std::size_t v = 0; v < n; ++v)  // indices the graph does not use stay out, whatever their value (NaN too)
+  for (std::size_t v = 0; v < n;
+       ++v)  // indices the graph does not use stay out, whatever their value (NaN too)
     if (used[v] == 0) val[v] = 0;
   auto less = [&](std::size_t a, std::size_t b) { return val[a] < val[b] || (val[a] == val[b] && a < b); };
 
   // The graph of R as a 1-complex on the input vertices: each arc a chain through its vertices. Parallel arcs
-  // without interior vertices get a helper midpoint (but the first). Only such arcs can repeat an edge: every other
-  // edge has an interior vertex of its arc, used once.
-  // Chain k is chain_items[chain_start[k], chain_start[k + 1]), from the lower node's vertex to the upper's.
+  // without interior vertices get a helper midpoint (but the first). Only such arcs can repeat an edge: every
+  // other edge has an interior vertex of its arc, used once. Chain k is chain_items[chain_start[k],
+  // chain_start[k + 1]), from the lower node's vertex to the upper's.
   std::vector<std::size_t> chain_start{0};
   std::vector<Vertex_index> chain_items;
   std::set<Edge> present;  // the edges of arcs without interior vertices
@@ -144,7 +152,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     if (R.arcs[k].vertices.empty() && !present.insert(key(a, b)).second) {
       chain_items.push_back(static_cast<Vertex_index>(val.size()));
       // Halves first: no overflow near the largest doubles; clamped, as halves of subnormals round.
-      val.push_back(std::clamp(0.5 * val[a] + 0.5 * val[b], std::min(val[a], val[b]), std::max(val[a], val[b])));
+      val.push_back(
+          std::clamp(0.5 * val[a] + 0.5 * val[b], std::min(val[a], val[b]), std::max(val[a], val[b])));
     }
     chain_items.insert(chain_items.end(), R.arcs[k].vertices.begin(), R.arcs[k].vertices.end());
     chain_items.push_back(b);
@@ -154,8 +163,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   }
   release(present);
 
-  // Members of a node (input vertices identified with it) stay with it: a horizontal edge to the node's vertex.
-  // Members off the node's level are attached after the quotient (an edge would not be level).
+  // Members of a node (input vertices identified with it) stay with it: a horizontal edge to the node's
+  // vertex. Members off the node's level are attached after the quotient (an edge would not be level).
   for (const auto& node : R.nodes)
     for (const Vertex_index v : node.members)
       if (used[v] == 1) Y.edges.push_back(key(node.vertex, v));
@@ -175,7 +184,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   const std::size_t none = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> seen_stamp(nn, 0);
   std::size_t stamp = 0;
-  // The start of a search (both below): a new stamp, `start` reached with no predecessor; the order of reaching.
+  // The start of a search (both below): a new stamp, `start` reached with no predecessor; the order of
+  // reaching.
   auto start_search = [&](std::size_t start, std::vector<std::size_t>& pred_arc) {
     if (pred_arc.size() != nn) pred_arc.assign(nn, none);
     ++stamp;
@@ -202,7 +212,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   };
   // The search of pi1 (below): as bfs() with stop `target`, but a node accepted by `fork` ends it when it is
   // strictly nearer (in arcs) than every node accepted by `target`. Returns the node it ended at, or none.
-  auto search = [&](std::size_t start, auto inside, auto target, auto fork, std::vector<std::size_t>& pred_arc) {
+  auto search = [&](std::size_t start, auto inside, auto target, auto fork,
+                    std::vector<std::size_t>& pred_arc) {
     std::vector<std::size_t> order = start_search(start, pred_arc);
     if (target(start)) return start;
     std::size_t found = fork(start) ? start : none;
@@ -222,13 +233,14 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   auto other_end = [&](std::size_t arc, std::size_t node) {
     return R.arcs[arc].lower == node ? R.arcs[arc].upper : R.arcs[arc].lower;
   };
-  // Where a walk stopped: at vertex `index` of the chain of `arc` walked from node `from`; arc none: it did not
-  // stop, and ended at node `from`.
+  // Where a walk stopped: at vertex `index` of the chain of `arc` walked from node `from`; arc none: it did
+  // not stop, and ended at node `from`.
   struct Walk_end {
     std::size_t arc, from, index;
   };
   // Appends to `edges` the input-vertex edges of a node path given as a sequence of arcs walked from `from`,
-  // starting at vertex `first_index` of the first arc's chain, stopping after the first vertex v with stop(v).
+  // starting at vertex `first_index` of the first arc's chain, stopping after the first vertex v with
+  // stop(v).
   auto walk = [&](std::size_t from, const std::vector<std::size_t>& arcs, std::size_t first_index, auto stop,
                   std::vector<Edge>& edges) {
     std::size_t node = from;
@@ -249,9 +261,11 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     const std::size_t first = chain_start[w.arc], length = chain_start[w.arc + 1] - first;
     return chain_items[first + (R.arcs[w.arc].lower == w.from ? w.index : length - 1 - w.index)];
   };
-  auto path_arcs = [&](std::size_t target, const std::vector<std::size_t>& pred_arc) {  // pred_arc[start] == none
-    std::vector<std::size_t> arcs;  // from the BFS start to target
-    for (std::size_t x = target; pred_arc[x] != none; x = other_end(pred_arc[x], x)) arcs.push_back(pred_arc[x]);
+  auto path_arcs = [&](std::size_t target,
+                       const std::vector<std::size_t>& pred_arc) {  // pred_arc[start] == none
+    std::vector<std::size_t> arcs;                                  // from the BFS start to target
+    for (std::size_t x = target; pred_arc[x] != none; x = other_end(pred_arc[x], x))
+      arcs.push_back(pred_arc[x]);
     std::reverse(arcs.begin(), arcs.end());
     return arcs;
   };
@@ -259,25 +273,27 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   // Merging set j: merging_edges[merging_start[j], merging_start[j + 1]).
   std::vector<Edge> merging_edges;
   std::vector<std::size_t> merging_start{0};
-  // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork). At the fork, the arc alpha
-  // goes into C2, the component of e beyond the fork, and beta into the sibling component that reaches farthest
-  // (its extreme is the elder; the first such arc of the fork). Both are found for all pairs by one union-find
-  // sweep from the far end towards the forks, asked at each fork before it joins its components: O(n log n) in
-  // all, where a search of each sibling component would cost O(n) per branch (a long stem with many spurs).
-  // The union-find keeps its history (union by size, no path compression, each link stamped with the step of
-  // the sweep that made it), so that the path into the sibling can later ask which nodes beyond e were joined
-  // with the elder when the sweep reached e.
+  // Branches: (extreme node e, fork s); `down` for minima (paths go below the fork). At the fork, the arc
+  // alpha goes into C2, the component of e beyond the fork, and beta into the sibling component that reaches
+  // farthest (its extreme is the elder; the first such arc of the fork). Both are found for all pairs by one
+  // union-find sweep from the far end towards the forks, asked at each fork before it joins its components:
+  // O(n log n) in all, where a search of each sibling component would cost O(n) per branch (a long stem with
+  // many spurs). The union-find keeps its history (union by size, no path compression, each link stamped with
+  // the step of the sweep that made it), so that the path into the sibling can later ask which nodes beyond e
+  // were joined with the elder when the sweep reached e.
   struct Branch_choice {
     std::size_t alpha, beta, elder;
   };
   struct Sweep {
-    std::vector<std::size_t> parent, size, linked_at, extreme, step;  // step: when the sweep reached each node
+    std::vector<std::size_t> parent, size, linked_at, extreme,
+        step;  // step: when the sweep reached each node
     std::size_t find(std::size_t x, std::size_t t = std::numeric_limits<std::size_t>::max()) const {
       while (parent[x] != x && linked_at[x] <= t) x = parent[x];
       return x;
     }
   };
-  auto sweep = [&](const std::vector<Reeb_persistence_pair>& pairs, bool down, std::vector<Branch_choice>& choice) {
+  auto sweep = [&](const std::vector<Reeb_persistence_pair>& pairs, bool down,
+                   std::vector<Branch_choice>& choice) {
     choice.assign(pairs.size(), Branch_choice{none, none, none});
     Compressed_lists<std::size_t> at_fork;  // the pairs to simplify, by fork
     at_fork.build(nn, [&](auto emit) {
@@ -292,8 +308,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     W.linked_at.assign(nn, none);
     W.step.assign(nn, none);
     auto farther = [&](std::size_t x, std::size_t y) { return down ? x < y : x > y; };
-    // The components beyond a fork, each with its first arc (in adjacency order): once per fork, so that a fork
-    // with k short branches costs O(k log k), not k times its degree.
+    // The components beyond a fork, each with its first arc (in adjacency order): once per fork, so that a
+    // fork with k short branches costs O(k log k), not k times its degree.
     struct Part {
       std::size_t root, first_arc;
     };
@@ -305,7 +321,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
         parts.clear();
         for (const auto& [y, arc] : adj[s])
           if (farther(y, s)) parts.push_back({W.find(y), arc});
-        std::stable_sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.root < b.root; });
+        std::stable_sort(parts.begin(), parts.end(),
+                         [](const Part& a, const Part& b) { return a.root < b.root; });
         parts.erase(std::unique(parts.begin(), parts.end(),
                                 [](const Part& a, const Part& b) { return a.root == b.root; }),
                     parts.end());  // the first arc of each component stays
@@ -346,9 +363,9 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     return W;
   };
   std::vector<std::size_t> pred;  // reused: allocated once
-  // A branch's pi1: where it stopped (its last vertex, at or beyond e's level, and the arc it is on), the farthest
-  // node it passed before that arc's end (none: only the fork), whether every search on it reached the elder's
-  // part (no fallback), and the helper vertices of its summary edge once made.
+  // A branch's pi1: where it stopped (its last vertex, at or beyond e's level, and the arc it is on), the
+  // farthest node it passed before that arc's end (none: only the fork), whether every search on it reached
+  // the elder's part (no fallback), and the helper vertices of its summary edge once made.
   const Vertex_index no_vertex = std::numeric_limits<Vertex_index>::max();
   struct Route {
     Vertex_index top, low, high;
@@ -362,11 +379,12 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     std::vector<Branch_choice> choice;
     const Sweep W = sweep(pairs, down, choice);
     auto farther = [&](std::size_t x, std::size_t y) { return down ? x < y : x > y; };
-    // Merged pairs, their forks from the far end towards the near one: a branch's pi1 can then go on as the pi1
-    // of a branch merged at a fork it meets (all farther than its own fork).
+    // Merged pairs, their forks from the far end towards the near one: a branch's pi1 can then go on as the
+    // pi1 of a branch merged at a fork it meets (all farther than its own fork).
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < pairs.size(); ++i)
-      if (pairs[i].persistence() <= delta && choice[i].alpha != none && choice[i].beta != none) order.push_back(i);
+      if (pairs[i].persistence() <= delta && choice[i].alpha != none && choice[i].beta != none)
+        order.push_back(i);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return farther(pairs[a].death_node, pairs[b].death_node);
     });
@@ -377,19 +395,21 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
       std::size_t& r = reaching[pairs[i].death_node];
       if (r == none || farther(pairs[i].birth_node, pairs[r].birth_node)) r = i;
     }
-    // Forks where a kept loop ends (its bottom for maxima, its top for minima): two arcs there lead on into the
-    // elder's part, round the loop, and the route of another branch from there need not be this branch's.
+    // Forks where a kept loop ends (its bottom for maxima, its top for minima): two arcs there lead on into
+    // the elder's part, round the loop, and the route of another branch from there need not be this branch's.
     std::vector<char> kept_loop_end(nn, 0);
     for (const auto& loop : P.loops)
       if (loop.persistence() > delta) kept_loop_end[down ? loop.birth_node : loop.death_node] = 1;
     std::vector<std::vector<Edge>> sets(pairs.size());
     std::vector<Route> routes(pairs.size(),
                               Route{no_vertex, no_vertex, no_vertex, Walk_end{none, none, 0}, none, true});
-    auto farthest = [&](std::size_t x, std::size_t y) { return x == none || (y != none && farther(y, x)) ? y : x; };
-    // The summary edge of branch r's merge: an edge of two helper vertices from the level of r's fork to that of
-    // its route's top, in r's merging set. It adds nothing to the quotient (r's set has a point at each of these
-    // levels, all one class there, and its classes form a monotone path), but stands in for r's whole merging
-    // path in the sets of the branches that go on through r's fork.
+    auto farthest = [&](std::size_t x, std::size_t y) {
+      return x == none || (y != none && farther(y, x)) ? y : x;
+    };
+    // The summary edge of branch r's merge: an edge of two helper vertices from the level of r's fork to that
+    // of its route's top, in r's merging set. It adds nothing to the quotient (r's set has a point at each of
+    // these levels, all one class there, and its classes form a monotone path), but stands in for r's whole
+    // merging path in the sets of the branches that go on through r's fork.
     auto summary = [&](std::size_t r) {
       Route& q = routes[r];
       if (q.high == no_vertex) {
@@ -413,21 +433,23 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
         // pi2: from the fork through alpha into C2, then to the extreme e (C2 lies between the two levels).
         std::vector<std::size_t> arcs{c.alpha};
         const std::size_t u = other_end(c.alpha, s);
-        bfs(u, side, [&](std::size_t x) { return x == e; }, pred);
+        bfs(
+            u, side, [&](std::size_t x) { return x == e; }, pred);
         const std::vector<std::size_t> rest = path_arcs(e, pred);
         arcs.insert(arcs.end(), rest.begin(), rest.end());
-        walk(s, arcs, 0, [](Vertex_index) { return false; }, edges);
+        walk(
+            s, arcs, 0, [](Vertex_index) { return false; }, edges);
       }
       // pi1: from the fork through beta towards the elder, walked until the level of e is reached: a shortest
-      // path (in arcs) between the two levels to the nearest node beyond e that is joined with the elder beyond
-      // e (when the sweep reached e); if every such path first crosses into another part of the sibling beyond
-      // e, the nearest node beyond e. Either search stays between the two levels.
-      // Or, when the search meets, strictly nearer than such a node, the fork x of a merged branch r with the same
-      // elder whose pi1 it could have taken (see joinable), coming to x from x's near side: pi1 goes on as r's pi1,
-      // held in the set by r's summary edge, and on from where r's pi1 stopped if that is short of e's level. On a
-      // tree that is the same path (the merges together glue the same points); with loops it may pass a loop on
-      // its other side. But the set is short: a flat stem with n tall teeth gave each tooth a pi1 along the rest
-      // of the stem, n^2 / 2 merging edges with strips of O(n) levels.
+      // path (in arcs) between the two levels to the nearest node beyond e that is joined with the elder
+      // beyond e (when the sweep reached e); if every such path first crosses into another part of the
+      // sibling beyond e, the nearest node beyond e. Either search stays between the two levels. Or, when the
+      // search meets, strictly nearer than such a node, the fork x of a merged branch r with the same elder
+      // whose pi1 it could have taken (see joinable), coming to x from x's near side: pi1 goes on as r's pi1,
+      // held in the set by r's summary edge, and on from where r's pi1 stopped if that is short of e's level.
+      // On a tree that is the same path (the merges together glue the same points); with loops it may pass a
+      // loop on its other side. But the set is short: a flat stem with n tall teeth gave each tooth a pi1
+      // along the rest of the stem, n^2 / 2 merging edges with strips of O(n) levels.
       const std::size_t elder_root = W.find(c.elder, W.step[e]);
       auto with_elder = [&](std::size_t x) { return W.find(x, W.step[e]) == elder_root; };
       ++route_stamp;
@@ -437,10 +459,11 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
         if (used_stamp[x] == route_stamp || farther(prev, x)) return none;  // from beyond x: need not pass x
         const Route& q = routes[r];
         FEATURERECON_assertion(q.top != no_vertex);  // its fork is farther: resolved before
-        // r's pi1 must be one this search could take: towards the elder, between e's level and the fork's up to
-        // its last arc, which ends beyond e's level only in the elder's part.
+        // r's pi1 must be one this search could take: towards the elder, between e's level and the fork's up
+        // to its last arc, which ends beyond e's level only in the elder's part.
         const std::size_t z = other_end(q.end.arc, q.end.from);
-        if (!q.to_elder || (q.peak != none && beyond_e(q.peak)) || (beyond_e(z) && !with_elder(z))) return none;
+        if (!q.to_elder || (q.peak != none && beyond_e(q.peak)) || (beyond_e(z) && !with_elder(z)))
+          return none;
         return r;
       };
       // The nodes a walk passed before the end of the arc it stopped on (all of them if it did not stop).
@@ -512,7 +535,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
       ++result.removed_branches;
     }
   };
-  for (const bool down : {true, false}) merge_branches(down ? P.sublevel_branches : P.superlevel_branches, down);
+  for (const bool down : {true, false})
+    merge_branches(down ? P.sublevel_branches : P.superlevel_branches, down);
   for (std::size_t i = 0; i < P.loops.size(); ++i) {
     if (P.loops[i].persistence() > delta) continue;
     for (const std::size_t arc : cycles[i])
@@ -550,7 +574,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (std::size_t i = 0; i + 1 < levels.size(); ++i)
       Y.edges.push_back({static_cast<Vertex_index>(first + i), static_cast<Vertex_index>(first + i + 1)});
     auto spine = [&](double l) {
-      return static_cast<Vertex_index>(first + (std::lower_bound(levels.begin(), levels.end(), l) - levels.begin()));
+      return static_cast<Vertex_index>(first +
+                                       (std::lower_bound(levels.begin(), levels.end(), l) - levels.begin()));
     };
     for (auto e = edges_begin; e != edges_end; ++e) {
       Vertex_index a = (*e)[0], b = (*e)[1];
@@ -569,7 +594,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
   Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
   if (stopped(0.3)) return result;
   Reeb_graph_options glued_options;
-  bool asked_to_stop = false;  // sticky: the sweep's last report (all swept) does not stop it, but counts here
+  bool asked_to_stop =
+      false;  // sticky: the sweep's last report (all swept) does not stop it, but counts here
   if (progress)
     glued_options.progress = [&progress, &asked_to_stop](double t) {
       return !(asked_to_stop = asked_to_stop || !progress(0.3 + 0.6 * t));
@@ -618,15 +644,16 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
     for (std::size_t v = 0; v < n; ++v)
       if (used[v] == 1) emit(class_of[v], static_cast<Vertex_index>(v));
   });
-  // Members off their node's level go where the node's vertex went: to its node, or, when that became regular,
-  // to the lower or upper node of its arc by their value (an arc's vertices stay in increasing order).
+  // Members off their node's level go where the node's vertex went: to its node, or, when that became
+  // regular, to the lower or upper node of its arc by their value (an arc's vertices stay in increasing
+  // order).
   off_level_of.build(nc, [&](auto emit) {
     for (const auto& node : R.nodes)
       for (const Vertex_index v : node.members)
         if (used[v] == 2) emit(class_of[node.vertex], v);
   });
-  // Indices of `values` the graph does not use (and members placed above) are isolated, single classes: no part
-  // of the result as such.
+  // Indices of `values` the graph does not use (and members placed above) are isolated, single classes: no
+  // part of the result as such.
   auto unused_class = [&](std::size_t c) { return rep[classes[c]] < n && used[rep[classes[c]]] != 1; };
   Reeb_graph& G = result.graph;
   std::vector<std::size_t> node_of(nc, none);
@@ -652,7 +679,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
       std::vector<Vertex_index> below, above;  // off-level members of regular classes on the arc
       while (node_of[next] == none) {
         arc.vertices.insert(arc.vertices.end(), inputs_of[next].begin(), inputs_of[next].end());
-        for (const Vertex_index v : off_level_of[next]) (values[v] < val[classes[next]] ? below : above).push_back(v);
+        for (const Vertex_index v : off_level_of[next])
+          (values[v] < val[classes[next]] ? below : above).push_back(v);
         next = up[next].front();
       }
       arc.upper = node_of[next];
@@ -667,11 +695,13 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R, c
 }
 
 /// simplify_by_persistence() of the Reeb graph of A.
-/// \throws std::invalid_argument when A's computation was interrupted (its graph lacks the arcs still open then).
+/// \throws std::invalid_argument when A's computation was interrupted (its graph lacks the arcs still open
+/// then).
 inline Reeb_simplification_result simplify_by_persistence(const Augmented_reeb_graph& A, double delta,
                                                           const Simplification_options& options = {}) {
   if (A.status() == Status::interrupted)
-    FeatureRecon::internal::throw_invalid_argument("simplify_by_persistence", "the augmented Reeb graph A is "
+    FeatureRecon::internal::throw_invalid_argument("simplify_by_persistence",
+                                                   "the augmented Reeb graph A is "
                                                    "incomplete: its computation was interrupted");
   return simplify_by_persistence(A.reeb_graph(), A.values(), delta, options);
 }

@@ -17,9 +17,9 @@ namespace skeleton {
 
 /// How neighbours are searched when building a proximity graph from points.
 enum class Neighbor_search {
-  automatic,    ///< kd-tree up to dimension 3, blocked brute force above
-  kd_tree,      ///< CGAL kd-tree (dimension <= 3 only)
-  brute_force   ///< blocked all-pairs distances with Eigen, any dimension
+  automatic,   ///< kd-tree up to dimension 3, blocked brute force above
+  kd_tree,     ///< CGAL kd-tree (dimension <= 3 only)
+  brute_force  ///< blocked all-pairs distances with Eigen, any dimension
 };
 
 /// Options of build_rips_graph() and build_knn_graph().
@@ -31,31 +31,33 @@ struct Proximity_graph_options {
 /// Options of compute_geodesic_function().
 struct Geodesic_options {
   /// Base points (vertex indices), at most one per connected component (checked). Components without a base
-  /// point use the automatic rule: the vertex farthest (ties: smallest index) from the smallest-index vertex of
-  /// the component. Default: none.
+  /// point use the automatic rule: the vertex farthest (ties: smallest index) from the smallest-index vertex
+  /// of the component. Default: none.
   std::vector<std::size_t> base_points;
   Progress_callback progress;  ///< called with the fraction done; returning false stops
 };
 
 /// Options of compute_augmented_reeb_graph().
 struct Reeb_graph_options {
-  /// Called with the fraction done (the set-up passes up to 0.4, then the fraction of vertices swept); returning false
-  /// stops (Status::interrupted; the arcs closed so far, none when the stop came before the sweep).
+  /// Called with the fraction done (the set-up passes up to 0.4, then the fraction of vertices swept);
+  /// returning false stops (Status::interrupted; the arcs closed so far, none when the stop came before the
+  /// sweep).
   Progress_callback progress;
 };
 
 /// Options of simplify_by_persistence().
 struct Simplification_options {
-  /// Called with the fraction done (persistence and merging paths up to 0.3, the Reeb graph of the glued complex
-  /// up to 0.9, the quotient graph 1); returning false stops: status interrupted, empty graph.
+  /// Called with the fraction done (persistence and merging paths up to 0.3, the Reeb graph of the glued
+  /// complex up to 0.9, the quotient graph 1); returning false stops: status interrupted, empty graph.
   Progress_callback progress;
 };
 
 /// Options of repair_reeb_graph() and connect_dead_ends().
 struct Reeb_repair_options {
   /// Empty (default: every pair is measured), or a function of an input vertex that is 1-Lipschitz for the
-  /// distance, |bound(a) - bound(b)| <= distance(a, b) (a coordinate of Euclidean points): only pairs whose bounds
-  /// differ by at most the repair distance are measured. The result is the same; the work drops from quadratic.
+  /// distance, |bound(a) - bound(b)| <= distance(a, b) (a coordinate of Euclidean points): only pairs whose
+  /// bounds differ by at most the repair distance are measured. The result is the same; the work drops from
+  /// quadratic.
   std::function<double(std::uint32_t)> bound;
   /// Called with the fraction done; returning false stops (status interrupted; the graph holds the arcs added
   /// before the stop, see each function).

@@ -5,10 +5,11 @@
 
 // A synthetic city with known streets and simulated GPS trips on them: test and benchmark data for road-map
 // construction where no other city's traces are at hand. The street network is a perturbed grid (rotated,
-// jittered intersections, some streets missing, a diagonal avenue) or an organic network (random intersections
-// joined by their Gabriel graph, some streets missing), its streets straight or bent; trips drive shortest routes
-// between random intersections on the right-hand side of the street and are recorded at a fixed interval with
-// Gaussian noise and a per-trip bias. Deterministic for a seed on every platform (internal/random.h).
+// jittered intersections, some streets missing, a diagonal avenue) or an organic network (random
+// intersections joined by their Gabriel graph, some streets missing), its streets straight or bent; trips
+// drive shortest routes between random intersections on the right-hand side of the street and are recorded at
+// a fixed interval with Gaussian noise and a per-trip bias. Deterministic for a seed on every platform
+// (internal/random.h).
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
@@ -37,37 +38,37 @@ namespace skeleton {
 enum class Synthetic_city_layout {
   grid,    ///< a columns x rows grid of blocks, jittered, with a diagonal avenue
   organic  ///< columns x rows random intersections in the grid's rectangle, at least 0.6 sqrt(block_width x
-           ///< block_height) apart (dart throwing; the spacing shrinks by 5 % whenever 1000 x columns x rows darts
-           ///< in a row miss, which only happens in a rectangle too small for them), joined by the streets of
-           ///< their Gabriel graph: junctions of any degree and angle, blocks of any shape
+           ///< block_height) apart (dart throwing; the spacing shrinks by 5 % whenever 1000 x columns x rows
+           ///< darts in a row miss, which only happens in a rectangle too small for them), joined by the
+           ///< streets of their Gabriel graph: junctions of any degree and angle, blocks of any shape
 };
 
 /// Options of make_synthetic_city(). Lengths in metres, times in seconds.
 struct Synthetic_city_options {
   Synthetic_city_layout layout = Synthetic_city_layout::grid;  ///< default grid
-  std::size_t columns = 8;       ///< intersections per row (>= 2); default 8
-  std::size_t rows = 6;          ///< intersections per column (>= 2); default 6
-  double block_width = 120;      ///< spacing of the intersections along a row; default 120
-  double block_height = 90;      ///< spacing along a column; default 90
-  double rotation = 0;           ///< of the whole grid, degrees; default 0
-  double jitter = 10;            ///< grid: each intersection moves uniformly within +-jitter in x and y; default 10
+  std::size_t columns = 8;                                     ///< intersections per row (>= 2); default 8
+  std::size_t rows = 6;                                        ///< intersections per column (>= 2); default 6
+  double block_width = 120;  ///< spacing of the intersections along a row; default 120
+  double block_height = 90;  ///< spacing along a column; default 90
+  double rotation = 0;       ///< of the whole grid, degrees; default 0
+  double jitter = 10;  ///< grid: each intersection moves uniformly within +-jitter in x and y; default 10
   double missing_streets = 0.1;  ///< fraction of streets removed, keeping the network connected; default 0.1
   bool diagonal = true;          ///< grid: a diagonal avenue through the intersections (i, i); default true
-  /// Each street bends as a parabola whose middle lies up to curvature x its length (uniformly, either side) off
-  /// the chord, drawn as a polyline with pieces of at most 10 m (at most 1000 pieces); 0 keeps streets straight.
-  /// Bent streets may cross without a junction, like an overpass (the default organic city has 2 such crossings
-  /// at 0.15, about 20 at 0.3). In [0, 0.5]; default 0
+  /// Each street bends as a parabola whose middle lies up to curvature x its length (uniformly, either side)
+  /// off the chord, drawn as a polyline with pieces of at most 10 m (at most 1000 pieces); 0 keeps streets
+  /// straight. Bent streets may cross without a junction, like an overpass (the default organic city has 2
+  /// such crossings at 0.15, about 20 at 0.3). In [0, 0.5]; default 0
   double curvature = 0;
-  std::size_t trips = 300;       ///< default 300
-  double speed = 10;             ///< mean driving speed; each trip drives at 0.7 to 1.3 times it; default 10
+  std::size_t trips = 300;  ///< default 300
+  double speed = 10;        ///< mean driving speed; each trip drives at 0.7 to 1.3 times it; default 10
   double sampling_interval = 3.6;  ///< time between fixes (the first one at a random phase); default 3.6
-  double noise = 4;              ///< standard deviation of the noise of each coordinate of a fix; default 4
-  double trip_bias = 2;          ///< standard deviation of a constant offset per trip and coordinate; default 2
-  double lane_offset = 2;        ///< vehicles drive this far right of the centre line; default 2
-  std::uint64_t seed = 1;        ///< default 1
-  /// Fraction done: the street layout counts for the first 5 % (the organic layout reports every 65536 darts),
-  /// then one report before each trip. Returning false stops: the trips made so far are kept, `driven` holds the
-  /// streets they used, and the status is interrupted.
+  double noise = 4;                ///< standard deviation of the noise of each coordinate of a fix; default 4
+  double trip_bias = 2;    ///< standard deviation of a constant offset per trip and coordinate; default 2
+  double lane_offset = 2;  ///< vehicles drive this far right of the centre line; default 2
+  std::uint64_t seed = 1;  ///< default 1
+  /// Fraction done: the street layout counts for the first 5 % (the organic layout reports every 65536
+  /// darts), then one report before each trip. Returning false stops: the trips made so far are kept,
+  /// `driven` holds the streets they used, and the status is interrupted.
   Progress_callback progress;
 };
 
@@ -76,18 +77,19 @@ struct Synthetic_city {
   /// The street network (centre lines): the columns x rows intersections first (in the grid layout vertex
   /// j x columns + i is the grid's (i, j)), then the inner points of bent streets, each street's in order.
   Embedded_graph_2 streets;
-  Embedded_graph_2 driven;    ///< the streets at least one trip used: the ground truth of a road map
-  std::vector<Gps_trip> trips;  ///< the recorded fixes (trip k starts at time 10000 k)
+  Embedded_graph_2 driven;          ///< the streets at least one trip used: the ground truth of a road map
+  std::vector<Gps_trip> trips;      ///< the recorded fixes (trip k starts at time 10000 k)
   Status status = Status::success;  ///< interrupted when the progress callback stopped the run (fewer trips)
 };
 
 namespace internal {
 /// Greedy deletion: for k = 0, 1, ..., edge order[k] is removed when the edges left without it still connect
-/// the n vertices, until `count` are removed. Returns the removed flags by edge. O(m log m) instead of a search
-/// per edge: the greedy deletion keeps, among the edges it looks at, exactly those that Kruskal's algorithm picks
-/// when it adds them in the opposite order on top of the edges it never looks at (reverse-delete = Kruskal). It
-/// looks at the first k* edges of the order, k* the first k with k - (c(k) - 1) = count, where c(k) is the number
-/// of components of the edges order[k..m). A disconnected graph loses nothing.
+/// the n vertices, until `count` are removed. Returns the removed flags by edge. O(m log m) instead of a
+/// search per edge: the greedy deletion keeps, among the edges it looks at, exactly those that Kruskal's
+/// algorithm picks when it adds them in the opposite order on top of the edges it never looks at
+/// (reverse-delete = Kruskal). It looks at the first k* edges of the order, k* the first k with k - (c(k) -
+/// 1) = count, where c(k) is the number of components of the edges order[k..m). A disconnected graph loses
+/// nothing.
 inline std::vector<char> remove_keeping_connected(std::size_t n, const std::vector<Edge>& edges,
                                                   const std::vector<std::size_t>& order, std::size_t count) {
   const std::size_t m = edges.size();
@@ -124,9 +126,9 @@ inline std::vector<char> remove_keeping_connected(std::size_t n, const std::vect
 }
 
 /// The edges of the Gabriel graph of distinct points (pairs whose diametral disc holds no other point), from
-/// their Delaunay triangulation with exact predicates; sorted, each as (smaller index, larger index). A point on
-/// the boundary of a diametral disc removes the edge.
-/// \throws std::invalid_argument naming two points that coincide.
+/// their Delaunay triangulation with exact predicates; sorted, each as (smaller index, larger index). A point
+/// on the boundary of a diametral disc removes the edge. \throws std::invalid_argument naming two points that
+/// coincide.
 inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>& points) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<Vertex_index, K>;
@@ -137,7 +139,8 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
     const std::size_t before = dt.number_of_vertices();
     const auto v = dt.insert(K::Point_2(points[i][0], points[i][1]));
     if (dt.number_of_vertices() == before)
-      FeatureRecon::internal::throw_invalid_argument("gabriel_edges", "points ", v->info(), " and ", i, " coincide");
+      FeatureRecon::internal::throw_invalid_argument("gabriel_edges", "points ", v->info(), " and ", i,
+                                                     " coincide");
     v->info() = static_cast<Vertex_index>(i);
   }
   std::vector<Edge> edges;
@@ -147,7 +150,8 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
     const auto u = f->vertex(Dt::cw(i)), v = f->vertex(Dt::ccw(i));
     bool gabriel = true;  // collinear points (dimension 1): every Delaunay edge joins neighbours on the line
     if (dt.dimension() == 2)
-      for (const auto& [face, index] : {std::pair{f, i}, std::pair{f->neighbor(i), f->neighbor(i)->index(f)}}) {
+      for (const auto& [face, index] :
+           {std::pair{f, i}, std::pair{f->neighbor(i), f->neighbor(i)->index(f)}}) {
         const auto w = face->vertex(index);
         if (!dt.is_infinite(w) &&
             CGAL::side_of_bounded_circle(u->point(), v->point(), w->point()) != CGAL::ON_UNBOUNDED_SIDE)
@@ -161,20 +165,24 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
 }  // namespace internal
 
 /// Builds a synthetic city and its GPS trips (see the file comment).
-/// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or non-finite
+/// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or
+/// non-finite
 ///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a missing
 ///         fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24 intersections or 2^31
-///         street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge noise,
-///         bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
+///         street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge
+///         noise, bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
 inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
   const char* fn = "make_synthetic_city";
   using FeatureRecon::internal::throw_invalid_argument;
-  if (o.columns < 2 || o.rows < 2) throw_invalid_argument(fn, "columns and rows must be >= 2, got ", o.columns, " and ", o.rows);
+  if (o.columns < 2 || o.rows < 2)
+    throw_invalid_argument(fn, "columns and rows must be >= 2, got ", o.columns, " and ", o.rows);
   constexpr std::size_t max_intersections = std::size_t(1) << 24;
   if (o.columns > max_intersections / o.rows)
-    throw_invalid_argument(fn, "columns x rows must be at most 2^24 intersections, got ", o.columns, " x ", o.rows);
+    throw_invalid_argument(fn, "columns x rows must be at most 2^24 intersections, got ", o.columns, " x ",
+                           o.rows);
   auto positive = [&](double v, const char* name) {
-    if (!(v > 0 && std::isfinite(v))) throw_invalid_argument(fn, name, " must be positive and finite, got ", v);
+    if (!(v > 0 && std::isfinite(v)))
+      throw_invalid_argument(fn, name, " must be positive and finite, got ", v);
   };
   auto non_negative = [&](double v, const char* name) {
     if (!(v >= 0 && std::isfinite(v))) throw_invalid_argument(fn, name, " must be finite and >= 0, got ", v);
@@ -196,11 +204,14 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     throw_invalid_argument(fn, "layout must be grid or organic");
   // Checked before any route is made: 10^8 trips took 31 s and 2.2 GB to reach the limit on fixes below.
   if (o.trips > (std::size_t(1) << 26))
-    throw_invalid_argument(fn, "trips must be at most 2^26 (the most fixes the trips may record), got ", o.trips);
+    throw_invalid_argument(fn, "trips must be at most 2^26 (the most fixes the trips may record), got ",
+                           o.trips);
 
   FeatureRecon::internal::Unit_random random(FeatureRecon::internal::splitmix64(o.seed));
   Synthetic_city city;
-  const auto report = [&](double fraction) { return FeatureRecon::internal::report_progress(o.progress, fraction); };
+  const auto report = [&](double fraction) {
+    return FeatureRecon::internal::report_progress(o.progress, fraction);
+  };
   // A stop in the layout: no streets, no trips.
   const auto stopped_city = [] {
     Synthetic_city stopped;
@@ -210,14 +221,16 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   if (!report(0)) return stopped_city();
   const std::size_t nx = o.columns, ny = o.rows, n = nx * ny;
   // Degrees reduced to (-360, 360) first: 1e308 degrees times pi overflowed to a NaN rotation.
-  const double a = std::fmod(o.rotation, 360.0) * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
+  const double a = std::fmod(o.rotation, 360.0) * 3.14159265358979323846 / 180, c = std::cos(a),
+               s = std::sin(a);
   auto node = [nx](std::size_t i, std::size_t j) { return static_cast<Vertex_index>(j * nx + i); };
   std::vector<Edge> streets;
-  // Every coordinate (rotated, with jitter) is at most |x| + |y| in size: the extents must fit a double, or the
-  // organic layout's dart throwing would never place a point.
+  // Every coordinate (rotated, with jitter) is at most |x| + |y| in size: the extents must fit a double, or
+  // the organic layout's dart throwing would never place a point.
   if (!std::isfinite(double(nx - 1) * o.block_width + double(ny - 1) * o.block_height + 2 * o.jitter))
-    throw_invalid_argument(fn, "the city of ", nx, " x ", ny, " blocks of ", o.block_width, " x ", o.block_height,
-                           " (jitter ", o.jitter, ") lies beyond the largest double: block_width or block_height too large");
+    throw_invalid_argument(fn, "the city of ", nx, " x ", ny, " blocks of ", o.block_width, " x ",
+                           o.block_height, " (jitter ", o.jitter,
+                           ") lies beyond the largest double: block_width or block_height too large");
   if (o.layout == Synthetic_city_layout::grid) {
     for (std::size_t j = 0; j < ny; ++j)
       for (std::size_t i = 0; i < nx; ++i) {
@@ -235,10 +248,11 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     const double w = double(nx - 1) * o.block_width, h = double(ny - 1) * o.block_height;
     double spacing = 0.6 * std::sqrt(o.block_width) * std::sqrt(o.block_height);
     std::vector<std::array<double, 2>> q;
-    // Points bucketed on cells a little wider than the first spacing (the spacing only shrinks): a point closer
-    // than the spacing lies in one of the 3 x 3 cells around a dart.
+    // Points bucketed on cells a little wider than the first spacing (the spacing only shrinks): a point
+    // closer than the spacing lies in one of the 3 x 3 cells around a dart.
     const double cell = 1.001 * spacing;
-    const auto columns = static_cast<std::size_t>(w / cell) + 1, rows = static_cast<std::size_t>(h / cell) + 1;
+    const auto columns = static_cast<std::size_t>(w / cell) + 1,
+               rows = static_cast<std::size_t>(h / cell) + 1;
     std::vector<std::vector<std::uint32_t>> bucket(columns * rows);
     auto cell_of = [cell](double v, std::size_t size) {
       return std::min(size - 1, static_cast<std::size_t>(std::max(0.0, std::floor(v / cell))));
@@ -268,20 +282,24 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   }
   for (std::size_t i = 0; i < city.streets.positions.size(); ++i)
     if (!(std::isfinite(city.streets.positions[i][0]) && std::isfinite(city.streets.positions[i][1])))
-      throw_invalid_argument(fn, "intersection ", i, " lies beyond the largest double: block_width (", o.block_width,
-                             ") or block_height (", o.block_height, ") too large for ", nx, " x ", ny, " blocks");
+      throw_invalid_argument(fn, "intersection ", i, " lies beyond the largest double: block_width (",
+                             o.block_width, ") or block_height (", o.block_height, ") too large for ", nx,
+                             " x ", ny, " blocks");
   // Remove streets in random order while the network stays connected.
   const std::size_t grid_streets = streets.size();
   std::vector<std::size_t> order(grid_streets);
   for (std::size_t k = 0; k < grid_streets; ++k) order[k] = k;
-  for (std::size_t k = grid_streets; k > 1; --k) std::swap(order[k - 1], order[std::size_t(random() * double(k))]);
+  for (std::size_t k = grid_streets; k > 1; --k)
+    std::swap(order[k - 1], order[std::size_t(random() * double(k))]);
   const auto to_remove = static_cast<std::size_t>(std::floor(o.missing_streets * double(grid_streets)));
   const std::vector<char> removed = internal::remove_keeping_connected(n, streets, order, to_remove);
   for (std::size_t k = 0; k < grid_streets; ++k)
     if (!removed[k]) city.streets.edges.push_back(streets[k]);
   if (o.diagonal && o.layout == Synthetic_city_layout::grid)
-    for (std::size_t i = 0; i + 1 < std::min(nx, ny); ++i) city.streets.edges.push_back({node(i, i), node(i + 1, i + 1)});
-  // Street k runs along the polyline line[k] of vertices: its two intersections, and the inner points of a bend.
+    for (std::size_t i = 0; i + 1 < std::min(nx, ny); ++i)
+      city.streets.edges.push_back({node(i, i), node(i + 1, i + 1)});
+  // Street k runs along the polyline line[k] of vertices: its two intersections, and the inner points of a
+  // bend.
   std::vector<std::vector<Vertex_index>> line;
   for (const Edge& e : city.streets.edges) line.push_back({e[0], e[1]});
   if (o.curvature > 0) {
@@ -289,15 +307,18 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
       const auto p = city.streets.positions[l[0]], r = city.streets.positions[l[1]];
       const double L = std::hypot(r[0] - p[0], r[1] - p[1]);
       const double bend = o.curvature * L * (2 * random() - 1);  // the middle's distance off the chord
-      const double cx = (p[0] + r[0]) / 2 + 2 * bend * (p[1] - r[1]) / L, cy = (p[1] + r[1]) / 2 + 2 * bend * (r[0] - p[0]) / L;
-      const auto pieces = static_cast<std::size_t>(std::min(1000.0, std::ceil(L * (1 + 4 * o.curvature) / 10)));
+      const double cx = (p[0] + r[0]) / 2 + 2 * bend * (p[1] - r[1]) / L,
+                   cy = (p[1] + r[1]) / 2 + 2 * bend * (r[0] - p[0]) / L;
+      const auto pieces =
+          static_cast<std::size_t>(std::min(1000.0, std::ceil(L * (1 + 4 * o.curvature) / 10)));
       if (city.streets.positions.size() + pieces > (std::size_t(1) << 31))
         throw_invalid_argument(fn, "the bent streets need more than 2^31 vertices: blocks too large");
       std::vector<Vertex_index> bent{l[0]};
       for (std::size_t i = 1; i < pieces; ++i) {
         const double t = double(i) / double(pieces), u = 1 - t;
         bent.push_back(static_cast<Vertex_index>(city.streets.positions.size()));
-        city.streets.positions.push_back({u * u * p[0] + 2 * u * t * cx + t * t * r[0], u * u * p[1] + 2 * u * t * cy + t * t * r[1]});
+        city.streets.positions.push_back(
+            {u * u * p[0] + 2 * u * t * cx + t * t * r[0], u * u * p[1] + 2 * u * t * cy + t * t * r[1]});
       }
       bent.push_back(l[1]);
       l = std::move(bent);
@@ -319,7 +340,8 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   std::vector<double> street_length(m, 0.0);
   for (std::size_t k = 0; k < m; ++k)
     for (std::size_t i = 0; i + 1 < line[k].size(); ++i)
-      street_length[k] += std::hypot(P[line[k][i + 1]][0] - P[line[k][i]][0], P[line[k][i + 1]][1] - P[line[k][i]][1]);
+      street_length[k] +=
+          std::hypot(P[line[k][i + 1]][0] - P[line[k][i]][0], P[line[k][i + 1]][1] - P[line[k][i]][1]);
   auto length = [&](std::size_t k) { return street_length[k]; };
   std::vector<char> used(m, 0);
   const double max_fixes = double(std::size_t(1) << 26);
@@ -364,22 +386,22 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
     }
     std::reverse(route.begin(), route.end());
     const double speed = o.speed * (0.7 + 0.6 * random());
-    // The fixes are counted before they are made: a tiny interval or speed must be refused, not fill the memory
-    // (or loop: along += interval x speed stops moving when the step is below along's precision).
+    // The fixes are counted before they are made: a tiny interval or speed must be refused, not fill the
+    // memory (or loop: along += interval x speed stops moving when the step is below along's precision).
     double route_length = 0;
     for (std::size_t r = 0; r + 1 < route.size(); ++r)
       route_length += std::hypot(P[route[r + 1]][0] - P[route[r]][0], P[route[r + 1]][1] - P[route[r]][1]);
     const double step = o.sampling_interval * speed;
     planned_fixes += route_length / step + 1;
     if (!(planned_fixes <= max_fixes) || !(route_length + step > route_length))
-      throw_invalid_argument(fn, "the trips would record more than 2^26 fixes (trip ", t, " alone: ",
-                             route_length / step, " at ", step, " m apart, along a route of ", route_length,
-                             " m): raise speed (", o.speed, ") or sampling_interval (", o.sampling_interval,
-                             "), or lower trips (", o.trips, "), block_width (", o.block_width, "), block_height (",
-                             o.block_height, ") or jitter (", o.jitter, ")");
+      throw_invalid_argument(
+          fn, "the trips would record more than 2^26 fixes (trip ", t, " alone: ", route_length / step,
+          " at ", step, " m apart, along a route of ", route_length, " m): raise speed (", o.speed,
+          ") or sampling_interval (", o.sampling_interval, "), or lower trips (", o.trips, "), block_width (",
+          o.block_width, "), block_height (", o.block_height, ") or jitter (", o.jitter, ")");
     const double bias_x = o.trip_bias * random.normal(), bias_y = o.trip_bias * random.normal();
     double along = o.sampling_interval * random() * speed;  // arc length of the next fix
-    double start = 0;                                         // arc length at the current segment's start
+    double start = 0;                                       // arc length at the current segment's start
     Gps_trip trip;
     for (std::size_t r = 0; r + 1 < route.size(); ++r) {
       const auto& p = P[route[r]];
@@ -391,9 +413,9 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
         const double x = p[0] + u * ux + o.lane_offset * uy + bias_x + o.noise * random.normal();
         const double y = p[1] + u * uy - o.lane_offset * ux + bias_y + o.noise * random.normal();
         if (!std::isfinite(x) || !std::isfinite(y))  // a noise of 1e308 wrote inf into the tracks
-          throw_invalid_argument(fn, "fix ", trip.size(), " of trip ", t, " lies beyond the largest double: noise (",
-                                 o.noise, "), trip_bias (", o.trip_bias, ") or lane_offset (", o.lane_offset,
-                                 ") too large");
+          throw_invalid_argument(fn, "fix ", trip.size(), " of trip ", t,
+                                 " lies beyond the largest double: noise (", o.noise, "), trip_bias (",
+                                 o.trip_bias, ") or lane_offset (", o.lane_offset, ") too large");
         trip.push_back({x, y, 10000.0 * double(t) + along / speed});
       }
       start += L;
@@ -403,7 +425,8 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   city.driven.positions = P;
   for (std::size_t k = 0; k < m; ++k)
     if (used[k])
-      for (std::size_t i = 0; i + 1 < line[k].size(); ++i) city.driven.edges.push_back({line[k][i], line[k][i + 1]});
+      for (std::size_t i = 0; i + 1 < line[k].size(); ++i)
+        city.driven.edges.push_back({line[k][i], line[k][i + 1]});
   if (city.status == Status::success) (void)report(1);
   return city;
 }

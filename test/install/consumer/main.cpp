@@ -14,7 +14,8 @@ std::size_t loops_of_other_translation_unit();
 
 int main() {
   std::vector<std::array<double, 2>> circle;
-  for (int i = 0; i < 60; ++i) circle.push_back({std::cos(i * 0.10471975511965977), std::sin(i * 0.10471975511965977)});
+  for (int i = 0; i < 60; ++i)
+    circle.push_back({std::cos(i * 0.10471975511965977), std::sin(i * 0.10471975511965977)});
   const auto K = FeatureRecon::skeleton::build_rips_complex_2(circle, 0.25);
   const auto f = FeatureRecon::skeleton::compute_geodesic_function(K).values;
   const auto R = FeatureRecon::skeleton::compute_augmented_reeb_graph(K, f).reeb_graph();

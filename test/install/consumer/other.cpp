@@ -5,5 +5,7 @@
 
 std::size_t loops_of_other_translation_unit() {
   const auto K = FeatureRecon::skeleton::make_simplicial_complex_2(4, {{0, 1}, {1, 2}, {2, 3}, {3, 0}}, {});
-  return FeatureRecon::skeleton::compute_augmented_reeb_graph(K, std::vector<double>{0, 1, 2, 1.5}).reeb_graph().loops();
+  return FeatureRecon::skeleton::compute_augmented_reeb_graph(K, std::vector<double>{0, 1, 2, 1.5})
+      .reeb_graph()
+      .loops();
 }

@@ -21,12 +21,14 @@ inline const std::array<double, 4>& check_box(const std::array<double, 4>& box, 
     if (!std::isfinite(box[k]))
       FeatureRecon::internal::throw_invalid_argument(fn, "box[", k, "] is not finite (", box[k], ")");
     if (!(std::fabs(box[k]) <= 1e100))  // widths, areas and squared distances must stay finite
-      FeatureRecon::internal::throw_invalid_argument(fn, "box[", k, "] = ", box[k],
-                                                     " lies beyond +-1e100 (widths and areas would overflow); "
-                                                     "scale the domain");
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "box[", k, "] = ", box[k],
+          " lies beyond +-1e100 (widths and areas would overflow); "
+          "scale the domain");
   }
   if (!(box[0] <= box[2] && box[1] <= box[3]))
-    FeatureRecon::internal::throw_invalid_argument(fn, "box must be {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1");
+    FeatureRecon::internal::throw_invalid_argument(fn,
+                                                   "box must be {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1");
   return box;
 }
 /// \endcond

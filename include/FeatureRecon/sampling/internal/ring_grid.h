@@ -38,9 +38,9 @@ class Ring_grid {
       active[k] = hi[k] - lo[k] > 0;
     }
     m_side = 1;
-    // The side that gives about target_cells cells over the axes that are at least a cell wide: an axis thinner
-    // than the side (a nearly flat patch in 3-D) gets one cell and does not shrink the others' cells (it used to
-    // make about n^2 cells for n points). At most D + 1 rounds.
+    // The side that gives about target_cells cells over the axes that are at least a cell wide: an axis
+    // thinner than the side (a nearly flat patch in 3-D) gets one cell and does not shrink the others' cells
+    // (it used to make about n^2 cells for n points). At most D + 1 rounds.
     for (int round = 0; round <= D && extent_max > 0; ++round) {
       double measure = 1;
       int positive = 0;
@@ -64,7 +64,8 @@ class Ring_grid {
     if (!(m_side > 0) || !std::isfinite(m_side)) m_side = 1;
     m_count = 1;
     for (int k = 0; k < D; ++k) {
-      m_cells[k] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor((hi[k] - lo[k]) / m_side)) + 1);
+      m_cells[k] =
+          std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor((hi[k] - lo[k]) / m_side)) + 1);
       m_count *= static_cast<std::size_t>(m_cells[k]);
     }
   }
@@ -80,7 +81,8 @@ class Ring_grid {
     for (std::size_t c = 0; c < m_count; ++c) m_offsets[c + 1] += m_offsets[c];
     m_items.resize(points.size());
     std::vector<std::uint32_t> fill(m_offsets.begin(), m_offsets.end() - 1);
-    for (std::size_t i = 0; i < points.size(); ++i) m_items[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      m_items[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
   }
 
   double side() const { return m_side; }
@@ -113,7 +115,8 @@ class Ring_grid {
       double bound = std::numeric_limits<double>::infinity();
       for (int k = 0; k < D; ++k) {
         if (c[k] - r > 0) bound = std::min(bound, x[k] - (m_lo[k] + double(c[k] - r) * m_side));
-        if (c[k] + r < m_cells[k] - 1) bound = std::min(bound, m_lo[k] + double(c[k] + r + 1) * m_side - x[k]);
+        if (c[k] + r < m_cells[k] - 1)
+          bound = std::min(bound, m_lo[k] + double(c[k] + r + 1) * m_side - x[k]);
       }
       if (std::isinf(bound)) break;
       if (arg != std::numeric_limits<std::uint32_t>::max() && bound > 0 &&
@@ -147,7 +150,8 @@ class Ring_grid {
  private:
   std::int64_t clamp_cell(double v, int k) const {
     if (!(v > 0)) return 0;  // also NaN
-    return std::min<std::int64_t>(m_cells[k] - 1, v >= double(m_cells[k]) ? m_cells[k] - 1 : static_cast<std::int64_t>(v));
+    return std::min<std::int64_t>(m_cells[k] - 1,
+                                  v >= double(m_cells[k]) ? m_cells[k] - 1 : static_cast<std::int64_t>(v));
   }
   std::array<std::int64_t, D> cell(const Point& p) const {
     std::array<std::int64_t, D> c;
@@ -156,7 +160,8 @@ class Ring_grid {
   }
   std::size_t linear(const std::array<std::int64_t, D>& c) const {
     std::size_t i = 0;
-    for (int k = D - 1; k >= 0; --k) i = i * static_cast<std::size_t>(m_cells[k]) + static_cast<std::size_t>(c[k]);
+    for (int k = D - 1; k >= 0; --k)
+      i = i * static_cast<std::size_t>(m_cells[k]) + static_cast<std::size_t>(c[k]);
     return i;
   }
   // Calls f(cell index) for the cells at Chebyshev distance exactly r from c, inside the grid.

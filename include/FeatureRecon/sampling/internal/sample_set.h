@@ -18,9 +18,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,8 +40,8 @@ struct Sample_set {
   std::vector<Feature> features;
   typename Traits::Compute_feature_distance feature_distance;
 
-  /// `compared`: whether features will be compared (a finite sigma_feature); only then must each be at a finite
-  /// distance from itself (checked; throws naming the item).
+  /// `compared`: whether features will be compared (a finite sigma_feature); only then must each be at a
+  /// finite distance from itself (checked; throws naming the item).
   template <class ItemRange>
   Sample_set(const ItemRange& items, const Traits& traits, const char* fn, bool compared = true)
       : feature_distance(traits.compute_feature_distance_object()) {
@@ -58,23 +58,26 @@ struct Sample_set {
       for (int k = 0; k < D; ++k) {
         q[k] = CGAL::to_double(p[k]);
         if (!std::isfinite(q[k]))
-          FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a non-finite coordinate (", q[k], ")");
+          FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a non-finite coordinate (",
+                                                         q[k], ")");
         // Squared distances, areas and volumes of the extent must stay finite doubles.
         if (!(std::fabs(q[k]) <= max_coordinate))
-          FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has coordinate ", q[k],
-                                                         " beyond +-1e100 (squared distances and volumes would "
-                                                         "overflow); scale the input");
+          FeatureRecon::internal::throw_invalid_argument(
+              fn, "item ", i, " has coordinate ", q[k],
+              " beyond +-1e100 (squared distances and volumes would "
+              "overflow); scale the input");
       }
       positions.push_back(q);
       features.push_back(construct_feature(item));
       // A feature must be at a finite distance from itself: a zero normal or a NaN channel is not, and would
       // make every comparison with it false (never a conflict: such items were always kept).
-      const double self = compared ? CGAL::to_double(feature_distance(features.back(), features.back())) : 0.0;
+      const double self =
+          compared ? CGAL::to_double(feature_distance(features.back(), features.back())) : 0.0;
       if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))
-        FeatureRecon::internal::throw_invalid_argument(fn, "item ", i, " has a feature at distance ",
-                                                       std::isnan(self) || self < 0 ? std::string("NaN")
-                                                                                    : std::to_string(self),
-                                                       " from itself (a zero normal, or NaN in the feature)");
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "item ", i, " has a feature at distance ",
+            std::isnan(self) || self < 0 ? std::string("NaN") : std::to_string(self),
+            " from itself (a zero normal, or NaN in the feature)");
       ++i;
     }
   }
@@ -109,9 +112,9 @@ struct Sample_set {
 /// (a sigma of 1e-160 squared is 0, and darts then never stopped).
 inline bool is_usable_scale(double sigma) { return sigma >= 1e-150 && sigma <= 1e150; }
 
-/// The bound of the spatial prefilter |dp|^2 < reach^2 of the samplers' neighbour searches: reach^2, or infinity
-/// (no prefilter: the metric decides) where that square underflows and pairs within reach, copies at distance 0
-/// among them, would be rejected.
+/// The bound of the spatial prefilter |dp|^2 < reach^2 of the samplers' neighbour searches: reach^2, or
+/// infinity (no prefilter: the metric decides) where that square underflows and pairs within reach, copies at
+/// distance 0 among them, would be rejected.
 inline double prefilter_bound(double reach) {
   return reach * reach >= 0x1p-960 ? reach * reach : std::numeric_limits<double>::infinity();
 }
@@ -127,16 +130,17 @@ inline void check_sigmas(double sigma_position, double sigma_feature, const char
 }
 
 /// Checks that positions spanning `extent` are measured in units of sigma_position without overflow of the
-/// squared bilateral distances: extent / sigma_position at most 2^400 (each alone was accepted, but positions of
-/// 1e100 with sigma_position 1e-150 made every distance infinite, and the samplers returned arbitrary sets with
-/// status success). A span far below sigma_position is degenerate geometry (all items at about one place), which
-/// each sampler handles.
+/// squared bilateral distances: extent / sigma_position at most 2^400 (each alone was accepted, but positions
+/// of 1e100 with sigma_position 1e-150 made every distance infinite, and the samplers returned arbitrary sets
+/// with status success). A span far below sigma_position is degenerate geometry (all items at about one
+/// place), which each sampler handles.
 inline void check_position_scale(double extent, double sigma_position, const char* fn) {
   const double ratio = extent / sigma_position;
   if (!(ratio <= 0x1p400))
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "sigma_position (", sigma_position, ") is too small for positions spanning ", extent, ": the span in units ",
-        "of sigma_position (", ratio, ") must be at most 2^400 (about 2.6e120), else squared bilateral distances "
+        fn, "sigma_position (", sigma_position, ") is too small for positions spanning ", extent,
+        ": the span in units ", "of sigma_position (", ratio,
+        ") must be at most 2^400 (about 2.6e120), else squared bilateral distances "
         "overflow; scale the positions or sigma_position");
 }
 
@@ -144,26 +148,29 @@ inline void check_position_scale(double extent, double sigma_position, const cha
 /// dimension of the positions).
 inline void check_domain(double measure, int intrinsic_dimension, int position_dimension, const char* fn) {
   if (!(measure >= 0 && std::isfinite(measure)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ", measure);
+    FeatureRecon::internal::throw_invalid_argument(fn, "domain_measure must be finite and >= 0, got ",
+                                                   measure);
   if (intrinsic_dimension != 0 && intrinsic_dimension != 2 && intrinsic_dimension != 3)
-    FeatureRecon::internal::throw_invalid_argument(fn, "intrinsic_dimension must be 0 (automatic), 2 or 3, got ",
-                                                   intrinsic_dimension);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "intrinsic_dimension must be 0 (automatic), 2 or 3, got ", intrinsic_dimension);
   if (intrinsic_dimension > position_dimension)
     FeatureRecon::internal::throw_invalid_argument(fn, "intrinsic_dimension ", intrinsic_dimension,
-                                                   " exceeds the dimension of the positions (", position_dimension,
-                                                   ")");
+                                                   " exceeds the dimension of the positions (",
+                                                   position_dimension, ")");
 }
 
 /// Checks an exact output count against the number of items.
 inline void check_count(std::size_t count, std::size_t n, const char* fn) {
   if (count > n)
-    FeatureRecon::internal::throw_invalid_argument(fn, "count (", count, ") exceeds the number of items (", n, ")");
+    FeatureRecon::internal::throw_invalid_argument(fn, "count (", count, ") exceeds the number of items (", n,
+                                                   ")");
 }
 
 /// Calls f(metric) with the metric the options describe.
 template <class Options, class F>
 decltype(auto) with_metric(const Options& o, F&& f) {
-  if (o.form == Bilateral_form::exponential) return f(Exponential_bilateral_metric{o.sigma_position, o.sigma_feature});
+  if (o.form == Bilateral_form::exponential)
+    return f(Exponential_bilateral_metric{o.sigma_position, o.sigma_feature});
   return f(Gaussian_bilateral_metric{o.sigma_position, o.sigma_feature});
 }
 
@@ -180,7 +187,8 @@ struct Knn_3 {
     tree.insert(q.begin(), q.end());
     tree.build();
   }
-  /// Squared distances and points of the k nearest other points of x (x itself, at distance 0, is skipped once).
+  /// Squared distances and points of the k nearest other points of x (x itself, at distance 0, is skipped
+  /// once).
   std::vector<std::pair<double, K::Point_3>> query(const std::array<double, 3>& x, unsigned k) const {
     Search s(tree, K::Point_3(x[0], x[1], x[2]), k + 1);
     std::vector<std::pair<double, K::Point_3>> out;
@@ -197,8 +205,8 @@ struct Knn_3 {
   }
 };
 
-/// The distinct positions, each where it first occurs (the estimates below take them: copies are neighbours at
-/// distance 0). Without copies, `p` itself.
+/// The distinct positions, each where it first occurs (the estimates below take them: copies are neighbours
+/// at distance 0). Without copies, `p` itself.
 template <std::size_t D>
 std::vector<std::array<double, D>> distinct_positions(const std::vector<std::array<double, D>>& p) {
   std::vector<std::uint32_t> order(p.size());
@@ -213,13 +221,14 @@ std::vector<std::array<double, D>> distinct_positions(const std::vector<std::arr
   return out;
 }
 
-/// Moves every copy after the first (in index order) of a position by `step` along a direction fixed by its index
-/// (golden-angle spiral: on the circle in 2D, on the sphere in 3D), so that coincident sites separate where
-/// nothing else would move them apart. `position(i)` is a reference to the D coordinates of site i. A move that
-/// would leave [lo, hi] (when given) goes the opposite way, clamped to the box (which may be thinner than `step`).
+/// Moves every copy after the first (in index order) of a position by `step` along a direction fixed by its
+/// index (golden-angle spiral: on the circle in 2D, on the sphere in 3D), so that coincident sites separate
+/// where nothing else would move them apart. `position(i)` is a reference to the D coordinates of site i. A
+/// move that would leave [lo, hi] (when given) goes the opposite way, clamped to the box (which may be
+/// thinner than `step`).
 template <int D, class Position>
-void separate_copies(std::size_t n, double step, Position&& position, const std::array<double, D>* lo = nullptr,
-                     const std::array<double, D>* hi = nullptr) {
+void separate_copies(std::size_t n, double step, Position&& position,
+                     const std::array<double, D>* lo = nullptr, const std::array<double, D>* hi = nullptr) {
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
   std::vector<std::array<double, D>> original(n);
@@ -297,9 +306,9 @@ double bounding_box_measure(const std::vector<std::array<double, D>>& p) {
   return m;
 }
 
-/// Affine dimension of the positions (0 for one position, 1 collinear, 2 coplanar, else D), decided by Epick's
-/// exact orientation predicates on the positions as doubles, and the longest distance from the first point
-/// (for collinear input: at least half the length of the segment they span).
+/// Affine dimension of the positions (0 for one position, 1 collinear, 2 coplanar, else D), decided by
+/// Epick's exact orientation predicates on the positions as doubles, and the longest distance from the first
+/// point (for collinear input: at least half the length of the segment they span).
 template <int D>
 int affine_dimension(const std::vector<std::array<double, D>>& p) {
   using Epick = CGAL::Epick;

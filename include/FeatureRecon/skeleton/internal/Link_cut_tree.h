@@ -91,7 +91,8 @@ class Link_cut_tree {
   std::int32_t connected_path_min(std::int32_t x, std::int32_t y) {
     evert(x);
     access(y);
-    const std::int32_t r = splay_leftmost(y);  // the root of y's tree, now the root of the splay of path root..y
+    const std::int32_t r =
+        splay_leftmost(y);  // the root of y's tree, now the root of the splay of path root..y
     // Not connected: x's tree was not touched since evert(x), so x is still its root and a splay root.
     return r == x ? m_nodes[r].min_node : null;
   }
@@ -118,7 +119,8 @@ class Link_cut_tree {
 
   /// Makes x, a node without any link, a child of y. O(1).
   void attach_isolated(std::int32_t x, std::int32_t y) {
-    FEATURERECON_precondition(m_nodes[x].parent == null && m_nodes[x].child[0] == null && m_nodes[x].child[1] == null);
+    FEATURERECON_precondition(m_nodes[x].parent == null && m_nodes[x].child[0] == null &&
+                              m_nodes[x].child[1] == null);
     m_nodes[x].parent = y;
   }
 
