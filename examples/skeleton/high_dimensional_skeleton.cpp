@@ -203,8 +203,8 @@ int main(int argc, char** argv) {
       "true graph: 2 loops, 1 leaf, 2 branch nodes (the touching point, of degree 4, where %zu pair(s) of\n"
       "  forks were merged, and the foot of the tail)\n",
       s.merged_branch_arcs);
-  const double bound =
-      0.7 * rips_radius;  // the bound the tests state (doc/skeleton.md, "Graphs in high dimension")
+  // the bound the tests state (doc/skeleton.md, "Graphs in high dimension")
+  const double bound = 0.7 * rips_radius;
   std::printf("every arc within 0.7 x radius = %.3f of the true graph: %s (farthest vertex %.2f)\n", bound,
               farthest <= bound ? "yes" : "no", farthest);
   // Without a radius: estimate_rips_radius() reads one off the points (the scale where they look

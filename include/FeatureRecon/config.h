@@ -16,10 +16,10 @@ using Progress_callback = std::function<bool(double)>;
 
 /// Outcome of an algorithm run.
 enum class Status {
-  success,           ///< the run completed on non-degenerate input
-  degenerate_input,  ///< the run completed; the input was empty or lower-dimensional (documented per
-                     ///< algorithm)
-  interrupted        ///< the progress callback returned false; the result is partial
+  success,  ///< the run completed on non-degenerate input
+  /// the run completed; the input was empty or lower-dimensional (documented per algorithm)
+  degenerate_input,
+  interrupted  ///< the progress callback returned false; the result is partial
 };
 
 namespace internal {

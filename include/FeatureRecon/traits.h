@@ -187,12 +187,12 @@ struct Property_map_traits {
   using FT = typename K::FT;  ///< number type
   using Point = std::conditional_t<Dimension == 2, typename K::Point_2, typename K::Point_3>;  ///< position
   using Item = Item_;                                                                          ///< value type
-  using Feature =
-      std::decay_t<decltype(std::declval<const FeatureMap&>()(std::declval<const Item&>()))>;  ///< feature
-  static constexpr int dimension = Dimension;                                                  ///< 2 or 3
-  PointMap point_map;                ///< item -> position
-  FeatureMap feature_map;            ///< item -> feature
-  FeatureDistance feature_distance;  ///< squared feature distance
+  /// feature
+  using Feature = std::decay_t<decltype(std::declval<const FeatureMap&>()(std::declval<const Item&>()))>;
+  static constexpr int dimension = Dimension;  ///< 2 or 3
+  PointMap point_map;                          ///< item -> position
+  FeatureMap feature_map;                      ///< item -> feature
+  FeatureDistance feature_distance;            ///< squared feature distance
   /// The position of an item, through the point map.
   struct Construct_point {
     const PointMap* map;                                                ///< the traits' map

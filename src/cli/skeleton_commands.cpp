@@ -656,8 +656,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
       throw Usage_error("--heading-tolerance must be in [0, 180] degrees");
     std::vector<Gps_trip> trips;
-    io::Track_origin
-        origin;  // to name the file, line and trip id where the library names trip and fix indices
+    // to name the file, line and trip id where the library names trip and fix indices
+    io::Track_origin origin;
     for (const auto& trip : io::read_track_trips(args.get("tracks"), &origin)) {
       trips.emplace_back();
       for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
@@ -756,8 +756,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"length_before_merge\": " +
                  json_number(use_merged ? road.merged.length_before : unmerged_length) +
                  ", \"length\": " + json_number(use_merged ? road.merged.length_after : unmerged_length);
-    if (use_merged) {  // how the written lines were drawn (the fields below without merge_ drew the skeleton
-                       // before)
+    // how the written lines were drawn (the fields below without merge_ drew the skeleton before)
+    if (use_merged) {
       const Embedding_options& drawn = skeleton::road_map_merge_options(road.used).embedding;
       input_json += std::string(", \"merge_smoothing\": \"") +
                     (drawn.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian") +

@@ -397,8 +397,8 @@ int run_stipple(const std::vector<std::string>& argv) {
     inked += d > 0;
   }
   if (!(total > 0)) {
-    double ink =
-        0;  // the darkness itself: a large --gamma makes every power of a darkness below 1 underflow to 0
+    // the darkness itself: a large --gamma makes every power of a darkness below 1 underflow to 0
+    double ink = 0;
     for (const double d : darkness(image, 1.0)) ink += d;
     if (ink > 0)
       throw Usage_error("--gamma " + json_number(s.gamma) + " makes the darkness of every pixel of " + input +

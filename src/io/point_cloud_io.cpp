@@ -331,8 +331,8 @@ std::string ply_problem(const std::string& path, bool& normals, bool& colors) {
           if (q.count_size == 0) {
             if (left < q.size) return truncated(i);
             left -= q.size;
-            in.ignore(
-                static_cast<std::streamsize>(q.size));  // not seekg: that drops the read buffer every time
+            // not seekg: that drops the read buffer every time
+            in.ignore(static_cast<std::streamsize>(q.size));
             continue;
           }
           if (left < q.count_size || !in.read(reinterpret_cast<char*>(count), std::streamsize(q.count_size)))

@@ -17,8 +17,8 @@ namespace io {
 struct Point_cloud {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<double, 3>> normals;  ///< empty when the file has none
-  std::vector<std::array<unsigned char, 3>>
-      colors;  ///< red, green, blue; empty when the file has none (PLY only)
+  /// red, green, blue; empty when the file has none (PLY only)
+  std::vector<std::array<unsigned char, 3>> colors;
   bool has_normals() const { return !normals.empty(); }
   bool has_colors() const { return !colors.empty(); }
 };

@@ -351,8 +351,8 @@ TEST(BilateralDartThrowing, BadInputNamesTheProblem) {
   EXPECT_THROW(bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o), std::invalid_argument);
   EXPECT_THROW(bilateral_dart_throwing_count(p, 11, std::back_inserter(kept)), std::invalid_argument);
   Dart_throwing_count_options no_steps;
-  no_steps.max_iterations =
-      0;  // returned the first 5 items of the order with radius 0, as "degenerate input"
+  // returned the first 5 items of the order with radius 0, as "degenerate input"
+  no_steps.max_iterations = 0;
   expect_invalid_argument([&] { bilateral_dart_throwing_count(p, 5, std::back_inserter(kept), no_steps); },
                           "max_iterations must be >= 1");
   // Scales whose square is not a normal double (1e-160 squared is 0: the count search never ended).

@@ -65,8 +65,8 @@ struct Segment_graph {
   std::size_t dimension = 0;
   std::vector<std::vector<double>> vertices;
   std::vector<std::array<std::size_t, 2>> segments;
-  std::vector<std::size_t>
-      graph_vertices;  ///< vertices that are nodes of the graph (polygon corners are not)
+  /// vertices that are nodes of the graph (polygon corners are not)
+  std::vector<std::size_t> graph_vertices;
 
   std::vector<std::size_t> degrees() const {
     std::vector<std::size_t> deg(vertices.size(), 0);

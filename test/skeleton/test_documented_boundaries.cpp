@@ -100,8 +100,8 @@ TEST(DocumentedBoundaries, ConnectDeadEndsBreaksDistanceTiesBySmallestVertex) {
 
 // Embedding_options::level_width: "0 (default) means automatic: 1/64 of the range of f over the graph".
 TEST(DocumentedBoundaries, AutomaticLevelWidthIsOneSixtyFourthOfTheRange) {
-  Reeb_graph
-      G;  // one arc from f 0 to f 64 with a point at every f 0.5, 1.5, ..., 63.5: one per bin of width 1
+  // one arc from f 0 to f 64 with a point at every f 0.5, 1.5, ..., 63.5: one per bin of width 1
+  Reeb_graph G;
   G.nodes = {node(0, 0), node(1, 64)};
   Reeb_graph::Arc arc;
   arc.lower = 0;
@@ -213,8 +213,8 @@ TEST(DocumentedBoundaries, TraceGraphHeadingToleranceIsInclusive) {
 // one "between 1 and 2 thresholds away"; crossing = samples within 2 thresholds, none aligned; absent =
 // nothing there.
 TEST(DocumentedBoundaries, UnmatchedSampleClassesAtTheirBoundaries) {
-  Map_comparison_result
-      r;  // every sample unmatched; distances exact: 15 (= threshold) and 27 (1.8 thresholds)
+  // every sample unmatched; distances exact: 15 (= threshold) and 27 (1.8 thresholds)
+  Map_comparison_result r;
   r.ground_truth_sample_list = {{{0, 0}, 0}, {{0, 100}, 0}, {{0, 200}, 0}, {{0, 500}, 0}};
   r.reconstruction_sample_list = {{{15, 0}, 0}, {{27, 100}, 0}, {{10, 200}, 90}};
   r.ground_truth_samples = 4;

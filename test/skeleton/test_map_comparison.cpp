@@ -319,8 +319,8 @@ TEST(TraceSupport, PinnedCases) {
   wide.radius = 20;
   EXPECT_EQ(along({trip_of({{-100, 15.01}, {100, 15.01}})}, wide), 1u);
   Trace_support_options any;
-  any.bearing_limit =
-      90;  // differences lie in [0, 90] and must be below the limit: perpendicular still fails
+  // differences lie in [0, 90] and must be below the limit: perpendicular still fails
+  any.bearing_limit = 90;
   EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}, any), 0u);
   any.bearing_limit = 90.5;
   EXPECT_EQ(along({trip_of({{0, -100}, {0, 100}})}, any), 1u);

@@ -1009,8 +1009,8 @@ TEST(MakeSimplicialComplex, RadixSortsMatchComparisonSorts) {
   const Simplicial_complex_2 K = make_simplicial_complex_2(1500, given, triangles, lengths, 2.5);
   ASSERT_EQ(K.edges.size(), 1499u + 1498u);  // the path and the chords v, v + 2
   for (std::size_t e = 0; e < K.edges.size(); ++e) {
-    const bool is_given =
-        K.edges[e][1] == K.edges[e][0] + 1 && K.edges[e][0] < 1498;  // (1498, 1499) is implied
+    // (1498, 1499) is implied
+    const bool is_given = K.edges[e][1] == K.edges[e][0] + 1 && K.edges[e][0] < 1498;
     EXPECT_EQ(K.edge_lengths[e], is_given ? 0.5 : 2.5) << "edge " << e;
   }
 }

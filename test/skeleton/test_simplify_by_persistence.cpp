@@ -450,8 +450,8 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_EQ(seen.front(), 0.0);
   EXPECT_EQ(seen.back(), 1.0);
-  EXPECT_TRUE(
-      std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.9; }));  // glued sweep
+  // glued sweep
+  EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.9; }));
   for (const double stop_at : {0.0, 0.15, 0.5, 0.95}) {
     std::size_t later = 0;
     bool refused = false;

@@ -81,8 +81,8 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
     FeatureRecon::internal::Dynamic_grid<2> grid(positions, reach,
                                                  static_cast<std::size_t>(std::min(expected, 0x1p40)) + 1);
     std::size_t failures = 0;
-    double reported =
-        0;  // the largest share of the failure budget seen (a success resets the run of failures)
+    // the largest share of the failure budget seen (a success resets the run of failures)
+    double reported = 0;
     while (failures < options.max_consecutive_failures &&
            (options.max_samples == 0 || result.samples.size() < options.max_samples)) {
       if ((result.darts & 65535) == 0 && result.darts != 0) {

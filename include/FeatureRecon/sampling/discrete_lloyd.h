@@ -53,8 +53,8 @@ enum class Site_update {
 template <int Dimension>
 struct Discrete_lloyd_options {
   double sigma_position = 1;  ///< spatial scale of xi; default 1
-  double sigma_feature =
-      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  /// feature scale; default infinity (Euclidean)
+  double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of xi
   /// Density rho of each item (>= 0, finite), aligned with the items: the weight in the centroids and the
   /// energy (for stippling, the darkness). Default empty: 1 for every item.
@@ -64,8 +64,8 @@ struct Discrete_lloyd_options {
   /// Stop when (E_prev - E) / E_prev < energy_tolerance after an iteration; default 0 (never). The bilateral
   /// energy need not decrease monotonically (features change with the positions); a rise also stops it then.
   double energy_tolerance = 0;
-  double move_tolerance =
-      0;  ///< stop when no site moved farther than this (units of the positions); default 0
+  /// stop when no site moved farther than this (units of the positions); default 0
+  double move_tolerance = 0;
   /// Area (2D items, surfaces) or volume of the domain for the relative radius; default 0: the bounding box
   /// of 2D items widened by one item spacing (so a W x H image of pixels has area W H), the estimated surface
   /// area of 3D surface items, the bounding box of volume items widened by one item spacing.
@@ -83,8 +83,8 @@ struct Discrete_lloyd_options {
 
 /// The discrete bilateral Voronoi sets of some sites: bilateral_voronoi_assignment().
 struct Bilateral_assignment {
-  std::vector<std::uint32_t>
-      site;                  ///< per item: the index of its site (nearest in xi, ties to the lowest index)
+  /// per item: the index of its site (nearest in xi, ties to the lowest index)
+  std::vector<std::uint32_t> site;
   std::vector<double> mass;  ///< per site: the density of its items
   double energy = 0;         ///< sum over items of rho(x) xi(x, site)^2
 };
@@ -303,8 +303,8 @@ class Item_domain {
   Sample_set<Traits> S;
   double measure = 0;
   bool compared_features = true;  // features compared (finite sigma_feature): sites' features are checked too
-  int intrinsic =
-      0;  // 2 or 3; 0: estimated when the packing distance asks (not for every step of a stage call)
+  // 2 or 3; 0: estimated when the packing distance asks (not for every step of a stage call)
+  int intrinsic = 0;
   Point lo{}, hi{};
   Ring_grid<D> item_grid;
 };

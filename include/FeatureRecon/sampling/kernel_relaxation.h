@@ -62,15 +62,15 @@ enum class Kernel_constraint {
 template <int Dimension>
 struct Kernel_relaxation_options {
   double sigma_position = 1;  ///< spatial scale of xi; default 1
-  double sigma_feature =
-      std::numeric_limits<double>::infinity();  ///< feature scale; default infinity (Euclidean)
+  /// feature scale; default infinity (Euclidean)
+  double sigma_feature = std::numeric_limits<double>::infinity();
   /// tau, the kernel width in units of xi (the spatial width is tau sigma_position). Default 0:
   /// d_hex / (2 sigma_position) with d_hex = sqrt(2 A / (sqrt(3) N)), the spacing of N sites on a hexagonal
   /// lattice over the domain's area A (measured on 200 sites from dart throwing and from white noise, 100
   /// steps: rho 0.85 and 0.81 at d_hex / 2, 0.69 and 0.65 at d_hex, 0.79 and 0.73 at 0.3 d_hex).
   double kernel_width = 0;
-  double cutoff =
-      3;  ///< pairs farther apart than cutoff kernel widths are ignored (exp(-9) ~ 1e-4); default 3
+  /// pairs farther apart than cutoff kernel widths are ignored (exp(-9) ~ 1e-4); default 3
+  double cutoff = 3;
   /// Density rho of each item (>= 0, finite), aligned with the items. A site takes the scale
   /// s = (mean rho / rho_bar)^(1/k) of the item nearest to it, clamped to [1/8, 8] (k = 2 for images and
   /// surfaces, 3 for volumes), so sites crowd where rho is high (stippling: the darkness). rho_bar is rho
@@ -88,8 +88,8 @@ struct Kernel_relaxation_options {
   double initial_step = 0.25;
   /// Stop when an accepted step lowers E by less than this fraction of E; default 1e-6.
   double energy_tolerance = 1e-6;
-  double move_tolerance =
-      0;  ///< stop when no site moved farther than this (units of the positions); default 0
+  /// stop when no site moved farther than this (units of the positions); default 0
+  double move_tolerance = 0;
   /// Area (2D items, surfaces) or volume of the domain for the default kernel width and the relative radius;
   /// default 0: as discrete_bilateral_lloyd() estimates it.
   double domain_measure = 0;

@@ -62,12 +62,12 @@ struct Lloyd_options {
 
 /// Result of lloyd_step().
 struct Lloyd_step_result {
-  std::vector<std::array<double, 2>>
-      centroids;  ///< per site: the centroid of its cell (the site itself when the cell has no mass)
+  /// per site: the centroid of its cell (the site itself when the cell has no mass)
+  std::vector<std::array<double, 2>> centroids;
   std::vector<double> mass;  ///< per site: the density integral over its cell
   double energy = 0;         ///< CVT energy of the sites given to the step
-  double minimum_distance =
-      0;  ///< shortest distance between two sites at distinct positions (infinity for fewer than two)
+  /// shortest distance between two sites at distinct positions (infinity for fewer than two)
+  double minimum_distance = 0;
   std::size_t duplicates = 0;  ///< sites at the position of a lower-indexed site (their cells are empty)
 };
 
@@ -384,8 +384,8 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
   using Edge_task = Voronoi_builder::Edge_task;
   std::vector<Edge_task>& edges = work.edges;
   edges.clear();
-  std::vector<std::uint32_t>& ring_start =
-      work.ring_start;  // per interior site: its edges (counts, then offsets)
+  // per interior site: its edges (counts, then offsets)
+  std::vector<std::uint32_t>& ring_start = work.ring_start;
   ring_start.assign(n + 1, 0);
   for (auto e = voronoi.dt.finite_edges_begin(); e != voronoi.dt.finite_edges_end(); ++e) {
     const auto f = e->first;

@@ -163,8 +163,9 @@ class Pixel_density {
     double ty = (ny - ay) * idy;
     double x0 = ax, y0 = ay;
     Integrands start;
-    bool have_start = false;  // F, G, Q are continuous in x along a row: a piece that starts where the last
-                              // one crossed a vertical side reuses its end values
+    // F, G, Q are continuous in x along a row: a piece that starts where the last one crossed a vertical side
+    // reuses its end values
+    bool have_start = false;
     for (;;) {
       double x1 = bx, y1 = by;
       bool last = true, vertical = false, horizontal = false;
@@ -262,8 +263,8 @@ class Pixel_density {
 
   int m_width = 0, m_height = 0;
   // Huge pages: a boundary walk jumps a row (32 (width + 1) bytes) at every horizontal pixel side.
-  std::vector<double, FeatureRecon::internal::Large_array_allocator<double>>
-      m_prefix;  // per row, per pixel side k = 0..width: F, G, Q at x = k, density of pixel k
+  // per row, per pixel side k = 0..width: F, G, Q at x = k, density of pixel k
+  std::vector<double, FeatureRecon::internal::Large_array_allocator<double>> m_prefix;
   double m_total = 0;
   double m_constant = -1;  // the density when every pixel has the same one, else -1
 };

@@ -88,11 +88,12 @@ struct Sampled_bilateral_filter_options {
 struct Bilateral_filter_result {
   /// The filtered image, width * height * channels values on the 0..255 scale, unrounded, rows from the top.
   std::vector<float> values;
-  std::size_t taps = 0;              ///< sampled taps over all output pixels (with multiplicity)
-  double taps_per_kernel_pixel = 0;  ///< sampled taps over the in-image pixels of all windows (the centre
-                                     ///< pixel read besides them is not counted; 1 for the exact filter)
-  double sampling_radius = 0;        ///< the dart radius in xi units (pixels); 0 for the exact filter
-  Status status = Status::success;   ///< degenerate_input for an empty image; interrupted when stopped
+  std::size_t taps = 0;  ///< sampled taps over all output pixels (with multiplicity)
+  /// sampled taps over the in-image pixels of all windows (the centre pixel read besides them is not counted;
+  /// 1 for the exact filter)
+  double taps_per_kernel_pixel = 0;
+  double sampling_radius = 0;       ///< the dart radius in xi units (pixels); 0 for the exact filter
+  Status status = Status::success;  ///< degenerate_input for an empty image; interrupted when stopped
 };
 
 /// A global tap pattern: blue-noise taps over the image, sorted by pixel (row-major), ties in the order the
@@ -100,8 +101,8 @@ struct Bilateral_filter_result {
 struct Tap_pattern {
   int width = 0;   ///< the image's width
   int height = 0;  ///< the image's height
-  std::vector<std::array<double, 2>>
-      positions;                      ///< continuous positions, x right, y down, in [0, w) x [0, h)
+  /// continuous positions, x right, y down, in [0, w) x [0, h)
+  std::vector<std::array<double, 2>> positions;
   std::vector<std::uint32_t> pixels;  ///< the pixel each tap reads, row * width + column
   std::vector<float> weights;         ///< the taps' density compensation (1 without it)
   double radius = 0;                  ///< the dart radius in xi units

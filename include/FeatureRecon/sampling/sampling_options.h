@@ -18,9 +18,9 @@ namespace sampling {
 
 /// Which form of the bilateral distance the samplers use (dissertation Eqns 2.4 and 2.5).
 enum class Bilateral_form {
-  gaussian,    ///< xi = sqrt(|dp|^2 / sigma_p^2 + |deta|^2 / sigma_eta^2): Euclidean in the stacked space
-  exponential  ///< xi = |dp| / sigma_p * exp(|deta|^2 / sigma_eta^2): the spatial distance over the feature
-               ///< similarity
+  gaussian,  ///< xi = sqrt(|dp|^2 / sigma_p^2 + |deta|^2 / sigma_eta^2): Euclidean in the stacked space
+  /// xi = |dp| / sigma_p * exp(|deta|^2 / sigma_eta^2): the spatial distance over the feature similarity
+  exponential
 };
 
 /// Gaussian bilateral distance (Eqn 2.4): xi = sqrt(|dp|^2 / sigma_position^2 + |deta|^2 / sigma_feature^2).
@@ -63,8 +63,8 @@ template <class OutputIterator>
 struct Sampling_result {
   OutputIterator out;        ///< the output iterator, advanced past the selected indices
   std::size_t selected = 0;  ///< number of indices written
-  double radius =
-      0;  ///< the bilateral radius used (elimination: r_max in xi units; per-item radii: the largest)
+  /// the bilateral radius used (elimination: r_max in xi units; per-item radii: the largest)
+  double radius = 0;
   Status status = Status::success;  ///< degenerate_input for an empty input; interrupted when stopped
 };
 
@@ -124,8 +124,8 @@ inline bool iteration_stops(bool keep_going, double max_move, double move_tolera
 /// Options of weighted_sample_elimination().
 struct Elimination_options {
   double sigma_position = 1;  ///< spatial scale of the metric; default 1
-  double sigma_feature =
-      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  /// feature scale; default infinity (Euclidean)
+  double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// r_max, the neighbourhood is 2 r_max, in units of the bilateral distance. Default 0: from the domain
   /// measure and the intrinsic dimension (hexagonal packing in 2D, r_max = sqrt(A / (2 sqrt(3) M)); FCC in
@@ -139,8 +139,8 @@ struct Elimination_options {
   /// have a flat neighbourhood (local PCA of 12 neighbours), else 3.
   int intrinsic_dimension = 0;
   double alpha = 8;  ///< exponent of the weight (1 - d / (2 r_max))^alpha (Yuksel 2015); default 8
-  bool weight_limiting =
-      true;  ///< clamp d below d_min = 2 r_max beta (1 - (M/N)^gamma), beta 0.65, gamma 1.5
+  /// clamp d below d_min = 2 r_max beta (1 - (M/N)^gamma), beta 0.65, gamma 1.5
+  bool weight_limiting = true;
   /// Refuse (std::invalid_argument) neighbour lists of more entries than this, found while they are counted
   /// and before they are stored (4 bytes an entry): a max_radius far above the packing radius makes every
   /// item a neighbour of every other (a 512 x 480 image at r_max 100,000 asks for 6e10; 30,000 points of a
@@ -150,15 +150,15 @@ struct Elimination_options {
   /// always passes.
   std::size_t max_neighbor_entries = 0;
   std::uint64_t seed = 0;  ///< breaks ties between equal weights (grids, images): a seeded permutation
-  Progress_callback
-      progress;  ///< fraction of the eliminations done; returning false stops (nothing is output)
+  /// fraction of the eliminations done; returning false stops (nothing is output)
+  Progress_callback progress;
 };
 
 /// Options of bilateral_dart_throwing().
 struct Dart_throwing_options {
   double sigma_position = 1;  ///< spatial scale of the metric; default 1
-  double sigma_feature =
-      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  /// feature scale; default infinity (Euclidean)
+  double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// Per-item radius r(s) in bilateral units (adaptive sampling), aligned with the items; two items conflict
   /// when xi < max(r(s), r(t)). Default empty: the uniform radius passed to the call.
@@ -187,8 +187,8 @@ struct Dart_throwing_count_options {
 /// Options of continuous_bilateral_dart_throwing().
 struct Continuous_dart_throwing_options {
   double sigma_position = 1;  ///< spatial scale of the metric; default 1
-  double sigma_feature =
-      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  /// feature scale; default infinity (Euclidean)
+  double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// Stop after this many consecutive rejected darts (the set is then close to maximal); default 10000.
   std::size_t max_consecutive_failures = 10000;

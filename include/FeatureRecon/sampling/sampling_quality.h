@@ -30,8 +30,8 @@ namespace sampling {
 /// Options of sampling_quality().
 struct Sampling_quality_options {
   double sigma_position = 1;  ///< spatial scale of the metric; default 1
-  double sigma_feature =
-      std::numeric_limits<double>::infinity();     ///< feature scale; default infinity (Euclidean)
+  /// feature scale; default infinity (Euclidean)
+  double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// Area (2D) or volume (3D) of the domain. Default 0: the bounding box of the samples (or the unit square /
   /// cube when `periodic`); for 3D positions with intrinsic_dimension 2, the area of the surface they sample,
@@ -55,11 +55,11 @@ struct Sampling_quality {
   /// d_hex: nearest distance of the densest packing of N points (hexagonal in 2D, FCC in 3D); 0 (not
   /// computed) when the status is degenerate_input.
   double hexagonal_distance = 0;
-  double minimum_distance =
-      0;  ///< smallest nearest-neighbour (bilateral) distance; 0 (not computed) when degenerate
+  /// smallest nearest-neighbour (bilateral) distance; 0 (not computed) when degenerate
+  double minimum_distance = 0;
   double relative_radius = 0;  ///< rho = minimum_distance / d_hex (1 for the hexagonal lattice)
-  double average_minimum_distance =
-      0;  ///< mean nearest-neighbour distance / d_hex (about 0.466 for white noise in 2D)
+  /// mean nearest-neighbour distance / d_hex (about 0.466 for white noise in 2D)
+  double average_minimum_distance = 0;
   /// degenerate_input for fewer than two samples, a domain of zero measure or samples of lower affine
   /// dimension (collinear, coplanar); interrupted when the progress callback stopped the run (statistics 0)
   Status status = Status::success;

@@ -62,8 +62,8 @@ struct Reeb_graph {
     Vertex_index vertex = 0;  ///< input vertex whose image is this node
     double value = 0;         ///< f(vertex)
     unsigned type = regular;  ///< Node_type flags
-    std::vector<Vertex_index>
-        members;  ///< other input vertices identified with this node (after simplification)
+    /// other input vertices identified with this node (after simplification)
+    std::vector<Vertex_index> members;
   };
   /// An arc between two nodes, with the regular input vertices mapped into it.
   struct Arc {
@@ -145,8 +145,8 @@ class Augmented_reeb_graph {
   std::vector<Vertex_index> m_order, m_rank;
   std::vector<Arc> m_arcs;
   std::vector<std::uint32_t> m_down_degree;
-  std::vector<std::size_t>
-      m_up_offset;  // by rank r: the arcs whose lower end has rank r, [m_up_offset[r], [r + 1])
+  // by rank r: the arcs whose lower end has rank r, [m_up_offset[r], [r + 1])
+  std::vector<std::size_t> m_up_offset;
   Status m_status = Status::success;
 };
 
@@ -230,8 +230,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     return true;
   };
   {
-    FeatureRecon::internal::Large_vector<std::pair<double, Vertex_index>> keyed(
-        n);  // contiguous keys sort faster than indirection
+    // contiguous keys sort faster than indirection
+    FeatureRecon::internal::Large_vector<std::pair<double, Vertex_index>> keyed(n);
     for (std::size_t i = 0; i < n; ++i) keyed[i] = {val[i], static_cast<Vertex_index>(i)};
     std::sort(keyed.begin(), keyed.end());
     R.m_order.resize(n);
@@ -346,8 +346,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     return Tri{vw, uv, uw};               // w v u
   };
   FeatureRecon::internal::Large_vector<Tri> tri(T);
-  FeatureRecon::internal::Large_vector<std::size_t> by_min(
-      n + 1);                               // triangles [by_min[s], by_min[s + 1]) have a at step s
+  // triangles [by_min[s], by_min[s + 1]) have a at step s
+  FeatureRecon::internal::Large_vector<std::size_t> by_min(n + 1);
   internal::Buckets<std::uint32_t> by_mid;  // triangles by the step of b
   {
     FeatureRecon::internal::Large_vector<std::size_t> first_tri(E + 1, 0);
@@ -411,8 +411,8 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   free_nodes.reserve(E);
   for (std::size_t i = E; i-- > 0;) free_nodes.push_back(static_cast<std::int32_t>(E + i));
   FeatureRecon::internal::Large_vector<std::int32_t> arc_of_root(E, -1);
-  FeatureRecon::internal::Large_vector<std::uint32_t> stamp(
-      E, 0);  // 2*step+1: seen below the vertex; 2*step+2: above
+  // 2*step+1: seen below the vertex; 2*step+2: above
+  FeatureRecon::internal::Large_vector<std::uint32_t> stamp(E, 0);
 
   // Number of forest edges at each level-set vertex: a vertex without any is its own tree, which lets
   // most links skip the connectivity query (every edge of K starts isolated).

@@ -60,8 +60,8 @@ struct Embedding_options {
 struct Reeb_graph_embedding {
   std::size_t dimension = 0;                          ///< 1, 2 or 3: min(input dimension, 3)
   std::vector<std::array<double, 3>> node_positions;  ///< per node (unused coordinates 0)
-  std::vector<std::vector<std::array<double, 3>>>
-      arc_polylines;  ///< per arc, first and last = node positions
+  /// per arc, first and last = node positions
+  std::vector<std::vector<std::array<double, 3>>> arc_polylines;
   /// Gaps of a polyline wider than this were bridged through the graph (Embedding_options::max_gap, or the
   /// value the automatic setting chose); infinity when nothing was bridged (no graph, or max_gap < 0).
   double max_gap = std::numeric_limits<double>::infinity();
@@ -461,8 +461,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       for (std::size_t t = 1; t + 1 < n; ++t)
         for (std::size_t k = 0; k < d; ++k) {
           const double x = line[t * d + k];
-          const double mean =
-              0.5 * line[(t - 1) * d + k] + 0.5 * line[(t + 1) * d + k];  // a sum could overflow
+          // a sum could overflow
+          const double mean = 0.5 * line[(t - 1) * d + k] + 0.5 * line[(t + 1) * d + k];
           next[t * d + k] = (1 - w) * x + w * mean;
           // Near the largest double, Taubin's (1 - w) x with w < 0 overflows: the same step as a move of x.
           if (!std::isfinite(next[t * d + k])) next[t * d + k] = x + w * (mean - x);
@@ -720,10 +720,10 @@ struct Classical_mds_options {
 
 /// Result of classical_mds_3d() with options.
 struct Classical_mds {
-  std::vector<std::array<double, 3>>
-      positions;  ///< one per row of D, as the two-argument overload returns them
-  Status status =
-      Status::success;  ///< interrupted when the progress callback stopped the run (positions all 0)
+  /// one per row of D, as the two-argument overload returns them
+  std::vector<std::array<double, 3>> positions;
+  /// interrupted when the progress callback stopped the run (positions all 0)
+  Status status = Status::success;
 };
 
 /// classical_mds_3d() that reports progress and can be stopped; the same positions when it runs to the end.

@@ -56,9 +56,9 @@ using Skeleton_graph =
 
 /// Options of extract_reeb_skeleton().
 struct Skeleton_options {
-  double delta = 0;            ///< persistence threshold of the simplification (function unit); default 0
-  double repair_distance = 0;  ///< join degree-1 nodes at most this far apart in input space, then simplify
-                               ///< again; 0 (default): no repair
+  double delta = 0;  ///< persistence threshold of the simplification (function unit); default 0
+  /// join degree-1 nodes at most this far apart in input space, then simplify again; 0 (default): no repair
+  double repair_distance = 0;
   /// With a repair distance: also join each remaining degree-1 node to the closest point of another arc
   /// within that distance, splitting the arc (connect_dead_ends(): T junctions with a gap). Default true.
   bool connect_dead_ends = true;
@@ -114,8 +114,8 @@ struct Reeb_skeleton {
   double level_width = 0;              ///< level width the embedding used
   /// Gaps wider than this were bridged through the complex (Reeb_graph_embedding::max_gap; infinity: none).
   double max_gap = std::numeric_limits<double>::infinity();
-  Status status =
-      Status::success;  ///< degenerate_input for no points; interrupted if the callback stopped it
+  /// degenerate_input for no points; interrupted if the callback stopped it
+  Status status = Status::success;
 };
 
 /// Builds the skeleton graph from a Reeb graph and its embedding (the last stage).
@@ -553,8 +553,8 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     const double median = median_edge_length(K, first, [&](std::size_t e) {
       return point_distance(projected[K.edges[e][0]].data(), projected[K.edges[e][1]].data(), 3);
     });
-    eo.max_gap =
-        median > 0 ? 2 * median : -1;  // none (all points copies of one): straight segments, as before
+    // none (all points copies of one): straight segments, as before
+    eo.max_gap = median > 0 ? 2 * median : -1;
   }
   eo.progress = stage(0.95, dimension > 3 ? 0.97 : 0.99);
   const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, projected, A.values(), dimension, eo);
@@ -719,8 +719,8 @@ Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius,
                                                    "rips_radius must be finite and >= 0, got ", rips_radius);
   Proximity_graph_options po;
   po.search = options.search;
-  bool stopped =
-      false;  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
+  // a stop inside the Rips stage ends the run even if the callback answers true afterwards
+  bool stopped = false;
   if (options.progress)
     po.progress = [&options, &stopped](double t) {
       return !(stopped = stopped || !options.progress(0.3 * t));
@@ -762,8 +762,8 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
   Skeleton_options rest = options;
   if (options.delta < 0) rest.delta = 0;  // checked with the estimate's delta standing in
   check_skeleton_options(rest, fn);
-  if (options.progress) {  // both callbacks hear the estimate (its own fraction, and the first tenth of the
-                           // run's)
+  // both callbacks hear the estimate (its own fraction, and the first tenth of the run's)
+  if (options.progress) {
     radius_options.progress = [&options, own = radius_options.progress](double t) {
       const bool go_on = !own || own(t);
       return options.progress(0.1 * t) && go_on;

@@ -181,15 +181,17 @@ struct Gps_trace_sample {
   std::size_t dropped_lateral = 0;           ///< ... of which only min_lateral_density dropped
   double segment_support = 0;                ///< value used (negative: no check)
   double segment_turn_tolerance = 0;         ///< value used
-  std::size_t checked_segments = 0;    ///< segments within the link gap, longer than 2 segment_support, with
-                                       ///< points to insert
+  /// segments within the link gap, longer than 2 segment_support, with points to insert
+  std::size_t checked_segments = 0;
   std::size_t confirmed_segments = 0;  ///< ... of which every inserted point lies near a fix
-  std::size_t locally_checked = 0;     ///< checked segments confirmed at a local distance below
-                                       ///< segment_support (Gps_trace_options::local_support_fixes)
-  std::size_t locally_rejected = 0;    ///< ... of which confirmed at segment_support but not at that distance
-  std::size_t straight_segments = 0;   ///< ... of the others, driven straight through (used)
-  std::size_t quiet_segments = 0;      ///< ... of which used for their quiet ends alone (the turn rule not
-                                       ///< trusted; Gps_trace_options::quiet_end_fixes)
+  /// checked segments confirmed at a local distance below segment_support
+  /// (Gps_trace_options::local_support_fixes)
+  std::size_t locally_checked = 0;
+  std::size_t locally_rejected = 0;   ///< ... of which confirmed at segment_support but not at that distance
+  std::size_t straight_segments = 0;  ///< ... of the others, driven straight through (used)
+  /// ... of which used for their quiet ends alone (the turn rule not trusted;
+  /// Gps_trace_options::quiet_end_fixes)
+  std::size_t quiet_segments = 0;
   std::size_t straight_checked = 0;    ///< checked segments driven straight through (confirmed or not)
   std::size_t straight_confirmed = 0;  ///< ... of which confirmed by fixes
   bool turn_rule_used = true;       ///< straight unconfirmed segments kept (min_straight_confirmed_fraction)
@@ -588,8 +590,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     auto local_support = [&](const Gps_fix& f) {
       if (!place_index) return support;
       const std::array<double, 2> at{f.x, f.y};
-      const std::size_t q = static_cast<std::size_t>(std::lower_bound(places.begin(), places.end(), at) -
-                                                     places.begin());  // f is one of the places
+      // f is one of the places
+      const std::size_t q =
+          static_cast<std::size_t>(std::lower_bound(places.begin(), places.end(), at) - places.begin());
       if (local_at[q] >= 0) return local_at[q];
       double result = support;
       if (fixes_within(f.x, f.y, support2, local_k) == local_k) {
@@ -826,8 +829,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
         const Gps_fix& p = trips[t][o[i - 1]];
         if (!(S.max_link_gap > 0 && std::hypot(f.x - p.x, f.y - p.y) <= S.max_link_gap) ||
             use[t][i - 1] == break_trip)
-          previous =
-              std::numeric_limits<std::uint32_t>::max();  // a gap or a corner cut: the trip restarts here
+          // a gap or a corner cut: the trip restarts here
+          previous = std::numeric_limits<std::uint32_t>::max();
       }
       link(s);
       if (i + 1 < o.size() && S.max_link_gap > 0) {

@@ -779,16 +779,15 @@ inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth,
 
 /// Why the unmatched samples of one map found no partner in the other (see explain_unmatched_samples()).
 struct Unmatched_sample_counts {
-  std::size_t taken =
-      0;  ///< an aligned sample of the other map lies within the threshold, yet the
-          ///< matching paired the two with nothing or with others: mostly because that sample
-          ///< was matched to another, where the maps differ in multiplicity (a parallel line, e.g.
-          ///< the second carriageway of a divided road, present in one map only); rarely because
-          ///< it was not among the `candidates` nearest ones the greedy matching considers
-  std::size_t offset =
-      0;  ///< the nearest aligned sample of the other map lies between 1 and 2 thresholds away
-  std::size_t crossing =
-      0;  ///< within 2 thresholds the other map has samples, none aligned (a street crossing)
+  /// an aligned sample of the other map lies within the threshold, yet the matching paired the two with
+  /// nothing or with others: mostly because that sample was matched to another, where the maps differ in
+  /// multiplicity (a parallel line, e.g. the second carriageway of a divided road, present in one map
+  /// only); rarely because it was not among the `candidates` nearest ones the greedy matching considers
+  std::size_t taken = 0;
+  /// the nearest aligned sample of the other map lies between 1 and 2 thresholds away
+  std::size_t offset = 0;
+  /// within 2 thresholds the other map has samples, none aligned (a street crossing)
+  std::size_t crossing = 0;
   std::size_t absent = 0;  ///< the other map has nothing within 2 thresholds
 };
 
@@ -1101,8 +1100,8 @@ inline Trace_support_breakdown explain_trace_support(const Map_comparison_result
 
 /// Options of crop_map_to_trips().
 struct Map_crop_options {
-  double radius =
-      25;  ///< an edge stays when every sample of it lies within this of a trace point; default 25
+  /// an edge stays when every sample of it lies within this of a trace point; default 25
+  double radius = 25;
   double sample_interval = 5;  ///< the edges' samples, from one end, the other end included; default 5
   /// The trace points: the fixes, and between two consecutive fixes of a trip (by time) at most max_gap
   /// apart, points that cut the segment into equal pieces of at most trace_step; default 10
@@ -1221,8 +1220,8 @@ inline Cropped_map crop_map_to_trips(const Embedded_graph_2& map, const std::vec
     const auto& a = map.positions[e[0]];
     const auto& b = map.positions[e[1]];
     const double len = length(e);
-    const auto steps =
-        static_cast<std::uint64_t>(std::floor(len / options.sample_interval)) + 1;  // reaches b
+    // reaches b
+    const auto steps = static_cast<std::uint64_t>(std::floor(len / options.sample_interval)) + 1;
     bool keep = !points.empty();
     for (std::uint64_t i = 0; keep && i <= steps; ++i) {
       const double u = len > 0 ? std::min(1.0, static_cast<double>(i) * options.sample_interval / len) : 0.0;

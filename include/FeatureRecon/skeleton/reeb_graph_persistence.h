@@ -95,8 +95,8 @@ inline Reeb_graph_persistence reeb_graph_persistence(
   std::iota(extreme.begin(), extreme.end(), std::size_t(0));  // lowest node of the component
   struct Loop_birth {
     std::size_t fork, branch, arc;
-    std::size_t earlier;  // the fork's earlier arcs: below[fork][0, earlier) (not copied: a fork of degree k
-                          // would store O(k^2))
+    // the fork's earlier arcs: below[fork][0, earlier) (not copied: a fork of degree k would store O(k^2))
+    std::size_t earlier;
   };
   std::vector<Loop_birth> loop_births;
   for (std::size_t v = 0; v < n; ++v) {

@@ -552,8 +552,8 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
     highest[c] = i;
   }
   std::vector<bool> drop_node(n, false), drop_arc(R.arcs.size(), false);
-  std::vector<std::size_t> degree(
-      n);  // as stubs go: a fork left with two arcs is no fork (a Y keeps a branch)
+  // as stubs go: a fork left with two arcs is no fork (a Y keeps a branch)
+  std::vector<std::size_t> degree(n);
   for (std::size_t i = 0; i < n; ++i) degree[i] = incident[i].size();
   std::vector<Reeb_graph::Node> nodes = R.nodes;
   for (std::size_t c = 0; c < n; ++c) {

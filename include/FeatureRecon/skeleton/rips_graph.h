@@ -596,8 +596,8 @@ namespace internal {
 /// What the Rips search left to its slower stages (for tests: the work an outlier or extreme coordinates
 /// cause).
 struct Rips_search_counts {
-  std::size_t refined =
-      0;  ///< pairs the brute force's float enclosure could not decide, computed again in double
+  /// pairs the brute force's float enclosure could not decide, computed again in double
+  std::size_t refined = 0;
   std::size_t exact = 0;  ///< pairs decided by the exact predicate
 };
 
@@ -899,8 +899,8 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
       keep_nearest(index.rows ? index.rows[i] : i, need_order);
     };
     std::size_t rows_done = 0;  // for the progress reports
-    double progress_scale =
-        1;  // with several groups their rows take [0, 0.9], the points searched among all the rest
+    // with several groups their rows take [0, 0.9], the points searched among all the rest
+    double progress_scale = 1;
     // Calls found(i) with the kk nearest of each indexed point i within the index in cand.
     const auto search = [&](const internal::Brute_force_index& index, auto&& found) {
       const std::size_t size = index.size, block = 256;

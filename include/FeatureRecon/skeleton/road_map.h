@@ -127,10 +127,10 @@ struct Road_merge_result {
   double spacing = 0;                  ///< value used
   double delta = 0;                    ///< value used
   double level_width = 0;              ///< the embedding's level width used (Reeb_skeleton::level_width)
-  double max_gap =
-      std::numeric_limits<double>::infinity();  ///< the embedding's max_gap used (Reeb_skeleton::max_gap)
-  Status status =
-      Status::success;  ///< degenerate_input for a map without vertices; interrupted by the callback
+  /// the embedding's max_gap used (Reeb_skeleton::max_gap)
+  double max_gap = std::numeric_limits<double>::infinity();
+  /// degenerate_input for a map without vertices; interrupted by the callback
+  Status status = Status::success;
 };
 
 namespace internal {
@@ -568,8 +568,8 @@ struct Road_map {
   /// merging: merged.skeleton's nodes first, then its polylines' interior points.
   Embedded_graph_2 map;
   Reeb_skeleton skeleton;  ///< the skeleton graph of the samples with its stage counts (before merging)
-  Road_merge_result
-      merged;  ///< the merging stage (its `map` is moved to `map`); status success and empty if off
+  /// the merging stage (its `map` is moved to `map`); status success and empty if off
+  Road_merge_result merged;
   Gps_trace_sample sample;  ///< the samples the skeleton is built on, with the trace parameters used
   Road_map_options used;    ///< the options with every automatic value filled in (no progress callback)
   Status status = Status::success;  ///< degenerate_input when no fix is left; interrupted by the callback

@@ -594,8 +594,8 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R,
   Simplicial_complex_2 K = make_simplicial_complex_2(val.size(), std::move(Y.edges), std::move(Y.triangles));
   if (stopped(0.3)) return result;
   Reeb_graph_options glued_options;
-  bool asked_to_stop =
-      false;  // sticky: the sweep's last report (all swept) does not stop it, but counts here
+  // sticky: the sweep's last report (all swept) does not stop it, but counts here
+  bool asked_to_stop = false;
   if (progress)
     glued_options.progress = [&progress, &asked_to_stop](double t) {
       return !(asked_to_stop = asked_to_stop || !progress(0.3 + 0.6 * t));

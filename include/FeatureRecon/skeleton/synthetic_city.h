@@ -36,11 +36,12 @@ namespace skeleton {
 
 /// How make_synthetic_city() lays out the intersections and streets.
 enum class Synthetic_city_layout {
-  grid,    ///< a columns x rows grid of blocks, jittered, with a diagonal avenue
-  organic  ///< columns x rows random intersections in the grid's rectangle, at least 0.6 sqrt(block_width x
-           ///< block_height) apart (dart throwing; the spacing shrinks by 5 % whenever 1000 x columns x rows
-           ///< darts in a row miss, which only happens in a rectangle too small for them), joined by the
-           ///< streets of their Gabriel graph: junctions of any degree and angle, blocks of any shape
+  grid,  ///< a columns x rows grid of blocks, jittered, with a diagonal avenue
+  /// columns x rows random intersections in the grid's rectangle, at least 0.6 sqrt(block_width x
+  /// block_height) apart (dart throwing; the spacing shrinks by 5 % whenever 1000 x columns x rows darts in a
+  /// row miss, which only happens in a rectangle too small for them), joined by the streets of their Gabriel
+  /// graph: junctions of any degree and angle, blocks of any shape
+  organic
 };
 
 /// Options of make_synthetic_city(). Lengths in metres, times in seconds.

@@ -91,8 +91,8 @@ class Link_cut_tree {
   std::int32_t connected_path_min(std::int32_t x, std::int32_t y) {
     evert(x);
     access(y);
-    const std::int32_t r =
-        splay_leftmost(y);  // the root of y's tree, now the root of the splay of path root..y
+    // the root of y's tree, now the root of the splay of path root..y
+    const std::int32_t r = splay_leftmost(y);
     // Not connected: x's tree was not touched since evert(x), so x is still its root and a splay root.
     return r == x ? m_nodes[r].min_node : null;
   }
