@@ -330,6 +330,8 @@ endforeach()
 file(WRITE ${WORK}/noisy_square_24.xyz "${noisy_square}")
 expect(skeleton_radius_estimated_thinning 0 "\"points\": 1500, \"sampled\": 202,.*\"loops\": 1, \"components\": 1,.*thinned at 11\\.31, beyond \\(R - gap radius\\) / 2 = 8\\.614" skeleton --points ${WORK}/noisy_square_24.xyz --max-triangles 2000000 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_radius_estimated_thinning_within 0 "\"points\": 1500, \"sampled\": 945,.*\"loops\": 1, \"components\": 1," skeleton --points ${WORK}/noisy_square_24.xyz --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# --sample-spacing 0 keeps every point (no thinning although the radius was estimated).
+expect(skeleton_radius_estimated_no_thinning 0 "\"points\": 1500, \"sampled\": 1500," skeleton --points ${WORK}/noisy_square_24.xyz --sample-spacing 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 if(last_error MATCHES "warning")
   message(SEND_ERROR "skeleton_radius_estimated_thinning_within: a warning without a limit to keep:\n${last_error}")
 endif()
@@ -779,6 +781,9 @@ file(WRITE ${WORK}/d14.xyz "${d14}")
 expect(thinning_high_dimension 0 "\"points\": 200, \"sampled\": 100," skeleton --points ${WORK}/d14.xyz --radius 2 --sample-spacing 0.5 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 # The metric's distances stay where their squares are normal doubles (1e155 crashed --tracks: the square overflowed).
 expect(evaluate_map_threshold_range 2 "--threshold must be within \\[2\\^-450, 2\\^450\\].*got '1e155'" evaluate-map ${WORK}/thin_dup.xyz ${WORK}/thin_dup.xyz ${WORK}/thin_dup.xyz ${WORK}/thin_dup.xyz --threshold 1e155)
+# ... both limits included.
+expect(evaluate_map_threshold_smallest 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 3.4395525670743494e-136)
+expect(evaluate_map_threshold_largest 0 "\"precision\": 1, \"recall\": 1, \"f_score\": 1," evaluate-map ${WORK}/sk_v.txt ${WORK}/sk_e.txt ${WORK}/sk_v.txt ${WORK}/sk_e.txt --threshold 2.9073548971824276e135)
 # Thinning at extreme scales: squares of distances underflowed (copies kept at a spacing of 1e-200) or overflowed
 # (points 1e185 apart kept at 1e190).
 file(WRITE ${WORK}/thin_dup.xyz "1 1\n1 1\n1 1\n2 2\n")

@@ -304,6 +304,93 @@ TEST(EstimateRipsRadius, DegenerateInputs) {
   EXPECT_EQ(e.delta, std::numeric_limits<double>::max());
 }
 
+TEST(EstimateRipsRadius, TheRulesBoundariesArePinned) {
+  // Each case sits on one boundary of the rules (>= against >, a range's last bin, the fallback's count), so
+  // that moving it changes the estimate. Collinear points 1 apart: a point has 2 neighbours within (1, 2], 4
+  // within (2, 3], ... (fewer at the ends).
+  auto line = [](int n) {
+    Point_matrix m;
+    for (int i = 0; i < n; ++i) add_point(m, {static_cast<double>(i), 0});
+    return m;
+  };
+  const Point_matrix line100 = line(100), line8 = line(8);
+  Rips_radius_options o;
+  // min_neighbours 1: the first bin with a dimension read is bin 2 (radius 2^(3/4) = 1.68), the first whose
+  // octave below has a count.
+  o.min_neighbours = 1;
+  Rips_radius_estimate e = estimate_rips_radius(line100, o);
+  EXPECT_EQ(e.scale, std::exp2(0.75));
+  // The count at 2^(3/4) is (98 * 2 + 2) / 100 = 1.98: exactly min_neighbours is enough.
+  o.min_neighbours = 1.98;
+  e = estimate_rips_radius(line100, o);
+  EXPECT_EQ(e.scale, std::exp2(0.75));
+  EXPECT_DOUBLE_EQ(e.mean_neighbours, 1.98);
+  // Eight points: (n - 1) / 4 = 1.75 neighbours is exactly the count at 2^(3/4) (14 / 8), the top of the
+  // range where the dimension is read: log2(26 / 14) over the octave to 2^(7/4).
+  o.min_neighbours = 1;
+  e = estimate_rips_radius(line8, o);
+  EXPECT_DOUBLE_EQ(e.intrinsic_dimension, std::log2(13.0 / 7.0));
+  EXPECT_EQ(e.scale, std::exp2(0.75));
+  // A slope exactly at the smallest plus a margin of 0 is taken.
+  o.dimension_margin = 0;
+  e = estimate_rips_radius(line8, o);
+  EXPECT_EQ(e.scale, std::exp2(0.75));
+  // With the default 8 neighbours no bin of the eight points is in range: the scale is the first bin with
+  // min(8, (n - 1) / 2 = 3.5) neighbours (2^(7/4): 36 / 8 = 4.5), and the gap rule asks for 3.5 too.
+  e = estimate_rips_radius(line8);
+  EXPECT_TRUE(std::isnan(e.intrinsic_dimension));
+  EXPECT_EQ(e.scale, std::exp2(1.75));
+  EXPECT_DOUBLE_EQ(e.mean_neighbours, 4.5);
+  EXPECT_EQ(e.gap_radius, std::exp2(1.75));
+  // A regular pentagon: 2 neighbours at the side (1.18, below 2^(1/4)) are exactly the (n - 1) / 2 both the
+  // fallback and the gap rule ask for.
+  Point_matrix pentagon;
+  for (int k = 0; k < 5; ++k) add_point(pentagon, {std::cos(2 * pi * k / 5), std::sin(2 * pi * k / 5)});
+  e = estimate_rips_radius(pentagon);
+  EXPECT_EQ(e.scale, std::exp2(0.25));
+  EXPECT_EQ(e.gap_radius, std::exp2(0.25));
+  EXPECT_DOUBLE_EQ(e.mean_neighbours, 2.0);
+  EXPECT_EQ(e.radius, 1.5 * std::exp2(0.25));
+  // Nine points on a cycle 1 apart, every other pair 2.2 apart (a matrix): the profile has bins 0 to 4 (1 and
+  // 2.2), with 2, 2, 2, 2 and 8 neighbours; a dimension is read where the octave above is in the profile, up
+  // to the last bin but two: at bin 2 only, log2(8 / 2) = 2.
+  std::vector<std::vector<double>> cycle(9, std::vector<double>(9, 2.2));
+  for (int i = 0; i < 9; ++i) {
+    cycle[i][i] = 0;
+    cycle[i][(i + 1) % 9] = cycle[(i + 1) % 9][i] = 1;
+  }
+  o = {};
+  o.min_neighbours = 1;
+  e = estimate_rips_radius_from_distance_matrix(cycle, o);
+  EXPECT_NEAR(e.intrinsic_dimension, 2.0, 1e-12);
+  EXPECT_EQ(e.scale, std::exp2(0.75));
+  EXPECT_EQ(e.radius, 1.5 * std::exp2(0.75));
+  // The suggested delta is at least the radius (delta_factor 0: the radius, 2^(13/4) for the line).
+  o = {};
+  o.delta_factor = 0;
+  e = estimate_rips_radius(line100, o);
+  EXPECT_EQ(e.radius, std::exp2(3.25));
+  EXPECT_EQ(e.delta, e.radius);
+  // Rows of a matrix 0 apart that are not copies count at every radius, below the first bin: the profile
+  // starts at the smallest positive distance (1, bin 0) and ends at 2 (bin 4).
+  e = estimate_rips_radius_from_distance_matrix(
+      std::vector<std::vector<double>>{{0, 0, 1}, {0, 0, 2}, {1, 2, 0}});
+  ASSERT_EQ(e.radii.size(), 5u);
+  EXPECT_EQ(e.radii[0], std::exp2(0.25));
+  EXPECT_DOUBLE_EQ(e.mean_neighbours_within[0], 4.0 / 3);
+  // A distance beyond the largest double (2e308) falls in the bin after 2^1023.75: five bins from 1e308's.
+  Point_matrix huge;
+  add_point(huge, {0});
+  add_point(huge, {1e308});
+  add_point(huge, {-1e308});
+  e = estimate_rips_radius(huge);
+  ASSERT_EQ(e.radii.size(), 5u);
+  EXPECT_EQ(e.radii[3], std::numeric_limits<double>::max());
+  EXPECT_EQ(e.radii[4], std::numeric_limits<double>::max());
+  EXPECT_DOUBLE_EQ(e.mean_neighbours_within[3], 4.0 / 3);
+  EXPECT_DOUBLE_EQ(e.mean_neighbours_within.back(), 2.0);
+}
+
 TEST(EstimateRipsRadius, CopiesOfThePointsLeaveTheEstimateAsItWas) {
   // The Rips stage joins copies, so the estimate counts each point once: 4 copies of every point of a noisy
   // circle shrank the radius and broke the skeleton (copies counted as neighbours at every radius).
@@ -503,6 +590,13 @@ TEST(EstimateRipsRadius, BadOptionsAndPointsAreNamed) {
   o = {};
   o.max_expected_gaps = 0;
   EXPECT_NE(message(o).find("max_expected_gaps must be in (0, 1]"), std::string::npos) << message(o);
+  // The bounds themselves are allowed.
+  o = {};
+  o.radius_factor = 0x1p100;
+  o.max_expected_gaps = 1;
+  o.min_neighbours = 1;
+  o.delta_factor = 0x1p100;
+  EXPECT_NO_THROW(estimate_rips_radius(m, o));
   Point_matrix bad = m;
   bad.data[2 * 7 + 1] = std::numeric_limits<double>::infinity();
   try {

@@ -1163,6 +1163,8 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
     bad.*count = 1024;
     EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, bad)) << name;
   }
+  o.min_local_support = 1;  // the bound itself is allowed
+  EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, o));
   for (const double bad : {0.0, -0.5, 1.01, std::nan("")}) {
     o.min_local_support = bad;
     try {
@@ -1173,6 +1175,67 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
           << e.what();
     }
   }
+}
+
+TEST(GpsTraces, TheRulesBoundariesArePinned) {
+  // Beside, for the lateral rule, is an offset at least 45 degrees off the sample's direction: a busy street
+  // of 20 trips at y = 10 starts at x = 10, exactly 45 degrees off a quiet trip driving east from (0, 0), and
+  // the quiet trip's two samples are dropped.
+  std::vector<Gps_trip> beside;
+  for (int k = 0; k < 20; ++k) beside.push_back({{10, 10, 100000.0 + 100 * k}, {60, 10, 100005.0 + 100 * k}});
+  beside.push_back({{0, 0, 9000}, {50, 0, 9005}});
+  Gps_trace_options lateral;
+  lateral.max_link_gap = -1;
+  lateral.min_lateral_density = 0.3;
+  const Gps_trace_sample B = sample_gps_traces(beside, 20.0, lateral);
+  EXPECT_EQ(B.dropped_lateral, 2u);
+  EXPECT_EQ(B.points.rows, 2u);
+
+  // The density filter's pairs are counted in the cells on every side: the refusal of
+  // ADensityFilterOfTooManyPairsIsRefusedBeforeComparing with the trip turned north and reversed.
+  Gps_trace_options pairs;
+  pairs.max_link_gap = -1;
+  pairs.sample_spacing = 1;
+  pairs.density_radius = 20;
+  pairs.min_relative_density = 0.05;
+  pairs.max_density_pairs = 8;
+  const std::string refused = FeatureRecon::test::invalid_argument_message([&] {
+    sample_gps_traces({{{0, 20, 0}, {0, 10, 1}, {0, 0, 2}}}, 10.0, pairs);
+  });
+  EXPECT_NE(refused.find("would compare at least 9 pairs"), std::string::npos) << refused;
+
+  // No segment needs a check (30 m steps are confirmed by their own ends): the Wilson bound of no evidence is
+  // 1, which meets a fraction of 1, and the rule is trusted.
+  Gps_trace_options all;
+  all.min_straight_confirmed_fraction = 1;
+  EXPECT_TRUE(sample_gps_traces({straight(0, 0, 1, 0, 5, 30)}, 20.0, all).turn_rule_used);
+
+  // The turn rule on lone trips (nothing confirms their 150 m segments; the rule trusted, the check kept).
+  Gps_trace_options turn;
+  turn.max_link_gap = 200;
+  turn.min_confirmed_fraction = 0;
+  turn.min_straight_confirmed_fraction = 0;
+  // Exactly straight is within a tolerance of 0 degrees: all three segments densified (31 samples).
+  turn.segment_turn_tolerance = 0;
+  const Gps_trace_sample S =
+      sample_gps_traces({{{0, 0, 0}, {150, 0, 15}, {300, 0, 30}, {450, 0, 45}}}, 30.0, turn);
+  EXPECT_EQ(S.straight_checked, 3u);
+  EXPECT_EQ(S.straight_segments, 3u);
+  EXPECT_EQ(S.points.rows, 31u);
+  turn.segment_turn_tolerance = 30;
+  // The arriving direction is not taken across a gap (500 m from the south, beyond the link gap): the first
+  // segment has only its leaving direction, straight, and is densified with the second (22 samples); read
+  // across the gap, the trip turned there.
+  const Gps_trace_sample G =
+      sample_gps_traces({{{0, -500, 0}, {0, 0, 50}, {150, 0, 65}, {300, 0, 80}}}, 30.0, turn);
+  EXPECT_EQ(G.straight_checked, 2u);
+  EXPECT_EQ(G.points.rows, 22u);
+  // A fix exactly segment_support (20 m) back is far enough to give the arriving direction: from the south,
+  // a turn, so only the second segment is straight (13 samples).
+  const Gps_trace_sample F =
+      sample_gps_traces({{{0, -20, 0}, {0, 0, 2}, {150, 0, 17}, {300, 0, 32}}}, 30.0, turn);
+  EXPECT_EQ(F.straight_checked, 1u);
+  EXPECT_EQ(F.points.rows, 13u);
 }
 
 TEST(GpsTraces, WilsonUpperBound) {

@@ -645,6 +645,13 @@ TEST(MapComparison, OptimalMatchingPinned) {
   // Bearings: perpendicular samples never pair, opposite directions do (direction-insensitive).
   EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{1, 0}, 0}}, o).matched, 0u);
   EXPECT_EQ(match_map_samples({{{0, 0}, 90}}, {{{1, 0}, 270}}, o).matched, 1u);
+  // A bearing difference of exactly the limit (45 degrees) does not pair, as in the greedy matching.
+  EXPECT_EQ(match_map_samples({{{0, 0}, 0}}, {{{1, 0}, 45}}, o).matched, 0u);
+  // Where both sides of a component are equally large the ground truth is assigned: its samples, in index
+  // order, take their cheapest free partners (every perfect matching here costs the same, 7.07 + 5).
+  EXPECT_EQ(
+      match_map_samples({{{5, 5}, 0}, {{5, 0}, 0}}, {{{0, 0}, 0}, {{10, 0}, 0}}, o).ground_truth_partner,
+      (std::vector<std::int64_t>{0, 1}));
   // Ties between coincident samples go to the smaller index.
   const Map_sample_matching tie =
       match_map_samples({{{0, 0}, 90}}, {{{5, 0}, 90}, {{5, 0}, 90}, {{-5, 0}, 90}}, o);
@@ -818,6 +825,48 @@ TEST(MapComparison, PairsExactlyAtTheMatchDistanceAreSeenWhateverTheGridsCorner)
       EXPECT_EQ(M.ground_truth_partner, (std::vector<std::int64_t>{1, 0})) << far << " " << int(m);
     }
   }
+}
+
+TEST(MapComparison, TheLimitsOfTheRangesArePinned) {
+  // match_distance and the trace radius may be exactly 2^-450 or 2^450 (the range is closed).
+  for (const double limit : {0x1p-450, 0x1p450}) {
+    for (const Map_matching m : {Map_matching::greedy, Map_matching::optimal}) {
+      Map_comparison_options o;
+      o.matching = m;
+      o.match_distance = limit;
+      Map_sample_matching M;
+      ASSERT_NO_THROW(M = match_map_samples({{{0, 0}, 90}}, {{{0, 0}, 90}}, o)) << limit;
+      EXPECT_EQ(M.matched, 1u) << limit;
+    }
+    Trace_support_options t;
+    t.radius = limit;
+    std::vector<std::size_t> trips;
+    ASSERT_NO_THROW(trips = count_trips_along({{{0, 0}, 90}}, {{{-1, 0, 0}, {1, 0, 1}}}, t)) << limit;
+    EXPECT_EQ(trips, (std::vector<std::size_t>{1})) << limit;
+  }
+  // explain_unmatched_samples(): a sample at exactly the bearing limit (45 degrees) is not aligned, so a
+  // sample 5 m away is a crossing, not a taken one.
+  Map_comparison_result r;
+  r.ground_truth_samples = r.reconstruction_samples = 1;
+  r.ground_truth_sample_list = {{{0, 0}, 0}};
+  r.reconstruction_sample_list = {{{5, 0}, 45}};
+  r.ground_truth_partner = r.reconstruction_partner = {-1};
+  Unmatched_samples_breakdown b = explain_unmatched_samples(r);
+  EXPECT_EQ(b.missed.crossing, 1u);
+  EXPECT_EQ(b.spurious.crossing, 1u);
+  EXPECT_EQ(b.missed.taken + b.spurious.taken, 0u);
+  // ... and an aligned sample exactly two thresholds away is offset, whatever the rounding of its grid cell
+  // (the positions of PairsExactlyAtTheMatchDistanceAreSeenWhateverTheGridsCorner, threshold halved).
+  Map_comparison_options half;
+  half.match_distance = 2.5088616021043775 / 2;
+  const double l = 2.5620754289283343, h = 5.0709370310327113, g1 = 7.5797986331370888;
+  r.ground_truth_sample_list = {{{h, 0}, 0}};
+  r.reconstruction_samples = 2;
+  r.reconstruction_sample_list = {{{g1, 0}, 0}, {{l, 0}, 90}};
+  r.reconstruction_partner = {-1, -1};
+  b = explain_unmatched_samples(r, half);
+  EXPECT_EQ(b.missed.offset, 1u);
+  EXPECT_EQ(b.missed.crossing, 0u);
 }
 
 TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {

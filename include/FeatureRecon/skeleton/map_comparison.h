@@ -433,7 +433,18 @@ struct Admissible_pairs {
   std::vector<double> cost;
 };
 
-/// The assignment of optimal_assignment() on admissible pairs given as lists (`nl` samples of L, `nr` of R).
+/// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T =
+/// match_distance, bearings within the limit). L (`nl` samples, their admissible pairs in P as lists; R has
+/// `nr`) is the side that is assigned: every sample of L also gets a private "unmatched" partner of cost T,
+/// so that minimising the total cost (d for a pair, T for an unmatched sample) is maximising the weight; this
+/// assignment problem is solved by successive shortest augmenting paths (Dijkstra on reduced costs with
+/// vertex potentials, one sample of L at a time, stopping at the first free sample reached). A search only
+/// visits what lies closer than its augmenting path: the samples around the new one on the few lines near it.
+/// At equal distance a free sample is settled first (a dense cluster of equal distances ends its search
+/// there), then a matched one, then an "unmatched" partner (a tie between pairing and leaving unmatched goes
+/// to pairing), smaller indices first. Returns for each sample of L the index of its partner in R or `none`.
+/// Stopped by the progress callback: `stopped` set, the assignment partial. `searched` (if not null) counts
+/// the matched samples of R that the searches settle (for tests).
 inline std::vector<std::size_t> assign_optimally(std::size_t nl, std::size_t nr, const Admissible_pairs& P,
                                                  const Map_comparison_options& options, bool& stopped,
                                                  std::size_t* searched = nullptr) {
@@ -525,55 +536,13 @@ inline std::vector<std::size_t> assign_optimally(std::size_t nl, std::size_t nr,
   return mate_l;
 }
 
-/// Optimal: a maximum-weight matching, weight T - d over the admissible pairs (distance d <= T =
-/// match_distance, bearings within the limit). The smaller sample set L is the side that is assigned: every
-/// sample of L also gets a private "unmatched" partner of cost T, so that minimising the total cost (d for a
-/// pair, T for an unmatched sample) is maximising the weight; this assignment problem is solved by successive
-/// shortest augmenting paths (Dijkstra on reduced costs with vertex potentials, one sample of L at a time,
-/// stopping at the first free sample reached). A search only visits what lies closer than its augmenting
-/// path: the samples around the new one on the few lines near it. At equal distance a free sample is settled
-/// first (a dense cluster of equal distances ends its search there), then a matched one, then an "unmatched"
-/// partner (a tie between pairing and leaving unmatched goes to pairing), smaller indices first. Returns for
-/// each sample of L the index of its partner in R or `none`. More than `max_pairs` admissible pairs are
-/// refused (memory). Stopped by the progress callback: `stopped` set, the assignment partial. `searched` (if
-/// not null) counts the matched samples of R that the searches settle (for tests).
-inline std::vector<std::size_t> optimal_assignment(const std::vector<Map_sample>& L,
-                                                   const std::vector<Map_sample>& R,
-                                                   const Map_comparison_options& options,
-                                                   std::size_t max_pairs, const char* fn, bool& stopped,
-                                                   std::size_t* searched = nullptr) {
-  const double T = options.match_distance;
-  const std::size_t nl = L.size(), nr = R.size();
-  // Admissible pairs of each sample of L, by a grid of cells T (exact distance test; deterministic order).
-  std::vector<std::array<double, 2>> rp(nr);
-  for (std::size_t g = 0; g < nr; ++g) rp[g] = R[g].position;
-  const FeatureRecon::internal::Uniform_grid<2> grid(rp, search_cell(T));
-  Admissible_pairs P;
-  P.first.assign(nl + 1, 0);
-  for (std::size_t h = 0; h < nl; ++h) {
-    if (h % 1024 == 1023 && (stopped = !FeatureRecon::internal::report_progress(
-                                 options.progress, 0.1 * static_cast<double>(h) / nl)))
-      return {};
-    grid.for_each_candidate(L[h].position, [&](std::uint32_t g) {
-      if (admissible_pair(L[h], R[g], options)) {
-        P.partner.push_back(g);
-        P.cost.push_back(
-            std::hypot(R[g].position[0] - L[h].position[0], R[g].position[1] - L[h].position[1]));
-      }
-    });
-    if (P.partner.size() > max_pairs) throw_too_many_pairs(fn, max_pairs, T);
-    P.first[h + 1] = P.partner.size();
-  }
-  return assign_optimally(nl, nr, P, options, stopped, searched);
-}
-
 /// The optimal matching of H and G, one connected component of the admissible pairs at a time (pairs of
-/// different components do not interact): in each the smaller side is assigned (optimal_assignment(); ties:
+/// different components do not interact): in each the smaller side is assigned (assign_optimally(); ties:
 /// the ground truth), so that the samples left over search only while the other side still has free samples
 /// near them. With the larger side assigned, each surplus sample of a dense cluster would search all of it;
 /// choosing the side by the whole maps did that wherever a map was larger overall but smaller there (a street
 /// drawn 300 times against 600: 40 s). Returns false when the progress callback stopped it (M then holds no
-/// pair). `searched`: see optimal_assignment().
+/// pair). `searched`: see assign_optimally(). More than `max_pairs` admissible pairs are refused (memory).
 inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Map_sample>& G,
                           const Map_comparison_options& options, Map_sample_matching& M, const char* fn,
                           std::size_t max_pairs = std::size_t(1) << 26, std::size_t* searched = nullptr) {
