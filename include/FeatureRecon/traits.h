@@ -62,7 +62,8 @@ enum class Normal_orientation {
 /// squared distance of the unit normals (so it lies in [0, 4]). Normals need not be unit length; a zero
 /// normal is rejected by the samplers and sampling_quality() when they compare features (finite
 /// sigma_feature; checked; throws naming the item: every item's feature must then be at a finite distance
-/// from itself). \tparam K a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...).
+/// from itself).
+/// \tparam K a CGAL kernel (Epick, Epeck, Simple_cartesian<double>, ...).
 template <class K>
 struct Point_with_normal_traits {
   using Kernel = K;                                               ///< the CGAL kernel

@@ -110,19 +110,16 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam OutputIterator accepts std::size_t.
 /// \tparam Traits a model of FeaturePointTraits (default: Default_traits_t<ItemRange>).
 /// \param items the input samples. \param radius the conflict radius in bilateral units (> 0, checked;
-/// throws;
-///   ignored when `options.radii` is set). \param selected receives the kept indices in increasing order.
+///   throws; ignored when `options.radii` is set). \param selected receives the kept indices in increasing
+///   order.
 /// \param options metric, per-item radii, priority, seed, early stops (consecutive failures, a cap on the
-/// count),
-///   progress. \param traits accessors.
+///   count), progress. \param traits accessors.
 /// \returns the advanced iterator, the number kept, the radius and the status (`degenerate_input` for an
-/// empty
-///   input, and for a radius below about 1e-144 position units, whose square lies below 2^-960: the squared
-///   distances it is compared with have lost their digits, and the set kept may be neither a packing nor
-///   maximal; `interrupted`, with nothing written, when the callback stopped).
+///   empty input, and for a radius below about 1e-144 position units, whose square lies below 2^-960: the
+///   squared distances it is compared with have lost their digits, and the set kept may be neither a packing
+///   nor maximal; `interrupted`, with nothing written, when the callback stopped).
 /// \throws std::invalid_argument naming the argument: radius <= 0, radii or priority of the wrong size or
-/// with
-///   bad values (naming the index), non-finite coordinates (naming the item), bad sigmas.
+///   with bad values (naming the index), non-finite coordinates (naming the item), bad sigmas.
 /// \note Conflicts are strict (xi < r): two items at distance exactly r may both be kept. The same input and
 ///   seed give the same output.
 /// \sa bilateral_dart_throwing_count(), weighted_sample_elimination().
@@ -172,9 +169,10 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
 /// `count` accepted items, which still respect that radius but are no longer maximal. With the exponential
 /// form, items of very different features may never conflict (their distance overflows): when no finite
 /// radius keeps as few as `count`, the throw at the largest radius tried (doubling from the largest finite
-/// distance) is cut. \param count the number of items to keep, 0 <= count <= number of items (checked;
-/// throws). \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set. \throws
-/// std::invalid_argument as bilateral_dart_throwing(), when `options.darts.radii` or
+/// distance) is cut.
+/// \param count the number of items to keep, 0 <= count <= number of items (checked; throws).
+/// \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set.
+/// \throws std::invalid_argument as bilateral_dart_throwing(), when `options.darts.radii` or
 ///   `options.darts.max_accepted` is set, and for max_iterations 0.
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& items, std::size_t count,

@@ -45,10 +45,11 @@ struct Continuous_sampling_result {
 /// Euclidean darts) or `max_samples` samples. Kept samples sit in a hash grid of side r sigma_position.
 /// \tparam FeatureFunction callable `(double x, double y) -> Feature`.
 /// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, the squared feature
-/// distance. \param box {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1, finite (checked; throws). \param radius
-/// the conflict radius in bilateral units (> 0, checked; throws). \throws std::invalid_argument also when a
-/// dart's feature is not at a finite distance from itself (NaN). \note Random numbers come from
-/// std::mt19937_64 turned into doubles by bit manipulation, so the same seed
+///   distance.
+/// \param box {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1, finite (checked; throws).
+/// \param radius the conflict radius in bilateral units (> 0, checked; throws).
+/// \throws std::invalid_argument also when a dart's feature is not at a finite distance from itself (NaN).
+/// \note Random numbers come from std::mt19937_64 turned into doubles by bit manipulation, so the same seed
 ///   gives the same samples on every platform.
 template <class FeatureFunction, class FeatureDistance>
 auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double radius,

@@ -469,12 +469,12 @@ Discrete_lloyd_step_result<Traits> discrete_lloyd_step(
 /// energy, the moves and the relative radius of every iteration (Lloyd drifts towards a lattice: stop early
 /// on rho or the oscillation through on_iteration). Deterministic: no randomness beyond the starting sites
 /// (use a seeded sampler for those); ties go to the lowest index. With an infinite sigma_feature it is
-/// discrete (Euclidean, weighted) Lloyd, i.e. weighted k-means of the items' positions. \param items the
-/// domain: a range of items read through the traits (positions finite, checked). \param sites the starting
-/// sites, e.g. sites_at_items() of a dart-throwing result (finite, checked). \param options metric, density,
-/// update rule, stopping rules, callbacks (checked; throws naming the field). \param traits a model of
-/// FeaturePointTraits. \return the sites, the last assignment and the history. No items or no sites:
-/// degenerate_input, sites
+/// discrete (Euclidean, weighted) Lloyd, i.e. weighted k-means of the items' positions.
+/// \param items the domain: a range of items read through the traits (positions finite, checked).
+/// \param sites the starting sites, e.g. sites_at_items() of a dart-throwing result (finite, checked).
+/// \param options metric, density, update rule, stopping rules, callbacks (checked; throws naming the field).
+/// \param traits a model of FeaturePointTraits.
+/// \return the sites, the last assignment and the history. No items or no sites: degenerate_input, sites
 ///   returned unchanged.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(

@@ -71,8 +71,7 @@ inline std::vector<double> blur_plane(const std::vector<double>& plane, int widt
 /// Peak signal-to-noise ratio in dB, 10 log10(peak^2 / MSE), over every value of every channel.
 /// \tparam A, B arithmetic value types (std::uint8_t, float, double).
 /// \param reference the reference values (for a filter: the exact result). \param picture the values
-/// compared,
-///   as many as the reference (checked; throws std::invalid_argument naming the sizes).
+///   compared, as many as the reference (checked; throws std::invalid_argument naming the sizes).
 /// \param peak the largest possible value (> 0); default 255.
 /// \returns +infinity when the two are equal; NaN for empty inputs.
 template <class A, class B>

@@ -474,9 +474,9 @@ class Kernel_engine : public Item_domain<Traits> {
 /// Stage 1: the kernel energy E of some sites and its gradient with respect to the positions (features and
 /// scales held at their values: they are piecewise constant in the positions). The sites are used as given
 /// (not clamped, features not refreshed).
-/// \param items the domain (for the kernel width, the box and the density). \param sites the sites (finite,
-/// checked). \param options metric, kernel width, cut-off, density, constraint. \param traits
-/// FeaturePointTraits.
+/// \param items the domain (for the kernel width, the box and the density).
+/// \param sites the sites (finite, checked).
+/// \param options metric, kernel width, cut-off, density, constraint. \param traits FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Kernel_energy<Traits::dimension> kernel_energy(
     const ItemRange& items, const std::vector<Bilateral_site<Traits>>& sites,

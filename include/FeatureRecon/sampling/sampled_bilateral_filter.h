@@ -725,9 +725,10 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
 /// have), each output pixel thinning the set a seeded hash of its index picks by dart throwing (uniform: in
 /// the Euclidean distance, the same taps for every window; bilateral: in xi with the window's colours), with
 /// the radius calibrated on every window of images up to 4096 pixels, else on 2048 seeded windows, so that
-/// the taps over their in-image pixels meet the budget. \param width, height, channels, data the image (as
-/// for bilateral_filter()). \param options the kernel, sampling, mode, budget, seed and progress. \returns
-/// the filtered values, the taps evaluated and their mean per kernel pixel, the dart radius, and
+/// the taps over their in-image pixels meet the budget.
+/// \param width, height, channels, data the image (as for bilateral_filter()).
+/// \param options the kernel, sampling, mode, budget, seed and progress.
+/// \returns the filtered values, the taps evaluated and their mean per kernel pixel, the dart radius, and
 ///   status degenerate_input for an empty image, interrupted (no values) when stopped. Progress: global mode,
 ///   the pattern up to 0.5 and the pixels from 0.5; local mode, the pool up to 0.05, the radius calibration
 ///   up to 0.15, pools of longer reach (strongly varying colours) up to 0.2, and the pixels from 0.2. When

@@ -71,9 +71,9 @@ struct Sampling_quality {
 /// distances are bilateral (in units of xi times sigma_position), which measures spacing in the stacked
 /// space. Nearest neighbours are found exactly with a CGAL kd-tree: Euclidean (infinite sigma_feature), its
 /// two nearest points; bilateral, visiting samples by increasing spatial distance until it exceeds the best
-/// bilateral distance (O(n log n) in practice, also for sparse or clustered sets). \tparam ItemRange a
-/// forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits. \throws
-/// std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
+/// bilateral distance (O(n log n) in practice, also for sparse or clustered sets).
+/// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
+/// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure, an intrinsic_dimension other than 0, 2 or 3 or above the
 ///   positions' dimension, or with a finite sigma_feature a feature at a non-finite distance from itself (a
 ///   zero normal; naming the item).
@@ -362,12 +362,11 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 
 /// Periodogram P(f) = |sum_k exp(-2 pi i f . x_k)|^2 / N over the integer frequencies |f_x|, |f_y| <= F of a
 /// 2D sample set taken on the unit torus, its radial average and anisotropy over annuli of width 1, the
-/// effective Nyquist frequency and the oscillation. O(N F^2) time. \tparam ItemRange a forward range of
-/// `Traits::Item` with 2D positions. \tparam Traits a model of
+/// effective Nyquist frequency and the oscillation. O(N F^2) time.
+/// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), a threshold outside (0, 0.5)
-/// or a
-///   max_frequency above 16384.
+///   or a max_frequency above 16384.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spectrum_options& options = {},
                                     const Traits& traits = Traits()) {

@@ -699,10 +699,10 @@ inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<dou
 /// s where the dense solver takes 8-15 s on them. The dense solver again, announced and stoppable, when the
 /// Krylov one has not converged after n vectors (those two converge within a third of that). Eigenvalues of
 /// multiplicity up to 8 are found. Coordinates inside an eigenspace of multiplicity above one are one
-/// orthonormal basis of it (distances between the embedded points do not depend on which). \throws
-/// std::invalid_argument when D does not have n * n entries, or names the first entry that is negative
-///         or not finite, the first diagonal entry that is not 0, or the first pair (i, j), i < j, where D is
-///         not symmetric.
+/// orthonormal basis of it (distances between the embedded points do not depend on which).
+/// \throws std::invalid_argument when D does not have n * n entries, or names the first entry that is
+///   negative or not finite, the first diagonal entry that is not 0, or the first pair (i, j), i < j, where D
+///   is not symmetric.
 inline std::vector<std::array<double, 3>> classical_mds_3d(const std::vector<double>& D, std::size_t n) {
   bool stopped = false;
   internal::check_mds_size(D, n);
@@ -751,9 +751,10 @@ inline Classical_mds classical_mds_3d(const std::vector<double>& D, std::size_t 
 /// members); an arc becomes a polyline from its lower node through the centroids of its level-set pieces (its
 /// points cut into bins of function value) to its upper node, then smoothed with fixed ends (Taubin or
 /// Laplacian rounds, Embedding_options::smoothing). Without a graph, all of an arc's points in one bin form
-/// one piece. \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param
-/// values f per point. \pre every vertex of G indexes positions and values, with finite coordinates and value
-/// (checked; throws
+/// one piece.
+/// \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param values f per
+///   point.
+/// \pre every vertex of G indexes positions and values, with finite coordinates and value (checked; throws
 ///      naming the vertex); level_width >= 0, weight in [0, 1] (checked; throws).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G,
                                              const std::vector<std::array<double, 3>>& positions,
@@ -771,8 +772,8 @@ struct Reeb_graph_input_embedding {
 };
 
 /// embed_reeb_graph() in the input space itself (no projection): the same centroids of level-set pieces and
-/// the same smoothing, in any dimension. Used to measure how far arcs are from a true graph in R^d. \pre
-/// graph.number_of_vertices == points.rows == values.size(); coordinates finite (checked; throws).
+/// the same smoothing, in any dimension. Used to measure how far arcs are from a true graph in R^d.
+/// \pre graph.number_of_vertices == points.rows == values.size(); coordinates finite (checked; throws).
 inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_graph& G,
                                                                   const Proximity_graph& graph,
                                                                   const Point_matrix& points,
@@ -794,8 +795,8 @@ inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_gra
 /// pieces into one arc (a removed branch or the two sides of a thin loop), the polyline goes through the
 /// largest piece, so removed features do not pull it off the surviving path. Where consecutive polyline
 /// points lie farther apart than Embedding_options::max_gap, the polyline follows the graph's shortest path
-/// between them. \pre graph.number_of_vertices == positions.size() (checked; throws); max_gap not NaN
-/// (checked; throws).
+/// between them.
+/// \pre graph.number_of_vertices == positions.size() (checked; throws); max_gap not NaN (checked; throws).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Proximity_graph& graph,
                                              const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,

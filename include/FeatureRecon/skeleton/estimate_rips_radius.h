@@ -269,9 +269,9 @@ Rips_radius_estimate estimate_over_distinct(std::size_t n, const std::vector<Ver
 /// Copies of a point count once (Rips_radius_estimate::distinct_points): the Rips stage joins them, and
 /// duplicating the input leaves the estimate as it was. Deterministic: distances are binned by exact
 /// comparisons of their mantissas. Work: a sort to find the copies, then m * n distances (m = min(n,
-/// reference_points), n distinct). \returns radius 0 and status degenerate_input for fewer than two distinct
-/// points; status interrupted (radius
-///   0, empty profile) when the callback stopped it.
+/// reference_points), n distinct).
+/// \returns radius 0 and status degenerate_input for fewer than two distinct points; status interrupted
+///   (radius 0, empty profile) when the callback stopped it.
 /// \throws std::invalid_argument for options out of range and points as build_rips_graph() refuses them.
 inline Rips_radius_estimate estimate_rips_radius(const Point_matrix& points,
                                                  const Rips_radius_options& options = {}) {

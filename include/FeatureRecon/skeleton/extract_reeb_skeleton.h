@@ -390,9 +390,10 @@ inline Branch_node_merge_result merge_close_branch_nodes(
 /// positions; an arc whose lower end moved above its upper end is reversed (its polylines; its members stay
 /// in increasing function value), and the types of the merged nodes and of the ends of reversed arcs follow
 /// from the arcs below and above them. Nodes and arcs that take no part are copied unchanged; the new nodes
-/// are ordered by the smallest original node of each. \pre distance >= 0 and finite; the members index
-/// `coordinates`; above 3D input positions and polylines have its dimension (all checked; throws naming the
-/// node or arc).
+/// are ordered by the smallest original node of each.
+/// \pre distance >= 0 and finite; the members index `coordinates`; above 3D input positions and polylines
+///   have its
+/// dimension (all checked; throws naming the node or arc).
 inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g,
                                                          const Point_matrix& coordinates, double distance) {
   internal::check_point_matrix(coordinates, "merge_close_branch_nodes", "coordinates");
@@ -835,8 +836,8 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
 /// classical MDS into 3D (classical_mds_3d(); it takes the first 30 % of the progress range and can be
 /// stopped between its steps). Copies (a row at distance 0 from an earlier one, with the same distances to
 /// all) are joined as extract_reeb_skeleton() joins copies of points (internal::first_copies_of_rows(),
-/// internal::join_copies()). \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way;
-/// throws).
+/// internal::join_copies()).
+/// \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
 template <class Matrix, class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
 Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius radius,
                                                          const Skeleton_options& options = {}) {

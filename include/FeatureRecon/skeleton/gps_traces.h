@@ -398,15 +398,15 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// checked first (Gps_trace_options::segment_support): one that leaves the traces where the trip turns (a
 /// corner cut between sparse fixes) is not densified. Time O(F + P) grid look-ups for F fixes and P inserted
 /// points, plus a kd-tree of the distinct fix positions and a k-nearest query per position that ends a long
-/// segment where fixes lie densely (Gps_trace_options::local_support_fixes): O(F log F). \param rips_radius
-/// the radius the samples will be joined at (for the automatic rules). \throws std::invalid_argument naming
-/// the trip and fix with a non-finite coordinate or time, or a non-positive
-///         or non-finite rips_radius, or the option out of range (a negative sample spacing, a non-finite
-///         link gap or segment support, a negative heading tolerance, a negative or non-finite density
-///         radius, a turn tolerance outside [0, 180], a confirmed fraction or a density fraction outside [0,
-///         1]), fixes beyond 2^50 sample spacings (or radii, or density radii) from the origin, linking that
-///         would insert more than options.max_inserted_points points, or a density filter that would compare
-///         more than options.max_density_pairs pairs of samples.
+/// segment where fixes lie densely (Gps_trace_options::local_support_fixes): O(F log F).
+/// \param rips_radius the radius the samples will be joined at (for the automatic rules).
+/// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a
+///   non-positive or non-finite rips_radius, or the option out of range (a negative sample spacing, a
+///   non-finite link gap or segment support, a negative heading tolerance, a negative or non-finite density
+///   radius, a turn tolerance outside [0, 180], a confirmed fraction or a density fraction outside [0, 1]),
+///   fixes beyond 2^50 sample spacings (or radii, or density radii) from the origin, linking that would
+///   insert more than options.max_inserted_points points, or a density filter that would compare more than
+///   options.max_density_pairs pairs of samples.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
@@ -896,8 +896,8 @@ struct Gps_trace_graph_options {
 
 /// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose
 /// headings differ by at most the heading tolerance (Gps_trace_graph_options::heading_tolerance; directed or
-/// not, as sampled), plus the trip links; lengths are Euclidean. \throws std::invalid_argument when the
-/// heading tolerance is NaN (or negative in S), when S is inconsistent
+/// not, as sampled), plus the trip links; lengths are Euclidean.
+/// \throws std::invalid_argument when the heading tolerance is NaN (or negative in S), when S is inconsistent
 ///         (points not planar or not one heading per point, a heading outside its range, a trip link naming a
 ///         missing sample or joining a sample to itself), or as build_rips_graph().
 inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double rips_radius,

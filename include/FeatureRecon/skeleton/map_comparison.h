@@ -671,9 +671,9 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
 /// Matches the samples of two maps (the pairing step of compare_maps()): a ground-truth sample h and a
 /// reconstruction sample g may pair when at most match_distance apart and their direction-insensitive
 /// bearings differ by less than bearing_limit; options.matching says how pairs are chosen (Map_matching). The
-/// progress callback is asked every few thousand samples; a stop leaves no pair (status interrupted). \throws
-/// std::invalid_argument for options as compare_maps() refuses them, a non-finite position or a bearing
-///   outside [0, 360) (naming the map and the sample).
+/// progress callback is asked every few thousand samples; a stop leaves no pair (status interrupted).
+/// \throws std::invalid_argument for options as compare_maps() refuses them, a non-finite position or a
+///   bearing outside [0, 360) (naming the map and the sample).
 inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& ground_truth,
                                              const std::vector<Map_sample>& reconstruction,
                                              const Map_comparison_options& options = {}) {
@@ -704,7 +704,8 @@ inline Map_sample_matching match_map_samples(const std::vector<Map_sample>& grou
 /// less than the limit; pairs are accepted by increasing distance up to `match_distance`, a ground-truth
 /// sample whose partner was taken looking again among its nearest available ones). precision = m/|G|, recall
 /// = m/|H|, F = 2m/(|G| + |H|). A stop through the progress callback leaves the sample counts, no pair and
-/// status interrupted. \pre positive, finite options (checked; throws).
+/// status interrupted.
+/// \pre positive, finite options (checked; throws).
 inline Map_comparison_result compare_maps(const Embedded_graph_2& ground_truth,
                                           const Embedded_graph_2& reconstruction,
                                           const Map_comparison_options& options = {}) {
@@ -783,7 +784,8 @@ struct Unmatched_samples_breakdown {
 
 /// Sorts every unmatched sample of a comparison into the classes of Unmatched_sample_counts: a diagnosis of
 /// what a reconstruction lacks (missed) and adds (spurious). Aligned means a bearing difference below the
-/// limit. \pre `r` was computed with options.keep_samples and the same `options` (checked; throws).
+/// limit.
+/// \pre `r` was computed with options.keep_samples and the same `options` (checked; throws).
 inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_comparison_result& r,
                                                              const Map_comparison_options& options = {}) {
   const auto& H = r.ground_truth_sample_list;
@@ -849,9 +851,10 @@ inline Trace_support_options trace_support_options(const Map_comparison_options&
 /// Time: per segment whose bounding box meets the samples' (grown by the radius), its length clipped to that
 /// box over the radius, or the number of samples when that is less, plus the samples met; a glitch fix far
 /// away costs nothing extra. (A segment with an end beyond 2^44 radii from the origin is checked against
-/// every sample.) \throws std::invalid_argument naming the option (radius outside [2^-450, 2^450], bearing
-/// limit not positive),
-///         the sample with a non-finite position, or the trip and fix with a non-finite coordinate or time.
+/// every sample.)
+/// \throws std::invalid_argument naming the option (radius outside [2^-450, 2^450], bearing limit not
+///   positive), the sample with a non-finite position, or the trip and fix with a non-finite coordinate or
+///   time.
 inline std::vector<std::size_t> count_trips_along(const std::vector<Map_sample>& samples,
                                                   const std::vector<Gps_trip>& trips,
                                                   const Trace_support_options& options = {}) {
@@ -1095,8 +1098,8 @@ struct Cropped_map {
 /// trip up to max_gap long (a trip's fixes ordered by time, equal times in the given order). The
 /// interpolation keeps a street between sparse fixes (Chicago: 20-40 m apart; with the fixes alone 40 of the
 /// reference's 1566 edges were lost, with it all are kept and 3 more). Ranges are inclusive. Exact up to the
-/// rounding of the sample positions. \throws std::invalid_argument naming the option (radius,
-/// sample_interval, trace_step: positive and finite;
+/// rounding of the sample positions.
+/// \throws std::invalid_argument naming the option (radius, sample_interval, trace_step: positive and finite;
 ///   max_gap finite and >= 0), the edge (a vertex out of range, a non-finite coordinate), the trip and fix (a
 ///   non-finite coordinate or time), or when the edges would give more than 2^25 samples or the trips more
 ///   than 2^27 trace points.

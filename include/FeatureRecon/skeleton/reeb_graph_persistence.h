@@ -225,8 +225,10 @@ inline Reeb_graph_persistence reeb_graph_persistence(
 /// sublevel graph (an arc weighs its lower node; among arcs with the same lower node the later in the sweep
 /// weighs more), kept in a link-cut tree over the sweep. O(n log n) for all loops together. Nodes with
 /// several arcs below or above (degenerate forks) act as chains of binary forks, as in a simulation of
-/// simplicity; node order is the graph's (f, vertex index) order. \pre R's node values are finite and in
-/// increasing (value, vertex) order, as reeb_graph() returns them (checked; throws).
+/// simplicity; node order is the graph's (f, vertex index) order.
+/// \pre R's node values are finite and in increasing (value, vertex) order, as reeb_graph() returns them
+///   (checked;
+/// throws).
 inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R) {
   return internal::reeb_graph_persistence(R, nullptr);
 }

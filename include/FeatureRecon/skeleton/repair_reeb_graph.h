@@ -126,9 +126,11 @@ struct Reeb_repair_result {
 /// and absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes; with Reeb_repair_options::bound,
 /// only pairs whose bounds differ by at most max_distance are measured (the same result). The progress
 /// callback is asked after each end's pairs are measured; a stop adds no arc (the graph is R, status
-/// interrupted). \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two
-/// input points. \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex)
-/// order, its arcs going up between its nodes, as reeb_graph() and simplify_by_persistence() return them;
+/// interrupted).
+/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
+/// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its
+///   arcs
+/// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them;
 /// Reeb_repair_options::bound not NaN at a degree-1 node (all checked; throws).
 template <class Distance>
 Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance,
@@ -443,11 +445,12 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
 /// its arc); the arcs come back in the order of Reeb_graph::arcs, their vertex vectors no larger than they
 /// need. With Reeb_repair_options::bound, only the vertices whose bound lies within max_distance of the dead
 /// end's are measured: O(n log n + k w) for w such vertices, the same result. The progress callback is asked
-/// after each dead end; a stop keeps the arcs added so far (a valid graph, status interrupted). \param values
-/// f of every input vertex (for the new nodes). \tparam Distance callable `double(Vertex_index,
-/// Vertex_index)`, the input distance. \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and
-/// every vertex it uses indexes `values`; Reeb_repair_options::bound not NaN at any vertex of R (all checked;
-/// throws).
+/// after each dead end; a stop keeps the arcs added so far (a valid graph, status interrupted).
+/// \param values f of every input vertex (for the new nodes).
+/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
+/// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes
+///   `values`;
+/// Reeb_repair_options::bound not NaN at any vertex of R (all checked; throws).
 template <class Distance>
 Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values,
                                        double max_distance, Distance distance,
@@ -466,7 +469,8 @@ struct Reeb_prune_result {
 /// Removes every connected component of height (maximum minus minimum of f over its nodes) at most
 /// `max_height`: the essential 0-dimensional features of persistence <= max_height, which simplification
 /// keeps (a component is never merged into another). Small isolated pieces of noise go; nodes keep their
-/// order. \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
+/// order.
+/// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
     FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components",
@@ -527,8 +531,8 @@ struct Reeb_trim_result {
 /// the arc's height is at most `max_height`. Simplification never removes these arcs (the global extrema are
 /// an essential pair), so on a loop the base point of the geodesic function and the farthest point stay as
 /// spurs of height about half the Rips radius. Contracting them moves the essential pair by at most
-/// `max_height` and leaves every other feature as it is; the stub's points join the fork node's members. \pre
-/// max_height >= 0; R as for repair_reeb_graph() (checked; throws).
+/// `max_height` and leaves every other feature as it is; the stub's points join the fork node's members.
+/// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))
     FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0, got ",

@@ -985,8 +985,9 @@ inline Proximity_graph build_knn_graph(const Point_matrix& m, std::size_t k,
 /// Candidates come from a CGAL kd-tree (dimension <= 3) or from blocked all-pairs distances with Eigen
 /// (higher dimension; groups of points that a gap wider than the radius separates on one axis are searched
 /// each alone), and every candidate is decided by an exact predicate. Duplicate points are joined by edges of
-/// length 0. \tparam PointRange a range of points; \tparam Traits a model of PointCoordinateTraits. \pre
-/// radius is finite and >= 0 (checked; throws). All points have the same positive dimension and finite
+/// length 0.
+/// \tparam PointRange a range of points; \tparam Traits a model of PointCoordinateTraits.
+/// \pre radius is finite and >= 0 (checked; throws). All points have the same positive dimension and finite
 ///      coordinates (checked; throws, naming the point).
 /// \returns a canonical Proximity_graph on the points' indices.
 template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
@@ -1008,8 +1009,8 @@ Proximity_graph build_rips_graph(const PointRange& points, double radius,
 /// Candidates come from a CGAL kd-tree over the distinct positions (dimension <= 3) or from blocked all-pairs
 /// distances with Eigen (higher dimension: a float Gram filter with a rigorous error bound, then doubles,
 /// then exact comparisons; clusters far apart relative to their size are searched each alone, see
-/// isolated_groups()). \pre k >= 1 (checked; throws). Points as for build_rips_graph(). With n <= k every
-/// pair is joined.
+/// isolated_groups()).
+/// \pre k >= 1 (checked; throws). Points as for build_rips_graph(). With n <= k every pair is joined.
 template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
                                 decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Proximity_graph build_knn_graph(const PointRange& points, std::size_t k,

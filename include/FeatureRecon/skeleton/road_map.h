@@ -384,10 +384,10 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 /// `distance` and the edges' own chains is passed to extract_reeb_skeleton() with delta, no repair and no
 /// pruning. Where two lines diverge beyond `distance` for a short stretch the skeleton keeps a thin loop;
 /// loops whose two sides lie within `distance` of each other (two arcs between the same nodes, or an arc
-/// beside a two-arc path) lose their longer side. Deterministic. The map is not modified. \throws
-/// std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose length
-///         overflows, edges that would need more than `max_samples` points inserted along them (naming the
-///         longest edge), or a non-positive or non-finite distance, negative spacing or delta.
+/// beside a two-arc path) lose their longer side. Deterministic. The map is not modified.
+/// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose
+///   length overflows, edges that would need more than `max_samples` points inserted along them (naming the
+///   longest edge), or a non-positive or non-finite distance, negative spacing or delta.
 inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
                                           const Road_merge_options& options = {}) {
   const char* fn = "merge_road_lines";
@@ -577,9 +577,9 @@ struct Road_map {
 
 /// The options with every automatic value of extract_road_map() filled in (delta, repair, prune and merge
 /// distance become 0 when turned off). The trace options' own automatic values are left to
-/// sample_gps_traces(). \throws std::invalid_argument naming a non-finite option, a negative radius or clamp,
-/// min_radius > max_radius, or
-///         a radius above 1e300.
+/// sample_gps_traces().
+/// \throws std::invalid_argument naming a non-finite option, a negative radius or clamp, min_radius >
+///   max_radius, or a radius above 1e300.
 inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips,
                                                  const Road_map_options& options) {
   const char* fn = "extract_road_map";

@@ -128,8 +128,8 @@ inline std::vector<char> remove_keeping_connected(std::size_t n, const std::vect
 
 /// The edges of the Gabriel graph of distinct points (pairs whose diametral disc holds no other point), from
 /// their Delaunay triangulation with exact predicates; sorted, each as (smaller index, larger index). A point
-/// on the boundary of a diametral disc removes the edge. \throws std::invalid_argument naming two points that
-/// coincide.
+/// on the boundary of a diametral disc removes the edge.
+/// \throws std::invalid_argument naming two points that coincide.
 inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>& points) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<Vertex_index, K>;
