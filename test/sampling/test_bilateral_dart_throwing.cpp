@@ -406,3 +406,115 @@ TEST(BilateralDartThrowing, FewBisectionStepsStillBracketTheRadius) {
   EXPECT_EQ(kept.size(), 10u);
   EXPECT_LE(calls, 60u + 64u + 2u);
 }
+
+// Boundaries pinned by a mutation audit of the sampling headers (session 45): each test fails when the
+// comparison or constant it names is moved.
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using namespace FeatureRecon::test;
+
+TEST(BilateralDartThrowing, ItemsAtExactlyTheRadiusDoNotConflict) {
+  // Conflicts are strict (xi < r). Two neighbouring
+  // pixels, black and white: with sigma_position = sigma_feature = 1 their bilateral distance is
+  // sqrt(1 + 255^2 / 255^2) = sqrt(2), computed exactly as std::sqrt(2.0), while their spatial distance 1
+  // lies inside the spatial prefilter, so only the strict test decides: both are kept at r = sqrt(2), one at
+  // the next radius up.
+  const std::vector<Grey_pixel> px{Grey_pixel{0, 0, 0}, Grey_pixel{1, 0, 255}};
+  Dart_throwing_options g;
+  g.sigma_feature = 1;
+  for (std::uint64_t seed = 0; seed < 4; ++seed) {
+    g.seed = seed;
+    std::vector<std::size_t> kept;
+    bilateral_dart_throwing(px, std::sqrt(2.0), std::back_inserter(kept), g);
+    EXPECT_EQ(kept, (std::vector<std::size_t>{0, 1})) << "seed " << seed;
+  }
+  std::vector<std::size_t> one;
+  bilateral_dart_throwing(px, std::nextafter(std::sqrt(2.0), 2.0), std::back_inserter(one), g);
+  EXPECT_EQ(one.size(), 1u);
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(1, 0), Point_2(2, 0)};
+  // Per-item radii: the pair conflicts at the larger of the two radii, so radius 1 beside radius 1.5
+  // conflicts.
+  Dart_throwing_options o;
+  o.radii = {1.0, 1.5, 1.0};
+  o.priority = {3, 2, 1};  // item 0 first, then 1 (conflicts with 0 at max(1, 1.5)), then 2 (at 2 from 0)
+  std::vector<std::size_t> kept;
+  bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o);
+  EXPECT_EQ(kept, (std::vector<std::size_t>{0, 2}));
+}
+
+TEST(BilateralDartThrowing, ARadiusWhoseSquareIsExactly2ToTheMinus960IsNotTiny) {
+  // The status is
+  // degenerate_input only for a radius whose square lies below 2^-960: r = 2^-480 (square exactly 2^-960)
+  // is success; the next double below is degenerate.
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(1, 0)};
+  std::vector<std::size_t> kept;
+  EXPECT_EQ(bilateral_dart_throwing(p, 0x1p-480, std::back_inserter(kept)).status, Status::success);
+  EXPECT_EQ(bilateral_dart_throwing(p, std::nextafter(0x1p-480, 0.0), std::back_inserter(kept)).status,
+            Status::degenerate_input);
+}
+
+TEST(BilateralDartThrowing, ConsecutiveFailuresStopAtTheLimitAndRestartAfterAnAcceptance) {
+  // Visiting order fixed by priority (item 0 first), r = 1, max_consecutive_failures = 2.
+  Dart_throwing_options o;
+  o.max_consecutive_failures = 2;
+  // Items 1 and 2 conflict with item 0: the second failure in a row is the limit itself and stops the
+  // throw before item 3 (far away) is visited.
+  const std::vector<Point_2> a{Point_2(0, 0), Point_2(0.1, 0), Point_2(0.2, 0), Point_2(5, 0)};
+  o.priority = {4, 3, 2, 1};
+  std::vector<std::size_t> kept;
+  bilateral_dart_throwing(a, 1.0, std::back_inserter(kept), o);
+  EXPECT_EQ(kept, (std::vector<std::size_t>{0}));
+  // Failures alternate with acceptances: the count restarts at every acceptance, so two failures that are
+  // not consecutive never stop the throw and item 4 is kept.
+  const std::vector<Point_2> b{Point_2(0, 0), Point_2(0.1, 0), Point_2(5, 0), Point_2(5.1, 0),
+                               Point_2(10, 0)};
+  o.priority = {5, 4, 3, 2, 1};
+  kept.clear();
+  bilateral_dart_throwing(b, 1.0, std::back_inserter(kept), o);
+  EXPECT_EQ(kept, (std::vector<std::size_t>{0, 2, 4}));
+}
+
+TEST(BilateralDartThrowing, APerItemRadiusOfZeroIsRefused) {
+  // Per-item radii
+  // must be > 0: 0 itself is refused, naming the index (only -1 was tried).
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(1, 0), Point_2(2, 0)};
+  Dart_throwing_options o;
+  o.radii = {1.0, 0.0, 1.0};
+  std::vector<std::size_t> kept;
+  expect_invalid_argument([&] { bilateral_dart_throwing(p, 1.0, std::back_inserter(kept), o); }, "radii[1]");
+}
+
+TEST(BilateralDartThrowing, TargetCountBracketStartsAtTwiceTheLargestDistance) {
+  // Two points 1 apart, count 1:
+  // the bracket starts at twice the largest distance from item 0 (2), whose midpoint 1 still keeps both
+  // (conflicts are strict) and the next one, 1.5, keeps exactly one: an exact hit at radius 1.5. A bracket
+  // starting at the largest distance itself never reaches a radius that keeps one item (the set returned is
+  // then the first item of a throw below radius 1, no longer a maximal throw).
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(1, 0)};
+  std::vector<std::size_t> kept;
+  const auto r = bilateral_dart_throwing_count(p, 1, std::back_inserter(kept));
+  EXPECT_EQ(r.status, Status::success);
+  EXPECT_EQ(kept.size(), 1u);
+  EXPECT_EQ(r.radius, 1.5);
+}
+
+TEST(BilateralDartThrowing, ExponentialDoublingStopsAtAThrowOfExactlyTheCount) {
+  // Two black pixels 1 apart and two white ones far away, exponential form with sigma_feature 0.03: black and
+  // white never conflict (their distance overflows), so the search doubles from twice the largest finite
+  // distance from item 0 (2). The throw at 2 keeps exactly count = 2 items (one per colour), which ends the
+  // doubling (at most `count`, inclusive); the bisection then hits 2 items at radius 1.5 (at 1 the black
+  // pair does not conflict: strict). Doubling on past a throw of exactly `count` items never stops before
+  // the radius overflows and returns a radius near 1e308.
+  const std::vector<Grey_pixel> px{Grey_pixel{0, 0, 0}, Grey_pixel{1, 0, 0}, Grey_pixel{10, 0, 255},
+                                   Grey_pixel{11, 0, 255}};
+  Dart_throwing_count_options o;
+  o.darts.form = Bilateral_form::exponential;
+  o.darts.sigma_feature = 0.03;
+  std::vector<std::size_t> kept;
+  const auto r = bilateral_dart_throwing_count(px, 2, std::back_inserter(kept), o);
+  EXPECT_EQ(r.status, Status::success);
+  EXPECT_EQ(kept.size(), 2u);
+  EXPECT_EQ(r.radius, 1.5);
+}
+}  // namespace

@@ -409,3 +409,125 @@ TEST(SamplingSpectrum, SquareLatticeAndDartThrowing) {
   EXPECT_THROW(average_sampling_spectra({}), std::invalid_argument);
 }
 }  // namespace
+
+// Boundaries pinned by a mutation audit of the sampling headers (session 45): each test fails when the
+// comparison or constant it names is moved.
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using namespace FeatureRecon::test;
+
+// A spectrum given by its radial power and annulus sizes; average_sampling_spectra() of it alone recomputes
+// the effective Nyquist frequency and the oscillation (finish_spectrum) from exactly these numbers.
+Sampling_spectrum hand_made_spectrum(std::size_t samples, const std::vector<double>& power,
+                                     const std::vector<std::size_t>& sizes) {
+  Sampling_spectrum s;
+  s.samples = samples;
+  s.radial_power = power;
+  s.annulus_size = sizes;
+  s.anisotropy.assign(power.size(), 0.0);
+  s.frequency.assign(power.size(), 0.0);
+  return s;
+}
+
+TEST(SamplingSpectrum, ZeroRegionSearchStartsAtTheDiscOfRadiusExactlyOneUnit) {
+  // N = 25: nu_N = 2.5 integer frequencies, so annulus 2 (disc radius 2 + 1/2) is the first disc of at least
+  // one unit, inclusive (b + 1/2 >= nu). Its mean power 1 > 0.5 ends the search there; disc 1 (mean 0) lies
+  // below the threshold 0.1, so nu* is interpolated between 1.5 and 2.5: 1.5 + (0.1 - 0) / (1 - 0) = 1.6,
+  // nu_eff = 1.6 / 2.5 / 2 = 0.32. Starting one annulus later (b + 1/2 > nu) finds disc 4 and gives about
+  // 0.73; dropping the half annulus of the interpolation gives 0.22.
+  const Sampling_spectrum s =
+      average_sampling_spectra({hand_made_spectrum(25, {25, 0, 2, 0, 1}, {1, 1, 1, 100, 1000})});
+  EXPECT_DOUBLE_EQ(s.effective_nyquist, 0.32);
+}
+
+TEST(SamplingSpectrum, ADiscMeanOfExactlyOneHalfDoesNotEndTheZeroRegion) {
+  // N = 4 (nu_N = 1). Disc 1 has mean power exactly 0.5: the search needs a mean above 0.5, so it goes on to
+  // disc 3 (mean 100.5 / 111) and interpolates below it from disc 2 (mean 0.5 / 11): nu* = 2.5 + t. A
+  // search that stopped at 0.5 would step down from disc 1 and report nu_eff 0.
+  const Sampling_spectrum s =
+      average_sampling_spectra({hand_made_spectrum(4, {4, 0.5, 0, 1}, {1, 1, 10, 100})});
+  EXPECT_DOUBLE_EQ(s.effective_nyquist, 1.2817142857142858);  // (2.5 + t) / 1 / 2, measured
+}
+
+TEST(SamplingSpectrum, ADiscMeanOfExactlyTheThresholdIsNotQuiet) {
+  // N = 4, threshold 0.1: disc 1 has mean exactly 0.1, which is not below the threshold, so the zero region
+  // is empty (nu_eff 0). Counting it as quiet would give nu* = 1.5 + 0, nu_eff 0.75.
+  const Sampling_spectrum s = average_sampling_spectra({hand_made_spectrum(4, {4, 0.1, 1}, {1, 1, 1})}, 0.1);
+  EXPECT_EQ(s.effective_nyquist, 0.0);
+}
+
+TEST(SamplingSpectrum, AQuietSpectrumReportsItsLastHalfAnnulus) {
+  // No disc reaches 0.5: nu* is the lower bound bins - 1/2 = 3.5 (N = 4, nu_N = 1): nu_eff = 1.75, and no
+  // annulus reaches 0.98, so there is no oscillation band.
+  const Sampling_spectrum s = average_sampling_spectra({hand_made_spectrum(4, {4, 0, 0, 0}, {1, 8, 12, 16})});
+  EXPECT_DOUBLE_EQ(s.effective_nyquist, 1.75);
+  EXPECT_EQ(s.oscillation, 0.0);
+}
+
+TEST(SamplingSpectrum, OscillationBandStartsAtExactlyPointNineEightAndEndsInclusively) {
+  // N = 2: nu_N = sqrt(2) / 2, so the band is ceil(10 nu_N) = ceil(7.07) = 8 annuli long. Annulus 2 has power
+  // exactly 0.98 and starts the band (>= 0.98); the band ends at annulus 2 + 8 = 10, included, whose power 3
+  // dominates Omega. Pinned: oscillation_from = 2 / nu_N, oscillation_to = 10 / nu_N, and Omega itself.
+  const std::vector<double> power{2, 0.5, 0.98, 1, 1, 1, 1, 1, 1, 1, 3, 1};
+  const std::vector<std::size_t> sizes{1, 8, 12, 16, 32, 28, 40, 40, 48, 56, 68, 56};
+  const Sampling_spectrum s = average_sampling_spectra({hand_made_spectrum(2, power, sizes)});
+  const double nu = std::sqrt(2.0) / 2;
+  EXPECT_DOUBLE_EQ(s.oscillation_from, 2 / nu);
+  EXPECT_DOUBLE_EQ(s.oscillation_to, 10 / nu);
+  EXPECT_DOUBLE_EQ(s.oscillation, 8.9443508296972496);  // measured: 10 sqrt(sum d^2 a / sum a)
+}
+
+TEST(SamplingQuality, PeriodicDefaultMeasureIsTheUnitCell) {
+  // On the torus the default
+  // domain measure is the unit square, not the bounding box of the samples (here 0.5 x 0.5): d_hex for
+  // N = 4 is sqrt(2 / (sqrt(3) 4)).
+  const std::vector<Point_2> p{Point_2(0.1, 0.1), Point_2(0.6, 0.1), Point_2(0.1, 0.6), Point_2(0.6, 0.6)};
+  Sampling_quality_options o;
+  o.periodic = true;
+  const Sampling_quality q = sampling_quality(p, o);
+  EXPECT_EQ(q.status, Status::success);
+  EXPECT_EQ(q.domain_measure, 1.0);
+  EXPECT_DOUBLE_EQ(q.hexagonal_distance, std::sqrt(2 / (std::sqrt(3.0) * 4)));
+  EXPECT_DOUBLE_EQ(q.minimum_distance, 0.5);  // the lattice of spacing 0.5, also across the seam
+}
+
+TEST(SamplingSpectrum, FrequencyRangeBoundsAndDefault) {
+  // max_frequency 16384 is the largest allowed (only 16385 was tried); with a single sample nothing is
+  // allocated, the result is degenerate_input.
+  Sampling_spectrum_options o;
+  o.max_frequency = 16384;
+  Sampling_spectrum s;
+  EXPECT_NO_THROW(s = sampling_spectrum(white_noise(1, 3), o));
+  EXPECT_EQ(s.status, Status::degenerate_input);
+  // The default F is 6 sqrt(N) rounded up: 6 sqrt(10) = 18.97 gives F = 19, annuli 0..19.
+  const Sampling_spectrum t = sampling_spectrum(white_noise(10, 3));
+  EXPECT_EQ(t.radial_power.size(), 20u);
+}
+
+TEST(SamplingSpectrum, AveragingRefusesSpectraOfOtherSampleCounts) {
+  // Spectra of 64 and
+  // 65 samples with the same frequency range (F = 48) differ in their unit sqrt(N) / 2: refused.
+  Sampling_spectrum_options o;
+  o.max_frequency = 48;
+  const Sampling_spectrum a = sampling_spectrum(white_noise(64, 1), o);
+  const Sampling_spectrum b = sampling_spectrum(white_noise(65, 2), o);
+  ASSERT_EQ(a.radial_power.size(), b.radial_power.size());
+  expect_invalid_argument([&] { average_sampling_spectra({a, b}); }, "spectrum 1 has 65 samples");
+}
+
+TEST(SamplingSpectrum, AnisotropyUsesTheSampleVarianceOfTheAnnulus) {
+  // Two samples at
+  // (0, 0) and (0.5, 0): P(f) = 1 + cos(pi f_x), 2 for even f_x and 0 for odd. Annulus 1 holds the 8
+  // frequencies (+-1, 0), (0, +-1), (+-1, +-1) with powers 0, 0, 2, 2, 0, 0, 0, 0: mean 0.5, sample variance
+  // (8 - 8 * 0.25) / 7 = 6 / 7, anisotropy 10 log10((6 / 7) / 0.25) = 10 log10(24 / 7).
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(0.5, 0)};
+  Sampling_spectrum_options o;
+  o.max_frequency = 4;
+  const Sampling_spectrum s = sampling_spectrum(p, o);
+  ASSERT_EQ(s.annulus_size.size(), 5u);
+  EXPECT_EQ(s.annulus_size[1], 8u);
+  EXPECT_NEAR(s.radial_power[1], 0.5, 1e-12);
+  EXPECT_NEAR(s.anisotropy[1], 10 * std::log10(24.0 / 7.0), 1e-9);
+}
+}  // namespace

@@ -596,3 +596,126 @@ TEST(WeightedSampleElimination, RadiiAtTheEndsOfTheDoubles) {
   EXPECT_EQ(b.size(), 5u);
 }
 }  // namespace
+
+// Boundaries pinned by a mutation audit of the sampling headers (session 45): each test fails when the
+// comparison or constant it names is moved.
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using namespace FeatureRecon::test;
+
+TEST(WeightedSampleElimination, TwoItemsKeepTheOneOfLowestSeededPriority) {
+  // Two points: both weigh the same, so the heap's tie rule alone decides; the item of lowest seeded priority
+  // stays, for every seed. With two or three items the heap is built by sifting node 0 only: a build that
+  // skipped the last inner node left them in input order and always removed item 0.
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(1, 0)};
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    Elimination_options o;
+    o.seed = seed;
+    std::vector<std::size_t> kept;
+    weighted_sample_elimination(p, 1, std::back_inserter(kept), o);
+    const std::vector<std::uint32_t> priority = sampling::internal::seeded_permutation(2, seed);
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(priority[kept[0]], 0u) << "seed " << seed;
+  }
+}
+
+TEST(WeightedSampleElimination, OptionBoundsAtTheirEnds) {
+  // max_radius times sigma_position may be exactly 1e100 (the bound is inclusive), alpha must be above 0.
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(1, 0), Point_2(0, 1)};
+  Elimination_options o;
+  o.max_radius = 1e100;  // 1e100 * 1 == 1e100 exactly
+  std::vector<std::size_t> kept;
+  const auto r = weighted_sample_elimination(p, 1, std::back_inserter(kept), o);
+  EXPECT_EQ(r.selected, 1u);
+  EXPECT_EQ(r.radius, 1e100);
+  o = {};
+  o.alpha = 0;
+  expect_invalid_argument([&] { weighted_sample_elimination(p, 1, std::back_inserter(kept), o); }, "alpha");
+}
+
+TEST(WeightedSampleElimination, CollinearRadiusIsHalfTheSpacingOfTheKeptCount) {
+  // Collinear input packs a segment: r_max = L / (2 count) = 10 / (2 * 5) = 1 for 11 points on [0, 10].
+  std::vector<Point_2> p;
+  for (int i = 0; i <= 10; ++i) p.emplace_back(i, 0);
+  std::vector<std::size_t> kept;
+  const auto r = weighted_sample_elimination(p, 5, std::back_inserter(kept));
+  EXPECT_EQ(r.status, Status::degenerate_input);
+  EXPECT_EQ(r.selected, 5u);
+  EXPECT_DOUBLE_EQ(r.radius, 1.0);
+}
+
+TEST(WeightedSampleElimination, SamePositionWithOtherFeaturesIsNotACopy) {
+  // Items 0 and 1 share a position but have opposite normals: at sigma_feature 0.1 they are far apart
+  // (bilateral distance above 2 r_max), so they are not copies and neither goes up front. Item 2 is a close
+  // neighbour of item 0 with the same normal, so one of items 0 and 2 goes; item 1 (weight 0) always stays,
+  // whatever the seed. Grouping copies by position alone removed item 1 when its priority was the higher.
+  const std::vector<std::pair<Point_3, Vector_3>> items{{Point_3(0, 0, 0), Vector_3(0, 0, 1)},
+                                                        {Point_3(0, 0, 0), Vector_3(0, 0, -1)},
+                                                        {Point_3(0.1, 0, 0), Vector_3(0, 0, 1)}};
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    Elimination_options o;
+    o.sigma_feature = 0.1;
+    o.max_radius = 1;
+    o.seed = seed;
+    std::vector<std::size_t> kept;
+    weighted_sample_elimination(items, 2, std::back_inserter(kept), o);
+    ASSERT_EQ(kept.size(), 2u);
+    EXPECT_TRUE(kept[0] == 1 || kept[1] == 1) << "seed " << seed;
+  }
+}
+
+TEST(WeightedSampleElimination, OfEachGroupOfCopiesTheLowestPriorityStays) {
+  // Items 0, 1, 2 are copies; 5 items, 3 kept: the two eliminations are exactly the surplus copies, removed
+  // up front, and of the group the copy of lowest seeded priority stays (the one the heap would pop last).
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(0, 0), Point_2(0, 0), Point_2(1, 0), Point_2(0, 1)};
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    Elimination_options o;
+    o.seed = seed;
+    std::vector<std::size_t> kept;
+    weighted_sample_elimination(p, 3, std::back_inserter(kept), o);
+    const std::vector<std::uint32_t> priority = sampling::internal::seeded_permutation(p.size(), seed);
+    std::size_t lowest = 0;
+    for (std::size_t i = 1; i < 3; ++i)
+      if (priority[i] < priority[lowest]) lowest = i;
+    EXPECT_EQ(kept, (std::vector<std::size_t>{lowest, 3, 4})) << "seed " << seed;
+  }
+}
+
+TEST(WeightedSampleElimination, EqualGroupsOfCopiesGiveUpTheCopyOfHighestPriority) {
+  // Two groups of two copies (items 0, 1 and items 2, 3) and one elimination: more copies than
+  // eliminations, so one copy goes from one of the largest groups; the groups tie in size and the tie goes to
+  // the group whose next copy has the higher priority: the item of highest priority among 0..3 goes.
+  const std::vector<Point_2> p{Point_2(0, 0), Point_2(0, 0), Point_2(1, 0), Point_2(1, 0), Point_2(0, 1)};
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    Elimination_options o;
+    o.seed = seed;
+    std::vector<std::size_t> kept;
+    weighted_sample_elimination(p, 4, std::back_inserter(kept), o);
+    const std::vector<std::uint32_t> priority = sampling::internal::seeded_permutation(p.size(), seed);
+    std::size_t highest = 0;
+    for (std::size_t i = 1; i < 4; ++i)
+      if (priority[i] > priority[highest]) highest = i;
+    std::vector<std::size_t> expected;
+    for (std::size_t i = 0; i < 5; ++i)
+      if (i != highest) expected.push_back(i);
+    EXPECT_EQ(kept, expected) << "seed " << seed;
+  }
+}
+
+TEST(WeightedSampleElimination, PairsAtExactly2RMaxAreNotNeighbours) {
+  // Neighbours lie strictly within 2 r_max. Three pixels
+  // in a row, black, white, black, sigma_feature 1: adjacent pixels are at bilateral distance exactly
+  // sqrt(2) (= std::sqrt(2.0)), which is 2 r_max for max_radius sqrt(2) / 2, while their spatial distance 1
+  // passes the spatial prefilter. So no item has a neighbour and a limit of one entry is not exceeded
+  // (counting the pairs at exactly 2 r_max gives 4 entries and throws).
+  const std::vector<Grey_pixel> px{Grey_pixel{0, 0, 0}, Grey_pixel{1, 0, 255}, Grey_pixel{2, 0, 0}};
+  Elimination_options o;
+  o.sigma_feature = 1;
+  o.max_radius = std::sqrt(2.0) / 2;
+  o.max_neighbor_entries = 1;
+  std::vector<std::size_t> kept;
+  EXPECT_NO_THROW(weighted_sample_elimination(px, 1, std::back_inserter(kept), o));
+  EXPECT_EQ(kept.size(), 1u);
+}
+}  // namespace
