@@ -431,7 +431,8 @@ const std::vector<Command>& commands() {
        "                           points (surface area for 3D points with --intrinsic-dimension 2); 1 with\n"
        "                           --periodic)\n"
        "  --intrinsic-dimension D  2 (surfaces, images) or 3 (volumes); default: estimated for clouds (flat\n"
-       "                           neighbourhoods), the number of coordinates for text points\n"
+       "                           neighbourhoods; also with --domain-measure; 3 with --periodic), the\n"
+       "                           number of coordinates for text points\n"
        "  --periodic               distances on the unit torus (positions modulo 1); for 2D samples also "
        "the\n"
        "                           effective Nyquist frequency and the oscillation of Heck, Schloemer and "
@@ -490,7 +491,7 @@ const std::vector<Command>& commands() {
       {"stipple", "Stippling: dots following a picture's darkness, coloured from a small palette",
        "usage: featurerecon stipple IMAGE --count N [--method lloyd|bilateral-lloyd|darts|kernel]\n"
        "                           [--sigma-feature S] [--iterations K] [--palette C] [--gamma G] [--grey]\n"
-       "                           [--seed N] (--out FILE.svg | --png FILE.png) [--quiet]\n"
+       "                           [--seed N] [--out FILE.svg] [--png FILE.png] (one or both) [--quiet]\n"
        "\n"
        "N dots whose density follows the darkness (1 - luma)^G of the picture, each in the palette colour "
        "nearest\n"

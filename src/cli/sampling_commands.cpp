@@ -237,10 +237,12 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   } else if (cloud) {
     const io::Point_cloud& cloud = points;
     dimension = 3;
-    if (o.intrinsic_dimension == 0 && o.domain_measure == 0 && !o.periodic) {
+    // The dimension is estimated whenever it is not given, also with a given measure (an area given for a
+    // surface measured as a volume put rho 3 times too low); the unit torus of --periodic is a volume.
+    if (o.intrinsic_dimension == 0 && !o.periodic) {
       const auto [d, m] = domain_of(cloud.points);
       o.intrinsic_dimension = d;
-      o.domain_measure = m;
+      if (o.domain_measure == 0) o.domain_measure = m;
     }
     if (std::isfinite(o.sigma_feature) && !cloud.has_normals())
       throw Usage_error("--sigma-feature needs normals in " + input);
