@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <ostream>
 
 namespace FeatureRecon {
 
@@ -21,6 +22,22 @@ enum class Status {
   degenerate_input,
   interrupted  ///< the progress callback returned false; the result is partial
 };
+
+/// The name of a status as written in the source: "success", "degenerate_input" or "interrupted".
+inline const char* to_string(Status s) {
+  switch (s) {
+    case Status::success:
+      return "success";
+    case Status::degenerate_input:
+      return "degenerate_input";
+    case Status::interrupted:
+      return "interrupted";
+  }
+  return "unknown";
+}
+
+/// Writes to_string(s).
+inline std::ostream& operator<<(std::ostream& os, Status s) { return os << to_string(s); }
 
 namespace internal {
 /// Calls `progress` if set; returns false when the caller asked to stop.

@@ -207,24 +207,6 @@ struct Stipple_report {
   std::string stop;
 };
 
-const char* stop_name(fs::Lloyd_stop s) {
-  switch (s) {
-    case fs::Lloyd_stop::iteration_cap:
-      return "iteration_cap";
-    case fs::Lloyd_stop::energy_tolerance:
-      return "energy_tolerance";
-    case fs::Lloyd_stop::move_tolerance:
-      return "move_tolerance";
-    case fs::Lloyd_stop::callback:
-      return "callback";
-    case fs::Lloyd_stop::interrupted:
-      return "interrupted";
-    case fs::Lloyd_stop::no_descent:
-      return "no_descent";
-  }
-  return "";
-}
-
 template <class Pixel, std::size_t C>
 std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
                          const std::vector<std::array<double, 3>>& palette, Progress& progress,
@@ -251,7 +233,7 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
         fs::lloyd_relaxation(sites, fs::Pixel_density(image.width, image.height, density), o);
     for (const auto& p : r.sites) dots.push_back({p, colour_at(p)});
     report.iterations = r.history.size();
-    report.stop = stop_name(r.stop);
+    report.stop = fs::to_string(r.stop);
     return dots;
   }
   if (s.method == "bilateral-lloyd") {
@@ -265,7 +247,7 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
     const auto r = fs::discrete_bilateral_lloyd(pixels, start, o);
     for (const auto& site : r.sites) dots.push_back({site.position, colour_at(site.position)});
     report.iterations = r.history.size();
-    report.stop = stop_name(r.stop);
+    report.stop = fs::to_string(r.stop);
     return dots;
   }
   const std::vector<std::size_t> start =
@@ -287,7 +269,7 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
   const auto r = fs::kernel_relaxation(pixels, start, o);
   for (const auto& site : r.sites) dots.push_back({site.position, colour_at(site.position)});
   report.iterations = r.history.size();
-  report.stop = stop_name(r.stop);
+  report.stop = fs::to_string(r.stop);
   if (!r.history.empty()) report.relative_radius = r.history.back().relative_radius;
   return dots;
 }

@@ -19,17 +19,6 @@ using skeleton::Skeleton_graph;
 /// Data values (GraphML, GeoJSON, PLY, CSV): every bit kept.
 std::string number(double x) { return format_double(x); }
 
-const char* type_name(unsigned t) {
-  using namespace skeleton;
-  if ((t & minimum) && (t & maximum)) return "isolated";
-  if (t & minimum) return (t & up_fork) ? "minimum+up-fork" : "minimum";
-  if (t & maximum) return (t & down_fork) ? "maximum+down-fork" : "maximum";
-  if ((t & up_fork) && (t & down_fork)) return "up-fork+down-fork";
-  if (t & up_fork) return "up-fork";
-  if (t & down_fork) return "down-fork";
-  return "regular";
-}
-
 /// A picture frame: the bounding box of what is added, scaled to `size` pixels on its longer side, y upwards.
 class Picture_frame {
  public:
@@ -85,7 +74,7 @@ void write_skeleton_graphml(const std::string& path, const Skeleton_graph& g) {
     os << "    <node id=\"n" << v << "\"><data key=\"x\">" << number(n.position[0])
        << "</data><data key=\"y\">" << number(n.position[1]) << "</data><data key=\"z\">"
        << number(n.position[2]) << "</data><data key=\"value\">" << number(n.value)
-       << "</data><data key=\"type\">" << type_name(n.type) << "</data></node>\n";
+       << "</data><data key=\"type\">" << skeleton::node_type_name(n.type) << "</data></node>\n";
   }
   std::size_t k = 0;
   for (auto e : boost::make_iterator_range(edges(g))) {
@@ -174,7 +163,7 @@ void write_skeleton_geojson(const std::string& path, const Skeleton_graph& g, bo
     os << (first ? "" : ",\n")
        << "{\"type\": \"Feature\", \"geometry\": {\"type\": \"Point\", \"coordinates\": ["
        << number(n.position[0]) << ", " << number(n.position[1])
-       << "]}, \"properties\": {\"kind\": \"node\", \"type\": \"" << type_name(n.type)
+       << "]}, \"properties\": {\"kind\": \"node\", \"type\": \"" << skeleton::node_type_name(n.type)
        << "\", \"value\": " << number(n.value) << "}}";
     first = false;
   }

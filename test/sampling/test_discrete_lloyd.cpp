@@ -199,6 +199,20 @@ TEST(Discrete_lloyd, BilateralCellsRespectTheEdge) {
     }
     EXPECT_EQ(s.feature[0], px[near].value);
   }
+  // Result::items names that pixel: the brute-force nearest, whose value the site carries.
+  ASSERT_EQ(r.items.size(), r.sites.size());
+  for (std::size_t k = 0; k < r.sites.size(); ++k) {
+    const auto& s = r.sites[k];
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      const double dx = px[i].column + 0.5 - s.position[0], dy = px[i].row + 0.5 - s.position[1];
+      const double dk = px[r.items[k]].column + 0.5 - s.position[0],
+                   dyk = px[r.items[k]].row + 0.5 - s.position[1];
+      ASSERT_TRUE(dk * dk + dyk * dyk < dx * dx + dy * dy ||
+                  (dk * dk + dyk * dyk == dx * dx + dy * dy && r.items[k] <= i))
+          << "site " << k << ", pixel " << i;
+    }
+    EXPECT_EQ(s.feature[0], px[r.items[k]].value);
+  }
   // Euclidean cells do cross the edge.
   o.sigma_feature = std::numeric_limits<double>::infinity();
   const auto e = discrete_bilateral_lloyd(px, start, o);
@@ -219,6 +233,17 @@ TEST(Discrete_lloyd, SnapKeepsSitesOnItems) {
     EXPECT_EQ(s.position[0] - std::floor(s.position[0]), 0.5);
     EXPECT_EQ(s.position[1] - std::floor(s.position[1]), 0.5);
   }
+  // Result::items: the pixel each site sits on, and whose value it carries.
+  ASSERT_EQ(r.items.size(), r.sites.size());
+  for (std::size_t k = 0; k < r.sites.size(); ++k) {
+    const Grey_pixel& p = px[r.items[k]];
+    EXPECT_EQ(r.sites[k].position[0], p.column + 0.5) << k;
+    EXPECT_EQ(r.sites[k].position[1], p.row + 0.5) << k;
+    EXPECT_EQ(r.sites[k].feature[0], p.value) << k;
+  }
+  // No items: none named.
+  EXPECT_TRUE(
+      discrete_bilateral_lloyd(std::vector<Grey_pixel>{}, random_sites(3, 25, 25, 8), o).items.empty());
 }
 
 TEST(Discrete_lloyd, DeterministicAndStoppingRules) {

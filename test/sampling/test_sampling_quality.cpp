@@ -13,6 +13,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -531,3 +533,19 @@ TEST(SamplingSpectrum, AnisotropyUsesTheSampleVarianceOfTheAnnulus) {
   EXPECT_NEAR(s.anisotropy[1], 10 * std::log10(24.0 / 7.0), 1e-9);
 }
 }  // namespace
+
+TEST(SamplingOptions, NamesOfTheStoppingReasons) {
+  const std::pair<FeatureRecon::sampling::Lloyd_stop, const char*> names[] = {
+      {FeatureRecon::sampling::Lloyd_stop::iteration_cap, "iteration_cap"},
+      {FeatureRecon::sampling::Lloyd_stop::energy_tolerance, "energy_tolerance"},
+      {FeatureRecon::sampling::Lloyd_stop::move_tolerance, "move_tolerance"},
+      {FeatureRecon::sampling::Lloyd_stop::callback, "callback"},
+      {FeatureRecon::sampling::Lloyd_stop::interrupted, "interrupted"},
+      {FeatureRecon::sampling::Lloyd_stop::no_descent, "no_descent"}};
+  for (const auto& [stop, name] : names) {
+    EXPECT_STREQ(FeatureRecon::sampling::to_string(stop), name);
+    std::ostringstream os;
+    os << stop;
+    EXPECT_EQ(os.str(), name);
+  }
+}

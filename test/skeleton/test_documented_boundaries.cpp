@@ -167,7 +167,7 @@ TEST(DocumentedBoundaries, MergedBranchNodesOfEqualValueTakeTheSmallerIndexFirst
     g[v].position = {coordinates.row(v)[0], coordinates.row(v)[1], 0};
   }
   auto arc = [&](std::size_t a, std::size_t b) {
-    add_edge(a, b, Skeleton_arc{{g[a].position, g[b].position}, {}, {}}, g);
+    add_edge(a, b, Skeleton_arc{{g[a].position, g[b].position}, {}, {}, a, b}, g);
   };
   arc(0, 1);
   arc(2, 0);

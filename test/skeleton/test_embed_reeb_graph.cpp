@@ -188,6 +188,11 @@ TEST(EmbedReebGraph, BadInput) {
               embed_reeb_graph(two, g, positions, {0.0, 1.0}, 2);
             }).find("graph edge 0"),
             std::string::npos);
+  // Positions and values of other lengths: both counts named.
+  EXPECT_NE(message([&] {
+              embed_reeb_graph(two, positions, {0.0, 1.0, 2.0}, 2);
+            }).find("positions has 2 points and values 3 entries: one of each per vertex"),
+            std::string::npos);
   // Non-finite values and positions of the graph's vertices are named (a NaN position gave NaN polylines).
   EXPECT_NE(message([&] {
               embed_reeb_graph(two, positions, {0.0, std::nan("")}, 2);

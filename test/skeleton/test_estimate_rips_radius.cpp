@@ -470,6 +470,9 @@ TEST(EstimateRipsRadius, DistanceMatrixGivesTheSameEstimate) {
   EXPECT_EQ(s.rips_radius, a.radius);
   EXPECT_EQ(s.delta, a.delta);
   EXPECT_EQ(topology(s.graph).loops, 1u);
+  // With a given radius, a negative delta is the suggested one at that radius.
+  EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, a.radius, o).delta, a.delta);
+  EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, 4 * a.scale, o).delta, 4 * a.scale);
   D[1] = -1;  // refused as the other distance-matrix functions refuse it
   EXPECT_THROW(estimate_rips_radius_from_distance_matrix(matrix), std::invalid_argument);
 }
@@ -507,10 +510,19 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   o.progress = nullptr;
   EXPECT_EQ(num_edges(extract_reeb_skeleton(range, o).graph), num_edges(staged.graph));
 
-  // A negative delta: the estimate's; refused by the overloads that take a radius.
+  // A negative delta: the estimate's; with a given radius, max(radius, 2.25 x the estimated scale) (it was
+  // refused); the graph overload, without points to estimate from, refuses it and says why.
   o.delta = -1;
   EXPECT_EQ(extract_reeb_skeleton(m, o).delta, e.delta);
-  EXPECT_THROW(extract_reeb_skeleton(m, e.radius, o), std::invalid_argument);
+  EXPECT_EQ(extract_reeb_skeleton(m, e.radius, o).delta, e.delta);
+  EXPECT_EQ(extract_reeb_skeleton(m, 0.5 * e.scale, o).delta, 2.25 * e.scale);
+  EXPECT_EQ(extract_reeb_skeleton(m, 3 * e.scale, o).delta, 3 * e.scale);
+  EXPECT_EQ(extract_reeb_skeleton(range, e.radius, o).delta, e.delta);
+  EXPECT_NE(
+      invalid_argument_message([&] { extract_reeb_skeleton(build_rips_graph(m, e.radius), m, o); })
+          .find("delta must be finite and >= 0, got -1 (a negative delta, the suggested one, needs points "
+                "or a distance matrix)"),
+      std::string::npos);
   o.delta = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(extract_reeb_skeleton(m, o), std::invalid_argument);
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -163,6 +164,8 @@ struct Crossing {
       for (const Vertex_index p : members) s.polyline.push_back({points.row(p)[0], points.row(p)[1], 0});
       s.polyline.push_back(graph[b].position);
       s.members = std::move(members);
+      s.lower = a;
+      s.upper = b;
       add_edge(a, b, std::move(s), graph);
     };
     arc(0, 2, {});
@@ -219,7 +222,7 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   EXPECT_EQ(merge_close_branch_nodes(leafy.graph, leafy.points, 0.1).merged, 1u);  // only the fork-fork arc
   // A short loop stays a loop: a second arc between the forks keeps both.
   Crossing loop;
-  add_edge(2, 3, Skeleton_arc{{{0, -0.05, 0}, {0.01, 0, 0}, {0, 0.05, 0}}, {}, {}}, loop.graph);
+  add_edge(2, 3, Skeleton_arc{{{0, -0.05, 0}, {0.01, 0, 0}, {0, 0.05, 0}}, {}, {}, 2, 3}, loop.graph);
   const Branch_node_merge_result kept = merge_close_branch_nodes(loop.graph, loop.points, 0.2);
   EXPECT_EQ(kept.merged, 0u);
   EXPECT_EQ(num_edges(kept.graph), 6u);
@@ -243,7 +246,7 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   // An arc between two nodes of one value, nothing merged: copied as it is, not turned round by index.
   Skeleton_graph level(2);
   level[0].type = level[1].type = minimum | maximum;
-  add_edge(1, 0, Skeleton_arc{{{1, 0, 0}, {0, 0, 0}}, {}, {}}, level);
+  add_edge(1, 0, Skeleton_arc{{{1, 0, 0}, {0, 0, 0}}, {}, {}, 1, 0}, level);
   const Branch_node_merge_result kept_level = merge_close_branch_nodes(level, x.points, 1.0);
   const auto e = *edges(kept_level.graph).first;
   EXPECT_EQ(source(e, kept_level.graph), 1u);
@@ -278,7 +281,7 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
     g[v].members = {static_cast<Vertex_index>(v)};
   }
   auto arc = [&](Skeleton_graph& h, std::size_t a, std::size_t b) {
-    add_edge(a, b, Skeleton_arc{{h[a].position, h[b].position}, {}, {}}, h);
+    add_edge(a, b, Skeleton_arc{{h[a].position, h[b].position}, {}, {}, a, b}, h);
   };
   for (const auto& [a, b] :
        std::vector<std::pair<int, int>>{{0, 2}, {1, 2}, {2, 3}, {3, 5}, {3, 4}, {4, 6}, {4, 7}})
@@ -324,7 +327,97 @@ TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
     EXPECT_LT(s.graph[source(e, s.graph)].value, s.graph[target(e, s.graph)].value);
     EXPECT_EQ(s.graph[e].polyline.front(), s.graph[source(e, s.graph)].position);
     EXPECT_EQ(s.graph[e].polyline.back(), s.graph[target(e, s.graph)].position);
+    // The reversed arc (d's) and the others name their new ends.
+    EXPECT_EQ(s.graph[e].lower, source(e, s.graph));
+    EXPECT_EQ(s.graph[e].upper, target(e, s.graph));
   }
+}
+
+TEST(ExtractReebSkeleton, ArcsSayWhichWayTheyRunFromEitherNode) {
+  // Boost reports an undirected arc with either node as its source (out_edges(v, g): always v); the arc's
+  // lower / upper say which way its polylines run, and arc_polyline_from() walks it from either node.
+  const auto eight = sample_segments(figure_eight_segments(), 0.3, 0.05, 4);
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Skeleton_graph g = extract_reeb_skeleton(eight.points, 0.7, o).graph;
+  ASSERT_GT(num_edges(g), 2u);
+  std::size_t reversed = 0;
+  for (auto v : boost::make_iterator_range(vertices(g)))
+    for (auto e : boost::make_iterator_range(out_edges(v, g))) {
+      const Skeleton_arc& a = g[e];
+      ASSERT_TRUE(a.lower == v || a.upper == v);
+      const std::size_t other = a.lower == v ? a.upper : a.lower;
+      EXPECT_LE(g[a.lower].value, g[a.upper].value);
+      EXPECT_EQ(a.polyline.front(), g[a.lower].position);
+      EXPECT_EQ(a.polyline.back(), g[a.upper].position);
+      const auto walked = arc_polyline_from(g, e, v);
+      EXPECT_EQ(walked.front(), g[v].position);
+      EXPECT_EQ(walked.back(), g[other].position);
+      auto back = walked;
+      std::reverse(back.begin(), back.end());
+      EXPECT_EQ(v == a.lower ? walked : back, a.polyline);
+      reversed += v != a.lower ? 1 : 0;
+      for (std::size_t w = 0; w < num_vertices(g); ++w)
+        if (w != a.lower && w != a.upper) {
+          EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] {
+                      arc_polyline_from(g, e, w);
+                    }).find("node " + std::to_string(w) + " is not an end of the arc"),
+                    std::string::npos);
+          break;
+        }
+    }
+  // Stored from lower to upper: edges(g) reports them that way; every arc but a loop arc (one node) is met
+  // once from its upper node.
+  std::size_t non_loops = 0;
+  for (auto e : boost::make_iterator_range(edges(g))) {
+    EXPECT_EQ(g[e].lower, source(e, g));
+    EXPECT_EQ(g[e].upper, target(e, g));
+    non_loops += g[e].lower != g[e].upper ? 1 : 0;
+  }
+  EXPECT_EQ(reversed, non_loops);
+  EXPECT_GT(reversed, 0u);
+  // Above 3D the input polylines too: the same figure-eight in R^4 (two zero coordinates).
+  Point_matrix m4;
+  m4.dimension = 4;
+  for (const auto& p : eight.points) {
+    m4.data.insert(m4.data.end(), {p[0], p[1], 0.0, 0.0});
+    ++m4.rows;
+  }
+  const Skeleton_graph h = extract_reeb_skeleton(m4, 0.7, o).graph;
+  ASSERT_EQ(num_edges(h), num_edges(g));
+  for (auto e : boost::make_iterator_range(edges(h))) {
+    const Skeleton_arc& a = h[e];
+    ASSERT_FALSE(a.input_polyline.empty());
+    EXPECT_EQ(arc_input_polyline_from(h, e, a.lower, 4), a.input_polyline);
+    const std::vector<double> up = arc_input_polyline_from(h, e, a.upper, 4);
+    const std::size_t count = a.input_polyline.size() / 4;
+    ASSERT_EQ(up.size(), a.input_polyline.size());
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(up[4 * i + c], a.input_polyline[4 * (count - 1 - i) + c]);
+    const std::size_t wrong = a.input_polyline.size() + 1;  // divides no positive size below it
+    EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] {
+                arc_input_polyline_from(h, e, a.lower, wrong);
+              }).find("not points of " + std::to_string(wrong) + " coordinates"),
+              std::string::npos);
+  }
+}
+
+TEST(ExtractReebSkeleton, NamesOfStatusesAndNodeTypes) {
+  EXPECT_STREQ(to_string(Status::success), "success");
+  EXPECT_STREQ(to_string(Status::degenerate_input), "degenerate_input");
+  EXPECT_STREQ(to_string(Status::interrupted), "interrupted");
+  std::ostringstream os;
+  os << Status::interrupted;
+  EXPECT_EQ(os.str(), "interrupted");
+  EXPECT_STREQ(node_type_name(regular), "regular");
+  EXPECT_STREQ(node_type_name(minimum), "minimum");
+  EXPECT_STREQ(node_type_name(maximum), "maximum");
+  EXPECT_STREQ(node_type_name(minimum | maximum), "isolated");
+  EXPECT_STREQ(node_type_name(up_fork), "up-fork");
+  EXPECT_STREQ(node_type_name(down_fork), "down-fork");
+  EXPECT_STREQ(node_type_name(up_fork | down_fork), "up-fork+down-fork");
+  EXPECT_STREQ(node_type_name(minimum | up_fork), "minimum+up-fork");
+  EXPECT_STREQ(node_type_name(maximum | down_fork), "maximum+down-fork");
 }
 
 TEST(MergeCloseBranchNodes, ALatticeIsNotChainedIntoALine) {
@@ -410,10 +503,26 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
     leaves += degree(v, collinear.graph) == 1 ? 1 : 0;
   EXPECT_EQ(leaves, 2u);  // a segment
   expect_members_partition(collinear.graph, 21);
+  // A negative delta is the suggested one (one point: no scale, so the radius); NaN is refused, and each
+  // bad field is named alone (one message listed three).
   Skeleton_options bad;
   bad.delta = -1;
+  EXPECT_EQ(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad).delta, 1.0);
+  bad.delta = std::nan("");
   EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad),
                std::invalid_argument);
+  bad.delta = 0;
+  bad.repair_distance = -2;
+  EXPECT_NE(invalid_argument_message([&] {
+              extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
+            }).find("repair_distance must be finite and >= 0, got -2"),
+            std::string::npos);
+  bad.repair_distance = 0;
+  bad.prune_height = -3;
+  EXPECT_NE(invalid_argument_message([&] {
+              extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
+            }).find("prune_height must be >= 0 (infinity: prune all), got -3"),
+            std::string::npos);
   // Messages name the function called, not the stage that noticed (they began with build_rips_graph and
   // build_flag_complex_2), and say what is wrong.
   auto message = [](auto&& call) { return invalid_argument_message(call); };
@@ -440,7 +549,10 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
       0u);
   bad = {};
   bad.prune_height = -1;
-  EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("got 0, 0 and -1"), std::string::npos);
+  EXPECT_NE(message([&] {
+              extract_reeb_skeleton(g, two, bad);
+            }).find("prune_height must be >= 0 (infinity: prune all), got -1"),
+            std::string::npos);
   // Embedding options are checked before the pipeline runs (they were refused by its last stage, naming
   // embed_reeb_graph and the automatic level width in place of the caller's), with the caller's values.
   bad = {};
@@ -878,6 +990,19 @@ TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
   const Reeb_skeleton from_graph = extract_reeb_skeleton(build_rips_graph(m, 0.7), m, o);
   EXPECT_EQ(num_edges(from_graph.graph), num_edges(from_points.graph));
   EXPECT_EQ(loops_of(from_graph.graph), 2u);
+  // The coordinates as a range of points, as the points overloads take them: the same skeleton.
+  const Reeb_skeleton from_range = extract_reeb_skeleton(build_rips_graph(m, 0.7), eight.points, o);
+  ASSERT_EQ(num_edges(from_range.graph), num_edges(from_graph.graph));
+  for (auto v : boost::make_iterator_range(vertices(from_graph.graph))) {
+    EXPECT_EQ(from_range.graph[v].position, from_graph.graph[v].position);
+    EXPECT_EQ(from_range.graph[v].members, from_graph.graph[v].members);
+  }
+  auto shorter = eight.points;
+  shorter.pop_back();
+  EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] {
+              extract_reeb_skeleton(build_rips_graph(m, 0.7), shorter, o);
+            }).find("vertices but coordinates has"),
+            std::string::npos);
   // Bad input: a matrix that is not symmetric, coordinates that do not match the graph.
   Eigen::MatrixXd bad = D;
   bad(0, 1) += 1;

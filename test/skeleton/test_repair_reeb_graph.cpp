@@ -191,10 +191,14 @@ TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   EXPECT_EQ(invalid_argument_message([&] { prune_reeb_graph_components(R, -1); }),
             "prune_reeb_graph_components: max_height must be >= 0, got -1");
   // A graph whose components field was never set (built by hand): the count is the pruned graph's own (it was
-  // 0 - removed, wrapped to 2^64 - 1), and loops() never wraps.
+  // 0 - removed, wrapped to 2^64 - 1), and loops() counts the components itself (it gave 0 for the lollipop's
+  // loop; it never wraps).
   Reeb_graph unset = R;
   unset.components = 0;
-  EXPECT_EQ(unset.loops(), 0u);
+  EXPECT_EQ(unset.loops(), 1u);
+  Reeb_graph bad_arc = unset;  // an arc to a node that does not exist is not counted (it was read)
+  bad_arc.arcs.push_back({0, 99, {}});
+  EXPECT_EQ(bad_arc.loops(), 2u);  // one more arc, the same components
   EXPECT_EQ(prune_reeb_graph_components(unset, 0.25).graph.components, 1u);
   EXPECT_EQ(prune_reeb_graph_components(unset, 0.25).graph.loops(), 1u);
 }

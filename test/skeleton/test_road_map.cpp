@@ -597,8 +597,8 @@ TEST(MergeRoadLines, ThinLoopsAreRemoved) {
   g[1].position = {40, 0, 0};
   g[0].members = {0};
   g[1].members = {1};
-  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {20, 3, 0}, {40, 0, 0}}, {2, 3}, {}}, g);
-  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {20, 0, 0}, {40, 0, 0}}, {4}, {}}, g);
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {20, 3, 0}, {40, 0, 0}}, {2, 3}, {}, 0, 1}, g);
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {20, 0, 0}, {40, 0, 0}}, {4}, {}, 0, 1}, g);
   Skeleton_graph wide = g;
   EXPECT_EQ(skeleton::internal::remove_thin_loops(g, 5), 1u);
   ASSERT_EQ(num_edges(g), 1u);
@@ -615,12 +615,29 @@ TEST(MergeRoadLines, ThinLoopsAreRemoved) {
   t[0].position = {0, 0, 0};
   t[1].position = {40, 0, 0};
   t[2].position = {20, 4, 0};
-  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {40, 0, 0}}, {}, {}}, t);
-  add_edge(0, 2, Skeleton_arc{{{0, 0, 0}, {20, 4, 0}}, {}, {}}, t);
-  add_edge(2, 1, Skeleton_arc{{{20, 4, 0}, {40, 0, 0}}, {}, {}}, t);
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {40, 0, 0}}, {}, {}, 0, 1}, t);
+  add_edge(0, 2, Skeleton_arc{{{0, 0, 0}, {20, 4, 0}}, {}, {}, 0, 2}, t);
+  add_edge(2, 1, Skeleton_arc{{{20, 4, 0}, {40, 0, 0}}, {}, {}, 2, 1}, t);
   EXPECT_EQ(skeleton::internal::remove_thin_loops(t, 5), 1u);
   EXPECT_EQ(num_vertices(t), 2u);
   EXPECT_EQ(num_edges(t), 1u);
+  // The same with the kink numbered between the ends: removing it renumbers the far end, and the arc's
+  // Skeleton_arc::lower / upper follow (they named vertex 2, now out of range).
+  Skeleton_graph k(3);
+  for (std::size_t v = 0; v < 3; ++v) k[v].members = {Vertex_index(v)};
+  k[0].position = {0, 0, 0};
+  k[1].position = {20, 4, 0};
+  k[2].position = {40, 0, 0};
+  add_edge(0, 2, Skeleton_arc{{{0, 0, 0}, {40, 0, 0}}, {}, {}, 0, 2}, k);
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {20, 4, 0}}, {}, {}, 0, 1}, k);
+  add_edge(1, 2, Skeleton_arc{{{20, 4, 0}, {40, 0, 0}}, {}, {}, 1, 2}, k);
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(k, 5), 1u);
+  ASSERT_EQ(num_vertices(k), 2u);
+  ASSERT_EQ(num_edges(k), 1u);
+  const auto kept = *edges(k).first;
+  EXPECT_EQ(k[kept].lower, 0u);
+  EXPECT_EQ(k[kept].upper, 1u);
+  EXPECT_EQ(arc_polyline_from(k, kept, 1).front(), k[1].position);
 }
 
 TEST(SyntheticCity, StreetsAndTrips) {

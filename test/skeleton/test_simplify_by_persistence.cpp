@@ -231,7 +231,12 @@ TEST(SimplifyByPersistence, BadGraphsAreNamed) {
   ASSERT_EQ(R.arcs[0].vertices, (std::vector<Vertex_index>{1}));
   Reeb_graph bad = R;
   bad.arcs[0].vertices = {40};
-  EXPECT_NE(error_of(bad, g.f).find("arc 0 has vertex 40 out of range [0, 3)"), std::string::npos);
+  EXPECT_NE(error_of(bad, g.f).find("arc 0 has vertex 40 out of range [0, 3): values has 3 entries"),
+            std::string::npos);
+  // Too few values for the graph: named as such, not only as a vertex out of range.
+  EXPECT_NE(error_of(R, {0, 1}).find("node 1 has vertex 2 out of range [0, 2): values has 2 entries, one per "
+                                     "vertex"),
+            std::string::npos);
   bad = R;
   bad.arcs[0].vertices = {0};
   EXPECT_NE(error_of(bad, g.f).find("vertex 0 appears twice in the graph (arc 0)"), std::string::npos);

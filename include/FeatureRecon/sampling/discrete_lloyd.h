@@ -104,9 +104,16 @@ struct Discrete_lloyd_result {
   std::vector<Bilateral_site<Traits>> sites;  ///< final sites, in input order
   /// Per item: its site at the last iteration (with no iteration done: among the starting sites).
   std::vector<std::uint32_t> assignment;
-  std::vector<double> mass;                         ///< per site: the density of its items, as `assignment`
-  std::vector<Lloyd_iteration_statistics> history;  ///< one entry per iteration done
-  Lloyd_stop stop = Lloyd_stop::iteration_cap;      ///< why it stopped
+  std::vector<double> mass;  ///< per site: the density of its items, as `assignment`
+  /// Per site: the item nearest to its final position (Euclidean, ties to the lowest index), whose feature a
+  /// site that moved carries; with Site_update::snap_to_item, the item it sits on. The way back from a site
+  /// to the user's item (its other fields). A site that never received an item keeps the feature it started
+  /// with. Empty when there are no items.
+  std::vector<std::size_t> items;
+  /// One entry per iteration done, taken before its move (Lloyd_iteration_statistics): the final sites'
+  /// relative radius is sampling_quality() of `sites`.
+  std::vector<Lloyd_iteration_statistics> history;
+  Lloyd_stop stop = Lloyd_stop::iteration_cap;  ///< why it stopped
   /// degenerate_input for no items or no sites (nothing moves); interrupted when the progress callback
   /// stopped it.
   Status status = Status::success;
@@ -532,14 +539,16 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
       break;
     previous_energy = s.energy;
   }
-  if (result.history
-          .empty()) {  // no iteration (max_iterations 0, or stopped at once): the starting sites' sets
+  // No iteration (max_iterations 0, or stopped at once): the starting sites' sets.
+  if (result.history.empty()) {
     Bilateral_assignment a = engine.assign(sites);
     result.assignment = std::move(a.site);
     result.mass = std::move(a.mass);
   }
   if (result.status != Status::interrupted)
     (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  result.items.reserve(sites.size());
+  for (const auto& site : sites) result.items.push_back(engine.nearest_item(site.position));
   result.sites = std::move(sites);
   return result;
 }

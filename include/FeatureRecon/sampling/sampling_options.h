@@ -68,7 +68,9 @@ struct Sampling_result {
   Status status = Status::success;  ///< degenerate_input for an empty input; interrupted when stopped
 };
 
-/// Statistics of one Lloyd iteration, taken at the sites before they move.
+/// Statistics of one Lloyd iteration, taken at the sites before they move: energy and relative radius are
+/// those of the sites the iteration started from (whose cells it computed), the moves those it made. The
+/// first entry measures the starting sites; sampling_quality() measures the final ones.
 struct Lloyd_iteration_statistics {
   std::size_t iteration = 0;  ///< 1 for the first iteration
   /// CVT energy: sum_i integral (or sum) over cell i of rho(x) d(x, p_i)^2, with d the Euclidean or the
@@ -94,6 +96,29 @@ enum class Lloyd_stop {
   interrupted,       ///< the progress callback returned false
   no_descent         ///< kernel_relaxation(): no step along the gradient lowered the energy (a local minimum)
 };
+
+/// The name of a stopping reason as written in the source ("iteration_cap", "energy_tolerance", ...), as the
+/// command line's JSON writes it.
+inline const char* to_string(Lloyd_stop s) {
+  switch (s) {
+    case Lloyd_stop::iteration_cap:
+      return "iteration_cap";
+    case Lloyd_stop::energy_tolerance:
+      return "energy_tolerance";
+    case Lloyd_stop::move_tolerance:
+      return "move_tolerance";
+    case Lloyd_stop::callback:
+      return "callback";
+    case Lloyd_stop::interrupted:
+      return "interrupted";
+    case Lloyd_stop::no_descent:
+      return "no_descent";
+  }
+  return "unknown";
+}
+
+/// Writes to_string(s).
+inline std::ostream& operator<<(std::ostream& os, Lloyd_stop s) { return os << to_string(s); }
 
 namespace internal {
 /// \cond

@@ -29,7 +29,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
 
 struct Reeb_graph;
 namespace internal {
-std::size_t count_components(const Reeb_graph& G);
+inline std::size_t count_components(const Reeb_graph& G);
 }  // namespace internal
 
 /// Criticality of a node of a Reeb graph, as a bit set: a node can carry several flags (degenerate
@@ -42,6 +42,19 @@ enum Node_type : unsigned {
   up_fork = 4,   ///< two or more arcs above
   down_fork = 8  ///< two or more arcs below
 };
+
+/// A readable name of a node type (a Node_type bit set): "regular", "minimum", "maximum", "up-fork",
+/// "down-fork", "isolated" (minimum and maximum), "minimum+up-fork", "maximum+down-fork",
+/// "up-fork+down-fork"; the names the GraphML, GeoJSON and PLY writers of the command line use.
+inline const char* node_type_name(unsigned t) {
+  if ((t & minimum) && (t & maximum)) return "isolated";
+  if (t & minimum) return (t & up_fork) ? "minimum+up-fork" : "minimum";
+  if (t & maximum) return (t & down_fork) ? "maximum+down-fork" : "maximum";
+  if ((t & up_fork) && (t & down_fork)) return "up-fork+down-fork";
+  if (t & up_fork) return "up-fork";
+  if (t & down_fork) return "down-fork";
+  return "regular";
+}
 
 /// Node type from the numbers of arcs below and above a node.
 inline unsigned node_type_from_degrees(std::size_t down_degree, std::size_t up_degree) {
@@ -76,12 +89,15 @@ struct Reeb_graph {
   /// vertex each reaches (its first interior vertex, or its upper node when it has none). The graphs that
   /// simplification, repair and trimming return do not keep this order.
   std::vector<Arc> arcs;
-  /// Connected components of the graph: set by every function that returns a Reeb_graph; a graph built by
-  /// hand must set it for loops().
+  /// Connected components of the graph: set by every function that returns a Reeb_graph. A graph built by
+  /// hand may leave it 0 (no graph with nodes has none): loops() then counts them.
   std::size_t components = 0;
-  /// First Betti number: arcs + components - nodes (0 when `components` is too small for that to be one).
+  /// First Betti number: arcs + components - nodes, with the components counted when `components` is 0 and
+  /// there are nodes (arcs joining nodes out of range are not counted; 0 when `components` is too small for
+  /// that to be one).
   std::size_t loops() const {
-    return arcs.size() + components >= nodes.size() ? arcs.size() + components - nodes.size() : 0;
+    const std::size_t c = components != 0 || nodes.empty() ? components : internal::count_components(*this);
+    return arcs.size() + c >= nodes.size() ? arcs.size() + c - nodes.size() : 0;
   }
   std::size_t count(Node_type flag) const {  ///< number of nodes carrying `flag`
     return static_cast<std::size_t>(
@@ -583,6 +599,7 @@ inline std::size_t count_components(const Reeb_graph& G) {
   };
   std::size_t components = G.nodes.size();
   for (const Reeb_graph::Arc& a : G.arcs) {
+    if (a.lower >= G.nodes.size() || a.upper >= G.nodes.size()) continue;  // a hand-built graph's bad arc
     const std::size_t r = find(a.lower), s = find(a.upper);
     if (r != s) {
       parent[r] = s;

@@ -287,8 +287,9 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   const char* fn = "embed_reeb_graph";
   const std::size_t d = P.dimension;
   if (P.rows != values.size())
-    FeatureRecon::internal::throw_invalid_argument(fn, "positions and values differ in size (", P.rows,
-                                                   " vs ", values.size(), ")");
+    FeatureRecon::internal::throw_invalid_argument(fn, "positions has ", P.rows, " points and values ",
+                                                   values.size(),
+                                                   " entries: one of each per vertex of the complex");
   if (adjacency != nullptr && adjacency->offsets.size() != P.rows + 1)
     FeatureRecon::internal::throw_invalid_argument(fn, "the graph has ", adjacency->offsets.size() - 1,
                                                    " vertices but there are ", P.rows, " positions");

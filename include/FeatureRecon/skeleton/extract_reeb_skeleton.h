@@ -33,20 +33,28 @@ namespace skeleton {
 
 /// Vertex bundle of a skeleton graph: a node of the Reeb graph.
 struct Skeleton_node {
-  std::array<double, 3> position{};    ///< centroid of its points (projected to 3D above 3D)
-  double value = 0;                    ///< function value (geodesic distance)
-  unsigned type = regular;             ///< Node_type flags
-  std::vector<Vertex_index> members;   ///< input points mapped to the node
+  std::array<double, 3> position{};  ///< centroid of its points (projected to 3D above 3D)
+  double value = 0;                  ///< function value (geodesic distance)
+  unsigned type = regular;           ///< Node_type flags
+  /// Input points mapped to the node: first the node's own vertex of the Reeb graph (of a merged node, that
+  /// of its lowest node), then the points of its level set.
+  std::vector<Vertex_index> members;
   std::vector<double> input_position;  ///< above 3D: the centroid in input space (empty up to 3D: = position)
 };
 
 /// Edge bundle of a skeleton graph: an arc of the Reeb graph.
 struct Skeleton_arc {
-  std::vector<std::array<double, 3>> polyline;  ///< from the lower node to the upper node
+  std::vector<std::array<double, 3>> polyline;  ///< from node `lower` to node `upper`
   std::vector<Vertex_index> members;  ///< input points mapped into the arc, in increasing function value
   /// Above 3D: the polyline in input space, row-major (input dimension per vertex); its PCA projection is
   /// `polyline`. Empty up to 3D, where `polyline` is in input space.
   std::vector<double> input_polyline;
+  /// The arc's lower and upper node (vertex indices of the Skeleton_graph; equal for a loop arc): its
+  /// polylines run from `lower` to `upper`. The graph is undirected, so Boost reports an arc with either node
+  /// as its source (`out_edges(v, g)` gives every arc with source v); these say which way the arc runs
+  /// (arc_polyline_from() orients the polyline). Indices stay valid while no vertex is removed.
+  std::size_t lower = 0;
+  std::size_t upper = 0;  ///< see `lower`
 };
 
 /// The skeleton graph: nodes and arcs of the simplified Reeb graph with their embedding (parallel arcs
@@ -56,7 +64,12 @@ using Skeleton_graph =
 
 /// Options of extract_reeb_skeleton().
 struct Skeleton_options {
-  double delta = 0;  ///< persistence threshold of the simplification (function unit); default 0
+  /// Persistence threshold of the simplification (function unit); default 0 (no simplification). Negative:
+  /// the suggested delta at the radius used, max(radius, 2.25 x the scale estimate_rips_radius() reads off
+  /// the points or matrix; Rips_radius_estimate::delta), taken by the overloads of points and distance
+  /// matrices (with a given radius the estimate's work, about 1,000 n distances, comes first); the graph
+  /// overload refuses it.
+  double delta = 0;
   /// join degree-1 nodes at most this far apart in input space, then simplify again; 0 (default): no repair
   double repair_distance = 0;
   /// With a repair distance: also join each remaining degree-1 node to the closest point of another arc
@@ -143,8 +156,60 @@ inline Skeleton_graph make_skeleton_graph(const Reeb_graph& G, const Reeb_graph_
     s.members.insert(s.members.end(), G.nodes[i].members.begin(), G.nodes[i].members.end());
   }
   for (std::size_t k = 0; k < G.arcs.size(); ++k)
-    add_edge(G.arcs[k].lower, G.arcs[k].upper, Skeleton_arc{E.arc_polylines[k], G.arcs[k].vertices, {}}, g);
+    add_edge(G.arcs[k].lower, G.arcs[k].upper,
+             Skeleton_arc{E.arc_polylines[k], G.arcs[k].vertices, {}, G.arcs[k].lower, G.arcs[k].upper}, g);
   return g;
+}
+
+namespace internal {
+/// Reverses the order of the points of a flattened polyline (`d` coordinates each; d = 0: nothing to do).
+inline void reverse_points(std::vector<double>& flat, std::size_t d) {
+  const std::size_t count = d > 0 ? flat.size() / d : 0;
+  for (std::size_t i = 0; i < count / 2; ++i)
+    std::swap_ranges(flat.begin() + static_cast<std::ptrdiff_t>(i * d),
+                     flat.begin() + static_cast<std::ptrdiff_t>((i + 1) * d),
+                     flat.begin() + static_cast<std::ptrdiff_t>((count - 1 - i) * d));
+}
+}  // namespace internal
+
+/// The polyline of arc e walked from its node `from` (Skeleton_arc::lower or ::upper): the arc's polyline, or
+/// the same reversed when `from` is its upper node. `input_dimension` > 0 orients
+/// Skeleton_arc::input_polyline instead (points of that many coordinates; above 3D, the input dimension),
+/// returned flattened as stored.
+/// \throws std::invalid_argument when `from` is not a node of the arc, or the input polyline is not made of
+/// points of `input_dimension` coordinates.
+inline std::vector<double> arc_input_polyline_from(const Skeleton_graph& g,
+                                                   const Skeleton_graph::edge_descriptor& e, std::size_t from,
+                                                   std::size_t input_dimension) {
+  const Skeleton_arc& a = g[e];
+  const char* fn = "arc_input_polyline_from";
+  if (from != a.lower && from != a.upper)
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "node ", from, " is not an end of the arc (its ends are ", a.lower, " and ", a.upper, ")");
+  if (input_dimension == 0 || a.input_polyline.size() % input_dimension != 0)
+    FeatureRecon::internal::throw_invalid_argument(fn, "the arc's input polyline has ",
+                                                   a.input_polyline.size(), " numbers, not points of ",
+                                                   input_dimension, " coordinates");
+  std::vector<double> out = a.input_polyline;
+  if (from != a.lower) internal::reverse_points(out, input_dimension);
+  return out;
+}
+
+/// The polyline (3D) of arc e walked from its node `from`: Skeleton_arc::polyline, reversed when `from` is
+/// the arc's upper node (a loop arc, lower == upper, keeps its stored direction). For walking a path of arcs
+/// with `out_edges(v, g)`, whose source is always v.
+/// \throws std::invalid_argument when `from` is not a node of the arc.
+inline std::vector<std::array<double, 3>> arc_polyline_from(const Skeleton_graph& g,
+                                                            const Skeleton_graph::edge_descriptor& e,
+                                                            std::size_t from) {
+  const Skeleton_arc& a = g[e];
+  if (from != a.lower && from != a.upper)
+    FeatureRecon::internal::throw_invalid_argument("arc_polyline_from", "node ", from,
+                                                   " is not an end of the arc (its ends are ", a.lower,
+                                                   " and ", a.upper, ")");
+  std::vector<std::array<double, 3>> out = a.polyline;
+  if (from != a.lower) std::reverse(out.begin(), out.end());
+  return out;
 }
 
 /// Result of merge_close_branch_nodes().
@@ -345,11 +410,7 @@ inline Branch_node_merge_result merge_close_branch_nodes(
       std::swap(a, b);
       retype[a] = retype[b] = 1;
       std::reverse(copy.polyline.begin(), copy.polyline.end());
-      const std::size_t d = input.dimension, count = d > 0 ? copy.input_polyline.size() / d : 0;
-      for (std::size_t i = 0; i < count / 2; ++i)
-        std::swap_ranges(copy.input_polyline.begin() + static_cast<std::ptrdiff_t>(i * d),
-                         copy.input_polyline.begin() + static_cast<std::ptrdiff_t>((i + 1) * d),
-                         copy.input_polyline.begin() + static_cast<std::ptrdiff_t>((count - 1 - i) * d));
+      reverse_points(copy.input_polyline, input.dimension);
     }
     const bool moved_a = nodes_of[a].size() > 1, moved_b = nodes_of[b].size() > 1;  // the ends that moved
     if (!copy.polyline.empty()) {
@@ -366,6 +427,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(
     }
     ++up[a];
     ++down[b];
+    copy.lower = a;
+    copy.upper = b;
     add_edge(a, b, std::move(copy), h);
   }
   for (std::size_t i = 0; i < nodes_of.size(); ++i)
@@ -423,14 +486,16 @@ inline double median_edge_length(const Proximity_graph& g, const std::vector<Ver
 }
 
 inline void check_skeleton_options(const Skeleton_options& options, const char* fn) {
-  if (!(options.delta >= 0 && std::isfinite(options.delta)) ||
-      !(options.repair_distance >= 0 && std::isfinite(options.repair_distance)) ||
-      !(options.prune_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn,
-                                                   "delta and repair_distance must be finite and >= 0, "
-                                                   "prune_height >= 0 (infinity: prune all), got ",
-                                                   options.delta, ", ", options.repair_distance, " and ",
-                                                   options.prune_height);
+  if (!(options.delta >= 0 && std::isfinite(options.delta)))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "delta must be finite and >= 0, got ", options.delta,
+        options.delta < 0 ? " (a negative delta, the suggested one, needs points or a distance matrix)" : "");
+  if (!(options.repair_distance >= 0 && std::isfinite(options.repair_distance)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "repair_distance must be finite and >= 0, got ",
+                                                   options.repair_distance);
+  if (!(options.prune_height >= 0))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "prune_height must be >= 0 (infinity: prune all), got ", options.prune_height);
   if (std::isnan(options.branch_merge_distance) || std::isinf(options.branch_merge_distance))
     FeatureRecon::internal::throw_invalid_argument(
         fn,
@@ -438,6 +503,21 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
         "width), got ",
         options.branch_merge_distance);
   check_embedding_options(options.embedding, fn);  // before the pipeline runs, with the caller's values
+}
+
+/// `options` with a negative delta replaced by the suggested delta at `radius`: max(radius, delta_factor *
+/// scale) for the scale `scale()` estimates (estimate_rips_radius(), default Rips_radius_options), as
+/// Rips_radius_estimate::delta is at the estimated radius. Checked with the replacement.
+template <class Scale>
+Skeleton_options with_suggested_delta(const Skeleton_options& options, double radius, const char* fn,
+                                      Scale&& scale) {
+  Skeleton_options run = options;
+  if (options.delta < 0) run.delta = 0;  // checked with the suggestion standing in
+  check_skeleton_options(run, fn);
+  if (options.delta < 0 && std::isfinite(radius))
+    run.delta = std::min(std::numeric_limits<double>::max(),
+                         std::max(radius, Rips_radius_options().delta_factor * scale()));
+  return run;
 }
 
 /// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr
@@ -705,16 +785,18 @@ inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Ver
 /// (equal coordinates) are not joined to each other, only to their first copy, its neighbours and the next
 /// copy (internal::rips_graph_of_distinct_points(): same homotopy type, level sets and critical points as the
 /// full Rips complex without the copies' cliques); every copy is a member of its first copy's node or arc.
-/// \pre radius >= 0 and finite; delta, repair_distance >= 0 (checked; throws). Points as build_rips_graph().
+/// A negative `options.delta` asks for the suggested delta at this radius (Skeleton_options::delta).
+/// \pre radius >= 0 and finite; repair_distance >= 0 (checked; throws). Points as build_rips_graph().
 /// \tparam Radius an arithmetic type: `extract_reeb_skeleton(points, {})` is not radius 0 but the overload
-/// that
-///   estimates the radius (default options).
+///   that estimates the radius (default options).
 template <class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
 Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius,
-                                    const Skeleton_options& options = {}) {
+                                    const Skeleton_options& given_options = {}) {
   const double rips_radius = static_cast<double>(radius);
-  internal::check_skeleton_options(options, "extract_reeb_skeleton");
   internal::check_point_matrix(points, "extract_reeb_skeleton");
+  const Skeleton_options options =
+      internal::with_suggested_delta(given_options, rips_radius, "extract_reeb_skeleton",
+                                     [&points] { return estimate_rips_radius(points).scale; });
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
     FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton",
                                                    "rips_radius must be finite and >= 0, got ", rips_radius);
@@ -831,6 +913,16 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
       });
 }
 
+/// extract_reeb_skeleton(graph, coordinates, options) with the coordinates as a range of points (one per
+/// vertex of the graph) through a PointCoordinateTraits model, as the points overloads take them.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
+                                decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
+Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const PointRange& coordinates,
+                                    const Skeleton_options& options = {}, const Traits& traits = Traits()) {
+  return extract_reeb_skeleton(graph, make_point_matrix(coordinates, traits, "extract_reeb_skeleton"),
+                               options);
+}
+
 /// The skeleton of a dense distance matrix: Rips graph at `radius` (an arithmetic type) on the matrix, then
 /// the stages of extract_reeb_skeleton(). Repair distances are read from the matrix; the embedding uses
 /// classical MDS into 3D (classical_mds_3d(); it takes the first 30 % of the progress range and can be
@@ -840,12 +932,13 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
 /// \tparam Matrix as build_rips_graph_from_distance_matrix() (checked the same way; throws).
 template <class Matrix, class Radius, std::enable_if_t<std::is_arithmetic<Radius>::value, int> = 0>
 Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius radius,
-                                                         const Skeleton_options& options = {}) {
+                                                         const Skeleton_options& given_options = {}) {
   const double rips_radius = static_cast<double>(radius);
   const char* fn = "extract_reeb_skeleton_from_distance_matrix";
-  internal::check_skeleton_options(options, fn);
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
+  const Skeleton_options options = internal::with_suggested_delta(
+      given_options, rips_radius, fn, [&D] { return estimate_rips_radius_from_distance_matrix(D).scale; });
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0, got ",
                                                    rips_radius);

@@ -234,8 +234,15 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
     }
   }
   // Nodes that lost all their arcs (never an isolated node of the input: those have no loop).
+  // Removing a vertex renumbers the later ones: the arcs' `lower` and `upper` follow.
   for (std::size_t v = num_vertices(g); v-- > 0;)
-    if (degree(v, g) == 0 && g[v].members.empty()) remove_vertex(v, g);
+    if (degree(v, g) == 0 && g[v].members.empty()) {
+      remove_vertex(v, g);
+      for (auto e : boost::make_iterator_range(edges(g))) {
+        g[e].lower -= g[e].lower > v ? 1 : 0;
+        g[e].upper -= g[e].upper > v ? 1 : 0;
+      }
+    }
   return removed;
 }
 

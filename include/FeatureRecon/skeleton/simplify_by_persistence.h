@@ -92,7 +92,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R,
   auto use = [&](Vertex_index v, const char* what, std::size_t index, char how) {
     if (v >= values.size())
       throw_invalid_argument(fn, what, " ", index, " has vertex ", v, " out of range [0, ", values.size(),
-                             ")");
+                             "): values has ", values.size(), " entries, one per vertex");
     if (!std::isfinite(values[v]))
       throw_invalid_argument(fn, "the value of vertex ", v, " (", what, " ", index, ") is ", values[v]);
     if (used[v])
