@@ -5,8 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -119,4 +124,94 @@ TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
   EXPECT_EQ(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.05, grey_step, squared, stop).status,
             FeatureRecon::Status::interrupted);
 }
+}  // namespace
+
+namespace {
+// Tests from a mutation audit of continuous_dart_throwing.h: documented boundaries and rules the tests above
+// leave open.
+
+TEST(ContinuousDartThrowing, DartsFillTheBoxWhereverItIs) {
+  Continuous_dart_throwing_options o;
+  o.max_samples = 200;
+  const auto r = continuous_bilateral_dart_throwing({2, 5, 3, 7}, 0.02, grey_step, squared, o);
+  ASSERT_EQ(r.samples.size(), 200u);
+  for (const auto& s : r.samples) {
+    EXPECT_GE(s.position[0], 2.0);
+    EXPECT_LT(s.position[0], 3.0);
+    EXPECT_GE(s.position[1], 5.0);
+    EXPECT_LT(s.position[1], 7.0);
+  }
+}
+
+TEST(ContinuousDartThrowing, SeedDrivesAMersenneTwister) {
+  // The first dart is always kept: its position is the first two numbers of std::mt19937_64(seed) as doubles
+  // in [0, 1) (53 bits), scaled to the box.
+  for (const std::uint64_t seed : {0u, 1u, 2u, 12345u}) {
+    Continuous_dart_throwing_options o;
+    o.seed = seed;
+    o.max_samples = 1;
+    const auto r = continuous_bilateral_dart_throwing({0, 0, 4, 2}, 0.1, grey_step, squared, o);
+    ASSERT_EQ(r.samples.size(), 1u);
+    std::mt19937_64 rng(seed);
+    const double x = double(rng() >> 11) * 0x1.0p-53, y = double(rng() >> 11) * 0x1.0p-53;
+    EXPECT_EQ(r.samples[0].position, (std::array<double, 2>{4 * x, 2 * y})) << seed;
+  }
+}
+
+TEST(ContinuousDartThrowing, StopsAfterExactlyMaxConsecutiveFailures) {
+  // A radius wider than the box: the first dart is kept and every later one fails.
+  Continuous_dart_throwing_options o;
+  o.max_consecutive_failures = 7;
+  const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 5.0, grey_step, squared, o);
+  EXPECT_EQ(r.samples.size(), 1u);
+  EXPECT_EQ(r.darts, 8u);
+  o.max_consecutive_failures = 0;
+  EXPECT_THROW(continuous_bilateral_dart_throwing({0, 0, 1, 1}, 5.0, grey_step, squared, o),
+               std::invalid_argument);
+}
+
+TEST(ContinuousDartThrowing, ProgressEvery65536DartsWithTheShareOfTheFailureBudget) {
+  Continuous_dart_throwing_options o;
+  o.max_consecutive_failures = 200000;
+  std::vector<double> seen;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 5.0, grey_step, squared, o);
+  EXPECT_EQ(r.darts, 200001u);
+  // After 65536, 131072 and 196608 darts (one kept, the rest failed), then 1 at the end.
+  EXPECT_EQ(seen, (std::vector<double>{65535 / 200000.0, 131071 / 200000.0, 196607 / 200000.0, 1.0}));
+}
+
+TEST(ContinuousDartThrowing, ConflictIsStrictlyCloserThanTheRadius) {
+  // sigma_position 1e150 makes the positions' part of xi negligible: xi is the feature distance, 0 on one
+  // side of the step and exactly 1 across it. With r = 1 a dart across the step is at distance r from the
+  // kept sample, which is no conflict (the Poisson disk keeps samples r apart, not more): one sample a side.
+  Continuous_dart_throwing_options o;
+  o.sigma_position = 1e150;
+  o.sigma_feature = 1;
+  o.max_consecutive_failures = 1000;
+  const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 1.0, grey_step, squared, o);
+  ASSERT_EQ(r.samples.size(), 2u);
+  EXPECT_NE(r.samples[0].feature, r.samples[1].feature);
+}
+
+TEST(ContinuousDartThrowing, RadiusIsInUnitsOfSigmaPosition) {
+  // Euclidean darts with sigma_position 2 and r = 0.01 conflict closer than 0.02.
+  Continuous_dart_throwing_options o;
+  o.sigma_position = 2;
+  o.seed = 9;
+  o.max_consecutive_failures = 2000;
+  const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.01, grey_step, squared, o);
+  const auto& s = r.samples;
+  ASSERT_GT(s.size(), 500u);
+  double d_min = 1;
+  for (std::size_t a = 0; a < s.size(); ++a)
+    for (std::size_t b = a + 1; b < s.size(); ++b)
+      d_min = std::min(d_min,
+                       std::hypot(s[a].position[0] - s[b].position[0], s[a].position[1] - s[b].position[1]));
+  EXPECT_GE(d_min, 0.02);
+}
+
 }  // namespace

@@ -447,3 +447,131 @@ TEST(Discrete_lloyd, BadInputNamesTheProblem) {
 }
 
 }  // namespace
+
+namespace {
+// Tests from a mutation audit of discrete_lloyd.h: documented boundaries and rules the tests above leave
+// open.
+
+TEST(Discrete_lloyd, RelativeRadiusIsZeroWhenTwoSitesMeetOnAnItem) {
+  // A 2 x 2 image. Site 1 holds the pixels (1.5, 0.5) and (0.5, 1.5): its centroid (1, 1) is equally near all
+  // four pixels and snaps to the lowest-indexed one, (0.5, 0.5), where site 0 already is. The next
+  // iteration's statistics (taken at the sites before they move) see two sites at one position: rho = 0.
+  const auto px = step_image(2, 2, 100, 0, 0);
+  const std::vector<Site> sites{{{0.4, 0.4}, {40}}, {{1.0, 1.0}, {40}}, {{1.6, 1.6}, {40}}};
+  Discrete_lloyd_options<2> o;
+  o.update = Site_update::snap_to_item;
+  o.max_iterations = 2;
+  std::vector<std::vector<std::array<double, 2>>> seen;
+  o.on_iteration = [&seen](Lloyd_iteration_statistics&, const std::vector<std::array<double, 2>>& p) {
+    seen.push_back(p);
+    return true;
+  };
+  const auto r = discrete_bilateral_lloyd(px, sites, o);
+  ASSERT_EQ(r.history.size(), 2u);
+  ASSERT_EQ(seen.size(), 2u);
+  ASSERT_EQ(seen[0][0], (std::array<double, 2>{0.5, 0.5}));
+  ASSERT_EQ(seen[0][1], (std::array<double, 2>{0.5, 0.5}));
+  EXPECT_GT(r.history[0].relative_radius, 0.0);
+  EXPECT_EQ(r.history[1].relative_radius, 0.0);
+}
+
+TEST(Discrete_lloyd, RequestedIntrinsicDimensionChoosesThePacking) {
+  // Items filling a cube would be read as a volume; intrinsic_dimension 2 measures rho against the hexagonal
+  // packing of the given area instead: rho = d_min / sqrt(2 A / (sqrt(3) N)).
+  using K = test::K;
+  std::vector<K::Point_3> cube;
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 10; ++j)
+      for (int k = 0; k <= 10; ++k) cube.emplace_back(i / 10.0, j / 10.0, k / 10.0);
+  std::vector<std::size_t> lattice;
+  for (int i = 0; i <= 10; i += 5)
+    for (int j = 0; j <= 10; j += 5)
+      for (int k = 0; k <= 10; k += 5) lattice.push_back(std::size_t(i * 121 + j * 11 + k));
+  Discrete_lloyd_options<3> o;
+  o.max_iterations = 1;
+  o.domain_measure = 6;
+  o.intrinsic_dimension = 2;
+  const auto r = discrete_bilateral_lloyd(cube, lattice, o);
+  ASSERT_EQ(r.history.size(), 1u);
+  EXPECT_NEAR(r.history[0].relative_radius, 0.5 / std::sqrt(2 * 6.0 / (std::sqrt(3.0) * 27)), 1e-12);
+}
+
+TEST(Discrete_lloyd, MovesAreThoseOfTheSitesAlsoWhenSnapping) {
+  // max_move and mean_move are the distances from the sites before the step to the sites after it (with
+  // snapping: to their items, not to the centroids).
+  const auto px = step_image(20, 16, 8, 20, 2);
+  const auto start = random_sites(9, 20, 16, 3);
+  for (const Site_update update : {Site_update::nearest_item, Site_update::snap_to_item}) {
+    Discrete_lloyd_options<2> o;
+    o.update = update;
+    o.max_iterations = 3;
+    std::vector<std::vector<std::array<double, 2>>> seen;
+    o.on_iteration = [&seen](Lloyd_iteration_statistics&, const std::vector<std::array<double, 2>>& p) {
+      seen.push_back(p);
+      return true;
+    };
+    const auto r = discrete_bilateral_lloyd(px, start, o);
+    ASSERT_EQ(r.history.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) {
+      double largest = 0, total = 0;
+      for (std::size_t s = 0; s < start.size(); ++s) {
+        const auto& before = k == 0 ? start[s].position : seen[k - 1][s];
+        const double d = std::hypot(seen[k][s][0] - before[0], seen[k][s][1] - before[1]);
+        largest = std::max(largest, d);
+        total += d;
+      }
+      EXPECT_NEAR(r.history[k].max_move, largest, 1e-12) << "iteration " << k + 1;
+      EXPECT_NEAR(r.history[k].mean_move, total / double(start.size()), 1e-12) << "iteration " << k + 1;
+    }
+  }
+}
+
+TEST(Discrete_lloyd, CopiesMoveApartByAHundredthOfThePackingAndOnlyWhenIterating) {
+  const auto px = step_image(12, 12, 100, 0, 0);
+  const std::vector<Site> sites{
+      {{2.5, 2.5}, {40}}, {{8.5, 3.5}, {40}}, {{2.5, 2.5}, {40}}, {{5.5, 9.5}, {40}}};
+  Discrete_lloyd_options<2> o;
+  o.max_iterations = 1;
+  const auto r = discrete_bilateral_lloyd(px, sites, o);
+  ASSERT_EQ(r.history.size(), 1u);
+  // rho at the sites before the first move: the copy's distance d_hex / 100 over d_hex.
+  EXPECT_NEAR(r.history[0].relative_radius, 0.01, 1e-12);
+  // No iteration: the sites as given, copies included.
+  o.max_iterations = 0;
+  const auto none = discrete_bilateral_lloyd(px, sites, o);
+  ASSERT_EQ(none.sites.size(), sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i) EXPECT_EQ(none.sites[i].position, sites[i].position) << i;
+  EXPECT_TRUE(none.history.empty());
+}
+
+TEST(Discrete_lloyd, EnergyToleranceStopsOnTheRelativeDecrease) {
+  std::vector<std::uint8_t> flat(32 * 32, 128);
+  const auto px = image_pixels<Grey_pixel>(32, 32, flat);
+  Discrete_lloyd_options<2> o;
+  o.max_iterations = 200;
+  o.energy_tolerance = 1e-3;
+  const auto r = discrete_bilateral_lloyd(px, random_sites(20, 32, 32, 5), o);
+  ASSERT_EQ(r.stop, Lloyd_stop::energy_tolerance);
+  ASSERT_GE(r.history.size(), 3u);
+  auto relative_decrease = [&](std::size_t k) {
+    return (r.history[k - 1].energy - r.history[k].energy) / r.history[k - 1].energy;
+  };
+  EXPECT_LT(relative_decrease(r.history.size() - 1), 1e-3);
+  for (std::size_t k = 1; k + 1 < r.history.size(); ++k) EXPECT_GE(relative_decrease(k), 1e-3) << k;
+}
+
+TEST(Discrete_lloyd, MoveToleranceIsInclusive) {
+  // "stop when no site moved farther than this": one site on a 4 x 1 image snaps from the first pixel to the
+  // pixel nearest the centroid (2, 0.5), the lower-indexed of the two at 0.5: a move of exactly 1.
+  const auto px = step_image(4, 1, 100, 0, 0);
+  Discrete_lloyd_options<2> o;
+  o.update = Site_update::snap_to_item;
+  o.move_tolerance = 1;
+  const auto r = discrete_bilateral_lloyd(px, std::vector<std::size_t>{0}, o);
+  ASSERT_EQ(r.history.size(), 1u);
+  EXPECT_EQ(r.history[0].max_move, 1.0);
+  EXPECT_EQ(r.stop, Lloyd_stop::move_tolerance);
+  EXPECT_EQ(r.sites[0].position, (std::array<double, 2>{1.5, 0.5}));
+}
+
+}  // namespace

@@ -466,3 +466,182 @@ TEST(KernelRelaxation, StartingFeaturesAreTakenFromTheItems) {
   EXPECT_EQ(r.status, FeatureRecon::Status::success);
   EXPECT_EQ(r.sites.at(0).feature, SK::Vector_3(0, 0, 1));
 }
+
+namespace {
+// Tests from a mutation audit of kernel_relaxation.h: documented boundaries and rules the tests above leave
+// open.
+
+TEST(Kernel_relaxation, NonFiniteSettingsAndZeroInitialStepAreRefused) {
+  const auto px = image(6, 6, [](int, int) { return 1; });
+  const auto sites = random_sites(3, px, 6, 6, 1);
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = std::numeric_limits<double>::infinity();
+  test::expect_invalid_argument([&] { kernel_relaxation(px, sites, o); }, "kernel_width");
+  o.kernel_width = 0;
+  o.initial_step = 0;  // a step of length 0 can never lower the energy
+  test::expect_invalid_argument([&] { kernel_relaxation(px, sites, o); }, "initial_step");
+  o.initial_step = 0.25;
+  o.domain_measure = std::numeric_limits<double>::infinity();
+  test::expect_invalid_argument([&] { kernel_relaxation(px, sites, o); }, "domain_measure");
+}
+
+TEST(Kernel_relaxation, ScaleIsClampedToEightWhereTheDensityIsLow) {
+  // Density 1 in the last column of a 64 x 64 image and 0 or 1e-4 elsewhere: around (5, 32) the density
+  // averages 0 or 1e-4, far below the mean (mean / rho > 64), so the site's scale is the upper clamp s = 8.
+  // Its mirror image across x = 0 (10 away) lies within the ghosts' reach cutoff * w0 * s = 24, and the
+  // pair's kernel is s^2 exp(-d^2 / (tau s)^2) shifted by its value at the cut-off.
+  const auto px = image(64, 64, [](int, int) { return 0; });
+  for (const double background : {0.0, 1e-4}) {
+    Kernel_relaxation_options<2> o;
+    o.kernel_width = 1;
+    o.density.assign(px.size(), background);
+    for (std::size_t i = 0; i < px.size(); ++i)
+      if (px[i].column == 63) o.density[i] = 1;
+    const auto e = kernel_energy(px, std::vector<Site>{{{5.0, 32.0}, {0}}}, o);
+    EXPECT_EQ(e.pairs, 1u) << background;
+    EXPECT_NEAR(e.energy, 64 * (std::exp(-100.0 / 64) - std::exp(-9.0)), 1e-12) << background;
+  }
+}
+
+TEST(Kernel_relaxation, ScaleIsClampedToAnEighthWhereTheDensityIsHigh) {
+  // A 3 x 3 block of density 1 in a 64 x 64 image of zeros: at its centre (mean / rho)^(1/2) = 3 / 64, below
+  // the lower clamp, so s = 1/8 (the block does not fit in that kernel: the item keeps its own density).
+  const auto px = image(64, 64, [](int, int) { return 0; });
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = 1;
+  o.density.assign(px.size(), 0.0);
+  for (std::size_t i = 0; i < px.size(); ++i)
+    if (px[i].column >= 30 && px[i].column <= 32 && px[i].row >= 30 && px[i].row <= 32) o.density[i] = 1;
+  const std::vector<Site> pair{{{31.5, 31.5}, {0}}, {{31.7, 31.5}, {0}}};
+  const auto e = kernel_energy(px, pair, o);
+  const double dx = 31.5 - 31.7, s = 0.125;
+  EXPECT_EQ(e.pairs, 2u);
+  EXPECT_NEAR(e.energy, s * s * (std::exp(-dx * dx / (s * s)) - std::exp(-9.0)), 1e-12);
+}
+
+TEST(Kernel_relaxation, DensityBlockThatJustFitsTheKernelIsAveraged) {
+  // Columns with density 0, 1.5, 1.5, 0, 1.5, 1.5, ... (mean 1) and a kernel exactly three item spacings
+  // wide: every 3 x 3 block of pixels inside the image averages 1, which gives s = 1, and 3 c_1 <= w0 s holds
+  // with equality: the block fits in the kernel, so the items take its mean (the next level, blocks of side
+  // 2, does not fit). Sites on a 0 and on a 1.5 column then both have s = 1, as without a density.
+  // The item spacing of a W x H image is exactly 1 (the root search ended 2-4e-16 above it for 8, 16, 30
+  // and 100 pixels a side, and this block was refused at a kernel width of 3).
+  for (const int w : {8, 16, 17, 30, 100})
+    for (const int h : {1, 7, w})
+      EXPECT_EQ(sampling::internal::Item_domain<Grey_pixel_traits>(image(w, h, [](int, int) { return 0; }),
+                                                                   Grey_pixel_traits(), 0, "test", false)
+                    .grid_spacing(),
+                1.0)
+          << w << " x " << h;
+  const auto px = image(30, 30, [](int, int) { return 0; });
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = 3;
+  const std::vector<Site> pair{{{10.5, 15.5}, {0}}, {{12.5, 15.5}, {0}}};
+  const auto plain = kernel_energy(px, pair, o);
+  EXPECT_EQ(plain.pairs, 2u);
+  o.density.assign(px.size(), 0.0);
+  for (std::size_t i = 0; i < px.size(); ++i) o.density[i] = px[i].column % 3 == 0 ? 0.0 : 1.5;
+  const auto e = kernel_energy(px, pair, o);
+  EXPECT_EQ(e.pairs, 2u);
+  EXPECT_NEAR(e.energy, plain.energy, 1e-15);
+}
+
+TEST(Kernel_relaxation, PairsExactlyAtTheCutOffCountAndAddNoEnergy) {
+  // "Pairs farther apart than cutoff kernel widths are ignored": a pair exactly 3 widths apart is not, and
+  // the kernel, shifted to vanish there with the pair's features, gives it no energy (E is continuous).
+  const auto px = image(64, 64, [](int c, int) { return c < 32 ? 0 : 255; });
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = 1;
+  const std::vector<Site> same{{{20.0, 32.0}, {0}}, {{23.0, 32.0}, {0}}};
+  const auto e = kernel_energy(px, same, o);
+  EXPECT_EQ(e.pairs, 2u);
+  EXPECT_NEAR(e.energy, 0.0, 1e-15);
+  EXPECT_GT(e.gradient[0][0], 0.0);  // the one-sided derivative of the kernel inside the cut-off
+  EXPECT_LT(e.gradient[1][0], 0.0);
+  o.sigma_feature = 0.5;  // features 0 and 255: f^2 = 4
+  const std::vector<Site> across{{{30.0, 32.0}, {0}}, {{33.0, 32.0}, {255}}};
+  const auto b = kernel_energy(px, across, o);
+  EXPECT_EQ(b.pairs, 2u);
+  EXPECT_NEAR(b.energy, 0.0, 1e-15);
+  // Just inside the cut-off the energy is just above 0.
+  const std::vector<Site> inside{{{30.0, 32.0}, {0}}, {{32.999, 32.0}, {255}}};
+  const double near = kernel_energy(px, inside, o).energy;
+  EXPECT_GT(near, 0.0);
+  EXPECT_LT(near, 1e-6);
+}
+
+TEST(Kernel_relaxation, NoDescentAfterThirtyHalvings) {
+  // Two sites farther apart than the cut-off and far from the faces: no pair, no gradient, no step lowers E
+  // (a step that only keeps it is not taken). The step is halved 30 times, then the run stops.
+  const auto px = image(64, 64, [](int, int) { return 0; });
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = 1;
+  const auto r = kernel_relaxation(px, std::vector<Site>{{{20.0, 32.0}, {0}}, {{40.0, 32.0}, {0}}}, o);
+  EXPECT_EQ(r.status, Status::success);
+  EXPECT_EQ(r.stop, Lloyd_stop::no_descent);
+  EXPECT_TRUE(r.history.empty());
+  EXPECT_EQ(r.step, 0.25 * 0x1p-30);
+  EXPECT_EQ(r.sites[0].position, (std::array<double, 2>{20.0, 32.0}));
+}
+
+TEST(Kernel_relaxation, StepGrowsByAQuarterAndMovesAtMostAKernelWidth) {
+  // A close pair with a huge first step: each site moves by at most a kernel width (w0 = 2), the step is
+  // accepted and the next one is 1.25 times longer.
+  const auto px = image(64, 64, [](int, int) { return 0; });
+  Kernel_relaxation_options<2> o;
+  o.kernel_width = 2;
+  o.initial_step = 0.5;
+  o.max_iterations = 1;
+  const std::vector<Site> pair{{{30.0, 32.0}, {0}}, {{30.1, 32.0}, {0}}};
+  const auto r = kernel_relaxation(px, pair, o);
+  ASSERT_EQ(r.history.size(), 1u);
+  EXPECT_EQ(r.step, 0.5 * 1.25);
+  o.initial_step = 100;
+  const auto big = kernel_relaxation(px, pair, o);
+  ASSERT_EQ(big.history.size(), 1u);
+  EXPECT_GT(big.history[0].max_move, 1.9);
+  EXPECT_LE(big.history[0].max_move, 2 * (1 + 1e-12));
+}
+
+TEST(Kernel_relaxation, HistoryIsTakenBeforeEachStep) {
+  // history[k] holds the energy and rho of the sites before step k + 1: the starting sites first, then the
+  // sites on_iteration saw after step k.
+  const auto px = image(32, 32, [](int, int) { return 0; });
+  const auto start = random_sites(30, px, 32, 32, 13);
+  Kernel_relaxation_options<2> o;
+  o.max_iterations = 4;
+  o.energy_tolerance = 0;
+  std::vector<std::vector<std::array<double, 2>>> seen;
+  o.on_iteration = [&seen](Lloyd_iteration_statistics&, const std::vector<std::array<double, 2>>& p) {
+    seen.push_back(p);
+    return true;
+  };
+  std::vector<double> fractions;
+  o.progress = [&fractions](double f) {
+    fractions.push_back(f);
+    return true;
+  };
+  const auto r = kernel_relaxation(px, start, o);
+  ASSERT_EQ(r.history.size(), 4u);
+  EXPECT_EQ(fractions, (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}));
+  Kernel_relaxation_options<2> probe;
+  EXPECT_NEAR(r.history[0].energy, kernel_energy(px, start, probe).energy, 1e-12);
+  for (std::size_t k = 1; k < 4; ++k) {
+    std::vector<Site> before;
+    for (const auto& p : seen[k - 1]) before.push_back({p, {0}});
+    EXPECT_NEAR(r.history[k].energy, kernel_energy(px, before, probe).energy, 1e-12) << k;
+  }
+}
+
+TEST(Kernel_relaxation, CopiesMoveApartByAHundredthOfTheKernelWidth) {
+  // Default width: w0 = d_hex / 2, so the copy's distance w0 / 100 gives rho = 1 / 200 at the first step.
+  const auto px = image(16, 16, [](int, int) { return 0; });
+  const std::vector<Site> sites{{{4.0, 4.0}, {0}}, {{12.0, 5.0}, {0}}, {{4.0, 4.0}, {0}}, {{8.0, 12.0}, {0}}};
+  Kernel_relaxation_options<2> o;
+  o.max_iterations = 1;
+  const auto r = kernel_relaxation(px, sites, o);
+  ASSERT_EQ(r.history.size(), 1u);
+  EXPECT_NEAR(r.history[0].relative_radius, 0.005, 1e-12);
+}
+
+}  // namespace

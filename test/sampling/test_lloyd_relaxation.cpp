@@ -471,8 +471,9 @@ TEST(LloydRelaxation, CopiesSeparateWhereTheFirstIsAtItsCentroid) {
   EXPECT_GT(std::hypot(dr.sites[0].position[0] - dr.sites[1].position[0],
                        dr.sites[0].position[1] - dr.sites[1].position[1]),
             0.9);
-  // A box thinner than the move: the copy stays inside it (it was moved outside, and a stop at the first
-  // report returned it there); without an iteration the sites come back as given.
+  // Without an iteration the sites come back as given; a stop at the first report leaves them in the box
+  // (the move here, 0.24, fits the box: CopiesInABoxThinnerThanTheirMoveStayInside below moves a copy
+  // farther than its box is wide).
   const std::vector<P2> thin{{0.5, 500}, {0.5, 500}};
   Lloyd_options none;
   none.max_iterations = 0;
@@ -485,3 +486,183 @@ TEST(LloydRelaxation, CopiesSeparateWhereTheFirstIsAtItsCentroid) {
     EXPECT_LE(q[0], 1.0);
   }
 }
+
+namespace {
+// Tests from a mutation audit of lloyd_relaxation.h: documented boundaries and rules the tests above leave
+// open.
+
+TEST(ClippedVoronoiCells, CopiesAtTheSmallestPositionLeaveTheCellToTheLowestIndex) {
+  // The copies sort first (the lexicographically smallest position): the lower index still owns the cell.
+  const std::array<double, 4> box{0, 0, 10, 6};
+  for (const auto& sites : {std::vector<P2>{{5.0, 3.0}, {2.0, 1.0}, {2.0, 1.0}},
+                            std::vector<P2>{{2.0, 1.0}, {2.0, 1.0}, {5.0, 3.0}, {2.0, 1.0}}}) {
+    const std::size_t first = sites[0] == P2{2.0, 1.0} ? 0 : 1;
+    const auto cells = clipped_voronoi_cells(sites, box);
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      if (sites[i] != P2{2.0, 1.0}) continue;
+      if (i == first)
+        EXPECT_GE(cells[i].size(), 3u) << i;
+      else
+        EXPECT_TRUE(cells[i].empty()) << "copy " << i << " of site " << first << " got a cell";
+    }
+    const auto step = lloyd_step(sites, Pixel_density::uniform(10, 6));
+    EXPECT_EQ(step.duplicates, sites.size() - 2);
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      if (sites[i] != P2{2.0, 1.0}) continue;
+      if (i == first) {
+        EXPECT_GT(step.mass[i], 1.0) << i;
+      } else {
+        EXPECT_EQ(step.mass[i], 0.0) << i;
+        EXPECT_EQ(step.centroids[i], sites[i]) << i;
+      }
+    }
+  }
+}
+
+TEST(ClippedVoronoiCells, ABoxOfZeroWidthGivesEverySiteItsPieceOfTheSegment) {
+  // x0 == x1 is allowed: the box is a segment, and every site gets the part of it nearest to it.
+  const std::array<double, 4> box{2, 0, 2, 4};
+  const auto cells = clipped_voronoi_cells(std::vector<P2>{{2.0, 1.0}, {2.0, 3.0}}, box);
+  ASSERT_EQ(cells.size(), 2u);
+  const double low[2] = {0, 2}, high[2] = {2, 4};
+  for (std::size_t i = 0; i < 2; ++i) {
+    ASSERT_FALSE(cells[i].empty()) << i;
+    double lo = 1e300, hi = -1e300;
+    for (const auto& v : cells[i]) {
+      EXPECT_EQ(v[0], 2.0);
+      lo = std::min(lo, v[1]);
+      hi = std::max(hi, v[1]);
+    }
+    EXPECT_NEAR(lo, low[i], 1e-12) << i;
+    EXPECT_NEAR(hi, high[i], 1e-12) << i;
+  }
+}
+
+TEST(LloydStep, ACellWithoutMassKeepsItsSiteEvenWhenTheDensityIsZeroEverywhere) {
+  // "the centroid of its cell (the site itself when the cell has no mass)": with no mass anywhere too.
+  const std::vector<P2> sites{{1.0, 1.0}, {3.5, 2.0}, {2.0, 3.5}};
+  const auto s = lloyd_step(sites, Pixel_density(4, 4, std::vector<double>(16, 0.0)));
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    EXPECT_EQ(s.centroids[i], sites[i]) << i;
+    EXPECT_EQ(s.mass[i], 0.0) << i;
+  }
+  EXPECT_EQ(s.energy, 0.0);
+}
+
+TEST(LloydRelaxation, NonFiniteOrNegativeTolerancesAreRefused) {
+  const Pixel_density d = Pixel_density::uniform(4, 4);
+  const std::vector<P2> sites{{1.0, 1.0}, {3.0, 3.0}};
+  Lloyd_options o;
+  o.energy_tolerance = std::numeric_limits<double>::infinity();
+  EXPECT_THROW((void)lloyd_relaxation(sites, d, o), std::invalid_argument);
+  o.energy_tolerance = 0;
+  o.move_tolerance = -1e-9;
+  EXPECT_THROW((void)lloyd_relaxation(sites, d, o), std::invalid_argument);
+  o.move_tolerance = std::numeric_limits<double>::infinity();
+  EXPECT_THROW((void)lloyd_relaxation(sites, d, o), std::invalid_argument);
+  o.move_tolerance = std::nan("");
+  EXPECT_THROW((void)lloyd_relaxation(sites, d, o), std::invalid_argument);
+}
+
+TEST(LloydRelaxation, RelativeRadiusIsAgainstTheHexagonalSpacing) {
+  // rho = d_min / d_hex with d_hex = sqrt(2 A / (sqrt(3) N)), at the sites before the first move: a 4 x 3
+  // square grid of spacing 2 on the 8 x 6 box.
+  std::vector<P2> grid;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j) grid.push_back({2.0 * i + 1, 2.0 * j + 1});
+  Lloyd_options o;
+  o.max_iterations = 1;
+  const auto r = lloyd_relaxation(grid, Pixel_density::uniform(8, 6), o);
+  ASSERT_EQ(r.history.size(), 1u);
+  EXPECT_NEAR(r.history[0].relative_radius, 2 / std::sqrt(2 * 48.0 / (std::sqrt(3.0) * 12)), 1e-12);
+}
+
+TEST(LloydRelaxation, CopiesInABoxThinnerThanTheirMoveStayInside) {
+  // 1 x 20000 pixels, two sites at one place: the copy moves by d_hex / 100 = 1.07, more than the box is
+  // wide. Stopped at the first report (nothing relaxed), the sites are still in the box.
+  const std::vector<P2> thin{{0.5, 10000}, {0.5, 10000}};
+  Lloyd_options stop;
+  stop.max_iterations = 1;
+  stop.progress = [](double) { return false; };
+  const auto r = lloyd_relaxation(thin, Pixel_density::uniform(1, 20000), stop);
+  EXPECT_EQ(r.status, Status::interrupted);
+  ASSERT_EQ(r.sites.size(), 2u);
+  for (const P2& q : r.sites) {
+    EXPECT_GE(q[0], 0.0);
+    EXPECT_LE(q[0], 1.0);
+  }
+  EXPECT_NE(r.sites[0], r.sites[1]);
+}
+
+TEST(LloydRelaxation, ProgressIsTheFractionOfIterationsDone) {
+  const std::vector<P2> sites{{1.0, 1.0}, {1.5, 3.0}, {3.0, 2.5}};
+  Lloyd_options o;
+  o.max_iterations = 4;
+  std::vector<double> seen;
+  o.progress = [&seen](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  const auto r = lloyd_relaxation(sites, Pixel_density::uniform(4, 4), o);
+  EXPECT_EQ(r.history.size(), 4u);
+  EXPECT_EQ(seen, (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}));
+  // A stop from the progress callback: interrupted, both as the status and as the reason, with the
+  // iterations done so far.
+  seen.clear();
+  o.progress = [&seen](double f) {
+    seen.push_back(f);
+    return f < 0.5;
+  };
+  const auto stopped = lloyd_relaxation(sites, Pixel_density::uniform(4, 4), o);
+  EXPECT_EQ(stopped.status, Status::interrupted);
+  EXPECT_EQ(stopped.stop, Lloyd_stop::interrupted);
+  EXPECT_EQ(stopped.history.size(), 2u);
+}
+
+TEST(LloydRelaxation, MovesAreThoseOfTheSites) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0, 10);
+  std::vector<P2> sites(30);
+  for (auto& s : sites) s = {u(rng), u(rng)};
+  Lloyd_options one;
+  one.max_iterations = 1;
+  const auto r = lloyd_relaxation(sites, Pixel_density::uniform(10, 10), one);
+  ASSERT_EQ(r.history.size(), 1u);
+  double largest = 0, total = 0;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    const double d = std::hypot(r.sites[i][0] - sites[i][0], r.sites[i][1] - sites[i][1]);
+    largest = std::max(largest, d);
+    total += d;
+  }
+  EXPECT_NEAR(r.history[0].max_move, largest, 1e-12);
+  EXPECT_NEAR(r.history[0].mean_move, total / double(sites.size()), 1e-12);
+}
+
+TEST(LloydRelaxation, StoppingRulesHoldAtTheStopAndNotBefore) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0, 10);
+  std::vector<P2> sites(30);
+  for (auto& s : sites) s = {u(rng), u(rng)};
+  const Pixel_density d = Pixel_density::uniform(10, 10);
+  // The largest move (not the mean) at most move_tolerance.
+  Lloyd_options o;
+  o.max_iterations = 500;
+  o.move_tolerance = 0.05;
+  const auto m = lloyd_relaxation(sites, d, o);
+  ASSERT_EQ(m.stop, Lloyd_stop::move_tolerance);
+  EXPECT_LE(m.history.back().max_move, 0.05);
+  for (std::size_t k = 0; k + 1 < m.history.size(); ++k) EXPECT_GT(m.history[k].max_move, 0.05) << k;
+  // The relative energy decrease (E_prev - E) / E_prev below energy_tolerance.
+  o.move_tolerance = 0;
+  o.energy_tolerance = 1e-3;
+  const auto e = lloyd_relaxation(sites, d, o);
+  ASSERT_EQ(e.stop, Lloyd_stop::energy_tolerance);
+  ASSERT_GE(e.history.size(), 3u);
+  auto relative_decrease = [&](std::size_t k) {
+    return (e.history[k - 1].energy - e.history[k].energy) / e.history[k - 1].energy;
+  };
+  EXPECT_LT(relative_decrease(e.history.size() - 1), 1e-3);
+  for (std::size_t k = 1; k + 1 < e.history.size(); ++k) EXPECT_GE(relative_decrease(k), 1e-3) << k;
+}
+
+}  // namespace

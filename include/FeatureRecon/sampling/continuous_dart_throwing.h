@@ -40,9 +40,10 @@ struct Continuous_sampling_result {
 
 /// Bilateral dart throwing in a continuous 2D domain (dissertation Sec. 2.2.2): uniform random darts in the
 /// box [x0, x1) x [y0, y1); the feature at a dart comes from `feature_at` (for an image, the interpolated
-/// colour); a dart is kept when no kept sample is within bilateral distance r. Stops after
-/// `max_consecutive_failures` rejections in a row (then the set is close to maximal: rho about 0.75 for
-/// Euclidean darts) or `max_samples` samples. Kept samples sit in a hash grid of side r sigma_position.
+/// colour); a dart is kept when no kept sample is closer than bilateral distance r (one exactly r away is
+/// no conflict, as in bilateral_dart_throwing()). Stops after `max_consecutive_failures` (at least 1,
+/// checked) rejections in a row (then the set is close to maximal: rho about 0.75 for Euclidean darts) or
+/// `max_samples` samples. Kept samples sit in a hash grid of side r sigma_position.
 /// \tparam FeatureFunction callable `(double x, double y) -> Feature`.
 /// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, the squared feature
 ///   distance.

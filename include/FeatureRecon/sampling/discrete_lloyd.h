@@ -254,6 +254,24 @@ class Item_domain {
       const double m = 0.5 * (a + b);
       (m > 0 && f(m) > 0 ? a : b) = m;
     }
+    // A full lattice (whole numbers of items along every axis whose product is n) gets its spacing exactly:
+    // the bracket's end lies a few ulps off (1 + 4e-16 for a 30 x 30 image), which moved thresholds that
+    // compare with it, such as kernel_relaxation()'s density blocks that just fit the kernel.
+    std::size_t widest = 0;
+    for (int k = 1; k < D; ++k)
+      if (hi[k] - lo[k] > hi[widest] - lo[widest]) widest = std::size_t(k);
+    const double steps = std::round((hi[widest] - lo[widest]) / b);
+    if (steps >= 1) {
+      const double h = (hi[widest] - lo[widest]) / steps;
+      double product = 1;
+      bool whole = true;
+      for (int k = 0; k < D && whole; ++k) {
+        const double count = (hi[k] - lo[k]) / h + 1, rounded = std::round(count);
+        whole = std::abs(count - rounded) <= 1e-9 * rounded;
+        product *= rounded;
+      }
+      if (whole && product == n) return h;
+    }
     return b;
   }
 
@@ -475,8 +493,10 @@ Discrete_lloyd_step_result<Traits> discrete_lloyd_step(
 /// rule holds (iteration cap, relative energy decrease, largest move, the on_iteration callback), with the
 /// energy, the moves and the relative radius of every iteration (Lloyd drifts towards a lattice: stop early
 /// on rho or the oscillation through on_iteration). Deterministic: no randomness beyond the starting sites
-/// (use a seeded sampler for those); ties go to the lowest index. With an infinite sigma_feature it is
-/// discrete (Euclidean, weighted) Lloyd, i.e. weighted k-means of the items' positions.
+/// (use a seeded sampler for those); ties go to the lowest index. Copies among the starting sites (equal
+/// positions) first move apart by a hundredth of the packing distance (with max_iterations 0 the sites are
+/// returned as given). With an infinite sigma_feature it is discrete (Euclidean, weighted) Lloyd, i.e.
+/// weighted k-means of the items' positions.
 /// \param items the domain: a range of items read through the traits (positions finite, checked).
 /// \param sites the starting sites, e.g. sites_at_items() of a dart-throwing result (finite, checked).
 /// \param options metric, density, update rule, stopping rules, callbacks (checked; throws naming the field).

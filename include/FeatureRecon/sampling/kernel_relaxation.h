@@ -493,8 +493,10 @@ Kernel_energy<Traits::dimension> kernel_energy(
 /// Kernel relaxation (dissertation Sec. 2.2.2): gradient steps on the kernel energy with step control,
 /// features following the positions, until a stopping rule holds (iteration cap, relative energy decrease,
 /// largest move, no descent, the on_iteration callback). Each site moves by -step (w_i^2 N / 4) dE/dp_i (w_i
-/// its spatial kernel width), a descent direction that moves an isolated close pair apart by about step times
-/// its distance; a step that does not lower E is halved (up to 30 times, then the run stops with no_descent),
+/// its spatial kernel width), at most w_i per step, a descent direction that moves an isolated close pair
+/// apart by about step times its distance; copies of a site (equal positions) first move apart by a hundredth
+/// of the kernel width;
+/// a step that does not lower E is halved (up to 30 times, then the run stops with no_descent),
 /// an accepted one makes the next 1.25 times longer. Deterministic: no randomness beyond the starting sites.
 /// \param items the domain: a range of items read through the traits (positions finite, checked).
 /// \param sites the starting sites, e.g. sites_at_items() of a dart-throwing result (finite, checked).

@@ -533,8 +533,9 @@ Lloyd_step_result lloyd_step(const PointRange& points, const Pixel_density& dens
 /// Lloyd relaxation of the sites under the pixel density: each iteration moves every site to the centroid of
 /// its Voronoi cell (clipped to the density's box, density integrated exactly per pixel). Stops at
 /// max_iterations, when the relative energy decrease or the largest move falls below its tolerance, or when
-/// on_iteration returns false. Deterministic: the same sites give bit-identical output. O(N log N + C) per
-/// iteration for N sites whose cell boundaries cross C pixel sides.
+/// on_iteration returns false. Copies of a site (equal positions) first move apart by a hundredth of the
+/// hexagonal spacing, kept inside the box. Deterministic: the same sites give bit-identical output. O(N log N
+/// + C) per iteration for N sites whose cell boundaries cross C pixel sides.
 /// \tparam PointRange a range of 2D points (the initial sites, for example from dart throwing).
 /// \tparam Traits a model of PointCoordinateTraits.
 /// \param points the initial sites, inside the density's box.

@@ -215,7 +215,8 @@ struct Continuous_dart_throwing_options {
   /// feature scale; default infinity (Euclidean)
   double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
-  /// Stop after this many consecutive rejected darts (the set is then close to maximal); default 10000.
+  /// Stop after this many consecutive rejected darts (the set is then close to maximal); at least 1, default
+  /// 10000.
   std::size_t max_consecutive_failures = 10000;
   std::size_t max_samples = 0;  ///< stop after this many accepted samples; default 0: no limit
   std::uint64_t seed = 0;       ///< the random darts
