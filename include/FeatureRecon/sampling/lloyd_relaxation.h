@@ -332,21 +332,28 @@ struct Voronoi_builder {
 template <class PointRange, class Traits>
 std::vector<std::array<double, 2>> read_sites(const PointRange& points, const std::array<double, 4>& box,
                                               const Traits& traits, const char* fn) {
+  static_assert(FeatureRecon::internal::Is_point_coordinate_traits<Traits>::value,
+                "FeatureRecon: lloyd_relaxation() and lloyd_step() read their sites through a "
+                "PointCoordinateTraits model (dimension(p), coordinate(p, i); "
+                "doc/concepts/PointCoordinateTraits.h), not a FeaturePointTraits model of the samplers' "
+                "items: pass the sites' positions (e.g. std::array<double, 2>) with the default traits");
   std::vector<std::array<double, 2>> sites;
-  std::size_t i = 0;
-  for (const auto& p : points) {
-    if (traits.dimension(p) != 2)
-      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has ", traits.dimension(p),
-                                                     " coordinates, expected 2");
-    const std::array<double, 2> q{traits.coordinate(p, 0), traits.coordinate(p, 1)};
-    if (!(std::isfinite(q[0]) && std::isfinite(q[1])))
-      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a non-finite coordinate");
-    if (!(q[0] >= box[0] && q[0] <= box[2] && q[1] >= box[1] && q[1] <= box[3]))
-      FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " (", q[0], ", ", q[1],
-                                                     ") lies outside the box [", box[0], ", ", box[2],
-                                                     "] x [", box[1], ", ", box[3], "]");
-    sites.push_back(q);
-    ++i;
+  if constexpr (FeatureRecon::internal::Is_point_coordinate_traits<Traits>::value) {  // else: the assert only
+    std::size_t i = 0;
+    for (const auto& p : points) {
+      if (traits.dimension(p) != 2)
+        FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has ", traits.dimension(p),
+                                                       " coordinates, expected 2");
+      const std::array<double, 2> q{traits.coordinate(p, 0), traits.coordinate(p, 1)};
+      if (!(std::isfinite(q[0]) && std::isfinite(q[1])))
+        FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " has a non-finite coordinate");
+      if (!(q[0] >= box[0] && q[0] <= box[2] && q[1] >= box[1] && q[1] <= box[3]))
+        FeatureRecon::internal::throw_invalid_argument(fn, "site ", i, " (", q[0], ", ", q[1],
+                                                       ") lies outside the box [", box[0], ", ", box[2],
+                                                       "] x [", box[1], ", ", box[3], "]");
+      sites.push_back(q);
+      ++i;
+    }
   }
   return sites;
 }
