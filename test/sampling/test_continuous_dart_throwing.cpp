@@ -20,17 +20,24 @@ using namespace FeatureRecon::sampling;
 double grey_step(double x, double) { return x < 0.5 ? 0.0 : 1.0; }
 double squared(double a, double b) { return (a - b) * (a - b); }
 
+// The smallest distance between two samples (brute force; 1 for fewer than two in the unit square).
+template <class Samples>
+double minimum_distance(const Samples& s) {
+  double d_min = 1;
+  for (std::size_t a = 0; a < s.size(); ++a)
+    for (std::size_t b = a + 1; b < s.size(); ++b)
+      d_min = std::min(d_min,
+                       std::hypot(s[a].position[0] - s[b].position[0], s[a].position[1] - s[b].position[1]));
+  return d_min;
+}
+
 TEST(ContinuousDartThrowing, PoissonDiskAndNearlyMaximal) {
   Continuous_dart_throwing_options o;
   o.seed = 3;
   const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.02, grey_step, squared, o);
   const auto& s = r.samples;
   ASSERT_GT(s.size(), 1000u);
-  double d_min = 1;
-  for (std::size_t a = 0; a < s.size(); ++a)
-    for (std::size_t b = a + 1; b < s.size(); ++b)
-      d_min = std::min(d_min,
-                       std::hypot(s[a].position[0] - s[b].position[0], s[a].position[1] - s[b].position[1]));
+  const double d_min = minimum_distance(s);
   EXPECT_GE(d_min, 0.02);
   const double d_hex = std::sqrt(2.0 / (std::sqrt(3.0) * double(s.size())));
   EXPECT_GE(0.02 / d_hex, 0.74) << s.size() << " samples";  // near-maximal Poisson disk
@@ -206,11 +213,7 @@ TEST(ContinuousDartThrowing, RadiusIsInUnitsOfSigmaPosition) {
   const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.01, grey_step, squared, o);
   const auto& s = r.samples;
   ASSERT_GT(s.size(), 500u);
-  double d_min = 1;
-  for (std::size_t a = 0; a < s.size(); ++a)
-    for (std::size_t b = a + 1; b < s.size(); ++b)
-      d_min = std::min(d_min,
-                       std::hypot(s[a].position[0] - s[b].position[0], s[a].position[1] - s[b].position[1]));
+  const double d_min = minimum_distance(s);
   EXPECT_GE(d_min, 0.02);
 }
 
