@@ -41,6 +41,16 @@ void expect_invalid_argument(F&& f, const std::string& part) {
     EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
   }
 }
+/// The energy stopping rule of the iterative samplers, checked on a history that stopped by it: the last
+/// iteration's relative energy decrease is below `tolerance`, every earlier one after the first at least it.
+template <class History>
+void expect_energy_rule_holds_at_the_stop(const History& h, double tolerance) {
+  ASSERT_GE(h.size(), 3u);
+  auto relative_decrease = [&h](std::size_t k) { return (h[k - 1].energy - h[k].energy) / h[k - 1].energy; };
+  EXPECT_LT(relative_decrease(h.size() - 1), tolerance);
+  for (std::size_t k = 1; k + 1 < h.size(); ++k) EXPECT_GE(relative_decrease(k), tolerance) << k;
+}
+
 }  // namespace test
 }  // namespace FeatureRecon
 
