@@ -784,12 +784,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
     std::fprintf(
         stderr,
         "featurerecon skeleton: warning: at radius %s the Rips graph has %zu edge%s for %zu points (fewer "
-        "than one neighbour per point), so the skeleton is mostly single points; the median distance from a "
+        "than one neighbour per point; %zu without any), so the skeleton is mostly single points; the median "
+        "distance from a "
         "point to its nearest neighbour is %.3g%s: give --radius above it (a few times it joins each point "
         "to "
         "its neighbours)\n",
-        json_number(radius).c_str(), s.rips_edges, s.rips_edges == 1 ? "" : "s", sampled, spacing_hint,
-        sampled > 2000 && !args.has("distance-matrix") ? " (over 2,000 of them)" : "");
+        json_number(radius).c_str(), s.rips_edges, s.rips_edges == 1 ? "" : "s", sampled, s.isolated_points,
+        spacing_hint, sampled > 2000 && !args.has("distance-matrix") ? " (over 2,000 of them)" : "");
   std::size_t components = 0;
   {
     std::vector<int> comp(num_vertices(graph));
@@ -798,7 +799,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
   std::printf(
       "{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, "
       "\"sample_spacing\": %s, "
-      "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"nodes\": %zu, \"arcs\": %zu, "
+      "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"isolated_points\": %zu, "
+      "\"nodes\": %zu, \"arcs\": %zu, "
       "\"loops\": %zu, "
       "\"components\": %zu, \"removed_branches\": %zu, \"removed_loops\": %zu, \"repaired\": %zu, "
       "\"branch_merge\": %s, \"merged_branch_arcs\": %zu, \"prune\": %s, "
@@ -808,7 +810,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
       input_points, sampled,
       json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(),
       json_number(options.delta).c_str(), json_number(options.repair_distance).c_str(),
-      json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles,
+      json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles, s.isolated_points,
       num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph), components,
       s.removed_branches, s.removed_loops, s.repaired, json_number(s.branch_merge_distance).c_str(),
       s.merged_branch_arcs, json_number(options.prune_height).c_str(), json_number(s.level_width).c_str(),

@@ -1012,6 +1012,31 @@ TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
   EXPECT_THROW(extract_reeb_skeleton(build_rips_graph(m, 0.7), short_m, o), std::invalid_argument);
 }
 
+TEST(ExtractReebSkeleton, IsolatedPointsAreCounted) {
+  // Reeb_skeleton::isolated_points: points without a neighbour at a positive distance in the complex. 20
+  // points 1 apart on a line, a pair of copies at (50, 0) and a point at (60, 0).
+  std::vector<std::array<double, 2>> p;
+  for (int i = 0; i < 20; ++i) p.push_back({double(i), 0.0});
+  p.push_back({50.0, 0.0});
+  p.push_back({50.0, 0.0});
+  p.push_back({60.0, 0.0});
+  // Below the spacing every point is alone (the copies are joined, at distance 0: alone too), and each
+  // place is a node of its own; the status stays success.
+  const Reeb_skeleton below = extract_reeb_skeleton(p, 0.9);
+  ASSERT_EQ(below.status, Status::success);
+  EXPECT_EQ(below.isolated_points, 23u);
+  EXPECT_EQ(num_vertices(below.graph), 22u);
+  // At the spacing (inclusive) the line joins up: the copies and the far point stay alone.
+  EXPECT_EQ(extract_reeb_skeleton(p, 1.0).isolated_points, 3u);
+  EXPECT_EQ(extract_reeb_skeleton(p, 10.0).isolated_points, 0u);
+  // The same counts from the distance matrix and from a graph (a vertex without edges).
+  EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(planar_distance_matrix(p), 1.0).isolated_points, 3u);
+  const Point_matrix m = make_point_matrix(p);
+  EXPECT_EQ(extract_reeb_skeleton(build_rips_graph(m, 1.0), m).isolated_points, 3u);
+  // The estimated radius joins them.
+  EXPECT_EQ(extract_reeb_skeleton(p, Skeleton_options{}).isolated_points, 0u);
+}
+
 TEST(ExtractReebSkeleton, StubsAtTheBasePointAreTrimmedOnLoops) {
   // A noisy circle: with trimming (default) the skeleton is one cycle without spurs; without it, the global
   // minimum and maximum each hang off the cycle on a short spur.

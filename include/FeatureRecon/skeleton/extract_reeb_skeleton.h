@@ -114,7 +114,12 @@ struct Reeb_skeleton {
   /// Size of the complex (for points: the copies of a point are not joined to each other, see
   /// extract_reeb_skeleton()).
   std::size_t rips_edges = 0;
-  std::size_t rips_triangles = 0;           ///< size of the complex, as rips_edges
+  std::size_t rips_triangles = 0;  ///< size of the complex, as rips_edges
+  /// Input points with no neighbour at a positive distance in the complex (copies of a point do not count
+  /// as its neighbours): each is a node of its own. Most of the points, with status success, means a radius
+  /// below their spacing (give one above the distance to their nearest neighbours, or let
+  /// estimate_rips_radius() choose).
+  std::size_t isolated_points = 0;
   std::size_t removed_branches = 0;         ///< branches removed by the simplifications
   std::size_t removed_loops = 0;            ///< loops removed by the simplifications
   std::size_t repaired = 0;                 ///< arcs added by repair_reeb_graph()
@@ -565,6 +570,12 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   if (ended(Status::success)) return result;
   result.rips_edges = K.number_of_edges();
   result.rips_triangles = K.number_of_triangles();
+  {
+    std::vector<bool> joined(graph.number_of_vertices, false);
+    for (std::size_t e = 0; e < graph.edges.size(); ++e)
+      if (graph.length(e) > 0) joined[graph.edges[e][0]] = joined[graph.edges[e][1]] = true;
+    result.isolated_points = static_cast<std::size_t>(std::count(joined.begin(), joined.end(), false));
+  }
   Geodesic_options go;
   go.progress = stage(0.2, 0.35);
   Geodesic_result geo;
