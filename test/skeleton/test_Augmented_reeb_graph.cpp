@@ -372,6 +372,23 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   EXPECT_EQ(make_simplicial_complex_2(3, {}, {{0, 1, 2}}, {}, 0.0).edge_lengths, std::vector<double>(3, 0.0));
 }
 
+// compute_augmented_reeb_graph() checks the canonical order of the complex: a triangle with a vertex equal to
+// number_of_vertices is beyond the vertices (named), as an edge's is.
+TEST(AugmentedReebGraph, ATriangleVertexAtTheVertexCountIsOutOfRange) {
+  Simplicial_complex_2 k;
+  k.number_of_vertices = 3;
+  k.edges = {{0, 1}, {0, 2}, {1, 2}};
+  k.triangles = {{0, 1, 3}};
+  try {
+    compute_augmented_reeb_graph(k, std::vector<double>{0, 1, 2});
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("triangle 0 (0, 1, 3) has a vertex beyond the 3 vertices"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(AugmentedReebGraph, ProgressCanInterrupt) {
   const auto c = upright_torus(100, 100);
   Reeb_graph_options options;

@@ -6,6 +6,8 @@
 
 #include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -141,4 +143,98 @@ TEST(GeodesicFunction, DistancesBeyondTheLargestDoubleAreRefused) {
   }
   path.edge_lengths = {5e307, 5e307, 5e307};  // 1.5e308: still finite
   EXPECT_EQ(compute_geodesic_function(path).values, (std::vector<double>{1.5e308, 1e308, 5e307, 0}));
+}
+
+// "no shortest path longer than the largest double (checked: throws naming a vertex whose distance
+// overflows)": on the path 1 - 0 - 2 (lengths 1e308) every distance from the start vertex 0 is finite, but
+// from the automatic base point (1, an end) vertex 2 lies 2e308 away; the same with that base point given.
+TEST(GeodesicFunction, OverflowFromTheBasePointIsRefused) {
+  Proximity_graph g;
+  g.number_of_vertices = 3;
+  g.edges = {{0, 1}, {0, 2}};
+  g.edge_lengths = {1e308, 1e308};
+  for (const std::vector<std::size_t>& given : {std::vector<std::size_t>{}, std::vector<std::size_t>{1}}) {
+    Geodesic_options o;
+    o.base_points = given;
+    try {
+      compute_geodesic_function(g, o);
+      ADD_FAILURE() << "no error, " << given.size() << " base points given";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("the geodesic distance of vertex 2 overflows"), std::string::npos)
+          << e.what();
+    }
+  }
+  g.edge_lengths = {8e307, 8e307};  // 1.6e308: finite
+  EXPECT_EQ(compute_geodesic_function(g).values, (std::vector<double>{8e307, 0, 1.6e308}));
+}
+
+// Geodesic_result::component: "connected component of each vertex (numbered by smallest vertex)", isolated
+// vertices included; base points follow that numbering. "every base point in options is <
+// number_of_vertices": number_of_vertices itself is refused.
+TEST(GeodesicFunction, ComponentsAndTheRangeOfBasePoints) {
+  Proximity_graph g;
+  g.number_of_vertices = 6;
+  g.edges = {{0, 4}, {1, 2}, {2, 5}};
+  const Geodesic_result r = compute_geodesic_function(g);
+  EXPECT_EQ(r.component, (std::vector<std::uint32_t>{0, 1, 1, 2, 0, 1}));
+  EXPECT_EQ(r.base_points, (std::vector<std::size_t>{4, 5, 3}));
+  EXPECT_EQ(r.values, (std::vector<double>{1, 2, 1, 0, 0, 0}));
+  Geodesic_options o;
+  o.base_points = {6};
+  try {
+    compute_geodesic_function(g, o);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("base point 0 is vertex 6, out of range [0, 6)"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Geodesic_options::progress, "called with the fraction done; returning false stops": the two Dijkstra runs
+// report 0, 0.5 and 1; a refusal at 0 or at 0.5 returns status interrupted at once, without values and
+// without asking again.
+TEST(GeodesicFunction, ProgressReportsAndStops) {
+  Proximity_graph path;
+  path.number_of_vertices = 4;
+  path.edges = {{0, 1}, {1, 2}, {2, 3}};
+  std::vector<double> seen;
+  Geodesic_options o;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  EXPECT_EQ(compute_geodesic_function(path, o).status, Status::success);
+  EXPECT_EQ(seen, (std::vector<double>{0.0, 0.5, 1.0}));
+  for (const std::size_t stop_at : {1u, 2u}) {
+    seen.clear();
+    o.progress = [&seen, stop_at](double t) {
+      seen.push_back(t);
+      return seen.size() < stop_at;
+    };
+    const Geodesic_result r = compute_geodesic_function(path, o);
+    EXPECT_EQ(r.status, Status::interrupted) << stop_at;
+    EXPECT_TRUE(r.values.empty()) << stop_at;
+    EXPECT_EQ(seen.size(), stop_at);
+  }
+}
+
+// "g canonical (checked)": a graph out of canonical form is refused as such, naming the problem, not by
+// Dijkstra on a negative length (another std::invalid_argument) or, for unsorted edges, not at all.
+TEST(GeodesicFunction, NonCanonicalGraphsAreRefusedAsSuch) {
+  Proximity_graph g;
+  g.number_of_vertices = 3;
+  g.edges = {{0, 1}, {1, 2}};
+  g.edge_lengths = {1.0, -2.0};
+  for (int variant = 0; variant < 2; ++variant) {
+    try {
+      compute_geodesic_function(g);
+      ADD_FAILURE() << "no error, variant " << variant;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("compute_geodesic_function: the graph is not canonical"),
+                std::string::npos)
+          << e.what();
+    }
+    g.edges = {{1, 2}, {0, 1}};  // unsorted
+    g.edge_lengths = {1.0, 2.0};
+  }
 }

@@ -18,6 +18,9 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <string>
+
+#include "skeleton_test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -726,6 +729,7 @@ TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
   o.progress = [&](double) { return ++calls < 1; };
   const Proximity_graph stopped = build_rips_graph_from_distance_matrix(D, 1.0, o);
   EXPECT_EQ(stopped.number_of_edges(), 4096u);  // rows 0..4095 each give their edge to the next
+  EXPECT_EQ(calls, 1);                          // returning false stops: no report (of 1) after it
   seen.clear();
   o.progress = [&](double f) {
     seen.push_back(f);
@@ -738,6 +742,7 @@ TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
   // Rows 0..2047; the nearest of i > 0 is i - 1 (the tie with i + 1 goes to the smaller index): the path to
   // 2047.
   EXPECT_EQ(build_knn_graph_from_distance_matrix(D, 1, o).number_of_edges(), 2047u);
+  EXPECT_EQ(calls, 2);  // no report (of 1) after the refusal
 }
 
 TEST(DistanceMatrix, BadMatricesNameTheEntry) {
@@ -1048,6 +1053,367 @@ TEST(EveryEntryPoint, EmptyAndTiedInputs) {
                                   boost::property<boost::edge_weight_t, double>>;
   const G g0;
   EXPECT_EQ(proximity_graph_from_boost_graph(g0, get(boost::edge_weight, g0)).number_of_vertices, 0u);
+}
+
+namespace {
+/// The smallest double r with |p - q| <= r, decided in exact rational arithmetic.
+double smallest_radius_holding(const std::vector<double>& p, const std::vector<double>& q) {
+  CGAL::Exact_rational d2(0);
+  for (std::size_t c = 0; c < p.size(); ++c) {
+    const CGAL::Exact_rational t = CGAL::Exact_rational(p[c]) - CGAL::Exact_rational(q[c]);
+    d2 += t * t;
+  }
+  const auto holds = [&d2](double r) { return CGAL::Exact_rational(r) * CGAL::Exact_rational(r) >= d2; };
+  double r = dist(p, q);
+  while (!holds(r)) r = std::nextafter(r, std::numeric_limits<double>::infinity());
+  while (r > 0 && holds(std::nextafter(r, 0.0))) r = std::nextafter(r, 0.0);
+  return r;
+}
+
+}  // namespace
+
+// build_rips_graph(): "an edge between every two points at distance <= radius (inclusive, decided exactly on
+// the double coordinates)", in every search. Pairs of random points with inexact squared distances, at the
+// smallest radius that holds them by an exact oracle: the edge is there, and gone one double below. Neither
+// the kd-tree's ball (rounded squared distances of scaled coordinates) nor the brute force's float and
+// double stages (sums of many rounded squares) may round such a pair out, or in.
+TEST(RipsGraph, PairsAtExactlyTheRadiusInEverySearch) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::size_t pairs = 0;
+  for (const std::size_t d : {2u, 3u, 16u, 300u}) {
+    for (int trial = 0; trial < 200; ++trial) {
+      const double scale = trial % 2 == 0 ? 1.0 : 1e5;
+      Coords p(2, std::vector<double>(d));
+      for (auto& x : p)
+        for (double& c : x) c = u(rng) * scale;
+      const double r = smallest_radius_holding(p[0], p[1]);
+      for (const Neighbor_search s : {Neighbor_search::kd_tree, Neighbor_search::brute_force}) {
+        if (s == Neighbor_search::kd_tree && d > 3) continue;
+        Proximity_graph_options o;
+        o.search = s;
+        EXPECT_EQ(build_rips_graph(p, r, o).number_of_edges(), 1u)
+            << "d = " << d << ", trial " << trial << ", kd-tree " << (s == Neighbor_search::kd_tree);
+        EXPECT_EQ(build_rips_graph(p, std::nextafter(r, 0.0), o).number_of_edges(), 0u)
+            << "d = " << d << ", trial " << trial << ", kd-tree " << (s == Neighbor_search::kd_tree);
+      }
+      ++pairs;
+    }
+  }
+  EXPECT_EQ(pairs, 800u);
+}
+
+// Proximity_graph_options::progress, "called with the fraction done; returning false stops":
+// build_rips_graph() reports non-decreasing fractions from 0 to 1 in both searches (the brute force searches
+// two clusters farther apart than the radius each alone, several blocks each: one scale for both), and after
+// a refusal it reports nothing more (not even 1).
+TEST(RipsGraph, ProgressIsNonDecreasingAndEndsAtARefusal) {
+  Coords two = random_points(300, 4, 41);
+  for (const auto& x : random_points(300, 4, 42)) {
+    two.push_back(x);
+    two.back()[0] += 10;
+  }
+  const double r = 0.4;
+  for (const Neighbor_search s : {Neighbor_search::kd_tree, Neighbor_search::brute_force}) {
+    Coords p = two;
+    if (s == Neighbor_search::kd_tree)
+      for (auto& x : p) x.resize(3);
+    std::vector<double> seen;
+    Proximity_graph_options o;
+    o.search = s;
+    o.progress = [&seen](double t) {
+      seen.push_back(t);
+      return true;
+    };
+    EXPECT_EQ(build_rips_graph(p, r, o).edges, brute_rips(p, r));
+    ASSERT_GT(seen.size(), 2u);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end())) << "kd-tree " << (s == Neighbor_search::kd_tree);
+    EXPECT_EQ(seen.front(), 0.0);
+    EXPECT_EQ(seen.back(), 1.0);
+    int calls = 0;
+    o.progress = [&calls](double) {
+      ++calls;
+      return false;
+    };
+    EXPECT_LT(build_rips_graph(p, r, o).number_of_edges(), brute_rips(p, r).size());
+    EXPECT_EQ(calls, 1) << "kd-tree " << (s == Neighbor_search::kd_tree);
+  }
+}
+
+// make_point_matrix() "throws std::invalid_argument naming the first point whose dimension differs from the
+// first point's, that has dimension 0, or that has a NaN or infinite coordinate"; a Point_matrix built by
+// hand is checked by the builders (rows * dimension values, dimension >= 1 with rows, finite coordinates,
+// naming the point), and their Point_matrix overloads check k >= 1 and the radius as the range ones do.
+TEST(RipsGraph, PointMatricesAreChecked) {
+  const auto expect_in = [](const std::string& what, const std::string& part) {
+    EXPECT_NE(what.find(part), std::string::npos) << what;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  expect_in(FeatureRecon::test::invalid_argument_message([] {
+              make_point_matrix(Coords{{}, {}});
+            }),
+            "point 0 has dimension 0");
+  expect_in(FeatureRecon::test::invalid_argument_message([] {
+              make_point_matrix(Coords{{0, 0, 0}, {1, 1}});
+            }),
+            "point 1 has dimension 2 but point 0 has dimension 3");
+  expect_in(FeatureRecon::test::invalid_argument_message([&] {
+              make_point_matrix(Coords{{0, 0}, {1, -inf}});
+            }),
+            "point 1 has a non-finite coordinate 1");
+  expect_in(FeatureRecon::test::invalid_argument_message([] {
+              make_point_matrix(Coords{{0, std::nan("")}});
+            }),
+            "point 0 has a non-finite coordinate 1");
+  Point_matrix m;
+  m.dimension = 2;
+  m.rows = 2;
+  m.data = {0, 0, 1, 1, 2};
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_rips_graph(m, 1.0); }),
+            "points has 2 rows of dimension 2 but 5 values");
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_knn_graph(m, 1); }),
+            "points has 2 rows of dimension 2 but 5 values");
+  m.data = {0, 0, inf, 1};
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_rips_graph(m, 1.0); }),
+            "point 1 has a non-finite coordinate 0");
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_knn_graph(m, 1); }),
+            "point 1 has a non-finite coordinate 0");
+  m.data = {0, 0, 1, 1};
+  EXPECT_EQ(build_rips_graph(m, 2.0).number_of_edges(), 1u);
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_knn_graph(m, 0); }),
+            "build_knn_graph: k must be >= 1, got 0");
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_rips_graph(m, -1.0); }),
+            "build_rips_graph: radius must be finite");
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_rips_graph(m, inf); }),
+            "build_rips_graph: radius must be finite");
+  m.dimension = 0;
+  m.data.clear();
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { build_rips_graph(m, 1.0); }),
+            "points has dimension 0");
+}
+
+// isolated_groups() cuts a set at the gaps of its widest coordinate "that exceed 1/16 of that coordinate's
+// range and the extent (widest coordinate range) of the parts on both sides, when both parts have at least
+// min_size points": a gap equal to the parts' extent does not cut, one a double wider does. The parts are
+// those between gaps over 1/16 of the range: one point left alone between a gap of 1/11 of the range and the
+// wide gap is a part too small, so neither gap cuts (were the point a part of its cluster, the wide gap would
+// cut). The k-nearest-neighbour graphs stay the brute force's.
+TEST(KnnGraph, IsolatedGroupsCutOnlyAtTheDocumentedGaps) {
+  const auto groups = [](const Coords& p, std::size_t min_size) {
+    return skeleton::internal::isolated_groups(make_point_matrix(p), min_size).size();
+  };
+  EXPECT_EQ(groups({{0, 0}, {0, 1}, {1, 0}, {1, 1}}, 2), 1u);
+  const double wider = std::nextafter(1.0, 2.0);
+  EXPECT_EQ(groups({{0, 0}, {0, 1}, {wider, 0}, {wider, 1}}, 2), 2u);
+  const Coords lone{{0, 0, 0, 0},  {0.01, 0, 0, 0},  {0.02, 0, 0, 0},  {0.9, 0, 0, 0},
+                    {10, 0, 0, 0}, {10.01, 0, 0, 0}, {10.02, 0, 0, 0}, {10.03, 0, 0, 0}};
+  EXPECT_EQ(groups(lone, 2), 1u);
+  Proximity_graph_options o;
+  o.search = Neighbor_search::brute_force;
+  for (const std::size_t k : {1u, 2u, 3u})
+    EXPECT_EQ(build_knn_graph(lone, k, o).edges, brute_knn(lone, k)) << "k = " << k;
+}
+
+// first_copies() / first_copies_of_rows(): "first[i] is the smallest index whose coordinates equal row i's
+// (i for the first copy) ... Returns false, leaving first empty, when every row is distinct": copies are
+// found wherever they sort, also as the first two rows of the lexicographic order.
+TEST(Copies, FoundWhereverTheySort) {
+  Point_matrix q;
+  q.dimension = 2;
+  q.data = {1, 3, 0, 0, 0, 0};
+  q.rows = 3;
+  std::vector<Vertex_index> first;
+  ASSERT_TRUE(skeleton::internal::first_copies(q, first));
+  EXPECT_EQ(first, (std::vector<Vertex_index>{0, 1, 1}));
+  const std::vector<double> a{0, 0, 5, 0, 0, 5, 5, 5, 0};  // points 0 and 1 are copies
+  ASSERT_TRUE(skeleton::internal::first_copies_of_rows(a, 3, first));
+  EXPECT_EQ(first, (std::vector<Vertex_index>{0, 0, 2}));
+  const std::vector<double> b{0, 1, 5, 1, 0, 5, 5, 5, 0};
+  EXPECT_FALSE(skeleton::internal::first_copies_of_rows(b, 3, first));
+  EXPECT_TRUE(first.empty());
+}
+
+// proximity_graph_from_boost_graph(): "every weight is finite and >= 0": a zero weight (two copies of a
+// point) is an edge of length 0.
+TEST(BoostGraphInput, ZeroWeightsAreEdges) {
+  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                  boost::property<boost::edge_weight_t, double>>;
+  G g(3);
+  add_edge(2, 0, 0.0, g);
+  add_edge(1, 2, 1.5, g);
+  const Proximity_graph p = proximity_graph_from_boost_graph(g, get(boost::edge_weight, g));
+  EXPECT_EQ(p.edges, (std::vector<Edge>{{0, 2}, {1, 2}}));
+  EXPECT_EQ(p.edge_lengths, (std::vector<double>{0.0, 1.5}));
+}
+
+// The bounds of the canonical form. make_simplicial_complex_2() throws naming "an edge or triangle with a
+// vertex out of range" (number_of_vertices itself is out of range) and lengths not aligned with the edges,
+// accepts a length 0 (only negative or non-finite ones are refused) and removes repetitions, of triangles too
+// (given in any vertex order); find_edge() takes "(either order)"; is_canonical() refuses a vertex equal to
+// number_of_vertices and, for a complex, triangles out of order or without their three edges;
+// connected_components() refuses an edge beyond the vertices.
+TEST(MakeSimplicialComplex, BoundsOfTheCanonicalForm) {
+  const auto expect_in = [](const std::string& what, const std::string& part) {
+    EXPECT_NE(what.find(part), std::string::npos) << what;
+  };
+  expect_in(FeatureRecon::test::invalid_argument_message([] {
+              make_simplicial_complex_2(3, {{0, 3}}, {});
+            }),
+            "edge 0 (0, 3) has a vertex index out of range [0, 3)");
+  expect_in(FeatureRecon::test::invalid_argument_message([] {
+              make_simplicial_complex_2(3, {}, {{0, 1, 3}});
+            }),
+            "triangle 0 has vertex index 3 out of range [0, 3)");
+  expect_in(FeatureRecon::test::invalid_argument_message([] {
+              make_simplicial_complex_2(3, {{0, 1}}, {}, {1.0, 2.0});
+            }),
+            "lengths has 2 entries for 1 edges");
+  const Simplicial_complex_2 k =
+      make_simplicial_complex_2(3, {{1, 0}}, {{2, 1, 0}, {0, 1, 2}, {1, 2, 0}}, {0.0});
+  EXPECT_EQ(k.triangles, (std::vector<Triangle>{{0, 1, 2}}));
+  EXPECT_EQ(k.edges, (std::vector<Edge>{{0, 1}, {0, 2}, {1, 2}}));
+  EXPECT_EQ(k.edge_lengths, (std::vector<double>{0.0, 1.0, 1.0}));
+  EXPECT_TRUE(is_canonical(k));
+  EXPECT_EQ(k.find_edge(1, 0), 0);
+  EXPECT_EQ(k.find_edge(2, 1), 2);
+  EXPECT_EQ(k.find_edge(2, 0), k.find_edge(0, 2));
+  Simplicial_complex_2 bad = k;
+  bad.triangles = {{0, 1, 2}, {0, 1, 2}};
+  EXPECT_FALSE(is_canonical(bad));
+  bad = k;
+  bad.edges.pop_back();
+  bad.edge_lengths.pop_back();
+  EXPECT_FALSE(is_canonical(bad));  // edge (1, 2) of the triangle is missing
+  Proximity_graph g;
+  g.number_of_vertices = 3;
+  g.edges = {{1, 3}};
+  EXPECT_FALSE(is_canonical(g));
+  expect_in(FeatureRecon::test::invalid_argument_message([&] { connected_components(g); }),
+            "connected_components: edge 0 (1, 3) has a vertex beyond the 3 vertices");
+}
+
+// keep_nearest_exactly(): "only runs of overlapping enclosures that are not all the same exact value (a tie,
+// which the index decides) are ordered by the exact predicate": a run whose first enclosure is inexact is
+// ordered exactly, even when the others are one exact value equal to its lower end. From the origin, (1,
+// 1e-10) (squared distance 1 + 1e-20, enclosed in [1, 1 + 2^-52]) is farther than (0, 1) and (-1, 0) (exactly
+// 1), though its index is smaller.
+TEST(KnnGraph, AnInexactEnclosureAtAnExactTieIsOrderedExactly) {
+  Point_matrix m;
+  m.dimension = 2;
+  m.rows = 4;
+  m.data = {0, 0, 1, 1e-10, 0, 1, -1, 0};
+  for (const std::size_t keep : {1u, 2u, 3u}) {
+    std::vector<std::uint32_t> cand{1, 2, 3};
+    skeleton::internal::keep_nearest_exactly(m, m.row(0), cand, keep);
+    std::vector<std::uint32_t> expected{2, 3, 1};
+    expected.resize(keep);
+    EXPECT_EQ(cand, expected) << "keep " << keep;
+  }
+}
+
+// Neighbor_search::automatic: "kd-tree up to dimension 3, blocked brute force above". Counted: in 3-D the
+// automatic search does exactly the kd-tree's work (ball queries for the ties of an integer grid), in 4-D the
+// brute force's (no ball query).
+TEST(KnnGraph, AutomaticSearchIsTheKdTreeUpToThreeDimensions) {
+  for (const std::size_t d : {3u, 4u}) {
+    Coords grid;
+    for (int i = 0; i < 216; ++i) {
+      grid.push_back({double(i % 6), double(i / 6 % 6), double(i / 36)});
+      if (d == 4) grid.back().push_back(0.5 * (i % 2));
+    }
+    const Point_matrix m = make_point_matrix(grid);
+    Proximity_graph_options automatic, explicit_search;
+    explicit_search.search = d <= 3 ? Neighbor_search::kd_tree : Neighbor_search::brute_force;
+    skeleton::internal::Knn_search_counts a, e;
+    EXPECT_EQ(skeleton::internal::knn_graph(m, 6, automatic, &a).edges,
+              skeleton::internal::knn_graph(m, 6, explicit_search, &e).edges);
+    EXPECT_EQ(a.ball_queries, e.ball_queries) << "d = " << d;
+    EXPECT_EQ(a.refined, e.refined) << "d = " << d;
+    if (d <= 3) {
+      EXPECT_GT(a.ball_queries, 0u);
+    } else {
+      EXPECT_EQ(a.ball_queries, 0u);
+    }
+  }
+}
+
+// The kd-tree searches in units scaled by a power of two (Kd_index: "so that CGAL's squared distances neither
+// overflow nor sink into subnormals"): a cloud scaled by 2^-600 or 2^600 (exactly) is searched as at unit
+// scale, with the same candidates (Rips: pairs given to the exact test) and ball queries (k nearest), and the
+// same graphs.
+TEST(RipsGraph, TheKdTreeSearchesEveryScaleAlike) {
+  const Coords unit = random_points(200, 3, 61);
+  Proximity_graph_options kd;
+  kd.search = Neighbor_search::kd_tree;
+  skeleton::internal::Rips_search_counts rips_unit;
+  skeleton::internal::Knn_search_counts knn_unit;
+  const Proximity_graph r1 = skeleton::internal::rips_graph(make_point_matrix(unit), 0.15, kd, &rips_unit);
+  const Proximity_graph k1 = skeleton::internal::knn_graph(make_point_matrix(unit), 4, kd, &knn_unit);
+  EXPECT_LT(rips_unit.exact, 200u * 199u / 8);  // the ball leaves most pairs out
+  for (const int e : {-600, 600}) {
+    Coords scaled = unit;
+    for (auto& x : scaled)
+      for (double& c : x) c = std::ldexp(c, e);
+    skeleton::internal::Rips_search_counts rips;
+    skeleton::internal::Knn_search_counts knn;
+    EXPECT_EQ(skeleton::internal::rips_graph(make_point_matrix(scaled), std::ldexp(0.15, e), kd, &rips).edges,
+              r1.edges)
+        << e;
+    EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(scaled), 4, kd, &knn).edges, k1.edges) << e;
+    EXPECT_EQ(rips.exact, rips_unit.exact) << e;
+    EXPECT_EQ(knn.ball_queries, knn_unit.ball_queries) << e;
+  }
+}
+
+// The k-nearest-neighbour brute force leaves points "more than 2^15 times the median point's distance" from
+// the centre out of its float filter: one outlier, even at 1e300 (where the others' float coordinates would
+// underflow), adds at most its own row and column to the pairs refined in double (counted, not timed), and
+// the graph among the others stays the brute force's.
+TEST(KnnGraph, OneOutlierDoesNotMakeEveryPairARefinement) {
+  const std::size_t n = 600, k = 3;
+  const Coords p = random_points(n, 12, 51);
+  Proximity_graph_options o;
+  o.search = Neighbor_search::brute_force;
+  skeleton::internal::Knn_search_counts alone;
+  EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(p), k, o, &alone).edges, brute_knn(p, k));
+  for (const double far : {1e7, -1e30, 1e300}) {
+    Coords q = p;
+    q[n / 2][0] = far;
+    skeleton::internal::Knn_search_counts counts;
+    std::vector<Edge> edges = skeleton::internal::knn_graph(make_point_matrix(q), k, o, &counts).edges;
+    EXPECT_LE(counts.refined, alone.refined + 2 * n) << far;
+    const auto touches = [&](const Edge& e) { return e[0] == n / 2 || e[1] == n / 2; };
+    std::vector<Edge> expected = brute_knn(q, k);
+    edges.erase(std::remove_if(edges.begin(), edges.end(), touches), edges.end());
+    expected.erase(std::remove_if(expected.begin(), expected.end(), touches), expected.end());
+    EXPECT_EQ(edges, expected) << far;
+  }
+}
+
+// Proximity_graph_options::progress for the k-nearest-neighbour brute force with groups: "called with the
+// fraction done", non-decreasing to 1, the groups' rows before the points searched among all. Two clusters 9
+// apart (200 points, then 300 and an outlier of the second's group whose nearest lie beyond the gap): the
+// second group's second block starts past nine tenths of the points.
+TEST(KnnGraph, ProgressWithGroupsIsNonDecreasing) {
+  Coords p = random_points(200, 4, 71);
+  for (const auto& x : random_points(300, 4, 72)) {
+    p.push_back(x);
+    p.back()[0] += 10;
+  }
+  p.push_back({10.5, 8.5, 8.5, 8.5});
+  ASSERT_EQ(skeleton::internal::isolated_groups(make_point_matrix(p), 4).size(), 2u);
+  std::vector<double> seen;
+  Proximity_graph_options o;
+  o.search = Neighbor_search::brute_force;
+  o.progress = [&seen](double t) {
+    seen.push_back(t);
+    return true;
+  };
+  skeleton::internal::Knn_search_counts counts;
+  EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(p), 3, o, &counts).edges, brute_knn(p, 3));
+  EXPECT_GE(counts.unresolved, 1u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.back(), 1.0);
 }
 
 // The same point set through every kernel: Simple_cartesian<double>, Epick and Epeck, in 2D and 3D.
