@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "sampling/sampling_test_utilities.h"
+
 namespace {
 using namespace FeatureRecon;
 using namespace FeatureRecon::sampling;
@@ -67,6 +69,42 @@ TEST(ImageDomain, BilinearColours) {
                        Rgb_pixel_traits().construct_feature_object()(px[0]),
                        Rgb_pixel_traits().construct_feature_object()(px[1])),
                    2.0 / 3.0);
+}
+
+// image_pixels() and Bilinear_image check their sizes: width and height >= 0 (either one negative is refused,
+// not only the width) and exactly width * height * channels values (too many as well as too few).
+TEST(ImageDomain, SizesAreCheckedBothWays) {
+  using FeatureRecon::test::expect_invalid_argument;
+  expect_invalid_argument([] { (void)image_pixels<Grey_pixel>(0, -1, {}); },
+                          "width and height must be >= 0, got 0 x -1");
+  expect_invalid_argument([] { (void)Bilinear_image<1>(0, -1, {}); },
+                          "width and height must be >= 0, got 0 x -1");
+  expect_invalid_argument(
+      [] {
+        (void)image_pixels<Grey_pixel>(2, 1, {1, 2, 3});
+      },
+      "data has 3 values, a 2 x 1 image with 1 channel(s) needs 2");
+  expect_invalid_argument(
+      [] {
+        (void)Bilinear_image<3>(1, 1, {1, 2, 3, 4});
+      },
+      "data has 4 values, a 1 x 1 image with 3 channel(s) needs 3");
+}
+
+// A wider than high image: rows of `width` pixels from the top, the box [0, width) x [0, height), and pixel
+// (column, row) centred at (column + 1/2, row + 1/2) with its own value there.
+TEST(ImageDomain, BilinearColoursOfAWideImage) {
+  const std::vector<std::uint8_t> grey{0, 51, 102, 153, 204, 255};  // 3 x 2
+  const Bilinear_image<1> g(3, 2, grey);
+  EXPECT_EQ(g.box(), (std::array<double, 4>{0, 0, 3, 2}));
+  for (int row = 0; row < 2; ++row)
+    for (int column = 0; column < 3; ++column)
+      EXPECT_DOUBLE_EQ(g(column + 0.5, row + 0.5)[0], grey[std::size_t(3 * row + column)] / 255.0)
+          << column << " " << row;
+  EXPECT_DOUBLE_EQ(g(2.0, 1.0)[0], (51 + 102 + 204 + 255) / 4.0 / 255.0);  // the mean of four centres
+  const Bilinear_image<3> c(2, 1, {10, 20, 30, 40, 50, 60});               // 2 x 1, RGB
+  EXPECT_EQ(c.box(), (std::array<double, 4>{0, 0, 2, 1}));
+  EXPECT_DOUBLE_EQ(c(1.5, 0.5)[2], 60 / 255.0);
 }
 
 // A 96 x 96 light image crossed by a dark vertical line one pixel wide.

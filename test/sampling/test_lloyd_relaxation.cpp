@@ -157,6 +157,40 @@ TEST(PixelDensity, BadValuesNamed) {
   EXPECT_NO_THROW(Pixel_density(2, 2, {1e300, 1e300, 1e300, 1e300}));
 }
 
+// The checks of the documented argument ranges, each alone: a negative width (not only a negative height), a
+// negative size given to uniform() (named there, before any allocation), an infinite value (refused as not
+// finite, naming the pixel, not as an overflow), a total mass that overflows while every row's integrals stay
+// finite, and an x^2 moment that overflows while the total stays finite.
+TEST(PixelDensity, EachRangeCheckOnItsOwn) {
+  using FeatureRecon::test::expect_invalid_argument;
+  expect_invalid_argument([] { (void)Pixel_density(-1, 0, {}); },
+                          "Pixel_density: width and height must be >= 0, got -1 x 0");
+  expect_invalid_argument([] { (void)Pixel_density::uniform(0, -1); },
+                          "Pixel_density::uniform: width and height must be >= 0, got 0 x -1");
+  expect_invalid_argument(
+      [] {
+        (void)Pixel_density(2, 1, {1, std::numeric_limits<double>::infinity()});
+      },
+      "values[1] (column 1, row 0) must be finite and >= 0");
+  expect_invalid_argument(
+      [] {
+        (void)Pixel_density(1, 3, {1e308, 1e308, 1e308});
+      },
+      "Pixel_density: the values are too large");
+  expect_invalid_argument([] { (void)Pixel_density(2000, 1, std::vector<double>(2000, 1e300)); },
+                          "Pixel_density: the values are too large");
+  EXPECT_NO_THROW((void)Pixel_density(1, 1, {1e308}));
+}
+
+// is_constant(): true when every pixel has the same density (also 0), false as soon as one differs.
+TEST(PixelDensity, IsConstantWhenEveryPixelIsTheSame) {
+  EXPECT_TRUE(Pixel_density::uniform(3, 2).is_constant());
+  EXPECT_TRUE(Pixel_density(2, 2, {0.5, 0.5, 0.5, 0.5}).is_constant());
+  EXPECT_TRUE(Pixel_density(2, 1, {0.0, 0.0}).is_constant());
+  EXPECT_FALSE(Pixel_density(2, 2, {0.5, 0.5, 0.5, 0.25}).is_constant());
+  EXPECT_FALSE(Pixel_density(3, 1, {2.0, 1.0, 2.0}).is_constant());
+}
+
 // Every cell holds exactly the box points whose nearest site is its own (ties aside).
 void check_cells(const std::vector<P2>& sites, const std::array<double, 4>& box, std::mt19937_64& rng) {
   const auto cells = clipped_voronoi_cells(sites, box);
