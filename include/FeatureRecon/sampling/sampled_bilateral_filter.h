@@ -46,9 +46,12 @@ namespace sampling {
 
 /// The weights of a bilateral filter.
 struct Bilateral_kernel {
-  double sigma_spatial = 3;  ///< spatial Gaussian width in pixels (> 0, finite); default 3
-  double sigma_range = 0.1;  ///< range Gaussian width on channels scaled to [0, 1] (> 0, finite); default 0.1
-  int radius = 0;            ///< window half-width R in pixels (>= 0); default 0: ceil(2 sigma_spatial)
+  /// spatial Gaussian width in pixels (> 0; at most 2048 when the radius is derived from it); default 3
+  double sigma_spatial = 3;
+  /// range Gaussian width on channels scaled to [0, 1], in [1e-150, 1e150] (its square a normal double);
+  /// default 0.1
+  double sigma_range = 0.1;
+  int radius = 0;  ///< window half-width R in pixels, in [0, 4096]; default 0: ceil(2 sigma_spatial)
 };
 
 /// Options of bilateral_filter() (the exact filter).
@@ -75,11 +78,12 @@ struct Sampled_bilateral_filter_options {
   Tap_sampling sampling = Tap_sampling::bilateral;  ///< uniform or bilateral taps; default bilateral
   Tap_mode mode = Tap_mode::global;                 ///< local or global patterns; default global
   double budget = 0.5;                              ///< taps per kernel pixel (> 0, <= 16); default 0.5
-  /// sigma_feature of the bilateral sampling distance on [0, 1] channels (> 0); default 0: sigma_range
+  /// sigma_feature of the bilateral sampling distance on [0, 1] channels, in [1e-150, 1e150]; default 0:
+  /// sigma_range
   double sampling_sigma_feature = 0;
-  bool compensate_density = true;   ///< weight bilateral taps by their inverse relative density
-  double candidates_per_tap = 4;    ///< uniform candidates thrown per tap of the budget (>= 2); default 4
-  std::size_t local_patterns = 64;  ///< local mode: candidate sets in the pool (>= 1); default 64
+  bool compensate_density = true;  ///< weight bilateral taps by their inverse relative density
+  double candidates_per_tap = 4;   ///< uniform candidates thrown per tap of the budget, in [2, 64]; default 4
+  std::size_t local_patterns = 64;  ///< local mode: candidate sets in the pool, in [1, 65536]; default 64
   std::uint64_t seed = 0;           ///< random seed; the same seed gives the same output
   Progress_callback progress;       ///< fraction of the work done; returning false stops (empty result)
 };
@@ -250,9 +254,9 @@ inline double feature_factor(const Sampled_bilateral_filter_options& o) {
 /// Density compensation per pixel for bilateral darts of radius r: the pixel's exclusion area in the stacked
 /// space (sub-pixel points within xi < r of its centre, 4 x 4 per pixel, each reading its pixel's colour)
 /// over that of a flat image with the same in-image points. 1 everywhere for uniform sampling. The pixels of
-/// the disc are read every `stride` pixels in x and y (0: automatic, 1 up to r = 24, then ceil(r / 24)): the
-/// cost per pixel stays about 1,800 offsets (a tiny budget asks for r = 74 at 1e-4 and took 30 s on 256 x 256
-/// pixels).
+/// the disc are read every `stride` pixels in x and y (0: automatic, 1 up to r = 24, then ceil(e / 24) with e
+/// = min(r, width + height), as offsets beyond width + height meet no pixel): the cost per pixel stays about
+/// 1,800 offsets (a tiny budget asks for r = 74 at 1e-4 and took 30 s on 256 x 256 pixels).
 inline std::vector<float> density_compensation(const Filter_image& F, double r, double factor,
                                                int stride = 0) {
   std::vector<float> weight(F.pixels(), 1.0f);
@@ -519,7 +523,8 @@ inline double calibrate_local_radius(const Filter_image& F, const Local_pool& po
 /// \returns the filtered values (unrounded, 0..255 scale), taps = the in-image window pixels, taps per kernel
 ///   pixel 1; status degenerate_input for an empty image, interrupted (with no values) when stopped.
 /// \throws std::invalid_argument naming the argument: sizes that disagree, channels other than 1 or 3, a
-///   non-finite or non-positive sigma, a radius out of [0, 4096].
+///   non-finite or non-positive sigma_spatial (above 2048 when the radius is derived from it), a sigma_range
+///   out of [1e-150, 1e150], a radius out of [0, 4096].
 inline Bilateral_filter_result bilateral_filter(int width, int height, int channels,
                                                 const std::vector<std::uint8_t>& data,
                                                 const Bilateral_filter_options& options = {}) {
@@ -619,7 +624,8 @@ inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_fi
 /// \returns the taps sorted by pixel with their weights and the radius; degenerate_input for an empty image,
 ///   interrupted (no taps) when stopped.
 /// \throws std::invalid_argument naming the argument (as bilateral_filter(), and the budget in (0, 16],
-///   candidates_per_tap in [2, 64], a non-positive sampling_sigma_feature).
+///   candidates_per_tap in [2, 64], local_patterns in [1, 65536], a sampling_sigma_feature other than 0 out
+///   of [1e-150, 1e150]).
 inline Tap_pattern bilateral_tap_pattern(int width, int height, int channels,
                                          const std::vector<std::uint8_t>& data,
                                          const Sampled_bilateral_filter_options& options) {
