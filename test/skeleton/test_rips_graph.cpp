@@ -28,6 +28,10 @@ using namespace FeatureRecon::skeleton;
 namespace {
 
 using Coords = std::vector<std::vector<double>>;
+/// A Boost graph with double edge weights, as users hand to proximity_graph_from_boost_graph().
+using Weighted_boost_graph =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                          boost::property<boost::edge_weight_t, double>>;
 
 Coords random_points(std::size_t n, std::size_t d, std::uint32_t seed, double scale = 1.0) {
   std::mt19937 rng(seed);
@@ -765,9 +769,7 @@ TEST(DistanceMatrix, BadMatricesNameTheEntry) {
 }
 
 TEST(BoostGraphInput, WeightedGraphBecomesCanonical) {
-  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                                  boost::property<boost::edge_weight_t, double>>;
-  G g(5);
+  Weighted_boost_graph g(5);
   add_edge(3, 1, 2.0, g);
   add_edge(0, 1, 1.0, g);
   add_edge(1, 0, 7.0, g);  // parallel: first weight kept
@@ -1049,9 +1051,7 @@ TEST(EveryEntryPoint, EmptyAndTiedInputs) {
   EXPECT_EQ(build_flag_complex_2(build_rips_graph(same, 0.0)).number_of_triangles(), 20u);
   EXPECT_EQ(build_knn_graph(same, 2).edges, brute_knn(same, 2));
   // An empty Boost graph.
-  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                                  boost::property<boost::edge_weight_t, double>>;
-  const G g0;
+  const Weighted_boost_graph g0;
   EXPECT_EQ(proximity_graph_from_boost_graph(g0, get(boost::edge_weight, g0)).number_of_vertices, 0u);
 }
 
@@ -1236,9 +1236,7 @@ TEST(Copies, FoundWhereverTheySort) {
 // proximity_graph_from_boost_graph(): "every weight is finite and >= 0": a zero weight (two copies of a
 // point) is an edge of length 0.
 TEST(BoostGraphInput, ZeroWeightsAreEdges) {
-  using G = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                                  boost::property<boost::edge_weight_t, double>>;
-  G g(3);
+  Weighted_boost_graph g(3);
   add_edge(2, 0, 0.0, g);
   add_edge(1, 2, 1.5, g);
   const Proximity_graph p = proximity_graph_from_boost_graph(g, get(boost::edge_weight, g));
