@@ -848,6 +848,13 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   EXPECT_TRUE(stopped.triangles.empty());
   EXPECT_EQ(stopped.edges, complete.edges);
   EXPECT_EQ(calls, 1);
+  // The callback overload takes any callable (a lambda, a std::function); `{}` is the options overload (it
+  // was ambiguous between the options and a std::function).
+  calls = 0;
+  EXPECT_TRUE(build_flag_complex_2(complete, [&calls](double) { return ++calls > 1; }).triangles.empty());
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(build_flag_complex_2(complete, Progress_callback()).triangles, k.triangles);
+  EXPECT_EQ(build_flag_complex_2(complete, {}).triangles, k.triangles);
 }
 
 TEST(RipsComplex, ProgressCoversBothStagesAndAStopEndsBoth) {

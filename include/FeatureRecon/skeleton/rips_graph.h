@@ -1274,17 +1274,20 @@ inline Simplicial_complex_2 flag_complex_2(const Proximity_graph& g, std::size_t
 /// \throws std::invalid_argument for a graph that is not canonical, or more triangles than
 ///         `options.max_triangles` (found while counting, nothing stored).
 inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g,
-                                                 const Flag_complex_options& options) {
+                                                 const Flag_complex_options& options = {}) {
   return internal::flag_complex_2(
       g, options.max_triangles > 0 ? options.max_triangles : std::numeric_limits<std::size_t>::max(),
       options.progress, "build_flag_complex_2", "Flag_complex_options::max_triangles");
 }
 
-/// build_flag_complex_2() without a triangle limit.
-inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g,
-                                                 const Progress_callback& progress = {}) {
+/// build_flag_complex_2() without a triangle limit, with a progress callback: any callable taking the
+/// fraction done and returning false to stop (a template, so that `build_flag_complex_2(g, {})` is the
+/// options overload and not ambiguous).
+template <class Callback,
+          std::enable_if_t<std::is_invocable_r<bool, const std::decay_t<Callback>&, double>::value, int> = 0>
+Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, Callback&& progress) {
   Flag_complex_options o;
-  o.progress = progress;
+  o.progress = std::forward<Callback>(progress);
   return build_flag_complex_2(g, o);
 }
 
