@@ -912,3 +912,16 @@ TEST(SampledBilateralFilter, TheCentreCountsOnceAndExactly) {
       EXPECT_GT(psnr(exact.values, r.values), 48) << int(m) << " " << int(s);
     }
 }
+
+TEST(SampledBilateralFilter, OptionsDefaultAsInTheExactFilter) {
+  // bilateral_tap_pattern() and sampled_bilateral_filter() without options take the defaults, as
+  // bilateral_filter() does (bilateral taps, global pattern, budget 0.5, seed 0).
+  const Bytes d = disk_image(24, 18, 2);
+  const Sampled_bilateral_filter_options defaults;
+  EXPECT_EQ(bilateral_tap_pattern(24, 18, 1, d).positions,
+            bilateral_tap_pattern(24, 18, 1, d, defaults).positions);
+  const auto r = sampled_bilateral_filter(24, 18, 1, d);
+  ASSERT_EQ(r.status, FeatureRecon::Status::success);
+  EXPECT_EQ(r.values, sampled_bilateral_filter(24, 18, 1, d, defaults).values);
+  EXPECT_NEAR(r.taps_per_kernel_pixel, 0.5, 0.05);
+}

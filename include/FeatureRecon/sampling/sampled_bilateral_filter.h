@@ -628,7 +628,7 @@ inline Tap_pattern tap_pattern(const Filter_image& F, const Sampled_bilateral_fi
 ///   of [1e-150, 1e150]).
 inline Tap_pattern bilateral_tap_pattern(int width, int height, int channels,
                                          const std::vector<std::uint8_t>& data,
-                                         const Sampled_bilateral_filter_options& options) {
+                                         const Sampled_bilateral_filter_options& options = {}) {
   const char* fn = "bilateral_tap_pattern";
   const internal::Filter_image F(width, height, channels, data, options.kernel, fn);
   internal::check_sampled_options(options, fn);
@@ -742,9 +742,9 @@ inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, i
 ///   per kernel pixel than the budget (taps_per_kernel_pixel says how many).
 /// \throws std::invalid_argument naming the argument, as bilateral_tap_pattern().
 /// \note Deterministic: the same image, options and seed give bit-identical values.
-inline Bilateral_filter_result sampled_bilateral_filter(int width, int height, int channels,
-                                                        const std::vector<std::uint8_t>& data,
-                                                        const Sampled_bilateral_filter_options& options) {
+inline Bilateral_filter_result sampled_bilateral_filter(
+    int width, int height, int channels, const std::vector<std::uint8_t>& data,
+    const Sampled_bilateral_filter_options& options = {}) {
   const char* fn = "sampled_bilateral_filter";
   const internal::Filter_image F(width, height, channels, data, options.kernel, fn);
   internal::check_sampled_options(options, fn);
