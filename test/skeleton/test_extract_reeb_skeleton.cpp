@@ -528,13 +528,12 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   auto message = [](auto&& call) { return invalid_argument_message(call); };
   EXPECT_EQ(message([] {
               extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, std::nan(""));
-            }).rfind("extract_reeb_skeleton: rips_radius must be finite and >= 0", 0),
+            }).rfind("extract_reeb_skeleton: radius must be finite and >= 0", 0),
             0u);
-  EXPECT_EQ(
-      message([] {
-        extract_reeb_skeleton_from_distance_matrix(Eigen::MatrixXd(Eigen::MatrixXd::Zero(2, 2)), -1.0);
-      }).rfind("extract_reeb_skeleton_from_distance_matrix: rips_radius must be finite and >= 0, got -1", 0),
-      0u);
+  EXPECT_EQ(message([] {
+              extract_reeb_skeleton_from_distance_matrix(Eigen::MatrixXd(Eigen::MatrixXd::Zero(2, 2)), -1.0);
+            }).rfind("extract_reeb_skeleton_from_distance_matrix: radius must be finite and >= 0, got -1", 0),
+            0u);
   Proximity_graph g;
   g.number_of_vertices = 2;
   g.edges = {{1, 0}};

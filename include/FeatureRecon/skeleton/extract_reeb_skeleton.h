@@ -805,12 +805,12 @@ Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius,
                                     const Skeleton_options& given_options = {}) {
   const double rips_radius = static_cast<double>(radius);
   internal::check_point_matrix(points, "extract_reeb_skeleton");
+  if (!(std::isfinite(rips_radius) && rips_radius >= 0))
+    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton",
+                                                   "radius must be finite and >= 0, got ", rips_radius);
   const Skeleton_options options =
       internal::with_suggested_delta(given_options, rips_radius, "extract_reeb_skeleton",
                                      [&points] { return estimate_rips_radius(points).scale; });
-  if (!(std::isfinite(rips_radius) && rips_radius >= 0))
-    FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton",
-                                                   "rips_radius must be finite and >= 0, got ", rips_radius);
   Proximity_graph_options po;
   po.search = options.search;
   // a stop inside the Rips stage ends the run even if the callback answers true afterwards
@@ -948,11 +948,10 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius
   const char* fn = "extract_reeb_skeleton_from_distance_matrix";
   std::size_t n = 0;
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
+  if (!(std::isfinite(rips_radius) && rips_radius >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", rips_radius);
   const Skeleton_options options = internal::with_suggested_delta(
       given_options, rips_radius, fn, [&D] { return estimate_rips_radius_from_distance_matrix(D).scale; });
-  if (!(std::isfinite(rips_radius) && rips_radius >= 0))
-    FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be finite and >= 0, got ",
-                                                   rips_radius);
   // Copies (rows at distance 0 with equal rows) are joined as extract_reeb_skeleton() joins copies of points:
   // n copies of one point formed a clique of n^3 / 6 triangles.
   std::vector<Vertex_index> first;
