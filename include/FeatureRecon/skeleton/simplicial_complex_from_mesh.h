@@ -11,6 +11,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <type_traits>
 #include <vector>
 
 namespace FeatureRecon {
@@ -66,11 +67,23 @@ Simplicial_complex_2 simplicial_complex_from_mesh(const FaceGraph& mesh) {
 template <class FaceGraph, class VertexValueMap>
 Augmented_reeb_graph compute_augmented_reeb_graph(const FaceGraph& mesh, VertexValueMap f,
                                                   const Reeb_graph_options& options = {}) {
-  const Simplicial_complex_2 k = simplicial_complex_from_mesh(mesh);
-  const auto vindex = CGAL::get_initialized_vertex_index_map(mesh);
-  std::vector<double> values(k.number_of_vertices, 0.0);
-  for (auto v : vertices(mesh)) values[get(vindex, v)] = static_cast<double>(get(f, v));
-  return compute_augmented_reeb_graph(k, values, options);
+  // A Proximity_graph (not a complex) would match here and fail deep inside CGAL's BGL code: one message.
+  constexpr bool is_graph_not_complex = std::is_base_of<Proximity_graph, FaceGraph>::value &&
+                                        !std::is_same<FaceGraph, Simplicial_complex_2>::value;
+  static_assert(
+      !is_graph_not_complex,
+      "FeatureRecon: compute_augmented_reeb_graph() takes a Simplicial_complex_2 with a range of values, "
+      "or a triangle mesh with a vertex property map; a Proximity_graph has no triangles: pass "
+      "build_flag_complex_2(graph), the Rips 2-complex of a Rips graph");
+  if constexpr (is_graph_not_complex) {
+    return compute_augmented_reeb_graph(Simplicial_complex_2(), std::vector<double>(), options);
+  } else {
+    const Simplicial_complex_2 k = simplicial_complex_from_mesh(mesh);
+    const auto vindex = CGAL::get_initialized_vertex_index_map(mesh);
+    std::vector<double> values(k.number_of_vertices, 0.0);
+    for (auto v : vertices(mesh)) values[get(vindex, v)] = static_cast<double>(get(f, v));
+    return compute_augmented_reeb_graph(k, values, options);
+  }
 }
 
 }  // namespace skeleton
