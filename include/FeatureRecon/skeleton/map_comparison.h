@@ -785,7 +785,9 @@ struct Unmatched_samples_breakdown {
 /// Sorts every unmatched sample of a comparison into the classes of Unmatched_sample_counts: a diagnosis of
 /// what a reconstruction lacks (missed) and adds (spurious). Aligned means a bearing difference below the
 /// limit.
-/// \pre `r` was computed with options.keep_samples and the same `options` (checked; throws).
+/// \pre `r` was computed with options.keep_samples (checked; throws). The classes are measured with
+/// `options`' match distance and bearing limit: pass the options of the comparison (not checked; the result
+/// does not record them).
 inline Unmatched_samples_breakdown explain_unmatched_samples(const Map_comparison_result& r,
                                                              const Map_comparison_options& options = {}) {
   const auto& H = r.ground_truth_sample_list;
