@@ -854,6 +854,7 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   EXPECT_TRUE(build_flag_complex_2(complete, [&calls](double) { return ++calls > 1; }).triangles.empty());
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(build_flag_complex_2(complete, Progress_callback()).triangles, k.triangles);
+  EXPECT_TRUE(build_flag_complex_2(complete, [n = 0](double) mutable { return ++n > 1; }).triangles.empty());
   EXPECT_EQ(build_flag_complex_2(complete, {}).triangles, k.triangles);
 }
 

@@ -1284,7 +1284,7 @@ inline Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g,
 /// fraction done and returning false to stop (a template, so that `build_flag_complex_2(g, {})` is the
 /// options overload and not ambiguous).
 template <class Callback,
-          std::enable_if_t<std::is_invocable_r<bool, const std::decay_t<Callback>&, double>::value, int> = 0>
+          std::enable_if_t<std::is_invocable_r<bool, std::decay_t<Callback>&, double>::value, int> = 0>
 Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, Callback&& progress) {
   Flag_complex_options o;
   o.progress = std::forward<Callback>(progress);
