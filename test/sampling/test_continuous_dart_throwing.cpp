@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "test_utilities.h"
+
 namespace {
 using namespace FeatureRecon::sampling;
 
@@ -52,10 +54,7 @@ TEST(ContinuousDartThrowing, PoissonDiskAndNearlyMaximal) {
   // Progress never goes back (a new sample resets the run of failures; the report was that run's share, and
   // went from 0.0102 back to 0.0006 at r = 0.003), and ends at 1.
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = FeatureRecon::test::recording_progress(seen);
   const auto watched = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.003, grey_step, squared, o);
   ASSERT_GT(seen.size(), 10u);
   for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]) << i;
@@ -181,10 +180,7 @@ TEST(ContinuousDartThrowing, ProgressEvery65536DartsWithTheShareOfTheFailureBudg
   Continuous_dart_throwing_options o;
   o.max_consecutive_failures = 200000;
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = FeatureRecon::test::recording_progress(seen);
   const auto r = continuous_bilateral_dart_throwing({0, 0, 1, 1}, 5.0, grey_step, squared, o);
   EXPECT_EQ(r.darts, 200001u);
   // After 65536, 131072 and 196608 darts (one kept, the rest failed), then 1 at the end.

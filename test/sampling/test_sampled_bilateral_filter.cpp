@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "sampling/sampling_test_utilities.h"
+#include "test_utilities.h"
 
 #include <algorithm>
 #include <array>
@@ -492,10 +493,7 @@ TEST(SampledBilateralFilter, TheLocalModeReportsBeforeItsPixelsAndStops) {
   o.mode = Tap_mode::local;
   o.sampling = Tap_sampling::bilateral;
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = FeatureRecon::test::recording_progress(seen);
   ASSERT_EQ(sampled_bilateral_filter(40, 40, 3, a, o).status, FeatureRecon::Status::success);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   auto reports = [&seen](double from, double to) {
@@ -842,10 +840,7 @@ TEST(SampledBilateralFilter, ProgressOfEachStage) {
   const Bytes rgb = random_image(40, 40, 3, 4);
   std::vector<double> seen;
   auto o = sampled(Tap_mode::local, Tap_sampling::bilateral, 0.5);
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = FeatureRecon::test::recording_progress(seen);
   ASSERT_EQ(sampled_bilateral_filter(40, 40, 3, rgb, o).status, FeatureRecon::Status::success);
   EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t >= 0.05 && t < 0.15; }), 1);
   const Bytes d = random_image(20, 20, 1, 1);

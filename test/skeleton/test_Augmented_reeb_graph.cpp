@@ -17,6 +17,7 @@
 #include <random>
 
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -508,10 +509,7 @@ TEST(AugmentedReebGraph, TheSetUpReportsAndAStopThereLeavesNoArc) {
   for (std::size_t i = 0; i < f.size(); ++i) f[i] = points[i][0] + 0.5 * points[i][1];
   Reeb_graph_options options;
   std::vector<double> seen;
-  options.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  options.progress = test::recording_progress(seen);
   const Augmented_reeb_graph full = compute_augmented_reeb_graph(K, f, options);
   ASSERT_EQ(full.status(), Status::success);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));

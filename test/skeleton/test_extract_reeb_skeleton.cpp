@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -646,10 +647,7 @@ TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
   o.delta = 1;
   o.repair_distance = 0.5;
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   ASSERT_EQ(extract_reeb_skeleton(m, 1.0, o).status, Status::success);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   auto at = [](double x) { return 0.3 + 0.7 * x; };  // from points, the stages after the Rips graph: 0.3 to 1

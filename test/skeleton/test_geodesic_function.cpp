@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "test_utilities.h"
+
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -199,10 +201,7 @@ TEST(GeodesicFunction, ProgressReportsAndStops) {
   path.edges = {{0, 1}, {1, 2}, {2, 3}};
   std::vector<double> seen;
   Geodesic_options o;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   EXPECT_EQ(compute_geodesic_function(path, o).status, Status::success);
   EXPECT_EQ(seen, (std::vector<double>{0.0, 0.5, 1.0}));
   for (const std::size_t stop_at : {1u, 2u}) {

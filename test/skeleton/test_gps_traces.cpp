@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -164,10 +165,7 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   o.min_relative_density = 0.15;
   const Gps_trace_sample plain = sample_gps_traces(trips, 20.0, o);
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   const Gps_trace_sample watched = sample_gps_traces(trips, 20.0, o);
   EXPECT_EQ(watched.status, Status::success);
   EXPECT_EQ(watched.points.data, plain.points.data);  // watching changes nothing
@@ -186,10 +184,7 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   // once per trip), and stops there.
   const std::vector<Gps_trip> long_trip{straight(0, 0, 1, 0, 10000, 25, 0)};
   seen.clear();
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   ASSERT_EQ(sample_gps_traces(long_trip, 20.0, o).status, Status::success);
   EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0 && t < 0.3; }), 2);
   EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.8; }), 2);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "io/featurerecon_io.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -882,10 +883,7 @@ TEST(MapComparison, ProgressIsReportedAndAStopLeavesNoPair) {
     ASSERT_GT(plain.ground_truth_samples, 30000u);
     ASSERT_GT(plain.matched, 30000u);
     std::vector<double> seen;
-    options.progress = [&seen](double t) {
-      seen.push_back(t);
-      return true;
-    };
+    options.progress = test::recording_progress(seen);
     const Map_comparison_result watched = compare_maps(gt, rec, options);
     EXPECT_EQ(watched.status, Status::success);
     EXPECT_EQ(watched.matched, plain.matched);
@@ -937,10 +935,7 @@ TEST(MapComparison, GreedyProgressStaysBelowOneUntilTheEnd) {
   for (int i = 0; i < 10; ++i) G.push_back({{1.0 + i, 0.0}, 0.0});
   Map_comparison_options options;
   std::vector<double> seen;
-  options.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  options.progress = test::recording_progress(seen);
   const Map_sample_matching M = match_map_samples(H, G, options);
   EXPECT_EQ(M.matched, 10u);
   ASSERT_GT(seen.size(), 2u);

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -577,10 +578,7 @@ TEST(RepairReebGraph, ProgressIsReportedAndAStopLeavesAValidGraph) {
     Reeb_repair_options options;
     if (bounded) options.bound = [&m](Vertex_index v) { return m.row(v)[1]; };
     std::vector<double> seen;
-    options.progress = [&seen](double t) {
-      seen.push_back(t);
-      return true;
-    };
+    options.progress = test::recording_progress(seen);
     const Reeb_repair_result watched = repair_reeb_graph(R, 4.0, distance, options);
     EXPECT_EQ(watched.status, Status::success);
     EXPECT_TRUE(same_graph(watched.graph, plain.graph)) << bounded;

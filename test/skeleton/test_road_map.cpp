@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "test_utilities.h"
+
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -202,10 +204,7 @@ TEST(RoadMap, ProgressIsMonotoneAndCancelStops) {
   const Synthetic_city city = small_city();
   Road_map_options o;
   std::vector<double> seen;
-  o.progress = [&](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   const Road_map m = extract_road_map(city.trips, o);
   ASSERT_FALSE(seen.empty());
   EXPECT_EQ(seen.front(), 0.0);

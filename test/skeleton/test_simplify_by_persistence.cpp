@@ -10,6 +10,7 @@
 
 #include "hera_bottleneck.h"
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -441,10 +442,7 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
   const Reeb_simplification_result plain = simplify_by_persistence(A, 1.0);
   std::vector<double> seen;
   Simplification_options watching;
-  watching.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  watching.progress = test::recording_progress(seen);
   const Reeb_simplification_result watched = simplify_by_persistence(A, 1.0, watching);
   EXPECT_EQ(watched.status, Status::success);
   EXPECT_EQ(watched.removed_branches, k);
