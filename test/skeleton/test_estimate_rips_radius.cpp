@@ -21,6 +21,7 @@
 
 #include "high_dimensional_graphs.h"
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -483,10 +484,7 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   Skeleton_options o;
   o.delta = e.radius;  // as given (a negative delta stands for e.delta)
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   const Reeb_skeleton one_call = extract_reeb_skeleton(m, o);
   o.progress = nullptr;
   const Reeb_skeleton staged = extract_reeb_skeleton(m, e.radius, o);
@@ -529,16 +527,10 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   // Both callbacks hear the estimate: the run's (first tenth) and the estimate's own (0 to 1).
   Rips_radius_options ro;
   std::vector<double> own;
-  ro.progress = [&own](double t) {
-    own.push_back(t);
-    return true;
-  };
+  ro.progress = test::recording_progress(own);
   seen.clear();
   o.delta = -1;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   extract_reeb_skeleton(m, o, ro);
   ASSERT_EQ(own.size(), 601u);  // 600 reference points, then 1
   EXPECT_EQ(own.back(), 1.0);
@@ -555,15 +547,73 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   EXPECT_EQ(num_vertices(stopped.graph), 0u);
 }
 
+TEST(EstimateRipsRadius, SuggestedDeltaAtAGivenRadiusReportsProgressAndCanStop) {
+  // A negative delta with a given radius ran the suggestion's estimate (600 reference points here) with
+  // default options: no progress and no stop during it, and the rest of the run took the whole range.
+  const Point_matrix m = noisy_circle(600, 0.3, 7);
+  const Rips_radius_estimate e = estimate_rips_radius(m);
+  std::vector<double> seen, given_seen;
+  Skeleton_options o, given;
+  o.delta = -1;
+  o.progress = test::recording_progress(seen);
+  given.delta = e.delta;
+  given.progress = test::recording_progress(given_seen);
+  const Reeb_skeleton s = extract_reeb_skeleton(m, e.radius, o),
+                      g = extract_reeb_skeleton(m, e.radius, given);
+  EXPECT_EQ(s.status, Status::success);
+  EXPECT_EQ(s.delta, e.delta);
+  EXPECT_EQ(num_vertices(s.graph), num_vertices(g.graph));
+  EXPECT_EQ(num_edges(s.graph), num_edges(g.graph));
+  // The estimate's 601 reports fill the first tenth; the run's own follow, scaled into the rest.
+  ASSERT_EQ(seen.size(), given_seen.size() + 601);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen[1], 0.1 * (1.0 / 600));
+  EXPECT_EQ(seen[600], 0.1);
+  for (std::size_t i = 0; i < given_seen.size(); ++i) EXPECT_EQ(seen[601 + i], 0.1 + 0.9 * given_seen[i]);
+  // A stop during the estimate: interrupted, nothing built, the given radius and the caller's delta.
+  std::size_t calls = 0;
+  o.progress = [&calls](double t) {
+    ++calls;
+    return t < 0.05;
+  };
+  const Reeb_skeleton stopped = extract_reeb_skeleton(m, e.radius, o);
+  EXPECT_EQ(stopped.status, Status::interrupted);
+  EXPECT_EQ(stopped.rips_radius, e.radius);
+  EXPECT_EQ(stopped.delta, -1.0);
+  EXPECT_EQ(num_vertices(stopped.graph), 0u);
+  EXPECT_EQ(calls, 301u);  // 0, 1/600, ..., 300/600 of the first tenth: 0.05 is the first refused
+  // The distance-matrix overload alike.
+  std::vector<double> D(m.rows * m.rows);
+  for (std::size_t i = 0; i < m.rows; ++i)
+    for (std::size_t j = 0; j < m.rows; ++j)
+      D[i * m.rows + j] = skeleton::internal::point_distance(m.row(i), m.row(j), 2);
+  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
+      D.data(), static_cast<Eigen::Index>(m.rows), static_cast<Eigen::Index>(m.rows));
+  calls = 0;
+  const Reeb_skeleton stopped_matrix = extract_reeb_skeleton_from_distance_matrix(matrix, e.radius, o);
+  EXPECT_EQ(stopped_matrix.status, Status::interrupted);
+  EXPECT_EQ(stopped_matrix.rips_radius, e.radius);
+  EXPECT_EQ(stopped_matrix.delta, -1.0);
+  EXPECT_EQ(num_vertices(stopped_matrix.graph), 0u);
+  EXPECT_EQ(calls, 301u);
+  seen.clear();
+  o.progress = test::recording_progress(seen);
+  const Reeb_skeleton from_matrix = extract_reeb_skeleton_from_distance_matrix(matrix, e.radius, o);
+  EXPECT_EQ(from_matrix.status, Status::success);
+  EXPECT_EQ(from_matrix.delta, e.delta);
+  ASSERT_GE(seen.size(), 601u);
+  EXPECT_EQ(seen[600], 0.1);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.back(), 1.0);
+}
+
 TEST(EstimateRipsRadius, ProgressAndStop) {
   const Point_matrix m = noisy_circle(300, 0.3, 8);
   Rips_radius_options o;
   o.reference_points = 50;
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   EXPECT_EQ(estimate_rips_radius(m, o).status, Status::success);
   ASSERT_EQ(seen.size(), 51u);  // before each reference point, then 1
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));

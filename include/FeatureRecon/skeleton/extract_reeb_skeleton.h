@@ -67,8 +67,9 @@ struct Skeleton_options {
   /// Persistence threshold of the simplification (function unit); default 0 (no simplification). Negative:
   /// the suggested delta at the radius used, max(radius, 2.25 x the scale estimate_rips_radius() reads off
   /// the points or matrix; Rips_radius_estimate::delta), taken by the overloads of points and distance
-  /// matrices (with a given radius the estimate's work, about 1,000 n distances, comes first); the graph
-  /// overload refuses it.
+  /// matrices (with a given radius the estimate's work, about 1,000 n distances, comes first and takes the
+  /// first tenth of the progress range; a stop there returns status interrupted, rips_radius the given
+  /// radius and this negative delta); the graph overload refuses it.
   double delta = 0;
   /// join degree-1 nodes at most this far apart in input space, then simplify again; 0 (default): no repair
   double repair_distance = 0;
@@ -510,19 +511,37 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
   check_embedding_options(options.embedding, fn);  // before the pipeline runs, with the caller's values
 }
 
-/// `options` with a negative delta replaced by the suggested delta at `radius`: max(radius, delta_factor *
-/// scale) for the scale `scale()` estimates (estimate_rips_radius(), default Rips_radius_options), as
-/// Rips_radius_estimate::delta is at the estimated radius. Checked with the replacement.
-template <class Scale>
-Skeleton_options with_suggested_delta(const Skeleton_options& options, double radius, const char* fn,
-                                      Scale&& scale) {
-  Skeleton_options run = options;
+/// `run` := `options` with a negative delta replaced by the suggested delta at `radius`: max(radius,
+/// delta_factor * scale) for the scale `estimate(o)` finds (estimate_rips_radius() with Rips_radius_options
+/// o, default but for the progress), as Rips_radius_estimate::delta is at the estimated radius. Checked with
+/// the replacement standing in. The estimate takes the first tenth of the progress range of
+/// `options.progress` and `run.progress` the rest. \returns false when the callback stopped the estimate.
+template <class Estimate>
+bool with_suggested_delta(const Skeleton_options& options, double radius, const char* fn, Estimate&& estimate,
+                          Skeleton_options& run) {
+  run = options;
   if (options.delta < 0) run.delta = 0;  // checked with the suggestion standing in
   check_skeleton_options(run, fn);
-  if (options.delta < 0 && std::isfinite(radius))
-    run.delta = std::min(std::numeric_limits<double>::max(),
-                         std::max(radius, Rips_radius_options().delta_factor * scale()));
-  return run;
+  if (!(options.delta < 0)) return true;
+  Rips_radius_options ro;
+  if (options.progress) {
+    ro.progress = [&options](double t) { return options.progress(0.1 * t); };
+    run.progress = [progress = options.progress](double t) { return progress(0.1 + 0.9 * t); };
+  }
+  const Rips_radius_estimate e = estimate(ro);
+  if (e.status == Status::interrupted) return false;
+  run.delta = std::min(std::numeric_limits<double>::max(), std::max(radius, ro.delta_factor * e.scale));
+  return true;
+}
+
+/// The result of a run stopped before any skeleton: the caller's delta, the radius (NaN if not known yet).
+inline Reeb_skeleton interrupted_skeleton(std::size_t dimension, double rips_radius, double delta) {
+  Reeb_skeleton s;
+  s.dimension = dimension;
+  s.rips_radius = rips_radius;
+  s.delta = delta;
+  s.status = Status::interrupted;
+  return s;
 }
 
 /// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr
@@ -808,9 +827,12 @@ Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius,
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
     FeatureRecon::internal::throw_invalid_argument("extract_reeb_skeleton",
                                                    "radius must be finite and >= 0, got ", rips_radius);
-  const Skeleton_options options =
-      internal::with_suggested_delta(given_options, rips_radius, "extract_reeb_skeleton",
-                                     [&points] { return estimate_rips_radius(points).scale; });
+  const std::size_t dimension = std::min<std::size_t>(points.dimension, 3);
+  Skeleton_options options;
+  if (!internal::with_suggested_delta(
+          given_options, rips_radius, "extract_reeb_skeleton",
+          [&points](const Rips_radius_options& o) { return estimate_rips_radius(points, o); }, options))
+    return internal::interrupted_skeleton(dimension, rips_radius, given_options.delta);
   Proximity_graph_options po;
   po.search = options.search;
   // a stop inside the Rips stage ends the run even if the callback answers true afterwards
@@ -821,14 +843,7 @@ Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius,
     };
   std::vector<Vertex_index> first;  // empty: no copies
   const Proximity_graph g = internal::rips_graph_of_distinct_points(points, rips_radius, po, first);
-  if (stopped) {
-    Reeb_skeleton interrupted;
-    interrupted.dimension = std::min<std::size_t>(points.dimension, 3);
-    interrupted.rips_radius = rips_radius;
-    interrupted.delta = options.delta;
-    interrupted.status = Status::interrupted;
-    return interrupted;
-  }
+  if (stopped) return internal::interrupted_skeleton(dimension, rips_radius, options.delta);
   Reeb_skeleton s = internal::skeleton_from_graph(
       g, points,
       [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); },
@@ -864,13 +879,8 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
     };
   }
   const Rips_radius_estimate r = estimate(radius_options);
-  if (r.status == Status::interrupted) {
-    Reeb_skeleton interrupted;
-    interrupted.dimension = dimension;
-    interrupted.delta = options.delta;
-    interrupted.status = Status::interrupted;
-    return interrupted;
-  }
+  if (r.status == Status::interrupted)
+    return interrupted_skeleton(dimension, std::numeric_limits<double>::quiet_NaN(), options.delta);
   if (options.delta < 0) rest.delta = r.delta;
   if (options.progress) rest.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
   Reeb_skeleton s = run(r.radius, rest);
@@ -950,8 +960,12 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius
   const std::vector<double> a = internal::checked_distance_matrix(D, n, fn);
   if (!(std::isfinite(rips_radius) && rips_radius >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and >= 0, got ", rips_radius);
-  const Skeleton_options options = internal::with_suggested_delta(
-      given_options, rips_radius, fn, [&D] { return estimate_rips_radius_from_distance_matrix(D).scale; });
+  Skeleton_options options;
+  if (!internal::with_suggested_delta(
+          given_options, rips_radius, fn,
+          [&D](const Rips_radius_options& o) { return estimate_rips_radius_from_distance_matrix(D, o); },
+          options))
+    return internal::interrupted_skeleton(3, rips_radius, given_options.delta);
   // Copies (rows at distance 0 with equal rows) are joined as extract_reeb_skeleton() joins copies of points:
   // n copies of one point formed a clique of n^3 / 6 triangles.
   std::vector<Vertex_index> first;
@@ -977,14 +991,8 @@ Reeb_skeleton extract_reeb_skeleton_from_distance_matrix(const Matrix& D, Radius
   mds.dimension = 3;
   for (const auto& p : internal::classical_mds_3d(a, n, scaled, stopped))
     mds.data.insert(mds.data.end(), p.begin(), p.end());
-  if (stopped || !FeatureRecon::internal::report_progress(options.progress, 0.3)) {
-    Reeb_skeleton interrupted;
-    interrupted.dimension = 3;
-    interrupted.rips_radius = rips_radius;
-    interrupted.delta = options.delta;
-    interrupted.status = Status::interrupted;
-    return interrupted;
-  }
+  if (stopped || !FeatureRecon::internal::report_progress(options.progress, 0.3))
+    return internal::interrupted_skeleton(3, rips_radius, options.delta);
   Reeb_skeleton s = internal::skeleton_from_graph(
       g, mds, [&a, n](Vertex_index i, Vertex_index j) { return a[static_cast<std::size_t>(i) * n + j]; },
       options, 0.3, nullptr, fn, first, false);
