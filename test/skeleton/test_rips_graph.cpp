@@ -21,6 +21,7 @@
 #include <string>
 
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -580,10 +581,7 @@ TEST(KnnGraph, FarClustersAreSearchedAloneAndJoinedAcrossGaps) {
   {
     std::vector<double> seen;
     Proximity_graph_options watched = o;
-    watched.progress = [&](double t) {
-      seen.push_back(t);
-      return true;
-    };
+    watched.progress = test::recording_progress(seen);
     const std::vector<Edge> all = build_knn_graph(ab, 9, watched).edges;
     EXPECT_EQ(all, brute_knn(ab, 9));
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
@@ -813,10 +811,7 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   Flag_complex_options o;
   o.max_triangles = 220;
   std::vector<double> seen;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   const Simplicial_complex_2 k = build_flag_complex_2(complete, o);
   EXPECT_EQ(k.number_of_triangles(), 220u);
   EXPECT_EQ(k.triangles, build_flag_complex_2(complete).triangles);
@@ -858,6 +853,35 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   EXPECT_EQ(build_flag_complex_2(complete, {}).triangles, k.triangles);
 }
 
+TEST(RipsComplex, TheOneCallTakesTheTriangleLimit) {
+  // build_rips_complex_2() took only the graph's options, so a caller of the one call could not refuse a
+  // radius too large for the data as build_flag_complex_2() and extract_reeb_skeleton() can.
+  Coords circle;  // 12 points within 2 of each other: K_12 at radius 3, C(12, 3) = 220 triangles
+  for (int i = 0; i < 12; ++i) circle.push_back({std::cos(0.5 * i), std::sin(0.5 * i)});
+  Rips_complex_options o;
+  o.max_triangles = 220;
+  EXPECT_EQ(build_rips_complex_2(circle, 3.0, o).number_of_triangles(), 220u);
+  o.max_triangles = 219;
+  EXPECT_NE(test::invalid_argument_message([&] { build_rips_complex_2(circle, 3.0, o); })
+                .find("build_rips_complex_2: the flag complex has more than 219 triangles "
+                      "(Rips_complex_options::max_triangles; 12 vertices, 66 edges"),
+            std::string::npos);
+  o.max_triangles = 0;  // no limit
+  EXPECT_EQ(build_rips_complex_2(circle, 3.0, o).number_of_triangles(), 220u);
+  // The graph's options still convert (search and progress kept, no limit); `{}` is the default.
+  Proximity_graph_options g;
+  g.search = Neighbor_search::brute_force;
+  int calls = 0;
+  g.progress = [&calls](double) { return ++calls > 0; };
+  EXPECT_EQ(build_rips_complex_2(circle, 3.0, g).number_of_triangles(), 220u);
+  EXPECT_GT(calls, 2);
+  EXPECT_EQ(build_rips_complex_2(circle, 3.0, {}).number_of_triangles(), 220u);
+  const Rips_complex_options converted = g;
+  EXPECT_EQ(converted.search, Neighbor_search::brute_force);
+  EXPECT_EQ(converted.max_triangles, 0u);
+  EXPECT_TRUE(static_cast<bool>(converted.progress));
+}
+
 TEST(RipsComplex, ProgressCoversBothStagesAndAStopEndsBoth) {
   // A 30 x 30 grid at radius 1.5 (diagonals in): the graph stage reports up to 0.5, the triangles up to 1, in
   // order; a stop in the graph stage builds no triangle and asks nothing more; the builders of graphs do not
@@ -869,10 +893,7 @@ TEST(RipsComplex, ProgressCoversBothStagesAndAStopEndsBoth) {
   ASSERT_GT(plain.number_of_triangles(), 0u);
   std::vector<double> seen;
   Proximity_graph_options o;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   const Simplicial_complex_2 watched = build_rips_complex_2(grid, 1.5, o);
   EXPECT_EQ(watched.edges, plain.edges);
   EXPECT_EQ(watched.triangles, plain.triangles);
@@ -1129,10 +1150,7 @@ TEST(RipsGraph, ProgressIsNonDecreasingAndEndsAtARefusal) {
     std::vector<double> seen;
     Proximity_graph_options o;
     o.search = s;
-    o.progress = [&seen](double t) {
-      seen.push_back(t);
-      return true;
-    };
+    o.progress = test::recording_progress(seen);
     EXPECT_EQ(build_rips_graph(p, r, o).edges, brute_rips(p, r));
     ASSERT_GT(seen.size(), 2u);
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end())) << "kd-tree " << (s == Neighbor_search::kd_tree);
@@ -1411,10 +1429,7 @@ TEST(KnnGraph, ProgressWithGroupsIsNonDecreasing) {
   std::vector<double> seen;
   Proximity_graph_options o;
   o.search = Neighbor_search::brute_force;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   skeleton::internal::Knn_search_counts counts;
   EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(p), 3, o, &counts).edges, brute_knn(p, 3));
   EXPECT_GE(counts.unresolved, 1u);

@@ -1291,13 +1291,32 @@ Simplicial_complex_2 build_flag_complex_2(const Proximity_graph& g, Callback&& p
   return build_flag_complex_2(g, o);
 }
 
+/// Options of build_rips_complex_2(): those of its two stages, build_rips_graph() and build_flag_complex_2().
+/// Proximity_graph_options convert to it (no triangle limit).
+struct Rips_complex_options {
+  Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the graph stage
+  /// Flag_complex_options::max_triangles of the triangle stage (refused before any triangle is stored, with
+  /// std::invalid_argument naming `Rips_complex_options::max_triangles`). Default 0: no limit.
+  std::size_t max_triangles = 0;
+  /// Fraction done: the graph up to 0.5, the triangles up to 1; returning false stops (see
+  /// build_rips_complex_2()).
+  Progress_callback progress;
+
+  Rips_complex_options() = default;
+  /// The graph stage's options, no triangle limit.
+  Rips_complex_options(const Proximity_graph_options& graph)  // implicit: the one-call form took these
+      : search(graph.search), progress(graph.progress) {}
+};
+
 /// One call: the Rips 2-complex of points at scale `radius` (build_rips_graph() then build_flag_complex_2()).
 /// options.progress sees the graph up to 0.5 and the triangles up to 1; when it returns false the work stops
 /// and the complex returned has the edges (and triangles) found so far, as the two stages document.
+/// \throws std::invalid_argument as build_rips_graph() does, and for more triangles than
+///         options.max_triangles (when set).
 template <class PointRange, class Traits = Point_coordinate_traits<typename std::iterator_traits<
                                 decltype(std::begin(std::declval<const PointRange&>()))>::value_type>>
 Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radius,
-                                          const Proximity_graph_options& options = {},
+                                          const Rips_complex_options& options = {},
                                           const Traits& traits = Traits()) {
   bool stopped = false;
   auto stage = [&](double from) -> Progress_callback {
@@ -1307,7 +1326,8 @@ Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radiu
       return !stopped;
     };
   };
-  Proximity_graph_options graph_options = options;
+  Proximity_graph_options graph_options;
+  graph_options.search = options.search;
   graph_options.progress = stage(0.0);
   Proximity_graph g = build_rips_graph(points, radius, graph_options, traits);
   if (stopped) {
@@ -1315,7 +1335,9 @@ Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radiu
     static_cast<Proximity_graph&>(k) = std::move(g);
     return k;
   }
-  return build_flag_complex_2(g, stage(0.5));
+  return internal::flag_complex_2(
+      g, options.max_triangles > 0 ? options.max_triangles : std::numeric_limits<std::size_t>::max(),
+      stage(0.5), "build_rips_complex_2", "Rips_complex_options::max_triangles");
 }
 
 namespace internal {
