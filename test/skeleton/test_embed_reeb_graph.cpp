@@ -6,13 +6,17 @@
 #include <FeatureRecon/skeleton/rips_graph.h>
 #include <FeatureRecon/skeleton/simplify_by_persistence.h>
 
+#include <Eigen/Dense>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -443,10 +447,7 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
   // dense path (10 points) too.
   std::vector<double> seen;
   Classical_mds_options o;
-  o.progress = [&](double f) {
-    seen.push_back(f);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   const Classical_mds full = classical_mds_3d(cycle, n, o);
   EXPECT_EQ(full.status, Status::success);
   EXPECT_EQ(full.positions, classical_mds_3d(cycle, n));
@@ -466,6 +467,54 @@ TEST(ClassicalMds, KrylovSolverOnDegenerateAndNonEuclideanMatrices) {
     for (std::size_t j = 0; j < 10; ++j) ten[i * 10 + j] = std::fabs(double(i) - double(j));
   o.progress = [](double) { return false; };
   EXPECT_EQ(classical_mds_3d(ten, 10, o).status, Status::interrupted);
+}
+
+TEST(ClassicalMds, TakesADenseMatrixAsTheOtherDistanceMatrixEntryPoints) {
+  // classical_mds_3d() took only a flat vector and its size, where the other distance-matrix entry points
+  // take an Eigen-like matrix or a range of rows.
+  const std::size_t n = 40;
+  std::vector<std::array<double, 3>> helix;
+  for (std::size_t i = 0; i < n; ++i) helix.push_back({std::cos(0.3 * i), std::sin(0.3 * i), 0.05 * i});
+  std::vector<double> flat(n * n);
+  std::vector<std::vector<double>> rows(n, std::vector<double>(n));
+  Eigen::MatrixXd E(n, n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double d =
+          std::hypot(helix[i][0] - helix[j][0], helix[i][1] - helix[j][1], helix[i][2] - helix[j][2]);
+      flat[i * n + j] = rows[i][j] = E(Eigen::Index(i), Eigen::Index(j)) = d;
+    }
+  const std::vector<std::array<double, 3>> expected = classical_mds_3d(flat, n);
+  const Classical_mds from_eigen = classical_mds_3d(E), from_rows = classical_mds_3d(rows);
+  EXPECT_EQ(from_eigen.status, Status::success);
+  EXPECT_EQ(from_eigen.positions, expected);
+  EXPECT_EQ(from_rows.positions, expected);
+  // The helix is Euclidean in 3D: the embedding keeps its distances.
+  EXPECT_LT(distance_error(expected, flat), 1e-9);
+  std::vector<double> seen;
+  Classical_mds_options o;
+  o.progress = test::recording_progress(seen);
+  EXPECT_EQ(classical_mds_3d(rows, o).positions, expected);
+  EXPECT_EQ(seen, (std::vector<double>{0.0, 1.0}));  // 40 points: the dense solver, no steps between
+  o.progress = [](double) { return false; };
+  EXPECT_EQ(classical_mds_3d(E, o).status, Status::interrupted);
+  // Checked as the other entry points check a matrix, naming the problem.
+  Eigen::MatrixXd wide(3, 4);
+  wide.setZero();
+  EXPECT_NE(test::invalid_argument_message([&] {
+              classical_mds_3d(wide);
+            }).find("classical_mds_3d: the distance matrix is 3 x 4, not square"),
+            std::string::npos);
+  rows[3].pop_back();
+  EXPECT_NE(test::invalid_argument_message([&] {
+              classical_mds_3d(rows);
+            }).find("classical_mds_3d: row 3 of the distance matrix has 39 entries, expected 40"),
+            std::string::npos);
+  E(1, 2) += 1;
+  EXPECT_NE(test::invalid_argument_message([&] {
+              classical_mds_3d(E);
+            }).find("classical_mds_3d: the distance matrix is not symmetric at (1, 2)"),
+            std::string::npos);
 }
 
 TEST(ClassicalMds, CrowdedTopEigenvaluesStayInTheKrylovSolverAndTheDenseFallbackReportsFirst) {
@@ -552,10 +601,7 @@ TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
   }
   std::vector<double> seen;
   Embedding_options o;
-  o.progress = [&seen](double t) {
-    seen.push_back(t);
-    return true;
-  };
+  o.progress = test::recording_progress(seen);
   const Reeb_graph_embedding full = embed_reeb_graph(G, positions, f, 2, o);
   EXPECT_EQ(full.status, Status::success);
   ASSERT_EQ(seen.size(), 2u);

@@ -15,9 +15,11 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <queue>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -727,18 +729,17 @@ struct Classical_mds {
   Status status = Status::success;
 };
 
-/// classical_mds_3d() that reports progress and can be stopped; the same positions when it runs to the end.
-/// \throws std::invalid_argument as the two-argument overload.
-inline Classical_mds classical_mds_3d(const std::vector<double>& D, std::size_t n,
-                                      const Classical_mds_options& options) {
-  internal::check_mds_size(D, n);
-  internal::check_distance_entries(D, n, "classical_mds_3d");
+namespace internal {
+/// \cond
+/// classical_mds_3d() with options of a checked flat n x n matrix.
+inline Classical_mds classical_mds_of_checked(const std::vector<double>& a, std::size_t n,
+                                              const Classical_mds_options& options) {
   Classical_mds result;
   bool stopped = !FeatureRecon::internal::report_progress(options.progress, 0.0);
   if (stopped)
     result.positions.assign(n, {0.0, 0.0, 0.0});
   else
-    result.positions = internal::classical_mds_3d(D, n, options.progress, stopped);
+    result.positions = classical_mds_3d(a, n, options.progress, stopped);
   if (stopped) {
     result.status = Status::interrupted;
     for (auto& p : result.positions) p = {0.0, 0.0, 0.0};
@@ -746,6 +747,38 @@ inline Classical_mds classical_mds_3d(const std::vector<double>& D, std::size_t 
     (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   }
   return result;
+}
+
+template <class Matrix, class = void>
+struct Is_range_of_rows : std::false_type {};
+template <class Matrix>
+struct Is_range_of_rows<Matrix, std::void_t<decltype(std::begin(*std::begin(std::declval<const Matrix&>())))>>
+    : std::true_type {};
+/// \endcond
+}  // namespace internal
+
+/// classical_mds_3d() that reports progress and can be stopped; the same positions when it runs to the end.
+/// \throws std::invalid_argument as the two-argument overload.
+inline Classical_mds classical_mds_3d(const std::vector<double>& D, std::size_t n,
+                                      const Classical_mds_options& options) {
+  internal::check_mds_size(D, n);
+  internal::check_distance_entries(D, n, "classical_mds_3d");
+  return internal::classical_mds_of_checked(D, n, options);
+}
+
+/// classical_mds_3d() of a dense distance matrix as the other distance-matrix entry points take it
+/// (build_rips_graph_from_distance_matrix(), extract_reeb_skeleton_from_distance_matrix()): the same
+/// positions as the flat overloads of its entries.
+/// \tparam Matrix an Eigen-like matrix (`rows()`, `cols()`, `D(i, j)`) or a range of rows.
+/// \throws std::invalid_argument for a matrix that is not square (naming the first short row), and as the
+///   flat overloads for its entries.
+template <class Matrix,
+          std::enable_if_t<
+              internal::Is_eigen_like<Matrix>::value || internal::Is_range_of_rows<Matrix>::value, int> = 0>
+Classical_mds classical_mds_3d(const Matrix& D, const Classical_mds_options& options = {}) {
+  std::size_t n = 0;
+  const std::vector<double> a = internal::checked_distance_matrix(D, n, "classical_mds_3d");
+  return internal::classical_mds_of_checked(a, n, options);
 }
 
 /// Embeds a Reeb graph (dissertation Ch. 3.3.1): a node sits at the centroid of its points (its vertex and
