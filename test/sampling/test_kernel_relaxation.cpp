@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <deque>
 #include <functional>
 #include <iterator>
 #include <limits>
@@ -418,8 +420,8 @@ TEST(Kernel_relaxation, BadInputNamesTheProblem) {
   o.initial_step = std::nan("");
   expect_message([&] { kernel_relaxation(px, sites, o); }, "initial_step");
   o.initial_step = 0.25;
-  o.density.assign(36, 0.0);
-  expect_message([&] { kernel_relaxation(px, sites, o); }, "density is 0 on every item");
+  o.density.assign(36, 0.0);  // degenerate, not an error (AllZeroDensityIsDegenerateInBothRelaxations)
+  EXPECT_EQ(kernel_relaxation(px, sites, o).status, Status::degenerate_input);
   o.density[4] = -2;
   expect_message([&] { kernel_relaxation(px, sites, o); }, "density[4]");
   o.density.assign(7, 1.0);
@@ -447,6 +449,89 @@ TEST(Kernel_relaxation, BadInputNamesTheProblem) {
 }
 
 }  // namespace
+
+TEST(KernelRelaxation, AnyRangeOfIndicesStartsBothRelaxations) {
+  // The index-start overloads took only std::vector<std::size_t>: a sampler writing through its output
+  // iterator into 32-bit or signed indices, or a deque, needed a copy first.
+  const auto px = image(40, 30, [](int x, int) { return 40 + 4 * x; });
+  std::vector<std::size_t> start;
+  std::vector<std::uint32_t> start32;
+  std::deque<int> start_int;
+  Dart_throwing_count_options d;
+  d.darts.seed = 9;
+  bilateral_dart_throwing_count(px, 60, std::back_inserter(start), d);
+  bilateral_dart_throwing_count(px, 60, std::back_inserter(start32), d);
+  bilateral_dart_throwing_count(px, 60, std::back_inserter(start_int), d);
+  ASSERT_EQ(start.size(), 60u);
+  Kernel_relaxation_options<2> k;
+  k.max_iterations = 3;
+  Discrete_lloyd_options<2> l;
+  l.max_iterations = 3;
+  const auto kr = kernel_relaxation(px, start, k);
+  const auto lr = discrete_bilateral_lloyd(px, start, l);
+  for (const auto& r : {kernel_relaxation(px, start32, k), kernel_relaxation(px, start_int, k)}) {
+    ASSERT_EQ(r.sites.size(), kr.sites.size());
+    for (std::size_t i = 0; i < r.sites.size(); ++i) EXPECT_EQ(r.sites[i].position, kr.sites[i].position);
+  }
+  for (const auto& r :
+       {discrete_bilateral_lloyd(px, start32, l), discrete_bilateral_lloyd(px, start_int, l)}) {
+    EXPECT_EQ(r.items, lr.items);
+    EXPECT_EQ(r.assignment, lr.assignment);
+  }
+  // A braced list is a list of indices; a bad index is named with its place, whatever the index type.
+  EXPECT_EQ(kernel_relaxation(px, {start[0], start[1]}, k).sites.size(), 2u);
+  EXPECT_EQ(discrete_bilateral_lloyd(px, {3, 7, 11}, l).sites.size(), 3u);
+  start_int[4] = -1;
+  test::expect_invalid_argument([&] { kernel_relaxation(px, start_int, k); },
+                                "indices[4] = -1 is not an item index (1200 items)");
+  start32[2] = 1200;
+  test::expect_invalid_argument([&] { discrete_bilateral_lloyd(px, start32, l); },
+                                "indices[2] = 1200 is not an item index (1200 items)");
+}
+
+TEST(KernelRelaxation, AllZeroDensityIsDegenerateInBothRelaxations) {
+  // A density 0 on every item (a white picture to stipple) threw in kernel_relaxation(), ran to success in
+  // discrete_bilateral_lloyd() and was degenerate_input in lloyd_relaxation(): now degenerate_input in all
+  // three, the sites as given, no progress asked.
+  const auto px = image(20, 15, [](int, int) { return 255; });
+  const auto sites = random_sites(12, px, 20, 15, 4);
+  int calls = 0;
+  Kernel_relaxation_options<2> k;
+  k.density.assign(px.size(), 0.0);
+  k.progress = [&calls](double) { return ++calls > 0; };
+  const auto kr = kernel_relaxation(px, sites, k);
+  EXPECT_EQ(kr.status, Status::degenerate_input);
+  EXPECT_TRUE(kr.history.empty());
+  ASSERT_EQ(kr.sites.size(), sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i) EXPECT_EQ(kr.sites[i].position, sites[i].position);
+  // The energy is still defined: every site at the widest scale, as where the density is low.
+  const auto e = kernel_energy(px, sites, k);
+  EXPECT_TRUE(std::isfinite(e.energy));
+  EXPECT_GT(e.energy, kernel_energy(px, sites, Kernel_relaxation_options<2>()).energy);
+  Discrete_lloyd_options<2> l;
+  l.density.assign(px.size(), 0.0);
+  l.progress = k.progress;
+  const auto lr = discrete_bilateral_lloyd(px, sites, l);
+  EXPECT_EQ(lr.status, Status::degenerate_input);
+  EXPECT_TRUE(lr.history.empty());
+  ASSERT_EQ(lr.sites.size(), sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i) EXPECT_EQ(lr.sites[i].position, sites[i].position);
+  EXPECT_EQ(lr.mass, std::vector<double>(sites.size(), 0.0));
+  // The Voronoi sets and nearest items of the sites as given, as a run without iterations reports them.
+  EXPECT_EQ(calls, 0);
+  l.density.clear();
+  l.max_iterations = 0;
+  const auto none = discrete_bilateral_lloyd(px, sites, l);
+  EXPECT_EQ(lr.assignment, none.assignment);
+  EXPECT_EQ(lr.items, none.items);
+  // One item of positive density is enough to relax.
+  k.density[7] = 1;
+  EXPECT_NE(kernel_relaxation(px, sites, k).status, Status::degenerate_input);
+  l.density.assign(px.size(), 0.0);
+  l.density[7] = 1;
+  l.max_iterations = 2;
+  EXPECT_EQ(discrete_bilateral_lloyd(px, sites, l).status, Status::success);
+}
 
 TEST(KernelRelaxation, StartingFeaturesAreTakenFromTheItems) {
   // The sites' features are replaced by their items' before they are read: placeholder zero normals are fine

@@ -57,7 +57,8 @@ struct Discrete_lloyd_options {
   double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of xi
   /// Density rho of each item (>= 0, finite), aligned with the items: the weight in the centroids and the
-  /// energy (for stippling, the darkness). Default empty: 1 for every item.
+  /// energy (for stippling, the darkness). Default empty: 1 for every item. A density 0 on every item has no
+  /// centroids: the sites as given, status degenerate_input (as lloyd_relaxation() and kernel_relaxation()).
   std::vector<double> density;
   Site_update update = Site_update::nearest_item;  ///< how features follow the sites
   std::size_t max_iterations = 50;                 ///< iteration cap; default 50
@@ -114,8 +115,9 @@ struct Discrete_lloyd_result {
   /// relative radius is sampling_quality() of `sites`.
   std::vector<Lloyd_iteration_statistics> history;
   Lloyd_stop stop = Lloyd_stop::iteration_cap;  ///< why it stopped
-  /// degenerate_input for no items or no sites (nothing moves); interrupted when the progress callback
-  /// stopped it.
+  /// degenerate_input for no items, no sites or a density 0 on every item (nothing moves; with items and
+  /// sites, `assignment`, `mass` (all 0) and `items` are those of the sites as given); interrupted when the
+  /// progress callback stopped it.
   Status status = Status::success;
 };
 
@@ -437,6 +439,14 @@ bool is_index(I i, std::size_t n) {
     if (i < 0) return false;
   return static_cast<std::size_t>(i) < n;
 }
+/// Whether R is a range of integers (not bool): indices into the items, as the index-start overloads take.
+template <class R, class = void>
+struct is_index_range : std::false_type {};
+template <class R>
+struct is_index_range<R, std::void_t<decltype(*std::begin(std::declval<const R&>()))>> {
+  using value_type = std::decay_t<decltype(*std::begin(std::declval<const R&>()))>;
+  static constexpr bool value = std::is_integral<value_type>::value && !std::is_same<value_type, bool>::value;
+};
 /// \endcond
 }  // namespace internal
 
@@ -518,6 +528,16 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
     result.status = Status::degenerate_input;
     return result;
   }
+  if (!options.density.empty() &&
+      std::none_of(options.density.begin(), options.density.end(), [](double rho) { return rho > 0; })) {
+    Bilateral_assignment a = engine.assign(sites);
+    result.assignment = std::move(a.site);
+    result.mass = std::move(a.mass);
+    for (const auto& site : sites) result.items.push_back(engine.nearest_item(site.position));
+    result.sites = std::move(sites);
+    result.status = Status::degenerate_input;
+    return result;
+  }
   const double packing = engine.packing_distance(sites.size());
   // Copies of a site tie with it for every item and got none: where the first copy was already at its
   // centroid they stayed together for good. Every copy after the first moves by 1/100 of the packing distance
@@ -574,11 +594,15 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
 }
 
 /// discrete_bilateral_lloyd() started at some items (indices into `items`, e.g. a sampler's output).
-/// \param items the domain. \param initial indices of the starting items (checked).
+/// \param items the domain.
+/// \param initial indices of the starting items: any range of integers (a braced list is a
+///   std::vector<std::size_t>); checked as sites_at_items() checks them (throws naming the first bad one).
 /// \param options as for discrete_bilateral_lloyd(). \param traits FeaturePointTraits.
-template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>,
+          class IndexRange = std::vector<std::size_t>,
+          std::enable_if_t<internal::is_index_range<IndexRange>::value, int> = 0>
 Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
-    const ItemRange& items, const std::vector<std::size_t>& initial,
+    const ItemRange& items, const IndexRange& initial,
     const Discrete_lloyd_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   return discrete_bilateral_lloyd(items, sites_at_items(items, initial, traits), options, traits);
 }

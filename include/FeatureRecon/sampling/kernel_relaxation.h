@@ -76,7 +76,10 @@ struct Kernel_relaxation_options {
   /// surfaces, 3 for volumes), so sites crowd where rho is high (stippling: the darkness). rho_bar is rho
   /// averaged over about the kernel's footprint at that scale (blocks of cells of growing size around the
   /// item, widened while the block stays within the kernel width it gives): a thin dark line keeps its own
-  /// density, a pattern finer than the kernel counts by its mean. Default empty: s = 1.
+  /// density, a pattern finer than the kernel counts by its mean. Default empty: s = 1. A density 0 on every
+  /// item has nothing to relax towards: kernel_relaxation() returns the sites as given with status
+  /// degenerate_input (as lloyd_relaxation() and discrete_bilateral_lloyd() do); kernel_energy() takes s = 8
+  /// everywhere, as where the density is low.
   std::vector<double> density;
   /// Where sites may go. Default: bounding_box for 2D items, snap_to_item for 3D items (surfaces).
   Kernel_constraint constraint =
@@ -117,7 +120,8 @@ struct Kernel_relaxation_result {
   Lloyd_stop stop = Lloyd_stop::iteration_cap;      ///< why it stopped
   double kernel_width = 0;                          ///< tau used (units of xi)
   double step = 0;                                  ///< the step length the control ended with
-  /// degenerate_input for no items or fewer than two sites (nothing moves); interrupted when stopped.
+  /// degenerate_input for no items, fewer than two sites, items without spatial extent or a density 0 on
+  /// every item (nothing moves: the sites as given); interrupted when stopped.
   Status status = Status::success;
 };
 
@@ -160,8 +164,7 @@ class Kernel_engine : public Item_domain<Traits> {
                                                        o.density[i]);
       total += o.density[i];
     }
-    if (!o.density.empty() && !(total > 0))
-      FeatureRecon::internal::throw_invalid_argument(fn, "density is 0 on every item");
+    zero_density = !o.density.empty() && !(total > 0);
     mean_density = o.density.empty() ? 1.0 : total / double(o.density.size());
     this->intrinsic = (D == 3 && o.constraint == Kernel_constraint::bounding_box) ? 3 : 2;
     if (S.size() == 0) return;
@@ -188,7 +191,10 @@ class Kernel_engine : public Item_domain<Traits> {
     }
     tau = o.kernel_width > 0 ? o.kernel_width : packing / (2 * o.sigma_position);
     if (!(tau > 0)) tau = std::max(spacing, 1e-300) / o.sigma_position;
-    if (!o.density.empty()) smoothed = smooth_density(progress);
+    if (zero_density)
+      local_density.assign(S.size(), 0.0);  // every scale 8 (scale_of()); nothing to average
+    else if (!o.density.empty())
+      smoothed = smooth_density(progress);
   }
 
   // The scale of a site at item `near`, from the density around that item (smooth_density()).
@@ -460,6 +466,7 @@ class Kernel_engine : public Item_domain<Traits> {
 
   const Kernel_relaxation_options<D>& options;
   double mean_density = 1;
+  bool zero_density = false;  // a density 0 on every item (kernel_relaxation(): degenerate_input)
   using Base::intrinsic;
   Point box_lo{}, box_hi{};
   double spacing = 0;  // of the items
@@ -522,7 +529,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
   // scale to relax on.
   const bool no_extent = !(engine.spacing > 0) || !std::isfinite(1.0 / (engine.tau * engine.tau)) ||
                          !std::isfinite(1.0 / (w0 * w0));
-  if (engine.items() == 0 || sites.size() < 2 || no_extent) {
+  if (engine.items() == 0 || sites.size() < 2 || no_extent || engine.zero_density) {
     result.sites = std::move(sites);
     result.status = Status::degenerate_input;
     return result;
@@ -642,11 +649,15 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
 
 /// kernel_relaxation() started at some items (indices into `items`, e.g. bilateral_dart_throwing_count()'s
 /// output).
-/// \param items the domain. \param initial indices of the starting items (checked).
+/// \param items the domain.
+/// \param initial indices of the starting items: any range of integers (a braced list is a
+///   std::vector<std::size_t>); checked as sites_at_items() checks them (throws naming the first bad one).
 /// \param options as for kernel_relaxation(). \param traits FeaturePointTraits.
-template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
+template <class ItemRange, class Traits = Default_traits_t<ItemRange>,
+          class IndexRange = std::vector<std::size_t>,
+          std::enable_if_t<internal::is_index_range<IndexRange>::value, int> = 0>
 Kernel_relaxation_result<Traits> kernel_relaxation(
-    const ItemRange& items, const std::vector<std::size_t>& initial,
+    const ItemRange& items, const IndexRange& initial,
     const Kernel_relaxation_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
   return kernel_relaxation(items, sites_at_items(items, initial, traits), options, traits);
 }
