@@ -166,6 +166,9 @@ const std::vector<Command>& commands() {
        "                   edges a triangle)\n"
        "\n"
        "Options:\n"
+       "  --radius R       Rips radius in input units (default: estimated, see --points; 1.5 for --image; "
+       "for --tracks\n"
+       "                   from the median step); not with --graph\n"
        "  --delta D        persistence threshold (default R, or the estimate's when R is derived (see "
        "--points);\n"
        "                   2R for images, 3R for tracks; 0 with --graph, which has no radius: give D to "
@@ -225,6 +228,10 @@ const std::vector<Command>& commands() {
        "  --min-density F  drop samples standing for fewer fixes than F times the most within DR travelling "
        "within\n"
        "                   DA degrees of the same direction (a quiet carriageway beside a busy one stays)\n"
+       "  --density-radius DR  the neighbourhood of --min-density and --min-lateral-density (metres; default "
+       "2R)\n"
+       "  --density-heading-tolerance DA  see --min-density (degrees, in [0, 180]; default 45)\n"
+       "  --min-local-support FL  see --local-support (a fraction of SS; default 0.6)\n"
        "  --min-lateral-density LD  also drop samples standing for fewer than LD times the most of those "
        "beside\n"
        "                   them (offset at least 45 degrees off their direction): scatter beside the band of "
@@ -355,13 +362,22 @@ const std::vector<Command>& commands() {
        "                   organic: columns x rows random intersections in the same rectangle, joined by "
        "the\n"
        "                   streets of their Gabriel graph (junctions of any degree and angle)\n"
+       "  --columns, --rows  intersections across and along (each at least 2, at most 2^24 together; "
+       "default 8, 6)\n"
+       "  --block-width, --block-height  the blocks' size (m; default 120, 90)\n"
+       "  --rotation       the grid's angle (degrees; default 0)\n"
+       "  --jitter         grid: each intersection moves up to this far in x and in y (m; default 10)\n"
        "  --missing        fraction of streets removed, keeping the network connected (default 0.1)\n"
        "  --curvature C    bend every street: its middle lies up to C x its length off the chord, in [0, "
        "0.5]\n"
        "  --trips N        number of trips, at most 2^26 (67,108,864)\n"
        "  --speed          mean speed (m/s); each trip drives at 0.7 to 1.3 times it\n"
+       "  --interval       seconds between the fixes of a trip (default 3.6)\n"
        "  --noise, --bias  standard deviation of each fix's noise and of each trip's offset, per coordinate "
        "(m)\n"
+       "  --lane-offset    vehicles drive this far right of the centre line (m; default 2)\n"
+       "  --seed N         the same seed gives the same city and trips (default 1)\n"
+       "  --out-tracks, --out-vertices, --out-edges  the trips and the driven streets (required)\n"
        "  --out-streets-*  also write every street, driven or not\n"
        "  --quiet          no progress on standard error\n"
        "\n"
@@ -401,8 +417,15 @@ const std::vector<Command>& commands() {
        "R\n"
        "                      or M or both)\n"
        "  --sigma-position S  spatial scale of the bilateral distance (default 1)\n"
-       "  --sigma-feature S   normal scale (unit normals: |dn|^2 in [0, 4]); default infinity (Euclidean)\n"
-       "  --unoriented        compare normals up to sign (default: oriented, opposite sides are far apart)\n"
+       "  --sigma-feature S   normal scale (unit normals: |dn|^2 in [0, 4]); default infinity (Euclidean; "
+       "'inf')\n"
+       "  --unoriented        compare normals up to sign (default: oriented, opposite sides are far apart);\n"
+       "                      with --sigma-feature\n"
+       "  --normal-neighbors K  neighbours of the normal estimate (jet fitting, MST orientation) when "
+       "normals "
+       "are\n"
+       "                      estimated (with --sigma-feature, for a file without normals); in [3, 10^6], "
+       "default 18\n"
        "  --seed N            ties and visiting order; the same seed gives the same output (default 0)\n"
        "  --out FILE          PLY, OFF or XYZ by extension, with normals when there are any; colours in PLY\n"
        "                      only (the JSON says \"colors\": \"file\", \"none\" or \"dropped\")\n"
@@ -443,6 +466,7 @@ const std::vector<Command>& commands() {
        "                           holds the oscillation band; the time grows as N F^2; at most 16384)\n"
        "  --spectrum CSV           with --periodic: write frequency, radial_power, anisotropy_db per "
        "annulus\n"
+       "  --sigma-position S       spatial scale of the bilateral distance (default 1)\n"
        "  --sigma-feature S        bilateral distances with the normals of a cloud (default: Euclidean)\n"
        "  --quiet                  no progress on standard error\n",
        run_sample_stats},
@@ -541,15 +565,19 @@ const std::vector<Command>& commands() {
        "  --sampling M       uniform: Euclidean Poisson-disk taps; bilateral: Poisson-disk in the bilateral\n"
        "                     distance with the colour as the feature (taps crowd at edges, both sides "
        "sampled;\n"
-       "                     default); exact: every pixel of the window\n"
+       "                     default); exact: every pixel of the window (the taps' options --mode, "
+       "--budget,\n"
+       "                     --sampling-sigma, --no-compensation, --candidates and --seed do not apply)\n"
        "  --mode M           global: one pattern for the picture, each pixel uses the taps in its window\n"
        "                     (default); local: a pattern per pixel, drawn in its window\n"
        "  --budget B         taps per kernel pixel, in (0, 16] (default 0.5)\n"
        "  --sigma-spatial S  spatial sigma in pixels (default 3)\n"
        "  --sigma-range S    range sigma on colours in [0, 1] (default 0.1)\n"
        "  --radius R         window half-width in pixels (default ceil(2 sigma-spatial))\n"
-       "  --sampling-sigma S colour scale of the bilateral sampling distance (default: the range sigma)\n"
-       "  --no-compensation  do not weight bilateral taps by their inverse density\n"
+       "  --sampling-sigma S colour scale of the bilateral sampling distance (default: the range sigma;\n"
+       "                     bilateral sampling only)\n"
+       "  --no-compensation  do not weight bilateral taps by their inverse density (bilateral sampling "
+       "only)\n"
        "  --candidates C     candidate darts per tap, 2 to 64 (default 4)\n"
        "  --grey             filter the luma of a colour picture\n"
        "  --seed N           the same seed gives the same taps (default 0)\n"
@@ -565,11 +593,13 @@ const std::vector<Command>& commands() {
 }  // namespace FeatureRecon
 
 namespace {
-void print_main_help() {
-  std::printf("featurerecon %s: feature-aware sampling and reconstruction\n\n", FEATURERECON_VERSION_STRING);
-  std::printf(
+void print_main_help(std::FILE* out) {
+  std::fprintf(out, "featurerecon %s: feature-aware sampling and reconstruction\n\n",
+               FEATURERECON_VERSION_STRING);
+  std::fprintf(
+      out,
       "usage: featurerecon COMMAND [OPTIONS]   (featurerecon COMMAND --help for its options)\n\ncommands:\n");
-  for (const auto& c : FeatureRecon::cli::commands()) std::printf("  %-10s %s\n", c.name, c.summary);
+  for (const auto& c : FeatureRecon::cli::commands()) std::fprintf(out, "  %-17s %s\n", c.name, c.summary);
 }
 }  // namespace
 
@@ -599,13 +629,13 @@ int main(int argc, char** argv) {
   for (const int s : {SIGINT, SIGTERM, SIGHUP})
     if (std::signal(s, remove_temporaries_and_stop) == SIG_IGN)
       std::signal(s, SIG_IGN);  // keep nohup's choice
-  if (argc < 2) {
-    print_main_help();
+  if (argc < 2) {               // a usage error: the help goes where errors go
+    print_main_help(stderr);
     return 2;
   }
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
-    print_main_help();
+    print_main_help(stdout);
     return flushed("featurerecon", 0);
   }
   if (name == "--version") {

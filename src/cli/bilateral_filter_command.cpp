@@ -47,6 +47,17 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
   const std::string mode = args.get_or("mode", "global");
   if (mode != "local" && mode != "global")
     throw Usage_error("--mode must be local or global, got '" + mode + "'");
+  // Options of the taps that the chosen sampling does not have: refused, not ignored.
+  const std::vector<std::pair<const char*, std::vector<const char*>>> not_used{
+      {"exact", {"mode", "budget", "sampling-sigma", "candidates", "seed", "no-compensation"}},
+      {"uniform", {"sampling-sigma", "no-compensation"}}};
+  for (const auto& [kind, options] : not_used)
+    if (sampling == kind)
+      for (const char* option : options)
+        if (args.has(option))
+          throw Usage_error(std::string("--") + option + " does not apply to --sampling " + sampling +
+                            (sampling == "exact" ? " (every pixel of the window is a tap)"
+                                                 : " (it sets the bilateral taps' distance and weights)"));
   fs::Sampled_bilateral_filter_options o;
   o.sampling = sampling == "uniform" ? fs::Tap_sampling::uniform : fs::Tap_sampling::bilateral;
   o.mode = mode == "local" ? fs::Tap_mode::local : fs::Tap_mode::global;
@@ -134,7 +145,7 @@ int run_bilateral_filter(const std::vector<std::string>& argv) {
      << json_number(fs::ssim(image.width, image.height, image.channels, exact.values, sampled.values))
      << ", \"seconds\": " << json_number(seconds) << ", \"exact_seconds\": " << json_number(exact_seconds)
      << "}\n";
-  std::fputs(os.str().c_str(), stdout);
+  std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }
 

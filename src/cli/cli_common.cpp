@@ -215,6 +215,17 @@ std::vector<std::pair<std::string, std::string>>& issued_temporaries() {
 }
 }  // namespace
 
+std::FILE* Outputs::summary_stream() const {
+  struct stat out {};
+  if (::fstat(STDOUT_FILENO, &out) != 0) return stdout;
+  for (const auto& target : m_targets) {
+    struct stat st {};
+    if (::stat(target.second.c_str(), &st) == 0 && st.st_dev == out.st_dev && st.st_ino == out.st_ino)
+      return stderr;
+  }
+  return stdout;
+}
+
 std::string Outputs::name_targets(std::string message) {
   for (const auto& [target, temporary] : issued_temporaries())
     for (std::size_t at = message.find(temporary); at != std::string::npos;
@@ -345,7 +356,7 @@ skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>
 
 std::string name_option_flags(const std::string& message) {
   // The option fields that commands set from a flag of another name (fields of Skeleton_options,
-  // Road_map_options, Gps_trace_options and Embedding_options).
+  // Road_map_options, Gps_trace_options, Embedding_options and Synthetic_city_options).
   static const std::pair<const char*, const char*> flags[] = {
       {"max_triangles", "--max-triangles"},
       {"sample_spacing", "--sample-spacing"},
@@ -368,6 +379,13 @@ std::string name_option_flags(const std::string& message) {
       {"level_width", "--level-width"},
       {"max_gap", "--max-gap"},
       {"smoothing_iterations", "--smoothing"},
+      // Synthetic_city_options (synthetic-city)
+      {"sampling_interval", "--interval"},
+      {"block_width", "--block-width"},
+      {"block_height", "--block-height"},
+      {"trip_bias", "--bias"},
+      {"missing_streets", "--missing"},
+      {"lane_offset", "--lane-offset"},
   };
   auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   std::string named;

@@ -90,6 +90,10 @@ class Outputs {
   /// `extensions` (lower case, without the dot); `what` names the kind of file in the message.
   void require_extension(const std::string& name, const std::vector<std::string>& extensions,
                          const std::string& what) const;
+  /// Where the command prints its summary: standard output, unless an output is written there (`--out
+  /// /dev/stdout`, a pipe or device standard output is): then standard error, so that the summary does not
+  /// end up inside the output.
+  std::FILE* summary_stream() const;
   /// `message` with every temporary file handed out by path() (in this run) replaced by its target, so that
   /// an error raised while writing names the file the user asked for.
   static std::string name_targets(std::string message);

@@ -343,7 +343,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
      << ", \"seconds\": " << json_number(seconds);
   if (args.has("mosaic")) os << ", \"mosaic_psnr_db\": " << json_number(mosaic_psnr);
   os << "}\n";
-  std::fputs(os.str().c_str(), stdout);
+  std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }
 

@@ -146,6 +146,18 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
     Cropped_map cropped = crop_map_to_trips(gt, crop_trips, crop_options);
     cropping.done(std::to_string(cropped.map.edges.size()) + " of " + std::to_string(gt.edges.size()) +
                   " edges");
+    if (crop_points.empty())
+      std::fprintf(
+          stderr,
+          "featurerecon evaluate-map: warning: %s holds no fixes: the crop keeps no ground-truth edge\n",
+          args.get("crop-to-tracks").c_str());
+    else if (cropped.map.edges.empty() && !gt.edges.empty())
+      std::fprintf(
+          stderr,
+          "featurerecon evaluate-map: warning: the crop keeps none of the %zu ground-truth edges (none lies "
+          "within --crop-radius %s m of the %zu fix%s of %s: are they in the maps' coordinates?)\n",
+          gt.edges.size(), json_number(crop_options.radius).c_str(), crop_points.size(),
+          crop_points.size() == 1 ? "" : "es", args.get("crop-to-tracks").c_str());
     gt = std::move(cropped.map);
     crop_trace_points = cropped.trace_points;
   }
@@ -218,7 +230,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
        << json_number(b.ground_truth_driven > 0 ? b.recall_of_driven : undefined) << "}";
   }
   os << "}\n";
-  std::fputs(os.str().c_str(), stdout);
+  std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }
 
@@ -304,7 +316,13 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
   }
   Progress progress("driving trips", args.has("quiet"));
   o.progress = std::ref(progress);
-  const Synthetic_city city = make_synthetic_city(o);  // names a bad option (std::invalid_argument)
+  // Every value comes from an option: the library's refusal of a combination is a usage error, named by flag.
+  Synthetic_city city;
+  try {
+    city = make_synthetic_city(o);
+  } catch (const std::invalid_argument& e) {
+    throw Usage_error(name_option_flags(e.what()));
+  }
   progress.done(std::to_string(city.trips.size()) + " trips");
   std::string tracks = "# trip_id x y t  (synthetic city, metres and seconds)\n";
   std::size_t fixes = 0;
@@ -339,7 +357,7 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
      << ", \"fixes\": " << fixes << ", \"interval\": " << json_number(o.sampling_interval)
      << ", \"noise\": " << json_number(o.noise) << ", \"curvature\": " << json_number(o.curvature)
      << ", \"seed\": " << o.seed << "}\n";
-  std::fputs(os.str().c_str(), stdout);
+  std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }
 

@@ -29,8 +29,11 @@ using Pwn = std::pair<K::Point_3, K::Vector_3>;
 namespace fs = FeatureRecon::sampling;
 
 double sigma_feature_of(const Arguments& args) {
-  return args.has("sigma-feature") ? args.get_scale("sigma-feature")
-                                   : std::numeric_limits<double>::infinity();
+  const double euclidean = std::numeric_limits<double>::infinity();  // the default, also given as `inf`
+  double x = 0;
+  if (!args.has("sigma-feature") || (io::parse_decimal(args.get("sigma-feature"), x) && x == euclidean))
+    return euclidean;
+  return args.get_scale("sigma-feature");
 }
 
 /// Intrinsic dimension and measure of a 3D cloud, as the elimination derives them.
@@ -64,6 +67,12 @@ int run_sample(const std::vector<std::string>& argv) {
   const double radius = args.has("radius") ? args.get_positive_double("radius") : 0.0;
   const double sigma_position = args.has("sigma-position") ? args.get_scale("sigma-position") : 1.0;
   const double sigma_feature = sigma_feature_of(args);
+  for (const char* normal_option : {"unoriented", "normal-neighbors"})  // refused, not ignored
+    if (args.has(normal_option) && !std::isfinite(sigma_feature))
+      throw Usage_error(
+          std::string("--") + normal_option +
+          " goes with --sigma-feature (without it the spacing is Euclidean: normals are neither "
+          "compared nor estimated)");
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
   const long long neighbors = args.has("normal-neighbors") ? args.get_int("normal-neighbors") : 18;
@@ -92,7 +101,7 @@ int run_sample(const std::vector<std::string>& argv) {
   }
   for (std::size_t i = 0; i < items.size(); ++i)
     if (std::isfinite(sigma_feature) && items[i].second.squared_length() == 0)
-      throw io::Input_error(input + ": point " + std::to_string(i) + " has a zero normal");
+      throw io::Input_error(cloud.locate(input, i) + " has a zero normal");
   FeatureRecon::Point_with_normal_traits<K> traits;
   if (args.has("unoriented")) traits.orientation = FeatureRecon::Normal_orientation::unoriented;
 
@@ -156,9 +165,9 @@ int run_sample(const std::vector<std::string>& argv) {
      << ", \"sigma_position\": " << json_number(sigma_position)
      << ", \"sigma_feature\": " << json_number(sigma_feature) << ", \"normals\": \"" << normals
      << "\", \"colors\": \""
-     << (!cloud.has_colors()                                ? "none"
-         : io::file_extension(outputs.path("out")) == "ply" ? "file"
-                                                            : "dropped")
+     << (!cloud.has_colors()                                  ? "none"
+         : io::file_extension(outputs.target("out")) == "ply" ? "file"
+                                                              : "dropped")
      << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
      << "\", \"seed\": " << seed << ", \"intrinsic_dimension\": " << dimension
      << ", \"domain_measure\": " << json_number(measure)
@@ -166,7 +175,7 @@ int run_sample(const std::vector<std::string>& argv) {
      << ", \"bilateral_relative_radius\": " << json_statistic(bilateral_rho, quality.status)
      << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
      << ", \"seconds\": " << json_number(seconds) << ", \"output\": " << json_string(output) << "}\n";
-  std::fputs(os.str().c_str(), stdout);
+  std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }
 
@@ -222,10 +231,15 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     for (std::size_t i = 0; i < text.size(); ++i) {
       const double* x = text.coordinates.data() + i * text.dimension;
       points.points.push_back({x[0], x[1], x[2]});
+      points.lines.push_back(text.lines[i]);
       if (text.dimension == 6) points.normals.push_back({x[3], x[4], x[5]});
     }
   }
   const bool empty = cloud ? points.points.empty() : text.size() == 0;
+  if (!cloud && !empty && o.intrinsic_dimension > 0 && std::size_t(o.intrinsic_dimension) > columns)
+    throw Usage_error("--intrinsic-dimension " + std::to_string(o.intrinsic_dimension) +
+                      " exceeds the dimension of the points of " + input + " (" + std::to_string(columns) +
+                      ")");
   if ((args.has("spectrum") || args.has("max-frequency")) && empty)
     throw io::Input_error(input + ": no samples to take the spectrum of");
   if ((args.has("spectrum") || args.has("max-frequency")) && columns != 2)
@@ -243,6 +257,15 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       const auto [d, m] = domain_of(cloud.points);
       o.intrinsic_dimension = d;
       if (o.domain_measure == 0) o.domain_measure = m;
+      // `sample` estimates both from the whole cloud; a few hundred samples of a surface can look like a
+      // volume, and rho then differs from the one `sample` printed for the same samples.
+      if (!args.has("quiet"))
+        std::fprintf(
+            stderr,
+            "featurerecon sample-stats: note: intrinsic dimension %d%s estimated from the %zu samples "
+            "alone; to compare with what `sample` printed for them, give its --intrinsic-dimension "
+            "and --domain-measure\n",
+            d, args.has("domain-measure") ? "" : " and domain measure", cloud.points.size());
     }
     if (std::isfinite(o.sigma_feature) && !cloud.has_normals())
       throw Usage_error("--sigma-feature needs normals in " + input);
@@ -251,7 +274,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       const auto& p = cloud.points[i];
       const auto n = cloud.has_normals() ? cloud.normals[i] : std::array<double, 3>{0, 0, 1};
       if (std::isfinite(o.sigma_feature) && n[0] == 0 && n[1] == 0 && n[2] == 0)  // as `sample` says it
-        throw io::Input_error(input + ": point " + std::to_string(i) + " has a zero normal");
+        throw io::Input_error(cloud.locate(input, i) + " has a zero normal");
       items.push_back({K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2])});
     }
     q = fs::sampling_quality(items, o);
@@ -311,7 +334,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
        << ", \"oscillation\": " << json_number(spectrum.oscillation) << ", \"oscillation_band\": ["
        << json_number(spectrum.oscillation_from) << ", " << json_number(spectrum.oscillation_to) << "]";
   os << "}\n";
-  std::fputs(os.str().c_str(), stdout);
+  std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }
 

@@ -111,9 +111,10 @@ int run_rips(const std::vector<std::string>& argv) {
   io::write_complex(outputs.path("out"), K, positions,
                     geo.values.empty() ? std::vector<double>(m.rows, 0.0) : geo.values);
   outputs.commit();
-  std::printf("wrote %s: %zu vertices, %zu edges, %zu triangles, %zu components (dimension %zu)\n",
-              out_path.c_str(), K.number_of_vertices, K.number_of_edges(), K.number_of_triangles(),
-              geo.base_points.size(), m.dimension);
+  std::fprintf(outputs.summary_stream(),
+               "wrote %s: %zu vertices, %zu edges, %zu triangles, %zu components (dimension %zu)\n",
+               out_path.c_str(), K.number_of_vertices, K.number_of_edges(), K.number_of_triangles(),
+               geo.base_points.size(), m.dimension);
   return 0;
 }
 
@@ -624,6 +625,19 @@ int run_skeleton(const std::vector<std::string>& argv) {
       projection = lonlat_projection({{args.get("tracks"), &degrees, &lines}});
       project_trips(trips, projection);
     }
+    // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart. Checked before
+    // the pipeline runs (it ran first, minutes on a large file, to be refused).
+    if (const double step = median_gps_step(trips); !lonlat && step > 0 && step < 0.01) {
+      bool degrees = true;
+      for (const Gps_trip& trip : trips)
+        for (const Gps_fix& f : trip) degrees = degrees && std::abs(f.x) <= 180 && std::abs(f.y) <= 90;
+      if (degrees)
+        throw io::Input_error(args.get("tracks") +
+                              ": the fixes look like longitude and latitude in degrees (median step " +
+                              json_number(step) +
+                              ", all within +-180 and +-90), but the tracks are read in metres: give "
+                              "--lonlat, or project them to metres first");
+    }
     Road_map_options ro;
     ro.rips_radius = radius;
     // On the command line 0 turns a stage off; unset means automatic.
@@ -646,19 +660,6 @@ int run_skeleton(const std::vector<std::string>& argv) {
       throw std::invalid_argument(origin.locate(args.get("tracks"), e.what()));
     }
     const Gps_trace_sample& sample = road.sample;
-    if (!lonlat && sample.median_step > 0 && sample.median_step < 0.01) {
-      // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart.
-      bool degrees = true;
-      for (const Gps_trip& trip : trips)
-        for (const Gps_fix& f : trip) degrees = degrees && std::abs(f.x) <= 180 && std::abs(f.y) <= 90;
-      if (degrees)
-        throw io::Input_error(args.get("tracks") +
-                              ": the fixes look like longitude and latitude in degrees (median "
-                              "step " +
-                              json_number(sample.median_step) +
-                              ", all within +-180 and +-90), but the "
-                              "tracks are read in metres: give --lonlat, or project them to metres first");
-    }
     radius = road.used.rips_radius;
     options.delta = road.used.delta;
     options.repair_distance = road.used.repair_distance;
@@ -796,7 +797,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     std::vector<int> comp(num_vertices(graph));
     if (!comp.empty()) components = static_cast<std::size_t>(boost::connected_components(graph, comp.data()));
   }
-  std::printf(
+  std::fprintf(
+      outputs.summary_stream(),
       "{\"points\": %zu, \"sampled\": %zu, \"radius\": %s, \"delta\": %s, \"repair\": %s, "
       "\"sample_spacing\": %s, "
       "\"rips_edges\": %zu, \"rips_triangles\": %zu, \"max_triangles\": %zu, \"isolated_points\": %zu, "

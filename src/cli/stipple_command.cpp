@@ -341,6 +341,13 @@ int run_stipple(const std::vector<std::string>& argv) {
   s.method = args.get_or("method", "lloyd");
   if (s.method != "lloyd" && s.method != "bilateral-lloyd" && s.method != "darts" && s.method != "kernel")
     throw Usage_error("--method must be lloyd, bilateral-lloyd, darts or kernel, got '" + s.method + "'");
+  // Options the method does not have: refused, not ignored (the JSON printed sigma_feature null for Lloyd).
+  if (s.method == "lloyd" && args.has("sigma-feature"))
+    throw Usage_error(
+        "--sigma-feature does not apply to --method lloyd (Euclidean); use bilateral-lloyd, darts "
+        "or kernel");
+  if (s.method == "darts" && args.has("iterations"))
+    throw Usage_error("--iterations does not apply to --method darts (no iterations)");
   const long long count = args.get_int("count");
   if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   s.count = static_cast<std::size_t>(count);
@@ -385,7 +392,7 @@ int run_stipple(const std::vector<std::string>& argv) {
     if (ink > 0)
       throw Usage_error("--gamma " + json_number(s.gamma) + " makes the darkness of every pixel of " + input +
                         " underflow to 0 (darkness in [0, 1) raised to it); use a smaller --gamma");
-    throw Usage_error(input + " is white everywhere: nothing to stipple");
+    throw io::Input_error(input + " is white everywhere: nothing to stipple");  // the file, not an option
   }
   // More dots than pixels with ink: the extra dots had nowhere to go (kernel relaxation pushed them into the
   // picture's white corners, Lloyd left them on white pixels).
@@ -418,7 +425,7 @@ int run_stipple(const std::vector<std::string>& argv) {
      << ", \"seed\": " << seed << ", \"iterations\": " << report.iterations << ", \"stop\": "
      << (report.stop.empty() ? "null" : "\"" + report.stop + "\"")  // darts: no iterations, no reason to stop
      << ", \"dot_radius\": " << json_number(dot) << ", \"seconds\": " << json_number(seconds) << "}\n";
-  std::fputs(os.str().c_str(), stdout);
+  std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }
 

@@ -90,6 +90,7 @@ void read_xyz(const std::string& path, Point_cloud& c) {
         throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (point " +
                           std::to_string(c.points.size()) + ")");
     c.points.push_back({v[0], v[1], v[2]});
+    c.lines.push_back(number);
     if (columns == 6) c.normals.push_back({v[3], v[4], v[5]});
   }
   if (in.bad()) fail(path, "read error");
@@ -159,6 +160,7 @@ void read_off(const std::string& path, Point_cloud& c) {
         throw Input_error(at_line(path, number) + "'" + t[k] + "' is not a number (vertex " +
                           std::to_string(i) + ")");
     c.points.push_back({v[0], v[1], v[2]});
+    c.lines.push_back(number);
     if (normals) c.normals.push_back({v[3], v[4], v[5]});
   }
 }
@@ -460,11 +462,11 @@ Point_cloud read_point_cloud(const std::string& path, bool allow_empty) {
   for (std::size_t i = 0; i < c.points.size(); ++i) {
     const auto& p = c.points[i];
     if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
-      fail(path, "point " + std::to_string(i) + " has a non-finite coordinate");
+      throw Input_error(c.locate(path, i) + " has a non-finite coordinate");
     if (c.has_normals()) {
       const auto& n = c.normals[i];
       if (!(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2])))
-        fail(path, "the normal of point " + std::to_string(i) + " has a non-finite component");
+        throw Input_error(c.locate(path, i) + " has a normal with a non-finite component");
     }
   }
   return c;

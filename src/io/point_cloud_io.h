@@ -19,8 +19,15 @@ struct Point_cloud {
   std::vector<std::array<double, 3>> normals;  ///< empty when the file has none
   /// red, green, blue; empty when the file has none (PLY only)
   std::vector<std::array<unsigned char, 3>> colors;
+  /// the line of each point in a text file (XYZ, OFF); empty for PLY
+  std::vector<std::size_t> lines;
   bool has_normals() const { return !normals.empty(); }
   bool has_colors() const { return !colors.empty(); }
+  /// "path:LINE: point i" (text files) or "path: point i" (PLY), to begin a message about point i.
+  std::string locate(const std::string& path, std::size_t i) const {
+    return path + (i < lines.size() ? ":" + std::to_string(lines[i]) : std::string()) + ": point " +
+           std::to_string(i);
+  }
 };
 
 /// Reads PLY, OFF or XYZ by extension (case-insensitive). Normals are read when the file has them (PLY

@@ -53,6 +53,21 @@ expect(help 0 "rips.*reeb" --help)
 expect(rips_help 0 "usage: featurerecon rips --points FILE" rips --help)
 expect(reeb_help 0 "usage: featurerecon reeb --complex" reeb --help)
 expect(unknown_command 2 "unknown command 'frobnicate'" frobnicate)
+# Every command name stands in its own column (evaluate-map and bilateral-filter ran into their summaries).
+execute_process(COMMAND ${FEATURERECON} --help OUTPUT_VARIABLE main_help)
+foreach(name rips evaluate-map bilateral-filter synthetic-city sample-image)
+  string(LENGTH ${name} length)
+  math(EXPR pad "18 - ${length}")
+  string(REPEAT " " ${pad} spaces)
+  if(NOT main_help MATCHES "\n  ${name}${spaces}[A-Z]")
+    message(SEND_ERROR "main_help: the summary of '${name}' does not start in column 21:\n${main_help}")
+  endif()
+endforeach()
+# No command: the help, as a usage error, on standard error (it went to standard output).
+execute_process(COMMAND ${FEATURERECON} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT out STREQUAL "" OR NOT err MATCHES "usage: featurerecon COMMAND")
+  message(SEND_ERROR "no_command: exit ${rc}, standard output '${out}'")
+endif()
 expect(missing_out 2 "missing required option --out.*featurerecon rips --help" rips --points ${DATA}/figure_eight.xyz --radius 1)
 expect(both_scales 2 "exactly one of --radius R and --knn K" rips --points ${DATA}/figure_eight.xyz --radius 1 --knn 3 --out ${WORK}/x.txt)
 expect(negative_radius 2 "--radius must be >= 0" rips --points ${DATA}/figure_eight.xyz --radius -1 --out ${WORK}/x.txt)
@@ -171,6 +186,12 @@ expect(evaluate_map_bad 1 "bad_edges.txt:1: unknown vertex id 99999" evaluate-ma
 # Cropping to traces: a tracks file covering nothing removes every ground-truth edge.
 file(WRITE ${WORK}/far_tracks.txt "0 0 0 0\n")
 expect(evaluate_map_crop 0 "\"precision\": 0, \"recall\": null, \"f_score\": 0,.*\"ground_truth_edges\": 0,.*\"ground_truth_edges_before_crop\": 1182" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/far_tracks.txt)
+# ... and says so (it was silent: a mistyped or empty tracks file cropped the whole ground truth away).
+if(NOT last_error MATCHES "warning: the crop keeps none of the 1182 ground-truth edges \\(none lies within --crop-radius 25 m of the 1 fix of .*far_tracks.txt")
+  message(SEND_ERROR "evaluate_map_crop: no warning that the crop keeps nothing:\n${last_error}")
+endif()
+file(WRITE ${WORK}/no_fixes.txt "")
+expect(evaluate_map_crop_no_fixes 0 "\"ground_truth_edges\": 0,.*warning: .*no_fixes.txt holds no fixes: the crop keeps no ground-truth edge" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --crop-to-tracks ${WORK}/no_fixes.txt --quiet)
 # ... and with --tracks nothing is driven: every sample lies in the first bin (no trip along it).
 expect(evaluate_map_tracks_far 0 "\"ground_truth_by_trips\": \\[9173, 0, 0, 0\\], \"missed_by_trips\": \\[4688, 0, 0, 0\\], \"spurious_by_trips\": \\[333, 0, 0, 0\\], \"ground_truth_driven\": 0, \"matched_driven\": 0, \"recall_of_driven\": null}" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/far_tracks.txt)
 # An empty reconstruction: precision is undefined (null), recall and F are 0.
@@ -450,7 +471,7 @@ expect(synthetic_city_rows 2 "--rows must be >= 2" synthetic-city --rows 1 --out
 expect(synthetic_city_out 2 "--out-tracks is required" synthetic-city --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_streets 2 "--out-streets-vertices and --out-streets-edges go together" synthetic-city --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --out-streets-edges ${WORK}/d)
 expect(synthetic_city_trips 2 "--trips must be >= 0" synthetic-city --trips -3 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
-expect(synthetic_city_noise_huge 1 "fix 0 of trip 0 lies beyond the largest double: noise \\(1e\\+308\\)" synthetic-city --noise 1e308 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_noise_huge 2 "fix 0 of trip 0 lies beyond the largest double: noise \\(1e\\+308\\)" synthetic-city --noise 1e308 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_no_fix 0 "\"fixes\": 0,.*warning: no trip lasted one sampling interval, no fix was recorded \\(--interval 1e\\+308 s, --speed 10 m/s\\)" synthetic-city --interval 1e308 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 
 # The skeleton's other formats: GraphML, GeoJSON, PLY, SVG, with the right counts (two loops that share a
@@ -549,6 +570,14 @@ expect(sample_estimate_copies_only 0 "\"kept\": 1,.*\"normals\": \"estimated\"" 
 expect(sample_stats 0 "\"samples\": 200,.*\"relative_radius\": " sample-stats --input ${WORK}/euclid.xyz)
 expect(sample_stats_2d 0 "\"dimension\": 2,.*\"average_minimum_distance\": " sample-stats --input ${DATA}/figure_eight.xyz)
 expect(sample_stats_bad 2 "--intrinsic-dimension must be 2 or 3" sample-stats --input ${DATA}/figure_eight.xyz --intrinsic-dimension 4)
+file(WRITE ${WORK}/plane3.txt "0 0\n1 0\n0 1\n")
+expect(sample_stats_dimension_above_points 2 "--intrinsic-dimension 3 exceeds the dimension of the points of .*plane3.txt \\(2\\)" sample-stats --input ${WORK}/plane3.txt --intrinsic-dimension 3)
+# Estimated from the samples alone, the dimension and measure can differ from what `sample` printed: said so.
+expect(sample_stats_estimate_note 0 "\"samples\": 200,.*note: intrinsic dimension [23] and domain measure estimated from the 200 samples alone" sample-stats --input ${WORK}/euclid.xyz)
+expect(sample_stats_given_no_note 0 "\"intrinsic_dimension\": 2," sample-stats --input ${WORK}/euclid.xyz --intrinsic-dimension 2)
+if(last_error MATCHES "note:")
+  message(SEND_ERROR "sample_stats_given_no_note: a note although the dimension was given:\n${last_error}")
+endif()
 # A 2D set on the unit torus: the spectrum statistics and the radial power file.
 set(torus "")
 foreach(i RANGE 15)
@@ -649,8 +678,12 @@ foreach(method darts kernel)
   expect_count(${WORK}/one_${method}.svg "<circle" 1)
 endforeach()
 foreach(method lloyd bilateral-lloyd darts kernel)
+  set(iterations --iterations 10)
+  if(method STREQUAL "darts")
+    set(iterations)
+  endif()
   expect(stipple_${method} 0 "\"channels\": 1, \"method\": \"${method}\", \"dots\": 40, \"palette\": 1,"
-         stipple ${WORK}/line.pgm --count 40 --method ${method} --iterations 10 --out ${WORK}/st_${method}.svg
+         stipple ${WORK}/line.pgm --count 40 --method ${method} ${iterations} --out ${WORK}/st_${method}.svg
          --png ${WORK}/st_${method}.png --quiet)
   expect_count(${WORK}/st_${method}.svg "<circle" 40)
 endforeach()
@@ -667,13 +700,15 @@ expect(stipple_needs_count 2 "missing required option --count" stipple ${WORK}/l
 expect(stipple_svg_only 2 "--out writes an SVG picture" stipple ${WORK}/line.pgm --count 5 --out ${WORK}/x.txt)
 expect(stipple_too_many 2 "--count 5000 exceeds the 2304 pixels" stipple ${WORK}/line.pgm --count 5000 --out ${WORK}/x.svg)
 file(WRITE ${WORK}/white.pgm "P2\n2 2\n255\n255 255 255 255\n")
-expect(stipple_white 2 "white everywhere: nothing to stipple" stipple ${WORK}/white.pgm --count 2 --out ${WORK}/x.svg)
+expect(stipple_white 1 "white everywhere: nothing to stipple" stipple ${WORK}/white.pgm --count 2 --out ${WORK}/x.svg)
 # A --gamma so large that every darkness underflows to 0 is named (the picture was said to be white); darts report
 # no reason to stop (null, not an empty string).
 expect(stipple_gamma_underflow 2 "--gamma 1e\\+300 makes the darkness of every pixel of .*line.pgm underflow to 0" stipple ${WORK}/line.pgm --count 5 --gamma 1e300 --out ${WORK}/x.svg)
 file(WRITE ${WORK}/two_dark.pgm "P2\n4 4\n255\n255 255 255 255\n255 0 255 255\n255 255 255 0\n255 255 255 255\n")
 expect(stipple_more_than_ink 2 "--count 3 exceeds the 2 pixels of .*two_dark.pgm with any darkness \\(of 16\\)" stipple ${WORK}/two_dark.pgm --count 3 --method kernel --out ${WORK}/x.svg)
 expect(stipple_as_many_as_ink 0 "\"dots\": 2," stipple ${WORK}/two_dark.pgm --count 2 --out ${WORK}/x.svg --quiet)
+expect(stipple_lloyd_sigma 2 "--sigma-feature does not apply to --method lloyd" stipple ${WORK}/line.pgm --count 5 --sigma-feature 0.2 --out ${WORK}/x.svg)
+expect(stipple_darts_iterations 2 "--iterations does not apply to --method darts" stipple ${WORK}/line.pgm --count 5 --method darts --iterations 3 --out ${WORK}/x.svg)
 expect(stipple_darts_stop 0 "\"method\": \"darts\", .*\"stop\": null," stipple ${WORK}/line.pgm --count 5 --method darts --out ${WORK}/x.svg --quiet)
 # bilateral-filter: every sampling and mode meets the budget and writes a picture of the input's size; the same
 # seed gives the same picture; the exact filter scores null PSNR (equal) and SSIM 1; bad arguments explained.
@@ -697,6 +732,12 @@ expect(bilateral_filter_exact 0 "\"sampling\": \"exact\",.*\"taps_per_kernel_pix
 expect(bilateral_filter_rgb 0 "\"channels\": 3,.*\"radius\": 2," bilateral-filter ${WORK}/tiny.ppm --sigma-spatial 1
        --sigma-range 0.3 --budget 2 --out ${WORK}/bf_rgb.png --quiet)
 expect(bilateral_filter_no_image 2 "give the picture to filter" bilateral-filter --out ${WORK}/x.png)
+# Options the chosen sampling does not have are refused, not ignored (the exact filter printed budget 1 for
+# --budget 3; uniform taps took --sampling-sigma and --no-compensation without effect).
+expect(bilateral_filter_exact_budget 2 "--budget does not apply to --sampling exact \\(every pixel of the window is a tap\\)" bilateral-filter ${WORK}/tiny.ppm --sampling exact --budget 3 --out ${WORK}/x.png)
+expect(bilateral_filter_exact_mode 2 "--mode does not apply to --sampling exact" bilateral-filter ${WORK}/tiny.ppm --sampling exact --mode local --out ${WORK}/x.png)
+expect(bilateral_filter_uniform_sigma 2 "--sampling-sigma does not apply to --sampling uniform" bilateral-filter ${WORK}/tiny.ppm --sampling uniform --sampling-sigma 0.2 --out ${WORK}/x.png)
+expect(bilateral_filter_uniform_compensation 2 "--no-compensation does not apply to --sampling uniform" bilateral-filter ${WORK}/tiny.ppm --sampling uniform --no-compensation --out ${WORK}/x.png)
 expect(bilateral_filter_bad_sampling 2 "--sampling must be uniform, bilateral or exact, got 'random'"
        bilateral-filter ${WORK}/line.pgm --sampling random --out ${WORK}/x.png)
 expect(bilateral_filter_bad_mode 2 "--mode must be local or global, got 'tiled'" bilateral-filter ${WORK}/line.pgm --mode tiled --out ${WORK}/x.png)
@@ -798,7 +839,7 @@ expect(off_truncated 1 "trunc.off: unexpected end of file after 2 of 3 vertex li
 file(WRITE ${WORK}/word.off "OFF\n2 0 0\n0 0 0\n1 abc 0\n")
 expect(off_word 1 "word.off:4: 'abc' is not a number \\(vertex 1\\)" sample --input ${WORK}/word.off --count 1 --out ${WORK}/o.xyz --quiet)
 file(WRITE ${WORK}/nan.off "OFF\n2 0 0\n0 0 0\nnan 0 0\n")
-expect(off_nan 1 "nan.off: point 1 has a non-finite coordinate" sample --input ${WORK}/nan.off --count 1 --out ${WORK}/o.xyz --quiet)
+expect(off_nan 1 "nan.off:4: point 1 has a non-finite coordinate" sample --input ${WORK}/nan.off --count 1 --out ${WORK}/o.xyz --quiet)
 file(WRITE ${WORK}/faces.off "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
 expect(off_with_faces 0 "\"points\": 3, \"kept\": 2" sample --input ${WORK}/faces.off --count 2 --out ${WORK}/o.xyz --quiet)
 file(WRITE ${WORK}/mixed.xyz "0 0 0\n1 1 1 0 0 1\n")
@@ -869,6 +910,10 @@ file(WRITE ${WORK}/nx.ply "${ply_head}property float x\nproperty float y\nproper
 expect(ply_some_normals 1 "nx.ply: .*only some of the normal properties" sample --input ${WORK}/nx.ply --count 2 --out ${WORK}/o.xyz --quiet)
 file(WRITE ${WORK}/nan.ply "${ply_head}property float x\nproperty float y\nproperty float z\nend_header\n1 2 3\nnan 1 1\n0 0 0\n")
 expect(ply_nan 1 "nan.ply: not a readable PLY point cloud \\(vertex 1: 'nan' is not a finite number\\)" sample-stats --input ${WORK}/nan.ply)
+expect(sigma_feature_inf 0 "\"kept\": 2,.*\"sigma_feature\": null," sample --input ${WORK}/blank_first.xyz --count 2 --sigma-feature inf --out ${WORK}/o.xyz --quiet)
+expect(sigma_feature_minus_inf 2 "--sigma-feature must be a finite number, got '-inf'" sample --input ${WORK}/blank_first.xyz --count 2 --sigma-feature -inf --out ${WORK}/o.xyz)
+expect(unoriented_without_sigma 2 "--unoriented goes with --sigma-feature" sample --input ${WORK}/blank_first.xyz --count 2 --unoriented --out ${WORK}/o.xyz)
+expect(normal_neighbors_without_sigma 2 "--normal-neighbors goes with --sigma-feature" sample --input ${WORK}/blank_first.xyz --count 2 --normal-neighbors 8 --out ${WORK}/o.xyz)
 expect(normal_neighbors_huge 2 "--normal-neighbors must be in \\[3, 1000000\\]" sample --input ${WORK}/blank_first.xyz --count 2 --sigma-feature 0.5 --normal-neighbors 4294967296 --out ${WORK}/o.xyz)
 # Scales outside the library's range are bad arguments (status 2, naming the option), found before the input is
 # read (they exited with 1, naming the library's field, some after normal estimation).
@@ -884,7 +929,8 @@ expect(missing_extensionless_input 1 "nowhere/none: cannot open for reading" sam
 # sample-stats: --sigma-feature without normals is refused (was ignored), a zero normal named (was null statistics).
 expect(sample_stats_sigma_without_normals 2 "--sigma-feature needs normals in .*blank_first.xyz" sample-stats --input ${WORK}/blank_first.xyz --sigma-feature 0.5)
 file(WRITE ${WORK}/zero_normal.xyz "0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n")
-expect(sample_stats_zero_normal 1 "zero_normal.xyz: point 1 has a zero normal" sample-stats --input ${WORK}/zero_normal.xyz --sigma-feature 0.5)
+expect(sample_zero_normal 1 "zero_normal.xyz:2: point 1 has a zero normal" sample --input ${WORK}/zero_normal.xyz --count 2 --sigma-feature 0.5 --out ${WORK}/o.xyz --quiet)
+expect(sample_stats_zero_normal 1 "zero_normal.xyz:2: point 1 has a zero normal" sample-stats --input ${WORK}/zero_normal.xyz --sigma-feature 0.5)
 # Euclidean runs never compare normals: a zero normal is carried along, not refused.
 expect(sample_zero_normal_euclidean 0 "\"kept\": 2," sample --input ${WORK}/zero_normal.xyz --count 2 --out ${WORK}/zero_normal_out.xyz --quiet)
 expect(sample_stats_zero_normal_euclidean 0 "\"samples\": [0-9]+," sample-stats --input ${WORK}/zero_normal.xyz)
@@ -937,16 +983,16 @@ file(WRITE ${WORK}/five.xyz "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.5 0\n")
 expect(sample_two_kept 0 "\"kept\": 2,.*\"relative_radius\": null, \"bilateral_relative_radius\": null, \"average_minimum_distance\": null" sample --input ${WORK}/five.xyz --count 2 --out ${WORK}/o.xyz --quiet)
 expect(sample_stats_domain 0 "\"domain_measure\": 1, \"periodic\": true" sample-stats --input ${WORK}/torus.txt --periodic)
 # synthetic-city: sizes that would fill the memory are refused naming the options.
-expect(synthetic_city_tiny_interval 1 "more than 2\\^26 fixes .*raise speed .* or sampling_interval" synthetic-city --interval 1e-9 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_tiny_interval 2 "more than 2\\^26 fixes .*raise speed .* or sampling_interval .*\\(on the command line: sampling_interval is --interval" synthetic-city --interval 1e-9 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 # Blocks so large that one route needs billions of fixes: the message names the block size too.
-expect(synthetic_city_huge_blocks 1 "more than 2\\^26 fixes .*along a route of .*block_width \\(1e\\+300\\)" synthetic-city --block-width 1e300 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
-expect(synthetic_city_huge_blocks 1 "beyond the largest double: block_width" synthetic-city --block-width 1e307 --columns 100 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_huge_blocks 2 "more than 2\\^26 fixes .*along a route of .*block_width \\(1e\\+300\\)" synthetic-city --block-width 1e300 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_huge_blocks 2 "beyond the largest double: block_width" synthetic-city --block-width 1e307 --columns 100 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 # --graph edge lengths whose squares overflow are computed scaled; beyond the largest double they are refused.
 file(WRITE ${WORK}/far_graph.txt "3 2\n0 0 0 0\n1e200 0 0 1\n2e200 0 0 2\n0 1\n1 2\n")
 expect(graph_huge_coordinates 0 "\"nodes\": 2, \"arcs\": 1" skeleton --graph ${WORK}/far_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 file(WRITE ${WORK}/too_far_graph.txt "2 1\n-1.5e308 0 0 0\n1.5e308 0 0 1\n0 1\n")
 expect(graph_length_overflow 1 "too_far_graph.txt: the edge between points 0 and 1 is longer than the largest double" skeleton --graph ${WORK}/too_far_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
-expect(synthetic_city_huge_organic 1 "beyond the largest double: block_width or block_height too large" synthetic-city --layout organic --block-width 1e308 --block-height 1 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_huge_organic 2 "beyond the largest double: block_width or block_height too large" synthetic-city --layout organic --block-width 1e308 --block-height 1 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(sample_stats_empty_measure 0 "\"samples\": 0,.*\"domain_measure\": 5," sample-stats --input ${WORK}/nothing.txt --domain-measure 5)
 expect(sample_stats_empty_spectrum 1 "nothing.txt: no samples to take the spectrum of" sample-stats --input ${WORK}/nothing.txt --periodic --spectrum ${WORK}/s0.csv)
 # sample-stats on a flat 10 x 10 grid in space (spacing 1): an XYZ file is a cloud as `sample` reads it, the same
@@ -1100,7 +1146,10 @@ expect_count(${WORK}/anti.geojson "\\[-179\\.[0-9]+, -16\\.[0-9]+\\], \\[179" 0)
 expect_count_at_least(${WORK}/anti.geojson "\\[180, -16\\.[0-9]+\\]\\], \\[\\[-180, -16\\.[0-9]+\\]" 1
                       "lonlat_antimeridian: lines cut at +-180")
 # Degrees read as metres are refused with a hint; bad degrees and too wide a span are named.
-expect(lonlat_missing 1 "chicago_lonlat_tracks.txt: the fixes look like longitude and latitude in degrees .*give --lonlat" skeleton --tracks ${LL} --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(lonlat_missing 1 "chicago_lonlat_tracks.txt: the fixes look like longitude and latitude in degrees .*give --lonlat" skeleton --tracks ${LL} --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+if(last_error MATCHES ": done")  # refused before any stage runs (the whole pipeline ran first)
+  message(SEND_ERROR "lonlat_missing: stages ran before the refusal:\n${last_error}")
+endif()
 expect(lonlat_missing_evaluate 1 "chicago_gt_trk25_vertices_lonlat.txt: the vertices look like longitude and latitude in degrees .*give --lonlat" evaluate-map ${M}_gt_trk25_vertices_lonlat.txt ${M}_gt_trk25_edges.txt ${WORK}/ll_v.txt ${WORK}/ll_e.txt)
 expect(lonlat_points 2 "--lonlat applies to --tracks only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --lonlat --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 file(WRITE ${WORK}/ll_bad.txt "0 -87.6 41.8 0\n0 -87.6 95 10\n")
@@ -1176,6 +1225,15 @@ if(BASH_PROGRAM)
   else()
     expect_same_file(${WORK}/special/from_fifo.cx ${WORK}/fig8.txt "output_to_fifo: what the reader got")
     message(STATUS "ok: output_to_fifo")
+  endif()
+  # An output written to standard output (/dev/stdout) sends the summary to standard error: it was appended to the complex, which the next command in the pipe then refused.
+  execute_process(COMMAND ${BASH_PROGRAM} -c "\"$0\" rips --points '${DATA}/figure_eight.xyz' --radius 0.6 --out /dev/stdout --quiet 2> '${WORK}/special/rips_summary.txt' | \"$0\" reeb --complex /dev/stdin --json" ${FEATURERECON}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  file(READ ${WORK}/special/rips_summary.txt rips_summary)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "\"loops\": 2," OR NOT rips_summary MATCHES "wrote /dev/stdout: 400 vertices")
+    message(SEND_ERROR "output_to_stdout_pipe: exit ${rc}:\n${out}${err}\nsummary: ${rips_summary}")
+  else()
+    message(STATUS "ok: output_to_stdout_pipe")
   endif()
   # Interrupted (SIGINT, as Ctrl-C sends) while writing: no temporary is left behind. 600 copies of one point
   # make a complex of 36 M triangles, minutes of work.
