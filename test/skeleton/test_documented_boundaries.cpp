@@ -318,7 +318,8 @@ TEST(DocumentedBoundaries, PipelineConnectsDeadEndsSimplifiesAgainAndPrunes) {
 }
 
 // Loop persistence (doc/skeleton.md): "an arc that closes a cycle replaces the lightest arc on it when it is
-// heavier" (strictly: of two arcs with the same lower node the forest keeps the first). Which thin cycle a
+// heavier" (strictly; of two arcs with the same lower node the later in the sweep weighs more, so it replaces
+// the earlier, reeb_graph_persistence.h). Which thin cycle a
 // loop gets then decides the simplification where several loops share a bottom: here the loop that survives
 // delta 3 keeps its bottom at the up-fork of value 2 (replacing on ties moved it to value 1). A pinned
 // regression result.
