@@ -19,6 +19,7 @@
 #include <cmath>
 #include <vector>
 
+#include "reeb_graph_builders.h"
 #include "skeleton_test_utilities.h"
 
 using namespace FeatureRecon;
@@ -31,13 +32,6 @@ Gps_trace_graph_options tolerance_of(double degrees) {
   o.heading_tolerance = degrees;
   return o;
 }
-Reeb_graph::Node node(Vertex_index v, double f, std::vector<Vertex_index> members = {}) {
-  Reeb_graph::Node n;
-  n.vertex = v;
-  n.value = f;
-  n.members = std::move(members);
-  return n;
-}
 }  // namespace
 
 // "Input vertices keep their place (node, node members, or arc vertices)": a member on its node's level (as a
@@ -45,7 +39,7 @@ Reeb_graph::Node node(Vertex_index v, double f, std::vector<Vertex_index> member
 // own.
 TEST(DocumentedBoundaries, SimplificationKeepsLevelMembersWithTheirNode) {
   Reeb_graph R;  // a Y: minimum v0 (f 0) -> fork v1 (f 1, member v4 at f 1) -> maxima v2 (f 2) and v3 (f 3)
-  R.nodes = {node(0, 0), node(1, 1, {4}), node(2, 2), node(3, 3)};
+  R.nodes = {reeb_node(0, 0), reeb_node(1, 1, {4}), reeb_node(2, 2), reeb_node(3, 3)};
   R.arcs = {{0, 1, {}}, {1, 2, {}}, {1, 3, {}}};
   FeatureRecon::skeleton::internal::refresh_node_types(R);
   const std::vector<double> values{0, 1, 2, 3, 1};
@@ -102,7 +96,7 @@ TEST(DocumentedBoundaries, ConnectDeadEndsBreaksDistanceTiesBySmallestVertex) {
 TEST(DocumentedBoundaries, AutomaticLevelWidthIsOneSixtyFourthOfTheRange) {
   // one arc from f 0 to f 64 with a point at every f 0.5, 1.5, ..., 63.5: one per bin of width 1
   Reeb_graph G;
-  G.nodes = {node(0, 0), node(1, 64)};
+  G.nodes = {reeb_node(0, 0), reeb_node(1, 64)};
   Reeb_graph::Arc arc;
   arc.lower = 0;
   arc.upper = 1;
@@ -251,7 +245,7 @@ TEST(DocumentedBoundaries, RoadMapOptionSetsHaveTheDocumentedValues) {
 // back.
 TEST(DocumentedBoundaries, EmbeddingSmoothingRoundsAndAutomaticMaxGap) {
   Reeb_graph G;  // one arc from vertex 0 to vertex 3 through vertex 1; vertex 2 is only in the graph
-  G.nodes = {node(0, 0), node(3, 3)};
+  G.nodes = {reeb_node(0, 0), reeb_node(3, 3)};
   G.arcs.push_back({0, 1, {1}});
   FeatureRecon::skeleton::internal::refresh_node_types(G);
   const std::vector<std::array<double, 3>> positions{{0, 0, 0}, {1, 1, 0}, {3, 0, 0}, {7, 0, 0}};

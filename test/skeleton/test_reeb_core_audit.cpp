@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "reeb_graph_builders.h"
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
@@ -26,13 +27,6 @@ using namespace FeatureRecon::skeleton;
 using namespace FeatureRecon::test;
 
 namespace {
-Reeb_graph::Node node(Vertex_index v, double f, std::vector<Vertex_index> members = {}) {
-  Reeb_graph::Node n;
-  n.vertex = v;
-  n.value = f;
-  n.members = std::move(members);
-  return n;
-}
 
 /// A path 0 - 1 - ... - n-1 with f = index.
 Complex_with_function rising_path(std::size_t n) {
@@ -93,12 +87,12 @@ TEST(ReebCoreAudit, CountCountsNodesCarryingTheFlagAmongOthers) {
 // hand-built graph with components 0 has them counted.
 TEST(ReebCoreAudit, LoopsOfHandBuiltGraphs) {
   Reeb_graph G;  // four nodes, one arc, but components set to 1 (too small: there are three)
-  G.nodes = {node(0, 0), node(1, 1), node(2, 2), node(3, 3)};
+  G.nodes = {reeb_node(0, 0), reeb_node(1, 1), reeb_node(2, 2), reeb_node(3, 3)};
   G.arcs = {{0, 1, {}}};
   G.components = 1;
   EXPECT_EQ(G.loops(), 0u);
   Reeb_graph H;  // two nodes joined by two arcs: one loop, components left 0
-  H.nodes = {node(0, 0), node(1, 1)};
+  H.nodes = {reeb_node(0, 0), reeb_node(1, 1)};
   H.arcs = {{0, 1, {}}, {0, 1, {}}};
   EXPECT_EQ(H.loops(), 1u);
 }
@@ -107,7 +101,7 @@ TEST(ReebCoreAudit, LoopsOfHandBuiltGraphs) {
 // last.
 TEST(ReebCoreAudit, ComponentsIgnoreAnArcToTheNodeOnePastTheLast) {
   Reeb_graph G;
-  G.nodes = {node(0, 0), node(1, 1)};
+  G.nodes = {reeb_node(0, 0), reeb_node(1, 1)};
   G.arcs = {{0, 2, {}}, {2, 1, {}}};
   EXPECT_EQ(FeatureRecon::skeleton::internal::count_components(G), 2u);
 }
@@ -150,14 +144,14 @@ TEST(ReebCoreAudit, AStopDuringTheSweepEndsItAndKeepsOnlyClosedArcs) {
 // node).
 TEST(ReebCoreAudit, PersistenceRefusesARepeatedNodeAndAnArcFromANodeToItself) {
   Reeb_graph twice;
-  twice.nodes = {node(0, 1), node(0, 1)};
+  twice.nodes = {reeb_node(0, 1), reeb_node(0, 1)};
   twice.arcs = {{0, 1, {}}};
   EXPECT_NE(invalid_argument_message([&] {
               compute_reeb_graph_persistence(twice);
             }).find("nodes 0 and 1 are not in increasing (value, vertex) order"),
             std::string::npos);
   Reeb_graph self;
-  self.nodes = {node(0, 0), node(1, 1)};
+  self.nodes = {reeb_node(0, 0), reeb_node(1, 1)};
   self.arcs = {{0, 1, {}}, {1, 1, {}}};
   EXPECT_NE(invalid_argument_message([&] {
               compute_reeb_graph_persistence(self);
@@ -170,7 +164,7 @@ TEST(ReebCoreAudit, PersistenceRefusesARepeatedNodeAndAnArcFromANodeToItself) {
 // each new parallel arc is the pair of it and the arc before it.
 TEST(ReebCoreAudit, ParallelArcsTieByIndexInTheLoopForest) {
   Reeb_graph R;
-  R.nodes = {node(0, 0), node(1, 1)};
+  R.nodes = {reeb_node(0, 0), reeb_node(1, 1)};
   R.arcs = {{0, 1, {}}, {0, 1, {}}, {0, 1, {}}, {0, 1, {}}};
   std::vector<std::vector<std::size_t>> cycles;
   const Reeb_graph_persistence P = FeatureRecon::skeleton::internal::reeb_graph_persistence(R, &cycles);
@@ -248,7 +242,7 @@ TEST(ReebCoreAudit, SimplificationNamesAnArcWithItsLowerNodeOutOfRange) {
 // level as those below.
 TEST(ReebCoreAudit, MembersAboveTheirNodesLevelStayWithTheNode) {
   Reeb_graph R;  // one arc from vertex 0 (f 0) to vertex 1 (f 1), whose node holds vertex 2 (f 5)
-  R.nodes = {node(0, 0), node(1, 1, {2})};
+  R.nodes = {reeb_node(0, 0), reeb_node(1, 1, {2})};
   R.arcs = {{0, 1, {}}};
   R.nodes[0].type = minimum;
   R.nodes[1].type = maximum;
