@@ -6,6 +6,8 @@
 #include <FeatureRecon/skeleton/estimate_rips_radius.h>
 #include <FeatureRecon/skeleton/extract_reeb_skeleton.h>
 
+#include <Eigen/Core>
+
 #include <boost/graph/connected_components.hpp>
 
 #include <gtest/gtest.h>
@@ -30,6 +32,18 @@ using namespace FeatureRecon::test;
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
+
+using Row_major_matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+/// The Euclidean distance matrix of the points.
+Row_major_matrix distance_matrix_of(const Point_matrix& m) {
+  Row_major_matrix D(static_cast<Eigen::Index>(m.rows), static_cast<Eigen::Index>(m.rows));
+  for (std::size_t i = 0; i < m.rows; ++i)
+    for (std::size_t j = 0; j < m.rows; ++j)
+      D(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+          skeleton::internal::point_distance(m.row(i), m.row(j), m.dimension);
+  return D;
+}
 
 void add_point(Point_matrix& m, std::initializer_list<double> p) {
   m.dimension = p.size();
@@ -411,13 +425,7 @@ TEST(EstimateRipsRadius, CopiesOfThePointsLeaveTheEstimateAsItWas) {
   EXPECT_EQ(t.components, 1u);
   EXPECT_EQ(t.loops, 1u);
   // The matrix of the copies: the same.
-  std::vector<double> D(four.rows * four.rows);
-  for (std::size_t i = 0; i < four.rows; ++i)
-    for (std::size_t j = 0; j < four.rows; ++j)
-      D[i * four.rows + j] = skeleton::internal::point_distance(four.row(i), four.row(j), 2);
-  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
-      D.data(), static_cast<Eigen::Index>(four.rows), static_cast<Eigen::Index>(four.rows));
-  EXPECT_EQ(estimate_rips_radius_from_distance_matrix(matrix).radius, a.radius);
+  EXPECT_EQ(estimate_rips_radius_from_distance_matrix(distance_matrix_of(four)).radius, a.radius);
 }
 
 TEST(EstimateRipsRadius, BracesSelectTheEstimateNotRadiusZero) {
@@ -455,12 +463,7 @@ TEST(EstimateRipsRadius, BracesSelectTheEstimateNotRadiusZero) {
 
 TEST(EstimateRipsRadius, DistanceMatrixGivesTheSameEstimate) {
   const Point_matrix m = noisy_trefoil(400, 0.05, 6);
-  std::vector<double> D(m.rows * m.rows);
-  for (std::size_t i = 0; i < m.rows; ++i)
-    for (std::size_t j = 0; j < m.rows; ++j)
-      D[i * m.rows + j] = skeleton::internal::point_distance(m.row(i), m.row(j), 3);
-  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
-      D.data(), static_cast<Eigen::Index>(m.rows), static_cast<Eigen::Index>(m.rows));
+  Row_major_matrix matrix = distance_matrix_of(m);
   const Rips_radius_estimate a = estimate_rips_radius(m),
                              b = estimate_rips_radius_from_distance_matrix(matrix);
   EXPECT_EQ(a.radius, b.radius);
@@ -474,7 +477,7 @@ TEST(EstimateRipsRadius, DistanceMatrixGivesTheSameEstimate) {
   // With a given radius, a negative delta is the suggested one at that radius.
   EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, a.radius, o).delta, a.delta);
   EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, 4 * a.scale, o).delta, 4 * a.scale);
-  D[1] = -1;  // refused as the other distance-matrix functions refuse it
+  matrix(0, 1) = -1;  // refused as the other distance-matrix functions refuse it
   EXPECT_THROW(estimate_rips_radius_from_distance_matrix(matrix), std::invalid_argument);
 }
 
@@ -584,12 +587,7 @@ TEST(EstimateRipsRadius, SuggestedDeltaAtAGivenRadiusReportsProgressAndCanStop) 
   EXPECT_EQ(num_vertices(stopped.graph), 0u);
   EXPECT_EQ(calls, 301u);  // 0, 1/600, ..., 300/600 of the first tenth: 0.05 is the first refused
   // The distance-matrix overload alike.
-  std::vector<double> D(m.rows * m.rows);
-  for (std::size_t i = 0; i < m.rows; ++i)
-    for (std::size_t j = 0; j < m.rows; ++j)
-      D[i * m.rows + j] = skeleton::internal::point_distance(m.row(i), m.row(j), 2);
-  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
-      D.data(), static_cast<Eigen::Index>(m.rows), static_cast<Eigen::Index>(m.rows));
+  const Row_major_matrix matrix = distance_matrix_of(m);
   calls = 0;
   const Reeb_skeleton stopped_matrix = extract_reeb_skeleton_from_distance_matrix(matrix, e.radius, o);
   EXPECT_EQ(stopped_matrix.status, Status::interrupted);
