@@ -347,6 +347,27 @@ void BM_cgal_nearest(benchmark::State& state) {
   state.counters["d_min"] = std::sqrt(smallest);
 }
 
+/// sampling_spectrum() of N white-noise points on the unit torus at the default F = 6 sqrt(N), by the sums'
+/// method (0 direct, 1 gridded); the counter is the oscillation, the same to about 1e-11 either way.
+void BM_spectrum(benchmark::State& state) {
+  const std::size_t n = std::size_t(state.range(0));
+  std::mt19937_64 rng(5);
+  std::vector<K::Point_2> p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = uniform01(rng);
+    p.emplace_back(x, uniform01(rng));
+  }
+  fs::Sampling_spectrum_options o;
+  o.method = state.range(1) == 0 ? fs::Spectrum_method::direct : fs::Spectrum_method::gridded;
+  double oscillation = 0;
+  for (auto _ : state) {
+    const fs::Sampling_spectrum s = fs::sampling_spectrum(p, o);
+    benchmark::DoNotOptimize(s);
+    oscillation = s.oscillation;
+  }
+  state.counters["oscillation"] = oscillation;
+}
+
 void register_all() {
   auto ms = [](benchmark::internal::Benchmark* b) { return b->Unit(benchmark::kMillisecond)->UseRealTime(); };
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d", BM_elimination_2d<false>))
@@ -374,6 +395,17 @@ void register_all() {
       ->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/quality_160k", BM_quality))->Arg(0)->Arg(1);
   ms(benchmark::RegisterBenchmark("sampling/cgal/nearest_160k", BM_cgal_nearest))->Arg(0)->Arg(1);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/spectrum_direct", BM_spectrum))
+      ->Args({1024, 0})
+      ->Args({4096, 0})
+      ->Args({16384, 0})
+      ->Iterations(1);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/spectrum_gridded", BM_spectrum))
+      ->Args({1024, 1})
+      ->Args({4096, 1})
+      ->Args({16384, 1})
+      ->Args({100000, 1})
+      ->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/grid_cube200k", BM_cgal_grid))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/hierarchy_cube200k", BM_cgal_hierarchy))->MinTime(1.0);
   ms(benchmark::RegisterBenchmark("sampling/cgal/wlop_cube200k", BM_cgal_wlop))->Iterations(1);

@@ -182,7 +182,7 @@ int run_sample(const std::vector<std::string>& argv) {
 int run_sample_stats(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"periodic", "quiet"},
                        {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature",
-                        "spectrum", "max-frequency"});
+                        "spectrum", "max-frequency", "spectrum-method"});
   if (args.has("spectrum") && !args.has("periodic"))
     throw Usage_error("--spectrum needs --periodic (2D samples on the unit torus)");
   Outputs outputs(args, {"spectrum"});
@@ -198,6 +198,17 @@ int run_sample_stats(const std::vector<std::string>& argv) {
           "8.6 GB at 16384), got " +
           args.get("max-frequency"));
     spectrum_options.max_frequency = static_cast<std::size_t>(f);
+  }
+  if (args.has("spectrum-method")) {
+    if (!args.has("periodic"))
+      throw Usage_error("--spectrum-method needs --periodic (2D samples on the unit torus)");
+    const std::string m = args.get("spectrum-method");
+    if (m == "gridded")
+      spectrum_options.method = fs::Spectrum_method::gridded;
+    else if (m == "direct")
+      spectrum_options.method = fs::Spectrum_method::direct;
+    else if (m != "automatic")
+      throw Usage_error("--spectrum-method must be automatic, gridded or direct, got '" + m + "'");
   }
   const std::string input = args.get("input");
   fs::Sampling_quality_options o;
@@ -240,11 +251,13 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     throw Usage_error("--intrinsic-dimension " + std::to_string(o.intrinsic_dimension) +
                       " exceeds the dimension of the points of " + input + " (" + std::to_string(columns) +
                       ")");
-  if ((args.has("spectrum") || args.has("max-frequency")) && empty)
-    throw io::Input_error(input + ": no samples to take the spectrum of");
-  if ((args.has("spectrum") || args.has("max-frequency")) && columns != 2)
-    throw Usage_error("--spectrum and --max-frequency need 2-D samples on the unit torus; " + input +
-                      " has " + std::to_string(columns) + " numbers per line");
+  const bool spectrum_asked =
+      args.has("spectrum") || args.has("max-frequency") || args.has("spectrum-method");
+  if (spectrum_asked && empty) throw io::Input_error(input + ": no samples to take the spectrum of");
+  if (spectrum_asked && columns != 2)
+    throw Usage_error(
+        "--spectrum, --max-frequency and --spectrum-method need 2-D samples on the unit torus; " + input +
+        " has " + std::to_string(columns) + " numbers per line");
   if (empty) {
     q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
     q.domain_measure = o.domain_measure != 0 ? o.domain_measure : o.periodic ? 1.0 : 0.0;
@@ -332,7 +345,9 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   if (has_spectrum)
     os << ", \"effective_nyquist\": " << json_number(spectrum.effective_nyquist)
        << ", \"oscillation\": " << json_number(spectrum.oscillation) << ", \"oscillation_band\": ["
-       << json_number(spectrum.oscillation_from) << ", " << json_number(spectrum.oscillation_to) << "]";
+       << json_number(spectrum.oscillation_from) << ", " << json_number(spectrum.oscillation_to)
+       << "], \"spectrum_method\": "
+       << (spectrum.method == fs::Spectrum_method::direct ? "\"direct\"" : "\"gridded\"");
   os << "}\n";
   std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;

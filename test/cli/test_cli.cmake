@@ -593,6 +593,12 @@ expect_count(${WORK}/spectrum32.csv "\n" 34)
 expect(sample_stats_bad_frequency 2 "--max-frequency must be >= 1" sample-stats --input ${WORK}/torus.txt --periodic --max-frequency 0)
 expect(sample_stats_frequency_needs_torus 2 "--max-frequency needs --periodic" sample-stats --input ${WORK}/torus.txt --max-frequency 8)
 expect(sample_stats_spectrum_needs_torus 2 "--spectrum needs --periodic" sample-stats --input ${WORK}/torus.txt --spectrum ${WORK}/x.csv)
+# The sums' method: the non-uniform FFT by default for 256 samples at F = 96, the direct sums on request; the
+# library's tests compare the two.
+expect(sample_stats_spectrum_gridded 0 "\"spectrum_method\": \"gridded\"" sample-stats --input ${WORK}/torus.txt --periodic --quiet)
+expect(sample_stats_spectrum_direct 0 "\"spectrum_method\": \"direct\"" sample-stats --input ${WORK}/torus.txt --periodic --spectrum-method direct --quiet)
+expect(sample_stats_spectrum_bad_method 2 "--spectrum-method must be automatic, gridded or direct, got 'fft'" sample-stats --input ${WORK}/torus.txt --periodic --spectrum-method fft)
+expect(sample_stats_spectrum_method_needs_torus 2 "--spectrum-method needs --periodic" sample-stats --input ${WORK}/torus.txt --spectrum-method direct)
 # sample-image: a 48 x 48 grey PGM (ASCII) with a dark column one pixel wide, and a 4 x 3 colour PPM.
 set(pgm "P2\n48 48\n255\n")
 foreach(row RANGE 47)
@@ -975,7 +981,7 @@ file(WRITE ${WORK}/crop_tracks.txt "0 0 0 0\n0 1 0 1\n")
 expect(crop_tiny_interval 1 "the map's 62756.7 m of edges at interval 1e-300 would give more than 2\\^25 samples" evaluate-map ${DATA}/chicago_maps/chicago_gt_trk25_vertices.txt ${DATA}/chicago_maps/chicago_gt_trk25_edges.txt ${DATA}/chicago_maps/chicago_gt_trk25_vertices.txt ${DATA}/chicago_maps/chicago_gt_trk25_edges.txt --interval 1e-300 --crop-to-tracks ${WORK}/crop_tracks.txt)
 # sample-stats: the spectrum of 3-D samples is refused; an empty file is degenerate, not an error; the domain
 # measure printed is the one used.
-expect(sample_stats_spectrum_3d 2 "--spectrum and --max-frequency need 2-D samples on the unit torus; .*wall_plain.xyz has 3 numbers per line" sample-stats --input ${WORK}/wall_plain.xyz --periodic --spectrum ${WORK}/s3.csv)
+expect(sample_stats_spectrum_3d 2 "--spectrum, --max-frequency and --spectrum-method need 2-D samples on the unit torus; .*wall_plain.xyz has 3 numbers per line" sample-stats --input ${WORK}/wall_plain.xyz --periodic --spectrum ${WORK}/s3.csv)
 file(WRITE ${WORK}/nothing.txt "# no samples\n")
 expect(sample_stats_empty 0 "\"samples\": 0,.*\"relative_radius\": null, \"average_minimum_distance\": null, \"degenerate\": true" sample-stats --input ${WORK}/nothing.txt)
 # Spacing statistics of two kept points are undefined: null (they read 0, as if maximally clumped).

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "sampling/sampling_test_utilities.h"
+#include "test_utilities.h"
 
 #include <algorithm>
 #include <cmath>
@@ -531,6 +532,120 @@ TEST(SamplingSpectrum, AnisotropyUsesTheSampleVarianceOfTheAnnulus) {
   EXPECT_EQ(s.annulus_size[1], 8u);
   EXPECT_NEAR(s.radial_power[1], 0.5, 1e-12);
   EXPECT_NEAR(s.anisotropy[1], 10 * std::log10(24.0 / 7.0), 1e-9);
+}
+}  // namespace
+
+// The periodogram's two evaluations: the non-uniform FFT (gridded) against the direct sums and against closed
+// forms.
+namespace {
+using namespace FeatureRecon;
+using namespace FeatureRecon::sampling;
+using namespace FeatureRecon::test;
+
+double largest_difference(const sampling::internal::Periodogram_sums& a,
+                          const sampling::internal::Periodogram_sums& b) {
+  EXPECT_EQ(a.rows(), b.rows());
+  EXPECT_EQ(a.cols(), b.cols());
+  return (a - b).cwiseAbs().maxCoeff();
+}
+
+TEST(SamplingSpectrum, GriddedSumsAgreeWithTheDirectSums) {
+  // Awkward positions (in [0, 1), as sampling_spectrum() hands them over): both ends of the unit interval,
+  // points on the grid's lines (k / G), duplicates, and a cluster; every range of F, from grids smaller than
+  // the spreading Gaussian (F = 1: 8 cells, the Gaussian spans 24, so it wraps onto itself) to F = 150.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  sampling::internal::Torus_points p;
+  for (int i = 0; i < 400; ++i) p.push_back({u(rng), u(rng)});
+  for (int i = 0; i < 100; ++i) p.push_back({0.3 + 0.001 * u(rng), 0.7 + 0.001 * u(rng)});  // a cluster
+  p.push_back({0.0, 0.0});
+  p.push_back({0.0, 0.0});
+  p.push_back({std::nextafter(1.0, 0.0), 0.5});
+  p.push_back({0.5, std::nextafter(1.0, 0.0)});
+  for (const long F : {1L, 2L, 7L, 40L, 150L}) {
+    const double G = double(sampling::internal::periodogram_grid_size(F));
+    sampling::internal::Torus_points q = p;
+    for (int k = 0; k < 8; ++k) q.push_back({double(k) / G, double((3 * k + 1) % 8) / G});
+    sampling::internal::Periodogram_sums direct, gridded;
+    ASSERT_TRUE(sampling::internal::direct_periodogram_sums(q, F, direct, {}, 0, 1));
+    ASSERT_TRUE(sampling::internal::gridded_periodogram_sums(q, F, gridded, {}, 0, 1));
+    EXPECT_EQ(gridded.rows(), 2 * F + 1);
+    EXPECT_EQ(gridded.cols(), F + 1);
+    EXPECT_LT(largest_difference(gridded, direct), 2e-11 * double(q.size())) << "F = " << F;
+    EXPECT_NEAR(gridded(F, 0).real(), double(q.size()), 2e-11 * double(q.size()));  // DC: N
+  }
+}
+
+TEST(SamplingSpectrum, GriddedSumsOfTwoSamplesHaveTheirClosedForm) {
+  // Samples at (0, 0) and (0.5, 0.25): S(f) = 1 + exp(-i pi (f_x + f_y / 2)), so P(f) = |S|^2 / 2 = 1 +
+  // cos(pi (f_x + f_y / 2)), at every frequency of both methods.
+  const sampling::internal::Torus_points p{{0.0, 0.0}, {0.5, 0.25}};
+  const long F = 30;
+  for (const bool gridded : {false, true}) {
+    sampling::internal::Periodogram_sums sums;
+    ASSERT_TRUE(gridded ? sampling::internal::gridded_periodogram_sums(p, F, sums, {}, 0, 1)
+                        : sampling::internal::direct_periodogram_sums(p, F, sums, {}, 0, 1));
+    const double pi = 3.141592653589793238463;
+    for (long fx = -F; fx <= F; ++fx)
+      for (long fy = 0; fy <= F; ++fy)
+        ASSERT_NEAR(std::norm(sums(fx + F, fy)) / 2, 1 + std::cos(pi * (double(fx) + double(fy) / 2)), 1e-10)
+            << (gridded ? "gridded" : "direct") << " at (" << fx << ", " << fy << ")";
+  }
+}
+
+TEST(SamplingSpectrum, MethodsAgreeOnTheStatisticsAndTheChoiceIsReported) {
+  // 3000 samples at F = 60, and a lattice with its spikes: the radial power, anisotropy, nu_eff and Omega of
+  // both methods agree; the automatic method is direct for 10 samples (F = 19) and gridded for 1000 (F =
+  // 190).
+  std::vector<std::vector<Point_2>> sets{white_noise(3000, 5), {}};
+  for (int i = 0; i < 24; ++i)
+    for (int j = 0; j < 24; ++j) sets[1].emplace_back((i + 0.25) / 24, (j + 0.5) / 24 - 1);  // wraps
+  for (const auto& s : sets) {
+    Sampling_spectrum_options o;
+    o.max_frequency = 60;
+    o.method = Spectrum_method::direct;
+    const Sampling_spectrum d = sampling_spectrum(s, o);
+    o.method = Spectrum_method::gridded;
+    const Sampling_spectrum g = sampling_spectrum(s, o);
+    EXPECT_EQ(d.method, Spectrum_method::direct);
+    EXPECT_EQ(g.method, Spectrum_method::gridded);
+    ASSERT_EQ(g.radial_power.size(), d.radial_power.size());
+    for (std::size_t b = 0; b < d.radial_power.size(); ++b) {
+      EXPECT_NEAR(g.radial_power[b], d.radial_power[b], 1e-9 * (1 + d.radial_power[b])) << b;
+      if (d.radial_power[b] > 1e-6) {  // the lattice's empty annuli have anisotropy from rounding alone
+        EXPECT_NEAR(g.anisotropy[b], d.anisotropy[b], 1e-6) << b;
+      }
+    }
+    EXPECT_NEAR(g.effective_nyquist, d.effective_nyquist, 1e-9);
+    EXPECT_NEAR(g.oscillation, d.oscillation, 1e-9 * (1 + d.oscillation));
+  }
+  EXPECT_NEAR(sampling_spectrum(sets[1]).effective_nyquist, 1.0, 1.0 / 24);  // 576 samples: gridded
+  EXPECT_EQ(sampling_spectrum(white_noise(10, 1)).method, Spectrum_method::direct);
+  EXPECT_EQ(sampling_spectrum(white_noise(1000, 1)).method, Spectrum_method::gridded);
+  EXPECT_EQ(sampling_spectrum(white_noise(1, 1)).method, Spectrum_method::automatic);  // nothing evaluated
+}
+
+TEST(SamplingSpectrum, GriddedMethodReportsProgressStopsAndRepeatsItself) {
+  const std::vector<Point_2> p = white_noise(2000, 9);
+  Sampling_spectrum_options o;
+  o.method = Spectrum_method::gridded;
+  std::vector<double> seen;
+  o.progress = recording_progress(seen);
+  const Sampling_spectrum a = sampling_spectrum(p, o);
+  ASSERT_GT(seen.size(), 10u);
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  o.progress = {};
+  const Sampling_spectrum b = sampling_spectrum(p, o);  // bit for bit the same
+  EXPECT_EQ(a.radial_power, b.radial_power);
+  EXPECT_EQ(a.anisotropy, b.anisotropy);
+  for (const double stop_at : {0.5, 0.9}) {  // in the spreading, in the columns' transforms
+    o.progress = [stop_at](double t) { return t < stop_at; };
+    const Sampling_spectrum c = sampling_spectrum(p, o);
+    EXPECT_EQ(c.status, Status::interrupted) << stop_at;
+    EXPECT_TRUE(c.radial_power.empty());
+  }
 }
 }  // namespace
 
