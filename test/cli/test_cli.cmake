@@ -812,6 +812,9 @@ endif()
 # synthetic-city names the option of a bad value (exit 2), not the library's field.
 expect(synthetic_city_interval 2 "--interval must be > 0, got '0'" synthetic-city --interval 0 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_bias 2 "--bias must be >= 0, got '-1'" synthetic-city --bias -1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+# A jitter or lane offset beyond half a block (a jitter of 1e5 m made 3.7 million fixes on crossing streets).
+expect(synthetic_city_jitter 2 "jitter must be at most half the shorter of block_width and block_height \\(45\\), got 100000.*block_width is --block-width, block_height is --block-height" synthetic-city --jitter 1e5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_lane_offset 2 "lane_offset must be at most half .*\\(30\\), got 31.*lane_offset is --lane-offset" synthetic-city --lane-offset 31 --block-height 60 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 # A corrupt header does not ask for 4e9 vertices of memory.
 file(WRITE ${WORK}/huge_n.txt "4000000000 0\n")
 expect(complex_huge_header 1 "huge_n.txt: unexpected end of file after 0 of 4000000000 vertex lines" reeb --complex ${WORK}/huge_n.txt --json)
@@ -998,7 +1001,7 @@ file(WRITE ${WORK}/far_graph.txt "3 2\n0 0 0 0\n1e200 0 0 1\n2e200 0 0 2\n0 1\n1
 expect(graph_huge_coordinates 0 "\"nodes\": 2, \"arcs\": 1" skeleton --graph ${WORK}/far_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 file(WRITE ${WORK}/too_far_graph.txt "2 1\n-1.5e308 0 0 0\n1.5e308 0 0 1\n0 1\n")
 expect(graph_length_overflow 1 "too_far_graph.txt: the edge between points 0 and 1 is longer than the largest double" skeleton --graph ${WORK}/too_far_graph.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
-expect(synthetic_city_huge_organic 2 "beyond the largest double: block_width or block_height too large" synthetic-city --layout organic --block-width 1e308 --block-height 1 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_huge_organic 2 "beyond the largest double: block_width or block_height too large" synthetic-city --layout organic --block-width 1e308 --block-height 1 --lane-offset 0 --trips 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(sample_stats_empty_measure 0 "\"samples\": 0,.*\"domain_measure\": 5," sample-stats --input ${WORK}/nothing.txt --domain-measure 5)
 expect(sample_stats_empty_spectrum 1 "nothing.txt: no samples to take the spectrum of" sample-stats --input ${WORK}/nothing.txt --periodic --spectrum ${WORK}/s0.csv)
 # sample-stats on a flat 10 x 10 grid in space (spacing 1): an XYZ file is a cloud as `sample` reads it, the same

@@ -736,6 +736,33 @@ TEST(SyntheticCity, StreetsAndTrips) {
   b.noise = 4;
   b.trip_bias = 1e308;
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("trip_bias (1e+308)"), std::string::npos);
+  // Jitter and lane offset up to half the shorter block side (90 / 2): the intersections keep their order
+  // (checked at the largest jitter allowed), a lane its side of the street; beyond, refused naming both.
+  b = {};
+  b.trips = 2;
+  b.jitter = 45;
+  b.lane_offset = 45;
+  const Synthetic_city widest = make_synthetic_city(b);
+  for (std::size_t j = 0; j < b.rows; ++j)
+    for (std::size_t i = 0; i + 1 < b.columns; ++i) {
+      const std::size_t v = j * b.columns + i, w = j * b.columns + i + 1, u = (j + 1) * b.columns + i;
+      EXPECT_LT(widest.streets.positions[v][0], widest.streets.positions[w][0]) << i << ", " << j;
+      if (j + 1 < b.rows) {
+        EXPECT_LT(widest.streets.positions[v][1], widest.streets.positions[u][1]) << i << ", " << j;
+      }
+    }
+  b.jitter = 45.5;  // 1e5 made 3.7 million fixes on streets that crossed
+  EXPECT_EQ(message_of([&] { make_synthetic_city(b); }),
+            "make_synthetic_city: jitter must be at most half the shorter of block_width and block_height "
+            "(45), got 45.5: "
+            "intersections would pass each other and streets cross");
+  b.layout = Synthetic_city_layout::organic;  // no jitter there
+  EXPECT_EQ(make_synthetic_city(b).status, Status::success);
+  b.lane_offset = 1e5;
+  EXPECT_EQ(message_of([&] { make_synthetic_city(b); }),
+            "make_synthetic_city: lane_offset must be at most half the shorter of block_width and "
+            "block_height (45), got 100000: "
+            "the lanes would lie nearer the parallel streets");
   // A huge rotation is a rotation (1e308 degrees times pi overflowed: every intersection was NaN).
   b = {};
   b.trips = 3;

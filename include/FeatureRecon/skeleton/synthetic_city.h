@@ -52,7 +52,9 @@ struct Synthetic_city_options {
   double block_width = 120;  ///< spacing of the intersections along a row; default 120
   double block_height = 90;  ///< spacing along a column; default 90
   double rotation = 0;       ///< of the whole grid, degrees; default 0
-  double jitter = 10;  ///< grid: each intersection moves uniformly within +-jitter in x and y; default 10
+  /// grid: each intersection moves uniformly within +-jitter in x and y, at most half the shorter block side
+  /// (intersections keep their order); default 10
+  double jitter = 10;
   double missing_streets = 0.1;  ///< fraction of streets removed, keeping the network connected; default 0.1
   bool diagonal = true;          ///< grid: a diagonal avenue through the intersections (i, i); default true
   /// Each street bends as a parabola whose middle lies up to curvature x its length (uniformly, either side)
@@ -64,8 +66,9 @@ struct Synthetic_city_options {
   double speed = 10;        ///< mean driving speed; each trip drives at 0.7 to 1.3 times it; default 10
   double sampling_interval = 3.6;  ///< time between fixes (the first one at a random phase); default 3.6
   double noise = 4;                ///< standard deviation of the noise of each coordinate of a fix; default 4
-  double trip_bias = 2;    ///< standard deviation of a constant offset per trip and coordinate; default 2
-  double lane_offset = 2;  ///< vehicles drive this far right of the centre line; default 2
+  double trip_bias = 2;  ///< standard deviation of a constant offset per trip and coordinate; default 2
+  /// vehicles drive this far right of the centre line, at most half the shorter block side; default 2
+  double lane_offset = 2;
   std::uint64_t seed = 1;  ///< default 1
   /// Fraction done: the street layout counts for the first 5 % (the organic layout reports every 65536
   /// darts), then one report before each trip. Returning false stops: the trips made so far are kept,
@@ -168,7 +171,8 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
 /// Builds a synthetic city and its GPS trips (see the file comment).
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or
 /// non-finite
-///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a missing
+///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a jitter
+///         (grid layout) or lane offset above half the shorter block side, a missing
 ///         fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24 intersections or 2^31
 ///         street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge
 ///         noise, bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
@@ -196,6 +200,17 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   non_negative(o.trip_bias, "trip_bias");
   non_negative(o.jitter, "jitter");
   non_negative(o.lane_offset, "lane_offset");
+  // An intersection that may move farther than half a block can pass its neighbour: streets would cross
+  // without a junction. A lane as far off the centre line lies nearer the parallel street than its own.
+  const double half_block = std::min(o.block_width, o.block_height) / 2;
+  if (o.layout == Synthetic_city_layout::grid && o.jitter > half_block)
+    throw_invalid_argument(fn, "jitter must be at most half the shorter of block_width and block_height (",
+                           half_block, "), got ", o.jitter,
+                           ": intersections would pass each other and streets cross");
+  if (o.lane_offset > half_block)
+    throw_invalid_argument(
+        fn, "lane_offset must be at most half the shorter of block_width and block_height (", half_block,
+        "), got ", o.lane_offset, ": the lanes would lie nearer the parallel streets");
   if (!std::isfinite(o.rotation)) throw_invalid_argument(fn, "rotation must be finite, got ", o.rotation);
   if (!(o.missing_streets >= 0 && o.missing_streets <= 1))
     throw_invalid_argument(fn, "missing_streets must be in [0, 1], got ", o.missing_streets);
