@@ -4,7 +4,8 @@
 #define FEATURERECON_SRC_IO_POINT_CLOUD_IO_H
 
 // 3D point clouds with optional normals: PLY (ASCII or binary), OFF (vertices; NOFF for normals) and XYZ
-// (x y z [nx ny nz] per line), through CGAL's point-set I/O.
+// (x y z [nx ny nz] per line), read through CGAL's point-set I/O and written as ASCII with the shortest
+// round-trip digits.
 
 #include <array>
 #include <cstddef>
@@ -37,7 +38,8 @@ struct Point_cloud {
 Point_cloud read_point_cloud(const std::string& path, bool allow_empty = false);
 
 /// Writes the points `indices` of `cloud` (with normals when it has them, and colours in PLY) as PLY (ASCII),
-/// OFF (NOFF with normals) or XYZ by the extension of `path`, with 17 significant digits.
+/// OFF (NOFF with normals) or XYZ by the extension of `path`, each number with the fewest significant digits
+/// (15 to 17) that read back as the same double.
 void write_point_cloud(const std::string& path, const Point_cloud& cloud,
                        const std::vector<std::size_t>& indices);
 
