@@ -48,6 +48,9 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::vector<std
             throw Usage_error("option --" + name + " needs a value, got the option '" + args[i + 1] + "'");
           value = args[++i];
         }
+        // "--out=" or "--out ''" (an unset shell variable): every valued option needs a value; a file name
+        // that is empty was reported as, e.g., "give a file ending in .svg, got ''".
+        if (value.empty()) throw Usage_error("option --" + name + " needs a value, got an empty one");
         m_values[name] = value;
       } else {
         throw Usage_error("unknown option '" + a + "'");
@@ -141,7 +144,6 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
   for (const std::string& name : options) {
     if (!args.has(name)) continue;
     const std::string path = args.get(name);
-    if (path.empty()) throw Usage_error("--" + name + " needs a file name");
     m_targets[name] = path;
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))

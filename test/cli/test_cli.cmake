@@ -766,7 +766,7 @@ file(REMOVE ${WORK}/io_v.txt)
 expect(output_directory_missing 2 "--out-edges: the directory .*/no_such_dir of .* does not exist" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/io_v.txt --out-edges ${WORK}/no_such_dir/e.txt --quiet)
 expect(output_is_directory 2 "--svg: .*a_directory is a directory" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/io_v.txt --out-edges ${WORK}/io_e.txt --svg ${WORK}/a_directory --quiet)
 expect(output_twice 2 "--out-edges: .*io_v.txt is also written by --out-vertices" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${WORK}/io_v.txt --out-edges ${WORK}/io_v.txt --quiet)
-expect(output_empty_name 2 "--out-vertices needs a file name" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices= --out-edges ${WORK}/io_e.txt --quiet)
+expect(output_empty_name 2 "option --out-vertices needs a value, got an empty one" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices= --out-edges ${WORK}/io_e.txt --quiet)
 if(EXISTS ${WORK}/io_v.txt)
   message(SEND_ERROR "output checks: a vertices file was written by a run that failed")
 endif()
@@ -812,6 +812,9 @@ endif()
 # synthetic-city names the option of a bad value (exit 2), not the library's field.
 expect(synthetic_city_interval 2 "--interval must be > 0, got '0'" synthetic-city --interval 0 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_bias 2 "--bias must be >= 0, got '-1'" synthetic-city --bias -1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+# An empty value (--out=, or --out "$UNSET") is refused as a missing one, for every valued option.
+expect(empty_value_inline 2 "option --out needs a value, got an empty one" stipple ${WORK}/line.pgm --count 40 --out=)
+expect(empty_value_number 2 "option --radius needs a value, got an empty one" rips --points ${DATA}/figure_eight.xyz --radius= --out ${WORK}/x.txt)
 # A jitter or lane offset beyond half a block (a jitter of 1e5 m made 3.7 million fixes on crossing streets).
 expect(synthetic_city_jitter 2 "jitter must be at most half the shorter of block_width and block_height \\(45\\), got 100000.*block_width is --block-width, block_height is --block-height" synthetic-city --jitter 1e5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_lane_offset 2 "lane_offset must be at most half .*\\(30\\), got 31.*lane_offset is --lane-offset" synthetic-city --lane-offset 31 --block-height 60 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
