@@ -246,7 +246,7 @@ struct Sampling_spectrum_options {
   /// Largest integer frequency per axis of the periodogram. Default 0: 6 sqrt(N) (rounded up), that is 12 in
   /// units of sqrt(N)/2, which holds the oscillation band of Heck et al. (10 units from where the power first
   /// reaches 1) for every set whose power reaches 1 below 2 units (any blue-noise set). At most 16384: the
-  /// periodogram holds (2 F + 1)(F + 1) complex sums (8.6 GB at 16384; the gridded method needs about 2.5
+  /// periodogram holds (2 F + 1)(F + 1) complex sums (8.6 GB at 16384; the gridded method needs about 3
   /// times that).
   std::size_t max_frequency = 0;
   /// Level of the mean power over a disc of frequencies that ends the zero region (Heck et al.: 0.1, -10 dB).
@@ -379,7 +379,7 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 /// 2D sample set taken on the unit torus, its radial average and anisotropy over annuli of width 1, the
 /// effective Nyquist frequency and the oscillation. By default (`Spectrum_method::automatic`) the sums go
 /// through a non-uniform FFT whenever that is faster (from about 200 samples at the default F): O(N + F^2
-/// log F) time and about 2.5 times the sums' (2 F + 1)(F + 1) complex numbers of memory, 1.9 s for 10^5
+/// log F) time and about 3 times the sums' (2 F + 1)(F + 1) complex numbers of memory, 1.9 s for 10^5
 /// samples at F = 1898 where the direct O(N F^2) sums take minutes; both agree to about 1e-11 N.
 /// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
