@@ -816,7 +816,7 @@ expect(synthetic_city_bias 2 "--bias must be >= 0, got '-1'" synthetic-city --bi
 expect(empty_value_inline 2 "option --out needs a value, got an empty one" stipple ${WORK}/line.pgm --count 40 --out=)
 expect(empty_value_number 2 "option --radius needs a value, got an empty one" rips --points ${DATA}/figure_eight.xyz --radius= --out ${WORK}/x.txt)
 # A jitter or lane offset beyond half a block (a jitter of 1e5 m made 3.7 million fixes on crossing streets).
-expect(synthetic_city_jitter 2 "jitter must be at most half the shorter of block_width and block_height \\(45\\), got 100000.*block_width is --block-width, block_height is --block-height" synthetic-city --jitter 1e5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
+expect(synthetic_city_jitter 2 "jitter must be at most 25\\.7143 \\(block_width x block_height / \\(2 \\(block_width \\+ block_height\\)\\), with the diagonal avenue\\), got 100000.*block_width is --block-width, block_height is --block-height" synthetic-city --jitter 1e5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_lane_offset 2 "lane_offset must be at most half .*\\(30\\), got 31.*lane_offset is --lane-offset" synthetic-city --lane-offset 31 --block-height 60 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 # A corrupt header does not ask for 4e9 vertices of memory.
 file(WRITE ${WORK}/huge_n.txt "4000000000 0\n")

@@ -52,8 +52,9 @@ struct Synthetic_city_options {
   double block_width = 120;  ///< spacing of the intersections along a row; default 120
   double block_height = 90;  ///< spacing along a column; default 90
   double rotation = 0;       ///< of the whole grid, degrees; default 0
-  /// grid: each intersection moves uniformly within +-jitter in x and y, at most half the shorter block side
-  /// (intersections keep their order); default 10
+  /// grid: each intersection moves uniformly within +-jitter in x and y; at most half the shorter block side
+  /// (intersections keep their order), with the diagonal avenue at most w h / (2 (w + h)) of the block sides
+  /// w and h (25.7 m for the default blocks: the avenue crosses no street); default 10
   double jitter = 10;
   double missing_streets = 0.1;  ///< fraction of streets removed, keeping the network connected; default 0.1
   bool diagonal = true;          ///< grid: a diagonal avenue through the intersections (i, i); default true
@@ -172,7 +173,8 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or
 /// non-finite
 ///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a jitter
-///         (grid layout) or lane offset above half the shorter block side, a missing
+///         (grid layout) that lets streets cross (see `jitter`), a lane offset above half the shorter block
+///         side, a missing
 ///         fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24 intersections or 2^31
 ///         street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge
 ///         noise, bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
@@ -201,12 +203,20 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   non_negative(o.jitter, "jitter");
   non_negative(o.lane_offset, "lane_offset");
   // An intersection that may move farther than half a block can pass its neighbour: streets would cross
-  // without a junction. A lane as far off the centre line lies nearer the parallel street than its own.
+  // without a junction. With the diagonal avenue, the corners (i + 1, i) and (i, i + 1) of a block lie w h /
+  // sqrt(w^2 + h^2) from its diagonal, and a jitter J moves the corner and the diagonal towards each other by
+  // up to 2 J (w + h) / sqrt(w^2 + h^2): below w h / (2 (w + h)) the avenue crosses no street. A lane as far
+  // off the centre line as half a block lies nearer the parallel street than its own.
   const double half_block = std::min(o.block_width, o.block_height) / 2;
-  if (o.layout == Synthetic_city_layout::grid && o.jitter > half_block)
-    throw_invalid_argument(fn, "jitter must be at most half the shorter of block_width and block_height (",
-                           half_block, "), got ", o.jitter,
-                           ": intersections would pass each other and streets cross");
+  const bool avenue = o.layout == Synthetic_city_layout::grid && o.diagonal;
+  const double max_jitter =
+      avenue ? o.block_width * o.block_height / (2 * (o.block_width + o.block_height)) : half_block;
+  if (o.layout == Synthetic_city_layout::grid && o.jitter > max_jitter)
+    throw_invalid_argument(
+        fn, "jitter must be at most ", max_jitter,
+        avenue ? " (block_width x block_height / (2 (block_width + block_height)), with the diagonal avenue)"
+               : " (half the shorter of block_width and block_height)",
+        ", got ", o.jitter, ": intersections would pass each other and streets cross");
   if (o.lane_offset > half_block)
     throw_invalid_argument(
         fn, "lane_offset must be at most half the shorter of block_width and block_height (", half_block,
