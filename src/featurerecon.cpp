@@ -471,7 +471,7 @@ const std::vector<Command>& commands() {
        "at\n"
        "                           the default (a non-uniform FFT)\n"
        "  --spectrum-method M      with --periodic: automatic (default), gridded (the non-uniform FFT, to\n"
-       "                           about 1e-11 N) or direct (every exponential summed, O(N F^2) time)\n"
+       "                           about 2e-11 N) or direct (every exponential summed, O(N F^2) time)\n"
        "  --spectrum CSV           with --periodic: write frequency, radial_power, anisotropy_db per "
        "annulus\n"
        "  --sigma-position S       spatial scale of the bilateral distance (default 1)\n"

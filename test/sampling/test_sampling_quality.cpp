@@ -593,6 +593,54 @@ TEST(SamplingSpectrum, GriddedSumsOfTwoSamplesHaveTheirClosedForm) {
   }
 }
 
+TEST(SamplingSpectrum, GriddedSumsOfOneClusteredPointAtHighFrequencies) {
+  // 50 samples at one point: S(f) = 50 exp(-2 pi i f . p) exactly, the gridded method's worst case (every
+  // sample's spreading error adds up); at F = 400 within 3e-11 N of it everywhere, corners included.
+  const sampling::internal::Torus_points p(50, {0.3183098861837907, 0.7071067811865476});
+  const long F = 400;
+  sampling::internal::Periodogram_sums sums;
+  ASSERT_TRUE(sampling::internal::gridded_periodogram_sums(p, F, sums, {}, 0, 1));
+  const double two_pi = 6.283185307179586476925;
+  double worst = 0;
+  for (long fx = -F; fx <= F; ++fx)
+    for (long fy = 0; fy <= F; ++fy) {
+      const std::complex<double> exact =
+          50.0 * std::polar(1.0, -two_pi * (double(fx) * p[0][0] + double(fy) * p[0][1]));
+      worst = std::max(worst, std::abs(sums(fx + F, fy) - exact));
+    }
+  EXPECT_LT(worst, 3e-11 * 50);
+  EXPECT_GT(worst, 0.0);  // not the direct sums by mistake: those are exact to rounding, ~1e-13 here
+}
+
+TEST(SamplingSpectrum, BothMethodsReportProgressOftenWhereOneStepIsLong) {
+  // Direct sums at F = 1000 take 2 million multiply-adds a sample: blocks of 49 samples, not 256 (one report
+  // for 100 samples); the gridded method at F = 2 has a grid of 24 rows, one report by rows, and reports
+  // every 65,536 samples spread as well (100,000 samples reach 24 rows each: 36 reports).
+  std::vector<double> seen;
+  sampling::internal::Torus_points few;
+  for (int i = 0; i < 100; ++i) few.push_back({0.01 * i, 0.5});
+  sampling::internal::Periodogram_sums sums;
+  ASSERT_TRUE(sampling::internal::direct_periodogram_sums(few, 1000, sums, recording_progress(seen), 0, 1));
+  EXPECT_EQ(seen.size(), 3u);  // at samples 0, 49, 98
+  seen.clear();
+  sampling::internal::Torus_points many(100000, {0.25, 0.75});
+  ASSERT_TRUE(sampling::internal::gridded_periodogram_sums(many, 2, sums, recording_progress(seen), 0, 1));
+  EXPECT_GE(seen.size(), 36u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+}
+
+TEST(SamplingSpectrum, DefaultFrequencyIsRefusedAboveTheLimit) {
+  // 6 sqrt(N) rounded up reaches 16384 at N = 7,456,540 and passes it one sample later: refused, naming the
+  // option to give; a given max_frequency is taken as it is.
+  EXPECT_EQ(sampling::internal::spectrum_frequency(7456540, 0, "f"), 16384);
+  expect_invalid_argument(
+      [] { sampling::internal::spectrum_frequency(7456541, 0, "f"); },
+      "f: the default max_frequency 6 sqrt(N) is 16385 for 7456541 samples, above the limit "
+      "16384: give max_frequency");
+  EXPECT_EQ(sampling::internal::spectrum_frequency(7456541, 100, "f"), 100);
+  EXPECT_EQ(sampling::internal::spectrum_frequency(10, 0, "f"), 19);
+}
+
 TEST(SamplingSpectrum, MethodsAgreeOnTheStatisticsAndTheChoiceIsReported) {
   // 3000 samples at F = 60, and a lattice with its spikes: the radial power, anisotropy, nu_eff and Omega of
   // both methods agree; the automatic method is direct for 10 samples (F = 19) and gridded for 1000 (F =

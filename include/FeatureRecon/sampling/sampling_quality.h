@@ -237,7 +237,7 @@ enum class Spectrum_method {
               ///< samples at the default F)
   direct,     ///< every exponential summed: O(N F^2), exact to rounding
   /// a non-uniform FFT (Gaussian gridding on a grid twice as fine, Greengard and Lee 2004): O(N + F^2 log F),
-  /// the sums to about 1e-11 N
+  /// the sums to about 2e-11 N (clustered samples; 2e-13 N spread)
   gridded
 };
 
@@ -287,6 +287,17 @@ namespace internal {
 inline void check_spectrum_threshold(double threshold, const char* fn) {
   if (!(threshold > 0 && threshold < 0.5))  // 0.5 is the level that ends the search for the zero region
     FeatureRecon::internal::throw_invalid_argument(fn, "threshold must lie in (0, 0.5), got ", threshold);
+}
+
+/// The largest frequency F of a periodogram of n samples: `max_frequency`, or by default 6 sqrt(n) rounded
+/// up, refused above 16384 (more than 7,456,540 samples; sums of 11 GB and more).
+inline long spectrum_frequency(std::size_t n, std::size_t max_frequency, const char* fn) {
+  if (max_frequency != 0) return static_cast<long>(max_frequency);  // checked by the caller
+  const long F = static_cast<long>(std::ceil(6 * std::sqrt(double(n))));
+  if (F > 16384)
+    FeatureRecon::internal::throw_invalid_argument(fn, "the default max_frequency 6 sqrt(N) is ", F, " for ",
+                                                   n, " samples, above the limit 16384: give max_frequency");
+  return F;
 }
 
 /// Effective Nyquist frequency and oscillation (Heck, Schloemer and Deussen 2013) from the radial power and
@@ -380,11 +391,11 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 /// effective Nyquist frequency and the oscillation. By default (`Spectrum_method::automatic`) the sums go
 /// through a non-uniform FFT whenever that is faster (from about 200 samples at the default F): O(N + F^2
 /// log F) time and about 3 times the sums' (2 F + 1)(F + 1) complex numbers of memory, 1.9 s for 10^5
-/// samples at F = 1898 where the direct O(N F^2) sums take minutes; both agree to about 1e-11 N.
+/// samples at F = 1898 where the direct O(N F^2) sums take minutes; both agree to about 2e-11 N.
 /// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), a threshold outside (0, 0.5)
-///   or a max_frequency above 16384.
+///   or a max_frequency above 16384 (given, or the default for more than 7.4 million samples).
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spectrum_options& options = {},
                                     const Traits& traits = Traits()) {
@@ -405,8 +416,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
     result.status = Status::degenerate_input;
     return result;
   }
-  const long F = options.max_frequency != 0 ? static_cast<long>(options.max_frequency)
-                                            : static_cast<long>(std::ceil(6 * std::sqrt(double(n))));
+  const long F = internal::spectrum_frequency(n, options.max_frequency, fn);
   internal::Torus_points torus(n);
   for (std::size_t k = 0; k < n; ++k)
     for (int a = 0; a < 2; ++a) {
