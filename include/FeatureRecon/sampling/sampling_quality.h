@@ -246,8 +246,8 @@ struct Sampling_spectrum_options {
   /// Largest integer frequency per axis of the periodogram. Default 0: 6 sqrt(N) (rounded up), that is 12 in
   /// units of sqrt(N)/2, which holds the oscillation band of Heck et al. (10 units from where the power first
   /// reaches 1) for every set whose power reaches 1 below 2 units (any blue-noise set). At most 16384: the
-  /// periodogram holds (2 F + 1)(F + 1) complex sums (8.6 GB at 16384; the gridded method needs about 3
-  /// times that).
+  /// periodogram holds (2 F + 1)(F + 1) complex sums (8.6 GB at 16384; the gridded method needs about
+  /// twice that).
   std::size_t max_frequency = 0;
   /// Level of the mean power over a disc of frequencies that ends the zero region (Heck et al.: 0.1, -10 dB).
   double threshold = 0.1;
@@ -390,7 +390,7 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 /// 2D sample set taken on the unit torus, its radial average and anisotropy over annuli of width 1, the
 /// effective Nyquist frequency and the oscillation. By default (`Spectrum_method::automatic`) the sums go
 /// through a non-uniform FFT whenever that is faster (from about 200 samples at the default F): O(N + F^2
-/// log F) time and about 3 times the sums' (2 F + 1)(F + 1) complex numbers of memory, 1.9 s for 10^5
+/// log F) time and about twice the sums' (2 F + 1)(F + 1) complex numbers of memory, 1.9 s for 10^5
 /// samples at F = 1898 where the direct O(N F^2) sums take minutes; both agree to about 2e-11 N.
 /// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
@@ -426,14 +426,15 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
   result.method = options.method != Spectrum_method::automatic    ? options.method
                   : internal::gridded_periodogram_is_faster(n, F) ? Spectrum_method::gridded
                                                                   : Spectrum_method::direct;
-  internal::Periodogram_sums sums;
+  internal::Periodogram_sums storage;  // the sums in its first 2F + 1 rows
   const bool finished = result.method == Spectrum_method::direct
-                            ? internal::direct_periodogram_sums(torus, F, sums, options.progress, 0, 1)
-                            : internal::gridded_periodogram_sums(torus, F, sums, options.progress, 0, 1);
+                            ? internal::direct_periodogram_sums(torus, F, storage, options.progress, 0, 1)
+                            : internal::gridded_periodogram_sums(torus, F, storage, options.progress, 0, 1);
   if (!finished) {
     result.status = Status::interrupted;
     return result;
   }
+  const auto sums = storage.topRows(2 * F + 1);
   // Radial statistics over annuli |f| in [k - 1/2, k + 1/2).
   const std::size_t bins = std::size_t(F) + 1;
   std::vector<double> sum(bins, 0.0), sum2(bins, 0.0), count(bins, 0.0);

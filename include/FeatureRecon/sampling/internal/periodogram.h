@@ -21,7 +21,8 @@ namespace internal {
 /// \cond
 
 /// The sums S(fx, fy) = sum_k exp(-2 pi i (fx x_k + fy y_k)) of a periodogram, for fx in [-F, F] (row fx + F)
-/// and fy in [0, F] (column fy); P(-f) = P(f) gives the other half.
+/// and fy in [0, F] (column fy); P(-f) = P(f) gives the other half. The gridded method leaves them in the
+/// first 2F + 1 rows of a taller matrix.
 using Periodogram_sums = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic>;
 
 /// Positions taken modulo 1, in [0, 1).
@@ -79,9 +80,11 @@ inline long periodogram_grid_size(long F) { return fft_friendly_size(2 * (2 * F 
 /// transform", SIAM Review 46, 2004): every sample is spread onto a periodic grid of G >= 2 (2F + 2) cells
 /// per axis by a Gaussian of `periodogram_spreading_cells` cells on either side, the grid is transformed
 /// (Eigen's FFT, rows then columns) and the Gaussian's transform divided out. O(N 24^2 + G^2 log G) time, G
-/// (F + 1) complex numbers beside the sums; agrees with the direct sums to about 2e-11 N (worst at the
-/// corners of the frequency square for clustered samples; about 2e-13 N for spread ones). The grid is spread
-/// row by row (the samples sorted by row), so the real grid is never held whole.
+/// (F + 1) complex numbers in all, about twice the sums' size: the sums are left in the first 2F + 1 rows of
+/// `sums`, which has G rows. Agrees with the direct sums to about 2e-11 N (worst at the corners of the
+/// frequency square for clustered samples; about 2e-13 N for spread ones). The grid is spread row by row
+/// (the samples sorted by row), so the real grid is never held whole. Grid rows follow the samples' x, and
+/// each row is transformed along y first (frequencies 0 .. F kept), then each column along x, in place.
 inline bool gridded_periodogram_sums(const Torus_points& points, long F, Periodogram_sums& sums,
                                      const Progress_callback& progress, double from, double to) {
   const std::size_t n = points.size();
@@ -104,7 +107,8 @@ inline bool gridded_periodogram_sums(const Torus_points& points, long F, Periodo
   std::vector<std::size_t> first(static_cast<std::size_t>(G) + 1, 0), order(n);
   for (std::size_t k = 0; k < n; ++k) {
     Spread& s = spread[k];
-    const double X = two_pi * points[k][0], Y = two_pi * points[k][1];
+    // The code's x is the samples' y: the rows' transforms keep f_y in [0, F], the columns' give f_x.
+    const double X = two_pi * points[k][1], Y = two_pi * points[k][0];
     s.cell_x = std::min(G - 1, static_cast<long>(std::floor(X / h)));
     s.cell_y = std::min(G - 1, static_cast<long>(std::floor(Y / h)));
     const double dx = X - double(s.cell_x) * h, dy = Y - double(s.cell_y) * h;
@@ -135,7 +139,8 @@ inline bool gridded_periodogram_sums(const Torus_points& points, long F, Periodo
   };
   Eigen::FFT<double> fft;
   fft.SetFlag(Eigen::FFT<double>::HalfSpectrum);
-  Periodogram_sums half(G, F + 1);  // row y of the grid transformed along x, frequencies 0 .. F
+  Periodogram_sums& half = sums;  // row y of the grid transformed along x, frequencies 0 .. F
+  half.resize(G, F + 1);
   std::vector<double> row(static_cast<std::size_t>(G));
   std::vector<std::complex<double>> row_transform(static_cast<std::size_t>(G / 2 + 1));
   std::vector<double> wx(static_cast<std::size_t>(2 * S)), wy(static_cast<std::size_t>(2 * S));
@@ -167,21 +172,17 @@ inline bool gridded_periodogram_sums(const Torus_points& points, long F, Periodo
     fft.fwd(row_transform.data(), row.data(), G);
     for (long fx = 0; fx <= F; ++fx) half(y, fx) = row_transform[std::size_t(fx)];
   }
-  sums = Periodogram_sums::Zero(2 * F + 1, F + 1);
   std::vector<std::complex<double>> column(static_cast<std::size_t>(G));
   const double scale = pi / tau / (double(G) * double(G));
-  for (long fx = 0; fx <= F; ++fx) {
+  for (long fx = 0; fx <= F; ++fx) {  // the code's fx is the samples' f_y, its fy their f_x
     if (fx % 16 == 0 &&
         !FeatureRecon::internal::report_progress(
             progress, from + (to - from) * (spreading + (1 - spreading) * double(fx) / double(F + 1))))
       return false;
     fft.fwd(column.data(), half.col(fx).data(), G);
-    for (long fy = -F; fy <= F; ++fy) {
-      const std::complex<double> t =
+    for (long fy = -F; fy <= F; ++fy)  // rows 0 .. 2F of the column, in place
+      half(fy + F, fx) =
           column[std::size_t((fy + G) % G)] * (scale * std::exp(double(fx * fx + fy * fy) * tau));
-      if (fy >= 0) sums(fx + F, fy) = t;
-      if (fy <= 0 && fx > 0) sums(F - fx, -fy) = std::conj(t);
-    }
   }
   return true;
 }
