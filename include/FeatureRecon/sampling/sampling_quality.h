@@ -390,7 +390,7 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 /// 2D sample set taken on the unit torus, its radial average and anisotropy over annuli of width 1, the
 /// effective Nyquist frequency and the oscillation. By default (`Spectrum_method::automatic`) the sums go
 /// through a non-uniform FFT whenever that is faster (from about 200 samples at the default F): O(N + F^2
-/// log F) time and about twice the sums' (2 F + 1)(F + 1) complex numbers of memory, 1.9 s for 10^5
+/// log F) time and about twice the sums' (2 F + 1)(F + 1) complex numbers of memory, 1.6 s for 10^5
 /// samples at F = 1898 where the direct O(N F^2) sums take minutes; both agree to about 2e-11 N.
 /// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
