@@ -12,6 +12,7 @@
 #include <FeatureRecon/traits.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -62,9 +63,49 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   std::vector<std::uint32_t> accepted;
   const double largest = o.radii.empty() ? radius : *std::max_element(o.radii.begin(), o.radii.end());
   interrupted = false;
+  // On the unit torus (o.periodic) the grid holds the positions modulo 1; a position within the reach of a
+  // face of the cell is also looked up shifted by -1 or +1 along that axis (every combination of such
+  // shifts), and distances take the nearest image of each coordinate difference, for any reach.
+  std::vector<std::array<double, D>> wrapped;
+  if (o.periodic) {
+    wrapped = S.positions;
+    for (auto& p : wrapped)
+      for (int k = 0; k < D; ++k) {
+        p[k] -= std::floor(p[k]);
+        if (!(p[k] < 1)) p[k] = 0;  // -1e-20 wraps to 1.0 in floating point: the same point
+      }
+  }
+  const auto& where = o.periodic ? wrapped : S.positions;
+  const auto squared_distance = [&](std::uint32_t i, std::uint32_t j) {
+    if (!o.periodic) return S.squared_distance(i, j);
+    double sum = 0;
+    for (int k = 0; k < D; ++k) {
+      double d = std::abs(wrapped[i][k] - wrapped[j][k]);
+      d = std::min(d, 1 - d);
+      sum += d * d;
+    }
+    return sum;
+  };
   with_metric(o, [&](const auto& metric) {
-    FeatureRecon::internal::Dynamic_grid<D> grid(S.positions, largest * metric.spatial_scale());
-    const double reach2 = prefilter_bound(largest * metric.spatial_scale());
+    const double reach = largest * metric.spatial_scale();
+    FeatureRecon::internal::Dynamic_grid<D> grid(where, reach);
+    const double reach2 = prefilter_bound(reach);
+    int shifts = 1;
+    for (int k = 0; k < D; ++k) shifts *= 3;
+    // Calls f(j) for every kept candidate near position p, on the torus also near its shifted copies.
+    const auto for_each_candidate = [&](const std::array<double, D>& p, const auto& f) {
+      if (!o.periodic) return grid.for_each_candidate(p, f);
+      for (int shift = 0; shift < shifts; ++shift) {
+        std::array<double, D> q = p;
+        bool needed = true;
+        for (int k = 0, c = shift; k < D; ++k, c /= 3) {
+          const int s = c % 3 - 1;
+          needed = needed && (s == 0 || (s > 0 ? p[k] < reach : p[k] > 1 - reach));
+          q[k] += double(s);
+        }
+        if (needed) grid.for_each_candidate(q, f);
+      }
+    };
     std::size_t failures = 0;
     for (std::size_t step = 0; step < n; ++step) {
       if ((step & 65535) == 0 &&
@@ -76,9 +117,9 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
       const std::uint32_t i = order[step];
       const double ri = o.radii.empty() ? radius : o.radii[i];
       bool conflict = false;
-      grid.for_each_candidate(S.positions[i], [&](std::uint32_t j) {
+      for_each_candidate(where[i], [&](std::uint32_t j) {
         if (conflict) return;
-        const double d2 = S.squared_distance(i, j);
+        const double d2 = squared_distance(i, j);
         if (!(d2 < reach2)) return;
         const double rj = o.radii.empty() ? radius : o.radii[j];
         conflict = metric(d2, S.squared_feature_distance(i, j)) < std::max(ri, rj);
@@ -105,7 +146,9 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
 /// `options.radii` the radius varies per item and two items conflict when xi < max(r(s), r(t)).
 ///
 /// Neighbours are searched in a uniform grid of side r_largest sigma_position (every metric here satisfies
-/// xi >= |dp| / sigma_position). O(n k) time for k items per grid neighbourhood.
+/// xi >= |dp| / sigma_position). O(n k) time for k items per grid neighbourhood. With `options.periodic`
+/// the positions are taken modulo 1 and distances are those of the unit torus, so that the set tiles the
+/// plane (or space), as the spectral analysis of sampling_spectrum() assumes.
 ///
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam OutputIterator accepts std::size_t.
 /// \tparam Traits a model of FeaturePointTraits (default: Default_traits_t<ItemRange>).

@@ -197,7 +197,12 @@ struct Dart_throwing_options {
   /// Stop once this many items are kept: the first ones in the visiting order, spread over the whole domain
   /// (the result is then no longer maximal). Default 0: no cap.
   std::size_t max_accepted = 0;
-  std::uint64_t seed = 0;      ///< the random visiting order (ignored when `priority` is given)
+  std::uint64_t seed = 0;  ///< the random visiting order (ignored when `priority` is given)
+  /// Positions on the unit torus: taken modulo 1, the distance of two positions is that of their nearest
+  /// images (each coordinate difference d counts as min(|d|, 1 - |d|)). For sets that tile space, as the
+  /// periodogram of sampling_spectrum() and the periodic measures of sampling_quality() take them. Default
+  /// false.
+  bool periodic = false;
   Progress_callback progress;  ///< fraction of the items visited; returning false stops (nothing is output)
 };
 
