@@ -631,6 +631,17 @@ TEST(SamplingSpectrum, BothMethodsReportProgressOftenWhereOneStepIsLong) {
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
 }
 
+TEST(SamplingSpectrum, TorusCoordinatesLieInTheUnitInterval) {
+  // Shared by the spectrum, the periodic quality measures and periodic dart throwing: -1e-20 - floor(-1e-20)
+  // is 1.0 in floating point, which is the torus's 0.
+  EXPECT_EQ(-1e-20 - std::floor(-1e-20), 1.0);
+  EXPECT_EQ(sampling::internal::torus_coordinate(-1e-20), 0.0);
+  EXPECT_EQ(sampling::internal::torus_coordinate(1.0), 0.0);
+  EXPECT_EQ(sampling::internal::torus_coordinate(-0.25), 0.75);
+  EXPECT_EQ(sampling::internal::torus_coordinate(3.5), 0.5);
+  EXPECT_EQ(sampling::internal::torus_coordinate(0.0), 0.0);
+}
+
 TEST(SamplingSpectrum, DefaultFrequencyIsRefusedAboveTheLimit) {
   // 6 sqrt(N) rounded up reaches 16384 at N = 7,456,540 and passes it one sample later: refused, naming the
   // option to give; a given max_frequency is taken as it is.

@@ -70,10 +70,7 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   if (o.periodic) {
     wrapped = S.positions;
     for (auto& p : wrapped)
-      for (int k = 0; k < D; ++k) {
-        p[k] -= std::floor(p[k]);
-        if (!(p[k] < 1)) p[k] = 0;  // -1e-20 wraps to 1.0 in floating point: the same point
-      }
+      for (int k = 0; k < D; ++k) p[k] = torus_coordinate(p[k]);
   }
   const auto& where = o.periodic ? wrapped : S.positions;
   const auto squared_distance = [&](std::uint32_t i, std::uint32_t j) {

@@ -92,7 +92,7 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   q.samples = n;
   if (options.periodic)
     for (auto& p : S.positions)
-      for (int k = 0; k < D; ++k) p[k] -= std::floor(p[k]);
+      for (int k = 0; k < D; ++k) p[k] = internal::torus_coordinate(p[k]);
   const int dim = options.intrinsic_dimension == 0 ? D : options.intrinsic_dimension;
   const int affine = internal::affine_dimension<D>(S.positions);
   double measure = options.domain_measure;
@@ -419,10 +419,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
   const long F = internal::spectrum_frequency(n, options.max_frequency, fn);
   internal::Torus_points torus(n);
   for (std::size_t k = 0; k < n; ++k)
-    for (int a = 0; a < 2; ++a) {
-      const double x = S.positions[k][a] - std::floor(S.positions[k][a]);
-      torus[k][std::size_t(a)] = x < 1 ? x : 0.0;  // -1e-20 wraps to 1.0 in floating point: the same point
-    }
+    for (int a = 0; a < 2; ++a) torus[k][std::size_t(a)] = internal::torus_coordinate(S.positions[k][a]);
   result.method = options.method != Spectrum_method::automatic    ? options.method
                   : internal::gridded_periodogram_is_faster(n, F) ? Spectrum_method::gridded
                                                                   : Spectrum_method::direct;

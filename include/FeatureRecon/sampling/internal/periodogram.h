@@ -156,7 +156,9 @@ inline bool gridded_periodogram_sums(const Torus_points& points, long F, Periodo
         if (++spread_count % 65536 == 0 && !FeatureRecon::internal::report_progress(progress, fraction))
           return false;
         const Spread& s = spread[order[i]];
-        // the y weight at offset l (its own recurrence would cost as much as two exponentials here)
+        // Both axes' weights are recomputed for each of the 2S rows a sample reaches: stored per sample (48
+        // doubles) and gathered in row order they took 0.29 s instead of 0.16 s for 10^5 samples at F = 20,
+        // and more memory.
         weights(s.base_y, s.q_y, wy.data());
         const double w = wy[std::size_t(S - 1 + l)];
         weights(s.base_x, s.q_x, wx.data());

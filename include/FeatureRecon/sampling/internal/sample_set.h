@@ -29,6 +29,13 @@ namespace sampling {
 namespace internal {
 
 /// \cond
+/// A coordinate on the unit torus, in [0, 1): x - floor(x), except that a tiny negative x (-1e-20) wraps to
+/// 1.0 in floating point and is taken as 0, the same point of the torus.
+inline double torus_coordinate(double x) {
+  const double t = x - std::floor(x);
+  return t < 1 ? t : 0.0;
+}
+
 /// The items of a sampler's input as doubles (positions) and the traits' features, checked once.
 template <class Traits>
 struct Sample_set {
