@@ -110,6 +110,33 @@ void BM_elimination_2d(benchmark::State& state) {
   state.counters["rho"] = rho_2d(s);
 }
 
+// The same squares sampled on the unit torus (Elimination_options::periodic,
+// Dart_throwing_options::periodic), rho measured on the torus: the cost of the nearest-image distances and
+// the shifted grid look-ups.
+void BM_periodic_2d(benchmark::State& state) {
+  const auto& p = square(std::size_t(state.range(0)), false);
+  const bool darts = state.range(2) != 0;
+  std::vector<std::size_t> kept;
+  for (auto _ : state) {
+    kept.clear();
+    if (darts) {
+      fs::Dart_throwing_options o;
+      o.periodic = true;
+      fs::bilateral_dart_throwing(p, double(state.range(1)) / 1000.0, std::back_inserter(kept), o);
+    } else {
+      fs::Elimination_options o;
+      o.periodic = true;
+      fs::weighted_sample_elimination(p, std::size_t(state.range(1)), std::back_inserter(kept), o);
+    }
+  }
+  std::vector<K::Point_2> s;
+  for (std::size_t i : kept) s.push_back(p[i]);
+  fs::Sampling_quality_options q;
+  q.periodic = true;
+  state.counters["kept"] = double(kept.size());
+  state.counters["rho"] = fs::sampling_quality(s, q).relative_radius;
+}
+
 template <bool Outlier>
 void BM_darts_2d(benchmark::State& state) {
   const auto& p = square(std::size_t(state.range(0)), Outlier);
@@ -377,6 +404,12 @@ void register_all() {
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d", BM_darts_2d<false>))
       ->Args({100000, 20})
       ->Args({1000000, 10})
+      ->MinTime(1.0);
+  // Arguments: candidates, count (elimination) or radius in thousandths (darts), darts or not.
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/periodic_2d", BM_periodic_2d))
+      ->Args({50000, 10000, 0})
+      ->Args({500000, 100000, 0})
+      ->Args({100000, 20, 1})
       ->MinTime(1.0);
   // The same squares plus one point at (1e7, 0): the grids must keep their cell size.
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/elimination_2d_outlier", BM_elimination_2d<true>))

@@ -28,6 +28,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/discrete_samplers.h"
 #include "io/featurerecon_io.h"
 #include "io/image_io.h"
 
@@ -42,18 +43,10 @@ struct Image_sample {
   std::array<double, 3> colour{};
 };
 
-struct Sampler_settings {
-  std::string method;
-  long long count = 0;  // 0: none given
-  double radius = 0;    // 0: none given
-  double sigma_feature = std::numeric_limits<double>::infinity();
-  std::uint64_t seed = 0;
-};
-
 /// Runs the chosen sampler on the pixels (elimination, darts) or the continuous image (continuous).
 /// \tparam Pixel Grey_pixel or Rgb_pixel; \tparam C its channel count.
 template <class Pixel, std::size_t C>
-std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_settings& s, Progress& progress,
+std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_request& s, Progress& progress,
                                        double& used_radius) {
   std::vector<Image_sample> out;
   if (s.method == "continuous") {
@@ -61,7 +54,7 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_set
     fs::Continuous_dart_throwing_options o;
     o.sigma_feature = s.sigma_feature;
     o.seed = s.seed;
-    o.max_samples = static_cast<std::size_t>(s.count);
+    o.max_samples = s.count;
     o.progress = std::ref(progress);
     const auto r = fs::continuous_bilateral_dart_throwing(domain.box(), s.radius, domain,
                                                           fs::Mean_squared_channel_distance(), o);
@@ -75,32 +68,7 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_set
   }
   const std::vector<Pixel> pixels = fs::image_pixels<Pixel>(image.width, image.height, image.data);
   const Pixel_traits<Pixel> traits;
-  std::vector<std::size_t> kept;
-  if (s.method == "elimination") {
-    fs::Elimination_options o;
-    o.sigma_feature = s.sigma_feature;
-    o.max_radius = s.radius;
-    o.seed = s.seed;
-    o.progress = std::ref(progress);
-    used_radius = fs::weighted_sample_elimination(pixels, static_cast<std::size_t>(s.count),
-                                                  std::back_inserter(kept), o, traits)
-                      .radius;
-  } else if (s.radius > 0) {
-    fs::Dart_throwing_options o;
-    o.sigma_feature = s.sigma_feature;
-    o.seed = s.seed;
-    o.progress = std::ref(progress);
-    if (s.count > 0) o.max_accepted = static_cast<std::size_t>(s.count);  // the first M in the visiting order
-    used_radius = fs::bilateral_dart_throwing(pixels, s.radius, std::back_inserter(kept), o, traits).radius;
-  } else {
-    fs::Dart_throwing_count_options o;
-    o.darts.sigma_feature = s.sigma_feature;
-    o.darts.seed = s.seed;
-    o.darts.progress = std::ref(progress);
-    used_radius = fs::bilateral_dart_throwing_count(pixels, static_cast<std::size_t>(s.count),
-                                                    std::back_inserter(kept), o, traits)
-                      .radius;
-  }
+  const std::vector<std::size_t> kept = run_sampler(pixels, traits, s, progress, used_radius);
   for (const std::size_t i : kept) {
     const Pixel& p = pixels[i];
     Image_sample x{p.column + 0.5, p.row + 0.5, {}};
@@ -247,13 +215,14 @@ int run_sample_image(const std::vector<std::string>& argv) {
       argv, {"grey", "quiet"},
       {"input", "count", "radius", "method", "sigma-feature", "seed", "out", "svg", "picture", "mosaic"});
   const std::string input = args.get("input");
-  Sampler_settings s;
+  Sampler_request s;
   s.method = args.get_or("method", "elimination");
   if (s.method != "elimination" && s.method != "darts" && s.method != "continuous")
     throw Usage_error("--method must be elimination, darts or continuous, got '" + s.method + "'");
   if (args.has("count")) {
-    s.count = args.get_int("count");
-    if (s.count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(s.count));
+    const long long count = args.get_int("count");
+    if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
+    s.count = static_cast<std::size_t>(count);
   }
   if (args.has("radius")) s.radius = args.get_positive_double("radius");
   if (s.method == "elimination" && s.count == 0) throw Usage_error("--method elimination needs --count M");
@@ -276,7 +245,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
   io::Image image = io::read_image(input);
   if (args.has("grey")) image = io::to_grey(image);
   const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
-  if (s.method != "continuous" && s.count > static_cast<long long>(pixels))
+  if (s.method != "continuous" && s.count > pixels)
     throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) +
                       " pixels of " + input);
   if (s.method == "continuous") {

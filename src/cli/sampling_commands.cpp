@@ -18,6 +18,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/discrete_samplers.h"
 #include "io/featurerecon_io.h"
 #include "io/point_cloud_io.h"
 
@@ -43,15 +44,68 @@ std::pair<int, double> domain_of(const std::vector<std::array<double, 3>>& p) {
   return {dim,
           dim == 2 ? fs::internal::estimate_surface_area(p, knn) : fs::internal::bounding_box_measure<3>(p)};
 }
+/// `sample` on points in the plane (a text file of lines `x y`): Euclidean spacing, written as `x y` lines.
+int sample_plane(const Arguments& args, const io::Point_file& file, const Sampler_request& request,
+                 Outputs& outputs) {
+  const std::string input = args.get("input");
+  if (io::file_extension(outputs.target("out")) != "txt")
+    throw Usage_error(input +
+                      " holds points in the plane (2 numbers per line), written as lines 'x y': give "
+                      "--out FILE.txt");
+  if (std::isfinite(request.sigma_feature))
+    throw Usage_error("--sigma-feature needs normals, which points in the plane (" + input + ") do not have");
+  std::vector<K::Point_2> points;
+  for (std::size_t i = 0; i < file.size(); ++i)
+    points.emplace_back(file.coordinates[2 * i], file.coordinates[2 * i + 1]);
+  if (request.count > points.size())
+    throw Usage_error("--count " + std::to_string(request.count) + " exceeds the " +
+                      std::to_string(points.size()) + " points of " + input);
+  Progress progress("sampling", args.has("quiet"));
+  double used_radius = 0;
+  const std::vector<std::size_t> kept = run_sampler(
+      points, FeatureRecon::Default_traits_t<std::vector<K::Point_2>>(), request, progress, used_radius);
+  progress.done(std::to_string(kept.size()) + " of " + std::to_string(points.size()) + " points kept");
+  const double seconds = progress.seconds();
+  std::string text;
+  for (const std::size_t i : kept)
+    text += io::format_double(points[i].x()) + " " + io::format_double(points[i].y()) + "\n";
+  io::write_text_file(outputs.path("out"), text);
+  outputs.commit();
+  // Spacing of the result on the domain the elimination derives: the unit torus, or the input's bounding box.
+  fs::Sampling_quality_options q;
+  q.periodic = request.periodic;
+  if (!request.periodic) {
+    std::vector<std::array<double, 2>> positions;
+    for (const K::Point_2& p : points) positions.push_back({p.x(), p.y()});
+    q.domain_measure = fs::internal::bounding_box_measure<2>(positions);
+  }
+  std::vector<K::Point_2> kept_points;
+  for (const std::size_t i : kept) kept_points.push_back(points[i]);
+  const fs::Sampling_quality quality = fs::sampling_quality(kept_points, q);
+  std::ostringstream os;
+  os << "{\"input\": " << json_string(input) << ", \"points\": " << points.size()
+     << ", \"kept\": " << kept.size() << ", \"method\": \"" << request.method
+     << "\", \"radius\": " << json_number(used_radius)
+     << ", \"sigma_position\": " << json_number(request.sigma_position) << ", \"seed\": " << request.seed
+     << ", \"dimension\": 2, \"periodic\": " << (request.periodic ? "true" : "false")
+     << ", \"intrinsic_dimension\": 2, \"domain_measure\": " << json_number(quality.domain_measure)
+     << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
+     << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
+     << ", \"seconds\": " << json_number(seconds) << ", \"output\": " << json_string(args.get("out"))
+     << "}\n";
+  std::fputs(os.str().c_str(), outputs.summary_stream());
+  return 0;
+}
 }  // namespace
 
 int run_sample(const std::vector<std::string>& argv) {
-  const Arguments args(argv, {"unoriented", "quiet"},
+  const Arguments args(argv, {"unoriented", "periodic", "quiet"},
                        {"input", "count", "radius", "method", "sigma-position", "sigma-feature", "seed",
                         "out", "normal-neighbors"});
   const std::string input = args.get("input"), output = args.get("out");
   Outputs outputs(args, {"out"});
-  outputs.require_extension("out", {"ply", "off", "xyz"}, "a point cloud");
+  outputs.require_extension("out", {"ply", "off", "xyz", "txt"},
+                            "a point cloud (or, for points in the plane, text)");
   const std::string method = args.get_or("method", "elimination");
   if (method != "elimination" && method != "darts")
     throw Usage_error("--method must be elimination or darts, got '" + method + "'");
@@ -80,8 +134,41 @@ int run_sample(const std::vector<std::string>& argv) {
   // 2^32 wrapped to 0 in the estimator's unsigned count).
   if (neighbors < 3 || neighbors > 1000000) throw Usage_error("--normal-neighbors must be in [3, 1000000]");
   const bool quiet = args.has("quiet");
+  Sampler_request request;
+  request.method = method;
+  request.count = static_cast<std::size_t>(count);
+  request.radius = radius;
+  request.sigma_position = sigma_position;
+  request.sigma_feature = sigma_feature;
+  request.seed = static_cast<std::uint64_t>(seed);
+  request.periodic = args.has("periodic");
 
-  io::Point_cloud cloud = io::read_point_cloud(input);
+  // PLY, OFF and XYZ are point clouds; other text files hold points in the plane (2 numbers per line) or
+  // clouds (3, or 6 with normals), as `sample-stats` reads them.
+  const std::string extension = io::file_extension(input);
+  io::Point_cloud cloud;
+  if (extension == "ply" || extension == "off" || extension == "xyz") {
+    cloud = io::read_point_cloud(input);
+  } else {
+    const io::Point_file text = io::read_points(input);
+    if (text.size() == 0) throw io::Input_error(input + ": no points");
+    if (text.dimension == 2) return sample_plane(args, text, request, outputs);
+    if (text.dimension != 3 && text.dimension != 6)
+      throw io::Input_error(input +
+                            ": expected 2 numbers per line (points in the plane), 3 (a cloud) or 6 (a "
+                            "cloud with normals), got " +
+                            std::to_string(text.dimension));
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      const double* x = text.coordinates.data() + i * text.dimension;
+      cloud.points.push_back({x[0], x[1], x[2]});
+      cloud.lines.push_back(text.lines[i]);
+      if (text.dimension == 6) cloud.normals.push_back({x[3], x[4], x[5]});
+    }
+  }
+  if (io::file_extension(outputs.target("out")) == "txt")
+    throw Usage_error(input +
+                      " is a point cloud, written as PLY, OFF or XYZ: give --out FILE.ply, .off or .xyz "
+                      "(.txt is for points in the plane)");
   if (count > static_cast<long long>(cloud.points.size()))
     throw Usage_error("--count " + std::to_string(count) + " exceeds the " +
                       std::to_string(cloud.points.size()) + " points of " + input);
@@ -106,45 +193,19 @@ int run_sample(const std::vector<std::string>& argv) {
   if (args.has("unoriented")) traits.orientation = FeatureRecon::Normal_orientation::unoriented;
 
   Progress progress("sampling", quiet);
-  std::vector<std::size_t> kept;
   double used_radius = 0;
-  if (method == "elimination") {
-    fs::Elimination_options o;
-    o.sigma_position = sigma_position;
-    o.sigma_feature = sigma_feature;
-    o.max_radius = radius;
-    o.seed = static_cast<std::uint64_t>(seed);
-    o.progress = std::ref(progress);
-    used_radius = fs::weighted_sample_elimination(items, static_cast<std::size_t>(count),
-                                                  std::back_inserter(kept), o, traits)
-                      .radius;
-  } else if (args.has("radius")) {
-    fs::Dart_throwing_options o;
-    o.sigma_position = sigma_position;
-    o.sigma_feature = sigma_feature;
-    o.seed = static_cast<std::uint64_t>(seed);
-    o.progress = std::ref(progress);
-    if (args.has("count"))
-      o.max_accepted = static_cast<std::size_t>(count);  // the first M in the visiting order
-    used_radius = fs::bilateral_dart_throwing(items, radius, std::back_inserter(kept), o, traits).radius;
-  } else {
-    fs::Dart_throwing_count_options o;
-    o.darts.sigma_position = sigma_position;
-    o.darts.sigma_feature = sigma_feature;
-    o.darts.seed = static_cast<std::uint64_t>(seed);
-    o.darts.progress = std::ref(progress);
-    used_radius = fs::bilateral_dart_throwing_count(items, static_cast<std::size_t>(count),
-                                                    std::back_inserter(kept), o, traits)
-                      .radius;
-  }
+  const std::vector<std::size_t> kept = run_sampler(items, traits, request, progress, used_radius);
   progress.done(std::to_string(kept.size()) + " of " + std::to_string(items.size()) + " points kept");
   const double seconds = progress.seconds();
   io::write_point_cloud(outputs.path("out"), cloud, kept);
   outputs.commit();
 
-  // Spacing of the result on the input's domain (surface area or volume as the elimination estimates it).
-  const auto [dimension, measure] = domain_of(cloud.points);
+  // Spacing of the result on the input's domain (surface area or volume as the elimination estimates it; the
+  // unit torus, a volume, with --periodic).
+  const auto [dimension, measure] =
+      request.periodic ? std::pair<int, double>(3, 1.0) : domain_of(cloud.points);
   fs::Sampling_quality_options q;
+  q.periodic = request.periodic;
   q.intrinsic_dimension = dimension;
   q.domain_measure = measure;
   std::vector<K::Point_3> kept_points;
@@ -169,8 +230,9 @@ int run_sample(const std::vector<std::string>& argv) {
          : io::file_extension(outputs.target("out")) == "ply" ? "file"
                                                               : "dropped")
      << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
-     << "\", \"seed\": " << seed << ", \"intrinsic_dimension\": " << dimension
-     << ", \"domain_measure\": " << json_number(measure)
+     << "\", \"seed\": " << seed
+     << ", \"dimension\": 3, \"periodic\": " << (request.periodic ? "true" : "false")
+     << ", \"intrinsic_dimension\": " << dimension << ", \"domain_measure\": " << json_number(measure)
      << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
      << ", \"bilateral_relative_radius\": " << json_statistic(bilateral_rho, quality.status)
      << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)

@@ -66,42 +66,20 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   // On the unit torus (o.periodic) the grid holds the positions modulo 1; a position within the reach of a
   // face of the cell is also looked up shifted by -1 or +1 along that axis (every combination of such
   // shifts), and distances take the nearest image of each coordinate difference, for any reach.
-  std::vector<std::array<double, D>> wrapped;
-  if (o.periodic) {
-    wrapped = S.positions;
-    for (auto& p : wrapped)
-      for (int k = 0; k < D; ++k) p[k] = torus_coordinate(p[k]);
-  }
+  const std::vector<std::array<double, D>> wrapped =
+      o.periodic ? torus_positions(S.positions) : std::vector<std::array<double, D>>();
   const auto& where = o.periodic ? wrapped : S.positions;
   const auto squared_distance = [&](std::uint32_t i, std::uint32_t j) {
-    if (!o.periodic) return S.squared_distance(i, j);
-    double sum = 0;
-    for (int k = 0; k < D; ++k) {
-      double d = std::abs(wrapped[i][k] - wrapped[j][k]);
-      d = std::min(d, 1 - d);
-      sum += d * d;
-    }
-    return sum;
+    return o.periodic ? torus_squared_distance(wrapped[i], wrapped[j]) : S.squared_distance(i, j);
   };
   with_metric(o, [&](const auto& metric) {
     const double reach = largest * metric.spatial_scale();
     FeatureRecon::internal::Dynamic_grid<D> grid(where, reach);
     const double reach2 = prefilter_bound(reach);
-    int shifts = 1;
-    for (int k = 0; k < D; ++k) shifts *= 3;
     // Calls f(j) for every kept candidate near position p, on the torus also near its shifted copies.
     const auto for_each_candidate = [&](const std::array<double, D>& p, const auto& f) {
       if (!o.periodic) return grid.for_each_candidate(p, f);
-      for (int shift = 0; shift < shifts; ++shift) {
-        std::array<double, D> q = p;
-        bool needed = true;
-        for (int k = 0, c = shift; k < D; ++k, c /= 3) {
-          const int s = c % 3 - 1;
-          needed = needed && (s == 0 || (s > 0 ? p[k] < reach : p[k] > 1 - reach));
-          q[k] += double(s);
-        }
-        if (needed) grid.for_each_candidate(q, f);
-      }
+      for_each_torus_candidate(grid, p, reach, [&](std::uint32_t j, int) { f(j); });
     };
     std::size_t failures = 0;
     for (std::size_t step = 0; step < n; ++step) {

@@ -175,6 +175,13 @@ struct Elimination_options {
   /// always passes.
   std::size_t max_neighbor_entries = 0;
   std::uint64_t seed = 0;  ///< breaks ties between equal weights (grids, images): a seeded permutation
+  /// Positions on the unit torus: taken modulo 1, the distance of two positions is that of their nearest
+  /// images (each coordinate difference d counts as min(|d|, 1 - |d|); each pair is weighed once, also when
+  /// 2 r_max exceeds 1/2), and without domain_measure the domain is the torus (measure 1, intrinsic dimension
+  /// that of the positions unless given). For sets that tile space (Yuksel's tileable sets), as the
+  /// periodogram of sampling_spectrum() and the periodic measures of sampling_quality() take them. Default
+  /// false.
+  bool periodic = false;
   /// fraction of the eliminations done; returning false stops (nothing is output)
   Progress_callback progress;
 };

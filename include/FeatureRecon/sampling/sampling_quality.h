@@ -23,6 +23,7 @@
 #include <complex>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace FeatureRecon {
@@ -90,9 +91,7 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   const std::size_t n = S.size();
   Sampling_quality q;
   q.samples = n;
-  if (options.periodic)
-    for (auto& p : S.positions)
-      for (int k = 0; k < D; ++k) p[k] = internal::torus_coordinate(p[k]);
+  if (options.periodic) S.positions = internal::torus_positions(std::move(S.positions));
   const int dim = options.intrinsic_dimension == 0 ? D : options.intrinsic_dimension;
   const int affine = internal::affine_dimension<D>(S.positions);
   double measure = options.domain_measure;

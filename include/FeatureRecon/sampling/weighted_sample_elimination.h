@@ -98,6 +98,9 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 /// neighbours per item, O(n k) memory (4 bytes per neighbour); k is about 3.6 n / count in 2D, 5.9 n / count
 /// in 3D. When those lists would exceed 2^24 ids (and n > 16 count) the elimination is progressive: stages of
 /// factor 4 (each with the r_max of its own count) first bring n down to max(16 count, sqrt(2^24 count / c)).
+/// With `options.periodic` the positions are taken modulo 1 and distances are those of the unit torus, so
+/// that the kept set tiles the plane (or space), as Yuksel's tileable sets; the grid is then looked up also
+/// shifted by one cell across the faces the neighbourhood reaches.
 ///
 /// \tparam ItemRange a forward range of `Traits::Item`.
 /// \tparam OutputIterator accepts std::size_t (indices into `items`).
@@ -151,6 +154,10 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   internal::check_position_scale(S.extent(), options.sigma_position, fn);
   constexpr int D = Traits::dimension;
+  // On the unit torus, the positions modulo 1 stand for the items everywhere below.
+  const std::vector<std::array<double, D>> wrapped =
+      options.periodic ? internal::torus_positions(S.positions) : std::vector<std::array<double, D>>();
+  const std::vector<std::array<double, D>>& where = options.periodic ? wrapped : S.positions;
   const std::size_t n = S.size();
   internal::check_count(count, n, fn);
   Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
@@ -167,11 +174,15 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   if (r_max == 0 && count > 0) {
     int dim = options.intrinsic_dimension;
     double measure = options.domain_measure;
-    const int affine = internal::affine_dimension<D>(S.positions);
+    if (options.periodic && measure == 0 && (dim == 0 || dim == D)) {
+      dim = D;  // the unit torus itself, whatever the items' own extent
+      measure = 1;
+    }
+    const int affine = internal::affine_dimension<D>(where);
     if constexpr (D == 3) {
       if (affine >= 2 && (dim == 0 || (dim == 2 && measure == 0) || (affine == 2 && measure == 0))) {
         // Estimated on the distinct positions: copies would be neighbours at distance 0.
-        const std::vector<std::array<double, 3>> places = internal::distinct_positions(S.positions);
+        const std::vector<std::array<double, 3>> places = internal::distinct_positions(where);
         const internal::Knn_3 knn(places);
         if (dim == 0) dim = affine == 2 ? 2 : internal::estimate_intrinsic_dimension(places, knn);
         if (affine == 2 && dim == 3) {
@@ -185,10 +196,10 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     if (affine <= 1 && measure == 0) {
       // Collinear (r_max = L / (2 count), the packing of a segment) or one position (r_max = 0).
       result.status = Status::degenerate_input;
-      r_max = internal::collinear_length<D>(S.positions) / (2.0 * double(count)) / options.sigma_position;
+      r_max = internal::collinear_length<D>(where) / (2.0 * double(count)) / options.sigma_position;
       packing_dimension = 1;
     } else {
-      if (measure == 0) measure = internal::bounding_box_measure<D>(S.positions);
+      if (measure == 0) measure = internal::bounding_box_measure<D>(where);
       r_max = internal::packing_radius(measure, count, dim) / options.sigma_position;
       packing_dimension = dim;
     }
@@ -207,7 +218,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     std::size_t eliminated_before = 0;
     internal::with_metric(options, [&](const auto& metric) {
       std::vector<std::pair<std::array<double, D>, std::uint32_t>> by_position(n);  // contiguous: a fast sort
-      for (std::size_t i = 0; i < n; ++i) by_position[i] = {S.positions[i], static_cast<std::uint32_t>(i)};
+      for (std::size_t i = 0; i < n; ++i) by_position[i] = {where[i], static_cast<std::uint32_t>(i)};
       std::sort(by_position.begin(), by_position.end());
       // Groups of copies: per place, one group per feature class (the first member stands for it).
       std::vector<std::vector<std::uint32_t>> groups;
@@ -296,7 +307,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       const double r_min =
           options.weight_limiting ? two_r * 0.65 * (1 - std::pow(double(target) / double(m), 1.5)) : 0.0;
       std::vector<std::array<double, D>> positions(m);
-      for (std::size_t i = 0; i < m; ++i) positions[i] = S.positions[active[i]];
+      for (std::size_t i = 0; i < m; ++i) positions[i] = where[active[i]];
       // Neighbour lists (CSR, local ids only: 4 bytes per neighbour; the weights are recomputed when an item
       // goes, which costs less than storing them on this scale). Two passes over the grid: count, then fill.
       internal::with_metric(options, [&](const auto& metric) {
@@ -304,8 +315,11 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         // Weight of the pair (i, j) (local ids), or a negative number when j is not within 2 r of i.
         auto pair_weight = [&](std::size_t i, std::size_t j) {
           double d2 = 0;  // from the stage's own copy of the positions (contiguous, no indirection)
-          for (int k = 0; k < D; ++k)
-            d2 += (positions[i][k] - positions[j][k]) * (positions[i][k] - positions[j][k]);
+          if (options.periodic)
+            d2 = internal::torus_squared_distance(positions[i], positions[j]);
+          else
+            for (int k = 0; k < D; ++k)
+              d2 += (positions[i][k] - positions[j][k]) * (positions[i][k] - positions[j][k]);
           if (!(d2 < spatial2)) return -1.0;
           const double xi = metric(d2, S.squared_feature_distance(active[i], active[j]));
           if (!(xi < two_r)) return -1.0;
@@ -326,10 +340,18 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           std::sort(keyed.begin(), keyed.end());
           for (std::size_t i = 0; i < m; ++i) {
             active[i] = keyed[i].second;
-            positions[i] = S.positions[active[i]];
+            positions[i] = where[active[i]];
           }
         }
         const FeatureRecon::internal::Uniform_grid<D> grid(positions, spatial);
+        // Calls f(j) for the candidates j near item i; on the torus each once, at its nearest image (with
+        // 2 r_max above half the cell, several images of j can lie within reach).
+        auto for_each_candidate = [&](std::size_t i, const auto& f) {
+          if (!options.periodic) return grid.for_each_candidate(positions[i], f);
+          internal::for_each_torus_candidate(grid, positions[i], spatial, [&](std::uint32_t j, int shift) {
+            if (shift == internal::nearest_image_shift(positions[i], positions[j])) f(j);
+          });
+        };
         // The callback is asked at the start of every stage and every 16,384 items or eliminations after it,
         // the neighbour lists included (dense clusters make them the long part).
         auto stop = [&](std::size_t step) {
@@ -357,7 +379,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
             }
           }
           std::size_t visited = 0;
-          grid.for_each_candidate(positions[i], [&](std::uint32_t j) {
+          for_each_candidate(i, [&](std::uint32_t j) {
             ++visited;
             if (j != i && pair_weight(i, j) >= 0) ++offset[i + 1];
           });
@@ -399,7 +421,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
             return;
           }
           std::size_t k = offset[i];
-          grid.for_each_candidate(positions[i], [&](std::uint32_t j) {
+          for_each_candidate(i, [&](std::uint32_t j) {
             if (j == i) return;
             const double w = pair_weight(i, j);
             if (!(w >= 0)) return;  // the test of the count

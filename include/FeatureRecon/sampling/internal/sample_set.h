@@ -36,6 +36,62 @@ inline double torus_coordinate(double x) {
   return t < 1 ? t : 0.0;
 }
 
+/// The positions modulo 1 (torus_coordinate() of every coordinate).
+template <std::size_t D>
+std::vector<std::array<double, D>> torus_positions(std::vector<std::array<double, D>> positions) {
+  for (auto& p : positions)
+    for (double& x : p) x = torus_coordinate(x);
+  return positions;
+}
+
+/// Squared distance of a and b on the unit torus (coordinates in [0, 1), as torus_coordinate() gives them):
+/// each coordinate difference d counts as min(|d|, 1 - |d|), the nearest image.
+template <std::size_t D>
+double torus_squared_distance(const std::array<double, D>& a, const std::array<double, D>& b) {
+  double sum = 0;
+  for (std::size_t k = 0; k < D; ++k) {
+    double d = std::abs(a[k] - b[k]);
+    d = std::min(d, 1 - d);
+    sum += d * d;
+  }
+  return sum;
+}
+
+/// The shift s in {-1, 0, 1}^D whose image w + s of w lies nearest p on the unit torus, coded as the sum of
+/// (s_k + 1) 3^k: along each axis s_k = -1 when p_k - w_k > 1/2, +1 when it is <= -1/2, else 0 (decided on
+/// the one rounded difference, so that exactly one shift is chosen for every pair, also at distance 1/2).
+template <std::size_t D>
+int nearest_image_shift(const std::array<double, D>& p, const std::array<double, D>& w) {
+  int code = 0;
+  for (std::size_t k = D; k-- > 0;) {
+    const double t = p[k] - w[k];
+    code = 3 * code + (t > 0.5 ? 0 : t <= -0.5 ? 2 : 1);
+  }
+  return code;
+}
+
+/// Calls f(j, shift) for the candidates j of a uniform grid of the positions modulo 1 (a Uniform_grid or
+/// Dynamic_grid whose cells are at least `reach`) near p and, along the axes where p lies within `reach` of a
+/// face of the unit cell, near its images p + s for s in {-1, 0, 1}^D (every combination of such axes);
+/// `shift` codes s as nearest_image_shift() does. Every position whose nearest image lies within `reach` of p
+/// is found at least once, at its nearest shift; a caller that must see each position once keeps only the
+/// call whose shift is nearest_image_shift(p, position).
+template <std::size_t D, class Grid, class F>
+void for_each_torus_candidate(const Grid& grid, const std::array<double, D>& p, double reach, F&& f) {
+  int shifts = 1;
+  for (std::size_t k = 0; k < D; ++k) shifts *= 3;
+  for (int shift = 0; shift < shifts; ++shift) {
+    std::array<double, D> q = p;
+    bool needed = true;
+    for (std::size_t k = 0, c = std::size_t(shift); k < D; ++k, c /= 3) {
+      const int s = int(c % 3) - 1;
+      needed = needed && (s == 0 || (s > 0 ? p[k] < reach : p[k] > 1 - reach));
+      q[k] += double(s);
+    }
+    if (needed) grid.for_each_candidate(q, [&](std::uint32_t j) { f(j, shift); });
+  }
+}
+
 /// The items of a sampler's input as doubles (positions) and the traits' features, checked once.
 template <class Traits>
 struct Sample_set {
