@@ -314,6 +314,11 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     if (seed < 0) throw Usage_error("--seed must be >= 0");
     o.seed = static_cast<std::uint64_t>(seed);
   }
+  // The defaults (jitter 10 m, lane offset 2 m) are lowered to what the blocks allow when they were not
+  // given: small blocks are no reason to refuse options the user did not set.
+  if (!args.has("jitter")) o.jitter = std::min(o.jitter, skeleton::synthetic_city_max_jitter(o));
+  if (!args.has("lane-offset"))
+    o.lane_offset = std::min(o.lane_offset, skeleton::synthetic_city_max_lane_offset(o));
   Progress progress("driving trips", args.has("quiet"));
   o.progress = std::ref(progress);
   // Every value comes from an option: the library's refusal of a combination is a usage error, named by flag.
@@ -356,7 +361,9 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
      << ", \"driven_length\": " << json_number(length(city.driven)) << ", \"trips\": " << city.trips.size()
      << ", \"fixes\": " << fixes << ", \"interval\": " << json_number(o.sampling_interval)
      << ", \"noise\": " << json_number(o.noise) << ", \"curvature\": " << json_number(o.curvature)
-     << ", \"seed\": " << o.seed << "}\n";
+     << ", \"jitter\": "
+     << (o.layout == skeleton::Synthetic_city_layout::grid ? json_number(o.jitter) : std::string("null"))
+     << ", \"lane_offset\": " << json_number(o.lane_offset) << ", \"seed\": " << o.seed << "}\n";
   std::fputs(os.str().c_str(), outputs.summary_stream());
   return 0;
 }

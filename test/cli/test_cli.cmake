@@ -465,6 +465,12 @@ expect(skeleton_local_support_bad 2 "--local-support must be a whole number of f
 expect(skeleton_local_support_large 2 "--local-support must be a whole number" skeleton --tracks ${WORK}/sp_t.txt --local-support 1025 --out-vertices ${WORK}/sp0_v.txt --out-edges ${WORK}/sp0_e.txt --quiet)
 expect(skeleton_min_local_support_bad 2 "--min-local-support must be in \\(0, 1\\]" skeleton --tracks ${WORK}/sp_t.txt --min-local-support 0 --out-vertices ${WORK}/sp0_v.txt --out-edges ${WORK}/sp0_e.txt --quiet)
 expect(synthetic_city_sparse_score 0 "\"f_score\": 0\\.(7[5-9]|[89][0-9])[0-9]*," evaluate-map ${WORK}/sp_gv.txt ${WORK}/sp_ge.txt ${WORK}/sp_v.txt ${WORK}/sp_e.txt)
+# Blocks of 30 x 20 m allow a jitter of at most 6 m (the diagonal avenue) and 3 m blocks a lane offset of 1.5 m:
+# the defaults (10 and 2) are lowered to those limits when not given, and refused when given.
+expect(synthetic_city_small_blocks 0 "\"jitter\": 6, \"lane_offset\": 2," synthetic-city --block-width 30 --block-height 20 --trips 5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
+expect(synthetic_city_tiny_blocks 0 "\"jitter\": 0.75, \"lane_offset\": 1.5," synthetic-city --block-width 3 --block-height 3 --trips 5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
+expect(synthetic_city_small_blocks_jitter_given 2 "jitter must be at most 6 .*got 10" synthetic-city --block-width 30 --block-height 20 --jitter 10 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
+expect(synthetic_city_tiny_blocks_lane_given 2 "lane_offset must be at most half the shorter of block_width and block_height \\(1.5\\), got 2" synthetic-city --block-width 3 --block-height 3 --lane-offset 2 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
 expect(synthetic_city_layout 2 "--layout must be grid or organic, got 'hex'" synthetic-city --layout hex --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_curvature 2 "--curvature must be <= 0.5, got '0.7'" synthetic-city --curvature 0.7 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
 expect(synthetic_city_rows 2 "--rows must be >= 2" synthetic-city --rows 1 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)

@@ -758,7 +758,9 @@ TEST(SyntheticCity, StreetsAndTrips) {
     b.missing_streets = 0;
     b.diagonal = diagonal;
     b.jitter = diagonal ? 120.0 * 90.0 / (2 * 210.0) : 45.0;
+    EXPECT_EQ(synthetic_city_max_jitter(b), b.jitter);  // the limits as the callers may ask for them
     b.lane_offset = 45;
+    EXPECT_EQ(synthetic_city_max_lane_offset(b), 45.0);
     for (std::uint64_t seed = 1; seed <= 40; ++seed) {
       b.seed = seed;
       const Synthetic_city city = make_synthetic_city(b);
@@ -793,6 +795,7 @@ TEST(SyntheticCity, StreetsAndTrips) {
       "got 45.5: intersections would pass each other and streets cross");
   b.layout = Synthetic_city_layout::organic;  // no jitter there
   EXPECT_EQ(make_synthetic_city(b).status, Status::success);
+  EXPECT_EQ(synthetic_city_max_jitter(b), std::numeric_limits<double>::infinity());
   b.lane_offset = 1e5;
   EXPECT_EQ(
       message_of([&] { make_synthetic_city(b); }),

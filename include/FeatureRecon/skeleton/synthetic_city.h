@@ -169,6 +169,26 @@ inline std::vector<Edge> gabriel_edges(const std::vector<std::array<double, 2>>&
 }
 }  // namespace internal
 
+/// The largest `jitter` make_synthetic_city() accepts for these blocks: half the shorter block side, with the
+/// diagonal avenue block_width x block_height / (2 (block_width + block_height)) (grid layout; the organic
+/// layout does not jitter: infinity). Smaller blocks than about 40 m (with the avenue) refuse the default 10;
+/// a caller that did not choose a jitter can take min(jitter, this).
+inline double synthetic_city_max_jitter(const Synthetic_city_options& o) {
+  // An intersection that may move farther than half a block can pass its neighbour: streets would cross
+  // without a junction. With the diagonal avenue, the corners (i + 1, i) and (i, i + 1) of a block lie w h /
+  // sqrt(w^2 + h^2) from its diagonal, and a jitter J moves the corner and the diagonal towards each other by
+  // up to 2 J (w + h) / sqrt(w^2 + h^2): below w h / (2 (w + h)) the avenue crosses no street.
+  if (o.layout != Synthetic_city_layout::grid) return std::numeric_limits<double>::infinity();
+  return o.diagonal ? o.block_width * o.block_height / (2 * (o.block_width + o.block_height))
+                    : std::min(o.block_width, o.block_height) / 2;
+}
+
+/// The largest `lane_offset` make_synthetic_city() accepts: half the shorter block side (a lane farther off
+/// its centre line would lie nearer the parallel street). Blocks under 4 m refuse the default 2.
+inline double synthetic_city_max_lane_offset(const Synthetic_city_options& o) {
+  return std::min(o.block_width, o.block_height) / 2;
+}
+
 /// Builds a synthetic city and its GPS trips (see the file comment).
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or
 /// non-finite
@@ -202,16 +222,10 @@ inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) 
   non_negative(o.trip_bias, "trip_bias");
   non_negative(o.jitter, "jitter");
   non_negative(o.lane_offset, "lane_offset");
-  // An intersection that may move farther than half a block can pass its neighbour: streets would cross
-  // without a junction. With the diagonal avenue, the corners (i + 1, i) and (i, i + 1) of a block lie w h /
-  // sqrt(w^2 + h^2) from its diagonal, and a jitter J moves the corner and the diagonal towards each other by
-  // up to 2 J (w + h) / sqrt(w^2 + h^2): below w h / (2 (w + h)) the avenue crosses no street. A lane as far
-  // off the centre line as half a block lies nearer the parallel street than its own.
-  const double half_block = std::min(o.block_width, o.block_height) / 2;
+  const double half_block = synthetic_city_max_lane_offset(o);
   const bool avenue = o.layout == Synthetic_city_layout::grid && o.diagonal;
-  const double max_jitter =
-      avenue ? o.block_width * o.block_height / (2 * (o.block_width + o.block_height)) : half_block;
-  if (o.layout == Synthetic_city_layout::grid && o.jitter > max_jitter)
+  const double max_jitter = synthetic_city_max_jitter(o);
+  if (o.jitter > max_jitter)
     throw_invalid_argument(
         fn, "jitter must be at most ", max_jitter,
         avenue ? " (block_width x block_height / (2 (block_width + block_height)), with the diagonal avenue)"
