@@ -74,12 +74,13 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   };
   with_metric(o, [&](const auto& metric) {
     const double reach = largest * metric.spatial_scale();
-    FeatureRecon::internal::Dynamic_grid<D> grid(where, reach);
+    const double cell = o.periodic ? torus_search_reach(reach) : reach;  // margin: see torus_search_reach()
+    FeatureRecon::internal::Dynamic_grid<D> grid(where, cell);
     const double reach2 = prefilter_bound(reach);
     // Calls f(j) for every kept candidate near position p, on the torus also near its shifted copies.
     const auto for_each_candidate = [&](const std::array<double, D>& p, const auto& f) {
       if (!o.periodic) return grid.for_each_candidate(p, f);
-      for_each_torus_candidate(grid, p, reach, [&](std::uint32_t j, int) { f(j); });
+      for_each_torus_candidate(grid, p, cell, [&](std::uint32_t j, int) { f(j); });
     };
     std::size_t failures = 0;
     for (std::size_t step = 0; step < n; ++step) {

@@ -43,7 +43,9 @@ struct Continuous_sampling_result {
 /// colour); a dart is kept when no kept sample is closer than bilateral distance r (one exactly r away is
 /// no conflict, as in bilateral_dart_throwing()). Stops after `max_consecutive_failures` (at least 1,
 /// checked) rejections in a row (then the set is close to maximal: rho about 0.75 for Euclidean darts) or
-/// `max_samples` samples. Kept samples sit in a hash grid of side r sigma_position.
+/// `max_samples` samples. Kept samples sit in a hash grid of side r sigma_position. With `options.periodic`
+/// the box is a torus (distances of the nearest images, periods its sides): the set tiles the plane, as the
+/// periodogram of sampling_spectrum() assumes for the unit box.
 /// \tparam FeatureFunction callable `(double x, double y) -> Feature`.
 /// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, the squared feature
 ///   distance.
@@ -71,6 +73,7 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
     return result;
   }
   std::mt19937_64 rng(options.seed);
+  const std::array<double, 2> low{box[0], box[1]}, period{box[2] - box[0], box[3] - box[1]};
   auto uniform = [&] { return double(rng() >> 11) * 0x1.0p-53; };
   // The grid needs all positions up front: it only uses them for its frame, so pass the box corners.
   std::vector<std::array<double, 2>> positions{{box[0], box[1]}, {box[2], box[3]}};
@@ -80,7 +83,10 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
     // is a dense array, not a hash map.
     const double fit = (box[2] - box[0]) * (box[3] - box[1]) / (reach * reach);
     const double expected = options.max_samples > 0 ? std::min(fit, double(options.max_samples)) : fit;
-    FeatureRecon::internal::Dynamic_grid<2> grid(positions, reach,
+    // On the torus with a margin for the rounding of shifted queries (see torus_search_reach()).
+    const double extent = std::max({std::abs(box[0]), std::abs(box[1]), std::abs(box[2]), std::abs(box[3])});
+    const double cell = options.periodic ? internal::torus_search_reach(reach, extent) : reach;
+    FeatureRecon::internal::Dynamic_grid<2> grid(positions, cell,
                                                  static_cast<std::size_t>(std::min(expected, 0x1p40)) + 1);
     std::size_t failures = 0;
     // the largest share of the failure budget seen (a success resets the run of failures)
@@ -105,13 +111,23 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
             std::isnan(self) ? std::string("NaN") : std::to_string(self),
             " from itself (NaN in the feature?)");
       bool conflict = false;
-      grid.for_each_candidate(p, [&](std::uint32_t j) {
+      const auto test = [&](std::uint32_t j) {
         if (conflict) return;
         const auto& q = positions[j];
-        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+        double d2 = 0;
+        for (int k = 0; k < 2; ++k) {
+          double d = std::abs(p[std::size_t(k)] - q[std::size_t(k)]);
+          if (options.periodic) d = std::min(d, period[std::size_t(k)] - d);
+          d2 += d * d;
+        }
         if (!(d2 < reach2)) return;
         conflict = metric(d2, double(feature_distance(f, result.samples[j - 2].feature))) < radius;
-      });
+      };
+      if (options.periodic)
+        internal::for_each_torus_candidate(
+            grid, p, cell, [&](std::uint32_t j, int) { test(j); }, low, period);
+      else
+        grid.for_each_candidate(p, test);
       if (conflict) {
         ++failures;
         continue;

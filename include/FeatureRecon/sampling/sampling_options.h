@@ -177,8 +177,10 @@ struct Elimination_options {
   std::uint64_t seed = 0;  ///< breaks ties between equal weights (grids, images): a seeded permutation
   /// Positions on the unit torus: taken modulo 1, the distance of two positions is that of their nearest
   /// images (each coordinate difference d counts as min(|d|, 1 - |d|); each pair is weighed once, also when
-  /// 2 r_max exceeds 1/2), and without domain_measure the domain is the torus (measure 1, intrinsic dimension
-  /// that of the positions unless given). For sets that tile space (Yuksel's tileable sets), as the
+  /// 2 r_max exceeds 1/2), and without domain_measure the domain is the torus (measure 1 and the positions'
+  /// dimension, unless a lower intrinsic_dimension is given: a surface in the 3D torus has its area estimated
+  /// as without `periodic`, on the positions modulo 1, which does not look across the faces). For sets that
+  /// tile space (Yuksel's tileable sets), as the
   /// periodogram of sampling_spectrum() and the periodic measures of sampling_quality() take them. Default
   /// false.
   bool periodic = false;
@@ -232,6 +234,10 @@ struct Continuous_dart_throwing_options {
   std::size_t max_consecutive_failures = 10000;
   std::size_t max_samples = 0;  ///< stop after this many accepted samples; default 0: no limit
   std::uint64_t seed = 0;       ///< the random darts
+  /// The box is a torus: each coordinate difference d counts as min(|d|, L - |d|) for the box's side L (the
+  /// nearest images), so that the samples tile the plane; with the box {0, 0, 1, 1}, the unit torus of
+  /// sampling_spectrum() and of the periodic measures of sampling_quality(). Default false.
+  bool periodic = false;
   /// Called every 65536 darts with the largest fraction of the failure budget used so far (non-decreasing: a
   /// new sample resets the run of failures, not the report); false stops (samples so far are kept)
   Progress_callback progress;

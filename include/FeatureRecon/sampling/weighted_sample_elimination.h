@@ -100,7 +100,7 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 /// factor 4 (each with the r_max of its own count) first bring n down to max(16 count, sqrt(2^24 count / c)).
 /// With `options.periodic` the positions are taken modulo 1 and distances are those of the unit torus, so
 /// that the kept set tiles the plane (or space), as Yuksel's tileable sets; the grid is then looked up also
-/// shifted by one cell across the faces the neighbourhood reaches.
+/// shifted by the period (1) across the faces the neighbourhood reaches.
 ///
 /// \tparam ItemRange a forward range of `Traits::Item`.
 /// \tparam OutputIterator accepts std::size_t (indices into `items`).
@@ -312,6 +312,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       // goes, which costs less than storing them on this scale). Two passes over the grid: count, then fill.
       internal::with_metric(options, [&](const auto& metric) {
         const double spatial = two_r * metric.spatial_scale(), spatial2 = internal::prefilter_bound(spatial);
+        // The grid's cell and look-up reach: on the torus with a margin for the rounding of shifted queries.
+        const double cell = options.periodic ? internal::torus_search_reach(spatial) : spatial;
         // Weight of the pair (i, j) (local ids), or a negative number when j is not within 2 r of i.
         auto pair_weight = [&](std::size_t i, std::size_t j) {
           double d2 = 0;  // from the stage's own copy of the positions (contiguous, no indirection)
@@ -334,7 +336,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory.
           // The result does not depend on it: within a cell the order stays the input order, the weight of an
           // item sums its neighbours in the same order, and the heap pops by (weight, priority) alone.
-          const FeatureRecon::internal::Grid_frame<D> frame(positions, spatial);
+          const FeatureRecon::internal::Grid_frame<D> frame(positions, cell);
           std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m);
           for (std::size_t i = 0; i < m; ++i) keyed[i] = {frame.key(frame.cell_of(positions[i])), active[i]};
           std::sort(keyed.begin(), keyed.end());
@@ -343,12 +345,12 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
             positions[i] = where[active[i]];
           }
         }
-        const FeatureRecon::internal::Uniform_grid<D> grid(positions, spatial);
+        const FeatureRecon::internal::Uniform_grid<D> grid(positions, cell);
         // Calls f(j) for the candidates j near item i; on the torus each once, at its nearest image (with
         // 2 r_max above half the cell, several images of j can lie within reach).
         auto for_each_candidate = [&](std::size_t i, const auto& f) {
           if (!options.periodic) return grid.for_each_candidate(positions[i], f);
-          internal::for_each_torus_candidate(grid, positions[i], spatial, [&](std::uint32_t j, int shift) {
+          internal::for_each_torus_candidate(grid, positions[i], cell, [&](std::uint32_t j, int shift) {
             if (shift == internal::nearest_image_shift(positions[i], positions[j])) f(j);
           });
         };

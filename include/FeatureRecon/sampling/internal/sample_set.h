@@ -36,6 +36,14 @@ inline double torus_coordinate(double x) {
   return t < 1 ? t : 0.0;
 }
 
+/// An array of D copies of v.
+template <std::size_t D>
+constexpr std::array<double, D> filled_array(double v) {
+  std::array<double, D> a{};
+  for (std::size_t k = 0; k < D; ++k) a[k] = v;
+  return a;
+}
+
 /// The positions modulo 1 (torus_coordinate() of every coordinate).
 template <std::size_t D>
 std::vector<std::array<double, D>> torus_positions(std::vector<std::array<double, D>> positions) {
@@ -70,14 +78,27 @@ int nearest_image_shift(const std::array<double, D>& p, const std::array<double,
   return code;
 }
 
+/// The reach to build a grid of positions on a torus with, and to look it up with for_each_torus_candidate(),
+/// so that every pair whose torus distance is computed below `reach` is found: the shifted queries p +- 1 and
+/// their cells are rounded, and the nearest-image difference min(|d|, period - |d|) too, by up to a few ulps
+/// of the coordinates (found from one side only, a pair within a few ulps of 2 r_max made the elimination's
+/// weights wrap around). A relative margin of 2^-40 and an absolute one of 2^-48 times `extent`, the largest
+/// coordinate magnitude (1 on the unit torus); the exact distance test still decides.
+inline double torus_search_reach(double reach, double extent = 1) {
+  return reach * (1 + 0x1p-40) + extent * 0x1p-48;
+}
+
 /// Calls f(j, shift) for the candidates j of a uniform grid of the positions modulo 1 (a Uniform_grid or
 /// Dynamic_grid whose cells are at least `reach`) near p and, along the axes where p lies within `reach` of a
 /// face of the unit cell, near its images p + s for s in {-1, 0, 1}^D (every combination of such axes);
 /// `shift` codes s as nearest_image_shift() does. Every position whose nearest image lies within `reach` of p
 /// is found at least once, at its nearest shift; a caller that must see each position once keeps only the
-/// call whose shift is nearest_image_shift(p, position).
+/// call whose shift is nearest_image_shift(p, position). With `low` and `period` the cell is the box [low,
+/// low + period) instead, and the images lie at p + s period.
 template <std::size_t D, class Grid, class F>
-void for_each_torus_candidate(const Grid& grid, const std::array<double, D>& p, double reach, F&& f) {
+void for_each_torus_candidate(const Grid& grid, const std::array<double, D>& p, double reach, F&& f,
+                              const std::array<double, D>& low = {},
+                              const std::array<double, D>& period = filled_array<D>(1.0)) {
   int shifts = 1;
   for (std::size_t k = 0; k < D; ++k) shifts *= 3;
   for (int shift = 0; shift < shifts; ++shift) {
@@ -85,8 +106,8 @@ void for_each_torus_candidate(const Grid& grid, const std::array<double, D>& p, 
     bool needed = true;
     for (std::size_t k = 0, c = std::size_t(shift); k < D; ++k, c /= 3) {
       const int s = int(c % 3) - 1;
-      needed = needed && (s == 0 || (s > 0 ? p[k] < reach : p[k] > 1 - reach));
-      q[k] += double(s);
+      needed = needed && (s == 0 || (s > 0 ? p[k] - low[k] < reach : p[k] - low[k] > period[k] - reach));
+      q[k] += double(s) * period[k];
     }
     if (needed) grid.for_each_candidate(q, [&](std::uint32_t j) { f(j, shift); });
   }
