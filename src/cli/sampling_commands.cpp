@@ -44,6 +44,23 @@ std::pair<int, double> domain_of(const std::vector<std::array<double, 3>>& p) {
   return {dim,
           dim == 2 ? fs::internal::estimate_surface_area(p, knn) : fs::internal::bounding_box_measure<3>(p)};
 }
+/// The points of a text file (`sample`, `sample-stats`: any file but PLY, OFF and XYZ). A file that is no
+/// such text and does not end in .txt or .xyz (an OBJ mesh, a compressed or binary cloud) is said to have
+/// been read as text, with the formats that are clouds.
+io::Point_file read_text_points(const std::string& input) {
+  try {
+    return io::read_points(input);
+  } catch (const io::Input_error& e) {
+    const std::string extension = io::file_extension(input);
+    if (extension == "txt" || extension == "xyz") throw;
+    throw io::Input_error(
+        std::string(e.what()) + " (" +
+        (extension.empty() ? std::string("a file without an extension") : "a file ending in ." + extension) +
+        " is read as text: 2 or 3 numbers per line, or 6 with normals; point clouds are PLY, OFF "
+        "or XYZ)");
+  }
+}
+
 /// `sample` on points in the plane (a text file of lines `x y`): Euclidean spacing, written as `x y` lines.
 int sample_plane(const Arguments& args, const io::Point_file& file, const Sampler_request& request,
                  Outputs& outputs) {
@@ -150,7 +167,7 @@ int run_sample(const std::vector<std::string>& argv) {
   if (extension == "ply" || extension == "off" || extension == "xyz") {
     cloud = io::read_point_cloud(input);
   } else {
-    const io::Point_file text = io::read_points(input);
+    const io::Point_file text = read_text_points(input);
     if (text.size() == 0) throw io::Input_error(input + ": no points");
     if (text.dimension == 2) return sample_plane(args, text, request, outputs);
     if (text.dimension != 3 && text.dimension != 6)
@@ -294,7 +311,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   io::Point_file text;
   const std::string extension = io::file_extension(input);
   const bool cloud_format = extension == "ply" || extension == "off";
-  if (!cloud_format) text = io::read_points(input);
+  if (!cloud_format) text = read_text_points(input);
   const std::size_t columns = cloud_format ? 3 : text.dimension;
   const bool cloud = cloud_format || text.dimension == 6 || (extension == "xyz" && text.dimension == 3);
   io::Point_cloud points;

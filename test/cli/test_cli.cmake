@@ -544,6 +544,10 @@ expect(sample_too_many 2 "--count 900 exceeds the 800 points" sample --input ${W
 expect(sample_bad_method 2 "--method must be elimination or darts" sample --input ${WORK}/wall.xyz --count 9 --method x --out ${WORK}/s.xyz)
 file(WRITE ${WORK}/bad.xyz.txt "0 0 0 1\n")
 expect(sample_bad_format 1 "bad.xyz.txt: expected 2 numbers per line \\(points in the plane\\), 3 \\(a cloud\\) or 6 \\(a cloud with normals\\), got 4" sample --input ${WORK}/bad.xyz.txt --count 1 --out ${WORK}/s.xyz)
+# A file that is not text points and not a cloud format: said to have been read as text.
+file(WRITE ${WORK}/mesh.obj "v 0 0 0\nv 1 0 0\nf 1 2 3\n")
+expect(sample_obj_read_as_text 1 "mesh.obj:1: 'v' is not a number \\(coordinate\\) \\(a file ending in .obj is read as text: 2 or 3 numbers per line, or 6 with normals; point clouds are PLY, OFF or XYZ\\)" sample --input ${WORK}/mesh.obj --count 1 --out ${WORK}/s.xyz)
+expect(sample_stats_obj_read_as_text 1 "a file ending in .obj is read as text" sample-stats --input ${WORK}/mesh.obj)
 file(WRITE ${WORK}/no_points.txt "# nothing\n")
 expect(sample_no_points 1 "no_points.txt: no points" sample --input ${WORK}/no_points.txt --count 1 --out ${WORK}/s.txt)
 # Points in the plane (lines 'x y'): 1500 candidates of a linear congruential generator in the unit square,
