@@ -58,6 +58,12 @@ struct Lloyd_options {
   /// Threads integrating the cells (the results do not depend on it); default 0: the hardware's concurrency
   /// for an image, one thread for a constant density (its closed-form integrals cost less than the threads).
   unsigned threads = 0;
+  /// The density's box is a torus: cells are those of the sites and their images shifted by the box's sides
+  /// (periodic_voronoi_cells()), the density is integrated over the parts of a cell in each shifted copy of
+  /// the box, sites move to the centroids taken modulo the box, and moves and distances are those of the
+  /// torus. A constant density gives the periodic centroidal Voronoi tessellations of the point-set analysis
+  /// literature (blue-noise tiles); an image density a tileable stippling. Default false.
+  bool periodic = false;
 };
 
 /// Result of lloyd_step().
@@ -492,6 +498,172 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
   }
   return r;
 }
+
+// The Voronoi cells of sites on the torus of the box [x0, x1) x [y0, y1) (periods W = x1 - x0, H = y1 - y0):
+// the Delaunay triangulation (CGAL, exact predicates) of the distinct sites and of their images p + (s W, t
+// H), s, t in {-1, 0, 1}, that lie within `band` of the box. A site's cell is that of the torus when no
+// image missing from the triangulation can lie in the circumcircle of a triangle around it: every such
+// circle lies within the band. The band starts at 3 hexagonal spacings and doubles until that holds for
+// every site, up to the whole period (all eight copies; then the cells are those of the tiling). Each cell
+// is the polygon of its triangles' circumcentres around the site itself, counter-clockwise, and may reach
+// out of the box.
+struct Periodic_voronoi {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+  using Dt = CGAL::Delaunay_triangulation_2<K, Tds>;
+  std::vector<Polygon_2d> cells;     // per site; empty for a copy of a lower-indexed site
+  std::vector<std::uint32_t> owner;  // per site: the lowest index at the same position
+  std::size_t duplicates = 0;
+  double minimum_distance = std::numeric_limits<double>::infinity();  // between distinct sites, on the torus
+  std::size_t widenings = 0;                                          // band doublings (for tests)
+
+  void build(const std::vector<std::array<double, 2>>& sites, const std::array<double, 4>& box) {
+    const std::size_t n = sites.size();
+    const double W = box[2] - box[0], H = box[3] - box[1];
+    owner.resize(n);
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), std::uint32_t(0));
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return sites[a] != sites[b] ? sites[a] < sites[b] : a < b;
+    });
+    duplicates = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool copy = k > 0 && sites[order[k]] == sites[order[k - 1]];
+      owner[order[k]] = copy ? owner[order[k - 1]] : order[k];
+      duplicates += copy ? 1 : 0;
+    }
+    const double distinct = double(n - duplicates), whole = std::max(W, H);
+    double band = std::min(whole, 3 * std::sqrt(2 * W * H / (std::sqrt(3.0) * distinct)));
+    for (;;) {
+      std::vector<std::pair<K::Point_2, std::uint32_t>> points;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (owner[i] != i) continue;
+        for (std::uint32_t code = 0; code < 9; ++code) {
+          const double x = sites[i][0] + (double(code % 3) - 1) * W,
+                       y = sites[i][1] + (double(code / 3) - 1) * H;
+          if (code != 4 &&
+              !(x >= box[0] - band && x <= box[2] + band && y >= box[1] - band && y <= box[3] + band))
+            continue;
+          points.push_back({K::Point_2(x, y), static_cast<std::uint32_t>(9 * i + code)});
+        }
+      }
+      Dt dt;
+      dt.insert(points.begin(), points.end());
+      cells.assign(n, Polygon_2d());
+      minimum_distance = std::numeric_limits<double>::infinity();
+      bool complete = true;
+      for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+        if (v->info() % 9 != 4) continue;  // an image
+        Polygon_2d& cell = cells[v->info() / 9];
+        auto f = dt.incident_faces(v), end = f;
+        do {
+          if (dt.is_infinite(f)) {  // fewer than three distinct places within reach: the band is too narrow
+            complete = false;
+            break;
+          }
+          const K::Point_2 c =
+              CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+          const double r = std::sqrt(CGAL::to_double(CGAL::squared_distance(c, v->point())));
+          complete = complete && c.x() - r >= box[0] - band && c.x() + r <= box[2] + band &&
+                     c.y() - r >= box[1] - band && c.y() + r <= box[3] + band;
+          const std::array<double, 2> q{c.x(), c.y()};
+          if (cell.empty() || q != cell.back()) cell.push_back(q);  // cocircular sites: one vertex
+        } while (++f != end);
+        if (cell.size() > 1 && cell.front() == cell.back()) cell.pop_back();
+        auto w = dt.incident_vertices(v), stop = w;
+        do
+          if (!dt.is_infinite(w))
+            minimum_distance = std::min(
+                minimum_distance, std::sqrt(CGAL::to_double(CGAL::squared_distance(v->point(), w->point()))));
+        while (++w != stop);
+      }
+      if (complete || band >= whole) break;
+      band = std::min(2 * band, whole);
+      ++widenings;
+    }
+  }
+};
+
+// Mass and moments of a cell on the torus: the parts of the polygon in the nine copies of the box shifted by
+// multiples of its sides, each shifted back into the box, integrated there and its moments moved to the
+// polygon's own frame (M1 + t M0, M2 + 2 t . M1 + |t|^2 M0 for the shift t), summed in a fixed order.
+inline Density_moments periodic_cell_moments(const Polygon_2d& cell, const Pixel_density& density) {
+  const std::array<double, 4> box = density.box();
+  const double W = box[2] - box[0], H = box[3] - box[1];
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for (const auto& q : cell)
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = std::min(lo[k], q[std::size_t(k)]);
+      hi[k] = std::max(hi[k], q[std::size_t(k)]);
+    }
+  Density_moments sum;
+  Polygon_2d piece, scratch;
+  for (int ty = -1; ty <= 1; ++ty)
+    for (int tx = -1; tx <= 1; ++tx) {
+      const double sx = tx * W, sy = ty * H;
+      const std::array<double, 4> copy{box[0] + sx, box[1] + sy, box[2] + sx, box[3] + sy};
+      if (hi[0] <= copy[0] || lo[0] >= copy[2] || hi[1] <= copy[1] || lo[1] >= copy[3]) continue;
+      piece = cell;
+      Voronoi_builder::clip(copy, piece, scratch);
+      if (piece.size() < 3) continue;
+      for (auto& q : piece) {  // back into the box (clamped against the rounding of the shift)
+        q[0] = std::min(std::max(q[0] - sx, box[0]), box[2]);
+        q[1] = std::min(std::max(q[1] - sy, box[1]), box[3]);
+      }
+      const Density_moments m = density.integrate(piece);
+      sum.moment_2 += m.moment_2 + 2 * (sx * m.moment_x + sy * m.moment_y) + (sx * sx + sy * sy) * m.mass;
+      sum.moment_x += m.moment_x + sx * m.mass;
+      sum.moment_y += m.moment_y + sy * m.mass;
+      sum.mass += m.mass;
+    }
+  return sum;
+}
+
+// A coordinate x of the torus [low, low + period): x taken modulo the period.
+inline double wrap_into(double x, double low, double period) {
+  const double t = low + period * torus_coordinate((x - low) / period);
+  return t < low + period ? std::max(t, low) : low;
+}
+
+// One Lloyd step on the torus of the density's box, on checked sites (inside the box; x1 or y1 is taken as
+// x0 or y0).
+inline Lloyd_step_result periodic_lloyd_step_impl(const std::vector<std::array<double, 2>>& given,
+                                                  const Pixel_density& density, unsigned threads) {
+  Lloyd_step_result r;
+  const std::size_t n = given.size();
+  const std::array<double, 4> box = density.box();
+  const double W = box[2] - box[0], H = box[3] - box[1];
+  std::vector<std::array<double, 2>> sites = given;
+  for (auto& p : sites) p = {wrap_into(p[0], box[0], W), wrap_into(p[1], box[1], H)};
+  r.centroids = sites;
+  r.mass.assign(n, 0.0);
+  r.minimum_distance = std::numeric_limits<double>::infinity();
+  if (n == 0 || !(W > 0 && H > 0)) return r;
+  Periodic_voronoi voronoi;
+  voronoi.build(sites, box);
+  r.duplicates = voronoi.duplicates;
+  r.minimum_distance = voronoi.minimum_distance;
+  std::vector<Density_moments> moments(n);
+  if (threads == 0 && density.is_constant()) threads = 1;
+  FeatureRecon::internal::parallel_blocks(n, threads, 256, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (voronoi.owner[i] == i) moments[i] = periodic_cell_moments(voronoi.cells[i], density);
+  });
+  const double negligible = 1e-9 * density.total_mass() / static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (voronoi.owner[i] != i) continue;  // a copy: empty cell, stays
+    const Density_moments& m = moments[i];
+    const auto& p = sites[i];
+    r.mass[i] = m.mass;
+    r.energy += std::max(
+        0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
+    if (m.mass > negligible)
+      r.centroids[i] = {wrap_into(m.moment_x / m.mass, box[0], W), wrap_into(m.moment_y / m.mass, box[1], H)};
+  }
+  return r;
+}
 /// \endcond
 }  // namespace internal
 
@@ -537,11 +709,59 @@ Lloyd_step_result lloyd_step(const PointRange& points, const Pixel_density& dens
   return internal::lloyd_step_impl(sites, density, voronoi, 0);
 }
 
+/// The Voronoi cells of the sites on the torus of the box [x0, x1) x [y0, y1): those of the sites and of
+/// their images shifted by multiples of the box's sides, from CGAL's Delaunay_triangulation_2 (exact
+/// predicates; circumcentres in double). Each cell is a convex polygon around its site, counter-clockwise,
+/// and may reach out of the box (its parts in the shifted copies of the box belong to the torus's cell). A
+/// site on x1 or y1 is the one on x0 or y0. Sites at the position of a lower-indexed site get an empty cell.
+/// \tparam PointRange a range of 2D points. \tparam Traits a model of PointCoordinateTraits.
+/// \param points the sites, inside the box.
+/// \param box {x0, y0, x1, y1}, finite with x0 < x1 and y0 < y1 (checked; throws).
+/// \param traits reads the sites' coordinates.
+/// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box,
+///   and for a box of zero width or height.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<
+                                decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+std::vector<Polygon_2d> periodic_voronoi_cells(const PointRange& points, const std::array<double, 4>& box,
+                                               const Traits& traits = Traits()) {
+  const char* fn = "periodic_voronoi_cells";
+  const auto b = internal::check_box(box, fn);
+  if (!(b[0] < b[2] && b[1] < b[3]))
+    FeatureRecon::internal::throw_invalid_argument(fn, "the box of a torus needs x0 < x1 and y0 < y1");
+  std::vector<std::array<double, 2>> sites = internal::read_sites(points, b, traits, fn);
+  for (auto& p : sites)
+    p = {internal::wrap_into(p[0], b[0], b[2] - b[0]), internal::wrap_into(p[1], b[1], b[3] - b[1])};
+  internal::Periodic_voronoi voronoi;
+  if (!sites.empty()) voronoi.build(sites, b);
+  voronoi.cells.resize(sites.size());
+  return voronoi.cells;
+}
+
+/// One Lloyd iteration on the torus of the density's box (Lloyd_options::periodic): the centroid of every
+/// site's periodic Voronoi cell under the density (taken modulo the box), the cell masses and the CVT energy
+/// of the given sites, with distances of the torus. The result is the same bit for bit on any number of
+/// threads.
+/// \tparam PointRange a range of 2D points. \tparam Traits a model of PointCoordinateTraits.
+/// \param points the sites, inside the density's box.
+/// \param density the density and its box.
+/// \param traits reads the sites' coordinates.
+/// \throws std::invalid_argument naming the site for a site that is not 2D, not finite or outside the box.
+template <class PointRange, class Traits = Point_coordinate_traits<typename std::decay<
+                                decltype(*std::begin(std::declval<const PointRange&>()))>::type>>
+Lloyd_step_result periodic_lloyd_step(const PointRange& points, const Pixel_density& density,
+                                      const Traits& traits = Traits()) {
+  const auto sites = internal::read_sites(points, density.box(), traits, "periodic_lloyd_step");
+  return internal::periodic_lloyd_step_impl(sites, density, 0);
+}
+
 /// Lloyd relaxation of the sites under the pixel density: each iteration moves every site to the centroid of
 /// its Voronoi cell (clipped to the density's box, density integrated exactly per pixel). Stops at
 /// max_iterations, when the relative energy decrease or the largest move falls below its tolerance, or when
 /// on_iteration returns false. Copies of a site (equal positions) first move apart by a hundredth of the
-/// hexagonal spacing, kept inside the box. Deterministic: the same sites give bit-identical output. O(N log N
+/// hexagonal spacing, kept inside the box. With `options.periodic` the box is a torus
+/// (periodic_lloyd_step()): O(N log N + C) per iteration as well, the Delaunay triangulation rebuilt each
+/// time with the images of the sites near the faces. Deterministic: the same sites give bit-identical output.
+/// O(N log N
 /// + C) per iteration for N sites whose cell boundaries cross C pixel sides.
 /// \tparam PointRange a range of 2D points (the initial sites, for example from dart throwing).
 /// \tparam Traits a model of PointCoordinateTraits.
@@ -589,7 +809,9 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
       result.status = Status::interrupted;
       return result;
     }
-    Lloyd_step_result step = internal::lloyd_step_impl(result.sites, density, voronoi, options.threads);
+    Lloyd_step_result step = options.periodic
+                                 ? internal::periodic_lloyd_step_impl(result.sites, density, options.threads)
+                                 : internal::lloyd_step_impl(result.sites, density, voronoi, options.threads);
     Lloyd_iteration_statistics s;
     s.iteration = it + 1;
     s.energy = step.energy;
@@ -599,8 +821,13 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
     if (step.duplicates != 0) s.relative_radius = 0;
     double total_move = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const double d =
-          std::hypot(step.centroids[i][0] - result.sites[i][0], step.centroids[i][1] - result.sites[i][1]);
+      double dx = std::abs(step.centroids[i][0] - result.sites[i][0]),
+             dy = std::abs(step.centroids[i][1] - result.sites[i][1]);
+      if (options.periodic) {  // the move on the torus (a site may cross a face)
+        dx = std::min(dx, double(density.width()) - dx);
+        dy = std::min(dy, double(density.height()) - dy);
+      }
+      const double d = std::hypot(dx, dy);
       s.max_move = std::max(s.max_move, d);
       total_move += d;
     }

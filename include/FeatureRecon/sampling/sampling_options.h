@@ -180,9 +180,8 @@ struct Elimination_options {
   /// 2 r_max exceeds 1/2), and without domain_measure the domain is the torus (measure 1 and the positions'
   /// dimension, unless a lower intrinsic_dimension is given: a surface in the 3D torus has its area estimated
   /// as without `periodic`, on the positions modulo 1, which does not look across the faces). For sets that
-  /// tile space (Yuksel's tileable sets), as the
-  /// periodogram of sampling_spectrum() and the periodic measures of sampling_quality() take them. Default
-  /// false.
+  /// tile space (Yuksel's tileable sets), as the periodogram of sampling_spectrum() and the periodic measures
+  /// of sampling_quality() take them. Default false.
   bool periodic = false;
   /// fraction of the eliminations done; returning false stops (nothing is output)
   Progress_callback progress;

@@ -347,7 +347,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         }
         const FeatureRecon::internal::Uniform_grid<D> grid(positions, cell);
         // Calls f(j) for the candidates j near item i; on the torus each once, at its nearest image (with
-        // 2 r_max above half the cell, several images of j can lie within reach).
+        // 2 r_max above 1/2, half the torus, several images of j can lie within reach).
         auto for_each_candidate = [&](std::size_t i, const auto& f) {
           if (!options.periodic) return grid.for_each_candidate(positions[i], f);
           internal::for_each_torus_candidate(grid, positions[i], cell, [&](std::uint32_t j, int shift) {
