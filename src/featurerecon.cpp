@@ -379,7 +379,7 @@ const std::vector<Command>& commands() {
        "  --noise, --bias  standard deviation of each fix's noise and of each trip's offset, per coordinate "
        "(m)\n"
        "  --lane-offset    vehicles drive this far right of the centre line (m; at most half the shorter\n"
-       "                   block side; default 2, or that limit for smaller blocks)\n"
+       "                   block side; default 2, or a quarter of the shorter side for blocks under 8 m)\n"
        "  --seed N         the same seed gives the same city and trips (default 1)\n"
        "  --out-tracks, --out-vertices, --out-edges  the trips and the driven streets (required)\n"
        "  --out-streets-*  also write every street, driven or not\n"

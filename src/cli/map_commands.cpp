@@ -314,11 +314,13 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     if (seed < 0) throw Usage_error("--seed must be >= 0");
     o.seed = static_cast<std::uint64_t>(seed);
   }
-  // The defaults (jitter 10 m, lane offset 2 m) are lowered to what the blocks allow when they were not
-  // given: small blocks are no reason to refuse options the user did not set.
+  // The defaults (jitter 10 m, lane offset 2 m) are lowered for small blocks when they were not given: small
+  // blocks are no reason to refuse options the user did not set. The jitter to its limit (no street crosses
+  // another there), the lane offset to half its limit (at the limit, half a block, the lanes of two parallel
+  // streets would share the line between them).
   if (!args.has("jitter")) o.jitter = std::min(o.jitter, skeleton::synthetic_city_max_jitter(o));
   if (!args.has("lane-offset"))
-    o.lane_offset = std::min(o.lane_offset, skeleton::synthetic_city_max_lane_offset(o));
+    o.lane_offset = std::min(o.lane_offset, skeleton::synthetic_city_max_lane_offset(o) / 2);
   Progress progress("driving trips", args.has("quiet"));
   o.progress = std::ref(progress);
   // Every value comes from an option: the library's refusal of a combination is a usage error, named by flag.

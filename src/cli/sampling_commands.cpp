@@ -7,6 +7,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -51,8 +52,12 @@ io::Point_file read_text_points(const std::string& input) {
   try {
     return io::read_points(input);
   } catch (const io::Input_error& e) {
-    const std::string extension = io::file_extension(input);
-    if (extension == "txt" || extension == "xyz") throw;
+    // Only what the content says ("FILE:LINE: ..."): a missing file or a directory is no matter of format.
+    const std::string extension = io::file_extension(input), message = e.what(), located = input + ":";
+    const bool content = message.compare(0, located.size(), located) == 0 &&
+                         message.size() > located.size() &&
+                         std::isdigit(static_cast<unsigned char>(message[located.size()]));
+    if (!content || extension == "txt" || extension == "xyz") throw;
     throw io::Input_error(
         std::string(e.what()) + " (" +
         (extension.empty() ? std::string("a file without an extension") : "a file ending in ." + extension) +

@@ -466,9 +466,10 @@ expect(skeleton_local_support_large 2 "--local-support must be a whole number" s
 expect(skeleton_min_local_support_bad 2 "--min-local-support must be in \\(0, 1\\]" skeleton --tracks ${WORK}/sp_t.txt --min-local-support 0 --out-vertices ${WORK}/sp0_v.txt --out-edges ${WORK}/sp0_e.txt --quiet)
 expect(synthetic_city_sparse_score 0 "\"f_score\": 0\\.(7[5-9]|[89][0-9])[0-9]*," evaluate-map ${WORK}/sp_gv.txt ${WORK}/sp_ge.txt ${WORK}/sp_v.txt ${WORK}/sp_e.txt)
 # Blocks of 30 x 20 m allow a jitter of at most 6 m (the diagonal avenue) and 3 m blocks a lane offset of 1.5 m:
-# the defaults (10 and 2) are lowered to those limits when not given, and refused when given.
+# the defaults (10 and 2) are lowered when not given (the jitter to its limit, the lane offset to half its limit),
+# and refused when given beyond.
 expect(synthetic_city_small_blocks 0 "\"jitter\": 6, \"lane_offset\": 2," synthetic-city --block-width 30 --block-height 20 --trips 5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
-expect(synthetic_city_tiny_blocks 0 "\"jitter\": 0.75, \"lane_offset\": 1.5," synthetic-city --block-width 3 --block-height 3 --trips 5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
+expect(synthetic_city_tiny_blocks 0 "\"jitter\": 0.75, \"lane_offset\": 0.75," synthetic-city --block-width 3 --block-height 3 --trips 5 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
 expect(synthetic_city_small_blocks_jitter_given 2 "jitter must be at most 6 .*got 10" synthetic-city --block-width 30 --block-height 20 --jitter 10 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
 expect(synthetic_city_tiny_blocks_lane_given 2 "lane_offset must be at most half the shorter of block_width and block_height \\(1.5\\), got 2" synthetic-city --block-width 3 --block-height 3 --lane-offset 2 --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c --quiet)
 expect(synthetic_city_layout 2 "--layout must be grid or organic, got 'hex'" synthetic-city --layout hex --out-tracks ${WORK}/a --out-vertices ${WORK}/b --out-edges ${WORK}/c)
@@ -548,6 +549,8 @@ expect(sample_bad_format 1 "bad.xyz.txt: expected 2 numbers per line \\(points i
 file(WRITE ${WORK}/mesh.obj "v 0 0 0\nv 1 0 0\nf 1 2 3\n")
 expect(sample_obj_read_as_text 1 "mesh.obj:1: 'v' is not a number \\(coordinate\\) \\(a file ending in .obj is read as text: 2 or 3 numbers per line, or 6 with normals; point clouds are PLY, OFF or XYZ\\)" sample --input ${WORK}/mesh.obj --count 1 --out ${WORK}/s.xyz)
 expect(sample_stats_obj_read_as_text 1 "a file ending in .obj is read as text" sample-stats --input ${WORK}/mesh.obj)
+# ... but a missing file is only missing.
+expect(sample_missing_obj 1 "missing.obj: cannot open for reading \\(No such file or directory\\)\n" sample --input ${WORK}/missing.obj --count 1 --out ${WORK}/s.xyz)
 file(WRITE ${WORK}/no_points.txt "# nothing\n")
 expect(sample_no_points 1 "no_points.txt: no points" sample --input ${WORK}/no_points.txt --count 1 --out ${WORK}/s.txt)
 # Points in the plane (lines 'x y'): 1500 candidates of a linear congruential generator in the unit square,

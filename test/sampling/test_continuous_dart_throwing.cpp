@@ -197,6 +197,25 @@ TEST(ContinuousDartThrowing, DartsFillTheBoxWhereverItIs) {
   }
 }
 
+TEST(ContinuousDartThrowing, DartsStayInsideAHalfOpenBoxFarFromTheOrigin) {
+  // x0 + L u rounds up to x1 where x0 is large against L (a review: 6 of 200 samples on x1 in this box, 28 of
+  // 384 in one at 1e15): the half-open box holds every sample, on the torus x1 is x0.
+  const std::array<double, 4> box{1e6, -5e5, 1e6 + 1e-9, -5e5 + 1};
+  for (const bool periodic : {false, true}) {
+    Continuous_dart_throwing_options o;
+    o.max_samples = 200;
+    o.periodic = periodic;
+    const auto r = continuous_bilateral_dart_throwing(box, 1e-3, grey_step, squared, o);
+    ASSERT_EQ(r.samples.size(), 200u);
+    for (const auto& s : r.samples) {
+      EXPECT_GE(s.position[0], box[0]);
+      EXPECT_LT(s.position[0], box[2]);
+      EXPECT_GE(s.position[1], box[1]);
+      EXPECT_LT(s.position[1], box[3]);
+    }
+  }
+}
+
 TEST(ContinuousDartThrowing, SeedDrivesAMersenneTwister) {
   // The first dart is always kept: its position is the first two numbers of std::mt19937_64(seed) as doubles
   // in [0, 1) (53 bits), scaled to the box.

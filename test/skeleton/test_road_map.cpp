@@ -757,8 +757,8 @@ TEST(SyntheticCity, StreetsAndTrips) {
     b.trips = 0;
     b.missing_streets = 0;
     b.diagonal = diagonal;
-    b.jitter = diagonal ? 120.0 * 90.0 / (2 * 210.0) : 45.0;
-    EXPECT_EQ(synthetic_city_max_jitter(b), b.jitter);  // the limits as the callers may ask for them
+    EXPECT_NEAR(synthetic_city_max_jitter(b), diagonal ? 120.0 * 90.0 / (2 * 210.0) : 45.0, 1e-12);
+    b.jitter = synthetic_city_max_jitter(b);  // the limits as the callers may ask for them
     b.lane_offset = 45;
     EXPECT_EQ(synthetic_city_max_lane_offset(b), 45.0);
     for (std::uint64_t seed = 1; seed <= 40; ++seed) {
@@ -796,6 +796,9 @@ TEST(SyntheticCity, StreetsAndTrips) {
   b.layout = Synthetic_city_layout::organic;  // no jitter there
   EXPECT_EQ(make_synthetic_city(b).status, Status::success);
   EXPECT_EQ(synthetic_city_max_jitter(b), std::numeric_limits<double>::infinity());
+  Synthetic_city_options tiny;  // blocks of 1e-300: w h underflowed to a limit of 0
+  tiny.block_width = tiny.block_height = 1e-300;
+  EXPECT_DOUBLE_EQ(synthetic_city_max_jitter(tiny), 2.5e-301);
   b.lane_offset = 1e5;
   EXPECT_EQ(
       message_of([&] { make_synthetic_city(b); }),

@@ -101,8 +101,11 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
         }
       }
       ++result.darts;
-      const std::array<double, 2> p{box[0] + (box[2] - box[0]) * uniform(),
-                                    box[1] + (box[3] - box[1]) * uniform()};
+      std::array<double, 2> p{box[0] + (box[2] - box[0]) * uniform(), box[1] + (box[3] - box[1]) * uniform()};
+      // Far from the origin x0 + L u can round up to x1, outside the half-open box: on the torus that is x0,
+      // otherwise the last double before x1.
+      for (std::size_t k = 0; k < 2; ++k)
+        if (p[k] >= box[2 + k]) p[k] = options.periodic ? box[k] : std::nextafter(box[2 + k], box[k]);
       const Feature f = feature_at(p[0], p[1]);
       const double self = double(feature_distance(f, f));
       if (!(self >= 0 && self < std::numeric_limits<double>::infinity()))  // a NaN feature never conflicts

@@ -364,6 +364,29 @@ std::vector<std::array<double, 2>> read_sites(const PointRange& points, const st
   return sites;
 }
 
+// The masses of the sites' cells, the CVT energy (integral of rho |x - p|^2 = M2 - 2 p . M1 + |p|^2 M0 per
+// cell, clamped at 0 against rounding) and the centroids, put into the domain by place(x, y), from the cells'
+// moments. A copy of a site (owner[i] != i) has an empty cell and stays. A cell over zero density sums its
+// edges' moments to rounding noise, not to 0: its "centroid" was that noise divided by noise, clamped to a
+// corner of the box, where such sites then stacked (stippling's white corners). Masses below a billionth of
+// the mean cell's count as empty (the site stays).
+template <class Place>
+void cell_centroids(const std::vector<std::array<double, 2>>& sites, const std::vector<std::uint32_t>& owner,
+                    const std::vector<Density_moments>& moments, const Pixel_density& density,
+                    Lloyd_step_result& r, Place place) {
+  const std::size_t n = sites.size();
+  const double negligible = 1e-9 * density.total_mass() / static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (owner[i] != i) continue;
+    const Density_moments& m = moments[i];
+    const auto& p = sites[i];
+    r.mass[i] = m.mass;
+    r.energy += std::max(
+        0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
+    if (m.mass > negligible) r.centroids[i] = place(m.moment_x / m.mass, m.moment_y / m.mass);
+  }
+}
+
 // One Lloyd step on checked sites. A cell whose Voronoi vertices all lie in the box (an interior cell) is
 // integrated edge by edge: each Voronoi edge between two interior cells once, added to one and subtracted
 // from the other; the cells that touch the box are clipped and integrated whole.
@@ -478,24 +501,11 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
       }
     }
   });
-  // A cell over zero density sums its edges' moments to rounding noise, not to 0: its "centroid" was that
-  // noise divided by noise, clamped to a corner of the box, where such sites then stacked (stippling's white
-  // corners). Masses below a billionth of the mean cell's count as empty (the site stays).
-  const double negligible = 1e-9 * density.total_mass() / static_cast<double>(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (voronoi.owner[i] != i) continue;  // a duplicate: empty cell, stays
-    const Density_moments& m = moments[i];
-    const auto& p = sites[i];
-    r.mass[i] = m.mass;
-    // integral of rho |x - p|^2 = M2 - 2 p . M1 + |p|^2 M0; clamped at 0 against rounding.
-    r.energy += std::max(
-        0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
-    if (m.mass > negligible) {
-      // The centroid lies in the convex cell, inside the box; clamp against rounding.
-      r.centroids[i] = {std::min(std::max(m.moment_x / m.mass, box[0]), box[2]),
-                        std::min(std::max(m.moment_y / m.mass, box[1]), box[3])};
-    }
-  }
+  // The centroid lies in the convex cell, inside the box; clamped against rounding.
+  cell_centroids(sites, voronoi.owner, moments, density, r, [&](double x, double y) {
+    return std::array<double, 2>{std::min(std::max(x, box[0]), box[2]),
+                                 std::min(std::max(y, box[1]), box[3])};
+  });
   return r;
 }
 
@@ -651,17 +661,9 @@ inline Lloyd_step_result periodic_lloyd_step_impl(const std::vector<std::array<d
     for (std::size_t i = begin; i < end; ++i)
       if (voronoi.owner[i] == i) moments[i] = periodic_cell_moments(voronoi.cells[i], density);
   });
-  const double negligible = 1e-9 * density.total_mass() / static_cast<double>(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (voronoi.owner[i] != i) continue;  // a copy: empty cell, stays
-    const Density_moments& m = moments[i];
-    const auto& p = sites[i];
-    r.mass[i] = m.mass;
-    r.energy += std::max(
-        0.0, m.moment_2 - 2 * (p[0] * m.moment_x + p[1] * m.moment_y) + (p[0] * p[0] + p[1] * p[1]) * m.mass);
-    if (m.mass > negligible)
-      r.centroids[i] = {wrap_into(m.moment_x / m.mass, box[0], W), wrap_into(m.moment_y / m.mass, box[1], H)};
-  }
+  cell_centroids(sites, voronoi.owner, moments, density, r, [&](double x, double y) {
+    return std::array<double, 2>{wrap_into(x, box[0], W), wrap_into(y, box[1], H)};
+  });
   return r;
 }
 /// \endcond

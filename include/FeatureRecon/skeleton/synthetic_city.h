@@ -179,8 +179,10 @@ inline double synthetic_city_max_jitter(const Synthetic_city_options& o) {
   // sqrt(w^2 + h^2) from its diagonal, and a jitter J moves the corner and the diagonal towards each other by
   // up to 2 J (w + h) / sqrt(w^2 + h^2): below w h / (2 (w + h)) the avenue crosses no street.
   if (o.layout != Synthetic_city_layout::grid) return std::numeric_limits<double>::infinity();
-  return o.diagonal ? o.block_width * o.block_height / (2 * (o.block_width + o.block_height))
-                    : std::min(o.block_width, o.block_height) / 2;
+  // w h / (2 (w + h)) as min(w, h) (max(w, h) / (2 (w + h))): w h underflowed for blocks of 1e-300.
+  const double shorter = std::min(o.block_width, o.block_height),
+               longer = std::max(o.block_width, o.block_height);
+  return o.diagonal ? shorter * (longer / (2 * (o.block_width + o.block_height))) : shorter / 2;
 }
 
 /// The largest `lane_offset` make_synthetic_city() accepts: half the shorter block side (a lane farther off
