@@ -882,3 +882,38 @@ TEST(PeriodicLloydRelaxation, EnergyDecreasesAndTheSpectrumIsThatOfLloydsMethod)
   EXPECT_GT(d.oscillation, 3.0);
   EXPECT_LT(d.oscillation, 5.0);
 }
+
+TEST(PeriodicLloydStep, ElongatedBoxesCopiesAcrossTheFacesAndNeighbouringDoubles) {
+  // A review's findings. Sites of one column in a wide box: with only their vertical images in the band the
+  // points were collinear and the walk around a site crashed; now the band widens. The cells then are the
+  // horizontal strips of the torus (exact: one site in 100 x 2 owns the box, centroid the site; three sites
+  // in 64 x 4 at heights 0.5, 1.5, 3 own strips of heights 1.25, 1.25 and 1.5).
+  const Lloyd_step_result one =
+      periodic_lloyd_step(std::vector<P2>{{50, 0.5}}, Pixel_density::uniform(100, 2));
+  EXPECT_LT(torus_gap(one.centroids[0], {50, 0.5}, 100, 2), 1e-9);
+  EXPECT_NEAR(one.mass[0], 200, 1e-9);
+  EXPECT_EQ(one.minimum_distance, std::numeric_limits<double>::infinity());  // not its own image's distance
+  const Lloyd_step_result column =
+      periodic_lloyd_step(std::vector<P2>{{32, 0.5}, {32, 1.5}, {32, 3}}, Pixel_density::uniform(64, 4));
+  EXPECT_NEAR(column.mass[0], 80, 1e-9);
+  EXPECT_NEAR(column.mass[1], 80, 1e-9);
+  EXPECT_NEAR(column.mass[2], 96, 1e-9);
+  EXPECT_NEAR(column.centroids[0][1], 0.375, 1e-9);
+  EXPECT_NEAR(column.centroids[1][1], 1.625, 1e-9);
+  EXPECT_NEAR(column.centroids[2][1], 3.0, 1e-9);
+  EXPECT_NEAR(column.minimum_distance, 1.0, 1e-12);
+  // A site on x1 equal to one on x0 on the torus: separated as a copy, not left with an empty cell for good.
+  Lloyd_options o;
+  o.periodic = true;
+  o.max_iterations = 10;
+  const Lloyd_result r = lloyd_relaxation(std::vector<P2>{{0, .25}, {.5, .25}, {0, .75}, {.5, .75}, {1, .25}},
+                                          Pixel_density(1, 1, {1.0}), o);
+  EXPECT_GT(r.mass[4], 0.05);
+  EXPECT_GT(r.history.back().relative_radius, 0.0);
+  // Neighbouring doubles stay distinct sites on the torus (the wrap sent them to one value).
+  const Lloyd_step_result near =
+      periodic_lloyd_step(std::vector<P2>{{0.44138157042535586, .5}, {0.44138157042535592, .5}, {2, .5}},
+                          Pixel_density::uniform(3, 1));
+  EXPECT_EQ(near.duplicates, 0u);
+  EXPECT_GT(near.mass[1], 0.0);
+}

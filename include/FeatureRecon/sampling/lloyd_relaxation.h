@@ -562,8 +562,11 @@ struct Periodic_voronoi {
       dt.insert(points.begin(), points.end());
       cells.assign(n, Polygon_2d());
       minimum_distance = std::numeric_limits<double>::infinity();
-      bool complete = true;
-      for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+      // Points on one line (sites of one column in a wide box with only their vertical images) have no
+      // triangles: the band is too narrow (at the whole period the nine copies span the plane).
+      const bool planar = dt.dimension() == 2;
+      bool complete = planar;
+      for (auto v = dt.finite_vertices_begin(); planar && v != dt.finite_vertices_end(); ++v) {
         if (v->info() % 9 != 4) continue;  // an image
         Polygon_2d& cell = cells[v->info() / 9];
         auto f = dt.incident_faces(v), end = f;
@@ -583,7 +586,7 @@ struct Periodic_voronoi {
         if (cell.size() > 1 && cell.front() == cell.back()) cell.pop_back();
         auto w = dt.incident_vertices(v), stop = w;
         do
-          if (!dt.is_infinite(w))
+          if (!dt.is_infinite(w) && w->info() / 9 != v->info() / 9)  // not the site's own image
             minimum_distance = std::min(
                 minimum_distance, std::sqrt(CGAL::to_double(CGAL::squared_distance(v->point(), w->point()))));
         while (++w != stop);
@@ -633,8 +636,9 @@ inline Density_moments periodic_cell_moments(const Polygon_2d& cell, const Pixel
 
 // A coordinate x of the torus [low, low + period): x taken modulo the period.
 inline double wrap_into(double x, double low, double period) {
-  const double t = low + period * torus_coordinate((x - low) / period);
-  return t < low + period ? std::max(t, low) : low;
+  if (x >= low && x < low + period) return x;  // as given: distinct sites stay distinct
+  const double t = x - period * std::floor((x - low) / period);
+  return t >= low && t < low + period ? t : low;
 }
 
 // One Lloyd step on the torus of the density's box, on checked sites (inside the box; x1 or y1 is taken as
@@ -798,6 +802,9 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
   // together for good. Every copy after the first moves by d_hex / 100 first (as kernel_relaxation() does).
   if (options.max_iterations > 0) {  // no iteration: the sites as given
     const std::array<double, 4> b = density.box();
+    if (options.periodic)  // a site on x1 or y1 is the one on x0 or y0: a copy to separate
+      for (auto& p : result.sites)
+        p = {internal::wrap_into(p[0], b[0], b[2] - b[0]), internal::wrap_into(p[1], b[1], b[3] - b[1])};
     const std::array<double, 2> lo{b[0], b[1]}, hi{b[2], b[3]};
     internal::separate_copies<2>(
         n, hexagonal / 100, [&result](std::size_t i) -> auto& { return result.sites[i]; }, &lo, &hi);
