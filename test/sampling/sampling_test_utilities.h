@@ -3,6 +3,8 @@
 #ifndef FEATURERECON_TEST_SAMPLING_SAMPLING_TEST_UTILITIES_H
 #define FEATURERECON_TEST_SAMPLING_SAMPLING_TEST_UTILITIES_H
 
+#include <FeatureRecon/sampling/sampling_quality.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <gtest/gtest.h>
@@ -29,6 +31,21 @@ inline std::vector<Point_2> white_noise(std::size_t n, unsigned seed) {
     p.emplace_back(x, u());
   }
   return p;
+}
+
+/// rho of a 2D set on the unit torus (sampling_quality() with `periodic`).
+inline double torus_relative_radius(const std::vector<Point_2>& s) {
+  sampling::Sampling_quality_options q;
+  q.periodic = true;
+  return sampling::sampling_quality(s, q).relative_radius;
+}
+
+/// The periodogram of a 2D set on the unit torus up to |f_x|, |f_y| <= 200, as the averaged spectrum tests
+/// take it.
+inline sampling::Sampling_spectrum torus_spectrum(const std::vector<Point_2>& s) {
+  sampling::Sampling_spectrum_options o;
+  o.max_frequency = 200;
+  return sampling::sampling_spectrum(s, o);
 }
 
 /// Runs f, which must throw std::invalid_argument with `part` in its message.

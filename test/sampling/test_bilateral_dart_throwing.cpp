@@ -145,12 +145,8 @@ TEST(BilateralDartThrowing, PeriodicThrowHasTheSpectrumOfMaximalPoissonDisk) {
     o.seed = seed;
     std::vector<Point_2> s;
     for (std::size_t i : darts(candidates, 0.025, o)) s.push_back(candidates[i]);
-    Sampling_quality_options q;
-    q.periodic = true;
-    rho += sampling_quality(s, q).relative_radius / 10;
-    Sampling_spectrum_options so;
-    so.max_frequency = 200;
-    Sampling_spectrum sp = sampling_spectrum(s, so);
+    rho += torus_relative_radius(s) / 10;
+    Sampling_spectrum sp = torus_spectrum(s);
     if (n == 0) n = sp.samples;
     sp.samples = n;  // sets differ by a few samples; averaged on the first set's scale
     all.push_back(sp);

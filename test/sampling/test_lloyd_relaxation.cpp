@@ -858,12 +858,8 @@ TEST(PeriodicLloydRelaxation, EnergyDecreasesAndTheSpectrumIsThatOfLloydsMethod)
       EXPECT_LE(r.history[k].energy, r.history[k - 1].energy * (1 + 1e-12)) << k;
     std::vector<FeatureRecon::test::Point_2> points;
     for (const P2& p : r.sites) points.emplace_back(p[0], p[1]);
-    Sampling_quality_options q;
-    q.periodic = true;
-    rho += sampling_quality(points, q).relative_radius / 5;
-    Sampling_spectrum_options so;
-    so.max_frequency = 200;
-    spectra.push_back(sampling_spectrum(points, so));
+    rho += FeatureRecon::test::torus_relative_radius(points) / 5;
+    spectra.push_back(FeatureRecon::test::torus_spectrum(points));
     if (seed == 0) {
       std::vector<P2> shifted;
       for (const P2& p : sites) shifted.push_back({std::fmod(p[0] + 0.25, 1.0), std::fmod(p[1] + 0.5, 1.0)});

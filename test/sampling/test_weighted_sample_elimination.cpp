@@ -280,15 +280,11 @@ TEST(WeightedSampleElimination, PeriodicSpectrumAsThePointSetAnalysisToolsMeasur
     o.periodic = true;
     o.seed = seed;
     const std::vector<Point_2> s = subset(candidates, eliminate(candidates, 1000, o));
-    Sampling_quality_options q;
-    q.periodic = true;
-    rho += sampling_quality(s, q).relative_radius / 10;
-    Sampling_spectrum_options so;
-    so.max_frequency = 200;
-    periodic.push_back(sampling_spectrum(s, so));
+    rho += torus_relative_radius(s) / 10;
+    periodic.push_back(torus_spectrum(s));
     o.periodic = false;
     o.domain_measure = 1;
-    plain.push_back(sampling_spectrum(subset(candidates, eliminate(candidates, 1000, o)), so));
+    plain.push_back(torus_spectrum(subset(candidates, eliminate(candidates, 1000, o))));
   }
   const Sampling_spectrum d = average_sampling_spectra(periodic);
   EXPECT_GT(rho, 0.72);  // measured 0.737, nu_eff 0.505, Omega 1.76; plain nu_eff 0
