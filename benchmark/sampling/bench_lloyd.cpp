@@ -5,7 +5,7 @@
 // CGAL Delaunay_triangulation_2 build of the same sites, in the same run. The sites are relaxed for 10
 // iterations first (the steady state). Densities: uniform (plain Lloyd, integrated in closed form) and random
 // per pixel (adaptive stippling, integrated pixel by pixel). Sizes: 10k and 100k sites on 1024 x 1024 pixels,
-// and 10k sites on 256 x 256.
+// and 10k sites on 256 x 256. The torus (periodic_iteration) beside the plain iteration.
 #include <FeatureRecon/sampling/lloyd_relaxation.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -59,20 +59,32 @@ void BM_Delaunay_build(benchmark::State& state) {
   }
 }
 
-// One iteration in the steady state: the builder keeps the triangulation of the previous iteration and
-// moves its vertices (flips), as lloyd_relaxation does after its first iteration.
-void BM_Lloyd_iteration(benchmark::State& state) {
+// Iterations in the steady state with `step(sites, density, voronoi, threads)`: the Voronoi structure keeps
+// the triangulation of the previous iteration and moves its vertices (flips), as lloyd_relaxation does after
+// its first iteration.
+template <class Voronoi, class Step>
+void steady_iterations(benchmark::State& state, const Step& step) {
   const Setup& s = setup(std::size_t(state.range(0)), int(state.range(1)), int(state.range(3)));
-  fs::internal::Voronoi_builder voronoi;
+  Voronoi voronoi;
   Sites sites = s.sites;
   const unsigned threads = unsigned(state.range(2));
-  sites = fs::internal::lloyd_step_impl(sites, s.density, voronoi, threads).centroids;
+  sites = step(sites, s.density, voronoi, threads).centroids;
   for (auto _ : state) {
-    auto step = fs::internal::lloyd_step_impl(sites, s.density, voronoi, threads);
-    benchmark::DoNotOptimize(step.energy);
-    sites = std::move(step.centroids);
+    auto next = step(sites, s.density, voronoi, threads);
+    benchmark::DoNotOptimize(next.energy);
+    sites = std::move(next.centroids);
   }
   state.counters["rebuilds"] = double(voronoi.rebuilds);
+}
+
+void BM_Lloyd_iteration(benchmark::State& state) {
+  steady_iterations<fs::internal::Voronoi_builder>(state, fs::internal::lloyd_step_impl);
+}
+
+// On the torus of the box (Lloyd_options::periodic): the triangulation holds the sites and their images near
+// the faces. Same sites as the plain rows.
+void BM_Lloyd_periodic_iteration(benchmark::State& state) {
+  steady_iterations<fs::internal::Periodic_voronoi>(state, fs::internal::periodic_lloyd_step_impl);
 }
 
 // The first iteration from the relaxed sites, triangulated from scratch.
@@ -105,5 +117,6 @@ void sizes_and_threads(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_Delaunay_build)->Name("sampling/lloyd/delaunay_build")->Apply(sizes);
 BENCHMARK(BM_Lloyd_iteration)->Name("sampling/lloyd/iteration")->Apply(sizes_and_threads);
+BENCHMARK(BM_Lloyd_periodic_iteration)->Name("sampling/lloyd/periodic_iteration")->Apply(sizes_and_threads);
 BENCHMARK(BM_Lloyd_first_iteration)->Name("sampling/lloyd/first_iteration")->Apply(sizes);
 BENCHMARK_MAIN();

@@ -879,6 +879,41 @@ TEST(PeriodicLloydRelaxation, EnergyDecreasesAndTheSpectrumIsThatOfLloydsMethod)
   EXPECT_LT(d.oscillation, 5.0);
 }
 
+TEST(PeriodicLloydStep, KeptTriangulationGivesWhatAFreshOneGives) {
+  // lloyd_relaxation keeps the torus triangulation between iterations: vertices move by flips, those of a
+  // site that crossed a face take the label of the image they are now nearest, images leave and enter the
+  // band. Every step must equal, bit for bit, the step on a fresh triangulation (periodic_lloyd_step()), and
+  // after the first step no rebuild is needed.
+  std::mt19937_64 rng(8);
+  const int w = 40, h = 30;
+  const Pixel_density d = random_density(w, h, rng);
+  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
+  std::vector<P2> sites(300);
+  for (auto& p : sites) p = {ux(rng), uy(rng)};
+  const std::vector<P2> start = sites;
+  sampling::internal::Periodic_voronoi voronoi;
+  for (int it = 0; it < 20; ++it) {
+    const auto kept = sampling::internal::periodic_lloyd_step_impl(sites, d, voronoi, 1);
+    const Lloyd_step_result fresh = periodic_lloyd_step(sites, d);
+    ASSERT_EQ(kept.centroids, fresh.centroids) << "iteration " << it;
+    EXPECT_EQ(kept.mass, fresh.mass) << it;
+    EXPECT_EQ(kept.energy, fresh.energy) << it;
+    EXPECT_EQ(kept.minimum_distance, fresh.minimum_distance) << it;
+    sites = kept.centroids;
+  }
+  EXPECT_EQ(voronoi.rebuilds, 1u);
+  EXPECT_EQ(voronoi.flip_updates, 19u);
+  EXPECT_GT(voronoi.relabelled, 0u) << "no site crossed a face: the test misses the relabelling";
+  EXPECT_GT(voronoi.inserted, 0u);
+  EXPECT_GT(voronoi.removed, 0u);
+  // lloyd_relaxation() is the same iteration.
+  Lloyd_options o;
+  o.periodic = true;
+  o.max_iterations = 20;
+  o.threads = 1;
+  EXPECT_EQ(lloyd_relaxation(start, d, o).sites, sites);
+}
+
 TEST(PeriodicLloydStep, ElongatedBoxesCopiesAcrossTheFacesAndNeighbouringDoubles) {
   // A review's findings. Sites of one column in a wide box: with only their vertical images in the band the
   // points were collinear and the walk around a site crashed; now the band widens. The cells then are the

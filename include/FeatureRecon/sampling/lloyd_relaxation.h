@@ -90,6 +90,126 @@ struct Lloyd_result {
 
 namespace internal {
 /// \cond
+// A total order of a triangulation's vertices that does not depend on memory: their info (an index), then
+// (for vertices that share one, the far corners of Voronoi_builder) their coordinates. Every rounded quantity
+// is computed in an order fixed by it, because the faces' layout is not fixed: CGAL's vertex moves order
+// faces by handle.
+template <class Vertex_handle>
+bool rank_less(Vertex_handle a, Vertex_handle b) {
+  if (a->info() != b->info()) return a->info() < b->info();
+  return a->point() < b->point();
+}
+
+// The incident face of v from which its Voronoi cell is walked: the one whose counter-clockwise-next edge
+// around v goes to the lowest-ranked neighbour.
+template <class Dt>
+typename Dt::Face_circulator first_face(const Dt& dt, typename Dt::Vertex_handle v) {
+  auto f = dt.incident_faces(v), end = f, best = f;
+  typename Dt::Vertex_handle lowest = f->vertex(Dt::cw(f->index(v)));
+  while (++f != end) {
+    const typename Dt::Vertex_handle w = f->vertex(Dt::cw(f->index(v)));
+    if (rank_less(w, lowest)) {
+      lowest = w;
+      best = f;
+    }
+  }
+  return best;
+}
+
+// The circumcentre of a finite face, from its vertices in rank order (the rounding does not depend on how
+// the face stores them).
+template <class Dt>
+std::array<double, 2> ranked_circumcenter(typename Dt::Face_handle f) {
+  typename Dt::Vertex_handle a = f->vertex(0), b = f->vertex(1), c = f->vertex(2);
+  if (rank_less(b, a)) std::swap(a, b);
+  if (rank_less(c, b)) std::swap(b, c);
+  if (rank_less(b, a)) std::swap(a, b);
+  const auto q = CGAL::circumcenter(a->point(), b->point(), c->point());
+  return {q.x(), q.y()};
+}
+
+// Buffers of move_by_flips(), kept between calls (allocating them anew costs page faults on every step).
+template <class Dt>
+struct Flip_workspace {
+  std::vector<typename Dt::Point> old;
+  std::vector<std::uint32_t> held;
+  std::vector<char> is_held;
+  std::vector<std::pair<typename Dt::Face_handle, int>> stack;
+};
+
+// Moves every vertex v of dt whose info is below `slots` to target(v->info()) (the others stay) and makes the
+// triangulation Delaunay again. Vertices of triangles that would lose their counter-clockwise orientation
+// (exact predicate) keep their old position for the flips and are moved afterwards one by one, in increasing
+// info order, with CGAL's move_if_no_collision; handle(i) is the vertex of info i. Lawson flips (exact,
+// perturbed in-circle test, as CGAL's insertion) restore the Delaunay property: the Delaunay triangulation
+// with CGAL's symbolic perturbation is unique, so the order of the flips does not change the result. False
+// (the triangulation is then unusable; the caller rebuilds it) when more than max_held vertices would be held
+// or a move collides with another vertex.
+template <class Dt, class Target, class Handle>
+bool move_by_flips(Dt& dt, std::size_t slots, const Target& target, const Handle& handle,
+                   std::size_t max_held, Flip_workspace<Dt>& work) {
+  auto& old = work.old;
+  old.resize(slots);
+  // In the vertices' memory order (spatially sorted at the build), not the info order: far fewer cache
+  // misses.
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    const std::size_t i = v->info();
+    if (i >= slots) continue;
+    old[i] = v->point();
+    v->set_point(target(i));
+  }
+  const auto orientation = dt.geom_traits().orientation_2_object();
+  auto& held = work.held;
+  auto& is_held = work.is_held;
+  held.clear();
+  is_held.assign(slots, 0);
+  for (bool inverted = true; inverted;) {
+    inverted = false;
+    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+      if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) == CGAL::POSITIVE)
+        continue;
+      inverted = true;
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t i = f->vertex(k)->info();
+        if (i >= slots || is_held[i]) continue;
+        is_held[i] = 1;
+        held.push_back(static_cast<std::uint32_t>(i));
+        f->vertex(k)->set_point(old[i]);
+      }
+    }
+    if (held.size() > max_held) return false;
+  }
+  // Lawson flips until every edge is locally Delaunay: one pass over the faces in container order, then
+  // only the edges around the flipped ones (a stack), so no second full pass checks what did not change.
+  auto& stack = work.stack;
+  stack.clear();
+  auto check = [&](typename Dt::Face_handle f, int i) {
+    const auto g = f->neighbor(i);
+    if (dt.is_infinite(f) || dt.is_infinite(g) ||
+        dt.side_of_oriented_circle(g, f->vertex(i)->point(), true) != CGAL::ON_POSITIVE_SIDE)
+      return;
+    dt.flip(f, i);
+    // The flipped edge now joins f's vertex i with the opposite vertex of g; its four outer edges may have
+    // stopped being locally Delaunay.
+    for (const typename Dt::Face_handle h : {f, g})
+      for (int k = 0; k < 3; ++k) stack.emplace_back(h, k);
+  };
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      // Each edge once, chosen by the infos of its ends (never by address).
+      if (f->vertex(Dt::ccw(i))->info() < f->vertex(Dt::cw(i))->info()) check(f, i);
+      while (!stack.empty()) {
+        const auto [h, k] = stack.back();
+        stack.pop_back();
+        check(h, k);
+      }
+    }
+  std::sort(held.begin(), held.end());  // a fixed order: the result does not depend on the face order
+  for (const std::uint32_t i : held)
+    if (dt.move_if_no_collision(handle(i), target(i)) != handle(i)) return false;
+  return true;
+}
+
 struct Voronoi_builder {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
@@ -118,10 +238,8 @@ struct Voronoi_builder {
   // Buffers of one step, kept between iterations: allocating them anew costs page faults on every step.
   struct Workspace {
     std::vector<Edge_task> edges;
-    std::vector<K::Point_2> old;
-    std::vector<std::uint32_t> held;
-    std::vector<char> is_held, interior;
-    std::vector<std::pair<Dt::Face_handle, int>> stack;
+    Flip_workspace<Dt> flips;
+    std::vector<char> interior;
     std::vector<std::uint32_t> ring_start, fill, boundary;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> ring;
     std::vector<Polygon_2d> boundary_cells;
@@ -139,13 +257,10 @@ struct Voronoi_builder {
     if (!(sites == points.size() && duplicates == 0 && box == frame && sites != 0 && move(points)))
       rebuild(points, box);
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-      // The vertices in rank order, so the rounded circumcentre does not depend on how the face stores them.
-      std::array<Dt::Vertex_handle, 3> v{f->vertex(0), f->vertex(1), f->vertex(2)};
-      std::sort(v.begin(), v.end(), [](Dt::Vertex_handle a, Dt::Vertex_handle b) { return rank_less(a, b); });
-      const auto c = CGAL::circumcenter(v[0]->point(), v[1]->point(), v[2]->point());
-      f->info().circumcenter = {c.x(), c.y()};
+      const auto c = ranked_circumcenter<Dt>(f);
+      f->info().circumcenter = c;
       f->info().site = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-      f->info().inside = c.x() >= box[0] && c.x() <= box[2] && c.y() >= box[1] && c.y() <= box[3];
+      f->info().inside = c[0] >= box[0] && c[0] <= box[2] && c[1] >= box[1] && c[1] <= box[3];
     }
     double shortest = std::numeric_limits<double>::infinity();
     for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
@@ -192,100 +307,16 @@ struct Voronoi_builder {
       if (v->info() != dummy) vertex[v->info()] = v;
   }
 
-  // Moves every vertex to its site's new position. Vertices of triangles that would lose their
-  // counter-clockwise orientation (exact predicate) keep their old position for the flips and are moved
-  // afterwards one by one with CGAL's move_if_no_collision. False (the caller rebuilds) when more than an
-  // eighth of the vertices would need that, or when a move collides with another site.
+  // Moves every vertex to its site's new position (move_by_flips()). False (the caller rebuilds) when more
+  // than an eighth of the vertices would be held back, or when a move collides with another site.
   bool move(const std::vector<std::array<double, 2>>& points) {
     const std::size_t n = points.size();
-    std::vector<K::Point_2>& old = work.old;
-    old.resize(n);
-    // In the vertices' memory order (spatially sorted at the build), not the sites' order: far fewer cache
-    // misses.
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-      const std::uint32_t i = v->info();
-      if (i == dummy) continue;
-      old[i] = v->point();
-      v->set_point(K::Point_2(points[i][0], points[i][1]));
-    }
-    const auto orientation = dt.geom_traits().orientation_2_object();
-    std::vector<std::uint32_t>& held = work.held;
-    std::vector<char>& is_held = work.is_held;
-    held.clear();
-    is_held.assign(n, 0);
-    for (bool inverted = true; inverted;) {
-      inverted = false;
-      for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-        if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) ==
-            CGAL::POSITIVE)
-          continue;
-        inverted = true;
-        for (int k = 0; k < 3; ++k) {
-          const std::uint32_t i = f->vertex(k)->info();
-          if (i == dummy || is_held[i]) continue;
-          is_held[i] = 1;
-          held.push_back(i);
-          vertex[i]->set_point(old[i]);
-        }
-      }
-      if (held.size() > n / 8) return false;
-    }
-    // Lawson flips until every edge is locally Delaunay: one pass over the faces in container order, then
-    // only the edges around the flipped ones (a stack), so no second full pass checks what did not change.
-    // The Delaunay triangulation with CGAL's symbolic perturbation is unique, so the order of the flips does
-    // not change the result.
-    auto& stack = work.stack;
-    stack.clear();
-    auto check = [&](Dt::Face_handle f, int i) {
-      const auto g = f->neighbor(i);
-      if (dt.is_infinite(f) || dt.is_infinite(g) ||
-          dt.side_of_oriented_circle(g, f->vertex(i)->point(), true) != CGAL::ON_POSITIVE_SIDE)
-        return;
-      dt.flip(f, i);
-      // The flipped edge now joins f's vertex i with the opposite vertex of g; its four outer edges may have
-      // stopped being locally Delaunay.
-      for (const Dt::Face_handle h : {f, g})
-        for (int k = 0; k < 3; ++k) stack.emplace_back(h, k);
-    };
-    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
-      for (int i = 0; i < 3; ++i) {
-        // Each edge once, chosen by the indices of its ends (never by address).
-        if (f->vertex(Dt::ccw(i))->info() < f->vertex(Dt::cw(i))->info()) check(f, i);
-        while (!stack.empty()) {
-          const auto [h, k] = stack.back();
-          stack.pop_back();
-          check(h, k);
-        }
-      }
-    std::sort(held.begin(), held.end());  // a fixed order: the result does not depend on the face order
-    for (const std::uint32_t i : held)
-      if (dt.move_if_no_collision(vertex[i], K::Point_2(points[i][0], points[i][1])) != vertex[i])
-        return false;
+    if (!move_by_flips(
+            dt, n, [&](std::size_t i) { return K::Point_2(points[i][0], points[i][1]); },
+            [&](std::size_t i) { return vertex[i]; }, n / 8, work.flips))
+      return false;
     ++flip_updates;
     return true;
-  }
-
-  // A total order of the vertices that does not depend on memory: site index, then (for the far corners,
-  // which share one index) coordinates. Every rounded quantity is computed in an order fixed by it, because
-  // the faces' layout is not fixed: CGAL's vertex moves order faces by handle.
-  static bool rank_less(Dt::Vertex_handle a, Dt::Vertex_handle b) {
-    if (a->info() != b->info()) return a->info() < b->info();
-    return a->point() < b->point();
-  }
-
-  // The incident face of v from which its Voronoi cell is walked: the one whose counter-clockwise-next edge
-  // around v goes to the lowest-ranked neighbour.
-  Dt::Face_circulator first_face(Dt::Vertex_handle v) const {
-    auto f = dt.incident_faces(v), end = f, best = f;
-    Dt::Vertex_handle lowest = f->vertex(Dt::cw(f->index(v)));
-    while (++f != end) {
-      const Dt::Vertex_handle w = f->vertex(Dt::cw(f->index(v)));
-      if (rank_less(w, lowest)) {
-        lowest = w;
-        best = f;
-      }
-    }
-    return best;
   }
 
   // The cell of a vertex (a convex polygon, counter-clockwise, from first_face), clipped to the box; empty
@@ -293,7 +324,7 @@ struct Voronoi_builder {
   void cell(Dt::Vertex_handle v, const std::array<double, 4>& box, Polygon_2d& out,
             Polygon_2d& scratch) const {
     out.clear();
-    auto f = first_face(v), end = f;
+    auto f = first_face(dt, v), end = f;
     bool inside = true;
     do {
       inside = inside && f->info().inside;
@@ -387,57 +418,56 @@ void cell_centroids(const std::vector<std::array<double, 2>>& sites, const std::
   }
 }
 
-// One Lloyd step on checked sites. A cell whose Voronoi vertices all lie in the box (an interior cell) is
-// integrated edge by edge: each Voronoi edge between two interior cells once, added to one and subtracted
-// from the other; the cells that touch the box are clipped and integrated whole.
-inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>>& sites,
-                                         const Pixel_density& density, Voronoi_builder& voronoi,
-                                         unsigned threads) {
+// The density moments of the sites' Voronoi cells, into work.moments (per site; zero for a site without a
+// vertex), from a triangulation whose finite faces carry their circumcentre, their vertices' infos and
+// whether the circumcentre lies in the box (Voronoi_builder::Face_data). site_of(info) is the site whose cell
+// a vertex is, or `none` (far corners, images of sites); info_of(site) is the info of that site's vertex. A
+// cell whose Voronoi vertices all lie in the box (an interior cell) is integrated edge by edge: each Voronoi
+// edge next to an interior cell once, counter-clockwise around its lower-ranked (lower info) side, added to
+// that side and subtracted from the other. The other cells are walked, sequentially (cell(v, polygon,
+// scratch)), and integrated whole (whole(polygon)). The integrals run in parallel, each into its own slot,
+// and the sums have a fixed order, so the result does not depend on the number of threads.
+template <class SiteOf, class InfoOf, class Cell, class Whole>
+void integrate_voronoi_cells(const Voronoi_builder::Dt& dt, std::size_t n, const SiteOf& site_of,
+                             const InfoOf& info_of, const Cell& cell, const Whole& whole,
+                             const Pixel_density& density, unsigned threads,
+                             Voronoi_builder::Workspace& work) {
   using Dt = Voronoi_builder::Dt;
-  Lloyd_step_result r;
-  const std::size_t n = sites.size();
-  r.centroids = sites;
-  r.mass.assign(n, 0.0);
-  r.minimum_distance = std::numeric_limits<double>::infinity();
-  if (n == 0) return r;
-  const auto box = density.box();
-  if (threads == 0 && density.is_constant()) threads = 1;
-  voronoi.build(sites, box);
-  r.duplicates = voronoi.duplicates;
-  r.minimum_distance = voronoi.minimum_distance;
-  auto& work = voronoi.work;
+  constexpr std::uint32_t none = Voronoi_builder::dummy;
   std::vector<char>& interior = work.interior;
   interior.assign(n, 0);
-  for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v)
-    if (v->info() != Voronoi_builder::dummy) interior[v->info()] = 1;
-  for (auto f = voronoi.dt.finite_faces_begin(); f != voronoi.dt.finite_faces_end(); ++f)
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    const std::uint32_t i = site_of(v->info());
+    if (i != none) interior[i] = 1;
+  }
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
     if (!f->info().inside)
-      for (const std::uint32_t i : f->info().site)
-        if (i != Voronoi_builder::dummy) interior[i] = 0;
-  // Each Voronoi edge next to an interior cell, integrated once, counter-clockwise around its lower-ranked
-  // site, into its own slot of a table. The integrals (the bulk of the work with an image density) run in
-  // parallel, so the result does not depend on the number of threads.
+      for (const std::uint32_t k : f->info().site) {
+        const std::uint32_t i = site_of(k);
+        if (i != none) interior[i] = 0;
+      }
   using Edge_task = Voronoi_builder::Edge_task;
   std::vector<Edge_task>& edges = work.edges;
   edges.clear();
   // per interior site: its edges (counts, then offsets)
   std::vector<std::uint32_t>& ring_start = work.ring_start;
   ring_start.assign(n + 1, 0);
-  for (auto e = voronoi.dt.finite_edges_begin(); e != voronoi.dt.finite_edges_end(); ++e) {
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
     const auto f = e->first;
     const int i = e->second;
     const auto g = f->neighbor(i);
-    // An edge with an infinite face joins two far corners (the hull); the site cache is for finite faces.
-    if (voronoi.dt.is_infinite(f) || voronoi.dt.is_infinite(g)) continue;
+    // An edge with an infinite face lies on the hull, next to no interior cell; the cache is for finite
+    // faces.
+    if (dt.is_infinite(f) || dt.is_infinite(g)) continue;
     const std::uint32_t a = f->info().site[std::size_t(Dt::ccw(i))],
                         b = f->info().site[std::size_t(Dt::cw(i))];
-    const bool ia = a != Voronoi_builder::dummy && interior[a],
-               ib = b != Voronoi_builder::dummy && interior[b];
+    const std::uint32_t sa = site_of(a), sb = site_of(b);
+    const bool ia = sa != none && interior[sa], ib = sb != none && interior[sb];
     if (!ia && !ib) continue;
     // Around a counter-clockwise, g comes just before f: the edge runs c(g) -> c(f) on a's cell.
-    const bool from_a = a < b;  // rank_less: at least one is a site, and sites rank below the far corners
-    if (ia) ++ring_start[a + 1];
-    if (ib) ++ring_start[b + 1];
+    const bool from_a = a < b;  // rank_less: the infos differ (at least one is a site's own vertex)
+    if (ia) ++ring_start[sa + 1];
+    if (ib) ++ring_start[sb + 1];
     edges.push_back({&(from_a ? g : f)->info().circumcenter, &(from_a ? f : g)->info().circumcenter, a, b});
   }
   // Each interior cell's edges as (neighbour, edge) pairs, summed later in increasing neighbour order: a
@@ -449,24 +479,23 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
     std::vector<std::uint32_t>& fill = work.fill;
     fill.assign(ring_start.begin(), ring_start.end() - 1);
     for (std::size_t k = 0; k < edges.size(); ++k) {
-      const std::uint32_t a = edges[k].a, b = edges[k].b;
-      if (a != Voronoi_builder::dummy && interior[a]) ring[fill[a]++] = {b, static_cast<std::uint32_t>(k)};
-      if (b != Voronoi_builder::dummy && interior[b]) ring[fill[b]++] = {a, static_cast<std::uint32_t>(k)};
+      const std::uint32_t a = edges[k].a, b = edges[k].b, sa = site_of(a), sb = site_of(b);
+      if (sa != none && interior[sa]) ring[fill[sa]++] = {b, static_cast<std::uint32_t>(k)};
+      if (sb != none && interior[sb]) ring[fill[sb]++] = {a, static_cast<std::uint32_t>(k)};
     }
   }
-  // The cells that touch the box, clipped (sequentially: the clipping walks the triangulation's circulators).
+  // The other cells, walked sequentially (the walks follow the triangulation's circulators).
   std::vector<std::uint32_t>& boundary = work.boundary;
   std::vector<Polygon_2d>& boundary_cells = work.boundary_cells;
   boundary.clear();
   std::size_t boundary_count = 0;
   {
     Polygon_2d scratch;
-    for (auto v = voronoi.dt.finite_vertices_begin(); v != voronoi.dt.finite_vertices_end(); ++v) {
-      const std::uint32_t i = v->info();
-      if (i == Voronoi_builder::dummy) continue;
-      if (interior[i]) continue;
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+      const std::uint32_t i = site_of(v->info());
+      if (i == none || interior[i]) continue;
       if (boundary_cells.size() <= boundary_count) boundary_cells.emplace_back();
-      voronoi.cell(v, box, boundary_cells[boundary_count++], scratch);
+      cell(v, boundary_cells[boundary_count++], scratch);
       boundary.push_back(i);
     }
   }
@@ -481,28 +510,52 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
         const Edge_task& t = edges[k];
         density.integrate_segment((*t.p)[0], (*t.p)[1], (*t.q)[0], (*t.q)[1], edge_moments[k]);
       } else {
-        moments[boundary[k - edges.size()]] = density.integrate(boundary_cells[k - edges.size()]);
+        moments[boundary[k - edges.size()]] = whole(boundary_cells[k - edges.size()]);
       }
     }
   });
-  // Interior cells: their edges summed in increasing order of the neighbour's index (an interior cell has
-  // no far corner as a neighbour), each with the sign of its walk (counter-clockwise around the lower index).
+  // Interior cells: their edges summed in increasing order of the neighbour's info, each with the sign of its
+  // walk (counter-clockwise around the lower info).
   FeatureRecon::internal::parallel_blocks(n, threads, 4096, [&](std::size_t begin, std::size_t end) {
     for (std::size_t a = begin; a < end; ++a) {
       if (ring_start[a] == ring_start[a + 1]) continue;
       const auto first = ring.begin() + ring_start[a], last = ring.begin() + ring_start[a + 1];
       std::sort(first, last);
+      const std::uint32_t own = info_of(static_cast<std::uint32_t>(a));
       Density_moments& sum = moments[a];
       for (auto it = first; it != last; ++it) {
-        if (a < it->first)
+        if (own < it->first)
           sum += edge_moments[it->second];
         else
           sum -= edge_moments[it->second];
       }
     }
   });
+}
+
+// One Lloyd step on checked sites (integrate_voronoi_cells(): the cells that touch the box are clipped).
+inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>>& sites,
+                                         const Pixel_density& density, Voronoi_builder& voronoi,
+                                         unsigned threads) {
+  Lloyd_step_result r;
+  const std::size_t n = sites.size();
+  r.centroids = sites;
+  r.mass.assign(n, 0.0);
+  r.minimum_distance = std::numeric_limits<double>::infinity();
+  if (n == 0) return r;
+  const auto box = density.box();
+  if (threads == 0 && density.is_constant()) threads = 1;
+  voronoi.build(sites, box);
+  r.duplicates = voronoi.duplicates;
+  r.minimum_distance = voronoi.minimum_distance;
+  integrate_voronoi_cells(
+      voronoi.dt, n, [](std::uint32_t info) { return info; }, [](std::uint32_t i) { return i; },
+      [&](Voronoi_builder::Dt::Vertex_handle v, Polygon_2d& out, Polygon_2d& scratch) {
+        voronoi.cell(v, box, out, scratch);
+      },
+      [&](const Polygon_2d& cell) { return density.integrate(cell); }, density, threads, voronoi.work);
   // The centroid lies in the convex cell, inside the box; clamped against rounding.
-  cell_centroids(sites, voronoi.owner, moments, density, r, [&](double x, double y) {
+  cell_centroids(sites, voronoi.owner, voronoi.work.moments, density, r, [&](double x, double y) {
     return std::array<double, 2>{std::min(std::max(x, box[0]), box[2]),
                                  std::min(std::max(y, box[1]), box[3])};
   });
@@ -515,86 +568,209 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
 // image missing from the triangulation can lie in the circumcircle of a triangle around it: every such
 // circle lies within the band. The band starts at 3 hexagonal spacings and doubles until that holds for
 // every site, up to the whole period (all eight copies; then the cells are those of the tiling). Each cell
-// is the polygon of its triangles' circumcentres around the site itself, counter-clockwise, and may reach
-// out of the box.
+// is the polygon of its triangles' circumcentres around the site itself, counter-clockwise from the face
+// towards its lowest-ranked neighbour (first_face()), and may reach out of the box.
+// The triangulation is kept: when the next call has as many sites, no copies and the same box, the vertices
+// move (move_by_flips()), those of a site that crossed a face taking the label of the image they are now
+// nearest, images that leave the band are removed and those that enter it inserted. The result is the
+// triangulation a rebuild at the same band gives (the Delaunay triangulation with CGAL's symbolic
+// perturbation is unique; where four points are cocircular, a vertex moved by move_if_no_collision may leave
+// another split of their circle), and the cells do not depend on the band, so the cells are those of a fresh
+// build.
 struct Periodic_voronoi {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-  using Dt = CGAL::Delaunay_triangulation_2<K, Tds>;
-  std::vector<Polygon_2d> cells;     // per site; empty for a copy of a lower-indexed site
+  using K = Voronoi_builder::K;
+  using Dt = Voronoi_builder::Dt;    // vertex info: 9 i + code of the image
   std::vector<std::uint32_t> owner;  // per site: the lowest index at the same position
   std::size_t duplicates = 0;
   double minimum_distance = std::numeric_limits<double>::infinity();  // between distinct sites, on the torus
   std::size_t widenings = 0;                                          // band doublings (for tests)
+  std::size_t rebuilds = 0, flip_updates = 0;  // how each triangulation was made (for benchmarks and tests)
+  std::size_t relabelled = 0, inserted = 0, removed = 0;  // images of the flip updates (for tests)
+
+  Dt dt;
+  std::vector<Dt::Vertex_handle> handle;      // per 9 i + code: its vertex, or none
+  std::vector<std::array<double, 2>> placed;  // the sites of the triangulation (none at the same position)
+  std::array<double, 4> frame{0, 0, 0, 0};
+  double band = 0;
+  bool reusable = false;
+  Voronoi_builder::Workspace work;
+
+  // The image `code` (s + 1) + 3 (t + 1) of p: p + (s W, t H).
+  static std::array<double, 2> image(const std::array<double, 2>& p, std::uint32_t code, double W, double H) {
+    return {p[0] + (double(code % 3) - 1) * W, p[1] + (double(code / 3) - 1) * H};
+  }
+  static bool within(const std::array<double, 2>& q, const std::array<double, 4>& box, double reach) {
+    return q[0] >= box[0] - reach && q[0] <= box[2] + reach && q[1] >= box[1] - reach &&
+           q[1] <= box[3] + reach;
+  }
 
   void build(const std::vector<std::array<double, 2>>& sites, const std::array<double, 4>& box) {
     const std::size_t n = sites.size();
     const double W = box[2] - box[0], H = box[3] - box[1];
     owner.resize(n);
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), std::uint32_t(0));
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return sites[a] != sites[b] ? sites[a] < sites[b] : a < b;
-    });
+    // The sites sorted by position, then index (contiguous records: an indirect sort missed the cache).
+    std::vector<std::pair<std::array<double, 2>, std::uint32_t>> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = {sites[i], static_cast<std::uint32_t>(i)};
+    std::sort(order.begin(), order.end());
     duplicates = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      const bool copy = k > 0 && sites[order[k]] == sites[order[k - 1]];
-      owner[order[k]] = copy ? owner[order[k - 1]] : order[k];
+      const bool copy = k > 0 && order[k].first == order[k - 1].first;
+      owner[order[k].second] = copy ? owner[order[k - 1].second] : order[k].second;
       duplicates += copy ? 1 : 0;
     }
     const double distinct = double(n - duplicates), whole = std::max(W, H);
-    double band = std::min(whole, 3 * std::sqrt(2 * W * H / (std::sqrt(3.0) * distinct)));
-    for (;;) {
-      std::vector<std::pair<K::Point_2, std::uint32_t>> points;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (owner[i] != i) continue;
-        for (std::uint32_t code = 0; code < 9; ++code) {
-          const double x = sites[i][0] + (double(code % 3) - 1) * W,
-                       y = sites[i][1] + (double(code / 3) - 1) * H;
-          if (code != 4 &&
-              !(x >= box[0] - band && x <= box[2] + band && y >= box[1] - band && y <= box[3] + band))
-            continue;
-          points.push_back({K::Point_2(x, y), static_cast<std::uint32_t>(9 * i + code)});
+    bool ready = false;
+    if (reusable && duplicates == 0 && placed.size() == n && box == frame) {
+      if (update(sites, box)) {
+        ++flip_updates;
+        ready = prepare_faces(box) || band >= whole;
+        if (!ready) {
+          band = std::min(2 * band, whole);
+          ++widenings;
         }
+      } else {
+        band = std::min(whole, 3 * std::sqrt(2 * W * H / (std::sqrt(3.0) * distinct)));
       }
-      Dt dt;
-      dt.insert(points.begin(), points.end());
-      cells.assign(n, Polygon_2d());
-      minimum_distance = std::numeric_limits<double>::infinity();
-      // Points on one line (sites of one column in a wide box with only their vertical images) have no
-      // triangles: the band is too narrow (at the whole period the nine copies span the plane).
-      const bool planar = dt.dimension() == 2;
-      bool complete = planar;
-      for (auto v = dt.finite_vertices_begin(); planar && v != dt.finite_vertices_end(); ++v) {
-        if (v->info() % 9 != 4) continue;  // an image
-        Polygon_2d& cell = cells[v->info() / 9];
-        auto f = dt.incident_faces(v), end = f;
-        do {
-          if (dt.is_infinite(f)) {  // fewer than three distinct places within reach: the band is too narrow
-            complete = false;
-            break;
-          }
-          const K::Point_2 c =
-              CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-          const double r = std::sqrt(CGAL::to_double(CGAL::squared_distance(c, v->point())));
-          complete = complete && c.x() - r >= box[0] - band && c.x() + r <= box[2] + band &&
-                     c.y() - r >= box[1] - band && c.y() + r <= box[3] + band;
-          const std::array<double, 2> q{c.x(), c.y()};
-          if (cell.empty() || q != cell.back()) cell.push_back(q);  // cocircular sites: one vertex
-        } while (++f != end);
-        if (cell.size() > 1 && cell.front() == cell.back()) cell.pop_back();
-        auto w = dt.incident_vertices(v), stop = w;
-        do
-          if (!dt.is_infinite(w) && w->info() / 9 != v->info() / 9)  // not the site's own image
-            minimum_distance = std::min(
-                minimum_distance, std::sqrt(CGAL::to_double(CGAL::squared_distance(v->point(), w->point()))));
-        while (++w != stop);
-      }
-      if (complete || band >= whole) break;
+    } else {
+      band = std::min(whole, 3 * std::sqrt(2 * W * H / (std::sqrt(3.0) * distinct)));
+    }
+    while (!ready) {
+      rebuild(sites, box);
+      if (prepare_faces(box) || band >= whole) break;
       band = std::min(2 * band, whole);
       ++widenings;
     }
+    placed = sites;
+    frame = box;
+    reusable = duplicates == 0 && dt.dimension() == 2;
+    // The shortest distance between a site and a neighbour that is not its own image.
+    double shortest = std::numeric_limits<double>::infinity();
+    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+      const auto a = e->first->vertex(Dt::ccw(e->second)), b = e->first->vertex(Dt::cw(e->second));
+      if ((a->info() % 9 == 4 || b->info() % 9 == 4) && a->info() / 9 != b->info() / 9)
+        shortest = std::min(shortest, CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
+    }
+    minimum_distance = std::sqrt(shortest);
+  }
+
+  void rebuild(const std::vector<std::array<double, 2>>& sites, const std::array<double, 4>& box) {
+    ++rebuilds;
+    const double W = box[2] - box[0], H = box[3] - box[1];
+    std::vector<std::pair<K::Point_2, std::uint32_t>> points;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      if (owner[i] != i) continue;
+      for (std::uint32_t code = 0; code < 9; ++code) {
+        const std::array<double, 2> q = image(sites[i], code, W, H);
+        if (code != 4 && !within(q, box, band)) continue;
+        points.push_back({K::Point_2(q[0], q[1]), static_cast<std::uint32_t>(9 * i + code)});
+      }
+    }
+    dt.clear();
+    dt.insert(points.begin(), points.end());
+    handle.assign(9 * sites.size(), Dt::Vertex_handle());
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
+  }
+
+  // The triangulation of the last call moved to `sites` (same number, none at the same position, same box);
+  // false when the triangulation has to be rebuilt.
+  bool update(const std::vector<std::array<double, 2>>& sites, const std::array<double, 4>& box) {
+    const std::size_t n = sites.size();
+    const double W = box[2] - box[0], H = box[3] - box[1];
+    std::vector<Dt::Vertex_handle> next(9 * n, Dt::Vertex_handle());
+    std::vector<Dt::Vertex_handle> leaving;
+    std::vector<std::pair<K::Point_2, std::uint32_t>> entering;
+    for (std::size_t i = 0; i < n; ++i) {
+      // A site that crossed a face is nearest its old place as the image one period over: each of its
+      // vertices takes the label of the image it is now nearest.
+      const double dx = placed[i][0] - sites[i][0], dy = placed[i][1] - sites[i][1];
+      const int sx = dx > W / 2 ? 1 : dx < -W / 2 ? -1 : 0, sy = dy > H / 2 ? 1 : dy < -H / 2 ? -1 : 0;
+      relabelled += (sx != 0 || sy != 0) ? 1 : 0;
+      for (std::uint32_t code = 0; code < 9; ++code) {
+        const Dt::Vertex_handle v = handle[9 * i + code];
+        if (v == Dt::Vertex_handle()) continue;
+        const int s = int(code % 3) - 1 + sx, t = int(code / 3) - 1 + sy;
+        const std::uint32_t moved = std::uint32_t(s + 1) + 3 * std::uint32_t(t + 1);
+        if (s < -1 || s > 1 || t < -1 || t > 1 ||
+            (moved != 4 && !within(image(sites[i], moved, W, H), box, band)))
+          leaving.push_back(v);
+        else
+          next[9 * i + moved] = v;
+      }
+      for (std::uint32_t code = 0; code < 9; ++code) {
+        if (next[9 * i + code] != Dt::Vertex_handle()) continue;
+        const std::array<double, 2> q = image(sites[i], code, W, H);
+        if (code == 4 || within(q, box, band))
+          entering.push_back({K::Point_2(q[0], q[1]), static_cast<std::uint32_t>(9 * i + code)});
+      }
+    }
+    const std::size_t kept = dt.number_of_vertices() - leaving.size();
+    for (const Dt::Vertex_handle v : leaving) dt.remove(v);
+    removed += leaving.size();
+    if (dt.dimension() != 2) return false;
+    handle.swap(next);
+    for (std::size_t k = 0; k < handle.size(); ++k)
+      if (handle[k] != Dt::Vertex_handle()) handle[k]->info() = static_cast<std::uint32_t>(k);
+    if (!move_by_flips(
+            dt, handle.size(),
+            [&](std::size_t k) {
+              const std::array<double, 2> q = image(sites[k / 9], std::uint32_t(k % 9), W, H);
+              return K::Point_2(q[0], q[1]);
+            },
+            [&](std::size_t k) { return handle[k]; }, kept / 8, work.flips))
+      return false;
+    if (!entering.empty()) {
+      dt.insert(entering.begin(), entering.end());
+      inserted += entering.size();
+      if (dt.number_of_vertices() != kept + entering.size()) return false;  // an image on another point
+      for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
+    }
+    return true;
+  }
+
+  // Caches each finite face's circumcentre, its vertices' infos and whether the circumcentre lies in the box
+  // (Voronoi_builder::Face_data); false when a circumcircle of a triangle around a site reaches beyond the
+  // band, or a site lies on the hull (the sites and images within the band span too little), so that a
+  // missing image could change its cell.
+  bool prepare_faces(const std::array<double, 4>& box) {
+    // Points on one line (sites of one column in a wide box with only their vertical images) have no
+    // triangles: the band is too narrow (at the whole period the nine copies span the plane).
+    if (dt.dimension() != 2) return false;
+    bool complete = true;
+    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+      const std::array<double, 2> c = ranked_circumcenter<Dt>(f);
+      auto& d = f->info();
+      d.circumcenter = c;
+      d.site = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+      d.inside = c[0] >= box[0] && c[0] <= box[2] && c[1] >= box[1] && c[1] <= box[3];
+      if (!complete || (d.site[0] % 9 != 4 && d.site[1] % 9 != 4 && d.site[2] % 9 != 4)) continue;
+      const K::Point_2& p = f->vertex(0)->point();
+      const double dx = c[0] - p.x(), dy = c[1] - p.y(), r = std::sqrt(dx * dx + dy * dy);
+      complete = c[0] - r >= box[0] - band && c[0] + r <= box[2] + band && c[1] - r >= box[1] - band &&
+                 c[1] + r <= box[3] + band;
+    }
+    auto v = dt.incident_vertices(dt.infinite_vertex()), end = v;
+    do complete = complete && v->info() % 9 != 4;
+    while (++v != end);
+    return complete;
+  }
+
+  // The cell of a site's vertex: the circumcentres of its triangles, counter-clockwise from first_face().
+  void cell(Dt::Vertex_handle v, Polygon_2d& out) const {
+    out.clear();
+    auto f = first_face(dt, v), end = f;
+    do {
+      const std::array<double, 2>& q = f->info().circumcenter;
+      if (out.empty() || q != out.back()) out.push_back(q);  // cocircular sites: one vertex
+    } while (++f != end);
+    if (out.size() > 1 && out.front() == out.back()) out.pop_back();
+  }
+
+  // Every site's cell (empty for copies).
+  std::vector<Polygon_2d> cells() const {
+    std::vector<Polygon_2d> all(owner.size());
+    for (std::size_t i = 0; i < owner.size(); ++i)
+      if (owner[i] == i) cell(handle[9 * i + 4], all[i]);
+    return all;
   }
 };
 
@@ -644,7 +820,8 @@ inline double wrap_into(double x, double low, double period) {
 // One Lloyd step on the torus of the density's box, on checked sites (inside the box; x1 or y1 is taken as
 // x0 or y0).
 inline Lloyd_step_result periodic_lloyd_step_impl(const std::vector<std::array<double, 2>>& given,
-                                                  const Pixel_density& density, unsigned threads) {
+                                                  const Pixel_density& density, Periodic_voronoi& voronoi,
+                                                  unsigned threads) {
   Lloyd_step_result r;
   const std::size_t n = given.size();
   const std::array<double, 4> box = density.box();
@@ -655,17 +832,19 @@ inline Lloyd_step_result periodic_lloyd_step_impl(const std::vector<std::array<d
   r.mass.assign(n, 0.0);
   r.minimum_distance = std::numeric_limits<double>::infinity();
   if (n == 0 || !(W > 0 && H > 0)) return r;
-  Periodic_voronoi voronoi;
   voronoi.build(sites, box);
   r.duplicates = voronoi.duplicates;
   r.minimum_distance = voronoi.minimum_distance;
-  std::vector<Density_moments> moments(n);
   if (threads == 0 && density.is_constant()) threads = 1;
-  FeatureRecon::internal::parallel_blocks(n, threads, 256, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      if (voronoi.owner[i] == i) moments[i] = periodic_cell_moments(voronoi.cells[i], density);
-  });
-  cell_centroids(sites, voronoi.owner, moments, density, r, [&](double x, double y) {
+  // A cell inside the box is integrated edge by edge, a cell across its faces in pieces on the torus.
+  constexpr std::uint32_t none = Voronoi_builder::dummy;
+  integrate_voronoi_cells(
+      voronoi.dt, n, [](std::uint32_t info) { return info % 9 == 4 ? info / 9 : none; },
+      [](std::uint32_t i) { return 9 * i + 4; },
+      [&](Voronoi_builder::Dt::Vertex_handle v, Polygon_2d& out, Polygon_2d&) { voronoi.cell(v, out); },
+      [&](const Polygon_2d& cell) { return periodic_cell_moments(cell, density); }, density, threads,
+      voronoi.work);
+  cell_centroids(sites, voronoi.owner, voronoi.work.moments, density, r, [&](double x, double y) {
     return std::array<double, 2>{wrap_into(x, box[0], W), wrap_into(y, box[1], H)};
   });
   return r;
@@ -737,10 +916,10 @@ std::vector<Polygon_2d> periodic_voronoi_cells(const PointRange& points, const s
   std::vector<std::array<double, 2>> sites = internal::read_sites(points, b, traits, fn);
   for (auto& p : sites)
     p = {internal::wrap_into(p[0], b[0], b[2] - b[0]), internal::wrap_into(p[1], b[1], b[3] - b[1])};
+  if (sites.empty()) return {};
   internal::Periodic_voronoi voronoi;
-  if (!sites.empty()) voronoi.build(sites, b);
-  voronoi.cells.resize(sites.size());
-  return voronoi.cells;
+  voronoi.build(sites, b);
+  return voronoi.cells();
 }
 
 /// One Lloyd iteration on the torus of the density's box (Lloyd_options::periodic): the centroid of every
@@ -757,7 +936,8 @@ template <class PointRange, class Traits = Point_coordinate_traits<typename std:
 Lloyd_step_result periodic_lloyd_step(const PointRange& points, const Pixel_density& density,
                                       const Traits& traits = Traits()) {
   const auto sites = internal::read_sites(points, density.box(), traits, "periodic_lloyd_step");
-  return internal::periodic_lloyd_step_impl(sites, density, 0);
+  internal::Periodic_voronoi voronoi;
+  return internal::periodic_lloyd_step_impl(sites, density, voronoi, 0);
 }
 
 /// Lloyd relaxation of the sites under the pixel density: each iteration moves every site to the centroid of
@@ -765,10 +945,11 @@ Lloyd_step_result periodic_lloyd_step(const PointRange& points, const Pixel_dens
 /// max_iterations, when the relative energy decrease or the largest move falls below its tolerance, or when
 /// on_iteration returns false. Copies of a site (equal positions) first move apart by a hundredth of the
 /// hexagonal spacing, kept inside the box. With `options.periodic` the box is a torus
-/// (periodic_lloyd_step()): O(N log N + C) per iteration as well, the Delaunay triangulation rebuilt each
-/// time with the images of the sites near the faces. Deterministic: the same sites give bit-identical output.
-/// O(N log N
-/// + C) per iteration for N sites whose cell boundaries cross C pixel sides.
+/// (periodic_lloyd_step()): the triangulation holds the sites and their images near the faces, and is kept
+/// between iterations as well (each step gives what periodic_lloyd_step() gives, bit for bit unless four
+/// sites or images are cocircular, where the triangulation may split their circle otherwise). Deterministic:
+/// the same sites give bit-identical output. O(N log N + C) per iteration for N sites whose cell boundaries
+/// cross C pixel sides.
 /// \tparam PointRange a range of 2D points (the initial sites, for example from dart throwing).
 /// \tparam Traits a model of PointCoordinateTraits.
 /// \param points the initial sites, inside the density's box.
@@ -810,6 +991,7 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
         n, hexagonal / 100, [&result](std::size_t i) -> auto& { return result.sites[i]; }, &lo, &hi);
   }
   internal::Voronoi_builder voronoi;
+  internal::Periodic_voronoi periodic_voronoi;
   double previous_energy = std::numeric_limits<double>::infinity();
   for (std::size_t it = 0; it < options.max_iterations; ++it) {
     if (!FeatureRecon::internal::report_progress(options.progress,
@@ -818,9 +1000,10 @@ Lloyd_result lloyd_relaxation(const PointRange& points, const Pixel_density& den
       result.status = Status::interrupted;
       return result;
     }
-    Lloyd_step_result step = options.periodic
-                                 ? internal::periodic_lloyd_step_impl(result.sites, density, options.threads)
-                                 : internal::lloyd_step_impl(result.sites, density, voronoi, options.threads);
+    Lloyd_step_result step =
+        options.periodic
+            ? internal::periodic_lloyd_step_impl(result.sites, density, periodic_voronoi, options.threads)
+            : internal::lloyd_step_impl(result.sites, density, voronoi, options.threads);
     Lloyd_iteration_statistics s;
     s.iteration = it + 1;
     s.energy = step.energy;
