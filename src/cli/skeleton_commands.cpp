@@ -638,6 +638,23 @@ int run_skeleton(const std::vector<std::string>& argv) {
                               ", all within +-180 and +-90), but the tracks are read in metres: give "
                               "--lonlat, or project them to metres first");
     }
+    // Fixes kilometres apart are the other mistake of units (centimetres, a projection's map units): every
+    // segment is then linked and sampled every few metres (100 km steps: about 13,000 samples each), which
+    // took minutes and gigabytes without a word. Warned before the pipeline runs.
+    if (const double step = median_gps_step(trips); !lonlat && step > 2000) {
+      double length = 0;
+      for (const Gps_trip& trip : trips)
+        for (std::size_t i = 1; i < trip.size(); ++i)
+          length += std::hypot(trip[i].x - trip[i - 1].x, trip[i].y - trip[i - 1].y);
+      std::fprintf(
+          stderr,
+          "featurerecon skeleton: warning: %s: the median step between consecutive fixes of a trip is "
+          "%.4g km, and the trips are %.4g km long; the tracks are read in metres and seconds. If "
+          "the coordinates are in another unit (centimetres, millimetres), convert them first: fixes this "
+          "far apart are joined by straight segments sampled every few metres, which takes long and "
+          "needs about 1 GB per 2,000 km\n",
+          args.get("tracks").c_str(), step / 1000, length / 1000);
+    }
     Road_map_options ro;
     ro.rips_radius = radius;
     // On the command line 0 turns a stage off; unset means automatic.

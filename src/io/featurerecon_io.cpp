@@ -237,10 +237,16 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
         {parse_double(t[1], vertices_path, number, "x"), parse_double(t[2], vertices_path, number, "y")});
     m.vertex_lines.push_back(number);
   });
+  std::map<long long, std::size_t> edge_ids;  // id -> its line
   for_each_csv_row(edges_path, [&](const std::vector<std::string>& t, std::size_t number) {
     if (t.size() < 3 || t.size() > 4)
       throw Input_error(where(edges_path, number) + "expected 'id,v1,v2[,flag]', got " +
                         std::to_string(t.size()) + " fields");
+    // A repeated edge id is most often two files joined into one.
+    const auto [first, added] = edge_ids.emplace(parse_id(t[0], edges_path, number, "edge id"), number);
+    if (!added)
+      throw Input_error(where(edges_path, number) + "edge id " + t[0] + " repeated (first on line " +
+                        std::to_string(first->second) + ")");
     std::array<std::uint32_t, 2> e{};
     for (int k = 0; k < 2; ++k) {
       const long long id = parse_id(t[1 + k], edges_path, number);

@@ -52,7 +52,8 @@ void write_complex(const std::string& path, const skeleton::Simplicial_complex_2
 
 /// A road map in the map-construction benchmark's format: a vertex file of lines `id,x,y` and an edge file
 /// of lines `id,v1,v2[,flag]` (v1, v2 are vertex ids). Returns positions and edges by vertex index.
-/// Throws Input_error naming the file and line of a malformed line, a repeated vertex id or an unknown one.
+/// Throws Input_error naming the file and line of a malformed line, a repeated vertex or edge id, or an
+/// unknown vertex id.
 struct Map_file {
   std::vector<std::array<double, 2>> positions;
   std::vector<std::array<std::uint32_t, 2>> edges;

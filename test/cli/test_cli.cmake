@@ -171,11 +171,19 @@ if(SH)
 endif()
 # An error the library reports by trip and fix index also names the file, line and trip id.
 file(WRITE ${WORK}/far_tracks.txt "car7 0 0 0\ncar7 10 0 1\ncar7 20 0 2\ncar9 20 0 5\ncar9 30 0 3\ncar9 1e17 0 4\n")
+# Fixes kilometres apart (centimetres read as metres): a warning with the step and length, before the run.
+file(WRITE ${WORK}/km_tracks.txt "0 0 0 0\n0 3000 0 10\n0 6000 0 20\n")
+expect(skeleton_tracks_km_steps 0 "warning: .*km_tracks.txt: the median step between consecutive fixes of a trip is 3 km, and the trips are 6 km long; the tracks are read in metres and seconds" skeleton --tracks ${WORK}/km_tracks.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 expect(skeleton_tracks_error_located 1 "sample_gps_traces: trip 1, fix 2 at \\(1e\\+17, 0\\) .* \\[[^]]*far_tracks.txt:6, trip id 'car9'\\]" skeleton --tracks ${WORK}/far_tracks.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 file(WRITE ${WORK}/flag_e.txt "0,0,1,1\n")
 file(WRITE ${WORK}/bad_flag_e.txt "0,0,1,1\n1,1,0,x\n")
 expect(evaluate_map_flag 0 "\"matched\": 21," evaluate-map ${WORK}/bom_v.txt ${WORK}/flag_e.txt ${WORK}/bom_v.txt ${WORK}/bom_e.txt)
 expect(evaluate_map_bad_flag 1 "bad_flag_e.txt:2: 'x' is not a number \\(edge flag\\)" evaluate-map ${WORK}/bom_v.txt ${WORK}/bad_flag_e.txt ${WORK}/bom_v.txt ${WORK}/bom_e.txt)
+# Edge ids are integers, each once (a repeated one is most often two files joined).
+file(WRITE ${WORK}/repeated_id_e.txt "0,0,1\n0,1,0\n")
+expect(evaluate_map_repeated_edge_id 1 "repeated_id_e.txt:2: edge id 0 repeated \\(first on line 1\\)" evaluate-map ${WORK}/bom_v.txt ${WORK}/repeated_id_e.txt ${WORK}/bom_v.txt ${WORK}/bom_e.txt)
+file(WRITE ${WORK}/bad_id_e.txt "x,0,1\n")
+expect(evaluate_map_bad_edge_id 1 "bad_id_e.txt:1: 'x' is not a number \\(edge id\\)" evaluate-map ${WORK}/bom_v.txt ${WORK}/bom_e.txt ${WORK}/bom_v.txt ${WORK}/bad_id_e.txt)
 expect(evaluate_map_args 2 "expected four files" evaluate-map ${M}_gt_crp_vertices.txt)
 # The optimal matching pairs at least as many samples (james vs crp, 15 m: 4,485 greedy pairs, 4,490 optimal).
 expect(evaluate_map_optimal 0 "\"f_score\": 0\\.64[0-9]*, \"matched\": 449[0-9],.*\"matching\": \"optimal\"" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --matching optimal)
