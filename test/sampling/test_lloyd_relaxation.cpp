@@ -894,6 +894,7 @@ TEST(PeriodicLloydStep, KeptTriangulationGivesWhatAFreshOneGives) {
   sampling::internal::Periodic_voronoi voronoi;
   for (int it = 0; it < 20; ++it) {
     const auto kept = sampling::internal::periodic_lloyd_step_impl(sites, d, voronoi, 1);
+    ASSERT_TRUE(voronoi.dt.is_valid()) << "iteration " << it;
     const Lloyd_step_result fresh = periodic_lloyd_step(sites, d);
     ASSERT_EQ(kept.centroids, fresh.centroids) << "iteration " << it;
     EXPECT_EQ(kept.mass, fresh.mass) << it;
@@ -912,6 +913,45 @@ TEST(PeriodicLloydStep, KeptTriangulationGivesWhatAFreshOneGives) {
   o.max_iterations = 20;
   o.threads = 1;
   EXPECT_EQ(lloyd_relaxation(start, d, o).sites, sites);
+}
+
+TEST(PeriodicLloydStep, KeptTriangulationStaysValidWhenClustersSpreadOut) {
+  // A review's findings: the images at the band's edge formed the hull, and moving them made it non-convex
+  // (CGAL's is_valid() failed in 994 of 5,235 kept steps); a cluster spreading out in a 2 x 100 box then hung
+  // in CGAL's vertex removal, gave centroids 1.5 off, or failed a precondition, and reusing one object for
+  // another cluster hung. Far corners now close the triangulation. Each step is checked against a fresh one.
+  const Pixel_density tall = Pixel_density::uniform(2, 100), square = Pixel_density::uniform(40, 30);
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> g(0, seed % 2 == 0 ? 0.05 : 0.02);
+    const Pixel_density& d = seed <= 4 ? tall : square;
+    const double cx = seed <= 4 ? 0.6 : 20, cy = seed <= 4 ? 90 : 28;
+    std::vector<P2> sites;
+    for (int i = 0; i < 300; ++i)
+      sites.push_back({std::clamp(cx + g(rng), 0.0, d.box()[2] * (1 - 1e-12)),
+                       std::clamp(cy + g(rng), 0.0, d.box()[3] * (1 - 1e-12))});
+    const std::vector<P2> start = sites;
+    sampling::internal::Periodic_voronoi voronoi;
+    for (int it = 0; it < 6; ++it) {
+      const auto kept = sampling::internal::periodic_lloyd_step_impl(sites, d, voronoi, 1);
+      ASSERT_TRUE(voronoi.dt.is_valid()) << "seed " << seed << " iteration " << it;
+      const Lloyd_step_result fresh = periodic_lloyd_step(sites, d);
+      ASSERT_EQ(kept.centroids, fresh.centroids) << "seed " << seed << " iteration " << it;
+      EXPECT_EQ(kept.energy, fresh.energy);
+      sites = kept.centroids;
+    }
+    // The same object on other sites of the same number and box: a corner cluster.
+    std::vector<P2> corner;
+    for (int i = 0; i < 300; ++i)
+      corner.push_back({std::abs(g(rng)), std::min(std::abs(g(rng)), d.box()[3] * (1 - 1e-12))});
+    const auto kept = sampling::internal::periodic_lloyd_step_impl(corner, d, voronoi, 1);
+    ASSERT_TRUE(voronoi.dt.is_valid()) << "seed " << seed;
+    EXPECT_EQ(kept.centroids, periodic_lloyd_step(corner, d).centroids) << "seed " << seed;
+    Lloyd_options o;
+    o.periodic = true;
+    o.max_iterations = 6;
+    EXPECT_EQ(lloyd_relaxation(start, d, o).sites, sites) << "seed " << seed;
+  }
 }
 
 TEST(PeriodicLloydStep, ElongatedBoxesCopiesAcrossTheFacesAndNeighbouringDoubles) {

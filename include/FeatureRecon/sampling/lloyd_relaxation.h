@@ -570,7 +570,8 @@ inline Lloyd_step_result lloyd_step_impl(const std::vector<std::array<double, 2>
 // every site, up to the whole period (all eight copies; then the cells are those of the tiling). Each cell
 // is the polygon of its triangles' circumcentres around the site itself, counter-clockwise from the face
 // towards its lowest-ranked neighbour (first_face()), and may reach out of the box.
-// The triangulation is kept: when the next call has as many sites, no copies and the same box, the vertices
+// Four far corners close the triangulation, so its hull never moves. The triangulation is kept: when the
+// next call has as many sites, no copies and the same box, the vertices
 // move (move_by_flips()), those of a site that crossed a face taking the label of the image they are now
 // nearest, images that leave the band are removed and those that enter it inserted. The result is the
 // triangulation a rebuild at the same band gives (the Delaunay triangulation with CGAL's symbolic
@@ -599,6 +600,9 @@ struct Periodic_voronoi {
   static std::array<double, 2> image(const std::array<double, 2>& p, std::uint32_t code, double W, double H) {
     return {p[0] + (double(code % 3) - 1) * W, p[1] + (double(code / 3) - 1) * H};
   }
+  static constexpr std::uint32_t dummy = Voronoi_builder::dummy;  // the far corners' info
+  // Whether a vertex is a site itself (not an image, not a far corner).
+  static bool is_site(std::uint32_t info) { return info != dummy && info % 9 == 4; }
   static bool within(const std::array<double, 2>& q, const std::array<double, 4>& box, double reach) {
     return q[0] >= box[0] - reach && q[0] <= box[2] + reach && q[1] >= box[1] - reach &&
            q[1] <= box[3] + reach;
@@ -647,7 +651,8 @@ struct Periodic_voronoi {
     double shortest = std::numeric_limits<double>::infinity();
     for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
       const auto a = e->first->vertex(Dt::ccw(e->second)), b = e->first->vertex(Dt::cw(e->second));
-      if ((a->info() % 9 == 4 || b->info() % 9 == 4) && a->info() / 9 != b->info() / 9)
+      if ((is_site(a->info()) || is_site(b->info())) && a->info() != dummy && b->info() != dummy &&
+          a->info() / 9 != b->info() / 9)
         shortest = std::min(shortest, CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
     }
     minimum_distance = std::sqrt(shortest);
@@ -665,10 +670,18 @@ struct Periodic_voronoi {
         points.push_back({K::Point_2(q[0], q[1]), static_cast<std::uint32_t>(9 * i + code)});
       }
     }
+    // Four far corners, as Voronoi_builder's, 3 max(W, H, 1) outside the box (the images lie within one
+    // period of it): the hull stays fixed while the sites and images move, so triangles that keep their
+    // orientation keep the triangulation valid (moving hull vertices broke its convexity).
+    const double reach = 3 * std::max({W, H, 1.0});
+    const double xs[2] = {box[0] - reach, box[2] + reach}, ys[2] = {box[1] - reach, box[3] + reach};
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) points.push_back({K::Point_2(xs[a], ys[b]), dummy});
     dt.clear();
     dt.insert(points.begin(), points.end());
     handle.assign(9 * sites.size(), Dt::Vertex_handle());
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+      if (v->info() != dummy) handle[v->info()] = v;
   }
 
   // The triangulation of the last call moved to `sites` (same number, none at the same position, same box);
@@ -722,19 +735,17 @@ struct Periodic_voronoi {
       dt.insert(entering.begin(), entering.end());
       inserted += entering.size();
       if (dt.number_of_vertices() != kept + entering.size()) return false;  // an image on another point
-      for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
+      for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+        if (v->info() != dummy) handle[v->info()] = v;
     }
     return true;
   }
 
   // Caches each finite face's circumcentre, its vertices' infos and whether the circumcentre lies in the box
-  // (Voronoi_builder::Face_data); false when a circumcircle of a triangle around a site reaches beyond the
-  // band, or a site lies on the hull (the sites and images within the band span too little), so that a
-  // missing image could change its cell.
+  // (Voronoi_builder::Face_data); false when a triangle around a site has a far corner or a circumcircle
+  // that reaches beyond the band (the sites and images within it span too little), so that a missing image
+  // could change its cell.
   bool prepare_faces(const std::array<double, 4>& box) {
-    // Points on one line (sites of one column in a wide box with only their vertical images) have no
-    // triangles: the band is too narrow (at the whole period the nine copies span the plane).
-    if (dt.dimension() != 2) return false;
     bool complete = true;
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
       const std::array<double, 2> c = ranked_circumcenter<Dt>(f);
@@ -742,15 +753,14 @@ struct Periodic_voronoi {
       d.circumcenter = c;
       d.site = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
       d.inside = c[0] >= box[0] && c[0] <= box[2] && c[1] >= box[1] && c[1] <= box[3];
-      if (!complete || (d.site[0] % 9 != 4 && d.site[1] % 9 != 4 && d.site[2] % 9 != 4)) continue;
+      if (!complete || !(is_site(d.site[0]) || is_site(d.site[1]) || is_site(d.site[2]))) continue;
+      // A far corner lies beyond the band, so its circle does too; checked by name all the same.
       const K::Point_2& p = f->vertex(0)->point();
       const double dx = c[0] - p.x(), dy = c[1] - p.y(), r = std::sqrt(dx * dx + dy * dy);
-      complete = c[0] - r >= box[0] - band && c[0] + r <= box[2] + band && c[1] - r >= box[1] - band &&
+      complete = d.site[0] != dummy && d.site[1] != dummy && d.site[2] != dummy &&
+                 c[0] - r >= box[0] - band && c[0] + r <= box[2] + band && c[1] - r >= box[1] - band &&
                  c[1] + r <= box[3] + band;
     }
-    auto v = dt.incident_vertices(dt.infinite_vertex()), end = v;
-    do complete = complete && v->info() % 9 != 4;
-    while (++v != end);
     return complete;
   }
 
@@ -839,7 +849,7 @@ inline Lloyd_step_result periodic_lloyd_step_impl(const std::vector<std::array<d
   // A cell inside the box is integrated edge by edge, a cell across its faces in pieces on the torus.
   constexpr std::uint32_t none = Voronoi_builder::dummy;
   integrate_voronoi_cells(
-      voronoi.dt, n, [](std::uint32_t info) { return info % 9 == 4 ? info / 9 : none; },
+      voronoi.dt, n, [](std::uint32_t info) { return Periodic_voronoi::is_site(info) ? info / 9 : none; },
       [](std::uint32_t i) { return 9 * i + 4; },
       [&](Voronoi_builder::Dt::Vertex_handle v, Polygon_2d& out, Polygon_2d&) { voronoi.cell(v, out); },
       [&](const Polygon_2d& cell) { return periodic_cell_moments(cell, density); }, density, threads,
