@@ -70,6 +70,14 @@ Pixel_density random_density(int w, int h, std::mt19937_64& rng) {
   return Pixel_density(w, h, v);
 }
 
+// n sites uniform in [0, w) x [0, h), x then y from the generator.
+std::vector<P2> uniform_sites(std::size_t n, double w, double h, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
+  std::vector<P2> sites(n);
+  for (auto& p : sites) p = {ux(rng), uy(rng)};
+  return sites;
+}
+
 void expect_moments_near(const Density_moments& a, const Density_moments& b, double scale) {
   EXPECT_NEAR(a.mass, b.mass, 1e-10 * scale);
   EXPECT_NEAR(a.moment_x, b.moment_x, 1e-9 * scale);
@@ -83,9 +91,7 @@ TEST(PixelDensity, ExactOnRandomPolygonsAgainstPerPixelClipping) {
     const int w = 1 + int(rng() % 9), h = 1 + int(rng() % 7);
     const Pixel_density d = random_density(w, h, rng);
     // A random convex polygon: the clipped Voronoi cell of a random site among random sites.
-    std::uniform_real_distribution<double> ux(0, w), uy(0, h);
-    std::vector<P2> sites(2 + rng() % 6);
-    for (auto& s : sites) s = {ux(rng), uy(rng)};
+    std::vector<P2> sites = uniform_sites(2 + rng() % 6, w, h, rng);
     const auto cells = clipped_voronoi_cells(sites, d.box());
     for (const auto& cell : cells) {
       ASSERT_GE(cell.size(), 3u);
@@ -122,9 +128,7 @@ TEST(PixelDensity, ConstantDensityClosedFormMatchesThePixelWalk) {
     padded.push_back(0.0);
   }
   const Pixel_density walked(w + 1, h, padded);
-  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
-  std::vector<P2> sites(12);
-  for (auto& p : sites) p = {ux(rng), uy(rng)};
+  std::vector<P2> sites = uniform_sites(12, w, h, rng);
   for (const auto& cell : clipped_voronoi_cells(sites, constant.box())) {
     const Density_moments fast = constant.integrate(cell), slow = walked.integrate(cell);
     expect_moments_near(fast, slow, double(w * h));
@@ -237,9 +241,7 @@ void check_cells(const std::vector<P2>& sites, const std::array<double, 4>& box,
 TEST(ClippedVoronoiCells, MatchBruteForceOnRandomAndDegenerateSites) {
   std::mt19937_64 rng(3);
   const std::array<double, 4> box{0, 0, 10, 6};
-  std::uniform_real_distribution<double> ux(0, 10), uy(0, 6);
-  std::vector<P2> random(50);
-  for (auto& s : random) s = {ux(rng), uy(rng)};
+  const std::vector<P2> random = uniform_sites(50, 10, 6, rng);
   check_cells(random, box, rng);
   check_cells({{3.0, 2.0}}, box, rng);                                      // one site: the whole box
   check_cells({{1.0, 1.0}, {2.0, 2.0}, {3.0, 3.0}, {4.0, 4.0}}, box, rng);  // collinear: parallel strips
@@ -331,9 +333,7 @@ TEST(LloydStep, SharedEdgesAndFlipUpdatesMatchWholeCells) {
   std::mt19937_64 rng(21);
   const int w = 30, h = 20;
   const Pixel_density d = random_density(w, h, rng);
-  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
-  std::vector<P2> sites(120);
-  for (auto& s : sites) s = {ux(rng), uy(rng)};
+  std::vector<P2> sites = uniform_sites(120, w, h, rng);
   sampling::internal::Voronoi_builder voronoi;
   for (int it = 0; it < 12; ++it) {
     const auto step = sampling::internal::lloyd_step_impl(sites, d, voronoi, 1);
@@ -382,9 +382,7 @@ TEST(LloydStep, ThreadsDoNotChangeABit) {
 TEST(LloydRelaxation, EnergyDecreasesAndSpacingImproves) {
   std::mt19937_64 rng(11);
   const int w = 64, h = 48;
-  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
-  std::vector<P2> sites(300);
-  for (auto& s : sites) s = {ux(rng), uy(rng)};
+  std::vector<P2> sites = uniform_sites(300, w, h, rng);
   Lloyd_options options;
   options.max_iterations = 40;
   const auto r = lloyd_relaxation(sites, Pixel_density::uniform(w, h), options);
@@ -887,9 +885,7 @@ TEST(PeriodicLloydStep, KeptTriangulationGivesWhatAFreshOneGives) {
   std::mt19937_64 rng(8);
   const int w = 40, h = 30;
   const Pixel_density d = random_density(w, h, rng);
-  std::uniform_real_distribution<double> ux(0, w), uy(0, h);
-  std::vector<P2> sites(300);
-  for (auto& p : sites) p = {ux(rng), uy(rng)};
+  std::vector<P2> sites = uniform_sites(300, w, h, rng);
   const std::vector<P2> start = sites;
   sampling::internal::Periodic_voronoi voronoi;
   for (int it = 0; it < 20; ++it) {
