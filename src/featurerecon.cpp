@@ -307,7 +307,7 @@ const std::vector<Command>& commands() {
        "\n"
        "  GT_*, REC_*      vertex files 'id,x,y' and edge files 'id,v1,v2[,flag]' (metres, or degrees with "
        "--lonlat;\n"
-       "                   edges undirected)\n"
+       "                   edges undirected; ids are integers, each once per file)\n"
        "  --crop-to-tracks keep only ground-truth edges whose 5 m samples all lie within --crop-radius "
        "(default 25 m)\n"
        "                   of a trace point of TRACKS (lines 'trip_id x y t'): the fixes, and points every "
