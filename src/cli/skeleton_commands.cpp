@@ -627,7 +627,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     }
     // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart. Checked before
     // the pipeline runs (it ran first, minutes on a large file, to be refused).
-    if (const double step = median_gps_step(trips); !lonlat && step > 0 && step < 0.01) {
+    const double median_step = median_gps_step(trips);  // of the fixes as read (or projected)
+    if (const double step = median_step; !lonlat && step > 0 && step < 0.01) {
       bool degrees = true;
       for (const Gps_trip& trip : trips)
         for (const Gps_fix& f : trip) degrees = degrees && std::abs(f.x) <= 180 && std::abs(f.y) <= 90;
@@ -641,7 +642,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     // Fixes kilometres apart are the other mistake of units (centimetres, a projection's map units): every
     // segment is then linked and sampled every few metres (100 km steps: about 13,000 samples each), which
     // took minutes and gigabytes without a word. Warned before the pipeline runs.
-    if (const double step = median_gps_step(trips); !lonlat && step > 2000) {
+    if (const double step = median_step; !lonlat && step > 2000) {
       double length = 0;
       for (const Gps_trip& trip : trips)
         for (std::size_t i = 1; i < trip.size(); ++i)
