@@ -324,14 +324,29 @@ std::string json_number(double x) {
   return buf;
 }
 
+Track_input read_tracks(const std::string& path, bool keep_points) {
+  Track_input r;
+  const auto read = io::read_track_trips(path, &r.origin);
+  r.trips.resize(read.size());
+  for (std::size_t t = 0; t < read.size(); ++t)
+    for (std::size_t i = 0; i < read[t].size(); ++i) {
+      const auto& f = read[t][i];
+      r.trips[t].push_back({f[0], f[1], f[2]});
+      if (!keep_points) continue;
+      r.points.push_back({f[0], f[1]});
+      r.at.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(i)});
+    }
+  return r;
+}
+
 skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>& sources) {
   std::vector<std::array<double, 2>> all;
   for (const Lonlat_source& source : sources)
     for (std::size_t i = 0; i < source.points->size(); ++i) {
       const double lon = (*source.points)[i][0], lat = (*source.points)[i][1];
       if (!(lon >= -180 && lon <= 180 && lat >= -90 && lat <= 90))
-        throw io::Input_error(source.file + ":" + std::to_string((*source.lines)[i]) + ": --lonlat: (" +
-                              io::format_double(lon) + ", " + io::format_double(lat) +
+        throw io::Input_error(source.locate(i) + ": --lonlat: (" + io::format_double(lon) + ", " +
+                              io::format_double(lat) +
                               ") is not a longitude in [-180, 180] and a latitude in [-90, 90]");
       all.push_back((*source.points)[i]);
     }
@@ -345,8 +360,7 @@ skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>
     if (std::sscanf(what.c_str(), "point %zu ", &index) == 1)
       for (const Lonlat_source& source : sources) {
         if (index < source.points->size())
-          throw io::Input_error(source.file + ":" + std::to_string((*source.lines)[index]) +
-                                ": --lonlat: " + what.substr(what.find(' ', 6) + 1));
+          throw io::Input_error(source.locate(index) + ": --lonlat: " + what.substr(what.find(' ', 6) + 1));
         index -= source.points->size();
       }
     std::string files;  // the files given (an option not given has no name)

@@ -7,15 +7,19 @@
 
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/skeleton/geographic.h>
+#include <FeatureRecon/skeleton/gps_traces.h>
 
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "../io/featurerecon_io.h"
 
 namespace FeatureRecon {
 namespace cli {
@@ -104,11 +108,16 @@ class Outputs {
 };
 
 /// A file of --lonlat positions: its name ("" for an option not given), its points ({longitude, latitude} in
-/// degrees) and the line of each point in it.
+/// degrees) and the line of each point in it; for points from several files (a directory of tracks), `where`
+/// gives "file:line" of point i instead.
 struct Lonlat_source {
   std::string file;
   const std::vector<std::array<double, 2>>* points;
   const std::vector<std::size_t>* lines;
+  std::function<std::string(std::size_t)> where = nullptr;
+  std::string locate(std::size_t i) const {
+    return where ? where(i) : file + ":" + std::to_string((*lines)[i]);
+  }
 };
 
 /// --lonlat: the points of each source are checked (Input_error naming the file, the line and the values) and
@@ -126,6 +135,21 @@ void project_trips(Trips& trips, const skeleton::Transverse_mercator& projection
       fix.y = xy[1];
     }
 }
+
+/// GPS tracks as read by io::read_track_trips() (a file of lines 'trip_id x y t' or a directory of one-trip
+/// files), with where each fix was read: messages name its file and line.
+struct Track_input {
+  std::vector<skeleton::Gps_trip> trips;
+  io::Track_origin origin;
+  std::vector<std::array<double, 2>> points;     ///< every fix's (x, y) as read, trip by trip (if kept)
+  std::vector<std::array<std::uint32_t, 2>> at;  ///< (trip, fix) of each point (if kept)
+  /// The points as a --lonlat source named `name`.
+  Lonlat_source lonlat_source(const std::string& name) const {
+    return {name, &points, nullptr, [this](std::size_t i) { return origin.where(at[i][0], at[i][1]); }};
+  }
+};
+/// With `keep_points` false, `points` and `at` stay empty (no --lonlat source: they take 24 bytes a fix).
+Track_input read_tracks(const std::string& path, bool keep_points = true);
 
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);

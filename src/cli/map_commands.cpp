@@ -72,7 +72,7 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   Outputs outputs(args, {"samples-out", "svg"});
   outputs.require_extension("svg", {"svg", "png", "jpg", "jpeg", "pgm", "ppm"}, "a picture");
   const auto& p = args.positional();
-  std::vector<std::size_t> gt_lines, rec_lines, crop_lines, track_lines;  // of each position, for --lonlat
+  std::vector<std::size_t> gt_lines, rec_lines;  // of each position, for --lonlat
   auto read = [&](const std::string& vertices, const std::string& edges, std::vector<std::size_t>& lines) {
     io::Map_file m = io::read_map(vertices, edges);
     lines = std::move(m.vertex_lines);
@@ -88,25 +88,13 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   Embedded_graph_2 gt = read(p[0], p[1], gt_lines);
   Embedded_graph_2 rec = read(p[2], p[3], rec_lines);
   std::size_t gt_edges_before = gt.edges.size();
-  std::vector<std::array<double, 2>> crop_points, track_points;  // for --lonlat's checks and messages
-  // Trips with their points and the lines they came from.
-  auto read_trips = [](const std::string& path, std::vector<Gps_trip>& trips,
-                       std::vector<std::array<double, 2>>& points, std::vector<std::size_t>& lines) {
-    io::Track_origin origin;
-    const auto read = io::read_track_trips(path, &origin);
-    for (std::size_t t = 0; t < read.size(); ++t) {
-      trips.emplace_back();
-      for (std::size_t i = 0; i < read[t].size(); ++i) {
-        const auto& f = read[t][i];
-        trips.back().push_back({f[0], f[1], f[2]});
-        points.push_back({f[0], f[1]});
-        lines.push_back(origin.lines[t][i]);
-      }
-    }
-  };
-  std::vector<Gps_trip> trips, crop_trips;
-  if (args.has("crop-to-tracks")) read_trips(args.get("crop-to-tracks"), crop_trips, crop_points, crop_lines);
-  if (args.has("tracks")) read_trips(args.get("tracks"), trips, track_points, track_lines);
+  // Trips with their points and where each fix was read (for --lonlat's checks and messages).
+  Track_input crop_input, track_input;
+  if (args.has("crop-to-tracks")) crop_input = read_tracks(args.get("crop-to-tracks"));
+  if (args.has("tracks")) track_input = read_tracks(args.get("tracks"));
+  std::vector<Gps_trip>& trips = track_input.trips;
+  std::vector<Gps_trip>& crop_trips = crop_input.trips;
+  const std::vector<std::array<double, 2>>& crop_points = crop_input.points;
   // --lonlat: every file in degrees; all projected to metres with one projection centred on them.
   const bool lonlat = args.has("lonlat");
   if (!lonlat)  // degrees read as metres: the whole map shrinks to a few samples and everything matches
@@ -132,8 +120,8 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   if (lonlat) {
     projection = lonlat_projection({{p[0], &gt.positions, &gt_lines},
                                     {p[2], &rec.positions, &rec_lines},
-                                    {args.get_or("crop-to-tracks", ""), &crop_points, &crop_lines},
-                                    {args.get_or("tracks", ""), &track_points, &track_lines}});
+                                    crop_input.lonlat_source(args.get_or("crop-to-tracks", "")),
+                                    track_input.lonlat_source(args.get_or("tracks", ""))});
     for (auto* points : {&gt.positions, &rec.positions})
       for (auto& q : *points) q = projection.forward(q[0], q[1]);
     project_trips(trips, projection);

@@ -607,22 +607,12 @@ int run_skeleton(const std::vector<std::string>& argv) {
       throw Usage_error("--min-lateral-density must be in [0, 1]");
     if (!(go.heading_tolerance >= 0 && go.heading_tolerance <= 180))
       throw Usage_error("--heading-tolerance must be in [0, 180] degrees");
-    std::vector<Gps_trip> trips;
-    // to name the file, line and trip id where the library names trip and fix indices
-    io::Track_origin origin;
-    for (const auto& trip : io::read_track_trips(args.get("tracks"), &origin)) {
-      trips.emplace_back();
-      for (const auto& f : trip) trips.back().push_back({f[0], f[1], f[2]});
-    }
+    // with where each fix was read, to name the file, line and trip id where the library names trip and fix
+    // indices
+    Track_input tracks = read_tracks(args.get("tracks"), lonlat);
+    std::vector<Gps_trip>& trips = tracks.trips;
     if (lonlat) {  // x, y are longitude and latitude: to metres, centred on the traces
-      std::vector<std::array<double, 2>> degrees;
-      std::vector<std::size_t> lines;
-      for (std::size_t t = 0; t < trips.size(); ++t)
-        for (std::size_t i = 0; i < trips[t].size(); ++i) {
-          degrees.push_back({trips[t][i].x, trips[t][i].y});
-          lines.push_back(origin.lines[t][i]);
-        }
-      projection = lonlat_projection({{args.get("tracks"), &degrees, &lines}});
+      projection = lonlat_projection({tracks.lonlat_source(args.get("tracks"))});
       project_trips(trips, projection);
     }
     // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart. Checked before
@@ -675,7 +665,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     try {
       road = extract_road_map(trips, ro);
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(origin.locate(args.get("tracks"), e.what()));
+      throw std::invalid_argument(tracks.origin.locate(e.what()));
     }
     const Gps_trace_sample& sample = road.sample;
     radius = road.used.rips_radius;

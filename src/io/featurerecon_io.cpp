@@ -2,10 +2,12 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 #include "featurerecon_io.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <climits>
@@ -262,31 +264,104 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
   return m;
 }
 
-std::vector<std::array<double, 2>> read_track_points(const std::string& path,
-                                                     std::vector<std::size_t>* lines) {
-  std::vector<std::array<double, 2>> p;
-  for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
-    if (t.size() < 3 || t.size() > 4)
-      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) +
-                        " values");
-    p.push_back({parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y")});
-    if (lines != nullptr) lines->push_back(number);
-  });
-  return p;
+std::string Track_origin::where(std::size_t trip, std::size_t fix) const {
+  return files[trip] + ":" + std::to_string(lines[trip][fix]);
 }
 
-std::string Track_origin::locate(const std::string& path, const std::string& message) const {
+std::string Track_origin::locate(const std::string& message) const {
   static const std::regex fix_of_trip("trip ([0-9]+), fix ([0-9]+)");
   std::smatch m;
   if (!std::regex_search(message, m, fix_of_trip)) return message;
   const unsigned long long t = std::stoull(m[1].str()), i = std::stoull(m[2].str());
   if (t >= trip_ids.size() || i >= lines[t].size()) return message;
-  return message + " [" + path + ":" + std::to_string(lines[t][i]) + ", trip id '" + trip_ids[t] + "']";
+  return message + " [" + where(t, i) + ", trip id '" + trip_ids[t] + "']";
 }
+
+namespace {
+/// File names in natural order: runs of digits compare as numbers (trip_2 before trip_10; leading zeros
+/// ignored, then the shorter run first), the rest byte by byte; equal under that, byte order decides.
+bool natural_less(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  while (i < a.size() && j < b.size()) {
+    if (digit(a[i]) && digit(b[j])) {
+      std::size_t ei = i, ej = j;
+      while (ei < a.size() && digit(a[ei])) ++ei;
+      while (ej < b.size() && digit(b[ej])) ++ej;
+      std::size_t si = i, sj = j;  // the significant digits
+      while (si + 1 < ei && a[si] == '0') ++si;
+      while (sj + 1 < ej && b[sj] == '0') ++sj;
+      if (ei - si != ej - sj) return ei - si < ej - sj;
+      const int c = a.compare(si, ei - si, b, sj, ej - sj);
+      if (c != 0) return c < 0;
+      i = ei;
+      j = ej;
+    } else {
+      if (a[i] != b[j]) return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+      ++i;
+      ++j;
+    }
+  }
+  if (i < a.size() || j < b.size()) return j < b.size() && i == a.size();
+  return a < b;
+}
+
+/// The `*.txt` regular files of a directory (by name, in natural order).
+std::vector<std::string> trip_files(const std::string& directory) {
+  DIR* d = ::opendir(directory.c_str());
+  if (d == nullptr)
+    throw Input_error(directory + ": cannot read the directory (" + std::strerror(errno) + ")");
+  std::vector<std::string> names;
+  while (const dirent* e = ::readdir(d)) {
+    const std::string name = e->d_name;
+    if (name.size() <= 4 || name[0] == '.' || file_extension(name) != "txt") continue;
+    struct stat st {};
+    if (::stat((directory + "/" + name).c_str(), &st) == 0 && S_ISREG(st.st_mode)) names.push_back(name);
+  }
+  ::closedir(d);
+  std::sort(names.begin(), names.end(), natural_less);
+  return names;
+}
+}  // namespace
 
 std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path,
                                                                  Track_origin* origin) {
   std::vector<std::vector<std::array<double, 3>>> trips;
+  struct stat st {};
+  if (!path.empty() && ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+    // One trip per file: lines 'x y [t]'.
+    const std::vector<std::string> names = trip_files(path);
+    if (names.empty())
+      throw Input_error(path +
+                        ": a directory of tracks holds one trip per '*.txt' file (lines 'x y t'), "
+                        "but it has none");
+    const std::string directory = path.back() == '/' ? path : path + "/";
+    for (const std::string& name : names) {
+      const std::string file = directory + name;
+      trips.emplace_back();
+      auto& trip = trips.back();
+      if (origin != nullptr) {
+        origin->trip_ids.push_back(name.substr(0, name.size() - 4));
+        origin->files.push_back(file);
+        origin->lines.emplace_back();
+      }
+      int timed = -1;
+      for_each_token_row(file, [&](const std::vector<std::string>& t, std::size_t number) {
+        if (t.size() < 2 || t.size() > 3)
+          throw Input_error(where(file, number) +
+                            "expected 'x y [t]' (a directory of tracks holds one trip per file), got " +
+                            std::to_string(t.size()) + " values");
+        if (timed < 0) timed = t.size() > 2 ? 1 : 0;
+        if ((t.size() > 2) != (timed == 1))
+          throw Input_error(where(file, number) + (timed ? "no time t, but the first line has one ('x y t')"
+                                                         : "a time t, but the first line has none ('x y')"));
+        if (origin != nullptr) origin->lines.back().push_back(number);
+        trip.push_back({parse_double(t[0], file, number, "x"), parse_double(t[1], file, number, "y"),
+                        t.size() > 2 ? parse_double(t[2], file, number, "t") : static_cast<double>(number)});
+      });
+    }
+    return trips;
+  }
   std::map<std::string, std::size_t> index;
   int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
@@ -303,6 +378,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
       trips.emplace_back();
       if (origin != nullptr) {
         origin->trip_ids.push_back(t[0]);
+        origin->files.push_back(path);
         origin->lines.emplace_back();
       }
     }

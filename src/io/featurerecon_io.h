@@ -63,23 +63,28 @@ struct Map_file {
 };
 Map_file read_map(const std::string& vertices_path, const std::string& edges_path);
 
-/// GPS tracks: lines `trip_id x y t` (whitespace-separated, '#' comments); returns the points (x, y), and
-/// with `lines` the line of each.
-std::vector<std::array<double, 2>> read_track_points(const std::string& path,
-                                                     std::vector<std::size_t>* lines = nullptr);
-
-/// Where the trips of read_track_trips() come from: each trip's id, and the line of each of its fixes.
+/// Where the trips of read_track_trips() come from: each trip's id and file, and the line of each of its
+/// fixes.
 struct Track_origin {
   std::vector<std::string> trip_ids;
+  std::vector<std::string> files;  ///< the file each trip was read from (the path given, or a file in it)
   std::vector<std::vector<std::size_t>> lines;
+  /// "file:line" of fix `fix` of trip `trip`.
+  std::string where(std::size_t trip, std::size_t fix) const;
   /// Appends to a message that names "trip T, fix I" (indices as read) the file, line and trip id; else
   /// returns it.
-  std::string locate(const std::string& path, const std::string& message) const;
+  std::string locate(const std::string& message) const;
 };
 
-/// GPS tracks grouped by trip: trips in order of first appearance, each a list of (x, y, t) in file order.
-/// A missing t is the line number (file order). Trip ids are any token. With `origin`, also where each came
-/// from.
+/// GPS tracks grouped by trip, each a list of (x, y, t) in file order. `path` is either
+/// - a file of lines `trip_id x y t` (whitespace-separated, '#' comments): trips in order of first
+///   appearance, trip ids any token; or
+/// - a directory with one trip per `*.txt` file (the map-construction benchmark's trips/trip_N.txt), lines
+///   `x y t`: trips in the natural order of the file names (trip_2 before trip_10), each file's name without
+///   `.txt` its trip id, an empty file a trip without fixes. Other files in it are not read.
+/// A missing t (every line of a file without it) is the line number (file order). With `origin`, also where
+/// each fix came from. Throws Input_error naming the file and line of a malformed line, or a directory
+/// without `*.txt` files.
 std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path,
                                                                  Track_origin* origin = nullptr);
 
