@@ -292,7 +292,7 @@ TEST(MergeRoadLines, TwoDirectionsOfAStreetBecomeOneLineInTheMiddle) {
     }
     // No loop is left: a tree (edges = vertices - components).
     EXPECT_EQ(r.map.edges.size() + map_components(r.map), r.map.positions.size()) << joined;
-    EXPECT_EQ(r.spacing, 2.0);
+    EXPECT_EQ(r.spacing, 8.0 / 3);
     EXPECT_EQ(r.delta, 8.0);
   }
 }
@@ -450,7 +450,8 @@ TEST(MergeRoadLines, StackedCopiesOfALineAreSampledOnce) {
       merge_road_lines(with_crossing(parallel_lines(std::vector<double>(40, 0.0), 300, false)));
   ASSERT_EQ(stacked.status, Status::success);
   EXPECT_EQ(stacked.samples, one.samples);
-  EXPECT_EQ(stacked.samples_contracted, one.samples_contracted + 39 * (31 + 30 * 4));
+  // each further copy: its 31 vertices and the 3 points inside each of its 30 edges of 10 m (spacing 8/3)
+  EXPECT_EQ(stacked.samples_contracted, one.samples_contracted + 39 * (31 + 30 * 3));
   EXPECT_EQ(one.samples_contracted, 1u);  // the crossing's vertex at (150, 0)
   EXPECT_EQ(stacked.map.positions, one.map.positions);
   EXPECT_EQ(stacked.map.edges, one.map.edges);
@@ -544,7 +545,7 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   bad = street;
   bad.positions[5][1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { merge_road_lines(bad); }).find("vertex 5"), std::string::npos);
-  // A far-off vertex: an edge of 2e9 m would be sampled every 2 m (a billion points), one of 2e308 m
+  // A far-off vertex: an edge of 2e9 m would be sampled every 2.7 m (750 million points), one of 2e308 m
   // overflows. Both are refused before any sampling, naming the edge; max_samples 0 lifts the limit.
   bad = street;
   bad.positions[5] = {1e9, 0};
