@@ -339,6 +339,18 @@ Track_input read_tracks(const std::string& path, bool keep_points) {
   return r;
 }
 
+void warn_single_fix_trips(const char* command, const std::string& path, const Track_input& tracks) {
+  if (tracks.trips.size() < 2) return;
+  for (const auto& trip : tracks.trips)
+    if (trip.size() > 1) return;
+  std::fprintf(stderr,
+               "featurerecon %s: warning: %s: none of its %zu trips has two fixes (every line begins with a "
+               "trip id of its own; lines are read as 'trip_id x y t'). A file of one trip's lines 'x y t' "
+               "(the map-construction benchmark's trips/trip_N.txt) is read as part of its directory: give "
+               "the directory\n",
+               command, path.c_str(), tracks.trips.size());
+}
+
 skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>& sources) {
   std::vector<std::array<double, 2>> all;
   for (const Lonlat_source& source : sources)

@@ -90,8 +90,14 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   std::size_t gt_edges_before = gt.edges.size();
   // Trips with their points and where each fix was read (for --lonlat's checks and messages).
   Track_input crop_input, track_input;
-  if (args.has("crop-to-tracks")) crop_input = read_tracks(args.get("crop-to-tracks"));
-  if (args.has("tracks")) track_input = read_tracks(args.get("tracks"));
+  if (args.has("crop-to-tracks")) {
+    crop_input = read_tracks(args.get("crop-to-tracks"));
+    warn_single_fix_trips("evaluate-map", args.get("crop-to-tracks"), crop_input);
+  }
+  if (args.has("tracks")) {
+    track_input = read_tracks(args.get("tracks"));
+    warn_single_fix_trips("evaluate-map", args.get("tracks"), track_input);
+  }
   std::vector<Gps_trip>& trips = track_input.trips;
   std::vector<Gps_trip>& crop_trips = crop_input.trips;
   const std::vector<std::array<double, 2>>& crop_points = crop_input.points;

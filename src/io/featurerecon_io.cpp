@@ -315,8 +315,15 @@ std::vector<std::string> trip_files(const std::string& directory) {
   while (const dirent* e = ::readdir(d)) {
     const std::string name = e->d_name;
     if (name.size() <= 4 || name[0] == '.' || file_extension(name) != "txt") continue;
+    // A trip file that cannot be read (a broken link) is an error, not a trip left out without a word.
     struct stat st {};
-    if (::stat((directory + "/" + name).c_str(), &st) == 0 && S_ISREG(st.st_mode)) names.push_back(name);
+    const std::string file = directory + "/" + name;
+    if (::stat(file.c_str(), &st) != 0) {
+      const std::string reason = std::strerror(errno);
+      ::closedir(d);
+      throw Input_error(file + ": cannot read this trip file (" + reason + ")");
+    }
+    if (S_ISREG(st.st_mode)) names.push_back(name);
   }
   ::closedir(d);
   std::sort(names.begin(), names.end(), natural_less);

@@ -81,7 +81,8 @@ struct Track_origin {
 ///   appearance, trip ids any token; or
 /// - a directory with one trip per `*.txt` file (the map-construction benchmark's trips/trip_N.txt), lines
 ///   `x y t`: trips in the natural order of the file names (trip_2 before trip_10), each file's name without
-///   `.txt` its trip id, an empty file a trip without fixes. Other files in it are not read.
+///   `.txt` its trip id, an empty file a trip without fixes. Other files in it are not read; a `*.txt` entry
+///   that cannot be read (a broken link) is an error.
 /// A missing t (every line of a file without it) is the line number (file order). With `origin`, also where
 /// each fix came from. Throws Input_error naming the file and line of a malformed line, or a directory
 /// without `*.txt` files.

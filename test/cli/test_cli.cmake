@@ -421,6 +421,12 @@ file(WRITE ${WORK}/deg_e.txt "0,0,1\n")
 expect(evaluate_map_crop_directory_lonlat 1 "far_trips/trip_10.txt:2: --lonlat: \\(10, 95\\) is not a longitude" evaluate-map ${WORK}/deg_v.txt ${WORK}/deg_e.txt ${WORK}/deg_v.txt ${WORK}/deg_e.txt --lonlat --crop-to-tracks ${WORK}/far_trips)
 file(WRITE ${WORK}/far_trips/trip_10.txt "0 0 0 4\n")
 expect(skeleton_tracks_directory_columns 1 "far_trips/trip_10.txt:1: expected 'x y \\[t\\]' \\(a directory of tracks holds one trip per file\\), got 4 values" skeleton --tracks ${WORK}/far_trips --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# One trip file of lines 'x y t' given instead of its directory: every line a trip of one fix; said.
+expect(skeleton_tracks_one_trip_file 0 "warning: .*block_trips/trip_0.txt: none of its 25 trips has two fixes .*give the directory" skeleton --tracks ${WORK}/block_trips/trip_0.txt --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(evaluate_map_one_trip_file 0 "warning: .*block_trips/trip_0.txt: none of its 25 trips has two fixes" evaluate-map ${M}_gt_crp_vertices.txt ${M}_gt_crp_edges.txt ${M}_james_vertices.txt ${M}_james_edges.txt --tracks ${WORK}/block_trips/trip_0.txt --quiet)
+# A *.txt entry that cannot be read (a broken link) is named, not left out.
+file(CREATE_LINK ${WORK}/nowhere.txt ${WORK}/far_trips/trip_5.txt SYMBOLIC)
+expect(skeleton_tracks_directory_broken_link 1 "far_trips/trip_5.txt: cannot read this trip file" skeleton --tracks ${WORK}/far_trips --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
 file(REMOVE_RECURSE ${WORK}/no_trips)
 file(MAKE_DIRECTORY ${WORK}/no_trips)
 file(WRITE ${WORK}/no_trips/trips.csv "0 0 0\n")

@@ -184,6 +184,63 @@ TEST(InputFiles, DirectoriesAndMixedTracksAreRefused) {
   }
 }
 
+// A directory holds one trip per *.txt file (the map-construction benchmark's trips/trip_N.txt): trips in the
+// natural order of the names, each file's stem its id, lines 'x y [t]' (no t: the line number), other entries
+// not read; an empty file is a trip without fixes.
+TEST(InputFiles, ADirectoryOfTripFiles) {
+  const std::string dir = scratch_path("trips");
+  ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
+  std::vector<std::string> made;
+  auto put = [&](const std::string& name, const std::string& text) {
+    made.push_back(dir + "/" + name);
+    std::ofstream(made.back()) << text;
+  };
+  put("trip_10.txt", "0 0 5\n1 0 6\n");
+  put("trip_2.txt", "# x y\n3 3\n\n4 4\n");
+  put("Trip_1.TXT", "7 7 1\r\n");
+  put("empty.txt", "");
+  put("notes.md", "not a trip\n");
+  put(".hidden.txt", "not a trip either\n");
+  const std::string sub = dir + "/sub.txt";
+  ASSERT_EQ(::mkdir(sub.c_str(), 0700), 0);
+  io::Track_origin origin;
+  const auto trips = io::read_track_trips(dir + "/", &origin);
+  EXPECT_EQ(origin.trip_ids, (std::vector<std::string>{"Trip_1", "empty", "trip_2", "trip_10"}));
+  ASSERT_EQ(trips.size(), 4u);
+  EXPECT_EQ(trips[0], (std::vector<std::array<double, 3>>{{7, 7, 1}}));
+  EXPECT_TRUE(trips[1].empty());
+  EXPECT_EQ(trips[2], (std::vector<std::array<double, 3>>{{3, 3, 2}, {4, 4, 4}}));
+  EXPECT_EQ(trips[3], (std::vector<std::array<double, 3>>{{0, 0, 5}, {1, 0, 6}}));
+  EXPECT_EQ(origin.files[3], dir + "/trip_10.txt");
+  EXPECT_EQ(origin.where(2, 1), dir + "/trip_2.txt:4");
+  EXPECT_EQ(origin.locate("f: trip 3, fix 1 is bad"),
+            "f: trip 3, fix 1 is bad [" + dir + "/trip_10.txt:2, trip id 'trip_10']");
+  auto error_of = [&] {
+    try {
+      io::read_track_trips(dir);
+    } catch (const io::Input_error& x) {
+      return std::string(x.what());
+    }
+    return std::string("no error");
+  };
+  put("trip_3.txt", "1 2 3 4\n");  // the one-file format inside a directory
+  EXPECT_NE(error_of().find("trip_3.txt:1: expected 'x y [t]'"), std::string::npos) << error_of();
+  put("trip_3.txt", "1 2 3\n1 2\n");
+  EXPECT_NE(error_of().find("trip_3.txt:2: no time t"), std::string::npos) << error_of();
+  std::remove(made.back().c_str());
+  made.pop_back();
+  made.push_back(dir + "/trip_4.txt");  // a broken link is named, not left out
+  ASSERT_EQ(::symlink((dir + "/nowhere").c_str(), made.back().c_str()), 0);
+  EXPECT_NE(error_of().find("trip_4.txt: cannot read this trip file"), std::string::npos) << error_of();
+  for (const std::string& f : made) std::remove(f.c_str());
+  ::rmdir(sub.c_str());
+  // A directory without trip files.
+  EXPECT_NE(error_of().find("holds one trip per '*.txt' file (lines 'x y t'), but it has none"),
+            std::string::npos)
+      << error_of();
+  ::rmdir(dir.c_str());
+}
+
 TEST(WriteTextFile, UsesATemporaryOfItsOwn) {
   // The old fixed name PATH.tmp belonged to the user.
   const std::string path = scratch_path("written.txt");

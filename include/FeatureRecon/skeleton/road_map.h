@@ -460,7 +460,7 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
     return r;
   }
   // Samples: the vertices, then interior points of each edge; the chains of the edges. Counted first: an edge
-  // of 1e9 m at a spacing of 2 m would insert half a billion points.
+  // of 1e9 m at a spacing of 2.7 m would insert 375 million points.
   double sample_count = 0, longest = 0;  // points along the edges
   std::array<double, 4> longest_ends{};
   for (const Edge& e : edges) {
