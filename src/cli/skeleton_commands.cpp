@@ -724,7 +724,11 @@ int run_skeleton(const std::vector<std::string>& argv) {
                     (drawn.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian") +
                     "\", \"merge_smoothing_rounds\": " + std::to_string(drawn.smoothing_iterations) +
                     ", \"merge_level_width\": " + json_number(road.merged.level_width) +
-                    ", \"merge_max_gap\": " + json_number(road.merged.max_gap);
+                    ", \"merge_max_gap\": " + json_number(road.merged.max_gap) +
+                    ", \"merge_spacing\": " + json_number(road.merged.spacing) +
+                    ", \"merge_samples\": " + std::to_string(road.merged.samples) +
+                    ", \"merge_rips_edges\": " + std::to_string(road.merged.rips_edges) +
+                    ", \"merge_rips_triangles\": " + std::to_string(road.merged.rips_triangles);
     }
     if (lonlat)
       input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +

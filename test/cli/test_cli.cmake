@@ -392,6 +392,8 @@ expect(skeleton_tracks_unmerged_length 0 "\"merge_distance\": 0, \"length_before
 # in session 11, when a corner where the two directions cut differently stayed a thin loop).
 expect(skeleton_tracks_merged 0 "\"loops\": 1, \"components\": 1,.*\"merge_distance\": 8, \"length_before_merge\": 1[23][0-9][0-9]\\.[0-9]*, \"length\": 7[0-9][0-9]\\.[0-9]*, \"merge_smoothing\": \"laplacian\", \"merge_smoothing_rounds\": 20, \"merge_level_width\": [0-9.]+, \"merge_max_gap\": [0-9.]+" skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 # The written lines are drawn by the merge: --smoothing draws the skeleton before it, and the JSON says so.
+# The merging stage's size: its spacing (a third of the 8 m), samples and complex.
+expect(skeleton_tracks_merge_size 0 "\"merge_spacing\": 2\\.666[0-9]*, \"merge_samples\": [1-9][0-9]*, \"merge_rips_edges\": [1-9][0-9]*, \"merge_rips_triangles\": [1-9][0-9]*[,}]" skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_tracks_merge_drawing 0 "\"smoothing\": \"taubin\", \"smoothing_rounds\": 0,.*\"merge_smoothing\": \"laplacian\", \"merge_smoothing_rounds\": 20," skeleton --tracks ${DATA}/block_tracks.txt --smoothing 0 --smoothing-method taubin --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 # Samples at the mean of their fixes by default; --first-point-positions keeps them where they were created.
 expect(skeleton_tracks_mean_positions 0 "\"directed\": true, \"mean_positions\": true," skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)

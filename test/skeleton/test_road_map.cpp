@@ -538,6 +538,15 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   o = {};
   o.delta = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("delta"), std::string::npos);
+  // A complex above max_triangles is refused as this stage's, with what to change here.
+  o = {};
+  o.max_triangles = 100;
+  const std::string big = message_of([&] { merge_road_lines(street, o); });
+  EXPECT_EQ(big.rfind("merge_road_lines: the complex of the lines' 8 neighbourhood (", 0), 0u) << big;
+  EXPECT_NE(big.find("more than 100 triangles (max_triangles of the options;"), std::string::npos) << big;
+  EXPECT_NE(big.find("(here: a larger spacing, a smaller distance or a larger max_triangles)"),
+            std::string::npos)
+      << big;
   Embedded_graph_2 bad = street;
   bad.edges[3] = {0, 99};
   const std::string m = message_of([&] { merge_road_lines(bad); });
