@@ -339,16 +339,18 @@ Track_input read_tracks(const std::string& path, bool keep_points) {
   return r;
 }
 
-void warn_single_fix_trips(const char* command, const std::string& path, const Track_input& tracks) {
-  if (tracks.trips.size() < 2) return;
-  for (const auto& trip : tracks.trips)
-    if (trip.size() > 1) return;
+void warn_few_fixes_per_trip(const char* command, const std::string& path, const Track_input& tracks) {
+  // Only for a file (a directory's trips are its files), with at least two trips.
+  if (tracks.trips.size() < 2 || tracks.origin.files.empty() || tracks.origin.files[0] != path) return;
+  std::size_t fixes = 0;
+  for (const auto& trip : tracks.trips) fixes += trip.size();
+  if (fixes >= 2 * tracks.trips.size()) return;
   std::fprintf(stderr,
-               "featurerecon %s: warning: %s: none of its %zu trips has two fixes (every line begins with a "
-               "trip id of its own; lines are read as 'trip_id x y t'). A file of one trip's lines 'x y t' "
-               "(the map-construction benchmark's trips/trip_N.txt) is read as part of its directory: give "
-               "the directory\n",
-               command, path.c_str(), tracks.trips.size());
+               "featurerecon %s: warning: %s: its %zu fixes make %zu trips, fewer than two a trip (the first "
+               "value of each line is its trip id: 'trip_id x y t', or 'trip_id x y' without times). If the "
+               "file is one trip of lines 'x y t' (the map-construction benchmark's trips/trip_N.txt), give "
+               "its directory\n",
+               command, path.c_str(), fixes, tracks.trips.size());
 }
 
 skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>& sources) {

@@ -151,10 +151,11 @@ struct Track_input {
 /// With `keep_points` false, `points` and `at` stay empty (no --lonlat source: they take 24 bytes a fix).
 Track_input read_tracks(const std::string& path, bool keep_points = true);
 
-/// Warns (standard error, "featurerecon COMMAND: warning: ...") when the tracks of `path` hold several trips
-/// and none has two fixes: every line's first value was a trip id of its own, as when one trip file of lines
-/// 'x y t' (the map-construction benchmark's trips/trip_N.txt) is given instead of its directory.
-void warn_single_fix_trips(const char* command, const std::string& path, const Track_input& tracks);
+/// Warns (standard error, "featurerecon COMMAND: warning: ...") when the tracks file `path` (not a directory)
+/// holds several trips with fewer than two fixes a trip on average: most lines began with a trip id of their
+/// own, as when one trip file of lines 'x y t' (the map-construction benchmark's trips/trip_N.txt) is given
+/// instead of its directory.
+void warn_few_fixes_per_trip(const char* command, const std::string& path, const Track_input& tracks);
 
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);

@@ -92,11 +92,11 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   Track_input crop_input, track_input;
   if (args.has("crop-to-tracks")) {
     crop_input = read_tracks(args.get("crop-to-tracks"));
-    warn_single_fix_trips("evaluate-map", args.get("crop-to-tracks"), crop_input);
+    warn_few_fixes_per_trip("evaluate-map", args.get("crop-to-tracks"), crop_input);
   }
   if (args.has("tracks")) {
     track_input = read_tracks(args.get("tracks"));
-    warn_single_fix_trips("evaluate-map", args.get("tracks"), track_input);
+    warn_few_fixes_per_trip("evaluate-map", args.get("tracks"), track_input);
   }
   std::vector<Gps_trip>& trips = track_input.trips;
   std::vector<Gps_trip>& crop_trips = crop_input.trips;

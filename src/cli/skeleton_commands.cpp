@@ -610,7 +610,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     // with where each fix was read, to name the file, line and trip id where the library names trip and fix
     // indices
     Track_input tracks = read_tracks(args.get("tracks"), lonlat);
-    warn_single_fix_trips("skeleton", args.get("tracks"), tracks);
+    warn_few_fixes_per_trip("skeleton", args.get("tracks"), tracks);
     std::vector<Gps_trip>& trips = tracks.trips;
     if (lonlat) {  // x, y are longitude and latitude: to metres, centred on the traces
       projection = lonlat_projection({tracks.lonlat_source(args.get("tracks"))});

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <regex>
 #include <sstream>
 
@@ -308,24 +309,24 @@ bool natural_less(const std::string& a, const std::string& b) {
 
 /// The `*.txt` regular files of a directory (by name, in natural order).
 std::vector<std::string> trip_files(const std::string& directory) {
-  DIR* d = ::opendir(directory.c_str());
-  if (d == nullptr)
-    throw Input_error(directory + ": cannot read the directory (" + std::strerror(errno) + ")");
+  const std::unique_ptr<DIR, int (*)(DIR*)> d(::opendir(directory.c_str()), &::closedir);
+  if (!d) throw Input_error(directory + ": cannot read the directory (" + std::strerror(errno) + ")");
+  const std::string prefix = directory.back() == '/' ? directory : directory + "/";
   std::vector<std::string> names;
-  while (const dirent* e = ::readdir(d)) {
+  while (const dirent* e = ::readdir(d.get())) {
     const std::string name = e->d_name;
     if (name.size() <= 4 || name[0] == '.' || file_extension(name) != "txt") continue;
-    // A trip file that cannot be read (a broken link) is an error, not a trip left out without a word.
+    // A trip file that cannot be read (a broken link) is an error, not a trip left out without a word; an
+    // entry gone since it was listed is left out.
     struct stat st {};
-    const std::string file = directory + "/" + name;
+    const std::string file = prefix + name;
     if (::stat(file.c_str(), &st) != 0) {
       const std::string reason = std::strerror(errno);
-      ::closedir(d);
+      if (::lstat(file.c_str(), &st) != 0 && errno == ENOENT) continue;
       throw Input_error(file + ": cannot read this trip file (" + reason + ")");
     }
     if (S_ISREG(st.st_mode)) names.push_back(name);
   }
-  ::closedir(d);
   std::sort(names.begin(), names.end(), natural_less);
   return names;
 }
@@ -340,7 +341,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
     const std::vector<std::string> names = trip_files(path);
     if (names.empty())
       throw Input_error(path +
-                        ": a directory of tracks holds one trip per '*.txt' file (lines 'x y t'), "
+                        ": a directory of tracks holds one trip per '*.txt' file (lines 'x y [t]'), "
                         "but it has none");
     const std::string directory = path.back() == '/' ? path : path + "/";
     for (const std::string& name : names) {

@@ -407,7 +407,9 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 /// beside a two-arc path) lose their longer side. Deterministic. The map is not modified.
 /// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose
 ///   length overflows, edges that would need more than `max_samples` points inserted along them (naming the
-///   longest edge), or a non-positive or non-finite distance, negative spacing or delta.
+///   longest edge), a neighbourhood complex with more than `max_triangles` triangles (checked before any is
+///   stored), a non-positive or non-finite distance, negative spacing or delta, or bad `embedding` options
+///   (named by extract_reeb_skeleton()).
 inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
                                           const Road_merge_options& options = {}) {
   const char* fn = "merge_road_lines";
@@ -536,16 +538,26 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
   so.max_triangles = options.max_triangles;
   so.embedding = options.embedding;
   if (options.progress) so.progress = [&options](double t) { return options.progress(0.3 + 0.7 * t); };
-  Reeb_skeleton k;
-  try {
-    k = extract_reeb_skeleton(g, P, so);
-  } catch (const std::invalid_argument& e) {  // max_triangles: named as this stage's
-    const std::string what = e.what(), stage = "extract_reeb_skeleton: ";
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "the complex of the lines' ", options.distance, " neighbourhood (", P.rows, " samples every ",
-        r.spacing, "): ", what.compare(0, stage.size(), stage) == 0 ? what.substr(stage.size()) : what,
-        " (here: a larger spacing, a smaller distance or a larger max_triangles)");
-  }
+  // A complex above max_triangles (or the Reeb graph's own limit) is this stage's refusal, named here with
+  // what to change here; other errors pass as they are.
+  Reeb_skeleton k = [&] {
+    try {
+      return extract_reeb_skeleton(g, P, so);
+    } catch (const std::invalid_argument& e) {
+      std::string what = e.what();
+      const std::string refusal = "extract_reeb_skeleton: the flag complex has more than ";
+      const std::string advice = ": use a smaller radius or fewer points, or raise the limit";
+      if (what.compare(0, refusal.size(), refusal) != 0) throw;
+      if (what.size() > advice.size() &&
+          what.compare(what.size() - advice.size(), advice.size(), advice) == 0)
+        what.erase(what.size() - advice.size());
+      const bool option = what.find("max_triangles of the options") != std::string::npos;
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "the complex of the lines' ", options.distance, " neighbourhood (", P.rows, " samples every ",
+          r.spacing, ") has more than ", what.substr(refusal.size()), ": raise spacing or lower distance",
+          option ? ", or raise max_triangles" : "");
+    }
+  }();
   if (k.status == Status::interrupted) {
     r.status = Status::interrupted;
     return r;
