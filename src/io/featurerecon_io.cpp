@@ -307,11 +307,30 @@ bool natural_less(const std::string& a, const std::string& b) {
   return a < b;
 }
 
-/// The `*.txt` regular files of a directory (by name, in natural order).
-std::vector<std::string> trip_files(const std::string& directory) {
-  const std::unique_ptr<DIR, int (*)(DIR*)> d(::opendir(directory.c_str()), &::closedir);
-  if (!d) throw Input_error(directory + ": cannot read the directory (" + std::strerror(errno) + ")");
-  const std::string prefix = directory.back() == '/' ? directory : directory + "/";
+/// The fix of a tracks line whose x is token `first` (0: 'x y [t]' in a trip file; 1: 'trip_id x y [t]'). The
+/// lines of a file all carry a time or none, as its first (`timed`: -1 before it); no time: the line number.
+std::array<double, 3> read_fix(const std::vector<std::string>& t, std::size_t first, int& timed,
+                               const std::string& file, std::size_t number) {
+  const char* layout = first == 0 ? "x y" : "trip_id x y";
+  if (t.size() < first + 2 || t.size() > first + 3)
+    throw Input_error(where(file, number) + "expected '" + layout + " [t]'" +
+                      (first == 0 ? " (a directory of tracks holds one trip per file)" : "") + ", got " +
+                      std::to_string(t.size()) + " values");
+  const bool has_time = t.size() == first + 3;
+  if (timed < 0) timed = has_time ? 1 : 0;
+  if (has_time != (timed == 1))
+    throw Input_error(where(file, number) +
+                      (timed ? std::string("no time t, but the first line has one ('") + layout + " t')"
+                             : std::string("a time t, but the first line has none ('") + layout + "')"));
+  return {parse_double(t[first], file, number, "x"), parse_double(t[first + 1], file, number, "y"),
+          has_time ? parse_double(t[first + 2], file, number, "t") : static_cast<double>(number)};
+}
+
+/// The names of the `*.txt` regular files of a directory (`prefix`: its path ending in '/'), in natural
+/// order.
+std::vector<std::string> trip_files(const std::string& prefix) {
+  const std::unique_ptr<DIR, int (*)(DIR*)> d(::opendir(prefix.c_str()), &::closedir);
+  if (!d) throw Input_error(prefix + ": cannot read the directory (" + std::strerror(errno) + ")");
   std::vector<std::string> names;
   while (const dirent* e = ::readdir(d.get())) {
     const std::string name = e->d_name;
@@ -338,12 +357,12 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
   struct stat st {};
   if (!path.empty() && ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
     // One trip per file: lines 'x y [t]'.
-    const std::vector<std::string> names = trip_files(path);
+    const std::string directory = path.back() == '/' ? path : path + "/";
+    const std::vector<std::string> names = trip_files(directory);
     if (names.empty())
       throw Input_error(path +
                         ": a directory of tracks holds one trip per '*.txt' file (lines 'x y [t]'), "
                         "but it has none");
-    const std::string directory = path.back() == '/' ? path : path + "/";
     for (const std::string& name : names) {
       const std::string file = directory + name;
       trips.emplace_back();
@@ -355,17 +374,8 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
       }
       int timed = -1;
       for_each_token_row(file, [&](const std::vector<std::string>& t, std::size_t number) {
-        if (t.size() < 2 || t.size() > 3)
-          throw Input_error(where(file, number) +
-                            "expected 'x y [t]' (a directory of tracks holds one trip per file), got " +
-                            std::to_string(t.size()) + " values");
-        if (timed < 0) timed = t.size() > 2 ? 1 : 0;
-        if ((t.size() > 2) != (timed == 1))
-          throw Input_error(where(file, number) + (timed ? "no time t, but the first line has one ('x y t')"
-                                                         : "a time t, but the first line has none ('x y')"));
+        trip.push_back(read_fix(t, 0, timed, file, number));
         if (origin != nullptr) origin->lines.back().push_back(number);
-        trip.push_back({parse_double(t[0], file, number, "x"), parse_double(t[1], file, number, "y"),
-                        t.size() > 2 ? parse_double(t[2], file, number, "t") : static_cast<double>(number)});
       });
     }
     return trips;
@@ -373,14 +383,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
   std::map<std::string, std::size_t> index;
   int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
-    if (t.size() < 3 || t.size() > 4)
-      throw Input_error(where(path, number) + "expected 'trip_id x y [t]', got " + std::to_string(t.size()) +
-                        " values");
-    if (timed < 0) timed = t.size() > 3 ? 1 : 0;
-    if ((t.size() > 3) != (timed == 1))
-      throw Input_error(where(path, number) +
-                        (timed ? "no time t, but the first line has one ('trip_id x y t')"
-                               : "a time t, but the first line has none ('trip_id x y')"));
+    const std::array<double, 3> fix = read_fix(t, 1, timed, path, number);
     const auto it = index.emplace(t[0], trips.size()).first;
     if (it->second == trips.size()) {
       trips.emplace_back();
@@ -391,9 +394,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
       }
     }
     if (origin != nullptr) origin->lines[it->second].push_back(number);
-    trips[it->second].push_back(
-        {parse_double(t[1], path, number, "x"), parse_double(t[2], path, number, "y"),
-         t.size() > 3 ? parse_double(t[3], path, number, "t") : static_cast<double>(number)});
+    trips[it->second].push_back(fix);
   });
   return trips;
 }
