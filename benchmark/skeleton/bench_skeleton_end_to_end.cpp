@@ -42,7 +42,7 @@ const Gps_case& chicago_tracks() {
   }
   c->used = sk::resolve_road_map_options(c->trips, {});
   c->skeleton = sk::road_map_skeleton_options(c->used);
-  c->radius = c->used.rips_radius;
+  c->radius = c->used.rips_radius.value();
   return *c;
 }
 

@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
       farthest = std::max(farthest, truth.distance(&line[i]));
   }
   std::printf("%zu points in R^%zu, Rips radius %.1f, delta %.1f\n", points.rows, points.dimension,
-              rips_radius, options.delta);
+              rips_radius, *options.delta);
   std::printf("Rips 2-complex: %zu edges, %zu triangles\n", s.rips_edges, s.rips_triangles);
   std::printf("skeleton: %zu nodes, %zu arcs, %zu loops, %zu component(s), %zu leaf, %zu branch node(s)\n",
               num_vertices(s.graph), num_edges(s.graph),
@@ -208,11 +208,11 @@ int main(int argc, char** argv) {
   std::printf("every arc within 0.7 x radius = %.3f of the true graph: %s (farthest vertex %.2f)\n", bound,
               farthest <= bound ? "yes" : "no", farthest);
   // Without a radius: estimate_rips_radius() reads one off the points (the scale where they look
-  // one-dimensional), and extract_reeb_skeleton(points, options) uses it; delta < 0 takes the estimate's
-  // delta too.
+  // one-dimensional), and extract_reeb_skeleton(points, options) uses it; an automatic delta is the
+  // estimate's too.
   const sk::Rips_radius_estimate estimate = sk::estimate_rips_radius(points);
   sk::Skeleton_options automatic;
-  automatic.delta = -1;
+  automatic.delta = FeatureRecon::automatic;
   const sk::Reeb_skeleton a = sk::extract_reeb_skeleton(points, automatic);
   std::vector<int> a_component(num_vertices(a.graph));
   const std::size_t a_components =

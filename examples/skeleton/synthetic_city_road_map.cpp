@@ -67,12 +67,13 @@ sk::Road_map run(const sk::Synthetic_city& city, double interval) {
   const sk::Map_comparison_result unmerged =
       sk::compare_maps(city.driven, sk::skeleton_to_road_map(m.skeleton.graph));
   std::printf("every %.1f s: %zu fixes, median step %.1f m -> radius %.1f m, delta %.1f m; %zu samples\n",
-              interval, fixes, m.sample.median_step, m.used.rips_radius, m.used.delta, m.sample.points.rows);
+              interval, fixes, m.sample.median_step, *m.used.rips_radius, *m.used.delta,
+              m.sample.points.rows);
   std::printf("  skeleton: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n",
               num_vertices(m.skeleton.graph), num_edges(m.skeleton.graph), m.merged.length_before,
               unmerged.precision, unmerged.recall, unmerged.f_score);
   std::printf("  merged at %.0f m: %zu nodes, %zu arcs, %.0f m of lines; P %.2f R %.2f F %.2f\n",
-              m.used.merge_distance, num_vertices(m.merged.skeleton), num_edges(m.merged.skeleton),
+              *m.used.merge_distance, num_vertices(m.merged.skeleton), num_edges(m.merged.skeleton),
               m.merged.length_after, score.precision, score.recall, score.f_score);
   return m;
 }

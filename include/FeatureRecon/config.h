@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <ostream>
 
 namespace FeatureRecon {
@@ -14,6 +15,13 @@ namespace FeatureRecon {
 /// Progress callback shared by every options struct: called with the fraction done in [0, 1];
 /// returning false asks the algorithm to stop early (its result then says `interrupted`).
 using Progress_callback = std::function<bool(double)>;
+
+/// The value of an option that has a rule of its own (a `std::optional` field of an options struct):
+/// `options.delta = FeatureRecon::automatic;` asks for the rule the field documents. Every such option means
+/// the same by its values: unset (`automatic`, the same as `std::nullopt`) for the rule, a value for itself,
+/// 0 for off where a value can turn the stage off (no simplification, no repair, no merging, no linking); a
+/// negative value is refused (std::invalid_argument naming the option).
+inline constexpr std::nullopt_t automatic = std::nullopt;
 
 /// Outcome of an algorithm run.
 enum class Status {

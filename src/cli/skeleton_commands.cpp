@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "../io/featurerecon_io.h"
@@ -366,7 +367,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   Skeleton_options options;
   options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : image ? 2 * radius : radius;
-  if (!(options.delta >= 0)) throw Usage_error("--delta must be >= 0");
+  if (!(*options.delta >= 0)) throw Usage_error("--delta must be >= 0");
   options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
   if (args.has("tracks")) options.embedding = road_map_embedding_options();  // road maps keep their corners
@@ -396,7 +397,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   if (!(options.prune_height >= 0)) throw Usage_error("--prune must be >= 0");
   if (args.has("branch-merge")) {
     options.branch_merge_distance = args.get_double("branch-merge");
-    if (!(options.branch_merge_distance >= 0 && std::isfinite(options.branch_merge_distance)))
+    if (!(*options.branch_merge_distance >= 0 && std::isfinite(*options.branch_merge_distance)))
       throw Usage_error("--branch-merge must be finite and >= 0 (0: off), got '" + args.get("branch-merge") +
                         "'");
   }
@@ -648,18 +649,20 @@ int run_skeleton(const std::vector<std::string>& argv) {
           args.get("tracks").c_str(), step / 1000, length / 1000);
     }
     Road_map_options ro;
-    ro.rips_radius = radius;
-    // On the command line 0 turns a stage off; unset means automatic.
-    auto value = [&](const char* name, double v) { return !args.has(name) ? 0.0 : v > 0 ? v : -1.0; };
+    if (radius > 0) ro.rips_radius = radius;
+    // As in the library, unset means automatic and 0 turns a stage off.
+    auto value = [&](const char* name, const std::optional<double>& v) {
+      return args.has(name) ? v : FeatureRecon::automatic;
+    };
     ro.delta = value("delta", options.delta);
     ro.repair_distance = value("repair", options.repair_distance);
     ro.prune_height = value("prune", options.prune_height);
     if (args.has("merge") && !(args.get_double("merge") >= 0))
       throw Usage_error("--merge must be >= 0 (0: off)");
-    ro.merge_distance = value("merge", args.has("merge") ? args.get_double("merge") : 0.0);
+    if (args.has("merge")) ro.merge_distance = args.get_double("merge");
     ro.traces = go;
     ro.max_triangles = options.max_triangles;
-    ro.branch_merge_distance = std::max(0.0, options.branch_merge_distance);  // unset (-1): off for road maps
+    if (args.has("branch-merge")) ro.branch_merge_distance = options.branch_merge_distance;  // else off
     ro.embedding = options.embedding;
     ro.progress = options.progress;
     Road_map road;
@@ -669,15 +672,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
       throw std::invalid_argument(tracks.origin.locate(e.what()));
     }
     const Gps_trace_sample& sample = road.sample;
-    radius = road.used.rips_radius;
+    radius = *road.used.rips_radius;
     options.delta = road.used.delta;
-    options.repair_distance = road.used.repair_distance;
-    options.prune_height = road.used.prune_height;
+    options.repair_distance = *road.used.repair_distance;
+    options.prune_height = *road.used.prune_height;
     input_points = sample.fixes;
     spacing = sample.sample_spacing;
     m = sample.points;
     s = std::move(road.skeleton);
-    use_merged = road.used.merge_distance > 0 && road.status != Status::degenerate_input;
+    use_merged = *road.used.merge_distance > 0 && road.status != Status::degenerate_input;
     if (use_merged) merged = std::move(road.merged.skeleton);
     // Without merging the map is the skeleton itself: its length before and after.
     const double unmerged_length =
@@ -713,7 +716,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"dropped_lateral\": " + std::to_string(sample.dropped_lateral) +
                  ", \"trip_links\": " + std::to_string(sample.trip_links.size()) +
                  ", \"heading_tolerance\": " + json_number(go.heading_tolerance) +
-                 ", \"merge_distance\": " + json_number(road.used.merge_distance) +
+                 ", \"merge_distance\": " + json_number(*road.used.merge_distance) +
                  ", \"length_before_merge\": " +
                  json_number(use_merged ? road.merged.length_before : unmerged_length) +
                  ", \"length\": " + json_number(use_merged ? road.merged.length_after : unmerged_length);
@@ -824,7 +827,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
       "\"vertices_file\": %s, \"edges_file\": %s}\n",
       input_points, sampled,
       json_number(args.has("graph") ? std::numeric_limits<double>::quiet_NaN() : radius).c_str(),
-      json_number(options.delta).c_str(), json_number(options.repair_distance).c_str(),
+      json_number(*options.delta).c_str(), json_number(options.repair_distance).c_str(),
       json_number(spacing).c_str(), s.rips_edges, s.rips_triangles, options.max_triangles, s.isolated_points,
       num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph), components,
       s.removed_branches, s.removed_loops, s.repaired, json_number(s.branch_merge_distance).c_str(),

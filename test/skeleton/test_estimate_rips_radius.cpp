@@ -420,7 +420,7 @@ TEST(EstimateRipsRadius, CopiesOfThePointsLeaveTheEstimateAsItWas) {
   EXPECT_EQ(b.delta, a.delta);
   EXPECT_EQ(b.mean_neighbours_within, a.mean_neighbours_within);
   Skeleton_options o;
-  o.delta = -1;
+  o.delta = FeatureRecon::automatic;
   const Topology t = topology(extract_reeb_skeleton(four, o).graph);
   EXPECT_EQ(t.components, 1u);
   EXPECT_EQ(t.loops, 1u);
@@ -469,7 +469,7 @@ TEST(EstimateRipsRadius, DistanceMatrixGivesTheSameEstimate) {
   EXPECT_EQ(a.radius, b.radius);
   EXPECT_EQ(a.mean_neighbours_within, b.mean_neighbours_within);
   Skeleton_options o;
-  o.delta = -1;  // the estimate's
+  o.delta = FeatureRecon::automatic;  // the estimate's
   const Reeb_skeleton s = extract_reeb_skeleton_from_distance_matrix(matrix, o);
   EXPECT_EQ(s.rips_radius, a.radius);
   EXPECT_EQ(s.delta, a.delta);
@@ -511,28 +511,37 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   o.progress = nullptr;
   EXPECT_EQ(num_edges(extract_reeb_skeleton(range, o).graph), num_edges(staged.graph));
 
-  // A negative delta: the estimate's; with a given radius, max(radius, 2.25 x the estimated scale) (it was
+  // An automatic delta: the estimate's; with a given radius, max(radius, 2.25 x the estimated scale) (it was
   // refused); the graph overload, without points to estimate from, refuses it and says why.
-  o.delta = -1;
+  o.delta = FeatureRecon::automatic;
   EXPECT_EQ(extract_reeb_skeleton(m, o).delta, e.delta);
   EXPECT_EQ(extract_reeb_skeleton(m, e.radius, o).delta, e.delta);
   EXPECT_EQ(extract_reeb_skeleton(m, 0.5 * e.scale, o).delta, 2.25 * e.scale);
   EXPECT_EQ(extract_reeb_skeleton(m, 3 * e.scale, o).delta, 3 * e.scale);
   EXPECT_EQ(extract_reeb_skeleton(range, e.radius, o).delta, e.delta);
-  EXPECT_NE(
-      invalid_argument_message([&] { extract_reeb_skeleton(build_rips_graph(m, e.radius), m, o); })
-          .find("delta must be finite and >= 0, got -1 (a negative delta, the suggested one, needs points "
-                "or a distance matrix)"),
-      std::string::npos);
+  EXPECT_EQ(
+      invalid_argument_message([&] { extract_reeb_skeleton(build_rips_graph(m, e.radius), m, o); }),
+      "extract_reeb_skeleton: delta is automatic (the suggested delta), which needs points or a distance "
+      "matrix: give a value");
   o.delta = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(extract_reeb_skeleton(m, o), std::invalid_argument);
+  // A negative delta asked for the suggested one before FeatureRecon::automatic; it is refused, saying so,
+  // by every overload (it would otherwise be taken for a value).
+  o.delta = -1;
+  for (const std::string& message :
+       {invalid_argument_message([&] { extract_reeb_skeleton(m, o); }),
+        invalid_argument_message([&] { extract_reeb_skeleton(m, e.radius, o); }),
+        invalid_argument_message([&] { extract_reeb_skeleton(build_rips_graph(m, e.radius), m, o); })})
+    EXPECT_EQ(message,
+              "extract_reeb_skeleton: delta must be finite and >= 0 (FeatureRecon::automatic: the suggested "
+              "delta; 0: no simplification), got -1");
 
   // Both callbacks hear the estimate: the run's (first tenth) and the estimate's own (0 to 1).
   Rips_radius_options ro;
   std::vector<double> own;
   ro.progress = test::recording_progress(own);
   seen.clear();
-  o.delta = -1;
+  o.delta = FeatureRecon::automatic;
   o.progress = test::recording_progress(seen);
   extract_reeb_skeleton(m, o, ro);
   ASSERT_EQ(own.size(), 601u);  // 600 reference points, then 1
@@ -557,7 +566,7 @@ TEST(EstimateRipsRadius, SuggestedDeltaAtAGivenRadiusReportsProgressAndCanStop) 
   const Rips_radius_estimate e = estimate_rips_radius(m);
   std::vector<double> seen, given_seen;
   Skeleton_options o, given;
-  o.delta = -1;
+  o.delta = FeatureRecon::automatic;
   o.progress = test::recording_progress(seen);
   given.delta = e.delta;
   given.progress = test::recording_progress(given_seen);
@@ -583,7 +592,7 @@ TEST(EstimateRipsRadius, SuggestedDeltaAtAGivenRadiusReportsProgressAndCanStop) 
   const Reeb_skeleton stopped = extract_reeb_skeleton(m, e.radius, o);
   EXPECT_EQ(stopped.status, Status::interrupted);
   EXPECT_EQ(stopped.rips_radius, e.radius);
-  EXPECT_EQ(stopped.delta, -1.0);
+  EXPECT_TRUE(std::isnan(stopped.delta));  // not known yet
   EXPECT_EQ(num_vertices(stopped.graph), 0u);
   EXPECT_EQ(calls, 301u);  // 0, 1/600, ..., 300/600 of the first tenth: 0.05 is the first refused
   // The distance-matrix overload alike.
@@ -592,7 +601,7 @@ TEST(EstimateRipsRadius, SuggestedDeltaAtAGivenRadiusReportsProgressAndCanStop) 
   const Reeb_skeleton stopped_matrix = extract_reeb_skeleton_from_distance_matrix(matrix, e.radius, o);
   EXPECT_EQ(stopped_matrix.status, Status::interrupted);
   EXPECT_EQ(stopped_matrix.rips_radius, e.radius);
-  EXPECT_EQ(stopped_matrix.delta, -1.0);
+  EXPECT_TRUE(std::isnan(stopped_matrix.delta));
   EXPECT_EQ(num_vertices(stopped_matrix.graph), 0u);
   EXPECT_EQ(calls, 301u);
   seen.clear();

@@ -110,8 +110,8 @@ TEST(ExtractReebSkeleton, StageByStageEqualsOneCall) {
   const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(P, 0.7));
   const Geodesic_result geo = compute_geodesic_function(K);
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, geo.values);
-  const Reeb_simplification_result S = simplify_by_persistence(A, o.delta);
-  const Reeb_trim_result T = trim_essential_stubs(S.graph, o.delta);
+  const Reeb_simplification_result S = simplify_by_persistence(A, o.delta.value());
+  const Reeb_trim_result T = trim_essential_stubs(S.graph, o.delta.value());
   Embedding_options eo;
   eo.level_width = one.level_width;  // the median edge length of K
   const Reeb_graph_embedding E = embed_reeb_graph(T.graph, K, project_to_3d(P), A.values(), 2, eo);
@@ -504,26 +504,37 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
     leaves += degree(v, collinear.graph) == 1 ? 1 : 0;
   EXPECT_EQ(leaves, 2u);  // a segment
   expect_members_partition(collinear.graph, 21);
-  // A negative delta is the suggested one (one point: no scale, so the radius); NaN is refused, and each
+  // An automatic delta is the suggested one (one point: no scale, so the radius); NaN is refused, and each
   // bad field is named alone (one message listed three).
   Skeleton_options bad;
-  bad.delta = -1;
+  bad.delta = FeatureRecon::automatic;
   EXPECT_EQ(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad).delta, 1.0);
   bad.delta = std::nan("");
   EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad),
                std::invalid_argument);
-  bad.delta = 0;
+  bad.delta = 0.0;
   bad.repair_distance = -2;
   EXPECT_NE(invalid_argument_message([&] {
               extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
-            }).find("repair_distance must be finite and >= 0, got -2"),
+            }).find("repair_distance must be finite and >= 0 (0: no repair), got -2"),
             std::string::npos);
   bad.repair_distance = 0;
   bad.prune_height = -3;
   EXPECT_NE(invalid_argument_message([&] {
               extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
-            }).find("prune_height must be >= 0 (infinity: prune all), got -3"),
+            }).find("prune_height must be >= 0 (0: keep all; infinity: prune all), got -3"),
             std::string::npos);
+  // A negative branch merge distance asked for the automatic one before FeatureRecon::automatic: refused.
+  bad.prune_height = 0;
+  bad.branch_merge_distance = -1;
+  EXPECT_EQ(invalid_argument_message([&] {
+              extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
+            }),
+            "extract_reeb_skeleton: branch_merge_distance must be finite and >= 0 (FeatureRecon::automatic: "
+            "twice the level width; 0: off), got -1");
+  bad.branch_merge_distance = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad),
+               std::invalid_argument);
   // Messages name the function called, not the stage that noticed (they began with build_rips_graph and
   // build_flag_complex_2), and say what is wrong.
   auto message = [](auto&& call) { return invalid_argument_message(call); };
@@ -551,7 +562,7 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   bad.prune_height = -1;
   EXPECT_NE(message([&] {
               extract_reeb_skeleton(g, two, bad);
-            }).find("prune_height must be >= 0 (infinity: prune all), got -1"),
+            }).find("prune_height must be >= 0 (0: keep all; infinity: prune all), got -1"),
             std::string::npos);
   // Embedding options are checked before the pipeline runs (they were refused by its last stage, naming
   // embed_reeb_graph and the automatic level width in place of the caller's), with the caller's values.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -59,29 +60,36 @@ TEST(RoadMap, AutomaticParametersFollowTheMedianStep) {
   // R is the median step clamped to [10, 30] m; delta 3R, repair 2.5R, prune 5R.
   for (const auto& [step, R] : {std::pair{20.0, 20.0}, std::pair{4.0, 10.0}, std::pair{200.0, 30.0}}) {
     const Road_map_options u = resolve_road_map_options(street(step), {});
-    EXPECT_DOUBLE_EQ(u.rips_radius, R) << step;
-    EXPECT_DOUBLE_EQ(u.delta, 3 * R);
-    EXPECT_DOUBLE_EQ(u.repair_distance, 2.5 * R);
-    EXPECT_DOUBLE_EQ(u.prune_height, 5 * R);
+    EXPECT_DOUBLE_EQ(u.rips_radius.value(), R) << step;
+    EXPECT_DOUBLE_EQ(u.delta.value(), 3 * R);
+    EXPECT_DOUBLE_EQ(u.repair_distance.value(), 2.5 * R);
+    EXPECT_DOUBLE_EQ(u.prune_height.value(), 5 * R);
+    EXPECT_DOUBLE_EQ(u.merge_distance.value(), 8);
+    EXPECT_EQ(u.branch_merge_distance, 0.0);  // off unless asked for
   }
   Road_map_options o;
   o.min_radius = 25;
-  EXPECT_DOUBLE_EQ(resolve_road_map_options(street(20), o).rips_radius, 25);
-  o.rips_radius = 7;  // explicit values win; negative turns a stage off
+  EXPECT_DOUBLE_EQ(resolve_road_map_options(street(20), o).rips_radius.value(), 25);
+  o.rips_radius = 7;  // explicit values win; 0 turns a stage off, as in Skeleton_options
   o.delta = 11;
-  o.repair_distance = -1;
-  o.prune_height = -1;
+  o.repair_distance = 0;
+  o.prune_height = 0;
+  o.merge_distance = 0;
+  o.branch_merge_distance = FeatureRecon::automatic;
   const Road_map_options u = resolve_road_map_options(street(20), o);
-  EXPECT_DOUBLE_EQ(u.rips_radius, 7);
-  EXPECT_DOUBLE_EQ(u.delta, 11);
-  EXPECT_EQ(u.repair_distance, 0);
-  EXPECT_EQ(u.prune_height, 0);
+  EXPECT_DOUBLE_EQ(u.rips_radius.value(), 7);
+  EXPECT_DOUBLE_EQ(u.delta.value(), 11);
+  EXPECT_EQ(u.repair_distance, 0.0);
+  EXPECT_EQ(u.prune_height, 0.0);
+  EXPECT_EQ(u.merge_distance, 0.0);
+  EXPECT_FALSE(u.branch_merge_distance);  // the skeleton's rule, which needs its level width
   const Skeleton_options so = road_map_skeleton_options(u);
-  EXPECT_DOUBLE_EQ(so.delta, 11);
+  EXPECT_DOUBLE_EQ(so.delta.value(), 11);
   EXPECT_EQ(so.repair_distance, 0);
   EXPECT_EQ(so.prune_height, 0);
+  EXPECT_FALSE(so.branch_merge_distance);
   // No trip with two fixes: no step to derive from, the lower clamp.
-  EXPECT_DOUBLE_EQ(resolve_road_map_options({}, {}).rips_radius, 10);
+  EXPECT_DOUBLE_EQ(resolve_road_map_options({}, {}).rips_radius.value(), 10);
 }
 
 TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
@@ -89,11 +97,11 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
   const Road_map m = extract_road_map(city.trips);
   ASSERT_EQ(m.status, Status::success);
   const Road_map_options used = resolve_road_map_options(city.trips, {});
-  const Gps_trace_sample S = sample_gps_traces(city.trips, used.rips_radius, used.traces);
-  const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius);
+  const Gps_trace_sample S = sample_gps_traces(city.trips, used.rips_radius.value(), used.traces);
+  const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius.value());
   const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
   const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
-  EXPECT_DOUBLE_EQ(used.merge_distance, 8);
+  EXPECT_DOUBLE_EQ(used.merge_distance.value(), 8);
   const Road_merge_result merged = merge_road_lines(lines, road_map_merge_options(used));
   EXPECT_EQ(m.map.positions, merged.map.positions);
   EXPECT_EQ(m.map.edges, merged.map.edges);
@@ -118,9 +126,9 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
   }
   // Merging off: the skeleton's map itself.
   Road_map_options off;
-  off.merge_distance = -1;
+  off.merge_distance = 0;
   const Road_map u = extract_road_map(city.trips, off);
-  EXPECT_EQ(u.used.merge_distance, 0);
+  EXPECT_EQ(u.used.merge_distance, 0.0);
   EXPECT_EQ(u.map.positions, lines.positions);
   EXPECT_EQ(u.map.edges, lines.edges);
   EXPECT_EQ(num_vertices(u.merged.skeleton), 0u);
@@ -133,7 +141,7 @@ TEST(RoadMap, SkeletonLinesDoNotGoOutAndBack) {
   for (const std::uint64_t seed : {3u, 4u, 5u}) {
     const Synthetic_city city = small_city(seed);
     Road_map_options off;
-    off.merge_distance = -1;
+    off.merge_distance = 0;
     const Road_map m = extract_road_map(city.trips, off);
     ASSERT_EQ(m.status, Status::success);
     std::size_t points = 0;
@@ -151,6 +159,10 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   Road_map_options o;
   o.rips_radius = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("rips_radius"), std::string::npos);
+  o.rips_radius = 0;  // 0 asked for the automatic radius before FeatureRecon::automatic
+  EXPECT_EQ(message_of([&] { extract_road_map(trips, o); }),
+            "extract_road_map: rips_radius must be finite and > 0 (FeatureRecon::automatic: from the median "
+            "step), got 0");
   o.rips_radius = 1e308;  // 5R overflowed and the skeleton named delta, repair_distance and prune_height
   EXPECT_NE(message_of([&] {
               extract_road_map(trips, o);
@@ -173,6 +185,26 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   o = {};
   o.merge_distance = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("merge_distance"), std::string::npos);
+  // A negative value turned a stage off before FeatureRecon::automatic; now 0 does, and a negative value is
+  // refused, naming the field, the rule and the off value (it would otherwise be taken for a value).
+  const std::vector<std::pair<std::optional<double> Road_map_options::*, std::string>> fields = {
+      {&Road_map_options::delta, "delta must be finite and >= 0 (FeatureRecon::automatic: 3 R; 0: off)"},
+      {&Road_map_options::repair_distance,
+       "repair_distance must be finite and >= 0 (FeatureRecon::automatic: 2.5 R; 0: off)"},
+      {&Road_map_options::prune_height, "prune_height must be >= 0 (FeatureRecon::automatic: 5 R; 0: off)"},
+      {&Road_map_options::merge_distance,
+       "merge_distance must be finite and >= 0 (FeatureRecon::automatic: 8 m; 0: off)"},
+      {&Road_map_options::branch_merge_distance,
+       "branch_merge_distance must be finite and >= 0 (FeatureRecon::automatic: twice the level width; 0: "
+       "off)"}};
+  for (const auto& [field, text] : fields) {
+    o = {};
+    o.*field = -1;
+    EXPECT_EQ(message_of([&] { extract_road_map(trips, o); }), "extract_road_map: " + text + ", got -1");
+  }
+  o = {};
+  o.prune_height = std::numeric_limits<double>::infinity();  // prune everything
+  EXPECT_NO_THROW(extract_road_map(trips, o));
   std::vector<Gps_trip> bad = trips;
   bad[1][2].y = std::numeric_limits<double>::quiet_NaN();
   const std::string m = message_of([&] { extract_road_map(bad, {}); });
@@ -194,7 +226,7 @@ TEST(RoadMap, DegenerateInput) {
     EXPECT_EQ(m.status, Status::success);
     EXPECT_TRUE(m.map.edges.empty());
     Road_map_options keep;
-    keep.prune_height = -1;
+    keep.prune_height = 0;
     const Road_map k = extract_road_map(one, keep);
     ASSERT_EQ(k.map.positions.size(), 1u);
     EXPECT_EQ(k.map.positions[0], (std::array<double, 2>{5, 5}));

@@ -24,6 +24,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -64,13 +65,14 @@ using Skeleton_graph =
 
 /// Options of extract_reeb_skeleton().
 struct Skeleton_options {
-  /// Persistence threshold of the simplification (function unit); default 0 (no simplification). Negative:
-  /// the suggested delta at the radius used, max(radius, 2.25 x the scale estimate_rips_radius() reads off
-  /// the points or matrix; Rips_radius_estimate::delta), taken by the overloads of points and distance
-  /// matrices (with a given radius the estimate's work, about 1,000 n distances, comes first and takes the
-  /// first tenth of the progress range; a stop there returns status interrupted, rips_radius the given
-  /// radius and this negative delta); the graph overload refuses it.
-  double delta = 0;
+  /// Persistence threshold of the simplification (function unit); default 0 (no simplification).
+  /// FeatureRecon::automatic: the suggested delta at the radius used, max(radius, 2.25 x the scale
+  /// estimate_rips_radius() reads off the points or matrix; Rips_radius_estimate::delta), taken by the
+  /// overloads of points and distance matrices (with a given radius the estimate's work, about 1,000 n
+  /// distances, comes first and takes the first tenth of the progress range; a stop there returns status
+  /// interrupted, rips_radius the given radius and delta NaN); the graph overload refuses it. Negative:
+  /// refused (before FeatureRecon::automatic a negative delta asked for the suggested one).
+  std::optional<double> delta = 0.0;
   /// join degree-1 nodes at most this far apart in input space, then simplify again; 0 (default): no repair
   double repair_distance = 0;
   /// With a repair distance: also join each remaining degree-1 node to the closest point of another arc
@@ -82,14 +84,15 @@ struct Skeleton_options {
   /// Contract each arc joining two branch nodes (degree >= 3) that is at most this long in input space into
   /// one node, each merged cluster at most this across (merge_close_branch_nodes()): where two curves cross
   /// or touch, the level sets merge and split at slightly different values, and the Reeb graph draws one
-  /// point of degree 4 as two forks joined by a short arc. Negative (default -1): twice the level width of
-  /// the embedding (Reeb_skeleton::level_width, by default the median edge length of the complex, so about
-  /// the Rips radius: where two curves cross at a right angle the forks lie about that far apart, and closer
-  /// features the complex does not resolve), in input units: for a graph whose edge lengths are not the
-  /// coordinates' distances (unit weights, say), times the ratio of the median coordinate distance to the
+  /// point of degree 4 as two forks joined by a short arc. FeatureRecon::automatic (default): twice the level
+  /// width of the embedding (Reeb_skeleton::level_width, by default the median edge length of the complex, so
+  /// about the Rips radius: where two curves cross at a right angle the forks lie about that far apart, and
+  /// closer features the complex does not resolve), in input units: for a graph whose edge lengths are not
+  /// the coordinates' distances (unit weights, say), times the ratio of the median coordinate distance to the
   /// median length of its edges; 0: off. For a distance matrix an arc is at least as long as the matrix's
-  /// distance between its nodes' points (the MDS drawing may shorten it).
-  double branch_merge_distance = -1;
+  /// distance between its nodes' points (the MDS drawing may shorten it). Negative: refused (before
+  /// FeatureRecon::automatic it asked for the automatic distance).
+  std::optional<double> branch_merge_distance = FeatureRecon::automatic;
   /// Contract the spurs at the global minimum and maximum of each component when their height is at most
   /// delta (trim_essential_stubs()): on a loop the base point of the geodesic function otherwise stays a
   /// short spur. Default true.
@@ -111,7 +114,9 @@ struct Reeb_skeleton {
   /// The Rips radius of the complex (given or estimated); NaN for a proximity graph given as it is, and when
   /// the run was stopped before the radius was estimated.
   double rips_radius = std::numeric_limits<double>::quiet_NaN();
-  double delta = 0;  ///< the persistence threshold used (Skeleton_options::delta, or the estimate's)
+  /// the persistence threshold used (Skeleton_options::delta, or the suggested one; NaN when a run was
+  /// stopped before the suggested delta was known)
+  double delta = 0;
   /// Size of the complex (for points: the copies of a point are not joined to each other, see
   /// extract_reeb_skeleton()).
   std::size_t rips_edges = 0;
@@ -492,26 +497,32 @@ inline double median_edge_length(const Proximity_graph& g, const std::vector<Ver
 }
 
 inline void check_skeleton_options(const Skeleton_options& options, const char* fn) {
-  if (!(options.delta >= 0 && std::isfinite(options.delta)))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "delta must be finite and >= 0, got ", options.delta,
-        options.delta < 0 ? " (a negative delta, the suggested one, needs points or a distance matrix)" : "");
-  if (!(options.repair_distance >= 0 && std::isfinite(options.repair_distance)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "repair_distance must be finite and >= 0, got ",
-                                                   options.repair_distance);
-  if (!(options.prune_height >= 0))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "prune_height must be >= 0 (infinity: prune all), got ", options.prune_height);
-  if (std::isnan(options.branch_merge_distance) || std::isinf(options.branch_merge_distance))
+  if (!options.delta)
     FeatureRecon::internal::throw_invalid_argument(
         fn,
-        "branch_merge_distance must be finite (negative: the level "
-        "width), got ",
-        options.branch_merge_distance);
+        "delta is automatic (the suggested delta), which needs points or a distance matrix: give a value");
+  if (!(*options.delta >= 0 && std::isfinite(*options.delta)))
+    FeatureRecon::internal::throw_invalid_argument(fn,
+                                                   "delta must be finite and >= 0 (FeatureRecon::automatic: "
+                                                   "the suggested delta; 0: no simplification), got ",
+                                                   *options.delta);
+  if (!(options.repair_distance >= 0 && std::isfinite(options.repair_distance)))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "repair_distance must be finite and >= 0 (0: no repair), got ", options.repair_distance);
+  if (!(options.prune_height >= 0))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "prune_height must be >= 0 (0: keep all; infinity: prune all), got ", options.prune_height);
+  if (options.branch_merge_distance &&
+      !(*options.branch_merge_distance >= 0 && std::isfinite(*options.branch_merge_distance)))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn,
+        "branch_merge_distance must be finite and >= 0 (FeatureRecon::automatic: twice the level width; 0: "
+        "off), got ",
+        *options.branch_merge_distance);
   check_embedding_options(options.embedding, fn);  // before the pipeline runs, with the caller's values
 }
 
-/// `run` := `options` with a negative delta replaced by the suggested delta at `radius`: max(radius,
+/// `run` := `options` with an automatic delta replaced by the suggested delta at `radius`: max(radius,
 /// delta_factor * scale) for the scale `estimate(o)` finds (estimate_rips_radius() with Rips_radius_options
 /// o, default but for the progress), as Rips_radius_estimate::delta is at the estimated radius. Checked with
 /// the replacement standing in. The estimate takes the first tenth of the progress range of
@@ -520,9 +531,9 @@ template <class Estimate>
 bool with_suggested_delta(const Skeleton_options& options, double radius, const char* fn, Estimate&& estimate,
                           Skeleton_options& run) {
   run = options;
-  if (options.delta < 0) run.delta = 0;  // checked with the suggestion standing in
+  if (!options.delta) run.delta = 0.0;  // checked with the suggestion standing in
   check_skeleton_options(run, fn);
-  if (!(options.delta < 0)) return true;
+  if (options.delta) return true;
   Rips_radius_options ro;
   if (options.progress) {
     ro.progress = [&options](double t) { return options.progress(0.1 * t); };
@@ -534,12 +545,14 @@ bool with_suggested_delta(const Skeleton_options& options, double radius, const 
   return true;
 }
 
-/// The result of a run stopped before any skeleton: the caller's delta, the radius (NaN if not known yet).
-inline Reeb_skeleton interrupted_skeleton(std::size_t dimension, double rips_radius, double delta) {
+/// The result of a run stopped before any skeleton: the caller's delta (NaN if automatic), the radius (NaN
+/// if not known yet).
+inline Reeb_skeleton interrupted_skeleton(std::size_t dimension, double rips_radius,
+                                          const std::optional<double>& delta) {
   Reeb_skeleton s;
   s.dimension = dimension;
   s.rips_radius = rips_radius;
-  s.delta = delta;
+  s.delta = delta.value_or(std::numeric_limits<double>::quiet_NaN());
   s.status = Status::interrupted;
   return s;
 }
@@ -556,7 +569,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   const std::size_t dimension = coordinates.dimension;
   Reeb_skeleton result;
   result.dimension = std::min<std::size_t>(dimension, 3);
-  result.delta = options.delta;
+  result.delta = *options.delta;  // checked: set
   if (graph.number_of_vertices == 0) {
     result.status = Status::degenerate_input;
     return result;
@@ -614,7 +627,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   if (ended(A.status())) return result;
   Simplification_options so;
   so.progress = stage(0.8, 0.87);
-  Reeb_simplification_result S = simplify_by_persistence(A, options.delta, so);
+  Reeb_simplification_result S = simplify_by_persistence(A, *options.delta, so);
   if (ended(S.status)) return result;
   result.removed_branches = S.removed_branches;
   result.removed_loops = S.removed_loops;
@@ -635,13 +648,13 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
       joined = std::move(ends.graph);
     }
     so.progress = stage(0.91, 0.95);
-    S = simplify_by_persistence(joined, A.values(), options.delta, so);
+    S = simplify_by_persistence(joined, A.values(), *options.delta, so);
     if (ended(S.status)) return result;
     result.removed_branches += S.removed_branches;
     result.removed_loops += S.removed_loops;
   }
   if (options.trim_stubs) {
-    Reeb_trim_result trimmed = trim_essential_stubs(S.graph, options.delta);
+    Reeb_trim_result trimmed = trim_essential_stubs(S.graph, *options.delta);
     S.graph = std::move(trimmed.graph);
     result.trimmed_stubs = trimmed.trimmed;
   }
@@ -685,7 +698,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     for (auto e : boost::make_iterator_range(edges(result.graph)))
       result.graph[e].input_polyline = std::move(I.arc_polylines[k++]);
   }
-  if (options.branch_merge_distance < 0) {
+  if (!options.branch_merge_distance) {
     // Twice the level width, from function units (the edge lengths) to input units (`distance`) by the ratio
     // of their medians: 1 for points and distance matrices, whose edge lengths are the distances; a graph
     // with unit weights (or any other) on coordinates 0.01 apart merged forks 2 coordinate units apart, 200
@@ -700,7 +713,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     // Saturates (edges near DBL_MAX).
     result.branch_merge_distance = std::min(2 * eo.level_width * ratio, std::numeric_limits<double>::max());
   } else {
-    result.branch_merge_distance = options.branch_merge_distance;
+    result.branch_merge_distance = *options.branch_merge_distance;
   }
   if (result.branch_merge_distance > 0) {
     std::function<double(Vertex_index, Vertex_index)> metric;
@@ -815,7 +828,8 @@ inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Ver
 /// (equal coordinates) are not joined to each other, only to their first copy, its neighbours and the next
 /// copy (internal::rips_graph_of_distinct_points(): same homotopy type, level sets and critical points as the
 /// full Rips complex without the copies' cliques); every copy is a member of its first copy's node or arc.
-/// A negative `options.delta` asks for the suggested delta at this radius (Skeleton_options::delta).
+/// `options.delta = FeatureRecon::automatic` asks for the suggested delta at this radius
+/// (Skeleton_options::delta).
 /// \pre radius >= 0 and finite; repair_distance >= 0 (checked; throws). Points as build_rips_graph().
 /// \tparam Radius an arithmetic type: `extract_reeb_skeleton(points, {})` is not radius 0 but the overload
 ///   that estimates the radius (default options).
@@ -869,7 +883,7 @@ template <class Estimate, class Run>
 Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius_options radius_options,
                                     std::size_t dimension, const char* fn, Estimate&& estimate, Run&& run) {
   Skeleton_options rest = options;
-  if (options.delta < 0) rest.delta = 0;  // checked with the estimate's delta standing in
+  if (!options.delta) rest.delta = 0.0;  // checked with the estimate's delta standing in
   check_skeleton_options(rest, fn);
   // both callbacks hear the estimate (its own fraction, and the first tenth of the run's)
   if (options.progress) {
@@ -881,7 +895,7 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
   const Rips_radius_estimate r = estimate(radius_options);
   if (r.status == Status::interrupted)
     return interrupted_skeleton(dimension, std::numeric_limits<double>::quiet_NaN(), options.delta);
-  if (options.delta < 0) rest.delta = r.delta;
+  if (!options.delta) rest.delta = r.delta;
   if (options.progress) rest.progress = [&options](double t) { return options.progress(0.1 + 0.9 * t); };
   Reeb_skeleton s = run(r.radius, rest);
   s.rips_radius = r.radius;
@@ -890,13 +904,14 @@ Reeb_skeleton with_estimated_radius(const Skeleton_options& options, Rips_radius
 }  // namespace internal
 
 /// extract_reeb_skeleton() at the radius estimate_rips_radius() derives from the points (with
-/// `radius_options`; the radius used is Reeb_skeleton::rips_radius, the delta used Reeb_skeleton::delta). A
-/// negative `options.delta` stands for the estimate's suggested delta (Rips_radius_estimate::delta; the
-/// default 0 means no simplification, as in every overload); every other value is taken from `options` as
-/// given. The estimate takes the first tenth of the progress range of `options.progress`;
-/// `radius_options.progress`, when set, hears it too (with the estimate's own fraction), and either can stop
-/// it: an empty skeleton, status interrupted, rips_radius NaN. Stage by stage: estimate_rips_radius(), then
-/// extract_reeb_skeleton(points, estimate.radius, options with delta = estimate.delta).
+/// `radius_options`; the radius used is Reeb_skeleton::rips_radius, the delta used Reeb_skeleton::delta).
+/// `options.delta = FeatureRecon::automatic` stands for the estimate's suggested delta
+/// (Rips_radius_estimate::delta; the default 0 means no simplification, as in every overload); every other
+/// value is taken from `options` as given. The estimate takes the first tenth of the progress range of
+/// `options.progress`; `radius_options.progress`, when set, hears it too (with the estimate's own fraction),
+/// and either can stop it: an empty skeleton, status interrupted, rips_radius NaN. Stage by stage:
+/// estimate_rips_radius(), then extract_reeb_skeleton(points, estimate.radius, options with delta =
+/// estimate.delta).
 inline Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, const Skeleton_options& options,
                                            const Rips_radius_options& radius_options = {}) {
   internal::check_point_matrix(points, "extract_reeb_skeleton");

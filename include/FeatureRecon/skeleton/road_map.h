@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -573,26 +574,32 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
   return r;
 }
 
-/// Options of extract_road_map(). Coordinates are metres. A value of 0 asks for the rule on the field,
-/// derived from the median step M between consecutive fixes of a trip (median_gps_step()) through the Rips
-/// radius R; a negative value turns the stage off. resolve_road_map_options() returns the values used.
+/// Options of extract_road_map(). Coordinates are metres. An automatic value (FeatureRecon::automatic, the
+/// default of the optional fields) asks for the rule on the field, derived from the median step M between
+/// consecutive fixes of a trip (median_gps_step()) through the Rips radius R; 0 turns the stage off, and a
+/// negative value is refused (before FeatureRecon::automatic, 0 asked for the rule and a negative value
+/// turned the stage off). resolve_road_map_options() returns the values used.
 struct Road_map_options {
-  double rips_radius = 0;      ///< 0: M clamped to [min_radius, max_radius]
-  double min_radius = 10;      ///< lower clamp of the automatic radius (m); default 10
-  double max_radius = 30;      ///< upper clamp of the automatic radius (m); default 30
-  double delta = 0;            ///< persistence threshold of the simplification; 0: 3 R; negative: none
-  double repair_distance = 0;  ///< join dead ends at most this far apart; 0: 2.5 R; negative: no repair
-  double prune_height = 0;     ///< drop components of smaller height (range of f); 0: 5 R; negative: keep all
+  /// Rips radius (> 0); automatic (default): M clamped to [min_radius, max_radius]
+  std::optional<double> rips_radius = FeatureRecon::automatic;
+  double min_radius = 10;  ///< lower clamp of the automatic radius (m); default 10
+  double max_radius = 30;  ///< upper clamp of the automatic radius (m); default 30
+  /// persistence threshold of the simplification; automatic (default): 3 R; 0: none
+  std::optional<double> delta = FeatureRecon::automatic;
+  /// join dead ends at most this far apart; automatic (default): 2.5 R; 0: no repair
+  std::optional<double> repair_distance = FeatureRecon::automatic;
+  /// drop components of smaller height (range of f); automatic (default): 5 R; 0: keep all
+  std::optional<double> prune_height = FeatureRecon::automatic;
   /// Sampling, linking and density filter (sample_gps_traces()); its own automatic rules (spacing R/2, link
   /// gap max(4M, 2R), segment support max(20 m, 2R/3), density radius 2R) apply and are reported in
   /// Road_map::sample.
   Gps_trace_options traces = road_map_trace_options();
   bool connect_dead_ends = true;  ///< Skeleton_options::connect_dead_ends
   bool trim_stubs = true;         ///< Skeleton_options::trim_stubs
-  /// Skeleton_options::branch_merge_distance; default 0 (off): the road lines are drawn from the arcs and
-  /// merged afterwards (merge_road_lines()); on Chicago merging forks at 1 or 2 level widths (14.4 m, 28.9 m)
-  /// scores F 0.7024 / 0.7014 against 0.7016.
-  double branch_merge_distance = 0;
+  /// Skeleton_options::branch_merge_distance (automatic: twice the level width); default 0 (off): the road
+  /// lines are drawn from the arcs and merged afterwards (merge_road_lines()); on Chicago merging forks at 1
+  /// or 2 level widths (14.4 m, 28.9 m) scores F 0.7024 / 0.7014 against 0.7016.
+  std::optional<double> branch_merge_distance = 0.0;
   /// Skeleton_options::max_triangles of the skeleton and of the merging stage (Road_merge_options).
   std::size_t max_triangles = Skeleton_options().max_triangles;
   /// How arcs are drawn (level width 0: median edge length of the complex); default
@@ -600,8 +607,8 @@ struct Road_map_options {
   Embedding_options embedding = road_map_embedding_options();
   /// Last stage: lines of the map closer than this become one (merge_road_lines()). Driving directions keep a
   /// divided road's carriageways apart but also draw the two directions of a two-way street, a few metres
-  /// apart. 0: 8 m (Road_merge_options::distance); negative: no merging.
-  double merge_distance = 0;
+  /// apart. Automatic (default): 8 m (Road_merge_options::distance); 0: no merging.
+  std::optional<double> merge_distance = FeatureRecon::automatic;
   Progress_callback progress;  ///< fraction done; returning false stops (Road_map::status interrupted)
 };
 
@@ -614,54 +621,64 @@ struct Road_map {
   /// the merging stage (its `map` is moved to `map`); status success and empty if off
   Road_merge_result merged;
   Gps_trace_sample sample;  ///< the samples the skeleton is built on, with the trace parameters used
-  Road_map_options used;    ///< the options with every automatic value filled in (no progress callback)
+  /// the options with every automatic value filled in (each optional field set; no progress callback)
+  Road_map_options used;
   Status status = Status::success;  ///< degenerate_input when no fix is left; interrupted by the callback
 };
 
-/// The options with every automatic value of extract_road_map() filled in (delta, repair, prune and merge
-/// distance become 0 when turned off). The trace options' own automatic values are left to
-/// sample_gps_traces().
-/// \throws std::invalid_argument naming a non-finite option, a negative radius or clamp, min_radius >
-///   max_radius, or a radius above 1e300.
+/// The options with every automatic value of extract_road_map() filled in (every optional field set: delta,
+/// repair, prune and merge distance are 0 when turned off; an automatic branch merge distance is set to the
+/// level width's, which the skeleton derives, only in Road_map::skeleton). The trace options' own automatic
+/// values are left to sample_gps_traces().
+/// \throws std::invalid_argument naming a non-finite or negative option, a radius that is 0, a non-positive
+///   clamp, min_radius > max_radius, or a radius above 1e300.
 inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips,
                                                  const Road_map_options& options) {
   const char* fn = "extract_road_map";
-  if (!std::isfinite(options.rips_radius) || options.rips_radius < 0)
+  if (options.rips_radius && !(std::isfinite(*options.rips_radius) && *options.rips_radius > 0))
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "rips_radius must be finite and >= 0 (0: automatic), got ", options.rips_radius);
+        fn, "rips_radius must be finite and > 0 (FeatureRecon::automatic: from the median step), got ",
+        *options.rips_radius);
   if (!(options.min_radius > 0 && options.min_radius <= options.max_radius &&
         std::isfinite(options.max_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "need 0 < min_radius <= max_radius < infinity, got ",
                                                    options.min_radius, " and ", options.max_radius);
-  if (!std::isfinite(options.delta) || !std::isfinite(options.repair_distance) ||
-      std::isnan(options.prune_height) || !std::isfinite(options.merge_distance))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "delta, repair_distance, prune_height and merge_distance must be finite");
+  const auto check = [fn](const std::optional<double>& value, const char* name, const char* rule,
+                          bool infinity_allowed = false) {
+    if (value && !(*value >= 0 && (infinity_allowed || std::isfinite(*value))))
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, name, " must be ", infinity_allowed ? "" : "finite and ",
+          ">= 0 (FeatureRecon::automatic: ", rule, "; 0: off), got ", *value);
+  };
+  check(options.delta, "delta", "3 R");
+  check(options.repair_distance, "repair_distance", "2.5 R");
+  check(options.prune_height, "prune_height", "5 R", true);
+  check(options.merge_distance, "merge_distance", "8 m");
+  check(options.branch_merge_distance, "branch_merge_distance", "twice the level width");
   Road_map_options u = options;
   u.progress = nullptr;
   const double M = median_gps_step(trips);
-  const double R = options.rips_radius > 0 ? options.rips_radius
-                                           : std::min(options.max_radius, std::max(options.min_radius, M));
+  const double R = options.rips_radius ? *options.rips_radius
+                                       : std::min(options.max_radius, std::max(options.min_radius, M));
   if (!(R <= 1e300))  // the automatic delta, repair and prune (3R, 2.5R, 5R) must be finite
     FeatureRecon::internal::throw_invalid_argument(
-        fn, options.rips_radius > 0 ? "rips_radius" : "max_radius",
+        fn, options.rips_radius ? "rips_radius" : "max_radius",
         " must be at most 1e300 (the automatic delta, repair_distance and ",
         "prune_height are 3, 2.5 and 5 times the radius), got ", R);
   u.rips_radius = R;
-  auto rule = [](double value, double automatic) { return value > 0 ? value : value == 0 ? automatic : 0.0; };
-  u.delta = rule(options.delta, 3 * R);
-  u.repair_distance = rule(options.repair_distance, 2.5 * R);
-  u.prune_height = rule(options.prune_height, 5 * R);
-  u.merge_distance = rule(options.merge_distance, Road_merge_options{}.distance);
+  u.delta = options.delta.value_or(3 * R);
+  u.repair_distance = options.repair_distance.value_or(2.5 * R);
+  u.prune_height = options.prune_height.value_or(5 * R);
+  u.merge_distance = options.merge_distance.value_or(Road_merge_options{}.distance);
   return u;
 }
 
 /// The skeleton options of a resolved Road_map_options (the progress callback is not copied).
 inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) {
   Skeleton_options o;
-  o.delta = std::max(0.0, used.delta);
-  o.repair_distance = std::max(0.0, used.repair_distance);
-  o.prune_height = std::max(0.0, used.prune_height);
+  o.delta = used.delta.value();
+  o.repair_distance = used.repair_distance.value();
+  o.prune_height = used.prune_height.value();
   o.connect_dead_ends = used.connect_dead_ends;
   o.trim_stubs = used.trim_stubs;
   o.branch_merge_distance = used.branch_merge_distance;
@@ -673,7 +690,7 @@ inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) 
 /// The merging options of a resolved Road_map_options (used.merge_distance > 0; spacing, delta automatic).
 inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
   Road_merge_options o;
-  o.distance = used.merge_distance;
+  o.distance = used.merge_distance.value();
   o.max_triangles = used.max_triangles;
   return o;
 }
@@ -697,7 +714,8 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
   }
   Gps_trace_options to = r.used.traces;
   if (options.progress) to.progress = [&options](double t) { return options.progress(0.1 * t); };
-  r.sample = sample_gps_traces(trips, r.used.rips_radius, to);
+  const double radius = r.used.rips_radius.value();
+  r.sample = sample_gps_traces(trips, radius, to);
   if (r.sample.status == Status::interrupted ||
       !FeatureRecon::internal::report_progress(options.progress, 0.1)) {
     r.status = Status::interrupted;
@@ -711,7 +729,7 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
       if (!stopped && !options.progress(std::min(0.15, 0.1 + 0.05 * t))) stopped = true;  // (0.15 rounds up)
       return !stopped;
     };
-  Proximity_graph graph = build_gps_trace_graph(r.sample, r.used.rips_radius, go);
+  Proximity_graph graph = build_gps_trace_graph(r.sample, radius, go);
   if (stopped) {
     r.status = Status::interrupted;
     return r;
@@ -723,7 +741,7 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
   r.status = r.skeleton.status;
   if (r.status == Status::interrupted) return r;
   r.map = skeleton_to_road_map(r.skeleton.graph);
-  if (r.used.merge_distance > 0 && !r.map.positions.empty()) {
+  if (*r.used.merge_distance > 0 && !r.map.positions.empty()) {
     Road_merge_options mo = road_map_merge_options(r.used);
     if (options.progress) mo.progress = [&options](double t) { return options.progress(0.9 + 0.1 * t); };
     r.merged = merge_road_lines(r.map, mo);
