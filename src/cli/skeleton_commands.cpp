@@ -371,13 +371,23 @@ int run_skeleton(const std::vector<std::string>& argv) {
   options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
   if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
   if (args.has("tracks")) options.embedding = road_map_embedding_options();  // road maps keep their corners
-  options.embedding.level_width = args.has("level-width") ? args.get_double("level-width") : 0.0;
-  if (!(options.embedding.level_width >= 0 && options.embedding.level_width <= 1e300))
-    throw Usage_error("--level-width must be >= 0 and at most 1e300 (2W must stay finite), got '" +
-                      args.get("level-width") + "'");
-  options.embedding.max_gap = args.has("max-gap") ? args.get_double("max-gap") : 0.0;
-  if (std::isnan(options.embedding.max_gap))
-    throw Usage_error("--max-gap must be a number (0: automatic, < 0: off)");
+  // As in the library: unset is automatic, 0 turns bridging off.
+  if (args.has("level-width")) {
+    const double w = args.get_double("level-width");
+    if (!(w > 0 && w <= 1e300))
+      throw Usage_error(
+          "--level-width must be > 0 and at most 1e300 (2W must stay finite; unset: automatic), "
+          "got '" +
+          args.get("level-width") + "'");
+    options.embedding.level_width = w;
+  }
+  if (args.has("max-gap")) {
+    const double g = args.get_double("max-gap");
+    if (!(g >= 0))
+      throw Usage_error("--max-gap must be >= 0 (0: straight segments; unset: automatic), got '" +
+                        args.get("max-gap") + "'");
+    options.embedding.max_gap = g;
+  }
   if (args.has("smoothing")) {
     const long long it = args.get_int("smoothing");
     if (it < 0 || it > 1000000)
@@ -564,13 +574,25 @@ int run_skeleton(const std::vector<std::string>& argv) {
     s = extract_reeb_skeleton(g, m, options);
   } else {
     Gps_trace_options go = road_map_trace_options();
-    go.sample_spacing = spacing;
-    go.max_link_gap = args.has("link-gap") ? args.get_double("link-gap") : 0.0;
-    if (args.has("segment-support")) {  // unset: automatic; 0: no check
+    // As in the library: unset is automatic, 0 turns a stage off.
+    if (args.has("sample-spacing")) {
+      if (!(spacing > 0))
+        throw Usage_error("--sample-spacing must be > 0 with --tracks (unset: R/2), got '" +
+                          args.get("sample-spacing") + "'");
+      go.sample_spacing = spacing;
+    }
+    if (args.has("link-gap")) {
+      const double v = args.get_double("link-gap");
+      if (!(v >= 0 && std::isfinite(v)))
+        throw Usage_error("--link-gap must be >= 0 metres (0: no linking; unset: automatic), got '" +
+                          args.get("link-gap") + "'");
+      go.max_link_gap = v;
+    }
+    if (args.has("segment-support")) {
       const double v = args.get_double("segment-support");
       if (!(v >= 0 && std::isfinite(v)))
         throw Usage_error("--segment-support must be >= 0 metres (0: no check)");
-      go.segment_support = v > 0 ? v : -1.0;
+      go.segment_support = v;
     }
     if (args.has("segment-turn-tolerance"))
       go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
@@ -593,7 +615,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (!(go.min_straight_confirmed_fraction >= 0 && go.min_straight_confirmed_fraction <= 1))
       throw Usage_error("--straight-confirmed must be in [0, 1] (0: the turn rule always applies)");
     if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
-    go.density_radius = args.has("density-radius") ? args.get_positive_double("density-radius") : 0.0;
+    if (args.has("density-radius")) go.density_radius = args.get_positive_double("density-radius");
     if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
     if (args.has("min-lateral-density")) go.min_lateral_density = args.get_double("min-lateral-density");
     if (args.has("density-heading-tolerance"))
@@ -688,7 +710,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     input_json = ", \"trips\": " + std::to_string(trips.size()) +
                  ", \"median_step\": " + json_number(sample.median_step) +
                  ", \"link_gap\": " + json_number(sample.max_link_gap) +
-                 ", \"segment_support\": " + json_number(std::max(0.0, sample.segment_support)) +
+                 ", \"segment_support\": " + json_number(sample.segment_support) +
                  ", \"segment_turn_tolerance\": " + json_number(sample.segment_turn_tolerance) +
                  ", \"checked_segments\": " + std::to_string(sample.checked_segments) +
                  ", \"confirmed_segments\": " + std::to_string(sample.confirmed_segments) +

@@ -239,7 +239,8 @@ expect(reeb_simplify_negative 2 "--simplify must be >= 0" reeb --complex ${WORK}
 
 # skeleton: the figure-eight sample gives a graph with two loops, written as a road map that evaluate-map reads.
 expect(skeleton 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/sk_v.txt --out-edges ${WORK}/sk_e.txt --quiet)
-# --max-gap: negative draws every arc's gaps straight (parsed, same topology); NaN is refused.
+# --max-gap: 0 draws every arc's gaps straight (parsed, same topology; "max_gap": null, nothing bridged); NaN and
+# negative values (which turned it off before the library's FeatureRecon::automatic) are refused.
 # Above 3-D the points are drawn in the skeleton's PCA frame: the figure-eight (8 tall, 4 wide) padded to 5-D
 # lies along its first principal axis, which the picture draws horizontally, so the picture is about half as
 # tall as wide. Drawn by their raw coordinates (as before), the points stood upright and filled the full height.
@@ -252,7 +253,9 @@ file(WRITE ${WORK}/eight_5d.xyz "${eight_5d}")
 expect(skeleton_5d_picture 0 "\"loops\": 2," skeleton --points ${WORK}/eight_5d.xyz --radius 0.6 --delta 1
        --out-vertices ${WORK}/e5_v.txt --out-edges ${WORK}/e5_e.txt --svg ${WORK}/e5.svg --quiet)
 expect_count(${WORK}/e5.svg "<circle cx=\"[0-9.]+\" cy=\"(7[0-9][0-9]|[89][0-9][0-9]|1[0-9][0-9][0-9])\\." 0)
-expect(skeleton_max_gap_off 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --max-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_max_gap_off 0 "\"loops\": 2, \"components\": 1," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --max-gap 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_max_gap_off_reported 0 "\"max_gap\": null" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --max-gap 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_max_gap_negative 2 "--max-gap must be >= 0 \\(0: straight segments; unset: automatic\\), got '-1'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --max-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 # Branch nodes: the tangent circles of figure_eight.xyz share a stretch at radius 0.6, where the Reeb graph has
 # an up-fork and a down-fork 1.25 apart; the default (twice the level width, 0.66) keeps both, 1.5 merges them.
 expect(skeleton_branch_merge_default 0 "\"nodes\": 4, \"arcs\": 5, .*\"branch_merge\": 0\\.659[0-9]*, \"merged_branch_arcs\": 0, \"prune\": 0, \"level_width\": 0\\.329[0-9]*, \"max_gap\": 0\\.659" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
@@ -306,8 +309,14 @@ expect(skeleton_picture_size_alone 2 "--picture-size applies to the picture of -
 # Lengths derived from the radius (up to 5R) and the level width (2W) must stay finite: 1e308 made delta, repair and
 # prune infinite (a library error naming internal fields, exit 1; with tracks at 5e307 an empty map and "prune": null).
 expect(skeleton_radius_huge 2 "--radius must be at most 1e300 \\(lengths derived from it, up to 5R, must stay finite\\), got '5e307'" skeleton --tracks ${DATA}/block_tracks.txt --radius 5e307 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
-expect(skeleton_level_width_huge 2 "--level-width must be >= 0 and at most 1e300 \\(2W must stay finite\\), got '1e308'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.3 --level-width 1e308 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
-expect(skeleton_level_width_negative 2 "--level-width must be >= 0" skeleton --points ${DATA}/figure_eight.xyz --radius 0.3 --level-width -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_level_width_huge 2 "--level-width must be > 0 and at most 1e300 \\(2W must stay finite; unset: automatic\\), got '1e308'" skeleton --points ${DATA}/figure_eight.xyz --radius 0.3 --level-width 1e308 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_level_width_negative 2 "--level-width must be > 0" skeleton --points ${DATA}/figure_eight.xyz --radius 0.3 --level-width -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_level_width_zero 2 "--level-width must be > 0" skeleton --points ${DATA}/figure_eight.xyz --radius 0.3 --level-width 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+# Tracks: as in the library, unset is automatic and 0 turns linking off; a negative link gap (no linking before)
+# and a sample spacing of 0 (automatic before) are refused.
+expect(skeleton_link_gap_off 0 "\"link_gap\": 0, .*\"trip_links\": 0," skeleton --tracks ${DATA}/block_tracks.txt --link-gap 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+expect(skeleton_link_gap_negative 2 "--link-gap must be >= 0 metres \\(0: no linking; unset: automatic\\), got '-1'" skeleton --tracks ${DATA}/block_tracks.txt --link-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_tracks_spacing_zero 2 "--sample-spacing must be > 0 with --tracks \\(unset: R/2\\), got '0'" skeleton --tracks ${DATA}/block_tracks.txt --sample-spacing 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_ink 2 "--ink must be dark or bright, got 'grey'" skeleton --image ${WORK}/ring.pgm --ink grey --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_threshold 2 "--ink-threshold must be an integer grey level in \\[1, 255\\], got '0'" skeleton --image ${WORK}/ring.pgm --ink-threshold 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_only 2 "--ink and --ink-threshold apply to --image only" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --ink bright --out-vertices ${WORK}/a --out-edges ${WORK}/b)

@@ -92,7 +92,7 @@ TEST(DocumentedBoundaries, ConnectDeadEndsBreaksDistanceTiesBySmallestVertex) {
   EXPECT_FALSE(has_node(2));
 }
 
-// Embedding_options::level_width: "0 (default) means automatic: 1/64 of the range of f over the graph".
+// Embedding_options::level_width: "Automatic (default): 1/64 of the range of f over the graph".
 TEST(DocumentedBoundaries, AutomaticLevelWidthIsOneSixtyFourthOfTheRange) {
   // one arc from f 0 to f 64 with a point at every f 0.5, 1.5, ..., 63.5: one per bin of width 1
   Reeb_graph G;
@@ -241,8 +241,8 @@ TEST(DocumentedBoundaries, RoadMapOptionSetsHaveTheDocumentedValues) {
 }
 
 // Embedding_options::smoothing_iterations rounds are made (a Laplacian round at weight 0.5 moves a point
-// halfway to its neighbours' mean), and max_gap 0 means "twice the median edge length of the graph", reported
-// back.
+// halfway to its neighbours' mean), and an automatic max_gap is "twice the median edge length of the graph",
+// reported back.
 TEST(DocumentedBoundaries, EmbeddingSmoothingRoundsAndAutomaticMaxGap) {
   Reeb_graph G;  // one arc from vertex 0 to vertex 3 through vertex 1; vertex 2 is only in the graph
   G.nodes = {reeb_node(0, 0), reeb_node(3, 3)};
@@ -254,7 +254,7 @@ TEST(DocumentedBoundaries, EmbeddingSmoothingRoundsAndAutomaticMaxGap) {
   o.smoothing = Embedding_options::Smoothing::laplacian;
   o.smoothing_iterations = 1;
   o.level_width = 100;  // one piece
-  o.max_gap = -1;       // straight
+  o.max_gap = 0;        // straight
   const Reeb_graph_embedding E = embed_reeb_graph(G, positions, values, 2, o);
   ASSERT_EQ(E.arc_polylines[0].size(), 3u);
   EXPECT_EQ(E.arc_polylines[0][1][0], 2.25);  // 0.5 * (1, 1) + 0.5 * mean of (0, 0) and (7, 0)
@@ -264,7 +264,7 @@ TEST(DocumentedBoundaries, EmbeddingSmoothingRoundsAndAutomaticMaxGap) {
   graph.number_of_vertices = 4;
   graph.edges = {{0, 1}, {1, 2}, {2, 3}};
   graph.edge_lengths = {std::sqrt(2.0), std::sqrt(5.0), 4};
-  o.max_gap = 0;
+  o.max_gap = FeatureRecon::automatic;
   const Reeb_graph_embedding F = embed_reeb_graph(G, graph, positions, values, 2, o);
   EXPECT_DOUBLE_EQ(F.max_gap, 2 * std::sqrt(5.0));
 }

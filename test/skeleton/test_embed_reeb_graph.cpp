@@ -282,7 +282,10 @@ TEST(EmbedReebGraph, ArcsWithoutPointsFollowTheGraph) {
   EXPECT_LE(distance_to_corner(line), 1.5);
   // Off, or without a graph: the straight segment (its two ends, 20 from the corner).
   Embedding_options straight;
-  straight.max_gap = -1;
+  straight.max_gap = 0;
+  EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, straight).arc_polylines[0].size(), 2u);
+  EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, straight).max_gap, std::numeric_limits<double>::infinity());
+  straight.max_gap = std::numeric_limits<double>::infinity();
   EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, straight).arc_polylines[0].size(), 2u);
   EXPECT_EQ(embed_reeb_graph(G, xyz, f, 2).arc_polylines[0].size(), 2u);
   EXPECT_NEAR(distance_to_corner(embed_reeb_graph(G, xyz, f, 2).arc_polylines[0]), 20.0, 1e-12);
@@ -296,6 +299,18 @@ TEST(EmbedReebGraph, ArcsWithoutPointsFollowTheGraph) {
   Embedding_options bad;
   bad.max_gap = std::nan("");
   EXPECT_THROW(embed_reeb_graph(G, g, xyz, f, 2, bad), std::invalid_argument);
+  // A negative gap turned bridging off before FeatureRecon::automatic; now 0 does, and a negative one is
+  // refused. A level width of 0 (automatic before) too.
+  bad.max_gap = -1;
+  EXPECT_EQ(
+      FeatureRecon::test::invalid_argument_message([&] { embed_reeb_graph(G, g, xyz, f, 2, bad); }),
+      "embed_reeb_graph: embedding max_gap must be >= 0 (FeatureRecon::automatic: twice the median edge "
+      "length; 0: off), got -1");
+  bad = {};
+  bad.level_width = 0;
+  EXPECT_EQ(FeatureRecon::test::invalid_argument_message([&] { embed_reeb_graph(G, g, xyz, f, 2, bad); }),
+            "embed_reeb_graph: embedding level_width must be > 0 (FeatureRecon::automatic: the automatic "
+            "width), got 0");
 }
 
 TEST(EmbedReebGraph, AnArcBetweenNodesAtOnePlaceKeepsItsPoints) {

@@ -116,7 +116,7 @@ TEST(ExtractReebSkeleton, StageByStageEqualsOneCall) {
   eo.level_width = one.level_width;  // the median edge length of K
   const Reeb_graph_embedding E = embed_reeb_graph(T.graph, K, project_to_3d(P), A.values(), 2, eo);
   const Branch_node_merge_result M =
-      merge_close_branch_nodes(make_skeleton_graph(T.graph, E), P, 2 * eo.level_width);
+      merge_close_branch_nodes(make_skeleton_graph(T.graph, E), P, 2 * eo.level_width.value());
   EXPECT_EQ(S.removed_branches, one.removed_branches);
   EXPECT_EQ(T.trimmed, one.trimmed_stubs);
   EXPECT_EQ(M.merged, one.merged_branch_arcs);
@@ -586,7 +586,7 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   EXPECT_EQ(calls, 0u);
   bad.embedding.smoothing_weight = 0.5;
   bad.embedding.level_width = -1;
-  EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("embedding level_width must be >= 0"),
+  EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("embedding level_width must be > 0"),
             std::string::npos);
   // A geodesic distance beyond the largest double (20 points on a line 1e307 apart, about 2e308 end to end)
   // names the call and the stage (it named compute_geodesic_function alone).

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <utility>
@@ -30,7 +31,7 @@ Gps_trip straight(double x0, double y0, double dx, double dy, int n, double step
   return t;
 }
 /// Options of build_gps_trace_graph() with this heading tolerance (degrees).
-Gps_trace_graph_options tolerance_of(double degrees) {
+Gps_trace_graph_options tolerance_of(std::optional<double> degrees) {
   Gps_trace_graph_options o;
   o.heading_tolerance = degrees;
   return o;
@@ -97,8 +98,9 @@ TEST(GpsTraces, TimeOrderGapsAndHeadings) {
   for (const Edge& e : S.trip_links) EXPECT_LT(dist(S, e[0], e[1]), 100.0);
   for (std::size_t i = 0; i < S.points.rows; ++i)
     EXPECT_TRUE(S.points.row(i)[0] <= 60 || S.points.row(i)[0] >= 1000);
-  // No linking at all with a negative gap.
-  o.max_link_gap = -1;
+  // No linking at all with a gap of 0 (a negative gap, which did so before FeatureRecon::automatic, is
+  // refused below).
+  o.max_link_gap = 0;
   EXPECT_TRUE(sample_gps_traces({gap}, 20.0, o).trip_links.empty());
   // Crossing streets: with a heading tolerance of 30 degrees, no Rips edge joins an east-west sample to a
   // north-south one; without it, some do.
@@ -400,19 +402,39 @@ TEST(GpsTraces, DegenerateAndBadInput) {
     }
     return "(no exception)";
   };
-  EXPECT_NE(message(bad).find("sample_spacing must be finite and >= 0 (0: automatic), got -1"),
-            std::string::npos);
+  EXPECT_EQ(
+      message(bad),
+      "sample_gps_traces: sample_spacing must be finite and > 0 (FeatureRecon::automatic: half the Rips "
+      "radius), got -1");
+  bad.sample_spacing = 0;  // 0 asked for the automatic spacing before FeatureRecon::automatic
+  EXPECT_EQ(
+      message(bad),
+      "sample_gps_traces: sample_spacing must be finite and > 0 (FeatureRecon::automatic: half the Rips "
+      "radius), got 0");
   bad = {};
   bad.max_link_gap = std::numeric_limits<double>::infinity();
   EXPECT_NE(message(bad).find("max_link_gap must be finite"), std::string::npos) << message(bad);
+  bad.max_link_gap = -1;  // no linking before FeatureRecon::automatic; now 0
+  EXPECT_EQ(message(bad),
+            "sample_gps_traces: max_link_gap must be finite and >= 0 (FeatureRecon::automatic: max(4 x the "
+            "median step, 2 x the Rips radius); 0: no linking), got -1");
+  bad = {};
+  bad.segment_support = -1;  // no check before FeatureRecon::automatic; now 0
+  EXPECT_EQ(
+      message(bad),
+      "sample_gps_traces: segment_support must be finite and >= 0 (FeatureRecon::automatic: max(20, 2/3 x "
+      "the Rips radius); 0: no check), got -1");
   bad = {};
   bad.heading_tolerance = -2;
   EXPECT_NE(message(bad).find("heading_tolerance must be >= 0 degrees, got -2"), std::string::npos);
   for (const double r :
-       {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+       {-1.0, 0.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     bad = {};
     bad.density_radius = r;
-    EXPECT_NE(message(bad).find("density_radius must be finite and >= 0"), std::string::npos) << r;
+    EXPECT_NE(message(bad).find("density_radius must be finite and > 0 (FeatureRecon::automatic: twice the "
+                                "Rips radius)"),
+              std::string::npos)
+        << r;
   }
   bad = {};
   bad.density_radius = 1e-300;
@@ -556,7 +578,7 @@ TEST(GpsTraces, TraceGraphChecksItsInput) {
   const Gps_trace_sample S = sample_gps_traces({straight(0, 0, 1, 0, 20, 10)}, 10.0);
   ASSERT_GT(S.points.rows, 2u);
   EXPECT_NO_THROW(build_gps_trace_graph(S, 10.0, tolerance_of(30)));
-  auto message = [](const Gps_trace_sample& T, double tolerance) {
+  auto message = [](const Gps_trace_sample& T, std::optional<double> tolerance) {
     try {
       build_gps_trace_graph(T, 10.0, tolerance_of(tolerance));
     } catch (const std::invalid_argument& e) {
@@ -564,12 +586,18 @@ TEST(GpsTraces, TraceGraphChecksItsInput) {
     }
     return std::string("no exception");
   };
-  EXPECT_EQ(message(S, -1), "no exception");  // the sample's tolerance
-  EXPECT_NE(message(S, std::nan("")).find("heading_tolerance is NaN"), std::string::npos);
+  EXPECT_EQ(message(S, FeatureRecon::automatic), "no exception");  // the sample's tolerance
+  EXPECT_NE(message(S, std::nan("")).find("heading_tolerance must be >= 0 degrees"), std::string::npos);
+  // A negative tolerance asked for the sample's before FeatureRecon::automatic; it is refused.
+  EXPECT_EQ(message(S, -1),
+            "build_gps_trace_graph: the option heading_tolerance must be >= 0 degrees "
+            "(FeatureRecon::automatic: the sample's), got -1");
   Gps_trace_sample T = S;
   T.heading_tolerance = -5;
-  EXPECT_NE(message(T, -1).find("sample's heading_tolerance must be >= 0 degrees, got -5"), std::string::npos)
-      << message(T, -1);
+  EXPECT_NE(
+      message(T, FeatureRecon::automatic).find("sample's heading_tolerance must be >= 0 degrees, got -5"),
+      std::string::npos)
+      << message(T, FeatureRecon::automatic);
   EXPECT_EQ(message(T, 30), "no exception");  // not used
   T = S;
   T.headings.pop_back();
@@ -666,14 +694,14 @@ TEST(GpsTraces, SegmentsTheTracesDoNotConfirmAreNotDensified) {
                                     (S.points.row(e[0])[1] + S.points.row(e[1])[1]) / 2));
     return d;
   };
-  o.segment_support = -1;
+  o.segment_support = 0;  // no check
   const Gps_trace_sample all = sample_gps_traces(trips, 30.0, o);
   EXPECT_EQ(all.checked_segments, 0u);
   EXPECT_TRUE(all.all_segments_used);
   EXPECT_GT(farthest_from_streets(all), 40.0);
   EXPECT_GT(farthest_link_middle(all), 40.0);
 
-  o.segment_support = 0;  // automatic: max(20, 2 x 30 / 3) = 20
+  o.segment_support = FeatureRecon::automatic;  // max(20, 2 x 30 / 3) = 20
   const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
   EXPECT_DOUBLE_EQ(S.segment_support, 20.0);
   EXPECT_EQ(S.checked_segments, 3u);  // the dense trips' 10 m segments are confirmed by their own ends
@@ -751,7 +779,7 @@ TEST(GpsTraces, TracesTooSparseToConfirmOneAnotherUseEverySegment) {
   EXPECT_EQ(S.confirmed_segments, 0u);
   EXPECT_TRUE(S.all_segments_used);
   Gps_trace_options unchecked;
-  unchecked.segment_support = -1;
+  unchecked.segment_support = 0;
   const Gps_trace_sample plain = sample_gps_traces(trips, 30.0, unchecked);
   EXPECT_EQ(S.points.data, plain.points.data);
   EXPECT_EQ(S.trip_links, plain.trip_links);
@@ -775,10 +803,12 @@ TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
     for (const double value : values) {
       Gps_trace_options o;
       const std::string option = name;
-      (option == "segment_support"                   ? o.segment_support
-       : option == "min_confirmed_fraction"          ? o.min_confirmed_fraction
-       : option == "min_straight_confirmed_fraction" ? o.min_straight_confirmed_fraction
-                                                     : o.segment_turn_tolerance) = value;
+      if (option == "segment_support")
+        o.segment_support = value;
+      else
+        (option == "min_confirmed_fraction"            ? o.min_confirmed_fraction
+         : option == "min_straight_confirmed_fraction" ? o.min_straight_confirmed_fraction
+                                                       : o.segment_turn_tolerance) = value;
       try {
         sample_gps_traces(trips, 20.0, o);
         ADD_FAILURE() << "expected an exception for " << option << " = " << value;
@@ -821,7 +851,7 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
   // and (10, 0) in one cell and (20, 0) in the next, so every sample meets all three: 9 pairs.
   Gps_trip trip{{0, 0, 0}, {10, 0, 1}, {20, 0, 2}};
   Gps_trace_options o;
-  o.max_link_gap = -1;
+  o.max_link_gap = 0;
   o.sample_spacing = 1;
   o.density_radius = 20;
   o.min_relative_density = 0.05;  // the filter on (off by default here; road_map_trace_options() turns it on)
@@ -841,7 +871,7 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
     // and 1 GB).
     Gps_trace_options l = o;
     l.max_link_gap = 2000;
-    l.segment_support = -1;
+    l.segment_support = 0;
     l.sample_spacing = 0.01;
     l.max_density_pairs = 1000000;
     const std::string n = FeatureRecon::test::invalid_argument_message([&] {
@@ -1180,7 +1210,7 @@ TEST(GpsTraces, TheRulesBoundariesArePinned) {
   for (int k = 0; k < 20; ++k) beside.push_back({{10, 10, 100000.0 + 100 * k}, {60, 10, 100005.0 + 100 * k}});
   beside.push_back({{0, 0, 9000}, {50, 0, 9005}});
   Gps_trace_options lateral;
-  lateral.max_link_gap = -1;
+  lateral.max_link_gap = 0;
   lateral.min_lateral_density = 0.3;
   const Gps_trace_sample B = sample_gps_traces(beside, 20.0, lateral);
   EXPECT_EQ(B.dropped_lateral, 2u);
@@ -1189,7 +1219,7 @@ TEST(GpsTraces, TheRulesBoundariesArePinned) {
   // The density filter's pairs are counted in the cells on every side: the refusal of
   // ADensityFilterOfTooManyPairsIsRefusedBeforeComparing with the trip turned north and reversed.
   Gps_trace_options pairs;
-  pairs.max_link_gap = -1;
+  pairs.max_link_gap = 0;
   pairs.sample_spacing = 1;
   pairs.density_radius = 20;
   pairs.min_relative_density = 0.05;

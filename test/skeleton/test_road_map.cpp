@@ -565,9 +565,22 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   o = {};
   o.spacing = -1;
   EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("spacing"), std::string::npos);
+  o.spacing = 0;  // automatic before FeatureRecon::automatic
+  EXPECT_EQ(
+      message_of([&] { merge_road_lines(street, o); }),
+      "merge_road_lines: spacing must be finite and > 0 (FeatureRecon::automatic: distance / 3), got 0");
   o = {};
   o.delta = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("delta"), std::string::npos);
+  o.delta = -1;
+  EXPECT_EQ(message_of([&] { merge_road_lines(street, o); }),
+            "merge_road_lines: delta must be finite and >= 0 (FeatureRecon::automatic: distance; 0: no "
+            "simplification), got -1");
+  // Automatic values are the documented ones: distance / 3 and distance.
+  o = {};
+  const Road_merge_result defaults = merge_road_lines(street, o);
+  EXPECT_DOUBLE_EQ(defaults.spacing, 8.0 / 3);
+  EXPECT_DOUBLE_EQ(defaults.delta, 8.0);
   // A complex above max_triangles is refused as this stage's, with what to change here.
   o = {};
   o.max_triangles = 100;

@@ -28,9 +28,11 @@ namespace skeleton {
 
 /// Options of embed_reeb_graph().
 struct Embedding_options {
-  /// Width of the function-value bins that cut an arc's points into level-set pieces (same unit as f);
-  /// 0 (default) means automatic: 1/64 of the range of f over the graph.
-  double level_width = 0;
+  /// Width of the function-value bins that cut an arc's points into level-set pieces (same unit as f; > 0,
+  /// infinity: one piece per arc). Automatic (default): 1/64 of the range of f over the graph
+  /// (extract_reeb_skeleton(): the median edge length of the complex). 0 or negative: refused (before
+  /// FeatureRecon::automatic, 0 asked for the automatic width).
+  std::optional<double> level_width = FeatureRecon::automatic;
   /// How a polyline is smoothed (endpoints fixed). Taubin (default): each round moves every interior point
   /// towards the mean of its two neighbours by smoothing_weight (lambda), then away from it by mu = 1 / (0.1
   /// - 1 / lambda) (the pass band of Taubin's lambda|mu filter at 0.1): the jitter of level-set centroids
@@ -50,9 +52,11 @@ struct Embedding_options {
   /// embedding space), the polyline follows the graph's shortest path between their input points (a node's
   /// vertex; the point of a level-set piece closest to its centroid), each path vertex drawn at the mean of
   /// itself and its graph neighbours. Simplification can leave an arc with few or no points of its own
-  /// between nodes far apart; it is then drawn through the data instead of straight across. 0 (default):
-  /// twice the median edge length of the graph; negative: straight segments.
-  double max_gap = 0;
+  /// between nodes far apart; it is then drawn through the data instead of straight across. Automatic
+  /// (default): twice the median edge length of the graph; 0 (or infinity): off, straight segments. Negative:
+  /// refused (before FeatureRecon::automatic, 0 asked for the automatic gap and a negative one turned it
+  /// off).
+  std::optional<double> max_gap = FeatureRecon::automatic;
   /// Called with the fraction of the arcs' points drawn; returning false stops: the arcs not drawn yet are
   /// straight segments between their nodes, and the embedding's status is Status::interrupted.
   Progress_callback progress;
@@ -65,7 +69,7 @@ struct Reeb_graph_embedding {
   /// per arc, first and last = node positions
   std::vector<std::vector<std::array<double, 3>>> arc_polylines;
   /// Gaps of a polyline wider than this were bridged through the graph (Embedding_options::max_gap, or the
-  /// value the automatic setting chose); infinity when nothing was bridged (no graph, or max_gap < 0).
+  /// value the automatic setting chose); infinity when nothing was bridged (no graph, or max_gap 0).
   double max_gap = std::numeric_limits<double>::infinity();
   Status status = Status::success;  ///< interrupted when the progress callback stopped the drawing
 };
@@ -248,8 +252,8 @@ struct Flat_embedding {
   Status status = Status::success;                           ///< see Reeb_graph_embedding::status
 };
 
-/// The level width used when Embedding_options::level_width is 0: 1/64 of the range of the node values (1
-/// when the range is empty).
+/// The level width used when Embedding_options::level_width is automatic: 1/64 of the range of the node
+/// values (1 when the range is empty).
 inline double automatic_level_width(const Reeb_graph& G) {
   if (G.nodes.empty()) return 1.0;
   double fmin = G.nodes.front().value, fmax = fmin;
@@ -262,9 +266,10 @@ inline double automatic_level_width(const Reeb_graph& G) {
 
 /// Checks the values of Embedding_options (throws naming `fn`).
 inline void check_embedding_options(const Embedding_options& options, const char* fn) {
-  if (!(options.level_width >= 0))  // infinity: one piece per arc
+  if (options.level_width && !(*options.level_width > 0))  // infinity: one piece per arc
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "embedding level_width must be >= 0 (0: automatic), got ", options.level_width);
+        fn, "embedding level_width must be > 0 (FeatureRecon::automatic: the automatic width), got ",
+        *options.level_width);
   if (options.smoothing != Embedding_options::Smoothing::taubin &&
       options.smoothing != Embedding_options::Smoothing::laplacian)
     FeatureRecon::internal::throw_invalid_argument(
@@ -277,11 +282,11 @@ inline void check_embedding_options(const Embedding_options& options, const char
   if (!(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "embedding smoothing_weight must lie in [0, 1], got ",
                                                    options.smoothing_weight);
-  if (std::isnan(options.max_gap))
+  if (options.max_gap && !(*options.max_gap >= 0))
     FeatureRecon::internal::throw_invalid_argument(
         fn,
-        "embedding max_gap must not be NaN (0: automatic, negative: "
-        "off)");
+        "embedding max_gap must be >= 0 (FeatureRecon::automatic: twice the median edge length; 0: off), ",
+        "got ", *options.max_gap);
 }
 
 inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency, const Point_matrix& P,
@@ -317,13 +322,13 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
                      [&](std::size_t i) { return P.row(i == 0 ? node.vertex : node.members[i - 1])[k]; });
     E.nodes.push_back(std::move(c));
   }
-  const double width = options.level_width > 0 ? options.level_width : automatic_level_width(G);
+  const double width = options.level_width ? *options.level_width : automatic_level_width(G);
   // Gaps wider than max_gap are bridged by shortest paths of the graph.
   std::unique_ptr<Graph_path_finder> finder;
   double max_gap = std::numeric_limits<double>::infinity();
-  if (adjacency != nullptr && options.max_gap >= 0) {
+  if (adjacency != nullptr && (!options.max_gap || *options.max_gap > 0)) {
     finder = std::make_unique<Graph_path_finder>(*adjacency, P);
-    max_gap = options.max_gap > 0 ? options.max_gap : 2 * finder->median_edge_length();
+    max_gap = options.max_gap ? *options.max_gap : 2 * finder->median_edge_length();
     if (!(max_gap > 0)) {
       finder.reset();
       max_gap = std::numeric_limits<double>::infinity();

@@ -665,11 +665,13 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     result.pruned_points = std::move(pruned.removed_vertices);
   }
   Embedding_options eo = options.embedding;
-  if (eo.level_width == 0) eo.level_width = median_edge_length(K, first);
-  if (eo.level_width == 0) eo.level_width = automatic_level_width(S.graph);  // mostly duplicate points
-  result.level_width = eo.level_width;
+  if (!eo.level_width) {
+    const double median = median_edge_length(K, first);
+    eo.level_width = median > 0 ? median : automatic_level_width(S.graph);  // 0: mostly duplicate points
+  }
+  result.level_width = *eo.level_width;
   const std::vector<std::array<double, 3>> projected = project_to_3d(coordinates);
-  if (eo.max_gap == 0 && !first.empty()) {
+  if (!eo.max_gap && !first.empty()) {
     // The automatic max_gap (twice the median edge length in the embedding) over the edges between first
     // copies, as the level width: with every point given twice (edges of length 0 and repeated lengths) it
     // moved from 1.065 to 1.018 and one more node stayed; 300 copies of one point made it 0 (nothing
@@ -678,7 +680,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
       return point_distance(projected[K.edges[e][0]].data(), projected[K.edges[e][1]].data(), 3);
     });
     // none (all points copies of one): straight segments, as before
-    eo.max_gap = median > 0 ? 2 * median : -1;
+    eo.max_gap = median > 0 ? 2 * median : 0.0;
   }
   eo.progress = stage(0.95, dimension > 3 ? 0.97 : 0.99);
   const Reeb_graph_embedding E = embed_reeb_graph(S.graph, K, projected, A.values(), dimension, eo);
@@ -711,7 +713,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
       if (input > 0 && weight > 0) ratio = input / weight;
     }
     // Saturates (edges near DBL_MAX).
-    result.branch_merge_distance = std::min(2 * eo.level_width * ratio, std::numeric_limits<double>::max());
+    result.branch_merge_distance = std::min(2 * *eo.level_width * ratio, std::numeric_limits<double>::max());
   } else {
     result.branch_merge_distance = *options.branch_merge_distance;
   }

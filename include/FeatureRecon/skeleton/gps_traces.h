@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -37,16 +38,19 @@ struct Gps_fix {
 /// order).
 using Gps_trip = std::vector<Gps_fix>;
 
-/// Options of sample_gps_traces(). A value of 0 asks for the automatic rule given on the field; the values
-/// used are returned in Gps_trace_sample.
+/// Options of sample_gps_traces(). An automatic value (FeatureRecon::automatic, the default of the optional
+/// fields) asks for the rule given on the field, 0 turns a stage off where the field says so, and a negative
+/// value is refused (before FeatureRecon::automatic, 0 asked for the rule and a negative value turned the
+/// stage off); the values used are returned in Gps_trace_sample.
 struct Gps_trace_options {
   /// Greedy thinning in trip order: a trace point joins the first sample created less than this far from it
-  /// (the samples' creation points are this far apart; see mean_positions). 0: half the Rips radius.
-  double sample_spacing = 0;
+  /// (the samples' creation points are this far apart; see mean_positions); > 0. Automatic (default): half
+  /// the Rips radius.
+  std::optional<double> sample_spacing = FeatureRecon::automatic;
   /// Consecutive fixes of a trip at most this far apart are linked: points are inserted along the segment
-  /// every half sample spacing, and consecutive samples become graph edges. 0: four times the median step of
-  /// the data, at least twice the Rips radius. Negative: no linking.
-  double max_link_gap = 0;
+  /// every half sample spacing, and consecutive samples become graph edges. Automatic (default): four times
+  /// the median step of the data, at least twice the Rips radius. 0: no linking.
+  std::optional<double> max_link_gap = FeatureRecon::automatic;
   /// Rips edges join samples whose travel directions (modulo 180 degrees) differ by at most this angle.
   /// Samples of crossing streets then touch only where vehicles turn. 180 (default): directions are ignored.
   double heading_tolerance = 180;
@@ -76,8 +80,8 @@ struct Gps_trace_options {
   /// trips: no direction, they point east) are neither judged nor count as heavy neighbours. 0 (default):
   /// off; road maps use 0.3. In [0, 1].
   double min_lateral_density = 0;
-  /// Radius of the local maxima above. 0: twice the Rips radius.
-  double density_radius = 0;
+  /// Radius of the local maxima above (> 0). Automatic (default): twice the Rips radius.
+  std::optional<double> density_radius = FeatureRecon::automatic;
   /// A sample is compared only with samples whose travel directions differ from its own by at most this angle
   /// (degrees; directed as sampled): the lightly used carriageway of a divided road next to a busy opposite
   /// one, or a side street crossing a main road, is not mistaken for scatter. 180 or more: all samples within
@@ -89,11 +93,11 @@ struct Gps_trace_options {
   /// the corner, and the segment crosses a block where no fix lies. An unconfirmed segment up to four times
   /// this long still links its two ends (no points inserted: the vehicle went from one to the other, the way
   /// is unknown); a longer one breaks the trip like a gap. Segments up to twice this long are confirmed by
-  /// their own ends. 0: two thirds of the Rips radius, at least 20 m (GPS scatter across a street plus half
-  /// the gap between the fixes of light traffic along it; thinned Chicago traces lose recall below 20 m).
-  /// Negative: no check, every segment up to the link gap is used (`featurerecon skeleton --segment-support
-  /// 0`, as for its other stages).
-  double segment_support = 0;
+  /// their own ends. Automatic (default): two thirds of the Rips radius, at least 20 m (GPS scatter across a
+  /// street plus half the gap between the fixes of light traffic along it; thinned Chicago traces lose recall
+  /// below 20 m). 0: no check, every segment up to the link gap is used (`featurerecon skeleton
+  /// --segment-support 0`).
+  std::optional<double> segment_support = FeatureRecon::automatic;
   /// An unconfirmed segment is still used when the trip does not turn there: the directions in which it
   /// arrives at the segment and leaves it (each from the nearest fix at least segment_support away, so that a
   /// vehicle wobbling at a stop does not turn, and not across a gap; those that exist, at least one) lie
@@ -173,13 +177,13 @@ struct Gps_trace_sample {
   std::vector<std::uint32_t> sample_of_fix;  ///< per input fix (trips concatenated in order): its sample
   std::size_t fixes = 0;                     ///< number of input fixes
   double sample_spacing = 0;                 ///< value used
-  double max_link_gap = 0;                   ///< value used (negative: no linking)
+  double max_link_gap = 0;                   ///< value used (0: no linking)
   double median_step = 0;                    ///< median distance between consecutive fixes of a trip
   double density_radius = 0;                 ///< value used
   double density_heading_tolerance = 0;      ///< value used
   std::size_t dropped = 0;                   ///< samples dropped as sparse (their fixes map to no sample: -1)
   std::size_t dropped_lateral = 0;           ///< ... of which only min_lateral_density dropped
-  double segment_support = 0;                ///< value used (negative: no check)
+  double segment_support = 0;                ///< value used (0: no check)
   double segment_turn_tolerance = 0;         ///< value used
   /// segments within the link gap, longer than 2 segment_support, with points to insert
   std::size_t checked_segments = 0;
@@ -401,32 +405,33 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips) {
 /// segment where fixes lie densely (Gps_trace_options::local_support_fixes): O(F log F).
 /// \param rips_radius the radius the samples will be joined at (for the automatic rules).
 /// \throws std::invalid_argument naming the trip and fix with a non-finite coordinate or time, or a
-///   non-positive or non-finite rips_radius, or the option out of range (a negative sample spacing, a
-///   non-finite link gap or segment support, a negative heading tolerance, a negative or non-finite density
-///   radius, a turn tolerance outside [0, 180], a confirmed fraction or a density fraction outside [0, 1]),
-///   fixes beyond 2^50 sample spacings (or radii, or density radii) from the origin, linking that would
-///   insert more than options.max_inserted_points points, or a density filter that would compare more than
-///   options.max_density_pairs pairs of samples.
+///   non-positive or non-finite rips_radius, or the option out of range (a sample spacing or density radius
+///   that is not positive and finite, a negative or non-finite link gap or segment support, a negative
+///   heading tolerance, a turn tolerance outside [0, 180], a confirmed fraction or a density fraction outside
+///   [0, 1]), fixes beyond 2^50 sample spacings (or radii, or density radii) from the origin, linking that
+///   would insert more than options.max_inserted_points points, or a density filter that would compare more
+///   than options.max_density_pairs pairs of samples.
 inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, double rips_radius,
                                           const Gps_trace_options& options = {}) {
   const char* fn = "sample_gps_traces";
   if (!(rips_radius > 0 && std::isfinite(rips_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ",
                                                    rips_radius);
-  if (!(options.sample_spacing >= 0 && std::isfinite(options.sample_spacing)))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "sample_spacing must be finite and >= 0 (0: automatic), got ", options.sample_spacing);
-  if (!std::isfinite(options.max_link_gap))
-    FeatureRecon::internal::throw_invalid_argument(fn,
-                                                   "max_link_gap must be finite (0: automatic, negative: no ",
-                                                   "linking), got ", options.max_link_gap);
+  // Lengths with a rule of their own: unset (automatic), a value, 0 (off) only where it turns a stage off.
+  auto check_length = [fn](const std::optional<double>& value, const char* name, const char* rule,
+                           const char* off) {
+    if (value && !(std::isfinite(*value) && (off != nullptr ? *value >= 0 : *value > 0)))
+      FeatureRecon::internal::throw_invalid_argument(fn, name, " must be finite and ", off ? ">= 0" : "> 0",
+                                                     " (FeatureRecon::automatic: ", rule, off ? "; 0: " : "",
+                                                     off ? off : "", "), got ", *value);
+  };
+  check_length(options.sample_spacing, "sample_spacing", "half the Rips radius", nullptr);
+  check_length(options.max_link_gap, "max_link_gap", "max(4 x the median step, 2 x the Rips radius)",
+               "no linking");
   if (!(options.heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees, got ",
                                                    options.heading_tolerance);
-  if (!(options.density_radius >= 0 && std::isfinite(options.density_radius)))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "density_radius must be finite and >= 0 (0: twice the Rips ", "radius), got ",
-        options.density_radius);
+  check_length(options.density_radius, "density_radius", "twice the Rips radius", nullptr);
   auto check_fraction = [fn](const char* name, double value) {  // in [0, 1], NaN refused
     if (!(value >= 0 && value <= 1))
       FeatureRecon::internal::throw_invalid_argument(fn, name, " must be in [0, 1], got ", value);
@@ -436,10 +441,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   if (!(options.density_heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "density_heading_tolerance must be >= 0 degrees, got ",
                                                    options.density_heading_tolerance);
-  if (!std::isfinite(options.segment_support))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "segment_support must be finite (0: automatic, negative: no ", "check), got ",
-        options.segment_support);
+  check_length(options.segment_support, "segment_support", "max(20, 2/3 x the Rips radius)", "no check");
   if (!(options.segment_turn_tolerance >= 0 && options.segment_turn_tolerance <= 180))
     FeatureRecon::internal::throw_invalid_argument(
         fn, "segment_turn_tolerance must be in [0, 180] degrees, got ", options.segment_turn_tolerance);
@@ -479,10 +481,9 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     S.fixes += trips[t].size();
   }
   S.median_step = median_gps_step(trips);
-  S.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : rips_radius / 2;
-  S.max_link_gap =
-      options.max_link_gap != 0 ? options.max_link_gap : std::max(4 * S.median_step, 2 * rips_radius);
-  S.density_radius = options.density_radius > 0 ? options.density_radius : 2 * rips_radius;
+  S.sample_spacing = options.sample_spacing.value_or(rips_radius / 2);
+  S.max_link_gap = options.max_link_gap.value_or(std::max(4 * S.median_step, 2 * rips_radius));
+  S.density_radius = options.density_radius.value_or(2 * rips_radius);
   // Grid cells are 64-bit integers of position / spacing (or density radius, when that filter is on): beyond
   // 2^50 cells from the origin they would overflow.
   const bool density_filter = options.min_relative_density > 0 || options.min_lateral_density > 0;
@@ -536,8 +537,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   // Which segments the traces confirm (Gps_trace_options::segment_support): use[t][i] for the segment from
   // the i-th to the (i+1)-th fix of trip t in time order.
   enum Segment_use : char { break_trip, densify, link_ends };
-  S.segment_support =
-      options.segment_support != 0 ? options.segment_support : std::max(20.0, 2 * rips_radius / 3);
+  S.segment_support = options.segment_support.value_or(std::max(20.0, 2 * rips_radius / 3));
   S.segment_turn_tolerance = options.segment_turn_tolerance;
   std::vector<std::vector<char>> use(trips.size());
   for (std::size_t t = 0; t < trips.size(); ++t) use[t].assign(trips[t].size(), densify);
@@ -885,10 +885,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
 /// Options of build_gps_trace_graph().
 struct Gps_trace_graph_options {
   /// Rips edges join samples whose travel directions differ by at most this angle (degrees; directed or not,
-  /// as sampled). Negative (default -1): the sample's, Gps_trace_sample::heading_tolerance (the
+  /// as sampled), >= 0. Automatic (default): the sample's, Gps_trace_sample::heading_tolerance (the
   /// Gps_trace_options::heading_tolerance it was sampled with); 180 or more (90 or more for undirected
-  /// samples): directions are ignored.
-  double heading_tolerance = -1;
+  /// samples): directions are ignored. Negative: refused (before FeatureRecon::automatic it asked for the
+  /// sample's).
+  std::optional<double> heading_tolerance = FeatureRecon::automatic;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips edges
   /// Called with the fraction done; returning false stops (the graph is partial; as build_rips_graph()).
   Progress_callback progress;
@@ -897,16 +898,17 @@ struct Gps_trace_graph_options {
 /// The proximity graph of GPS samples: Rips edges of length at most `rips_radius` between samples whose
 /// headings differ by at most the heading tolerance (Gps_trace_graph_options::heading_tolerance; directed or
 /// not, as sampled), plus the trip links; lengths are Euclidean.
-/// \throws std::invalid_argument when the heading tolerance is NaN (or negative in S), when S is inconsistent
+/// \throws std::invalid_argument when the heading tolerance is negative or NaN (in the options or in S), when S is inconsistent
 ///         (points not planar or not one heading per point, a heading outside its range, a trip link naming a
 ///         missing sample or joining a sample to itself), or as build_rips_graph().
 inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double rips_radius,
                                              const Gps_trace_graph_options& options = {}) {
   const char* fn = "build_gps_trace_graph";
-  if (std::isnan(options.heading_tolerance))
-    FeatureRecon::internal::throw_invalid_argument(fn, "the option heading_tolerance is NaN");
-  const double heading_tolerance =
-      options.heading_tolerance < 0 ? S.heading_tolerance : options.heading_tolerance;
+  if (options.heading_tolerance && !(*options.heading_tolerance >= 0))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the option heading_tolerance must be >= 0 degrees (FeatureRecon::automatic: the sample's), got ",
+        *options.heading_tolerance);
+  const double heading_tolerance = options.heading_tolerance.value_or(S.heading_tolerance);
   if (!(heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(
         fn, "the sample's heading_tolerance must be >= 0 degrees, got ", heading_tolerance);

@@ -100,18 +100,20 @@ struct Road_merge_options {
   /// the 3-5 m that separate the two directions of a street and the 10 m or more of a divided road's
   /// carriageways.
   double distance = 8;
-  /// The edges are sampled at most this far apart before the neighbourhood is built. 0 (default): distance
-  /// / 3. Two lines whose samples lie this far apart along them are joined by triangles wherever the samples
-  /// fall while the lines are less than sqrt(distance^2 - spacing^2) apart (0.94 distance). A quarter of the
-  /// distance (before session 52) drew maps of the same quality (F within 0.012 either way on 28 cities and
-  /// thinned or noisy traces, mean -0.0003) in about twice the time (the merge of a 680 km city: 13 s ->
-  /// 7.1 s); a half took less time still but left lines 7-8 m apart unmerged (a 200-trip synthetic city
-  /// 0.812 -> 0.799). benchmark/README.md, "The merge samples every third of its distance".
-  double spacing = 0;
+  /// The edges are sampled at most this far apart before the neighbourhood is built (> 0). Automatic
+  /// (default): distance / 3. Two lines whose samples lie this far apart along them are joined by triangles
+  /// wherever the samples fall while the lines are less than sqrt(distance^2 - spacing^2) apart (0.94
+  /// distance). A quarter of the distance (before session 52) drew maps of the same quality (F within 0.012
+  /// either way on 28 cities and thinned or noisy traces, mean -0.0003) in about twice the time (the merge of
+  /// a 680 km city: 13 s -> 7.1 s); a half took less time still but left lines 7-8 m apart unmerged (a
+  /// 200-trip synthetic city 0.812 -> 0.799). benchmark/README.md, "The merge samples every third of its
+  /// distance".
+  std::optional<double> spacing = FeatureRecon::automatic;
   /// Branches and loops of persistence up to this (along the map) are removed from the skeleton: stubs where
-  /// two lines meet at an angle. 0 (default): `distance`.
-  double delta = 0;
-  /// How the merged lines are drawn (level width 0: automatic); default road_merge_embedding_options().
+  /// two lines meet at an angle. Automatic (default): `distance`; 0: none.
+  std::optional<double> delta = FeatureRecon::automatic;
+  /// How the merged lines are drawn (level width automatic: the median edge length of the neighbourhood);
+  /// default road_merge_embedding_options().
   Embedding_options embedding = road_merge_embedding_options();
   /// Skeleton_options::max_triangles of the neighbourhood's complex (its samples lie at least spacing / 2
   /// apart, so it stays far below the default unless `distance` is very large against `spacing`). The merge
@@ -409,20 +411,21 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 /// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose
 ///   length overflows, edges that would need more than `max_samples` points inserted along them (naming the
 ///   longest edge), a neighbourhood complex with more than `max_triangles` triangles (checked before any is
-///   stored), a non-positive or non-finite distance, negative spacing or delta, or bad `embedding` options
-///   (named by extract_reeb_skeleton()).
+///   stored), a non-positive or non-finite distance or spacing, a negative or non-finite delta, or bad
+///   `embedding` options (named by extract_reeb_skeleton()).
 inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
                                           const Road_merge_options& options = {}) {
   const char* fn = "merge_road_lines";
   if (!(options.distance > 0 && std::isfinite(options.distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "distance must be positive and finite, got ",
                                                    options.distance);
-  if (!(options.spacing >= 0 && std::isfinite(options.spacing)))
+  if (options.spacing && !(*options.spacing > 0 && std::isfinite(*options.spacing)))
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "spacing must be finite and >= 0 (0: distance / 3), got ", options.spacing);
-  if (!(options.delta >= 0 && std::isfinite(options.delta)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "delta must be finite and >= 0 (0: distance), got ",
-                                                   options.delta);
+        fn, "spacing must be finite and > 0 (FeatureRecon::automatic: distance / 3), got ", *options.spacing);
+  if (options.delta && !(*options.delta >= 0 && std::isfinite(*options.delta)))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "delta must be finite and >= 0 (FeatureRecon::automatic: distance; 0: no simplification), got ",
+        *options.delta);
   for (std::size_t v = 0; v < map.positions.size(); ++v)
     if (!std::isfinite(map.positions[v][0]) || !std::isfinite(map.positions[v][1]))
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has a non-finite coordinate");
@@ -432,8 +435,8 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
           fn, "edge ", e, " (", map.edges[e][0], ", ", map.edges[e][1],
           ") has an end out of range: the map has ", map.positions.size(), " vertices");
   Road_merge_result r;
-  r.spacing = options.spacing > 0 ? options.spacing : options.distance / 3;
-  r.delta = options.delta > 0 ? options.delta : options.distance;
+  r.spacing = options.spacing.value_or(options.distance / 3);
+  r.delta = options.delta.value_or(options.distance);
   // Repeated and reversed edges once, loops dropped.
   std::vector<Edge> edges;
   for (const Edge& e : map.edges)
@@ -602,7 +605,7 @@ struct Road_map_options {
   std::optional<double> branch_merge_distance = 0.0;
   /// Skeleton_options::max_triangles of the skeleton and of the merging stage (Road_merge_options).
   std::size_t max_triangles = Skeleton_options().max_triangles;
-  /// How arcs are drawn (level width 0: median edge length of the complex); default
+  /// How arcs are drawn (level width automatic: median edge length of the complex); default
   /// road_map_embedding_options().
   Embedding_options embedding = road_map_embedding_options();
   /// Last stage: lines of the map closer than this become one (merge_road_lines()). Driving directions keep a
