@@ -16,11 +16,13 @@ namespace FeatureRecon {
 /// returning false asks the algorithm to stop early (its result then says `interrupted`).
 using Progress_callback = std::function<bool(double)>;
 
-/// The value of an option that has a rule of its own (a `std::optional` field of an options struct):
-/// `options.delta = FeatureRecon::automatic;` asks for the rule the field documents. Every such option means
-/// the same by its values: unset (`automatic`, the same as `std::nullopt`) for the rule, a value for itself,
-/// 0 for off where a value can turn the stage off (no simplification, no repair, no merging, no linking); a
-/// negative value is refused (std::invalid_argument naming the option).
+/// The value of an option that has a rule of its own (a `std::optional` field of an options struct; the
+/// skeleton subsystem's): `options.delta = FeatureRecon::automatic;` asks for the rule the field documents.
+/// Every such option means the same by its values: unset (`automatic`, the same as `std::nullopt`; beware
+/// that `options.delta = {}` unsets it too) for the rule, a value for itself, 0 for off where a value can
+/// turn the stage off (no simplification, no repair, no merging, no linking); a negative value is refused
+/// (std::invalid_argument naming the option). The sampling options read 0 as automatic for lengths and
+/// counts that cannot be 0 (Sampling_options::max_radius, domain_measure, ...), as their fields say.
 inline constexpr std::nullopt_t automatic = std::nullopt;
 
 /// Outcome of an algorithm run.

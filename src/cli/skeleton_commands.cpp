@@ -413,7 +413,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   options.max_triangles = max_triangles_option(args);
   double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
-  if (spacing < 0) throw Usage_error("--sample-spacing must be >= 0");
+  if (spacing < 0 && !gps) throw Usage_error("--sample-spacing must be >= 0 (0: no thinning)");
   const bool quiet = args.has("quiet");
   if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
                args.has("min-lateral-density") || args.has("density-radius") ||
@@ -702,7 +702,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     spacing = sample.sample_spacing;
     m = sample.points;
     s = std::move(road.skeleton);
-    use_merged = *road.used.merge_distance > 0 && road.status != Status::degenerate_input;
+    // merge_road_lines() ran (a skeleton pruned empty leaves nothing to merge: it did not)
+    use_merged = *road.used.merge_distance > 0 && road.merged.samples > 0;
     if (use_merged) merged = std::move(road.merged.skeleton);
     // Without merging the map is the skeleton itself: its length before and after.
     const double unmerged_length =

@@ -315,6 +315,10 @@ expect(skeleton_level_width_zero 2 "--level-width must be > 0" skeleton --points
 # Tracks: as in the library, unset is automatic and 0 turns linking off; a negative link gap (no linking before)
 # and a sample spacing of 0 (automatic before) are refused.
 expect(skeleton_link_gap_off 0 "\"link_gap\": 0, .*\"trip_links\": 0," skeleton --tracks ${DATA}/block_tracks.txt --link-gap 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b --quiet)
+# Unlinked, the block's samples are pruned away: the merge does not run, and the JSON has no merge_ fields.
+if(last_output MATCHES "merge_level_width|merge_samples")
+  message(SEND_ERROR "skeleton_link_gap_off: the JSON reports a merge that did not run:\n${last_output}")
+endif()
 expect(skeleton_link_gap_negative 2 "--link-gap must be >= 0 metres \\(0: no linking; unset: automatic\\), got '-1'" skeleton --tracks ${DATA}/block_tracks.txt --link-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_tracks_spacing_zero 2 "--sample-spacing must be > 0 with --tracks \\(unset: R/2\\), got '0'" skeleton --tracks ${DATA}/block_tracks.txt --sample-spacing 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_ink 2 "--ink must be dark or bright, got 'grey'" skeleton --image ${WORK}/ring.pgm --ink grey --out-vertices ${WORK}/a --out-edges ${WORK}/b)

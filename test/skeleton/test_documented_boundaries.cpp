@@ -253,8 +253,7 @@ TEST(DocumentedBoundaries, EmbeddingSmoothingRoundsAndAutomaticMaxGap) {
   Embedding_options o;
   o.smoothing = Embedding_options::Smoothing::laplacian;
   o.smoothing_iterations = 1;
-  o.level_width = 100;  // one piece
-  o.max_gap = 0;        // straight
+  o.level_width = 100;  // one piece (no graph: straight between pieces, max_gap unused)
   const Reeb_graph_embedding E = embed_reeb_graph(G, positions, values, 2, o);
   ASSERT_EQ(E.arc_polylines[0].size(), 3u);
   EXPECT_EQ(E.arc_polylines[0][1][0], 2.25);  // 0.5 * (1, 1) + 0.5 * mean of (0, 0) and (7, 0)

@@ -309,8 +309,8 @@ TEST(EmbedReebGraph, ArcsWithoutPointsFollowTheGraph) {
   bad = {};
   bad.level_width = 0;
   EXPECT_EQ(FeatureRecon::test::invalid_argument_message([&] { embed_reeb_graph(G, g, xyz, f, 2, bad); }),
-            "embed_reeb_graph: embedding level_width must be > 0 (FeatureRecon::automatic: the automatic "
-            "width), got 0");
+            "embed_reeb_graph: embedding level_width must be > 0 (FeatureRecon::automatic: 1/64 of the range "
+            "of f; in extract_reeb_skeleton(), the median edge length of the complex), got 0");
 }
 
 TEST(EmbedReebGraph, AnArcBetweenNodesAtOnePlaceKeepsItsPoints) {

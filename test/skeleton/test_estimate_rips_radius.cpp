@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -86,9 +87,10 @@ Point_matrix noisy_trefoil(std::size_t n, double noise, std::uint32_t seed) {
   return m;
 }
 
-Topology skeleton_shape(const Point_matrix& m, double radius, double delta = -1) {
+/// The skeleton's topology at `radius` with `delta` (unset: delta = radius).
+Topology skeleton_shape(const Point_matrix& m, double radius, std::optional<double> delta = std::nullopt) {
   Skeleton_options o;
-  o.delta = delta < 0 ? radius : delta;
+  o.delta = delta.value_or(radius);
   const Reeb_skeleton s = extract_reeb_skeleton(m, radius, o);
   EXPECT_EQ(s.status, Status::success);
   return topology(s.graph);
@@ -474,7 +476,7 @@ TEST(EstimateRipsRadius, DistanceMatrixGivesTheSameEstimate) {
   EXPECT_EQ(s.rips_radius, a.radius);
   EXPECT_EQ(s.delta, a.delta);
   EXPECT_EQ(topology(s.graph).loops, 1u);
-  // With a given radius, a negative delta is the suggested one at that radius.
+  // With a given radius, an automatic delta is the suggested one at that radius.
   EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, a.radius, o).delta, a.delta);
   EXPECT_EQ(extract_reeb_skeleton_from_distance_matrix(matrix, 4 * a.scale, o).delta, 4 * a.scale);
   matrix(0, 1) = -1;  // refused as the other distance-matrix functions refuse it
@@ -485,7 +487,7 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
   const Point_matrix m = noisy_circle(600, 0.3, 7);
   const Rips_radius_estimate e = estimate_rips_radius(m);
   Skeleton_options o;
-  o.delta = e.radius;  // as given (a negative delta stands for e.delta)
+  o.delta = e.radius;  // as given (FeatureRecon::automatic stands for e.delta)
   std::vector<double> seen;
   o.progress = test::recording_progress(seen);
   const Reeb_skeleton one_call = extract_reeb_skeleton(m, o);
@@ -533,8 +535,8 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
         invalid_argument_message([&] { extract_reeb_skeleton(m, e.radius, o); }),
         invalid_argument_message([&] { extract_reeb_skeleton(build_rips_graph(m, e.radius), m, o); })})
     EXPECT_EQ(message,
-              "extract_reeb_skeleton: delta must be finite and >= 0 (FeatureRecon::automatic: the suggested "
-              "delta; 0: no simplification), got -1");
+              "extract_reeb_skeleton: delta must be finite and >= 0 (0: no simplification; "
+              "FeatureRecon::automatic: the suggested delta, with points or a distance matrix), got -1");
 
   // Both callbacks hear the estimate: the run's (first tenth) and the estimate's own (0 to 1).
   Rips_radius_options ro;

@@ -781,6 +781,9 @@ TEST(GpsTraces, TracesTooSparseToConfirmOneAnotherUseEverySegment) {
   Gps_trace_options unchecked;
   unchecked.segment_support = 0;
   const Gps_trace_sample plain = sample_gps_traces(trips, 30.0, unchecked);
+  EXPECT_EQ(plain.segment_support, 0.0);  // 0 is off, not the automatic 20
+  EXPECT_EQ(plain.checked_segments, 0u);
+  EXPECT_TRUE(plain.all_segments_used);
   EXPECT_EQ(S.points.data, plain.points.data);
   EXPECT_EQ(S.trip_links, plain.trip_links);
   // With the fraction at 0 the check always applies: the trip breaks at every segment longer than 4 x 20.

@@ -103,6 +103,32 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
   const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
   EXPECT_DOUBLE_EQ(used.merge_distance.value(), 8);
   const Road_merge_result merged = merge_road_lines(lines, road_map_merge_options(used));
+  // The merge's delta: automatic is its distance; 0 simplifies nothing (stubs where lines meet stay).
+  EXPECT_DOUBLE_EQ(merged.delta, 8);
+  Road_merge_options unsimplified = road_map_merge_options(used);
+  unsimplified.delta = 0;
+  const Road_merge_result stubs = merge_road_lines(lines, unsimplified);
+  EXPECT_EQ(stubs.delta, 0.0);
+  EXPECT_GT(num_edges(stubs.skeleton), num_edges(merged.skeleton) + 10);
+  // The values used reproduce the map, and every optional field is set after the run.
+  const Road_map again = extract_road_map(city.trips, m.used);
+  EXPECT_EQ(again.map.positions, m.map.positions);
+  EXPECT_EQ(again.map.edges, m.map.edges);
+  for (const std::optional<double>& field :
+       {m.used.rips_radius, m.used.delta, m.used.repair_distance, m.used.prune_height, m.used.merge_distance,
+        m.used.branch_merge_distance, m.used.traces.sample_spacing, m.used.traces.max_link_gap,
+        m.used.traces.density_radius, m.used.traces.segment_support, m.used.embedding.level_width,
+        m.used.embedding.max_gap})
+    EXPECT_TRUE(field.has_value());
+  EXPECT_EQ(*m.used.traces.sample_spacing, m.sample.sample_spacing);
+  EXPECT_EQ(*m.used.embedding.level_width, m.skeleton.level_width);
+  // Options not resolved are refused by the stage helpers, naming the field.
+  EXPECT_EQ(message_of([] { road_map_skeleton_options(Road_map_options{}); }),
+            "road_map_skeleton_options: the options' delta is automatic: pass the result of "
+            "resolve_road_map_options()");
+  EXPECT_EQ(message_of([] { road_map_merge_options(Road_map_options{}); }),
+            "road_map_merge_options: the options' merge_distance is automatic: pass the result of "
+            "resolve_road_map_options()");
   EXPECT_EQ(m.map.positions, merged.map.positions);
   EXPECT_EQ(m.map.edges, merged.map.edges);
   EXPECT_EQ(m.sample.points.data, S.points.data);

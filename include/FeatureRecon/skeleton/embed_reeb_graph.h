@@ -268,7 +268,9 @@ inline double automatic_level_width(const Reeb_graph& G) {
 inline void check_embedding_options(const Embedding_options& options, const char* fn) {
   if (options.level_width && !(*options.level_width > 0))  // infinity: one piece per arc
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "embedding level_width must be > 0 (FeatureRecon::automatic: the automatic width), got ",
+        fn,
+        "embedding level_width must be > 0 (FeatureRecon::automatic: 1/64 of the range of f; in "
+        "extract_reeb_skeleton(), the median edge length of the complex), got ",
         *options.level_width);
   if (options.smoothing != Embedding_options::Smoothing::taubin &&
       options.smoothing != Embedding_options::Smoothing::laplacian)
@@ -326,7 +328,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   // Gaps wider than max_gap are bridged by shortest paths of the graph.
   std::unique_ptr<Graph_path_finder> finder;
   double max_gap = std::numeric_limits<double>::infinity();
-  if (adjacency != nullptr && (!options.max_gap || *options.max_gap > 0)) {
+  if (adjacency != nullptr && (!options.max_gap || (*options.max_gap > 0 && !std::isinf(*options.max_gap)))) {
     finder = std::make_unique<Graph_path_finder>(*adjacency, P);
     max_gap = options.max_gap ? *options.max_gap : 2 * finder->median_edge_length();
     if (!(max_gap > 0)) {
@@ -794,7 +796,7 @@ Classical_mds classical_mds_3d(const Matrix& D, const Classical_mds_options& opt
 /// \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param values f per
 ///   point.
 /// \pre every vertex of G indexes positions and values, with finite coordinates and value (checked; throws
-///      naming the vertex); level_width >= 0, weight in [0, 1] (checked; throws).
+///      naming the vertex); level_width automatic or > 0, weight in [0, 1] (checked; throws).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G,
                                              const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,
@@ -835,7 +837,8 @@ inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_gra
 /// largest piece, so removed features do not pull it off the surviving path. Where consecutive polyline
 /// points lie farther apart than Embedding_options::max_gap, the polyline follows the graph's shortest path
 /// between them.
-/// \pre graph.number_of_vertices == positions.size() (checked; throws); max_gap not NaN (checked; throws).
+/// \pre graph.number_of_vertices == positions.size() (checked; throws); max_gap automatic or >= 0 (checked;
+///      throws; 0 and infinity: no bridging).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Proximity_graph& graph,
                                              const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,

@@ -502,10 +502,12 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
         fn,
         "delta is automatic (the suggested delta), which needs points or a distance matrix: give a value");
   if (!(*options.delta >= 0 && std::isfinite(*options.delta)))
-    FeatureRecon::internal::throw_invalid_argument(fn,
-                                                   "delta must be finite and >= 0 (FeatureRecon::automatic: "
-                                                   "the suggested delta; 0: no simplification), got ",
-                                                   *options.delta);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn,
+        "delta must be finite and >= 0 (0: no simplification; "
+        "FeatureRecon::automatic: the suggested delta, with points "
+        "or a distance matrix), got ",
+        *options.delta);
   if (!(options.repair_distance >= 0 && std::isfinite(options.repair_distance)))
     FeatureRecon::internal::throw_invalid_argument(
         fn, "repair_distance must be finite and >= 0 (0: no repair), got ", options.repair_distance);

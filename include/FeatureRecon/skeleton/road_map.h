@@ -7,13 +7,14 @@
 // skeleton stages of extract_reeb_skeleton.h, with every unset parameter derived from the data. The same
 // rules drive `featurerecon skeleton --tracks`. Stage by stage:
 //
-//   const Road_map_options used = resolve_road_map_options(trips, options);
-//   const Gps_trace_sample S = sample_gps_traces(trips, used.rips_radius, used.traces);
-//   const Proximity_graph g = build_gps_trace_graph(S, used.rips_radius);
+//   const Road_map_options used = resolve_road_map_options(trips, options);  // every optional field set
+//   const double R = *used.rips_radius;
+//   const Gps_trace_sample S = sample_gps_traces(trips, R, used.traces);
+//   const Proximity_graph g = build_gps_trace_graph(S, R);
 //   const Reeb_skeleton k = extract_reeb_skeleton(g, S.points, road_map_skeleton_options(used));
 //   const Embedded_graph_2 lines = skeleton_to_road_map(k.graph);
 //   const Embedded_graph_2 map = merge_road_lines(lines, road_map_merge_options(used)).map;  // when
-//   used.merge_distance > 0
+//   *used.merge_distance > 0
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
@@ -624,15 +625,20 @@ struct Road_map {
   /// the merging stage (its `map` is moved to `map`); status success and empty if off
   Road_merge_result merged;
   Gps_trace_sample sample;  ///< the samples the skeleton is built on, with the trace parameters used
-  /// the options with every automatic value filled in (each optional field set; no progress callback)
+  /// The options with the values used (no progress callback): resolve_road_map_options()'s fields, then, as
+  /// the stages run, the trace options' automatic lengths (from `sample`) and the embedding's level width and
+  /// gap and the branch merge distance (from `skeleton`). After a run that completed every optional field
+  /// is set, except a level width that no complex gave (no samples: automatic), and extract_road_map(trips,
+  /// used) draws the same map; a stopped run leaves the fields of the stages it did not reach automatic.
   Road_map_options used;
   Status status = Status::success;  ///< degenerate_input when no fix is left; interrupted by the callback
 };
 
-/// The options with every automatic value of extract_road_map() filled in (every optional field set: delta,
-/// repair, prune and merge distance are 0 when turned off; an automatic branch merge distance is set to the
-/// level width's, which the skeleton derives, only in Road_map::skeleton). The trace options' own automatic
-/// values are left to sample_gps_traces().
+/// The options with the automatic values of extract_road_map() that the fixes decide filled in: the radius,
+/// delta, repair, prune and merge distance (0 when turned off). The rules of the trace options and of the
+/// skeleton (level width, gap, an automatic branch merge distance) need the samples and the complex: they are
+/// left automatic here, for sample_gps_traces() and extract_reeb_skeleton() (Road_map::used has them after a
+/// run).
 /// \throws std::invalid_argument naming a non-finite or negative option, a radius that is 0, a non-positive
 ///   clamp, min_radius > max_radius, or a radius above 1e300.
 inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips,
@@ -676,12 +682,25 @@ inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& tr
   return u;
 }
 
+namespace internal {
+/// The value of a field that resolve_road_map_options() sets; refuses options it did not resolve.
+inline double resolved(const std::optional<double>& value, const char* fn, const char* name) {
+  if (!value)
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the options' ", name, " is automatic: pass the result of resolve_road_map_options()");
+  return *value;
+}
+}  // namespace internal
+
 /// The skeleton options of a resolved Road_map_options (the progress callback is not copied).
+/// \throws std::invalid_argument when delta, repair_distance or prune_height is automatic (options not
+///   resolved by resolve_road_map_options()).
 inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) {
+  const char* fn = "road_map_skeleton_options";
   Skeleton_options o;
-  o.delta = used.delta.value();
-  o.repair_distance = used.repair_distance.value();
-  o.prune_height = used.prune_height.value();
+  o.delta = internal::resolved(used.delta, fn, "delta");
+  o.repair_distance = internal::resolved(used.repair_distance, fn, "repair_distance");
+  o.prune_height = internal::resolved(used.prune_height, fn, "prune_height");
   o.connect_dead_ends = used.connect_dead_ends;
   o.trim_stubs = used.trim_stubs;
   o.branch_merge_distance = used.branch_merge_distance;
@@ -691,9 +710,11 @@ inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) 
 }
 
 /// The merging options of a resolved Road_map_options (used.merge_distance > 0; spacing, delta automatic).
+/// \throws std::invalid_argument when merge_distance is automatic (options not resolved by
+///   resolve_road_map_options()).
 inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
   Road_merge_options o;
-  o.distance = used.merge_distance.value();
+  o.distance = internal::resolved(used.merge_distance, "road_map_merge_options", "merge_distance");
   o.max_triangles = used.max_triangles;
   return o;
 }
@@ -719,6 +740,10 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
   if (options.progress) to.progress = [&options](double t) { return options.progress(0.1 * t); };
   const double radius = r.used.rips_radius.value();
   r.sample = sample_gps_traces(trips, radius, to);
+  r.used.traces.sample_spacing = r.sample.sample_spacing;
+  r.used.traces.max_link_gap = r.sample.max_link_gap;
+  r.used.traces.density_radius = r.sample.density_radius;
+  r.used.traces.segment_support = r.sample.segment_support;
   if (r.sample.status == Status::interrupted ||
       !FeatureRecon::internal::report_progress(options.progress, 0.1)) {
     r.status = Status::interrupted;
@@ -743,6 +768,11 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
   graph = Proximity_graph();  // freed before the lines are merged
   r.status = r.skeleton.status;
   if (r.status == Status::interrupted) return r;
+  // The skeleton's values used (a level width of 0: no complex to take it from; a gap of infinity: none
+  // bridged, as with 0).
+  if (r.skeleton.level_width > 0) r.used.embedding.level_width = r.skeleton.level_width;
+  r.used.embedding.max_gap = std::isinf(r.skeleton.max_gap) ? 0.0 : r.skeleton.max_gap;
+  r.used.branch_merge_distance = r.skeleton.branch_merge_distance;
   r.map = skeleton_to_road_map(r.skeleton.graph);
   if (*r.used.merge_distance > 0 && !r.map.positions.empty()) {
     Road_merge_options mo = road_map_merge_options(r.used);
