@@ -581,19 +581,16 @@ int run_skeleton(const std::vector<std::string>& argv) {
                           args.get("sample-spacing") + "'");
       go.sample_spacing = spacing;
     }
-    if (args.has("link-gap")) {
-      const double v = args.get_double("link-gap");
+    auto length_or_off = [&args](const std::string& flag, const char* off) -> std::optional<double> {
+      if (!args.has(flag)) return FeatureRecon::automatic;
+      const double v = args.get_double(flag);
       if (!(v >= 0 && std::isfinite(v)))
-        throw Usage_error("--link-gap must be >= 0 metres (0: no linking; unset: automatic), got '" +
-                          args.get("link-gap") + "'");
-      go.max_link_gap = v;
-    }
-    if (args.has("segment-support")) {
-      const double v = args.get_double("segment-support");
-      if (!(v >= 0 && std::isfinite(v)))
-        throw Usage_error("--segment-support must be >= 0 metres (0: no check)");
-      go.segment_support = v;
-    }
+        throw Usage_error("--" + flag + " must be >= 0 metres and finite (0: " + off +
+                          "; unset: automatic), got '" + args.get(flag) + "'");
+      return v;
+    };
+    go.max_link_gap = length_or_off("link-gap", "no linking");
+    go.segment_support = length_or_off("segment-support", "no check");
     if (args.has("segment-turn-tolerance"))
       go.segment_turn_tolerance = args.get_double("segment-turn-tolerance");
     if (!(go.segment_turn_tolerance >= 0 && go.segment_turn_tolerance <= 180))

@@ -319,7 +319,7 @@ expect(skeleton_link_gap_off 0 "\"link_gap\": 0, .*\"trip_links\": 0," skeleton 
 if(last_output MATCHES "merge_level_width|merge_samples")
   message(SEND_ERROR "skeleton_link_gap_off: the JSON reports a merge that did not run:\n${last_output}")
 endif()
-expect(skeleton_link_gap_negative 2 "--link-gap must be >= 0 metres \\(0: no linking; unset: automatic\\), got '-1'" skeleton --tracks ${DATA}/block_tracks.txt --link-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
+expect(skeleton_link_gap_negative 2 "--link-gap must be >= 0 metres and finite \\(0: no linking; unset: automatic\\), got '-1'" skeleton --tracks ${DATA}/block_tracks.txt --link-gap -1 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_tracks_spacing_zero 2 "--sample-spacing must be > 0 with --tracks \\(unset: R/2\\), got '0'" skeleton --tracks ${DATA}/block_tracks.txt --sample-spacing 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_ink 2 "--ink must be dark or bright, got 'grey'" skeleton --image ${WORK}/ring.pgm --ink grey --out-vertices ${WORK}/a --out-edges ${WORK}/b)
 expect(skeleton_image_threshold 2 "--ink-threshold must be an integer grey level in \\[1, 255\\], got '0'" skeleton --image ${WORK}/ring.pgm --ink-threshold 0 --out-vertices ${WORK}/a --out-edges ${WORK}/b)
