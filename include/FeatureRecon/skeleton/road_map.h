@@ -7,7 +7,7 @@
 // skeleton stages of extract_reeb_skeleton.h, with every unset parameter derived from the data. The same
 // rules drive `featurerecon skeleton --tracks`. Stage by stage:
 //
-//   const Road_map_options used = resolve_road_map_options(trips, options);  // every optional field set
+//   const Road_map_options used = resolve_road_map_options(trips, options);  // radius, delta, ... set
 //   const double R = *used.rips_radius;
 //   const Gps_trace_sample S = sample_gps_traces(trips, R, used.traces);
 //   const Proximity_graph g = build_gps_trace_graph(S, R);
