@@ -3,6 +3,8 @@
 #ifndef FEATURERECON_ASSERTIONS_H
 #define FEATURERECON_ASSERTIONS_H
 
+#include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -36,6 +38,21 @@ std::string message(const char* function, const Args&... args) {
 template <class... Args>
 [[noreturn]] void throw_invalid_argument(const char* function, const Args&... args) {
   throw std::invalid_argument(message(function, args...));
+}
+
+/// Checks an option that has a rule of its own (see FeatureRecon::automatic): unset passes; a value must be
+/// > 0, or >= 0 when `off` says what 0 means; it must be finite unless `infinity_allowed`; NaN never
+/// passes. The message names the option, its range, its rule and its off value: "name must be finite and >=
+/// 0 (FeatureRecon::automatic: rule; 0: off), got value".
+inline void check_optional_length(const char* function, const std::optional<double>& value, const char* name,
+                                  const char* rule, const char* off = nullptr,
+                                  bool infinity_allowed = false) {
+  if (!value) return;
+  const double v = *value;
+  if ((off != nullptr ? v >= 0 : v > 0) && (infinity_allowed || std::isfinite(v))) return;
+  throw_invalid_argument(function, name, " must be ", infinity_allowed ? "" : "finite and ",
+                         off != nullptr ? ">= 0" : "> 0", " (FeatureRecon::automatic: ", rule,
+                         off != nullptr ? "; 0: " : "", off != nullptr ? off : "", "), got ", v);
 }
 }  // namespace internal
 }  // namespace FeatureRecon

@@ -353,6 +353,18 @@ void warn_few_fixes_per_trip(const char* command, const std::string& path, const
                command, path.c_str(), fixes, tracks.trips.size());
 }
 
+void refuse_degree_tracks(const std::string& path, const std::vector<skeleton::Gps_trip>& trips,
+                          double median_step) {
+  if (!(median_step > 0 && median_step < 0.01)) return;
+  for (const skeleton::Gps_trip& trip : trips)
+    for (const skeleton::Gps_fix& f : trip)
+      if (!(std::abs(f.x) <= 180 && std::abs(f.y) <= 90)) return;
+  throw io::Input_error(path + ": the fixes look like longitude and latitude in degrees (median step " +
+                        json_number(median_step) +
+                        ", all within +-180 and +-90), but the tracks are read in metres: give --lonlat, or "
+                        "project them to metres first");
+}
+
 skeleton::Transverse_mercator lonlat_projection(const std::vector<Lonlat_source>& sources) {
   std::vector<std::array<double, 2>> all;
   for (const Lonlat_source& source : sources)

@@ -157,6 +157,12 @@ Track_input read_tracks(const std::string& path, bool keep_points = true);
 /// instead of its directory.
 void warn_few_fixes_per_trip(const char* command, const std::string& path, const Track_input& tracks);
 
+/// Refuses (io::Input_error naming `path`) trips read in metres whose fixes look like longitude and latitude
+/// in degrees: a median step between consecutive fixes of a trip below 0.01 with every fix within +-180 and
+/// +-90. `median_step` is median_gps_step(trips).
+void refuse_degree_tracks(const std::string& path, const std::vector<skeleton::Gps_trip>& trips,
+                          double median_step);
+
 /// Formats a double for JSON (17 significant digits; non-finite as null).
 std::string json_number(double x);
 

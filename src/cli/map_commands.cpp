@@ -122,6 +122,10 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
                               ", all within +-180 and +-90), but the maps are read in metres: "
                               "give --lonlat, or project them to metres first");
     }
+  if (!lonlat)  // tracks in degrees: no truth sample lies near a fix (every sample "driven by 0 trips")
+    for (const auto& [flag, input] :
+         {std::make_pair("crop-to-tracks", &crop_input), std::make_pair("tracks", &track_input)})
+      if (args.has(flag)) refuse_degree_tracks(args.get(flag), input->trips, median_gps_step(input->trips));
   Transverse_mercator projection;
   if (lonlat) {
     projection = lonlat_projection({{p[0], &gt.positions, &gt_lines},
@@ -263,6 +267,10 @@ int run_synthetic_city(const std::vector<std::string>& argv) {
     o.layout = Synthetic_city_layout::organic;
   else if (layout != "grid")
     throw Usage_error("--layout must be grid or organic, got '" + layout + "'");
+  if (o.layout == Synthetic_city_layout::organic && args.has("jitter"))
+    throw Usage_error(
+        "--jitter applies to --layout grid only (the organic layout places its intersections "
+        "by dart throwing and does not jitter them)");
   // Ranges are checked here so that the message names the option (the library names its fields).
   auto count = [&](const char* name, std::size_t& field, long long least, long long most) {
     if (!args.has(name)) return;

@@ -367,9 +367,13 @@ int run_skeleton(const std::vector<std::string>& argv) {
   }
   Skeleton_options options;
   options.delta = args.has("delta") ? args.get_double("delta") : gps ? 0.0 : image ? 2 * radius : radius;
-  if (!(*options.delta >= 0)) throw Usage_error("--delta must be >= 0");
+  if (!(*options.delta >= 0))
+    throw Usage_error("--delta must be >= 0 (0: no simplification; unset: automatic), got '" +
+                      args.get("delta") + "'");
   options.repair_distance = args.has("repair") ? args.get_double("repair") : 0.0;
-  if (options.repair_distance < 0) throw Usage_error("--repair must be >= 0");
+  if (options.repair_distance < 0)
+    throw Usage_error("--repair must be >= 0 (0: no repair; unset: 0, or 2.5R with --tracks), got '" +
+                      args.get("repair") + "'");
   if (args.has("tracks")) options.embedding = road_map_embedding_options();  // road maps keep their corners
   // As in the library: unset is automatic, 0 turns bridging off.
   if (args.has("level-width")) {
@@ -404,7 +408,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
       throw Usage_error("--smoothing-method must be taubin or laplacian, got '" + m + "'");
   }
   options.prune_height = args.has("prune") ? args.get_double("prune") : 0.0;
-  if (!(options.prune_height >= 0)) throw Usage_error("--prune must be >= 0");
+  if (!(options.prune_height >= 0))
+    throw Usage_error("--prune must be >= 0 (0: keep all; unset: 0, or 5R with --tracks), got '" +
+                      args.get("prune") + "'");
   if (args.has("branch-merge")) {
     options.branch_merge_distance = args.get_double("branch-merge");
     if (!(*options.branch_merge_distance >= 0 && std::isfinite(*options.branch_merge_distance)))
@@ -431,7 +437,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
   const bool lonlat = args.has("lonlat");
   Transverse_mercator projection;  // --lonlat: degrees <-> metres
   if ((args.has("graph") || args.has("distance-matrix")) && args.has("sample-spacing"))
-    throw Usage_error("--sample-spacing applies to --points and --tracks only");
+    throw Usage_error("--sample-spacing applies to --points, --image and --tracks only");
   Point_matrix m;
   std::size_t input_points = 0;
   Progress progress("skeleton", quiet);
@@ -639,17 +645,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart. Checked before
     // the pipeline runs (it ran first, minutes on a large file, to be refused).
     const double median_step = median_gps_step(trips);  // of the fixes as read (or projected)
-    if (const double step = median_step; !lonlat && step > 0 && step < 0.01) {
-      bool degrees = true;
-      for (const Gps_trip& trip : trips)
-        for (const Gps_fix& f : trip) degrees = degrees && std::abs(f.x) <= 180 && std::abs(f.y) <= 90;
-      if (degrees)
-        throw io::Input_error(args.get("tracks") +
-                              ": the fixes look like longitude and latitude in degrees (median step " +
-                              json_number(step) +
-                              ", all within +-180 and +-90), but the tracks are read in metres: give "
-                              "--lonlat, or project them to metres first");
-    }
+    if (!lonlat) refuse_degree_tracks(args.get("tracks"), trips, median_step);
     // Fixes kilometres apart are the other mistake of units (centimetres, a projection's map units): every
     // segment is then linked and sampled every few metres (100 km steps: about 13,000 samples each), which
     // took minutes and gigabytes without a word. Warned before the pipeline runs.
@@ -677,7 +673,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
     ro.repair_distance = value("repair", options.repair_distance);
     ro.prune_height = value("prune", options.prune_height);
     if (args.has("merge") && !(args.get_double("merge") >= 0))
-      throw Usage_error("--merge must be >= 0 (0: off)");
+      throw Usage_error("--merge must be >= 0 (0: no merging; unset: 8 m), got '" + args.get("merge") + "'");
     if (args.has("merge")) ro.merge_distance = args.get_double("merge");
     ro.traces = go;
     ro.max_triangles = options.max_triangles;
@@ -743,15 +739,16 @@ int run_skeleton(const std::vector<std::string>& argv) {
     // how the written lines were drawn (the fields below without merge_ drew the skeleton before)
     if (use_merged) {
       const Embedding_options& drawn = skeleton::road_map_merge_options(road.used).embedding;
-      input_json += std::string(", \"merge_smoothing\": \"") +
-                    (drawn.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian") +
-                    "\", \"merge_smoothing_rounds\": " + std::to_string(drawn.smoothing_iterations) +
-                    ", \"merge_level_width\": " + json_number(road.merged.level_width) +
-                    ", \"merge_max_gap\": " + json_number(road.merged.max_gap) +
-                    ", \"merge_spacing\": " + json_number(road.merged.spacing) +
-                    ", \"merge_samples\": " + std::to_string(road.merged.samples) +
-                    ", \"merge_rips_edges\": " + std::to_string(road.merged.rips_edges) +
-                    ", \"merge_rips_triangles\": " + std::to_string(road.merged.rips_triangles);
+      input_json +=
+          std::string(", \"merge_smoothing\": \"") +
+          (drawn.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian") +
+          "\", \"merge_smoothing_rounds\": " + std::to_string(drawn.smoothing_iterations) +
+          ", \"merge_level_width\": " + json_number(road.merged.level_width) +
+          ", \"merge_max_gap\": " + json_number(std::isinf(road.merged.max_gap) ? 0.0 : road.merged.max_gap) +
+          ", \"merge_spacing\": " + json_number(road.merged.spacing) +
+          ", \"merge_samples\": " + std::to_string(road.merged.samples) +
+          ", \"merge_rips_edges\": " + std::to_string(road.merged.rips_edges) +
+          ", \"merge_rips_triangles\": " + std::to_string(road.merged.rips_triangles);
     }
     if (lonlat)
       input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
@@ -852,7 +849,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
       num_vertices(graph), num_edges(graph), num_edges(graph) + components - num_vertices(graph), components,
       s.removed_branches, s.removed_loops, s.repaired, json_number(s.branch_merge_distance).c_str(),
       s.merged_branch_arcs, json_number(options.prune_height).c_str(), json_number(s.level_width).c_str(),
-      json_number(s.max_gap).c_str(),
+      json_number(std::isinf(s.max_gap) ? 0.0 : s.max_gap).c_str(),  // off as --max-gap takes it
       options.embedding.smoothing == Embedding_options::Smoothing::taubin ? "taubin" : "laplacian",
       options.embedding.smoothing_iterations, input_json.c_str(), json_number(seconds).c_str(),
       json_string(out_v).c_str(), json_string(out_e).c_str());

@@ -616,6 +616,7 @@ TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
   }
   std::vector<double> seen;
   Embedding_options o;
+  o.smoothing_iterations = 0;  // only drawing counts (smoothing rounds count as work: below)
   o.progress = test::recording_progress(seen);
   const Reeb_graph_embedding full = embed_reeb_graph(G, positions, f, 2, o);
   EXPECT_EQ(full.status, Status::success);
@@ -663,6 +664,26 @@ TEST(EmbedReebGraph, ProgressIsReportedAndAStopDrawsTheRestStraight) {
   refused = false;
   EXPECT_EQ(embed_reeb_graph(G, path, positions, f, 2, o).status, Status::interrupted);
   EXPECT_EQ(later, 0u);
+  // Smoothing rounds count: 40,001 units per round and arc besides the 40,001 of drawing, 3 x 40,001 x (1 +
+  // 4) in all; a report is due after a round once 65,536 units passed since the last one. A stop during the
+  // second arc's rounds draws it straight too.
+  o.smoothing_iterations = 4;
+  seen.clear();
+  o.progress = test::recording_progress(seen);
+  const Reeb_graph_embedding smoothed = embed_reeb_graph(G, positions, f, 2, o);
+  EXPECT_EQ(smoothed.status, Status::success);
+  const std::vector<double> due = {2.0 / 15, 4.0 / 15, 7.0 / 15, 9.0 / 15, 12.0 / 15, 14.0 / 15, 1.0};
+  ASSERT_EQ(seen.size(), due.size());
+  for (std::size_t i = 0; i < due.size(); ++i) EXPECT_NEAR(seen[i], due[i], 1e-12) << i;
+  std::size_t calls = 0;
+  o.progress = [&calls](double) { return ++calls < 3; };  // stops at 7 x 40,001: the second arc's 1st round
+  const Reeb_graph_embedding stopped = embed_reeb_graph(G, positions, f, 2, o);
+  EXPECT_EQ(stopped.status, Status::interrupted);
+  EXPECT_EQ(calls, 3u);
+  EXPECT_EQ(stopped.arc_polylines[0], smoothed.arc_polylines[0]);
+  for (std::size_t a : {1u, 2u})
+    EXPECT_EQ(stopped.arc_polylines[a], (std::vector<std::array<double, 3>>{full.node_positions[2 * a],
+                                                                            full.node_positions[2 * a + 1]}));
 }
 
 TEST(EmbedReebGraph, GapsAreMeasuredAtEveryScale) {
@@ -706,4 +727,35 @@ TEST(EmbedReebGraph, AnEdgeLongerThanTheLargestDoubleEnds) {
   EXPECT_EQ(num_edges(s.graph), 1u);
   for (auto e : boost::make_iterator_range(edges(s.graph)))
     for (const auto& p : s.graph[e].polyline) EXPECT_FALSE(std::isnan(p[0]));
+}
+
+TEST(EmbedReebGraph, LevelWidthsBelowTheValuesResolutionGiveEveryValueItsLevel) {
+  // 201 points 0.1 apart on a line: one arc. Bins are floor(f / width); a width so small that the quotient
+  // overflows (a denormal) put every point into one bin of infinity, the coarsest drawing instead of the
+  // finest. Each value is its own level now, as for any width below the values' spacing.
+  Point_matrix P;
+  P.dimension = 2;
+  P.rows = 201;
+  for (int i = 0; i < 201; ++i) P.data.insert(P.data.end(), {0.1 * i, 0.0});
+  auto points_drawn = [&P](double width) {
+    Skeleton_options o;
+    o.embedding.level_width = width;
+    o.embedding.smoothing_iterations = 0;
+    o.embedding.max_gap = 0;
+    const Reeb_skeleton k = extract_reeb_skeleton(P, 0.15, o);
+    std::size_t n = 0;
+    for (const auto e : boost::make_iterator_range(edges(k.graph))) n += k.graph[e].polyline.size();
+    return std::make_pair(n, k.branch_merge_distance);
+  };
+  const auto finest = points_drawn(1e-300);
+  EXPECT_EQ(finest.first, 201u);
+  for (const double width : {1e-310, std::numeric_limits<double>::denorm_min()})
+    EXPECT_EQ(points_drawn(width).first, finest.first) << width;
+  EXPECT_LT(points_drawn(1.0).first, finest.first);
+  // An infinite width draws one piece per arc, and the automatic branch merge (twice the width) is off: it
+  // merged every branch node at the largest double before.
+  const auto coarsest = points_drawn(std::numeric_limits<double>::infinity());
+  EXPECT_EQ(coarsest.first, 3u);
+  EXPECT_EQ(coarsest.second, 0.0);
+  EXPECT_EQ(points_drawn(1e308).second, std::numeric_limits<double>::max());  // 2 x 1e308 saturates
 }

@@ -535,8 +535,8 @@ TEST(EstimateRipsRadius, OneCallSkeletonUsesTheEstimate) {
         invalid_argument_message([&] { extract_reeb_skeleton(m, e.radius, o); }),
         invalid_argument_message([&] { extract_reeb_skeleton(build_rips_graph(m, e.radius), m, o); })})
     EXPECT_EQ(message,
-              "extract_reeb_skeleton: delta must be finite and >= 0 (0: no simplification; "
-              "FeatureRecon::automatic: the suggested delta, with points or a distance matrix), got -1");
+              "extract_reeb_skeleton: delta must be finite and >= 0 (FeatureRecon::automatic: the suggested "
+              "delta, with points or a distance matrix; 0: no simplification), got -1");
 
   // Both callbacks hear the estimate: the run's (first tenth) and the estimate's own (0 to 1).
   Rips_radius_options ro;

@@ -441,12 +441,37 @@ TEST(GpsTraces, DegenerateAndBadInput) {
   EXPECT_EQ(message(bad), "(no exception)");  // the density filter is off
   bad.min_relative_density = 0.1;
   EXPECT_NE(
-      message(bad).find("trip 0, fix 1 at (100, 0) lies more than 2^50 times the sample spacing, radius or "
-                        "density radius (1e-300)"),
+      message(bad).find("trip 0, fix 1 at (100, 0) lies more than 2^50 times the density_radius (1e-300)"),
       std::string::npos)
       << message(bad);
   bad.density_radius = 1;
   EXPECT_EQ(message(bad), "(no exception)");
+  // The length that is too fine is named as a field, automatic or not.
+  bad = {};
+  bad.sample_spacing = 1e-300;
+  EXPECT_NE(message(bad).find("lies more than 2^50 times the sample_spacing (1e-300)"), std::string::npos)
+      << message(bad);
+  bad.sample_spacing = {};
+  bad.min_relative_density = 0.1;
+  bad.density_radius = 4e-300;  // the automatic spacing (5) is not the finest
+  EXPECT_NE(message(bad).find("2^50 times the density_radius (4e-300)"), std::string::npos) << message(bad);
+  // A spacing whose half is 0 would never advance along a segment: refused, whether given or half a radius
+  // (with a fix at the origin only, no other check catches it).
+  bad = {};
+  bad.sample_spacing = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(message(bad),
+            "sample_gps_traces: sample_spacing 4.94066e-324 is too small: half of it must be a "
+            "positive double");
+  EXPECT_NO_THROW(sample_gps_traces({{{0, 0, 0}, {0, 0, 1}}}, 1e-300));
+  try {
+    sample_gps_traces({{{0, 0, 0}, {0, 0, 1}}}, 2 * std::numeric_limits<double>::denorm_min());
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(
+        std::string(e.what()),
+        "sample_gps_traces: rips_radius 9.88131e-324 is too small: the automatic sample_spacing, half of "
+        "it, must have a positive half");
+  }
 }
 
 TEST(GpsTraces, SkeletonOfABlock) {
@@ -1237,6 +1262,14 @@ TEST(GpsTraces, TheRulesBoundariesArePinned) {
   Gps_trace_options all;
   all.min_straight_confirmed_fraction = 1;
   EXPECT_TRUE(sample_gps_traces({straight(0, 0, 1, 0, 5, 30)}, 20.0, all).turn_rule_used);
+  // Without the check (no segment support, or no linking) the rule is not used (it read true before).
+  for (const auto field : {&Gps_trace_options::segment_support, &Gps_trace_options::max_link_gap}) {
+    Gps_trace_options off = all;
+    off.*field = 0;
+    const Gps_trace_sample S = sample_gps_traces({straight(0, 0, 1, 0, 5, 30)}, 20.0, off);
+    EXPECT_FALSE(S.turn_rule_used);
+    EXPECT_EQ(S.checked_segments, 0u);
+  }
 
   // The turn rule on lone trips (nothing confirms their 150 m segments; the rule trusted, the check kept).
   Gps_trace_options turn;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "io/featurerecon_io.h"
+#include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
 using namespace FeatureRecon;
@@ -56,6 +57,10 @@ TEST(MapComparison, SamplingSpacingAndCounts) {
   const auto g = sample_map(grid_map(5, 100.0), 5.0);
   EXPECT_NEAR(static_cast<double>(g.size()), 800.0, 40.0);
   EXPECT_THROW(sample_map(seg, 0.0), std::invalid_argument);
+  // Infinity is > 0: the message says the rule the check applies.
+  EXPECT_EQ(FeatureRecon::test::invalid_argument_message(
+                [&] { sample_map(seg, std::numeric_limits<double>::infinity()); }),
+            "sample_map: interval must be finite and > 0, got inf");
   Embedded_graph_2 bad = seg;
   bad.edges = {{0, 5}};
   EXPECT_THROW(sample_map(bad, 5.0), std::invalid_argument);

@@ -129,6 +129,10 @@ TEST(RoadMap, OneCallEqualsTheStagesAndIsDeterministic) {
   EXPECT_EQ(message_of([] { road_map_merge_options(Road_map_options{}); }),
             "road_map_merge_options: the options' merge_distance is automatic: pass the result of "
             "resolve_road_map_options()");
+  Road_map_options merge_off = used;
+  merge_off.merge_distance = 0;  // merging off: no options to give merge_road_lines() (it refuses distance 0)
+  EXPECT_EQ(message_of([&] { road_map_merge_options(merge_off); }),
+            "road_map_merge_options: merge_distance is 0: merging is off, there are no merge options");
   EXPECT_EQ(m.map.positions, merged.map.positions);
   EXPECT_EQ(m.map.edges, merged.map.edges);
   EXPECT_EQ(m.sample.points.data, S.points.data);
@@ -231,6 +235,24 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   o = {};
   o.prune_height = std::numeric_limits<double>::infinity();  // prune everything
   EXPECT_NO_THROW(extract_road_map(trips, o));
+  // A merge distance so small that the merge stage refuses its samples is named as the caller's field (the
+  // stage's spacing and sample cap are not options of extract_road_map()); a radius whose automatic spacing
+  // underflows, as the radius.
+  o = {};
+  o.merge_distance = 1e-300;
+  const std::string tiny = message_of([&] { extract_road_map(trips, o); });
+  EXPECT_EQ(tiny.rfind("extract_road_map: merge_distance 1e-300 (the merge samples the lines every third of "
+                       "it) is refused by merge_road_lines: ",
+                       0),
+            0u)
+      << tiny;
+  o = {};
+  o.rips_radius = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(message_of([&] { extract_road_map(trips, o); })
+                .rfind("sample_gps_traces: rips_radius 4.94066e-324 "
+                       "is too small",
+                       0),
+            0u);
   std::vector<Gps_trip> bad = trips;
   bad[1][2].y = std::numeric_limits<double>::quiet_NaN();
   const std::string m = message_of([&] { extract_road_map(bad, {}); });
@@ -243,6 +265,14 @@ TEST(RoadMap, DegenerateInput) {
     EXPECT_EQ(m.status, Status::degenerate_input);
     EXPECT_TRUE(m.map.positions.empty());
     EXPECT_TRUE(m.map.edges.empty());
+    // No complex: the embedding and the branch merge did not run, and `used` keeps them as given (max_gap
+    // read 0, off, before).
+    EXPECT_FALSE(m.used.embedding.level_width.has_value());
+    EXPECT_FALSE(m.used.embedding.max_gap.has_value());
+    EXPECT_EQ(m.used.branch_merge_distance, Road_map_options{}.branch_merge_distance);
+    Road_map_options automatic_merge;
+    automatic_merge.branch_merge_distance = FeatureRecon::automatic;
+    EXPECT_FALSE(extract_road_map(trips, automatic_merge).used.branch_merge_distance.has_value());
   }
   // One fix, or one fix repeated: one sample, and a component of height 0 is pruned (a map with no streets).
   for (const std::size_t copies : {1u, 5u}) {

@@ -57,8 +57,9 @@ struct Embedding_options {
   /// refused (before FeatureRecon::automatic, 0 asked for the automatic gap and a negative one turned it
   /// off).
   std::optional<double> max_gap = FeatureRecon::automatic;
-  /// Called with the fraction of the arcs' points drawn; returning false stops: the arcs not drawn yet are
-  /// straight segments between their nodes, and the embedding's status is Status::interrupted.
+  /// Called with the fraction of the work done (an arc of k points counts k + 1 to draw and k + 1 per
+  /// smoothing round), every 65,536 units; returning false stops: the arcs not finished yet are straight
+  /// segments between their nodes, and the embedding's status is Status::interrupted.
   Progress_callback progress;
 };
 
@@ -266,12 +267,10 @@ inline double automatic_level_width(const Reeb_graph& G) {
 
 /// Checks the values of Embedding_options (throws naming `fn`).
 inline void check_embedding_options(const Embedding_options& options, const char* fn) {
-  if (options.level_width && !(*options.level_width > 0))  // infinity: one piece per arc
-    FeatureRecon::internal::throw_invalid_argument(
-        fn,
-        "embedding level_width must be > 0 (FeatureRecon::automatic: 1/64 of the range of f; in "
-        "extract_reeb_skeleton(), the median edge length of the complex), got ",
-        *options.level_width);
+  FeatureRecon::internal::check_optional_length(  // infinity: one piece per arc
+      fn, options.level_width, "embedding level_width",
+      "1/64 of the range of f; in extract_reeb_skeleton(), the median edge length of the complex", nullptr,
+      true);
   if (options.smoothing != Embedding_options::Smoothing::taubin &&
       options.smoothing != Embedding_options::Smoothing::laplacian)
     FeatureRecon::internal::throw_invalid_argument(
@@ -284,11 +283,8 @@ inline void check_embedding_options(const Embedding_options& options, const char
   if (!(options.smoothing_weight >= 0 && options.smoothing_weight <= 1))
     FeatureRecon::internal::throw_invalid_argument(fn, "embedding smoothing_weight must lie in [0, 1], got ",
                                                    options.smoothing_weight);
-  if (options.max_gap && !(*options.max_gap >= 0))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn,
-        "embedding max_gap must be >= 0 (FeatureRecon::automatic: twice the median edge length; 0: off), ",
-        "got ", *options.max_gap);
+  FeatureRecon::internal::check_optional_length(fn, options.max_gap, "embedding max_gap",
+                                                "twice the median edge length", "off", true);
 }
 
 inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency, const Point_matrix& P,
@@ -325,6 +321,13 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     E.nodes.push_back(std::move(c));
   }
   const double width = options.level_width ? *options.level_width : automatic_level_width(G);
+  // Two values lie in one bin when floor(value / width) is the same. A width far below the values'
+  // resolution (a denormal width, say) overflows the quotient: each value is then its own level, the limit
+  // of ever finer bins, and not one bin of infinity for all.
+  const auto same_level = [width](double a, double b) {
+    const double qa = std::floor(a / width), qb = std::floor(b / width);
+    return std::isinf(qa) || std::isinf(qb) ? a == b : qa == qb;
+  };
   // Gaps wider than max_gap are bridged by shortest paths of the graph.
   std::unique_ptr<Graph_path_finder> finder;
   double max_gap = std::numeric_limits<double>::infinity();
@@ -347,31 +350,39 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       FeatureRecon::internal::throw_invalid_argument(fn, "arc ", a, " joins nodes (", G.arcs[a].lower, ", ",
                                                      G.arcs[a].upper, ") out of range [0, ", G.nodes.size(),
                                                      ")");
-  // Progress by points drawn (an arc counts its points and one more), reported every 2^16 of them.
+  // Progress by work done, reported every 2^16 units: an arc of k points counts k + 1 to draw and k + 1 per
+  // smoothing round (a million rounds of one arc took seconds without a report).
+  const double rounds = static_cast<double>(options.smoothing_iterations);
   double total_work = 0, work = 0, reported = 0;
-  for (const auto& arc : G.arcs) total_work += static_cast<double>(arc.vertices.size() + 1);
+  for (const auto& arc : G.arcs) total_work += static_cast<double>(arc.vertices.size() + 1) * (1 + rounds);
+  const auto keep_going = [&]() {  // false when the caller stops the run
+    if (work - reported < 65536) return true;
+    reported = work;
+    return FeatureRecon::internal::report_progress(options.progress, work / total_work);
+  };
+  const auto stop_at = [&](std::size_t a) {  // arcs a and later drawn straight, node to node
+    E.status = Status::interrupted;
+    for (std::size_t b = a; b < G.arcs.size(); ++b) {
+      std::vector<double> straight(E.nodes[G.arcs[b].lower]);
+      straight.insert(straight.end(), E.nodes[G.arcs[b].upper].begin(), E.nodes[G.arcs[b].upper].end());
+      E.arcs.push_back(std::move(straight));
+    }
+  };
   for (std::size_t a = 0; a < G.arcs.size(); ++a) {
     const auto& arc = G.arcs[a];
     const auto& vs = arc.vertices;
-    if (work - reported >= 65536) {
-      reported = work;
-      if (!FeatureRecon::internal::report_progress(options.progress, work / total_work)) {
-        E.status = Status::interrupted;
-        for (std::size_t b = a; b < G.arcs.size(); ++b) {  // the rest drawn straight, node to node
-          std::vector<double> straight(E.nodes[G.arcs[b].lower]);
-          straight.insert(straight.end(), E.nodes[G.arcs[b].upper].begin(), E.nodes[G.arcs[b].upper].end());
-          E.arcs.push_back(std::move(straight));
-        }
-        return E;
-      }
+    if (!keep_going()) {
+      stop_at(a);
+      return E;
     }
-    work += static_cast<double>(vs.size() + 1);
+    const double arc_work = static_cast<double>(vs.size() + 1);
+    work += arc_work;
     for (const Vertex_index v : vs) check(v);
     // Runs of consecutive points (in f order) within one bin of width `width`.
     run_of.assign(vs.size(), 0);
     std::size_t runs = 0;
     for (std::size_t i = 0; i < vs.size(); ++i) {
-      if (i > 0 && std::floor(values[vs[i]] / width) != std::floor(values[vs[i - 1]] / width)) ++runs;
+      if (i > 0 && !same_level(values[vs[i]], values[vs[i - 1]])) ++runs;
       run_of[i] = runs;
     }
     // Level-set pieces: connected components of a run in the graph (one piece per run without a graph).
@@ -479,9 +490,16 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         }
       line.swap(next);
     };
-    for (std::size_t it = 0; it < options.smoothing_iterations && n > 2; ++it) {
-      step(lambda);
-      if (taubin) step(mu);
+    for (std::size_t it = 0; it < options.smoothing_iterations; ++it) {
+      if (n > 2) {
+        step(lambda);
+        if (taubin) step(mu);
+      }
+      work += arc_work;
+      if (!keep_going()) {  // this arc is not finished: straight, as the rest
+        stop_at(a);
+        return E;
+      }
     }
     E.arcs.push_back(std::move(line));
   }

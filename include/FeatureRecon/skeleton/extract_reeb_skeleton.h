@@ -79,7 +79,8 @@ struct Skeleton_options {
   /// within that distance, splitting the arc (connect_dead_ends(): T junctions with a gap). Default true.
   bool connect_dead_ends = true;
   /// Remove connected components of height (range of f) at most this after simplification and repair; their
-  /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all.
+  /// points then belong to no node or arc (Reeb_skeleton::pruned_points). 0 (default): keep all; infinity:
+  /// remove all (an empty skeleton).
   double prune_height = 0;
   /// Contract each arc joining two branch nodes (degree >= 3) that is at most this long in input space into
   /// one node, each merged cluster at most this across (merge_close_branch_nodes()): where two curves cross
@@ -89,7 +90,8 @@ struct Skeleton_options {
   /// about the Rips radius: where two curves cross at a right angle the forks lie about that far apart, and
   /// closer features the complex does not resolve), in input units: for a graph whose edge lengths are not
   /// the coordinates' distances (unit weights, say), times the ratio of the median coordinate distance to the
-  /// median length of its edges; 0: off. For a distance matrix an arc is at least as long as the matrix's
+  /// median length of its edges; off when the level width is infinite (one piece per arc, no scale); 0: off.
+  /// For a distance matrix an arc is at least as long as the matrix's
   /// distance between its nodes' points (the MDS drawing may shorten it). Negative: refused (before
   /// FeatureRecon::automatic it asked for the automatic distance).
   std::optional<double> branch_merge_distance = FeatureRecon::automatic;
@@ -501,26 +503,17 @@ inline void check_skeleton_options(const Skeleton_options& options, const char* 
     FeatureRecon::internal::throw_invalid_argument(
         fn,
         "delta is automatic (the suggested delta), which needs points or a distance matrix: give a value");
-  if (!(*options.delta >= 0 && std::isfinite(*options.delta)))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn,
-        "delta must be finite and >= 0 (0: no simplification; "
-        "FeatureRecon::automatic: the suggested delta, with points "
-        "or a distance matrix), got ",
-        *options.delta);
+  FeatureRecon::internal::check_optional_length(fn, options.delta, "delta",
+                                                "the suggested delta, with points or a distance matrix",
+                                                "no simplification");
   if (!(options.repair_distance >= 0 && std::isfinite(options.repair_distance)))
     FeatureRecon::internal::throw_invalid_argument(
         fn, "repair_distance must be finite and >= 0 (0: no repair), got ", options.repair_distance);
   if (!(options.prune_height >= 0))
     FeatureRecon::internal::throw_invalid_argument(
         fn, "prune_height must be >= 0 (0: keep all; infinity: prune all), got ", options.prune_height);
-  if (options.branch_merge_distance &&
-      !(*options.branch_merge_distance >= 0 && std::isfinite(*options.branch_merge_distance)))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn,
-        "branch_merge_distance must be finite and >= 0 (FeatureRecon::automatic: twice the level width; 0: "
-        "off), got ",
-        *options.branch_merge_distance);
+  FeatureRecon::internal::check_optional_length(fn, options.branch_merge_distance, "branch_merge_distance",
+                                                "twice the level width", "off");
   check_embedding_options(options.embedding, fn);  // before the pipeline runs, with the caller's values
 }
 
@@ -714,8 +707,10 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
       const double weight = median_edge_length(K, first);
       if (input > 0 && weight > 0) ratio = input / weight;
     }
-    // Saturates (edges near DBL_MAX).
-    result.branch_merge_distance = std::min(2 * *eo.level_width * ratio, std::numeric_limits<double>::max());
+    // Saturates (edges near DBL_MAX). An infinite level width (one piece per arc) has no scale: off.
+    result.branch_merge_distance = std::isinf(*eo.level_width) ? 0.0
+                                                               : std::min(2 * *eo.level_width * ratio,
+                                                                          std::numeric_limits<double>::max());
   } else {
     result.branch_merge_distance = *options.branch_merge_distance;
   }

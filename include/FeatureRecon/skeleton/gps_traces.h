@@ -198,7 +198,9 @@ struct Gps_trace_sample {
   std::size_t quiet_segments = 0;
   std::size_t straight_checked = 0;    ///< checked segments driven straight through (confirmed or not)
   std::size_t straight_confirmed = 0;  ///< ... of which confirmed by fixes
-  bool turn_rule_used = true;       ///< straight unconfirmed segments kept (min_straight_confirmed_fraction)
+  /// straight unconfirmed segments kept (min_straight_confirmed_fraction); false when the segment check did
+  /// not run (segment_support or max_link_gap 0), true when it ran and no segment needed it
+  bool turn_rule_used = false;
   std::size_t linked_segments = 0;  ///< ... of the rest, up to 4 segment_support: ends linked only
   bool all_segments_used = false;   ///< the check was off or too few were confirmed (see the options)
   /// success, or interrupted when Gps_trace_options::progress returned false (the sample is then incomplete:
@@ -418,20 +420,14 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     FeatureRecon::internal::throw_invalid_argument(fn, "rips_radius must be positive and finite, got ",
                                                    rips_radius);
   // Lengths with a rule of their own: unset (automatic), a value, 0 (off) only where it turns a stage off.
-  auto check_length = [fn](const std::optional<double>& value, const char* name, const char* rule,
-                           const char* off) {
-    if (value && !(std::isfinite(*value) && (off != nullptr ? *value >= 0 : *value > 0)))
-      FeatureRecon::internal::throw_invalid_argument(fn, name, " must be finite and ", off ? ">= 0" : "> 0",
-                                                     " (FeatureRecon::automatic: ", rule, off ? "; 0: " : "",
-                                                     off ? off : "", "), got ", *value);
-  };
-  check_length(options.sample_spacing, "sample_spacing", "half the Rips radius", nullptr);
-  check_length(options.max_link_gap, "max_link_gap", "max(4 x the median step, 2 x the Rips radius)",
-               "no linking");
+  using FeatureRecon::internal::check_optional_length;
+  check_optional_length(fn, options.sample_spacing, "sample_spacing", "half the Rips radius");
+  check_optional_length(fn, options.max_link_gap, "max_link_gap",
+                        "max(4 x the median step, 2 x the Rips radius)", "no linking");
   if (!(options.heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "heading_tolerance must be >= 0 degrees, got ",
                                                    options.heading_tolerance);
-  check_length(options.density_radius, "density_radius", "twice the Rips radius", nullptr);
+  check_optional_length(fn, options.density_radius, "density_radius", "twice the Rips radius");
   auto check_fraction = [fn](const char* name, double value) {  // in [0, 1], NaN refused
     if (!(value >= 0 && value <= 1))
       FeatureRecon::internal::throw_invalid_argument(fn, name, " must be in [0, 1], got ", value);
@@ -441,7 +437,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   if (!(options.density_heading_tolerance >= 0))
     FeatureRecon::internal::throw_invalid_argument(fn, "density_heading_tolerance must be >= 0 degrees, got ",
                                                    options.density_heading_tolerance);
-  check_length(options.segment_support, "segment_support", "max(20, 2/3 x the Rips radius)", "no check");
+  check_optional_length(fn, options.segment_support, "segment_support", "max(20, 2/3 x the Rips radius)",
+                        "no check");
   if (!(options.segment_turn_tolerance >= 0 && options.segment_turn_tolerance <= 180))
     FeatureRecon::internal::throw_invalid_argument(
         fn, "segment_turn_tolerance must be in [0, 180] degrees, got ", options.segment_turn_tolerance);
@@ -486,19 +483,31 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.density_radius = options.density_radius.value_or(2 * rips_radius);
   // Grid cells are 64-bit integers of position / spacing (or density radius, when that filter is on): beyond
   // 2^50 cells from the origin they would overflow.
+  // Points are inserted every half spacing: a spacing whose half is 0 (a denormal, or half of a denormal
+  // radius) would never advance.
+  if (!(S.sample_spacing / 2 > 0)) {
+    if (options.sample_spacing)
+      FeatureRecon::internal::throw_invalid_argument(fn, "sample_spacing ", S.sample_spacing,
+                                                     " is too small: half of it must be a positive double");
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "rips_radius ", rips_radius,
+        " is too small: the automatic sample_spacing, half of it, must have a positive half");
+  }
   const bool density_filter = options.min_relative_density > 0 || options.min_lateral_density > 0;
   const double finest =
       std::min({S.sample_spacing, rips_radius, density_filter ? S.density_radius : HUGE_VAL});
+  const char* finest_name = finest == S.sample_spacing
+                                ? (options.sample_spacing ? "sample_spacing" : "sample_spacing (automatic)")
+                            : finest == rips_radius  ? "rips_radius"
+                            : options.density_radius ? "density_radius"
+                                                     : "density_radius (automatic)";
   for (std::size_t t = 0; t < trips.size(); ++t)
     for (std::size_t i = 0; i < trips[t].size(); ++i)
       if (std::max(std::fabs(trips[t][i].x), std::fabs(trips[t][i].y)) / finest > 0x1p50)
         FeatureRecon::internal::throw_invalid_argument(
             fn, "trip ", t, ", fix ", i, " at (", trips[t][i].x, ", ", trips[t][i].y,
-            ") lies more than 2^50 times the sample "
-            "spacing, radius or density radius (",
-            finest,
-            ") from the "
-            "origin; shift or scale the traces, or raise that length");
+            ") lies more than 2^50 times the ", finest_name, " (", finest,
+            ") from the origin; shift or scale the traces, or raise that length");
   const double insert_step = S.sample_spacing / 2;
   if (S.max_link_gap > 0 && options.max_inserted_points > 0) {  // the most points linking could insert
     double inserted = 0, longest = 0;

@@ -122,7 +122,7 @@ inline double bearing_difference(double a, double b) {
 inline std::vector<Map_sample> sample_map(const Embedded_graph_2& g, double interval) {
   const char* fn = "sample_map";
   if (!(interval > 0 && std::isfinite(interval)))
-    FeatureRecon::internal::throw_invalid_argument(fn, "interval must be > 0, got ", interval);
+    FeatureRecon::internal::throw_invalid_argument(fn, "interval must be finite and > 0, got ", interval);
   const std::size_t n = g.positions.size();
   std::vector<Edge> edges;
   for (std::size_t k = 0; k < g.edges.size(); ++k) {

@@ -420,13 +420,8 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
   if (!(options.distance > 0 && std::isfinite(options.distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "distance must be positive and finite, got ",
                                                    options.distance);
-  if (options.spacing && !(*options.spacing > 0 && std::isfinite(*options.spacing)))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "spacing must be finite and > 0 (FeatureRecon::automatic: distance / 3), got ", *options.spacing);
-  if (options.delta && !(*options.delta >= 0 && std::isfinite(*options.delta)))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "delta must be finite and >= 0 (FeatureRecon::automatic: distance; 0: no simplification), got ",
-        *options.delta);
+  FeatureRecon::internal::check_optional_length(fn, options.spacing, "spacing", "distance / 3");
+  FeatureRecon::internal::check_optional_length(fn, options.delta, "delta", "distance", "no simplification");
   for (std::size_t v = 0; v < map.positions.size(); ++v)
     if (!std::isfinite(map.positions[v][0]) || !std::isfinite(map.positions[v][1]))
       FeatureRecon::internal::throw_invalid_argument(fn, "vertex ", v, " has a non-finite coordinate");
@@ -592,7 +587,8 @@ struct Road_map_options {
   std::optional<double> delta = FeatureRecon::automatic;
   /// join dead ends at most this far apart; automatic (default): 2.5 R; 0: no repair
   std::optional<double> repair_distance = FeatureRecon::automatic;
-  /// drop components of smaller height (range of f); automatic (default): 5 R; 0: keep all
+  /// drop components of smaller height (range of f); automatic (default): 5 R; 0: keep all; infinity: drop
+  /// all (an empty map)
   std::optional<double> prune_height = FeatureRecon::automatic;
   /// Sampling, linking and density filter (sample_gps_traces()); its own automatic rules (spacing R/2, link
   /// gap max(4M, 2R), segment support max(20 m, 2R/3), density radius 2R) apply and are reported in
@@ -644,20 +640,15 @@ struct Road_map {
 inline Road_map_options resolve_road_map_options(const std::vector<Gps_trip>& trips,
                                                  const Road_map_options& options) {
   const char* fn = "extract_road_map";
-  if (options.rips_radius && !(std::isfinite(*options.rips_radius) && *options.rips_radius > 0))
-    FeatureRecon::internal::throw_invalid_argument(
-        fn, "rips_radius must be finite and > 0 (FeatureRecon::automatic: from the median step), got ",
-        *options.rips_radius);
+  FeatureRecon::internal::check_optional_length(fn, options.rips_radius, "rips_radius",
+                                                "from the median step");
   if (!(options.min_radius > 0 && options.min_radius <= options.max_radius &&
         std::isfinite(options.max_radius)))
     FeatureRecon::internal::throw_invalid_argument(fn, "need 0 < min_radius <= max_radius < infinity, got ",
                                                    options.min_radius, " and ", options.max_radius);
   const auto check = [fn](const std::optional<double>& value, const char* name, const char* rule,
                           bool infinity_allowed = false) {
-    if (value && !(*value >= 0 && (infinity_allowed || std::isfinite(*value))))
-      FeatureRecon::internal::throw_invalid_argument(
-          fn, name, " must be ", infinity_allowed ? "" : "finite and ",
-          ">= 0 (FeatureRecon::automatic: ", rule, "; 0: off), got ", *value);
+    FeatureRecon::internal::check_optional_length(fn, value, name, rule, "off", infinity_allowed);
   };
   check(options.delta, "delta", "3 R");
   check(options.repair_distance, "repair_distance", "2.5 R");
@@ -711,10 +702,14 @@ inline Skeleton_options road_map_skeleton_options(const Road_map_options& used) 
 
 /// The merging options of a resolved Road_map_options (used.merge_distance > 0; spacing, delta automatic).
 /// \throws std::invalid_argument when merge_distance is automatic (options not resolved by
-///   resolve_road_map_options()).
+///   resolve_road_map_options()) or 0 (no merge to run).
 inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
+  const char* fn = "road_map_merge_options";
   Road_merge_options o;
-  o.distance = internal::resolved(used.merge_distance, "road_map_merge_options", "merge_distance");
+  o.distance = internal::resolved(used.merge_distance, fn, "merge_distance");
+  if (!(o.distance > 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "merge_distance is ", o.distance,
+                                                   ": merging is off, there are no merge options");
   o.max_triangles = used.max_triangles;
   return o;
 }
@@ -730,6 +725,7 @@ inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
 ///         (merge_road_lines()), or a fix with a non-finite coordinate or time (naming the trip and the fix).
 ///         `trips` is not modified.
 inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_map_options& options = {}) {
+  const char* fn = "extract_road_map";
   Road_map r;
   r.used = resolve_road_map_options(trips, options);
   if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) {
@@ -768,16 +764,24 @@ inline Road_map extract_road_map(const std::vector<Gps_trip>& trips, const Road_
   graph = Proximity_graph();  // freed before the lines are merged
   r.status = r.skeleton.status;
   if (r.status == Status::interrupted) return r;
-  // The skeleton's values used (a level width of 0: no complex to take it from; a gap of infinity: none
-  // bridged, as with 0).
-  if (r.skeleton.level_width > 0) r.used.embedding.level_width = r.skeleton.level_width;
-  r.used.embedding.max_gap = std::isinf(r.skeleton.max_gap) ? 0.0 : r.skeleton.max_gap;
-  r.used.branch_merge_distance = r.skeleton.branch_merge_distance;
+  // The skeleton's values used (a gap of infinity: none bridged, as with 0). A level width of 0: no complex,
+  // the embedding and the branch merge did not run, and their options stay as given.
+  if (r.skeleton.level_width > 0) {
+    r.used.embedding.level_width = r.skeleton.level_width;
+    r.used.embedding.max_gap = std::isinf(r.skeleton.max_gap) ? 0.0 : r.skeleton.max_gap;
+    r.used.branch_merge_distance = r.skeleton.branch_merge_distance;
+  }
   r.map = skeleton_to_road_map(r.skeleton.graph);
   if (*r.used.merge_distance > 0 && !r.map.positions.empty()) {
     Road_merge_options mo = road_map_merge_options(r.used);
     if (options.progress) mo.progress = [&options](double t) { return options.progress(0.9 + 0.1 * t); };
-    r.merged = merge_road_lines(r.map, mo);
+    try {
+      r.merged = merge_road_lines(r.map, mo);
+    } catch (const std::invalid_argument& e) {  // the stage's own options are not the caller's: say which
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "merge_distance ", mo.distance,
+          " (the merge samples the lines every third of it) is refused by ", e.what());
+    }
     if (r.merged.status == Status::interrupted) {
       r.status = Status::interrupted;
       r.map = {};
