@@ -139,6 +139,17 @@ void Progress::done(const std::string& details) {
                details.empty() ? "" : " (", details.c_str(), details.empty() ? "" : ")", seconds());
 }
 
+namespace {
+/// 1 or 2 when `path` names the process's standard output or error (/dev/stdout, /dev/fd/1,
+/// /proc/self/fd/1, and the same for 2), else 0. Such a path, opened anew, is the file behind the descriptor:
+/// replaced by a rename (or truncated by an open) it loses what the shell wrote there before and after.
+int standard_descriptor(const std::string& path) {
+  if (path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1") return 1;
+  if (path == "/dev/stderr" || path == "/dev/fd/2" || path == "/proc/self/fd/2") return 2;
+  return 0;
+}
+}  // namespace
+
 Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options) {
   std::map<std::string, std::string> targets;  // resolved path -> option
   for (const std::string& name : options) {
@@ -148,8 +159,9 @@ Outputs::Outputs(const Arguments& args, const std::vector<std::string>& options)
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
       throw Usage_error("--" + name + ": " + path + " is a directory");
-    // A device, FIFO or the like (/dev/null, /dev/stdout) is written in place, not replaced.
-    if (io::is_special_file(path)) continue;
+    // Standard output or error is written through its descriptor at commit(); a device, FIFO or the like
+    // (/dev/null) is written in place, not replaced.
+    if (standard_descriptor(path) != 0 || io::is_special_file(path)) continue;
     // A symbolic link is written through: the file it points to is replaced, in that file's directory.
     const std::string destination = io::write_destination(path);
     if (::lstat(destination.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
@@ -243,6 +255,13 @@ Outputs::~Outputs() {
 std::string Outputs::path(const std::string& name) {
   const auto it = m_targets.find(name);
   if (it == m_targets.end()) throw std::logic_error("Outputs::path: --" + name + " is not a checked output");
+  if (const int fd = standard_descriptor(it->second); fd != 0) {  // staged, copied to the descriptor
+    for (const auto& f : m_staged)
+      if (f.first == it->second) return f.second;
+    m_staged.emplace_back(
+        it->second, io::temporary_beside(std::string(P_tmpdir) + "/featurerecon-fd" + std::to_string(fd)));
+    return m_staged.back().second;
+  }
   if (io::is_special_file(it->second)) return it->second;  // written in place
   const std::string destination = io::write_destination(it->second);
   for (const auto& f : m_staged)
@@ -255,7 +274,28 @@ std::string Outputs::path(const std::string& name) {
 void Outputs::commit() {
   // Renames cannot be undone, but they fail only in odd cases (the directory vanished): the writing, which
   // fails for full disks and the like, is over by now.
-  for (const auto& f : m_staged) io::move_into_place(f.second, f.first);
+  for (const auto& f : m_staged) {
+    if (const int fd = standard_descriptor(f.first); fd != 0) {
+      // Appended where the descriptor stands (after what the shell wrote before), in place.
+      std::fflush(fd == 1 ? stdout : stderr);
+      std::FILE* in = std::fopen(f.second.c_str(), "rb");
+      bool ok = in != nullptr;
+      char buffer[1 << 16];
+      for (std::size_t n = 0; ok && (n = std::fread(buffer, 1, sizeof buffer, in)) > 0;)
+        for (std::size_t done = 0; ok && done < n;) {
+          const ssize_t w = ::write(fd, buffer + done, n - done);
+          if (w < 0 && errno == EINTR) continue;
+          ok = w > 0;
+          done += ok ? static_cast<std::size_t>(w) : 0;
+        }
+      const std::string reason = std::strerror(errno);
+      if (in != nullptr) std::fclose(in);
+      io::discard_temporary(f.second);
+      if (!ok) throw std::runtime_error(f.first + ": cannot write (" + reason + ")");
+      continue;
+    }
+    io::move_into_place(f.second, f.first);
+  }
   m_staged.clear();
 }
 

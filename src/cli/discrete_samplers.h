@@ -43,9 +43,19 @@ std::vector<std::size_t> run_sampler(const Items& items, const Traits& traits, c
     o.seed = request.seed;
     o.periodic = request.periodic;
     o.progress = std::ref(progress);
-    used_radius =
-        sampling::weighted_sample_elimination(items, request.count, std::back_inserter(kept), o, traits)
-            .radius;
+    try {
+      used_radius =
+          sampling::weighted_sample_elimination(items, request.count, std::back_inserter(kept), o, traits)
+              .radius;
+    } catch (const std::invalid_argument& e) {
+      // The neighbour-list limit that a given radius hit is the command's argument: named as such (exit 2).
+      if (request.radius > 0 && std::string(e.what()).find("max_neighbor_entries") != std::string::npos)
+        throw Usage_error(
+            "--radius " + json_number(request.radius) +
+            " is too large for these items: give a smaller one, or none for the automatic radius (" +
+            e.what() + ")");
+      throw;
+    }
   } else if (request.radius > 0) {
     sampling::Dart_throwing_options o;
     o.sigma_position = request.sigma_position;

@@ -83,6 +83,12 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
           "edge%s no length and %s ignored\n",
           edges.c_str(), m.first_self_loop_line, m.self_loops, m.self_loops == 1 ? " has" : "s have",
           m.self_loops == 1 ? "is" : "are");
+    if (m.zero_length_edges > 0)
+      std::fprintf(stderr,
+                   "featurerecon evaluate-map: warning: %s line %zu: an edge joins two vertices at one "
+                   "position; %zu such edge%s no length and %s no sample\n",
+                   edges.c_str(), m.first_zero_length_line, m.zero_length_edges,
+                   m.zero_length_edges == 1 ? " has" : "s have", m.zero_length_edges == 1 ? "gives" : "give");
     return to_graph(m);
   };
   Embedded_graph_2 gt = read(p[0], p[1], gt_lines);

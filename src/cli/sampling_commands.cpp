@@ -197,7 +197,7 @@ int run_sample(const std::vector<std::string>& argv) {
   std::string normals = cloud.has_normals() ? "file" : "none";
   if (!cloud.has_normals() && std::isfinite(sigma_feature)) {
     Progress p("estimating normals", quiet);
-    io::estimate_normals(cloud, static_cast<unsigned>(neighbors));
+    io::estimate_normals(cloud, static_cast<unsigned>(neighbors), [&p](double t) { p(t); });
     p.done(std::to_string(cloud.points.size()) + " points");
     normals = "estimated";
   }
@@ -248,7 +248,7 @@ int run_sample(const std::vector<std::string>& argv) {
      << ", \"sigma_position\": " << json_number(sigma_position)
      << ", \"sigma_feature\": " << json_number(sigma_feature) << ", \"normals\": \"" << normals
      << "\", \"colors\": \""
-     << (!cloud.has_colors()                                  ? "none"
+     << (!cloud.has_colors()                                  ? (cloud.colors_ignored ? "dropped" : "none")
          : io::file_extension(outputs.target("out")) == "ply" ? "file"
                                                               : "dropped")
      << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")

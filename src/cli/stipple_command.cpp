@@ -144,28 +144,47 @@ std::vector<std::size_t> weighted_pixels(const std::vector<double>& density, std
   return out;
 }
 
-/// Bilateral dart throwing with radii r_i = R min(8, sqrt(mean / rho_i)), R bisected so that at least `count`
-/// pixels are kept; the few extra are dropped at random (seeded).
+/// Bilateral dart throwing over the pixels of positive darkness (white ones take no dot) with radii r_i = R
+/// min(8, sqrt(mean / rho_i)) (mean over those pixels), R bisected so that at least `count` pixels are kept;
+/// the few extra are dropped at random (seeded). Pixels are visited in a seeded random order weighted by
+/// darkness (keys u^(1 / rho_i), largest first: Efraimidis and Spirakis): a light pixel's wide disc, visited
+/// first, would otherwise keep dark pixels around it empty.
 template <class Pixel>
-std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& pixels, const std::vector<double>& density,
-                                        std::size_t count, double sigma_position, double sigma_feature,
-                                        std::uint64_t seed, Progress& progress) {
-  double mean = 0;
-  for (const double d : density) mean += d;
-  mean /= double(density.size());
-  std::vector<double> shape(density.size());
+std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
+                                        const std::vector<double>& density, std::size_t count,
+                                        double sigma_position, double sigma_feature, std::uint64_t seed,
+                                        Progress& progress) {
+  std::vector<Pixel> pixels;
+  std::vector<std::size_t> index;  // of each inked pixel among all
   for (std::size_t i = 0; i < density.size(); ++i)
-    shape[i] = density[i] > 0 ? std::min(8.0, std::sqrt(mean / density[i])) : 8.0;
+    if (density[i] > 0) {
+      pixels.push_back(all_pixels[i]);
+      index.push_back(i);
+    }
+  double mean = 0;
+  for (const std::size_t i : index) mean += density[i];
+  mean /= double(index.size());
+  std::vector<double> shape(index.size());
+  for (std::size_t k = 0; k < index.size(); ++k)
+    shape[k] = std::min(8.0, std::sqrt(mean / density[index[k]]));
   fs::Dart_throwing_options o;
   o.sigma_position = sigma_position;
   o.sigma_feature = sigma_feature;
-  o.seed = seed;
+  o.priority.resize(index.size());
+  {
+    std::mt19937_64 rng(seed);
+    for (std::size_t k = 0; k < index.size(); ++k) {
+      const double u = (static_cast<double>(rng() >> 11) + 0.5) * 0x1p-53;  // in (0, 1)
+      o.priority[k] = std::log(u) / density[index[k]];                      // log of u^(1 / rho)
+    }
+  }
   auto run = [&](double R) {
     o.radii.resize(shape.size());
-    for (std::size_t i = 0; i < shape.size(); ++i) o.radii[i] = R * shape[i];
+    for (std::size_t k = 0; k < shape.size(); ++k) o.radii[k] = R * shape[k];
     std::vector<std::size_t> kept;
     fs::bilateral_dart_throwing(pixels, 1.0, std::back_inserter(kept),
                                 o);  // the radius is ignored with radii
+    for (std::size_t& k : kept) k = index[k];
     return kept;
   };
   double lo = 0, hi = 2.0;  // in units of sigma_position: d_hex is about 1
@@ -392,18 +411,23 @@ int run_stipple(const std::vector<std::string>& argv) {
     if (ink > 0)
       throw Usage_error("--gamma " + json_number(s.gamma) + " makes the darkness of every pixel of " + input +
                         " underflow to 0 (darkness in [0, 1) raised to it); use a smaller --gamma");
-    throw io::Input_error(input + " is white everywhere: nothing to stipple");  // the file, not an option
   }
+  // A white picture is degenerate, not an error: its stippling has no dot (written as an empty picture).
+  const bool white = !(total > 0);
+  if (white)
+    std::fprintf(stderr, "featurerecon stipple: warning: %s is white everywhere: no dot to place\n",
+                 input.c_str());
   // More dots than pixels with ink: the extra dots had nowhere to go (kernel relaxation pushed them into the
   // picture's white corners, Lloyd left them on white pixels).
-  if (s.count > inked)
+  if (!white && s.count > inked)
     throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(inked) +
                       " pixels of " + input + " with any darkness (of " + std::to_string(pixels) + ")");
 
   const std::vector<std::array<double, 3>> palette = make_palette(image, std::size_t(palette_size), s.seed);
   Progress progress("stippling", args.has("quiet"));
   Stipple_report report;
-  const std::vector<Dot> dots = image.channels == 3
+  const std::vector<Dot> dots = white ? std::vector<Dot>()
+                                : image.channels == 3
                                     ? stipple<Rgb_pixel, 3>(image, s, palette, progress, report)
                                     : stipple<Grey_pixel, 1>(image, s, palette, progress, report);
   progress.done(std::to_string(dots.size()) + " dots");
@@ -411,7 +435,7 @@ int run_stipple(const std::vector<std::string>& argv) {
   // Dots of one size: at the darkest density their spacing is d_hex sqrt(mean / peak); half of that covers
   // it.
   const double d_hex = std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(dots.size())));
-  const double dot = std::max(0.5, 0.5 * d_hex * std::sqrt(total / double(pixels) / peak));
+  const double dot = white ? 0.5 : std::max(0.5, 0.5 * d_hex * std::sqrt(total / double(pixels) / peak));
   if (args.has("out")) write_svg(outputs.path("out"), dots, palette, image.width, image.height, dot);
   if (args.has("png")) write_raster(outputs.path("png"), dots, palette, image.width, image.height, dot);
   outputs.commit();

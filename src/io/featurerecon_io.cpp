@@ -260,6 +260,8 @@ Map_file read_map(const std::string& vertices_path, const std::string& edges_pat
     if (t.size() == 4)
       (void)parse_id(t[3], edges_path, number, "edge flag");  // read and ignored, but an integer
     if (e[0] == e[1] && m.self_loops++ == 0) m.first_self_loop_line = number;
+    if (e[0] != e[1] && m.positions[e[0]] == m.positions[e[1]] && m.zero_length_edges++ == 0)
+      m.first_zero_length_line = number;
     m.edges.push_back(e);
   });
   return m;

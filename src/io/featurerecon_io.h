@@ -58,8 +58,11 @@ struct Map_file {
   std::vector<std::array<double, 2>> positions;
   std::vector<std::array<std::uint32_t, 2>> edges;
   std::size_t self_loops = 0;  ///< edges from a vertex to itself (kept in `edges`; they have no length)
-  std::size_t first_self_loop_line = 0;   ///< line of the first of them in the edge file (0: none)
-  std::vector<std::size_t> vertex_lines;  ///< the line of each vertex in the vertex file
+  std::size_t first_self_loop_line = 0;  ///< line of the first of them in the edge file (0: none)
+  /// edges between two vertices at one position (kept in `edges`; they have no length either)
+  std::size_t zero_length_edges = 0;
+  std::size_t first_zero_length_line = 0;  ///< line of the first of them in the edge file (0: none)
+  std::vector<std::size_t> vertex_lines;   ///< the line of each vertex in the vertex file
 };
 Map_file read_map(const std::string& vertices_path, const std::string& edges_path);
 

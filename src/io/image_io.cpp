@@ -67,6 +67,9 @@ Image read_png(const std::string& path) {
   }
   const bool colour = (img.format & PNG_FORMAT_FLAG_COLOR) != 0;
   img.format = colour ? PNG_FORMAT_RGB : PNG_FORMAT_GRAY;  // 8-bit
+  // A 16-bit file without gAMA or sRGB chunk holds encoded values like an 8-bit one (v / 257 on the 8-bit
+  // scale). libpng assumes linear light there and encoded it again: mid-grey 32768 read as 186, not 128.
+  img.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
   Image out;
   out.width = int(img.width);
   out.height = int(img.height);

@@ -134,6 +134,7 @@ void read_off(const std::string& path, Point_cloud& c) {
   if (t[0][0] == '-' || end == s || *end != '\0' || errno == ERANGE)
     throw Input_error(at_line(path, number) + "'" + t[0] + "' is not a vertex count");
   const std::size_t per_vertex = normals ? 6 : 3;
+  c.colors_ignored = colours;
   c.points.reserve(static_cast<std::size_t>(std::min<unsigned long long>(n, 1u << 20)));
   for (unsigned long long i = 0; i < n; ++i) {
     if (!next())
@@ -500,7 +501,7 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud,
   if (!(out && out.flush())) throw Input_error(path + ": cannot write");
 }
 
-void estimate_normals(Point_cloud& cloud, unsigned neighbors) {
+void estimate_normals(Point_cloud& cloud, unsigned neighbors, const std::function<void(double)>& progress) {
   // Copies of a position share its normal: the fit runs on the distinct positions (a neighbourhood of 18
   // copies of one point has no plane, and the jet fit crashed on it: 30 copies among 500 points). Too few
   // distinct positions for a fit (fewer than 6, or no neighbourhood spanning a plane) keep (0, 0, 1).
@@ -529,8 +530,14 @@ void estimate_normals(Point_cloud& cloud, unsigned neighbors) {
   cloud.normals.assign(n, {0, 0, 1});
   if (pwn.size() < 6) return;
   const unsigned k = static_cast<unsigned>(std::min<std::size_t>(neighbors, pwn.size() - 1));
+  // The fit reports its fraction done (most of the time: 19 s for 400,000 points), the orientation none.
+  const std::function<bool(double)> report = [&progress](double t) {
+    if (progress) progress(0.9 * t);
+    return true;
+  };
   CGAL::jet_estimate_normals<CGAL::Sequential_tag>(
-      pwn, k, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+      pwn, k, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).callback(report));
+  if (progress) progress(0.9);
   // mst_orient_normals reorders the range: orient tuples that remember the indices.
   using Indexed = std::tuple<K::Point_3, K::Vector_3, std::size_t>;
   std::vector<Indexed> indexed;

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct Point_cloud {
   std::vector<std::array<double, 3>> normals;  ///< empty when the file has none
   /// red, green, blue; empty when the file has none (PLY only)
   std::vector<std::array<unsigned char, 3>> colors;
+  bool colors_ignored = false;  ///< the file has colours that are not read (COFF, CNOFF)
   /// the line of each point in a text file (XYZ, OFF); empty for PLY
   std::vector<std::size_t> lines;
   bool has_normals() const { return !normals.empty(); }
@@ -45,7 +47,8 @@ void write_point_cloud(const std::string& path, const Point_cloud& cloud,
 
 /// Estimates unit normals (jet fitting over `neighbors` nearest neighbours, then orientation along a
 /// minimum spanning tree, CGAL); normals that cannot be oriented keep the fitted direction.
-void estimate_normals(Point_cloud& cloud, unsigned neighbors = 18);
+void estimate_normals(Point_cloud& cloud, unsigned neighbors = 18,
+                      const std::function<void(double)>& progress = nullptr);
 
 }  // namespace io
 }  // namespace FeatureRecon

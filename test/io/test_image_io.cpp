@@ -166,6 +166,20 @@ TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
   EXPECT_EQ(io::read_image(png).width, 64);
 }
 
+TEST(ImageIo, SixteenBitPngHoldsEncodedValues) {
+  // 16-bit files without gAMA (test/data/grey16.png: 0, 8000, 32768, 65535 and a white row; rgb16.png:
+  // (32768, 0, 65535) and white) read as v / 257 rounded, as an 8-bit file of the same picture; libpng took
+  // them for linear light and encoded them again (32768 read as 186, 8000 as 98).
+  const io::Image grey = io::read_image(std::string(FEATURERECON_TEST_DATA_DIR) + "/grey16.png");
+  ASSERT_EQ(grey.channels, 1);
+  ASSERT_EQ(grey.data.size(), 8u);
+  EXPECT_EQ(std::vector<int>(grey.data.begin(), grey.data.begin() + 4), (std::vector<int>{0, 31, 128, 255}));
+  const io::Image rgb = io::read_image(std::string(FEATURERECON_TEST_DATA_DIR) + "/rgb16.png");
+  ASSERT_EQ(rgb.channels, 3);
+  EXPECT_EQ(std::vector<int>(rgb.data.begin(), rgb.data.end()),
+            (std::vector<int>{128, 0, 255, 255, 255, 255}));
+}
+
 TEST(ImageIo, TransparencyIsCompositedOntoWhite) {
   // A black vertical line on a fully transparent background (RGBA and grey + alpha): the background reads as
   // white paper (libpng composited it onto the zeroed buffer: black, so every pixel was ink), the line as

@@ -26,23 +26,24 @@ namespace skeleton {
 /// Options of estimate_rips_radius().
 struct Rips_radius_options {
   /// Points whose distances to all points are measured, spread evenly by index (point t * n / m for t < m);
-  /// all points when there are fewer. The work is m * n distances. Default 1000.
+  /// all points when there are fewer. The work is m * n distances. At least 1; default 1000.
   std::size_t reference_points = 1000;
-  /// The scale is not below the radius at which a point has this many neighbours on average. Default 8.
+  /// The scale is not below the radius at which a point has this many neighbours on average. Finite and >=
+  /// 1; default 8.
   double min_neighbours = 8;
   /// The scale is the smallest radius at which the points show at most the intrinsic dimension plus this.
-  /// Default 0.5.
+  /// Finite and >= 0; default 0.5.
   double dimension_margin = 0.5;
-  /// The radius is this times the scale. Default 1.5.
+  /// The radius is this times the scale. In (0, 2^100]; default 1.5.
   double radius_factor = 1.5;
   /// The radius is also at least the first profile radius within which a point has 2 ln(n /
   /// max_expected_gaps) neighbours on average (at most (n - 1) / 2): where n points lie at random (Poisson)
   /// along curves, a point has 2 lambda r neighbours within r (lambda points per unit length), and the
   /// expected number of gaps wider than r, n exp(-lambda r), is then at most max_expected_gaps. A gap wider
-  /// than the radius splits the skeleton. Default 0.05.
+  /// than the radius splits the skeleton. In (0, 1]; default 0.05.
   double max_expected_gaps = 0.05;
   /// The suggested persistence threshold is at least this times the scale (Rips_radius_estimate::delta).
-  /// Default 2.25 (1.5 times the default radius_factor).
+  /// In [0, 2^100]; default 2.25 (1.5 times the default radius_factor).
   double delta_factor = 2.25;
   Progress_callback progress;  ///< called with the fraction of reference points done; returning false stops
 };

@@ -59,9 +59,9 @@ struct Map_comparison_options {
   /// Samples match when at most this far apart (m); default 15. Within [2^-450, 2^450] (about 3e-136 to
   /// 3e135): squares of distances near it stay normal doubles
   double match_distance = 15.0;
-  double interval = 5.0;  ///< distance between samples along edges (m); default 5
+  double interval = 5.0;  ///< distance between samples along edges (m; finite and > 0); default 5
   /// Samples match when their direction-insensitive bearings (differences in [0, 90]) differ by less
-  /// (degrees; above 90: bearings are ignored); default 45
+  /// (degrees, > 0; above 90: bearings are ignored); default 45
   double bearing_limit = 45.0;
   /// Nearest reconstruction samples the greedy matching considers per ground-truth sample; default 10 (the
   /// optimal matching considers every admissible pair)
@@ -1080,7 +1080,7 @@ struct Map_crop_options {
   /// The trace points: the fixes, and between two consecutive fixes of a trip (by time) at most max_gap
   /// apart, points that cut the segment into equal pieces of at most trace_step; default 10
   double trace_step = 10;
-  double max_gap = 500;  ///< see trace_step; 0: the fixes alone; default 500
+  double max_gap = 500;  ///< see trace_step; finite and >= 0; 0: the fixes alone; default 500
   /// Called with the fraction of the edges checked (every 4096 edges; the trace points are made at 0);
   /// returning false stops: the map holds the edges kept so far, status interrupted.
   Progress_callback progress;

@@ -581,8 +581,8 @@ inline Road_merge_result merge_road_lines(const Embedded_graph_2& map,
 struct Road_map_options {
   /// Rips radius (> 0); automatic (default): M clamped to [min_radius, max_radius]
   std::optional<double> rips_radius = FeatureRecon::automatic;
-  double min_radius = 10;  ///< lower clamp of the automatic radius (m); default 10
-  double max_radius = 30;  ///< upper clamp of the automatic radius (m); default 30
+  double min_radius = 10;  ///< lower clamp of the automatic radius (m; > 0, <= max_radius); default 10
+  double max_radius = 30;  ///< upper clamp of the automatic radius (m; finite); default 30
   /// persistence threshold of the simplification; automatic (default): 3 R; 0: none
   std::optional<double> delta = FeatureRecon::automatic;
   /// join dead ends at most this far apart; automatic (default): 2.5 R; 0: no repair

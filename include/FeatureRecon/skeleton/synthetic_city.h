@@ -64,9 +64,10 @@ struct Synthetic_city_options {
   /// such crossings at 0.15, about 20 at 0.3). In [0, 0.5]; default 0
   double curvature = 0;
   std::size_t trips = 300;  ///< default 300
-  double speed = 10;        ///< mean driving speed; each trip drives at 0.7 to 1.3 times it; default 10
-  double sampling_interval = 3.6;  ///< time between fixes (the first one at a random phase); default 3.6
-  double noise = 4;                ///< standard deviation of the noise of each coordinate of a fix; default 4
+  double speed = 10;        ///< mean driving speed (> 0); each trip drives at 0.7 to 1.3 times it; default 10
+  /// time between fixes (> 0; the first one at a random phase); default 3.6
+  double sampling_interval = 3.6;
+  double noise = 4;      ///< standard deviation of the noise of each coordinate of a fix; default 4
   double trip_bias = 2;  ///< standard deviation of a constant offset per trip and coordinate; default 2
   /// vehicles drive this far right of the centre line, at most half the shorter block side; default 2
   double lane_offset = 2;
