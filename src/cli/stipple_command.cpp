@@ -188,7 +188,9 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
     return kept;
   };
   double lo = 0, hi = 2.0;  // in units of sigma_position: d_hex is about 1
-  std::vector<std::size_t> best = run(lo + 1e-9);
+  (void)progress(0.0);      // shown at once: the first throws take seconds on large pictures
+  // At a radius near 0 every inked pixel is kept (pixels are 1 apart): the fallback, without a throw.
+  std::vector<std::size_t> best = index;
   // Grow until a throw keeps fewer than `count` dots, or a single one (then every larger radius keeps one
   // too: count 1 needs no bracket).
   for (std::size_t kept = run(hi).size(); kept >= count && kept > 1; kept = run(hi).size()) hi *= 2;
@@ -202,6 +204,9 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
       hi = mid;
     }
     if (!progress(0.5 * (it + 1) / 30.0)) break;
+    // Within 1 % of the count (the surplus is dropped at random below): each throw visits every inked pixel,
+    // and 30 of them took 48 s for 200 dots on a 2000 x 1000 picture.
+    if (best.size() >= count && best.size() <= count + count / 100) break;
   }
   if (best.size() > count) {
     std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
