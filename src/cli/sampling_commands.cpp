@@ -82,6 +82,9 @@ int sample_plane(const Arguments& args, const io::Point_file& file, const Sample
   if (request.count > points.size())
     throw Usage_error("--count " + std::to_string(request.count) + " exceeds the " +
                       std::to_string(points.size()) + " points of " + input);
+  if (points.empty())
+    std::fprintf(stderr, "featurerecon sample: warning: %s holds no points: the sample is empty\n",
+                 input.c_str());
   Progress progress("sampling", args.has("quiet"));
   double used_radius = 0;
   const std::vector<std::size_t> kept = run_sampler(
@@ -169,12 +172,15 @@ int run_sample(const std::vector<std::string>& argv) {
   // clouds (3, or 6 with normals), as `sample-stats` reads them.
   const std::string extension = io::file_extension(input);
   io::Point_cloud cloud;
+  // An empty cloud is degenerate, not an error: --count refuses it as any count above the points, darts at a
+  // --radius keep nothing.
   if (extension == "ply" || extension == "off" || extension == "xyz") {
-    cloud = io::read_point_cloud(input);
-  } else {
-    const io::Point_file text = read_text_points(input);
-    if (text.size() == 0) throw io::Input_error(input + ": no points");
-    if (text.dimension == 2) return sample_plane(args, text, request, outputs);
+    cloud = io::read_point_cloud(input, true);
+  } else if (const io::Point_file text = read_text_points(input);
+             text.dimension == 2 ||
+             (text.size() == 0 && io::file_extension(outputs.target("out")) == "txt")) {
+    return sample_plane(args, text, request, outputs);  // an empty text file is what the output says
+  } else if (text.size() > 0) {
     if (text.dimension != 3 && text.dimension != 6)
       throw io::Input_error(input +
                             ": expected 2 numbers per line (points in the plane), 3 (a cloud) or 6 (a "
@@ -194,6 +200,9 @@ int run_sample(const std::vector<std::string>& argv) {
   if (count > static_cast<long long>(cloud.points.size()))
     throw Usage_error("--count " + std::to_string(count) + " exceeds the " +
                       std::to_string(cloud.points.size()) + " points of " + input);
+  if (cloud.points.empty())
+    std::fprintf(stderr, "featurerecon sample: warning: %s holds no points: the sample is empty\n",
+                 input.c_str());
   std::string normals = cloud.has_normals() ? "file" : "none";
   if (!cloud.has_normals() && std::isfinite(sigma_feature)) {
     Progress p("estimating normals", quiet);

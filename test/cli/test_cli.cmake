@@ -628,7 +628,8 @@ expect(sample_stats_obj_read_as_text 1 "a file ending in .obj is read as text" s
 # ... but a missing file is only missing.
 expect(sample_missing_obj 1 "missing.obj: cannot open for reading \\(No such file or directory\\)\n" sample --input ${WORK}/missing.obj --count 1 --out ${WORK}/s.xyz)
 file(WRITE ${WORK}/no_points.txt "# nothing\n")
-expect(sample_no_points 1 "no_points.txt: no points" sample --input ${WORK}/no_points.txt --count 1 --out ${WORK}/s.txt)
+expect(sample_no_points 2 "--count 1 exceeds the 0 points of .*no_points.txt" sample --input ${WORK}/no_points.txt --count 1 --out ${WORK}/s.txt)
+expect(sample_no_points_radius 0 "\"kept\": 0,.*no_points.txt holds no points: the sample is empty" sample --input ${WORK}/no_points.txt --method darts --radius 0.1 --out ${WORK}/s.txt --quiet)
 # Points in the plane (lines 'x y'): 1500 candidates of a linear congruential generator in the unit square,
 # sampled on the unit torus (--periodic) and written as lines 'x y' that sample-stats reads.
 set(candidates "")
@@ -1065,6 +1066,12 @@ endforeach()
 expect(sample_colors_estimated_normals 0 "\"normals\": \"estimated\", \"colors\": \"file\"" sample --input ${WORK}/colors.ply --count 3 --sigma-feature 0.5 --normal-neighbors 4 --out ${WORK}/colors_n.ply --quiet)
 expect_count(${WORK}/colors_n.ply "property float nz|property double nz" 1)
 expect(sample_colors_dropped 0 "\"colors\": \"dropped\"" sample --input ${WORK}/colors.ply --count 3 --out ${WORK}/colors_out.xyz --quiet)
+# An empty cloud is degenerate, not an error: darts at a radius keep nothing (an empty file and a warning); a count
+# is refused as any count above the points (both files were refused as holding no points).
+file(WRITE ${WORK}/empty_cloud.xyz "")
+expect(sample_empty_cloud 0 "\"points\": 0, \"kept\": 0,.*holds no points: the sample is empty" sample --input ${WORK}/empty_cloud.xyz --method darts --radius 0.1 --out ${WORK}/empty_out.ply --quiet)
+expect_count(${WORK}/empty_out.ply "element vertex 0" 1)
+expect(sample_empty_cloud_count 2 "--count 3 exceeds the 0 points" sample --input ${WORK}/empty_cloud.xyz --count 3 --out ${WORK}/empty_out.xyz)
 # OFF colours are not read: reported as dropped (they read "none").
 file(WRITE ${WORK}/colors.off "COFF\n4 0 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n1 1 0 9 9 9 255\n")
 expect(sample_off_colors_dropped 0 "\"kept\": 2,.*\"colors\": \"dropped\"" sample --input ${WORK}/colors.off --count 2 --out ${WORK}/colors_off.ply --quiet)
