@@ -490,11 +490,11 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         }
       line.swap(next);
     };
-    for (std::size_t it = 0; it < options.smoothing_iterations; ++it) {
-      if (n > 2) {
-        step(lambda);
-        if (taubin) step(mu);
-      }
+    if (n <= 2)  // nothing to smooth: its rounds count at once (the next arc's check reports them)
+      work += arc_work * rounds;
+    for (std::size_t it = 0; n > 2 && it < options.smoothing_iterations; ++it) {
+      step(lambda);
+      if (taubin) step(mu);
       work += arc_work;
       if (!keep_going()) {  // this arc is not finished: straight, as the rest
         stop_at(a);
