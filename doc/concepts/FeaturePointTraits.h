@@ -39,7 +39,9 @@ class FeaturePointTraits {
 /// \ingroup Concepts
 /// The concept BilateralMetric: the bilateral distance xi of two samples from their squared spatial and
 /// squared feature distances. Models: FeatureRecon::sampling::Gaussian_bilateral_metric (Eqn 2.4) and
-/// FeatureRecon::sampling::Exponential_bilateral_metric (Eqn 2.5).
+/// FeatureRecon::sampling::Exponential_bilateral_metric (Eqn 2.5), which the samplers choose between by their
+/// options' `form` (Bilateral_form); they take no other model. A user adapts the metric through the feature
+/// distance of the traits (FeaturePointTraits), which both models mix with the position.
 ///
 /// Every model must satisfy xi >= |dp| / spatial_scale(): the samplers search neighbours spatially within
 /// r * spatial_scale() for a bilateral radius r, and would miss neighbours of a metric that broke the bound.

@@ -13,7 +13,9 @@
 namespace FeatureRecon {
 
 /// Progress callback shared by every options struct: called with the fraction done in [0, 1];
-/// returning false asks the algorithm to stop early (its result then says `interrupted`).
+/// returning false asks the algorithm to stop early (its result then says `interrupted`). The last call, with
+/// 1, reports that the work is done: its answer is ignored and the result is complete (a stop asked there has
+/// nothing left to save).
 using Progress_callback = std::function<bool(double)>;
 
 /// The value of an option that has a rule of its own (a `std::optional` field of an options struct; the

@@ -112,8 +112,8 @@ struct Point_with_normal_traits {
   Compute_feature_distance compute_feature_distance_object() const { return {orientation}; }
 };
 
-/// A pixel of a grey image: integer column and row, value in [0, 255] (or any scale: the distance is the
-/// squared difference of the values divided by 255^2).
+/// A pixel of a grey image: integer column and row, value in [0, 255] (8 bits; the feature distance is the
+/// squared difference of the values divided by 255^2, in [0, 1]).
 struct Grey_pixel {
   int column = 0;          ///< x, from the left
   int row = 0;             ///< y, from the top
@@ -204,10 +204,16 @@ struct Property_map_traits {
     const FeatureMap* map;                                         ///< the traits' map
     Feature operator()(const Item& i) const { return (*map)(i); }  ///< feature
   };
-  /// The user's squared feature distance.
+  /// The user's squared feature distance; -1 (not a distance: the samplers refuse the item, naming it) when
+  /// it is NaN (a NaN channel). FT(NaN) failed inside an exact kernel (Epeck: SIGFPE in GMP) before the
+  /// samplers could name the item.
   struct Compute_feature_distance {
     const FeatureDistance* distance;  ///< the traits' functor
-    FT operator()(const Feature& a, const Feature& b) const { return FT((*distance)(a, b)); }  ///< distance
+    /// The distance as FT.
+    FT operator()(const Feature& a, const Feature& b) const {
+      const double d = static_cast<double>((*distance)(a, b));
+      return std::isnan(d) ? FT(-1) : FT(d);
+    }
   };
   Construct_point construct_point_object() const { return {&point_map}; }        ///< functor
   Construct_feature construct_feature_object() const { return {&feature_map}; }  ///< functor

@@ -672,6 +672,12 @@ expect(sample_darts 0 "\"method\": \"darts\"" sample --input ${WORK}/wall.xyz --
 expect(sample_darts_count 0 "\"kept\": 60,.*\"method\": \"darts\"" sample --input ${WORK}/wall.xyz --count 60 --method darts --out ${WORK}/d.xyz --quiet)
 # No normals in the file: estimated when the bilateral distance needs them.
 expect(sample_estimate 0 "\"normals\": \"estimated\"" sample --input ${WORK}/wall_plain.xyz --count 100 --sigma-feature 0.5 --unoriented --out ${WORK}/e.xyz --quiet)
+# The estimate reports its progress (CGAL's callback): without --quiet its stage is announced on stderr (the
+# line a pipe gets) and ends with its "done" line.
+expect(sample_estimate_progress 0 "\"normals\": \"estimated\"" sample --input ${WORK}/wall_plain.xyz --count 100 --sigma-feature 0.5 --unoriented --out ${WORK}/e.xyz)
+if(NOT last_error MATCHES "estimating normals \\.\\.\\.\n(.*\n)?estimating normals: done")
+  message(SEND_ERROR "sample_estimate_progress: no progress of the normal estimation:\n${last_error}")
+endif()
 # Copies of a point (merged scans): the normal fit runs on the distinct positions (30 copies among the points, or a
 # file of copies only, crashed the jet fit).
 file(READ ${WORK}/wall_plain.xyz wall_with_copies)

@@ -12,8 +12,10 @@
 
 #include "sampling/sampling_test_utilities.h"
 
+#include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -518,6 +520,79 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
         << e.what();
   }
   EXPECT_TRUE(kept.empty());
+}
+
+TEST(WeightedSampleElimination, UserFeatureWithNaNUnderAnExactKernelIsNamed) {
+  // A user's feature type through make_property_map_traits with a NaN channel: the user's distance is NaN,
+  // and FT(NaN) raised SIGFPE inside Epeck's GMP numbers (even in Euclidean sampling, which never needs the
+  // features) before the sampler could name the item.
+  struct Colour_sample {
+    double x, y;
+    std::array<double, 5> c;
+  };
+  auto run = [](auto kernel_tag, const std::vector<Colour_sample>& items, double sigma_feature,
+                const char* which) {
+    using K = decltype(kernel_tag);
+    const auto traits = make_property_map_traits<K, 2, Colour_sample>(
+        [](const Colour_sample& s) { return typename K::Point_2(s.x, s.y); },
+        [](const Colour_sample& s) { return s.c; },
+        [](const std::array<double, 5>& a, const std::array<double, 5>& b) {
+          double d = 0;
+          for (std::size_t k = 0; k < 5; ++k) d += (a[k] - b[k]) * (a[k] - b[k]);
+          return d;
+        });
+    std::vector<std::size_t> kept;
+    if (std::string(which) == "darts") {
+      Dart_throwing_options o;
+      o.sigma_feature = sigma_feature;
+      bilateral_dart_throwing(items, 0.2, std::back_inserter(kept), o, traits);
+    } else if (std::string(which) == "quality") {
+      Sampling_quality_options o;
+      o.sigma_feature = sigma_feature;
+      (void)sampling_quality(items, o, traits);
+      kept.push_back(0);
+    } else {
+      Elimination_options o;
+      o.sigma_feature = sigma_feature;
+      weighted_sample_elimination(items, 10, std::back_inserter(kept), o, traits);
+    }
+    return kept;
+  };
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Colour_sample> items(50);
+  for (auto& s : items) {
+    s.x = u(rng);
+    s.y = u(rng);
+    for (double& c : s.c) c = u(rng);
+  }
+  std::vector<Colour_sample> with_nan = items;
+  with_nan[17].c[0] = std::numeric_limits<double>::quiet_NaN();
+  for (const char* which : {"elimination", "darts", "quality"}) {
+    for (const bool exact : {false, true}) {
+      const std::string name = std::string(which) + (exact ? " (Epeck)" : " (Epick)");
+      try {
+        if (exact)
+          run(CGAL::Epeck(), with_nan, 0.3, which);
+        else
+          run(CGAL::Epick(), with_nan, 0.3, which);
+        ADD_FAILURE() << name << ": expected an exception";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("item 17 has a feature at distance NaN from itself"),
+                  std::string::npos)
+            << name << ": " << e.what();
+      }
+      // Euclidean: the features are never compared, so the NaN one is carried along, and the result is that
+      // of the same items without it.
+      const double inf = std::numeric_limits<double>::infinity();
+      const auto plain =
+          exact ? run(CGAL::Epeck(), items, inf, which) : run(CGAL::Epick(), items, inf, which);
+      const auto carried =
+          exact ? run(CGAL::Epeck(), with_nan, inf, which) : run(CGAL::Epick(), with_nan, inf, which);
+      EXPECT_EQ(carried, plain) << name;
+      EXPECT_FALSE(plain.empty()) << name;
+    }
+  }
 }
 
 TEST(WeightedSampleElimination, NormalsOfAnyLengthAreDirections) {

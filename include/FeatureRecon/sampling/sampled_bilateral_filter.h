@@ -31,6 +31,7 @@
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/internal/random.h>
+#include <FeatureRecon/sampling/internal/radius_search.h>
 
 #include <algorithm>
 #include <array>
@@ -430,28 +431,6 @@ void local_darts(const Filter_image& F, const Local_pool& pool, std::size_t s, i
     if (inside) on_tap(q);
   }
 }
-
-/// The next radius of a root search for count(r) = goal with count decreasing in r: a secant step on
-/// log count against log r (exponent 2 until two counts are known, clamped to [0.5, 8]), kept inside the
-/// bracket (lo, hi) by bisection.
-struct Radius_search {
-  double lo = 0, hi = std::numeric_limits<double>::infinity();
-  double last_r = 0, last_c = 0;
-  double next(double r, double c, double goal, bool enough) {
-    if (enough)
-      lo = std::max(lo, r);
-    else
-      hi = std::min(hi, r);
-    double k = 2;
-    if (last_r > 0 && last_c > 0 && c > 0 && last_c != c && last_r != r)
-      k = std::clamp(-(std::log(c) - std::log(last_c)) / (std::log(r) - std::log(last_r)), 0.5, 8.0);
-    last_r = r;
-    last_c = c;
-    double n = c > 0 ? r * std::pow(c / goal, 1 / k) : 0.5 * r;
-    if (!(n > lo && n < hi)) n = std::isfinite(hi) ? 0.5 * (lo + hi) : 2 * r;
-    return n;
-  }
-};
 
 /// The candidate set a window uses.
 inline std::size_t local_set(std::uint64_t seed, std::size_t p, std::size_t sets) {

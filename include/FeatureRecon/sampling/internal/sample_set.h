@@ -123,12 +123,13 @@ struct Sample_set {
   std::vector<Point> positions;
   std::vector<Feature> features;
   typename Traits::Compute_feature_distance feature_distance;
+  bool compared = true;  ///< whether features are compared (else squared_feature_distance() is 0)
 
-  /// `compared`: whether features will be compared (a finite sigma_feature); only then must each be at a
-  /// finite distance from itself (checked; throws naming the item).
+  /// `compare_features`: whether features will be compared (a finite sigma_feature); only then must each be
+  /// at a finite distance from itself (checked; throws naming the item).
   template <class ItemRange>
-  Sample_set(const ItemRange& items, const Traits& traits, const char* fn, bool compared = true)
-      : feature_distance(traits.compute_feature_distance_object()) {
+  Sample_set(const ItemRange& items, const Traits& traits, const char* fn, bool compare_features = true)
+      : feature_distance(traits.compute_feature_distance_object()), compared(compare_features) {
     static_assert(FeatureRecon::internal::Is_feature_point_traits<Traits>::value,
                   "FeatureRecon: the traits class is not a model of FeaturePointTraits (see "
                   "doc/concepts/FeaturePointTraits.h)");
@@ -187,8 +188,10 @@ struct Sample_set {
     }
     return s;
   }
+  /// The squared feature distance of items i and j; 0 when features are not compared (an infinite
+  /// sigma_feature: the metrics ignore it, and the user's distance is neither paid for nor trusted there).
   double squared_feature_distance(std::size_t i, std::size_t j) const {
-    return CGAL::to_double(feature_distance(features[i], features[j]));
+    return compared ? CGAL::to_double(feature_distance(features[i], features[j])) : 0.0;
   }
 };
 
