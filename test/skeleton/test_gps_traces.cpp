@@ -83,6 +83,25 @@ TEST(GpsTraces, SpacingLinksAndDerivedParameters) {
   EXPECT_EQ(sample_gps_traces(trips, 20.0).points.data, mean.points.data);
 }
 
+TEST(GpsTraces, ANonFiniteFixNamesItsField) {
+  // "has a non-finite value" did not say whether x, y or the time was bad.
+  const std::vector<std::vector<Gps_fix>> good = {{{0, 0, 0}, {10, 0, 1}, {20, 0, 2}},
+                                                  {{0, 5, 0}, {10, 5, 1}}};
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (int field = 0; field < 3; ++field) {
+    auto trips = good;
+    Gps_fix& f = trips[1][1];
+    (field == 0 ? f.x : field == 1 ? f.y : f.time) = field == 1 ? inf : nan;
+    const std::string name = field == 0 ? "x (nan)" : field == 1 ? "y (inf)" : "time (nan)";
+    try {
+      sample_gps_traces(trips, 20.0);
+      ADD_FAILURE() << name << ": expected an exception";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), "sample_gps_traces: trip 1, fix 1 has a non-finite " + name);
+    }
+  }
+}
+
 TEST(GpsTraces, TimeOrderGapsAndHeadings) {
   // Fixes given out of time order are sorted: the result equals the sorted trip's.
   Gps_trip sorted = straight(0, 0, 1, 0, 6, 25),

@@ -302,6 +302,27 @@ std::string error_of(const std::function<void()>& call) {
 }
 }  // namespace
 
+TEST(RepairReebGraph, ADistanceThatIsNotOneIsNamed) {
+  // Two segments, four dead ends. A user's distance returning NaN joined nothing and a negative one joined
+  // any pair, silently.
+  const std::vector<double> f = {0, 1, 3, 4};
+  const Reeb_graph R = reeb_graph_of(make(4, {{0, 1}, {2, 3}}, {}, f));
+  ASSERT_EQ(R.arcs.size(), 2u);
+  for (const double bad : {std::nan(""), -1.0}) {
+    auto distance = [bad](Vertex_index a, Vertex_index b) {
+      return (a == 1 && b == 2) || (a == 2 && b == 1) ? bad : 20.0;  // the segments' own ends: not joined
+    };
+    const std::string value = std::isnan(bad) ? "nan" : "-1";
+    for (const std::string& e : {error_of([&] { repair_reeb_graph(R, 10.0, distance); }),
+                                 error_of([&] { connect_dead_ends(R, f, 10.0, distance); })}) {
+      EXPECT_NE(e.find(": the distance between vertices "), std::string::npos) << e;
+      EXPECT_NE(e.find(" is " + value + " (the distance callable must return a number >= 0)"),
+                std::string::npos)
+          << e;
+    }
+  }
+}
+
 TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
   // Path 0 - 1 - 2 - 3 (f = x): one arc between nodes 0 and 1; then broken on purpose.
   Line pts;

@@ -245,10 +245,14 @@ double mean_of(std::size_t count, const X& x) {
   return sum;
 }
 
-/// Node positions and arc polylines in the space of P (any dimension), flat row-major.
+/// Node positions and arc polylines in the space of P (any dimension), flat row-major; with a second matrix
+/// Q of the same points (another space: the projection of P), the same centroids, bridges and smoothing
+/// drawn in Q too, point for point (every choice made in P).
 struct Flat_embedding {
-  std::vector<std::vector<double>> nodes;  ///< per node, P.dimension coordinates
-  std::vector<std::vector<double>> arcs;   ///< per arc, P.dimension coordinates per polyline vertex
+  std::vector<std::vector<double>> nodes;       ///< per node, P.dimension coordinates
+  std::vector<std::vector<double>> arcs;        ///< per arc, P.dimension coordinates per polyline vertex
+  std::vector<std::vector<double>> also_nodes;  ///< per node, Q.dimension coordinates (empty without Q)
+  std::vector<std::vector<double>> also_arcs;   ///< per arc, the polyline in Q (empty without Q)
   double max_gap = std::numeric_limits<double>::infinity();  ///< see Reeb_graph_embedding::max_gap
   Status status = Status::success;                           ///< see Reeb_graph_embedding::status
 };
@@ -288,9 +292,11 @@ inline void check_embedding_options(const Embedding_options& options, const char
 }
 
 inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency, const Point_matrix& P,
-                                 const std::vector<double>& values, const Embedding_options& options) {
+                                 const std::vector<double>& values, const Embedding_options& options,
+                                 const Point_matrix* Q = nullptr) {
   const char* fn = "embed_reeb_graph";
   const std::size_t d = P.dimension;
+  const std::size_t dq = Q != nullptr ? Q->dimension : 0;
   if (P.rows != values.size())
     FeatureRecon::internal::throw_invalid_argument(fn, "positions has ", P.rows, " points and values ",
                                                    values.size(),
@@ -314,11 +320,14 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   for (const auto& node : G.nodes) {
     check(node.vertex);
     for (const Vertex_index v : node.members) check(v);
-    std::vector<double> c(d);
-    for (std::size_t k = 0; k < d; ++k)
-      c[k] = mean_of(1 + node.members.size(),
-                     [&](std::size_t i) { return P.row(i == 0 ? node.vertex : node.members[i - 1])[k]; });
-    E.nodes.push_back(std::move(c));
+    for (const Point_matrix* M : {&P, Q}) {
+      if (M == nullptr) continue;
+      std::vector<double> c(M->dimension);
+      for (std::size_t k = 0; k < M->dimension; ++k)
+        c[k] = mean_of(1 + node.members.size(),
+                       [&](std::size_t i) { return M->row(i == 0 ? node.vertex : node.members[i - 1])[k]; });
+      (M == &P ? E.nodes : E.also_nodes).push_back(std::move(c));
+    }
   }
   const double width = options.level_width ? *options.level_width : automatic_level_width(G);
   // Two values lie in one bin when floor(value / width) is the same. A width far below the values'
@@ -362,11 +371,13 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   };
   const auto stop_at = [&](std::size_t a) {  // arcs a and later drawn straight, node to node
     E.status = Status::interrupted;
-    for (std::size_t b = a; b < G.arcs.size(); ++b) {
-      std::vector<double> straight(E.nodes[G.arcs[b].lower]);
-      straight.insert(straight.end(), E.nodes[G.arcs[b].upper].begin(), E.nodes[G.arcs[b].upper].end());
-      E.arcs.push_back(std::move(straight));
-    }
+    for (std::size_t b = a; b < G.arcs.size(); ++b)
+      for (int m = 0; m < (Q != nullptr ? 2 : 1); ++m) {
+        const auto& nodes = m == 0 ? E.nodes : E.also_nodes;
+        std::vector<double> straight(nodes[G.arcs[b].lower]);
+        straight.insert(straight.end(), nodes[G.arcs[b].upper].begin(), nodes[G.arcs[b].upper].end());
+        (m == 0 ? E.arcs : E.also_arcs).push_back(std::move(straight));
+      }
   };
   for (std::size_t a = 0; a < G.arcs.size(); ++a) {
     const auto& arc = G.arcs[a];
@@ -407,6 +418,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     size.assign(vs.size(), 0);
     for (std::size_t i = 0; i < vs.size(); ++i) ++size[find_root(parent, i)];
     std::vector<double> line(E.nodes[arc.lower]);
+    std::vector<double> also_line(Q != nullptr ? E.also_nodes[arc.lower] : std::vector<double>());
     std::vector<Vertex_index> origin{
         G.nodes[arc.lower].vertex};  // the input point each polyline point stands for
     std::size_t i = 0;
@@ -422,6 +434,8 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         if (find_root(parent, t) == best) piece.push_back(vs[t]);
       for (std::size_t k = 0; k < d; ++k)
         line[at + k] = mean_of(piece.size(), [&](std::size_t q) { return P.row(piece[q])[k]; });
+      for (std::size_t k = 0; k < dq; ++k)
+        also_line.push_back(mean_of(piece.size(), [&](std::size_t q) { return Q->row(piece[q])[k]; }));
       // The piece's point closest to the centroid (ties: the earliest); only needed to bridge gaps.
       double closest = std::numeric_limits<double>::infinity();
       origin.push_back(vs[i]);
@@ -438,22 +452,30 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       i = j;
     }
     line.insert(line.end(), E.nodes[arc.upper].begin(), E.nodes[arc.upper].end());
+    if (Q != nullptr)
+      also_line.insert(also_line.end(), E.also_nodes[arc.upper].begin(), E.also_nodes[arc.upper].end());
     origin.push_back(G.nodes[arc.upper].vertex);
     if (finder) {  // bridge wide gaps through the graph
       std::vector<double> bridged(line.begin(), line.begin() + static_cast<std::ptrdiff_t>(d));
-      // Appends a point, except where the polyline would go out and back to the same point: a bridge's last
-      // vertex X, the piece's centroid B beside it, the next bridge leaving through X again (X B X C becomes
-      // X B C; at the upper node, W X B X becomes W X, and X B X stays).
-      auto append = [&](const double* p, bool last) {
+      std::vector<double> also_bridged(also_line.begin(),
+                                       also_line.begin() + static_cast<std::ptrdiff_t>(dq));
+      // Appends a point (and its twin in Q), except where the polyline would go out and back to the same
+      // point: a bridge's last vertex X, the piece's centroid B beside it, the next bridge leaving through X
+      // again (X B X C becomes X B C; at the upper node, W X B X becomes W X, and X B X stays).
+      auto append = [&](const double* p, const double* q, bool last) {
         const std::size_t n = bridged.size() / d;
         if (n >= 2 && std::equal(p, p + d, bridged.begin() + static_cast<std::ptrdiff_t>((n - 2) * d)) &&
             (!last || n >= 3)) {  // an arc between nodes at one place keeps its tip: a line has two points
-          if (last) bridged.resize((n - 1) * d);
+          if (last) {
+            bridged.resize((n - 1) * d);
+            also_bridged.resize((n - 1) * dq);
+          }
           return;
         }
         bridged.insert(bridged.end(), p, p + d);
+        also_bridged.insert(also_bridged.end(), q, q + dq);
       };
-      std::vector<double> mean(d);
+      std::vector<double> mean(d), also_mean(dq);
       for (std::size_t t = 1; t < origin.size(); ++t) {
         // As the graph's edge lengths are measured (the squares made bridging depend on the scale: nothing
         // was bridged below about 1e-160, every gap above about 1e154).
@@ -466,29 +488,39 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
               mean[c] = mean_of(count, [&](std::size_t q) {
                 return P.row(q == 0 ? v : adjacency->targets[first + q - 1])[c];
               });
-            append(mean.data(), false);
+            for (std::size_t c = 0; c < dq; ++c)
+              also_mean[c] = mean_of(count, [&](std::size_t q) {
+                return Q->row(q == 0 ? v : adjacency->targets[first + q - 1])[c];
+              });
+            append(mean.data(), also_mean.data(), false);
           }
-        append(line.data() + t * d, t + 1 == origin.size());
+        append(line.data() + t * d, also_line.data() + t * dq, t + 1 == origin.size());
       }
       line.swap(bridged);
+      also_line.swap(also_bridged);
     }
     const std::size_t n = d == 0 ? 0 : line.size() / d;
     const double lambda = options.smoothing_weight;
     const bool taubin = options.smoothing == Embedding_options::Smoothing::taubin && lambda > 0;
     const double mu = taubin ? 1 / (0.1 - 1 / lambda) : 0.0;
     std::vector<double> next;
-    auto step = [&](double w) {  // every interior point moves by w towards the mean of its neighbours
-      next = line;
+    // Every interior point moves by w towards the mean of its neighbours (in P, and in Q alike).
+    auto step_of = [&](std::vector<double>& points, std::size_t dim, double w) {
+      next = points;
       for (std::size_t t = 1; t + 1 < n; ++t)
-        for (std::size_t k = 0; k < d; ++k) {
-          const double x = line[t * d + k];
+        for (std::size_t k = 0; k < dim; ++k) {
+          const double x = points[t * dim + k];
           // a sum could overflow
-          const double mean = 0.5 * line[(t - 1) * d + k] + 0.5 * line[(t + 1) * d + k];
-          next[t * d + k] = (1 - w) * x + w * mean;
+          const double mean = 0.5 * points[(t - 1) * dim + k] + 0.5 * points[(t + 1) * dim + k];
+          next[t * dim + k] = (1 - w) * x + w * mean;
           // Near the largest double, Taubin's (1 - w) x with w < 0 overflows: the same step as a move of x.
-          if (!std::isfinite(next[t * d + k])) next[t * d + k] = x + w * (mean - x);
+          if (!std::isfinite(next[t * dim + k])) next[t * dim + k] = x + w * (mean - x);
         }
-      line.swap(next);
+      points.swap(next);
+    };
+    auto step = [&](double w) {
+      step_of(line, d, w);
+      if (Q != nullptr) step_of(also_line, dq, w);
     };
     if (n <= 2)  // nothing to smooth: its rounds count at once (the next arc's check reports them)
       work += arc_work * rounds;
@@ -502,6 +534,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       }
     }
     E.arcs.push_back(std::move(line));
+    if (Q != nullptr) E.also_arcs.push_back(std::move(also_line));
   }
   (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return E;
@@ -848,6 +881,46 @@ inline Reeb_graph_input_embedding embed_reeb_graph_in_input_space(const Reeb_gra
   E.arc_polylines = std::move(F.arcs);
   return E;
 }
+
+namespace internal {
+/// \cond
+/// embed_reeb_graph_in_input_space() and embed_reeb_graph() on `projected` (the points' projection) drawn
+/// together: every choice (which gaps are bridged, along which shortest paths) is made in the input space,
+/// and the same centroids, bridges and smoothing are drawn in both, so that each 3D polyline is the
+/// projection of its input polyline point for point (up to rounding: centroids, smoothing and the PCA
+/// projection are all affine). Max_gap is in input units.
+inline std::pair<Reeb_graph_embedding, Reeb_graph_input_embedding> embed_reeb_graph_with_projection(
+    const Reeb_graph& G, const Proximity_graph& graph, const Point_matrix& points,
+    const std::vector<std::array<double, 3>>& projected, const std::vector<double>& values,
+    const Embedding_options& options) {
+  check_point_matrix(points, "embed_reeb_graph_in_input_space");
+  const Adjacency adjacency = make_adjacency(graph, "embed_reeb_graph_in_input_space");
+  Point_matrix Q;
+  Q.rows = projected.size();
+  Q.dimension = 3;
+  Q.data.reserve(3 * projected.size());
+  for (const auto& p : projected) Q.data.insert(Q.data.end(), p.begin(), p.end());
+  Flat_embedding F = embed_flat(G, &adjacency, points, values, options, &Q);
+  std::pair<Reeb_graph_embedding, Reeb_graph_input_embedding> out;
+  Reeb_graph_embedding& E = out.first;
+  E.dimension = std::min<std::size_t>(points.dimension, 3);
+  E.max_gap = F.max_gap;
+  E.status = F.status;
+  for (const auto& n : F.also_nodes) E.node_positions.push_back({n[0], n[1], n[2]});
+  for (const auto& a : F.also_arcs) {
+    std::vector<std::array<double, 3>> line;
+    for (std::size_t t = 0; t + 2 < a.size(); t += 3) line.push_back({a[t], a[t + 1], a[t + 2]});
+    E.arc_polylines.push_back(std::move(line));
+  }
+  Reeb_graph_input_embedding& I = out.second;
+  I.dimension = points.dimension;
+  I.status = F.status;
+  I.node_positions = std::move(F.nodes);
+  I.arc_polylines = std::move(F.arcs);
+  return out;
+}
+/// \endcond
+}  // namespace internal
 
 /// embed_reeb_graph() where a level-set piece is a connected component, in `graph` (the 1-skeleton of the
 /// complex the Reeb graph was computed on), of an arc's points in one bin. When simplification merged several

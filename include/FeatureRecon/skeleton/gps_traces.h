@@ -470,9 +470,11 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   for (std::size_t t = 0; t < trips.size(); ++t) {
     for (std::size_t i = 0; i < trips[t].size(); ++i) {
       const Gps_fix& f = trips[t][i];
-      if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.time))
-        FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i,
-                                                       " has a non-finite value");
+      for (const auto& [value, name] :
+           {std::pair<double, const char*>{f.x, "x"}, {f.y, "y"}, {f.time, "time"}})
+        if (!std::isfinite(value))
+          FeatureRecon::internal::throw_invalid_argument(fn, "trip ", t, ", fix ", i, " has a non-finite ",
+                                                         name, " (", value, ")");
     }
     order[t] = internal::time_order(trips[t]);
     S.fixes += trips[t].size();

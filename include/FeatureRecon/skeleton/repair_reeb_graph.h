@@ -92,6 +92,17 @@ double checked_bound(const Bound& bound, Vertex_index v, const char* fn) {
                                                    " (a number needed)");
   return b;
 }
+/// The user's distance between input points a and b, checked: NaN or negative is not a distance (a NaN joined
+/// nothing and a negative one joined any pair, silently).
+template <class Distance>
+double checked_distance(Distance& distance, Vertex_index a, Vertex_index b, const char* fn) {
+  const double d = static_cast<double>(distance(a, b));
+  if (!(d >= 0))
+    FeatureRecon::internal::throw_invalid_argument(fn, "the distance between vertices ", a, " and ", b,
+                                                   " is ", d,
+                                                   " (the distance callable must return a number >= 0)");
+  return d;
+}
 /// The nodes `ends` (indices into G.nodes) as (bound of their vertex, node), sorted.
 template <class Bound>
 std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends,
@@ -127,7 +138,8 @@ struct Reeb_repair_result {
 /// only pairs whose bounds differ by at most max_distance are measured (the same result). The progress
 /// callback is asked after each end's pairs are measured; a stop adds no arc (the graph is R, status
 /// interrupted).
-/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points.
+/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points (>= 0;
+///   NaN or a negative value throws std::invalid_argument naming the two vertices).
 /// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its
 ///   arcs
 /// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them;
@@ -155,7 +167,7 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
     if (degree[i] == 1) ends.push_back(i);
   std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
   auto measure = [&](std::size_t x, std::size_t y) {  // x < y, as node indices
-    const double d = static_cast<double>(distance(G.nodes[x].vertex, G.nodes[y].vertex));
+    const double d = internal::checked_distance(distance, G.nodes[x].vertex, G.nodes[y].vertex, fn);
     if (d <= max_distance) candidates.emplace_back(d, x, y);
   };
   auto stopped_after = [&](std::size_t a) {  // the pairs of a + 1 ends are measured
@@ -308,7 +320,7 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     // An isolated segment whose ends lie within the distance is a blob, not a street that stops short: left
     // alone, as repair_reeb_graph() leaves it.
     if (degree[neighbour] == 1 &&
-        static_cast<double>(distance(end_vertex, nodes[neighbour].vertex)) <= max_distance)
+        internal::checked_distance(distance, end_vertex, nodes[neighbour].vertex, fn) <= max_distance)
       continue;
     // Excluded: every point of u's input arc and its far end, split or not (joining them would close a loop
     // of the street itself). Excluding only the piece at u let a dead end whose arc was split for an earlier
@@ -322,7 +334,7 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     Vertex_index best_vertex = 0;
     bool found = false;
     auto consider = [&](Vertex_index v, std::size_t node, std::size_t piece, std::size_t position) {
-      const double d = static_cast<double>(distance(end_vertex, v));
+      const double d = internal::checked_distance(distance, end_vertex, v, fn);
       if (d < best || (d == best && found && v < best_vertex) || (d == best && !found)) {
         best = d;
         best_vertex = v;
@@ -447,7 +459,8 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
 /// end's are measured: O(n log n + k w) for w such vertices, the same result. The progress callback is asked
 /// after each dead end; a stop keeps the arcs added so far (a valid graph, status interrupted).
 /// \param values f of every input vertex (for the new nodes).
-/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance.
+/// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance (>= 0; NaN or a negative
+///   value throws std::invalid_argument naming the two vertices).
 /// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes
 ///   `values`;
 /// Reeb_repair_options::bound not NaN at any vertex of R (all checked; throws).
@@ -530,8 +543,12 @@ struct Reeb_trim_result {
 /// (counting only arcs not contracted before: of a Y whose two ends are both stubs, one is contracted), and
 /// the arc's height is at most `max_height`. Simplification never removes these arcs (the global extrema are
 /// an essential pair), so on a loop the base point of the geodesic function and the farthest point stay as
-/// spurs of height about half the Rips radius. Contracting them moves the essential pair by at most
-/// `max_height` and leaves every other feature as it is; the stub's points join the fork node's members.
+/// spurs of height about half the Rips radius. Contracting a stub is the same as giving its points the fork's
+/// value (a change of f by at most `max_height`), so by stability every diagram (branches, loops, essential
+/// pairs) moves by at most `max_height` in bottleneck distance. The essential pair moves by at most that; a
+/// feature whose extreme lies within the stub's levels may shrink or go with it (where the global minimum's
+/// stub meets a second minimum at a down-fork, that minimum becomes the global one and its own pair goes);
+/// the stub's points join the fork node's members.
 /// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
 inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height) {
   if (!(max_height >= 0))

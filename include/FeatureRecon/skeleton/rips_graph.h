@@ -551,8 +551,9 @@ inline void keep_nearest_exactly(const Point_matrix& m, const double* p, std::ve
 
 inline bool use_kd_tree(const Point_matrix& m, Neighbor_search s, const char* fn) {
   if (s == Neighbor_search::kd_tree && m.dimension > 3)
-    FeatureRecon::internal::throw_invalid_argument(fn, "the kd-tree search supports dimension <= 3, got ",
-                                                   m.dimension);
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the kd-tree search (options.search = Neighbor_search::kd_tree) supports dimension <= 3, got ",
+        m.dimension, ": use automatic or brute_force");
   return s == Neighbor_search::kd_tree || (s == Neighbor_search::automatic && m.dimension <= 3);
 }
 
