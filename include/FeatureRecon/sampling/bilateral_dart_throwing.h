@@ -182,8 +182,11 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
   return result;
 }
 
-/// Bilateral dart throwing with a target count: bisects the uniform radius until a maximal throw (same order
-/// every time) keeps exactly `count` items. When no radius gives exactly `count` (the count is a step
+/// Bilateral dart throwing with a target count: searches the uniform radius until a maximal throw (same order
+/// every time) keeps exactly `count` items. The kept count falls about as a power of the radius (r^-2 for
+/// points spread in the plane), so each step interpolates log count against log radius between the bracket's
+/// ends (regula falsi), with a bisection after a step that did not halve the bracket: about 10 throws where a
+/// plain bisection took 20 to 24. When no radius gives exactly `count` (the count is a step
 /// function of the radius), the throw at the smallest radius that keeps more than `count` is cut to its first
 /// `count` accepted items, which still respect that radius but are no longer maximal. With the exponential
 /// form, items of very different features may never conflict (their distance overflows): when no finite
@@ -232,6 +235,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   });
   double high = high_start;
   double low = 0;
+  double kept_at_low = 0, kept_at_high = 0;  // the counts thrown at the bracket's ends (0: not thrown)
   bool interrupted = false;
   std::vector<std::uint32_t> best;  // the throw at `low` (more than count items) or an exact hit
   double best_radius = 0;
@@ -257,8 +261,12 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
         return result;
       }
       std::vector<std::uint32_t> kept = internal::throw_darts(S, high, quiet, order, interrupted);
-      if (kept.size() <= count) break;
+      if (kept.size() <= count) {
+        kept_at_high = double(kept.size());
+        break;
+      }
       low = best_radius = high;
+      kept_at_low = double(kept.size());
       best = std::move(kept);
       high *= 2;
     }
@@ -269,13 +277,27 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   // uncounted (a radius 2^-64 of the largest distance): more duplicates than `count` distinct positions keep
   // too few at every radius above 0, and halving down to 0 took about 1078 throws (18 times the 60 steps).
   std::size_t uncounted = 0;
+  bool bisect = false;  // after a step that did not halve the bracket
   for (std::size_t it = 0; it < options.max_iterations;) {
     if (!FeatureRecon::internal::report_progress(options.darts.progress,
                                                  double(it) / double(options.max_iterations))) {
       result.status = Status::interrupted;
       return result;
     }
-    const double mid = low == 0 ? high / 2 : 0.5 * (low + high);
+    const double width = high - low, goal = double(count);
+    double mid = low == 0 ? high / 2 : 0.5 * (low + high);
+    if (low == 0 && kept_at_high > 0) {
+      // No lower end yet: the power law r^-2 from the upper one (copies keep the count from rising: then the
+      // guess shrinks the radius faster than halving, and the uncounted steps stay bounded).
+      const double guess = high * std::sqrt(kept_at_high / (goal + 1));
+      if (guess > 0 && guess < high) mid = guess;
+    } else if (low > 0 && !bisect && kept_at_high > 0 && kept_at_low > kept_at_high) {
+      // log count linear in log r through both ends, kept within the middle 90 % of the bracket.
+      const double exponent = std::log(kept_at_low / kept_at_high) / std::log(high / low);
+      const double guess = low * std::pow(kept_at_low / goal, 1 / exponent);
+      if (std::isfinite(guess)) mid = std::min(high - 0.05 * width, std::max(low + 0.05 * width, guess));
+    }
+    if (!(mid > low && mid < high)) mid = low == 0 ? high / 2 : 0.5 * (low + high);
     if (!(mid > low && mid < high)) break;
     std::vector<std::uint32_t> kept = internal::throw_darts(S, mid, quiet, order, interrupted);
     if (kept.size() == count) {
@@ -285,11 +307,14 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     }
     if (kept.size() > count) {
       low = mid;
+      kept_at_low = double(kept.size());
       best = std::move(kept);
       best_radius = mid;
     } else {
       high = mid;
+      kept_at_high = double(kept.size());
     }
+    bisect = low > 0 && !bisect && high - low > 0.5 * width;
     if (low > 0 || ++uncounted > 64) ++it;
   }
   if (best.size() < count) {

@@ -217,8 +217,8 @@ struct Dart_throwing_options {
 /// Options of bilateral_dart_throwing_count().
 struct Dart_throwing_count_options {
   Dart_throwing_options darts;  ///< metric, order and seed of every throw (`radii` must be empty)
-  /// Bisection steps on the radius once it is bracketed (up to 64 halvings that look for the bracket are not
-  /// counted); default 60.
+  /// Search steps (interpolation or bisection) on the radius once it is bracketed (up to 64 steps that look
+  /// for the bracket are not counted); default 60.
   std::size_t max_iterations = 60;
 };
 
