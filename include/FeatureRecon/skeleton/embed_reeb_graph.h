@@ -540,27 +540,40 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   return E;
 }
 
-inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacency* adjacency,
-                                             const std::vector<std::array<double, 3>>& positions,
-                                             const std::vector<double>& values, std::size_t dimension,
-                                             const Embedding_options& options) {
+/// The points as a 3-column Point_matrix.
+inline Point_matrix matrix_of(const std::vector<std::array<double, 3>>& positions) {
   Point_matrix P;
   P.rows = positions.size();
   P.dimension = 3;
   P.data.reserve(3 * positions.size());
   for (const auto& p : positions) P.data.insert(P.data.end(), p.begin(), p.end());
-  const Flat_embedding F = embed_flat(G, adjacency, P, values, options);
+  return P;
+}
+
+/// A Reeb_graph_embedding from flat 3-column node positions and polylines (of F's drawing: its max_gap and
+/// status).
+inline Reeb_graph_embedding embedding_3d(const std::vector<std::vector<double>>& nodes,
+                                         const std::vector<std::vector<double>>& arcs, std::size_t dimension,
+                                         const Flat_embedding& F) {
   Reeb_graph_embedding E;
   E.dimension = std::min<std::size_t>(dimension, 3);
   E.max_gap = F.max_gap;
   E.status = F.status;
-  for (const auto& n : F.nodes) E.node_positions.push_back({n[0], n[1], n[2]});
-  for (const auto& a : F.arcs) {
+  for (const auto& n : nodes) E.node_positions.push_back({n[0], n[1], n[2]});
+  for (const auto& a : arcs) {
     std::vector<std::array<double, 3>> line;
     for (std::size_t t = 0; t + 2 < a.size(); t += 3) line.push_back({a[t], a[t + 1], a[t + 2]});
     E.arc_polylines.push_back(std::move(line));
   }
   return E;
+}
+
+inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G, const Adjacency* adjacency,
+                                             const std::vector<std::array<double, 3>>& positions,
+                                             const std::vector<double>& values, std::size_t dimension,
+                                             const Embedding_options& options) {
+  const Flat_embedding F = embed_flat(G, adjacency, matrix_of(positions), values, options);
+  return embedding_3d(F.nodes, F.arcs, dimension, F);
 }
 }  // namespace internal
 
@@ -895,23 +908,10 @@ inline std::pair<Reeb_graph_embedding, Reeb_graph_input_embedding> embed_reeb_gr
     const Embedding_options& options) {
   check_point_matrix(points, "embed_reeb_graph_in_input_space");
   const Adjacency adjacency = make_adjacency(graph, "embed_reeb_graph_in_input_space");
-  Point_matrix Q;
-  Q.rows = projected.size();
-  Q.dimension = 3;
-  Q.data.reserve(3 * projected.size());
-  for (const auto& p : projected) Q.data.insert(Q.data.end(), p.begin(), p.end());
+  const Point_matrix Q = matrix_of(projected);
   Flat_embedding F = embed_flat(G, &adjacency, points, values, options, &Q);
   std::pair<Reeb_graph_embedding, Reeb_graph_input_embedding> out;
-  Reeb_graph_embedding& E = out.first;
-  E.dimension = std::min<std::size_t>(points.dimension, 3);
-  E.max_gap = F.max_gap;
-  E.status = F.status;
-  for (const auto& n : F.also_nodes) E.node_positions.push_back({n[0], n[1], n[2]});
-  for (const auto& a : F.also_arcs) {
-    std::vector<std::array<double, 3>> line;
-    for (std::size_t t = 0; t + 2 < a.size(); t += 3) line.push_back({a[t], a[t + 1], a[t + 2]});
-    E.arc_polylines.push_back(std::move(line));
-  }
+  out.first = embedding_3d(F.also_nodes, F.also_arcs, points.dimension, F);
   Reeb_graph_input_embedding& I = out.second;
   I.dimension = points.dimension;
   I.status = F.status;
