@@ -152,6 +152,27 @@ void BM_darts_2d(benchmark::State& state) {
   state.counters["rho"] = rho_2d(s);
 }
 
+// Dart throwing with an exact count (bilateral_dart_throwing_count: a radius search of whole throws), against
+// the same count by elimination and by GUDHI's farthest-point sampling.
+void BM_darts_count_2d(benchmark::State& state) {
+  const auto& p = square(std::size_t(state.range(0)), false);
+  const std::size_t m = std::size_t(state.range(1));
+  std::vector<std::size_t> kept;
+  std::size_t throws = 0;
+  for (auto _ : state) {
+    kept.clear();
+    fs::Dart_throwing_count_options o;
+    throws = 0;
+    o.darts.progress = [&throws](double) { return ++throws > 0; };
+    fs::bilateral_dart_throwing_count(p, m, std::back_inserter(kept), o);
+  }
+  std::vector<K::Point_2> s;
+  for (std::size_t i : kept) s.push_back(p[i]);
+  state.counters["kept"] = double(kept.size());
+  state.counters["throws"] = double(throws - 1);  // a progress call per throw, and the last one
+  state.counters["rho"] = rho_2d(s);
+}
+
 void BM_elimination_cube(benchmark::State& state) {
   const auto& p = cube(200000);
   const bool bilateral = state.range(0) != 0;
@@ -404,6 +425,10 @@ void register_all() {
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_2d", BM_darts_2d<false>))
       ->Args({100000, 20})
       ->Args({1000000, 10})
+      ->MinTime(1.0);
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_count_2d", BM_darts_count_2d))
+      ->Args({50000, 10000})
+      ->Args({500000, 100000})
       ->MinTime(1.0);
   // Arguments: candidates, count (elimination) or radius in thousandths (darts), darts or not.
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/periodic_2d", BM_periodic_2d))
