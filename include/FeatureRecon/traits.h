@@ -205,14 +205,16 @@ struct Property_map_traits {
     Feature operator()(const Item& i) const { return (*map)(i); }  ///< feature
   };
   /// The user's squared feature distance; -1 (not a distance: the samplers refuse the item, naming it) when
-  /// it is NaN (a NaN channel). FT(NaN) failed inside an exact kernel (Epeck: SIGFPE in GMP) before the
-  /// samplers could name the item.
+  /// it is NaN (a NaN channel), and the largest double when it overflows to infinity (never a conflict, as
+  /// infinity is under a floating-point kernel). FT(NaN) and FT(inf) failed inside an exact kernel (Epeck:
+  /// SIGFPE in GMP, or an assertion) before the samplers could name the item.
   struct Compute_feature_distance {
     const FeatureDistance* distance;  ///< the traits' functor
     /// The distance as FT.
     FT operator()(const Feature& a, const Feature& b) const {
       const double d = static_cast<double>((*distance)(a, b));
-      return std::isnan(d) ? FT(-1) : FT(d);
+      if (std::isnan(d)) return FT(-1);
+      return FT(std::min(d, std::numeric_limits<double>::max()));
     }
   };
   Construct_point construct_point_object() const { return {&point_map}; }        ///< functor

@@ -188,33 +188,58 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
     for (std::size_t& k : kept) k = index[k];
     return kept;
   };
-  // The kept count falls about as R^-2 (one dot per disc): secant steps on log count against log R, kept
-  // inside the bracket, hit it in about 5 throws where a bisection took about 15 (each throw visits every
-  // inked pixel: 200 dots on a 2000 x 1000 picture took 18 s).
+  // The surplus above `count` dropped at random (seeded).
+  auto finish = [&](std::vector<std::size_t> kept) {
+    if (kept.size() > count) {
+      std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+      for (std::size_t i = kept.size() - 1; i > 0; --i)
+        std::swap(kept[i], kept[std::size_t(rng() % (i + 1))]);
+      kept.resize(count);
+      std::sort(kept.begin(), kept.end());
+    }
+    return kept;
+  };
   (void)progress(0.0);  // shown at once: the first throws take seconds on large pictures
   // At a radius near 0 every inked pixel is kept (pixels are 1 apart): the fallback, without a throw.
   std::vector<std::size_t> best = index;
-  fs::internal::Radius_search search;
-  double R = 2.0;  // in units of sigma_position: d_hex is about 1
   constexpr int max_throws = 30;
-  for (int it = 0; it < max_throws; ++it) {
+  int throws = 0;
+  // Within 1 % of the count (the surplus is dropped at random below); a single dot at R is a single dot at
+  // every larger radius too, so count 1 needs no bracket.
+  auto close_enough = [count](std::size_t c) { return c >= count && (c <= count + count / 100 || c == 1); };
+  auto keep = [&](std::vector<std::size_t>& kept) {
+    if (kept.size() >= count && kept.size() < best.size()) best = std::move(kept);
+  };
+  // Grow until a throw keeps fewer than `count` dots (in units of sigma_position: d_hex is about 1). Then the
+  // kept count, which falls about as R^-2 (one dot per disc), is interpolated between the bracket's ends
+  // (Bracketed_radius_search): about 5 throws where a bisection took about 15, each visiting every inked
+  // pixel (200 dots on a 2000 x 1000 picture took 18 s).
+  fs::internal::Bracketed_radius_search search;
+  double R = 2.0;
+  for (; throws < max_throws; R *= 2) {
     auto kept = run(R);
+    ++throws;
     const std::size_t c = kept.size();
-    const bool enough = c >= count;
-    if (enough && c < best.size()) best = std::move(kept);
-    // Within 1 % of the count (the surplus is dropped at random below); a single dot at R is a single dot at
-    // every larger radius too, so count 1 needs no bracket.
-    if (enough && (c <= count + count / 100 || c == 1)) break;
-    if (!progress(0.5 * (it + 1) / double(max_throws))) break;
-    R = search.next(R, double(c), double(count), enough);
+    keep(kept);
+    if (close_enough(c) || !progress(0.5 * throws / double(max_throws))) return finish(best);
+    if (c < count) {
+      search.hi = R;
+      search.kept_hi = double(c);
+      break;
+    }
+    search.lo = R;
+    search.kept_lo = double(c);
   }
-  if (best.size() > count) {
-    std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
-    for (std::size_t i = best.size() - 1; i > 0; --i) std::swap(best[i], best[std::size_t(rng() % (i + 1))]);
-    best.resize(count);
-    std::sort(best.begin(), best.end());
+  for (; throws < max_throws; ++throws) {
+    const double mid = search.next(double(count) + double(count / 100) / 2 + 0.5);  // the window's middle
+    if (!(mid > search.lo && mid < search.hi)) break;
+    auto kept = run(mid);
+    const std::size_t c = kept.size();
+    keep(kept);
+    if (close_enough(c) || !progress(0.5 * (throws + 1) / double(max_throws))) break;
+    search.record(mid, double(c), c >= count);
   }
-  return best;
+  return finish(best);
 }
 
 template <class Pixel, std::size_t C>

@@ -214,6 +214,31 @@ TEST(BilateralDartThrowing, TargetCountInterpolatesTheRadius) {
   }
 }
 
+TEST(BilateralDartThrowing, TargetCountNearEveryItemFindsARadius) {
+  // n - 1 of n: before a lower end is known the r^-2 guess from the upper end moved the radius by about 1 % a
+  // throw, and 125 throws found no bracket: the first n - 1 items of the visiting order at radius 0, labelled
+  // degenerate (a review: 30 of 30 seeds). Now each such step is at least a halving.
+  for (const std::uint32_t seed : {1u, 2u, 3u}) {
+    const std::vector<Point_2> p = white_noise(2000, seed);
+    for (const std::size_t count : {1999u, 1998u, 1995u, 1980u, 1900u}) {
+      std::size_t calls = 0;
+      Dart_throwing_count_options o;
+      o.darts.progress = [&calls](double) { return ++calls > 0; };
+      std::vector<std::size_t> kept;
+      const auto r = bilateral_dart_throwing_count(p, count, std::back_inserter(kept), o);
+      EXPECT_EQ(r.status, Status::success) << count;
+      ASSERT_EQ(kept.size(), count);
+      EXPECT_GT(r.radius, 0.0) << count;
+      EXPECT_LE(calls, 60u) << count;
+      double closest = std::numeric_limits<double>::infinity();
+      for (std::size_t a = 0; a < kept.size(); ++a)
+        for (std::size_t b = a + 1; b < kept.size(); ++b)
+          closest = std::min(closest, std::sqrt(CGAL::squared_distance(p[kept[a]], p[kept[b]])));
+      EXPECT_GE(closest, r.radius * (1 - 1e-12)) << count;
+    }
+  }
+}
+
 TEST(BilateralDartThrowing, ACapKeepsTheFirstInTheVisitingOrder) {
   // Points stored left to right: a cap of 40 keeps the first 40 accepted in the seeded order, spread over the
   // whole square (not the first 40 of the file), and they are the prefix of the uncapped throw's acceptances.

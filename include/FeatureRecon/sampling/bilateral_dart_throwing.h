@@ -6,6 +6,7 @@
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/internal/radius_search.h>
 #include <FeatureRecon/sampling/internal/sample_set.h>
 #include <FeatureRecon/sampling/sampling_options.h>
 #include <FeatureRecon/sampling/weighted_sample_elimination.h>
@@ -271,51 +272,40 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
       high *= 2;
     }
   }
-  // Halving `high` until a throw keeps more than `count` items (the bracket's lower end) is not counted as a
-  // bisection step: with few steps (max_iterations 3 on 5000 points, count 200) no bracket was found and the
-  // result was the first items of the visiting order at radius 0, labelled degenerate. At most 64 halvings go
-  // uncounted (a radius 2^-64 of the largest distance): more duplicates than `count` distinct positions keep
-  // too few at every radius above 0, and halving down to 0 took about 1078 throws (18 times the 60 steps).
+  // Shrinking `high` (halving, or the smaller r^-2 guess) until a throw keeps more than `count` items (the
+  // bracket's lower end) is not counted as a search step: with few steps (max_iterations 3 on 5000 points,
+  // count 200) no bracket was found and the result was the first items of the visiting order at radius 0,
+  // labelled degenerate. At most 64 halvings go uncounted (a radius 2^-64 of the largest distance): more
+  // duplicates than `count` distinct positions keep too few at every radius above 0, and halving down to 0
+  // took about 1078 throws (18 times the 60 steps).
   std::size_t uncounted = 0;
-  bool bisect = false;  // after a step that did not halve the bracket
+  internal::Bracketed_radius_search search;
+  search.lo = low;
+  search.hi = high;
+  search.kept_lo = kept_at_low;
+  search.kept_hi = kept_at_high;
   for (std::size_t it = 0; it < options.max_iterations;) {
     if (!FeatureRecon::internal::report_progress(options.darts.progress,
                                                  double(it) / double(options.max_iterations))) {
       result.status = Status::interrupted;
       return result;
     }
-    const double width = high - low, goal = double(count);
-    double mid = low == 0 ? high / 2 : 0.5 * (low + high);
-    if (low == 0 && kept_at_high > 0) {
-      // No lower end yet: the power law r^-2 from the upper one (copies keep the count from rising: then the
-      // guess shrinks the radius faster than halving, and the uncounted steps stay bounded).
-      const double guess = high * std::sqrt(kept_at_high / (goal + 1));
-      if (guess > 0 && guess < high) mid = guess;
-    } else if (low > 0 && !bisect && kept_at_high > 0 && kept_at_low > kept_at_high) {
-      // log count linear in log r through both ends, kept within the middle 90 % of the bracket.
-      const double exponent = std::log(kept_at_low / kept_at_high) / std::log(high / low);
-      const double guess = low * std::pow(kept_at_low / goal, 1 / exponent);
-      if (std::isfinite(guess)) mid = std::min(high - 0.05 * width, std::max(low + 0.05 * width, guess));
-    }
-    if (!(mid > low && mid < high)) mid = low == 0 ? high / 2 : 0.5 * (low + high);
-    if (!(mid > low && mid < high)) break;
+    // A lower end keeps more than `count` items, an upper one at most `count`: the goal lies between.
+    const double mid = search.next(double(count) + 0.5);
+    if (!(mid > search.lo && mid < search.hi)) break;
     std::vector<std::uint32_t> kept = internal::throw_darts(S, mid, quiet, order, interrupted);
     if (kept.size() == count) {
       best = std::move(kept);
       best_radius = mid;
       break;
     }
+    search.record(mid, double(kept.size()), kept.size() > count);
     if (kept.size() > count) {
-      low = mid;
-      kept_at_low = double(kept.size());
       best = std::move(kept);
       best_radius = mid;
-    } else {
-      high = mid;
-      kept_at_high = double(kept.size());
     }
-    bisect = low > 0 && !bisect && high - low > 0.5 * width;
-    if (low > 0 || ++uncounted > 64) ++it;
+    // Only steps that halved the bracket count towards the 64 (the others alternate with halvings).
+    if (search.lo > 0 || (search.halved && ++uncounted > 64)) ++it;
   }
   if (best.size() < count) {
     // No radius keeps `count` items (duplicates: a repeated position conflicts at any radius > 0; or all

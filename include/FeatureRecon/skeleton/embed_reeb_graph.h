@@ -38,7 +38,10 @@ struct Embedding_options {
   /// - 1 / lambda) (the pass band of Taubin's lambda|mu filter at 0.1): the jitter of level-set centroids
   /// goes, the shape stays. Laplacian: the first step only; it also shrinks, pulling a coarse arc onto the
   /// chord between its ends (a loop of 8 vertices on a circle keeps 0.21 of its half-width after 10 Laplacian
-  /// rounds, 0.86 after 10 Taubin rounds).
+  /// rounds, 0.86 after 10 Taubin rounds). Taubin's filter gains slightly below its pass band (up to about
+  /// 1 + 0.026 k per round at frequency k < 0.1 with the default lambda): tens of rounds are what it is for;
+  /// thousands let the slowest bends of a long polyline grow without bound (100,000 rounds: coordinates near
+  /// 1e26), so heavy smoothing should be Laplacian.
   enum class Smoothing {
     taubin,    ///< lambda step, then mu step (no shrinking)
     laplacian  ///< lambda step only (shrinks)
