@@ -28,7 +28,9 @@ class FeaturePointTraits {
   typedef unspecified_type Construct_feature;
   /// Functor `FT operator()(const Feature& a, const Feature& b) const` returning the **squared** feature
   /// distance |eta_a - eta_b|^2: >= 0, symmetric, 0 for equal features. (Squared, so that models with exact
-  /// number types need no square root; the bilateral metrics take squared distances.)
+  /// number types need no square root; the bilateral metrics take squared distances.) Where features are
+  /// compared, a feature not at a finite distance from itself is refused naming the item, and a NaN or
+  /// negative distance between two features naming both (std::invalid_argument; the caller's data untouched).
   typedef unspecified_type Compute_feature_distance;
 
   Construct_point construct_point_object() const;                    ///< the functor

@@ -204,10 +204,11 @@ struct Property_map_traits {
     const FeatureMap* map;                                         ///< the traits' map
     Feature operator()(const Item& i) const { return (*map)(i); }  ///< feature
   };
-  /// The user's squared feature distance; -1 (not a distance: the samplers refuse the item, naming it) when
-  /// it is NaN (a NaN channel), and the largest double when it overflows to infinity (never a conflict, as
-  /// infinity is under a floating-point kernel). FT(NaN) and FT(inf) failed inside an exact kernel (Epeck:
-  /// SIGFPE in GMP, or an assertion) before the samplers could name the item.
+  /// The user's squared feature distance; -1 (not a distance: the samplers refuse it, naming the item, or
+  /// both items when only their pair is NaN) when it is NaN (a NaN channel, acos of a cosine above 1), and
+  /// the largest double when it overflows to infinity (never a conflict, as infinity is under a
+  /// floating-point kernel). FT(NaN) and FT(inf) failed inside an exact kernel (Epeck: SIGFPE in GMP, or an
+  /// assertion) before the samplers could name the item.
   struct Compute_feature_distance {
     const FeatureDistance* distance;  ///< the traits' functor
     /// The distance as FT.

@@ -172,6 +172,19 @@ TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find(") is at distance NaN from itself"), std::string::npos) << e.what();
   }
+  // A distance that is NaN between different features only (acos of a cosine rounded above 1): such darts
+  // never conflicted with those samples.
+  auto acos_distance = [](double a, double b) { return a == b ? 0.0 : std::pow(std::acos(1 + (a - b)), 2); };
+  auto grey_ramp = [](double x, double) { return 0.5 * x; };
+  try {
+    continuous_bilateral_dart_throwing({0, 0, 1, 1}, 0.05, grey_ramp, acos_distance, bilateral);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("between dart "), std::string::npos) << m;
+    EXPECT_NE(m.find(" and sample "), std::string::npos) << m;
+    EXPECT_NE(m.find(" is NaN or negative"), std::string::npos) << m;
+  }
   Continuous_dart_throwing_options stop;
   stop.progress = [](double) { return false; };
   stop.max_consecutive_failures = 1000000;

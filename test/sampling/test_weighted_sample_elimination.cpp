@@ -2,6 +2,8 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 // Weighted sample elimination, Euclidean and bilateral.
 #include <FeatureRecon/sampling/bilateral_dart_throwing.h>
+#include <FeatureRecon/sampling/discrete_lloyd.h>
+#include <FeatureRecon/sampling/kernel_relaxation.h>
 #include <FeatureRecon/sampling/sampling_quality.h>
 #include <FeatureRecon/sampling/weighted_sample_elimination.h>
 
@@ -599,6 +601,103 @@ TEST(WeightedSampleElimination, UserFeatureWithNaNUnderAnExactKernelIsNamed) {
   for (std::size_t i = 0; i < far.size(); i += 2) far[i].c[1] = 1e200;
   for (const char* which : {"elimination", "darts", "quality"})
     EXPECT_EQ(run(CGAL::Epeck(), far, 0.3, which), run(CGAL::Epick(), far, 0.3, which)) << which;
+}
+
+TEST(WeightedSampleElimination, AFeatureDistanceThatIsNaNOnlyBetweenTwoItemsNamesBoth) {
+  // Every feature is at distance 0 from itself, but the user's distance is NaN between items 3 and 8 alone
+  // (as acos() of a cosine rounded above 1 gives): Property_map_traits reports it as -1, which reached the
+  // metric as a negative squared distance, silently a conflict. Every sampler that compares the two now
+  // throws naming both, under both kernels; Euclidean sampling never asks.
+  struct Tagged {
+    double x, y;
+    std::array<double, 2> f;  // {value, id}
+  };
+  auto run = [](auto kernel_tag, const std::vector<Tagged>& items, double sigma_feature, const char* which) {
+    using K = decltype(kernel_tag);
+    const auto traits = make_property_map_traits<K, 2, Tagged>(
+        [](const Tagged& s) { return typename K::Point_2(s.x, s.y); }, [](const Tagged& s) { return s.f; },
+        [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+          if (std::min(a[1], b[1]) == 3 && std::max(a[1], b[1]) == 8) return std::acos(1.0000001);
+          return (a[0] - b[0]) * (a[0] - b[0]);
+        });
+    using Traits = std::decay_t<decltype(traits)>;
+    std::vector<std::size_t> kept;
+    const std::string w(which);
+    if (w == "darts") {
+      Dart_throwing_options o;
+      o.sigma_feature = sigma_feature;
+      bilateral_dart_throwing(items, 0.2, std::back_inserter(kept), o, traits);
+    } else if (w == "quality") {
+      Sampling_quality_options o;
+      o.sigma_feature = sigma_feature;
+      (void)sampling_quality(items, o, traits);
+    } else if (w == "discrete Lloyd") {
+      Discrete_lloyd_options<2> o;
+      o.sigma_feature = sigma_feature;
+      // a site with item 3's feature, next to item 8
+      std::vector<Bilateral_site<Traits>> sites{{{0.1, 0.1}, items[0].f}, {{5.0, 5.0}, items[3].f}};
+      (void)discrete_bilateral_lloyd(items, sites, o, traits);
+    } else if (w == "kernel") {
+      Kernel_relaxation_options<2> o;
+      o.sigma_feature = sigma_feature;
+      (void)kernel_relaxation(items, std::vector<std::size_t>{0, 3, 8, 20}, o, traits);
+    } else {
+      Elimination_options o;
+      o.sigma_feature = sigma_feature;
+      weighted_sample_elimination(items, 10, std::back_inserter(kept), o, traits);
+    }
+    return kept;
+  };
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Tagged> items(40);
+  for (std::size_t i = 0; i < items.size(); ++i) items[i] = {u(rng), u(rng), {u(rng), double(i)}};
+  // Items 3 and 8 alone, 0.01 apart, far from the others: every sampler compares them.
+  items[3].x = 5;
+  items[3].y = 5;
+  items[8].x = 5.01;
+  items[8].y = 5;
+  for (const char* which : {"elimination", "darts", "quality", "discrete Lloyd", "kernel"}) {
+    for (const bool exact : {false, true}) {
+      const std::string name = std::string(which) + (exact ? " (Epeck)" : " (Epick)");
+      try {
+        if (exact)
+          run(CGAL::Epeck(), items, 0.3, which);
+        else
+          run(CGAL::Epick(), items, 0.3, which);
+        ADD_FAILURE() << name << ": expected an exception";
+      } catch (const std::invalid_argument& e) {
+        // the kernel relaxation's sites 1 and 2 sit on items 3 and 8; discrete Lloyd's site 1 has item 3's
+        // feature
+        const std::string w(which), m = e.what();
+        const auto names = [&m](const std::string& a, const std::string& b) {
+          return m.find("between " + a + " and " + b + " is NaN or negative") != std::string::npos ||
+                 m.find("between " + b + " and " + a + " is NaN or negative") != std::string::npos;
+        };
+        EXPECT_TRUE(w == "kernel"           ? names("site 1", "site 2")
+                    : w == "discrete Lloyd" ? names("item 8", "site 1")
+                                            : names("item 3", "item 8"))
+            << name << ": " << m;
+      }
+      if (std::string(which) == "elimination" || std::string(which) == "darts") {
+        const double inf = std::numeric_limits<double>::infinity();
+        EXPECT_NO_THROW(exact ? run(CGAL::Epeck(), items, inf, which) : run(CGAL::Epick(), items, inf, which))
+            << name;
+      }
+    }
+  }
+  // A bilateral_dart_throwing_count run and continuous darts with such a distance throw as well.
+  std::vector<std::size_t> kept;
+  Dart_throwing_count_options oc;
+  oc.darts.sigma_feature = 0.3;
+  const auto traits = make_property_map_traits<CGAL::Epick, 2, Tagged>(
+      [](const Tagged& s) { return CGAL::Epick::Point_2(s.x, s.y); }, [](const Tagged& s) { return s.f; },
+      [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+        return std::min(a[1], b[1]) == 3 && std::max(a[1], b[1]) == 8 ? -0.5 : (a[0] - b[0]) * (a[0] - b[0]);
+      });
+  EXPECT_THROW(bilateral_dart_throwing_count(items, 20, std::back_inserter(kept), oc, traits),
+               std::invalid_argument);
+  EXPECT_TRUE(kept.empty());
 }
 
 TEST(WeightedSampleElimination, NormalsOfAnyLengthAreDirections) {

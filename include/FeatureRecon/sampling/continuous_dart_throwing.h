@@ -51,7 +51,8 @@ struct Continuous_sampling_result {
 ///   distance.
 /// \param box {x0, y0, x1, y1} with x0 <= x1 and y0 <= y1, finite (checked; throws).
 /// \param radius the conflict radius in bilateral units (> 0, checked; throws).
-/// \throws std::invalid_argument also when a dart's feature is not at a finite distance from itself (NaN).
+/// \throws std::invalid_argument also when a dart's feature is not at a finite distance from itself (NaN),
+///   or at a NaN or negative distance from a sample's (naming the dart and the sample).
 /// \note Random numbers come from std::mt19937_64 turned into doubles by bit manipulation, so the same seed
 ///   gives the same samples on every platform.
 template <class FeatureFunction, class FeatureDistance>
@@ -124,7 +125,9 @@ auto continuous_bilateral_dart_throwing(const std::array<double, 4>& box, double
           d2 += d * d;
         }
         if (!(d2 < reach2)) return;
-        conflict = metric(d2, double(feature_distance(f, result.samples[j - 2].feature))) < radius;
+        conflict = metric(d2, internal::checked_feature_distance(
+                                  double(feature_distance(f, result.samples[j - 2].feature)), fn, "dart",
+                                  result.darts - 1, "sample", j - 2)) < radius;
       };
       if (options.periodic)
         internal::for_each_torus_candidate(

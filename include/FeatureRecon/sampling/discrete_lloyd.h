@@ -387,9 +387,10 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
             x, scale,
             [&](std::uint32_t j) {
               return metric(Base::squared(x, positions[j]),
-                            S.compared
-                                ? double(CGAL::to_double(S.feature_distance(S.features[i], sites[j].feature)))
-                                : 0.0);
+                            S.compared ? checked_feature_distance(CGAL::to_double(S.feature_distance(
+                                                                      S.features[i], sites[j].feature)),
+                                                                  S.fn, "item", i, "site", j)
+                                       : 0.0);
             },
             best);
         a.site[i] = s;

@@ -441,10 +441,12 @@ class Kernel_engine : public Item_domain<Traits> {
         for (int k = 0; k < D; ++k) d2 += (p[k] - q[t][k]) * (p[k] - q[t][k]);
         const double w = options.cutoff * w0 * s;
         if (d2 > w * w) return;
-        const double f2 =
-            features
-                ? double(CGAL::to_double(S.feature_distance(sites[i].feature, sites[j].feature))) * inv_sf2
-                : 0.0;
+        const double f2 = features
+                              ? checked_feature_distance(
+                                    CGAL::to_double(S.feature_distance(sites[i].feature, sites[j].feature)),
+                                    S.fn, "site", i, "site", j) *
+                                    inv_sf2
+                              : 0.0;
         const double a = inv_tau2 / (s * s);
         const double weight = std::pow(s, intrinsic);
         // The kernel minus its value at the cut-off distance (same features), so E is continuous.

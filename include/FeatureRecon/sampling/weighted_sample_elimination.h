@@ -121,7 +121,8 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   input, non-finite coordinates (naming the item), sigma_position <= 0, sigma_feature <= 0, negative
 ///   max_radius or domain_measure, intrinsic_dimension other than 0, 2 or 3 or above the positions'
 ///   dimension, alpha <= 0, with a finite sigma_feature a feature at a non-finite distance from itself (a
-///   zero normal, NaN; naming the item). The input is never modified.
+///   zero normal, NaN; naming the item) or two features at a NaN or negative distance (naming both). The
+///   input is never modified.
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the
 ///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost
 ///   neighbour lists quadratic in their number): of each group of copies the item of lowest seeded priority

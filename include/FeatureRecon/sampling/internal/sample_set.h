@@ -113,6 +113,19 @@ void for_each_torus_candidate(const Grid& grid, const std::array<double, D>& p, 
   }
 }
 
+/// `d`, a user's squared feature distance between two features that are each at a finite distance from
+/// themselves (checked when they were read); throws std::invalid_argument naming both (`what_a` i, `what_b`
+/// j) when it is NaN (Property_map_traits reports NaN as -1) or negative: such a pair was silently a
+/// conflict, or never one. A cosine rounded above 1 under acos() is the usual cause.
+inline double checked_feature_distance(double d, const char* fn, const char* what_a, std::size_t i,
+                                       const char* what_b, std::size_t j) {
+  if (!(d >= 0))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the squared feature distance between ", what_a, " ", i, " and ", what_b, " ", j,
+        " is NaN or negative (", d, "); the traits' feature distance must be >= 0 for every pair");
+  return d;
+}
+
 /// The items of a sampler's input as doubles (positions) and the traits' features, checked once.
 template <class Traits>
 struct Sample_set {
@@ -124,12 +137,13 @@ struct Sample_set {
   std::vector<Feature> features;
   typename Traits::Compute_feature_distance feature_distance;
   bool compared = true;  ///< whether features are compared (else squared_feature_distance() is 0)
+  const char* fn;        ///< the sampler, named in errors
 
   /// `compare_features`: whether features will be compared (a finite sigma_feature); only then must each be
   /// at a finite distance from itself (checked; throws naming the item).
   template <class ItemRange>
   Sample_set(const ItemRange& items, const Traits& traits, const char* fn, bool compare_features = true)
-      : feature_distance(traits.compute_feature_distance_object()), compared(compare_features) {
+      : feature_distance(traits.compute_feature_distance_object()), compared(compare_features), fn(fn) {
     static_assert(FeatureRecon::internal::Is_feature_point_traits<Traits>::value,
                   "FeatureRecon: the traits class is not a model of FeaturePointTraits (see "
                   "doc/concepts/FeaturePointTraits.h)");
@@ -190,8 +204,11 @@ struct Sample_set {
   }
   /// The squared feature distance of items i and j; 0 when features are not compared (an infinite
   /// sigma_feature: the metrics ignore it, and the user's distance is neither paid for nor trusted there).
+  /// \throws std::invalid_argument naming both items when the user's distance is NaN or negative.
   double squared_feature_distance(std::size_t i, std::size_t j) const {
-    return compared ? CGAL::to_double(feature_distance(features[i], features[j])) : 0.0;
+    if (!compared) return 0.0;
+    return checked_feature_distance(CGAL::to_double(feature_distance(features[i], features[j])), fn, "item",
+                                    i, "item", j);
   }
 };
 
