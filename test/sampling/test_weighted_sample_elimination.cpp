@@ -383,6 +383,24 @@ TEST(WeightedSampleElimination, DegenerateInputs) {
   std::size_t gap = 0;
   for (std::size_t k = 1; k < kept.size(); ++k) gap = std::max(gap, kept[k] - kept[k - 1]);
   EXPECT_LE(gap, 3u * 1000u / 50u);
+  // The status reports the automatic r_max meeting such input: with a given max_radius or domain_measure,
+  // or for count 0, nothing is estimated and the status is success (the documented rule, pinned).
+  const auto status = [](const std::vector<Point_2>& p, std::size_t count, double max_radius,
+                         double measure) {
+    Elimination_options o;
+    o.max_radius = max_radius;
+    o.domain_measure = measure;
+    std::vector<std::size_t> out;
+    return weighted_sample_elimination(p, count, std::back_inserter(out), o).status;
+  };
+  const std::vector<Point_2> one{Point_2(1, 2)};
+  EXPECT_EQ(status(one, 1, 0, 0), Status::degenerate_input);
+  EXPECT_EQ(status(one, 0, 0, 0), Status::success);
+  EXPECT_EQ(status(line, 50, 0, 0), Status::degenerate_input);
+  EXPECT_EQ(status(line, 50, 0.01, 0), Status::success);
+  EXPECT_EQ(status(line, 50, 0, 1.0), Status::success);
+  EXPECT_EQ(status(line, 0, 0, 0), Status::success);
+  EXPECT_EQ(status(white_noise(50, 1), 10, 0, 0), Status::success);
 }
 
 TEST(WeightedSampleElimination, ManyCopiesOfOnePlaceAreRemovedFirst) {

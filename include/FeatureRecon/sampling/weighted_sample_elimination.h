@@ -111,11 +111,13 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 /// \param options metric, r_max, weight exponent, seed (ties between equal weights), progress.
 /// \param traits accessors for positions and features.
 /// \returns the advanced iterator, the number written (count, or 0 when interrupted), r_max and the status:
-///   `degenerate_input` for an empty input and for input of lower affine dimension than the domain, decided
-///   by exact predicates: collinear points (r_max = L / (2 count) for the segment of length L), coplanar 3D
-///   points asked to be sampled as a volume (sampled as a surface), one repeated position (the seed picks the
-///   items), and positions so close together (spans below about 1e-154) that the automatic r_max underflows
-///   to 0 (the seed picks the items); `interrupted` (nothing written) when the callback stopped.
+///   `degenerate_input` for an empty input, and where the automatic r_max (max_radius 0, count > 0) meets
+///   input of lower affine dimension than the domain, decided by exact predicates: collinear points without a
+///   domain_measure (r_max = L / (2 count) for the segment of length L), coplanar 3D points asked to be
+///   sampled as a volume without a domain_measure (sampled as a surface), one repeated position (the seed
+///   picks the items), and positions so close together (spans below about 1e-154) that r_max underflows to 0
+///   (the seed picks the items); with a given max_radius or domain_measure, or for count 0, nothing is
+///   estimated and such input gives success; `interrupted` (nothing written) when the callback stopped.
 /// \throws std::invalid_argument naming the argument: neighbour lists longer than max_neighbor_entries (a
 ///   max_radius far too large; found while counting them, before they are stored), count larger than the
 ///   input, non-finite coordinates (naming the item), sigma_position <= 0, sigma_feature <= 0, negative
