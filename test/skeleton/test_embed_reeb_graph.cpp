@@ -759,3 +759,226 @@ TEST(EmbedReebGraph, LevelWidthsBelowTheValuesResolutionGiveEveryValueItsLevel) 
   EXPECT_EQ(coarsest.second, 0.0);
   EXPECT_EQ(points_drawn(1e308).second, std::numeric_limits<double>::max());  // 2 x 1e308 saturates
 }
+
+namespace {
+/// A Reeb graph of two nodes (vertices `low` and `high`, f 0 and `top`) and one arc through `vertices`.
+Reeb_graph one_arc(Vertex_index low, Vertex_index high, double top, std::vector<Vertex_index> vertices) {
+  Reeb_graph G;
+  G.nodes = {{low, 0.0, minimum, {}}, {high, top, maximum, {}}};
+  G.arcs = {{0, 1, std::move(vertices)}};
+  return G;
+}
+Embedding_options unsmoothed(double level_width) {
+  Embedding_options o;
+  o.level_width = level_width;
+  o.smoothing_iterations = 0;
+  o.max_gap = 0;
+  return o;
+}
+}  // namespace
+
+TEST(EmbedReebGraph, ANodeSitsAtTheCentroidOfItsVertexAndMembers) {
+  // Node 0: vertex 0 and members 1, 2 at (0, 0), (2, 0), (4, 3): centroid (2, 1). Node 1: vertex 3 and member
+  // 4, both at (1e308, -0.0): the sum overflows, the mean does not, and the mean of -0.0s is -0.0.
+  const std::vector<std::array<double, 3>> xyz{
+      {0, 0, 0}, {2, 0, 0}, {4, 3, 0}, {1e308, -0.0, 0}, {1e308, -0.0, 0}};
+  Reeb_graph G = one_arc(0, 3, 1.0, {});
+  G.nodes[0].members = {1, 2};
+  G.nodes[1].members = {4};
+  const Reeb_graph_embedding E = embed_reeb_graph(G, xyz, {0.0, 0.0, 0.0, 1.0, 1.0}, 2);
+  ASSERT_EQ(E.node_positions.size(), 2u);
+  EXPECT_EQ(E.node_positions[0], (std::array<double, 3>{2, 1, 0}));
+  EXPECT_EQ(E.node_positions[1][0], 1e308);
+  EXPECT_EQ(E.node_positions[1][1], 0.0);
+  EXPECT_TRUE(std::signbit(E.node_positions[1][1]));
+}
+
+TEST(EmbedReebGraph, TheAutomaticLevelWidthIsA64thOfTheRangeOfF) {
+  // f from 0 to 64 over the nodes: bins of width 1, [k, k + 1). The arc's 128 points at f = x = 0.25, 0.75,
+  // 1.25, ... fall two into each bin: 64 pieces between the two nodes, the first at x = 0.5.
+  std::vector<std::array<double, 3>> xyz{{0, 0, 0}, {64, 0, 0}};
+  std::vector<double> f{0, 64};
+  std::vector<Vertex_index> vertices;
+  for (int k = 0; k < 128; ++k) {
+    vertices.push_back(static_cast<Vertex_index>(xyz.size()));
+    xyz.push_back({0.25 + 0.5 * k, 0, 0});
+    f.push_back(0.25 + 0.5 * k);
+  }
+  Embedding_options o;
+  o.smoothing_iterations = 0;
+  const auto line = embed_reeb_graph(one_arc(0, 1, 64, vertices), xyz, f, 2, o).arc_polylines.at(0);
+  ASSERT_EQ(line.size(), 66u);
+  for (std::size_t k = 1; k + 1 < line.size(); ++k)
+    EXPECT_EQ(line[k], (std::array<double, 3>{0.5 + double(k - 1), 0, 0})) << k;
+}
+
+TEST(EmbedReebGraph, TheLargestPieceOfALevelCarriesThePolyline) {
+  // Bins of width 1. In each of the bins 0..3: a lone point S_k at (k + 0.5, 5) first in f order, and a pair
+  // B_k at (k + 0.5, 0) and (k + 0.5, 0.2). The S_k are joined from bin to bin in the graph, the pairs only
+  // within their bin: a level-set piece is a component of one bin's points, so the pair (2 points) carries
+  // the polyline, not the chain of lone points. In bin 4 two lone points tie: the one holding the earliest
+  // point (at y = 3) carries it.
+  std::vector<std::array<double, 3>> xyz{{-1, 0, 0}, {6, 0, 0}};
+  std::vector<double> f{-1, 6};
+  std::vector<Vertex_index> vertices;
+  Proximity_graph g;
+  auto add = [&](double x, double y, double value) {
+    vertices.push_back(static_cast<Vertex_index>(xyz.size()));
+    xyz.push_back({x, y, 0});
+    f.push_back(value);
+    return vertices.back();
+  };
+  Vertex_index previous_s = 0;
+  for (int k = 0; k < 4; ++k) {
+    const Vertex_index s = add(k + 0.5, 5, k + 0.1);
+    const Vertex_index b1 = add(k + 0.5, 0, k + 0.2), b2 = add(k + 0.5, 0.2, k + 0.3);
+    if (k > 0) g.edges.push_back({previous_s, s});
+    g.edges.push_back({b1, b2});
+    previous_s = s;
+  }
+  add(4.5, 3, 4.1);
+  add(4.5, -3, 4.2);
+  g.number_of_vertices = xyz.size();
+  Reeb_graph G = one_arc(0, 1, 6, vertices);
+  G.nodes[0].value = -1;
+  const auto line = embed_reeb_graph(G, g, xyz, f, 2, unsmoothed(1.0)).arc_polylines.at(0);
+  ASSERT_EQ(line.size(), 7u);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_DOUBLE_EQ(line[static_cast<std::size_t>(k) + 1][0], k + 0.5) << k;
+    EXPECT_DOUBLE_EQ(line[static_cast<std::size_t>(k) + 1][1], 0.1) << k;
+  }
+  EXPECT_EQ(line[5], (std::array<double, 3>{4.5, 3, 0}));
+}
+
+TEST(EmbedReebGraph, TheAutomaticGapIsTwiceTheMedianEdgeAndNoneWithoutEdges) {
+  const L_shape l = l_shape();
+  EXPECT_EQ(embed_reeb_graph(l.G, l.g, l.xyz, l.f, 2).max_gap, 2.0);  // unit edges
+  // A graph without edges: a median length of 0, nothing can be bridged (max_gap infinity), straight.
+  Proximity_graph none;
+  none.number_of_vertices = l.xyz.size();
+  const Reeb_graph_embedding E = embed_reeb_graph(l.G, none, l.xyz, l.f, 2);
+  EXPECT_EQ(E.max_gap, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(E.arc_polylines.at(0).size(), 2u);
+}
+
+TEST(EmbedReebGraph, AnInfiniteGapIsOffAsZeroIs) {
+  // The arc's two pieces at (1, 0) and (0, 0) (the lower node's place): the polyline goes out and back and
+  // on, X B X C. With bridging off (max_gap 0 or infinity) it is drawn as it is; with bridging on and nothing
+  // to bridge (no edges), the out-and-back B X goes (X B C), and at the upper node W X B X becomes W X.
+  const std::vector<std::array<double, 3>> xyz{{0, 0, 0}, {5, 0, 0}, {1, 0, 0}, {0, 0, 0}};
+  const std::vector<double> f{0, 5, 1.5, 2.5};
+  const Reeb_graph G = one_arc(0, 1, 5, {2, 3});
+  Proximity_graph g;
+  g.number_of_vertices = 4;
+  Embedding_options o = unsmoothed(1.0);
+  const std::vector<std::array<double, 3>> drawn{{0, 0, 0}, {1, 0, 0}, {0, 0, 0}, {5, 0, 0}};
+  EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, o).arc_polylines.at(0), drawn);
+  o.max_gap = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, o).arc_polylines.at(0), drawn);
+  o.max_gap = 100;
+  EXPECT_EQ(embed_reeb_graph(G, g, xyz, f, 2, o).arc_polylines.at(0),
+            (std::vector<std::array<double, 3>>{{0, 0, 0}, {1, 0, 0}, {5, 0, 0}}));
+  // W at (-3, 0), the pieces X (3, 0) and B (4, 0), the upper node at X.
+  const std::vector<std::array<double, 3>> back{{-3, 0, 0}, {3, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  EXPECT_EQ(embed_reeb_graph(G, g, back, f, 2, o).arc_polylines.at(0),
+            (std::vector<std::array<double, 3>>{{-3, 0, 0}, {3, 0, 0}}));
+}
+
+TEST(EmbedReebGraph, ABridgeVertexSitsAtTheMeanOfItsNeighbourhood) {
+  // A diamond 0 (0, 0), 1 (1, 1), 2 (1, -1), 3 (2, 0) and an arc from 0 to 3 without points: the gap 2 is
+  // bridged through the shortest path; of the two (ties), the one by the smaller vertex, 1, drawn at the mean
+  // of 1 and its neighbours 0 and 3: (1, 1/3).
+  const std::vector<std::array<double, 3>> xyz{{0, 0, 0}, {1, 1, 0}, {1, -1, 0}, {2, 0, 0}};
+  Proximity_graph g;
+  g.number_of_vertices = 4;
+  g.edges = {{0, 1}, {0, 2}, {1, 3}, {2, 3}};
+  Embedding_options o = unsmoothed(1.0);
+  o.max_gap = 1;
+  const auto line =
+      embed_reeb_graph(one_arc(0, 3, 1, {}), g, xyz, {0, 0.5, 0.5, 1}, 2, o).arc_polylines.at(0);
+  ASSERT_EQ(line.size(), 3u);
+  EXPECT_EQ(line[0], xyz[0]);
+  EXPECT_DOUBLE_EQ(line[1][0], 1.0);
+  EXPECT_DOUBLE_EQ(line[1][1], 1.0 / 3);
+  EXPECT_EQ(line[2], xyz[3]);
+  // A gap exactly max_gap wide is not wider: not bridged.
+  o.max_gap = 2;
+  EXPECT_EQ(embed_reeb_graph(one_arc(0, 3, 1, {}), g, xyz, {0, 0.5, 0.5, 1}, 2, o).arc_polylines.at(0).size(),
+            2u);
+}
+
+TEST(EmbedReebGraph, AShortestPathAsLongAsTheLimitIsFound) {
+  // The path finder returns a shortest path no longer than the limit: one exactly as long is one.
+  Point_matrix P;
+  P.dimension = 1;
+  P.rows = 3;
+  P.data = {0, 1, 2};
+  Proximity_graph g;
+  g.number_of_vertices = 3;
+  g.edges = {{0, 1}, {1, 2}};
+  const skeleton::internal::Adjacency adjacency = skeleton::internal::make_adjacency(g);
+  skeleton::internal::Graph_path_finder finder(adjacency, P);
+  std::vector<Vertex_index> interior;
+  EXPECT_TRUE(finder.path(0, 2, 2.0, interior));
+  EXPECT_EQ(interior, (std::vector<Vertex_index>{1}));
+  EXPECT_FALSE(finder.path(0, 2, 1.5, interior));
+}
+
+TEST(EmbedReebGraph, ArcsWithoutPointsCountTheirSmoothingRounds) {
+  // Three arcs without points, 65,535 rounds each: 1 + 65,535 units of work per arc, a report before the
+  // second and the third arc.
+  const std::vector<std::array<double, 3>> xyz{{0, 0, 0}, {1, 0, 0}};
+  Reeb_graph G = one_arc(0, 1, 1, {});
+  G.arcs.push_back(G.arcs[0]);
+  G.arcs.push_back(G.arcs[0]);
+  std::vector<double> seen;
+  Embedding_options o;
+  o.smoothing_iterations = 65535;
+  o.progress = test::recording_progress(seen);
+  EXPECT_EQ(embed_reeb_graph(G, xyz, {0, 1}, 2, o).status, Status::success);
+  ASSERT_EQ(seen.size(), 3u);
+  EXPECT_NEAR(seen[0], 1.0 / 3, 1e-15);
+  EXPECT_NEAR(seen[1], 2.0 / 3, 1e-15);
+  EXPECT_EQ(seen[2], 1.0);
+}
+
+TEST(ClassicalMds, NegativeEigenvaluesGiveZeroCoordinates) {
+  // Three points 1, 1 and 5 apart (no triangle): the double-centred matrix has one positive, one zero and one
+  // negative eigenvalue; the axes of the last two are 0.
+  const auto x = classical_mds_3d({0, 1, 5, 1, 0, 1, 5, 1, 0}, 3);
+  for (const auto& p : x) EXPECT_EQ(p[2], 0.0);
+  EXPECT_GT(std::fabs(x[0][0] - x[2][0]), 1.0);
+}
+
+TEST(EmbedReebGraph, GapsAreBridgedFromThePiecePointClosestToTheCentroid) {
+  // Nodes A (0, 0) and U (20, 0); the arc's one piece at x = 10 has its centroid at (10, 0). The gaps A-piece
+  // and piece-U (10 > max_gap 3) are bridged through the graph from the piece's point closest to the
+  // centroid: (10, 0) of three points (not the first, (10, 1)); of two at (10, 1) and (10, -1), tied, the
+  // earlier. Bridged from another point, the path passed through the closest one: a point more.
+  for (const bool tie : {false, true}) {
+    std::vector<std::array<double, 3>> xyz{{0, 0, 0}, {20, 0, 0}, {5, 0, 0}, {15, 0, 0}, {10, 1, 0}};
+    std::vector<double> f{0, 3, 0, 0, 1.1};
+    Proximity_graph g;
+    std::vector<Vertex_index> vertices{4};
+    if (!tie) {  // 5 (10, 0) and 6 (10, -1): A - 2 - 5 - 3 - U, 4 - 5 - 6
+      xyz.push_back({10, 0, 0});
+      xyz.push_back({10, -1, 0});
+      f.push_back(1.2);
+      f.push_back(1.3);
+      vertices.push_back(5);
+      vertices.push_back(6);
+      g.edges = {{0, 2}, {2, 5}, {3, 5}, {1, 3}, {4, 5}, {5, 6}};
+    } else {  // 5 (10, -1): A - 2 - 4 - 3 - U, 4 - 5
+      xyz.push_back({10, -1, 0});
+      f.push_back(1.2);
+      vertices.push_back(5);
+      g.edges = {{0, 2}, {2, 4}, {3, 4}, {1, 3}, {4, 5}};
+    }
+    g.number_of_vertices = xyz.size();
+    Embedding_options o = unsmoothed(1.0);
+    o.max_gap = 3;
+    const auto line = embed_reeb_graph(one_arc(0, 1, 3, vertices), g, xyz, f, 2, o).arc_polylines.at(0);
+    ASSERT_EQ(line.size(), 5u) << tie;
+    EXPECT_EQ(line[2], (std::array<double, 3>{10, 0, 0})) << tie;
+  }
+}

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -1179,4 +1180,173 @@ TEST(ExtractReebSkeleton, BranchMergeOfADistanceMatrixMeasuresTheMatrix) {
     EXPECT_EQ(fork_degrees(r->graph), std::make_pair(2, 0));
   }
   EXPECT_EQ(points.branch_merge_distance, matrix.branch_merge_distance);
+}
+
+// A triangle of forks joined by short arcs: a round contracts a matching (the shortest arc), and the two arcs
+// then joining the merged node to the third fork are a short loop, which stays; no arc becomes a self-loop.
+TEST(MergeCloseBranchNodes, ATriangleOfForksKeepsItsLoop) {
+  Point_matrix p;
+  p.dimension = 2;
+  p.data = {0, 0, 0.1, 0, 0, 0.12, -1, -1, 1, -1, 0, 2};
+  p.rows = 6;
+  Skeleton_graph g(6);  // forks 0, 1, 2 (arcs 0.1, 0.12 and 0.156 long), each with a leaf 3, 4, 5
+  const double values[6] = {1, 1.1, 1.2, 0, 0, 3};
+  for (std::size_t v = 0; v < 6; ++v) {
+    g[v].position = {p.row(v)[0], p.row(v)[1], 0};
+    g[v].value = values[v];
+    g[v].members = {static_cast<Vertex_index>(v)};
+  }
+  for (const auto& [a, b] :
+       std::vector<std::pair<std::size_t, std::size_t>>{{0, 1}, {0, 2}, {1, 2}, {3, 0}, {4, 1}, {2, 5}})
+    add_edge(a, b, Skeleton_arc{{g[a].position, g[b].position}, {}, {}, a, b}, g);
+  const Branch_node_merge_result r = merge_close_branch_nodes(g, p, 0.2);
+  EXPECT_EQ(r.merged, 1u);
+  ASSERT_EQ(num_vertices(r.graph), 5u);
+  EXPECT_EQ(num_edges(r.graph), 5u);
+  std::size_t between = 0;
+  for (auto e : boost::make_iterator_range(edges(r.graph))) {
+    EXPECT_NE(source(e, r.graph), target(e, r.graph));
+    between += (source(e, r.graph) == 0 && target(e, r.graph) == 1) ? 1 : 0;
+  }
+  EXPECT_EQ(between, 2u);  // the merged node 0 and the third fork (now 1): the loop
+  EXPECT_EQ(r.graph[0].members, (std::vector<Vertex_index>{0, 1}));
+  expect_members_partition(r.graph, 6);
+}
+
+// A merged node takes the value and leading members of its lowest node, the smaller index on a tie, and sits
+// at the centroid of all its points (here off the mean of the two forks).
+TEST(MergeCloseBranchNodes, TiesGoToTheSmallerIndexAndTheNodeSitsAtTheCentroid) {
+  Crossing x;
+  x.graph[3].value = 1.0;  // the forks at one value
+  const Branch_node_merge_result tie = merge_close_branch_nodes(x.graph, x.points, 0.2);
+  ASSERT_EQ(tie.merged, 1u);
+  EXPECT_EQ(tie.graph[2].value, 1.0);
+  EXPECT_EQ(tie.graph[2].members, (std::vector<Vertex_index>{2, 3, 6}));
+  // The arc's point moved off the line between the forks: the centroid moves a third of the way.
+  Crossing off;
+  off.points.data[12] = 0.03;
+  for (auto e : boost::make_iterator_range(edges(off.graph)))
+    if (off.graph[e].members == std::vector<Vertex_index>{6}) off.graph[e].polyline[1] = {0.03, 0, 0};
+  const Branch_node_merge_result c = merge_close_branch_nodes(off.graph, off.points, 0.2);
+  ASSERT_EQ(c.merged, 1u);
+  EXPECT_NEAR(c.graph[2].position[0], 0.01, 1e-15);
+  EXPECT_NEAR(c.graph[2].position[1], 0.0, 1e-15);
+}
+
+// Each node's first member is its own vertex of the Reeb graph (of a merged node, its lowest node's), whose
+// function value is the node's value.
+TEST(ExtractReebSkeleton, ANodesFirstMemberIsItsVertex) {
+  const auto eight = sample_segments(figure_eight_segments(), 0.25, 0.15, 4);
+  Skeleton_options o;
+  o.delta = 1.0;
+  const Reeb_skeleton one = extract_reeb_skeleton(eight.points, 0.7, o);
+  ASSERT_EQ(one.merged_branch_arcs, 1u);
+  const Point_matrix P = make_point_matrix(eight.points);
+  const Geodesic_result geo = compute_geodesic_function(build_flag_complex_2(build_rips_graph(P, 0.7)));
+  std::size_t with_level_sets = 0;
+  for (auto v : boost::make_iterator_range(vertices(one.graph))) {
+    ASSERT_FALSE(one.graph[v].members.empty());
+    with_level_sets += one.graph[v].members.size() > 1 ? 1 : 0;
+    EXPECT_EQ(one.graph[v].value, geo.values[one.graph[v].members.front()]) << v;
+  }
+  EXPECT_GT(with_level_sets, 2u);
+}
+
+namespace {
+/// Three forks in a row, a (node 0), b (1) and c (2) at the given x, joined by the arcs a-b (added first) and
+/// b-c; a and c have two leaves each, b one, so that every fork has degree 3. Point i is node i's member.
+struct Three_forks {
+  Point_matrix points;
+  Skeleton_graph graph;
+  explicit Three_forks(const std::array<double, 3>& x) {
+    points.dimension = 2;
+    points.data = {x[0], 0, x[1], 0, x[2], 0, -1, -1, -1, 1, 0.05, 1, 1, 1, 1, -1};
+    points.rows = 8;
+    const double values[8] = {1, 1.1, 1.2, 0, 0, 2, 3, 3};
+    graph = Skeleton_graph(8);
+    for (std::size_t v = 0; v < 8; ++v) {
+      graph[v].position = {points.row(v)[0], points.row(v)[1], 0};
+      graph[v].value = values[v];
+      graph[v].members = {static_cast<Vertex_index>(v)};
+    }
+    for (const auto& [a, b] : std::vector<std::pair<std::size_t, std::size_t>>{
+             {0, 1}, {1, 2}, {3, 0}, {4, 0}, {1, 5}, {2, 6}, {2, 7}})
+      add_edge(a, b, Skeleton_arc{{graph[a].position, graph[b].position}, {}, {}, a, b}, graph);
+  }
+};
+}  // namespace
+
+// Shortest first: the arc b-c (0.08) is contracted before a-b (0.12, the earlier arc), and a cannot join
+// afterwards (a and c lie 0.2 apart, beyond the distance 0.15).
+TEST(MergeCloseBranchNodes, TheShortestArcIsContractedFirst) {
+  const Three_forks t({0, 0.12, 0.2});
+  const Branch_node_merge_result r = merge_close_branch_nodes(t.graph, t.points, 0.15);
+  EXPECT_EQ(r.merged, 1u);
+  ASSERT_EQ(num_vertices(r.graph), 7u);
+  EXPECT_EQ(r.graph[0].members, std::vector<Vertex_index>{0});
+  EXPECT_EQ(r.graph[1].members, (std::vector<Vertex_index>{1, 2}));
+}
+
+// With a metric (a distance matrix drawn by MDS): an arc is as long as the metric between its nodes when the
+// drawing is shorter, so b-c (0.1) goes before a-b (drawn 0.01, metric 0.15); and a merged group stays within
+// the distance by the metric too: a, 0.11 from c in the drawing but 0.3 by the metric, does not join.
+TEST(MergeCloseBranchNodes, TheMetricLengthensArcsAndBoundsGroups) {
+  const Three_forks t({0, 0.01, 0.11});
+  std::vector<std::array<double, 3>> positions;
+  for (std::size_t i = 0; i < t.points.rows; ++i)
+    positions.push_back({t.points.row(i)[0], t.points.row(i)[1], 0});
+  const std::function<double(Vertex_index, Vertex_index)> metric = [&](Vertex_index i, Vertex_index j) {
+    const Vertex_index lo = std::min(i, j), hi = std::max(i, j);
+    if (lo == 0 && hi == 1) return 0.15;
+    if (lo == 1 && hi == 2) return 0.1;
+    if (lo == 0 && hi == 2) return 0.3;
+    return skeleton::internal::euclidean_distance(t.points, i, j);
+  };
+  const Branch_node_merge_result r =
+      skeleton::internal::merge_close_branch_nodes(t.graph, positions, t.points, 0.2, "test", metric);
+  EXPECT_EQ(r.merged, 1u);
+  ASSERT_EQ(num_vertices(r.graph), 7u);
+  EXPECT_EQ(r.graph[0].members, std::vector<Vertex_index>{0});
+  EXPECT_EQ(r.graph[1].members, (std::vector<Vertex_index>{1, 2}));
+  // Without the metric the drawing alone decides: a-b first, then c joins (0.11 from a).
+  const Branch_node_merge_result drawn = merge_close_branch_nodes(t.graph, t.points, 0.2);
+  EXPECT_EQ(drawn.merged, 2u);
+  EXPECT_EQ(num_vertices(drawn.graph), 6u);
+}
+
+// With a repair distance the pipeline simplifies again after repair_reeb_graph() and connect_dead_ends(), and
+// its counts are those of the stages called one after another: a street with a spur below it (height 1.5)
+// and a short stem above it across a gap of 1, which connect_dead_ends() joins. At delta 1 only the second
+// simplification removes a branch, at delta 2 only the first.
+TEST(ExtractReebSkeleton, TheSecondSimplificationCountsAsTheStagesDo) {
+  std::vector<std::array<double, 2>> pts;
+  for (int i = 0; i <= 40; ++i) pts.push_back({0.5 * i, 0.0});  // the street, x 0..20
+  for (int i = 3; i <= 6; ++i) pts.push_back({10.0, 0.5 * i});  // the stem, y 1.5..3
+  for (int i = 1; i <= 3; ++i) pts.push_back({5.0, -0.5 * i});  // the spur
+  const Point_matrix P = make_point_matrix(pts);
+  const auto distance = [&P](Vertex_index a, Vertex_index b) {
+    return skeleton::internal::euclidean_distance(P, a, b);
+  };
+  const Simplicial_complex_2 K = build_flag_complex_2(build_rips_graph(P, 0.6));
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(K, compute_geodesic_function(K).values);
+  for (const double delta : {1.0, 2.0}) {
+    Skeleton_options o;
+    o.delta = delta;
+    o.repair_distance = 2.0;
+    o.branch_merge_distance = 0.0;
+    const Reeb_skeleton one = extract_reeb_skeleton(pts, 0.6, o);
+    const Reeb_simplification_result S1 = simplify_by_persistence(A, delta);
+    const Reeb_repair_result fixed = repair_reeb_graph(S1.graph, 2.0, distance);
+    const Reeb_dead_end_result ends = connect_dead_ends(fixed.graph, A.values(), 2.0, distance);
+    const Reeb_simplification_result S2 = simplify_by_persistence(ends.graph, A.values(), delta);
+    const Reeb_trim_result T = trim_essential_stubs(S2.graph, delta);
+    EXPECT_EQ(one.repaired, fixed.joined) << delta;
+    EXPECT_EQ(one.connected_dead_ends, ends.connected) << delta;
+    EXPECT_EQ(one.removed_branches, S1.removed_branches + S2.removed_branches) << delta;
+    EXPECT_EQ(one.removed_loops, S1.removed_loops + S2.removed_loops) << delta;
+    EXPECT_EQ(num_vertices(one.graph), T.graph.nodes.size()) << delta;
+    EXPECT_EQ(num_edges(one.graph), T.graph.arcs.size()) << delta;
+    // Each simplification has something to do at one of the two deltas.
+    EXPECT_GT(delta == 1.0 ? S2.removed_branches : S1.removed_branches, 0u) << delta;
+  }
 }

@@ -7,9 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -30,6 +32,19 @@ void add_horizontal_street(Line& pts, std::vector<Edge>& edges, std::vector<doub
     f.push_back(double(i));
     if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
   }
+}
+/// The street of add_horizontal_street() and a vertical segment of `length` from (5, 1.5) (vertices 11 and
+/// 12, f 20 and 20 + length): `pts` gets the points; returns the complex.
+Complex_with_function street_and_segment(Line& pts, double length) {
+  std::vector<Edge> edges;
+  std::vector<double> f;
+  add_horizontal_street(pts, edges, f);
+  pts.p.push_back({5.0, 1.5});
+  pts.p.push_back({5.0, 1.5 + length});
+  f.push_back(20);
+  f.push_back(20 + length);
+  edges.push_back({11, 12});
+  return make(pts.p.size(), edges, {}, f);
 }
 }  // namespace
 
@@ -272,15 +287,7 @@ TEST(ConnectDeadEnds, LeavesShortIsolatedSegmentsAlone) {
   // apart. A segment of length 3 (ends 3 apart) is a street end: its lower end connects.
   for (const double length : {1.0, 3.0}) {
     Line pts;
-    std::vector<Edge> edges;
-    std::vector<double> f;
-    add_horizontal_street(pts, edges, f);
-    pts.p.push_back({5.0, 1.5});
-    pts.p.push_back({5.0, 1.5 + length});
-    f.push_back(20);
-    f.push_back(20 + length);
-    edges.push_back({11, 12});
-    const Complex_with_function c = make(pts.p.size(), edges, {}, f);
+    const Complex_with_function c = street_and_segment(pts, length);
     const Reeb_graph R = reeb_graph_of(c);
     ASSERT_EQ(R.components, 2u);
     const Reeb_dead_end_result joined = connect_dead_ends(R, c.f, 2.0, pts);
@@ -500,15 +507,7 @@ TEST(RepairReebGraph, ANaNBoundIsNamedNotSorted) {
   // std::sort needs an order: a bound that is NaN somewhere (no 1-Lipschitz function is) throws, naming the
   // vertex. repair_reeb_graph() reads the bound at the dead ends only, connect_dead_ends() at every vertex.
   Line pts;
-  std::vector<Edge> edges;
-  std::vector<double> f;
-  add_horizontal_street(pts, edges, f);
-  pts.p.push_back({5.0, 1.5});
-  pts.p.push_back({5.0, 4.5});
-  f.push_back(20);
-  f.push_back(23);
-  edges.push_back({11, 12});
-  const Complex_with_function c = make(pts.p.size(), edges, {}, f);
+  const Complex_with_function c = street_and_segment(pts, 3.0);
   const Reeb_graph R = reeb_graph_of(c);
   for (const Vertex_index nan_at : {Vertex_index(5), Vertex_index(11)}) {
     Reeb_repair_options x;
@@ -638,5 +637,255 @@ TEST(RepairReebGraph, ProgressIsReportedAndAStopLeavesAValidGraph) {
       EXPECT_NO_THROW(simplify_by_persistence(partial.graph, geo.values, 0.5)) << allowed;
     }
     EXPECT_EQ(previous, ends.connected);
+  }
+}
+
+namespace {
+/// A Reeb graph built by hand: nodes (vertex, value) in the given order, arcs (lower, upper, vertices); types
+/// and components as the repair functions compute them.
+Reeb_graph hand_graph(const std::vector<std::pair<Vertex_index, double>>& nodes,
+                      const std::vector<Reeb_graph::Arc>& arcs) {
+  Reeb_graph R;
+  for (const auto& [v, f] : nodes) {
+    Reeb_graph::Node n;
+    n.vertex = v;
+    n.value = f;
+    R.nodes.push_back(n);
+  }
+  R.arcs = arcs;
+  FeatureRecon::skeleton::internal::refresh_node_types(R);
+  return R;
+}
+/// The input vertices of the ends of the arcs of G without interior vertices, sorted.
+std::vector<std::pair<Vertex_index, Vertex_index>> bare_arcs(const Reeb_graph& G) {
+  std::vector<std::pair<Vertex_index, Vertex_index>> out;
+  for (const auto& a : G.arcs)
+    if (a.vertices.empty()) {
+      const Vertex_index p = G.nodes[a.lower].vertex, q = G.nodes[a.upper].vertex;
+      out.emplace_back(std::min(p, q), std::max(p, q));
+    }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+/// The links added to R (arcs without interior vertices): G's bare arcs less R's, by their ends' vertices.
+std::vector<std::pair<Vertex_index, Vertex_index>> links_added(const Reeb_graph& G, const Reeb_graph& R) {
+  const auto g = bare_arcs(G), r = bare_arcs(R);
+  std::vector<std::pair<Vertex_index, Vertex_index>> out;
+  std::set_difference(g.begin(), g.end(), r.begin(), r.end(), std::back_inserter(out));
+  return out;
+}
+}  // namespace
+
+TEST(RepairReebGraph, RepeatedNodesAndArcsFromANodeToItselfAreRefused) {
+  // Node values in strictly increasing (value, vertex) order and arcs going up (lower < upper): a node
+  // repeated and an arc from a node to itself are refused like the other bad graphs.
+  const Reeb_graph R = hand_graph({{0, 0.0}, {1, 1.0}}, {{0, 1, {}}});
+  const std::vector<double> f{0.0, 1.0};
+  const Planar_points pts{{{0.0, 0.0}, {1.0, 0.0}}};
+  auto all = [&](const Reeb_graph& G) {
+    return std::vector<std::string>{error_of([&] { repair_reeb_graph(G, 1.0, pts); }),
+                                    error_of([&] { connect_dead_ends(G, f, 1.0, pts); }),
+                                    error_of([&] { prune_reeb_graph_components(G, 1.0); }),
+                                    error_of([&] { trim_essential_stubs(G, 1.0); })};
+  };
+  Reeb_graph repeated = R;
+  repeated.nodes[1] = repeated.nodes[0];
+  repeated.arcs.clear();
+  for (const std::string& e : all(repeated))
+    EXPECT_NE(e.find("nodes 0 and 1 are not in increasing (value, vertex) order"), std::string::npos) << e;
+  Reeb_graph loop = R;
+  loop.arcs[0].lower = 1;
+  for (const std::string& e : all(loop))
+    EXPECT_NE(e.find("arc 0 joins nodes 1 and 1: it must go up"), std::string::npos) << e;
+}
+
+TEST(RepairReebGraph, EndsAtOnePointAreJoinedAtDistanceZero) {
+  // Two segments along x whose facing dead ends (vertices 1 and 2) are two input points at one place: a
+  // distance of 0 is a distance (>= 0), within max_distance 0.
+  const Planar_points pts{{{0.0, 0.0}, {5.0, 0.0}, {5.0, 0.0}, {10.0, 0.0}}};
+  const std::vector<double> f{0.0, 5.0, 5.5, 10.0};
+  const Reeb_graph R = hand_graph({{0, 0.0}, {1, 5.0}, {2, 5.5}, {3, 10.0}}, {{0, 1, {}}, {2, 3, {}}});
+  const Reeb_repair_result fixed = repair_reeb_graph(R, 0.0, pts);
+  EXPECT_EQ(fixed.joined, 1u);
+  EXPECT_EQ(fixed.graph.components, 1u);
+  const Reeb_dead_end_result ends = connect_dead_ends(R, f, 0.0, pts);
+  EXPECT_EQ(ends.connected, 1u);
+  EXPECT_EQ(links_added(ends.graph, R), (std::vector<std::pair<Vertex_index, Vertex_index>>{{1, 2}}));
+}
+
+TEST(RepairReebGraph, ABoundThatRoundsUpFindsThePairsAtTheDistance) {
+  // The bound x + 1000 is 1-Lipschitz, but its differences round: the dead ends 1 and 2 are exactly 1.3 apart
+  // (the repair distance) and their bounds 1.3000000000000682. The bounded search gives the result of the
+  // all-pairs search (the window has room for rounding).
+  const double xa = 0.1 * 3, xb = xa + 1.3;
+  const Planar_points pts{{{-10.0, 0.0}, {xa, 0.0}, {xb, 0.0}, {20.0, 0.0}}};
+  const double reach = pts(1, 2);
+  ASSERT_GT((xb + 1000.0) - (xa + 1000.0), reach);
+  const std::vector<double> f{-10.0, xa, xb, 20.0};
+  const Reeb_graph R = hand_graph({{0, -10.0}, {1, xa}, {2, xb}, {3, 20.0}}, {{0, 1, {}}, {2, 3, {}}});
+  Reeb_repair_options x;
+  x.bound = [&pts](Vertex_index v) { return pts.p[v][0] + 1000.0; };
+  EXPECT_EQ(repair_reeb_graph(R, reach, pts).joined, 1u);
+  EXPECT_EQ(repair_reeb_graph(R, reach, pts, x).joined, 1u);
+  EXPECT_EQ(connect_dead_ends(R, f, reach, pts).connected, 1u);
+  EXPECT_EQ(connect_dead_ends(R, f, reach, pts, x).connected, 1u);
+}
+
+TEST(ConnectDeadEnds, ADeadEndThatWasConnectedToIsNoLongerADeadEnd) {
+  // Two streets end facing each other 1 apart (vertices 1 and 2). The first dead end in node order (1)
+  // connects to the node 2, which then has two arcs: it is no dead end any more and adds nothing (a second
+  // link 2-1 made a loop of two arcs).
+  const Planar_points pts{{{-10.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {10.0, 0.0}}};
+  const std::vector<double> f{-10.0, 0.0, 1.0, 10.0};
+  const Reeb_graph R = hand_graph({{0, -10.0}, {1, 0.0}, {2, 1.0}, {3, 10.0}}, {{0, 1, {}}, {2, 3, {}}});
+  for (const bool bounded : {false, true}) {
+    Reeb_repair_options x;
+    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_dead_end_result r = connect_dead_ends(R, f, 1.5, pts, x);
+    EXPECT_EQ(r.connected, 1u) << bounded;
+    EXPECT_EQ(r.graph.loops(), 0u) << bounded;
+    EXPECT_EQ(links_added(r.graph, R), (std::vector<std::pair<Vertex_index, Vertex_index>>{{1, 2}}))
+        << bounded;
+  }
+}
+
+TEST(ConnectDeadEnds, AnIsolatedSegmentExactlyMaxDistanceLongStays) {
+  // The street 0..10 and a vertical segment from (5, 1.5) to (5, 3.5): its ends are exactly 2 apart, within
+  // the distance 2 (inclusive), so it stays apart although its lower end is 1.5 from the street.
+  Line pts;
+  const Complex_with_function c = street_and_segment(pts, 2.0);
+  const Reeb_graph R = reeb_graph_of(c);
+  ASSERT_EQ(pts(11, 12), 2.0);
+  EXPECT_EQ(connect_dead_ends(R, c.f, 2.0, pts).connected, 0u);
+  EXPECT_EQ(connect_dead_ends(R, c.f, 1.9, pts).connected, 1u);  // its ends now too far apart: a street end
+}
+
+TEST(ConnectDeadEnds, ADeadEndNeverJoinsTheFarEndOfItsOwnArc) {
+  // A minimum F (vertex 0 at the origin) with two arcs: one curls out along x and back up to its dead end u
+  // (vertex 8 at (0, 1)), 1 above F; the other runs left to the dead end w (vertex 11 at (-4, 0)). F is the
+  // other end of u's own arc: not another part of the graph, so u stays as it is (nothing else in reach).
+  const Planar_points pts{{{0.0, 0.0},
+                           {1.0, 0.0},
+                           {2.0, 0.0},
+                           {3.0, 0.0},
+                           {3.0, 1.0},
+                           {3.0, 2.0},
+                           {2.0, 2.0},
+                           {1.0, 2.0},
+                           {0.0, 1.0},
+                           {-2.0, 0.0},
+                           {-3.0, 0.0},
+                           {-4.0, 0.0}}};
+  const std::vector<double> f{0, 1, 2, 3, 4, 5, 6, 7, 8, 1.5, 2.5, 3.5};
+  const Reeb_graph R =
+      hand_graph({{0, 0.0}, {11, 3.5}, {8, 8.0}}, {{0, 2, {1, 2, 3, 4, 5, 6, 7}}, {0, 1, {9, 10}}});
+  for (const bool bounded : {false, true}) {
+    Reeb_repair_options x;
+    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][1]; };
+    const Reeb_dead_end_result r = connect_dead_ends(R, f, 1.2, pts, x);
+    EXPECT_EQ(r.connected, 0u) << bounded;
+    EXPECT_EQ(r.graph.loops(), 0u) << bounded;
+  }
+}
+
+TEST(PruneReebGraphComponents, ReportsMembersAndArcVerticesSorted) {
+  // A low component (nodes of vertices 7 and 2, members 9 and 3, arc vertices 8 and 1) and a tall one: the
+  // removed vertices are every input vertex of the low one, sorted.
+  Reeb_graph R = hand_graph({{7, 0.0}, {2, 0.5}, {0, 10.0}, {4, 20.0}}, {{0, 1, {8, 1}}, {2, 3, {5}}});
+  R.nodes[0].members = {9, 3};
+  const Reeb_prune_result p = prune_reeb_graph_components(R, 1.0);
+  EXPECT_EQ(p.removed_components, 1u);
+  EXPECT_EQ(p.removed_vertices, (std::vector<Vertex_index>{1, 2, 3, 7, 8, 9}));
+  ASSERT_EQ(p.graph.nodes.size(), 2u);
+  ASSERT_EQ(p.graph.arcs.size(), 1u);
+  EXPECT_EQ(p.graph.arcs[0].vertices, (std::vector<Vertex_index>{5}));
+}
+
+TEST(RepairReebGraph, NodeComponentsAreNamedByTheirSmallestNode) {
+  // The component of each node is the smallest node index in it, whatever the order of the arcs.
+  const Reeb_graph R =
+      hand_graph({{0, 0.0}, {1, 1.0}, {2, 2.0}, {3, 3.0}, {4, 4.0}}, {{2, 3, {}}, {1, 3, {}}, {0, 4, {}}});
+  EXPECT_EQ(FeatureRecon::skeleton::internal::node_components(R), (std::vector<std::size_t>{0, 1, 1, 1, 0}));
+}
+
+TEST(RepairReebGraph, EachEndIsJoinedAtMostOnce) {
+  // The ends a (vertex 1 at (0, 0)) and b (vertex 2 at (1, 0)) of two streets join first (1 apart); the end c
+  // (vertex 4 at (1, 1.2)) of a third street is 1.2 from b, which is taken: c stays free.
+  const Planar_points pts{{{-20.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {20.0, 0.0}, {1.0, 1.2}, {1.0, 10.0}}};
+  const Reeb_graph R = hand_graph({{0, -20.0}, {1, 0.0}, {4, 0.5}, {2, 1.0}, {5, 10.0}, {3, 20.0}},
+                                  {{0, 1, {}}, {2, 4, {}}, {3, 5, {}}});
+  for (const bool bounded : {false, true}) {
+    Reeb_repair_options x;
+    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_repair_result fixed = repair_reeb_graph(R, 1.3, pts, x);
+    EXPECT_EQ(fixed.joined, 1u) << bounded;
+    EXPECT_EQ(links_added(fixed.graph, R), (std::vector<std::pair<Vertex_index, Vertex_index>>{{1, 2}}))
+        << bounded;
+  }
+}
+
+TEST(RepairReebGraph, ProgressIsAskedAfterEachEndIsMeasured) {
+  // Six dead ends: six reports after work was done (fractions above 0, increasing), then 1.
+  const Planar_points pts{{{-20.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {20.0, 0.0}, {1.0, 1.2}, {1.0, 10.0}}};
+  const Reeb_graph R = hand_graph({{0, -20.0}, {1, 0.0}, {4, 0.5}, {2, 1.0}, {5, 10.0}, {3, 20.0}},
+                                  {{0, 1, {}}, {2, 4, {}}, {3, 5, {}}});
+  std::vector<double> seen;
+  Reeb_repair_options x;
+  x.progress = test::recording_progress(seen);
+  EXPECT_EQ(repair_reeb_graph(R, 1.3, pts, x).joined, 1u);
+  ASSERT_EQ(seen.size(), 7u);
+  EXPECT_GT(seen.front(), 0.0);
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LT(seen[i - 1], seen[i]) << i;
+  EXPECT_EQ(seen.back(), 1.0);
+}
+
+TEST(ConnectDeadEnds, ASegmentSplitByAnEarlierDeadEndIsNoLongerIsolated) {
+  // A segment from s (vertex 0 at the origin) to u (vertex 5 at (2, 0)): its ends lie within the distance
+  // 2.2 of each other. The dead end w of a stub (vertex 6 at (1.9, -1.2)) comes first in node order and
+  // splits it at (1.9, 0) (u's side moves into a new arc). u's arc now leads to a fork, not to a dead end: u
+  // sees the link added before it and joins w, 1.2 away. (The piece 4-5 of the street, split, has no vertices
+  // left.)
+  Planar_points pts{{{0.0, 0.0}, {0.5, 0.0}, {1.0, 0.0}, {1.5, 0.0}, {1.9, 0.0}, {2.0, 0.0}}};
+  std::vector<double> f{0.0, 0.5, 1.0, 1.5, 1.9, 2.0};
+  for (int k = 0; k < 5; ++k) {
+    pts.p.push_back({1.9, -1.2 - k});
+    f.push_back(-10.0 + k);
+  }
+  const Reeb_graph R =
+      hand_graph({{6, -10.0}, {10, -6.0}, {0, 0.0}, {5, 2.0}}, {{0, 1, {7, 8, 9}}, {2, 3, {1, 2, 3, 4}}});
+  for (const bool bounded : {false, true}) {
+    Reeb_repair_options x;
+    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_dead_end_result r = connect_dead_ends(R, f, 2.2, pts, x);
+    EXPECT_EQ(r.connected, 2u) << bounded;
+    EXPECT_EQ(links_added(r.graph, R),
+              (std::vector<std::pair<Vertex_index, Vertex_index>>{{4, 5}, {4, 6}, {5, 6}}))
+        << bounded;
+  }
+}
+
+TEST(RepairReebGraph, EqualDistancesGoToThePairOfSmallerNodes) {
+  // The end b (vertex 2 at (1, 0)) lies exactly 1 from the ends a (vertex 1 at (0, 0)) and c (vertex 4 at
+  // (2, 0)) of two other streets; a and c are 2 apart. The documented tie rule: of pairs at equal distance
+  // the one of smaller node indices (lexicographically) joins first, so the node order (by value) decides
+  // whether b joins a or c.
+  const Planar_points pts{{{-20.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {1.0, 20.0}, {2.0, 0.0}, {22.0, 0.0}}};
+  // a below c: nodes v0, a, b, c, v3, v5.
+  const Reeb_graph a_first = hand_graph({{0, -20.0}, {1, 0.0}, {2, 1.0}, {4, 2.0}, {3, 20.0}, {5, 22.0}},
+                                        {{0, 1, {}}, {2, 4, {}}, {3, 5, {}}});
+  // c below a: nodes v0, c, b, a, v3, v5.
+  const Reeb_graph c_first = hand_graph({{0, -20.0}, {4, 0.0}, {2, 1.0}, {1, 2.0}, {3, 20.0}, {5, 22.0}},
+                                        {{0, 3, {}}, {2, 4, {}}, {1, 5, {}}});
+  for (const bool bounded : {false, true}) {
+    Reeb_repair_options x;
+    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_repair_result one = repair_reeb_graph(a_first, 1.5, pts, x);
+    const Reeb_repair_result two = repair_reeb_graph(c_first, 1.5, pts, x);
+    EXPECT_EQ(one.joined, 1u) << bounded;
+    EXPECT_EQ(two.joined, 1u) << bounded;
+    EXPECT_EQ(links_added(one.graph, a_first), (std::vector<std::pair<Vertex_index, Vertex_index>>{{1, 2}}))
+        << bounded;
+    EXPECT_EQ(links_added(two.graph, c_first), (std::vector<std::pair<Vertex_index, Vertex_index>>{{2, 4}}))
+        << bounded;
   }
 }

@@ -1087,3 +1087,199 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
   b.curvature = std::nan("");
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
 }
+
+// The stage helpers carry every field they name: the skeleton options take connect_dead_ends, trim_stubs,
+// the branch merge distance, the triangle limit and the embedding; the merge options the triangle limit
+// (Road_map_options::max_triangles is "of the skeleton and of the merging stage").
+TEST(RoadMap, StageHelpersCopyTheirFields) {
+  for (const bool on : {false, true}) {
+    Road_map_options o;
+    o.connect_dead_ends = on;
+    o.trim_stubs = on;
+    o.branch_merge_distance = on ? 7.5 : 0.0;
+    o.max_triangles = on ? 12345 : 54321;
+    o.embedding.smoothing_iterations = 5;
+    const Road_map_options u = resolve_road_map_options(street(20), o);
+    const Skeleton_options s = road_map_skeleton_options(u);
+    EXPECT_EQ(s.connect_dead_ends, on);
+    EXPECT_EQ(s.trim_stubs, on);
+    EXPECT_EQ(s.branch_merge_distance, on ? 7.5 : 0.0);
+    EXPECT_EQ(s.max_triangles, on ? 12345u : 54321u);
+    EXPECT_EQ(s.embedding.smoothing_iterations, 5);
+    const Road_merge_options m = road_map_merge_options(u);
+    EXPECT_EQ(m.max_triangles, on ? 12345u : 54321u);
+    EXPECT_EQ(m.distance, 8.0);
+    EXPECT_FALSE(m.spacing.has_value());
+    EXPECT_FALSE(m.delta.has_value());
+  }
+}
+
+// The documented bounds are inclusive: min_radius may equal max_radius (0 < min_radius <= max_radius), and
+// only a radius above 1e300 is refused.
+TEST(RoadMap, ResolveAcceptsTheBoundaryValues) {
+  Road_map_options o;
+  o.min_radius = 15;
+  o.max_radius = 15;
+  EXPECT_DOUBLE_EQ(resolve_road_map_options(street(4), o).rips_radius.value(), 15);
+  EXPECT_DOUBLE_EQ(resolve_road_map_options(street(200), o).rips_radius.value(), 15);
+  o = {};
+  o.rips_radius = 1e300;
+  const Road_map_options u = resolve_road_map_options(street(20), o);
+  EXPECT_EQ(u.rips_radius.value(), 1e300);
+  EXPECT_EQ(u.delta.value(), 3e300);
+  o = {};
+  o.min_radius = 1e300;
+  o.max_radius = 1e300;
+  EXPECT_EQ(resolve_road_map_options(street(20), o).rips_radius.value(), 1e300);
+}
+
+// Road_map::used reports the branch merge distance the skeleton used (automatic: twice its level width).
+TEST(RoadMap, UsedReportsTheAutomaticBranchMergeDistance) {
+  Road_map_options o;
+  o.branch_merge_distance = FeatureRecon::automatic;
+  o.merge_distance = 0;
+  const Road_map m = extract_road_map(street(20), o);
+  ASSERT_EQ(m.status, Status::success);
+  ASSERT_GT(m.skeleton.level_width, 0);
+  ASSERT_TRUE(m.used.branch_merge_distance.has_value());
+  EXPECT_EQ(*m.used.branch_merge_distance, m.skeleton.branch_merge_distance);
+  EXPECT_DOUBLE_EQ(*m.used.branch_merge_distance, 2 * m.skeleton.level_width);
+}
+
+// An arc stored with its upper node as the edge's source: the chain still runs from the polyline's first
+// point's node through the interior points in order.
+TEST(MergeRoadLines, SkeletonToRoadMapFollowsThePolylineFromEitherSource) {
+  Skeleton_graph g(2);
+  g[0].position = {0, 0, 0};
+  g[1].position = {30, 0, 0};
+  const std::vector<std::array<double, 3>> line = {{0, 0, 0}, {10, 1, 0}, {20, -1, 0}, {30, 0, 0}};
+  add_edge(1, 0, Skeleton_arc{line, {}, {}, 0, 1}, g);
+  const Embedded_graph_2 m = skeleton_to_road_map(g);
+  ASSERT_EQ(m.positions.size(), 4u);
+  EXPECT_EQ(m.positions[2], (std::array<double, 2>{10, 1}));
+  EXPECT_EQ(m.positions[3], (std::array<double, 2>{20, -1}));
+  std::vector<Edge> sorted;
+  for (const Edge& e : m.edges) sorted.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(sorted, (std::vector<Edge>{{0, 2}, {1, 3}, {2, 3}}));
+  double length = 0;
+  for (std::size_t i = 1; i < line.size(); ++i)
+    length += std::hypot(line[i][0] - line[i - 1][0], line[i][1] - line[i - 1][1]);
+  EXPECT_DOUBLE_EQ(map_length(m), length);
+}
+
+// A map with no more vertices than twice the samples its length calls for is sampled as it is: every vertex
+// and every point inserted along an edge is a sample or was contracted into one.
+TEST(MergeRoadLines, AMapWithFewVerticesIsNotThinned) {
+  Embedded_graph_2 g;
+  for (int i = 0; i <= 18; ++i) g.positions.push_back({double(i), 0});  // 19 vertices 1 m apart
+  g.positions.push_back({30, 0});                                       // and one 12 m further
+  for (Vertex_index i = 0; i + 1 < g.positions.size(); ++i) g.edges.push_back({i, i + 1});
+  // 20 vertices, 30 m at spacing 8/3: 2 (30 / (8/3) + 1) = 24.5; the 12 m edge takes 4 points inside.
+  const Road_merge_result r = merge_road_lines(g);
+  ASSERT_EQ(r.status, Status::success);
+  EXPECT_EQ(r.samples + r.samples_contracted, 24u);
+  EXPECT_GT(r.samples_contracted, 0u);
+}
+
+// remove_thin_loops() measures each side's vertices against the other side's segments (not their lines), in
+// both directions, and keeps sides exactly `d` apart within `d`.
+TEST(MergeRoadLines, ThinLoopSidesAreMeasuredBothWaysToSegments) {
+  auto two_arcs = [](std::vector<std::array<double, 3>> a, std::vector<std::array<double, 3>> b) {
+    Skeleton_graph g(2);
+    g[0].position = {0, 0, 0};
+    g[1].position = {40, 0, 0};
+    g[0].members = {0};
+    g[1].members = {1};
+    add_edge(0, 1, Skeleton_arc{std::move(a), {2}, {}, 0, 1}, g);
+    add_edge(0, 1, Skeleton_arc{std::move(b), {3}, {}, 0, 1}, g);
+    return g;
+  };
+  const std::vector<std::array<double, 3>> straight = {{0, 0, 0}, {40, 0, 0}};
+  // The second side runs on along the first one's line 15 beyond its end: 15 from the first side.
+  Skeleton_graph overshoot = two_arcs(straight, {{0, 0, 0}, {20, 0, 0}, {55, 0, 0}, {40, 0, 0}});
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(overshoot, 5), 0u);
+  EXPECT_EQ(num_edges(overshoot), 2u);
+  // Every vertex of the straight side lies on the bent one, but the bend is 10 from the straight side.
+  Skeleton_graph bent = two_arcs(straight, {{0, 0, 0}, {20, 10, 0}, {40, 0, 0}});
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(bent, 5), 0u);
+  EXPECT_EQ(num_edges(bent), 2u);
+  Skeleton_graph bent_first = two_arcs({{0, 0, 0}, {20, 10, 0}, {40, 0, 0}}, straight);
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(bent_first, 5), 0u);
+  // Sides exactly 3 apart lie within 3.
+  Skeleton_graph three = two_arcs({{0, 0, 0}, {20, 3, 0}, {40, 0, 0}}, {{0, 0, 0}, {20, 0, 0}, {40, 0, 0}});
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(three, 3), 1u);
+  EXPECT_EQ(num_edges(three), 1u);
+}
+
+// An arc beside a path u-v-w whose middle node v has another arc: the direct arc goes even though it is the
+// shorter side (v stays a junction). When v is a kink (degree 2), the path goes and v's members join the
+// direct arc: the members still cover every point.
+TEST(MergeRoadLines, ThinLoopBesideAJunctionLosesTheDirectArc) {
+  Skeleton_graph t(4);
+  for (std::size_t v = 0; v < 4; ++v) t[v].members = {Vertex_index(v)};
+  t[0].position = {0, 0, 0};
+  t[1].position = {40, 0, 0};
+  t[2].position = {20, 4, 0};
+  t[3].position = {20, 30, 0};
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {40, 0, 0}}, {4}, {}, 0, 1}, t);
+  add_edge(0, 2, Skeleton_arc{{{0, 0, 0}, {20, 4, 0}}, {5}, {}, 0, 2}, t);
+  add_edge(2, 1, Skeleton_arc{{{20, 4, 0}, {40, 0, 0}}, {6}, {}, 2, 1}, t);
+  add_edge(2, 3, Skeleton_arc{{{20, 4, 0}, {20, 30, 0}}, {7}, {}, 2, 3}, t);
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(t, 5), 1u);
+  ASSERT_EQ(num_vertices(t), 4u);
+  ASSERT_EQ(num_edges(t), 3u);
+  for (auto e : boost::make_iterator_range(edges(t))) EXPECT_TRUE(source(e, t) == 2 || target(e, t) == 2);
+  auto all_members = [](const Skeleton_graph& g) {
+    std::vector<Vertex_index> m;
+    for (auto v : boost::make_iterator_range(vertices(g)))
+      m.insert(m.end(), g[v].members.begin(), g[v].members.end());
+    for (auto e : boost::make_iterator_range(edges(g)))
+      m.insert(m.end(), g[e].members.begin(), g[e].members.end());
+    std::sort(m.begin(), m.end());
+    return m;
+  };
+  EXPECT_EQ(all_members(t), (std::vector<Vertex_index>{0, 1, 2, 3, 4, 5, 6, 7}));
+  // The kink: the path and its node go, their members join the direct arc.
+  Skeleton_graph k(3);
+  for (std::size_t v = 0; v < 3; ++v) k[v].members = {Vertex_index(v)};
+  k[0].position = {0, 0, 0};
+  k[1].position = {40, 0, 0};
+  k[2].position = {20, 4, 0};
+  add_edge(0, 1, Skeleton_arc{{{0, 0, 0}, {40, 0, 0}}, {3}, {}, 0, 1}, k);
+  add_edge(0, 2, Skeleton_arc{{{0, 0, 0}, {20, 4, 0}}, {4}, {}, 0, 2}, k);
+  add_edge(2, 1, Skeleton_arc{{{20, 4, 0}, {40, 0, 0}}, {5}, {}, 2, 1}, k);
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(k, 5), 1u);
+  ASSERT_EQ(num_vertices(k), 2u);
+  EXPECT_EQ(all_members(k), (std::vector<Vertex_index>{0, 1, 2, 3, 4, 5}));
+}
+
+// After merging no thin loop is left: removing them again at the merge distance finds none (the city's
+// two-way streets leave some, which merge_road_lines() counts).
+TEST(MergeRoadLines, NoThinLoopIsLeftAfterMerging) {
+  const Synthetic_city city = small_city();
+  Road_map_options off;
+  off.merge_distance = 0;
+  const Road_map lines = extract_road_map(city.trips, off);
+  ASSERT_EQ(lines.status, Status::success);
+  const Road_merge_result r = merge_road_lines(lines.map);
+  ASSERT_EQ(r.status, Status::success);
+  EXPECT_GT(r.thin_loops_removed, 0u);
+  Skeleton_graph again = r.skeleton;
+  EXPECT_EQ(skeleton::internal::remove_thin_loops(again, 8), 0u);
+  EXPECT_EQ(num_edges(again), num_edges(r.skeleton));
+}
+
+// With merging off the progress still ends at 1 (the skeleton's stage ends at 0.9).
+TEST(RoadMap, ProgressEndsAtOneWithMergingOff) {
+  Road_map_options o;
+  o.merge_distance = 0;
+  std::vector<double> seen;
+  o.progress = test::recording_progress(seen);
+  const Road_map m = extract_road_map(street(20), o);
+  ASSERT_EQ(m.status, Status::success);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]);
+}

@@ -184,9 +184,8 @@ using Buckets = FeatureRecon::internal::Compressed_lists<T, FeatureRecon::intern
 /// first vertex whose star touches it. Two union-finds keep most triangles out of the link-cut tree: a
 /// local Kruskal over the lower halves born at a vertex, and the "fan" of each vertex c (edges of K into c
 /// joined by upper halves with c on top, which all live until c) for the upper halves. O((n + m) log m)
-/// time for m simplices, O(n + m) memory. Any
-/// simplicial 2-complex is handled: dangling edges, non-manifold vertices and edges, isolated vertices,
-/// several components.
+/// time for m simplices, O(n + m) memory. Any simplicial 2-complex is handled: dangling edges, non-manifold
+/// vertices and edges, isolated vertices, several components.
 ///
 /// \param K a canonical complex (see Simplicial_complex_2).
 /// \param f one finite value per vertex (any random-access range convertible to double).

@@ -863,7 +863,8 @@ Classical_mds classical_mds_3d(const Matrix& D, const Classical_mds_options& opt
 /// \param positions coordinates of the input points in at most 3D (see project_to_3d()); \param values f per
 ///   point.
 /// \pre every vertex of G indexes positions and values, with finite coordinates and value (checked; throws
-///      naming the vertex); level_width automatic or > 0, weight in [0, 1] (checked; throws).
+///      naming the vertex); level_width automatic or > 0; smoothing_weight in [0, 2/3] for Taubin smoothing,
+///      [0, 1] for Laplacian (checked; throws).
 inline Reeb_graph_embedding embed_reeb_graph(const Reeb_graph& G,
                                              const std::vector<std::array<double, 3>>& positions,
                                              const std::vector<double>& values, std::size_t dimension,

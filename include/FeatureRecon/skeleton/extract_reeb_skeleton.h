@@ -92,9 +92,9 @@ struct Skeleton_options {
   /// closer features the complex does not resolve), in input units: for a graph whose edge lengths are not
   /// the coordinates' distances (unit weights, say), times the ratio of the median coordinate distance to the
   /// median length of its edges; off when the level width is infinite (one piece per arc, no scale); 0: off.
-  /// For a distance matrix an arc is at least as long as the matrix's
-  /// distance between its nodes' points (the MDS drawing may shorten it). Negative: refused (before
-  /// FeatureRecon::automatic it asked for the automatic distance).
+  /// For a distance matrix an arc is at least as long as the matrix's distance between its nodes' points
+  /// (the MDS drawing may shorten it). Negative: refused (before FeatureRecon::automatic it asked for the
+  /// automatic distance).
   std::optional<double> branch_merge_distance = FeatureRecon::automatic;
   /// Contract the spurs at the global minimum and maximum of each component when their height is at most
   /// delta (trim_essential_stubs()): on a loop the base point of the geodesic function otherwise stays a
@@ -470,8 +470,7 @@ inline Branch_node_merge_result merge_close_branch_nodes(
 /// from the arcs below and above them. Nodes and arcs that take no part are copied unchanged; the new nodes
 /// are ordered by the smallest original node of each.
 /// \pre distance >= 0 and finite; the members index `coordinates`; above 3D input positions and polylines
-///   have its
-/// dimension (all checked; throws naming the node or arc).
+///   have its dimension (all checked; throws naming the node or arc).
 inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g,
                                                          const Point_matrix& coordinates, double distance) {
   internal::check_point_matrix(coordinates, "merge_close_branch_nodes", "coordinates");

@@ -38,12 +38,11 @@ struct Transverse_mercator {
   double origin_latitude = 0;   ///< latitude where y = 0 on the central meridian (degrees)
 
   /// {x, y} in metres of {longitude, latitude} in degrees. The longitude is taken modulo 360 about the
-  /// central
-  /// meridian (a map crossing the antimeridian stays in one piece). \pre the point
-  /// is not 90 degrees of longitude from the central meridian on the equator (x infinite there). Beyond 90
-  /// degrees of longitude the map goes on over the poles: near a pole the points on the far side of it from
-  /// the central meridian lie a few metres from it too (the round trip holds there to 4 mm,
-  /// test_geographic.cpp).
+  /// central meridian (a map crossing the antimeridian stays in one piece). Beyond 90 degrees of longitude
+  /// the map goes on over the poles: near a pole the points on the far side of it from the central meridian
+  /// lie a few metres from it too (the round trip holds there to 4 mm, test_geographic.cpp).
+  /// \pre the point is not 90 degrees of longitude from the central meridian on the equator (x infinite
+  ///   there).
   /// \throws std::invalid_argument for a latitude outside [-90, 90] or a longitude that is not finite, or
   ///   settings out of range (origin_latitude outside [-90, 90], central_meridian not finite; inverse() too).
   std::array<double, 2> forward(double longitude, double latitude) const {

@@ -44,13 +44,12 @@ struct Embedded_graph_2 {
 /// How compare_maps() pairs the samples of the two maps.
 enum class Map_matching {
   /// Pairs accepted by increasing distance, each ground-truth sample taking the nearest available admissible
-  /// one
-  /// among its `candidates` nearest reconstruction samples (the GraphSamplingToolkit's matching; the default)
+  /// one among its `candidates` nearest reconstruction samples (the GraphSamplingToolkit's matching; the
+  /// default)
   greedy,
   /// A maximum-weight bipartite matching over every admissible pair, weight = match_distance - distance
-  /// (exact up
-  /// to rounding; deterministic). It matches at least as much weight as the greedy one; on the Chicago maps
-  /// 0.1-0.7 % more samples
+  /// (exact up to rounding; deterministic). It matches at least as much weight as the greedy one; on the
+  /// Chicago maps 0.1-0.7 % more samples
   optimal
 };
 

@@ -227,8 +227,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(
 /// several arcs below or above (degenerate forks) act as chains of binary forks, as in a simulation of
 /// simplicity; node order is the graph's (f, vertex index) order.
 /// \pre R's node values are finite and in increasing (value, vertex) order, as reeb_graph() returns them
-///   (checked;
-/// throws).
+///   (checked; throws).
 inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R) {
   return internal::reeb_graph_persistence(R, nullptr);
 }

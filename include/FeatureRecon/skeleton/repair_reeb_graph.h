@@ -129,21 +129,20 @@ struct Reeb_repair_result {
 };
 
 /// Graph fixing of dissertation Ch. 3.3.2: joins pairs of degree-1 nodes whose input points are at most
-/// `max_distance` apart (the input distance, not the distance in the complex), closest pairs first, each node
-/// at most once. A joined pair gets a new arc (no interior vertices) from the lower node to the higher one.
-/// The two ends of one arc (an isolated segment) are never joined: when they are each other's closest free
-/// end, the segment is left as it is (no loop of two arcs), and neither end joins anything farther. The new
-/// features are not checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones
-/// and absorbs nodes that became regular. O(k^2 log k) for k degree-1 nodes; with Reeb_repair_options::bound,
-/// only pairs whose bounds differ by at most max_distance are measured (the same result). The progress
-/// callback is asked after each end's pairs are measured; a stop adds no arc (the graph is R, status
-/// interrupted).
+/// `max_distance` apart (the input distance, not the distance in the complex), closest pairs first (equal
+/// distances: the pair of smaller node indices, compared lexicographically, first), each node at most once. A
+/// joined pair gets a new arc (no interior vertices) from the lower node to the higher one. The two ends of
+/// one arc (an isolated segment) are never joined: when they are each other's closest free end, the segment
+/// is left as it is (no loop of two arcs), and neither end joins anything farther. The new features are not
+/// checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and absorbs nodes
+/// that became regular. O(k^2 log k) for k degree-1 nodes; with Reeb_repair_options::bound, only pairs whose
+/// bounds differ by at most max_distance are measured (the same result). The progress callback is asked after
+/// each end's pairs are measured; a stop adds no arc (the graph is R, status interrupted).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points (>= 0;
 ///   NaN or a negative value throws std::invalid_argument naming the two vertices).
 /// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its
-///   arcs
-/// going up between its nodes, as reeb_graph() and simplify_by_persistence() return them;
-/// Reeb_repair_options::bound not NaN at a degree-1 node (all checked; throws).
+///   arcs going up between its nodes, as reeb_graph() and simplify_by_persistence() return them;
+///   Reeb_repair_options::bound not NaN at a degree-1 node (all checked; throws).
 template <class Distance>
 Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance,
                                      const Reeb_repair_options& options = {}) {
@@ -450,9 +449,11 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
 /// point (ties: smallest vertex index), splitting that arc there: a street that stops short of the street it
 /// meets (a T junction with a gap). Not another part: the node's own arc in R, its vertices and its other
 /// end, also once the arc was split for an earlier dead end (a U-shaped street is not closed on itself,
-/// whatever the order of the dead ends). An isolated arc whose two ends lie within `max_distance` of each
-/// other is not connected (too short to be a street end). Dead ends are taken in node order and see the arcs
-/// added before them. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k
+/// whatever the order of the dead ends). Dead ends are taken in node order and see the arcs added before
+/// them: an arc that is still isolated when its dead end's turn comes (no arc added before split it or ends
+/// on it) and whose two ends lie within `max_distance` of each other is not connected (too short to be a
+/// street end); one that an earlier dead end split is part of a larger piece, and its ends connect like
+/// any other. Simplify afterwards, as after repair_reeb_graph(). O(k * n) distance evaluations for k
 /// dead ends and n input vertices in the graph, and O(n log n) for all splits (each moves the shorter side of
 /// its arc); the arcs come back in the order of Reeb_graph::arcs, their vertex vectors no larger than they
 /// need. With Reeb_repair_options::bound, only the vertices whose bound lies within max_distance of the dead
@@ -462,8 +463,7 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance (>= 0; NaN or a negative
 ///   value throws std::invalid_argument naming the two vertices).
 /// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes
-///   `values`;
-/// Reeb_repair_options::bound not NaN at any vertex of R (all checked; throws).
+///   `values`; Reeb_repair_options::bound not NaN at any vertex of R (all checked; throws).
 template <class Distance>
 Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values,
                                        double max_distance, Distance distance,

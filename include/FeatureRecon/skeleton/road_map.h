@@ -405,10 +405,11 @@ inline std::vector<Edge> thin_map_chains(const std::vector<std::array<double, 2>
 /// than the spacing gets evenly spaced interior points, and a sample closer than half the spacing to an
 /// earlier one joins it (contract_close_samples(): lines that share a stretch are sampled once; a vertex with
 /// no edge stays a node unless it lies that close to an earlier sample). The graph of the Rips edges at
-/// `distance` and the edges' own chains is passed to extract_reeb_skeleton() with delta, no repair and no
-/// pruning. Where two lines diverge beyond `distance` for a short stretch the skeleton keeps a thin loop;
-/// loops whose two sides lie within `distance` of each other (two arcs between the same nodes, or an arc
-/// beside a two-arc path) lose their longer side. Deterministic. The map is not modified.
+/// `distance` and the edges' own chains is passed to extract_reeb_skeleton() with delta, no repair, no
+/// pruning and no branch merging (branch_merge_distance 0: forks stay where the lines diverge). Where two
+/// lines diverge beyond `distance` for a short stretch the skeleton keeps a thin loop; loops whose two sides
+/// lie within `distance` of each other (two arcs between the same nodes, or an arc beside a two-arc path)
+/// lose their longer side. Deterministic. The map is not modified.
 /// \throws std::invalid_argument naming a non-finite vertex, an edge with an end out of range, an edge whose
 ///   length overflows, edges that would need more than `max_samples` points inserted along them (naming the
 ///   longest edge), a neighbourhood complex with more than `max_triangles` triangles (checked before any is
@@ -716,9 +717,9 @@ inline Road_merge_options road_map_merge_options(const Road_map_options& used) {
 
 /// A road map from GPS traces in one call: resolve_road_map_options(), sample_gps_traces(),
 /// build_gps_trace_graph(), extract_reeb_skeleton() on the graph, skeleton_to_road_map(), merge_road_lines()
-/// (unless turned off). Deterministic (no
-/// randomness; the same trips in the same order give the same map bit for bit). Trips with no or one fix are
-/// allowed; with no fix at all the map is empty and the status degenerate_input.
+/// (unless turned off). Deterministic (no randomness; the same trips in the same order give the same map bit
+/// for bit). Trips with no or one fix are allowed; with no fix at all the map is empty and the status
+/// degenerate_input.
 /// \throws std::invalid_argument for bad options (resolve_road_map_options(), sample_gps_traces()), a
 /// skeleton
 ///         whose lines would need more than Road_merge_options::max_samples points to merge

@@ -197,8 +197,8 @@ inline double synthetic_city_max_lane_offset(const Synthetic_city_options& o) {
 /// non-finite
 ///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a jitter
 ///         (grid layout) that lets streets cross (see `jitter`), a lane offset above half the shorter block
-///         side, a missing
-///         fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24 intersections or 2^31
+///         side, a missing fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24
+///         intersections or 2^31
 ///         street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge
 ///         noise, bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
 inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
