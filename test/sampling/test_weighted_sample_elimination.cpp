@@ -542,6 +542,31 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   EXPECT_TRUE(kept.empty());
 }
 
+namespace {
+/// Runs the sampler named `which` ("elimination": 10 items, "darts": radius 0.2, "quality") on `items` with
+/// `sigma_feature`; returns the kept indices ({0} for "quality", which keeps none).
+template <class Items, class Traits>
+std::vector<std::size_t> sample_with(const std::string& which, const Items& items, double sigma_feature,
+                                     const Traits& traits) {
+  std::vector<std::size_t> kept;
+  if (which == "darts") {
+    Dart_throwing_options o;
+    o.sigma_feature = sigma_feature;
+    bilateral_dart_throwing(items, 0.2, std::back_inserter(kept), o, traits);
+  } else if (which == "quality") {
+    Sampling_quality_options o;
+    o.sigma_feature = sigma_feature;
+    (void)sampling_quality(items, o, traits);
+    kept.push_back(0);
+  } else {
+    Elimination_options o;
+    o.sigma_feature = sigma_feature;
+    weighted_sample_elimination(items, 10, std::back_inserter(kept), o, traits);
+  }
+  return kept;
+}
+}  // namespace
+
 TEST(WeightedSampleElimination, UserFeatureWithNaNUnderAnExactKernelIsNamed) {
   // A user's feature type through make_property_map_traits with a NaN channel: the user's distance is NaN,
   // and FT(NaN) raised SIGFPE inside Epeck's GMP numbers (even in Euclidean sampling, which never needs the
@@ -561,22 +586,7 @@ TEST(WeightedSampleElimination, UserFeatureWithNaNUnderAnExactKernelIsNamed) {
           for (std::size_t k = 0; k < 5; ++k) d += (a[k] - b[k]) * (a[k] - b[k]);
           return d;
         });
-    std::vector<std::size_t> kept;
-    if (std::string(which) == "darts") {
-      Dart_throwing_options o;
-      o.sigma_feature = sigma_feature;
-      bilateral_dart_throwing(items, 0.2, std::back_inserter(kept), o, traits);
-    } else if (std::string(which) == "quality") {
-      Sampling_quality_options o;
-      o.sigma_feature = sigma_feature;
-      (void)sampling_quality(items, o, traits);
-      kept.push_back(0);
-    } else {
-      Elimination_options o;
-      o.sigma_feature = sigma_feature;
-      weighted_sample_elimination(items, 10, std::back_inserter(kept), o, traits);
-    }
-    return kept;
+    return sample_with(which, items, sigma_feature, traits);
   };
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -639,32 +649,22 @@ TEST(WeightedSampleElimination, AFeatureDistanceThatIsNaNOnlyBetweenTwoItemsName
           return (a[0] - b[0]) * (a[0] - b[0]);
         });
     using Traits = std::decay_t<decltype(traits)>;
-    std::vector<std::size_t> kept;
     const std::string w(which);
-    if (w == "darts") {
-      Dart_throwing_options o;
-      o.sigma_feature = sigma_feature;
-      bilateral_dart_throwing(items, 0.2, std::back_inserter(kept), o, traits);
-    } else if (w == "quality") {
-      Sampling_quality_options o;
-      o.sigma_feature = sigma_feature;
-      (void)sampling_quality(items, o, traits);
-    } else if (w == "discrete Lloyd") {
+    if (w == "discrete Lloyd") {
       Discrete_lloyd_options<2> o;
       o.sigma_feature = sigma_feature;
       // a site with item 3's feature, next to item 8
       std::vector<Bilateral_site<Traits>> sites{{{0.1, 0.1}, items[0].f}, {{5.0, 5.0}, items[3].f}};
       (void)discrete_bilateral_lloyd(items, sites, o, traits);
-    } else if (w == "kernel") {
+      return std::vector<std::size_t>();
+    }
+    if (w == "kernel") {
       Kernel_relaxation_options<2> o;
       o.sigma_feature = sigma_feature;
       (void)kernel_relaxation(items, std::vector<std::size_t>{0, 3, 8, 20}, o, traits);
-    } else {
-      Elimination_options o;
-      o.sigma_feature = sigma_feature;
-      weighted_sample_elimination(items, 10, std::back_inserter(kept), o, traits);
+      return std::vector<std::size_t>();
     }
-    return kept;
+    return sample_with(w, items, sigma_feature, traits);
   };
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0.0, 1.0);

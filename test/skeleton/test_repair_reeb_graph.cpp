@@ -33,6 +33,13 @@ void add_horizontal_street(Line& pts, std::vector<Edge>& edges, std::vector<doub
     if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
   }
 }
+/// Repair options with `bounded`: coordinate `axis` of `pts` as Reeb_repair_options::bound (1-Lipschitz, so
+/// the result must not change); else none. `pts` must outlive the options.
+Reeb_repair_options bound_option(const Planar_points& pts, bool bounded, std::size_t axis = 0) {
+  Reeb_repair_options x;
+  if (bounded) x.bound = [&pts, axis](Vertex_index v) { return pts.p[v][axis]; };
+  return x;
+}
 /// The street of add_horizontal_street() and a vertical segment of `length` from (5, 1.5) (vertices 11 and
 /// 12, f 20 and 20 + length): `pts` gets the points; returns the complex.
 Complex_with_function street_and_segment(Line& pts, double length) {
@@ -488,8 +495,7 @@ TEST(ConnectDeadEnds, ADeadEndNeverClosesItsOwnStreetWhateverTheOrder) {
     const Reeb_graph R = reeb_graph_of(make(pts.p.size(), edges, {}, f));
     ASSERT_EQ(R.arcs.size(), 2u);
     for (const bool bounded : {false, true}) {
-      Reeb_repair_options x;
-      if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+      const Reeb_repair_options x = bound_option(pts, bounded);
       const Reeb_dead_end_result r = connect_dead_ends(R, f, 3.5, pts, x);
       EXPECT_EQ(r.connected, 1u) << stub_f << " " << bounded;
       EXPECT_EQ(r.graph.loops(), 0u) << stub_f << " " << bounded;
@@ -739,8 +745,7 @@ TEST(ConnectDeadEnds, ADeadEndThatWasConnectedToIsNoLongerADeadEnd) {
   const std::vector<double> f{-10.0, 0.0, 1.0, 10.0};
   const Reeb_graph R = hand_graph({{0, -10.0}, {1, 0.0}, {2, 1.0}, {3, 10.0}}, {{0, 1, {}}, {2, 3, {}}});
   for (const bool bounded : {false, true}) {
-    Reeb_repair_options x;
-    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_dead_end_result r = connect_dead_ends(R, f, 1.5, pts, x);
     EXPECT_EQ(r.connected, 1u) << bounded;
     EXPECT_EQ(r.graph.loops(), 0u) << bounded;
@@ -780,8 +785,7 @@ TEST(ConnectDeadEnds, ADeadEndNeverJoinsTheFarEndOfItsOwnArc) {
   const Reeb_graph R =
       hand_graph({{0, 0.0}, {11, 3.5}, {8, 8.0}}, {{0, 2, {1, 2, 3, 4, 5, 6, 7}}, {0, 1, {9, 10}}});
   for (const bool bounded : {false, true}) {
-    Reeb_repair_options x;
-    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][1]; };
+    const Reeb_repair_options x = bound_option(pts, bounded, 1);
     const Reeb_dead_end_result r = connect_dead_ends(R, f, 1.2, pts, x);
     EXPECT_EQ(r.connected, 0u) << bounded;
     EXPECT_EQ(r.graph.loops(), 0u) << bounded;
@@ -815,8 +819,7 @@ TEST(RepairReebGraph, EachEndIsJoinedAtMostOnce) {
   const Reeb_graph R = hand_graph({{0, -20.0}, {1, 0.0}, {4, 0.5}, {2, 1.0}, {5, 10.0}, {3, 20.0}},
                                   {{0, 1, {}}, {2, 4, {}}, {3, 5, {}}});
   for (const bool bounded : {false, true}) {
-    Reeb_repair_options x;
-    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_repair_result fixed = repair_reeb_graph(R, 1.3, pts, x);
     EXPECT_EQ(fixed.joined, 1u) << bounded;
     EXPECT_EQ(links_added(fixed.graph, R), (std::vector<std::pair<Vertex_index, Vertex_index>>{{1, 2}}))
@@ -854,8 +857,7 @@ TEST(ConnectDeadEnds, ASegmentSplitByAnEarlierDeadEndIsNoLongerIsolated) {
   const Reeb_graph R =
       hand_graph({{6, -10.0}, {10, -6.0}, {0, 0.0}, {5, 2.0}}, {{0, 1, {7, 8, 9}}, {2, 3, {1, 2, 3, 4}}});
   for (const bool bounded : {false, true}) {
-    Reeb_repair_options x;
-    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_dead_end_result r = connect_dead_ends(R, f, 2.2, pts, x);
     EXPECT_EQ(r.connected, 2u) << bounded;
     EXPECT_EQ(links_added(r.graph, R),
@@ -877,8 +879,7 @@ TEST(RepairReebGraph, EqualDistancesGoToThePairOfSmallerNodes) {
   const Reeb_graph c_first = hand_graph({{0, -20.0}, {4, 0.0}, {2, 1.0}, {1, 2.0}, {3, 20.0}, {5, 22.0}},
                                         {{0, 3, {}}, {2, 4, {}}, {1, 5, {}}});
   for (const bool bounded : {false, true}) {
-    Reeb_repair_options x;
-    if (bounded) x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+    const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_repair_result one = repair_reeb_graph(a_first, 1.5, pts, x);
     const Reeb_repair_result two = repair_reeb_graph(c_first, 1.5, pts, x);
     EXPECT_EQ(one.joined, 1u) << bounded;
