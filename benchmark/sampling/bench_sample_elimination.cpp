@@ -59,6 +59,18 @@ const std::vector<K::Point_2>& square(std::size_t n, bool outlier = false) {
   return p;
 }
 
+/// The centres of a side x side picture's pixels in the unit square: many pairs at each distance, so that the
+/// count of a throw jumps over most goals.
+const std::vector<K::Point_2>& pixel_grid(std::size_t side) {
+  static std::map<std::size_t, std::vector<K::Point_2>> cache;
+  auto& p = cache[side];
+  if (p.empty())
+    for (std::size_t i = 0; i < side; ++i)
+      for (std::size_t j = 0; j < side; ++j)
+        p.emplace_back((double(i) + 0.5) / double(side), (double(j) + 0.5) / double(side));
+  return p;
+}
+
 /// n points on the surface of the unit cube with their face normals (12 crease edges).
 const std::vector<Pwn>& cube(std::size_t n) {
   static std::map<std::size_t, std::vector<Pwn>> cache;
@@ -154,8 +166,9 @@ void BM_darts_2d(benchmark::State& state) {
 
 // Dart throwing with an exact count (bilateral_dart_throwing_count: a radius search of whole throws), against
 // the same count by elimination and by GUDHI's farthest-point sampling.
+template <bool Grid>
 void BM_darts_count_2d(benchmark::State& state) {
-  const auto& p = square(std::size_t(state.range(0)), false);
+  const auto& p = Grid ? pixel_grid(std::size_t(state.range(0))) : square(std::size_t(state.range(0)), false);
   const std::size_t m = std::size_t(state.range(1));
   std::vector<std::size_t> kept;
   std::size_t throws = 0;
@@ -248,6 +261,14 @@ std::vector<K::Point_2> to_points(const std::vector<std::array<double, 2>>& a) {
 template <bool Outlier>
 void BM_gudhi_farthest(benchmark::State& state) {
   const auto a = square_arrays(std::size_t(state.range(0)), Outlier);
+  std::vector<std::array<double, 2>> out;
+  for (auto _ : state) out = bench::gudhi_choose_n_farthest_points(a, std::size_t(state.range(1)));
+  state.counters["kept"] = double(out.size());
+  state.counters["rho"] = rho_2d(to_points(out));
+}
+void BM_gudhi_farthest_pixels(benchmark::State& state) {
+  std::vector<std::array<double, 2>> a;
+  for (const auto& x : pixel_grid(std::size_t(state.range(0)))) a.push_back({x.x(), x.y()});
   std::vector<std::array<double, 2>> out;
   for (auto _ : state) out = bench::gudhi_choose_n_farthest_points(a, std::size_t(state.range(1)));
   state.counters["kept"] = double(out.size());
@@ -426,9 +447,14 @@ void register_all() {
       ->Args({100000, 20})
       ->Args({1000000, 10})
       ->MinTime(1.0);
-  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_count_2d", BM_darts_count_2d))
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_count_2d", BM_darts_count_2d<false>))
       ->Args({50000, 10000})
       ->Args({500000, 100000})
+      ->MinTime(1.0);
+  // Arguments: the side of the pixel grid, the count.
+  ms(benchmark::RegisterBenchmark("sampling/featurerecon/darts_count_pixels", BM_darts_count_2d<true>))
+      ->Args({512, 5000})
+      ->Args({512, 20000})
       ->MinTime(1.0);
   // Arguments: candidates, count (elimination) or radius in thousandths (darts), darts or not.
   ms(benchmark::RegisterBenchmark("sampling/featurerecon/periodic_2d", BM_periodic_2d))
@@ -481,6 +507,10 @@ void register_all() {
   ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_2d", BM_gudhi_farthest<false>))
       ->Args({50000, 10000})
       ->Iterations(3);
+  ms(benchmark::RegisterBenchmark("sampling/gudhi/choose_n_farthest_points_pixels", BM_gudhi_farthest_pixels))
+      ->Args({512, 5000})
+      ->Args({512, 20000})
+      ->Iterations(1);
   ms(benchmark::RegisterBenchmark("sampling/gudhi/sparsify_point_set_2d", BM_gudhi_sparsify<false>))
       ->Args({100000, 20})
       ->Args({1000000, 10})

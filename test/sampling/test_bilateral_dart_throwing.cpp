@@ -201,16 +201,28 @@ TEST(BilateralDartThrowing, TargetCountInterpolatesTheRadius) {
   // The count falls about as r^-2: interpolating log count against log r between the bracket's ends hits the
   // exact count in 6-11 throws on 5000 points (17, 500 and 1200 wanted), where a plain bisection took 10-20
   // (each throw is a progress call, plus the final one).
+  // The progress rises as the bracket's log count ratio shrinks: before the final 1 it showed at most it /
+  // 60, here below 0.2.
   const std::vector<Point_2> p = white_noise(5000, 4);
   for (const std::size_t count : {17u, 500u, 1200u}) {
-    std::size_t calls = 0;
+    std::vector<double> shown;
     Dart_throwing_count_options o;
-    o.darts.progress = [&calls](double) { return ++calls > 0; };
+    o.darts.progress = [&shown](double f) {
+      shown.push_back(f);
+      return true;
+    };
     std::vector<std::size_t> kept;
     const auto r = bilateral_dart_throwing_count(p, count, std::back_inserter(kept), o);
     EXPECT_EQ(r.status, Status::success);
     EXPECT_EQ(kept.size(), count);
-    EXPECT_LE(calls, 13u) << count;
+    EXPECT_LE(shown.size(), 13u) << count;
+    ASSERT_GE(shown.size(), 2u);
+    EXPECT_TRUE(std::is_sorted(shown.begin(), shown.end())) << count;
+    EXPECT_GE(shown.front(), 0.0);
+    EXPECT_EQ(shown.back(), 1.0);
+    EXPECT_LT(shown[shown.size() - 2], 1.0) << count;
+    // (17 is kept by the first throw below the upper end: no bracket, no progress before the 1.)
+    if (count != 17) EXPECT_GT(shown[shown.size() - 2], 0.3) << count;
   }
 }
 
@@ -237,6 +249,117 @@ TEST(BilateralDartThrowing, TargetCountNearEveryItemFindsARadius) {
       EXPECT_GE(closest, r.radius * (1 - 1e-12)) << count;
     }
   }
+}
+
+TEST(BilateralDartThrowing, TargetCountStopsWhereTheCountJumpsOverIt) {
+  // On a grid many pairs lie at one distance, and the count jumps over the goal there: no radius keeps
+  // exactly 5000 or 1234 of these 60,000 points. The search used to shrink the bracket around the jump until
+  // no double was left between its ends (all 60 steps, 54-64 throws); it now stops once the throws at its two
+  // ends are known to be the only ones between (6-12 throws). Scaled by 0.1, or by 1/3 and shifted far from
+  // the origin, the grid's equal distances differ in their last bits: the same items are kept.
+  for (const std::size_t count : {5000u, 1234u}) {
+    std::vector<std::size_t> first;
+    for (const double scale : {1.0, 0.1, 1 / 3.0}) {
+      const double shift = scale == 1 / 3.0 ? 1000 : 0;
+      std::vector<Point_2> p;
+      for (int i = 0; i < 300; ++i)
+        for (int j = 0; j < 200; ++j) p.emplace_back(i * scale + shift, j * scale - shift);
+      std::size_t calls = 0;
+      Dart_throwing_count_options o;
+      o.darts.progress = [&calls](double) { return ++calls > 0; };
+      std::vector<std::size_t> kept;
+      const auto r = bilateral_dart_throwing_count(p, count, std::back_inserter(kept), o);
+      EXPECT_EQ(r.status, Status::success);
+      ASSERT_EQ(kept.size(), count);
+      EXPECT_LE(calls, 15u) << count << " " << scale;
+      // The radius is where the count jumps: its throw keeps more and holds the result, a radius just above
+      // keeps fewer.
+      const std::vector<std::size_t> at = darts(p, r.radius, o.darts);
+      EXPECT_GT(at.size(), count);
+      EXPECT_TRUE(std::includes(at.begin(), at.end(), kept.begin(), kept.end()));
+      EXPECT_LT(darts(p, r.radius * (1 + 1e-9), o.darts).size(), count) << count << " " << scale;
+      double closest = std::numeric_limits<double>::infinity();
+      for (std::size_t a = 0; a < kept.size(); ++a)
+        for (std::size_t b = a + 1; b < kept.size(); ++b)
+          closest = std::min(closest, CGAL::squared_distance(p[kept[a]], p[kept[b]]));
+      EXPECT_GE(std::sqrt(closest), r.radius) << count << " " << scale;
+      if (first.empty())
+        first = kept;
+      else
+        EXPECT_EQ(kept, first) << count << " " << scale;
+    }
+  }
+  // On the unit torus and on a grey picture (bilateral distance) as well.
+  std::vector<Point_2> torus;
+  for (int i = 0; i < 120; ++i)
+    for (int j = 0; j < 120; ++j) torus.emplace_back(i / 120.0, j / 120.0);
+  std::vector<std::uint8_t> values(160 * 120);
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = (k % 160) / 40 % 2 != 0 ? 200 : 30;
+  const auto pixels = image_pixels<Grey_pixel>(160, 120, values);
+  for (const bool picture : {false, true}) {
+    std::size_t calls = 0;
+    Dart_throwing_count_options o;
+    o.darts.periodic = !picture;
+    if (picture) o.darts.sigma_feature = 0.2;
+    o.darts.progress = [&calls](double) { return ++calls > 0; };
+    std::vector<std::size_t> kept;
+    const auto r =
+        picture ? bilateral_dart_throwing_count(pixels, 700, std::back_inserter(kept), o, Grey_pixel_traits())
+                : bilateral_dart_throwing_count(torus, 700, std::back_inserter(kept), o);
+    ASSERT_EQ(kept.size(), 700u);
+    EXPECT_LE(calls, 15u) << picture;
+    const auto throw_at = [&](double radius) {
+      std::vector<std::size_t> out;
+      if (picture)
+        bilateral_dart_throwing(pixels, radius, std::back_inserter(out), o.darts, Grey_pixel_traits());
+      else
+        bilateral_dart_throwing(torus, radius, std::back_inserter(out), o.darts);
+      return out;
+    };
+    const std::vector<std::size_t> at = throw_at(r.radius);
+    EXPECT_GT(at.size(), 700u) << picture;
+    EXPECT_TRUE(std::includes(at.begin(), at.end(), kept.begin(), kept.end())) << picture;
+    EXPECT_LT(throw_at(r.radius * (1 + 1e-9)).size(), 700u) << picture;
+  }
+}
+
+TEST(BilateralDartThrowing, TheBoundsOfAThrowAreItsNearestConflictsAndItsClosestPair) {
+  // The two bounds that end the count search, on small inputs by hand. Visiting order by priority: x = 0.1
+  // and x = 1 are accepted first; at radius 0.6, x = 0.45 conflicts with both (0.35 and 0.55 away: its
+  // nearest conflict is 0.35) and x = 0.3 with x = 0.1 only (0.2): the largest nearest conflict is 0.35. The
+  // mirror image lists the two accepted items the other way round in the grid.
+  using Traits = Default_traits_t<std::vector<Point_2>>;
+  for (const bool mirror : {false, true}) {
+    std::vector<Point_2> p;
+    for (const double x : {0.1, 1.0, 0.45, 0.3}) p.emplace_back(mirror ? 1.1 - x : x, 0);
+    const sampling::internal::Sample_set<Traits> S(p, Traits(), "test");
+    Dart_throwing_options o;
+    o.priority = {4, 3, 2, 1};
+    bool interrupted = true;
+    double largest = 0;
+    const std::vector<std::uint32_t> kept = sampling::internal::throw_darts(
+        S, 0.6, o, sampling::internal::dart_order(4, o), interrupted, &largest);
+    EXPECT_FALSE(interrupted);
+    EXPECT_EQ(kept, (std::vector<std::uint32_t>{0, 1}));
+    EXPECT_NEAR(largest, 0.35, 1e-12) << mirror;
+    // Nothing rejected: -infinity. And the closest pair of the kept set (0.9 apart), or the cap.
+    const std::vector<std::uint32_t> all = sampling::internal::throw_darts(
+        S, 0.1, o, sampling::internal::dart_order(4, o), interrupted, &largest);
+    EXPECT_EQ(all.size(), 4u);
+    EXPECT_EQ(largest, -std::numeric_limits<double>::infinity());
+    EXPECT_NEAR(sampling::internal::throw_separation(S, kept, 2.0, o, 0.0), 0.9, 1e-12);
+    EXPECT_DOUBLE_EQ(sampling::internal::throw_separation(S, kept, 0.7, o, 0.0), 0.7);
+    EXPECT_NEAR(sampling::internal::throw_separation(S, all, 2.0, o, 0.0), 0.15, 1e-12);
+  }
+  // On the unit torus the closest pair may lie across the seam: 0.02 and 0.95 are 0.07 apart there, 0.93 in
+  // the plane.
+  const std::vector<Point_2> t{{0.02, 0.5}, {0.95, 0.5}, {0.5, 0.5}};
+  const sampling::internal::Sample_set<Traits> T(t, Traits(), "test");
+  Dart_throwing_options o;
+  o.periodic = true;
+  EXPECT_NEAR(sampling::internal::throw_separation(T, {0, 1, 2}, 1.0, o, 0.0), 0.07, 1e-12);
+  o.periodic = false;
+  EXPECT_NEAR(sampling::internal::throw_separation(T, {0, 1, 2}, 1.0, o, 0.0), 0.45, 1e-12);
 }
 
 TEST(BilateralDartThrowing, ACapKeepsTheFirstInTheVisitingOrder) {
