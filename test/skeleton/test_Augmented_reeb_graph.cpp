@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
@@ -451,6 +453,52 @@ TEST(AugmentedReebGraph, SurfaceMeshWithVertexPropertyMap) {
   quad.add_face(a, b, c, d);
   auto h2 = quad.add_property_map<Mesh::Vertex_index, double>("v:h", 0.0).first;
   EXPECT_THROW(compute_augmented_reeb_graph(quad, h2), std::invalid_argument);
+}
+
+// The mesh overload hands the values over by vertex index as they are (fractions too: the minimum is the
+// vertex at height -0.5, not the one at 0) and passes its options on (a progress callback that stops at once
+// leaves an interrupted graph without arcs); simplicial_complex_from_mesh() names a face that is not a
+// triangle by its index among the faces.
+TEST(AugmentedReebGraph, SurfaceMeshValuesOptionsAndFaceIndex) {
+  using K = CGAL::Simple_cartesian<double>;
+  using Mesh = CGAL::Surface_mesh<K::Point_3>;
+  Mesh mesh;
+  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({1, 0, -0.5}),
+             v2 = mesh.add_vertex({0, 1, 0.25}), v3 = mesh.add_vertex({0, 0, 1.75});
+  mesh.add_face(v0, v2, v1);
+  mesh.add_face(v0, v1, v3);
+  mesh.add_face(v1, v2, v3);
+  mesh.add_face(v2, v0, v3);
+  auto height = mesh.add_property_map<Mesh::Vertex_index, double>("v:height", 0.0).first;
+  for (auto v : mesh.vertices()) height[v] = mesh.point(v).z();
+  const Augmented_reeb_graph A = compute_augmented_reeb_graph(mesh, height);
+  ASSERT_EQ(A.values().size(), 4u);
+  for (auto v : mesh.vertices()) EXPECT_EQ(A.values()[v.idx()], mesh.point(v).z());
+  const Reeb_graph R = A.reeb_graph();
+  ASSERT_EQ(R.count(minimum), 1u);
+  for (const auto& node : R.nodes)
+    if (node.type & minimum) {
+      EXPECT_EQ(node.vertex, static_cast<Vertex_index>(v1.idx()));
+    }
+  Reeb_graph_options stop;
+  stop.progress = [](double) { return false; };
+  const Augmented_reeb_graph stopped = compute_augmented_reeb_graph(mesh, height, stop);
+  EXPECT_EQ(stopped.status(), Status::interrupted);
+  EXPECT_EQ(stopped.number_of_arcs(), 0u);
+  // A triangle, then a quadrilateral on its edge (b, c).
+  Mesh mixed;
+  const auto a = mixed.add_vertex({0, 0, 0}), b = mixed.add_vertex({1, 0, 0}),
+             c = mixed.add_vertex({0, 1, 0}), d = mixed.add_vertex({2, 1, 0}),
+             e = mixed.add_vertex({1, 2, 0});
+  mixed.add_face(a, b, c);
+  ASSERT_TRUE(mixed.add_face(c, b, d, e) != Mesh::null_face());
+  try {
+    simplicial_complex_from_mesh(mixed);
+    ADD_FAILURE() << "a quadrilateral was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "simplicial_complex_from_mesh: face 1 has 4 vertices; triangulate the mesh first");
+  }
 }
 
 TEST(AugmentedReebGraph, DuplicatedPointsKeepTheLoops) {

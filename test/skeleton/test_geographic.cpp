@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -199,6 +201,90 @@ TEST(LocalTransverseMercator, BadPointsAreNamed) {
       "for one projection");
   // Within the bound it is accepted.
   EXPECT_EQ(message_of({{-87.6, 41.8}, {-84, 41.8}}), "");
+}
+
+// The longitude is taken modulo 360 about the central meridian: whole turns added to it, even 2^30 of them
+// (the sum still exact in a double), leave the position where it was.
+TEST(TransverseMercator, LongitudeIsTakenModulo360) {
+  const Transverse_mercator tm{7, 30};
+  const double turns = double(1u << 30);
+  for (const double lon : {10.0, -170.0, 7.5}) {
+    const auto xy = tm.forward(lon, 45);
+    for (const double k : {-turns, -1.0, 1.0, turns}) {
+      const auto again = tm.forward(lon + 360 * k, 45);
+      EXPECT_NEAR(again[0], xy[0], 1e-6) << lon << " + 360 x " << k;
+      EXPECT_NEAR(again[1], xy[1], 1e-6) << lon << " + 360 x " << k;
+    }
+  }
+}
+
+// The documented ranges are closed where they say so: origin latitudes -90 and 90 are settings in range
+// (the pole is then the origin), and inverse() gives longitudes in (-180, 180]: 180, never -180.
+TEST(TransverseMercator, ClosedRangesAndTheLongitudeOfInverse) {
+  for (const double meridian : {180.0, -180.0}) {
+    const Transverse_mercator tm{meridian, 0};
+    for (const double y : {0.0, 1e6, -2e6}) EXPECT_EQ(tm.inverse(0, y)[0], 180.0) << meridian << " " << y;
+  }
+  for (const double pole : {-90.0, 90.0}) {
+    const Transverse_mercator at_pole{10, pole};
+    const auto xy = at_pole.forward(10, pole);
+    EXPECT_NEAR(xy[0], 0, 1e-9) << pole;
+    EXPECT_NEAR(xy[1], 0, 1e-6) << pole;
+    EXPECT_NEAR(at_pole.inverse(0, 0)[1], pole, 1e-9) << pole;
+  }
+  // Points at longitudes -180 and 180 (one meridian) are in range for local_transverse_mercator().
+  EXPECT_EQ(message_of({{-180, -17}, {180, -17.01}, {-179.99, -17}}), "");
+}
+
+// The documented accuracy of inverse(): within 1,000 km of the central meridian the round trip is exact to
+// 2e-9 degrees, and the PROJ positions of ForwardAgreesWithProjToAMillimetre go back to their longitude and
+// latitude to 1e-9 degrees (0.1 mm).
+TEST(TransverseMercator, InverseMeetsTheDocumentedAccuracy) {
+  const Transverse_mercator tm{-87, 30};
+  double worst = 0;
+  for (double lat = -84.5; lat <= 84.5; lat += 6.5)
+    for (double dlon = -13; dlon <= 13; dlon += 0.65) {
+      const auto xy = tm.forward(-87 + dlon, lat);
+      if (std::abs(xy[0]) > 1e6) continue;
+      const auto back = tm.inverse(xy[0], xy[1]);
+      worst = std::max({worst, std::abs(back[0] - (-87 + dlon)), std::abs(back[1] - lat)});
+    }
+  EXPECT_LT(worst, 2e-9);
+  const Transverse_mercator utm16{-87, 0};
+  const double proj[][4] = {{-87.6496270, 41.8791761, 446097.654553, 4636565.422789},
+                            {-84.0, 60.0, 667294.821124, 6655205.483635},
+                            {-80.0, 10.0, 1268980.132218, 1113599.929721},
+                            {-93.0, -45.0, 27108.208731, -5000491.005461}};
+  for (const auto& c : proj) {
+    const auto back = utm16.inverse((c[2] - 500000) / 0.9996, c[3] / 0.9996);
+    EXPECT_NEAR(back[0], c[0], 1e-9) << c[0] << " " << c[1];
+    EXPECT_NEAR(back[1], c[1], 1e-9) << c[0] << " " << c[1];
+  }
+}
+
+// max_offset bounds the distance from the central meridian inclusively (a point exactly at it is accepted,
+// one a hair beyond refused); by default 500 km (5.4 degrees of longitude on the equator, about 601 km, are
+// refused; 3.6 degrees, about 401 km, accepted); zero, negative or NaN bounds are refused by name.
+TEST(LocalTransverseMercator, MaxOffsetIsAPositiveInclusiveBound) {
+  const std::string far = message_of({{0, 0}, {10.8, 0}});
+  EXPECT_NE(far.find("point 0 (longitude 0, latitude 0) lies 60"), std::string::npos) << far;
+  EXPECT_EQ(message_of({{0, 0}, {7.2, 0}}), "");
+  const std::vector<std::array<double, 2>> points = {{0, 0}, {7.2, 0}, {3, 1}};
+  const Transverse_mercator tm = local_transverse_mercator(points);
+  double x = 0;
+  for (const auto& p : points) x = std::max(x, std::abs(tm.forward(p[0], p[1])[0]));
+  EXPECT_NO_THROW(local_transverse_mercator(points, x));
+  EXPECT_THROW(local_transverse_mercator(points, std::nextafter(x, 0.0)), std::invalid_argument);
+  for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    try {
+      local_transverse_mercator({{0, 0}, {1, 0}}, bad);
+      ADD_FAILURE() << "max_offset " << bad << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("local_transverse_mercator: max_offset must be positive"),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <random>
@@ -1086,6 +1088,255 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
   b.curvature = std::nan("");
   EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
+}
+
+// Each option is checked at its documented bound and a bad one is named: the accepted ones stop at the
+// first progress report (interrupted, no exception), before any work, so that the bounds on sizes cost
+// nothing.
+TEST(SyntheticCity, OptionsAreCheckedAtTheirDocumentedBounds) {
+  const auto problem = [](const std::function<void(Synthetic_city_options&)>& set) {
+    Synthetic_city_options o;
+    o.progress = [](double) { return false; };
+    set(o);
+    return message_of([&] { EXPECT_EQ(make_synthetic_city(o).status, Status::interrupted); });
+  };
+  const std::string fn = "make_synthetic_city: ";
+  EXPECT_EQ(problem([](auto& o) { o.rows = 1; }), fn + "columns and rows must be >= 2, got 8 and 1");
+  EXPECT_EQ(problem([](auto& o) { o.columns = 4097, o.rows = 4096; }),
+            fn + "columns x rows must be at most 2^24 intersections, got 4097 x 4096");
+  EXPECT_EQ(problem([](auto& o) { o.columns = 4096, o.rows = 4096; }), "(no exception)");
+  EXPECT_EQ(problem([](auto& o) { o.speed = 0; }), fn + "speed must be positive and finite, got 0");
+  EXPECT_EQ(problem([](auto& o) { o.block_height = -90; }),
+            fn + "block_height must be positive and finite, got -90");
+  EXPECT_EQ(problem([](auto& o) { o.trip_bias = -1; }), fn + "trip_bias must be finite and >= 0, got -1");
+  EXPECT_EQ(problem([](auto& o) { o.jitter = -1; }), fn + "jitter must be finite and >= 0, got -1");
+  EXPECT_EQ(problem([](auto& o) { o.lane_offset = -2; }), fn + "lane_offset must be finite and >= 0, got -2");
+  EXPECT_EQ(problem([](auto& o) { o.rotation = std::nan(""); }), fn + "rotation must be finite, got nan");
+  EXPECT_EQ(problem([](auto& o) { o.missing_streets = -0.1; }),
+            fn + "missing_streets must be in [0, 1], got -0.1");
+  EXPECT_EQ(problem([](auto& o) { o.curvature = -0.1; }), fn + "curvature must be in [0, 0.5], got -0.1");
+  for (const double bound : {0.0, 1.0}) {
+    EXPECT_EQ(problem([&](auto& o) { o.missing_streets = bound; }), "(no exception)") << bound;
+  }
+  EXPECT_EQ(problem([](auto& o) { o.curvature = 0.5; }), "(no exception)");
+  EXPECT_EQ(problem([](auto& o) { o.trips = std::size_t(1) << 26; }), "(no exception)");
+}
+
+namespace {
+/// A grid city exactly on the axes (no jitter, rotation, avenue or missing street): intersection (i, j) at
+/// (120 i, 90 j), so that a fix's street, lane and offsets can be read off its coordinates.
+Synthetic_city_options axis_grid() {
+  Synthetic_city_options o;
+  o.columns = 5;
+  o.rows = 4;
+  o.jitter = 0;
+  o.diagonal = false;
+  o.missing_streets = 0;
+  o.noise = 0;
+  o.trip_bias = 0;
+  o.trips = 100;
+  return o;
+}
+}  // namespace
+
+// Without noise or bias on the axis-aligned grid: a fix between two fixes on the same row (column) street
+// lies lane_offset right of the direction of travel; fixes are sampling_interval apart in time from a random
+// phase after 10000 k (trip k), at one speed per trip in [0.7, 1.3] x speed; every trip (between two
+// intersections) records fixes. The seed drives the trips too: another seed, same streets here, other trips.
+TEST(SyntheticCity, TripsKeepRightAtTheIntervalAndTheirSpeed) {
+  const Synthetic_city_options o = axis_grid();
+  const Synthetic_city c = make_synthetic_city(o);
+  for (std::size_t j = 0; j < o.rows; ++j)
+    for (std::size_t i = 0; i < o.columns; ++i) {
+      EXPECT_EQ(c.streets.positions[j * o.columns + i], (std::array<double, 2>{120.0 * i, 90.0 * j}));
+    }
+  std::size_t along_rows[2] = {0, 0}, along_columns[2] = {0, 0};  // [west, east], [south, north]
+  double slowest = std::numeric_limits<double>::infinity(), fastest = 0, first_phase = 1, last_phase = 0;
+  ASSERT_EQ(c.trips.size(), o.trips);
+  for (std::size_t k = 0; k < c.trips.size(); ++k) {
+    const Gps_trip& t = c.trips[k];
+    ASSERT_FALSE(t.empty()) << "trip " << k;
+    const double phase = (t[0].time - 10000.0 * double(k)) / o.sampling_interval;
+    EXPECT_GE(phase, 0) << "trip " << k;
+    EXPECT_LT(phase, 1) << "trip " << k;
+    first_phase = std::min(first_phase, phase);
+    last_phase = std::max(last_phase, phase);
+    for (std::size_t i = 1; i < t.size(); ++i) {
+      EXPECT_NEAR(t[i].time - t[i - 1].time, o.sampling_interval, 1e-9) << "trip " << k << ", fix " << i;
+      const double dx = t[i].x - t[i - 1].x, dy = t[i].y - t[i - 1].y;
+      if ((dx == 0) == (dy == 0)) continue;  // around a corner
+      const double speed = std::hypot(dx, dy) / o.sampling_interval;
+      slowest = std::min(slowest, speed);
+      fastest = std::max(fastest, speed);
+      if (dy == 0) {
+        ++along_rows[dx > 0];
+        EXPECT_NEAR(std::remainder(t[i].y, o.block_height), dx > 0 ? -o.lane_offset : o.lane_offset, 1e-9);
+      } else {
+        ++along_columns[dy > 0];
+        EXPECT_NEAR(std::remainder(t[i].x, o.block_width), dy > 0 ? o.lane_offset : -o.lane_offset, 1e-9);
+      }
+    }
+  }
+  for (const std::size_t n : {along_rows[0], along_rows[1], along_columns[0], along_columns[1]})
+    EXPECT_GT(n, 50u);
+  EXPECT_GE(slowest, 0.7 * o.speed - 1e-9);
+  EXPECT_LE(fastest, 1.3 * o.speed + 1e-9);
+  EXPECT_LT(slowest, 0.75 * o.speed);  // the range is used
+  EXPECT_GT(fastest, 1.25 * o.speed);
+  EXPECT_LT(first_phase, 0.1);
+  EXPECT_GT(last_phase, 0.9);
+  Synthetic_city_options other = o;
+  other.seed = 2;
+  const Synthetic_city d = make_synthetic_city(other);
+  EXPECT_EQ(d.streets.positions, c.streets.positions);
+  EXPECT_EQ(d.streets.edges, c.streets.edges);
+  std::size_t different = 0;
+  for (std::size_t k = 0; k < o.trips; ++k)
+    different += d.trips[k].empty() || c.trips[k].empty() || d.trips[k][0].x != c.trips[k][0].x ||
+                 d.trips[k][0].y != c.trips[k][0].y;
+  EXPECT_GT(different, o.trips * 9 / 10);
+}
+
+// trip_bias: one constant offset per trip and coordinate, read off the fixes on column streets (x = 120 i +
+// b_x) and on row streets (y = 90 j + b_y) without noise or lane offset: the same along each trip, different
+// in x and y, of standard deviation trip_bias over the trips.
+TEST(SyntheticCity, TripBiasIsOneOffsetPerTripAndCoordinate) {
+  Synthetic_city_options o = axis_grid();
+  o.lane_offset = 0;
+  o.trip_bias = 2;
+  o.trips = 200;
+  const Synthetic_city c = make_synthetic_city(o);
+  std::vector<double> bx, by;
+  std::size_t distinct = 0;
+  for (const Gps_trip& t : c.trips) {
+    std::vector<double> x, y;
+    for (std::size_t i = 1; i < t.size(); ++i) {
+      if (t[i].x == t[i - 1].x) x.push_back(std::remainder(t[i].x, o.block_width));
+      if (t[i].y == t[i - 1].y) y.push_back(std::remainder(t[i].y, o.block_height));
+    }
+    for (const double v : x) EXPECT_NEAR(v, x.front(), 1e-9);
+    for (const double v : y) EXPECT_NEAR(v, y.front(), 1e-9);
+    if (!x.empty()) bx.push_back(x.front());
+    if (!y.empty()) by.push_back(y.front());
+    if (!x.empty() && !y.empty()) distinct += std::abs(x.front() - y.front()) > 0.01;
+  }
+  ASSERT_GT(bx.size(), 100u);
+  ASSERT_GT(by.size(), 100u);
+  EXPECT_GT(distinct, 90u);
+  for (const std::vector<double>* b : {&bx, &by}) {
+    double sum = 0, squares = 0;
+    for (const double v : *b) sum += v, squares += v * v;
+    const double mean = sum / double(b->size());
+    EXPECT_NEAR(mean, 0, 0.5);
+    EXPECT_NEAR(std::sqrt(squares / double(b->size()) - mean * mean), o.trip_bias, 0.4);
+  }
+}
+
+// noise: each coordinate of a fix gets its own deviate of standard deviation `noise`. On the axis-aligned
+// grid without bias or lane offset, a fix away from the intersections on a row street is off by its y noise
+// (y - 90 j), one on a column street by its x noise (x - 120 i).
+TEST(SyntheticCity, NoiseHasTheGivenDeviationInEachCoordinate) {
+  Synthetic_city_options o = axis_grid();
+  o.lane_offset = 0;
+  o.noise = 4;
+  o.trips = 800;
+  const Synthetic_city c = make_synthetic_city(o);
+  double squares[2] = {0, 0};
+  std::size_t count[2] = {0, 0};  // row streets, column streets
+  for (const Gps_trip& t : c.trips)
+    for (const Gps_fix& f : t) {
+      const double dx = std::remainder(f.x, o.block_width), dy = std::remainder(f.y, o.block_height);
+      if (std::abs(dy) < 20 && std::abs(dx) >= 20) squares[0] += dy * dy, ++count[0];
+      if (std::abs(dx) < 20 && std::abs(dy) >= 20) squares[1] += dx * dx, ++count[1];
+    }
+  for (int s = 0; s < 2; ++s) {
+    ASSERT_GT(count[s], 500u) << s;
+    EXPECT_NEAR(std::sqrt(squares[s] / double(count[s])), o.noise, 0.4) << (s == 0 ? "rows" : "columns");
+  }
+}
+
+// Jitter moves each intersection within +-jitter of its grid place, both ways in x and y; rotation turns the
+// whole grid rigidly by that many degrees (the direction is not documented: only the angle is checked).
+TEST(SyntheticCity, JitterAndRotationOfTheGrid) {
+  Synthetic_city_options o;
+  o.trips = 0;
+  const Synthetic_city c = make_synthetic_city(o);
+  double low[2] = {0, 0}, high[2] = {0, 0};
+  for (std::size_t j = 0; j < o.rows; ++j)
+    for (std::size_t i = 0; i < o.columns; ++i) {
+      const auto& p = c.streets.positions[j * o.columns + i];
+      const double d[2] = {p[0] - o.block_width * double(i), p[1] - o.block_height * double(j)};
+      for (int k = 0; k < 2; ++k) {
+        EXPECT_LE(std::abs(d[k]), o.jitter) << i << " " << j;
+        low[k] = std::min(low[k], d[k]);
+        high[k] = std::max(high[k], d[k]);
+      }
+    }
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_LT(low[k], -o.jitter / 2) << k;
+    EXPECT_GT(high[k], o.jitter / 2) << k;
+  }
+  o.jitter = 0;
+  for (const double degrees : {30.0, 90.0, -135.0}) {
+    o.rotation = degrees;
+    const auto& P = make_synthetic_city(o).streets.positions;
+    const double cosine = std::cos(degrees * std::acos(-1.0) / 180);
+    const double sine = std::sin(degrees * std::acos(-1.0) / 180);
+    // Counterclockwise about the origin, where intersection (0, 0) stays. Along a row (i, 0) -> (i + 1, 0)
+    // and a column (0, j) -> (0, j + 1): lengths kept, turned by `degrees`.
+    EXPECT_NEAR(P[0][0], 0.0, 1e-12) << degrees;
+    EXPECT_NEAR(P[0][1], 0.0, 1e-12) << degrees;
+    EXPECT_NEAR(P[1][0] - P[0][0], o.block_width * cosine, 1e-9) << degrees;
+    EXPECT_NEAR(P[1][1] - P[0][1], o.block_width * sine, 1e-9) << degrees;
+    EXPECT_NEAR(P[o.columns][0] - P[0][0], -o.block_height * sine, 1e-9) << degrees;
+    EXPECT_NEAR(P[o.columns][1] - P[0][1], o.block_height * cosine, 1e-9) << degrees;
+    EXPECT_NEAR(std::hypot(P.back()[0] - P[0][0], P.back()[1] - P[0][1]),
+                std::hypot(o.block_width * double(o.columns - 1), o.block_height * double(o.rows - 1)), 1e-9);
+  }
+}
+
+// Bent streets: the middle of each lies up to curvature x its chord off the chord, either side, and the
+// largest bends come near that bound; the polylines are drawn in pieces of at most 10 m.
+TEST(SyntheticCity, BentStreetsReachTheirCurvatureInShortPieces) {
+  Synthetic_city_options o;
+  o.curvature = 0.5;  // the largest accepted
+  o.trips = 0;
+  const Synthetic_city c = make_synthetic_city(o);
+  const auto& P = c.streets.positions;
+  const std::size_t n = o.columns * o.rows;
+  std::vector<std::vector<Vertex_index>> adj(P.size());
+  for (const Edge& e : c.streets.edges) {
+    adj[e[0]].push_back(e[1]);
+    adj[e[1]].push_back(e[0]);
+    EXPECT_LE(std::hypot(P[e[1]][0] - P[e[0]][0], P[e[1]][1] - P[e[0]][1]), 10 + 1e-9);
+  }
+  double largest = 0;
+  std::size_t sides[2] = {0, 0}, streets = 0;
+  for (Vertex_index a = 0; a < n; ++a)
+    for (const Vertex_index first : adj[a]) {
+      std::vector<Vertex_index> line{a, first};
+      while (line.back() >= n)
+        line.push_back(adj[line.back()][0] == line[line.size() - 2] ? adj[line.back()][1]
+                                                                    : adj[line.back()][0]);
+      const Vertex_index b = line.back();
+      if (b < a) continue;
+      ++streets;
+      const double L = std::hypot(P[b][0] - P[a][0], P[b][1] - P[a][1]);
+      double off = 0, side = 0;
+      for (const Vertex_index v : line) {
+        const double d = segment_distance(P[v], P[a], P[b]);
+        if (d > off)
+          off = d,
+          side = (P[b][0] - P[a][0]) * (P[v][1] - P[a][1]) - (P[b][1] - P[a][1]) * (P[v][0] - P[a][0]);
+      }
+      EXPECT_LE(off, o.curvature * L + 1e-9);
+      largest = std::max(largest, off / (o.curvature * L));
+      if (off > 1) ++sides[side > 0];
+    }
+  EXPECT_EQ(streets, c.streets.edges.size() - (P.size() - n));  // each inner point adds one piece
+  EXPECT_GT(largest, 0.9);
+  EXPECT_GT(sides[0], streets / 4);
+  EXPECT_GT(sides[1], streets / 4);
 }
 
 // The stage helpers carry every field they name: the skeleton options take connect_dead_ends, trim_stubs,

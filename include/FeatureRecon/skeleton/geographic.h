@@ -11,10 +11,10 @@
 // grows as 1 + x^2 / (2 R^2) away from it (1.0003 at 100 km, 1.003 at 350 km). local_transverse_mercator()
 // picks the centre and refuses data farther than a bound from it.
 //
-//   const Transverse_mercator tm = local_transverse_mercator(lonlat);   // lonlat: {longitude, latitude}
-//   degrees const std::array<double, 2> xy = tm.forward(lon, lat);             // metres east and north of
-//   the centre const std::array<double, 2> back = tm.inverse(xy[0], xy[1]);       // {longitude, latitude}
-//   again
+//   // lonlat: {longitude, latitude} in degrees
+//   const Transverse_mercator tm = local_transverse_mercator(lonlat);
+//   const std::array<double, 2> xy = tm.forward(lon, lat);          // metres east and north of the centre
+//   const std::array<double, 2> back = tm.inverse(xy[0], xy[1]);    // {longitude, latitude} again
 
 #include <FeatureRecon/assertions.h>
 
@@ -68,8 +68,7 @@ struct Transverse_mercator {
 
   /// {longitude, latitude} in degrees of {x, y} in metres; the longitude in (-180, 180].
   /// \throws std::invalid_argument for x or y not finite, or so far out that the series overflow (x beyond
-  /// about
-  ///         700 semi-major axes: no point of the ellipsoid maps there).
+  ///   about 700 semi-major axes: no point of the ellipsoid maps there).
   std::array<double, 2> inverse(double x, double y) const {
     if (!std::isfinite(x) || !std::isfinite(y))
       FeatureRecon::internal::throw_invalid_argument("Transverse_mercator::inverse", "x ", x, ", y ", y,
@@ -150,10 +149,9 @@ struct Transverse_mercator {
 /// meridian is their mean longitude (a circular mean, so that points on both sides of the antimeridian are
 /// centred right), the origin latitude the middle of their latitudes; no points: the projection at (0, 0).
 /// \throws std::invalid_argument naming the first point whose longitude is not in [-180, 180] or latitude not
-/// in
-///         [-90, 90] (or not finite), and the first point farther than `max_offset` metres (default 500 km:
-///         scale 1.003) east or west of the central meridian: such data span too much for one projection
-///         (project them yourself, e.g. to their UTM zones).
+///   in [-90, 90] (or not finite), and the first point farther than `max_offset` metres (default 500 km:
+///   scale 1.003) east or west of the central meridian: such data span too much for one projection (project
+///   them yourself, e.g. to their UTM zones).
 inline Transverse_mercator local_transverse_mercator(const std::vector<std::array<double, 2>>& lonlat,
                                                      double max_offset = 500e3) {
   const char* fn = "local_transverse_mercator";

@@ -7,8 +7,10 @@
 // construction where no other city's traces are at hand. The street network is a perturbed grid (rotated,
 // jittered intersections, some streets missing, a diagonal avenue) or an organic network (random
 // intersections joined by their Gabriel graph, some streets missing), its streets straight or bent; trips
-// drive shortest routes between random intersections on the right-hand side of the street and are recorded at
-// a fixed interval with Gaussian noise and a per-trip bias. Deterministic for a seed on every platform
+// drive between two distinct random intersections on the right-hand side of the street, along the route that
+// is shortest once each street's length is multiplied by a random factor in [1, 1.5) drawn per trip (so that
+// trips between the same ends vary), and are recorded at a fixed interval with Gaussian noise and a per-trip
+// bias. Deterministic for a seed on every platform
 // (internal/random.h).
 
 #include <FeatureRecon/assertions.h>
@@ -51,7 +53,9 @@ struct Synthetic_city_options {
   std::size_t rows = 6;                                        ///< intersections per column (>= 2); default 6
   double block_width = 120;  ///< spacing of the intersections along a row; default 120
   double block_height = 90;  ///< spacing along a column; default 90
-  double rotation = 0;       ///< of the whole grid, degrees; default 0
+  /// of the whole grid, degrees counterclockwise (x towards y) about the coordinates' origin, where
+  /// intersection (0, 0) lies before its jitter; default 0
+  double rotation = 0;
   /// grid: each intersection moves uniformly within +-jitter in x and y; at most half the shorter block side
   /// (intersections keep their order), with the diagonal avenue at most w h / (2 (w + h)) of the block sides
   /// w and h (25.7 m for the default blocks: the avenue crosses no street); default 10
@@ -194,13 +198,11 @@ inline double synthetic_city_max_lane_offset(const Synthetic_city_options& o) {
 
 /// Builds a synthetic city and its GPS trips (see the file comment).
 /// \throws std::invalid_argument naming the option: fewer than 2 columns or rows, a non-positive or
-/// non-finite
-///         block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a jitter
-///         (grid layout) that lets streets cross (see `jitter`), a lane offset above half the shorter block
-///         side, a missing fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24
-///         intersections or 2^31
-///         street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge
-///         noise, bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
+///   non-finite block size, speed or sampling interval, a negative noise, bias, jitter or lane offset, a
+///   jitter (grid layout) that lets streets cross (see `jitter`), a lane offset above half the shorter block
+///   side, a missing fraction outside [0, 1], a curvature outside [0, 0.5], more than 2^24 intersections or
+///   2^31 street vertices, coordinates beyond the largest double (of intersections, or of fixes with a huge
+///   noise, bias or lane offset), more than 2^26 trips, or trips of more than 2^26 fixes in all.
 inline Synthetic_city make_synthetic_city(const Synthetic_city_options& o = {}) {
   const char* fn = "make_synthetic_city";
   using FeatureRecon::internal::throw_invalid_argument;
