@@ -6,6 +6,7 @@
 #include <FeatureRecon/sampling/continuous_dart_throwing.h>
 #include <FeatureRecon/sampling/discrete_lloyd.h>
 #include <FeatureRecon/sampling/image_domain.h>
+#include <FeatureRecon/sampling/internal/radius_search.h>
 #include <FeatureRecon/sampling/kernel_relaxation.h>
 #include <FeatureRecon/sampling/sampling_quality.h>
 #include <FeatureRecon/sampling/weighted_sample_elimination.h>
@@ -222,7 +223,9 @@ TEST(BilateralDartThrowing, TargetCountInterpolatesTheRadius) {
     EXPECT_EQ(shown.back(), 1.0);
     EXPECT_LT(shown[shown.size() - 2], 1.0) << count;
     // (17 is kept by the first throw below the upper end: no bracket, no progress before the 1.)
-    if (count != 17) EXPECT_GT(shown[shown.size() - 2], 0.3) << count;
+    if (count != 17) {
+      EXPECT_GT(shown[shown.size() - 2], 0.3) << count;
+    }
   }
 }
 
@@ -775,5 +778,24 @@ TEST(BilateralDartThrowing, ExponentialDoublingStopsAtAThrowOfExactlyTheCount) {
   EXPECT_EQ(kept.size(), 2u);
   EXPECT_GT(r.radius, 1.0);
   EXPECT_LE(r.radius, 2.0);
+}
+
+// From a mutation audit of radius_search.h: the steps of the target count's search, as documented. While no
+// lower end is known the step is the law count ~ r^-2 from the upper end; with both ends, log count is
+// interpolated in log r, within the middle 90 % of the bracket.
+TEST(BilateralDartThrowing, BracketedRadiusSearchStepsAsDocumented) {
+  FeatureRecon::sampling::internal::Bracketed_radius_search s;
+  s.hi = 2;
+  s.kept_hi = 25;
+  EXPECT_DOUBLE_EQ(s.next(100.5), 2 * std::sqrt(25 / 100.5));
+  s.lo = 1;
+  s.kept_lo = 1000;
+  s.kept_hi = 10;
+  // the interpolation gives 1 * (1000 / 999.5)^(1 / log2(100)), next to the lower end: moved to 1.05
+  EXPECT_DOUBLE_EQ(s.next(999.5), 1.05);
+  EXPECT_DOUBLE_EQ(s.next(10.001), 1.95);  // next to the upper end: moved to 1.95
+  s.kept_lo = 400;
+  s.kept_hi = 100;  // count ~ r^-2 between the ends: the goal 200 at sqrt(2)
+  EXPECT_NEAR(s.next(200), std::sqrt(2.0), 1e-12);
 }
 }  // namespace

@@ -695,6 +695,29 @@ TEST(LloydRelaxation, StoppingRulesHoldAtTheStopAndNotBefore) {
   FeatureRecon::test::expect_energy_rule_holds_at_the_stop(e.history, 1e-3);
 }
 
+// From a mutation audit of sample_set.h's separate_copies(): which copy moves, and where.
+TEST(LloydRelaxation, TheFirstCopyStaysAndALaterOneAtACornerMovesIntoTheBox) {
+  // Sites 0 and 2 at the corner (0, 0) of a 100 x 100 box. Stopped at the first report (nothing relaxed):
+  // "every copy after the first (in index order)" moves, so site 0 stays where it was and site 2 moves by
+  // d_hex / 100; its spiral direction leaves the box along y, and such a move "goes the opposite way",
+  // into the box, keeping its length (the box is far wider than the move).
+  const std::vector<P2> sites{{0, 0}, {60, 40}, {0, 0}};
+  Lloyd_options stop;
+  stop.max_iterations = 1;
+  stop.progress = [](double) { return false; };
+  const auto r = lloyd_relaxation(sites, Pixel_density::uniform(100, 100), stop);
+  EXPECT_EQ(r.status, Status::interrupted);
+  ASSERT_EQ(r.sites.size(), 3u);
+  EXPECT_EQ(r.sites[0], sites[0]);
+  EXPECT_EQ(r.sites[1], sites[1]);
+  const double d_hex = std::sqrt(2 * 100.0 * 100.0 / (std::sqrt(3.0) * 3));
+  EXPECT_NEAR(std::hypot(r.sites[2][0], r.sites[2][1]), d_hex / 100, 1e-12 * d_hex);
+  EXPECT_GT(r.sites[2][0], 0.0);
+  EXPECT_GT(r.sites[2][1], 0.0);
+  EXPECT_LE(r.sites[2][0], 100.0);
+  EXPECT_LE(r.sites[2][1], 100.0);
+}
+
 }  // namespace
 
 // The centroids and masses of the cells of `sites` on the torus of the density's box by brute force: the box

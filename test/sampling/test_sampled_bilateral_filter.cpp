@@ -3,6 +3,7 @@
 // The exact and sampled bilateral filters (Sec. 2.2.3) and the image quality measures.
 
 #include <FeatureRecon/sampling/image_quality.h>
+#include <FeatureRecon/sampling/internal/radius_search.h>
 #include <FeatureRecon/sampling/sampled_bilateral_filter.h>
 
 #include <gtest/gtest.h>
@@ -919,4 +920,36 @@ TEST(SampledBilateralFilter, OptionsDefaultAsInTheExactFilter) {
   ASSERT_EQ(r.status, FeatureRecon::Status::success);
   EXPECT_EQ(r.values, sampled_bilateral_filter(24, 18, 1, d, defaults).values);
   EXPECT_NEAR(r.taps_per_kernel_pixel, 0.5, 0.05);
+}
+
+// From a mutation audit of radius_search.h: the root search on counts falling in the radius that calibrates
+// the sampled filter's darts. Each radius it returns lies inside the bracket (lo, hi) of the throws so far
+// (a throw keeping exactly the goal's count, a lower end, is followed by a larger radius, not a smaller one);
+// the first step follows count ~ r^-2 and later ones the secant exponent clamped to [0.5, 8]; so on counts
+// A / r^p it reaches 0.5 % of the goal in a handful of throws, from either side.
+TEST(SampledBilateralFilter, RadiusSearchStaysInItsBracketAndNeedsAHandfulOfThrows) {
+  using FeatureRecon::sampling::internal::Radius_search;
+  for (const double p : {1.0, 2.0, 3.0}) {
+    const double goal = 100, target = std::pow(1e4 / goal, 1 / p);
+    for (const double start : {0.3 * target, 5 * target}) {
+      Radius_search s;
+      double r = start;
+      int throws = 1;
+      for (; throws < 30; ++throws) {
+        const double c = 1e4 / std::pow(r, p);
+        if (std::abs(c - goal) <= 0.005 * goal) break;
+        r = s.next(r, c, goal, c >= goal);
+        EXPECT_GT(r, s.lo) << p << " " << start;
+        EXPECT_LT(r, s.hi) << p << " " << start;
+      }
+      EXPECT_LE(throws, 6) << "exponent " << p << ", start " << start;
+    }
+  }
+  Radius_search s;
+  EXPECT_DOUBLE_EQ(s.next(1, 400, 100, true), 2.0);  // exponent 2: 1 * (400 / 100)^(1/2)
+  // count 400 at r = 1, then 400 * 2^-20 at r = 2: the exponent 20 is clamped to 8
+  const double c = 400 * std::pow(2.0, -20.0);
+  EXPECT_DOUBLE_EQ(s.next(2, c, 1e-4, true), 2 * std::pow(c / 1e-4, 1 / 8.0));
+  Radius_search exact;  // exactly the goal's count: a lower end; the next radius is above it
+  EXPECT_GT(exact.next(1, 100, 100.5, true), 1.0);
 }

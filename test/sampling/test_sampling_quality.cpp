@@ -631,6 +631,29 @@ TEST(SamplingSpectrum, BothMethodsReportProgressOftenWhereOneStepIsLong) {
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
 }
 
+// From a mutation audit of periodogram.h: a progress callback that returns false stops either method at that
+// report: the sums return false and the callback is not called again (the direct sums at their second block,
+// the gridded method in its spreading by rows, before the columns' transforms).
+TEST(SamplingSpectrum, BothMethodsStopAtTheFirstReportThatAsksTo) {
+  std::size_t after_stop = 0;
+  bool stopped = false;
+  const FeatureRecon::Progress_callback stop_from_0_3 = [&](double t) {
+    if (stopped) ++after_stop;
+    stopped = stopped || t >= 0.3;
+    return !stopped;
+  };
+  sampling::internal::Torus_points few;
+  for (int i = 0; i < 100; ++i) few.push_back({0.01 * i, 0.5});
+  sampling::internal::Periodogram_sums sums;
+  EXPECT_FALSE(sampling::internal::direct_periodogram_sums(few, 1000, sums, stop_from_0_3, 0, 1));
+  EXPECT_TRUE(stopped);
+  EXPECT_EQ(after_stop, 0u);
+  stopped = false;
+  EXPECT_FALSE(sampling::internal::gridded_periodogram_sums(few, 100, sums, stop_from_0_3, 0, 1));
+  EXPECT_TRUE(stopped);
+  EXPECT_EQ(after_stop, 0u);
+}
+
 TEST(SamplingSpectrum, TorusCoordinatesLieInTheUnitInterval) {
   // Shared by the spectrum, the periodic quality measures and periodic dart throwing: -1e-20 - floor(-1e-20)
   // is 1.0 in floating point, which is the torus's 0.
@@ -706,6 +729,46 @@ TEST(SamplingSpectrum, GriddedMethodReportsProgressStopsAndRepeatsItself) {
     const Sampling_spectrum c = sampling_spectrum(p, o);
     EXPECT_EQ(c.status, Status::interrupted) << stop_at;
     EXPECT_TRUE(c.radial_power.empty());
+  }
+}
+
+// From a mutation audit of sample_set.h: the surface area of 3D samples of a surface.
+TEST(SamplingQuality, SurfaceAreaOfUniformSamplesIsEstimatedWithoutBias) {
+  // 3D samples with intrinsic_dimension 2 are measured by the area estimate: over the points, the area of
+  // the disc reaching each one's 8th nearest other point, divided by 8 ("unbiased for uniform samples").
+  // 6000 uniform samples of the unit sphere (no border) give 4 pi within 3 % (a 7th neighbour, or the point
+  // itself counted as its first neighbour, gives 7/8 of it; a division by 7, 8/7).
+  std::mt19937_64 rng(21);
+  std::normal_distribution<double> g;
+  std::vector<Point_3> sphere;
+  for (int i = 0; i < 6000; ++i) {
+    const Vector_3 v(g(rng), g(rng), g(rng));
+    sphere.push_back(CGAL::ORIGIN + v / std::sqrt(v.squared_length()));
+  }
+  Sampling_quality_options o;
+  o.intrinsic_dimension = 2;
+  const Sampling_quality q = sampling_quality(sphere, o);
+  EXPECT_EQ(q.status, Status::success);
+  EXPECT_NEAR(q.domain_measure, 4 * M_PI, 0.03 * 4 * M_PI);
+}
+
+TEST(SamplingQuality, ASingleSampleOffTheLineOrPlaneOfTheOthersRaisesTheAffineDimension) {
+  // Samples of lower affine dimension are degenerate; one sample off the line (2D) or the plane (3D) of all
+  // the others is enough to make the set full-dimensional, whichever index it has: here the first one the
+  // test can see (the third sample in 2D, the fourth in 3D) and a later one.
+  for (std::size_t off = 2; off < 5; ++off) {
+    std::vector<Point_2> p{{0, 0}, {1, 0}, {0.25, 0}, {0.5, 0}, {0.75, 0}};
+    p[off] = Point_2(0.5, 1);
+    EXPECT_EQ(sampling_quality(p).status, Status::success) << off;
+    p[off] = Point_2(0.5, 0);
+    EXPECT_EQ(sampling_quality(p).status, Status::degenerate_input) << off;
+  }
+  for (std::size_t off = 3; off < 6; ++off) {
+    std::vector<Point_3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.5, 0}, {0.25, 0.5, 0}, {1, 1, 0}};
+    p[off] = Point_3(0.5, 0.5, 1);
+    EXPECT_EQ(sampling_quality(p).status, Status::success) << off;
+    p[off] = Point_3(0.5, 0.25, 0);
+    EXPECT_EQ(sampling_quality(p).status, Status::degenerate_input) << off;
   }
 }
 }  // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
 #include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/internal/ring_grid.h>
 #include <FeatureRecon/sampling/internal/sample_set.h>
 
 #include <gtest/gtest.h>
@@ -235,5 +236,241 @@ TEST(UniformGrid, TorusLookUpFindsEveryPairWithinReachOnceFromEachSide) {
     }
     EXPECT_EQ(misses, 0u) << "of " << cases << " pairs, box [" << b[0] << ", " << b[2] << ") x [" << b[1]
                           << ", " << b[3] << ")";
+  }
+}
+
+// From a mutation audit of sample_set.h: the intrinsic dimension of 3D positions is 2 "when at least half"
+// of the probes have a flat neighbourhood (12 neighbours). Clusters of 13 points, far apart, so that the 12
+// neighbours of each point are the rest of its cluster: a flat one (13 points of a plane) and a solid one (a
+// cuboctahedron and its centre, whose neighbourhoods are far from flat). Exactly half the probes flat is 2;
+// a third of them is 3.
+TEST(SampleSet, IntrinsicDimensionIsTwoWhenExactlyHalfTheProbesAreFlat) {
+  namespace si = FeatureRecon::sampling::internal;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto flat = [&](double at) {
+    std::vector<std::array<double, 3>> c;
+    for (int i = 0; i < 13; ++i) c.push_back({at + u(rng), u(rng), 0.25});
+    return c;
+  };
+  auto solid = [](double at) {
+    std::vector<std::array<double, 3>> c{{at, 0, 0}};
+    for (const double a : {-1.0, 1.0})
+      for (const double b : {-1.0, 1.0}) {
+        c.push_back({at + a, b, 0});
+        c.push_back({at + a, 0, b});
+        c.push_back({at, a, b});
+      }
+    return c;
+  };
+  auto dimension = [](const std::vector<std::vector<std::array<double, 3>>>& clusters) {
+    std::vector<std::array<double, 3>> p;
+    for (const auto& c : clusters) p.insert(p.end(), c.begin(), c.end());
+    return si::estimate_intrinsic_dimension(p, si::Knn_3(p));
+  };
+  EXPECT_EQ(dimension({flat(0), solid(1000)}), 2);
+  EXPECT_EQ(dimension({solid(0), flat(1000)}), 2);
+  EXPECT_EQ(dimension({flat(0), solid(1000), solid(2000)}), 3);
+  EXPECT_EQ(dimension({flat(0), flat(1000), solid(2000)}), 2);
+  EXPECT_EQ(dimension({solid(0), solid(1000)}), 3);
+}
+
+// From a mutation audit of ring_grid.h: Ring_grid::nearest() against a brute-force minimum of the score
+// (ties to the lowest index, NaN as infinity), for scores bounded below by distance / scale with scales far
+// from 1 either way, queries inside and outside the frame, copies of points (ties) and a frame that does not
+// hold every point; and for_each_within() against the points within the radius.
+template <int D>
+void expect_ring_grid_matches_brute_force(unsigned seed) {
+  using Point = std::array<double, D>;
+  namespace si = FeatureRecon::sampling::internal;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point> p(400);
+  for (auto& x : p)
+    for (int k = 0; k < D; ++k) x[k] = u(rng);
+  for (std::size_t i = 300; i < p.size(); ++i) p[i] = p[i - 300];  // copies of the first 100
+  std::vector<double> extra(p.size());
+  Point lo{}, hi{};
+  for (int k = 0; k < D; ++k) hi[k] = k == 0 ? 0.8 : 1.0;  // points beyond the frame along x
+  si::Ring_grid<D> grid(lo, hi, double(p.size()));
+  grid.assign(p);
+  auto distance = [](const Point& a, const Point& b) {
+    double s = 0;
+    for (int k = 0; k < D; ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
+    return std::sqrt(s);
+  };
+  for (const double scale : {0.01, 1.0, 100.0}) {
+    for (std::size_t i = 0; i < extra.size(); ++i) extra[i] = i % 3 == 0 ? 0.0 : 3 * u(rng);
+    for (std::size_t i = 300; i < p.size(); ++i) extra[i] = extra[i - 300];  // equal scores: ties
+    for (int t = 0; t < 200; ++t) {
+      Point x;
+      for (int k = 0; k < D; ++k) x[k] = -0.5 + 2 * u(rng);
+      if (t % 4 == 0) x = p[std::size_t(rng() % p.size())];
+      const bool with_nan = t % 5 == 0;
+      auto score = [&](std::uint32_t j) {
+        if (with_nan && j % 7 == 0) return std::numeric_limits<double>::quiet_NaN();
+        return distance(x, p[j]) / scale + extra[j];
+      };
+      double best_brute = std::numeric_limits<double>::infinity();
+      std::uint32_t arg_brute = std::numeric_limits<std::uint32_t>::max();
+      for (std::uint32_t j = 0; j < p.size(); ++j) {
+        double s = score(j);
+        if (std::isnan(s)) s = std::numeric_limits<double>::infinity();
+        if (s < best_brute || (s == best_brute && j < arg_brute)) {
+          best_brute = s;
+          arg_brute = j;
+        }
+      }
+      double best = 0;
+      EXPECT_EQ(grid.nearest(x, scale, score, best), arg_brute) << "scale " << scale << ", query " << t;
+      EXPECT_EQ(best, best_brute) << "scale " << scale << ", query " << t;
+      const double radius = 0.05 + 0.2 * u(rng);
+      std::vector<std::uint32_t> found, near;
+      grid.for_each_within(x, radius, [&](std::uint32_t j) {
+        if (distance(x, p[j]) <= radius) found.push_back(j);
+      });
+      std::sort(found.begin(), found.end());
+      for (std::uint32_t j = 0; j < p.size(); ++j)
+        if (distance(x, p[j]) <= radius) near.push_back(j);
+      EXPECT_EQ(found, near) << "radius " << radius << ", query " << t;
+    }
+  }
+  // Every score NaN (infinite): a point is still found, the lowest index.
+  double best = 0;
+  EXPECT_EQ(grid.nearest(
+                p[5], 1.0, [](std::uint32_t) { return std::numeric_limits<double>::quiet_NaN(); }, best),
+            0u);
+  EXPECT_EQ(best, std::numeric_limits<double>::infinity());
+}
+
+TEST(RingGrid, NearestAndWithinMatchBruteForce) {
+  expect_ring_grid_matches_brute_force<2>(3);
+  expect_ring_grid_matches_brute_force<3>(4);
+}
+
+// From a mutation audit of Uniform_grid.h. A packed frame over too many cells for a dense array (about 10^6
+// cells for about 1,300 points) keeps its cells in a hash map of packed keys: the candidates of a query are
+// the points of the 3^D cells around its cell, each once, cells in key order (the first axis outermost) and
+// points by index within a cell, as the dense array has them; a query far outside the box (clamped to the
+// border of the key range) finds nothing. Checked against cells computed by the test (floor(p / cell), a
+// point at the origin), with clusters of points in one cell and the cells at the bottom of the last axis
+// filled.
+template <int D>
+void expect_sparse_packed_candidates(unsigned seed) {
+  using Point = std::array<double, D>;
+  using Cell = std::array<std::int64_t, D>;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double r = D == 2 ? 1e-3 : 1e-2;
+  std::vector<Point> p(1);  // the origin: the box's low corner
+  for (int i = 0; i < 200; ++i) {
+    Point x;
+    for (int k = 0; k < D; ++k) x[k] = u(rng);
+    p.push_back(x);
+    if (i % 10 == 0)  // a cluster in one cell, interleaved with other points by index
+      for (int c = 1; c < 4; ++c) {
+        Point y = x;
+        y[0] = std::min(y[0] + 1e-7 * c, 1.0);
+        p.push_back(y);
+      }
+  }
+  // One point in each cell (i, 0) (2D) or (i, j, 0) (3D, i and j near the middle) at the bottom of the last
+  // axis.
+  const int from = D == 2 ? 0 : 45, to = D == 2 ? 1000 : 56;
+  for (int i = from; i < to; ++i)
+    for (int j = D == 2 ? 0 : from; j < (D == 2 ? 1 : to); ++j) {
+      Point x{};
+      x[0] = (i + 0.5) * r;
+      if (D == 3) x[1] = (j + 0.5) * r;
+      x[D - 1] = 0.25 * r;
+      p.push_back(x);
+    }
+  Point corner;
+  corner.fill(1.0);
+  p.push_back(corner);
+  const Grid_frame<D> frame(p, r);
+  ASSERT_FALSE(frame.hashed());
+  ASSERT_FALSE(FeatureRecon::internal::use_dense_cells(frame, p.size()));
+  const Uniform_grid<D> grid(p, r);
+  auto cell_of = [&](const Point& x) {
+    Cell c;
+    for (int k = 0; k < D; ++k) c[k] = static_cast<std::int64_t>(std::floor(x[k] / r));
+    return c;
+  };
+  std::vector<Point> queries(p.begin(), p.end());
+  for (int k = 0; k < D; ++k)
+    for (const double far : {1e300, -1e300, 1e9}) {
+      Point q;
+      q.fill(0.5);
+      q[k] = far;
+      queries.push_back(q);
+    }
+  for (std::size_t t = 0; t < queries.size(); ++t) {
+    const Point& q = queries[t];
+    bool inside = true;
+    for (int k = 0; k < D; ++k) inside = inside && std::abs(q[k]) < 10;
+    std::vector<std::uint32_t> expected, got;
+    if (inside) {
+      const Cell cq = cell_of(q);
+      std::vector<std::pair<Cell, std::uint32_t>> near;
+      for (std::uint32_t j = 0; j < p.size(); ++j) {
+        const Cell cj = cell_of(p[j]);
+        bool adjacent = true;
+        for (int k = 0; k < D; ++k) adjacent = adjacent && std::abs(cj[k] - cq[k]) <= 1;
+        if (adjacent) near.push_back({cj, j});
+      }
+      std::sort(near.begin(), near.end());  // cells lexicographically (the first axis outermost), then index
+      for (const auto& cj : near) expected.push_back(cj.second);
+    }
+    grid.for_each_candidate(q, [&](std::uint32_t j) { got.push_back(j); });
+    EXPECT_EQ(got, expected) << "query " << t;
+  }
+}
+
+TEST(UniformGrid, SparsePackedCellsVisitInKeyOrderAndOnce) {
+  expect_sparse_packed_candidates<2>(11);
+  expect_sparse_packed_candidates<3>(12);
+}
+
+// Cells keep their side whenever the box holds more than 2^20 of them along an axis, along the last axis too
+// (2,000 points in a 0.1 x 30,000 strip, 3 10^6 cells of side 0.01 along y; in 3D along z), and for a tiny
+// cell (1e-300 over a unit square: cells of the box's extent / 2^60, still one point a cell). A cap on the
+// cells per axis, or cells of 1e-300 clamped to 2^62, put most points in one row or one cell.
+TEST(UniformGrid, CellsKeepTheirSideAlongTheLastAxisAndForATinyCell) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::array<double, 2>> strip(2000);
+  for (auto& q : strip) q = {0.1 * u(rng), 3e4 * u(rng)};
+  expect_exact_candidates<2>(strip, 0.01, 20);
+  std::vector<std::array<double, 3>> pillar(2000);
+  for (auto& q : pillar) q = {0.1 * u(rng), 0.1 * u(rng), 3e4 * u(rng)};
+  expect_exact_candidates<3>(pillar, 0.01, 20);
+  std::vector<std::array<double, 2>> square(1000);
+  for (auto& q : square) q = {u(rng), u(rng)};
+  const Uniform_grid<2> grid(square, 1e-300);
+  EXPECT_GT(grid.cell_size(), 0.0);
+  std::size_t largest = 0;
+  for (std::uint32_t i = 0; i < square.size(); ++i) {
+    std::vector<std::uint32_t> got;
+    grid.for_each_candidate(square[i], [&](std::uint32_t j) { got.push_back(j); });
+    EXPECT_NE(std::find(got.begin(), got.end(), i), got.end()) << i;
+    largest = std::max(largest, got.size());
+  }
+  EXPECT_LE(largest, 2u);
+}
+
+// From a mutation audit of Uniform_grid.h: a point beyond the top of the box along any axis is refused as one
+// below it is (its cell index would alias a cell of the next row).
+TEST(UniformGrid, DenseDynamicGridRefusesAPointBeyondTheTopOfItsBox) {
+  for (const std::array<double, 2> outside :
+       {std::array<double, 2>{0.5, 1.15}, std::array<double, 2>{1.15, 0.5}}) {
+    std::vector<std::array<double, 2>> p{{0, 0}, {1, 1}, {0.65, 0.05}};
+    Dynamic_grid<2> grid(p, 0.1, 100);
+    grid.insert(2);
+    p.push_back(outside);
+    EXPECT_THROW(grid.insert(3), std::out_of_range) << outside[0] << " " << outside[1];
+    std::vector<std::uint32_t> got;
+    grid.for_each_candidate({0.65, 0.05}, [&](std::uint32_t j) { got.push_back(j); });
+    EXPECT_EQ(got, (std::vector<std::uint32_t>{2}));
   }
 }

@@ -1061,4 +1061,105 @@ TEST(WeightedSampleElimination, PairsAtExactly2RMaxAreNotNeighbours) {
   EXPECT_NO_THROW(weighted_sample_elimination(px, 1, std::back_inserter(kept), o));
   EXPECT_EQ(kept.size(), 1u);
 }
+
+// Tests from a mutation audit of sample_set.h (the items' checks every sampler shares).
+
+TEST(WeightedSampleElimination, NonFiniteCoordinatesAreNamedAsSuchNotAsTooLarge) {
+  // A NaN or infinite coordinate is "non-finite" (naming the item); only a finite one beyond 1e100 gets the
+  // advice to scale the input, which cannot help a NaN.
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Point_2& bad : {Point_2(std::numeric_limits<double>::quiet_NaN(), 0.5), Point_2(0.5, -inf)}) {
+    std::vector<Point_2> p = white_noise(20, 4);
+    p[4] = bad;
+    std::vector<std::size_t> kept;
+    expect_invalid_argument([&] { weighted_sample_elimination(p, 5, std::back_inserter(kept)); },
+                            "item 4 has a non-finite coordinate");
+  }
+  std::vector<Point_2> p = white_noise(20, 4);
+  p[4] = Point_2(0.5, 1e101);
+  std::vector<std::size_t> kept;
+  expect_invalid_argument([&] { weighted_sample_elimination(p, 5, std::back_inserter(kept)); },
+                          "item 4 has coordinate 1e+101 beyond +-1e100");
+}
+
+// A FeaturePointTraits model whose feature distance is +infinity from feature 5 to itself (a user's
+// distance can overflow to infinity; make_property_map_traits() turns that into the largest double).
+struct Infinite_self_distance_traits {
+  using Kernel = CGAL::Epick;
+  using FT = double;
+  using Point = Point_2;
+  using Feature = double;
+  using Item = std::pair<Point_2, double>;
+  static constexpr int dimension = 2;
+  struct Construct_point {
+    const Point& operator()(const Item& i) const { return i.first; }
+  };
+  struct Construct_feature {
+    double operator()(const Item& i) const { return i.second; }
+  };
+  struct Compute_feature_distance {
+    double operator()(double a, double b) const {
+      return a == 5 && b == 5 ? std::numeric_limits<double>::infinity() : (a - b) * (a - b) / 1e4;
+    }
+  };
+  Construct_point construct_point_object() const { return {}; }
+  Construct_feature construct_feature_object() const { return {}; }
+  Compute_feature_distance compute_feature_distance_object() const { return {}; }
+};
+
+TEST(WeightedSampleElimination, AFeatureAtAnInfiniteDistanceFromItselfIsNamed) {
+  // "A feature must be at a finite distance from itself": a distance of +infinity from itself (not only NaN)
+  // is refused, naming the item, when features are compared; Euclidean sampling never asks.
+  const std::vector<Point_2> p = white_noise(30, 3);
+  std::vector<std::pair<Point_2, double>> items;
+  for (std::size_t i = 0; i < p.size(); ++i) items.push_back({p[i], double(i)});
+  Elimination_options o;
+  o.sigma_feature = 0.3;
+  expect_invalid_argument([&] { eliminate(items, 10, o, Infinite_self_distance_traits()); },
+                          "item 5 has a feature at distance inf from itself");
+  o.sigma_feature = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(eliminate(items, 10, o, Infinite_self_distance_traits()).size(), 10u);
+}
+
+TEST(WeightedSampleElimination, CollinearLengthIsThatOfTheWholeSegmentWhereverTheFirstItemLies) {
+  // r_max = L / (2 count) with L the length of the segment the items span, also when item 0 lies inside it
+  // (the farthest item from item 0 is then only an end): 11 points on [0, 10] with item 0 at 5, and the same
+  // on a slanted line in 3D (from (0, 0, 0) to (10, 20, 20): length 30, r_max 3).
+  std::vector<Point_2> p{{5, 0}};
+  std::vector<Point_3> q{{5, 10, 10}};
+  for (int i = 0; i <= 10; ++i)
+    if (i != 5) {
+      p.emplace_back(i, 0);
+      q.emplace_back(i, 2 * i, 2 * i);
+    }
+  std::vector<std::size_t> kept;
+  const auto r = weighted_sample_elimination(p, 5, std::back_inserter(kept));
+  EXPECT_EQ(r.status, Status::degenerate_input);
+  EXPECT_DOUBLE_EQ(r.radius, 1.0);
+  kept.clear();
+  const auto r3 = weighted_sample_elimination(q, 5, std::back_inserter(kept));
+  EXPECT_EQ(r3.status, Status::degenerate_input);
+  EXPECT_DOUBLE_EQ(r3.radius, 3.0);
+}
+
+TEST(WeightedSampleElimination, ASpanAlongTheLastAxisAloneIsCheckedAgainstSigmaPosition) {
+  // The span of the positions that must stay within 2^400 sigma_position is their largest coordinate range
+  // over every axis: items spread along y (or z) alone, 2^300 long, are refused with sigma_position 2^-101
+  // as items spread along x are.
+  std::vector<Point_2> column;
+  std::vector<Point_3> pillar;
+  for (int i = 0; i < 20; ++i) {
+    column.emplace_back(0.5, std::ldexp(double(i) / 19, 300));
+    pillar.emplace_back(0.5, 0.25, std::ldexp(double(i) / 19, 300));
+  }
+  Elimination_options o;
+  o.sigma_position = std::ldexp(1.0, -101);
+  expect_invalid_argument([&] { eliminate(column, 5, o); }, "sigma_position");
+  expect_invalid_argument([&] { eliminate(pillar, 5, o); }, "sigma_position");
+  Sampling_quality_options q;
+  q.sigma_position = o.sigma_position;
+  expect_invalid_argument([&] { sampling_quality(column, q); }, "sigma_position");
+  o.sigma_position = std::ldexp(1.0, -99);  // span / sigma just below 2^399: accepted
+  EXPECT_EQ(eliminate(column, 5, o).size(), 5u);
+}
 }  // namespace

@@ -160,8 +160,8 @@ struct Elimination_options {
   /// (bounding box for 2D input and 3D volumes; for surfaces, the sum over points of the area of a disc of
   /// the distance to the 8th nearest neighbour, divided by 8).
   double domain_measure = 0;
-  /// 2 (images, surfaces) or 3 (volumes). Default 0: 2 for 2D positions; for 3D positions, 2 when most points
-  /// have a flat neighbourhood (local PCA of 12 neighbours), else 3.
+  /// 2 (images, surfaces) or 3 (volumes). Default 0: 2 for 2D positions; for 3D positions, 2 when at least
+  /// half of up to 1,000 evenly spread points have a flat neighbourhood (local PCA of 12 neighbours), else 3.
   int intrinsic_dimension = 0;
   double alpha = 8;  ///< exponent of the weight (1 - d / (2 r_max))^alpha (Yuksel 2015); default 8
   /// clamp d below d_min = 2 r_max beta (1 - (M/N)^gamma), beta 0.65, gamma 1.5
