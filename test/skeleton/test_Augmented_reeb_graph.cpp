@@ -427,25 +427,35 @@ TEST(AugmentedReebGraph, SurfaceMeshWithRemovedVertices) {
   EXPECT_EQ(k.number_of_edges(), 3u);
 }
 
+namespace {
+// Adds a tetrahedron's surface (a sphere) to `mesh`: vertices 0-3 at (0, 0, 0), (1, 0, z1), (0, 1, z2) and
+// (0, 0, z3); returns its vertex property "v:height" = z.
+template <class Mesh>
+auto add_tetrahedron(Mesh& mesh, double z1, double z2, double z3) {
+  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({1, 0, z1}),
+             v2 = mesh.add_vertex({0, 1, z2}), v3 = mesh.add_vertex({0, 0, z3});
+  mesh.add_face(v0, v2, v1);
+  mesh.add_face(v0, v1, v3);
+  mesh.add_face(v1, v2, v3);
+  mesh.add_face(v2, v0, v3);
+  auto height = mesh.template add_property_map<typename Mesh::Vertex_index, double>("v:height", 0.0).first;
+  for (auto v : mesh.vertices()) height[v] = mesh.point(v).z();
+  return height;
+}
+}  // namespace
+
 TEST(AugmentedReebGraph, SurfaceMeshWithVertexPropertyMap) {
   using K = CGAL::Simple_cartesian<double>;
   using Mesh = CGAL::Surface_mesh<K::Point_3>;
   // A tetrahedron's surface (a sphere): a single arc; and a square with a hole? Keep to the sphere + tube.
   Mesh mesh;
-  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({1, 0, 0.2}),
-             v2 = mesh.add_vertex({0, 1, 0.5}), v3 = mesh.add_vertex({0, 0, 1});
-  mesh.add_face(v0, v2, v1);
-  mesh.add_face(v0, v1, v3);
-  mesh.add_face(v1, v2, v3);
-  mesh.add_face(v2, v0, v3);
-  auto height = mesh.add_property_map<Mesh::Vertex_index, double>("v:height", 0.0).first;
-  for (auto v : mesh.vertices()) height[v] = mesh.point(v).z();
+  const auto height = add_tetrahedron(mesh, 0.2, 0.5, 1);
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(mesh, height);
   const Reeb_graph R = A.reeb_graph();
   EXPECT_EQ(R.nodes.size(), 2u);
   EXPECT_EQ(R.arcs.size(), 1u);
   EXPECT_EQ(R.loops(), 0u);
-  EXPECT_EQ(R.nodes[0].vertex, static_cast<Vertex_index>(v0.idx()));
+  EXPECT_EQ(R.nodes[0].vertex, Vertex_index(0));
   // A quad face is rejected with its index.
   Mesh quad;
   const auto a = quad.add_vertex({0, 0, 0}), b = quad.add_vertex({1, 0, 0}), c = quad.add_vertex({1, 1, 0}),
@@ -463,14 +473,7 @@ TEST(AugmentedReebGraph, SurfaceMeshValuesOptionsAndFaceIndex) {
   using K = CGAL::Simple_cartesian<double>;
   using Mesh = CGAL::Surface_mesh<K::Point_3>;
   Mesh mesh;
-  const auto v0 = mesh.add_vertex({0, 0, 0}), v1 = mesh.add_vertex({1, 0, -0.5}),
-             v2 = mesh.add_vertex({0, 1, 0.25}), v3 = mesh.add_vertex({0, 0, 1.75});
-  mesh.add_face(v0, v2, v1);
-  mesh.add_face(v0, v1, v3);
-  mesh.add_face(v1, v2, v3);
-  mesh.add_face(v2, v0, v3);
-  auto height = mesh.add_property_map<Mesh::Vertex_index, double>("v:height", 0.0).first;
-  for (auto v : mesh.vertices()) height[v] = mesh.point(v).z();
+  const auto height = add_tetrahedron(mesh, -0.5, 0.25, 1.75);
   const Augmented_reeb_graph A = compute_augmented_reeb_graph(mesh, height);
   ASSERT_EQ(A.values().size(), 4u);
   for (auto v : mesh.vertices()) EXPECT_EQ(A.values()[v.idx()], mesh.point(v).z());
@@ -478,7 +481,7 @@ TEST(AugmentedReebGraph, SurfaceMeshValuesOptionsAndFaceIndex) {
   ASSERT_EQ(R.count(minimum), 1u);
   for (const auto& node : R.nodes)
     if (node.type & minimum) {
-      EXPECT_EQ(node.vertex, static_cast<Vertex_index>(v1.idx()));
+      EXPECT_EQ(node.vertex, Vertex_index(1));
     }
   Reeb_graph_options stop;
   stop.progress = [](double) { return false; };

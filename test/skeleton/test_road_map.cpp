@@ -38,6 +38,32 @@ double segment_distance(const std::array<double, 2>& p, const std::array<double,
   return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
 }
 
+// The adjacency of a city's street graph (intersections 0..n-1, then the inner points of bent streets).
+std::vector<std::vector<Vertex_index>> street_adjacency(const Synthetic_city& c) {
+  std::vector<std::vector<Vertex_index>> adj(c.streets.positions.size());
+  for (const Edge& e : c.streets.edges) {
+    adj[e[0]].push_back(e[1]);
+    adj[e[1]].push_back(e[0]);
+  }
+  return adj;
+}
+
+// Each street once, as the polyline from an intersection a through the inner points (indices n and up, of
+// degree 2) to the intersection b >= a at its other end.
+std::vector<std::vector<Vertex_index>> street_lines(const std::vector<std::vector<Vertex_index>>& adj,
+                                                    std::size_t n) {
+  std::vector<std::vector<Vertex_index>> lines;
+  for (Vertex_index a = 0; a < n; ++a)
+    for (const Vertex_index first : adj[a]) {
+      std::vector<Vertex_index> line{a, first};
+      while (line.back() >= n)
+        line.push_back(adj[line.back()][0] == line[line.size() - 2] ? adj[line.back()][1]
+                                                                    : adj[line.back()][0]);
+      if (line.back() >= a) lines.push_back(std::move(line));
+    }
+  return lines;
+}
+
 template <class F>
 std::string message_of(F f) {
   try {
@@ -1019,36 +1045,27 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
     for (std::size_t j = 0; j < i; ++j)
       EXPECT_GE(std::hypot(p[0] - c.streets.positions[j][0], p[1] - c.streets.positions[j][1]), spacing);
   }
-  std::vector<std::vector<Vertex_index>> adj(c.streets.positions.size());
-  for (const Edge& e : c.streets.edges) {
-    adj[e[0]].push_back(e[1]);
-    adj[e[1]].push_back(e[0]);
-  }
+  const std::vector<std::vector<Vertex_index>> adj = street_adjacency(c);
   for (std::size_t v = n; v < adj.size(); ++v) EXPECT_EQ(adj[v].size(), 2u) << v;
   // Walk each street from an intersection to the next: its middle lies at most curvature x chord off the
   // chord, and its ends form a Gabriel pair.
-  std::size_t streets = 0, bent = 0;
-  for (Vertex_index a = 0; a < n; ++a)
-    for (const Vertex_index first : adj[a]) {
-      std::vector<Vertex_index> line{a, first};
-      while (line.back() >= n)
-        line.push_back(adj[line.back()][0] == line[line.size() - 2] ? adj[line.back()][1]
-                                                                    : adj[line.back()][0]);
-      const Vertex_index b = line.back();
-      if (b < a) continue;  // each street once
-      ++streets;
-      const auto& P = c.streets.positions;
-      const double L = std::hypot(P[b][0] - P[a][0], P[b][1] - P[a][1]);
-      double off = 0;
-      for (const Vertex_index v : line) off = std::max(off, segment_distance(P[v], P[a], P[b]));
-      EXPECT_LE(off, o.curvature * L + 1e-9);
-      bent += off > 1;
-      const std::array<double, 2> mid{(P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2};
-      for (Vertex_index w = 0; w < n; ++w)
-        if (w != a && w != b) {
-          EXPECT_GT(std::hypot(P[w][0] - mid[0], P[w][1] - mid[1]), L / 2) << a << "-" << b;
-        }
-    }
+  const std::vector<std::vector<Vertex_index>> lines = street_lines(adj, n);
+  const std::size_t streets = lines.size();
+  std::size_t bent = 0;
+  for (const std::vector<Vertex_index>& line : lines) {
+    const Vertex_index a = line.front(), b = line.back();
+    const auto& P = c.streets.positions;
+    const double L = std::hypot(P[b][0] - P[a][0], P[b][1] - P[a][1]);
+    double off = 0;
+    for (const Vertex_index v : line) off = std::max(off, segment_distance(P[v], P[a], P[b]));
+    EXPECT_LE(off, o.curvature * L + 1e-9);
+    bent += off > 1;
+    const std::array<double, 2> mid{(P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2};
+    for (Vertex_index w = 0; w < n; ++w)
+      if (w != a && w != b) {
+        EXPECT_GT(std::hypot(P[w][0] - mid[0], P[w][1] - mid[1]), L / 2) << a << "-" << b;
+      }
+  }
   EXPECT_GT(streets, n);         // more streets than a tree
   EXPECT_GT(bent, streets / 2);  // most streets bend
   std::vector<char> seen(n, 0);
@@ -1304,35 +1321,25 @@ TEST(SyntheticCity, BentStreetsReachTheirCurvatureInShortPieces) {
   const Synthetic_city c = make_synthetic_city(o);
   const auto& P = c.streets.positions;
   const std::size_t n = o.columns * o.rows;
-  std::vector<std::vector<Vertex_index>> adj(P.size());
-  for (const Edge& e : c.streets.edges) {
-    adj[e[0]].push_back(e[1]);
-    adj[e[1]].push_back(e[0]);
+  for (const Edge& e : c.streets.edges)
     EXPECT_LE(std::hypot(P[e[1]][0] - P[e[0]][0], P[e[1]][1] - P[e[0]][1]), 10 + 1e-9);
-  }
   double largest = 0;
-  std::size_t sides[2] = {0, 0}, streets = 0;
-  for (Vertex_index a = 0; a < n; ++a)
-    for (const Vertex_index first : adj[a]) {
-      std::vector<Vertex_index> line{a, first};
-      while (line.back() >= n)
-        line.push_back(adj[line.back()][0] == line[line.size() - 2] ? adj[line.back()][1]
-                                                                    : adj[line.back()][0]);
-      const Vertex_index b = line.back();
-      if (b < a) continue;
-      ++streets;
-      const double L = std::hypot(P[b][0] - P[a][0], P[b][1] - P[a][1]);
-      double off = 0, side = 0;
-      for (const Vertex_index v : line) {
-        const double d = segment_distance(P[v], P[a], P[b]);
-        if (d > off)
-          off = d,
-          side = (P[b][0] - P[a][0]) * (P[v][1] - P[a][1]) - (P[b][1] - P[a][1]) * (P[v][0] - P[a][0]);
-      }
-      EXPECT_LE(off, o.curvature * L + 1e-9);
-      largest = std::max(largest, off / (o.curvature * L));
-      if (off > 1) ++sides[side > 0];
+  std::size_t sides[2] = {0, 0};
+  const std::vector<std::vector<Vertex_index>> lines = street_lines(street_adjacency(c), n);
+  const std::size_t streets = lines.size();
+  for (const std::vector<Vertex_index>& line : lines) {
+    const Vertex_index a = line.front(), b = line.back();
+    const double L = std::hypot(P[b][0] - P[a][0], P[b][1] - P[a][1]);
+    double off = 0, side = 0;
+    for (const Vertex_index v : line) {
+      const double d = segment_distance(P[v], P[a], P[b]);
+      if (d > off)
+        off = d, side = (P[b][0] - P[a][0]) * (P[v][1] - P[a][1]) - (P[b][1] - P[a][1]) * (P[v][0] - P[a][0]);
     }
+    EXPECT_LE(off, o.curvature * L + 1e-9);
+    largest = std::max(largest, off / (o.curvature * L));
+    if (off > 1) ++sides[side > 0];
+  }
   EXPECT_EQ(streets, c.streets.edges.size() - (P.size() - n));  // each inner point adds one piece
   EXPECT_GT(largest, 0.9);
   EXPECT_GT(sides[0], streets / 4);
