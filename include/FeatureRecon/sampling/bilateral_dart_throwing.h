@@ -251,7 +251,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
 /// distance, as on a grid or the pixels of a picture, where many pairs lie at the same distance: every radius
 /// above the largest distance of a rejected item to its nearest accepted one throws the same set, and so does
 /// every radius up to the smallest distance within a throw. Distances equal in exact arithmetic but rounded
-/// apart (a grid 0.1 apart, far from the origin) count as one within 2^-40 relative plus 2^-44 times the
+/// apart (a grid 0.1 apart, far from the origin) count as one within 2^-40 relative plus 2^-48 times the
 /// largest coordinate magnitude over sigma_position, so that a scaled or shifted grid gives the same items.
 /// With the exponential form, items of very different features may never conflict (their distance
 /// overflows): when no finite radius keeps as few as `count`, the throw at the largest radius tried (doubling
@@ -310,14 +310,18 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   // one distance, and the bracket used to shrink around it until no double was left between its ends (all 60
   // steps; now 6-12 throws on grids and pictures). Distances equal in exact arithmetic (a grid 0.1 apart,
   // pixels far from the origin) differ in their last bits: they count as one within 2^-40 relative, plus
-  // 2^-44 of the largest coordinate magnitude in units of sigma_position.
+  // 2^-48 of the largest coordinate magnitude in units of sigma_position.
   double hi_same_above = std::numeric_limits<double>::infinity();
   double conflict = 0;  // throw_darts()' largest conflict of the last throw
   // Both bounds cost time (15 % more instructions on white noise, 50k -> 10k, when computed at every throw)
   // and only help where the count jumps: they are computed from the first throw that keeps as many as the
   // end it replaces (as every throw between the two sides of one jump does) on; 2-6 % more then.
   bool jumps = false;
-  const double same_distance_of_extent = 0x1p-44 * S.extent() / options.darts.sigma_position;
+  double magnitude = options.darts.periodic ? 1.0 : 0.0;  // of the coordinates the distances are taken of
+  if (!options.darts.periodic)
+    for (const auto& p : S.positions)
+      for (const double x : p) magnitude = std::max(magnitude, std::abs(x));
+  const double same_distance_of_extent = 0x1p-48 * magnitude / options.darts.sigma_position;
   // True when the count jumps over `count` between the bracket's ends, then with best_radius the smallest
   // distance within `best` (at least hi_same_above's rounding neighbour); the search of that distance stops
   // at the first pair that is closer (nearly always the first few, while the bracket is wide).
