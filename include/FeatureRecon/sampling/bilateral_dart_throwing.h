@@ -317,20 +317,18 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   // and only help where the count jumps: they are computed from the first throw that keeps as many as the
   // end it replaces (as every throw between the two sides of one jump does) on; 2-6 % more then.
   bool jumps = false;
-  double magnitude = options.darts.periodic ? 1.0 : 0.0;  // of the coordinates the distances are taken of
-  if (!options.darts.periodic)
-    for (const auto& p : S.positions)
-      for (const double x : p) magnitude = std::max(magnitude, std::abs(x));
-  const double same_distance_of_extent = 0x1p-48 * magnitude / options.darts.sigma_position;
-  // True when the count jumps over `count` between the bracket's ends, then with best_radius the smallest
-  // distance within `best` (at least hi_same_above's rounding neighbour); the search of that distance stops
-  // at the first pair that is closer (nearly always the first few, while the bracket is wide).
+  // (On the torus the distances are taken of coordinates in [0, 1).)
+  const double same_distance_absolute =
+      0x1p-48 * (options.darts.periodic ? 1.0 : S.magnitude()) / options.darts.sigma_position;
   // `best` has a pair this close (infinity: not searched yet): a lower threshold needs no new search while
   // it lies below.
   double best_has_pair_at = std::numeric_limits<double>::infinity();
+  // True when the count jumps over `count` between the bracket's ends, then with best_radius the smallest
+  // distance within `best` (at least hi_same_above's rounding neighbour); the search of that distance stops
+  // at the first pair that is closer (nearly always the first few, while the bracket is wide).
   const auto one_jump = [&]() {
     if (search.kept_lo == 0 || !std::isfinite(hi_same_above)) return false;
-    const double threshold = (hi_same_above - same_distance_of_extent) / (1 + 0x1p-40);
+    const double threshold = (hi_same_above - same_distance_absolute) / (1 + 0x1p-40);
     if (best_has_pair_at < threshold) return false;
     const double separation = internal::throw_separation(S, best, hi_same_above, quiet, threshold);
     if (!(separation >= threshold)) {
@@ -361,11 +359,9 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
         result.status = Status::interrupted;
         return result;
       }
-      std::vector<std::uint32_t> kept =
-          internal::throw_darts(S, search.hi, quiet, order, interrupted, &conflict);
+      std::vector<std::uint32_t> kept = internal::throw_darts(S, search.hi, quiet, order, interrupted);
       if (kept.size() <= count) {
         search.kept_hi = double(kept.size());
-        hi_same_above = conflict;
         break;
       }
       search.lo = best_radius = search.hi;

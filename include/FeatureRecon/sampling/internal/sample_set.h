@@ -194,6 +194,13 @@ struct Sample_set {
     }
     return e;
   }
+  /// The largest magnitude of a coordinate (0 for no item).
+  double magnitude() const {
+    double m = 0;
+    for (const Point& p : positions)
+      for (const double x : p) m = std::max(m, std::abs(x));
+    return m;
+  }
   double squared_distance(std::size_t i, std::size_t j) const {
     double s = 0;
     for (int k = 0; k < D; ++k) {
