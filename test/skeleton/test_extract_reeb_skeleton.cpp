@@ -685,6 +685,44 @@ TEST(ExtractReebSkeleton, TheSimplificationsReportAndStop) {
   }
 }
 
+TEST(ExtractReebSkeleton, TheStagesAfterTheEmbeddingReportAndStop) {
+  // Trimming (0.95 to 0.955 of the stages after the Rips graph), pruning (to 0.96) and the branch-node merge
+  // (0.99 to 1) report in their stages; a stop at any of their reports ends the run with an empty graph and
+  // no later report (they reported nothing, and a stop during them was seen only at the end).
+  const Point_matrix m = circle_points(2000);
+  Skeleton_options o;
+  o.delta = 1;
+  o.prune_height = 0.5;
+  ASSERT_TRUE(o.trim_stubs);
+  std::vector<double> seen;
+  o.progress = test::recording_progress(seen);
+  const Reeb_skeleton full = extract_reeb_skeleton(m, 1.0, o);
+  ASSERT_EQ(full.status, Status::success);
+  ASSERT_GT(full.branch_merge_distance, 0.0);
+  ASSERT_GT(num_vertices(full.graph), 0u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  auto at = [](double x) { return 0.3 + 0.7 * x; };  // from points, the stages after the Rips graph: 0.3 to 1
+  auto reports = [&seen](double from, double to) {
+    return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t >= from && t <= to; });
+  };
+  EXPECT_GE(reports(at(0.95), at(0.955)), 2);  // trimming: its start and end
+  EXPECT_GE(reports(at(0.955), at(0.96)), 2);  // pruning
+  // the merge: after its candidates and before its new graph (its end is 1)
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [&](double t) { return t > at(0.99) && t < 1; }), 2);
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i + 1 < seen.size(); ++i) {
+    if (seen[i] < at(0.95) || (seen[i] > at(0.96) && seen[i] < at(0.99))) continue;
+    std::size_t calls = 0;
+    o.progress = [&calls, i](double) { return calls++ != i; };
+    const Reeb_skeleton s = extract_reeb_skeleton(m, 1.0, o);
+    EXPECT_EQ(s.status, Status::interrupted) << "stopped at " << seen[i];
+    EXPECT_EQ(num_vertices(s.graph), 0u) << "stopped at " << seen[i];
+    EXPECT_EQ(calls, i + 1) << "stopped at " << seen[i];
+    ++checked;
+  }
+  EXPECT_GE(checked, 6u);
+}
+
 TEST(ExtractReebSkeleton, LevelWidthReportsTheWidthUsed) {
   // Most points are copies of one point: the median edge length over all edges is 0 (the embedding fell back
   // to 1/64 of the range of f); over the edges between distinct points it is the spacing, 1, as without the
@@ -1349,4 +1387,78 @@ TEST(ExtractReebSkeleton, TheSecondSimplificationCountsAsTheStagesDo) {
     // Each simplification has something to do at one of the two deltas.
     EXPECT_GT(delta == 1.0 ? S2.removed_branches : S1.removed_branches, 0u) << delta;
   }
+}
+
+namespace {
+/// A caterpillar: a spine of `k` forks 0.01 apart on the x axis (f = x) with a leg up to (x, 1) at each (two
+/// at the ends), every node its own point; the spine arcs are the merge's candidates.
+struct Caterpillar {
+  Point_matrix points;
+  Skeleton_graph graph;
+  explicit Caterpillar(std::size_t k) {
+    points.dimension = 2;
+    std::vector<std::array<double, 2>> p;
+    for (std::size_t i = 0; i < k; ++i) p.push_back({0.01 * double(i), 0.0});
+    std::vector<std::pair<std::size_t, std::size_t>> legs;
+    for (std::size_t i = 0; i < k; ++i)
+      for (int twice = 0; twice < (i == 0 || i + 1 == k ? 2 : 1); ++twice) {
+        legs.push_back({i, p.size()});
+        p.push_back({0.01 * double(i) + 0.001 * twice, 1.0});
+      }
+    for (const auto& q : p) points.data.insert(points.data.end(), {q[0], q[1]});
+    points.rows = p.size();
+    graph = Skeleton_graph(p.size());
+    for (std::size_t v = 0; v < p.size(); ++v) {
+      graph[v].position = {p[v][0], p[v][1], 0};
+      graph[v].value = v < k ? p[v][0] : 1 + p[v][0];
+      graph[v].members = {static_cast<Vertex_index>(v)};
+    }
+    auto arc = [&](std::size_t a, std::size_t b) {
+      Skeleton_arc s;
+      s.polyline = {graph[a].position, graph[b].position};
+      s.lower = a;
+      s.upper = b;
+      add_edge(a, b, std::move(s), graph);
+    };
+    for (std::size_t i = 0; i + 1 < k; ++i) arc(i, i + 1);
+    for (const auto& [a, b] : legs) arc(a, b);
+  }
+};
+}  // namespace
+
+TEST(MergeCloseBranchNodes, ReportsEachRoundAndAStopLeavesTheInput) {
+  // 16 forks in a row merge into one node in rounds of matchings (8, 4, 2, 1 contractions): a report after
+  // the candidates (0.1), at each later round by the share of candidates settled, before the new graph (0.9)
+  // and at the end.
+  const Caterpillar c(16);
+  const Branch_node_merge_result plain = merge_close_branch_nodes(c.graph, c.points, 1.0);
+  ASSERT_EQ(plain.status, Status::success);
+  EXPECT_EQ(plain.merged, 15u);
+  EXPECT_EQ(num_vertices(plain.graph), num_vertices(c.graph) - 15);
+  std::vector<double> seen;
+  Branch_node_merge_options o;
+  o.progress = test::recording_progress(seen);
+  const Branch_node_merge_result watched = merge_close_branch_nodes(c.graph, c.points, 1.0, o);
+  EXPECT_EQ(watched.merged, 15u);
+  EXPECT_EQ(skeleton_signature(watched.graph), skeleton_signature(plain.graph));
+  ASSERT_GE(seen.size(), 6u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.1);
+  EXPECT_EQ(seen.back(), 1.0);
+  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.1 && t < 0.9; }), 3);
+  for (std::size_t i = 0; i + 1 < seen.size(); ++i) {
+    std::size_t calls = 0;
+    o.progress = [&calls, i](double) { return calls++ != i; };
+    const Branch_node_merge_result s = merge_close_branch_nodes(c.graph, c.points, 1.0, o);
+    EXPECT_EQ(s.status, Status::interrupted) << "stopped at " << seen[i];
+    EXPECT_EQ(s.merged, 0u) << "stopped at " << seen[i];
+    EXPECT_EQ(skeleton_signature(s.graph), skeleton_signature(c.graph)) << "stopped at " << seen[i];
+    EXPECT_EQ(num_vertices(s.graph), num_vertices(c.graph)) << "stopped at " << seen[i];
+    EXPECT_EQ(calls, i + 1) << "stopped at " << seen[i];
+  }
+  // Without candidates: the start, the end of the (no) rounds and the end.
+  seen.clear();
+  o.progress = test::recording_progress(seen);
+  EXPECT_EQ(merge_close_branch_nodes(c.graph, c.points, 0.001, o).merged, 0u);
+  EXPECT_EQ(seen, (std::vector<double>{0.1, 0.9, 1.0}));
 }

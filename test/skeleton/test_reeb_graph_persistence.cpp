@@ -10,11 +10,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "gudhi_extended_persistence.h"
+#include "reeb_graph_builders.h"
 #include "skeleton_test_utilities.h"
+#include "test_utilities.h"
 
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
@@ -244,4 +247,58 @@ TEST(ReebGraphPersistence, ForkOfHighDegree) {
   }
   EXPECT_TRUE(P.sublevel_branches.empty());
   EXPECT_TRUE(P.superlevel_branches.empty());
+}
+
+TEST(ReebGraphPersistence, ReportsProgressAndAStopLeavesEmptyDiagrams) {
+  // Two combs of 3,000 spine nodes and one of 5: about 12,000 nodes, so each of the three sweeps reports
+  // several times (every 1,024 nodes).
+  const Reeb_graph R = reeb_combs({3000, 3000, 5});
+  const Reeb_graph_persistence full = compute_reeb_graph_persistence(R);
+  ASSERT_EQ(full.status, Status::success);
+  // Spurs at the even spine nodes 2..2998 (1,499 per long comb) and at node 2 of the short one; loops at the
+  // odd nodes 1..2997 and 1, 3; one minimum per comb.
+  EXPECT_EQ(full.superlevel_branches.size(), 2 * 1499u + 1);
+  EXPECT_EQ(full.loops.size(), 2 * 1499u + 2);
+  EXPECT_EQ(full.sublevel_branches.size(), 0u);
+  EXPECT_EQ(full.essential.size(), 3u);
+  std::vector<double> seen;
+  Reeb_persistence_options o;
+  o.progress = recording_progress(seen);
+  const Reeb_graph_persistence P = compute_reeb_graph_persistence(R, o);
+  ASSERT_EQ(P.status, Status::success);
+  auto same = [](const std::vector<Reeb_persistence_pair>& a, const std::vector<Reeb_persistence_pair>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].birth_node != b[i].birth_node || a[i].death_node != b[i].death_node) return false;
+    return true;
+  };
+  EXPECT_TRUE(same(P.superlevel_branches, full.superlevel_branches));
+  EXPECT_TRUE(same(P.loops, full.loops));
+  EXPECT_TRUE(same(P.essential, full.essential));
+  ASSERT_FALSE(seen.empty());
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(seen.front(), 0.1);
+  EXPECT_EQ(seen.back(), 1.0);
+  auto reports = [&seen](double from, double to) {
+    return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t > from && t < to; });
+  };
+  EXPECT_GE(reports(0.1, 0.3), 10);  // the upward sweep
+  EXPECT_GE(reports(0.3, 0.5), 10);  // the downward sweep
+  EXPECT_GE(reports(0.5, 1.0), 10);  // the loops
+  // A stop at any report but the last: interrupted, every diagram empty, no report after the refusal.
+  for (std::size_t i = 0; i + 1 < seen.size(); ++i) {
+    std::size_t calls = 0;
+    o.progress = [&calls, i](double) { return calls++ != i; };
+    const Reeb_graph_persistence S = compute_reeb_graph_persistence(R, o);
+    EXPECT_EQ(S.status, Status::interrupted) << "stopped at " << seen[i];
+    EXPECT_TRUE(S.superlevel_branches.empty() && S.sublevel_branches.empty() && S.loops.empty() &&
+                S.essential.empty())
+        << "stopped at " << seen[i];
+    EXPECT_EQ(calls, i + 1) << "stopped at " << seen[i];
+  }
+  // The empty graph reports its start and its end.
+  seen.clear();
+  o.progress = recording_progress(seen);
+  EXPECT_EQ(compute_reeb_graph_persistence(Reeb_graph{}, o).status, Status::success);
+  EXPECT_EQ(seen, (std::vector<double>{0.1, 1.0}));
 }

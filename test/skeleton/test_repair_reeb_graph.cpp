@@ -15,6 +15,7 @@
 #include <random>
 #include <string>
 
+#include "reeb_graph_builders.h"
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
@@ -224,6 +225,83 @@ TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
   EXPECT_EQ(bad_arc.loops(), 2u);  // one more arc, the same components
   EXPECT_EQ(prune_reeb_graph_components(unset, 0.25).graph.components, 1u);
   EXPECT_EQ(prune_reeb_graph_components(unset, 0.25).graph.loops(), 1u);
+}
+
+namespace {
+/// Whether two Reeb graphs have the same nodes (vertex, value, type, members), arcs and component count.
+bool same_reeb_graph(const Reeb_graph& a, const Reeb_graph& b) {
+  if (a.nodes.size() != b.nodes.size() || a.arcs.size() != b.arcs.size() || a.components != b.components)
+    return false;
+  for (std::size_t i = 0; i < a.nodes.size(); ++i)
+    if (a.nodes[i].vertex != b.nodes[i].vertex || a.nodes[i].value != b.nodes[i].value ||
+        a.nodes[i].type != b.nodes[i].type || a.nodes[i].members != b.nodes[i].members)
+      return false;
+  for (std::size_t k = 0; k < a.arcs.size(); ++k)
+    if (a.arcs[k].lower != b.arcs[k].lower || a.arcs[k].upper != b.arcs[k].upper ||
+        a.arcs[k].vertices != b.arcs[k].vertices)
+      return false;
+  return true;
+}
+}  // namespace
+
+TEST(PruneAndTrim, ReportProgressAndAStopLeavesTheInput) {
+  // 700 combs: every 7th with a spine of 5 nodes (height 4, a stub of height 1 below its first fork), the
+  // others two nodes (height 1): 2,000 nodes, so both stages also report inside their pass over the nodes.
+  std::vector<std::size_t> spines(700, 2);
+  for (std::size_t c = 0; c < spines.size(); c += 7) spines[c] = 5;
+  const Reeb_graph R = reeb_combs(spines);
+  ASSERT_EQ(R.nodes.size(), 2000u);
+  struct Stage {
+    const char* name;
+    std::function<std::pair<Reeb_graph, std::size_t>(const Progress_callback&, Status&)> run;
+    std::size_t expected;  // components removed or stubs trimmed
+  };
+  const std::vector<Stage> stages = {
+      {"prune",
+       [&R](const Progress_callback& p, Status& status) {
+         Reeb_prune_options o;
+         o.progress = p;
+         Reeb_prune_result r = prune_reeb_graph_components(R, 2.0, o);
+         status = r.status;
+         EXPECT_TRUE(r.status == Status::success || r.removed_vertices.empty());
+         return std::make_pair(std::move(r.graph), r.removed_components);
+       },
+       600},
+      {"trim",
+       [&R](const Progress_callback& p, Status& status) {
+         Reeb_trim_options o;
+         o.progress = p;
+         Reeb_trim_result r = trim_essential_stubs(R, 1.0, o);
+         status = r.status;
+         return std::make_pair(std::move(r.graph), r.trimmed);
+       },
+       100}};
+  for (const Stage& stage : stages) {
+    Status status = Status::interrupted;
+    const auto [plain, count] = stage.run(nullptr, status);
+    EXPECT_EQ(status, Status::success) << stage.name;
+    EXPECT_EQ(count, stage.expected) << stage.name;
+    std::vector<double> seen;
+    const auto [watched, watched_count] = stage.run(recording_progress(seen), status);
+    EXPECT_EQ(status, Status::success) << stage.name;
+    EXPECT_EQ(watched_count, count) << stage.name;
+    EXPECT_TRUE(same_reeb_graph(watched, plain)) << stage.name;
+    ASSERT_GE(seen.size(), 3u) << stage.name;
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end())) << stage.name;
+    EXPECT_EQ(seen.front(), 0.0) << stage.name;
+    EXPECT_EQ(seen.back(), 1.0) << stage.name;
+    EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.2 && t < 0.8; }))
+        << stage.name;
+    // A stop at any report but the last: interrupted, the input unchanged, nothing counted, no later report.
+    for (std::size_t i = 0; i + 1 < seen.size(); ++i) {
+      std::size_t calls = 0;
+      const auto [stopped, stopped_count] = stage.run([&calls, i](double) { return calls++ != i; }, status);
+      EXPECT_EQ(status, Status::interrupted) << stage.name << " stopped at " << seen[i];
+      EXPECT_TRUE(same_reeb_graph(stopped, R)) << stage.name << " stopped at " << seen[i];
+      EXPECT_EQ(stopped_count, 0u) << stage.name << " stopped at " << seen[i];
+      EXPECT_EQ(calls, i + 1) << stage.name << " stopped at " << seen[i];
+    }
+  }
 }
 
 TEST(ConnectDeadEnds, ClosesATJunctionGap) {

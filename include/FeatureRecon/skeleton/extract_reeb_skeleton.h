@@ -231,6 +231,9 @@ inline std::vector<std::array<double, 3>> arc_polyline_from(const Skeleton_graph
 struct Branch_node_merge_result {
   Skeleton_graph graph;    ///< the skeleton with close branch nodes merged
   std::size_t merged = 0;  ///< arcs contracted
+  /// success, or interrupted when the progress callback returned false (the graph is then the input, nothing
+  /// merged)
+  Status status = Status::success;
 };
 
 namespace internal {
@@ -239,11 +242,13 @@ namespace internal {
 /// `metric` (optional): the input's own distance between two points when the coordinates only draw it (a
 /// distance matrix embedded by classical MDS, where an arc along a direction of small variance is drawn
 /// almost without length): an arc is then at least as long as the metric between its nodes' vertices, and a
-/// merged group must also stay within `distance` by the metric.
+/// merged group must also stay within `distance` by the metric. `progress` as
+/// Branch_node_merge_options::progress.
 inline Branch_node_merge_result merge_close_branch_nodes(
     const Skeleton_graph& g, const std::vector<std::array<double, 3>>& positions, const Point_matrix& input,
     double distance, const char* fn,
-    const std::function<double(Vertex_index, Vertex_index)>& metric = nullptr) {
+    const std::function<double(Vertex_index, Vertex_index)>& metric = nullptr,
+    const Progress_callback& progress = {}) {
   if (!(distance >= 0 && std::isfinite(distance)))
     FeatureRecon::internal::throw_invalid_argument(fn, "distance must be finite and >= 0, got ", distance);
   const std::size_t n = num_vertices(g), none = std::numeric_limits<std::size_t>::max();
@@ -296,6 +301,13 @@ inline Branch_node_merge_result merge_close_branch_nodes(
     if (length <= distance) candidates.push_back({length, k});
   }
   std::sort(candidates.begin(), candidates.end());
+  auto stopped = [&g, &progress](double fraction, Branch_node_merge_result& result) {
+    if (FeatureRecon::internal::report_progress(progress, fraction)) return false;
+    result = Branch_node_merge_result{};
+    result.graph = g;
+    result.status = Status::interrupted;
+    return true;
+  };
   // Rounds: in each, over the arcs between groups of merged nodes, contract a matching of the candidates
   // whose groups have degree >= 3 and are joined by this arc alone (a short loop stays a loop: no arc becomes
   // a self-loop).
@@ -330,7 +342,12 @@ inline Branch_node_merge_result merge_close_branch_nodes(
   };
   std::vector<char> contracted(m, 0), refused(m, 0);  // refused: too wide once merged (groups only grow)
   Branch_node_merge_result result;
+  if (stopped(0.1, result)) return result;
+  std::size_t settled = 0;  // candidates contracted or refused
   for (bool changed = !candidates.empty(); changed;) {
+    if (settled > 0 &&
+        stopped(0.1 + 0.8 * static_cast<double>(settled) / static_cast<double>(candidates.size()), result))
+      return result;
     changed = false;
     std::vector<std::size_t> degree(n, 0);
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> joining;  // arcs between two groups
@@ -350,6 +367,7 @@ inline Branch_node_merge_result merge_close_branch_nodes(
         continue;
       if (!close_groups(a, b)) {
         refused[k] = 1;
+        ++settled;
         continue;
       }
       taken[a] = taken[b] = 1;
@@ -360,9 +378,11 @@ inline Branch_node_merge_result merge_close_branch_nodes(
       into.insert(into.end(), from.begin(), from.end());
       from.clear();
       ++result.merged;
+      ++settled;
       changed = true;
     }
   }
+  if (stopped(0.9, result)) return result;
   // The new nodes: one per group, in order of their smallest node; a merged node takes the value of its
   // lowest node (ties: smaller index), whose members come first, and sits at the centroid of all its points.
   std::vector<std::size_t> index(n, none), lowest(n, none);
@@ -448,6 +468,7 @@ inline Branch_node_merge_result merge_close_branch_nodes(
   }
   for (std::size_t i = 0; i < nodes_of.size(); ++i)
     if (nodes_of[i].size() > 1 || retype[i]) h[i].type = node_type_from_degrees(down[i], up[i]);
+  (void)FeatureRecon::internal::report_progress(progress, 1.0);
   return result;
 }
 }  // namespace internal
@@ -469,13 +490,15 @@ inline Branch_node_merge_result merge_close_branch_nodes(
 /// in increasing function value), and the types of the merged nodes and of the ends of reversed arcs follow
 /// from the arcs below and above them. Nodes and arcs that take no part are copied unchanged; the new nodes
 /// are ordered by the smallest original node of each.
+/// A stop through the progress callback leaves Status::interrupted and the input graph unchanged.
 /// \pre distance >= 0 and finite; the members index `coordinates`; above 3D input positions and polylines
 ///   have its dimension (all checked; throws naming the node or arc).
 inline Branch_node_merge_result merge_close_branch_nodes(const Skeleton_graph& g,
-                                                         const Point_matrix& coordinates, double distance) {
+                                                         const Point_matrix& coordinates, double distance,
+                                                         const Branch_node_merge_options& options = {}) {
   internal::check_point_matrix(coordinates, "merge_close_branch_nodes", "coordinates");
   return internal::merge_close_branch_nodes(g, project_to_3d(coordinates), coordinates, distance,
-                                            "merge_close_branch_nodes");
+                                            "merge_close_branch_nodes", nullptr, options.progress);
 }
 
 namespace internal {
@@ -650,12 +673,18 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     result.removed_loops += S.removed_loops;
   }
   if (options.trim_stubs) {
-    Reeb_trim_result trimmed = trim_essential_stubs(S.graph, *options.delta);
+    Reeb_trim_options to;
+    to.progress = stage(0.95, 0.955);
+    Reeb_trim_result trimmed = trim_essential_stubs(S.graph, *options.delta, to);
+    if (ended(trimmed.status)) return result;
     S.graph = std::move(trimmed.graph);
     result.trimmed_stubs = trimmed.trimmed;
   }
   if (options.prune_height > 0) {
-    Reeb_prune_result pruned = prune_reeb_graph_components(S.graph, options.prune_height);
+    Reeb_prune_options po;
+    po.progress = stage(0.955, 0.96);
+    Reeb_prune_result pruned = prune_reeb_graph_components(S.graph, options.prune_height, po);
+    if (ended(pruned.status)) return result;
     S.graph = std::move(pruned.graph);
     result.pruned_components = pruned.removed_components;
     result.pruned_points = std::move(pruned.removed_vertices);
@@ -678,7 +707,7 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     // none (all points copies of one): straight segments, as before
     eo.max_gap = median > 0 ? 2 * median : 0.0;
   }
-  eo.progress = stage(0.95, 0.99);
+  eo.progress = stage(0.96, 0.99);
   if (dimension > 3) {
     // Drawn in input space and projected point for point: each arc's `polyline` is the projection of its
     // `input_polyline` (two separate drawings bridged gaps measured in their own spaces, and their point
@@ -723,7 +752,11 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
     if (!coordinates_are_metric)
       metric = [&distance](Vertex_index a, Vertex_index b) { return distance(a, b); };
     Branch_node_merge_result merged = internal::merge_close_branch_nodes(
-        result.graph, projected, coordinates, result.branch_merge_distance, fn, metric);
+        result.graph, projected, coordinates, result.branch_merge_distance, fn, metric, stage(0.99, 1.0));
+    if (ended(merged.status)) {
+      result.graph = Skeleton_graph();  // what every other stop leaves
+      return result;
+    }
     result.graph = std::move(merged.graph);
     result.merged_branch_arcs = merged.merged;
   }

@@ -44,15 +44,17 @@ struct Reeb_graph_persistence {
   std::vector<Reeb_persistence_pair> loops;
   /// One pair per connected component: its global minimum and maximum (birth <= death).
   std::vector<Reeb_persistence_pair> essential;
+  /// success, or interrupted when the progress callback returned false (every diagram is then empty).
+  Status status = Status::success;
 };
 
 namespace internal {
 /// compute_reeb_graph_persistence(), optionally also giving for each loop (in the order of `loops`) the arcs
-/// of its thin cycle; errors name `fn`.
+/// of its thin cycle (none after a stop); errors name `fn`; `progress` as Reeb_persistence_options::progress.
 inline Reeb_graph_persistence reeb_graph_persistence(
     const Reeb_graph& R, std::vector<std::vector<std::size_t>>* loop_cycles,
     double cycle_limit = std::numeric_limits<double>::infinity(),
-    const char* fn = "compute_reeb_graph_persistence") {
+    const char* fn = "compute_reeb_graph_persistence", const Progress_callback& progress = {}) {
   const std::size_t n = R.nodes.size();
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(R.nodes[i].value))
@@ -79,6 +81,19 @@ inline Reeb_graph_persistence reeb_graph_persistence(
     std::sort(above[v].begin(), above[v].end());
   }
   Reeb_graph_persistence P;
+  // A stop leaves empty diagrams (and no cycles); asked every 1024 nodes of each sweep.
+  auto stopped = [&](double fraction) {
+    if (FeatureRecon::internal::report_progress(progress, fraction)) return false;
+    P = Reeb_graph_persistence{};
+    P.status = Status::interrupted;
+    if (loop_cycles != nullptr) loop_cycles->clear();
+    return true;
+  };
+  auto stopped_in_sweep = [&](std::size_t done, double from, double to) {
+    return (done & 1023) == 0 && done > 0 &&
+           stopped(from + (to - from) * static_cast<double>(done) / static_cast<double>(n));
+  };
+  if (stopped(0.1)) return P;
   auto pair_of = [&](std::size_t b, std::size_t d) {
     return Reeb_persistence_pair{R.nodes[b].value, R.nodes[d].value, b, d};
   };
@@ -100,6 +115,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(
   };
   std::vector<Loop_birth> loop_births;
   for (std::size_t v = 0; v < n; ++v) {
+    if (stopped_in_sweep(v, 0.1, 0.3)) return P;
     std::size_t earlier = 0;
     for (const auto& [u, arc] : below[v]) {
       const std::size_t ru = find(u), rv = find(v);
@@ -128,6 +144,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   std::iota(extreme.begin(), extreme.end(), std::size_t(0));  // highest node of the component
   for (std::size_t k = n; k-- > 0;) {
+    if (stopped_in_sweep(n - 1 - k, 0.3, 0.5)) return P;
     const std::size_t v = k;
     bool joined = false;
     for (auto it = above[v].rbegin(); it != above[v].rend(); ++it) {
@@ -174,6 +191,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(
     std::vector<std::int32_t> on_path;
     std::size_t next_birth = 0;
     for (std::size_t v = 0; v < n; ++v) {
+      if (stopped_in_sweep(v, 0.5, 1.0)) return P;
       for (const auto& [u, arc] : below[v]) {
         const std::int32_t e = arc_node(arc), x = static_cast<std::int32_t>(u),
                            y = static_cast<std::int32_t>(v);
@@ -212,6 +230,7 @@ inline Reeb_graph_persistence reeb_graph_persistence(
     }
     FEATURERECON_assertion(next_birth == loop_births.size());
   }
+  (void)FeatureRecon::internal::report_progress(progress, 1.0);
   return P;
 }
 }  // namespace internal
@@ -228,8 +247,11 @@ inline Reeb_graph_persistence reeb_graph_persistence(
 /// simplicity; node order is the graph's (f, vertex index) order.
 /// \pre R's node values are finite and in increasing (value, vertex) order, as reeb_graph() returns them
 ///   (checked; throws).
-inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R) {
-  return internal::reeb_graph_persistence(R, nullptr);
+/// \param options progress callback (return false to stop: Status::interrupted, empty diagrams).
+inline Reeb_graph_persistence compute_reeb_graph_persistence(const Reeb_graph& R,
+                                                             const Reeb_persistence_options& options = {}) {
+  return internal::reeb_graph_persistence(R, nullptr, std::numeric_limits<double>::infinity(),
+                                          "compute_reeb_graph_persistence", options.progress);
 }
 
 }  // namespace skeleton

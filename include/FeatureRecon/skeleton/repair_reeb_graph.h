@@ -477,18 +477,29 @@ struct Reeb_prune_result {
   Reeb_graph graph;                            ///< the graph without the pruned components
   std::size_t removed_components = 0;          ///< number of components removed
   std::vector<Vertex_index> removed_vertices;  ///< input vertices of the removed components (sorted)
+  /// success, or interrupted when the progress callback returned false (the graph is then the input, nothing
+  /// removed)
+  Status status = Status::success;
 };
 
 /// Removes every connected component of height (maximum minus minimum of f over its nodes) at most
 /// `max_height`: the essential 0-dimensional features of persistence <= max_height, which simplification
 /// keeps (a component is never merged into another). Small isolated pieces of noise go; nodes keep their
-/// order.
+/// order. A stop through the progress callback leaves Status::interrupted and the input graph unchanged.
 /// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
-inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height) {
+inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double max_height,
+                                                     const Reeb_prune_options& options = {}) {
   if (!(max_height >= 0))
     FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components",
                                                    "max_height must be >= 0, got ", max_height);
   internal::check_reeb_graph(R, "prune_reeb_graph_components");
+  auto interrupted = [&R] {
+    Reeb_prune_result stop;
+    stop.graph = R;
+    stop.status = Status::interrupted;
+    return stop;
+  };
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) return interrupted();
   const std::vector<std::size_t> component = internal::node_components(R);
   auto find = [&component](std::size_t x) { return component[x]; };
   std::vector<double> low(R.nodes.size(), 0), high(R.nodes.size(), 0);
@@ -505,6 +516,10 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
   Reeb_prune_result result;
   std::vector<std::size_t> index(R.nodes.size(), static_cast<std::size_t>(-1));
   for (std::size_t i = 0; i < R.nodes.size(); ++i) {
+    if ((i & 1023) == 0 && i > 0 &&
+        !FeatureRecon::internal::report_progress(
+            options.progress, 0.2 + 0.6 * static_cast<double>(i) / static_cast<double>(R.nodes.size())))
+      return interrupted();
     const std::size_t c = find(i);
     if (high[c] - low[c] <= max_height) {
       if (c == i) ++result.removed_components;
@@ -529,6 +544,7 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
     result.graph.arcs.push_back(std::move(b));
   }
   std::sort(result.removed_vertices.begin(), result.removed_vertices.end());
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
 }
 
@@ -536,6 +552,9 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
 struct Reeb_trim_result {
   Reeb_graph graph;         ///< the graph with the stubs contracted into their forks
   std::size_t trimmed = 0;  ///< number of stubs contracted
+  /// success, or interrupted when the progress callback returned false (the graph is then the input, nothing
+  /// trimmed)
+  Status status = Status::success;
 };
 
 /// Contracts, in every component, the arc from the global minimum (and the one to the global maximum) into
@@ -548,13 +567,22 @@ struct Reeb_trim_result {
 /// pairs) moves by at most `max_height` in bottleneck distance. The essential pair moves by at most that; a
 /// feature whose extreme lies within the stub's levels may shrink or go with it (where the global minimum's
 /// stub meets a second minimum at a down-fork, that minimum becomes the global one and its own pair goes);
-/// the stub's points join the fork node's members.
+/// the stub's points join the fork node's members. A stop through the progress callback leaves
+/// Status::interrupted and the input graph unchanged.
 /// \pre max_height >= 0; R as for repair_reeb_graph() (checked; throws).
-inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height) {
+inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_height,
+                                             const Reeb_trim_options& options = {}) {
   if (!(max_height >= 0))
     FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0, got ",
                                                    max_height);
   internal::check_reeb_graph(R, "trim_essential_stubs");
+  auto interrupted = [&R] {
+    Reeb_trim_result stop;
+    stop.graph = R;
+    stop.status = Status::interrupted;
+    return stop;
+  };
+  if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) return interrupted();
   Reeb_trim_result result;
   const std::size_t n = R.nodes.size();
   std::vector<std::vector<std::size_t>> incident(n);
@@ -578,6 +606,10 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
   for (std::size_t i = 0; i < n; ++i) degree[i] = incident[i].size();
   std::vector<Reeb_graph::Node> nodes = R.nodes;
   for (std::size_t c = 0; c < n; ++c) {
+    if ((c & 1023) == 0 && c > 0 &&
+        !FeatureRecon::internal::report_progress(options.progress,
+                                                 0.2 + 0.6 * static_cast<double>(c) / static_cast<double>(n)))
+      return interrupted();
     if (lowest[c] == none) continue;
     for (const std::size_t e : {lowest[c], highest[c]}) {
       if (incident[e].size() != 1 || lowest[c] == highest[c]) continue;
@@ -609,6 +641,7 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
       result.graph.arcs.push_back(std::move(b));
     }
   internal::refresh_node_types(result.graph);
+  (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   return result;
 }
 

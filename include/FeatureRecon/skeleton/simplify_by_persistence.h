@@ -127,8 +127,16 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R,
   };
   if (stopped(0.0)) return result;
   std::vector<std::vector<std::size_t>> cycles;
-  const Reeb_graph_persistence P = internal::reeb_graph_persistence(R, &cycles, delta, fn);
-  if (stopped(0.1)) return result;
+  // The persistence reports up to 0.1; a refusal of any of its reports stops (its last one included).
+  bool refused = false;
+  Progress_callback persistence_progress;
+  if (progress)
+    persistence_progress = [&progress, &refused](double t) {
+      return !(refused = refused || !progress(0.1 * t));
+    };
+  const Reeb_graph_persistence P =
+      internal::reeb_graph_persistence(R, &cycles, delta, fn, persistence_progress);
+  if (refused && interrupted()) return result;
   const std::size_t n = values.size();
   internal::Simplification_complex Y;
   Y.values = values;

@@ -52,6 +52,36 @@ struct Simplification_options {
   Progress_callback progress;
 };
 
+/// Options of compute_reeb_graph_persistence().
+struct Reeb_persistence_options {
+  /// Called with the fraction done (the checks and the adjacency up to 0.1, the upward sweep of branches to
+  /// 0.3, the downward one to 0.5, the loops to 1); returning false stops: Status::interrupted and empty
+  /// diagrams.
+  Progress_callback progress;
+};
+
+/// Options of trim_essential_stubs().
+struct Reeb_trim_options {
+  /// Called with the fraction done; returning false stops: Status::interrupted, the input graph unchanged
+  /// and nothing trimmed.
+  Progress_callback progress;
+};
+
+/// Options of prune_reeb_graph_components().
+struct Reeb_prune_options {
+  /// Called with the fraction done; returning false stops: Status::interrupted, the input graph unchanged
+  /// and nothing removed.
+  Progress_callback progress;
+};
+
+/// Options of merge_close_branch_nodes().
+struct Branch_node_merge_options {
+  /// Called with the fraction done (the candidate arcs up to 0.1, each round of contractions by the share of
+  /// candidates settled up to 0.9, the new graph 1); returning false stops: Status::interrupted, the input
+  /// graph unchanged and nothing merged.
+  Progress_callback progress;
+};
+
 /// Options of repair_reeb_graph() and connect_dead_ends().
 struct Reeb_repair_options {
   /// Empty (default: every pair is measured), or a function of an input vertex that is 1-Lipschitz for the
