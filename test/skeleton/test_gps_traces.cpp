@@ -178,6 +178,24 @@ TEST(GpsTraces, SparseSamplesNextToADenseStreetAreDropped) {
   for (const Edge& e : S.trip_links) EXPECT_LT(e[1], S.points.rows);
 }
 
+TEST(GpsTraces, AStoppedTraceGraphSaysSo) {
+  // build_gps_trace_graph() is build_rips_graph() plus the trip links: a stop in the Rips search leaves some
+  // of the Rips edges (and every link) and the status interrupted, as the Rips graph's.
+  std::vector<Gps_trip> trips;
+  for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.1 * k, 1, 0, 9, 25, 100.0 * k));
+  const Gps_trace_sample S = sample_gps_traces(trips, 20.0);
+  const Proximity_graph full = build_gps_trace_graph(S, 20.0);
+  EXPECT_EQ(full.status, Status::success);
+  Gps_trace_graph_options o;
+  o.progress = [](double) { return false; };
+  const Proximity_graph stopped = build_gps_trace_graph(S, 20.0, o);
+  EXPECT_EQ(stopped.status, Status::interrupted);
+  EXPECT_LT(stopped.number_of_edges(), full.number_of_edges());
+  EXPECT_TRUE(
+      std::includes(full.edges.begin(), full.edges.end(), stopped.edges.begin(), stopped.edges.end()));
+  for (const Edge& link : S.trip_links) EXPECT_GE(stopped.find_edge(link[0], link[1]), 0);
+}
+
 TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   std::vector<Gps_trip> trips;
   for (int k = 0; k < 20; ++k) trips.push_back(straight(0, 0.1 * k, 1, 0, 9, 25, 100.0 * k));

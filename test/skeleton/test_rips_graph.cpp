@@ -731,7 +731,9 @@ TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
     seen.push_back(f);
     return true;
   };
-  EXPECT_EQ(build_rips_graph_from_distance_matrix(D, 1.0, o).number_of_edges(), n - 1);
+  const Proximity_graph full = build_rips_graph_from_distance_matrix(D, 1.0, o);
+  EXPECT_EQ(full.number_of_edges(), n - 1);
+  EXPECT_EQ(full.status, Status::success);
   ASSERT_EQ(seen.size(), 2u);  // row 4096, then 1
   EXPECT_NEAR(seen[0], 1 - std::pow(1 - 4096.0 / n, 2), 1e-12);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
@@ -740,19 +742,24 @@ TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
   o.progress = [&](double) { return ++calls < 1; };
   const Proximity_graph stopped = build_rips_graph_from_distance_matrix(D, 1.0, o);
   EXPECT_EQ(stopped.number_of_edges(), 4096u);  // rows 0..4095 each give their edge to the next
-  EXPECT_EQ(calls, 1);                          // returning false stops: no report (of 1) after it
+  EXPECT_EQ(stopped.status, Status::interrupted);
+  EXPECT_EQ(calls, 1);  // returning false stops: no report (of 1) after it
   seen.clear();
   o.progress = [&](double f) {
     seen.push_back(f);
     return true;
   };
-  EXPECT_EQ(build_knn_graph_from_distance_matrix(D, 1, o).number_of_edges(), n - 1);
+  const Proximity_graph knn = build_knn_graph_from_distance_matrix(D, 1, o);
+  EXPECT_EQ(knn.number_of_edges(), n - 1);
+  EXPECT_EQ(knn.status, Status::success);
   EXPECT_EQ(seen, (std::vector<double>{1024.0 / n, 2048.0 / n, 3072.0 / n, 4096.0 / n, 1.0}));
   calls = 0;
   o.progress = [&](double) { return ++calls < 2; };
   // Rows 0..2047; the nearest of i > 0 is i - 1 (the tie with i + 1 goes to the smaller index): the path to
   // 2047.
-  EXPECT_EQ(build_knn_graph_from_distance_matrix(D, 1, o).number_of_edges(), 2047u);
+  const Proximity_graph knn_stopped = build_knn_graph_from_distance_matrix(D, 1, o);
+  EXPECT_EQ(knn_stopped.number_of_edges(), 2047u);
+  EXPECT_EQ(knn_stopped.status, Status::interrupted);
   EXPECT_EQ(calls, 2);  // no report (of 1) after the refusal
 }
 
@@ -823,6 +830,7 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   o.progress = test::recording_progress(seen);
   const Simplicial_complex_2 k = build_flag_complex_2(complete, o);
   EXPECT_EQ(k.number_of_triangles(), 220u);
+  EXPECT_EQ(k.status, Status::success);
   EXPECT_EQ(k.triangles, build_flag_complex_2(complete).triangles);
   ASSERT_FALSE(seen.empty());
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
@@ -851,7 +859,13 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
   const Simplicial_complex_2 stopped = build_flag_complex_2(complete, o);
   EXPECT_TRUE(stopped.triangles.empty());
   EXPECT_EQ(stopped.edges, complete.edges);
+  EXPECT_EQ(stopped.status, Status::interrupted);
   EXPECT_EQ(calls, 1);
+  // A stop while storing (the first report of the second pass, 0.5): some triangles, status interrupted.
+  o.progress = [](double t) { return t < 0.5; };
+  const Simplicial_complex_2 storing = build_flag_complex_2(complete, o);
+  EXPECT_LT(storing.number_of_triangles(), 220u);
+  EXPECT_EQ(storing.status, Status::interrupted);
   // The callback overload takes any callable (a lambda, a std::function); `{}` is the options overload (it
   // was ambiguous between the options and a std::function).
   calls = 0;
@@ -906,6 +920,8 @@ TEST(RipsComplex, ProgressCoversBothStagesAndAStopEndsBoth) {
   const Simplicial_complex_2 watched = build_rips_complex_2(grid, 1.5, o);
   EXPECT_EQ(watched.edges, plain.edges);
   EXPECT_EQ(watched.triangles, plain.triangles);
+  EXPECT_EQ(watched.status, Status::success);
+  EXPECT_EQ(plain.status, Status::success);
   ASSERT_FALSE(seen.empty());
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_EQ(seen.front(), 0.0);
@@ -925,11 +941,18 @@ TEST(RipsComplex, ProgressCoversBothStagesAndAStopEndsBoth) {
     const Simplicial_complex_2 stopped = build_rips_complex_2(grid, 1.5, o);
     EXPECT_TRUE(stopped.triangles.empty());
     EXPECT_LT(stopped.number_of_edges(), plain.number_of_edges());
+    EXPECT_EQ(stopped.status, Status::interrupted);
     EXPECT_TRUE(after_stop.empty()) << after_stop.front();
     after_stop.clear();
     refused = false;
-    (void)build_knn_graph(grid, 4, o);
+    EXPECT_EQ(build_knn_graph(grid, 4, o).status, Status::interrupted);
     EXPECT_TRUE(after_stop.empty()) << after_stop.front();
+    // A refusal of the graph stage's last report (0.5): every edge, no triangle, status interrupted.
+    o.progress = [](double t) { return t < 0.5; };
+    const Simplicial_complex_2 graph_only = build_rips_complex_2(grid, 1.5, o);
+    EXPECT_EQ(graph_only.edges, plain.edges);
+    EXPECT_TRUE(graph_only.triangles.empty());
+    EXPECT_EQ(graph_only.status, Status::interrupted);
   }
 }
 
@@ -1160,7 +1183,9 @@ TEST(RipsGraph, ProgressIsNonDecreasingAndEndsAtARefusal) {
     Proximity_graph_options o;
     o.search = s;
     o.progress = test::recording_progress(seen);
-    EXPECT_EQ(build_rips_graph(p, r, o).edges, brute_rips(p, r));
+    const Proximity_graph g = build_rips_graph(p, r, o);
+    EXPECT_EQ(g.edges, brute_rips(p, r));
+    EXPECT_EQ(g.status, Status::success);
     ASSERT_GT(seen.size(), 2u);
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end())) << "kd-tree " << (s == Neighbor_search::kd_tree);
     EXPECT_EQ(seen.front(), 0.0);
@@ -1170,7 +1195,9 @@ TEST(RipsGraph, ProgressIsNonDecreasingAndEndsAtARefusal) {
       ++calls;
       return false;
     };
-    EXPECT_LT(build_rips_graph(p, r, o).number_of_edges(), brute_rips(p, r).size());
+    const Proximity_graph stopped = build_rips_graph(p, r, o);
+    EXPECT_LT(stopped.number_of_edges(), brute_rips(p, r).size());
+    EXPECT_EQ(stopped.status, Status::interrupted);
     EXPECT_EQ(calls, 1) << "kd-tree " << (s == Neighbor_search::kd_tree);
   }
 }

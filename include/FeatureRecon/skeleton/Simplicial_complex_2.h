@@ -4,6 +4,7 @@
 #define FEATURERECON_SKELETON_SIMPLICIAL_COMPLEX_2_H
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/config.h>
 
 #include <algorithm>
 #include <array>
@@ -31,6 +32,10 @@ struct Proximity_graph {
   std::size_t number_of_vertices = 0;  ///< vertices are 0..number_of_vertices-1
   std::vector<Edge> edges;             ///< sorted pairs (u, v), u < v
   std::vector<double> edge_lengths;    ///< aligned with `edges`; empty means every length is 1
+  /// How the builder that returned the graph ended: success, or interrupted when its progress callback
+  /// returned false (the graph then holds what that builder documents, e.g. the edges of the points visited).
+  /// Not part of the graph: ignored by every function that takes a graph.
+  Status status = Status::success;
 
   std::size_t number_of_edges() const { return edges.size(); }  ///< number of edges
   /// Length of edge e (1 when the graph is unweighted).

@@ -902,7 +902,8 @@ struct Gps_trace_graph_options {
   /// sample's).
   std::optional<double> heading_tolerance = FeatureRecon::automatic;
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search of the Rips edges
-  /// Called with the fraction done; returning false stops (the graph is partial; as build_rips_graph()).
+  /// Called with the fraction done; returning false stops (the graph is partial, with status interrupted; as
+  /// build_rips_graph()).
   Progress_callback progress;
 };
 
@@ -953,7 +954,9 @@ inline Proximity_graph build_gps_trace_graph(const Gps_trace_sample& S, double r
       edges.push_back(e);
   for (const Edge& link : S.trip_links)  // either order: a link is undirected in the graph
     edges.push_back({std::min(link[0], link[1]), std::max(link[0], link[1])});
-  return internal::planar_graph(S.points, std::move(edges));
+  Proximity_graph g = internal::planar_graph(S.points, std::move(edges));
+  g.status = rips.status;
+  return g;
 }
 
 }  // namespace skeleton

@@ -687,6 +687,7 @@ inline Proximity_graph rips_graph(const Point_matrix& m, double radius,
   }
   internal::add_edge_lengths(m, g, fn);
   if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (stopped) g.status = Status::interrupted;
   if (counts) *counts = count;
   return g;
 }
@@ -968,6 +969,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
   internal::sort_unique_edges(g.edges, nullptr);
   internal::add_edge_lengths(m, g, fn);
   if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (stopped) g.status = Status::interrupted;
   if (counts) *counts = count;
   return g;
 }
@@ -1121,6 +1123,7 @@ Proximity_graph build_rips_graph_from_distance_matrix(const Matrix& D, double ra
     return !stopped;
   });
   if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (stopped) g.status = Status::interrupted;
   return g;
 }
 
@@ -1162,6 +1165,7 @@ Proximity_graph build_knn_graph_from_distance_matrix(const Matrix& D, std::size_
   g.edge_lengths.resize(g.edges.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) g.edge_lengths[e] = a[g.edges[e][0] * n + g.edges[e][1]];
   if (!stopped) (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
+  if (stopped) g.status = Status::interrupted;
   return g;
 }
 
@@ -1200,7 +1204,7 @@ struct Flag_complex_options {
   /// Default 0: no limit.
   std::size_t max_triangles = 0;
   /// Fraction done, asked during both passes (counting, then storing); returning false stops: the complex is
-  /// returned without triangles, or with those stored so far (the caller that stopped it knows).
+  /// returned without triangles, or with those stored so far, and with status interrupted.
   Progress_callback progress;
 };
 
@@ -1263,6 +1267,7 @@ inline Simplicial_complex_2 flag_complex_2(const Proximity_graph& g, std::size_t
     if (pass == 0 && !stopped) FeatureRecon::internal::reserve_huge(k.triangles, count);
   }
   if (!stopped) (void)FeatureRecon::internal::report_progress(progress, 1.0);
+  if (stopped) k.status = Status::interrupted;
   return k;
 }
 
@@ -1331,9 +1336,10 @@ Simplicial_complex_2 build_rips_complex_2(const PointRange& points, double radiu
   graph_options.search = options.search;
   graph_options.progress = stage(0.0);
   Proximity_graph g = build_rips_graph(points, radius, graph_options, traits);
-  if (stopped) {
+  if (stopped) {  // also when the graph stage's last report was refused: the complex has no triangles
     Simplicial_complex_2 k;
     static_cast<Proximity_graph&>(k) = std::move(g);
+    k.status = Status::interrupted;
     return k;
   }
   return internal::flag_complex_2(

@@ -25,7 +25,9 @@ enum class Neighbor_search {
 /// Options of build_rips_graph() and build_knn_graph().
 struct Proximity_graph_options {
   Neighbor_search search = Neighbor_search::automatic;  ///< neighbour search strategy; default automatic
-  Progress_callback progress;  ///< called with the fraction done; returning false stops (result is partial)
+  /// called with the fraction done; returning false stops: the graph is partial (see each builder) and its
+  /// status interrupted
+  Progress_callback progress;
 };
 
 /// Options of compute_geodesic_function().
