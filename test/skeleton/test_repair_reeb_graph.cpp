@@ -229,7 +229,7 @@ TEST(PruneReebGraphComponents, RemovesLowComponentsAndReportsTheirPoints) {
 
 namespace {
 /// Whether two Reeb graphs have the same nodes (vertex, value, type, members), arcs and component count.
-bool same_reeb_graph(const Reeb_graph& a, const Reeb_graph& b) {
+bool same_graph(const Reeb_graph& a, const Reeb_graph& b) {
   if (a.nodes.size() != b.nodes.size() || a.arcs.size() != b.arcs.size() || a.components != b.components)
     return false;
   for (std::size_t i = 0; i < a.nodes.size(); ++i)
@@ -285,7 +285,7 @@ TEST(PruneAndTrim, ReportProgressAndAStopLeavesTheInput) {
     const auto [watched, watched_count] = stage.run(recording_progress(seen), status);
     EXPECT_EQ(status, Status::success) << stage.name;
     EXPECT_EQ(watched_count, count) << stage.name;
-    EXPECT_TRUE(same_reeb_graph(watched, plain)) << stage.name;
+    EXPECT_TRUE(same_graph(watched, plain)) << stage.name;
     ASSERT_GE(seen.size(), 3u) << stage.name;
     EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end())) << stage.name;
     EXPECT_EQ(seen.front(), 0.0) << stage.name;
@@ -297,7 +297,7 @@ TEST(PruneAndTrim, ReportProgressAndAStopLeavesTheInput) {
       std::size_t calls = 0;
       const auto [stopped, stopped_count] = stage.run([&calls, i](double) { return calls++ != i; }, status);
       EXPECT_EQ(status, Status::interrupted) << stage.name << " stopped at " << seen[i];
-      EXPECT_TRUE(same_reeb_graph(stopped, R)) << stage.name << " stopped at " << seen[i];
+      EXPECT_TRUE(same_graph(stopped, R)) << stage.name << " stopped at " << seen[i];
       EXPECT_EQ(stopped_count, 0u) << stage.name << " stopped at " << seen[i];
       EXPECT_EQ(calls, i + 1) << stage.name << " stopped at " << seen[i];
     }
@@ -463,22 +463,6 @@ TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
       error_of([&] { connect_dead_ends(R, nan_at_1, 1.0, pts); }).find("arc 0 has vertex 1 of value nan"),
       std::string::npos);
 }
-
-namespace {
-bool same_graph(const Reeb_graph& a, const Reeb_graph& b) {
-  if (a.nodes.size() != b.nodes.size() || a.arcs.size() != b.arcs.size() || a.components != b.components)
-    return false;
-  for (std::size_t i = 0; i < a.nodes.size(); ++i)
-    if (a.nodes[i].vertex != b.nodes[i].vertex || a.nodes[i].type != b.nodes[i].type ||
-        a.nodes[i].members != b.nodes[i].members)
-      return false;
-  for (std::size_t i = 0; i < a.arcs.size(); ++i)
-    if (a.arcs[i].lower != b.arcs[i].lower || a.arcs[i].upper != b.arcs[i].upper ||
-        a.arcs[i].vertices != b.arcs[i].vertices)
-      return false;
-  return true;
-}
-}  // namespace
 
 namespace {
 /// A comb: a street of `length` vertices on the x axis (one arc) and, over every other street vertex, a

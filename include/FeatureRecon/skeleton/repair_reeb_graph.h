@@ -19,6 +19,16 @@ namespace FeatureRecon {
 namespace skeleton {
 
 namespace internal {
+/// What a stopped trim_essential_stubs() or prune_reeb_graph_components() returns: the input graph, nothing
+/// done, status interrupted.
+template <class Result>
+Result input_unchanged(const Reeb_graph& R) {
+  Result stop;
+  stop.graph = R;
+  stop.status = Status::interrupted;
+  return stop;
+}
+
 /// Recomputes every node's type from its arcs and the number of components.
 inline void refresh_node_types(Reeb_graph& G) {
   std::vector<std::size_t> down(G.nodes.size(), 0), up(G.nodes.size(), 0);
@@ -493,12 +503,7 @@ inline Reeb_prune_result prune_reeb_graph_components(const Reeb_graph& R, double
     FeatureRecon::internal::throw_invalid_argument("prune_reeb_graph_components",
                                                    "max_height must be >= 0, got ", max_height);
   internal::check_reeb_graph(R, "prune_reeb_graph_components");
-  auto interrupted = [&R] {
-    Reeb_prune_result stop;
-    stop.graph = R;
-    stop.status = Status::interrupted;
-    return stop;
-  };
+  auto interrupted = [&R] { return internal::input_unchanged<Reeb_prune_result>(R); };
   if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) return interrupted();
   const std::vector<std::size_t> component = internal::node_components(R);
   auto find = [&component](std::size_t x) { return component[x]; };
@@ -576,12 +581,7 @@ inline Reeb_trim_result trim_essential_stubs(const Reeb_graph& R, double max_hei
     FeatureRecon::internal::throw_invalid_argument("trim_essential_stubs", "max_height must be >= 0, got ",
                                                    max_height);
   internal::check_reeb_graph(R, "trim_essential_stubs");
-  auto interrupted = [&R] {
-    Reeb_trim_result stop;
-    stop.graph = R;
-    stop.status = Status::interrupted;
-    return stop;
-  };
+  auto interrupted = [&R] { return internal::input_unchanged<Reeb_trim_result>(R); };
   if (!FeatureRecon::internal::report_progress(options.progress, 0.0)) return interrupted();
   Reeb_trim_result result;
   const std::size_t n = R.nodes.size();
