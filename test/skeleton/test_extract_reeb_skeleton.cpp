@@ -702,11 +702,12 @@ TEST(ExtractReebSkeleton, TheStagesAfterTheEmbeddingReportAndStop) {
   ASSERT_GT(num_vertices(full.graph), 0u);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   auto at = [](double x) { return 0.3 + 0.7 * x; };  // from points, the stages after the Rips graph: 0.3 to 1
-  auto reports = [&seen](double from, double to) {
-    return std::count_if(seen.begin(), seen.end(), [from, to](double t) { return t >= from && t <= to; });
+  auto reports_at = [&seen](double x) {
+    return std::count_if(seen.begin(), seen.end(), [x](double t) { return std::fabs(t - x) < 1e-12; });
   };
-  EXPECT_GE(reports(at(0.95), at(0.955)), 2);  // trimming: its start and end
-  EXPECT_GE(reports(at(0.955), at(0.96)), 2);  // pruning
+  EXPECT_EQ(reports_at(at(0.95)), 1);   // trimming's start (no repair: no second simplification)
+  EXPECT_EQ(reports_at(at(0.955)), 2);  // trimming's end, pruning's start
+  EXPECT_GE(reports_at(at(0.96)), 1);   // pruning's end
   // the merge: after its candidates and before its new graph (its end is 1)
   EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [&](double t) { return t > at(0.99) && t < 1; }), 2);
   std::size_t checked = 0;
