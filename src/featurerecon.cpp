@@ -68,7 +68,9 @@ const std::vector<Command>& commands() {
        "                   maximum with its up-fork) and loop_pairs (essential down-fork with the up-fork at "
        "the\n"
        "                   bottom of its thinnest loop), each a list of [birth, death] function values\n"
-       "  --quiet          no progress on standard error\n",
+       "  --quiet          no progress on standard error (the Reeb graph, the simplification and the "
+       "persistence\n"
+       "                   report there; standard output holds the report or the JSON object alone)\n",
        run_reeb},
       {"skeleton",
        "Skeleton graph of points, GPS tracks, a distance matrix or a graph (Rips, geodesic, Reeb graph, "

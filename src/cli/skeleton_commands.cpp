@@ -128,7 +128,8 @@ int run_reeb(const std::vector<std::string>& argv) {
   }
   if (args.has("persistence") && !args.has("json")) throw Usage_error("--persistence goes with --json");
   const io::Complex_file cf = io::read_complex(args.get("complex"));
-  const bool quiet = args.has("quiet") || args.has("json");
+  // Progress goes to standard error, so --json keeps standard output to the one object (like evaluate-map).
+  const bool quiet = args.has("quiet");
   Progress progress("reeb graph", quiet);
   Reeb_graph_options options;
   options.progress = std::ref(progress);
@@ -151,6 +152,15 @@ int run_reeb(const std::vector<std::string>& argv) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (delta < 0) progress.done();  // with --simplify: done before the simplification
+  Reeb_graph_persistence P;
+  if (args.has("persistence")) {
+    Progress persistence_progress("persistence", quiet);
+    Reeb_persistence_options persistence_options;
+    persistence_options.progress = std::ref(persistence_progress);
+    P = compute_reeb_graph_persistence(R, persistence_options);
+    persistence_progress.done(std::to_string(P.sublevel_branches.size() + P.superlevel_branches.size()) +
+                              " branch and " + std::to_string(P.loops.size()) + " loop pairs");
+  }
   const Simplicial_complex_2& K = cf.complex;
   std::ostringstream os;
   if (args.has("json")) {
@@ -165,7 +175,6 @@ int run_reeb(const std::vector<std::string>& argv) {
       os << ", \"simplified_by\": " << json_number(delta) << ", \"removed_branches\": " << removed_branches
          << ", \"removed_loops\": " << removed_loops;
     if (args.has("persistence")) {
-      const Reeb_graph_persistence P = compute_reeb_graph_persistence(R);
       auto list = [&os](const char* name,
                         std::initializer_list<const std::vector<Reeb_persistence_pair>*> parts) {
         os << ", \"" << name << "\": [";

@@ -133,6 +133,17 @@ endif()
 
 # Persistence pairs: the figure-eight has two loops, each a [birth, death] pair with birth > death.
 expect(reeb_persistence 0 "\"loops\": 2,.*\"branch_pairs\": \\[.*\"loop_pairs\": \\[\\[[-0-9.e]+, [-0-9.e]+\\], \\[[-0-9.e]+, [-0-9.e]+\\]\\]}" reeb --complex ${WORK}/fig8.txt --json --persistence)
+# Progress goes to standard error, under --json too (standard output is the JSON object alone); each stage
+# ends with its "done" line, the persistence's with its pair counts. --quiet silences it.
+expect(reeb_persistence_progress 0 "\"loop_pairs\": " reeb --complex ${WORK}/fig8.txt --json --persistence --simplify 0)
+if(NOT last_error MATCHES "reeb graph: done[^\n]*\n(.*\n)?simplification: done[^\n]*\n(.*\n)?persistence: done \\([0-9]+ branch and 2 loop pairs\\)"
+   OR NOT last_output MATCHES "^{[^\n]*}\n$")
+  message(SEND_ERROR "reeb_persistence_progress: stages missing on stderr or more than the object on stdout:\n${last_output}\n${last_error}")
+endif()
+expect(reeb_persistence_quiet 0 "\"loop_pairs\": " reeb --complex ${WORK}/fig8.txt --json --persistence --quiet)
+if(NOT last_error STREQUAL "")
+  message(SEND_ERROR "reeb_persistence_quiet: --quiet still wrote to stderr:\n${last_error}")
+endif()
 expect(persistence_without_json 2 "--persistence goes with --json" reeb --complex ${WORK}/fig8.txt --persistence)
 
 # evaluate-map on the shipped reference maps reproduces the published score (james vs crp, 15 m: F = .641).
