@@ -14,6 +14,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -217,4 +223,240 @@ TEST(SimplifyPathChoice, ARouteFromTheBottomOfAKeptLoopIsNotJoined) {
                                                                      {6, 10, {8, 7}},
                                                                      {6, 10, {9}},
                                                                      {10, 11, {}}}));
+}
+
+namespace {
+/// simplify_by_persistence() on a tree by brute force, from the documented rule alone. On a tree the path
+/// from the fork s into the elder's component is the one tree path from s towards the elder; pi1 is that
+/// path up to its first vertex at or beyond e's level, pi2 the tree path from s to e. Every point of a
+/// merging set (pi1 and pi2 of one merged pair) is identified with every other point of the set at the same
+/// height, all sets together. The quotient is computed on the tree subdivided at every vertex level: the
+/// points at a level and the pieces between two consecutive levels are classes of a union-find; with distinct
+/// values its graph is the Reeb graph once the regular classes (one piece above, one below) are chained into
+/// arcs. Returns false (no oracle) when a pair's path to the elder first crosses e's level outside the
+/// elder's part, where the documentation falls back on the nearest node beyond the level (a breadth-first
+/// choice).
+struct Tree_quotient {
+  std::set<Vertex_index> nodes;
+  /// (lower node, upper node, the vertices inside the arc)
+  std::multiset<std::tuple<Vertex_index, Vertex_index, std::set<Vertex_index>>> arcs;
+  std::size_t removed_branches = 0;
+};
+
+bool simplify_tree_by_brute_force(std::size_t n, const std::vector<Edge>& edges, const std::vector<double>& f,
+                                  double delta, Tree_quotient& out) {
+  std::vector<std::vector<Vertex_index>> adj(n);
+  for (const Edge& e : edges) {
+    adj[e[0]].push_back(e[1]);
+    adj[e[1]].push_back(e[0]);
+  }
+  // The tree path from a to b (vertices, a first).
+  auto tree_path = [&](Vertex_index a, Vertex_index b) {
+    std::vector<Vertex_index> parent(n, static_cast<Vertex_index>(n)), queue{a};
+    parent[a] = a;
+    for (std::size_t i = 0; i < queue.size(); ++i)
+      for (const Vertex_index y : adj[queue[i]])
+        if (parent[y] == n) parent[y] = queue[i], queue.push_back(y);
+    std::vector<Vertex_index> path{b};
+    while (path.back() != a) path.push_back(parent[path.back()]);
+    std::reverse(path.begin(), path.end());
+    return path;
+  };
+  std::vector<std::vector<Vertex_index>> merging_sets;  // as vertex paths: pi2 reversed, then pi1
+  for (const double sign : {1.0, -1.0}) {               // maxima (superlevel sweep), then minima
+    auto g = [&](Vertex_index v) { return sign * f[v]; };
+    std::vector<Vertex_index> order(n), root(n), top(n);
+    std::iota(order.begin(), order.end(), Vertex_index(0));
+    std::sort(order.begin(), order.end(), [&](Vertex_index a, Vertex_index b) { return g(a) > g(b); });
+    std::iota(root.begin(), root.end(), Vertex_index(0));
+    top = root;  // the extreme of each component
+    std::function<Vertex_index(Vertex_index)> find = [&](Vertex_index x) {
+      return root[x] == x ? x : root[x] = find(root[x]);
+    };
+    std::vector<char> swept(n, 0);
+    for (const Vertex_index s : order) {
+      swept[s] = 1;
+      std::vector<Vertex_index> parts;  // the components beyond s
+      for (const Vertex_index y : adj[s])
+        if (swept[y] && y != s) parts.push_back(find(y));
+      if (parts.size() >= 2) {
+        const Vertex_index elder =
+            top[*std::max_element(parts.begin(), parts.end(),
+                                  [&](Vertex_index a, Vertex_index b) { return g(top[a]) < g(top[b]); })];
+        for (const Vertex_index c : parts) {
+          const Vertex_index e = top[c];
+          if (e == elder || !(g(e) - g(s) <= delta)) continue;
+          ++out.removed_branches;
+          const std::vector<Vertex_index> pi2 = tree_path(s, e), to_elder = tree_path(s, elder);
+          std::size_t k = 1;
+          while (g(to_elder[k]) < g(e)) ++k;
+          for (std::size_t j = k; j < to_elder.size(); ++j)
+            if (g(to_elder[j]) < g(e)) return false;  // crossed outside the elder's part: the fallback
+          std::vector<Vertex_index> set(pi2.rbegin(), pi2.rend());
+          set.insert(set.end(), to_elder.begin() + 1, to_elder.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+          merging_sets.push_back(std::move(set));
+        }
+      }
+      for (const Vertex_index c : parts) {
+        const Vertex_index r = find(c), t = find(s);
+        if (r == t) continue;
+        if (g(top[r]) > g(top[t])) top[t] = top[r];
+        root[r] = t;
+      }
+    }
+  }
+  // Levels: the vertices by value. Points: vertex v is point v; edge k's point at level j (strictly
+  // between its ends) is point n + ... Pieces: edge k between levels j and j + 1.
+  std::vector<Vertex_index> by_value(n);
+  std::iota(by_value.begin(), by_value.end(), Vertex_index(0));
+  std::sort(by_value.begin(), by_value.end(), [&](Vertex_index a, Vertex_index b) { return f[a] < f[b]; });
+  std::vector<std::size_t> rank(n);
+  for (std::size_t j = 0; j < n; ++j) rank[by_value[j]] = j;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> point_id, piece_id;  // (edge, level)
+  std::vector<std::size_t> point_parent(n), piece_parent;
+  std::iota(point_parent.begin(), point_parent.end(), std::size_t(0));
+  std::map<std::pair<Vertex_index, Vertex_index>, std::size_t> edge_index;
+  std::vector<std::array<std::size_t, 2>> piece_ends;  // the points at its lower and upper level
+  auto point = [&](std::size_t k, std::size_t level) {
+    const Vertex_index a = edges[k][0], b = edges[k][1];
+    if (rank[a] == level) return std::size_t(a);
+    if (rank[b] == level) return std::size_t(b);
+    const auto [it, added] = point_id.emplace(std::make_pair(k, level), point_parent.size());
+    if (added) point_parent.push_back(it->second);
+    return it->second;
+  };
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const Vertex_index a = edges[k][0], b = edges[k][1];
+    edge_index[{std::min(a, b), std::max(a, b)}] = k;
+    for (std::size_t j = std::min(rank[a], rank[b]); j < std::max(rank[a], rank[b]); ++j) {
+      piece_id[{k, j}] = piece_parent.size();
+      piece_parent.push_back(piece_parent.size());
+      piece_ends.push_back({point(k, j), point(k, j + 1)});
+    }
+  }
+  std::function<std::size_t(std::vector<std::size_t>&, std::size_t)> find =
+      [&](std::vector<std::size_t>& parent, std::size_t x) {
+        return parent[x] == x ? x : parent[x] = find(parent, parent[x]);
+      };
+  for (const std::vector<Vertex_index>& set : merging_sets) {
+    std::map<std::size_t, std::size_t> point_at, piece_at;  // level -> the first point / piece of the set
+    for (std::size_t i = 0; i + 1 < set.size(); ++i) {
+      const std::size_t k = edge_index.at({std::min(set[i], set[i + 1]), std::max(set[i], set[i + 1])});
+      const std::size_t lo = std::min(rank[set[i]], rank[set[i + 1]]),
+                        hi = std::max(rank[set[i]], rank[set[i + 1]]);
+      for (std::size_t j = lo; j <= hi; ++j) {
+        const auto [it, added] = point_at.emplace(j, point(k, j));
+        if (!added) point_parent[find(point_parent, point(k, j))] = find(point_parent, it->second);
+        if (j == hi) continue;
+        const auto [pt, new_piece] = piece_at.emplace(j, piece_id.at({k, j}));
+        if (!new_piece)
+          piece_parent[find(piece_parent, piece_id.at({k, j}))] = find(piece_parent, pt->second);
+      }
+    }
+  }
+  // The quotient graph: each piece class once, between the classes of its ends.
+  std::map<std::size_t, std::pair<std::size_t, std::size_t>> class_ends;  // piece class -> (lower, upper)
+  for (std::size_t p = 0; p < piece_parent.size(); ++p)
+    class_ends[find(piece_parent, p)] = {find(point_parent, piece_ends[p][0]),
+                                         find(point_parent, piece_ends[p][1])};
+  std::map<std::size_t, std::vector<std::size_t>> up, down;  // point class -> piece classes above / below
+  for (const auto& [piece, ends] : class_ends) {
+    up[ends.first].push_back(piece);
+    down[ends.second].push_back(piece);
+  }
+  std::map<std::size_t, Vertex_index> vertex_of;  // point class -> its input vertex (at most one)
+  for (Vertex_index v = 0; v < n; ++v) EXPECT_TRUE(vertex_of.emplace(find(point_parent, v), v).second);
+  auto regular = [&](std::size_t c) { return up[c].size() == 1 && down[c].size() == 1; };
+  for (const auto& [c, v] : vertex_of)
+    if (!regular(c)) out.nodes.insert(v);
+  for (const auto& [c, v] : vertex_of) {
+    if (regular(c)) continue;
+    for (std::size_t piece : up[c]) {  // the arc that starts with this piece
+      std::set<Vertex_index> inside;
+      std::size_t end = class_ends[piece].second;
+      while (regular(end)) {
+        if (vertex_of.count(end)) inside.insert(vertex_of[end]);
+        piece = up[end].front();
+        end = class_ends[piece].second;
+      }
+      out.arcs.emplace(v, vertex_of.at(end), inside);
+    }
+  }
+  return true;
+}
+}  // namespace
+
+namespace {
+/// Checks simplify_by_persistence() on a tree against simplify_tree_by_brute_force(); returns the number of
+/// branches removed, or -1 when the brute force has no answer (the fallback).
+int expect_tree_quotient(std::size_t n, const std::vector<Edge>& edges, const std::vector<double>& f,
+                         double delta) {
+  Tree_quotient expected;
+  if (!simplify_tree_by_brute_force(n, edges, f, delta, expected)) return -1;
+  const auto c = make(n, edges, {}, f);
+  const Reeb_simplification_result S =
+      simplify_by_persistence(compute_augmented_reeb_graph(c.complex, c.f), delta);
+  Tree_quotient got;
+  for (const auto& node : S.graph.nodes) {
+    got.nodes.insert(node.vertex);
+    EXPECT_TRUE(node.members.empty());  // distinct values: no two vertices are identified
+  }
+  for (const auto& a : S.graph.arcs)
+    got.arcs.emplace(S.graph.nodes[a.lower].vertex, S.graph.nodes[a.upper].vertex,
+                     std::set<Vertex_index>(a.vertices.begin(), a.vertices.end()));
+  EXPECT_EQ(S.removed_branches, expected.removed_branches);
+  EXPECT_EQ(got.nodes, expected.nodes);
+  EXPECT_EQ(got.arcs, expected.arcs);
+  return static_cast<int>(expected.removed_branches);
+}
+}  // namespace
+
+// The documentation's claim "on a tree the result is that of the path through that fork": on random trees,
+// whatever routes the searches join, the result is the quotient by the tree paths (brute force above).
+// Distinct values; half of the vertices of each tree hang off a random earlier one, the rest make long
+// paths, so that forks of merged branches lie on each other's way to their elders.
+TEST(SimplifyPathChoice, OnTreesTheResultIsTheQuotientByTheTreePaths) {
+  std::mt19937 rng(20261206);
+  std::size_t compared = 0, joined_somewhere = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const std::size_t n = std::uniform_int_distribution<std::size_t>(2, 14)(rng);
+    std::vector<Edge> edges;
+    for (Vertex_index v = 1; v < n; ++v) {
+      const auto parent = std::bernoulli_distribution(0.5)(rng)
+                              ? v - 1
+                              : std::uniform_int_distribution<Vertex_index>(0, v - 1)(rng);
+      edges.push_back({parent, v});
+    }
+    std::vector<double> f(n);
+    std::vector<int> levels(40);
+    std::iota(levels.begin(), levels.end(), 0);
+    std::shuffle(levels.begin(), levels.end(), rng);
+    for (std::size_t v = 0; v < n; ++v) f[v] = levels[v];
+    const double delta = std::uniform_int_distribution<int>(0, 40)(rng) + 0.5;
+    const int removed = expect_tree_quotient(n, edges, f, delta);
+    if (::testing::Test::HasFailure()) FAIL() << "trial " << trial;
+    if (removed < 0) continue;
+    ++compared;
+    joined_somewhere += removed >= 2;
+  }
+  EXPECT_GT(compared, 2500u);
+  EXPECT_GT(joined_somewhere, 500u);
+}
+
+// A joinable route is one "with the same elder": on the tree 8 - 2 - 4 - 7 - 0 - 1, 0 - 6, 7 - 5 - 3 - 9
+// (f 0, 26, 11, 22, 7, 1, 12, 27, 25, 6), delta 24.5, the minimum 9 (f 6) dies at the down-fork 5 (f 27); its
+// elder is 8 (f 0), by the tree path 5 - 7 - 4 - 2 - 8. The search from 5 meets 7 (f 22) first, the fork of
+// the merged minimum 4 (f 11), whose route 7 - 0 (f 7) goes towards another elder, 1 (f 1). Joining it would
+// glue 9 onto the far side of 0, into 1's part. The result is the quotient by the tree paths: the minima 8
+// and 1 meet at 4, below the maximum 5.
+TEST(SimplifyPathChoice, ARouteTowardsAnotherElderIsNotJoined) {
+  const std::vector<Edge> edges{{0, 1}, {2, 4}, {3, 5}, {0, 6}, {5, 7}, {3, 9}, {7, 0}, {4, 7}, {2, 8}};
+  const std::vector<double> f{7, 1, 26, 25, 11, 27, 12, 22, 0, 6};
+  EXPECT_EQ(expect_tree_quotient(10, edges, f, 24.5), 4);
+  const auto c = make(10, edges, {}, f);
+  const Reeb_simplification_result S =
+      simplify_by_persistence(compute_augmented_reeb_graph(c.complex, c.f), 24.5);
+  EXPECT_EQ(node_vertices(S.graph), (std::vector<Vertex_index>{8, 1, 4, 5}));
+  EXPECT_EQ(arcs_by_vertices(S.graph),
+            (std::vector<Arc_by_vertices>{{1, 4, {0}}, {4, 5, {6, 7, 3, 2}}, {8, 4, {9}}}));
 }
