@@ -220,8 +220,13 @@ long long parse_id(const std::string& t, const std::string& path, std::size_t li
     return id;
   }
   const double x = parse_double(t, path, line, what.c_str());
-  if (x != std::floor(x) || std::fabs(x) > 9007199254740992.0)  // 2^53: beyond it doubles skip integers
-    throw Input_error(where(path, line) + what + " '" + t + "' is not an integer");
+  if (x != std::floor(x)) throw Input_error(where(path, line) + what + " '" + t + "' is not an integer");
+  // From 2^53 on, doubles skip integers: 9007199254740993.0 reads as 2^53, another id.
+  if (std::fabs(x) >= 9007199254740992.0)
+    throw Input_error(
+        where(path, line) + what + " '" + t +
+        "' is at least 2^53 in decimal notation, which cannot be read exactly (write the integer "
+        "without a point or exponent)");
   return static_cast<long long>(x);
 }
 }  // namespace

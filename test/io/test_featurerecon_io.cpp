@@ -2,6 +2,7 @@
 // Copyright (c) 2026 The FeatureRecon authors.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -358,4 +359,384 @@ TEST(PointCloudIo, WrittenCloudsReadBackBitForBitWithTheShortestDigits) {
       EXPECT_EQ(text.find("0.20710000000000001"), std::string::npos) << ext;
     }
   EXPECT_THROW(io::write_point_cloud(scratch_path("cloud.obj"), cloud, kept), io::Input_error);
+}
+
+// The exchange format holds exactly what its lines say: a header of two counts, vertex lines of four numbers,
+// simplices of distinct vertices, counts that are plain non-negative integers below the index range. A line
+// with more, or a count that does not fit, is refused with its line (or, at the end of the file, what was
+// read).
+TEST(ExchangeFormat, RefusesWhatTheFormatDoesNotHold) {
+  expect_error("2 1 7\n0 0 0 0\n0 0 0 1\n0 1\n", ":1: header must be 'n m'");
+  expect_error("1 0\n0 0 0 0 5\n", ":2: vertex 0 must be 'x y z f' (4 numbers), got 5");
+  expect_error("3 0\n0 0 0 0\n", "unexpected end of file after 1 of 3 vertex lines");
+  expect_error("3 1\n0 0 0 0\n0 0 0 1\n0 0 0 2\n0 1 0\n", ":5: simplex 0 repeats a vertex");
+  expect_error("3 1\n0 0 0 0\n0 0 0 1\n0 0 0 2\n0 1 1\n", ":5: simplex 0 repeats a vertex");
+  expect_error("2 1\n0 0 0 0\n0 0 0 1\n0 +1\n", ":4: '+1' is not a non-negative integer (vertex index)");
+  expect_error("2 99999999999999999999\n0 0 0 0\n0 0 0 1\n",
+               ":1: '99999999999999999999' is not a non-negative integer (number of simplices)");
+  // The largest 32-bit index is not a vertex (n vertices have indices up to n - 1).
+  expect_error("4294967295 0\n", ":1: too many vertices (4294967295)");
+}
+
+TEST(ExchangeFormat, WrittenNumbersReadBackExactly) {
+  // write_complex prints 17 significant digits: every position and value reads back bit for bit.
+  const std::vector<std::array<double, 3>> positions{{0.1 + 0.2, 1.0 / 3, -2e-310},
+                                                     {1e23, 447123.456, 5e-324}};
+  const std::vector<double> values{2.0 / 3, -0.1};
+  const std::string path = scratch_path("exact.txt");
+  io::write_complex(path, skeleton::make_simplicial_complex_2(2, {{0, 1}}, {}), positions, values);
+  const io::Complex_file c = io::read_complex(path);
+  EXPECT_EQ(c.positions, positions);
+  EXPECT_EQ(c.values, values);
+  EXPECT_EQ(c.complex.number_of_edges(), 1u);
+}
+
+TEST(PointFile, HexadecimalIsNotANumber) {
+  // strtod reads 0x10 as 16; the point files take decimals only.
+  expect_error("1 2\n0x10 1\n", ":2: '0x10' is not a number (coordinate)", false);
+}
+
+TEST(FormatDouble, FifteenDigitsWhenTheyReadBack) {
+  // The shortest of 15, 16 and 17 digits: 1e23 and the least denormal read back from 15, whose 16-digit forms
+  // are longer ("9.999999999999999e+22", "4.940656458412465e-324").
+  EXPECT_EQ(io::format_double(1e23), "1e+23");
+  EXPECT_EQ(io::format_double(4.9406564584124654e-324), "4.94065645841247e-324");
+}
+
+TEST(FileExtension, OnlyTheFileNameCounts) {
+  // A dot in a directory name is not an extension; extensions are lower case.
+  EXPECT_EQ(io::file_extension("/data.d/points"), "");
+  EXPECT_EQ(io::file_extension("/data.d/cloud.XYZ"), "xyz");
+  EXPECT_EQ(io::file_extension("cloud.tar.PLY"), "ply");
+}
+
+// Map files: fields are trimmed (spaces, tabs, the CR of a CRLF file), '#' starts a comment and blank lines
+// are skipped; vertex_lines are the lines of the file.
+TEST(MapFile, FieldsAreTrimmedAndCommentsSkipped) {
+  const std::string v = write_temp("trim_v.txt", "# id,x,y\r\n0, 1.5 ,\t2\r\n\r\n1,3,4  # corner\r\n");
+  const io::Map_file m = io::read_map(v, write_temp("trim_e.txt", " 5 , 1 , 0 , 1\r\n"));
+  EXPECT_EQ(m.positions, (std::vector<std::array<double, 2>>{{1.5, 2}, {3, 4}}));
+  EXPECT_EQ(m.edges, (std::vector<std::array<std::uint32_t, 2>>{{1, 0}}));
+  EXPECT_EQ(m.vertex_lines, (std::vector<std::size_t>{2, 4}));
+}
+
+TEST(MapFile, RepeatedVertexIdsAndInexactIdsAreRefused) {
+  auto error_of = [](const std::string& vertices, const std::string& edges) {
+    try {
+      io::read_map(write_temp("rep_v.txt", vertices), write_temp("rep_e.txt", edges));
+    } catch (const io::Input_error& x) {
+      return std::string(x.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of("0,0,0\n1,1,1\n0,2,2\n", "").find("rep_v.txt:3: vertex id 0 repeated"),
+            std::string::npos)
+      << error_of("0,0,0\n1,1,1\n0,2,2\n", "");
+  // 9007199254740993.0 reads as the double 2^53 (integers beyond 2^53 are not all doubles): taken as the id
+  // 9007199254740992 it named another vertex. A decimal id is accepted only below 2^53, where it is exact.
+  const std::string big = "9007199254740993.0,0,0\n9007199254740992,1,0\n";
+  EXPECT_NE(error_of(big, "").find(
+                "rep_v.txt:1: vertex id '9007199254740993.0' is at least 2^53 in decimal notation"),
+            std::string::npos)
+      << error_of(big, "");
+  EXPECT_EQ(
+      error_of("9007199254740991.0,0,0\n9007199254740990,1,0\n", "0,9007199254740991,9007199254740990\n"),
+      "no error");
+}
+
+TEST(MapFile, SelfLoopsAndZeroLengthEdgesAreCountedWithTheirFirstLine) {
+  // Vertices 1 and 2 share a position; edges 1 and 3 are self-loops, 2 and 4 have length zero.
+  const io::Map_file m = io::read_map(write_temp("z_v.txt", "0,0,0\n1,10,0\n2,10,0\n"),
+                                      write_temp("z_e.txt", "0,0,1\n1,0,0\n2,1,2\n3,1,1\n4,2,1\n"));
+  EXPECT_EQ(m.edges.size(), 5u);  // all kept
+  EXPECT_EQ(m.self_loops, 2u);
+  EXPECT_EQ(m.first_self_loop_line, 2u);
+  EXPECT_EQ(m.zero_length_edges, 2u);  // self-loops are not counted again
+  EXPECT_EQ(m.first_zero_length_line, 3u);
+}
+
+// A track file: trips in order of first appearance, a missing time the line number, and each fix's line.
+TEST(InputFiles, TrackFileOrigins) {
+  const std::string path = write_temp("origins.txt", "# trips\ncar9 0 0\ncar2 1 1\n\ncar9 2 2\n");
+  io::Track_origin origin;
+  const auto trips = io::read_track_trips(path, &origin);
+  EXPECT_EQ(origin.trip_ids, (std::vector<std::string>{"car9", "car2"}));
+  ASSERT_EQ(trips.size(), 2u);
+  EXPECT_EQ(trips[0], (std::vector<std::array<double, 3>>{{0, 0, 2}, {2, 2, 5}}));
+  EXPECT_EQ(origin.where(0, 1), path + ":5");
+  EXPECT_EQ(origin.where(1, 0), path + ":3");
+}
+
+TEST(InputFiles, OnlyTheFirstLineLosesAByteOrderMark) {
+  // An editor's byte-order mark begins the file; further on the bytes are data: a trip id that begins with
+  // them is another trip than the id without them.
+  io::Track_origin origin;
+  const auto trips = io::read_track_trips(write_temp("bom_trips.txt",
+                                                     "\xEF\xBB\xBF"
+                                                     "a 0 0\n\xEF\xBB\xBF"
+                                                     "a 1 1\na 2 2\n"),
+                                          &origin);
+  EXPECT_EQ(origin.trip_ids, (std::vector<std::string>{"a",
+                                                       "\xEF\xBB\xBF"
+                                                       "a"}));
+  ASSERT_EQ(trips.size(), 2u);
+  EXPECT_EQ(trips[0], (std::vector<std::array<double, 3>>{{0, 0, 1}, {2, 2, 3}}));
+}
+
+// Trip files in natural order: digit runs compare as numbers with leading zeros ignored (trip_002 before
+// trip_10), names equal as numbers in byte order (trip_01 before trip_1); a one-character name is a trip too.
+TEST(InputFiles, TripFilesInNaturalOrder) {
+  const std::string dir = scratch_path("natural");
+  ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
+  const std::vector<std::string> names{"trip_10", "trip_002", "trip_1", "7", "trip_01"};
+  for (const std::string& name : names) std::ofstream(dir + "/" + name + ".txt") << "0 0\n";
+  io::Track_origin origin;
+  const auto trips = io::read_track_trips(dir, &origin);
+  for (const std::string& name : names) std::remove((dir + "/" + name + ".txt").c_str());
+  ::rmdir(dir.c_str());
+  EXPECT_EQ(origin.trip_ids, (std::vector<std::string>{"7", "trip_01", "trip_1", "trip_002", "trip_10"}));
+  EXPECT_EQ(trips.size(), 5u);
+}
+
+TEST(WriteTextFile, ANewFileGetsTheUsualPermissions) {
+  // The temporary is created private (0600); the file in place has what a new file gets: 0666 less the umask.
+  const mode_t mask = ::umask(022);
+  const std::string path = scratch_path("mode.txt");
+  io::write_text_file(path, "x\n");
+  ::umask(mask);
+  struct stat st {};
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0644u);
+}
+
+TEST(WriteTextFile, ALinkIsWrittenThroughAndAFifoInPlace) {
+  // A symbolic link stays a link, its target gets the text.
+  const std::string target = write_temp("target.txt", "old\n"), link = scratch_path("link.txt");
+  ASSERT_EQ(::symlink(target.c_str(), link.c_str()), 0);
+  io::write_text_file(link, "new\n");
+  struct stat st {};
+  ASSERT_EQ(::lstat(link.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode));
+  std::string line;
+  std::getline(std::ifstream(target), line);
+  EXPECT_EQ(line, "new");
+  // A FIFO is written into, not replaced by a file (a reader is open, and the text fits in the pipe).
+  const std::string fifo = scratch_path("fifo.txt");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  io::write_text_file(fifo, "through\n");
+  char buffer[32] = {};
+  const ssize_t n = ::read(reader, buffer, sizeof buffer - 1);
+  ::close(reader);
+  EXPECT_EQ(std::string(buffer, n > 0 ? std::size_t(n) : 0), "through\n");
+  ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+}
+
+namespace {
+/// Two nodes and one arc from node 0 to node 1 along `polyline` (whose ends are the nodes' positions).
+skeleton::Skeleton_graph one_arc(const std::vector<std::array<double, 3>>& polyline) {
+  skeleton::Skeleton_graph g(2);
+  g[0].position = polyline.front();
+  g[0].type = skeleton::minimum;
+  g[1].position = polyline.back();
+  g[1].value = 2.5;
+  g[1].type = skeleton::maximum;
+  skeleton::Skeleton_arc arc;
+  arc.polyline = polyline;
+  arc.members = {0, 1, 2, 3};  // a count other than the polyline's points
+  arc.upper = 1;
+  boost::add_edge(0, 1, arc, g);
+  return g;
+}
+
+std::string text_of(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+}  // namespace
+
+TEST(SkeletonFiles, GraphMLGeoJsonAndPlyHoldTheGraph) {
+  const skeleton::Skeleton_graph g = one_arc({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}});
+  const std::string graphml = scratch_path("g.graphml"), geojson = scratch_path("g.geojson"),
+                    ply = scratch_path("g.ply");
+  io::write_skeleton_graphml(graphml, g);
+  io::write_skeleton_geojson(geojson, g);
+  io::write_skeleton_ply(ply, g);
+  std::string text = text_of(graphml);
+  EXPECT_NE(
+      text.find("<node id=\"n1\"><data key=\"x\">2</data><data key=\"y\">0</data><data key=\"z\">0</data>"
+                "<data key=\"value\">2.5</data><data key=\"type\">maximum</data></node>"),
+      std::string::npos)
+      << text;
+  // The edge names its nodes by their ids, its polyline is "x y z;x y z;...", members the count of its
+  // members.
+  EXPECT_NE(text.find("<edge id=\"e0\" source=\"n0\" target=\"n1\"><data key=\"polyline\">0 0 0;1 1 0;2 0 0"
+                      "</data><data key=\"members\">4</data></edge>"),
+            std::string::npos)
+      << text;
+  text = text_of(geojson);
+  EXPECT_NE(
+      text.find("{\"type\": \"LineString\", \"coordinates\": [[0, 0], [1, 1], [2, 0]]}, \"properties\": "
+                "{\"kind\": \"arc\", \"members\": 4}}"),
+      std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\"coordinates\": [2, 0]}, \"properties\": {\"kind\": \"node\", \"type\": \"maximum\", "
+                      "\"value\": 2.5}}"),
+            std::string::npos)
+      << text;
+  // PLY: the nodes are vertices 0 and 1, the arc's interior point vertex 2; edges by zero-based vertex index.
+  text = text_of(ply);
+  EXPECT_NE(text.find("element vertex 3\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("element edge 2\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("end_header\n0 0 0\n2 0 0\n1 1 0\n0 2\n2 1\n"), std::string::npos) << text;
+}
+
+TEST(SkeletonFiles, GeoJsonCutsAtTheAntimeridianOnlyBeyond180Degrees) {
+  auto lines_of = [](const std::vector<std::array<double, 3>>& polyline) {
+    const std::string path = scratch_path("ll.geojson");
+    io::write_skeleton_geojson(path, one_arc(polyline), true);
+    const std::string text = text_of(path);
+    const std::size_t from = text.find("\"geometry\": "), to = text.find(", \"properties\"");
+    return from == std::string::npos || to == std::string::npos ? text
+                                                                : text.substr(from + 12, to - from - 12);
+  };
+  // From 179 E to 178 W: across the antimeridian, cut at the latitude a third of the way (1 of 3 degrees).
+  EXPECT_EQ(
+      lines_of({{179, 10, 0}, {-178, 13, 0}}),
+      "{\"type\": \"MultiLineString\", \"coordinates\": [[[179, 10], [180, 11]], [[-180, 11], [-178, 13]]]}");
+  // A step of exactly 180 degrees is not "more than 180": not cut.
+  EXPECT_EQ(lines_of({{0, 0, 0}, {180, 5, 0}}),
+            "{\"type\": \"LineString\", \"coordinates\": [[0, 0], [180, 5]]}");
+  // A line that starts on +180 and goes east starts at -180: a part of one position is no line.
+  EXPECT_EQ(lines_of({{180, 0, 0}, {-170, 0, 0}}),
+            "{\"type\": \"LineString\", \"coordinates\": [[-180, 0], [-170, 0]]}");
+}
+
+TEST(SkeletonPicture, MarksAreScaledToTheFeatureSizeAndNonFinitePointsLeftOut) {
+  const skeleton::Skeleton_graph g = one_arc({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}});
+  const std::string path = scratch_path("marks.svg");
+  // No feature size: arcs 2 pixels wide, nodes of radius 3.
+  io::write_skeleton_picture(path, {}, g);
+  std::string text = text_of(path);
+  EXPECT_NE(text.find("stroke-width=\"2\""), std::string::npos) << text;
+  EXPECT_NE(text.find(" r=\"3\" fill=\"black\""), std::string::npos) << text;
+  // 2 units on 100 pixels: a feature size of 0.06 is 3 pixels, arcs and nodes a half of it.
+  io::write_skeleton_picture(path, {}, g, {0.06, 100});
+  text = text_of(path);
+  EXPECT_NE(text.find("stroke-width=\"1.5\""), std::string::npos) << text;
+  EXPECT_NE(text.find(" r=\"1.5\" fill=\"black\""), std::string::npos) << text;
+  // Points with a non-finite coordinate are neither drawn nor part of the page's extent.
+  const double inf = HUGE_VAL;
+  io::write_skeleton_picture(path, {{0, 0}, {1, 1}, {inf, 0}, {std::nan(""), 1}}, skeleton::Skeleton_graph(),
+                             {1, 100});
+  text = text_of(path);
+  EXPECT_NE(text.find("viewBox=\"0 0 120.00 120.00\""), std::string::npos) << text;
+  EXPECT_EQ(text.find("<circle", text.find("<circle", text.find("<circle") + 1) + 1), std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("inf"), std::string::npos) << text;
+  EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+}
+
+TEST(SkeletonFiles, MapComparisonCsvNamesEachPartner) {
+  skeleton::Map_comparison_result r;
+  r.ground_truth_sample_list = {{{0, 0}, 90}, {{1.5, 0}, 270}};
+  r.reconstruction_sample_list = {{{0, 0.25}, 45}};
+  r.ground_truth_partner = {0, -1};
+  r.reconstruction_partner = {0};
+  const std::string path = scratch_path("samples.csv");
+  io::write_map_comparison_csv(path, r);
+  EXPECT_EQ(text_of(path),
+            "map,index,x,y,bearing,partner\ntruth,0,0,0,90,0\ntruth,1,1.5,0,270,-1\nreconstruction,0,0,0.25,"
+            "45,0\n");
+}
+
+namespace {
+/// The message of reading `text` as the point cloud `name` (its extension the format), or "read".
+std::string cloud_error(const std::string& name, const std::string& text) {
+  const std::string path = write_temp(name, text);
+  try {
+    io::read_point_cloud(path);
+  } catch (const io::Input_error& e) {
+    return e.what();
+  }
+  return "read";
+}
+}  // namespace
+
+// Each refusal of a point-cloud reader names the file, the line of a text file and the problem.
+TEST(PointCloudIo, XyzAndOffLinesHoldWhatTheirHeaderSays) {
+  EXPECT_NE(cloud_error("four.xyz", "0 0 0 1\n").find("four.xyz:1: expected 3 or 6 numbers per line"),
+            std::string::npos);
+  EXPECT_NE(cloud_error("ragged.xyz", "0 0 0\n1 1 1 0 0 1\n")
+                .find("ragged.xyz:2: point 1 has 6 numbers, the first point has 3"),
+            std::string::npos);
+  EXPECT_NE(cloud_error("word.xyz", "0 0 0\n1 abc 1\n").find("word.xyz:2: 'abc' is not a number (point 1)"),
+            std::string::npos);
+  EXPECT_NE(cloud_error("normal.xyz", "0 0 0 0 0 1\n1 1 1 nan 0 1\n")
+                .find("normal.xyz:2: point 1 has a normal with a non-finite component"),
+            std::string::npos);
+  EXPECT_NE(cloud_error("none.xyz", "# nothing\n").find("none.xyz: no points"), std::string::npos);
+  EXPECT_NE(
+      cloud_error("4.off", "4OFF\n1 0 0\n0 0 0 0\n").find("4.off:1: '4OFF' is not a supported OFF header"),
+      std::string::npos);
+  EXPECT_NE(cloud_error("b.off", "OFF BINARY\n").find("b.off:1: binary OFF is not supported"),
+            std::string::npos);
+  EXPECT_NE(
+      cloud_error("long.off", "OFF\n1 0 0\n0 0 0 5\n").find("long.off:3: vertex 0 must be 'x y z', got 4"),
+      std::string::npos);
+  EXPECT_NE(cloud_error("minus.off", "OFF\n-1 0 0\n").find("minus.off:2: '-1' is not a vertex count"),
+            std::string::npos);
+  // The lines of the points of a text file, for messages about them.
+  const std::string path = write_temp("lines.xyz", "# header\n0 0 0\n\n1 1 1\n");
+  const io::Point_cloud c = io::read_point_cloud(path);
+  EXPECT_EQ(c.lines, (std::vector<std::size_t>{2, 4}));
+  EXPECT_EQ(c.locate(path, 1), path + ":4: point 1");
+}
+
+TEST(PointCloudIo, PlyHeadersAndBinaryDataAreChecked) {
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n";
+  EXPECT_NE(cloud_error("noz.ply", head + "end_header\n0 0\n").find("(the vertex element has no property z)"),
+            std::string::npos);
+  EXPECT_NE(cloud_error("nx.ply", head + "property float z\nproperty float nx\nend_header\n0 0 0 1\n")
+                .find("(the vertex element has only some of the normal properties nx, ny, nz)"),
+            std::string::npos);
+  EXPECT_NE(
+      cloud_error("open.ply", head + "property float z\n0 0 0\n").find("(the header has no end_header line)"),
+      std::string::npos);
+  // Binary: data exactly as long as the header declares is read; list counts in the file's byte order.
+  auto binary = [](bool big, const std::string& list_type, std::uint16_t count) {
+    std::string s = std::string("ply\nformat binary_") + (big ? "big" : "little") +
+                    "_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 1\nproperty list " +
+                    list_type + " int vertex_indices\nend_header\n";
+    auto put = [&](std::uint32_t v, int size) {
+      for (int k = 0; k < size; ++k) s += char((v >> (8 * (big ? size - 1 - k : k))) & 0xff);
+    };
+    const float xyz[6] = {0, 1, 2, 3, 4, 5};
+    for (const float f : xyz) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &f, 4);
+      put(bits, 4);
+    }
+    put(count, list_type == "ushort" ? 2 : 1);
+    for (int k = 0; k < 2; ++k) put(std::uint32_t(k), 4);
+    return s;
+  };
+  for (const bool big : {true, false}) {
+    const std::string path = write_temp(big ? "big.ply" : "little.ply", binary(big, "ushort", 2));
+    const io::Point_cloud c = io::read_point_cloud(path);
+    EXPECT_EQ(c.points, (std::vector<std::array<double, 3>>{{0, 1, 2}, {3, 4, 5}})) << big;
+  }
+  EXPECT_NE(cloud_error("negative.ply", binary(false, "char", 0xff))
+                .find("(element face row 0: list vertex_indices has a negative count)"),
+            std::string::npos)
+      << cloud_error("negative.ply", binary(false, "char", 0xff));
+}
+
+TEST(PointCloudIo, AFailedWriteIsAnError) {
+  io::Point_cloud cloud;
+  cloud.points = {{0, 0, 0}};
+  EXPECT_THROW(io::write_point_cloud("/nonexistent_dir/cloud.xyz", cloud, {0}), io::Input_error);
 }

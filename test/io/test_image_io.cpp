@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -12,9 +13,12 @@
 #include <vector>
 
 #include <png.h>
+// after <cstdio>: jpeglib.h needs FILE and size_t
+#include <jpeglib.h>
 
 #include "io/featurerecon_io.h"
 #include "io/image_io.h"
+#include "io/picture.h"
 #include "io/scratch_file.h"
 
 using namespace FeatureRecon;
@@ -208,5 +212,160 @@ TEST(ImageIo, TransparencyIsCompositedOntoWhite) {
       }
     EXPECT_GT(at(3, 2), 40);  // composited in linear light: sRGB 188 for half coverage
     EXPECT_LT(at(3, 2), 230);
+  }
+}
+
+namespace {
+/// The message of reading `bytes` as the image file `name`, or "read".
+std::string image_error(const std::string& name, const std::string& bytes) {
+  const std::string path = scratch(name);
+  std::ofstream(path, std::ios::binary) << bytes;
+  try {
+    io::read_image(path);
+  } catch (const io::Input_error& e) {
+    return e.what();
+  }
+  return "read";
+}
+}  // namespace
+
+// PGM/PPM: 8-bit maximum values only, pixel values within the maximum, sizes positive; values of a smaller
+// maximum are rescaled to 0..255 rounded to nearest; ASCII data needs a digit and a separator a value but the
+// last.
+TEST(ImageIo, PnmHeadersAndValuesAreChecked) {
+  EXPECT_NE(
+      image_error("deep.pgm", "P5\n1 1\n65535\n\x01\x02").find("unsupported PGM/PPM maximum value 65535"),
+      std::string::npos);
+  EXPECT_NE(image_error("over.pgm", std::string("P5\n2 1\n100\n\x32\xc8"))
+                .find("pixel value 200 at byte 1 exceeds the maximum value 100"),
+            std::string::npos);
+  EXPECT_NE(image_error("zero.pgm", "P5\n0 1\n255\n").find("the width must be a positive integer, got '0'"),
+            std::string::npos);
+  const std::string pgm = scratch("seven.pgm");
+  std::ofstream(pgm) << "P2\n3 1\n7\n2 7 0";  // exactly 2n - 1 bytes after the header
+  const io::Image im = io::read_image(pgm);
+  EXPECT_EQ(std::vector<int>(im.data.begin(), im.data.end()),
+            (std::vector<int>{73, 255, 0}));  // 2 * 255 / 7 = 72.9
+}
+
+TEST(ImageIo, GreyAndColourAreConvertedOnWriting) {
+  // RGB written as PGM is its luma, as to_grey gives it (rounded: (0, 1, 0) is 0.587, grey 1); grey written
+  // as PPM has three equal channels.
+  io::Image rgb = gradient(3);
+  rgb.data[0] = 0, rgb.data[1] = 1, rgb.data[2] = 0;
+  const std::string pgm = scratch("luma.pgm");
+  io::write_image(pgm, rgb);
+  const io::Image grey = io::read_image(pgm);
+  EXPECT_EQ(grey.channels, 1);
+  EXPECT_EQ(grey.data, io::to_grey(rgb).data);
+  EXPECT_EQ(grey.data[0], 1);
+  // BT.601 weights: red 0.299, blue 0.114.
+  io::Image red;
+  red.width = red.height = 1;
+  red.channels = 3;
+  red.data = {255, 0, 0};
+  EXPECT_EQ(io::to_grey(red).data, (std::vector<std::uint8_t>{76}));
+  const std::string ppm = scratch("expanded.ppm");
+  const io::Image g = gradient(1);
+  io::write_image(ppm, g);
+  const io::Image c = io::read_image(ppm);
+  ASSERT_EQ(c.channels, 3);
+  for (std::size_t i = 0; i < g.data.size(); ++i)
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(c.data[3 * i + k], g.data[i]) << i << " " << k;
+  // What is not an image of 1 or 3 channels and its size is refused.
+  io::Image bad = gradient(1);
+  bad.channels = 2;
+  bad.data.resize(bad.data.size() * 2);  // the size of 2 channels
+  EXPECT_THROW(io::write_image(scratch("bad.pgm"), bad), io::Input_error);
+  bad = gradient(1);
+  bad.width = 0;
+  bad.data.clear();
+  EXPECT_THROW(io::write_image(scratch("bad.pgm"), bad), io::Input_error);
+}
+
+TEST(ImageIo, JpegQualityAndTruncation) {
+  const std::string path = scratch("q.jpg");
+  io::write_image(path, gradient(3, 2, 3));
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes(std::istreambuf_iterator<char>(in), {});
+  // Quality 95: libjpeg scales the standard luminance table (DC 16) to 10 %, DC 2 (quality 75 gives 8).
+  const std::size_t dqt = bytes.find("\xff\xdb");
+  ASSERT_NE(dqt, std::string::npos);
+  EXPECT_EQ(int(static_cast<unsigned char>(bytes[dqt + 5])), 2);
+  // A file cut in its compressed data is an error, not a picture padded with grey.
+  const std::size_t sos = bytes.find("\xff\xda");
+  ASSERT_NE(sos, std::string::npos);
+  const std::string cut = bytes.substr(0, sos + (bytes.size() - sos) / 2);
+  EXPECT_NE(image_error("cut.jpg", cut).find("cut.jpg: not a readable JPEG ("), std::string::npos)
+      << image_error("cut.jpg", cut);
+  // Between 2^30 and 2^31 pixels: beyond the cap.
+  std::string big = bytes;
+  const std::size_t sof = big.find("\xff\xc0");
+  ASSERT_NE(sof, std::string::npos);
+  for (const std::size_t at : {sof + 5, sof + 7})
+    big[at] = char(40000 >> 8), big[at + 1] = char(40000 & 0xff);
+  EXPECT_NE(image_error("big.jpg", big).find("big.jpg: a 40000 x 40000 JPEG is beyond 2^30 pixels"),
+            std::string::npos)
+      << image_error("big.jpg", big);
+}
+
+TEST(ImageIo, CmykJpegIsRefused) {
+  const std::string path = scratch("cmyk.jpg");
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(f, nullptr);
+  jpeg_compress_struct info;
+  jpeg_error_mgr error;
+  info.err = jpeg_std_error(&error);
+  jpeg_create_compress(&info);
+  jpeg_stdio_dest(&info, f);
+  info.image_width = info.image_height = 8;
+  info.input_components = 4;
+  info.in_color_space = JCS_CMYK;
+  jpeg_set_defaults(&info);
+  jpeg_start_compress(&info, TRUE);
+  std::vector<JSAMPLE> row(8 * 4, 100);
+  JSAMPROW rows[1] = {row.data()};
+  while (info.next_scanline < info.image_height) jpeg_write_scanlines(&info, rows, 1);
+  jpeg_finish_compress(&info);
+  jpeg_destroy_compress(&info);
+  std::fclose(f);
+  try {
+    io::read_image(path);
+    FAIL() << "a CMYK JPEG was read";
+  } catch (const io::Input_error& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": CMYK JPEG images are not supported");
+  }
+}
+
+// Pictures: "#rrggbb", black or white; pages of 0 to 65536 pixels; the raster ceil(width) x ceil(height),
+// each pixel covered by the distance of its centre to the shape (a disc's edge through a centre: half), a
+// polyline's joints drawn once.
+TEST(Picture, ColoursPagesAndCoverage) {
+  io::Picture page(10.5, 5.2);
+  EXPECT_THROW(page.disc(1, 1, 1, "#12345g"), std::invalid_argument);
+  EXPECT_THROW(page.disc(1, 1, 1, "red"), std::invalid_argument);
+  EXPECT_THROW(io::Picture(0, 10), std::invalid_argument);
+  EXPECT_THROW(io::Picture(10, 70000), std::invalid_argument);
+  const io::Image blank = page.raster();
+  EXPECT_EQ(blank.width, 11);
+  EXPECT_EQ(blank.height, 6);
+  io::Picture disc(20, 20);
+  disc.disc(10.5, 10.5, 3, "black");
+  const io::Image d = disc.raster();
+  EXPECT_EQ(d.at(10, 10), 0);
+  EXPECT_EQ(d.at(13, 10), 128);  // centre (13.5, 10.5) on the edge
+  EXPECT_EQ(d.at(15, 10), 255);
+  io::Picture bend(20, 20), segment(20, 20);
+  bend.polyline({{2, 10}, {10, 10}, {10, 2}}, 1, "black");
+  segment.line(2, 10, 10, 10, 1, "black");
+  const int joint = bend.raster().at(10, 10);
+  EXPECT_LT(joint, 255);
+  EXPECT_EQ(joint, segment.raster().at(10, 10));  // both segments reach it, as far as each alone
+  try {
+    page.write(scratch("page.gif"));
+    FAIL() << "wrote a .gif";
+  } catch (const io::Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown picture format '.gif' (expected .svg, "), std::string::npos)
+        << e.what();
   }
 }
