@@ -22,8 +22,9 @@ inline unsigned thread_count(unsigned requested) {
 }
 
 /// Calls body(begin, end) on consecutive blocks covering [0, n): one block per thread, the first on the
-/// calling thread. Runs inline when n < min_per_thread * 2 or with one thread. The first exception thrown by
-/// a block is rethrown after every thread has joined.
+/// calling thread. Runs inline when n < min_per_thread * 2 or with one thread. After every thread has joined,
+/// the exception of the lowest block that threw (by position, whatever the timing) is rethrown; the others
+/// are dropped.
 template <class Body>
 void parallel_blocks(std::size_t n, unsigned threads, std::size_t min_per_thread, Body body) {
   const std::size_t t = std::min<std::size_t>(
