@@ -39,6 +39,8 @@
 #include <malloc.h>
 #endif
 
+#include "test_utilities.h"
+
 namespace {
 
 namespace fi = FeatureRecon::internal;
@@ -569,6 +571,31 @@ TEST(CoreInternals, PropertyMapTraitsAndPointTraits) {
   EXPECT_EQ(pa.coordinate({0.5f, 8}, 1), 8.0);
   static_assert(FeatureRecon::internal::Is_point_coordinate_traits<
                 FeatureRecon::Point_coordinate_traits<K::Point_3>>::value);
+}
+
+// ---- the tests' own helpers (test_utilities.h)
+// -------------------------------------------------------------
+
+// throws_with() holds only for an exception of the given type whose message contains the part; it says what
+// happened otherwise. thrown_message() gives the message or "no exception".
+TEST(TestUtilities, ThrowsWithFailsUnlessTheMessageContainsThePart) {
+  using FeatureRecon::test::thrown_message;
+  using FeatureRecon::test::throws_with;
+  auto refuse = [] { throw std::invalid_argument("f: x[3] is NaN"); };
+  EXPECT_TRUE(throws_with<std::invalid_argument>(refuse, "x[3]"));
+  EXPECT_TRUE(throws_with<std::logic_error>(refuse, ""));  // a base class catches it
+  const ::testing::AssertionResult other = throws_with<std::invalid_argument>(refuse, "x[4]");
+  EXPECT_FALSE(other);
+  EXPECT_STREQ(other.message(), "the message \"f: x[3] is NaN\" does not contain \"x[4]\"");
+  const ::testing::AssertionResult none = throws_with<std::invalid_argument>([] {}, "x[3]");
+  EXPECT_FALSE(none);
+  EXPECT_STREQ(none.message(), "no exception; expected one whose message contains \"x[3]\"");
+  EXPECT_THROW((void)throws_with<std::invalid_argument>([] { throw std::runtime_error("r"); }, "r"),
+               std::runtime_error);  // another type is not caught
+  EXPECT_EQ(thrown_message<std::invalid_argument>(refuse), "f: x[3] is NaN");
+  EXPECT_EQ(thrown_message<std::invalid_argument>([] {}), "no exception");
+  EXPECT_THROW((void)thrown_message<std::invalid_argument>([] { throw std::runtime_error("r"); }),
+               std::runtime_error);
 }
 
 }  // namespace

@@ -23,6 +23,10 @@
 #include "io/point_cloud_io.h"
 #include "io/scratch_file.h"
 #include "io/skeleton_io.h"
+#include "test_utilities.h"
+
+using FeatureRecon::test::thrown_message;
+using FeatureRecon::test::throws_with;
 
 using namespace FeatureRecon;
 
@@ -37,15 +41,14 @@ std::string write_temp(const std::string& name, const std::string& text) {
 
 void expect_error(const std::string& text, const std::string& part, bool complex = true) {
   const std::string path = write_temp("bad_input.txt", text);
-  try {
-    if (complex)
-      io::read_complex(path);
-    else
-      io::read_points(path);
-    ADD_FAILURE() << "expected an error containing '" << part << "'";
-  } catch (const io::Input_error& e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<io::Input_error>(
+      [&] {
+        if (complex)
+          io::read_complex(path);
+        else
+          io::read_points(path);
+      },
+      part));
 }
 }  // namespace
 
@@ -81,12 +84,9 @@ TEST(ExchangeFormat, ErrorsNameTheLine) {
   expect_error("2 2\n0 0 0 0\n0 0 0 1\n0 1\n", "unexpected end of file after 1 of 2 simplex lines");
   expect_error("2 1\n0 0 0 0\n0 0 0 1\n0 1\n1 0\n", ":5: unexpected content");
   EXPECT_THROW(io::read_complex("/nonexistent/file"), io::Input_error);
-  try {  // an empty name is said to be one (the message began ': cannot open')
-    io::read_complex("");
-    ADD_FAILURE() << "no error";
-  } catch (const io::Input_error& e) {
-    EXPECT_STREQ(e.what(), "an empty file name was given for reading");
-  }
+  // An empty name is said to be one (the message began ': cannot open').
+  EXPECT_EQ(thrown_message<io::Input_error>([] { io::read_complex(""); }),
+            "an empty file name was given for reading");
 }
 
 TEST(PointFile, AnyDimensionWithComments) {
@@ -153,12 +153,7 @@ TEST(MapFile, IdsAreIntegers) {
       io::read_map(v, write_temp("ids_e.txt", "0,9007199254740992,9007199254740993\n1,7,9007199254740992\n"));
   EXPECT_EQ(m.edges, (std::vector<std::array<std::uint32_t, 2>>{{1, 0}, {2, 1}}));
   auto error_of = [&](const std::string& edges) {
-    try {
-      io::read_map(v, write_temp("ids_bad.txt", edges));
-    } catch (const io::Input_error& x) {
-      return std::string(x.what());
-    }
-    return std::string("no error");
+    return thrown_message<io::Input_error>([&] { io::read_map(v, write_temp("ids_bad.txt", edges)); });
   };
   EXPECT_NE(error_of("0,7,1.9\n").find("ids_bad.txt:1: vertex id '1.9' is not an integer"),
             std::string::npos);
@@ -169,21 +164,13 @@ TEST(MapFile, IdsAreIntegers) {
 TEST(InputFiles, DirectoriesAndMixedTracksAreRefused) {
   const std::string dir = scratch_path("a_directory");
   ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
-  try {
-    io::read_points(dir);
-    ADD_FAILURE() << "a directory was read as a file";
-  } catch (const io::Input_error& x) {
-    EXPECT_NE(std::string(x.what()).find("is a directory"), std::string::npos) << x.what();
-  }
+  EXPECT_TRUE(throws_with<io::Input_error>([&] { io::read_points(dir); }, "is a directory"));
   ::rmdir(dir.c_str());
   // A track file gives a time on every line or on none.
   EXPECT_EQ(io::read_track_trips(write_temp("t_none.txt", "a 0 0\na 1 0\nb 5 5\n")).size(), 2u);
-  try {
-    io::read_track_trips(write_temp("t_mixed.txt", "a 0 0 1\na 1 0 2\nb 5 5\n"));
-    ADD_FAILURE() << "mixed times accepted";
-  } catch (const io::Input_error& x) {
-    EXPECT_NE(std::string(x.what()).find("t_mixed.txt:3: no time t"), std::string::npos) << x.what();
-  }
+  EXPECT_TRUE(throws_with<io::Input_error>(
+      [&] { io::read_track_trips(write_temp("t_mixed.txt", "a 0 0 1\na 1 0 2\nb 5 5\n")); },
+      "t_mixed.txt:3: no time t"));
 }
 
 // A directory holds one trip per *.txt file (the map-construction benchmark's trips/trip_N.txt): trips in the
@@ -224,14 +211,7 @@ TEST(InputFiles, ADirectoryOfTripFiles) {
   EXPECT_EQ(origin.where(2, 1), dir + "/trip_2.txt:4");
   EXPECT_EQ(origin.locate("f: trip 3, fix 1 is bad"),
             "f: trip 3, fix 1 is bad [" + dir + "/trip_10.txt:2, trip id 'trip_10']");
-  auto error_of = [&] {
-    try {
-      io::read_track_trips(dir);
-    } catch (const io::Input_error& x) {
-      return std::string(x.what());
-    }
-    return std::string("no error");
-  };
+  auto error_of = [&] { return thrown_message<io::Input_error>([&] { io::read_track_trips(dir); }); };
   put("trip_3.txt", "1 2 3 4\n");  // the one-file format inside a directory
   EXPECT_NE(error_of().find("trip_3.txt:1: expected 'x y [t]'"), std::string::npos) << error_of();
   put("trip_3.txt", "1 2 3\n1 2\n");
@@ -268,12 +248,8 @@ TEST(WriteTextFile, UsesATemporaryOfItsOwn) {
   EXPECT_EQ(name[0], '.') << tmp;
   EXPECT_NE(name.find("picture.png."), std::string::npos) << tmp;
   std::remove(tmp.c_str());
-  try {
-    io::write_text_file("/nonexistent_dir/x.txt", "x");
-    ADD_FAILURE() << "wrote into a missing directory";
-  } catch (const std::runtime_error& x) {
-    EXPECT_NE(std::string(x.what()).find("No such file or directory"), std::string::npos) << x.what();
-  }
+  EXPECT_TRUE(throws_with<std::runtime_error>([&] { io::write_text_file("/nonexistent_dir/x.txt", "x"); },
+                                              "No such file or directory"));
 }
 
 TEST(SkeletonPicture, PageResolvesTheFeatureSize) {
@@ -422,12 +398,8 @@ TEST(MapFile, FieldsAreTrimmedAndCommentsSkipped) {
 
 TEST(MapFile, RepeatedVertexIdsAndInexactIdsAreRefused) {
   auto error_of = [](const std::string& vertices, const std::string& edges) {
-    try {
-      io::read_map(write_temp("rep_v.txt", vertices), write_temp("rep_e.txt", edges));
-    } catch (const io::Input_error& x) {
-      return std::string(x.what());
-    }
-    return std::string("no error");
+    return thrown_message<io::Input_error>(
+        [&] { io::read_map(write_temp("rep_v.txt", vertices), write_temp("rep_e.txt", edges)); });
   };
   EXPECT_NE(error_of("0,0,0\n1,1,1\n0,2,2\n", "").find("rep_v.txt:3: vertex id 0 repeated"),
             std::string::npos)
@@ -441,7 +413,7 @@ TEST(MapFile, RepeatedVertexIdsAndInexactIdsAreRefused) {
       << error_of(big, "");
   EXPECT_EQ(
       error_of("9007199254740991.0,0,0\n9007199254740990,1,0\n", "0,9007199254740991,9007199254740990\n"),
-      "no error");
+      "no exception");
 }
 
 TEST(MapFile, SelfLoopsAndZeroLengthEdgesAreCountedWithTheirFirstLine) {
@@ -653,15 +625,10 @@ TEST(SkeletonFiles, MapComparisonCsvNamesEachPartner) {
 }
 
 namespace {
-/// The message of reading `text` as the point cloud `name` (its extension the format), or "read".
+/// The message of reading `text` as the point cloud `name` (its extension the format), or "no exception".
 std::string cloud_error(const std::string& name, const std::string& text) {
   const std::string path = write_temp(name, text);
-  try {
-    io::read_point_cloud(path);
-  } catch (const io::Input_error& e) {
-    return e.what();
-  }
-  return "read";
+  return thrown_message<io::Input_error>([&] { io::read_point_cloud(path); });
 }
 }  // namespace
 

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "test_utilities.h"
+
 namespace FeatureRecon {
 namespace test {
 using K = CGAL::Epick;
@@ -48,16 +50,6 @@ inline sampling::Sampling_spectrum torus_spectrum(const std::vector<Point_2>& s)
   return sampling::sampling_spectrum(s, o);
 }
 
-/// Runs f, which must throw std::invalid_argument with `part` in its message.
-template <class F>
-void expect_invalid_argument(F&& f, const std::string& part) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception; expected one mentioning " << part;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
-}
 /// The energy stopping rule of the iterative samplers, checked on a history that stopped by it: the last
 /// iteration's relative energy decrease is below `tolerance`, every earlier one after the first at least it.
 template <class History>

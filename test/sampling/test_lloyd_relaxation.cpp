@@ -22,6 +22,8 @@
 
 #include "sampling/sampling_test_utilities.h"
 
+using FeatureRecon::test::throws_with;
+
 namespace {
 using namespace FeatureRecon;
 using namespace FeatureRecon::sampling;
@@ -142,23 +144,20 @@ TEST(PixelDensity, ConstantDensityClosedFormMatchesThePixelWalk) {
 }
 
 TEST(PixelDensity, BadValuesNamed) {
-  try {
-    Pixel_density(2, 2, {1, 1, -1, 1});
-    FAIL() << "negative density accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("values[2] (column 0, row 1)"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        Pixel_density(2, 2, {1, 1, -1, 1});
+      },
+      "values[2] (column 0, row 1)"));
   EXPECT_THROW(Pixel_density(2, 2, {1, 1, 1}), std::invalid_argument);
   EXPECT_THROW(Pixel_density(1, 1, {std::nan("")}), std::invalid_argument);
   // Finite values whose integrals overflow (the total was inf, every cell "empty", and Lloyd returned success
   // with sites that never moved): refused, naming the cause.
-  try {
-    Pixel_density(2, 2, {1e308, 1e308, 1e308, 1e308});
-    ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("Pixel_density: the values are too large"), std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        Pixel_density(2, 2, {1e308, 1e308, 1e308, 1e308});
+      },
+      "Pixel_density: the values are too large"));
   EXPECT_NO_THROW(Pixel_density(2, 2, {1e300, 1e300, 1e300, 1e300}));
 }
 
@@ -167,23 +166,24 @@ TEST(PixelDensity, BadValuesNamed) {
 // finite, naming the pixel, not as an overflow), a total mass that overflows while every row's integrals stay
 // finite, and an x^2 moment that overflows while the total stays finite.
 TEST(PixelDensity, EachRangeCheckOnItsOwn) {
-  using FeatureRecon::test::expect_invalid_argument;
-  expect_invalid_argument([] { (void)Pixel_density(-1, 0, {}); },
-                          "Pixel_density: width and height must be >= 0, got -1 x 0");
-  expect_invalid_argument([] { (void)Pixel_density::uniform(0, -1); },
-                          "Pixel_density::uniform: width and height must be >= 0, got 0 x -1");
-  expect_invalid_argument(
+  EXPECT_TRUE(throws_with<std::invalid_argument>([] { (void)Pixel_density(-1, 0, {}); },
+                                                 "Pixel_density: width and height must be >= 0, got -1 x 0"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [] { (void)Pixel_density::uniform(0, -1); },
+      "Pixel_density::uniform: width and height must be >= 0, got 0 x -1"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
       [] {
         (void)Pixel_density(2, 1, {1, std::numeric_limits<double>::infinity()});
       },
-      "values[1] (column 1, row 0) must be finite and >= 0");
-  expect_invalid_argument(
+      "values[1] (column 1, row 0) must be finite and >= 0"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
       [] {
         (void)Pixel_density(1, 3, {1e308, 1e308, 1e308});
       },
-      "Pixel_density: the values are too large");
-  expect_invalid_argument([] { (void)Pixel_density(2000, 1, std::vector<double>(2000, 1e300)); },
-                          "Pixel_density: the values are too large");
+      "Pixel_density: the values are too large"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [] { (void)Pixel_density(2000, 1, std::vector<double>(2000, 1e300)); },
+      "Pixel_density: the values are too large"));
   EXPECT_NO_THROW((void)Pixel_density(1, 1, {1e308}));
 }
 
@@ -264,13 +264,11 @@ TEST(ClippedVoronoiCells, MatchBruteForceOnRandomAndDegenerateSites) {
 
 TEST(ClippedVoronoiCells, BadSitesNamed) {
   const std::array<double, 4> box{0, 0, 4, 4};
-  try {
-    (void)clipped_voronoi_cells(std::vector<P2>{{1, 1}, {2, 2}, {4.5, 1}}, box);
-    FAIL() << "site outside the box accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("site 2 (4.5, 1) lies outside the box"), std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        (void)clipped_voronoi_cells(std::vector<P2>{{1, 1}, {2, 2}, {4.5, 1}}, box);
+      },
+      "site 2 (4.5, 1) lies outside the box"));
   EXPECT_THROW((void)clipped_voronoi_cells(std::vector<P2>{{1, std::nan("")}}, box), std::invalid_argument);
   EXPECT_THROW((void)clipped_voronoi_cells(std::vector<P2>{{1, 1}}, {0, 0, -1, 4}), std::invalid_argument);
   EXPECT_THROW((void)clipped_voronoi_cells(std::vector<std::vector<double>>{{1, 1, 1}}, box),

@@ -69,11 +69,6 @@ std::vector<double> brute_force(int w, int h, int c, const Bytes& d, double ss, 
   return out;
 }
 
-template <class F>
-void expect_invalid(F f, const std::string& part) {
-  FeatureRecon::test::expect_invalid_argument(f, part);
-}
-
 Sampled_bilateral_filter_options sampled(Tap_mode mode, Tap_sampling sampling, double budget,
                                          std::uint64_t seed = 1) {
   Sampled_bilateral_filter_options o;
@@ -357,54 +352,59 @@ TEST(SampledBilateralFilter, BadArgumentsAreNamed) {
     return [=, &d] { (void)sampled_bilateral_filter(4, 3, channels, data ? *data : d, o); };
   };
   auto o = sampled(Tap_mode::global, Tap_sampling::bilateral, 0.5);
-  expect_invalid(run(o, 2), "channels must be 1 or 3, got 2");
-  expect_invalid(run(o, 3), "data has 12 values, a 4 x 3 image with 3 channel(s) needs 36");
+  EXPECT_TRUE(
+      FeatureRecon::test::throws_with<std::invalid_argument>(run(o, 2), "channels must be 1 or 3, got 2"));
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      run(o, 3), "data has 12 values, a 4 x 3 image with 3 channel(s) needs 36"));
   auto bad = o;
   bad.budget = 0;
-  expect_invalid(run(bad), "budget must be in (0, 16]");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "budget must be in (0, 16]"));
   bad.budget = std::nan("");
-  expect_invalid(run(bad), "budget");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "budget"));
   bad = o;
   bad.kernel.sigma_spatial = -1;
-  expect_invalid(run(bad), "kernel.sigma_spatial");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "kernel.sigma_spatial"));
   bad = o;
   bad.kernel.sigma_range = 0;
-  expect_invalid(run(bad), "kernel.sigma_range");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "kernel.sigma_range"));
   bad = o;
   bad.kernel.radius = -2;
-  expect_invalid(run(bad), "kernel.radius");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "kernel.radius"));
   bad = o;
   bad.candidates_per_tap = 1;
-  expect_invalid(run(bad), "candidates_per_tap");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "candidates_per_tap"));
   bad = o;
   bad.local_patterns = 0;
-  expect_invalid(run(bad), "local_patterns");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "local_patterns"));
   bad = o;
   bad.sampling_sigma_feature = -0.1;
-  expect_invalid(run(bad), "sampling_sigma_feature");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(run(bad), "sampling_sigma_feature"));
   Tap_pattern p = bilateral_tap_pattern(4, 3, 1, d, o);
   Tap_pattern other = p;
   other.width = 5;
-  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); },
-                 "pattern is 5 x 3, the image 4 x 3");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern is 5 x 3, the image 4 x 3"));
   other = p;
   other.pixels.at(1) = 12;
-  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern.pixels[1] = 12");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern.pixels[1] = 12"));
   other = p;
   other.weights.at(0) = -1;
-  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern.weights[0]");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern.weights[0]"));
   // A pattern stopped while it was made, or one without taps, gave the input back as if filtered.
   Sampled_bilateral_filter_options stop = o;
   stop.progress = [](double) { return false; };
   other = bilateral_tap_pattern(4, 3, 1, d, stop);
   ASSERT_EQ(other.status, FeatureRecon::Status::interrupted);
-  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "status interrupted");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "status interrupted"));
   other = p;
   other.pixels.clear();
   other.weights.clear();
   other.positions.clear();
-  expect_invalid([&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); },
-                 "pattern has no taps for a 4 x 3");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)sampled_bilateral_filter(4, 3, 1, d, other, o); }, "pattern has no taps for a 4 x 3"));
 }
 
 TEST(ImageQuality, PsnrAndSsimOnKnownCases) {
@@ -434,8 +434,10 @@ TEST(ImageQuality, PsnrAndSsimOnKnownCases) {
   Bytes inverted(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) inverted[i] = std::uint8_t(255 - a[i]);
   EXPECT_LT(ssim(16, 12, 3, a, inverted), 0);
-  expect_invalid([&] { (void)psnr(a, Bytes(5)); }, "picture has 5 values, reference has 576");
-  expect_invalid([&] { (void)ssim(16, 12, 1, a, a); }, "reference has 576 values");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)psnr(a, Bytes(5)); }, "picture has 5 values, reference has 576"));
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>([&] { (void)ssim(16, 12, 1, a, a); },
+                                                                     "reference has 576 values"));
   EXPECT_TRUE(std::isnan(psnr(Bytes{}, Bytes{})));
 }
 }  // namespace
@@ -577,13 +579,16 @@ TEST(ImageQuality, ArgumentsAndThePeak) {
   // ssim: width and height >= 0 (both), channels >= 1, the picture as large as the reference; psnr: the peak
   // finite and > 0, and 10 log10(peak^2 / MSE) with the given peak.
   const std::vector<double> four(4, 1.0), three(3, 1.0), none;
-  expect_invalid([&] { (void)ssim(0, -1, 1, none, none); },
-                 "ssim: width and height must be >= 0, got 0 x -1");
-  expect_invalid([&] { (void)ssim(2, 2, 0, none, none); }, "ssim: channels must be >= 1, got 0");
-  expect_invalid([&] { (void)ssim(2, 2, 1, four, three); },
-                 "ssim: picture has 3 values, a 2 x 2 image with 1 channel(s) needs 4");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)ssim(0, -1, 1, none, none); }, "ssim: width and height must be >= 0, got 0 x -1"));
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>([&] { (void)ssim(2, 2, 0, none, none); },
+                                                                     "ssim: channels must be >= 1, got 0"));
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)ssim(2, 2, 1, four, three); },
+      "ssim: picture has 3 values, a 2 x 2 image with 1 channel(s) needs 4"));
   for (const double peak : {0.0, -1.0, std::numeric_limits<double>::infinity(), std::nan("")})
-    expect_invalid([&] { (void)psnr(four, four, peak); }, "psnr: peak must be finite and > 0");
+    EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>([&] { (void)psnr(four, four, peak); },
+                                                                       "psnr: peak must be finite and > 0"));
   const std::vector<double> reference{0.0, 1.0}, picture{0.5, 1.0};  // MSE 0.125
   EXPECT_NEAR(psnr(reference, picture, 1.0), 10 * std::log10(1 / 0.125), 1e-12);
   EXPECT_NEAR(psnr(reference, picture, 2.0), 10 * std::log10(4 / 0.125), 1e-12);
@@ -628,42 +633,48 @@ TEST(SampledBilateralFilter, EveryBoundOfTheArgumentsIsChecked) {
   // [1e-150, 1e150], candidates_per_tap in [2, 64], local_patterns in [1, 65536]; bilateral_tap_pattern()
   // checks the sampling options as well.
   const Bytes d = random_image(4, 3, 1, 1);
-  expect_invalid([] { (void)bilateral_filter(-1, 0, 1, Bytes{}); },
-                 "bilateral_filter: width and height must be >= 0, got -1 x 0");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [] { (void)bilateral_filter(-1, 0, 1, Bytes{}); },
+      "bilateral_filter: width and height must be >= 0, got -1 x 0"));
   Bilateral_filter_options e;
   e.kernel.sigma_range = 1e-200;
-  expect_invalid([&] { (void)bilateral_filter(4, 3, 1, d, e); },
-                 "kernel.sigma_range must be in [1e-150, 1e150]");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)bilateral_filter(4, 3, 1, d, e); }, "kernel.sigma_range must be in [1e-150, 1e150]"));
   e = {};
   e.kernel.radius = 4097;
-  expect_invalid([&] { (void)bilateral_filter(4, 3, 1, d, e); },
-                 "kernel.radius must be in [0, 4096], got 4097");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)bilateral_filter(4, 3, 1, d, e); }, "kernel.radius must be in [0, 4096], got 4097"));
   e = {};
   e.kernel.sigma_spatial = 2049;
-  expect_invalid([&] { (void)bilateral_filter(4, 3, 1, d, e); },
-                 "kernel.sigma_spatial must be <= 2048 when the radius is derived from it");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)bilateral_filter(4, 3, 1, d, e); },
+      "kernel.sigma_spatial must be <= 2048 when the radius is derived from it"));
   const auto o = sampled(Tap_mode::global, Tap_sampling::bilateral, 0.5);
   auto run = [&](const Sampled_bilateral_filter_options& bad) {
     return [&d, bad] { (void)sampled_bilateral_filter(4, 3, 1, d, bad); };
   };
   auto bad = o;
   bad.budget = 16.5;
-  expect_invalid(run(bad), "budget must be in (0, 16] taps per kernel pixel, got 16.5");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      run(bad), "budget must be in (0, 16] taps per kernel pixel, got 16.5"));
   bad.budget = 16;
   EXPECT_EQ(sampled_bilateral_filter(4, 3, 1, d, bad).status, FeatureRecon::Status::success);
   bad = o;
   bad.sampling_sigma_feature = 1e-200;
-  expect_invalid(run(bad), "sampling_sigma_feature must be in [1e-150, 1e150]");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      run(bad), "sampling_sigma_feature must be in [1e-150, 1e150]"));
   bad = o;
   bad.candidates_per_tap = 65;
-  expect_invalid(run(bad), "candidates_per_tap must be in [2, 64], got 65");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      run(bad), "candidates_per_tap must be in [2, 64], got 65"));
   bad = o;
   bad.local_patterns = 65537;
-  expect_invalid(run(bad), "local_patterns must be in [1, 65536], got 65537");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      run(bad), "local_patterns must be in [1, 65536], got 65537"));
   bad = o;
   bad.budget = 0;
-  expect_invalid([&] { (void)bilateral_tap_pattern(4, 3, 1, d, bad); },
-                 "bilateral_tap_pattern: budget must be in");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)bilateral_tap_pattern(4, 3, 1, d, bad); }, "bilateral_tap_pattern: budget must be in"));
 }
 
 TEST(SampledBilateralFilter, SamplingSigmaFeatureSetsTheBilateralDistance) {
@@ -883,12 +894,13 @@ TEST(SampledBilateralFilter, PatternWeightsAreCheckedAndSummedPerPixel) {
   for (std::size_t i = 0; i < d.size(); ++i) EXPECT_EQ(kept.values[i], float(d[i])) << i;
   Tap_pattern bad = p;
   bad.weights.pop_back();
-  expect_invalid([&] { (void)sampled_bilateral_filter(w, h, 1, d, bad, o); },
-                 "pattern has 216 pixels and 215 weights");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)sampled_bilateral_filter(w, h, 1, d, bad, o); }, "pattern has 216 pixels and 215 weights"));
   bad = p;
   bad.weights[3] = std::numeric_limits<float>::infinity();
-  expect_invalid([&] { (void)sampled_bilateral_filter(w, h, 1, d, bad, o); },
-                 "pattern.weights[3] must be finite and >= 0");
+  EXPECT_TRUE(FeatureRecon::test::throws_with<std::invalid_argument>(
+      [&] { (void)sampled_bilateral_filter(w, h, 1, d, bad, o); },
+      "pattern.weights[3] must be finite and >= 0"));
 }
 
 TEST(SampledBilateralFilter, TheCentreCountsOnceAndExactly) {

@@ -447,30 +447,18 @@ TEST(WeightedSampleElimination, ManyCopiesOfOnePlaceAreRemovedFirst) {
 TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   const std::vector<Point_2> p = white_noise(20, 1);
   std::vector<std::size_t> kept;
-  try {
-    weighted_sample_elimination(p, 21, std::back_inserter(kept));
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("count (21)"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { weighted_sample_elimination(p, 21, std::back_inserter(kept)); }, "count (21)"));
   std::vector<Point_2> bad = p;
   bad[7] = Point_2(0, std::numeric_limits<double>::infinity());
-  try {
-    weighted_sample_elimination(bad, 5, std::back_inserter(kept));
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("item 7"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { weighted_sample_elimination(bad, 5, std::back_inserter(kept)); }, "item 7"));
   // Coordinates whose squares or areas overflow doubles are refused (before: radius inf).
   bad = p;
   bad[4] = Point_2(-3e300, 1);
-  try {
-    weighted_sample_elimination(bad, 5, std::back_inserter(kept));
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("item 4 has coordinate -3e+300 beyond +-1e100"), std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { weighted_sample_elimination(bad, 5, std::back_inserter(kept)); },
+      "item 4 has coordinate -3e+300 beyond +-1e100"));
   bad[4] = Point_2(-1e100, 1e100);  // the largest accepted
   EXPECT_NO_THROW(weighted_sample_elimination(bad, 5, std::back_inserter(kept)));
   kept.clear();
@@ -488,14 +476,9 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   o.intrinsic_dimension = 4;
   EXPECT_THROW(weighted_sample_elimination(p, 5, std::back_inserter(kept), o), std::invalid_argument);
   o.intrinsic_dimension = 3;  // a volume measure for planar positions
-  try {
-    weighted_sample_elimination(p, 5, std::back_inserter(kept), o);
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("intrinsic_dimension 3 exceeds the dimension of the positions (2)"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { weighted_sample_elimination(p, 5, std::back_inserter(kept), o); },
+      "intrinsic_dimension 3 exceeds the dimension of the positions (2)"));
   EXPECT_TRUE(kept.empty());
   // A zero normal has no direction: its feature distance is NaN, it never conflicted and was always kept.
   using K = CGAL::Epick;
@@ -531,14 +514,9 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
   for (const Point_2& q : p) exact.push_back({E::Point_3(q.x(), q.y(), 0), E::Vector_3(0, 0, 1)});
   exact[13].second = E::Vector_3(0, 0, 0);
   kept.clear();
-  try {
-    weighted_sample_elimination(exact, 5, std::back_inserter(kept), bilateral);
-    ADD_FAILURE() << "Epeck: expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("item 13 has a feature at distance NaN from itself (a zero normal"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { weighted_sample_elimination(exact, 5, std::back_inserter(kept), bilateral); },
+      "item 13 has a feature at distance NaN from itself (a zero normal"));
   EXPECT_TRUE(kept.empty());
 }
 
@@ -833,12 +811,7 @@ TEST(WeightedSampleElimination, NeighbourListsBeyondTheLimitAreRefusedWhileCount
     std::vector<Point_2> many = white_noise(24000, 9);  // every pair: 5.8e8 entries, more than 2^29
     Elimination_options a;
     a.max_radius = 100;
-    std::string what;
-    try {
-      eliminate(many, 2, a);
-    } catch (const std::invalid_argument& e) {
-      what = e.what();
-    }
+    const std::string what = thrown_message<std::invalid_argument>([&] { eliminate(many, 2, a); });
     EXPECT_NE(
         what.find(
             "would hold more than 536870912 entries (automatic Elimination_options::max_neighbor_entries; "
@@ -922,14 +895,9 @@ TEST(WeightedSampleElimination, RadiiAtTheEndsOfTheDoubles) {
   EXPECT_EQ(weighted_sample_elimination(p, 5, std::back_inserter(kept), o).selected, 5u);
   // 2 r_max overflowed: every weight NaN, skipped while counting, stored while filling (out of bounds).
   o.max_radius = 1e308;
-  try {
-    weighted_sample_elimination(p, 5, std::back_inserter(kept), o);
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("max_radius (1e+308) times sigma_position (1) is beyond 1e100"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { weighted_sample_elimination(p, 5, std::back_inserter(kept), o); },
+      "max_radius (1e+308) times sigma_position (1) is beyond 1e100"));
   // Tiny coordinates: (2 r_max)^2 underflows; the metric still decides, and copies go first.
   std::vector<Point_2> tiny;
   for (const Point_2& x : p) tiny.emplace_back(x.x() * 1e-165, x.y() * 1e-165);
@@ -974,7 +942,8 @@ TEST(WeightedSampleElimination, OptionBoundsAtTheirEnds) {
   EXPECT_EQ(r.radius, 1e100);
   o = {};
   o.alpha = 0;
-  expect_invalid_argument([&] { weighted_sample_elimination(p, 1, std::back_inserter(kept), o); }, "alpha");
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { weighted_sample_elimination(p, 1, std::back_inserter(kept), o); }, "alpha"));
 }
 
 TEST(WeightedSampleElimination, CollinearRadiusIsHalfTheSpacingOfTheKeptCount) {
@@ -1072,14 +1041,16 @@ TEST(WeightedSampleElimination, NonFiniteCoordinatesAreNamedAsSuchNotAsTooLarge)
     std::vector<Point_2> p = white_noise(20, 4);
     p[4] = bad;
     std::vector<std::size_t> kept;
-    expect_invalid_argument([&] { weighted_sample_elimination(p, 5, std::back_inserter(kept)); },
-                            "item 4 has a non-finite coordinate");
+    EXPECT_TRUE(throws_with<std::invalid_argument>(
+        [&] { weighted_sample_elimination(p, 5, std::back_inserter(kept)); },
+        "item 4 has a non-finite coordinate"));
   }
   std::vector<Point_2> p = white_noise(20, 4);
   p[4] = Point_2(0.5, 1e101);
   std::vector<std::size_t> kept;
-  expect_invalid_argument([&] { weighted_sample_elimination(p, 5, std::back_inserter(kept)); },
-                          "item 4 has coordinate 1e+101 beyond +-1e100");
+  EXPECT_TRUE(
+      throws_with<std::invalid_argument>([&] { weighted_sample_elimination(p, 5, std::back_inserter(kept)); },
+                                         "item 4 has coordinate 1e+101 beyond +-1e100"));
 }
 
 // A FeaturePointTraits model whose feature distance is +infinity from feature 5 to itself (a user's
@@ -1115,8 +1086,9 @@ TEST(WeightedSampleElimination, AFeatureAtAnInfiniteDistanceFromItselfIsNamed) {
   for (std::size_t i = 0; i < p.size(); ++i) items.push_back({p[i], double(i)});
   Elimination_options o;
   o.sigma_feature = 0.3;
-  expect_invalid_argument([&] { eliminate(items, 10, o, Infinite_self_distance_traits()); },
-                          "item 5 has a feature at distance inf from itself");
+  EXPECT_TRUE(
+      throws_with<std::invalid_argument>([&] { eliminate(items, 10, o, Infinite_self_distance_traits()); },
+                                         "item 5 has a feature at distance inf from itself"));
   o.sigma_feature = std::numeric_limits<double>::infinity();
   EXPECT_EQ(eliminate(items, 10, o, Infinite_self_distance_traits()).size(), 10u);
 }
@@ -1154,11 +1126,11 @@ TEST(WeightedSampleElimination, ASpanAlongTheLastAxisAloneIsCheckedAgainstSigmaP
   }
   Elimination_options o;
   o.sigma_position = std::ldexp(1.0, -101);
-  expect_invalid_argument([&] { eliminate(column, 5, o); }, "sigma_position");
-  expect_invalid_argument([&] { eliminate(pillar, 5, o); }, "sigma_position");
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { eliminate(column, 5, o); }, "sigma_position"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { eliminate(pillar, 5, o); }, "sigma_position"));
   Sampling_quality_options q;
   q.sigma_position = o.sigma_position;
-  expect_invalid_argument([&] { sampling_quality(column, q); }, "sigma_position");
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sampling_quality(column, q); }, "sigma_position"));
   o.sigma_position = std::ldexp(1.0, -99);  // span / sigma just below 2^399: accepted
   EXPECT_EQ(eliminate(column, 5, o).size(), 5u);
 }

@@ -19,6 +19,8 @@
 #include <utility>
 #include <vector>
 
+#include "test_utilities.h"
+
 namespace FeatureRecon {
 namespace test {
 
@@ -30,12 +32,7 @@ using skeleton::Vertex_index;
 /// The message of the std::invalid_argument that call() throws, or "no exception".
 template <class Call>
 std::string invalid_argument_message(Call&& call) {
-  try {
-    call();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no exception";
+  return thrown_message<std::invalid_argument>(std::forward<Call>(call));
 }
 
 /// A complex with a function on its vertices.

@@ -308,12 +308,8 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   EXPECT_THROW(compute_augmented_reeb_graph(c.complex, std::vector<double>(5, 0.0)), std::invalid_argument);
   std::vector<double> f = c.f;
   f[3] = std::numeric_limits<double>::quiet_NaN();
-  try {
-    compute_augmented_reeb_graph(c.complex, f);
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("vertex 3"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(
+      throws_with<std::invalid_argument>([&] { compute_augmented_reeb_graph(c.complex, f); }, "vertex 3"));
   f[3] = std::numeric_limits<double>::infinity();
   EXPECT_THROW(compute_augmented_reeb_graph(c.complex, f), std::invalid_argument);
   Simplicial_complex_2 bad = c.complex;
@@ -321,20 +317,11 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   EXPECT_THROW(compute_augmented_reeb_graph(bad, c.f), std::invalid_argument);
   bad = c.complex;
   bad.triangles.push_back({0, 1, 2});  // edges 01 and 12 exist, 02 does not: the message names it
-  try {
-    compute_augmented_reeb_graph(bad, c.f);
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("edge (0, 2)"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(
+      throws_with<std::invalid_argument>([&] { compute_augmented_reeb_graph(bad, c.f); }, "edge (0, 2)"));
   // A complex out of canonical order: the message names the first simplex out of order or range.
-  auto message = [&](const Simplicial_complex_2& k) -> std::string {
-    try {
-      compute_augmented_reeb_graph(k, c.f);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "(no exception)";
+  auto message = [&](const Simplicial_complex_2& k) {
+    return invalid_argument_message([&] { compute_augmented_reeb_graph(k, c.f); });
   };
   bad = c.complex;
   std::swap(bad.edges[0], bad.edges[1]);  // unsorted
@@ -354,23 +341,22 @@ TEST(AugmentedReebGraph, BadInputThrows) {
   EXPECT_NE(message(bad).find("triangle 0 (1, 0, 2) is not in increasing order"), std::string::npos)
       << message(bad);
   // Builder errors name the simplex.
-  try {
-    make_simplicial_complex_2(3, {{0, 1}, {1, 7}}, {});
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("edge 1"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        make_simplicial_complex_2(3, {{0, 1}, {1, 7}}, {});
+      },
+      "edge 1"));
   EXPECT_THROW(make_simplicial_complex_2(3, {}, {{0, 1, 1}}), std::invalid_argument);
   EXPECT_THROW(make_simplicial_complex_2(3, {{2, 2}}, {}), std::invalid_argument);
   // The length of edges implied by triangles is checked like the given ones, even when no triangle uses it.
   for (const double bad_length :
        {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
-    try {
-      make_simplicial_complex_2(3, {}, {{0, 1, 2}}, {}, bad_length);
-      ADD_FAILURE() << "expected an exception for " << bad_length;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("implied_edge_length"), std::string::npos) << e.what();
-    }
+    EXPECT_TRUE(throws_with<std::invalid_argument>(
+        [&] {
+          make_simplicial_complex_2(3, {}, {{0, 1, 2}}, {}, bad_length);
+        },
+        "implied_edge_length"))
+        << bad_length;
   }
   EXPECT_EQ(make_simplicial_complex_2(3, {}, {{0, 1, 2}}, {}, 0.0).edge_lengths, std::vector<double>(3, 0.0));
 }
@@ -382,14 +368,11 @@ TEST(AugmentedReebGraph, ATriangleVertexAtTheVertexCountIsOutOfRange) {
   k.number_of_vertices = 3;
   k.edges = {{0, 1}, {0, 2}, {1, 2}};
   k.triangles = {{0, 1, 3}};
-  try {
-    compute_augmented_reeb_graph(k, std::vector<double>{0, 1, 2});
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("triangle 0 (0, 1, 3) has a vertex beyond the 3 vertices"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        compute_augmented_reeb_graph(k, std::vector<double>{0, 1, 2});
+      },
+      "triangle 0 (0, 1, 3) has a vertex beyond the 3 vertices"));
 }
 
 TEST(AugmentedReebGraph, ProgressCanInterrupt) {
@@ -414,12 +397,8 @@ TEST(AugmentedReebGraph, SurfaceMeshWithRemovedVertices) {
   mesh.add_vertex({5, 5, 5});
   mesh.add_face(v0, v2, v3);
   mesh.remove_vertex(v1);
-  try {
-    simplicial_complex_from_mesh(mesh);
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("collect_garbage"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(
+      throws_with<std::invalid_argument>([&] { simplicial_complex_from_mesh(mesh); }, "collect_garbage"));
   mesh.collect_garbage();
   const Simplicial_complex_2 k = simplicial_complex_from_mesh(mesh);
   EXPECT_EQ(k.number_of_vertices, 4u);

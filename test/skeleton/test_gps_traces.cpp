@@ -20,6 +20,8 @@
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::throws_with;
+
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -381,12 +383,9 @@ TEST(GpsTraces, DensityFractionsAreChecked) {
   for (const double bad : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
     Gps_trace_options o;
     o.min_lateral_density = bad;
-    try {
-      sample_gps_traces(trips, 20.0, o);
-      ADD_FAILURE() << "min_lateral_density " << bad << " accepted";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("min_lateral_density"), std::string::npos) << e.what();
-    }
+    EXPECT_TRUE(
+        throws_with<std::invalid_argument>([&] { sample_gps_traces(trips, 20.0, o); }, "min_lateral_density"))
+        << bad;
     o.min_lateral_density = 0;
     o.min_relative_density = bad;
     EXPECT_THROW(sample_gps_traces(trips, 20.0, o), std::invalid_argument);
@@ -410,34 +409,27 @@ TEST(GpsTraces, DegenerateAndBadInput) {
   // Repeated fixes (a parked car) give one sample.
   EXPECT_EQ(sample_gps_traces({{{5, 5, 0}, {5, 5, 1}, {5, 5, 2}}}, 10.0).points.rows, 1u);
   EXPECT_THROW(sample_gps_traces({{{0, 0, 0}}}, 0.0), std::invalid_argument);
-  try {
-    sample_gps_traces({{{0, 0, 0}}, {{0, 0, 0}, {std::nan(""), 0, 1}}}, 10.0);
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("trip 1, fix 1"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        sample_gps_traces({{{0, 0, 0}}, {{0, 0, 0}, {std::nan(""), 0, 1}}}, 10.0);
+      },
+      "trip 1, fix 1"));
   Gps_trace_options bad;
   bad.sample_spacing = -1;
   EXPECT_THROW(sample_gps_traces({}, 10.0, bad), std::invalid_argument);
   // Fixes so far out that position / spacing overflows the 64-bit grid cells (undefined behaviour before).
-  try {
-    sample_gps_traces({{{0, 0, 0}, {1e20, 0, 1}, {2e20, 0, 2}}}, 10.0);
-    FAIL() << "expected an exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("trip 0, fix 1 at (1e+20, 0) lies more than 2^50 times"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        sample_gps_traces({{{0, 0, 0}, {1e20, 0, 1}, {2e20, 0, 2}}}, 10.0);
+      },
+      "trip 0, fix 1 at (1e+20, 0) lies more than 2^50 times"));
   // Each option is named with its value; a density radius so small that position / radius overflows the
   // density filter's grid cells is refused like a small spacing (it ran into undefined behaviour before), and
   // only when that filter is on.
-  auto message = [](const Gps_trace_options& o) -> std::string {
-    try {
+  auto message = [](const Gps_trace_options& o) {
+    return test::invalid_argument_message([&] {
       sample_gps_traces({{{0, 0, 0}, {100, 0, 1}, {200, 0, 2}}}, 10.0, o);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "(no exception)";
+    });
   };
   EXPECT_EQ(
       message(bad),
@@ -475,14 +467,14 @@ TEST(GpsTraces, DegenerateAndBadInput) {
   }
   bad = {};
   bad.density_radius = 1e-300;
-  EXPECT_EQ(message(bad), "(no exception)");  // the density filter is off
+  EXPECT_EQ(message(bad), "no exception");  // the density filter is off
   bad.min_relative_density = 0.1;
   EXPECT_NE(
       message(bad).find("trip 0, fix 1 at (100, 0) lies more than 2^50 times the density_radius (1e-300)"),
       std::string::npos)
       << message(bad);
   bad.density_radius = 1;
-  EXPECT_EQ(message(bad), "(no exception)");
+  EXPECT_EQ(message(bad), "no exception");
   // The length that is too fine is named as a field, automatic or not.
   bad = {};
   bad.sample_spacing = 1e-300;
@@ -641,12 +633,7 @@ TEST(GpsTraces, TraceGraphChecksItsInput) {
   ASSERT_GT(S.points.rows, 2u);
   EXPECT_NO_THROW(build_gps_trace_graph(S, 10.0, tolerance_of(30)));
   auto message = [](const Gps_trace_sample& T, std::optional<double> tolerance) {
-    try {
-      build_gps_trace_graph(T, 10.0, tolerance_of(tolerance));
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no exception");
+    return test::invalid_argument_message([&] { build_gps_trace_graph(T, 10.0, tolerance_of(tolerance)); });
   };
   EXPECT_EQ(message(S, FeatureRecon::automatic), "no exception");  // the sample's tolerance
   EXPECT_NE(message(S, std::nan("")).find("heading_tolerance must be >= 0 degrees"), std::string::npos);
@@ -693,13 +680,8 @@ TEST(GpsTraces, HandMadePointMatricesAreChecked) {
   for (auto call : {+[](const Point_matrix& p) { build_rips_graph(p, 1.0); },
                     +[](const Point_matrix& p) { build_knn_graph(p, 1); },
                     +[](const Point_matrix& p) { extract_reeb_skeleton(p, 1.0); }}) {
-    try {
-      call(m);
-      ADD_FAILURE() << "expected an exception";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("point 1 has a non-finite coordinate 1"), std::string::npos)
-          << e.what();
-    }
+    EXPECT_TRUE(
+        throws_with<std::invalid_argument>([&] { call(m); }, "point 1 has a non-finite coordinate 1"));
   }
   m.data[3] = 0;
   m.rows = 4;  // one row short of values
@@ -874,12 +856,8 @@ TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
         (option == "min_confirmed_fraction"            ? o.min_confirmed_fraction
          : option == "min_straight_confirmed_fraction" ? o.min_straight_confirmed_fraction
                                                        : o.segment_turn_tolerance) = value;
-      try {
-        sample_gps_traces(trips, 20.0, o);
-        ADD_FAILURE() << "expected an exception for " << option << " = " << value;
-      } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
-      }
+      EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sample_gps_traces(trips, 20.0, o); }, option))
+          << value;
     }
 }
 
@@ -1243,13 +1221,8 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
         count == &Gps_trace_options::local_support_fixes ? "local_support_fixes" : "quiet_end_fixes";
     Gps_trace_options bad = o;
     bad.*count = 1025;
-    try {
-      sample_gps_traces(trips, 20.0, bad);
-      ADD_FAILURE() << "no error for " << name;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(name + " must be at most 1024, got 1025"), std::string::npos)
-          << e.what();
-    }
+    EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sample_gps_traces(trips, 20.0, bad); },
+                                                   name + " must be at most 1024, got 1025"));
     bad.*count = 1024;
     EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, bad)) << name;
   }
@@ -1257,13 +1230,9 @@ TEST(GpsTraces, LocalSupportOptionsAreChecked) {
   EXPECT_NO_THROW(sample_gps_traces(trips, 20.0, o));
   for (const double bad : {0.0, -0.5, 1.01, std::nan("")}) {
     o.min_local_support = bad;
-    try {
-      sample_gps_traces(trips, 20.0, o);
-      ADD_FAILURE() << "no error for " << bad;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("min_local_support must be in (0, 1]"), std::string::npos)
-          << e.what();
-    }
+    EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sample_gps_traces(trips, 20.0, o); },
+                                                   "min_local_support must be in (0, 1]"))
+        << bad;
   }
 }
 

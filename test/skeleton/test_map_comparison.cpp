@@ -15,6 +15,8 @@
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::throws_with;
+
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -500,13 +502,8 @@ TEST(TraceSupport, SplitsAComparisonByTheTripsAlongItsSamples) {
 
 TEST(TraceSupport, BadInputIsNamed) {
   const std::vector<Map_sample> s{sample_at(0, 0, 90)};
-  auto message = [&](const std::vector<Gps_trip>& trips, Trace_support_options o) -> std::string {
-    try {
-      count_trips_along(s, trips, o);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
+  auto message = [&](const std::vector<Gps_trip>& trips, Trace_support_options o) {
+    return test::invalid_argument_message([&] { count_trips_along(s, trips, o); });
   };
   const Gps_trip ok = trip_of({{0, 0}, {1, 0}});
   Trace_support_options o;
@@ -526,12 +523,7 @@ TEST(TraceSupport, BadInputIsNamed) {
   o.bearing_limit = 0;
   EXPECT_NE(message({ok}, o).find("bearing_limit"), std::string::npos);
   const std::vector<Map_sample> bad_samples{sample_at(0, 0, 90), sample_at(std::nan(""), 0, 90)};
-  try {
-    count_trips_along(bad_samples, {ok});
-    ADD_FAILURE() << "a NaN sample was accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("sample 1"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { count_trips_along(bad_samples, {ok}); }, "sample 1"));
 }
 
 TEST(MapComparison, BadMapsAreNamed) {
@@ -540,12 +532,7 @@ TEST(MapComparison, BadMapsAreNamed) {
   good.edges = {{0, 1}};
   auto error_of = [&](const Embedded_graph_2& truth, const Embedded_graph_2& rec,
                       Map_comparison_options o = {}) {
-    try {
-      compare_maps(truth, rec, o);
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::invalid_argument_message([&] { compare_maps(truth, rec, o); });
   };
   // A non-finite vertex looped forever (inf) or silently dropped the samples behind it (NaN).
   Embedded_graph_2 bad = good;
@@ -732,14 +719,9 @@ TEST(MapComparison, BadSamplesAreNamed) {
   o.matching = Map_matching::optimal;
   const std::vector<Map_sample> good = {{{0, 0}, 90}};
   std::vector<Map_sample> bad = {{{0, 0}, 90}, {{1, 0}, 90}, {{std::nan(""), 0}, 90}};
-  try {
-    match_map_samples(good, bad, o);
-    ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("match_map_samples: reconstruction sample 2 has a non-finite"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(
+      throws_with<std::invalid_argument>([&] { match_map_samples(good, bad, o); },
+                                         "match_map_samples: reconstruction sample 2 has a non-finite"));
   bad = {{{0, 0}, std::numeric_limits<double>::infinity()}};
   EXPECT_THROW(match_map_samples(bad, good, o), std::invalid_argument);
   o.matching = static_cast<Map_matching>(7);
@@ -1046,12 +1028,7 @@ TEST(CropMapToTrips, BadInputIsNamedAndProgressStops) {
   street.edges = {{0, 1}};
   const std::vector<Gps_trip> trips{{{0, 2, 0}, {60, 2, 1}}};
   auto message = [&](const Embedded_graph_2& m, const std::vector<Gps_trip>& t, const Map_crop_options& o) {
-    try {
-      crop_map_to_trips(m, t, o);
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return test::invalid_argument_message([&] { crop_map_to_trips(m, t, o); });
   };
   Map_crop_options o;
   o.radius = 0;

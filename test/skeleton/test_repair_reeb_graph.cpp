@@ -384,14 +384,7 @@ TEST(ConnectDeadEnds, LeavesShortIsolatedSegmentsAlone) {
 }
 
 namespace {
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string error_of(const std::function<void()>& call) { return test::invalid_argument_message(call); }
 }  // namespace
 
 TEST(RepairReebGraph, ADistanceThatIsNotOneIsNamed) {
@@ -434,7 +427,7 @@ TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
                                     error_of([&] { prune_reeb_graph_components(G, 1.0); }),
                                     error_of([&] { trim_essential_stubs(G, 1.0); })};
   };
-  for (const std::string& e : all(R, f)) EXPECT_EQ(e, "no error");
+  for (const std::string& e : all(R, f)) EXPECT_EQ(e, "no exception");
   Reeb_graph bad = R;
   bad.arcs[0].upper = 7;  // was a heap overflow in all four
   for (const std::string& e : all(bad, f))
@@ -587,7 +580,7 @@ TEST(RepairReebGraph, ANaNBoundIsNamedNotSorted) {
       EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }),
                 "repair_reeb_graph: " + named + " (a number needed)");
     } else {
-      EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }), "no error");  // 5 is inside an arc
+      EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }), "no exception");  // 5 is inside an arc
     }
   }
 }

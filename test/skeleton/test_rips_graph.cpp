@@ -23,6 +23,8 @@
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::throws_with;
+
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -203,15 +205,9 @@ TEST(RipsGraph, HugeAndTinyCoordinatesInTheBruteForceSearch) {
   EXPECT_EQ(build_knn_graph(tiny, 1).edge_lengths, (std::vector<double>{3e-200, 1.0}));
   // A length beyond the largest double is refused, naming the edge.
   const Coords beyond{{1.7e308, 0}, {-1.7e308, 0}};
-  try {
-    build_knn_graph(beyond, 1);
-    ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "build_knn_graph: edge 0 (points 0 and 1) is longer than the largest double"),
-              std::string::npos)
-        << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { build_knn_graph(beyond, 1); },
+      "build_knn_graph: edge 0 (points 0 and 1) is longer than the largest double"));
 }
 
 TEST(RipsGraph, BruteForceKeepsPairsAtTheRadiusThatUnderflowInFloat) {
@@ -370,21 +366,11 @@ TEST(RipsGraph, TinyAndHugeCoordinatesInTheKdTree) {
 TEST(RipsGraph, BadInputNamesThePoint) {
   Coords p = random_points(5, 3, 1);
   p[3][1] = std::numeric_limits<double>::quiet_NaN();
-  try {
-    build_rips_graph(p, 1.0);
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("point 3"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { build_rips_graph(p, 1.0); }, "point 3"));
   p[3][1] = std::numeric_limits<double>::infinity();
   EXPECT_THROW(build_knn_graph(p, 2), std::invalid_argument);
   Coords mixed{{0, 0}, {1, 1, 1}};
-  try {
-    build_rips_graph(mixed, 1.0);
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("point 1"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { build_rips_graph(mixed, 1.0); }, "point 1"));
   EXPECT_THROW(build_rips_graph(random_points(3, 2, 1), -1.0), std::invalid_argument);
   EXPECT_THROW(build_rips_graph(random_points(3, 2, 1), std::numeric_limits<double>::quiet_NaN()),
                std::invalid_argument);
@@ -764,19 +750,15 @@ TEST(DistanceMatrix, ProgressAndStopOfBothBuilders) {
 }
 
 TEST(DistanceMatrix, BadMatricesNameTheEntry) {
-  auto expect_message = [](const std::vector<std::vector<double>>& D, const std::string& part) {
-    try {
-      build_rips_graph_from_distance_matrix(D, 1.0);
-      ADD_FAILURE() << "expected an exception for " << part;
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-    }
+  auto refused_with = [](const std::vector<std::vector<double>>& D, const std::string& part) {
+    return test::throws_with<std::invalid_argument>([&] { build_rips_graph_from_distance_matrix(D, 1.0); },
+                                                    part);
   };
-  expect_message({{0, 1, 2}, {1, 0, 1}, {2, 1.5, 0}}, "not symmetric at (1, 2)");
-  expect_message({{0, -1}, {-1, 0}}, "entry (0, 1)");
-  expect_message({{0, 1}, {1, 0.5}}, "diagonal entry (1, 1)");
-  expect_message({{0, 1}, {1}}, "row 1");
-  expect_message({{0, std::nan("")}, {std::nan(""), 0}}, "entry (0, 1)");
+  EXPECT_TRUE(refused_with({{0, 1, 2}, {1, 0, 1}, {2, 1.5, 0}}, "not symmetric at (1, 2)"));
+  EXPECT_TRUE(refused_with({{0, -1}, {-1, 0}}, "entry (0, 1)"));
+  EXPECT_TRUE(refused_with({{0, 1}, {1, 0.5}}, "diagonal entry (1, 1)"));
+  EXPECT_TRUE(refused_with({{0, 1}, {1}}, "row 1"));
+  EXPECT_TRUE(refused_with({{0, std::nan("")}, {std::nan(""), 0}}, "entry (0, 1)"));
   Eigen::MatrixXd M(2, 3);
   M.setZero();
   EXPECT_THROW(build_rips_graph_from_distance_matrix(M, 1.0), std::invalid_argument);
@@ -793,12 +775,8 @@ TEST(BoostGraphInput, WeightedGraphBecomesCanonical) {
   EXPECT_EQ(p.edges, (std::vector<Edge>{{0, 1}, {1, 3}}));
   EXPECT_EQ(p.edge_lengths, (std::vector<double>{1.0, 2.0}));
   add_edge(2, 3, -1.0, g);
-  try {
-    proximity_graph_from_boost_graph(g, get(boost::edge_weight, g));
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("edge 4"), std::string::npos) << e.what();
-  }
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { proximity_graph_from_boost_graph(g, get(boost::edge_weight, g)); }, "edge 4"));
 }
 
 TEST(FlagComplex, TrianglesAreTheThreeCliques) {
@@ -963,12 +941,7 @@ TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
     g.edges = std::move(edges);
     g.edge_lengths = std::move(lengths);
     EXPECT_FALSE(is_canonical(g));
-    try {
-      build_flag_complex_2(g);
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no exception");
+    return test::invalid_argument_message([&] { build_flag_complex_2(g); });
   };
   auto expect_in = [](const std::string& what, const std::string& part) {
     EXPECT_NE(what.find(part), std::string::npos) << what;
