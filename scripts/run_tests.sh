@@ -6,4 +6,5 @@ cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
 BUILD_DIR=${BUILD_DIR:-build} bash scripts/build.sh -DFEATURERECON_BUILD_TESTS=ON -DFEATURERECON_BUILD_EXAMPLES=ON "$@"
 cd "${BUILD_DIR:-build}"
-ctest --output-on-failure --parallel "$(nproc)"
+# A test that hangs fails after 10 minutes instead of holding the run (the slowest takes under a minute).
+ctest --output-on-failure --parallel "$(nproc)" --timeout 600
