@@ -1504,3 +1504,281 @@ if(NOT number_rc EQUAL 2 OR NOT number_err MATCHES "--out: 12 is also the input 
   message(SEND_ERROR "input_named_like_a_number: rc ${number_rc}, ${number_err}")
 endif()
 expect_same_file(${WORK}/special/12 ${DATA}/figure_eight.xyz "input_named_like_a_number: the input")
+
+# Audit of the command line (mutation testing of src/cli): each test below pins a property the help or the README
+# promises that no earlier test checked.
+file(MAKE_DIRECTORY ${WORK}/audit)
+set(A ${WORK}/audit)
+# Bad arguments exit with status 2 and say which: an option given twice, a flag given a value, an argument too
+# many, an integer with trailing characters or out of range.
+expect(audit_option_twice 2 "option --radius given twice" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --radius 0.7 --out ${A}/x.txt)
+expect(audit_flag_with_value 2 "option --quiet takes no value" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --quiet=yes --out ${A}/x.txt)
+expect(audit_extra_argument 2 "unexpected argument '.*second.pgm'" stipple ${A}/first.pgm ${A}/second.pgm --count 5 --out ${A}/x.svg)
+expect(audit_integer_suffix 2 "--knn must be an integer, got '3x'" rips --points ${DATA}/figure_eight.xyz --knn 3x --out ${A}/x.txt)
+expect(audit_integer_range 2 "--knn must be an integer, got '99999999999999999999'" rips --points ${DATA}/figure_eight.xyz --knn 99999999999999999999 --out ${A}/x.txt)
+# rips: exactly one of --radius and --knn, K >= 1; the kd-tree search goes up to 3-D only (auto: brute force above).
+expect(audit_rips_no_scale 2 "give exactly one of --radius R and --knn K" rips --points ${DATA}/figure_eight.xyz --out ${A}/x.txt)
+expect(audit_rips_knn_zero 2 "--knn must be an integer >= 1, got '0'" rips --points ${DATA}/figure_eight.xyz --knn 0 --out ${A}/x.txt)
+file(STRINGS ${DATA}/figure_eight.xyz audit_eight REGEX "^[^#]")
+list(TRANSFORM audit_eight APPEND " 0 0\n")
+string(JOIN "" audit_eight_4d ${audit_eight})
+file(WRITE ${A}/eight_4d.xyz "${audit_eight_4d}")
+expect(audit_rips_kd_tree_4d 2 "--search kd-tree supports dimension <= 3; the points have dimension 4" rips --points ${A}/eight_4d.xyz --radius 0.6 --search kd-tree --out ${A}/x.txt)
+expect(audit_rips_auto_4d 0 "wrote .*: 400 vertices, 4226 edges, 22292 triangles, 1 components \\(dimension 4\\)" rips --points ${A}/eight_4d.xyz --radius 0.6 --out ${A}/x.txt --quiet)
+# rips writes the first three coordinates of each point (zero-padded): z too.
+file(WRITE ${A}/z.xyz "0 0 5\n1 0 6\n")
+expect(audit_rips_z 0 "wrote .*z.txt: 2 vertices, 1 edges, 0 triangles, 1 components \\(dimension 3\\)" rips --points ${A}/z.xyz --radius 2 --out ${A}/z.txt --quiet)
+expect_count(${A}/z.txt "\n0 0 5 [0-9.]+\n1 0 6 [0-9.]+\n" 1)
+# reeb on a Y (one minimum below an up-fork and two maxima): the counts by kind, in JSON and in text; the one
+# branch pair is a maximum with the up-fork, [2, 1] (the superlevel branches count too); --simplify 0 is allowed
+# (nothing removed), --simplify 5 removes the branch; augmented_arcs stays the augmented graph's count.
+file(WRITE ${A}/y.txt "4 3\n0 0 0 0\n0 1 0 1\n-1 2 0 2\n1 2 0 2\n0 1\n1 2\n1 3\n")
+expect(audit_reeb_y_json 0 "\"nodes\": 4, \"arcs\": 3, \"loops\": 0, \"minima\": 1, \"maxima\": 2, \"up_forks\": 1, \"down_forks\": 0, \"components\": 1, \"augmented_arcs\": 3, .*\"branch_pairs\": \\[\\[2, 1\\]\\], \"loop_pairs\": \\[\\]}" reeb --complex ${A}/y.txt --json --persistence --quiet)
+expect(audit_reeb_y_text 0 "Reeb graph: 4 nodes, 3 arcs, 0 loops, 1 components\nnodes: 1 minima, 2 maxima, 1 up-forks, 0 down-forks\n" reeb --complex ${A}/y.txt --quiet)
+expect(audit_reeb_simplify_zero 0 "\"nodes\": 4, .*\"simplified_by\": 0, \"removed_branches\": 0, \"removed_loops\": 0}" reeb --complex ${A}/y.txt --json --simplify 0 --quiet)
+expect(audit_reeb_simplify 0 "\"nodes\": 2, \"arcs\": 1, .*\"augmented_arcs\": 3, .*\"simplified_by\": 5, \"removed_branches\": 1, \"removed_loops\": 0}" reeb --complex ${A}/y.txt --json --simplify 5 --quiet)
+# skeleton --image: a pixel is ink when darker than T (default 128) or, with --ink bright, at least T; T is a
+# grey level in [1, 255]. Grey levels 127, 128, 255: one dark pixel (127), two bright ones (128 and 255).
+file(WRITE ${A}/grey3.pgm "P2\n3 1\n255\n127 128 255\n")
+expect(audit_image_dark_default 0 "\"points\": 1, .*\"ink\": \"dark\", \"ink_threshold\": 128" skeleton --image ${A}/grey3.pgm --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+expect_count(${A}/v.txt "^0,0\\.5,0\\.5\n$" 1)
+expect(audit_image_bright_default 0 "\"points\": 2, .*\"ink\": \"bright\", \"ink_threshold\": 128" skeleton --image ${A}/grey3.pgm --ink bright --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+expect(audit_image_threshold_range 2 "--ink-threshold must be an integer grey level in \\[1, 255\\], got '256'" skeleton --image ${A}/grey3.pgm --ink-threshold 256 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+# Progress: each stage of rips announces itself on standard error under the name of the graph it builds.
+expect(audit_rips_progress_radius 0 "wrote" rips --points ${DATA}/figure_eight.xyz --radius 0.6 --out ${A}/x.txt)
+if(NOT last_error MATCHES "rips graph: done \\(4226 edges\\)" OR last_error MATCHES "knn graph")
+  message(SEND_ERROR "audit_rips_progress_radius: no 'rips graph' stage:\n${last_error}")
+endif()
+expect(audit_rips_progress_knn 0 "wrote" rips --points ${DATA}/figure_eight.xyz --knn 5 --out ${A}/x.txt)
+if(NOT last_error MATCHES "knn graph: done \\([0-9]+ edges\\)" OR last_error MATCHES "rips graph")
+  message(SEND_ERROR "audit_rips_progress_knn: no 'knn graph' stage:\n${last_error}")
+endif()
+# --max-triangles: default 2^27, printed in the skeleton's JSON.
+expect(audit_skeleton_max_triangles_default 0 "\"max_triangles\": 134217728," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+# skeleton: 0 is allowed for --delta (no simplification), --repair (no repair) and --prune (keep all); a negative
+# --sample-spacing and --smoothing are refused; --picture-size takes 100 (its least).
+expect(audit_skeleton_zero_lengths 0 "\"delta\": 0, \"repair\": 0, .*\"prune\": 0," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 0 --repair 0 --prune 0 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+expect(audit_skeleton_spacing_negative 2 "--sample-spacing must be >= 0 \\(0: no thinning\\)" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --sample-spacing -1 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_skeleton_smoothing_negative 2 "--smoothing must be an integer in \\[0, 1000000\\], got -1" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --smoothing -1 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_skeleton_picture_size_least 0 "\"loops\": 2," skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --delta 1 --svg ${A}/p.svg --picture-size 100 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+# Thinning keeps a point unless a kept point is closer than S: two points exactly S apart both stay.
+file(WRITE ${A}/two.xyz "0 0\n1 0\n")
+expect(audit_thinning_at_spacing 0 "\"points\": 2, \"sampled\": 2," skeleton --points ${A}/two.xyz --radius 2 --sample-spacing 1 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+# The spacing warning gives the median of the nearest-neighbour distances: 1, 1, 2, 4 have the median 2 (the
+# upper of the two middle values); it is for fewer than one neighbour per point (two pairs: one each, no warning).
+file(WRITE ${A}/line4.xyz "0 0\n1 0\n3 0\n7 0\n")
+expect(audit_spacing_median 0 "the median distance from a point to its nearest neighbour is 2: give --radius above it" skeleton --points ${A}/line4.xyz --radius 0.5 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+file(WRITE ${A}/pairs.xyz "0 0\n0.1 0\n5 0\n5.1 0\n")
+expect(audit_spacing_pairs 0 "\"rips_edges\": 2," skeleton --points ${A}/pairs.xyz --radius 0.2 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+if(last_error MATCHES "warning")
+  message(SEND_ERROR "audit_spacing_pairs: a warning although every point has a neighbour:\n${last_error}")
+endif()
+# --sample-spacing does not apply to a graph or a distance matrix; a distance matrix has zeros on its diagonal and
+# no negative entries.
+expect(audit_graph_spacing 2 "--sample-spacing applies to --points, --image and --tracks only" skeleton --graph ${DATA}/figure_eight_graph.txt --sample-spacing 1 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+file(WRITE ${A}/diagonal.txt "0 1\n1 2\n")
+expect(audit_matrix_diagonal 1 "diagonal.txt:2: the diagonal entry of row 1 is not 0" skeleton --distance-matrix ${A}/diagonal.txt --radius 1 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+file(WRITE ${A}/negative.txt "0 -1\n-1 0\n")
+expect(audit_matrix_negative 1 "negative.txt:1: negative distance in column 1 of row 0" skeleton --distance-matrix ${A}/negative.txt --radius 1 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+# --graph: no radius (null in the JSON); edge lengths are 3-D (an edge along z, 5 long, gives the level width 5).
+file(WRITE ${A}/z_graph.txt "2 1\n0 0 0 0\n0 0 5 1\n0 1\n")
+expect(audit_graph_z 0 "\"radius\": null, .*\"level_width\": 5," skeleton --graph ${A}/z_graph.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+# Tracks: the angles are in [0, 180] degrees and the densities in [0, 1].
+expect(audit_tracks_heading_negative 2 "--heading-tolerance must be in \\[0, 180\\]" skeleton --tracks ${DATA}/block_tracks.txt --heading-tolerance -5 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_tracks_density_heading_large 2 "--density-heading-tolerance must be in \\[0, 180\\]" skeleton --tracks ${DATA}/block_tracks.txt --density-heading-tolerance 200 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_tracks_min_density_large 2 "--min-density must be in \\[0, 1\\]" skeleton --tracks ${DATA}/block_tracks.txt --min-density 1.5 --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+# Few fixes a trip: the warning is for fewer than two fixes a trip on average, and for several trips.
+file(WRITE ${A}/two_a_trip.txt "0 0 0 0\n0 10 0 1\n1 0 5 0\n1 10 5 1\n")
+expect(audit_two_fixes_a_trip 0 "\"trips\": 2," skeleton --tracks ${A}/two_a_trip.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+if(last_error MATCHES "fewer than two a trip")
+  message(SEND_ERROR "audit_two_fixes_a_trip: warned although every trip has two fixes:\n${last_error}")
+endif()
+file(WRITE ${A}/one_fix.txt "0 0 0 0\n")
+expect(audit_one_fix 0 "\"trips\": 1," skeleton --tracks ${A}/one_fix.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+if(last_error MATCHES "fewer than two a trip")
+  message(SEND_ERROR "audit_one_fix: warned for a single trip:\n${last_error}")
+endif()
+# Degrees read as metres: a median step below 0.01 with every fix within +-180 and +-90 is refused (steps of 0.005
+# degrees, about 500 m); y up to 100 is no latitude (not refused).
+file(WRITE ${A}/deg_tracks.txt "0 10 50 0\n0 10.005 50 10\n0 10.01 50 20\n")
+expect(audit_degree_tracks 1 "deg_tracks.txt: the fixes look like longitude and latitude in degrees \\(median step 0.005" skeleton --tracks ${A}/deg_tracks.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+file(WRITE ${A}/not_deg_tracks.txt "0 10 100 0\n0 10.005 100 10\n0 10.01 100 20\n")
+expect(audit_not_degree_tracks 0 "\"trips\": 1," skeleton --tracks ${A}/not_deg_tracks.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --quiet)
+file(WRITE ${A}/deg_v.txt "0,10,50\n1,10.005,50\n")
+file(WRITE ${A}/deg_e.txt "0,0,1\n")
+expect(audit_degree_map 1 "deg_v.txt: the vertices look like longitude and latitude in degrees \\(median edge 0.005" evaluate-map ${A}/deg_v.txt ${A}/deg_e.txt ${A}/deg_v.txt ${A}/deg_e.txt)
+file(WRITE ${A}/not_deg_v.txt "0,10,100\n1,10.005,100\n")
+expect(audit_not_degree_map 0 "\"f_score\": " evaluate-map ${A}/not_deg_v.txt ${A}/deg_e.txt ${A}/not_deg_v.txt ${A}/deg_e.txt --threshold 0.001 --interval 0.001)
+# evaluate-map: --interval and --bearing must be > 0; --crop-radius is used (and printed); one self-loop is "1
+# such edge has".
+expect(audit_evaluate_interval_zero 2 "--interval must be > 0, got '0'" evaluate-map ${A}/deg_v.txt ${A}/deg_e.txt ${A}/deg_v.txt ${A}/deg_e.txt --interval 0)
+expect(audit_evaluate_bearing_negative 2 "--bearing must be > 0, got '-5'" evaluate-map ${A}/deg_v.txt ${A}/deg_e.txt ${A}/deg_v.txt ${A}/deg_e.txt --bearing -5)
+file(WRITE ${A}/m_v.txt "0,0,0\n1,100,0\n")
+file(WRITE ${A}/m_e.txt "0,0,1\n")
+file(WRITE ${A}/m_loop_e.txt "0,0,1\n1,1,1\n")
+file(WRITE ${A}/m_tracks.txt "0 0 40 0\n0 100 40 10\n")
+expect(audit_evaluate_crop_radius 0 "\"ground_truth_edges\": 1, .*\"crop\": {\"radius\": 50," evaluate-map ${A}/m_v.txt ${A}/m_e.txt ${A}/m_v.txt ${A}/m_e.txt --crop-to-tracks ${A}/m_tracks.txt --crop-radius 50 --quiet)
+expect(audit_evaluate_one_self_loop 0 "m_loop_e.txt line 2: an edge joins a vertex to itself; 1 such edge has no length and is ignored" evaluate-map ${A}/m_v.txt ${A}/m_e.txt ${A}/m_v.txt ${A}/m_loop_e.txt)
+# synthetic-city: at least 2 columns, at most 2^24 intersections, blocks wider than 0, --missing in [0, 1]
+# (0 allowed), --seed >= 0; the organic layout does not jitter (null); --out-vertices/--out-edges hold the driven
+# streets and --out-streets-* all of them.
+expect(audit_city_columns 2 "--columns must be >= 2" synthetic-city --columns 1 --out-tracks ${A}/t.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_city_intersections 2 "--columns x --rows must be at most 2\\^24 intersections" synthetic-city --columns 5000 --rows 5000 --out-tracks ${A}/t.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_city_block_zero 2 "--block-width must be > 0, got '0'" synthetic-city --block-width 0 --out-tracks ${A}/t.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_city_seed_negative 2 "--seed must be >= 0" synthetic-city --seed -1 --out-tracks ${A}/t.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+expect(audit_city_streets 0 "\"layout\": \"organic\", .*\"street_edges\": ([0-9]+), \"driven_edges\": ([0-9]+), .*\"jitter\": null," synthetic-city --layout organic --trips 3 --missing 0 --out-tracks ${A}/t.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --out-streets-vertices ${A}/sv.txt --out-streets-edges ${A}/se.txt --quiet)
+string(REGEX MATCH "\"street_edges\": ([0-9]+), \"driven_edges\": ([0-9]+)" _ "${last_output}")
+expect_count(${A}/se.txt "\n" ${CMAKE_MATCH_1})
+expect_count(${A}/e.txt "\n" ${CMAKE_MATCH_2})
+if(NOT CMAKE_MATCH_2 LESS CMAKE_MATCH_1)
+  message(SEND_ERROR "audit_city_streets: 3 trips drove all ${CMAKE_MATCH_1} streets")
+endif()
+# sample: elimination needs --count, which must be >= 1 and may equal the number of points (all kept);
+# --normal-neighbors in [3, 1000000] (default 18); --seed >= 0.
+expect(audit_sample_elimination_radius 2 "--method elimination needs --count M" sample --input ${WORK}/candidates.txt --radius 0.1 --out ${A}/s.txt)
+expect(audit_sample_count_zero 2 "--count must be >= 1, got 0" sample --input ${WORK}/candidates.txt --count 0 --out ${A}/s.txt)
+expect(audit_sample_all_points 0 "\"points\": 1500, \"kept\": 1500," sample --input ${WORK}/candidates.txt --count 1500 --out ${A}/s.txt --quiet)
+expect(audit_sample_neighbors_two 2 "--normal-neighbors must be in \\[3, 1000000\\]" sample --input ${WORK}/wall_plain.xyz --count 10 --sigma-feature 0.5 --normal-neighbors 2 --out ${A}/s.xyz)
+expect(audit_sample_seed_negative 2 "--seed must be >= 0" sample --input ${WORK}/wall.xyz --count 10 --seed -1 --out ${A}/s.xyz)
+expect(audit_sample_neighbors_default 0 "\"normals\": \"estimated\"" sample --input ${WORK}/wall_plain.xyz --count 50 --sigma-feature 0.5 --out ${A}/n_default.xyz --quiet)
+expect(audit_sample_neighbors_18 0 "\"normals\": \"estimated\"" sample --input ${WORK}/wall_plain.xyz --count 50 --sigma-feature 0.5 --normal-neighbors 18 --out ${A}/n_18.xyz --quiet)
+expect_same_file(${A}/n_default.xyz ${A}/n_18.xyz "audit_sample_neighbors_default: the default is not 18 neighbours")
+# --unoriented: a normal and its opposite are one direction, so the wall (opposite normals on its two sheets)
+# samples as the same wall with all normals up.
+file(STRINGS ${WORK}/wall.xyz audit_wall)
+list(TRANSFORM audit_wall REPLACE " 0 0 -1$" " 0 0 1")
+list(TRANSFORM audit_wall APPEND "\n")
+string(JOIN "" audit_wall_up ${audit_wall})
+file(WRITE ${A}/wall_up.xyz "${audit_wall_up}")
+expect(audit_sample_unoriented 0 "\"orientation\": \"unoriented\"" sample --input ${WORK}/wall.xyz --count 100 --sigma-feature 0.5 --unoriented --out ${A}/wall_u.xyz --quiet)
+expect(audit_sample_up 0 "\"orientation\": \"oriented\"" sample --input ${A}/wall_up.xyz --count 100 --sigma-feature 0.5 --out ${A}/wall_up_s.xyz --quiet)
+file(STRINGS ${A}/wall_u.xyz audit_u)
+file(STRINGS ${A}/wall_up_s.xyz audit_up)
+list(TRANSFORM audit_u REPLACE " [^ ]+ [^ ]+ [^ ]+$" "")
+list(TRANSFORM audit_up REPLACE " [^ ]+ [^ ]+ [^ ]+$" "")
+if(NOT audit_u STREQUAL audit_up)
+  message(SEND_ERROR "audit_sample_unoriented: --unoriented kept other points than the wall with all normals up")
+endif()
+# sample-stats: --intrinsic-dimension is 2 or 3; --sigma-feature needs normals also for text points in the plane;
+# --spectrum-method gridded is named as such; an empty set on the torus measures 1; --quiet silences the note;
+# the spectrum file has the columns its header names (radial power at frequency 0 is the count, 256).
+expect(audit_stats_dimension_one 2 "--intrinsic-dimension must be 2 or 3" sample-stats --input ${DATA}/figure_eight.xyz --intrinsic-dimension 1)
+expect(audit_stats_sigma_plane 2 "--sigma-feature needs normals in .*torus.txt \\(lines 'x y z nx ny nz', or PLY / OFF\\)" sample-stats --input ${WORK}/torus.txt --sigma-feature 0.5)
+expect(audit_stats_gridded 0 "\"spectrum_method\": \"gridded\"" sample-stats --input ${WORK}/torus.txt --periodic --spectrum-method gridded --quiet)
+expect(audit_stats_empty_torus 0 "\"samples\": 0,.*\"domain_measure\": 1, \"periodic\": true" sample-stats --input ${WORK}/nothing.txt --periodic --quiet)
+expect(audit_stats_quiet_note 0 "\"samples\": 200," sample-stats --input ${WORK}/euclid.xyz --quiet)
+if(NOT last_error STREQUAL "")
+  message(SEND_ERROR "audit_stats_quiet_note: --quiet still wrote to standard error:\n${last_error}")
+endif()
+expect(audit_stats_spectrum_columns 0 "\"effective_nyquist\": " sample-stats --input ${WORK}/torus.txt --periodic --spectrum ${A}/spectrum.csv --quiet)
+expect_count(${A}/spectrum.csv "^frequency,radial_power,anisotropy_db\n0,255\\.99[0-9]*,0\n0\\.125,20\\.35[0-9]*,-1\\.94" 1)
+# sample-image: --count >= 1, darts need M or R, --svg is SVG and --mosaic a raster picture; --count may be every
+# pixel, and the mosaic of every pixel is the picture itself (PSNR null: equal), which only --mosaic reports;
+# samples sit at pixel centres with their values in [0, 1] (white is 1); --radius is elimination's r_max.
+expect(audit_image_count_zero 2 "--count must be >= 1, got 0" sample-image --input ${WORK}/line.pgm --count 0 --out ${A}/s.txt)
+expect(audit_image_darts_nothing 2 "--method darts needs --count M or --radius R" sample-image --input ${WORK}/line.pgm --method darts --out ${A}/s.txt)
+expect(audit_image_svg_extension 2 "--svg writes an SVG picture: give a file ending in \\.svg, got '.*s\\.png'" sample-image --input ${WORK}/line.pgm --count 5 --svg ${A}/s.png)
+expect(audit_image_mosaic_extension 2 "--mosaic writes a raster picture: give a file ending in \\.png, \\.jpg, \\.jpeg, \\.pgm or \\.ppm, got '.*m\\.svg'" sample-image --input ${WORK}/line.pgm --count 5 --mosaic ${A}/m.svg)
+expect(audit_image_every_pixel 0 "\"samples\": 12, .*\"mosaic_psnr_db\": null}" sample-image --input ${WORK}/tiny.ppm --count 12 --mosaic ${A}/m.ppm --quiet)
+expect(audit_image_no_mosaic 0 "\"samples\": 12, " sample-image --input ${WORK}/tiny.ppm --count 12 --out ${A}/s.txt --quiet)
+if(last_output MATCHES "mosaic_psnr_db")
+  message(SEND_ERROR "audit_image_no_mosaic: mosaic_psnr_db without --mosaic: ${last_output}")
+endif()
+file(WRITE ${A}/white1.pgm "P2\n1 1\n255\n255\n")
+expect(audit_image_white 0 "\"samples\": 1," sample-image --input ${A}/white1.pgm --count 1 --out ${A}/w.txt --quiet)
+expect_count(${A}/w.txt "^0\\.5 0\\.5 1\n$" 1)
+expect(audit_image_elimination_radius 0 "\"method\": \"elimination\", \"samples\": 50, \"radius\": 3," sample-image --input ${WORK}/line.pgm --count 50 --radius 3 --out ${A}/s.txt --quiet)
+# stipple: kernel relaxation runs 100 steps by default, Lloyd 50; at most 10^6; RGB palettes have 6 colours by
+# default, at most 64; the SVG is on white; Lloyd has no feature scale (null); dart dots sit at pixel centres;
+# --count beyond the pixels is said as such; a dot's radius is at least half a pixel; darkness is 1 - luma (BT.601:
+# red 0.299, blue 0.114), so two red pixels, one blue and one white give dots of radius 0.8634.
+expect(audit_stipple_kernel_default 0 "\"method\": \"kernel\", .*\"iterations\": 100, \"stop\": \"iteration_cap\"" stipple ${WORK}/line.pgm --count 40 --method kernel --out ${A}/k.svg --quiet)
+expect(audit_stipple_iterations_large 2 "--iterations must be in \\[0, 1000000\\], got 1000001" stipple ${WORK}/line.pgm --count 4 --iterations 1000001 --out ${A}/x.svg)
+expect(audit_stipple_palette_default 0 "\"channels\": 3, \"method\": \"lloyd\", \"dots\": 6, \"palette\": 6, \"sigma_feature\": null," stipple ${WORK}/tiny.ppm --count 6 --out ${A}/t.svg --quiet)
+expect_count(${A}/t.svg "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>" 1)
+expect(audit_stipple_palette_large 2 "--palette must be between 1 and 64 colours, got 65" stipple ${WORK}/tiny.ppm --count 6 --palette 65 --out ${A}/x.svg)
+expect(audit_stipple_darts_centres 0 "\"dots\": 40," stipple ${WORK}/line.pgm --count 40 --method darts --out ${A}/d.svg --quiet)
+expect_count(${A}/d.svg "<circle cx=\"[0-9]+\\.5\" cy=\"[0-9]+\\.5\"" 40)
+expect(audit_stipple_count_pixels 2 "--count 17 exceeds the 16 pixels of [^\n]*two_dark.pgm\n" stipple ${WORK}/two_dark.pgm --count 17 --out ${A}/x.svg)
+file(WRITE ${A}/light.pgm "P2\n10 10\n255\n")
+string(REPEAT "200 " 99 audit_light)
+file(APPEND ${A}/light.pgm "${audit_light}0\n")
+expect(audit_stipple_least_dot 0 "\"dots\": 100, .*\"dot_radius\": 0.5," stipple ${A}/light.pgm --count 100 --method darts --out ${A}/l.svg --quiet)
+file(WRITE ${A}/rbw.ppm "P3\n2 2\n255\n255 0 0 255 0 0\n0 0 255 255 255 255\n")
+expect(audit_stipple_luma 0 "\"dots\": 1, .*\"dot_radius\": 0\\.8634" stipple ${A}/rbw.ppm --count 1 --method darts --out ${A}/r.svg --quiet)
+# bilateral-filter: --radius in [1, 4096], --candidates in [2, 64], --sigma-spatial at most 2048 without --radius,
+# --exact-out a picture too; the exact filter reports its mode as exact; density compensation is on for bilateral
+# taps (default) and off for uniform ones; --exact-out holds the exact filter (the --sampling exact picture); values
+# are rounded: 0 and 255 averaged with (nearly) equal weights give 127 and 128.
+expect(audit_filter_radius_zero 2 "--radius must be between 1 and 4096 pixels, got 0" bilateral-filter ${WORK}/line.pgm --radius 0 --out ${A}/f.png)
+expect(audit_filter_candidates_one 2 "--candidates must be between 2 and 64 per tap, got 1" bilateral-filter ${WORK}/line.pgm --candidates 1 --out ${A}/f.png)
+expect(audit_filter_sigma_spatial 2 "--sigma-spatial must be at most 2048 without --radius" bilateral-filter ${WORK}/line.pgm --sigma-spatial 3000 --out ${A}/f.png)
+expect(audit_filter_exact_out_format 2 "pictures are written as PNG, JPEG, PGM or PPM, got '.*e\\.svg'" bilateral-filter ${WORK}/line.pgm --out ${A}/f.png --exact-out ${A}/e.svg)
+expect(audit_filter_compensation 0 "\"sampling\": \"bilateral\", .*\"density_compensation\": true, .*\"psnr_db\": [0-9]" bilateral-filter ${WORK}/tiny.ppm --budget 0.5 --out ${A}/f.ppm --exact-out ${A}/fe.ppm --quiet)
+expect(audit_filter_uniform 0 "\"sampling\": \"uniform\", .*\"density_compensation\": false," bilateral-filter ${WORK}/line.pgm --sampling uniform --budget 0.5 --out ${A}/u.pgm --quiet)
+expect(audit_filter_exact 0 "\"sampling\": \"exact\", \"mode\": \"exact\", \"budget\": 1," bilateral-filter ${WORK}/tiny.ppm --sampling exact --out ${A}/x.ppm --quiet)
+expect_same_file(${A}/fe.ppm ${A}/x.ppm "audit_filter_exact: --exact-out is not the exact filter")
+file(WRITE ${A}/bw.pgm "P2\n2 1\n255\n0 255\n")
+expect(audit_filter_rounding 0 "\"radius\": 1," bilateral-filter ${A}/bw.pgm --sampling exact --radius 1 --sigma-spatial 1000 --sigma-range 1e6 --out ${A}/bw_out.pgm --quiet)
+file(READ ${A}/bw_out.pgm audit_bw HEX)
+if(NOT audit_bw MATCHES "7f80$")
+  message(SEND_ERROR "audit_filter_rounding: the filtered values are not 127 and 128: ${audit_bw}")
+endif()
+# sample --periodic with darts at a radius: distances of the unit torus, so no two kept points are closer than R
+# there (sample-stats --periodic measures them).
+expect(audit_sample_darts_periodic 0 "\"method\": \"darts\", \"radius\": 0.05,.*\"periodic\": true" sample --input ${WORK}/candidates.txt --method darts --radius 0.05 --periodic --out ${A}/dp.txt --quiet)
+expect(audit_sample_darts_periodic_stats 0 "\"minimum_distance\": 0\\.(0[5-9]|[1-9])[0-9]*, " sample-stats --input ${A}/dp.txt --periodic --quiet)
+# File names are JSON strings: a control character (a tab) is escaped.
+expect(audit_json_tab 0 "\"vertices_file\": \"[^\"]*tab\\\\u0009v\\.txt\"" skeleton --points ${DATA}/figure_eight.xyz --radius 0.6 --out-vertices "${A}/tab\tv.txt" --out-edges ${A}/e.txt --quiet)
+# /dev/fd/1 is standard output as /dev/stdout is: written through the descriptor, between what the shell wrote
+# before and after (not a new file replacing the redirection's).
+find_program(BASH_PROGRAM bash)
+if(BASH_PROGRAM)
+  execute_process(COMMAND ${BASH_PROGRAM} -c "{ echo BEFORE; \"$0\" rips --points '${DATA}/figure_eight.xyz' --radius 0.6 --out /dev/fd/1 --quiet 2> /dev/null; echo AFTER; } > '${A}/fd1.txt'" ${FEATURERECON}
+                  RESULT_VARIABLE rc)
+  file(READ ${A}/fd1.txt audit_fd1)
+  file(READ ${WORK}/fig8.txt audit_fig8)
+  if(NOT rc EQUAL 0 OR NOT audit_fd1 STREQUAL "BEFORE\n${audit_fig8}AFTER\n")
+    message(SEND_ERROR "audit_output_to_fd1: exit ${rc}; the file begins: ${audit_fd1}")
+  endif()
+endif()
+# The picture of a --graph skeleton has 3 pixels per level width (help of --svg): a chain of 499 unit edges is
+# 1497 pixels long, plus the margins.
+set(audit_chain "500 499\n")
+foreach(i RANGE 499)
+  string(APPEND audit_chain "${i} 0 0 0\n")
+endforeach()
+foreach(i RANGE 498)
+  math(EXPR j "${i} + 1")
+  string(APPEND audit_chain "${i} ${j}\n")
+endforeach()
+file(WRITE ${A}/chain.txt "${audit_chain}")
+expect(audit_graph_picture_scale 0 "\"level_width\": 1," skeleton --graph ${A}/chain.txt --out-vertices ${A}/v.txt --out-edges ${A}/e.txt --svg ${A}/chain.svg --quiet)
+expect_count(${A}/chain.svg "viewBox=\"0 0 1517\\.00 20\\.00\"" 1)
+# A radius derived from the data is held to the limit of --radius (1e300), as the message says.
+file(WRITE ${A}/far2.xyz "0 0\n1e301 0\n")
+expect(audit_estimated_radius_huge 1 "far2.xyz: the radius derived from the data, 1\\.60726e\\+301, exceeds 1e300 .*give --radius" skeleton --points ${A}/far2.xyz --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+# sample's bilateral_relative_radius is rho in the sampler's metric: what sample-stats --sigma-feature measures on
+# the kept points over the same domain.
+expect(audit_sample_bilateral_rho 0 "\"kept\": 100, .*\"intrinsic_dimension\": 3, \"domain_measure\": ([0-9.]+), .*\"bilateral_relative_radius\": ([0-9.]+), " sample --input ${WORK}/wall.xyz --count 100 --sigma-feature 0.5 --out ${A}/b.xyz --quiet)
+string(REGEX MATCH "\"domain_measure\": ([0-9.]+), .*\"bilateral_relative_radius\": ([0-9.]+), " _ "${last_output}")
+set(audit_rho ${CMAKE_MATCH_2})
+expect(audit_sample_bilateral_rho_stats 0 "\"relative_radius\": ${audit_rho}, " sample-stats --input ${A}/b.xyz --sigma-feature 0.5 --intrinsic-dimension 3 --domain-measure ${CMAKE_MATCH_1} --quiet)
+# sample-image --picture is the SVG's drawing as a raster: the same mid-grey background (#8c8c8c).
+expect(audit_image_picture_background 0 "\"samples\": 5," sample-image --input ${WORK}/line.pgm --count 5 --svg ${A}/p.svg --picture ${A}/p.ppm --quiet)
+expect_count(${A}/p.svg "<rect width=\"100%\" height=\"100%\" fill=\"#8c8c8c\"/>" 1)
+file(READ ${A}/p.ppm audit_picture HEX)
+string(REGEX MATCHALL "8c8c8c8c8c8c8c8c8c" audit_grey "${audit_picture}")
+list(LENGTH audit_grey audit_grey)
+if(audit_grey LESS 100)
+  message(SEND_ERROR "audit_image_picture_background: the picture's background is not the SVG's grey")
+endif()
+# The mosaic gives every pixel its nearest sample's colour, a tie to the first sample (as --out lists them):
+# darts at 1.5 on red, green, blue keep red and blue, and green's pixel, 1 from each, turns red.
+file(WRITE ${A}/rgb3.ppm "P3\n3 1\n255\n255 0 0 0 255 0 0 0 255\n")
+expect(audit_mosaic_tie 0 "\"samples\": 2," sample-image --input ${A}/rgb3.ppm --method darts --radius 1.5 --out ${A}/rgb3.txt --mosaic ${A}/rgb3_mosaic.ppm --quiet)
+expect_count(${A}/rgb3.txt "^0\\.5 0\\.5 1 0 0\n2\\.5 0\\.5 0 0 1\n$" 1)
+file(READ ${A}/rgb3_mosaic.ppm audit_mosaic HEX)
+if(NOT audit_mosaic MATCHES "ff0000ff00000000ff$")
+  message(SEND_ERROR "audit_mosaic_tie: the tied pixel is not the first sample's red: ${audit_mosaic}")
+endif()
