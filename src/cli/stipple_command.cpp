@@ -47,6 +47,7 @@ struct Stipple_settings {
   std::size_t palette = 0;
   std::uint64_t seed = 0;
   double gamma = 1;
+  bool periodic = false;  ///< Lloyd on the torus of the picture's rectangle (a tile)
 };
 
 /// Darkness 1 - luma / 255 (ITU-R BT.601), raised to gamma: the density of the dots.
@@ -277,6 +278,7 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
     for (const std::size_t i : start) sites.push_back({pixels[i].column + 0.5, pixels[i].row + 0.5});
     fs::Lloyd_options o;
     o.max_iterations = s.iterations;
+    o.periodic = s.periodic;
     o.progress = std::ref(progress);
     const fs::Lloyd_result r =
         fs::lloyd_relaxation(sites, fs::Pixel_density(image.width, image.height, density), o);
@@ -327,8 +329,26 @@ std::uint8_t to_byte(double v) {
   return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255));
 }
 
+/// Where a dot of radius `dot` at p is drawn: at p and, for a tile (--periodic), at each of its copies
+/// shifted by whole widths and heights of the picture that reaches into it, so that tiles laid side by side
+/// continue the dots across their seams.
+std::vector<std::array<double, 2>> drawn_at(const std::array<double, 2>& p, double dot, int width, int height,
+                                            bool periodic) {
+  std::vector<std::array<double, 2>> at{p};
+  if (!periodic) return at;
+  const int ki = int(std::ceil(dot / width)), kj = int(std::ceil(dot / height));
+  for (int i = -ki; i <= ki; ++i)
+    for (int j = -kj; j <= kj; ++j) {
+      const std::array<double, 2> q{p[0] + double(i) * width, p[1] + double(j) * height};
+      if ((i != 0 || j != 0) && q[0] + dot > 0 && q[0] - dot < width && q[1] + dot > 0 && q[1] - dot < height)
+        at.push_back(q);
+    }
+  return at;
+}
+
 void write_svg(const std::string& path, const std::vector<Dot>& dots,
-               const std::vector<std::array<double, 3>>& palette, int width, int height, double dot) {
+               const std::vector<std::array<double, 3>>& palette, int width, int height, double dot,
+               bool periodic) {
   std::ostringstream os;
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
      << "\" viewBox=\"0 0 " << width << ' ' << height
@@ -340,8 +360,9 @@ void write_svg(const std::string& path, const std::vector<Dot>& dots,
     os << "<g fill=\"" << colour << "\">\n";
     for (const Dot& d : dots)
       if (d.colour == k)
-        os << "<circle cx=\"" << json_number(d.position[0]) << "\" cy=\"" << json_number(d.position[1])
-           << "\" r=\"" << json_number(dot) << "\"/>\n";
+        for (const auto& p : drawn_at(d.position, dot, width, height, periodic))
+          os << "<circle cx=\"" << json_number(p[0]) << "\" cy=\"" << json_number(p[1]) << "\" r=\""
+             << json_number(dot) << "\"/>\n";
     os << "</g>\n";
   }
   os << "</svg>\n";
@@ -350,25 +371,26 @@ void write_svg(const std::string& path, const std::vector<Dot>& dots,
 
 /// The same dots on white at the image's size, anti-aliased by 4 x 4 supersampling.
 void write_raster(const std::string& path, const std::vector<Dot>& dots,
-                  const std::vector<std::array<double, 3>>& palette, int width, int height, double dot) {
+                  const std::vector<std::array<double, 3>>& palette, int width, int height, double dot,
+                  bool periodic) {
   std::vector<double> rgb(std::size_t(width) * std::size_t(height) * 3, 1.0);
-  for (const Dot& d : dots) {
-    const double x = d.position[0], y = d.position[1];
-    const int c0 = std::max(0, int(std::floor(x - dot))), c1 = std::min(width - 1, int(x + dot));
-    const int r0 = std::max(0, int(std::floor(y - dot))), r1 = std::min(height - 1, int(y + dot));
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) {
-        int inside = 0;
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b) {
-            const double dx = c + (a + 0.5) / 4 - x, dy = r + (b + 0.5) / 4 - y;
-            inside += dx * dx + dy * dy <= dot * dot;
-          }
-        const double w = inside / 16.0;
-        double* p = &rgb[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
-        for (std::size_t k = 0; k < 3; ++k) p[k] = (1 - w) * p[k] + w * palette[d.colour][k];
-      }
-  }
+  for (const Dot& d : dots)
+    for (const auto& [x, y] : drawn_at(d.position, dot, width, height, periodic)) {
+      const int c0 = std::max(0, int(std::floor(x - dot))), c1 = std::min(width - 1, int(x + dot));
+      const int r0 = std::max(0, int(std::floor(y - dot))), r1 = std::min(height - 1, int(y + dot));
+      for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c) {
+          int inside = 0;
+          for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b) {
+              const double dx = c + (a + 0.5) / 4 - x, dy = r + (b + 0.5) / 4 - y;
+              inside += dx * dx + dy * dy <= dot * dot;
+            }
+          const double w = inside / 16.0;
+          double* p = &rgb[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
+          for (std::size_t k = 0; k < 3; ++k) p[k] = (1 - w) * p[k] + w * palette[d.colour][k];
+        }
+    }
   io::Image picture;
   picture.width = width;
   picture.height = height;
@@ -381,7 +403,7 @@ void write_raster(const std::string& path, const std::vector<Dot>& dots,
 
 int run_stipple(const std::vector<std::string>& argv) {
   const Arguments args(
-      argv, {"grey", "quiet"},
+      argv, {"grey", "periodic", "quiet"},
       {"count", "method", "sigma-feature", "iterations", "palette", "gamma", "seed", "out", "png"}, 1);
   if (args.positional().size() != 1)
     throw Usage_error("give the picture to stipple: featurerecon stipple IMAGE ...");
@@ -397,6 +419,9 @@ int run_stipple(const std::vector<std::string>& argv) {
         "or kernel");
   if (s.method == "darts" && args.has("iterations"))
     throw Usage_error("--iterations does not apply to --method darts (no iterations)");
+  s.periodic = args.has("periodic");
+  if (s.periodic && s.method != "lloyd")
+    throw Usage_error("--periodic applies to --method lloyd only (Lloyd on the torus of the picture)");
   const long long count = args.get_int("count");
   if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   s.count = static_cast<std::size_t>(count);
@@ -466,8 +491,10 @@ int run_stipple(const std::vector<std::string>& argv) {
   // it.
   const double d_hex = std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(dots.size())));
   const double dot = white ? 0.5 : std::max(0.5, 0.5 * d_hex * std::sqrt(total / double(pixels) / peak));
-  if (args.has("out")) write_svg(outputs.path("out"), dots, palette, image.width, image.height, dot);
-  if (args.has("png")) write_raster(outputs.path("png"), dots, palette, image.width, image.height, dot);
+  if (args.has("out"))
+    write_svg(outputs.path("out"), dots, palette, image.width, image.height, dot, s.periodic);
+  if (args.has("png"))
+    write_raster(outputs.path("png"), dots, palette, image.width, image.height, dot, s.periodic);
   outputs.commit();
 
   std::ostringstream os;
@@ -476,7 +503,8 @@ int run_stipple(const std::vector<std::string>& argv) {
      << s.method << "\", \"dots\": " << dots.size() << ", \"palette\": " << palette.size()
      << ", \"sigma_feature\": "
      << json_number(s.method == "lloyd" ? std::numeric_limits<double>::infinity() : s.sigma_feature)
-     << ", \"seed\": " << seed << ", \"iterations\": " << report.iterations << ", \"stop\": "
+     << ", \"periodic\": " << (s.periodic ? "true" : "false") << ", \"seed\": " << seed
+     << ", \"iterations\": " << report.iterations << ", \"stop\": "
      << (report.stop.empty() ? "null" : "\"" + report.stop + "\"")  // darts: no iterations, no reason to stop
      << ", \"dot_radius\": " << json_number(dot) << ", \"seconds\": " << json_number(seconds) << "}\n";
   std::fputs(os.str().c_str(), outputs.summary_stream());

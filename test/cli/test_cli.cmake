@@ -903,6 +903,53 @@ expect(stipple_as_many_as_ink 0 "\"dots\": 2," stipple ${WORK}/two_dark.pgm --co
 expect(stipple_lloyd_sigma 2 "--sigma-feature does not apply to --method lloyd" stipple ${WORK}/line.pgm --count 5 --sigma-feature 0.2 --out ${WORK}/x.svg)
 expect(stipple_darts_iterations 2 "--iterations does not apply to --method darts" stipple ${WORK}/line.pgm --count 5 --method darts --iterations 3 --out ${WORK}/x.svg)
 expect(stipple_darts_stop 0 "\"method\": \"darts\", .*\"stop\": null," stipple ${WORK}/line.pgm --count 5 --method darts --out ${WORK}/x.svg --quiet)
+# stipple --periodic (Lloyd only): the picture is a tile. One dot on a uniform 8 x 2 picture stays where it
+# starts, a pixel centre (x, y) (its torus cell is the whole tile, centred on it); its radius is half the
+# hexagonal spacing, sqrt(32 / sqrt(3)) / 2 = 2.149, more than the height: it is drawn at the copies shifted by
+# 0 and +-2 in y (+-4 reach no further) and by +-8 in x where those reach into the picture (x < 2.149: +8;
+# x > 5.851: -8).
+file(WRITE ${WORK}/flat8x2.pgm "P2\n8 2\n255\n128 128 128 128 128 128 128 128\n128 128 128 128 128 128 128 128\n")
+# Seeds 0, 1 and 4 start it at x = 1.5, 5.5 and 6.5.
+foreach(seed 0 1 4)
+  expect(stipple_periodic_one_${seed} 0 "\"dots\": 1, .*\"periodic\": true, .*\"dot_radius\": 2\\.149" stipple ${WORK}/flat8x2.pgm --count 1 --periodic --seed ${seed} --out ${WORK}/tile1_${seed}.svg --png ${WORK}/tile1_${seed}.ppm --quiet)
+  file(READ ${WORK}/tile1_${seed}.svg tile1)
+  # The dot itself comes first (Lloyd's centroid may differ from the centre in the last bits).
+  string(REGEX MATCH "<circle cx=\"([0-9])\\.[0-9]+\" cy=\"([01])\\.[0-9]+\"" first "${tile1}")
+  if(NOT first)
+    message(SEND_ERROR "stipple_periodic_one_${seed}: the first circle is not the dot in the picture:\n${tile1}")
+  else()
+    set(column ${CMAKE_MATCH_1})
+    set(left 0)
+    set(right 0)
+    if(column LESS 2)
+      set(right 3)
+    endif()
+    if(column GREATER 5)
+      set(left 3)
+    endif()
+    math(EXPR columns "1 + (${left} + ${right}) / 3")
+    math(EXPR circles "3 * ${columns}")
+    expect_count(${WORK}/tile1_${seed}.svg "<circle " ${circles})
+    expect_count(${WORK}/tile1_${seed}.svg "cy=\"-[01]\\." ${columns})  # y - 2
+    expect_count(${WORK}/tile1_${seed}.svg "cy=\"[23]\\." ${columns})  # y + 2
+    expect_count(${WORK}/tile1_${seed}.svg "cx=\"-" ${left})  # x - 8
+    expect_count(${WORK}/tile1_${seed}.svg "cx=\"(8|9|1[0-5])\\." ${right})  # x + 8
+  endif()
+endforeach()
+# The picture is the torus's: with the dot at (1.5, 0.5), pixels 3 and 7 of the first row are both 2 from it
+# (pixel 7 across the edge) and covered alike; without the copies pixel 7 was white.
+file(READ ${WORK}/tile1_0.ppm tile1_pixels OFFSET 11 HEX)  # after "P6\n8 2\n255\n"
+string(SUBSTRING "${tile1_pixels}" 18 6 pixel3)
+string(SUBSTRING "${tile1_pixels}" 42 6 pixel7)
+if(NOT pixel7 STREQUAL pixel3 OR pixel7 STREQUAL "ffffff")
+  message(SEND_ERROR "stipple_periodic_one_0: pixels 3 and 7 of the first row are ${pixel3} and ${pixel7}")
+endif()
+# Without it the same dot is drawn once; with another method --periodic is refused.
+expect(stipple_not_periodic 0 "\"dots\": 1, .*\"periodic\": false," stipple ${WORK}/flat8x2.pgm --count 1 --out ${WORK}/tile0.svg --quiet)
+expect_count(${WORK}/tile0.svg "<circle " 1)
+foreach(method bilateral-lloyd darts kernel)
+  expect(stipple_periodic_${method} 2 "--periodic applies to --method lloyd only" stipple ${WORK}/line.pgm --count 5 --method ${method} --periodic --out ${WORK}/x.svg)
+endforeach()
 # bilateral-filter: every sampling and mode meets the budget and writes a picture of the input's size; the same
 # seed gives the same picture; the exact filter scores null PSNR (equal) and SSIM 1; bad arguments explained.
 expect(bilateral_filter_help 0 "usage: featurerecon bilateral-filter IMAGE" bilateral-filter --help)
