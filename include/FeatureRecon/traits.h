@@ -94,10 +94,10 @@ struct Point_with_normal_traits {
       std::array<double, 3> u{CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z())};
       std::array<double, 3> v{CGAL::to_double(b.x()), CGAL::to_double(b.y()), CGAL::to_double(b.z())};
       for (auto* w : {&u, &v}) {
-        // std::max skips a NaN after the first component: each one is checked.
+        // Each component checked (std::max skips a NaN after the first); then only a zero vector is left.
         if (!(std::isfinite((*w)[0]) && std::isfinite((*w)[1]) && std::isfinite((*w)[2]))) return FT(-1);
         const double m = std::max({std::fabs((*w)[0]), std::fabs((*w)[1]), std::fabs((*w)[2])});
-        if (!(m > 0 && m < std::numeric_limits<double>::infinity())) return FT(-1);
+        if (m == 0) return FT(-1);
         const int e = std::ilogb(m);
         for (double& x : *w) x = std::ldexp(x, -e);
       }
