@@ -598,4 +598,23 @@ TEST(TestUtilities, ThrowsWithFailsUnlessTheMessageContainsThePart) {
                std::runtime_error);
 }
 
+// contains() quotes the text and the part both ways (EXPECT_FALSE prints the success message), the text cut
+// after 2,000 characters with the count of the rest.
+TEST(TestUtilities, ContainsQuotesTheTextAndThePart) {
+  using FeatureRecon::test::contains;
+  EXPECT_TRUE(contains("a <circle/>", "<circle"));
+  EXPECT_TRUE(contains("abc", ""));
+  EXPECT_STREQ(contains("a <circle/>", "<circle").message(), "\"a <circle/>\" contains \"<circle\"");
+  const ::testing::AssertionResult missing = contains("f: x[3] is NaN", "x[4]");
+  EXPECT_FALSE(missing);
+  EXPECT_STREQ(missing.message(), "\"f: x[3] is NaN\" does not contain \"x[4]\"");
+  EXPECT_FALSE(contains("", "a"));
+  const std::string long_text = std::string(2000, 'a') + "bcd";
+  EXPECT_TRUE(contains(long_text, "bcd"));  // found beyond the quoted part
+  EXPECT_EQ(std::string(contains(long_text, "e").message()),
+            "\"" + std::string(2000, 'a') + "\" (and 3 characters more) does not contain \"e\"");
+  EXPECT_EQ(std::string(contains(std::string(2000, 'a'), "e").message()),
+            "\"" + std::string(2000, 'a') + "\" does not contain \"e\"");
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,20 @@ inline auto recording_progress(std::vector<double>& seen) {
     seen.push_back(t);
     return true;
   };
+}
+
+/// Whether `text` contains `part`; either way the result quotes the text (its first 2,000 characters) and the
+/// part, so both `EXPECT_TRUE(contains(message, "x[3]"))` and `EXPECT_FALSE(contains(svg, "<circle"))` fail
+/// readably.
+inline ::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  const std::size_t shown = 2000;
+  const std::string quoted =
+      "\"" + text.substr(0, shown) + "\"" +
+      (text.size() > shown ? " (and " + std::to_string(text.size() - shown) + " characters more)"
+                           : std::string());
+  if (text.find(part) != std::string::npos)
+    return ::testing::AssertionSuccess() << quoted << " contains \"" << part << "\"";
+  return ::testing::AssertionFailure() << quoted << " does not contain \"" << part << "\"";
 }
 
 /// Whether `call()` throws an `Exception` whose message contains `part`; the failure says what happened

@@ -22,6 +22,7 @@
 #include "io/scratch_file.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using FeatureRecon::test::thrown_message;
 using FeatureRecon::test::throws_with;
 
@@ -135,9 +136,8 @@ TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
   }
   big_endian(bytes, 29, ~crc, 4);
   write_bytes(png, bytes);
-  EXPECT_NE(message_of(png).find("huge.png: corrupt PNG header: 30000 x 30000 pixels cannot be stored in "),
-            std::string::npos)
-      << message_of(png);
+  EXPECT_TRUE(
+      contains(message_of(png), "huge.png: corrupt PNG header: 30000 x 30000 pixels cannot be stored in "));
   // JPEG: the height and width of the start-of-frame segment (after FFC0, length, precision).
   const std::string jpg = scratch("huge.jpg");
   io::write_image(jpg, small);
@@ -147,9 +147,8 @@ TEST(ImageIo, SizesTheFileCannotHoldAreRefused) {
   big_endian(bytes, sof + 5, 20000, 2);
   big_endian(bytes, sof + 7, 20000, 2);
   write_bytes(jpg, bytes);
-  EXPECT_NE(message_of(jpg).find("huge.jpg: corrupt JPEG header: 20000 x 20000 pixels cannot be stored in "),
-            std::string::npos)
-      << message_of(jpg);
+  EXPECT_TRUE(
+      contains(message_of(jpg), "huge.jpg: corrupt JPEG header: 20000 x 20000 pixels cannot be stored in "));
   big_endian(bytes, sof + 5, 60000, 2);
   big_endian(bytes, sof + 7, 60000, 2);
   write_bytes(jpg, bytes);
@@ -217,14 +216,12 @@ std::string image_error(const std::string& name, const std::string& bytes) {
 // maximum are rescaled to 0..255 rounded to nearest; ASCII data needs a digit and a separator a value but the
 // last.
 TEST(ImageIo, PnmHeadersAndValuesAreChecked) {
-  EXPECT_NE(
-      image_error("deep.pgm", "P5\n1 1\n65535\n\x01\x02").find("unsupported PGM/PPM maximum value 65535"),
-      std::string::npos);
-  EXPECT_NE(image_error("over.pgm", std::string("P5\n2 1\n100\n\x32\xc8"))
-                .find("pixel value 200 at byte 1 exceeds the maximum value 100"),
-            std::string::npos);
-  EXPECT_NE(image_error("zero.pgm", "P5\n0 1\n255\n").find("the width must be a positive integer, got '0'"),
-            std::string::npos);
+  EXPECT_TRUE(contains(image_error("deep.pgm", "P5\n1 1\n65535\n\x01\x02"),
+                       "unsupported PGM/PPM maximum value 65535"));
+  EXPECT_TRUE(contains(image_error("over.pgm", std::string("P5\n2 1\n100\n\x32\xc8")),
+                       "pixel value 200 at byte 1 exceeds the maximum value 100"));
+  EXPECT_TRUE(
+      contains(image_error("zero.pgm", "P5\n0 1\n255\n"), "the width must be a positive integer, got '0'"));
   const std::string pgm = scratch("seven.pgm");
   std::ofstream(pgm) << "P2\n3 1\n7\n2 7 0";  // exactly 2n - 1 bytes after the header
   const io::Image im = io::read_image(pgm);
@@ -280,17 +277,14 @@ TEST(ImageIo, JpegQualityAndTruncation) {
   const std::size_t sos = bytes.find("\xff\xda");
   ASSERT_NE(sos, std::string::npos);
   const std::string cut = bytes.substr(0, sos + (bytes.size() - sos) / 2);
-  EXPECT_NE(image_error("cut.jpg", cut).find("cut.jpg: not a readable JPEG ("), std::string::npos)
-      << image_error("cut.jpg", cut);
+  EXPECT_TRUE(contains(image_error("cut.jpg", cut), "cut.jpg: not a readable JPEG ("));
   // Between 2^30 and 2^31 pixels: beyond the cap.
   std::string big = bytes;
   const std::size_t sof = big.find("\xff\xc0");
   ASSERT_NE(sof, std::string::npos);
   for (const std::size_t at : {sof + 5, sof + 7})
     big[at] = char(40000 >> 8), big[at + 1] = char(40000 & 0xff);
-  EXPECT_NE(image_error("big.jpg", big).find("big.jpg: a 40000 x 40000 JPEG is beyond 2^30 pixels"),
-            std::string::npos)
-      << image_error("big.jpg", big);
+  EXPECT_TRUE(contains(image_error("big.jpg", big), "big.jpg: a 40000 x 40000 JPEG is beyond 2^30 pixels"));
 }
 
 TEST(ImageIo, CmykJpegIsRefused) {

@@ -16,6 +16,7 @@
 
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using FeatureRecon::test::throws_with;
 
 namespace {
@@ -180,9 +181,9 @@ TEST(ContinuousDartThrowing, LimitsDegenerateAndBadInput) {
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("between dart "), std::string::npos) << m;
-    EXPECT_NE(m.find(" and sample "), std::string::npos) << m;
-    EXPECT_NE(m.find(" is NaN or negative"), std::string::npos) << m;
+    EXPECT_TRUE(contains(m, "between dart "));
+    EXPECT_TRUE(contains(m, " and sample "));
+    EXPECT_TRUE(contains(m, " is NaN or negative"));
   }
   Continuous_dart_throwing_options stop;
   stop.progress = [](double) { return false; };

@@ -499,9 +499,7 @@ TEST(WeightedSampleElimination, BadInputNamesTheProblem) {
       if (which == "darts") bilateral_dart_throwing(oriented, 0.1, std::back_inserter(kept), d);
       FAIL() << name << ": expected an exception";
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(
-          std::string(e.what()).find("item 13 has a feature at distance NaN from itself (a zero normal"),
-          std::string::npos)
+      EXPECT_TRUE(contains(e.what(), "item 13 has a feature at distance NaN from itself (a zero normal"))
           << name << ": " << e.what();
     }
   EXPECT_TRUE(kept.empty());
@@ -586,8 +584,7 @@ TEST(WeightedSampleElimination, UserFeatureWithNaNUnderAnExactKernelIsNamed) {
           run(CGAL::Epick(), with_nan, 0.3, which);
         ADD_FAILURE() << name << ": expected an exception";
       } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("item 17 has a feature at distance NaN from itself"),
-                  std::string::npos)
+        EXPECT_TRUE(contains(e.what(), "item 17 has a feature at distance NaN from itself"))
             << name << ": " << e.what();
       }
       // Euclidean: the features are never compared, so the NaN one is carried along, and the result is that
@@ -812,12 +809,10 @@ TEST(WeightedSampleElimination, NeighbourListsBeyondTheLimitAreRefusedWhileCount
     Elimination_options a;
     a.max_radius = 100;
     const std::string what = thrown_message<std::invalid_argument>([&] { eliminate(many, 2, a); });
-    EXPECT_NE(
-        what.find(
-            "would hold more than 536870912 entries (automatic Elimination_options::max_neighbor_entries; "
-            "r_max "),
-        std::string::npos)
-        << what;
+    EXPECT_TRUE(contains(
+        what,
+        "would hold more than 536870912 entries (automatic Elimination_options::max_neighbor_entries; "
+        "r_max "));
   }
   // 3,000 items, each a neighbour of all others: the callback is asked during the count (it used to be asked
   // at the start of the stage and then only at the end, where a stop was ignored).

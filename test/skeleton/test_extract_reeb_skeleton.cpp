@@ -236,7 +236,7 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   few.data.resize(12);
   const std::string few_message =
       invalid_argument_message([&] { merge_close_branch_nodes(x.graph, few, 0.2); });
-  EXPECT_NE(few_message.find("arc 2 has member 6"), std::string::npos) << few_message;
+  EXPECT_TRUE(contains(few_message, "arc 2 has member 6"));
   // Empty graph.
   EXPECT_EQ(num_vertices(merge_close_branch_nodes(Skeleton_graph(), x.points, 1).graph), 0u);
   // Nodes without points (a hand-made graph): the merged node at the mean of the two (it was NaN).
@@ -263,9 +263,8 @@ TEST(MergeCloseBranchNodes, ACrossingBecomesOneNode) {
   for (std::size_t v = 0; v < 6; ++v) short_input.graph[v].input_position = {0, 0};
   const std::string short_message =
       invalid_argument_message([&] { merge_close_branch_nodes(short_input.graph, four, 0.2); });
-  EXPECT_NE(short_message.find("node 0 has an input position of 2 coordinates, the coordinates have 4"),
-            std::string::npos)
-      << short_message;
+  EXPECT_TRUE(
+      contains(short_message, "node 0 has an input position of 2 coordinates, the coordinates have 4"));
 }
 
 TEST(MergeCloseBranchNodes, ChainsAndReversedArcs) {
@@ -361,10 +360,9 @@ TEST(ExtractReebSkeleton, ArcsSayWhichWayTheyRunFromEitherNode) {
       reversed += v != a.lower ? 1 : 0;
       for (std::size_t w = 0; w < num_vertices(g); ++w)
         if (w != a.lower && w != a.upper) {
-          EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] {
-                      arc_polyline_from(g, e, w);
-                    }).find("node " + std::to_string(w) + " is not an end of the arc"),
-                    std::string::npos);
+          EXPECT_TRUE(
+              contains(FeatureRecon::test::invalid_argument_message([&] { arc_polyline_from(g, e, w); }),
+                       "node " + std::to_string(w) + " is not an end of the arc"));
           break;
         }
     }
@@ -397,10 +395,9 @@ TEST(ExtractReebSkeleton, ArcsSayWhichWayTheyRunFromEitherNode) {
     for (std::size_t i = 0; i < count; ++i)
       for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(up[4 * i + c], a.input_polyline[4 * (count - 1 - i) + c]);
     const std::size_t wrong = a.input_polyline.size() + 1;  // divides no positive size below it
-    EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] {
-                arc_input_polyline_from(h, e, a.lower, wrong);
-              }).find("not points of " + std::to_string(wrong) + " coordinates"),
-              std::string::npos);
+    EXPECT_TRUE(contains(
+        FeatureRecon::test::invalid_argument_message([&] { arc_input_polyline_from(h, e, a.lower, wrong); }),
+        "not points of " + std::to_string(wrong) + " coordinates"));
   }
 }
 
@@ -515,16 +512,16 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
                std::invalid_argument);
   bad.delta = 0.0;
   bad.repair_distance = -2;
-  EXPECT_NE(invalid_argument_message([&] {
-              extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
-            }).find("repair_distance must be finite and >= 0 (0: no repair), got -2"),
-            std::string::npos);
+  EXPECT_TRUE(contains(invalid_argument_message([&] {
+                         extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
+                       }),
+                       "repair_distance must be finite and >= 0 (0: no repair), got -2"));
   bad.repair_distance = 0;
   bad.prune_height = -3;
-  EXPECT_NE(invalid_argument_message([&] {
-              extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
-            }).find("prune_height must be >= 0 (0: keep all; infinity: prune all), got -3"),
-            std::string::npos);
+  EXPECT_TRUE(contains(invalid_argument_message([&] {
+                         extract_reeb_skeleton(std::vector<std::array<double, 2>>{{0.0, 0.0}}, 1.0, bad);
+                       }),
+                       "prune_height must be >= 0 (0: keep all; infinity: prune all), got -3"));
   // A negative branch merge distance asked for the automatic one before FeatureRecon::automatic: refused.
   bad.prune_height = 0;
   bad.branch_merge_distance = -1;
@@ -561,10 +558,8 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
       0u);
   bad = {};
   bad.prune_height = -1;
-  EXPECT_NE(message([&] {
-              extract_reeb_skeleton(g, two, bad);
-            }).find("prune_height must be >= 0 (0: keep all; infinity: prune all), got -1"),
-            std::string::npos);
+  EXPECT_TRUE(contains(message([&] { extract_reeb_skeleton(g, two, bad); }),
+                       "prune_height must be >= 0 (0: keep all; infinity: prune all), got -1"));
   // Embedding options are checked before the pipeline runs (they were refused by its last stage, naming
   // embed_reeb_graph and the automatic level width in place of the caller's), with the caller's values.
   bad = {};
@@ -587,8 +582,8 @@ TEST(ExtractReebSkeleton, DegenerateAndBadInput) {
   EXPECT_EQ(calls, 0u);
   bad.embedding.smoothing_weight = 0.5;
   bad.embedding.level_width = -1;
-  EXPECT_NE(message([&] { extract_reeb_skeleton(g, two, bad); }).find("embedding level_width must be > 0"),
-            std::string::npos);
+  EXPECT_TRUE(
+      contains(message([&] { extract_reeb_skeleton(g, two, bad); }), "embedding level_width must be > 0"));
   // A geodesic distance beyond the largest double (20 points on a line 1e307 apart, about 2e308 end to end)
   // names the call and the stage (it named compute_geodesic_function alone).
   std::vector<std::array<double, 2>> far_apart;
@@ -1047,10 +1042,9 @@ TEST(ExtractReebSkeleton, DistanceMatrixAndGraphInputsAgreeWithPoints) {
   }
   auto shorter = eight.points;
   shorter.pop_back();
-  EXPECT_NE(FeatureRecon::test::invalid_argument_message([&] {
-              extract_reeb_skeleton(build_rips_graph(m, 0.7), shorter, o);
-            }).find("vertices but coordinates has"),
-            std::string::npos);
+  EXPECT_TRUE(contains(FeatureRecon::test::invalid_argument_message(
+                           [&] { extract_reeb_skeleton(build_rips_graph(m, 0.7), shorter, o); }),
+                       "vertices but coordinates has"));
   // Bad input: a matrix that is not symmetric, coordinates that do not match the graph.
   Eigen::MatrixXd bad = D;
   bad(0, 1) += 1;

@@ -12,6 +12,7 @@
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -20,7 +21,7 @@ namespace {
 template <class Call>
 void expect_refused(Call&& call, const std::string& part) {
   const std::string message = FeatureRecon::test::invalid_argument_message(call);
-  EXPECT_NE(message.find(part), std::string::npos) << message;
+  EXPECT_TRUE(contains(message, part));
 }
 }  // namespace
 

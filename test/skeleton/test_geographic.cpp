@@ -14,6 +14,7 @@
 #include <vector>
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using FeatureRecon::test::throws_with;
 
 namespace {
@@ -96,8 +97,7 @@ TEST(TransverseMercator, ForwardRefusesPointsOffTheSphere) {
         (void)(direction == 0 ? bad.forward(10, 45) : bad.inverse(0, 0));
         ADD_FAILURE() << "projected with bad settings";
       } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("Transverse_mercator: central_meridian"), std::string::npos)
-            << e.what();
+        EXPECT_TRUE(contains(e.what(), "Transverse_mercator: central_meridian"));
       }
   }
   // inverse() of a non-finite or far-out position: an error, not the south pole (a NaN passed for -90
@@ -178,12 +178,12 @@ TEST(LocalTransverseMercator, BadPointsAreNamed) {
             "local_transverse_mercator: point 2 has longitude nan, not in [-180, 180]");
   // 27 degrees of longitude at 42 degrees north: each end lies about 1,100 km from the middle.
   const std::string wide = message_of({{-87.6, 41.8}, {-60, 41.8}});
-  EXPECT_NE(wide.find("point 0 (longitude -87.6, latitude 41.8) lies 1"), std::string::npos) << wide;
-  EXPECT_NE(wide.find("span too much for one projection"), std::string::npos) << wide;
+  EXPECT_TRUE(contains(wide, "point 0 (longitude -87.6, latitude 41.8) lies 1"));
+  EXPECT_TRUE(contains(wide, "span too much for one projection"));
   // Half the globe apart: 100 degrees from the central meridian on the equator lie 15,000 km away, 90 degrees
   // infinitely far.
-  EXPECT_NE(message_of({{0, 0}, {100, 0}, {-100, 0}}).find("point 1 (longitude 100, latitude 0) lies 15"),
-            std::string::npos);
+  EXPECT_TRUE(
+      contains(message_of({{0, 0}, {100, 0}, {-100, 0}}), "point 1 (longitude 100, latitude 0) lies 15"));
   EXPECT_EQ(
       message_of({{0, 0}, {90, 0}, {-90, 0}}),
       "local_transverse_mercator: point 1 (longitude 90, latitude 0) lies on the equator 90 degrees of "
@@ -258,7 +258,7 @@ TEST(TransverseMercator, InverseMeetsTheDocumentedAccuracy) {
 // refused; 3.6 degrees, about 401 km, accepted); zero, negative or NaN bounds are refused by name.
 TEST(LocalTransverseMercator, MaxOffsetIsAPositiveInclusiveBound) {
   const std::string far = message_of({{0, 0}, {10.8, 0}});
-  EXPECT_NE(far.find("point 0 (longitude 0, latitude 0) lies 60"), std::string::npos) << far;
+  EXPECT_TRUE(contains(far, "point 0 (longitude 0, latitude 0) lies 60"));
   EXPECT_EQ(message_of({{0, 0}, {7.2, 0}}), "no exception");
   const std::vector<std::array<double, 2>> points = {{0, 0}, {7.2, 0}, {3, 1}};
   const Transverse_mercator tm = local_transverse_mercator(points);

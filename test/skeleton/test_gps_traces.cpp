@@ -20,6 +20,7 @@
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using FeatureRecon::test::throws_with;
 
 using namespace FeatureRecon;
@@ -442,7 +443,7 @@ TEST(GpsTraces, DegenerateAndBadInput) {
       "radius), got 0");
   bad = {};
   bad.max_link_gap = std::numeric_limits<double>::infinity();
-  EXPECT_NE(message(bad).find("max_link_gap must be finite"), std::string::npos) << message(bad);
+  EXPECT_TRUE(contains(message(bad), "max_link_gap must be finite"));
   bad.max_link_gap = -1;  // no linking before FeatureRecon::automatic; now 0
   EXPECT_EQ(message(bad),
             "sample_gps_traces: max_link_gap must be finite and >= 0 (FeatureRecon::automatic: max(4 x the "
@@ -455,35 +456,32 @@ TEST(GpsTraces, DegenerateAndBadInput) {
       "the Rips radius); 0: no check), got -1");
   bad = {};
   bad.heading_tolerance = -2;
-  EXPECT_NE(message(bad).find("heading_tolerance must be >= 0 degrees, got -2"), std::string::npos);
+  EXPECT_TRUE(contains(message(bad), "heading_tolerance must be >= 0 degrees, got -2"));
   for (const double r :
        {-1.0, 0.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     bad = {};
     bad.density_radius = r;
-    EXPECT_NE(message(bad).find("density_radius must be finite and > 0 (FeatureRecon::automatic: twice the "
-                                "Rips radius)"),
-              std::string::npos)
+    EXPECT_TRUE(contains(message(bad),
+                         "density_radius must be finite and > 0 (FeatureRecon::automatic: twice the "
+                         "Rips radius)"))
         << r;
   }
   bad = {};
   bad.density_radius = 1e-300;
   EXPECT_EQ(message(bad), "no exception");  // the density filter is off
   bad.min_relative_density = 0.1;
-  EXPECT_NE(
-      message(bad).find("trip 0, fix 1 at (100, 0) lies more than 2^50 times the density_radius (1e-300)"),
-      std::string::npos)
-      << message(bad);
+  EXPECT_TRUE(contains(message(bad),
+                       "trip 0, fix 1 at (100, 0) lies more than 2^50 times the density_radius (1e-300)"));
   bad.density_radius = 1;
   EXPECT_EQ(message(bad), "no exception");
   // The length that is too fine is named as a field, automatic or not.
   bad = {};
   bad.sample_spacing = 1e-300;
-  EXPECT_NE(message(bad).find("lies more than 2^50 times the sample_spacing (1e-300)"), std::string::npos)
-      << message(bad);
+  EXPECT_TRUE(contains(message(bad), "lies more than 2^50 times the sample_spacing (1e-300)"));
   bad.sample_spacing = {};
   bad.min_relative_density = 0.1;
   bad.density_radius = 4e-300;  // the automatic spacing (5) is not the finest
-  EXPECT_NE(message(bad).find("2^50 times the density_radius (4e-300)"), std::string::npos) << message(bad);
+  EXPECT_TRUE(contains(message(bad), "2^50 times the density_radius (4e-300)"));
   // A spacing whose half is 0 would never advance along a segment: refused, whether given or half a radius
   // (with a fix at the origin only, no other check catches it).
   bad = {};
@@ -636,34 +634,31 @@ TEST(GpsTraces, TraceGraphChecksItsInput) {
     return test::invalid_argument_message([&] { build_gps_trace_graph(T, 10.0, tolerance_of(tolerance)); });
   };
   EXPECT_EQ(message(S, FeatureRecon::automatic), "no exception");  // the sample's tolerance
-  EXPECT_NE(message(S, std::nan("")).find("heading_tolerance must be >= 0 degrees"), std::string::npos);
+  EXPECT_TRUE(contains(message(S, std::nan("")), "heading_tolerance must be >= 0 degrees"));
   // A negative tolerance asked for the sample's before FeatureRecon::automatic; it is refused.
   EXPECT_EQ(message(S, -1),
             "build_gps_trace_graph: the option heading_tolerance must be >= 0 degrees "
             "(FeatureRecon::automatic: the sample's), got -1");
   Gps_trace_sample T = S;
   T.heading_tolerance = -5;
-  EXPECT_NE(
-      message(T, FeatureRecon::automatic).find("sample's heading_tolerance must be >= 0 degrees, got -5"),
-      std::string::npos)
-      << message(T, FeatureRecon::automatic);
+  EXPECT_TRUE(contains(message(T, FeatureRecon::automatic),
+                       "sample's heading_tolerance must be >= 0 degrees, got -5"));
   EXPECT_EQ(message(T, 30), "no exception");  // not used
   T = S;
   T.headings.pop_back();
-  EXPECT_NE(message(T, 30).find("headings"), std::string::npos) << message(T, 30);
+  EXPECT_TRUE(contains(message(T, 30), "headings"));
   T = S;
   T.headings[1] = 400;
-  EXPECT_NE(message(T, 30).find("heading 1 "), std::string::npos) << message(T, 30);
+  EXPECT_TRUE(contains(message(T, 30), "heading 1 "));
   T = S;
   T.trip_links.push_back({0, static_cast<Vertex_index>(S.points.rows)});
-  EXPECT_NE(message(T, 30).find("trip link"), std::string::npos) << message(T, 30);
+  EXPECT_TRUE(contains(message(T, 30), "trip link"));
   T = S;
   T.points.data[3] = std::numeric_limits<double>::infinity();
-  EXPECT_NE(message(T, 30).find("point 1 has a non-finite coordinate 1"), std::string::npos)
-      << message(T, 30);
+  EXPECT_TRUE(contains(message(T, 30), "point 1 has a non-finite coordinate 1"));
   T = S;
   T.points.dimension = 3;
-  EXPECT_NE(message(T, 30).find("planar"), std::string::npos) << message(T, 30);
+  EXPECT_TRUE(contains(message(T, 30), "planar"));
   // A trip link in either order is the same undirected edge (a reversed one made the graph non-canonical).
   T = S;
   for (auto& link : T.trip_links) std::swap(link[0], link[1]);
@@ -874,12 +869,10 @@ TEST(GpsTraces, ALongJumpWithinTheLinkGapIsRefusedBeforeDensifying) {
     sample_gps_traces({trip}, 20.0, o);
     ADD_FAILURE() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "would insert about 199997 points along the segments (more than "
-                  "max_inserted_points, 100000; the longest linked segment, from trip 0, fix 2, "
-                  "is 999980 long): lower max_link_gap (1e+09"),
-              std::string::npos)
-        << e.what();
+    EXPECT_TRUE(contains(e.what(),
+                         "would insert about 199997 points along the segments (more than "
+                         "max_inserted_points, 100000; the longest linked segment, from trip 0, fix 2, "
+                         "is 999980 long): lower max_link_gap (1e+09"));
   }
   o.max_inserted_points = 199996;  // one fewer than needed: refused
   EXPECT_THROW(sample_gps_traces({trip}, 20.0, o), std::invalid_argument);
@@ -901,13 +894,11 @@ TEST(GpsTraces, ADensityFilterOfTooManyPairsIsRefusedBeforeComparing) {
   o.max_density_pairs = 8;
   const std::string m =
       FeatureRecon::test::invalid_argument_message([&] { sample_gps_traces({trip}, 10.0, o); });
-  EXPECT_NE(
-      m.find(
-          "the density filter would compare at least 9 pairs of the first 3 samples (more than "
-          "max_density_pairs, 8; counted while the samples were made): the sample spacing (sample_spacing 1) "
-          "is small for the density radius (density_radius 20)"),
-      std::string::npos)
-      << m;
+  EXPECT_TRUE(contains(
+      m,
+      "the density filter would compare at least 9 pairs of the first 3 samples (more than "
+      "max_density_pairs, 8; counted while the samples were made): the sample spacing (sample_spacing 1) "
+      "is small for the density radius (density_radius 20)"));
   {
     // Counted as the samples are made: a 1 km segment linked at spacing 0.01 (100,000 samples, 6 * 10^8
     // pairs) stops after a few hundred (it made them all, then counted: 3,000 Chicago fixes at 0.01 took 38 s
@@ -1261,7 +1252,7 @@ TEST(GpsTraces, TheRulesBoundariesArePinned) {
   const std::string refused = FeatureRecon::test::invalid_argument_message([&] {
     sample_gps_traces({{{0, 20, 0}, {0, 10, 1}, {0, 0, 2}}}, 10.0, pairs);
   });
-  EXPECT_NE(refused.find("would compare at least 9 pairs"), std::string::npos) << refused;
+  EXPECT_TRUE(contains(refused, "would compare at least 9 pairs"));
 
   // No segment needs a check (30 m steps are confirmed by their own ends): the Wilson bound of no evidence is
   // 1, which meets a fraction of 1, and the rule is trusted.

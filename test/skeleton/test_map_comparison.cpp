@@ -15,6 +15,7 @@
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using FeatureRecon::test::throws_with;
 
 using namespace FeatureRecon;
@@ -509,19 +510,19 @@ TEST(TraceSupport, BadInputIsNamed) {
   Trace_support_options o;
   Gps_trip bad = ok;
   bad.push_back({std::nan(""), 0, 20});
-  EXPECT_NE(message({ok, ok, bad}, o).find("trip 2, fix 2"), std::string::npos) << message({ok, ok, bad}, o);
+  EXPECT_TRUE(contains(message({ok, ok, bad}, o), "trip 2, fix 2"));
   bad = ok;
   bad[1].time = std::nan("");
-  EXPECT_NE(message({ok, bad}, o).find("trip 1, fix 1"), std::string::npos) << message({ok, bad}, o);
+  EXPECT_TRUE(contains(message({ok, bad}, o), "trip 1, fix 1"));
   o.radius = 0;
-  EXPECT_NE(message({ok}, o).find("radius"), std::string::npos);
+  EXPECT_TRUE(contains(message({ok}, o), "radius"));
   o.radius = std::numeric_limits<double>::infinity();
-  EXPECT_NE(message({ok}, o).find("radius"), std::string::npos);
+  EXPECT_TRUE(contains(message({ok}, o), "radius"));
   o.radius = 15;
   o.bearing_limit = std::nan("");
-  EXPECT_NE(message({ok}, o).find("bearing_limit"), std::string::npos);
+  EXPECT_TRUE(contains(message({ok}, o), "bearing_limit"));
   o.bearing_limit = 0;
-  EXPECT_NE(message({ok}, o).find("bearing_limit"), std::string::npos);
+  EXPECT_TRUE(contains(message({ok}, o), "bearing_limit"));
   const std::vector<Map_sample> bad_samples{sample_at(0, 0, 90), sample_at(std::nan(""), 0, 90)};
   EXPECT_TRUE(throws_with<std::invalid_argument>([&] { count_trips_along(bad_samples, {ok}); }, "sample 1"));
 }
@@ -537,21 +538,20 @@ TEST(MapComparison, BadMapsAreNamed) {
   // A non-finite vertex looped forever (inf) or silently dropped the samples behind it (NaN).
   Embedded_graph_2 bad = good;
   bad.positions[1][0] = std::numeric_limits<double>::infinity();
-  EXPECT_NE(error_of(good, bad).find(
-                "compare_maps: reconstruction: sample_map: vertex 1 (of edge 0) has a non-finite"),
-            std::string::npos);
+  EXPECT_TRUE(contains(error_of(good, bad),
+                       "compare_maps: reconstruction: sample_map: vertex 1 (of edge 0) has a non-finite"));
   bad.positions[1][0] = std::nan("");
-  EXPECT_NE(error_of(bad, good).find("compare_maps: ground truth: "), std::string::npos);
+  EXPECT_TRUE(contains(error_of(bad, good), "compare_maps: ground truth: "));
   // Finite but too far apart for the interval (t += interval stops moving).
   bad.positions[1][0] = 1e300;
-  EXPECT_NE(error_of(good, bad).find("more than 2^25 samples"), std::string::npos);
+  EXPECT_TRUE(contains(error_of(good, bad), "more than 2^25 samples"));
   // A vertex that no edge uses may be anything.
   bad = good;
   bad.positions.push_back({std::nan(""), 0});
   EXPECT_EQ(compare_maps(good, bad).f_score, 1.0);
   Map_comparison_options o;
   o.bearing_limit = -1;
-  EXPECT_NE(error_of(good, good, o).find("bearing_limit must be > 0, got -1"), std::string::npos);
+  EXPECT_TRUE(contains(error_of(good, good, o), "bearing_limit must be > 0, got -1"));
   // More candidates than samples (2^32 wrapped to 0 in the cast and crashed in CGAL).
   o = {};
   o.candidates = std::size_t(1) << 32;
@@ -785,10 +785,8 @@ TEST(MapComparison, OptimalMatchingOfDenseClusters) {
     skeleton::internal::match_optimal(many, few, o, M, "match_map_samples", 1000);
     ADD_FAILURE() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("more than 1000 sample pairs lie within match_distance (15 m)"),
-              std::string::npos)
-        << e.what();
-    EXPECT_NE(std::string(e.what()).find("use the greedy one"), std::string::npos);
+    EXPECT_TRUE(contains(e.what(), "more than 1000 sample pairs lie within match_distance (15 m)"));
+    EXPECT_TRUE(contains(e.what(), "use the greedy one"));
   }
 }
 
@@ -1035,13 +1033,13 @@ TEST(CropMapToTrips, BadInputIsNamedAndProgressStops) {
   EXPECT_EQ(message(street, trips, o), "crop_map_to_trips: radius must be positive and finite, got 0");
   o = {};
   o.trace_step = std::nan("");
-  EXPECT_NE(message(street, trips, o).find("trace_step must be positive"), std::string::npos);
+  EXPECT_TRUE(contains(message(street, trips, o), "trace_step must be positive"));
   o = {};
   o.max_gap = -1;
   EXPECT_EQ(message(street, trips, o), "crop_map_to_trips: max_gap must be finite and >= 0, got -1");
   o = {};
   o.sample_interval = 1e-300;
-  EXPECT_NE(message(street, trips, o).find("more than 2^25 samples"), std::string::npos);
+  EXPECT_TRUE(contains(message(street, trips, o), "more than 2^25 samples"));
   o = {};
   std::vector<Gps_trip> bad = trips;
   bad[0][1].y = std::numeric_limits<double>::infinity();
@@ -1050,7 +1048,7 @@ TEST(CropMapToTrips, BadInputIsNamedAndProgressStops) {
   out_of_range.edges.push_back({1, 2});
   EXPECT_EQ(message(out_of_range, trips, o), "crop_map_to_trips: edge 1 has a vertex out of range [0, 2)");
   o.trace_step = 1e-300;  // 60 m in pieces of 1e-300: refused before anything is made
-  EXPECT_NE(message(street, trips, o).find("more than 2^27 trace points"), std::string::npos);
+  EXPECT_TRUE(contains(message(street, trips, o), "more than 2^27 trace points"));
   // Progress: 0, every 4096 edges, 1; a stop keeps the edges checked so far.
   const Embedded_graph_2 big = grid_map(60, 40);  // 7080 edges
   std::vector<Gps_trip> cover(1);

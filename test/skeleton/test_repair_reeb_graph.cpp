@@ -400,10 +400,8 @@ TEST(RepairReebGraph, ADistanceThatIsNotOneIsNamed) {
     const std::string value = std::isnan(bad) ? "nan" : "-1";
     for (const std::string& e : {error_of([&] { repair_reeb_graph(R, 10.0, distance); }),
                                  error_of([&] { connect_dead_ends(R, f, 10.0, distance); })}) {
-      EXPECT_NE(e.find(": the distance between vertices "), std::string::npos) << e;
-      EXPECT_NE(e.find(" is " + value + " (the distance callable must return a number >= 0)"),
-                std::string::npos)
-          << e;
+      EXPECT_TRUE(contains(e, ": the distance between vertices "));
+      EXPECT_TRUE(contains(e, " is " + value + " (the distance callable must return a number >= 0)"));
     }
   }
 }
@@ -431,30 +429,26 @@ TEST(RepairReebGraph, BadGraphsAreNamedByEveryRepairFunction) {
   Reeb_graph bad = R;
   bad.arcs[0].upper = 7;  // was a heap overflow in all four
   for (const std::string& e : all(bad, f))
-    EXPECT_NE(e.find("arc 0 joins nodes 0 and 7: it must go up between nodes in [0, 2)"), std::string::npos)
-        << e;
+    EXPECT_TRUE(contains(e, "arc 0 joins nodes 0 and 7: it must go up between nodes in [0, 2)"));
   bad = R;
   std::swap(bad.arcs[0].lower, bad.arcs[0].upper);
-  for (const std::string& e : all(bad, f))
-    EXPECT_NE(e.find("arc 0 joins nodes 1 and 0"), std::string::npos) << e;
+  for (const std::string& e : all(bad, f)) EXPECT_TRUE(contains(e, "arc 0 joins nodes 1 and 0"));
   bad = R;
   bad.nodes[1].value = std::nan("");
-  for (const std::string& e : all(bad, f)) EXPECT_NE(e.find("node 1 has value nan"), std::string::npos) << e;
+  for (const std::string& e : all(bad, f)) EXPECT_TRUE(contains(e, "node 1 has value nan"));
   bad = R;
   std::swap(bad.nodes[0], bad.nodes[1]);
   for (const std::string& e : all(bad, f))
-    EXPECT_NE(e.find("nodes 0 and 1 are not in increasing (value, vertex) order"), std::string::npos) << e;
+    EXPECT_TRUE(contains(e, "nodes 0 and 1 are not in increasing (value, vertex) order"));
   bad = R;
   bad.arcs[0].vertices.push_back(9);  // connect_dead_ends reads the values of the vertices it splits at
-  EXPECT_NE(
-      error_of([&] { connect_dead_ends(bad, f, 1.0, pts); }).find("arc 0 has vertex 9 out of range [0, 4)"),
-      std::string::npos);
+  EXPECT_TRUE(contains(error_of([&] { connect_dead_ends(bad, f, 1.0, pts); }),
+                       "arc 0 has vertex 9 out of range [0, 4)"));
   // An arc vertex of value NaN would become a node of value NaN (out of order) where a dead end joins it.
   std::vector<double> nan_at_1 = f;
   nan_at_1[1] = std::nan("");
-  EXPECT_NE(
-      error_of([&] { connect_dead_ends(R, nan_at_1, 1.0, pts); }).find("arc 0 has vertex 1 of value nan"),
-      std::string::npos);
+  EXPECT_TRUE(contains(error_of([&] { connect_dead_ends(R, nan_at_1, 1.0, pts); }),
+                       "arc 0 has vertex 1 of value nan"));
 }
 
 namespace {
@@ -753,11 +747,10 @@ TEST(RepairReebGraph, RepeatedNodesAndArcsFromANodeToItselfAreRefused) {
   repeated.nodes[1] = repeated.nodes[0];
   repeated.arcs.clear();
   for (const std::string& e : all(repeated))
-    EXPECT_NE(e.find("nodes 0 and 1 are not in increasing (value, vertex) order"), std::string::npos) << e;
+    EXPECT_TRUE(contains(e, "nodes 0 and 1 are not in increasing (value, vertex) order"));
   Reeb_graph loop = R;
   loop.arcs[0].lower = 1;
-  for (const std::string& e : all(loop))
-    EXPECT_NE(e.find("arc 0 joins nodes 1 and 1: it must go up"), std::string::npos) << e;
+  for (const std::string& e : all(loop)) EXPECT_TRUE(contains(e, "arc 0 joins nodes 1 and 1: it must go up"));
 }
 
 TEST(RepairReebGraph, EndsAtOnePointAreJoinedAtDistanceZero) {

@@ -23,6 +23,7 @@
 #include "skeleton_test_utilities.h"
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using FeatureRecon::test::throws_with;
 
 using namespace FeatureRecon;
@@ -821,12 +822,10 @@ TEST(FlagComplex, TriangleLimitAndProgressOfBothPasses) {
     build_flag_complex_2(complete, o);
     FAIL() << "expected an exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(
-        std::string(e.what()).find("build_flag_complex_2: the flag complex has more than 219 triangles "
-                                   "(Flag_complex_options::max_triangles; 12 vertices, 66 edges, the limit "
-                                   "was passed at vertex 9)"),
-        std::string::npos)
-        << e.what();
+    EXPECT_TRUE(contains(e.what(),
+                         "build_flag_complex_2: the flag complex has more than 219 triangles "
+                         "(Flag_complex_options::max_triangles; 12 vertices, 66 edges, the limit "
+                         "was passed at vertex 9)"));
   }
   // 0: no limit.
   o.max_triangles = 0;
@@ -863,10 +862,9 @@ TEST(RipsComplex, TheOneCallTakesTheTriangleLimit) {
   o.max_triangles = 220;
   EXPECT_EQ(build_rips_complex_2(circle, 3.0, o).number_of_triangles(), 220u);
   o.max_triangles = 219;
-  EXPECT_NE(test::invalid_argument_message([&] { build_rips_complex_2(circle, 3.0, o); })
-                .find("build_rips_complex_2: the flag complex has more than 219 triangles "
-                      "(Rips_complex_options::max_triangles; 12 vertices, 66 edges"),
-            std::string::npos);
+  EXPECT_TRUE(contains(test::invalid_argument_message([&] { build_rips_complex_2(circle, 3.0, o); }),
+                       "build_rips_complex_2: the flag complex has more than 219 triangles "
+                       "(Rips_complex_options::max_triangles; 12 vertices, 66 edges"));
   o.max_triangles = 0;  // no limit
   EXPECT_EQ(build_rips_complex_2(circle, 3.0, o).number_of_triangles(), 220u);
   // The graph's options still convert (search and progress kept, no limit); `{}` is the default.
@@ -944,7 +942,7 @@ TEST(ProximityGraph, TheFirstNonCanonicalEdgeIsNamed) {
     return test::invalid_argument_message([&] { build_flag_complex_2(g); });
   };
   auto expect_in = [](const std::string& what, const std::string& part) {
-    EXPECT_NE(what.find(part), std::string::npos) << what;
+    EXPECT_TRUE(contains(what, part));
   };
   expect_in(problem(3, {{0, 1}, {1, 1}}),
             "build_flag_complex_2: the graph is not canonical (see Proximity_graph): "
@@ -1181,7 +1179,7 @@ TEST(RipsGraph, ProgressIsNonDecreasingAndEndsAtARefusal) {
 // naming the point), and their Point_matrix overloads check k >= 1 and the radius as the range ones do.
 TEST(RipsGraph, PointMatricesAreChecked) {
   const auto expect_in = [](const std::string& what, const std::string& part) {
-    EXPECT_NE(what.find(part), std::string::npos) << what;
+    EXPECT_TRUE(contains(what, part));
   };
   const double inf = std::numeric_limits<double>::infinity();
   expect_in(FeatureRecon::test::invalid_argument_message([] {
@@ -1287,7 +1285,7 @@ TEST(BoostGraphInput, ZeroWeightsAreEdges) {
 // connected_components() refuses an edge beyond the vertices.
 TEST(MakeSimplicialComplex, BoundsOfTheCanonicalForm) {
   const auto expect_in = [](const std::string& what, const std::string& part) {
-    EXPECT_NE(what.find(part), std::string::npos) << what;
+    EXPECT_TRUE(contains(what, part));
   };
   expect_in(FeatureRecon::test::invalid_argument_message([] {
               make_simplicial_complex_2(3, {{0, 3}}, {});

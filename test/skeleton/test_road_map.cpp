@@ -19,6 +19,7 @@
 
 #include "test_utilities.h"
 
+using FeatureRecon::test::contains;
 using namespace FeatureRecon;
 using namespace FeatureRecon::skeleton;
 
@@ -211,33 +212,30 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   const std::vector<Gps_trip> trips = street(20);
   Road_map_options o;
   o.rips_radius = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("rips_radius"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { extract_road_map(trips, o); }), "rips_radius"));
   o.rips_radius = 0;  // 0 asked for the automatic radius before FeatureRecon::automatic
   EXPECT_EQ(message_of([&] { extract_road_map(trips, o); }),
             "extract_road_map: rips_radius must be finite and > 0 (FeatureRecon::automatic: from the median "
             "step), got 0");
   o.rips_radius = 1e308;  // 5R overflowed and the skeleton named delta, repair_distance and prune_height
-  EXPECT_NE(message_of([&] {
-              extract_road_map(trips, o);
-            }).find("extract_road_map: rips_radius must be at most 1e300"),
-            std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { extract_road_map(trips, o); }),
+                       "extract_road_map: rips_radius must be at most 1e300"));
   o = {};
   o.min_radius = 1e305;
   o.max_radius = 1e306;
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("max_radius must be at most 1e300"),
-            std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { extract_road_map(trips, o); }), "max_radius must be at most 1e300"));
   o = {};
   o.min_radius = 60;
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("min_radius"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { extract_road_map(trips, o); }), "min_radius"));
   o = {};
   o.delta = std::numeric_limits<double>::infinity();
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("delta"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { extract_road_map(trips, o); }), "delta"));
   o = {};
   o.traces.heading_tolerance = -1;
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("heading_tolerance"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { extract_road_map(trips, o); }), "heading_tolerance"));
   o = {};
   o.merge_distance = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(message_of([&] { extract_road_map(trips, o); }).find("merge_distance"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { extract_road_map(trips, o); }), "merge_distance"));
   // A negative value turned a stage off before FeatureRecon::automatic; now 0 does, and a negative value is
   // refused, naming the field, the rule and the off value (it would otherwise be taken for a value).
   const std::vector<std::pair<std::optional<double> Road_map_options::*, std::string>> fields = {
@@ -279,7 +277,7 @@ TEST(RoadMap, BadOptionsAndFixesAreNamed) {
   std::vector<Gps_trip> bad = trips;
   bad[1][2].y = std::numeric_limits<double>::quiet_NaN();
   const std::string m = message_of([&] { extract_road_map(bad, {}); });
-  EXPECT_NE(m.find("trip 1, fix 2"), std::string::npos) << m;
+  EXPECT_TRUE(contains(m, "trip 1, fix 2"));
 }
 
 TEST(RoadMap, DegenerateInput) {
@@ -604,7 +602,7 @@ TEST(MergeRoadLines, LinesFartherApartStay) {
   o = {};
   o.max_triangles = 1;
   const std::string m = message_of([&] { merge_road_lines(parallel_lines({0.0, 4.0}, 300, false), o); });
-  EXPECT_NE(m.find("has more than 1 triangles (max_triangles of the options"), std::string::npos) << m;
+  EXPECT_TRUE(contains(m, "has more than 1 triangles (max_triangles of the options"));
 }
 
 TEST(MergeRoadLines, DegenerateInputAndDeterminism) {
@@ -638,19 +636,19 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   const Embedded_graph_2 street = parallel_lines({0.0, 4.0}, 100, false);
   Road_merge_options o;
   o.distance = 0;
-  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("distance"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { merge_road_lines(street, o); }), "distance"));
   o.distance = std::numeric_limits<double>::infinity();
-  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("distance"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { merge_road_lines(street, o); }), "distance"));
   o = {};
   o.spacing = -1;
-  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("spacing"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { merge_road_lines(street, o); }), "spacing"));
   o.spacing = 0;  // automatic before FeatureRecon::automatic
   EXPECT_EQ(
       message_of([&] { merge_road_lines(street, o); }),
       "merge_road_lines: spacing must be finite and > 0 (FeatureRecon::automatic: distance / 3), got 0");
   o = {};
   o.delta = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(message_of([&] { merge_road_lines(street, o); }).find("delta"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { merge_road_lines(street, o); }), "delta"));
   o.delta = -1;
   EXPECT_EQ(message_of([&] { merge_road_lines(street, o); }),
             "merge_road_lines: delta must be finite and >= 0 (FeatureRecon::automatic: distance; 0: no "
@@ -665,8 +663,7 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   o.max_triangles = 100;
   const std::string big = message_of([&] { merge_road_lines(street, o); });
   EXPECT_EQ(big.rfind("merge_road_lines: the complex of the lines' 8 neighbourhood (", 0), 0u) << big;
-  EXPECT_NE(big.find(") has more than 100 triangles (max_triangles of the options;"), std::string::npos)
-      << big;
+  EXPECT_TRUE(contains(big, ") has more than 100 triangles (max_triangles of the options;"));
   const std::string advice = "): raise spacing or lower distance, or raise max_triangles";
   ASSERT_GT(big.size(), advice.size());
   EXPECT_EQ(big.substr(big.size() - advice.size()), advice) << big;
@@ -675,14 +672,14 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   o.embedding.level_width = -1;
   const std::string embedding = message_of([&] { merge_road_lines(street, o); });
   EXPECT_EQ(embedding.rfind("extract_reeb_skeleton: ", 0), 0u) << embedding;
-  EXPECT_NE(embedding.find("level_width"), std::string::npos) << embedding;
+  EXPECT_TRUE(contains(embedding, "level_width"));
   Embedded_graph_2 bad = street;
   bad.edges[3] = {0, 99};
   const std::string m = message_of([&] { merge_road_lines(bad); });
-  EXPECT_NE(m.find("edge 3"), std::string::npos) << m;
+  EXPECT_TRUE(contains(m, "edge 3"));
   bad = street;
   bad.positions[5][1] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(message_of([&] { merge_road_lines(bad); }).find("vertex 5"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { merge_road_lines(bad); }), "vertex 5"));
   // A far-off vertex: an edge of 2e9 m would be sampled every 2.7 m (750 million points), one of 2e308 m
   // overflows. Both are refused before any sampling, naming the edge; max_samples 0 lifts the limit.
   bad = street;
@@ -690,17 +687,16 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   bad.positions[6] = {-1e9, 0};
   bad.edges.push_back({5, 6});
   std::string far = message_of([&] { merge_road_lines(bad); });
-  EXPECT_NE(
-      far.find("points, more than max_samples (67108864); the longest edge, from (1e+09, 0) to (-1e+09, 0), "
-               "is 2e+09"),
-      std::string::npos)
-      << far;
+  EXPECT_TRUE(
+      contains(far,
+               "points, more than max_samples (67108864); the longest edge, from (1e+09, 0) to (-1e+09, 0), "
+               "is 2e+09"));
   o = {};
   o.spacing = 1e5;
   EXPECT_EQ(merge_road_lines(bad, o).status, Status::success);  // 20,000 samples
   o.spacing = 100;
   o.max_samples = 1000;
-  EXPECT_NE(message_of([&] { merge_road_lines(bad, o); }).find("max_samples (1000)"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { merge_road_lines(bad, o); }), "max_samples (1000)"));
   // The limit counts the points inserted along edges, not the vertices: a 1,000 km edge at spacing 100 m
   // takes 9,999.
   Embedded_graph_2 one_edge;
@@ -709,17 +705,13 @@ TEST(MergeRoadLines, BadInputIsNamedAndCancelStops) {
   o.max_samples = 9999;
   EXPECT_EQ(merge_road_lines(one_edge, o).status, Status::success);
   o.max_samples = 9998;
-  EXPECT_NE(message_of([&] { merge_road_lines(one_edge, o); })
-                .find("would insert about 9999 points, more than "
-                      "max_samples (9998)"),
-            std::string::npos)
-      << message_of([&] { merge_road_lines(one_edge, o); });
+  EXPECT_TRUE(contains(message_of([&] { merge_road_lines(one_edge, o); }),
+                       "would insert about 9999 points, more than "
+                       "max_samples (9998)"));
   bad.positions[5] = {1e308, 0};
   bad.positions[6] = {-1e308, 0};
   far = message_of([&] { merge_road_lines(bad); });
-  EXPECT_NE(far.find("the edge from (1e+308, 0) to (-1e+308, 0) has a length that overflows"),
-            std::string::npos)
-      << far;
+  EXPECT_TRUE(contains(far, "the edge from (1e+308, 0) to (-1e+308, 0) has a length that overflows"));
   for (const double stop_at : {0.0, 0.2, 0.5}) {
     o = {};
     o.progress = [stop_at](double t) { return t < stop_at; };
@@ -858,16 +850,16 @@ TEST(SyntheticCity, StreetsAndTrips) {
   // Bad options are named.
   Synthetic_city_options b;
   b.columns = 1;
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("columns"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "columns"));
   b = {};
   b.sampling_interval = 0;
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("sampling_interval"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "sampling_interval"));
   b = {};
   b.missing_streets = 1.5;
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("missing_streets"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "missing_streets"));
   b = {};
   b.noise = -1;
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("noise"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "noise"));
   // Limits found before the work (10^8 trips ran 31 s to reach the limit on fixes) or at the first fix out of
   // range (a noise of 1e308 wrote inf into the tracks).
   b = {};
@@ -883,7 +875,7 @@ TEST(SyntheticCity, StreetsAndTrips) {
       "lane_offset (2) too large");
   b.noise = 4;
   b.trip_bias = 1e308;
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("trip_bias (1e+308)"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "trip_bias (1e+308)"));
   // Jitter at its largest: without the diagonal avenue half the shorter block side (90 / 2 = 45), with it
   // 120 x 90 / (2 x 210) = 25.71 (at 35 and 45 the avenue crossed streets in 13 and 34 of 200 cities). At the
   // limit no two streets without a common intersection meet, in 40 cities each (exact predicates); the
@@ -1012,10 +1004,10 @@ TEST(SyntheticCity, GabrielEdgesOfDegenerateInput) {
   for (const Edge& e : g)
     EXPECT_DOUBLE_EQ(std::hypot(grid[e[0]][0] - grid[e[1]][0], grid[e[0]][1] - grid[e[1]][1]), 1.0);
   // Duplicates are refused, naming both points.
-  EXPECT_NE(message_of([] {
-              gabriel_edges({{0, 0}, {1, 0}, {0, 0}, {0, 1}});
-            }).find("points 0 and 2 coincide"),
-            std::string::npos);
+  EXPECT_TRUE(contains(message_of([] {
+                         gabriel_edges({{0, 0}, {1, 0}, {0, 0}, {0, 1}});
+                       }),
+                       "points 0 and 2 coincide"));
 }
 
 TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
@@ -1094,12 +1086,12 @@ TEST(SyntheticCity, OrganicLayoutWithBentStreets) {
   Synthetic_city_options b;
   b.columns = std::size_t(1) << 32;  // the product would wrap around
   b.rows = std::size_t(1) << 32;
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("columns x rows"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "columns x rows"));
   b = {};
   b.curvature = 0.6;
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "curvature"));
   b.curvature = std::nan("");
-  EXPECT_NE(message_of([&] { make_synthetic_city(b); }).find("curvature"), std::string::npos);
+  EXPECT_TRUE(contains(message_of([&] { make_synthetic_city(b); }), "curvature"));
 }
 
 // Each option is checked at its documented bound and a bad one is named: the accepted ones stop at the
