@@ -28,6 +28,7 @@ struct Sampler_request {
   double sigma_position = 1, sigma_feature = std::numeric_limits<double>::infinity();
   std::uint64_t seed = 0;
   bool periodic = false;
+  std::vector<double> period;  ///< with periodic: the torus's periods (empty: the unit torus)
 };
 
 /// Runs the sampler `request` names on `items`; returns the kept indices and sets `used_radius`.
@@ -42,6 +43,7 @@ std::vector<std::size_t> run_sampler(const Items& items, const Traits& traits, c
     o.max_radius = request.radius;
     o.seed = request.seed;
     o.periodic = request.periodic;
+    o.period = request.period;
     o.progress = std::ref(progress);
     try {
       used_radius =
@@ -62,6 +64,7 @@ std::vector<std::size_t> run_sampler(const Items& items, const Traits& traits, c
     o.sigma_feature = request.sigma_feature;
     o.seed = request.seed;
     o.periodic = request.periodic;
+    o.period = request.period;
     o.progress = std::ref(progress);
     o.max_accepted = request.count;  // with --count: the first M in the visiting order
     used_radius =
@@ -72,6 +75,7 @@ std::vector<std::size_t> run_sampler(const Items& items, const Traits& traits, c
     o.darts.sigma_feature = request.sigma_feature;
     o.darts.seed = request.seed;
     o.darts.periodic = request.periodic;
+    o.darts.period = request.period;
     o.darts.progress = std::ref(progress);
     used_radius =
         sampling::bilateral_dart_throwing_count(items, request.count, std::back_inserter(kept), o, traits)

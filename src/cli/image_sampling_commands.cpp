@@ -29,6 +29,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/discrete_samplers.h"
+#include "cli/dot_pictures.h"
 #include "io/featurerecon_io.h"
 #include "io/image_io.h"
 
@@ -55,6 +56,7 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_req
     o.sigma_feature = s.sigma_feature;
     o.seed = s.seed;
     o.max_samples = s.count;
+    o.periodic = s.periodic;  // the torus of the picture's rectangle
     o.progress = std::ref(progress);
     const auto r = fs::continuous_bilateral_dart_throwing(domain.box(), s.radius, domain,
                                                           fs::Mean_squared_channel_distance(), o);
@@ -83,10 +85,6 @@ std::vector<Image_sample> sample_image(const io::Image& image, const Sampler_req
   return out;
 }
 
-std::uint8_t to_byte(double v) {
-  return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255));
-}
-
 /// Text samples: "x y value" (grey) or "x y r g b", channels in [0, 1]; with .csv a header and commas.
 void write_samples(const std::string& path, const std::vector<Image_sample>& samples, std::size_t channels) {
   const bool csv = io::file_extension(path) == "csv";
@@ -104,9 +102,10 @@ void write_samples(const std::string& path, const std::vector<Image_sample>& sam
 /// Background of the dot pictures: a mid grey, so that white and black samples both show.
 constexpr double dot_background = 0.55;
 
-/// SVG: each sample a dot of its colour on grey, in pixel coordinates.
+/// SVG: each sample a dot of its colour on grey, in pixel coordinates (on a tile also its copies across the
+/// edges it crosses).
 void write_samples_svg(const std::string& path, const std::vector<Image_sample>& samples, int width,
-                       int height, double dot) {
+                       int height, double dot, bool periodic) {
   std::ostringstream os;
   os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
      << "\" viewBox=\"0 0 " << width << ' ' << height
@@ -115,8 +114,9 @@ void write_samples_svg(const std::string& path, const std::vector<Image_sample>&
   for (const Image_sample& s : samples) {
     std::snprintf(colour, sizeof colour, "#%02x%02x%02x", to_byte(s.colour[0]), to_byte(s.colour[1]),
                   to_byte(s.colour[2]));
-    os << "<circle cx=\"" << json_number(s.x) << "\" cy=\"" << json_number(s.y) << "\" r=\""
-       << json_number(dot) << "\" fill=\"" << colour << "\"/>\n";
+    for (const auto& [x, y] : drawn_at({s.x, s.y}, dot, width, height, periodic))
+      os << "<circle cx=\"" << json_number(x) << "\" cy=\"" << json_number(y) << "\" r=\"" << json_number(dot)
+         << "\" fill=\"" << colour << "\"/>\n";
   }
   os << "</svg>\n";
   io::write_text_file(path, os.str());
@@ -125,38 +125,18 @@ void write_samples_svg(const std::string& path, const std::vector<Image_sample>&
 /// Raster picture (PNG, JPEG, PGM/PPM) of the same dots at the input's size, anti-aliased by 4 x 4
 /// supersampling of each pixel's coverage.
 void write_samples_raster(const std::string& path, const std::vector<Image_sample>& samples, int width,
-                          int height, double dot) {
-  io::Image picture;
-  picture.width = width;
-  picture.height = height;
-  picture.channels = 3;
+                          int height, double dot, bool periodic) {
   std::vector<double> rgb(std::size_t(width) * std::size_t(height) * 3, dot_background);
-  for (const Image_sample& s : samples) {
-    const int c0 = std::max(0, static_cast<int>(std::floor(s.x - dot))),
-              c1 = std::min(width - 1, static_cast<int>(s.x + dot));
-    const int r0 = std::max(0, static_cast<int>(std::floor(s.y - dot))),
-              r1 = std::min(height - 1, static_cast<int>(s.y + dot));
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) {
-        int inside = 0;
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b) {
-            const double dx = c + (a + 0.5) / 4 - s.x, dy = r + (b + 0.5) / 4 - s.y;
-            inside += dx * dx + dy * dy <= dot * dot;
-          }
-        const double w = inside / 16.0;
-        double* p = &rgb[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
-        for (std::size_t k = 0; k < 3; ++k) p[k] = (1 - w) * p[k] + w * s.colour[k];
-      }
-  }
-  picture.data.resize(rgb.size());
-  for (std::size_t i = 0; i < rgb.size(); ++i) picture.data[i] = to_byte(rgb[i]);
-  io::write_image(path, picture);
+  for (const Image_sample& s : samples)
+    for (const auto& [x, y] : drawn_at({s.x, s.y}, dot, width, height, periodic))
+      paint_dot(rgb, width, height, x, y, dot, s.colour);
+  io::write_image(path, rgb_picture(rgb, width, height));
 }
 
 /// Voronoi mosaic (PNG, JPEG, PGM/PPM): every pixel takes the colour of its nearest sample (ties: the lower
-/// sample index), the simplest reconstruction of the image from its samples. Returns it.
-io::Image make_mosaic(const std::vector<Image_sample>& samples, int width, int height) {
+/// sample index), the simplest reconstruction of the image from its samples; on a tile (`periodic`) the
+/// nearest on the torus of the picture's rectangle, so that the mosaic tiles too. Returns it.
+io::Image make_mosaic(const std::vector<Image_sample>& samples, int width, int height, bool periodic) {
   using K = CGAL::Simple_cartesian<double>;
   using Point = K::Point_2;
   using Traits = CGAL::Search_traits_adapter<std::uint32_t, CGAL::Pointer_property_map<Point>::type,
@@ -168,9 +148,15 @@ io::Image make_mosaic(const std::vector<Image_sample>& samples, int width, int h
   picture.channels = 3;
   picture.data.assign(std::size_t(width) * std::size_t(height) * 3, 255);
   if (!samples.empty()) {
+    // On a tile, every sample also at its 8 copies shifted by the picture's width and height (point k is
+    // sample k / copies).
+    const int copies = periodic ? 9 : 1;
     std::vector<Point> points;
-    for (const Image_sample& x : samples) points.emplace_back(x.x, x.y);
-    std::vector<std::uint32_t> keys(samples.size());
+    for (const Image_sample& x : samples)
+      for (int c = 0; c < copies; ++c)
+        points.emplace_back(x.x + (periodic ? double(c % 3 - 1) * width : 0.0),
+                            x.y + (periodic ? double(c / 3 - 1) * height : 0.0));
+    std::vector<std::uint32_t> keys(points.size());
     for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = static_cast<std::uint32_t>(i);
     typename Knn::Tree tree(keys.begin(), keys.end(), typename Knn::Tree::Splitter(),
                             Traits(CGAL::make_property_map(points)));
@@ -179,14 +165,16 @@ io::Image make_mosaic(const std::vector<Image_sample>& samples, int width, int h
     for (int r = 0; r < height; ++r)
       for (int c = 0; c < width; ++c) {
         const Point q(c + 0.5, r + 0.5);
-        Knn search(tree, q, 4, 0.0, true, distance);
+        Knn search(tree, q, 4 * unsigned(copies), 0.0, true, distance);
         std::uint32_t best = 0;
         double best_d = std::numeric_limits<double>::infinity();
-        for (const auto& nb : search)  // the nearest, ties by index
-          if (nb.second < best_d || (nb.second == best_d && nb.first < best)) {
-            best = nb.first;
+        for (const auto& nb : search) {  // the nearest, ties by sample index
+          const std::uint32_t sample = nb.first / std::uint32_t(copies);
+          if (nb.second < best_d || (nb.second == best_d && sample < best)) {
+            best = sample;
             best_d = nb.second;
           }
+        }
         std::uint8_t* p = &picture.data[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
         for (std::size_t k = 0; k < 3; ++k) p[k] = to_byte(samples[best].colour[k]);
       }
@@ -212,7 +200,7 @@ double psnr(const io::Image& image, const io::Image& picture) {
 
 int run_sample_image(const std::vector<std::string>& argv) {
   const Arguments args(
-      argv, {"grey", "quiet"},
+      argv, {"grey", "periodic", "quiet"},
       {"input", "count", "radius", "method", "sigma-feature", "seed", "out", "svg", "picture", "mosaic"});
   const std::string input = args.get("input");
   Sampler_request s;
@@ -235,6 +223,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
   const long long seed = args.has("seed") ? args.get_int("seed") : 0;
   if (seed < 0) throw Usage_error("--seed must be >= 0");
   s.seed = static_cast<std::uint64_t>(seed);
+  s.periodic = args.has("periodic");
   if (!args.has("out") && !args.has("svg") && !args.has("picture") && !args.has("mosaic"))
     throw Usage_error("give at least one of --out FILE, --svg FILE, --picture FILE, --mosaic FILE");
   Outputs outputs(args, {"out", "svg", "picture", "mosaic"});
@@ -245,6 +234,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
   io::Image image = io::read_image(input);
   if (args.has("grey")) image = io::to_grey(image);
   const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+  if (s.periodic) s.period = {double(image.width), double(image.height)};  // the pixels' torus
   if (s.method != "continuous" && s.count > pixels)
     throw Usage_error("--count " + std::to_string(s.count) + " exceeds the " + std::to_string(pixels) +
                       " pixels of " + input);
@@ -279,24 +269,27 @@ int run_sample_image(const std::vector<std::string>& argv) {
   progress.done(std::to_string(samples.size()) + " samples");
   const double seconds = progress.seconds();
 
-  // Spacing on the image rectangle.
+  // Spacing on the image rectangle (on its torus for a tile).
   std::vector<CGAL::Epick::Point_2> positions;
   for (const Image_sample& x : samples) positions.emplace_back(x.x, x.y);
   fs::Sampling_quality_options q;
   q.domain_measure = double(pixels);
   q.intrinsic_dimension = 2;
+  q.periodic = s.periodic;
+  if (s.periodic) q.period = s.period;
   // Fewer than two samples: degenerate_input, printed as null (a default Sampling_quality printed 0).
   const fs::Sampling_quality quality = fs::sampling_quality(positions, q);
   const double d_hex =
       samples.empty() ? 1.0 : std::sqrt(2.0 * double(pixels) / (std::sqrt(3.0) * double(samples.size())));
   const double dot = 0.3 * d_hex;
   if (args.has("out")) write_samples(outputs.path("out"), samples, std::size_t(image.channels));
-  if (args.has("svg")) write_samples_svg(outputs.path("svg"), samples, image.width, image.height, dot);
+  if (args.has("svg"))
+    write_samples_svg(outputs.path("svg"), samples, image.width, image.height, dot, s.periodic);
   if (args.has("picture"))
-    write_samples_raster(outputs.path("picture"), samples, image.width, image.height, dot);
+    write_samples_raster(outputs.path("picture"), samples, image.width, image.height, dot, s.periodic);
   double mosaic_psnr = std::numeric_limits<double>::quiet_NaN();
   if (args.has("mosaic")) {
-    const io::Image mosaic = make_mosaic(samples, image.width, image.height);
+    const io::Image mosaic = make_mosaic(samples, image.width, image.height, s.periodic);
     mosaic_psnr = psnr(image, mosaic);
     io::write_image(outputs.path("mosaic"), mosaic);
   }
@@ -307,6 +300,7 @@ int run_sample_image(const std::vector<std::string>& argv) {
      << ", \"height\": " << image.height << ", \"channels\": " << image.channels << ", \"method\": \""
      << s.method << "\", \"samples\": " << samples.size() << ", \"radius\": " << json_number(used_radius)
      << ", \"sigma_feature\": " << json_number(s.sigma_feature) << ", \"seed\": " << seed
+     << ", \"periodic\": " << (s.periodic ? "true" : "false")
      << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
      << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
      << ", \"seconds\": " << json_number(seconds);

@@ -25,6 +25,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/dot_pictures.h"
 #include "io/featurerecon_io.h"
 #include "io/image_io.h"
 
@@ -325,27 +326,6 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
   return dots;
 }
 
-std::uint8_t to_byte(double v) {
-  return static_cast<std::uint8_t>(std::lround(std::min(1.0, std::max(0.0, v)) * 255));
-}
-
-/// Where a dot of radius `dot` at p is drawn: at p and, for a tile (--periodic), at each of its copies
-/// shifted by whole widths and heights of the picture that reaches into it, so that tiles laid side by side
-/// continue the dots across their seams.
-std::vector<std::array<double, 2>> drawn_at(const std::array<double, 2>& p, double dot, int width, int height,
-                                            bool periodic) {
-  std::vector<std::array<double, 2>> at{p};
-  if (!periodic) return at;
-  const int ki = int(std::ceil(dot / width)), kj = int(std::ceil(dot / height));
-  for (int i = -ki; i <= ki; ++i)
-    for (int j = -kj; j <= kj; ++j) {
-      const std::array<double, 2> q{p[0] + double(i) * width, p[1] + double(j) * height};
-      if ((i != 0 || j != 0) && q[0] + dot > 0 && q[0] - dot < width && q[1] + dot > 0 && q[1] - dot < height)
-        at.push_back(q);
-    }
-  return at;
-}
-
 void write_svg(const std::string& path, const std::vector<Dot>& dots,
                const std::vector<std::array<double, 3>>& palette, int width, int height, double dot,
                bool periodic) {
@@ -375,28 +355,9 @@ void write_raster(const std::string& path, const std::vector<Dot>& dots,
                   bool periodic) {
   std::vector<double> rgb(std::size_t(width) * std::size_t(height) * 3, 1.0);
   for (const Dot& d : dots)
-    for (const auto& [x, y] : drawn_at(d.position, dot, width, height, periodic)) {
-      const int c0 = std::max(0, int(std::floor(x - dot))), c1 = std::min(width - 1, int(x + dot));
-      const int r0 = std::max(0, int(std::floor(y - dot))), r1 = std::min(height - 1, int(y + dot));
-      for (int r = r0; r <= r1; ++r)
-        for (int c = c0; c <= c1; ++c) {
-          int inside = 0;
-          for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b) {
-              const double dx = c + (a + 0.5) / 4 - x, dy = r + (b + 0.5) / 4 - y;
-              inside += dx * dx + dy * dy <= dot * dot;
-            }
-          const double w = inside / 16.0;
-          double* p = &rgb[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
-          for (std::size_t k = 0; k < 3; ++k) p[k] = (1 - w) * p[k] + w * palette[d.colour][k];
-        }
-    }
-  io::Image picture;
-  picture.width = width;
-  picture.height = height;
-  picture.channels = 3;
-  picture.data.resize(rgb.size());
-  for (std::size_t i = 0; i < rgb.size(); ++i) picture.data[i] = to_byte(rgb[i]);
+    for (const auto& [x, y] : drawn_at(d.position, dot, width, height, periodic))
+      paint_dot(rgb, width, height, x, y, dot, palette[d.colour]);
+  const io::Image picture = rgb_picture(rgb, width, height);
   io::write_image(path, picture);
 }
 }  // namespace

@@ -131,6 +131,106 @@ TEST(BilateralDartThrowing, PeriodicThrowIsAMaximalPackingOfTheTorus) {
   }
 }
 
+// Distance on the torus of periods px x py (nearest images), by brute force on the positions reduced to the
+// cell with fmod.
+double box_torus_distance(const Point_2& a, const Point_2& b, double px, double py) {
+  const auto wrap = [](double x, double p) { return x - p * std::floor(x / p); };
+  double dx = std::abs(wrap(a.x(), px) - wrap(b.x(), px)), dy = std::abs(wrap(a.y(), py) - wrap(b.y(), py));
+  dx = std::min(dx, px - dx);
+  dy = std::min(dy, py - dy);
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+TEST(BilateralDartThrowing, PeriodicThrowIsAMaximalPackingOfABoxTorus) {
+  // The torus [0, 2.5) x [0, 0.75) (Dart_throwing_options::period), some candidates given periods away from
+  // the cell: no two kept closer than r (brute force with the box's nearest images, margin 1e-12), every
+  // rejected one within r of a kept one; at r above half the short period (0.375) images across both seams
+  // count; above the half diagonal (1.30) a single candidate is kept. The unit torus's throw of the same
+  // candidates is no packing of this torus.
+  for (const double r : {0.05, 0.3, 0.5, 1.4}) {
+    std::vector<Point_2> p;
+    for (const Point_2& q : white_noise(2000, 6)) p.emplace_back(2.5 * q.x(), 0.75 * q.y());
+    for (std::size_t i = 0; i < p.size(); i += 7) p[i] = Point_2(p[i].x() - 5, p[i].y() + 1.5);
+    Dart_throwing_options o;
+    o.periodic = true;
+    o.period = {2.5, 0.75};
+    const auto kept = darts(p, r, o);
+    std::vector<bool> is_kept(p.size(), false);
+    for (std::size_t i : kept) is_kept[i] = true;
+    for (std::size_t a = 0; a < kept.size(); ++a)
+      for (std::size_t b = a + 1; b < kept.size(); ++b)
+        ASSERT_GE(box_torus_distance(p[kept[a]], p[kept[b]], 2.5, 0.75), r - 1e-12) << r;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (is_kept[i]) continue;
+      bool covered = false;
+      for (std::size_t k : kept) covered = covered || box_torus_distance(p[i], p[k], 2.5, 0.75) < r + 1e-12;
+      ASSERT_TRUE(covered) << "item " << i << " at r " << r << " could have been kept";
+    }
+    if (r > 1.31) EXPECT_EQ(kept.size(), 1u);
+    if (r == 0.05) {
+      Dart_throwing_options unit;
+      unit.periodic = true;
+      const auto other = darts(p, r, unit);
+      bool joined = false;
+      for (std::size_t a = 0; a < other.size() && !joined; ++a)
+        for (std::size_t b = a + 1; b < other.size() && !joined; ++b)
+          joined = box_torus_distance(p[other[a]], p[other[b]], 2.5, 0.75) < r - 1e-12;
+      EXPECT_TRUE(joined) << "the unit torus's throw packs this torus too: the test would not tell";
+    }
+  }
+}
+
+TEST(BilateralDartThrowing, PeriodsOfPowersOfTwoScaleTheUnitTorusExactly) {
+  // Positions, periods and sigma_position 4 times a unit-torus run (exact in binary): the same items, by a
+  // throw at a radius and by the count search (the same radius, bit for bit).
+  std::vector<Point_2> unit = white_noise(3000, 9), scaled;
+  for (std::size_t i = 0; i < unit.size(); i += 3) unit[i] = Point_2(unit[i].x() + 3, unit[i].y() - 1);
+  for (const Point_2& q : unit) scaled.emplace_back(4 * q.x(), 4 * q.y());
+  Dart_throwing_options a, b;
+  a.periodic = b.periodic = true;
+  b.period = {4, 4};
+  b.sigma_position = 4;
+  for (const double r : {0.03, 0.3, 0.6}) EXPECT_EQ(darts(unit, r, a), darts(scaled, r, b)) << r;
+  for (const std::size_t count : {1, 17, 300}) {
+    Dart_throwing_count_options ca, cb;
+    ca.darts = a;
+    cb.darts = b;
+    std::vector<std::size_t> ka, kb;
+    const auto ra = bilateral_dart_throwing_count(unit, count, std::back_inserter(ka), ca);
+    const auto rb = bilateral_dart_throwing_count(scaled, count, std::back_inserter(kb), cb);
+    EXPECT_EQ(ka, kb) << count;
+    EXPECT_EQ(ra.radius, rb.radius) << count;
+    EXPECT_EQ(ka.size(), count);
+  }
+}
+
+TEST(BilateralDartThrowing, BadPeriodsAreNamed) {
+  const std::vector<Point_2> p = white_noise(20, 10);
+  Dart_throwing_options o;
+  o.period = {1, 1};
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { darts(p, 0.1, o); },
+      "bilateral_dart_throwing: period is given (2 values) but periodic is false"));
+  o.periodic = true;
+  o.period = {1, 1, 1};
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { darts(p, 0.1, o); },
+                                                 "period has 3 values for positions of dimension 2"));
+  o.period = {0.5, -1};
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { darts(p, 0.1, o); },
+                                                 "period[1] must be in [1e-150, 1e150], got -1"));
+  Dart_throwing_count_options c;
+  c.darts = o;
+  std::vector<std::size_t> kept;
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { bilateral_dart_throwing_count(p, 5, std::back_inserter(kept), c); },
+      "bilateral_dart_throwing_count: period[1] must be in"));
+  c.darts.periodic = false;
+  c.darts.period = {2, 2};
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { bilateral_dart_throwing_count(p, 5, std::back_inserter(kept), c); }, "but periodic is false"));
+  EXPECT_TRUE(kept.empty());
+}
+
 TEST(BilateralDartThrowing, PeriodicThrowHasTheSpectrumOfMaximalPoissonDisk) {
   // The library's own darts on the torus, as the point-set analysis literature measures samplers: ten
   // maximal throws over 100,000 random candidates at r = 0.025 (about 1,000 samples, rho about 0.75), their

@@ -138,6 +138,47 @@ TEST(SamplingQuality, TorusNeighboursAcrossTheSeamOfAClusteredSet) {
   }
 }
 
+TEST(SamplingQuality, BoxTorusMatchesBruteForce) {
+  // The torus [0, 2) x [0, 0.5) (Sampling_quality_options::period): its measure 1 by default, and the minimum
+  // and mean nearest distances of the nearest images (all pairs, every shift by the periods), for spread
+  // samples (d_hex well below the short period: the first band) and for 3 samples (d_hex above it: every
+  // image at once). The unit torus gives other distances for the same samples.
+  for (const std::size_t n : {300, 3}) {
+    std::vector<Point_2> p;
+    for (const Point_2& q : white_noise(n, 40)) p.emplace_back(2 * q.x() + 4, 0.5 * q.y() - 1);
+    Sampling_quality_options o;
+    o.periodic = true;
+    o.period = {2, 0.5};
+    const Sampling_quality q = sampling_quality(p, o);
+    ASSERT_EQ(q.status, Status::success);
+    EXPECT_EQ(q.domain_measure, 1.0);
+    double smallest = std::numeric_limits<double>::infinity(), mean = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < p.size(); ++j)
+        for (int sx = -3; sx <= 3 && j != i; ++sx)
+          for (int sy = -3; sy <= 3; ++sy) {
+            const double dx = p[i].x() - p[j].x() - 2.0 * sx, dy = p[i].y() - p[j].y() - 0.5 * sy;
+            nearest = std::min(nearest, std::sqrt(dx * dx + dy * dy));
+          }
+      smallest = std::min(smallest, nearest);
+      mean += nearest / double(p.size());
+    }
+    EXPECT_NEAR(q.minimum_distance, smallest, 1e-12) << n;
+    EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, mean, 1e-12) << n;
+    Sampling_quality_options unit;
+    unit.periodic = true;
+    EXPECT_GT(std::abs(sampling_quality(p, unit).average_minimum_distance - q.average_minimum_distance),
+              1e-3);
+  }
+  Sampling_quality_options bad;
+  bad.periodic = true;
+  bad.period = {2};
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { sampling_quality(white_noise(5, 1), bad); },
+      "sampling_quality: period has 1 values for positions of dimension 2"));
+}
+
 TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
   // Half the points in a corner 0.01 wide, the rest spread out, some duplicates: the minimum and the mean of
   // the nearest-neighbour distances against a scan of all pairs, in 2-D and 3-D.
@@ -662,6 +703,19 @@ TEST(SamplingSpectrum, TorusCoordinatesLieInTheUnitInterval) {
   EXPECT_EQ(sampling::internal::torus_coordinate(-0.25), 0.75);
   EXPECT_EQ(sampling::internal::torus_coordinate(3.5), 0.5);
   EXPECT_EQ(sampling::internal::torus_coordinate(0.0), 0.0);
+  // Other periods (fmod, exact, moved up by a period when negative): in [0, period), -1e-20 again 0.
+  using sampling::internal::torus_coordinate;
+  EXPECT_EQ(torus_coordinate(-1e-20, 3), 0.0);
+  EXPECT_EQ(torus_coordinate(3.0, 3), 0.0);
+  EXPECT_EQ(torus_coordinate(-3.0, 3), 0.0);
+  EXPECT_EQ(torus_coordinate(-0.5, 3), 2.5);
+  EXPECT_EQ(torus_coordinate(7.25, 3), 1.25);
+  EXPECT_EQ(torus_coordinate(0.3, 0.1), std::fmod(0.3, 0.1));  // 0.09999999999999998: 0.3 is below 3 x 0.1
+  EXPECT_LT(torus_coordinate(0.3, 0.1), 0.1);
+  for (const double x : {-1e300, -12345.678, -1e-300, 1e-300, 98765.4321, 1e300}) {
+    const double t = torus_coordinate(x, 0.7);
+    EXPECT_TRUE(t >= 0 && t < 0.7) << x << " -> " << t;
+  }
 }
 
 TEST(SamplingSpectrum, DefaultFrequencyIsRefusedAboveTheLimit) {

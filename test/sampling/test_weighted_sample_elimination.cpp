@@ -79,25 +79,29 @@ TEST(WeightedSampleElimination, SameSeedSameOutputAndSeedBreaksGridTies) {
   EXPECT_GT(sampling_quality(subset(grid, a), qo).relative_radius, 0.5);
 }
 
-// Squared distance of two points of [0, 1)^d on the unit torus, written out: each coordinate difference d
-// counts as min(|d|, 1 - |d|), summed over the axes in order (the library's rounding, so that ties agree).
+// Squared distance of two points of [0, p_0) x [0, p_1) ... on the torus of periods p (default: the unit
+// torus), written out: each coordinate difference d counts as min(|d|, p_k - |d|), summed over the axes in
+// order (the library's rounding, so that ties agree).
 template <class P>
-double torus_squared(const P& a, const P& b) {
+double torus_squared(const P& a, const P& b, const std::vector<double>& period = {}) {
   double sum = 0;
   for (int k = 0; k < a.dimension(); ++k) {
+    const double p = period.empty() ? 1.0 : period[std::size_t(k)];
     double d = std::abs(a[k] - b[k]);
-    d = std::min(d, 1 - d);
+    d = std::min(d, p - d);
     sum += d * d;
   }
   return sum;
 }
 
-// Brute force of one stage of elimination (Euclidean or on the unit torus, alpha 8, weight limiting): every
-// step sums the pair weights of the items left in exact rational arithmetic and removes the heaviest, ties to
-// the higher seeded priority. Each pair is weighed once, by the distance of its nearest images on the torus.
+// Brute force of one stage of elimination (Euclidean or on the torus of `period`, by default the unit one;
+// alpha 8, weight limiting): every step sums the pair weights of the items left in exact rational arithmetic
+// and removes the heaviest, ties to the higher seeded priority. Each pair is weighed once, by the distance of
+// its nearest images on the torus (positions given in its cell).
 template <class P>
 std::vector<std::size_t> eliminate_exactly(const std::vector<P>& p, std::size_t count, double r_max,
-                                           std::uint64_t seed, bool periodic = false, double alpha = 8) {
+                                           std::uint64_t seed, bool periodic = false, double alpha = 8,
+                                           const std::vector<double>& period = {}) {
   const std::size_t n = p.size();
   const double two_r = 2 * r_max, r_min = two_r * 0.65 * (1 - std::pow(double(count) / double(n), 1.5));
   std::vector<std::vector<mpq_class>> w(n, std::vector<mpq_class>(n, 0));
@@ -105,7 +109,7 @@ std::vector<std::size_t> eliminate_exactly(const std::vector<P>& p, std::size_t 
     for (std::size_t j = 0; j < n; ++j) {
       double d2 = 0;
       for (int k = 0; k < p[i].dimension(); ++k) d2 += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
-      if (periodic) d2 = torus_squared(p[i], p[j]);
+      if (periodic) d2 = torus_squared(p[i], p[j], period);
       const double xi = std::sqrt(d2);
       if (i == j || !(d2 < two_r * two_r) || !(xi < two_r)) continue;
       const double b = 1 - std::max(xi, r_min) / two_r, b2 = b * b, b4 = b2 * b2;
@@ -217,6 +221,100 @@ TEST(WeightedSampleElimination, PeriodicMatchesTheExactBruteForceOnTheTorus) {
       }
     }
   EXPECT_GE(grid_survivors.size(), 4u);  // no corner is special on the torus: the seed picks among all 64
+}
+
+TEST(WeightedSampleElimination, PeriodicBoxMatchesTheExactBruteForce) {
+  // On the torus [0, 3) x [0, 1.25) (Elimination_options::period): a 6 x 5 grid of spacing 0.5 x 0.25 and
+  // white noise in the box, reduced to 1..20 items under 6 seeds: the same items as the exact brute force
+  // with the nearest images of that torus. The default r_max is the box's (measure 3.75); at small counts 2
+  // r_max exceeds half of the short period, where several images of a neighbour lie within reach.
+  const std::vector<double> period{3, 1.25};
+  std::vector<Point_2> grid, noise;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 5; ++j) grid.emplace_back(0.5 * i, 0.25 * j);
+  for (const Point_2& q : white_noise(40, 23)) noise.emplace_back(3 * q.x(), 1.25 * q.y());
+  std::set<std::size_t> grid_survivors;
+  for (const std::size_t count : {1, 2, 3, 5, 9, 20})
+    for (std::uint64_t seed = 0; seed < 6; ++seed) {
+      Elimination_options o;
+      o.periodic = true;
+      o.period = period;
+      o.seed = seed;
+      std::vector<std::size_t> kept;
+      auto r = weighted_sample_elimination(grid, count, std::back_inserter(kept), o);
+      EXPECT_DOUBLE_EQ(r.radius, std::sqrt(3.75 / (2 * std::sqrt(3.0) * double(count))));
+      EXPECT_EQ(kept, eliminate_exactly(grid, count, r.radius, seed, true, 8, period))
+          << "grid " << count << " " << seed;
+      if (count == 1) grid_survivors.insert(kept[0]);
+      kept.clear();
+      r = weighted_sample_elimination(noise, count, std::back_inserter(kept), o);
+      EXPECT_EQ(kept, eliminate_exactly(noise, count, r.radius, seed, true, 8, period))
+          << "noise " << count << " " << seed;
+      // The unit torus (or the plain elimination) weighs the same items differently: the brute force tells.
+      if (count == 9 && seed == 0) {
+        EXPECT_NE(kept, eliminate_exactly(noise, count, r.radius, seed, true));
+        EXPECT_NE(kept, eliminate_exactly(noise, count, r.radius, seed));
+      }
+    }
+  EXPECT_GE(grid_survivors.size(), 4u);  // every grid point is alike on the torus: the seed picks
+}
+
+TEST(WeightedSampleElimination, PeriodsOfPowersOfTwoScaleTheUnitTorusExactly) {
+  // Positions, periods and sigma_position all 8 times those of a unit-torus run (exact in binary): the same
+  // items in 2D and 3D, also for candidates given a period or two away from the cell, and the same r_max in
+  // bilateral units (bit for bit in 2D, where sqrt is correctly rounded).
+  std::vector<Point_2> unit = white_noise(500, 31), scaled;
+  for (std::size_t i = 0; i < unit.size(); i += 5) unit[i] = Point_2(unit[i].x() - 1, unit[i].y() + 2);
+  for (const Point_2& q : unit) scaled.emplace_back(8 * q.x(), 8 * q.y());
+  std::mt19937_64 rng(32);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point_3> cube, cube8;
+  for (int i = 0; i < 400; ++i) cube.emplace_back(u(rng), u(rng), u(rng) + 1);
+  for (const Point_3& q : cube) cube8.emplace_back(8 * q.x(), 8 * q.y(), 8 * q.z());
+  for (const std::size_t count : {3, 40, 150}) {
+    Elimination_options a, b;
+    a.periodic = b.periodic = true;
+    a.seed = b.seed = count;
+    b.sigma_position = 8;
+    b.period = {8, 8};
+    std::vector<std::size_t> kept_a, kept_b;
+    const auto ra = weighted_sample_elimination(unit, count, std::back_inserter(kept_a), a);
+    const auto rb = weighted_sample_elimination(scaled, count, std::back_inserter(kept_b), b);
+    EXPECT_EQ(kept_a, kept_b) << count;
+    EXPECT_EQ(ra.radius, rb.radius) << count;
+    b.period = {8, 8, 8};
+    kept_a.clear();
+    kept_b.clear();
+    const auto ca = weighted_sample_elimination(cube, count, std::back_inserter(kept_a), a);
+    const auto cb = weighted_sample_elimination(cube8, count, std::back_inserter(kept_b), b);
+    EXPECT_EQ(kept_a, kept_b) << "3D " << count;
+    EXPECT_DOUBLE_EQ(ca.radius, cb.radius) << "3D " << count;  // cbrt(512 x) is 8 cbrt(x) only to an ulp
+  }
+}
+
+TEST(WeightedSampleElimination, BadPeriodsAreNamed) {
+  const std::vector<Point_2> p = white_noise(20, 33);
+  const auto run = [&](bool periodic, std::vector<double> period) {
+    Elimination_options o;
+    o.periodic = periodic;
+    o.period = std::move(period);
+    return [&p, o] { eliminate(p, 5, o); };
+  };
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(false, {1, 1}),
+                                                 "period is given (2 values) but periodic is false"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1, 1, 1}),
+                                                 "period has 3 values for positions of dimension 2"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1}), "period has 1 values"));
+  EXPECT_TRUE(
+      throws_with<std::invalid_argument>(run(true, {1, 0}), "period[1] must be in [1e-150, 1e150], got 0"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {std::nan(""), 1}), "period[0] must be in"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1, -2}), "period[1]"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1, std::numeric_limits<double>::infinity()}),
+                                                 "period[1]"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1e151, 1}), "period[0]"));
+  EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1, 1e-151}), "period[1]"));
+  EXPECT_NO_THROW(run(true, {1e150, 1e-150})());  // the ends of the range are usable
+  EXPECT_NO_THROW(run(true, {})());               // the unit torus
 }
 
 TEST(WeightedSampleElimination, PeriodicPairsAtTheReachAcrossTheSeamAreSeenFromBothSides) {

@@ -68,24 +68,28 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   const double largest = o.radii.empty() ? radius : *std::max_element(o.radii.begin(), o.radii.end());
   interrupted = false;
   if (largest_conflict != nullptr) *largest_conflict = -std::numeric_limits<double>::infinity();
-  // On the unit torus (o.periodic) the grid holds the positions modulo 1; a position within the reach of a
-  // face of the cell is also looked up shifted by -1 or +1 along that axis (every combination of such
-  // shifts), and distances take the nearest image of each coordinate difference, for any reach.
+  // On the torus (o.periodic) the grid holds the positions modulo the periods; a position within the reach
+  // of a face of the cell is also looked up shifted by minus or plus the period along that axis (every
+  // combination of such shifts), and distances take the nearest image of each coordinate difference, for any
+  // reach.
+  const std::array<double, D> period = torus_period<D>(o.period, o.periodic, "bilateral_dart_throwing");
   const std::vector<std::array<double, D>> wrapped =
-      o.periodic ? torus_positions(S.positions) : std::vector<std::array<double, D>>();
+      o.periodic ? torus_positions(S.positions, period) : std::vector<std::array<double, D>>();
   const auto& where = o.periodic ? wrapped : S.positions;
   const auto squared_distance = [&](std::uint32_t i, std::uint32_t j) {
-    return o.periodic ? torus_squared_distance(wrapped[i], wrapped[j]) : S.squared_distance(i, j);
+    return o.periodic ? torus_squared_distance(wrapped[i], wrapped[j], period) : S.squared_distance(i, j);
   };
   with_metric(o, [&](const auto& metric) {
     const double reach = largest * metric.spatial_scale();
-    const double cell = o.periodic ? torus_search_reach(reach) : reach;  // margin: see torus_search_reach()
+    // margin: see torus_search_reach()
+    const double cell = o.periodic ? torus_search_reach(reach, largest_period(period)) : reach;
     FeatureRecon::internal::Dynamic_grid<D> grid(where, cell);
     const double reach2 = prefilter_bound(reach);
     // Calls f(j) for every kept candidate near position p, on the torus also near its shifted copies.
     const auto for_each_candidate = [&](const std::array<double, D>& p, const auto& f) {
       if (!o.periodic) return grid.for_each_candidate(p, f);
-      for_each_torus_candidate(grid, p, cell, [&](std::uint32_t j, int) { f(j); });
+      for_each_torus_candidate(
+          grid, p, cell, [&](std::uint32_t j, int) { f(j); }, {}, period);
     };
     std::size_t failures = 0;
     for (std::size_t step = 0; step < n; ++step) {
@@ -145,14 +149,16 @@ double throw_separation(const Sample_set<Traits>& S, const std::vector<std::uint
   constexpr int D = Traits::dimension;
   std::vector<std::array<double, D>> where(kept.size());
   for (std::size_t k = 0; k < kept.size(); ++k) where[k] = S.positions[kept[k]];
-  if (o.periodic) where = torus_positions(std::move(where));
+  const std::array<double, D> period = torus_period<D>(o.period, o.periodic, "bilateral_dart_throwing");
+  if (o.periodic) where = torus_positions(std::move(where), period);
   const auto squared_distance = [&](std::uint32_t a, std::uint32_t b) {
-    return o.periodic ? torus_squared_distance(where[a], where[b]) : S.squared_distance(kept[a], kept[b]);
+    return o.periodic ? torus_squared_distance(where[a], where[b], period)
+                      : S.squared_distance(kept[a], kept[b]);
   };
   double smallest = cap;
   with_metric(o, [&](const auto& metric) {
     const double reach = cap * metric.spatial_scale() * (1 + 0x1p-40);
-    const double cell = o.periodic ? torus_search_reach(reach) : reach;
+    const double cell = o.periodic ? torus_search_reach(reach, largest_period(period)) : reach;
     FeatureRecon::internal::Dynamic_grid<D> grid(where, cell);
     const double reach2 = prefilter_bound(reach);
     for (std::uint32_t a = 0; a < where.size() && !(smallest < stop_below); ++a) {
@@ -162,7 +168,8 @@ double throw_separation(const Sample_set<Traits>& S, const std::vector<std::uint
           smallest = std::min(smallest, metric(d2, S.squared_feature_distance(kept[a], kept[b])));
       };
       if (o.periodic)
-        for_each_torus_candidate(grid, where[a], cell, [&](std::uint32_t b, int) { visit(b); });
+        for_each_torus_candidate(
+            grid, where[a], cell, [&](std::uint32_t b, int) { visit(b); }, {}, period);
       else
         grid.for_each_candidate(where[a], visit);
       grid.insert(a);
@@ -181,8 +188,9 @@ double throw_separation(const Sample_set<Traits>& S, const std::vector<std::uint
 ///
 /// Neighbours are searched in a uniform grid of side r_largest sigma_position (every metric here satisfies
 /// xi >= |dp| / sigma_position). O(n k) time for k items per grid neighbourhood. With `options.periodic`
-/// the positions are taken modulo 1 and distances are those of the unit torus, so that the set tiles the
-/// plane (or space), as the spectral analysis of sampling_spectrum() assumes.
+/// the positions are taken modulo 1 (or modulo `options.period` per axis) and distances are those of the
+/// torus, so that the set tiles the plane (or space), as the spectral analysis of sampling_spectrum()
+/// assumes (on the unit torus).
 ///
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam OutputIterator accepts std::size_t.
 /// \tparam Traits a model of FeaturePointTraits (default: Default_traits_t<ItemRange>).
@@ -196,7 +204,9 @@ double throw_separation(const Sample_set<Traits>& S, const std::vector<std::uint
 ///   squared distances it is compared with have lost their digits, and the set kept may be neither a packing
 ///   nor maximal; `interrupted`, with nothing written, when the callback stopped).
 /// \throws std::invalid_argument naming the argument: radius <= 0, radii or priority of the wrong size or
-///   with bad values (naming the index), non-finite coordinates (naming the item), bad sigmas.
+///   with bad values (naming the index), non-finite coordinates (naming the item), bad sigmas, a `period`
+///   given without `periodic`, of another length than the positions' dimension or with a value outside
+///   [1e-150, 1e150] (naming the index).
 /// \note Conflicts are strict (xi < r): two items at distance exactly r may both be kept. The same input and
 ///   seed give the same output.
 /// \sa bilateral_dart_throwing_count(), weighted_sample_elimination().
@@ -210,6 +220,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
     FeatureRecon::internal::throw_invalid_argument(fn, "radius must be finite and > 0, got ", radius);
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   internal::check_dart_options(options, S.size(), S.extent(), fn);
+  (void)internal::torus_period<Traits::dimension>(options.period, options.periodic, fn);
   // With per-item radii, the largest of them (the `radius` argument is ignored).
   const double used =
       options.radii.empty() ? radius : *std::max_element(options.radii.begin(), options.radii.end());
@@ -270,6 +281,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.darts.sigma_feature));
   const std::size_t n = S.size();
   internal::check_dart_options(options.darts, n, S.extent(), fn);
+  (void)internal::torus_period<Traits::dimension>(options.darts.period, options.darts.periodic, fn);
   if (!options.darts.radii.empty())
     FeatureRecon::internal::throw_invalid_argument(fn,
                                                    "per-item radii cannot be combined with a target count");
@@ -317,9 +329,13 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   // and only help where the count jumps: they are computed from the first throw that keeps as many as the
   // end it replaces (as every throw between the two sides of one jump does) on; 2-6 % more then.
   bool jumps = false;
-  // (On the torus the distances are taken of coordinates in [0, 1).)
+  // (On the torus the distances are taken of coordinates in [0, period).)
   const double same_distance_absolute =
-      0x1p-48 * (options.darts.periodic ? 1.0 : S.magnitude()) / options.darts.sigma_position;
+      0x1p-48 *
+      (options.darts.periodic ? internal::largest_period(
+                                    internal::torus_period<Traits::dimension>(options.darts.period, true, fn))
+                              : S.magnitude()) /
+      options.darts.sigma_position;
   // `best` has a pair this close (infinity: not searched yet): a lower threshold needs no new search while
   // it lies below.
   double best_has_pair_at = std::numeric_limits<double>::infinity();

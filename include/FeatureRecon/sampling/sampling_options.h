@@ -183,6 +183,11 @@ struct Elimination_options {
   /// tile space (Yuksel's tileable sets), as the periodogram of sampling_spectrum() and the periodic measures
   /// of sampling_quality() take them. Default false.
   bool periodic = false;
+  /// With `periodic`, the torus [0, period[0]) x [0, period[1]) (x [0, period[2])) instead of the unit one:
+  /// one value per axis of the positions, each in [1e-150, 1e150] (the pixels of a W x H picture tile with
+  /// {W, H}); without domain_measure its measure is the product of the periods. Default empty: the unit
+  /// torus. Given without `periodic`, refused.
+  std::vector<double> period;
   /// fraction of the eliminations done; returning false stops (nothing is output)
   Progress_callback progress;
 };
@@ -211,6 +216,10 @@ struct Dart_throwing_options {
   /// periodogram of sampling_spectrum() and the periodic measures of sampling_quality() take them. Default
   /// false.
   bool periodic = false;
+  /// With `periodic`, the torus [0, period[0]) x [0, period[1]) (x [0, period[2])) instead of the unit one:
+  /// one value per axis of the positions, each in [1e-150, 1e150]. Default empty: the unit torus. Given
+  /// without `periodic`, refused.
+  std::vector<double> period;
   Progress_callback progress;  ///< fraction of the items visited; returning false stops (nothing is output)
 };
 

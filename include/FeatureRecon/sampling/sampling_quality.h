@@ -35,15 +35,20 @@ struct Sampling_quality_options {
   /// feature scale; default infinity (Euclidean)
   double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
-  /// Area (2D) or volume (3D) of the domain. Default 0: the bounding box of the samples (or the unit square /
-  /// cube when `periodic`); for 3D positions with intrinsic_dimension 2, the area of the surface they sample,
-  /// estimated as weighted_sample_elimination() estimates it (discs reaching the 8th nearest neighbour).
+  /// Area (2D) or volume (3D) of the domain. Default 0: the bounding box of the samples (or the torus when
+  /// `periodic`: the unit square / cube, or the product of `period`); for 3D positions with
+  /// intrinsic_dimension 2, the area of the surface they sample, estimated as weighted_sample_elimination()
+  /// estimates it (discs reaching the 8th nearest neighbour).
   double domain_measure = 0;
   /// 2 (images, surfaces) or 3 (volumes). Default 0: the dimension of the positions.
   int intrinsic_dimension = 0;
   /// Distances on the unit torus [0, 1)^d (positions are taken modulo 1), as the point-set analysis tools of
   /// Heck, Schlömer and Deussen measure them; default false.
   bool periodic = false;
+  /// With `periodic`, the torus [0, period[0]) x [0, period[1]) (x [0, period[2])) instead of the unit one
+  /// (positions modulo the periods; without domain_measure its measure is their product): one value per axis,
+  /// each in [1e-150, 1e150]. Default empty: the unit torus. Given without `periodic`, refused.
+  std::vector<double> period;
   /// Fraction of the samples measured, every 4096 samples (the periodic search, when repeated with a wider
   /// band, counts its second pass in the second half); returning false stops: the statistics stay 0 and the
   /// status is interrupted.
@@ -77,8 +82,9 @@ struct Sampling_quality {
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure, an intrinsic_dimension other than 0, 2 or 3 or above the
-///   positions' dimension, or with a finite sigma_feature a feature at a non-finite distance from itself (a
-///   zero normal; naming the item).
+///   positions' dimension, a `period` given without `periodic`, of another length than the positions'
+///   dimension or with a value outside [1e-150, 1e150] (naming the index), or with a finite sigma_feature a
+///   feature at a non-finite distance from itself (a zero normal; naming the item).
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality_options& options = {},
                                   const Traits& traits = Traits()) {
@@ -91,11 +97,12 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   const std::size_t n = S.size();
   Sampling_quality q;
   q.samples = n;
-  if (options.periodic) S.positions = internal::torus_positions(std::move(S.positions));
+  const std::array<double, D> period = internal::torus_period<D>(options.period, options.periodic, fn);
+  if (options.periodic) S.positions = internal::torus_positions(std::move(S.positions), period);
   const int dim = options.intrinsic_dimension == 0 ? D : options.intrinsic_dimension;
   const int affine = internal::affine_dimension<D>(S.positions);
   double measure = options.domain_measure;
-  if (measure == 0 && options.periodic) measure = 1.0;
+  if (measure == 0 && options.periodic) measure = internal::torus_measure(period);
   if constexpr (D == 3) {
     // A surface in space: its area, not the volume of its bounding box (which read a flat grid as measure 0
     // and a wall 0.5 thick as 185 for an area of 524). Estimated on the distinct positions: copies would be
@@ -113,11 +120,11 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
   }
   q.hexagonal_distance = dim == 2 ? std::sqrt(2 * measure / (std::sqrt(3.0) * double(n)))
                                   : std::cbrt(std::sqrt(2.0) * measure / double(n));
-  // Periodic images of the points within `band` of the faces of the unit cell, so the tree sees the torus.
-  // The search is exact when every nearest distance found stays below the band (the images within that
-  // distance of a point in the cell are then all in the tree); otherwise it is repeated with band 0.5, which
-  // holds every nearest image. Returns the largest nearest distance, or -1 when the callback stopped the
-  // pass.
+  // Periodic images of the points within `band` of the faces of the torus's cell (at most half a period),
+  // so the tree sees the torus. The search is exact when every nearest distance found stays below the band
+  // (the images within that distance of a point in the cell are then all in the tree); otherwise it is
+  // repeated with half of every period, which holds every nearest image. Returns the largest nearest
+  // distance, or -1 when the callback stopped the pass.
   const auto measure_with_band = [&](double band, double from, double to) {
     double farthest = 0;
     std::vector<std::array<double, D>> points = S.positions;
@@ -131,9 +138,10 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
           std::array<double, D> p = S.positions[i];
           bool inside = true, zero = true;
           for (int k = 0, c = o; k < D; ++k, c /= 3) {
-            p[k] += double(c % 3 - 1);
+            p[k] += double(c % 3 - 1) * period[std::size_t(k)];
             zero = zero && c % 3 == 1;
-            inside = inside && p[k] > -band && p[k] < 1 + band;
+            const double reach = std::min(band, 0.5 * period[std::size_t(k)]);
+            inside = inside && p[k] > -reach && p[k] < period[std::size_t(k)] + reach;
           }
           if (!zero && inside) {
             points.push_back(p);
@@ -214,11 +222,13 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
     });
     return farthest;
   };
-  const double band = std::min(0.5, 2 * q.hexagonal_distance);
-  double farthest =
-      measure_with_band(options.periodic ? band : 0, 0, options.periodic && band < 0.5 ? 0.5 : 1);
-  if (farthest >= 0 && options.periodic && !(farthest * (1 + 1e-9) < band) && band < 0.5)
-    farthest = measure_with_band(0.5, 0.5, 1);
+  // The first band: twice d_hex, unless that reaches half of the shortest period (then every nearest image).
+  const double half = 0.5 * *std::min_element(period.begin(), period.end());
+  const double band = std::min(half, 2 * q.hexagonal_distance);
+  const double all = std::numeric_limits<double>::infinity();  // half of every period
+  const bool partial = options.periodic && band < half;
+  double farthest = measure_with_band(options.periodic ? (partial ? band : all) : 0, 0, partial ? 0.5 : 1);
+  if (farthest >= 0 && partial && !(farthest * (1 + 1e-9) < band)) farthest = measure_with_band(all, 0.5, 1);
   if (farthest < 0) {
     Sampling_quality stopped;
     stopped.samples = n;

@@ -98,9 +98,9 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 /// neighbours per item, O(n k) memory (4 bytes per neighbour); k is about 3.6 n / count in 2D, 5.9 n / count
 /// in 3D. When those lists would exceed 2^24 ids (and n > 16 count) the elimination is progressive: stages of
 /// factor 4 (each with the r_max of its own count) first bring n down to max(16 count, sqrt(2^24 count / c)).
-/// With `options.periodic` the positions are taken modulo 1 and distances are those of the unit torus, so
-/// that the kept set tiles the plane (or space), as Yuksel's tileable sets; the grid is then looked up also
-/// shifted by the period (1) across the faces the neighbourhood reaches.
+/// With `options.periodic` the positions are taken modulo 1 (or modulo `options.period` per axis) and
+/// distances are those of the torus, so that the kept set tiles the plane (or space), as Yuksel's tileable
+/// sets; the grid is then looked up also shifted by the period across the faces the neighbourhood reaches.
 ///
 /// \tparam ItemRange a forward range of `Traits::Item`.
 /// \tparam OutputIterator accepts std::size_t (indices into `items`).
@@ -122,9 +122,10 @@ inline std::vector<std::uint32_t> seeded_permutation(std::size_t n, std::uint64_
 ///   max_radius far too large; found while counting them, before they are stored), count larger than the
 ///   input, non-finite coordinates (naming the item), sigma_position <= 0, sigma_feature <= 0, negative
 ///   max_radius or domain_measure, intrinsic_dimension other than 0, 2 or 3 or above the positions'
-///   dimension, alpha <= 0, with a finite sigma_feature a feature at a non-finite distance from itself (a
-///   zero normal, NaN; naming the item) or two features at a NaN or negative distance (naming both). The
-///   input is never modified.
+///   dimension, alpha <= 0, a `period` given without `periodic`, of another length than the positions'
+///   dimension or with a value outside [1e-150, 1e150] (naming the index), with a finite sigma_feature a
+///   feature at a non-finite distance from itself (a zero normal, NaN; naming the item) or two features at a
+///   NaN or negative distance (naming both). The input is never modified.
 /// \note Duplicated items (the same position at bilateral distance 0) are eliminated first, before the
 ///   neighbour lists are built (weight limiting gives them the largest weight, and copies would cost
 ///   neighbour lists quadratic in their number): of each group of copies the item of lowest seeded priority
@@ -157,9 +158,11 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
   const internal::Sample_set<Traits> S(items, traits, fn, std::isfinite(options.sigma_feature));
   internal::check_position_scale(S.extent(), options.sigma_position, fn);
   constexpr int D = Traits::dimension;
-  // On the unit torus, the positions modulo 1 stand for the items everywhere below.
-  const std::vector<std::array<double, D>> wrapped =
-      options.periodic ? internal::torus_positions(S.positions) : std::vector<std::array<double, D>>();
+  // On the torus, the positions modulo the periods stand for the items everywhere below.
+  const std::array<double, D> period = internal::torus_period<D>(options.period, options.periodic, fn);
+  const std::vector<std::array<double, D>> wrapped = options.periodic
+                                                         ? internal::torus_positions(S.positions, period)
+                                                         : std::vector<std::array<double, D>>();
   const std::vector<std::array<double, D>>& where = options.periodic ? wrapped : S.positions;
   const std::size_t n = S.size();
   internal::check_count(count, n, fn);
@@ -178,8 +181,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
     int dim = options.intrinsic_dimension;
     double measure = options.domain_measure;
     if (options.periodic && measure == 0 && (dim == 0 || dim == D)) {
-      dim = D;  // the unit torus itself, whatever the items' own extent
-      measure = 1;
+      dim = D;  // the torus itself, whatever the items' own extent
+      measure = internal::torus_measure(period);
     }
     const int affine = internal::affine_dimension<D>(where);
     if constexpr (D == 3) {
@@ -316,12 +319,14 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
       internal::with_metric(options, [&](const auto& metric) {
         const double spatial = two_r * metric.spatial_scale(), spatial2 = internal::prefilter_bound(spatial);
         // The grid's cell and look-up reach: on the torus with a margin for the rounding of shifted queries.
-        const double cell = options.periodic ? internal::torus_search_reach(spatial) : spatial;
+        const double cell = options.periodic
+                                ? internal::torus_search_reach(spatial, internal::largest_period(period))
+                                : spatial;
         // Weight of the pair (i, j) (local ids), or a negative number when j is not within 2 r of i.
         auto pair_weight = [&](std::size_t i, std::size_t j) {
           double d2 = 0;  // from the stage's own copy of the positions (contiguous, no indirection)
           if (options.periodic)
-            d2 = internal::torus_squared_distance(positions[i], positions[j]);
+            d2 = internal::torus_squared_distance(positions[i], positions[j], period);
           else
             for (int k = 0; k < D; ++k)
               d2 += (positions[i][k] - positions[j][k]) * (positions[i][k] - positions[j][k]);
@@ -350,12 +355,15 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         }
         const FeatureRecon::internal::Uniform_grid<D> grid(positions, cell);
         // Calls f(j) for the candidates j near item i; on the torus each once, at its nearest image (with
-        // 2 r_max above 1/2, half the torus, several images of j can lie within reach).
+        // 2 r_max above half a period, several images of j can lie within reach).
         auto for_each_candidate = [&](std::size_t i, const auto& f) {
           if (!options.periodic) return grid.for_each_candidate(positions[i], f);
-          internal::for_each_torus_candidate(grid, positions[i], cell, [&](std::uint32_t j, int shift) {
-            if (shift == internal::nearest_image_shift(positions[i], positions[j])) f(j);
-          });
+          internal::for_each_torus_candidate(
+              grid, positions[i], cell,
+              [&](std::uint32_t j, int shift) {
+                if (shift == internal::nearest_image_shift(positions[i], positions[j], period)) f(j);
+              },
+              {}, period);
         };
         // The callback is asked at the start of every stage and every 16,384 items or eliminations after it,
         // the neighbour lists included (dense clusters make them the long part).

@@ -29,11 +29,17 @@ namespace sampling {
 namespace internal {
 
 /// \cond
-/// A coordinate on the unit torus, in [0, 1): x - floor(x), except that a tiny negative x (-1e-20) wraps to
-/// 1.0 in floating point and is taken as 0, the same point of the torus.
-inline double torus_coordinate(double x) {
-  const double t = x - std::floor(x);
-  return t < 1 ? t : 0.0;
+/// True when a scale's square is a normal double: distances divided by it neither overflow nor divide by zero
+/// (a sigma of 1e-160 squared is 0, and darts then never stopped).
+inline bool is_usable_scale(double sigma) { return sigma >= 1e-150 && sigma <= 1e150; }
+
+/// A coordinate on the torus of period `period` (default: the unit torus), in [0, period): x - floor(x) on
+/// the unit torus, else fmod(x, period) (exact) moved up by one period when negative. A tiny negative x
+/// (-1e-20) wraps to the period itself in floating point and is taken as 0, the same point of the torus.
+inline double torus_coordinate(double x, double period = 1) {
+  double t = period == 1 ? x - std::floor(x) : std::fmod(x, period);
+  if (t < 0) t += period;
+  return t < period ? t : 0.0;
 }
 
 /// An array of D copies of v.
@@ -44,36 +50,81 @@ constexpr std::array<double, D> filled_array(double v) {
   return a;
 }
 
-/// The positions modulo 1 (torus_coordinate() of every coordinate).
+/// The periods of the torus the options of a discrete sampler or of sampling_quality() describe: 1 along
+/// every axis when `period` is empty, else its D values. Throws std::invalid_argument (naming `fn`) for a
+/// period given without `periodic`, one of another length than the positions' dimension, or a value outside
+/// [1e-150, 1e150] (naming its index).
 template <std::size_t D>
-std::vector<std::array<double, D>> torus_positions(std::vector<std::array<double, D>> positions) {
+std::array<double, D> torus_period(const std::vector<double>& period, bool periodic, const char* fn) {
+  if (period.empty()) return filled_array<D>(1.0);
+  if (!periodic)
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "period is given (", period.size(),
+        " values) but periodic is false: set periodic, or leave period empty");
+  if (period.size() != D)
+    FeatureRecon::internal::throw_invalid_argument(fn, "period has ", period.size(),
+                                                   " values for positions of dimension ", D,
+                                                   " (one per axis, or none for the unit torus)");
+  std::array<double, D> out{};
+  for (std::size_t k = 0; k < D; ++k) {
+    if (!is_usable_scale(period[k]))
+      FeatureRecon::internal::throw_invalid_argument(fn, "period[", k, "] must be in [1e-150, 1e150], got ",
+                                                     period[k]);
+    out[k] = period[k];
+  }
+  return out;
+}
+
+/// The largest of the periods (the coordinate magnitude of positions on the torus).
+template <std::size_t D>
+double largest_period(const std::array<double, D>& period) {
+  return *std::max_element(period.begin(), period.end());
+}
+
+/// The measure (area, volume) of the torus: the product of its periods.
+template <std::size_t D>
+double torus_measure(const std::array<double, D>& period) {
+  double m = 1;
+  for (const double p : period) m *= p;
+  return m;
+}
+
+/// The positions modulo the periods (torus_coordinate() of every coordinate; default: the unit torus).
+template <std::size_t D>
+std::vector<std::array<double, D>> torus_positions(
+    std::vector<std::array<double, D>> positions,
+    const std::array<double, D>& period = filled_array<D>(1.0)) {
   for (auto& p : positions)
-    for (double& x : p) x = torus_coordinate(x);
+    for (std::size_t k = 0; k < D; ++k) p[k] = torus_coordinate(p[k], period[k]);
   return positions;
 }
 
-/// Squared distance of a and b on the unit torus (coordinates in [0, 1), as torus_coordinate() gives them):
-/// each coordinate difference d counts as min(|d|, 1 - |d|), the nearest image.
+/// Squared distance of a and b on the torus of the periods (default: the unit torus; coordinates in [0,
+/// period), as torus_coordinate() gives them): each coordinate difference d counts as min(|d|, period - |d|),
+/// the nearest image.
 template <std::size_t D>
-double torus_squared_distance(const std::array<double, D>& a, const std::array<double, D>& b) {
+double torus_squared_distance(const std::array<double, D>& a, const std::array<double, D>& b,
+                              const std::array<double, D>& period = filled_array<D>(1.0)) {
   double sum = 0;
   for (std::size_t k = 0; k < D; ++k) {
     double d = std::abs(a[k] - b[k]);
-    d = std::min(d, 1 - d);
+    d = std::min(d, period[k] - d);
     sum += d * d;
   }
   return sum;
 }
 
-/// The shift s in {-1, 0, 1}^D whose image w + s of w lies nearest p on the unit torus, coded as the sum of
-/// (s_k + 1) 3^k: along each axis s_k = -1 when p_k - w_k > 1/2, +1 when it is <= -1/2, else 0 (decided on
-/// the one rounded difference, so that exactly one shift is chosen for every pair, also at distance 1/2).
+/// The shift s in {-1, 0, 1}^D whose image w + s period of w lies nearest p on the torus (default: the unit
+/// torus), coded as the sum of (s_k + 1) 3^k: along each axis s_k = -1 when p_k - w_k > period_k / 2, +1 when
+/// it is <= -period_k / 2, else 0 (decided on the one rounded difference, so that exactly one shift is chosen
+/// for every pair, also at distance period_k / 2).
 template <std::size_t D>
-int nearest_image_shift(const std::array<double, D>& p, const std::array<double, D>& w) {
+int nearest_image_shift(const std::array<double, D>& p, const std::array<double, D>& w,
+                        const std::array<double, D>& period = filled_array<D>(1.0)) {
   int code = 0;
   for (std::size_t k = D; k-- > 0;) {
-    const double t = p[k] - w[k];
-    code = 3 * code + (t > 0.5 ? 0 : t <= -0.5 ? 2 : 1);
+    const double t = p[k] - w[k], half = 0.5 * period[k];
+    code = 3 * code + (t > half ? 0 : t <= -half ? 2 : 1);
   }
   return code;
 }
@@ -218,10 +269,6 @@ struct Sample_set {
                                     i, "item", j);
   }
 };
-
-/// True when a scale's square is a normal double: distances divided by it neither overflow nor divide by zero
-/// (a sigma of 1e-160 squared is 0, and darts then never stopped).
-inline bool is_usable_scale(double sigma) { return sigma >= 1e-150 && sigma <= 1e150; }
 
 /// The bound of the spatial prefilter |dp|^2 < reach^2 of the samplers' neighbour searches: reach^2, or
 /// infinity (no prefilter: the metric decides) where that square underflows and pairs within reach, copies at
