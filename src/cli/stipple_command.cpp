@@ -148,15 +148,16 @@ std::vector<std::size_t> weighted_pixels(const std::vector<double>& density, std
 }
 
 /// Bilateral dart throwing over the pixels of positive darkness (white ones take no dot) with radii r_i = R
-/// min(8, sqrt(mean / rho_i)) (mean over those pixels), R searched so that at least `count` pixels are kept;
-/// the few extra are dropped at random (seeded). Pixels are visited in a seeded random order weighted by
-/// darkness (keys u^(1 / rho_i), largest first: Efraimidis and Spirakis): a light pixel's wide disc, visited
-/// first, would otherwise keep dark pixels around it empty.
+/// min(8, sqrt(mean / rho_i)) (mean over those pixels), on the torus of `period` when it is given (a tile:
+/// the picture's width and height), R searched so that at least `count` pixels are kept; the few extra are
+/// dropped at random (seeded). Pixels are visited in a seeded random order weighted by darkness (keys u^(1 /
+/// rho_i), largest first: Efraimidis and Spirakis): a light pixel's wide disc, visited first, would otherwise
+/// keep dark pixels around it empty.
 template <class Pixel>
 std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
                                         const std::vector<double>& density, std::size_t count,
                                         double sigma_position, double sigma_feature, std::uint64_t seed,
-                                        Progress& progress) {
+                                        const std::vector<double>& period, Progress& progress) {
   std::vector<Pixel> pixels;
   std::vector<std::size_t> index;  // of each inked pixel among all
   for (std::size_t i = 0; i < density.size(); ++i)
@@ -173,6 +174,8 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
   fs::Dart_throwing_options o;
   o.sigma_position = sigma_position;
   o.sigma_feature = sigma_feature;
+  o.periodic = !period.empty();
+  o.period = period;
   o.priority.resize(index.size());
   {
     std::mt19937_64 rng(seed);
@@ -302,8 +305,10 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
     report.stop = fs::to_string(r.stop);
     return dots;
   }
-  const std::vector<std::size_t> start =
-      adaptive_darts(pixels, density, s.count, d_hex, s.sigma_feature, s.seed, progress);
+  const std::vector<std::size_t> start = adaptive_darts(
+      pixels, density, s.count, d_hex, s.sigma_feature, s.seed,
+      s.periodic ? std::vector<double>{double(image.width), double(image.height)} : std::vector<double>(),
+      progress);
   if (s.method == "darts") {
     for (const std::size_t i : start) {
       const std::array<double, 2> p{pixels[i].column + 0.5, pixels[i].row + 0.5};
@@ -381,8 +386,10 @@ int run_stipple(const std::vector<std::string>& argv) {
   if (s.method == "darts" && args.has("iterations"))
     throw Usage_error("--iterations does not apply to --method darts (no iterations)");
   s.periodic = args.has("periodic");
-  if (s.periodic && s.method != "lloyd")
-    throw Usage_error("--periodic applies to --method lloyd only (Lloyd on the torus of the picture)");
+  if (s.periodic && s.method != "lloyd" && s.method != "darts")
+    throw Usage_error(
+        "--periodic applies to --method lloyd and darts (on the torus of the picture); bilateral-lloyd and "
+        "kernel have no torus");
   const long long count = args.get_int("count");
   if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   s.count = static_cast<std::size_t>(count);
