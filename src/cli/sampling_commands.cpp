@@ -26,6 +26,50 @@
 namespace FeatureRecon {
 namespace cli {
 namespace {
+
+/// --period X[,Y[,Z]]: the periods of the torus the samples live on, one value for every axis or one per axis
+/// of the `dimension`-D input, each a scale in [1e-150, 1e150] (dimension 0, an empty file: as given); empty
+/// when the option is not given.
+std::vector<double> period_of(const Arguments& args, std::size_t dimension) {
+  if (!args.has("period")) return {};
+  const std::string text = args.get("period");
+  std::vector<double> period;
+  std::size_t from = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', from);
+    const std::string part = text.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+    double x = 0;
+    if (!io::parse_decimal(part, x) || !(x >= 1e-150 && x <= 1e150))
+      throw Usage_error(
+          "--period takes one length or one per axis, each a number in [1e-150, 1e150] "
+          "separated by commas, got '" +
+          text + "'");
+    period.push_back(x);
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  if (dimension == 0) return period;
+  if (period.size() == 1) period.assign(dimension, period[0]);
+  if (period.size() != dimension)
+    throw Usage_error("--period has " + std::to_string(period.size()) + " lengths for " +
+                      std::to_string(dimension) + "-D points (give one, or one per axis)");
+  return period;
+}
+
+/// The periods as a JSON array, or null.
+std::string json_period(const std::vector<double>& period) {
+  if (period.empty()) return "null";
+  std::string out = "[";
+  for (std::size_t k = 0; k < period.size(); ++k) out += (k ? ", " : "") + json_number(period[k]);
+  return out + "]";
+}
+
+/// The measure (area, volume) of the torus of the periods: their product (1 for the unit torus).
+double torus_measure_of(const std::vector<double>& period) {
+  double m = 1;
+  for (const double p : period) m *= p;
+  return m;
+}
 using K = CGAL::Epick;
 using Pwn = std::pair<K::Point_3, K::Vector_3>;
 namespace fs = FeatureRecon::sampling;
@@ -67,9 +111,10 @@ io::Point_file read_text_points(const std::string& input) {
 }
 
 /// `sample` on points in the plane (a text file of lines `x y`): Euclidean spacing, written as `x y` lines.
-int sample_plane(const Arguments& args, const io::Point_file& file, const Sampler_request& request,
+int sample_plane(const Arguments& args, const io::Point_file& file, Sampler_request request,
                  Outputs& outputs) {
   const std::string input = args.get("input");
+  request.period = period_of(args, 2);
   if (io::file_extension(outputs.target("out")) != "txt")
     throw Usage_error(input +
                       " holds points in the plane (2 numbers per line), written as lines 'x y': give "
@@ -96,9 +141,10 @@ int sample_plane(const Arguments& args, const io::Point_file& file, const Sample
     text += io::format_double(points[i].x()) + " " + io::format_double(points[i].y()) + "\n";
   io::write_text_file(outputs.path("out"), text);
   outputs.commit();
-  // Spacing of the result on the domain the elimination derives: the unit torus, or the input's bounding box.
+  // Spacing of the result on the domain the elimination derives: the torus, or the input's bounding box.
   fs::Sampling_quality_options q;
   q.periodic = request.periodic;
+  q.period = request.period;
   if (!request.periodic) {
     std::vector<std::array<double, 2>> positions;
     for (const K::Point_2& p : points) positions.push_back({p.x(), p.y()});
@@ -113,6 +159,7 @@ int sample_plane(const Arguments& args, const io::Point_file& file, const Sample
      << "\", \"radius\": " << json_number(used_radius)
      << ", \"sigma_position\": " << json_number(request.sigma_position) << ", \"seed\": " << request.seed
      << ", \"dimension\": 2, \"periodic\": " << (request.periodic ? "true" : "false")
+     << ", \"period\": " << json_period(request.period)
      << ", \"intrinsic_dimension\": 2, \"domain_measure\": " << json_number(quality.domain_measure)
      << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
      << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
@@ -126,7 +173,7 @@ int sample_plane(const Arguments& args, const io::Point_file& file, const Sample
 int run_sample(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"unoriented", "periodic", "quiet"},
                        {"input", "count", "radius", "method", "sigma-position", "sigma-feature", "seed",
-                        "out", "normal-neighbors"});
+                        "out", "normal-neighbors", "period"});
   const std::string input = args.get("input"), output = args.get("out");
   Outputs outputs(args, {"out"});
   outputs.require_extension("out", {"ply", "off", "xyz", "txt"},
@@ -166,7 +213,7 @@ int run_sample(const std::vector<std::string>& argv) {
   request.sigma_position = sigma_position;
   request.sigma_feature = sigma_feature;
   request.seed = static_cast<std::uint64_t>(seed);
-  request.periodic = args.has("periodic");
+  request.periodic = args.has("periodic") || args.has("period");  // --period: a torus of other lengths
 
   // PLY, OFF and XYZ are point clouds; other text files hold points in the plane (2 numbers per line) or
   // clouds (3, or 6 with normals), as `sample-stats` reads them.
@@ -197,6 +244,7 @@ int run_sample(const std::vector<std::string>& argv) {
     throw Usage_error(input +
                       " is a point cloud, written as PLY, OFF or XYZ: give --out FILE.ply, .off or .xyz "
                       "(.txt is for points in the plane)");
+  request.period = period_of(args, 3);
   if (count > static_cast<long long>(cloud.points.size()))
     throw Usage_error("--count " + std::to_string(count) + " exceeds the " +
                       std::to_string(cloud.points.size()) + " points of " + input);
@@ -232,11 +280,13 @@ int run_sample(const std::vector<std::string>& argv) {
   outputs.commit();
 
   // Spacing of the result on the input's domain (surface area or volume as the elimination estimates it; the
-  // unit torus, a volume, with --periodic).
-  const auto [dimension, measure] =
-      request.periodic ? std::pair<int, double>(3, 1.0) : domain_of(cloud.points);
+  // torus, a volume, with --periodic or --period).
+  const auto [dimension, measure] = request.periodic
+                                        ? std::pair<int, double>(3, torus_measure_of(request.period))
+                                        : domain_of(cloud.points);
   fs::Sampling_quality_options q;
   q.periodic = request.periodic;
+  q.period = request.period;
   q.intrinsic_dimension = dimension;
   q.domain_measure = measure;
   std::vector<K::Point_3> kept_points;
@@ -263,7 +313,8 @@ int run_sample(const std::vector<std::string>& argv) {
      << "\", \"orientation\": \"" << (args.has("unoriented") ? "unoriented" : "oriented")
      << "\", \"seed\": " << seed
      << ", \"dimension\": 3, \"periodic\": " << (request.periodic ? "true" : "false")
-     << ", \"intrinsic_dimension\": " << dimension << ", \"domain_measure\": " << json_number(measure)
+     << ", \"period\": " << json_period(request.period) << ", \"intrinsic_dimension\": " << dimension
+     << ", \"domain_measure\": " << json_number(measure)
      << ", \"relative_radius\": " << json_statistic(quality.relative_radius, quality.status)
      << ", \"bilateral_relative_radius\": " << json_statistic(bilateral_rho, quality.status)
      << ", \"average_minimum_distance\": " << json_statistic(quality.average_minimum_distance, quality.status)
@@ -275,14 +326,14 @@ int run_sample(const std::vector<std::string>& argv) {
 int run_sample_stats(const std::vector<std::string>& argv) {
   const Arguments args(argv, {"periodic", "quiet"},
                        {"input", "domain-measure", "intrinsic-dimension", "sigma-position", "sigma-feature",
-                        "spectrum", "max-frequency", "spectrum-method"});
-  if (args.has("spectrum") && !args.has("periodic"))
+                        "spectrum", "max-frequency", "spectrum-method", "period"});
+  const bool periodic = args.has("periodic") || args.has("period");  // --period: a torus of other lengths
+  if (args.has("spectrum") && !periodic)
     throw Usage_error("--spectrum needs --periodic (2D samples on the unit torus)");
   Outputs outputs(args, {"spectrum"});
   fs::Sampling_spectrum_options spectrum_options;
   if (args.has("max-frequency")) {
-    if (!args.has("periodic"))
-      throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
+    if (!periodic) throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
     const long long f = args.get_int("max-frequency");
     if (f < 1) throw Usage_error("--max-frequency must be >= 1");
     if (f > 16384)  // the library's limit, named here as the option
@@ -293,8 +344,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     spectrum_options.max_frequency = static_cast<std::size_t>(f);
   }
   if (args.has("spectrum-method")) {
-    if (!args.has("periodic"))
-      throw Usage_error("--spectrum-method needs --periodic (2D samples on the unit torus)");
+    if (!periodic) throw Usage_error("--spectrum-method needs --periodic (2D samples on the unit torus)");
     const std::string m = args.get("spectrum-method");
     if (m == "gridded")
       spectrum_options.method = fs::Spectrum_method::gridded;
@@ -311,7 +361,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     if (d != 2 && d != 3) throw Usage_error("--intrinsic-dimension must be 2 or 3");
     o.intrinsic_dimension = static_cast<int>(d);
   }
-  o.periodic = args.has("periodic");
+  o.periodic = periodic;
   if (args.has("sigma-position")) o.sigma_position = args.get_scale("sigma-position");
   o.sigma_feature = sigma_feature_of(args);
   Progress measuring("nearest neighbours", args.has("quiet"));
@@ -351,9 +401,19 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     throw Usage_error(
         "--spectrum, --max-frequency and --spectrum-method need 2-D samples on the unit torus; " + input +
         " has " + std::to_string(columns) + " numbers per line");
+  o.period = period_of(args, cloud ? 3 : columns);
+  // The periodogram is taken on the unit torus: a square torus is scaled to it, another has none.
+  const bool square = o.period.empty() || o.period[0] == o.period[1];
+  if (spectrum_asked && !square)
+    throw Usage_error(
+        "--spectrum, --max-frequency and --spectrum-method need a square torus (the periodogram "
+        "is taken on the unit torus, to which equal periods are scaled); --period is " +
+        args.get("period"));
   if (empty) {
     q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
-    q.domain_measure = o.domain_measure != 0 ? o.domain_measure : o.periodic ? 1.0 : 0.0;
+    q.domain_measure = o.domain_measure != 0 ? o.domain_measure
+                       : o.periodic          ? torus_measure_of(o.period)
+                                             : 0.0;
   } else if (cloud) {
     const io::Point_cloud& cloud = points;
     dimension = 3;
@@ -397,9 +457,11 @@ int run_sample_stats(const std::vector<std::string>& argv) {
         p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
       q = fs::sampling_quality(p, o);
       measuring.done(std::to_string(q.samples) + " samples");
-      if (o.periodic) {
+      if (o.periodic && square) {
         Progress progress("spectrum", args.has("quiet"));
         spectrum_options.progress = std::ref(progress);
+        if (!o.period.empty())  // the square torus scaled to the unit one
+          for (K::Point_2& x : p) x = K::Point_2(x.x() / o.period[0], x.y() / o.period[0]);
         spectrum = fs::sampling_spectrum(p, spectrum_options);
         progress.done(std::to_string(spectrum.radial_power.size()) + " annuli");
         has_spectrum = true;
@@ -429,7 +491,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
      << ", \"dimension\": " << dimension
      << ", \"intrinsic_dimension\": " << (o.intrinsic_dimension == 0 ? int(dimension) : o.intrinsic_dimension)
      << ", \"domain_measure\": " << json_number(q.domain_measure)
-     << ", \"periodic\": " << (o.periodic ? "true" : "false")
+     << ", \"periodic\": " << (o.periodic ? "true" : "false") << ", \"period\": " << json_period(o.period)
      << ", \"hexagonal_distance\": " << json_statistic(q.hexagonal_distance, q.status)
      << ", \"minimum_distance\": " << json_statistic(q.minimum_distance, q.status)
      << ", \"relative_radius\": " << json_statistic(q.relative_radius, q.status)

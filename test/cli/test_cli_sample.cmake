@@ -52,7 +52,7 @@ expect(sample_plane_out_cloud 2 "candidates.txt holds points in the plane \\(2 n
 expect(sample_plane_sigma_feature 2 "--sigma-feature needs normals, which points in the plane" sample --input ${WORK}/candidates.txt --count 3 --sigma-feature 1 --out ${WORK}/s.txt)
 expect(sample_cloud_out_text 2 "wall.xyz is a point cloud, written as PLY, OFF or XYZ" sample --input ${WORK}/wall.xyz --count 3 --out ${WORK}/s.txt)
 # A cloud on the unit torus of space: the domain is the cube of measure 1, a volume.
-expect(sample_cloud_periodic 0 "\"kept\": 100,.*\"dimension\": 3, \"periodic\": true, \"intrinsic_dimension\": 3, \"domain_measure\": 1," sample --input ${WORK}/wall_plain.xyz --count 100 --periodic --out ${WORK}/wall_tile.xyz --quiet)
+expect(sample_cloud_periodic 0 "\"kept\": 100,.*\"dimension\": 3, \"periodic\": true, \"period\": null, \"intrinsic_dimension\": 3, \"domain_measure\": 1," sample --input ${WORK}/wall_plain.xyz --count 100 --periodic --out ${WORK}/wall_tile.xyz --quiet)
 expect(sample_euclidean 0 "\"kept\": 200,.*\"normals\": \"file\"" sample --input ${WORK}/wall.xyz --count 200 --out ${WORK}/euclid.xyz --quiet)
 expect_count(${WORK}/euclid.xyz "\n" 200)
 expect(sample_bilateral 0 "\"kept\": 200,.*\"sigma_feature\": 0.5" sample --input ${WORK}/wall.xyz --count 200 --sigma-feature 0.5 --out ${WORK}/bilateral.xyz --quiet)
@@ -338,3 +338,42 @@ expect(audit_sample_bilateral_rho 0 "\"kept\": 100, .*\"intrinsic_dimension\": 3
 string(REGEX MATCH "\"domain_measure\": ([0-9.]+), .*\"bilateral_relative_radius\": ([0-9.]+), " _ "${last_output}")
 set(audit_rho ${CMAKE_MATCH_2})
 expect(audit_sample_bilateral_rho_stats 0 "\"relative_radius\": ${audit_rho}, " sample-stats --input ${A}/b.xyz --sigma-feature 0.5 --intrinsic-dimension 3 --domain-measure ${CMAKE_MATCH_1} --quiet)
+
+# --period: the torus [0, 2) x [0, 1) instead of the unit one (implies --periodic). Darts at 0.05 over 1500
+# candidates of that rectangle keep no pair closer than 0.05 on its torus (sample-stats --period measures it),
+# the measure is 2; the plain throw of the same candidates keeps pairs closer across the seam x = 0 / 2.
+set(wide "")
+set(v 54321)
+foreach(i RANGE 1499)
+  foreach(axis x y)
+    math(EXPR v "(1103515245 * ${v} + 12345) % 2147483648")
+    math(EXPR d "(${v} / 2048) % 1000000 + 1000000")
+    string(SUBSTRING "${d}" 1 6 ${axis})
+  endforeach()
+  math(EXPR whole "${i} % 2")
+  string(APPEND wide "${whole}.${x} 0.${y}\n")
+endforeach()
+file(WRITE ${WORK}/wide.txt "${wide}")
+expect(sample_period_darts 0 "\"method\": \"darts\", \"radius\": 0.05,.*\"periodic\": true, \"period\": \\[2, 1\\], \"intrinsic_dimension\": 2, \"domain_measure\": 2," sample --input ${WORK}/wide.txt --method darts --radius 0.05 --period 2,1 --out ${WORK}/wide_tile.txt --quiet)
+expect(sample_period_darts_stats 0 "\"domain_measure\": 2, \"periodic\": true, \"period\": \\[2, 1\\], .*\"minimum_distance\": 0\\.(0[5-9]|[1-9])[0-9]*, " sample-stats --input ${WORK}/wide_tile.txt --period 2,1 --quiet)
+expect(sample_period_plain 0 "\"periodic\": false, \"period\": null," sample --input ${WORK}/wide.txt --method darts --radius 0.05 --out ${WORK}/wide_plain.txt --quiet)
+expect(sample_period_plain_stats 0 "\"minimum_distance\": 0\\.0[0-4][0-9]*, " sample-stats --input ${WORK}/wide_plain.txt --period 2,1 --quiet)
+# One length stands for every axis; the spectrum needs a square torus, scaled to the unit one (period 1 gives
+# what --periodic gives); refusals name the option.
+expect(sample_stats_period_one_length 0 "\"period\": \\[2, 2\\]," sample-stats --input ${WORK}/wide_tile.txt --period 2 --quiet)
+expect(sample_stats_period_unit 0 "\"period\": \\[1, 1\\], .*\"effective_nyquist\": " sample-stats --input ${WORK}/tile.txt --period 1 --quiet)
+string(REGEX MATCH "\"effective_nyquist\": [^,]*, \"oscillation\": [^,]*," period_unit_spectrum "${last_output}")
+expect(sample_stats_periodic_unit 0 "\"period\": null, .*\"effective_nyquist\": " sample-stats --input ${WORK}/tile.txt --periodic --quiet)
+string(REGEX MATCH "\"effective_nyquist\": [^,]*, \"oscillation\": [^,]*," periodic_unit_spectrum "${last_output}")
+if(NOT period_unit_spectrum STREQUAL periodic_unit_spectrum OR period_unit_spectrum STREQUAL "")
+  message(SEND_ERROR "sample_stats_period_unit: '${period_unit_spectrum}' differs from '${periodic_unit_spectrum}'")
+endif()
+expect(sample_stats_period_spectrum_box 2 "need a square torus .*--period is 2,1" sample-stats --input ${WORK}/wide_tile.txt --period 2,1 --spectrum ${WORK}/box.csv)
+expect(sample_period_three_for_two 2 "--period has 3 lengths for 2-D points \\(give one, or one per axis\\)" sample --input ${WORK}/wide.txt --count 5 --period 2,1,1 --out ${WORK}/x.txt)
+expect(sample_period_zero 2 "--period takes one length or one per axis, each a number in \\[1e-150, 1e150\\] separated by commas, got '2,0'" sample --input ${WORK}/wide.txt --count 5 --period 2,0 --out ${WORK}/x.txt)
+expect(sample_period_word 2 "got 'a,b'" sample-stats --input ${WORK}/wide.txt --period a,b)
+expect(sample_period_empty_part 2 "got '2,'" sample-stats --input ${WORK}/wide.txt --period 2,)
+# A cloud in space: one length for the three axes, the torus's volume as the measure.
+expect(sample_cloud_period 0 "\"kept\": 50,.*\"periodic\": true, \"period\": \\[40, 40, 40\\], \"intrinsic_dimension\": 3, \"domain_measure\": 64000," sample --input ${WORK}/wall_plain.xyz --count 50 --period 40 --out ${WORK}/wall_period.xyz --quiet)
+# No samples: degenerate, not an error; the lengths are taken as given (the dimension is unknown).
+expect(sample_stats_period_empty 0 "\"samples\": 0, .*\"domain_measure\": 2, \"periodic\": true, \"period\": \\[2, 1\\], .*\"degenerate\": true" sample-stats --input ${WORK}/nothing.txt --period 2,1)
