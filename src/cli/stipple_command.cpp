@@ -48,7 +48,7 @@ struct Stipple_settings {
   std::size_t palette = 0;
   std::uint64_t seed = 0;
   double gamma = 1;
-  bool periodic = false;  ///< Lloyd on the torus of the picture's rectangle (a tile)
+  bool periodic = false;  ///< a tile: Lloyd or darts on the torus of the picture's rectangle
 };
 
 /// Darkness 1 - luma / 255 (ITU-R BT.601), raised to gamma: the density of the dots.

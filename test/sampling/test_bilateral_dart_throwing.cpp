@@ -166,7 +166,9 @@ TEST(BilateralDartThrowing, PeriodicThrowIsAMaximalPackingOfABoxTorus) {
       for (std::size_t k : kept) covered = covered || box_torus_distance(p[i], p[k], 2.5, 0.75) < r + 1e-12;
       ASSERT_TRUE(covered) << "item " << i << " at r " << r << " could have been kept";
     }
-    if (r > 1.31) EXPECT_EQ(kept.size(), 1u);
+    if (r > 1.31) {
+      EXPECT_EQ(kept.size(), 1u);
+    }
     if (r == 0.05) {
       Dart_throwing_options unit;
       unit.periodic = true;
@@ -177,6 +179,66 @@ TEST(BilateralDartThrowing, PeriodicThrowIsAMaximalPackingOfABoxTorus) {
           joined = box_torus_distance(p[other[a]], p[other[b]], 2.5, 0.75) < r - 1e-12;
       EXPECT_TRUE(joined) << "the unit torus's throw packs this torus too: the test would not tell";
     }
+  }
+}
+
+TEST(BilateralDartThrowing, TargetCountOnABoxTorusIsAPackingAtItsRadius) {
+  // The count search on the torus [0, 25) x [0, 8): random points, and a grid of unit spacing (the pixels of
+  // a 25 x 8 picture, where the count jumps over the target at single distances and the search stops on the
+  // nearest distances within its throws, taken on the torus): exactly `count` kept, no two closer than the
+  // returned radius on the torus (brute force), and for random points the plain throw at that radius keeps
+  // the same items.
+  std::vector<Point_2> noise, grid;
+  for (const Point_2& q : white_noise(2000, 12)) noise.emplace_back(25 * q.x(), 8 * q.y());
+  for (int i = 0; i < 25; ++i)
+    for (int j = 0; j < 8; ++j) grid.emplace_back(i + 0.5, j + 0.5);
+  Dart_throwing_count_options c;
+  c.darts.periodic = true;
+  c.darts.period = {25, 8};
+  for (const std::size_t count : {1, 3, 17, 40, 150}) {
+    for (const auto* set : {&noise, &grid}) {
+      std::vector<std::size_t> kept;
+      const auto r = bilateral_dart_throwing_count(*set, count, std::back_inserter(kept), c);
+      ASSERT_EQ(kept.size(), count);
+      for (std::size_t a = 0; a < kept.size(); ++a)
+        for (std::size_t b = a + 1; b < kept.size(); ++b)
+          ASSERT_GE(box_torus_distance((*set)[kept[a]], (*set)[kept[b]], 25, 8), r.radius * (1 - 1e-12))
+              << (set == &grid ? "grid " : "noise ") << count;
+      if (set == &noise && count > 1) {
+        EXPECT_EQ(darts(noise, r.radius, c.darts), kept) << count;
+      }
+    }
+  }
+}
+
+TEST(BilateralDartThrowing, PeriodicThrowIsAMaximalPackingOfABoxTorusIn3D) {
+  // The torus [0, 1) x [0, 2) x [0, 0.5), candidates a period away from the cell: a packing at r = 0.2 and
+  // maximal (brute force over the 27 shifts).
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point_3> q;
+  for (int i = 0; i < 1500; ++i) q.emplace_back(u(rng) + 1, 2 * u(rng), 0.5 * u(rng) - 0.5);
+  const auto distance = [](const Point_3& a, const Point_3& b) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < 27; ++s) {
+      const double dx = a.x() - b.x() - double(s % 3 - 1);
+      const double dy = a.y() - b.y() - 2.0 * (s / 3 % 3 - 1);
+      const double dz = a.z() - b.z() - 0.5 * (s / 9 - 1);
+      best = std::min(best, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+    return best;
+  };
+  Dart_throwing_options o;
+  o.periodic = true;
+  o.period = {1, 2, 0.5};
+  const auto kept = darts(q, 0.2, o);
+  for (std::size_t a = 0; a < kept.size(); ++a)
+    for (std::size_t b = a + 1; b < kept.size(); ++b)
+      ASSERT_GE(distance(q[kept[a]], q[kept[b]]), 0.2 - 1e-12);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    bool covered = std::binary_search(kept.begin(), kept.end(), i);
+    for (std::size_t k : kept) covered = covered || distance(q[i], q[k]) < 0.2 + 1e-12;
+    ASSERT_TRUE(covered) << "3D item " << i;
   }
 }
 

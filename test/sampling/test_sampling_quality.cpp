@@ -138,45 +138,107 @@ TEST(SamplingQuality, TorusNeighboursAcrossTheSeamOfAClusteredSet) {
   }
 }
 
+// Nearest distances on the torus of `period` by brute force: every other point at every shift by up to three
+// periods along each axis (bilateral with sigma_feature 0.5 on the normals when `normals` is given).
+template <class P>
+std::vector<double> torus_nearest(const std::vector<P>& p, const std::vector<double>& period,
+                                  const std::vector<Vector_3>& normals = {}) {
+  const int d = p[0].dimension();
+  std::vector<double> nearest(p.size(), std::numeric_limits<double>::infinity());
+  int shifts = 1;
+  for (int k = 0; k < d; ++k) shifts *= 7;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < p.size(); ++j)
+      for (int s = 0; s < shifts && j != i; ++s) {
+        double d2 = 0;
+        for (int k = 0, c = s; k < d; ++k, c /= 7) {
+          const double x = p[i][k] - p[j][k] - double(c % 7 - 3) * period[std::size_t(k)];
+          d2 += x * x;
+        }
+        if (!normals.empty()) d2 += (normals[i] - normals[j]).squared_length() / 0.25;
+        nearest[i] = std::min(nearest[i], std::sqrt(d2));
+      }
+  return nearest;
+}
+
 TEST(SamplingQuality, BoxTorusMatchesBruteForce) {
-  // The torus [0, 2) x [0, 0.5) (Sampling_quality_options::period): its measure 1 by default, and the minimum
-  // and mean nearest distances of the nearest images (all pairs, every shift by the periods), for spread
-  // samples (d_hex well below the short period: the first band) and for 3 samples (d_hex above it: every
-  // image at once). The unit torus gives other distances for the same samples.
-  for (const std::size_t n : {300, 3}) {
+  // Tori of other periods (Sampling_quality_options::period): the measure is their product by default, and
+  // the minimum and mean nearest distances are those of the nearest images of other points (brute force), for
+  // spread samples (the first band of images), a few samples (every image at once), periods shorter than the
+  // spacing (a point's own images, a period away, are not its neighbours: three points of [0, 4) x [0, 1) lie
+  // 1.118 apart, not 1), very unequal periods, and in 3D, Euclidean and bilateral. The unit torus gives other
+  // distances for the same samples.
+  struct Case {
+    std::vector<double> period;
+    std::size_t n;
+  };
+  for (const Case& c :
+       {Case{{2, 0.5}, 300}, Case{{2, 0.5}, 3}, Case{{4, 1}, 0}, Case{{3, 0.2}, 20}, Case{{100, 0.01}, 40}}) {
     std::vector<Point_2> p;
-    for (const Point_2& q : white_noise(n, 40)) p.emplace_back(2 * q.x() + 4, 0.5 * q.y() - 1);
+    if (c.n == 0)
+      p = {Point_2(0.5, 0.25), Point_2(2.5, 0.25), Point_2(1.5, 0.75)};
+    else
+      for (const Point_2& q : white_noise(c.n, 40))
+        p.emplace_back(c.period[0] * q.x() + 2 * c.period[0], c.period[1] * q.y() - c.period[1]);
     Sampling_quality_options o;
     o.periodic = true;
-    o.period = {2, 0.5};
+    o.period = c.period;
     const Sampling_quality q = sampling_quality(p, o);
     ASSERT_EQ(q.status, Status::success);
-    EXPECT_EQ(q.domain_measure, 1.0);
-    double smallest = std::numeric_limits<double>::infinity(), mean = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      double nearest = std::numeric_limits<double>::infinity();
-      for (std::size_t j = 0; j < p.size(); ++j)
-        for (int sx = -3; sx <= 3 && j != i; ++sx)
-          for (int sy = -3; sy <= 3; ++sy) {
-            const double dx = p[i].x() - p[j].x() - 2.0 * sx, dy = p[i].y() - p[j].y() - 0.5 * sy;
-            nearest = std::min(nearest, std::sqrt(dx * dx + dy * dy));
-          }
-      smallest = std::min(smallest, nearest);
-      mean += nearest / double(p.size());
+    EXPECT_EQ(q.domain_measure, c.period[0] * c.period[1]);
+    const std::vector<double> nearest = torus_nearest(p, c.period);
+    double mean = 0;
+    for (const double d : nearest) mean += d / double(p.size());
+    const std::string what = std::to_string(c.period[0]) + " x " + std::to_string(c.period[1]);
+    EXPECT_NEAR(q.minimum_distance, *std::min_element(nearest.begin(), nearest.end()), 1e-12) << what;
+    EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, mean, 1e-12) << what;
+    if (c.n == 0) {
+      EXPECT_NEAR(q.minimum_distance, std::sqrt(1.25), 1e-12);
     }
-    EXPECT_NEAR(q.minimum_distance, smallest, 1e-12) << n;
-    EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, mean, 1e-12) << n;
     Sampling_quality_options unit;
     unit.periodic = true;
-    EXPECT_GT(std::abs(sampling_quality(p, unit).average_minimum_distance - q.average_minimum_distance),
-              1e-3);
+    unit.domain_measure = q.domain_measure;
+    EXPECT_GT(std::abs(sampling_quality(p, unit).average_minimum_distance - q.average_minimum_distance), 1e-3)
+        << what;
   }
+  // 3D: the box [0, 1) x [0, 2) x [0, 0.25), Euclidean and bilateral (normals up or down).
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::vector<double> box{1, 2, 0.25};
+  std::vector<Point_3> p3;
+  std::vector<Vector_3> normals;
+  std::vector<std::pair<Point_3, Vector_3>> pn;
+  for (int i = 0; i < 60; ++i) {
+    p3.emplace_back(u(rng) - 1, 2 * u(rng), 0.25 * u(rng) + 0.5);
+    normals.emplace_back(0, 0, rng() % 2 ? 1 : -1);
+    pn.push_back({p3.back(), normals.back()});
+  }
+  Sampling_quality_options o;
+  o.periodic = true;
+  o.period = box;
+  const Sampling_quality q = sampling_quality(p3, o);
+  EXPECT_EQ(q.domain_measure, 0.5);
+  std::vector<double> nearest = torus_nearest(p3, box);
+  EXPECT_NEAR(q.minimum_distance, *std::min_element(nearest.begin(), nearest.end()), 1e-12);
+  o.sigma_feature = 0.5;
+  const Sampling_quality b = sampling_quality(pn, o);
+  nearest = torus_nearest(p3, box, normals);
+  double mean = 0;
+  for (const double d : nearest) mean += d / double(p3.size());
+  EXPECT_NEAR(b.minimum_distance, *std::min_element(nearest.begin(), nearest.end()), 1e-12);
+  EXPECT_NEAR(b.average_minimum_distance * b.hexagonal_distance, mean, 1e-12);
   Sampling_quality_options bad;
   bad.periodic = true;
   bad.period = {2};
   EXPECT_TRUE(throws_with<std::invalid_argument>(
       [&] { sampling_quality(white_noise(5, 1), bad); },
       "sampling_quality: period has 1 values for positions of dimension 2"));
+  bad.period = {1e120, 1e120, 1e120};
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { sampling_quality(p3, bad); },
+      "the product of the periods (the torus's measure) must be a finite normal number"));
+  bad.period = {1e-110, 1e-110, 1e-110};
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sampling_quality(p3, bad); }, "got 0"));
 }
 
 TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {

@@ -314,7 +314,17 @@ TEST(WeightedSampleElimination, BadPeriodsAreNamed) {
   EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1e151, 1}), "period[0]"));
   EXPECT_TRUE(throws_with<std::invalid_argument>(run(true, {1, 1e-151}), "period[1]"));
   EXPECT_NO_THROW(run(true, {1e150, 1e-150})());  // the ends of the range are usable
-  EXPECT_NO_THROW(run(true, {})());               // the unit torus
+  // In 3D the product of usable periods can overflow or vanish: refused (it made r_max infinite or 0).
+  const std::vector<Point_3> cube{Point_3(0, 0, 0), Point_3(1, 2, 3), Point_3(0.5, 0.5, 0.5)};
+  Elimination_options o3;
+  o3.periodic = true;
+  o3.period = {1e120, 1e120, 1e120};
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { eliminate(cube, 2, o3); },
+      "the product of the periods (the torus's measure) must be a finite normal number, got inf"));
+  o3.period = {1e-110, 1e-110, 1e-110};
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { eliminate(cube, 2, o3); }, "got 0"));
+  EXPECT_NO_THROW(run(true, {})());  // the unit torus
 }
 
 TEST(WeightedSampleElimination, PeriodicPairsAtTheReachAcrossTheSeamAreSeenFromBothSides) {

@@ -184,9 +184,9 @@ struct Elimination_options {
   /// of sampling_quality() take them. Default false.
   bool periodic = false;
   /// With `periodic`, the torus [0, period[0]) x [0, period[1]) (x [0, period[2])) instead of the unit one:
-  /// one value per axis of the positions, each in [1e-150, 1e150] (the pixels of a W x H picture tile with
-  /// {W, H}); without domain_measure its measure is the product of the periods. Default empty: the unit
-  /// torus. Given without `periodic`, refused.
+  /// one value per axis of the positions, each in [1e-150, 1e150] and their product a finite normal number
+  /// (the pixels of a W x H picture tile with {W, H}); without domain_measure its measure is the product of
+  /// the periods. Default empty: the unit torus. Given without `periodic`, refused.
   std::vector<double> period;
   /// fraction of the eliminations done; returning false stops (nothing is output)
   Progress_callback progress;
@@ -217,8 +217,8 @@ struct Dart_throwing_options {
   /// false.
   bool periodic = false;
   /// With `periodic`, the torus [0, period[0]) x [0, period[1]) (x [0, period[2])) instead of the unit one:
-  /// one value per axis of the positions, each in [1e-150, 1e150]. Default empty: the unit torus. Given
-  /// without `periodic`, refused.
+  /// one value per axis of the positions, each in [1e-150, 1e150] and their product a finite normal number.
+  /// Default empty: the unit torus. Given without `periodic`, refused.
   std::vector<double> period;
   Progress_callback progress;  ///< fraction of the items visited; returning false stops (nothing is output)
 };

@@ -42,12 +42,13 @@ struct Sampling_quality_options {
   double domain_measure = 0;
   /// 2 (images, surfaces) or 3 (volumes). Default 0: the dimension of the positions.
   int intrinsic_dimension = 0;
-  /// Distances on the unit torus [0, 1)^d (positions are taken modulo 1), as the point-set analysis tools of
-  /// Heck, Schlömer and Deussen measure them; default false.
+  /// Distances on the unit torus [0, 1)^d (positions are taken modulo 1; or on the torus of `period`), as the
+  /// point-set analysis tools of Heck, Schlömer and Deussen measure them; default false.
   bool periodic = false;
   /// With `periodic`, the torus [0, period[0]) x [0, period[1]) (x [0, period[2])) instead of the unit one
   /// (positions modulo the periods; without domain_measure its measure is their product): one value per axis,
-  /// each in [1e-150, 1e150]. Default empty: the unit torus. Given without `periodic`, refused.
+  /// each in [1e-150, 1e150] and their product a finite normal number. Default empty: the unit torus. Given
+  /// without `periodic`, refused.
   std::vector<double> period;
   /// Fraction of the samples measured, every 4096 samples (the periodic search, when repeated with a wider
   /// band, counts its second pass in the second half); returning false stops: the statistics stay 0 and the
@@ -188,7 +189,17 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
       // itself is one of them unless two copies of it are, and then the answer is 0 either way). The tree
       // sums the same squared coordinate differences in the same order as xi(), so it ranks the candidates as
       // xi() does. A k-nearest search costs a quarter of the incremental one, which the bilateral distance
-      // needs.
+      // needs. On the torus the tree also holds the point's own images, a period or more away, and at most
+      // 2^d - 1 of them (one shift per axis lies within half a period of the cell): they are skipped, and
+      // when they can be nearer than another point (a period shorter than the torus's half diagonal, which
+      // bounds every nearest distance) the search takes 2^d + 1 neighbours.
+      double half_diagonal2 = 0, shortest = std::numeric_limits<double>::infinity();
+      for (const double p : period) {
+        half_diagonal2 += 0.25 * p * p;
+        shortest = std::min(shortest, p);
+      }
+      const unsigned neighbours =
+          options.periodic && !(half_diagonal2 < shortest * shortest) ? (1u << D) + 1 : 2;
       using Nearest = CGAL::Orthogonal_k_neighbor_search<Traits_with_index>;
       const bool euclidean = std::isinf(options.sigma_feature);
       double minimum = std::numeric_limits<double>::infinity(), sum = 0;
@@ -201,15 +212,15 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
         }
         double best = std::numeric_limits<double>::infinity();
         if (euclidean) {
-          Nearest search(tree, kd_points[i], 2, 0.0, true, tree_distance);
+          Nearest search(tree, kd_points[i], neighbours, 0.0, true, tree_distance);
           for (auto it = search.begin(); it != search.end(); ++it)
-            if (it->first != i) best = std::min(best, xi(i, it->first));
+            if (source[it->first] != i) best = std::min(best, xi(i, it->first));
         } else {
           Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
           for (auto it = search.begin(); it != search.end(); ++it) {
             // it->second: squared spatial distance (rounded; the margin covers it)
             if (std::sqrt(it->second) > best * (1 + 1e-9)) break;
-            if (it->first != i) best = std::min(best, xi(i, it->first));
+            if (source[it->first] != i) best = std::min(best, xi(i, it->first));
           }
         }
         minimum = std::min(minimum, best);

@@ -53,7 +53,7 @@ constexpr std::array<double, D> filled_array(double v) {
 /// The periods of the torus the options of a discrete sampler or of sampling_quality() describe: 1 along
 /// every axis when `period` is empty, else its D values. Throws std::invalid_argument (naming `fn`) for a
 /// period given without `periodic`, one of another length than the positions' dimension, or a value outside
-/// [1e-150, 1e150] (naming its index).
+/// [1e-150, 1e150] (naming its index), or periods whose product overflows or vanishes.
 template <std::size_t D>
 std::array<double, D> torus_period(const std::vector<double>& period, bool periodic, const char* fn) {
   if (period.empty()) return filled_array<D>(1.0);
@@ -66,12 +66,18 @@ std::array<double, D> torus_period(const std::vector<double>& period, bool perio
                                                    " values for positions of dimension ", D,
                                                    " (one per axis, or none for the unit torus)");
   std::array<double, D> out{};
+  double measure = 1;
   for (std::size_t k = 0; k < D; ++k) {
     if (!is_usable_scale(period[k]))
       FeatureRecon::internal::throw_invalid_argument(fn, "period[", k, "] must be in [1e-150, 1e150], got ",
                                                      period[k]);
     out[k] = period[k];
+    measure *= period[k];
   }
+  // The torus's measure (area, volume) stands for the domain's: it must neither overflow nor vanish.
+  if (!(measure >= std::numeric_limits<double>::min() && measure <= std::numeric_limits<double>::max()))
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "the product of the periods (the torus's measure) must be a finite normal number, got ", measure);
   return out;
 }
 
