@@ -148,33 +148,44 @@ io::Image make_mosaic(const std::vector<Image_sample>& samples, int width, int h
   picture.channels = 3;
   picture.data.assign(std::size_t(width) * std::size_t(height) * 3, 255);
   if (!samples.empty()) {
-    // On a tile, every sample also at its 8 copies shifted by the picture's width and height (point k is
-    // sample k / copies).
-    const int copies = periodic ? 9 : 1;
     std::vector<Point> points;
-    for (const Image_sample& x : samples)
-      for (int c = 0; c < copies; ++c)
-        points.emplace_back(x.x + (periodic ? double(c % 3 - 1) * width : 0.0),
-                            x.y + (periodic ? double(c / 3 - 1) * height : 0.0));
-    std::vector<std::uint32_t> keys(points.size());
+    for (const Image_sample& x : samples) points.emplace_back(x.x, x.y);
+    std::vector<std::uint32_t> keys(samples.size());
     for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = static_cast<std::uint32_t>(i);
     typename Knn::Tree tree(keys.begin(), keys.end(), typename Knn::Tree::Splitter(),
                             Traits(CGAL::make_property_map(points)));
     tree.build();
     typename Knn::Distance distance(tree.traits().point_property_map());
+    // The nearest sample to `query` (squared distance), ties by sample index, into best / best_d.
+    const auto nearest_to = [&](const Point& query, std::uint32_t& best, double& best_d) {
+      Knn search(tree, query, 4, 0.0, true, distance);
+      for (const auto& nb : search)
+        if (nb.second < best_d || (nb.second == best_d && nb.first < best)) {
+          best = nb.first;
+          best_d = nb.second;
+        }
+    };
     for (int r = 0; r < height; ++r)
       for (int c = 0; c < width; ++c) {
         const Point q(c + 0.5, r + 0.5);
-        Knn search(tree, q, 4 * unsigned(copies), 0.0, true, distance);
         std::uint32_t best = 0;
         double best_d = std::numeric_limits<double>::infinity();
-        for (const auto& nb : search) {  // the nearest, ties by sample index
-          const std::uint32_t sample = nb.first / std::uint32_t(copies);
-          if (nb.second < best_d || (nb.second == best_d && sample < best)) {
-            best = sample;
-            best_d = nb.second;
+        nearest_to(q, best, best_d);
+        // On a tile the nearest image of a sample may lie across an edge: the image s + t of s is as near q
+        // as s is to q - t, so the query is repeated shifted by the picture's width and height wherever the
+        // shifted query lies as near the picture (which holds every sample) as the nearest found so far.
+        for (int a = -1; a <= 1 && periodic; ++a)
+          for (int b = -1; b <= 1; ++b) {
+            if (a == 0 && b == 0) continue;
+            const double x = q.x() + double(a) * width, y = q.y() + double(b) * height;
+            const double dx = x < 0       ? -x
+                              : x > width ? x - width
+                                          : 0.0,
+                         dy = y < 0        ? -y
+                              : y > height ? y - height
+                                           : 0.0;
+            if (dx * dx + dy * dy <= best_d) nearest_to(Point(x, y), best, best_d);
           }
-        }
         std::uint8_t* p = &picture.data[(std::size_t(r) * std::size_t(width) + std::size_t(c)) * 3];
         for (std::size_t k = 0; k < 3; ++k) p[k] = to_byte(samples[best].colour[k]);
       }
