@@ -770,6 +770,9 @@ TEST(SamplingSpectrum, TorusCoordinatesLieInTheUnitInterval) {
   EXPECT_EQ(torus_coordinate(-1e-20, 3), 0.0);
   EXPECT_EQ(torus_coordinate(3.0, 3), 0.0);
   EXPECT_EQ(torus_coordinate(-3.0, 3), 0.0);
+  EXPECT_FALSE(std::signbit(torus_coordinate(-3.0, 3)));  // fmod gives -0: the torus's 0 is +0
+  EXPECT_FALSE(std::signbit(torus_coordinate(-0.0, 3)));
+  EXPECT_FALSE(std::signbit(torus_coordinate(-0.0)));
   EXPECT_EQ(torus_coordinate(-0.5, 3), 2.5);
   EXPECT_EQ(torus_coordinate(7.25, 3), 1.25);
   EXPECT_EQ(torus_coordinate(0.3, 0.1), std::fmod(0.3, 0.1));  // 0.09999999999999998: 0.3 is below 3 x 0.1

@@ -35,11 +35,12 @@ inline bool is_usable_scale(double sigma) { return sigma >= 1e-150 && sigma <= 1
 
 /// A coordinate on the torus of period `period` (default: the unit torus), in [0, period): x - floor(x) on
 /// the unit torus, else fmod(x, period) (exact) moved up by one period when negative. A tiny negative x
-/// (-1e-20) wraps to the period itself in floating point and is taken as 0, the same point of the torus.
+/// (-1e-20) wraps to the period itself in floating point and is taken as 0, the same point of the torus, and
+/// so is the -0 that fmod gives for -0 and negative multiples of the period.
 inline double torus_coordinate(double x, double period = 1) {
   double t = period == 1 ? x - std::floor(x) : std::fmod(x, period);
   if (t < 0) t += period;
-  return t < period ? t : 0.0;
+  return t > 0 && t < period ? t : 0.0;
 }
 
 /// An array of D copies of v.
