@@ -64,12 +64,6 @@ std::string json_period(const std::vector<double>& period) {
   return out + "]";
 }
 
-/// The measure (area, volume) of the torus of the periods: their product (1 for the unit torus).
-double torus_measure_of(const std::vector<double>& period) {
-  double m = 1;
-  for (const double p : period) m *= p;
-  return m;
-}
 using K = CGAL::Epick;
 using Pwn = std::pair<K::Point_3, K::Vector_3>;
 namespace fs = FeatureRecon::sampling;
@@ -281,9 +275,9 @@ int run_sample(const std::vector<std::string>& argv) {
 
   // Spacing of the result on the input's domain (surface area or volume as the elimination estimates it; the
   // torus, a volume, with --periodic or --period).
-  const auto [dimension, measure] = request.periodic
-                                        ? std::pair<int, double>(3, torus_measure_of(request.period))
-                                        : domain_of(cloud.points);
+  const auto [dimension, measure] =
+      request.periodic ? std::pair<int, double>(3, fs::internal::torus_measure(request.period))
+                       : domain_of(cloud.points);
   fs::Sampling_quality_options q;
   q.periodic = request.periodic;
   q.period = request.period;
@@ -412,7 +406,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
   if (empty) {
     q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
     q.domain_measure = o.domain_measure != 0 ? o.domain_measure
-                       : o.periodic          ? torus_measure_of(o.period)
+                       : o.periodic          ? fs::internal::torus_measure(o.period)
                                              : 0.0;
   } else if (cloud) {
     const io::Point_cloud& cloud = points;

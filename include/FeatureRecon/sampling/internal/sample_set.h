@@ -88,9 +88,9 @@ double largest_period(const std::array<double, D>& period) {
   return *std::max_element(period.begin(), period.end());
 }
 
-/// The measure (area, volume) of the torus: the product of its periods.
-template <std::size_t D>
-double torus_measure(const std::array<double, D>& period) {
+/// The measure (area, volume) of the torus: the product of its periods (1, the unit torus's, for none).
+template <class Periods>
+double torus_measure(const Periods& period) {
   double m = 1;
   for (const double p : period) m *= p;
   return m;
