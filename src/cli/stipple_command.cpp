@@ -48,7 +48,7 @@ struct Stipple_settings {
   std::size_t palette = 0;
   std::uint64_t seed = 0;
   double gamma = 1;
-  bool periodic = false;  ///< a tile: Lloyd or darts on the torus of the picture's rectangle
+  bool periodic = false;  ///< a tile: Lloyd, darts or kernel on the torus of the picture's rectangle
 };
 
 /// Darkness 1 - luma / 255 (ITU-R BT.601), raised to gamma: the density of the dots.
@@ -257,7 +257,6 @@ std::array<double, 3> colour_of(const Pixel& p) {
 
 struct Stipple_report {
   std::size_t iterations = 0;
-  double relative_radius = std::numeric_limits<double>::quiet_NaN();
   std::string stop;
 };
 
@@ -322,12 +321,12 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
   o.sigma_feature = s.sigma_feature;
   o.density = density;
   o.max_iterations = s.iterations;
+  o.periodic = s.periodic;
   o.progress = [&](double f) { return progress(0.5 + 0.5 * f); };
   const auto r = fs::kernel_relaxation(pixels, start, o);
   for (const auto& site : r.sites) dots.push_back({site.position, colour_at(site.position)});
   report.iterations = r.history.size();
   report.stop = fs::to_string(r.stop);
-  if (!r.history.empty()) report.relative_radius = r.history.back().relative_radius;
   return dots;
 }
 
@@ -386,10 +385,10 @@ int run_stipple(const std::vector<std::string>& argv) {
   if (s.method == "darts" && args.has("iterations"))
     throw Usage_error("--iterations does not apply to --method darts (no iterations)");
   s.periodic = args.has("periodic");
-  if (s.periodic && s.method != "lloyd" && s.method != "darts")
+  if (s.periodic && s.method == "bilateral-lloyd")
     throw Usage_error(
-        "--periodic applies to --method lloyd and darts (on the torus of the picture); bilateral-lloyd and "
-        "kernel have no torus");
+        "--periodic applies to --method lloyd, darts and kernel (on the torus of the picture); "
+        "bilateral-lloyd has no torus");
   const long long count = args.get_int("count");
   if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   s.count = static_cast<std::size_t>(count);

@@ -741,4 +741,255 @@ TEST(Kernel_relaxation, CopiesMoveApartByAHundredthOfTheKernelWidth) {
   EXPECT_NEAR(r.history[0].relative_radius, 0.005, 1e-12);
 }
 
+// The torus energy by brute force: every pair of distinct sites through every image s = (a W, b H) with
+// |a|, |b| <= 4, the kernel minus its value at the cut-off (scales 1: no density; sigma_position 1).
+double torus_energy(const std::vector<Site>& sites, double w, double h, double tau, double cutoff,
+                    double sigma_feature) {
+  double total = 0;
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    for (std::size_t j = 0; j < sites.size(); ++j) {
+      if (j == i) continue;
+      const double df = (sites[i].feature[0] - sites[j].feature[0]) / 255.0;  // Pixel_traits' distance
+      const double f2 = std::isinf(sigma_feature) ? 0.0 : df * df / (sigma_feature * sigma_feature);
+      for (int a = -4; a <= 4; ++a)
+        for (int b = -4; b <= 4; ++b) {
+          const double dx = sites[i].position[0] - sites[j].position[0] - a * w;
+          const double dy = sites[i].position[1] - sites[j].position[1] - b * h;
+          const double d2 = dx * dx + dy * dy;
+          if (d2 > cutoff * cutoff * tau * tau) continue;
+          total += std::exp(-(d2 + f2) / (tau * tau)) - std::exp(-(cutoff * cutoff + f2 / (tau * tau)));
+        }
+    }
+  return total / double(sites.size());
+}
+
+// Smallest distance between two sites on the W x H torus, brute force (own images excluded).
+double torus_spacing(const std::vector<std::array<double, 2>>& p, double w, double h) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      double dx = std::fmod(std::abs(p[i][0] - p[j][0]), w), dy = std::fmod(std::abs(p[i][1] - p[j][1]), h);
+      dx = std::min(dx, w - dx);
+      dy = std::min(dy, h - dy);
+      best = std::min(best, std::sqrt(dx * dx + dy * dy));
+    }
+  return best;
+}
+
+TEST(Kernel_relaxation, TorusEnergyIsTheSumOverEveryImage) {
+  // 24 x 20 pixels: the torus [0, 24) x [0, 20). Sites anywhere, two outside the box (wrapped), kernels that
+  // reach less than a period (width 2, cut-off 3) and more than one (width 9: images two periods away).
+  const auto px = image(24, 20, [](int c, int) { return c < 11 ? 30 : 200; });
+  auto sites = random_sites(14, px, 24, 20, 11);
+  sites[3].position = {-2.5, 7};
+  sites[4].position = {30.25, -19.5};
+  sites[5].position = {0.2, 19.9};  // across the corner from site 6
+  sites[6].position = {23.7, 0.1};
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  for (const double sigma_feature : {std::numeric_limits<double>::infinity(), 0.3})
+    for (const double tau : {2.0, 9.0}) {
+      o.kernel_width = tau;
+      o.sigma_feature = sigma_feature;
+      const auto e = kernel_energy(px, sites, o);
+      const double want = torus_energy(sites, 24, 20, tau, 3, sigma_feature);
+      EXPECT_NEAR(e.energy, want, 1e-12 * std::abs(want)) << "tau " << tau << " sigma " << sigma_feature;
+      ASSERT_GT(want, 0);
+    }
+  // Sites 5 and 6 are (0.5, 0.2) apart across the corner, the only pair within a narrow kernel's reach.
+  o.kernel_width = 0.5;
+  o.sigma_feature = std::numeric_limits<double>::infinity();
+  const std::vector<Site> corner{sites[5], sites[6]};
+  const auto c = kernel_energy(px, corner, o);
+  EXPECT_NEAR(c.energy, std::exp(-0.29 / 0.25) - std::exp(-9.0), 1e-14);
+  EXPECT_EQ(c.pairs, 2u);
+  // Site 1's image sits at (-0.3, 20.1): the energy falls as site 0 moves right and down, away from it.
+  EXPECT_LT(c.gradient[0][0], 0);
+  EXPECT_GT(c.gradient[0][1], 0);
+  EXPECT_NEAR(c.gradient[0][0], -c.gradient[1][0], 1e-13);
+  // In the box they are 23.5 apart and feel only their mirrors.
+  o.periodic = false;
+  EXPECT_NE(kernel_energy(px, corner, o).pairs, 2u);
+}
+
+TEST(Kernel_relaxation, TorusGradientMatchesFiniteDifferences) {
+  const auto px = image(24, 20, [](int c, int r) { return c < 11 || r > 17 ? 30 : 200 + (r % 3); });
+  auto sites = random_sites(25, px, 24, 20, 3);
+  sites[0].position = {0.3, 10};  // near the faces
+  sites[1].position = {23.6, 10.4};
+  sites[2].position = {5, 19.8};
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  o.kernel_width = 4.0;
+  o.cutoff = 50;  // nothing cut: the energy is smooth; many images (a reach of 200)
+  expect_gradient(px, sites, o);
+  o.sigma_feature = 0.3;
+  expect_gradient(px, sites, o);
+  o.sigma_position = 2;
+  o.kernel_width = 2.0;
+  o.cutoff = 3;
+  o.density.assign(px.size(), 1.0);
+  for (std::size_t i = 0; i < px.size(); ++i) o.density[i] = px[i].value < 100 ? 4.0 : 1.0;
+  expect_gradient(px, sites, o);
+}
+
+TEST(Kernel_relaxation, TorusIsTranslationInvariant) {
+  // A picture rolled by whole density cells (8 x 8 pixels: the widest block at this kernel width) and the
+  // sites moved with it have the same energy and gradient: nothing marks the torus's faces, neither the
+  // images, nor the nearest pixel, nor the density averaged across the faces. The box does mark them.
+  auto value = [](int c, int r) { return (c < 3 || c > 21) && r < 9 ? 10 : (c + 2 * r) % 7 < 2 ? 60 : 230; };
+  const int dx = 8, dy = 8;
+  const auto px = image(24, 16, value);
+  const auto rolled =
+      image(24, 16, [&](int c, int r) { return value((c + 24 - dx) % 24, (r + 16 - dy) % 16); });
+  auto sites = random_sites(100, px, 24, 16, 5);
+  auto moved = sites;
+  for (auto& s : moved) {
+    s.position[0] = std::fmod(s.position[0] + dx, 24.0);
+    s.position[1] = std::fmod(s.position[1] + dy, 16.0);
+  }
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  o.kernel_width = 4.0;
+  o.sigma_feature = 0.4;
+  auto density = [](const std::vector<Grey_pixel>& p) {
+    std::vector<double> d;
+    for (const auto& x : p) d.push_back(1 - x.value / 255.0);
+    return d;
+  };
+  o.density = density(px);
+  Kernel_relaxation_options<2> r = o;
+  r.density = density(rolled);
+  const auto a = kernel_energy(px, sites, o), b = kernel_energy(rolled, moved, r);
+  EXPECT_NEAR(a.energy, b.energy, 1e-12 * a.energy);
+  EXPECT_EQ(a.pairs, b.pairs);
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(a.gradient[i][k], b.gradient[i][k], 1e-12 * a.energy);
+  o.periodic = r.periodic = false;
+  EXPECT_GT(std::abs(kernel_energy(px, sites, o).energy - kernel_energy(rolled, moved, r).energy),
+            1e-3 * a.energy);
+}
+
+TEST(Kernel_relaxation, TorusRelaxationTilesAndReportsTorusSpacing) {
+  const auto px = image(48, 40, [](int, int) { return 128; });
+  const auto start = random_sites(80, px, 48, 40, 9);
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  o.max_iterations = 80;
+  o.energy_tolerance = 0;
+  const double d_hex = std::sqrt(2 * 48.0 * 40.0 / (std::sqrt(3.0) * 80));
+  std::vector<double> reported, measured;
+  o.on_iteration = [&](Lloyd_iteration_statistics& s, const std::vector<std::array<double, 2>>& p) {
+    reported.push_back(s.relative_radius);
+    measured.push_back(torus_spacing(p, 48, 40));
+    for (const auto& x : p) {
+      EXPECT_TRUE(x[0] >= 0 && x[0] < 48 && x[1] >= 0 && x[1] < 40) << x[0] << ", " << x[1];
+    }
+    // A move is measured on the torus: at most a kernel width, also for a site that crossed a face.
+    EXPECT_LE(s.max_move, d_hex / 2 * (1 + 1e-12));
+    return true;
+  };
+  const auto r = kernel_relaxation(px, start, o);
+  EXPECT_EQ(r.status, Status::success);
+  ASSERT_GE(reported.size(), 40u);
+  EXPECT_DOUBLE_EQ(r.kernel_width, d_hex / 2);
+  // Each step's statistics are taken before it: the spacing on the torus of the previous step's sites.
+  for (std::size_t i = 1; i < reported.size(); ++i)
+    EXPECT_NEAR(reported[i], measured[i - 1] / d_hex, 1e-12) << "iteration " << i + 1;
+  std::vector<std::array<double, 2>> final;
+  for (const auto& s : r.sites) final.push_back(s.position);
+  // Spread on the torus: no close pair across the seams either.
+  EXPECT_GT(torus_spacing(final, 48, 40) / d_hex, 0.7);
+  EXPECT_LT(reported.front(), 0.2);
+  // Not pushed off the faces (the box's mirrors keep a band empty): the band within d_hex / 4 of a face
+  // holds about its share of the sites (15% of the area, 12 sites).
+  std::size_t band = 0;
+  for (const auto& p : final) band += std::min({p[0], p[1], 48 - p[0], 40 - p[1]}) < d_hex / 4;
+  EXPECT_GE(band, 4u);
+  // Bit for bit the same again.
+  o.on_iteration = nullptr;
+  const auto again = kernel_relaxation(px, start, o);
+  ASSERT_EQ(again.sites.size(), r.sites.size());
+  for (std::size_t i = 0; i < r.sites.size(); ++i) EXPECT_EQ(again.sites[i].position, r.sites[i].position);
+}
+
+TEST(Kernel_relaxation, TorusNearestItemLiesAcrossTheFaces) {
+  // 12 pixels whose extents (9 x 6) read as a 4 x 3 lattice of spacing 3: the box is [-1, 11] x [-1, 8], the
+  // torus's periods 12 and 9. The positions are not a lattice, so a site near a face often has its nearest
+  // pixel across it. Each site takes the feature of the pixel nearest to it on the torus (brute force, ties
+  // to the lowest index), and its position wrapped into the box.
+  const std::vector<std::array<int, 2>> at{{0, 0}, {9, 6}, {4, 3}, {2, 5}, {7, 1}, {5, 6},
+                                           {1, 2}, {8, 4}, {3, 0}, {6, 3}, {9, 2}, {4, 1}};
+  std::vector<Grey_pixel> px;
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    Grey_pixel p;
+    p.column = at[i][0];
+    p.row = at[i][1];
+    p.value = static_cast<std::uint8_t>(10 * (i + 1));
+    px.push_back(p);
+  }
+  std::mt19937_64 rng(4);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Site> sites(400);
+  for (auto& s : sites) s.position = {-13 + 38 * u(), -10 + 28 * u()};  // up to a period outside the box
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  o.sigma_feature = 0.5;
+  o.max_iterations = 0;  // the sites as settled: wrapped, features from their items
+  const auto r = kernel_relaxation(px, sites, o);
+  std::size_t across = 0;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    std::array<double, 2> w;
+    for (int k = 0; k < 2; ++k) {
+      const double lo = -1, period = k == 0 ? 12 : 9;
+      w[k] = lo + std::fmod(std::fmod(sites[i].position[k] - lo, period) + period, period);
+      EXPECT_NEAR(r.sites[i].position[k], w[k], 1e-12) << "site " << i;
+    }
+    std::size_t best = 0, plain = 0;
+    double best_d = std::numeric_limits<double>::infinity(), plain_d = best_d;
+    for (std::size_t j = 0; j < px.size(); ++j) {
+      double dx = std::abs(w[0] - (px[j].column + 0.5)), dy = std::abs(w[1] - (px[j].row + 0.5));
+      const double direct = dx * dx + dy * dy;
+      dx = std::min(dx, 12 - dx);
+      dy = std::min(dy, 9 - dy);
+      if (dx * dx + dy * dy < best_d) {
+        best_d = dx * dx + dy * dy;
+        best = j;
+      }
+      if (direct < plain_d) {
+        plain_d = direct;
+        plain = j;
+      }
+    }
+    EXPECT_EQ(r.sites[i].feature[0], px[best].value) << "site " << i << " at " << w[0] << ", " << w[1];
+    across += best != plain;
+  }
+  EXPECT_GT(across, 40u);  // the check tells
+}
+
+TEST(Kernel_relaxation, TorusDegenerateAndRefused) {
+  // One row of pixels: a torus of period 1 across it; the sites spread along it.
+  const auto row = image(30, 1, [](int, int) { return 100; });
+  std::vector<Site> two{{{3.0, 0.5}, {100}}, {{3.5, 0.5}, {100}}};
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  const auto r = kernel_relaxation(row, two, o);
+  EXPECT_EQ(r.status, Status::success);
+  std::vector<std::array<double, 2>> p{r.sites[0].position, r.sites[1].position};
+  EXPECT_GT(torus_spacing(p, 30, 1), 5.0);
+  // One pixel: nothing to relax on.
+  const auto dot = image(1, 1, [](int, int) { return 0; });
+  EXPECT_EQ(kernel_relaxation(dot, two, o).status, Status::degenerate_input);
+  // Snapping has no torus; a kernel reaching across more than 16 periods is refused.
+  o.constraint = Kernel_constraint::snap_to_item;
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_relaxation(row, two, o); },
+                                                       "periodic needs constraint bounding_box"));
+  o.constraint = Kernel_constraint::bounding_box;
+  o.kernel_width = 6;  // a reach of 18 > 16 x 1
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_energy(row, two, o); },
+                                                       "more than 16 times the shortest period 1"));
+  o.kernel_width = 5;
+  EXPECT_NO_THROW(kernel_energy(row, two, o));
+}
+
 }  // namespace

@@ -19,11 +19,12 @@
 /// a density (stippling); the factor s_ij^k (k the intrinsic dimension) balances the pressure between regions
 /// of different scale, so the number of sites per area follows the density. In a box a site that crosses a
 /// face is reflected back across it and mirrored ghost sites across the faces stand for the missing
-/// neighbours outside, so the sites do not pile up on the boundary. Start from dart throwing
-/// (sites_at_items() of bilateral_dart_throwing_count()), as the dissertation does: the energy then falls
-/// quickly. When sites snap to items (point clouds on surfaces) each keeps a free position within half an
-/// item spacing of its item, so small steps add up; the caller sees the items' positions. Stages:
-/// kernel_energy() (energy and gradient) and kernel_relaxation() (the iterations).
+/// neighbours outside, so the sites do not pile up on the boundary; on the torus of the box (periodic) a
+/// site crossing a face comes back across the opposite one and sees the images of the others. Start from
+/// dart throwing (sites_at_items() of bilateral_dart_throwing_count()), as the dissertation does: the
+/// energy then falls quickly. When sites snap to items (point clouds on surfaces) each keeps a free position
+/// within half an item spacing of its item, so small steps add up; the caller sees the items' positions.
+/// Stages: kernel_energy() (energy and gradient) and kernel_relaxation() (the iterations).
 
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/sampling/discrete_lloyd.h>
@@ -84,6 +85,14 @@ struct Kernel_relaxation_options {
   /// Where sites may go. Default: bounding_box for 2D items, snap_to_item for 3D items (surfaces).
   Kernel_constraint constraint =
       Dimension == 2 ? Kernel_constraint::bounding_box : Kernel_constraint::snap_to_item;
+  /// The box (constraint bounding_box) is a torus, its periods the box's widths (a W x H image of pixels: W
+  /// and H): a site leaving across a face comes back across the opposite one, a site sees every image of the
+  /// others (translated by whole periods, as far as the kernel reaches; never its own), the nearest item and
+  /// the density average are taken across the faces too, and the relative radius measures torus distances.
+  /// The sites then tile: a picture stippled on its torus can be repeated without seams. The kernel may
+  /// reach at most 16 periods of the shortest (cutoff x spatial kernel width x the largest scale, 8 with a
+  /// density, 1 without). Refused with snap_to_item. Default false.
+  bool periodic = false;
   std::size_t max_iterations = 100;  ///< iteration cap (accepted steps); default 100
   /// The first step length as a fraction of the distance to the neighbours (a single pair at distance d,
   /// close enough for the kernel to be ~1, moves apart by step * d); doubled or halved by the step control;
@@ -166,6 +175,9 @@ class Kernel_engine : public Item_domain<Traits> {
     }
     zero_density = !o.density.empty() && !(total > 0);
     mean_density = o.density.empty() ? 1.0 : total / double(o.density.size());
+    if (o.periodic && o.constraint != Kernel_constraint::bounding_box)
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "periodic needs constraint bounding_box (the torus is the box); snap_to_item has no torus");
     this->intrinsic = (D == 3 && o.constraint == Kernel_constraint::bounding_box) ? 3 : 2;
     if (S.size() == 0) return;
     // The box: the items' bounding box widened by half the item spacing on every side.
@@ -191,6 +203,22 @@ class Kernel_engine : public Item_domain<Traits> {
     }
     tau = o.kernel_width > 0 ? o.kernel_width : packing / (2 * o.sigma_position);
     if (!(tau > 0)) tau = std::max(spacing, 1e-300) / o.sigma_position;
+    if (o.periodic) {
+      double shortest = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < D; ++k) {
+        period[k] = box_hi[k] - box_lo[k];
+        if (period[k] > 0) shortest = std::min(shortest, period[k]);
+      }
+      // Every image within the kernel's reach is a ghost: (2 m + 1)^D of them per site for a reach of m
+      // periods.
+      const double reach = o.cutoff * tau * o.sigma_position * (o.density.empty() ? 1.0 : 8.0);
+      if (std::isfinite(shortest) && !(reach <= 16 * shortest))
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "periodic: the kernel reaches ", reach,
+            " (cutoff x kernel width x sigma_position x the largest scale), more than 16 times the shortest "
+            "period ",
+            shortest, "; lower kernel_width or cutoff");
+    }
     if (zero_density)
       local_density.assign(S.size(), 0.0);  // every scale 8 (scale_of()); nothing to average
     else if (!o.density.empty())
@@ -206,6 +234,146 @@ class Kernel_engine : public Item_domain<Traits> {
     if (!(rho > 0)) return 8.0;
     const double x = mean_density / rho;  // sqrt and cbrt: exact or nearly, and far cheaper than pow
     return std::min(8.0, std::max(0.125, intrinsic == 2 ? std::sqrt(x) : std::cbrt(x)));
+  }
+
+  // On the torus (options.periodic): p moved by whole periods into [box_lo, box_hi) (onto box_lo along an
+  // axis of period 0).
+  void wrap(Point& p) const {
+    for (int k = 0; k < D; ++k) {
+      if (!(period[k] > 0)) {
+        p[k] = box_lo[k];
+        continue;
+      }
+      if (p[k] >= box_lo[k] && p[k] < box_hi[k]) continue;
+      double t = std::fmod(p[k] - box_lo[k], period[k]);
+      if (t < 0) t += period[k];
+      const double x = box_lo[k] + t;
+      p[k] = x < box_hi[k] ? x : box_lo[k];
+    }
+  }
+
+  // The item nearest to x (ties: lowest index); on the torus x is wrapped first and its images across the
+  // faces compete (with x and the items in the box, the shifts -1, 0 and +1 of every axis reach them all).
+  std::uint32_t nearest_item_at(Point x) const {
+    if (!options.periodic) return this->nearest_item(x);
+    wrap(x);
+    auto nearest = [this](const Point& q, double& best) {
+      return this->item_grid.nearest(
+          q, 1.0, [&](std::uint32_t j) { return std::sqrt(Base::squared(q, S.positions[j])); }, best);
+    };
+    double best;
+    std::uint32_t near = nearest(x, best);
+    std::size_t shifts = 1;
+    for (int k = 0; k < D; ++k) shifts *= 3;
+    for (std::size_t b = 1; b < shifts; ++b) {  // digit 0, 1, 2 of b: shift 0, +1, -1 along that axis
+      Point q = x;
+      double gap2 = 0;
+      bool moved = true;
+      std::size_t code = b;
+      for (int k = 0; k < D; ++k, code /= 3) {
+        const double s = code % 3 == 0 ? 0.0 : code % 3 == 1 ? 1.0 : -1.0;
+        if (s != 0 && !(period[k] > 0)) moved = false;
+        q[k] += s * period[k];
+        const double gap = std::max({0.0, this->lo[k] - q[k], q[k] - this->hi[k]});
+        gap2 += gap * gap;
+      }
+      if (!moved || gap2 > best * best) continue;  // no item of this image can be nearer
+      double d;
+      const std::uint32_t j = nearest(q, d);
+      if (d < best || (d == best && j < near)) {
+        best = d;
+        near = j;
+      }
+    }
+    return near;
+  }
+
+  // On the torus: appends to q (and to source, the index of the site each copies) the images of the first n
+  // points of q, translated by whole periods, that lie within reach(j) of the box (every image, not only the
+  // nearest, so a kernel wider than a period sees them all).
+  template <class Reach>
+  void add_images(std::vector<Point>& q, std::vector<std::uint32_t>& source, std::size_t n,
+                  Reach&& reach_of) const {
+    for (std::size_t j = 0; j < n; ++j) {
+      const Point p = q[j];
+      const double reach = reach_of(j);
+      std::array<std::vector<double>, D> offsets;  // per axis: 0, then the shifts within reach of the box
+      std::size_t combinations = 1;
+      for (int k = 0; k < D; ++k) {
+        offsets[k].push_back(0.0);
+        if (period[k] > 0) {
+          const double m = std::ceil(reach / period[k]) + 1;
+          for (double s = 1; s <= m; ++s)
+            for (const double v : {s * period[k], -s * period[k]})
+              if (std::max(box_lo[k] - (p[k] + v), p[k] + v - box_hi[k]) <= reach) offsets[k].push_back(v);
+        }
+        combinations *= offsets[k].size();
+      }
+      for (std::size_t c = 1; c < combinations; ++c) {
+        Point g = p;
+        double gap2 = 0;
+        std::size_t code = c;
+        for (int k = 0; k < D; ++k) {
+          g[k] += offsets[k][code % offsets[k].size()];
+          code /= offsets[k].size();
+          const double gap = std::max({0.0, box_lo[k] - g[k], g[k] - box_hi[k]});
+          gap2 += gap * gap;
+        }
+        if (gap2 > reach * reach) continue;
+        q.push_back(g);
+        source.push_back(static_cast<std::uint32_t>(j));
+      }
+    }
+  }
+
+  // The distance a site moved from a to b: across the faces on the torus.
+  double moved(const Point& a, const Point& b) const {
+    double s = 0;
+    for (int k = 0; k < D; ++k) {
+      double d = std::abs(a[k] - b[k]);
+      if (options.periodic && period[k] > 0) d = std::min(d, std::abs(period[k] - d));
+      s += d * d;
+    }
+    return std::sqrt(s);
+  }
+
+  // rho of the sites (minimum distance over the packing distance; 0 when two coincide), on the torus when
+  // periodic: the sites (wrapped) against the images of the others within the shortest distance in the box.
+  double site_relative_radius(const std::vector<Site>& sites) const {
+    if (!options.periodic) return this->relative_radius(sites, packing);
+    std::vector<Site> wrapped = sites;
+    for (Site& site : wrapped) wrap(site.position);
+    bool coincide = false;
+    const double plain = Base::minimum_distance(wrapped, coincide);
+    if (coincide || std::isinf(plain) || packing == 0) return 0.0;
+    std::vector<Point> q;
+    std::vector<std::uint32_t> source;
+    for (std::size_t i = 0; i < wrapped.size(); ++i) {
+      q.push_back(wrapped[i].position);
+      source.push_back(static_cast<std::uint32_t>(i));
+    }
+    add_images(q, source, sites.size(), [plain](std::size_t) { return plain; });
+    Point flo = q[0], fhi = q[0];
+    for (const auto& p : q)
+      for (int k = 0; k < D; ++k) {
+        flo[k] = std::min(flo[k], p[k]);
+        fhi[k] = std::max(fhi[k], p[k]);
+      }
+    Ring_grid<D> grid(flo, fhi, double(q.size()));
+    grid.assign(q);
+    double shortest = plain;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      double best;
+      grid.nearest(
+          q[i], 1.0,
+          [&](std::uint32_t t) {
+            return source[t] == i ? std::numeric_limits<double>::infinity()
+                                  : std::sqrt(Base::squared(q[i], q[t]));
+          },
+          best);
+      shortest = std::min(shortest, best);
+    }
+    return shortest / packing;
   }
 
   // local_density[i]: the density averaged over the kernel's core at item i, at the scale that density gives.
@@ -245,7 +413,10 @@ class Kernel_engine : public Item_domain<Traits> {
       Key dims{};
       double cells = 1;
       for (int k = 0; k < D; ++k) {
-        dims[k] = static_cast<std::int64_t>(std::floor((box_hi[k] - box_lo[k]) / side)) + 1;
+        // On the torus the last cell (maybe partial) borders the first: no empty cell past the box.
+        dims[k] = options.periodic
+                      ? std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(period[k] / side)))
+                      : static_cast<std::int64_t>(std::floor((box_hi[k] - box_lo[k]) / side)) + 1;
         cells *= double(dims[k]);
       }
       for (std::size_t i = 0; i < m; ++i)
@@ -296,8 +467,14 @@ class Kernel_engine : public Item_domain<Traits> {
           std::size_t code = b;
           bool inside = true;
           for (int k = 0; k < D; ++k, code /= 3) {
-            q[k] += std::int64_t(code % 3) - 1;
-            inside = inside && q[k] >= 0 && q[k] < dims[k];
+            const std::int64_t step = std::int64_t(code % 3) - 1;
+            if (options.periodic) {  // across the faces; a row of 1 or 2 cells is counted once
+              if ((dims[k] == 1 && step != 0) || (dims[k] == 2 && step == 1)) inside = false;
+              q[k] = (q[k] + step + dims[k]) % dims[k];
+            } else {
+              q[k] += step;
+              inside = inside && q[k] >= 0 && q[k] < dims[k];
+            }
           }
           if (!inside) continue;
           if (dense) {
@@ -336,7 +513,10 @@ class Kernel_engine : public Item_domain<Traits> {
     std::size_t free_items = S.size();
     for (std::size_t i = 0; i < sites.size(); ++i) {
       auto& p = sites[i].position;
-      if (!snap)  // reflected back across the faces it crossed (the ghosts' mirror), as often as it takes
+      if (options.periodic)  // back across the opposite face
+        wrap(p);
+      else if (!snap)  // reflected back across the faces it crossed (the ghosts' mirror), as often as it
+                       // takes
         for (int k = 0; k < D; ++k) {
           const double width = box_hi[k] - box_lo[k];
           if (p[k] >= box_lo[k] && p[k] <= box_hi[k]) continue;
@@ -349,7 +529,7 @@ class Kernel_engine : public Item_domain<Traits> {
           if (t > width) t = 2 * width - t;
           p[k] = std::min(box_hi[k], std::max(box_lo[k], box_lo[k] + t));
         }
-      std::uint32_t near = this->nearest_item(p);
+      std::uint32_t near = nearest_item_at(p);
       if (near >=
           S.size())  // a non-finite position: never after the checks above, but never read past the end
         throw std::runtime_error("kernel_relaxation: a site has no nearest item (non-finite position)");
@@ -386,15 +566,19 @@ class Kernel_engine : public Item_domain<Traits> {
     const double w0 = tau * options.sigma_position;  // spatial width at scale 1
     double s_max = 0;
     for (const double s : scales) s_max = std::max(s_max, s);
-    // Real sites, then ghosts (mirror images across the box faces of the sites near them).
+    // Real sites, then ghosts: mirror images across the box faces of the sites near them, or on the torus the
+    // sites (wrapped) and their images across the faces within the kernel's reach.
     std::vector<Point> q;
     std::vector<std::uint32_t> source;
     q.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       q.push_back(sites[i].position);
+      if (options.periodic) wrap(q.back());
       source.push_back(static_cast<std::uint32_t>(i));
     }
-    if (options.constraint == Kernel_constraint::bounding_box) {
+    if (options.periodic) {
+      add_images(q, source, n, [&](std::size_t j) { return options.cutoff * w0 * scales[j]; });
+    } else if (options.constraint == Kernel_constraint::bounding_box) {
       for (std::size_t j = 0; j < n; ++j) {
         const double reach = options.cutoff * w0 * scales[j];
         for (int k = 0; k < D; ++k)
@@ -429,13 +613,14 @@ class Kernel_engine : public Item_domain<Traits> {
     const double cutoff2 = options.cutoff * options.cutoff;
     double total = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const Point& p = sites[i].position;
+      const Point& p = q[i];
       const double radius = options.cutoff * w0 * scales[i];
       Point g{};
       double row = 0;
       grid.for_each_within(p, radius, [&](std::uint32_t t) {
         if (t == i) return;
         const std::uint32_t j = source[t];
+        if (options.periodic && j == i) return;  // a site's own images are not other sites
         const double s = std::min(scales[i], scales[j]);
         double d2 = 0;
         for (int k = 0; k < D; ++k) d2 += (p[k] - q[t][k]) * (p[k] - q[t][k]);
@@ -471,6 +656,7 @@ class Kernel_engine : public Item_domain<Traits> {
   bool zero_density = false;  // a density 0 on every item (kernel_relaxation(): degenerate_input)
   using Base::intrinsic;
   Point box_lo{}, box_hi{};
+  Point period{};      // the box's widths on the torus (options.periodic)
   double spacing = 0;  // of the items
   double packing = 0;
   double tau = 1;
@@ -495,7 +681,7 @@ Kernel_energy<Traits::dimension> kernel_energy(
   std::vector<double> scales(sites.size(), 1.0);
   if (engine.items() > 0)
     for (std::size_t i = 0; i < sites.size(); ++i)
-      scales[i] = engine.scale_at(engine.nearest_item(sites[i].position));
+      scales[i] = engine.scale_at(engine.nearest_item_at(sites[i].position));
   return engine.energy(sites, scales, true);
 }
 
@@ -614,8 +800,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
       break;
     }
     for (std::size_t i = 0; i < sites.size(); ++i) {
-      const double m =
-          std::sqrt(internal::Item_domain<Traits>::squared(trial[i].position, sites[i].position));
+      const double m = engine.moved(trial[i].position, sites[i].position);
       max_move = std::max(max_move, m);
       total_move += m;
     }
@@ -624,7 +809,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
     s.energy = current.energy;
     s.max_move = max_move;
     s.mean_move = total_move / double(sites.size());
-    s.relative_radius = engine.relative_radius(snap ? reported(sites, item) : sites, engine.packing);
+    s.relative_radius = engine.site_relative_radius(snap ? reported(sites, item) : sites);
     const double previous = current.energy;  // the step lowered it by `decrease`
     sites.swap(trial);
     scales.swap(trial_scales);
