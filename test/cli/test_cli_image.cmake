@@ -611,3 +611,7 @@ foreach(seed 0 1 2 3)
   svg_dot_centres(${WORK}/kernel16_plain_${seed}.svg 16 16 ${WORK}/kernel16_plain_${seed}.txt)
   expect(stipple_kernel_plain_spacing_${seed} 0 "\"samples\": 8,.*\"relative_radius\": 0\\.84[5-9]" sample-stats --input ${WORK}/kernel16_plain_${seed}.txt --period 16 --quiet)
 endforeach()
+# A thin tile with few dots: the kernel reaches over many periods of its height (8 x 2 pixels, 2 and 3 dots).
+foreach(count 2 3)
+  expect(stipple_kernel_periodic_thin_${count} 0 "\"dots\": ${count}, .*\"periodic\": true," stipple ${WORK}/flat8x2.pgm --count ${count} --method kernel --periodic --out ${WORK}/thin_${count}.svg --quiet)
+endforeach()

@@ -977,19 +977,70 @@ TEST(Kernel_relaxation, TorusDegenerateAndRefused) {
   EXPECT_EQ(r.status, Status::success);
   std::vector<std::array<double, 2>> p{r.sites[0].position, r.sites[1].position};
   EXPECT_GT(torus_spacing(p, 30, 1), 5.0);
-  // One pixel: nothing to relax on.
+  // Two sites a whole period apart are one position on the torus: they move apart as copies do.
+  std::vector<Site> copies{{{3.0, 0.5}, {100}}, {{33.0, 0.5}, {100}}};
+  const auto c = kernel_relaxation(row, copies, o);
+  EXPECT_EQ(c.status, Status::success);
+  EXPECT_GT(torus_spacing({c.sites[0].position, c.sites[1].position}, 30, 1), 5.0);
+  // One pixel: nothing to relax on. Its box has no width, so it does not wrap: the energy is that of the
+  // sites where they are (every site was put on the box's corner, all pairs coincident).
   const auto dot = image(1, 1, [](int, int) { return 0; });
   EXPECT_EQ(kernel_relaxation(dot, two, o).status, Status::degenerate_input);
-  // Snapping has no torus; a kernel reaching across more than 16 periods is refused.
+  Kernel_relaxation_options<2> wide = o;
+  wide.kernel_width = 1;
+  const auto e = kernel_energy(dot, two, wide);
+  EXPECT_EQ(e.pairs, 2u);
+  EXPECT_GT(e.gradient[0][0], 0);  // the energy falls as the two move apart
+  EXPECT_LT(e.gradient[1][0], 0);
+  // Snapping has no torus; a kernel whose reach holds more than 4,096 images of a site is refused.
   o.constraint = Kernel_constraint::snap_to_item;
   EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_relaxation(row, two, o); },
                                                        "periodic needs constraint bounding_box"));
   o.constraint = Kernel_constraint::bounding_box;
-  o.kernel_width = 6;  // a reach of 18 > 16 x 1
-  EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_energy(row, two, o); },
-                                                       "more than 16 times the shortest period 1"));
-  o.kernel_width = 5;
+  o.kernel_width = 100;  // a reach of 300: 601 x 21 images
+  EXPECT_TRUE(
+      test::throws_with<std::invalid_argument>([&] { kernel_energy(row, two, o); },
+                                               "the kernel reaches 300 (cutoff x kernel width x "
+                                               "sigma_position x the largest scale; the shortest period "
+                                               "is 1): up to 12621 images of a site, more than 4096"));
+  o.kernel_width = 20;  // 121 x 5
   EXPECT_NO_THROW(kernel_energy(row, two, o));
+}
+
+TEST(Kernel_relaxation, TorusDensityBlocksWrapOnAnyLattice) {
+  // A 12 x 12 lattice 0.1 apart: the torus's period, 1.2 but for rounding, holds whole numbers of the density
+  // blocks' cells (0.1, 0.2, 0.4 at this kernel width), which must border across the faces as at spacing 1.
+  // The density rolled by 4 items along x and 8 along y, with the sites moved along, gives the same energy
+  // and gradient.
+  using Point_2 = test::Point_2;
+  std::vector<Point_2> items;
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 12; ++i) items.emplace_back(0.1 * i, 0.1 * j);
+  auto rho = [](int i, int j) { return (i < 2 || i > 10) && j < 5 ? 1.0 : (i + 2 * j) % 5 < 2 ? 0.3 : 0.05; };
+  std::vector<double> density, rolled;
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 12; ++i) {
+      density.push_back(rho(i, j));
+      rolled.push_back(rho((i + 8) % 12, (j + 4) % 12));
+    }
+  using Point_site = Bilateral_site<Point_traits<Point_2>>;
+  std::mt19937_64 rng(2);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Point_site> sites(40), moved(40);
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    sites[i].position = {-0.05 + 1.2 * u(), -0.05 + 1.2 * u()};
+    moved[i].position = {sites[i].position[0] + 0.4, sites[i].position[1] + 0.8};  // wrapped by the torus
+  }
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  o.kernel_width = 0.2;
+  o.density = density;
+  Kernel_relaxation_options<2> r = o;
+  r.density = rolled;
+  const auto a = kernel_energy(items, sites, o), b = kernel_energy(items, moved, r);
+  EXPECT_NEAR(a.energy, b.energy, 1e-12 * a.energy);
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(a.gradient[i][k], b.gradient[i][k], 1e-9 * a.energy) << i;
 }
 
 }  // namespace

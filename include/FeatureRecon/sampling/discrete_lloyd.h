@@ -123,6 +123,62 @@ struct Discrete_lloyd_result {
 
 namespace internal {
 /// \cond
+// The torus of a box [lo, hi): the periods are its widths; an axis of width 0 does not wrap.
+template <int D>
+struct Box_torus {
+  using Point = std::array<double, D>;
+  Point lo{}, hi{}, period{};
+
+  // p moved by whole periods into [lo, hi) along every axis that wraps.
+  void wrap(Point& p) const {
+    for (int k = 0; k < D; ++k) {
+      if (!(period[k] > 0) || (p[k] >= lo[k] && p[k] < hi[k])) continue;
+      double t = std::fmod(p[k] - lo[k], period[k]);
+      if (t < 0) t += period[k];
+      const double x = lo[k] + t;
+      p[k] = x < hi[k] ? x : lo[k];
+    }
+  }
+
+  // Appends to q (and to source, the index of the point each copies) the images of the first n points of q,
+  // translated by whole periods, that lie within reach(j) of the box: every one, not only the nearest, so a
+  // reach wider than a period sees them all.
+  template <class Reach>
+  void add_images(std::vector<Point>& q, std::vector<std::uint32_t>& source, std::size_t n,
+                  Reach&& reach_of) const {
+    for (std::size_t j = 0; j < n; ++j) {
+      const Point p = q[j];
+      const double reach = reach_of(j);
+      std::array<std::vector<double>, D> offsets;  // per axis: 0, then the shifts within reach of the box
+      std::size_t combinations = 1;
+      for (int k = 0; k < D; ++k) {
+        offsets[k].push_back(0.0);
+        if (period[k] > 0) {
+          const double m = std::ceil(reach / period[k]) + 1;
+          for (double s = 1; s <= m; ++s)
+            for (const double v : {s * period[k], -s * period[k]})
+              if (std::max(lo[k] - (p[k] + v), p[k] + v - hi[k]) <= reach) offsets[k].push_back(v);
+        }
+        combinations *= offsets[k].size();
+      }
+      for (std::size_t c = 1; c < combinations; ++c) {
+        Point g = p;
+        double gap2 = 0;
+        std::size_t code = c;
+        for (int k = 0; k < D; ++k) {
+          g[k] += offsets[k][code % offsets[k].size()];
+          code /= offsets[k].size();
+          const double gap = std::max({0.0, lo[k] - g[k], g[k] - hi[k]});
+          gap2 += gap * gap;
+        }
+        if (gap2 > reach * reach) continue;
+        q.push_back(g);
+        source.push_back(static_cast<std::uint32_t>(j));
+      }
+    }
+  }
+};
+
 // The items of a relaxation as positions and features, with a grid for nearest-item queries.
 template <class Traits>
 class Item_domain {
@@ -197,6 +253,53 @@ class Item_domain {
     double best;
     return item_grid.nearest(
         x, 1.0, [&](std::uint32_t j) { return std::sqrt(squared(x, S.positions[j])); }, best);
+  }
+
+  // The torus of a box around the items (set_torus()); the plain space unless `wraps`.
+  bool wraps = false;
+  Box_torus<D> torus;
+  void set_torus(const Point& box_lo, const Point& box_hi) {
+    wraps = true;
+    torus.lo = box_lo;
+    torus.hi = box_hi;
+    for (int k = 0; k < D; ++k) torus.period[k] = box_hi[k] - box_lo[k];
+  }
+
+  // nearest_item(), on the torus when the domain wraps: x is wrapped first and its images across the faces
+  // compete (with x and the items in the box, the shifts -1, 0 and +1 of every axis reach them all; ties to
+  // the lowest index). \pre items() > 0.
+  std::uint32_t nearest_item_at(Point x) const {
+    if (!wraps) return nearest_item(x);
+    torus.wrap(x);
+    auto nearest = [this](const Point& q, double& best) {
+      return item_grid.nearest(
+          q, 1.0, [&](std::uint32_t j) { return std::sqrt(squared(q, S.positions[j])); }, best);
+    };
+    double best;
+    std::uint32_t near = nearest(x, best);
+    std::size_t shifts = 1;
+    for (int k = 0; k < D; ++k) shifts *= 3;
+    for (std::size_t b = 1; b < shifts; ++b) {  // digit 0, 1, 2 of b: shift 0, +1, -1 along that axis
+      Point q = x;
+      double gap2 = 0;
+      bool moved = true;
+      std::size_t code = b;
+      for (int k = 0; k < D; ++k, code /= 3) {
+        const double s = code % 3 == 0 ? 0.0 : code % 3 == 1 ? 1.0 : -1.0;
+        if (s != 0 && !(torus.period[k] > 0)) moved = false;
+        q[k] += s * torus.period[k];
+        const double gap = std::max({0.0, lo[k] - q[k], q[k] - hi[k]});
+        gap2 += gap * gap;
+      }
+      if (!moved || gap2 > best * best) continue;  // no item of this image can be nearer
+      double d;
+      const std::uint32_t j = nearest(q, d);
+      if (d < best || (d == best && j < near)) {
+        best = d;
+        near = j;
+      }
+    }
+    return near;
   }
 
   static std::vector<Point> positions_of(const std::vector<Site>& sites, Point& flo, Point& fhi) {
@@ -307,6 +410,44 @@ class Item_domain {
     bool coincide = false;
     const double shortest = minimum_distance(sites, coincide);
     return (coincide || std::isinf(shortest) || packing == 0) ? 0.0 : shortest / packing;
+  }
+
+  // relative_radius(), on the torus when the domain wraps: the sites (wrapped) against the images of the
+  // others within the shortest distance in the box (own images do not count).
+  double relative_radius_at(const std::vector<Site>& sites, double packing) const {
+    if (!wraps) return relative_radius(sites, packing);
+    std::vector<Site> wrapped = sites;
+    for (Site& site : wrapped) torus.wrap(site.position);
+    bool coincide = false;
+    const double plain = minimum_distance(wrapped, coincide);
+    if (coincide || std::isinf(plain) || packing == 0) return 0.0;
+    std::vector<Point> q;
+    std::vector<std::uint32_t> source;
+    for (std::size_t i = 0; i < wrapped.size(); ++i) {
+      q.push_back(wrapped[i].position);
+      source.push_back(static_cast<std::uint32_t>(i));
+    }
+    torus.add_images(q, source, wrapped.size(), [plain](std::size_t) { return plain; });
+    Point flo = q[0], fhi = q[0];
+    for (const auto& p : q)
+      for (int k = 0; k < D; ++k) {
+        flo[k] = std::min(flo[k], p[k]);
+        fhi[k] = std::max(fhi[k], p[k]);
+      }
+    Ring_grid<D> grid(flo, fhi, double(q.size()));
+    grid.assign(q);
+    double shortest = plain;
+    for (std::size_t i = 0; i < wrapped.size(); ++i) {
+      double best;
+      grid.nearest(
+          q[i], 1.0,
+          [&](std::uint32_t t) {
+            return source[t] == i ? std::numeric_limits<double>::infinity() : std::sqrt(squared(q[i], q[t]));
+          },
+          best);
+      shortest = std::min(shortest, best);
+    }
+    return shortest / packing;
   }
 
   static double squared(const Point& a, const Point& b) {

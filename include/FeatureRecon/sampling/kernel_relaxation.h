@@ -89,9 +89,10 @@ struct Kernel_relaxation_options {
   /// and H): a site leaving across a face comes back across the opposite one, a site sees every image of the
   /// others (translated by whole periods, as far as the kernel reaches; never its own), the nearest item and
   /// the density average are taken across the faces too, and the relative radius measures torus distances.
-  /// The sites then tile: a picture stippled on its torus can be repeated without seams. The kernel may
-  /// reach at most 16 periods of the shortest (cutoff x spatial kernel width x the largest scale, 8 with a
-  /// density, 1 without). Refused with snap_to_item. Default false.
+  /// The sites then tile: a picture stippled on its torus can be repeated without seams. Copies of a site
+  /// (equal positions once wrapped) move apart first. An axis of width 0 (items on one line) does not wrap.
+  /// Refused with snap_to_item, and when the kernel's reach r (cutoff x spatial kernel width x the largest
+  /// scale of any item) holds more than 4,096 images of a site, prod_k (2 ceil(r / P_k) + 1). Default false.
   bool periodic = false;
   std::size_t max_iterations = 100;  ///< iteration cap (accepted steps); default 100
   /// The first step length as a fraction of the distance to the neighbours (a single pair at distance d,
@@ -203,27 +204,32 @@ class Kernel_engine : public Item_domain<Traits> {
     }
     tau = o.kernel_width > 0 ? o.kernel_width : packing / (2 * o.sigma_position);
     if (!(tau > 0)) tau = std::max(spacing, 1e-300) / o.sigma_position;
-    if (o.periodic) {
-      double shortest = std::numeric_limits<double>::infinity();
-      for (int k = 0; k < D; ++k) {
-        period[k] = box_hi[k] - box_lo[k];
-        if (period[k] > 0) shortest = std::min(shortest, period[k]);
-      }
-      // Every image within the kernel's reach is a ghost: (2 m + 1)^D of them per site for a reach of m
-      // periods.
-      const double reach = o.cutoff * tau * o.sigma_position * (o.density.empty() ? 1.0 : 8.0);
-      if (std::isfinite(shortest) && !(reach <= 16 * shortest))
-        FeatureRecon::internal::throw_invalid_argument(
-            fn, "periodic: the kernel reaches ", reach,
-            " (cutoff x kernel width x sigma_position x the largest scale), more than 16 times the shortest "
-            "period ",
-            shortest, "; lower kernel_width or cutoff");
-    }
+    if (o.periodic) this->set_torus(box_lo, box_hi);
     if (zero_density)
       local_density.assign(S.size(), 0.0);  // every scale 8 (scale_of()); nothing to average
     else if (!o.density.empty())
       smoothed = smooth_density(progress);
+    if (o.periodic && smoothed) {
+      // Every image within the kernel's reach is a ghost: at most prod_k (2 ceil(reach / P_k) + 1) per site,
+      // the reach at the largest scale of any item.
+      double largest = o.density.empty() ? 1.0 : 0.0;
+      for (std::size_t i = 0; i < local_density.size(); ++i) largest = std::max(largest, scale_at(i));
+      const double reach = o.cutoff * tau * o.sigma_position * largest;
+      double images = 1, shortest = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < D; ++k)
+        if (this->torus.period[k] > 0) {
+          images *= 2 * std::ceil(reach / this->torus.period[k]) + 1;
+          shortest = std::min(shortest, this->torus.period[k]);
+        }
+      if (!(images <= double(max_images)))
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "periodic: the kernel reaches ", reach,
+            " (cutoff x kernel width x sigma_position x the largest scale; the shortest period is ", shortest,
+            "): up to ", images, " images of a site, more than ", max_images,
+            "; lower kernel_width or cutoff, or use more sites");
+    }
   }
+  static constexpr std::size_t max_images = 4096;
 
   // The scale of a site at item `near`, from the density around that item (smooth_density()).
   double scale_at(std::uint32_t near) const {
@@ -234,146 +240,6 @@ class Kernel_engine : public Item_domain<Traits> {
     if (!(rho > 0)) return 8.0;
     const double x = mean_density / rho;  // sqrt and cbrt: exact or nearly, and far cheaper than pow
     return std::min(8.0, std::max(0.125, intrinsic == 2 ? std::sqrt(x) : std::cbrt(x)));
-  }
-
-  // On the torus (options.periodic): p moved by whole periods into [box_lo, box_hi) (onto box_lo along an
-  // axis of period 0).
-  void wrap(Point& p) const {
-    for (int k = 0; k < D; ++k) {
-      if (!(period[k] > 0)) {
-        p[k] = box_lo[k];
-        continue;
-      }
-      if (p[k] >= box_lo[k] && p[k] < box_hi[k]) continue;
-      double t = std::fmod(p[k] - box_lo[k], period[k]);
-      if (t < 0) t += period[k];
-      const double x = box_lo[k] + t;
-      p[k] = x < box_hi[k] ? x : box_lo[k];
-    }
-  }
-
-  // The item nearest to x (ties: lowest index); on the torus x is wrapped first and its images across the
-  // faces compete (with x and the items in the box, the shifts -1, 0 and +1 of every axis reach them all).
-  std::uint32_t nearest_item_at(Point x) const {
-    if (!options.periodic) return this->nearest_item(x);
-    wrap(x);
-    auto nearest = [this](const Point& q, double& best) {
-      return this->item_grid.nearest(
-          q, 1.0, [&](std::uint32_t j) { return std::sqrt(Base::squared(q, S.positions[j])); }, best);
-    };
-    double best;
-    std::uint32_t near = nearest(x, best);
-    std::size_t shifts = 1;
-    for (int k = 0; k < D; ++k) shifts *= 3;
-    for (std::size_t b = 1; b < shifts; ++b) {  // digit 0, 1, 2 of b: shift 0, +1, -1 along that axis
-      Point q = x;
-      double gap2 = 0;
-      bool moved = true;
-      std::size_t code = b;
-      for (int k = 0; k < D; ++k, code /= 3) {
-        const double s = code % 3 == 0 ? 0.0 : code % 3 == 1 ? 1.0 : -1.0;
-        if (s != 0 && !(period[k] > 0)) moved = false;
-        q[k] += s * period[k];
-        const double gap = std::max({0.0, this->lo[k] - q[k], q[k] - this->hi[k]});
-        gap2 += gap * gap;
-      }
-      if (!moved || gap2 > best * best) continue;  // no item of this image can be nearer
-      double d;
-      const std::uint32_t j = nearest(q, d);
-      if (d < best || (d == best && j < near)) {
-        best = d;
-        near = j;
-      }
-    }
-    return near;
-  }
-
-  // On the torus: appends to q (and to source, the index of the site each copies) the images of the first n
-  // points of q, translated by whole periods, that lie within reach(j) of the box (every image, not only the
-  // nearest, so a kernel wider than a period sees them all).
-  template <class Reach>
-  void add_images(std::vector<Point>& q, std::vector<std::uint32_t>& source, std::size_t n,
-                  Reach&& reach_of) const {
-    for (std::size_t j = 0; j < n; ++j) {
-      const Point p = q[j];
-      const double reach = reach_of(j);
-      std::array<std::vector<double>, D> offsets;  // per axis: 0, then the shifts within reach of the box
-      std::size_t combinations = 1;
-      for (int k = 0; k < D; ++k) {
-        offsets[k].push_back(0.0);
-        if (period[k] > 0) {
-          const double m = std::ceil(reach / period[k]) + 1;
-          for (double s = 1; s <= m; ++s)
-            for (const double v : {s * period[k], -s * period[k]})
-              if (std::max(box_lo[k] - (p[k] + v), p[k] + v - box_hi[k]) <= reach) offsets[k].push_back(v);
-        }
-        combinations *= offsets[k].size();
-      }
-      for (std::size_t c = 1; c < combinations; ++c) {
-        Point g = p;
-        double gap2 = 0;
-        std::size_t code = c;
-        for (int k = 0; k < D; ++k) {
-          g[k] += offsets[k][code % offsets[k].size()];
-          code /= offsets[k].size();
-          const double gap = std::max({0.0, box_lo[k] - g[k], g[k] - box_hi[k]});
-          gap2 += gap * gap;
-        }
-        if (gap2 > reach * reach) continue;
-        q.push_back(g);
-        source.push_back(static_cast<std::uint32_t>(j));
-      }
-    }
-  }
-
-  // The distance a site moved from a to b: across the faces on the torus.
-  double moved(const Point& a, const Point& b) const {
-    double s = 0;
-    for (int k = 0; k < D; ++k) {
-      double d = std::abs(a[k] - b[k]);
-      if (options.periodic && period[k] > 0) d = std::min(d, std::abs(period[k] - d));
-      s += d * d;
-    }
-    return std::sqrt(s);
-  }
-
-  // rho of the sites (minimum distance over the packing distance; 0 when two coincide), on the torus when
-  // periodic: the sites (wrapped) against the images of the others within the shortest distance in the box.
-  double site_relative_radius(const std::vector<Site>& sites) const {
-    if (!options.periodic) return this->relative_radius(sites, packing);
-    std::vector<Site> wrapped = sites;
-    for (Site& site : wrapped) wrap(site.position);
-    bool coincide = false;
-    const double plain = Base::minimum_distance(wrapped, coincide);
-    if (coincide || std::isinf(plain) || packing == 0) return 0.0;
-    std::vector<Point> q;
-    std::vector<std::uint32_t> source;
-    for (std::size_t i = 0; i < wrapped.size(); ++i) {
-      q.push_back(wrapped[i].position);
-      source.push_back(static_cast<std::uint32_t>(i));
-    }
-    add_images(q, source, sites.size(), [plain](std::size_t) { return plain; });
-    Point flo = q[0], fhi = q[0];
-    for (const auto& p : q)
-      for (int k = 0; k < D; ++k) {
-        flo[k] = std::min(flo[k], p[k]);
-        fhi[k] = std::max(fhi[k], p[k]);
-      }
-    Ring_grid<D> grid(flo, fhi, double(q.size()));
-    grid.assign(q);
-    double shortest = plain;
-    for (std::size_t i = 0; i < sites.size(); ++i) {
-      double best;
-      grid.nearest(
-          q[i], 1.0,
-          [&](std::uint32_t t) {
-            return source[t] == i ? std::numeric_limits<double>::infinity()
-                                  : std::sqrt(Base::squared(q[i], q[t]));
-          },
-          best);
-      shortest = std::min(shortest, best);
-    }
-    return shortest / packing;
   }
 
   // local_density[i]: the density averaged over the kernel's core at item i, at the scale that density gives.
@@ -413,10 +279,17 @@ class Kernel_engine : public Item_domain<Traits> {
       Key dims{};
       double cells = 1;
       for (int k = 0; k < D; ++k) {
-        // On the torus the last cell (maybe partial) borders the first: no empty cell past the box.
-        dims[k] = options.periodic
-                      ? std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(period[k] / side)))
-                      : static_cast<std::int64_t>(std::floor((box_hi[k] - box_lo[k]) / side)) + 1;
+        // On the torus the last cell (maybe partial) borders the first: no empty cell past the box, also
+        // where the period is a whole number of cells but for rounding (12 items 0.1
+        // apart: 1.2000000000000002 / 0.1 = 12.000000000000002 cells).
+        if (options.periodic) {
+          const double across = this->torus.period[k] / side, whole = std::round(across);
+          dims[k] = std::max<std::int64_t>(
+              1, static_cast<std::int64_t>(std::abs(across - whole) <= 1e-9 * whole ? whole
+                                                                                    : std::ceil(across)));
+        } else {
+          dims[k] = static_cast<std::int64_t>(std::floor((box_hi[k] - box_lo[k]) / side)) + 1;
+        }
         cells *= double(dims[k]);
       }
       for (std::size_t i = 0; i < m; ++i)
@@ -500,6 +373,28 @@ class Kernel_engine : public Item_domain<Traits> {
     return true;
   }
 
+  // A position brought into the box: back across the opposite face on the torus, reflected back across the
+  // faces it crossed (the ghosts' mirror) as often as it takes in the box; unchanged when snapping.
+  void place(Point& p) const {
+    if (options.periodic) {
+      this->torus.wrap(p);
+      return;
+    }
+    if (options.constraint == Kernel_constraint::snap_to_item) return;
+    for (int k = 0; k < D; ++k) {
+      const double width = box_hi[k] - box_lo[k];
+      if (p[k] >= box_lo[k] && p[k] <= box_hi[k]) continue;
+      if (!(width > 0)) {
+        p[k] = box_lo[k];
+        continue;
+      }
+      double t = std::fmod(p[k] - box_lo[k], 2 * width);  // exact
+      if (t < 0) t += 2 * width;
+      if (t > width) t = 2 * width - t;
+      p[k] = std::min(box_hi[k], std::max(box_lo[k], box_lo[k] + t));
+    }
+  }
+
   // Features and scales of sites at these positions (the constraint applied first).
   // The constraint and the features: reflects into the box, or (snapping) keeps each site within half an item
   // spacing of its item, the item nearest to it unless a lower-index site took that one (then the nearest
@@ -513,23 +408,8 @@ class Kernel_engine : public Item_domain<Traits> {
     std::size_t free_items = S.size();
     for (std::size_t i = 0; i < sites.size(); ++i) {
       auto& p = sites[i].position;
-      if (options.periodic)  // back across the opposite face
-        wrap(p);
-      else if (!snap)  // reflected back across the faces it crossed (the ghosts' mirror), as often as it
-                       // takes
-        for (int k = 0; k < D; ++k) {
-          const double width = box_hi[k] - box_lo[k];
-          if (p[k] >= box_lo[k] && p[k] <= box_hi[k]) continue;
-          if (!(width > 0)) {
-            p[k] = box_lo[k];
-            continue;
-          }
-          double t = std::fmod(p[k] - box_lo[k], 2 * width);  // exact
-          if (t < 0) t += 2 * width;
-          if (t > width) t = 2 * width - t;
-          p[k] = std::min(box_hi[k], std::max(box_lo[k], box_lo[k] + t));
-        }
-      std::uint32_t near = nearest_item_at(p);
+      place(p);
+      std::uint32_t near = this->nearest_item_at(p);
       if (near >=
           S.size())  // a non-finite position: never after the checks above, but never read past the end
         throw std::runtime_error("kernel_relaxation: a site has no nearest item (non-finite position)");
@@ -573,11 +453,11 @@ class Kernel_engine : public Item_domain<Traits> {
     q.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       q.push_back(sites[i].position);
-      if (options.periodic) wrap(q.back());
+      if (options.periodic) this->torus.wrap(q.back());
       source.push_back(static_cast<std::uint32_t>(i));
     }
     if (options.periodic) {
-      add_images(q, source, n, [&](std::size_t j) { return options.cutoff * w0 * scales[j]; });
+      this->torus.add_images(q, source, n, [&](std::size_t j) { return options.cutoff * w0 * scales[j]; });
     } else if (options.constraint == Kernel_constraint::bounding_box) {
       for (std::size_t j = 0; j < n; ++j) {
         const double reach = options.cutoff * w0 * scales[j];
@@ -656,7 +536,6 @@ class Kernel_engine : public Item_domain<Traits> {
   bool zero_density = false;  // a density 0 on every item (kernel_relaxation(): degenerate_input)
   using Base::intrinsic;
   Point box_lo{}, box_hi{};
-  Point period{};      // the box's widths on the torus (options.periodic)
   double spacing = 0;  // of the items
   double packing = 0;
   double tau = 1;
@@ -668,7 +547,7 @@ class Kernel_engine : public Item_domain<Traits> {
 
 /// Stage 1: the kernel energy E of some sites and its gradient with respect to the positions (features and
 /// scales held at their values: they are piecewise constant in the positions). The sites are used as given
-/// (not clamped, features not refreshed).
+/// (not moved into the box, features not refreshed; on the torus a site counts where it wraps to).
 /// \param items the domain (for the kernel width, the box and the density).
 /// \param sites the sites (finite, checked).
 /// \param options metric, kernel width, cut-off, density, constraint. \param traits FeaturePointTraits.
@@ -730,6 +609,9 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
   }
   // Coincident sites have no gradient between them: every copy after the first (in index order) moves by
   // w0 / 100 along a direction fixed by its index (golden-angle spiral), then the energy separates them.
+  // Copies are told in the box (sites a whole period apart on the torus, or mirror images of each other
+  // across a face, coincide there).
+  for (auto& site : sites) engine.place(site.position);
   internal::separate_copies<D>(
       sites.size(), w0 / 100, [&sites](std::size_t i) -> auto& { return sites[i].position; });
   std::vector<double> scales;
@@ -740,6 +622,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
   std::vector<Bilateral_site<Traits>> trial;
   std::vector<double> trial_scales;
   std::vector<std::uint32_t> trial_item;
+  std::vector<double> step_length;  // of each site in the trial step
   std::vector<Bilateral_site<Traits>> frozen;
   // Whether features or scales can change with the positions (else one energy pass per step).
   const bool refresh = !std::isinf(options.sigma_feature) || !options.density.empty();
@@ -767,6 +650,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
     double max_move = 0, total_move = 0, decrease = 0;
     for (int attempt = 0; attempt < 30 && !accepted; ++attempt) {
       trial = sites;
+      step_length.assign(sites.size(), 0.0);
       for (std::size_t i = 0; i < sites.size(); ++i) {
         const double w = w0 * scales[i];
         const double f = step * w * w * double(sites.size()) / 4;
@@ -780,6 +664,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
         const double cap = w;  // never more than a kernel width per step
         const double shrink = len > cap ? cap / len : 1.0;
         for (int k = 0; k < D; ++k) trial[i].position[k] += shrink * d[k];
+        step_length[i] = shrink * len;
       }
       engine.settle(trial, trial_scales, trial_item);
       // The step must lower E with the features and scales it started from (E jumps where a site's nearest
@@ -800,7 +685,11 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
       break;
     }
     for (std::size_t i = 0; i < sites.size(); ++i) {
-      const double m = engine.moved(trial[i].position, sites[i].position);
+      // On the torus a site moves by its step (its position may come back across a face).
+      const double m =
+          options.periodic
+              ? step_length[i]
+              : std::sqrt(internal::Item_domain<Traits>::squared(trial[i].position, sites[i].position));
       max_move = std::max(max_move, m);
       total_move += m;
     }
@@ -809,7 +698,7 @@ Kernel_relaxation_result<Traits> kernel_relaxation(
     s.energy = current.energy;
     s.max_move = max_move;
     s.mean_move = total_move / double(sites.size());
-    s.relative_radius = engine.site_relative_radius(snap ? reported(sites, item) : sites);
+    s.relative_radius = engine.relative_radius_at(snap ? reported(sites, item) : sites, engine.packing);
     const double previous = current.energy;  // the step lowered it by `decrease`
     sites.swap(trial);
     scales.swap(trial_scales);
