@@ -48,7 +48,7 @@ struct Stipple_settings {
   std::size_t palette = 0;
   std::uint64_t seed = 0;
   double gamma = 1;
-  bool periodic = false;  ///< a tile: Lloyd, darts or kernel on the torus of the picture's rectangle
+  bool periodic = false;  ///< a tile: every method on the torus of the picture's rectangle
 };
 
 /// Darkness 1 - luma / 255 (ITU-R BT.601), raised to gamma: the density of the dots.
@@ -297,6 +297,7 @@ std::vector<Dot> stipple(const io::Image& image, const Stipple_settings& s,
     o.sigma_feature = s.sigma_feature;
     o.density = density;
     o.max_iterations = s.iterations;
+    o.periodic = s.periodic;
     o.progress = std::ref(progress);
     const auto r = fs::discrete_bilateral_lloyd(pixels, start, o);
     for (const auto& site : r.sites) dots.push_back({site.position, colour_at(site.position)});
@@ -385,10 +386,6 @@ int run_stipple(const std::vector<std::string>& argv) {
   if (s.method == "darts" && args.has("iterations"))
     throw Usage_error("--iterations does not apply to --method darts (no iterations)");
   s.periodic = args.has("periodic");
-  if (s.periodic && s.method == "bilateral-lloyd")
-    throw Usage_error(
-        "--periodic applies to --method lloyd, darts and kernel (on the torus of the picture); "
-        "bilateral-lloyd has no torus");
   const long long count = args.get_int("count");
   if (count < 1) throw Usage_error("--count must be >= 1, got " + std::to_string(count));
   s.count = static_cast<std::size_t>(count);

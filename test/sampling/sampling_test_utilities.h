@@ -4,11 +4,14 @@
 #define FEATURERECON_TEST_SAMPLING_SAMPLING_TEST_UTILITIES_H
 
 #include <FeatureRecon/sampling/sampling_quality.h>
+#include <FeatureRecon/traits.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdint>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -22,6 +25,23 @@ using K = CGAL::Epick;
 using Point_2 = K::Point_2;
 using Point_3 = K::Point_3;
 using Vector_3 = K::Vector_3;
+
+/// 12 grey pixels (values 10, 20, ..., 120) whose extents, 9 x 6, read as a 4 x 3 lattice of spacing 3, so
+/// that their box (widened by half a spacing) is [-1, 11] x [-1, 8]; the positions are not a lattice, so a
+/// point near a face of that box often has its nearest pixel across the face on the torus.
+inline std::vector<Grey_pixel> irregular_pixels() {
+  const std::vector<std::array<int, 2>> at{{0, 0}, {9, 6}, {4, 3}, {2, 5}, {7, 1}, {5, 6},
+                                           {1, 2}, {8, 4}, {3, 0}, {6, 3}, {9, 2}, {4, 1}};
+  std::vector<Grey_pixel> px;
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    Grey_pixel p;
+    p.column = at[i][0];
+    p.row = at[i][1];
+    p.value = static_cast<std::uint8_t>(10 * (i + 1));
+    px.push_back(p);
+  }
+  return px;
+}
 
 /// n uniform random points in the unit square (a fixed generator: the same points on every platform).
 inline std::vector<Point_2> white_noise(std::size_t n, unsigned seed) {

@@ -578,4 +578,278 @@ TEST(Discrete_lloyd, MoveToleranceIsInclusive) {
   EXPECT_EQ(r.sites[0].position, (std::array<double, 2>{1.5, 0.5}));
 }
 
+// The torus [0, W) x [0, H) of a W x H picture: the shift (a multiple of W, H) that brings site position p
+// nearest to x, and the squared distance to that image.
+double torus_squared(double x, double y, const std::array<double, 2>& p, double w, double h,
+                     std::array<double, 2>* shift = nullptr) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int a = -2; a <= 2; ++a)
+    for (int b = -2; b <= 2; ++b) {
+      const double dx = x - (p[0] + a * w), dy = y - (p[1] + b * h), d = dx * dx + dy * dy;
+      if (d < best) {
+        best = d;
+        if (shift) *shift = {a * w, b * h};
+      }
+    }
+  return best;
+}
+
+// Brute force on the torus: each pixel's site (smallest xi through the nearest image, ties to the lowest
+// index) and, per site, the density-weighted centroid of its pixels taken at their images nearest it,
+// wrapped into [0, W) x [0, H).
+struct Torus_oracle {
+  std::vector<std::uint32_t> site;
+  double energy = 0;
+  std::vector<std::array<double, 2>> centroid;
+  std::vector<double> mass;
+};
+Torus_oracle torus_brute_force(const std::vector<Grey_pixel>& px, std::vector<Site> sites, int w, int h,
+                               double sigma_position, double sigma_feature, const std::vector<double>& rho) {
+  for (auto& s : sites)
+    for (int k = 0; k < 2; ++k) {
+      const double period = k == 0 ? w : h;
+      s.position[k] = std::fmod(std::fmod(s.position[k], period) + period, period);
+    }
+  Torus_oracle o;
+  std::vector<std::array<double, 2>> sum(sites.size(), {0.0, 0.0});
+  o.mass.assign(sites.size(), 0.0);
+  const Grey_pixel_traits t;
+  const Gaussian_bilateral_metric metric{sigma_position, sigma_feature};
+  for (std::size_t i = 0; i < px.size(); ++i) {
+    const double x = px[i].column + 0.5, y = px[i].row + 0.5;
+    double best = std::numeric_limits<double>::infinity();
+    std::uint32_t arg = 0;
+    for (std::size_t j = 0; j < sites.size(); ++j) {
+      const double xi = metric(torus_squared(x, y, sites[j].position, w, h),
+                               t.compute_feature_distance_object()({px[i].value}, sites[j].feature));
+      if (xi < best) {
+        best = xi;
+        arg = static_cast<std::uint32_t>(j);
+      }
+    }
+    o.site.push_back(arg);
+    const double r = rho.empty() ? 1.0 : rho[i];
+    o.energy += r * best * best;
+    std::array<double, 2> shift{};
+    torus_squared(x, y, sites[arg].position, w, h, &shift);
+    sum[arg][0] += r * (x - shift[0]);
+    sum[arg][1] += r * (y - shift[1]);
+    o.mass[arg] += r;
+  }
+  for (std::size_t j = 0; j < sites.size(); ++j) {
+    std::array<double, 2> c = sites[j].position;
+    if (o.mass[j] > 0)
+      for (int k = 0; k < 2; ++k) {
+        const double period = k == 0 ? w : h;
+        c[k] = std::fmod(std::fmod(sum[j][k] / o.mass[j], period) + period, period);
+      }
+    o.centroid.push_back(c);
+  }
+  return o;
+}
+
+TEST(Discrete_lloyd, TorusAssignmentAndStepMatchBruteForce) {
+  // Pixels go to the site nearest on the torus of the picture, sites move to the centroid of their pixels
+  // taken across the faces: against brute force, Euclidean and bilateral, with a density, sites anywhere
+  // (some outside the picture, wrapped).
+  const int w = 29, h = 17;
+  const auto px = step_image(w, h, 12, 30, 4);
+  std::vector<double> rho;
+  for (const auto& p : px) rho.push_back(1 - p.value / 255.0);
+  for (const std::size_t n : {1u, 3u, 12u, 40u}) {
+    auto sites = random_sites(n, w, h, unsigned(10 + n));
+    if (n > 2) {
+      sites[0].position = {-3.25, 5.5};
+      sites[1].position = {w + 7.5, -h + 0.25};
+    }
+    for (const double sf : {std::numeric_limits<double>::infinity(), 0.3}) {
+      Discrete_lloyd_options<2> o;
+      o.periodic = true;
+      o.sigma_position = 1.5;
+      o.sigma_feature = sf;
+      o.density = rho;
+      const auto want = torus_brute_force(px, sites, w, h, 1.5, sf, rho);
+      const auto a = bilateral_voronoi_assignment(px, sites, o);
+      EXPECT_EQ(a.site, want.site) << n << " sites, sigma_feature " << sf;
+      EXPECT_NEAR(a.energy, want.energy, 1e-12 * want.energy);
+      const auto step = discrete_lloyd_step(px, sites, o);
+      for (std::size_t j = 0; j < n; ++j)
+        for (int k = 0; k < 2; ++k)
+          EXPECT_NEAR(step.sites[j].position[k], want.centroid[j][k], 1e-9)
+              << n << " sites, sigma_feature " << sf << ", site " << j;
+      // The step's moves are the torus's: never more than half the diagonal.
+      EXPECT_LE(step.max_move, 0.5 * std::sqrt(double(w * w + h * h)) + 1e-12);
+    }
+  }
+}
+
+TEST(Discrete_lloyd, TorusRelaxationTilesAndIsTranslationInvariant) {
+  const int w = 48, h = 40;
+  const auto px = step_image(w, h, 0, 0, 1);  // uniform
+  const auto start = random_sites(80, w, h, 6);
+  Discrete_lloyd_options<2> o;
+  o.periodic = true;
+  o.max_iterations = 40;
+  const double d_hex = std::sqrt(2.0 * w * h / (std::sqrt(3.0) * 80));
+  auto spacing = [&](const std::vector<std::array<double, 2>>& p) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = i + 1; j < p.size(); ++j)
+        best = std::min(best, torus_squared(p[i][0], p[i][1], p[j], w, h));
+    return std::sqrt(best);
+  };
+  std::vector<double> reported, measured;
+  o.on_iteration = [&](Lloyd_iteration_statistics& s, const std::vector<std::array<double, 2>>& p) {
+    reported.push_back(s.relative_radius);
+    measured.push_back(spacing(p) / d_hex);
+    for (const auto& x : p)
+      EXPECT_TRUE(x[0] >= 0 && x[0] < w && x[1] >= 0 && x[1] < h) << x[0] << ", " << x[1];
+    return true;
+  };
+  const auto r = discrete_bilateral_lloyd(px, start, o);
+  ASSERT_EQ(reported.size(), 40u);
+  for (std::size_t i = 1; i < reported.size(); ++i)
+    EXPECT_NEAR(reported[i], measured[i - 1], 1e-12) << "iteration " << i + 1;
+  EXPECT_LT(reported.front(), 0.2);
+  EXPECT_GT(measured.back(), 0.7);
+  // Not pushed off the edges: the band within d_hex / 4 of an edge holds about its share of the sites (15%
+  // of the area, 12 sites); Lloyd in the box keeps it nearly empty.
+  auto band = [&](const Discrete_lloyd_result<Grey_pixel_traits>& x) {
+    std::size_t in = 0;
+    for (const auto& s : x.sites)
+      in += std::min({s.position[0], s.position[1], w - s.position[0], h - s.position[1]}) < d_hex / 4;
+    return in;
+  };
+  EXPECT_GE(band(r), 4u);
+  Discrete_lloyd_options<2> plain;
+  plain.max_iterations = 40;
+  EXPECT_LE(band(discrete_bilateral_lloyd(px, start, plain)), 1u);
+  // The items each site ends nearest to, on the torus.
+  for (std::size_t j = 0; j < r.sites.size(); ++j) {
+    const auto& p = r.sites[j].position;
+    std::size_t best = 0;
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      const double e = torus_squared(px[i].column + 0.5, px[i].row + 0.5, p, w, h);
+      if (e < d) {
+        d = e;
+        best = i;
+      }
+    }
+    EXPECT_EQ(r.items[j], best) << "site " << j;
+  }
+  // A picture rolled by (16, 8) with the sites moved along: the sites move along, one step after another.
+  const auto bilateral_px = step_image(w, h, 20, 0, 1);
+  std::vector<std::uint8_t> rolled_values(px.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      rolled_values[std::size_t(((y + 8) % h) * w + (x + 16) % w)] =
+          bilateral_px[std::size_t(y * w + x)].value;
+  const auto rolled = image_pixels<Grey_pixel>(w, h, rolled_values);
+  auto moved = start;
+  for (auto& s : moved)
+    s.position = {std::fmod(s.position[0] + 16, double(w)), std::fmod(s.position[1] + 8, double(h))};
+  Discrete_lloyd_options<2> b;
+  b.periodic = true;
+  b.sigma_position = d_hex;
+  b.sigma_feature = 0.3;
+  b.max_iterations = 5;
+  const auto one = discrete_bilateral_lloyd(bilateral_px, start, b),
+             two = discrete_bilateral_lloyd(rolled, moved, b);
+  for (std::size_t j = 0; j < start.size(); ++j) {
+    EXPECT_NEAR(std::fmod(one.sites[j].position[0] + 16, double(w)), two.sites[j].position[0], 1e-9) << j;
+    EXPECT_NEAR(std::fmod(one.sites[j].position[1] + 8, double(h)), two.sites[j].position[1], 1e-9) << j;
+    EXPECT_EQ(one.sites[j].feature, two.sites[j].feature);
+  }
+  // Bit for bit the same again.
+  o.on_iteration = nullptr;
+  const auto again = discrete_bilateral_lloyd(px, start, o);
+  for (std::size_t j = 0; j < r.sites.size(); ++j) EXPECT_EQ(again.sites[j].position, r.sites[j].position);
+}
+
+TEST(Discrete_lloyd, TorusNearestItemsAndSpacingLieAcrossTheFaces) {
+  // On the torus [-1, 11) x [-1, 8) of irregular_pixels() `items` holds the pixel nearest each site (brute
+  // force, ties to the lowest index), often across a face.
+  const std::vector<Grey_pixel> px = test::irregular_pixels();
+  std::mt19937_64 rng(4);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Site> sites(300);
+  for (auto& s : sites) s.position = {-13 + 38 * u(), -10 + 28 * u()};
+  Discrete_lloyd_options<2> o;
+  o.periodic = true;
+  o.max_iterations = 0;  // the sites as given, and their nearest items
+  const auto r = discrete_bilateral_lloyd(px, sites, o);
+  std::size_t across = 0;
+  for (std::size_t j = 0; j < sites.size(); ++j) {
+    const std::array<double, 2> p{sites[j].position[0] + 1, sites[j].position[1] + 1};  // the box from 0
+    std::size_t best = 0, plain = 0;
+    double best_d = std::numeric_limits<double>::infinity(), plain_d = best_d;
+    std::array<double, 2> w{std::fmod(std::fmod(p[0], 12.0) + 12, 12.0),
+                            std::fmod(std::fmod(p[1], 9.0) + 9, 9.0)};
+    for (std::size_t i = 0; i < px.size(); ++i) {
+      const double x = px[i].column + 1.5, y = px[i].row + 1.5;
+      const double d = torus_squared(x, y, p, 12, 9), e = (x - w[0]) * (x - w[0]) + (y - w[1]) * (y - w[1]);
+      if (d < best_d) {
+        best_d = d;
+        best = i;
+      }
+      if (e < plain_d) {
+        plain_d = e;
+        plain = i;
+      }
+    }
+    EXPECT_EQ(r.items[j], best) << "site " << j;
+    across += best != plain;
+  }
+  EXPECT_GT(across, 30u);  // the check tells
+  // Two sites 1 apart across the face x = 0 of a 48 x 40 picture: the relative radius of the first
+  // iteration is that distance over the packing distance of 2 sites.
+  const auto flat = step_image(48, 40, 0, 0, 1);
+  Discrete_lloyd_options<2> one;
+  one.periodic = true;
+  one.max_iterations = 1;
+  const auto q = discrete_bilateral_lloyd(flat, std::vector<Site>{{{0.5, 5}, {40}}, {{47.5, 5}, {40}}}, one);
+  ASSERT_EQ(q.history.size(), 1u);
+  EXPECT_NEAR(q.history[0].relative_radius, 1 / std::sqrt(2 * 48.0 * 40 / (std::sqrt(3.0) * 2)), 1e-12);
+}
+
+TEST(Discrete_lloyd, TorusDegenerateAndRefused) {
+  // Two sites a whole period apart are one position on the torus: they move apart as copies do.
+  const auto row = step_image(30, 1, 0, 0, 1);
+  std::vector<Site> copies{{{3.0, 0.5}, {40}}, {{33.0, 0.5}, {40}}};
+  Discrete_lloyd_options<2> o;
+  o.periodic = true;
+  const auto c = discrete_bilateral_lloyd(row, copies, o);
+  EXPECT_EQ(c.status, Status::success);
+  EXPECT_NEAR(std::abs(c.sites[0].position[0] - c.sites[1].position[0]), 15.0, 1e-9);
+  // One pixel: a box of width 0 does not wrap, the sites stay where they are.
+  const auto dot = step_image(1, 1, 0, 0, 1);
+  const auto d = discrete_bilateral_lloyd(dot, std::vector<Site>{{{0.5, 0.5}, {40}}, {{7.0, 3.0}, {40}}}, o);
+  EXPECT_EQ(d.sites[1].position, (std::array<double, 2>{7.0, 3.0}));
+  // Surfaces do not fill their box.
+  std::vector<test::Point_3> plane;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) plane.emplace_back(i, j, 0);
+  Discrete_lloyd_options<3> o3;
+  o3.periodic = true;
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+      [&] {
+        discrete_bilateral_lloyd(plane, std::vector<std::size_t>{0, 5}, o3);
+      },
+      "periodic needs items that fill their box: 2D items, or 3D items with intrinsic_dimension 3 (got 0)"));
+  // A volume does: 8 sites in a 6 x 6 x 6 lattice relax on its torus [-0.5, 5.5)^3.
+  std::vector<test::Point_3> cube;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k) cube.emplace_back(i, j, k);
+  o3.intrinsic_dimension = 3;
+  const auto v =
+      discrete_bilateral_lloyd(cube, std::vector<std::size_t>{0, 43, 86, 129, 172, 215, 50, 101}, o3);
+  EXPECT_EQ(v.status, Status::success);
+  for (const auto& s : v.sites)
+    for (const double x : s.position) EXPECT_TRUE(x >= -0.5 && x < 5.5) << x;
+  EXPECT_GT(v.history.back().relative_radius, v.history.front().relative_radius + 0.2)
+      << v.history.front().relative_radius;
+}
+
 }  // namespace

@@ -914,20 +914,9 @@ TEST(Kernel_relaxation, TorusRelaxationTilesAndReportsTorusSpacing) {
 }
 
 TEST(Kernel_relaxation, TorusNearestItemLiesAcrossTheFaces) {
-  // 12 pixels whose extents (9 x 6) read as a 4 x 3 lattice of spacing 3: the box is [-1, 11] x [-1, 8], the
-  // torus's periods 12 and 9. The positions are not a lattice, so a site near a face often has its nearest
-  // pixel across it. Each site takes the feature of the pixel nearest to it on the torus (brute force, ties
-  // to the lowest index), and its position wrapped into the box.
-  const std::vector<std::array<int, 2>> at{{0, 0}, {9, 6}, {4, 3}, {2, 5}, {7, 1}, {5, 6},
-                                           {1, 2}, {8, 4}, {3, 0}, {6, 3}, {9, 2}, {4, 1}};
-  std::vector<Grey_pixel> px;
-  for (std::size_t i = 0; i < at.size(); ++i) {
-    Grey_pixel p;
-    p.column = at[i][0];
-    p.row = at[i][1];
-    p.value = static_cast<std::uint8_t>(10 * (i + 1));
-    px.push_back(p);
-  }
+  // On the torus [-1, 11) x [-1, 8) of irregular_pixels() each site takes the feature of the pixel nearest to
+  // it (brute force, ties to the lowest index), often across a face, and its position wrapped into the box.
+  const std::vector<Grey_pixel> px = test::irregular_pixels();
   std::mt19937_64 rng(4);
   auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
   std::vector<Site> sites(400);

@@ -9,9 +9,10 @@
 /// the site nearest in the bilateral distance xi (ties to the lowest site index), sites move to the
 /// density-weighted centroid of their items' positions (Eqn 2.2), and their features are re-sampled at the
 /// new position from the nearest item; optionally the site snaps to that item (the closest domain point to
-/// the centroid, the equation after 2.2). Stages: bilateral_voronoi_assignment() (the discrete bilateral
-/// Voronoi sets), discrete_lloyd_step() (one iteration), discrete_bilateral_lloyd() (iterations with the
-/// stopping rules and per-iteration statistics of lloyd_relaxation()).
+/// the centroid, the equation after 2.2). With options.periodic the items' box is a torus (tiles). Stages:
+/// bilateral_voronoi_assignment() (the discrete bilateral Voronoi sets), discrete_lloyd_step() (one
+/// iteration), discrete_bilateral_lloyd() (iterations with the stopping rules and per-iteration statistics
+/// of lloyd_relaxation()).
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
@@ -75,6 +76,15 @@ struct Discrete_lloyd_options {
   /// 0: 2 for 2D items; for 3D items, 2 when most have a flat neighbourhood (as
   /// weighted_sample_elimination()).
   int intrinsic_dimension = 0;
+  /// The items fill a box that is a torus: their bounding box widened by half an item spacing on every side
+  /// (a W x H image of pixels: [0, W] x [0, H]), its widths the periods. Every item goes to the site nearest
+  /// on the torus (ties to the lowest site index), a site moves to the centroid of its items taken across
+  /// the faces (each item at its image nearest the site) and wraps into the box, and the nearest item, the
+  /// moves and the relative radius are the torus's. The sites then tile: a picture stippled on its torus can
+  /// be repeated without seams. Copies of a site (equal positions once wrapped) move apart first. An axis of
+  /// width 0 (items on one line) does not wrap. For 2D items, and for 3D items of intrinsic_dimension 3
+  /// (volumes); refused for other 3D items (a surface does not fill its box). Default false.
+  bool periodic = false;
   /// Called after each iteration with its statistics and the sites' positions after the move; returning
   /// false stops there (early stopping on rho or on an oscillation the callback computes). Default: none.
   std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)>
@@ -506,61 +516,138 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       FeatureRecon::internal::throw_invalid_argument(
           fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ", o.energy_tolerance,
           " and ", o.move_tolerance);
+    if (o.periodic && D == 3 && o.intrinsic_dimension != 3)
+      FeatureRecon::internal::throw_invalid_argument(
+          fn,
+          "periodic needs items that fill their box: 2D items, or 3D items with intrinsic_dimension 3 (got ",
+          o.intrinsic_dimension, ")");
+    if (o.periodic && S.size() > 0) {
+      const double spacing = this->grid_spacing();
+      Point box_lo = this->lo, box_hi = this->hi;
+      for (int k = 0; k < D; ++k) {
+        box_lo[k] -= spacing / 2;
+        box_hi[k] += spacing / 2;
+      }
+      this->set_torus(box_lo, box_hi);
+    }
   }
 
   double density(std::size_t i) const { return options.density.empty() ? 1.0 : options.density[i]; }
 
-  Bilateral_assignment assign(const std::vector<Site>& sites) const {
+  // The assignment; on the torus also, per item, the shift from its site to the site's image nearest it
+  // (`shift`, when given), each site wrapped into the box.
+  Bilateral_assignment assign(const std::vector<Site>& given, std::vector<Point>* shift = nullptr) const {
     Bilateral_assignment a;
     a.site.assign(S.size(), 0);
-    a.mass.assign(sites.size(), 0.0);
-    if (sites.empty() || S.size() == 0) return a;
+    a.mass.assign(given.size(), 0.0);
+    if (shift) shift->assign(S.size(), Point{});
+    if (given.empty() || S.size() == 0) return a;
+    std::vector<Site> wrapped;
+    if (this->wraps) {
+      wrapped = given;
+      for (Site& site : wrapped) this->torus.wrap(site.position);
+    }
+    const std::vector<Site>& sites = this->wraps ? wrapped : given;
     Point flo = this->lo, fhi = this->hi;
-    const std::vector<Point> positions = Base::positions_of(sites, flo, fhi);
-    Ring_grid<D> grid(flo, fhi, double(sites.size()));
+    std::vector<Point> positions = Base::positions_of(sites, flo, fhi);
+    // On the torus every site's images shifted by -1, 0 or +1 period along each axis that wraps, site by
+    // site (so that the grid's ties to the lowest index are ties to the lowest site): with the items and the
+    // sites in the box, they hold the image nearest each item.
+    std::vector<std::uint32_t> source;
+    if (this->wraps) {
+      std::vector<Point> images;
+      std::size_t shifts = 1;
+      for (int k = 0; k < D; ++k) shifts *= 3;
+      for (std::size_t j = 0; j < sites.size(); ++j)
+        for (std::size_t b = 0; b < shifts; ++b) {
+          Point q = positions[j];
+          bool moved = true;
+          std::size_t code = b;
+          for (int k = 0; k < D; ++k, code /= 3) {
+            const double s = code % 3 == 0 ? 0.0 : code % 3 == 1 ? 1.0 : -1.0;
+            if (s != 0 && !(this->torus.period[k] > 0)) moved = false;
+            q[k] += s * this->torus.period[k];
+          }
+          if (!moved) continue;
+          for (int k = 0; k < D; ++k) {
+            flo[k] = std::min(flo[k], q[k]);
+            fhi[k] = std::max(fhi[k], q[k]);
+          }
+          images.push_back(q);
+          source.push_back(static_cast<std::uint32_t>(j));
+        }
+      positions.swap(images);
+    }
+    Ring_grid<D> grid(flo, fhi, double(positions.size()));
     grid.assign(positions);
+    auto site_of = [&](std::uint32_t t) { return this->wraps ? source[t] : t; };
     with_metric(options, [&](const auto& metric) {
       const double scale = metric.spatial_scale();
       for (std::size_t i = 0; i < S.size(); ++i) {
         const Point& x = S.positions[i];
         double best;
-        const std::uint32_t s = grid.nearest(
+        const std::uint32_t t = grid.nearest(
             x, scale,
-            [&](std::uint32_t j) {
-              return metric(Base::squared(x, positions[j]),
+            [&](std::uint32_t u) {
+              const std::uint32_t j = site_of(u);
+              return metric(Base::squared(x, positions[u]),
                             S.compared ? checked_feature_distance(CGAL::to_double(S.feature_distance(
                                                                       S.features[i], sites[j].feature)),
                                                                   S.fn, "item", i, "site", j)
                                        : 0.0);
             },
             best);
+        const std::uint32_t s = site_of(t);
         a.site[i] = s;
         a.mass[s] += density(i);
         a.energy += density(i) * best * best;
+        if (shift && this->wraps)
+          for (int k = 0; k < D; ++k) (*shift)[i][k] = positions[t][k] - sites[s].position[k];
       }
     });
     return a;
   }
 
+  // The distance between two positions; on the torus the shortest between their images.
+  double distance(const Point& a, const Point& b) const {
+    if (!this->wraps) return std::sqrt(Base::squared(a, b));
+    Point p = a, q = b;
+    this->torus.wrap(p);
+    this->torus.wrap(q);
+    double s = 0;
+    for (int k = 0; k < D; ++k) {
+      double d = std::abs(p[k] - q[k]);
+      if (this->torus.period[k] > 0) d = std::min(d, this->torus.period[k] - d);
+      s += d * d;
+    }
+    return std::sqrt(s);
+  }
+
   Discrete_lloyd_step_result<Traits> step(const std::vector<Site>& sites) const {
     Discrete_lloyd_step_result<Traits> r;
-    r.assignment = assign(sites);
+    std::vector<Point> shift;
+    r.assignment = assign(sites, &shift);
+    // On the torus each item counts at its image nearest its site: the centroid of a cell across a face.
     std::vector<std::array<double, D>> sum(sites.size(), std::array<double, D>{});
     for (std::size_t i = 0; i < S.size(); ++i) {
       const double w = density(i);
       auto& acc = sum[r.assignment.site[i]];
-      for (int k = 0; k < D; ++k) acc[k] += w * S.positions[i][k];
+      for (int k = 0; k < D; ++k) acc[k] += w * (S.positions[i][k] - shift[i][k]);
     }
     r.sites = sites;
+    if (this->wraps)
+      for (Site& site : r.sites) this->torus.wrap(site.position);
     double total_move = 0;
     for (std::size_t s = 0; s < sites.size(); ++s) {
       const double m = r.assignment.mass[s];
       if (!(m > 0)) continue;  // no item or no mass: the site stays
       Point c;
       for (int k = 0; k < D; ++k) c[k] = sum[s][k] / m;
-      const std::uint32_t near = this->nearest_item(c);
+      if (this->wraps) this->torus.wrap(c);
+      const std::uint32_t near = this->nearest_item_at(c);
       if (options.update == Site_update::snap_to_item) c = S.positions[near];
-      const double move = std::sqrt(Base::squared(c, sites[s].position));
+      const double move = distance(c, sites[s].position);
+
       r.max_move = std::max(r.max_move, move);
       total_move += move;
       r.sites[s].position = c;
@@ -677,7 +764,7 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
     Bilateral_assignment a = engine.assign(sites);
     result.assignment = std::move(a.site);
     result.mass = std::move(a.mass);
-    for (const auto& site : sites) result.items.push_back(engine.nearest_item(site.position));
+    for (const auto& site : sites) result.items.push_back(engine.nearest_item_at(site.position));
     result.sites = std::move(sites);
     result.status = Status::degenerate_input;
     return result;
@@ -686,6 +773,9 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
   // Copies of a site tie with it for every item and got none: where the first copy was already at its
   // centroid they stayed together for good. Every copy after the first moves by 1/100 of the packing distance
   // first.
+  // On the torus the sites are wrapped first: a whole period apart they are copies.
+  if (engine.wraps && options.max_iterations > 0)
+    for (auto& site : sites) engine.torus.wrap(site.position);
   if (packing > 0 && std::isfinite(packing) &&
       options.max_iterations > 0)  // no iteration: the sites as given
     internal::separate_copies<Traits::dimension>(
@@ -708,7 +798,7 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
     s.energy = step.assignment.energy;
     s.max_move = step.max_move;
     s.mean_move = step.mean_move;
-    s.relative_radius = engine.relative_radius(sites, packing);
+    s.relative_radius = engine.relative_radius_at(sites, packing);
     result.assignment = std::move(step.assignment.site);
     result.mass = std::move(step.assignment.mass);
     sites = std::move(step.sites);
@@ -732,7 +822,7 @@ Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
   if (result.status != Status::interrupted)
     (void)FeatureRecon::internal::report_progress(options.progress, 1.0);
   result.items.reserve(sites.size());
-  for (const auto& site : sites) result.items.push_back(engine.nearest_item(site.position));
+  for (const auto& site : sites) result.items.push_back(engine.nearest_item_at(site.position));
   result.sites = std::move(sites);
   return result;
 }
