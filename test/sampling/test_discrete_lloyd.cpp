@@ -712,8 +712,8 @@ TEST(Discrete_lloyd, TorusRelaxationTilesAndIsTranslationInvariant) {
     EXPECT_NEAR(reported[i], measured[i - 1], 1e-12) << "iteration " << i + 1;
   EXPECT_LT(reported.front(), 0.2);
   EXPECT_GT(measured.back(), 0.7);
-  // Not pushed off the edges: the band within d_hex / 4 of an edge holds about its share of the sites (15%
-  // of the area, 12 sites); Lloyd in the box keeps it nearly empty.
+  // Not pushed off the edges: the band within d_hex / 4 = 1.32 of an edge holds about its share of the sites
+  // (11.7 % of the area, 9.4 sites); Lloyd in the box keeps it nearly empty.
   auto band = [&](const Discrete_lloyd_result<Grey_pixel_traits>& x) {
     std::size_t in = 0;
     for (const auto& s : x.sites)
@@ -813,6 +813,27 @@ TEST(Discrete_lloyd, TorusNearestItemsAndSpacingLieAcrossTheFaces) {
   EXPECT_NEAR(q.history[0].relative_radius, 1 / std::sqrt(2 * 48.0 * 40 / (std::sqrt(3.0) * 2)), 1e-12);
 }
 
+TEST(Discrete_lloyd, TorusTiesGoToTheLowestSite) {
+  // On an 8 x 8 picture the pixel (0.5, 4.5) is 1 from site 1 at (1.5, 4.5) and 1 from site 0 at (7.5, 4.5)
+  // across the face x = 0 (its image at -0.5): it goes to site 0, as every exact tie goes to the lowest site
+  // whichever image wins it. Pixel (4.5, 4.5) is 3 from both, directly.
+  const auto px = step_image(8, 8, 0, 0, 1);
+  const std::vector<Site> sites{{{7.5, 4.5}, {40}}, {{1.5, 4.5}, {40}}};
+  Discrete_lloyd_options<2> o;
+  o.periodic = true;
+  const auto a = bilateral_voronoi_assignment(px, sites, o);
+  EXPECT_EQ(a.site[4 * 8 + 0], 0u);
+  EXPECT_EQ(a.site[4 * 8 + 4], 0u);
+  EXPECT_EQ(a.site[4 * 8 + 1], 1u);
+  EXPECT_EQ(a.site[4 * 8 + 7], 0u);
+  // The other way round the ties go to the other site: the lowest index, not the nearest image.
+  const std::vector<Site> swapped{sites[1], sites[0]};
+  const auto b = bilateral_voronoi_assignment(px, swapped, o);
+  EXPECT_EQ(b.site[4 * 8 + 0], 0u);
+  EXPECT_EQ(b.site[4 * 8 + 4], 0u);
+  EXPECT_EQ(b.site[4 * 8 + 7], 1u);
+}
+
 TEST(Discrete_lloyd, TorusDegenerateAndRefused) {
   // Two sites a whole period apart are one position on the torus: they move apart as copies do.
   const auto row = step_image(30, 1, 0, 0, 1);
@@ -836,18 +857,30 @@ TEST(Discrete_lloyd, TorusDegenerateAndRefused) {
       [&] {
         discrete_bilateral_lloyd(plane, std::vector<std::size_t>{0, 5}, o3);
       },
-      "periodic needs items that fill their box: 2D items, or 3D items with intrinsic_dimension 3 (got 0)"));
+      "periodic needs items that fill their box: 2D items, or 3D items of intrinsic dimension 3 (estimated "
+      "2)"));
+  o3.intrinsic_dimension = 2;
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+      [&] {
+        discrete_bilateral_lloyd(plane, std::vector<std::size_t>{0, 5}, o3);
+      },
+      "(intrinsic_dimension 2)"));
+  o3.intrinsic_dimension = 0;
   // A volume does: 8 sites in a 6 x 6 x 6 lattice relax on its torus [-0.5, 5.5)^3.
   std::vector<test::Point_3> cube;
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j)
       for (int k = 0; k < 6; ++k) cube.emplace_back(i, j, k);
+  // intrinsic_dimension 0: estimated as 3, the same as given.
+  const auto v0 =
+      discrete_bilateral_lloyd(cube, std::vector<std::size_t>{0, 43, 86, 129, 172, 215, 50, 101}, o3);
   o3.intrinsic_dimension = 3;
   const auto v =
       discrete_bilateral_lloyd(cube, std::vector<std::size_t>{0, 43, 86, 129, 172, 215, 50, 101}, o3);
   EXPECT_EQ(v.status, Status::success);
   for (const auto& s : v.sites)
     for (const double x : s.position) EXPECT_TRUE(x >= -0.5 && x < 5.5) << x;
+  for (std::size_t j = 0; j < v.sites.size(); ++j) EXPECT_EQ(v0.sites[j].position, v.sites[j].position);
   EXPECT_GT(v.history.back().relative_radius, v.history.front().relative_radius + 0.2)
       << v.history.front().relative_radius;
 }

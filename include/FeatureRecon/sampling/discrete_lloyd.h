@@ -81,9 +81,10 @@ struct Discrete_lloyd_options {
   /// on the torus (ties to the lowest site index), a site moves to the centroid of its items taken across
   /// the faces (each item at its image nearest the site) and wraps into the box, and the nearest item, the
   /// moves and the relative radius are the torus's. The sites then tile: a picture stippled on its torus can
-  /// be repeated without seams. Copies of a site (equal positions once wrapped) move apart first. An axis of
-  /// width 0 (items on one line) does not wrap. For 2D items, and for 3D items of intrinsic_dimension 3
-  /// (volumes); refused for other 3D items (a surface does not fill its box). Default false.
+  /// be repeated without seams. Copies of a site (equal positions once wrapped) move apart first; a site
+  /// without items wraps too. Items all at one position give a box of no width, which does not wrap. For 2D
+  /// items, and for 3D items of intrinsic dimension 3 (volumes: intrinsic_dimension 3, or 0 and estimated);
+  /// refused for other 3D items (a surface does not fill its box). Default false.
   bool periodic = false;
   /// Called after each iteration with its statistics and the sites' positions after the move; returning
   /// false stops there (early stopping on rho or on an oscillation the callback computes). Default: none.
@@ -103,10 +104,11 @@ struct Bilateral_assignment {
 /// Result of discrete_lloyd_step().
 template <class Traits>
 struct Discrete_lloyd_step_result {
-  std::vector<Bilateral_site<Traits>> sites;  ///< the moved sites (a site without mass stays where it was)
-  Bilateral_assignment assignment;            ///< the assignment of the sites given to the step
-  double max_move = 0;                        ///< largest move
-  double mean_move = 0;                       ///< mean move
+  /// the moved sites (a site without mass stays where it was; on the torus, wrapped into the box)
+  std::vector<Bilateral_site<Traits>> sites;
+  Bilateral_assignment assignment;  ///< the assignment of the sites given to the step
+  double max_move = 0;              ///< largest move
+  double mean_move = 0;             ///< mean move
 };
 
 /// Result of discrete_bilateral_lloyd().
@@ -116,10 +118,10 @@ struct Discrete_lloyd_result {
   /// Per item: its site at the last iteration (with no iteration done: among the starting sites).
   std::vector<std::uint32_t> assignment;
   std::vector<double> mass;  ///< per site: the density of its items, as `assignment`
-  /// Per site: the item nearest to its final position (Euclidean, ties to the lowest index), whose feature a
-  /// site that moved carries; with Site_update::snap_to_item, the item it sits on. The way back from a site
-  /// to the user's item (its other fields). A site that never received an item keeps the feature it started
-  /// with. Empty when there are no items.
+  /// Per site: the item nearest to its final position (Euclidean or on the torus, ties to the lowest index),
+  /// whose feature a site that moved carries; with Site_update::snap_to_item, the item it sits on. The way
+  /// back from a site to the user's item (its other fields). A site that never received an item keeps the
+  /// feature it started with. Empty when there are no items.
   std::vector<std::size_t> items;
   /// One entry per iteration done, taken before its move (Lloyd_iteration_statistics): the final sites'
   /// relative radius is sampling_quality() of `sites`.
@@ -516,11 +518,13 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       FeatureRecon::internal::throw_invalid_argument(
           fn, "energy_tolerance and move_tolerance must be finite and >= 0, got ", o.energy_tolerance,
           " and ", o.move_tolerance);
-    if (o.periodic && D == 3 && o.intrinsic_dimension != 3)
-      FeatureRecon::internal::throw_invalid_argument(
-          fn,
-          "periodic needs items that fill their box: 2D items, or 3D items with intrinsic_dimension 3 (got ",
-          o.intrinsic_dimension, ")");
+    if (o.periodic && D == 3) {
+      if (this->intrinsic == 0) this->intrinsic = Base::resolve_intrinsic_dimension(S, 0);
+      if (this->intrinsic != 3)
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "periodic needs items that fill their box: 2D items, or 3D items of intrinsic dimension 3 (",
+            o.intrinsic_dimension == 0 ? "estimated " : "intrinsic_dimension ", this->intrinsic, ")");
+    }
     if (o.periodic && S.size() > 0) {
       const double spacing = this->grid_spacing();
       Point box_lo = this->lo, box_hi = this->hi;
@@ -558,6 +562,10 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       std::vector<Point> images;
       std::size_t shifts = 1;
       for (int k = 0; k < D; ++k) shifts *= 3;
+      if (sites.size() > (std::numeric_limits<std::uint32_t>::max() - 1) / shifts)
+        FeatureRecon::internal::throw_invalid_argument(
+            S.fn, "too many sites on the torus (", sites.size(), "; at most ",
+            (std::numeric_limits<std::uint32_t>::max() - 1) / shifts, ": each has ", shifts, " images)");
       for (std::size_t j = 0; j < sites.size(); ++j)
         for (std::size_t b = 0; b < shifts; ++b) {
           Point q = positions[j];

@@ -90,9 +90,10 @@ struct Kernel_relaxation_options {
   /// others (translated by whole periods, as far as the kernel reaches; never its own), the nearest item and
   /// the density average are taken across the faces too, and the relative radius measures torus distances.
   /// The sites then tile: a picture stippled on its torus can be repeated without seams. Copies of a site
-  /// (equal positions once wrapped) move apart first. An axis of width 0 (items on one line) does not wrap.
-  /// Refused with snap_to_item, and when the kernel's reach r (cutoff x spatial kernel width x the largest
-  /// scale of any item) holds more than 4,096 images of a site, prod_k (2 ceil(r / P_k) + 1). Default false.
+  /// (equal positions once wrapped) move apart first. Items all at one position give a box of no width, which
+  /// does not wrap. Refused with snap_to_item, and when the kernel's reach r (cutoff x spatial kernel width x
+  /// the largest scale of any item) holds more than 4,096 images of a site, prod_k (2 ceil(r / P_k) + 1).
+  /// Default false.
   bool periodic = false;
   std::size_t max_iterations = 100;  ///< iteration cap (accepted steps); default 100
   /// The first step length as a fraction of the distance to the neighbours (a single pair at distance d,
