@@ -145,9 +145,7 @@ struct Box_torus {
   void wrap(Point& p) const {
     for (int k = 0; k < D; ++k) {
       if (!(period[k] > 0) || (p[k] >= lo[k] && p[k] < hi[k])) continue;
-      double t = std::fmod(p[k] - lo[k], period[k]);
-      if (t < 0) t += period[k];
-      const double x = lo[k] + t;
+      const double x = lo[k] + torus_coordinate(p[k] - lo[k], period[k]);
       p[k] = x < hi[k] ? x : lo[k];
     }
   }
@@ -622,25 +620,23 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
     Point p = a, q = b;
     this->torus.wrap(p);
     this->torus.wrap(q);
-    double s = 0;
-    for (int k = 0; k < D; ++k) {
-      double d = std::abs(p[k] - q[k]);
-      if (this->torus.period[k] > 0) d = std::min(d, this->torus.period[k] - d);
-      s += d * d;
-    }
-    return std::sqrt(s);
+    // Along an axis of period 0 the difference comes out negated: squared, the same.
+    return std::sqrt(torus_squared_distance(p, q, this->torus.period));
   }
 
   Discrete_lloyd_step_result<Traits> step(const std::vector<Site>& sites) const {
     Discrete_lloyd_step_result<Traits> r;
     std::vector<Point> shift;
-    r.assignment = assign(sites, &shift);
+    r.assignment = assign(sites, this->wraps ? &shift : nullptr);
     // On the torus each item counts at its image nearest its site: the centroid of a cell across a face.
     std::vector<std::array<double, D>> sum(sites.size(), std::array<double, D>{});
     for (std::size_t i = 0; i < S.size(); ++i) {
       const double w = density(i);
       auto& acc = sum[r.assignment.site[i]];
-      for (int k = 0; k < D; ++k) acc[k] += w * (S.positions[i][k] - shift[i][k]);
+      if (this->wraps)
+        for (int k = 0; k < D; ++k) acc[k] += w * (S.positions[i][k] - shift[i][k]);
+      else
+        for (int k = 0; k < D; ++k) acc[k] += w * S.positions[i][k];
     }
     r.sites = sites;
     if (this->wraps)
