@@ -885,4 +885,251 @@ TEST(Discrete_lloyd, TorusDegenerateAndRefused) {
       << v.history.front().relative_radius;
 }
 
+TEST(Discrete_lloyd, ItemSpacingPerAxisOfALattice) {
+  // A full lattice has its own step along each axis; anything else keeps the one spacing estimated for all.
+  using Point_2 = test::Point_2;
+  using Point_3 = test::Point_3;
+  auto spacing2 = [](const std::vector<Point_2>& items) {
+    return sampling::internal::Item_domain<Point_traits<Point_2>>(items, Point_traits<Point_2>(), 0, "test",
+                                                                  false)
+        .axis_spacing();
+  };
+  auto single2 = [](const std::vector<Point_2>& items) {
+    return sampling::internal::Item_domain<Point_traits<Point_2>>(items, Point_traits<Point_2>(), 0, "test",
+                                                                  false)
+        .grid_spacing();
+  };
+  std::vector<Point_2> lattice;  // 10 x 7, steps 1 x 2, listed column by column
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 7; ++j) lattice.emplace_back(0.5 + i, 1 + 2 * j);
+  EXPECT_EQ(spacing2(lattice), (std::array<double, 2>{1.0, 2.0}));
+  const double h = single2(lattice);  // (9 + h)(12 + h) = 70 h^2
+  EXPECT_NEAR(h, (21 + std::sqrt(21.0 * 21 + 4 * 69 * 108)) / (2 * 69), 1e-12);
+  // Not a lattice: one item moved off it, one item missing (a copy in its place), one row of 10.
+  auto off = lattice;
+  off[17] = Point_2(off[17].x() + 0.25, off[17].y());
+  EXPECT_EQ(spacing2(off), (std::array<double, 2>{single2(off), single2(off)}));
+  auto copy = lattice;
+  copy[17] = copy[18];
+  EXPECT_EQ(spacing2(copy), (std::array<double, 2>{single2(copy), single2(copy)}));
+  auto uneven = lattice;  // the last column 1.5 from its neighbour: 10 x 7 coordinates, not equally spaced
+  for (auto& p : uneven)
+    if (p.x() == 9.5) p = Point_2(10, p.y());
+  EXPECT_EQ(spacing2(uneven), (std::array<double, 2>{single2(uneven), single2(uneven)}));
+  std::vector<Point_2> row;
+  for (int i = 0; i < 10; ++i) row.emplace_back(3 * i, 4);
+  EXPECT_EQ(spacing2(row), (std::array<double, 2>{3.0, 3.0}));
+  // A square lattice 0.1 apart keeps the single spacing bit for bit, whatever its steps' last bits (here
+  // 1.2000000000000002 / 12 = 0.10000000000000002 along x, 0.8 / 8 = 0.1 along y).
+  std::vector<Point_2> fine;
+  for (int i = 0; i < 13; ++i)
+    for (int j = 0; j < 9; ++j) fine.emplace_back(0.1 * i, 0.1 * j);
+  EXPECT_EQ(spacing2(fine), (std::array<double, 2>{single2(fine), single2(fine)}));
+  // 3D: a 4 x 5 x 3 lattice of steps 1, 2, 3.
+  std::vector<Point_3> block;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 4; ++i) block.emplace_back(i, 2 * j, 3 * k);
+  EXPECT_EQ((sampling::internal::Item_domain<Point_traits<Point_3>>(block, Point_traits<Point_3>(), 0, "test",
+                                                                    false)
+                 .axis_spacing()),
+            (std::array<double, 3>{1.0, 2.0, 3.0}));
+}
+
+// Brute force on the torus [0, P0) x [0, P1) for items without features: each item's site (nearest image,
+// ties to the lowest index) and each site's centroid of its items at their images nearest it, modulo P.
+struct Point_torus_oracle {
+  std::vector<std::uint32_t> site;
+  std::vector<std::array<double, 2>> centroid;
+};
+Point_torus_oracle point_torus_brute_force(const std::vector<test::Point_2>& items,
+                                           const std::vector<std::array<double, 2>>& sites, double p0,
+                                           double p1) {
+  Point_torus_oracle o;
+  std::vector<std::array<double, 2>> sum(sites.size(), {0.0, 0.0});
+  std::vector<double> count(sites.size(), 0.0);
+  for (const auto& item : items) {
+    double best = std::numeric_limits<double>::infinity();
+    std::uint32_t arg = 0;
+    for (std::size_t j = 0; j < sites.size(); ++j) {
+      const double d = torus_squared(item.x(), item.y(), sites[j], p0, p1);
+      if (d < best) {
+        best = d;
+        arg = static_cast<std::uint32_t>(j);
+      }
+    }
+    o.site.push_back(arg);
+    std::array<double, 2> shift{};
+    torus_squared(item.x(), item.y(), sites[arg], p0, p1, &shift);
+    sum[arg][0] += item.x() - shift[0];
+    sum[arg][1] += item.y() - shift[1];
+    count[arg] += 1;
+  }
+  for (std::size_t j = 0; j < sites.size(); ++j)
+    o.centroid.push_back(count[j] > 0 ? std::array<double, 2>{sum[j][0] / count[j], sum[j][1] / count[j]}
+                                      : sites[j]);
+  return o;
+}
+
+// The distance on the torus of periods p0, p1 between two positions given anywhere.
+double torus_gap(const std::array<double, 2>& a, const std::array<double, 2>& b, double p0, double p1) {
+  return std::sqrt(torus_squared(a[0], a[1], b, p0, p1));
+}
+
+TEST(Discrete_lloyd, TorusOfAnAnisotropicLatticeIsItsCells) {
+  // A 10 x 7 lattice of steps 1 x 2 at (0.5 + i, 1 + 2 j): the torus [0, 10) x [0, 14), the box of its
+  // cells (one spacing estimated for both axes gave periods 10.41 x 13.41, and the lattice did not tile).
+  using Point_2 = test::Point_2;
+  using Point_site = Bilateral_site<Point_traits<Point_2>>;
+  std::vector<Point_2> items;
+  for (int j = 0; j < 7; ++j)
+    for (int i = 0; i < 10; ++i) items.emplace_back(0.5 + i, 1 + 2 * j);
+  std::mt19937_64 rng(9);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Point_site> sites(9);
+  std::vector<std::array<double, 2>> where;
+  for (auto& s : sites) {
+    s.position = {-3 + 16 * u(), -4 + 22 * u()};
+    where.push_back(s.position);
+  }
+  Discrete_lloyd_options<2> o;
+  o.periodic = true;
+  const auto want = point_torus_brute_force(items, where, 10, 14);
+  EXPECT_EQ(bilateral_voronoi_assignment(items, sites, o).site, want.site);
+  const auto step = discrete_lloyd_step(items, sites, o);
+  for (std::size_t j = 0; j < sites.size(); ++j) {
+    const auto& p = step.sites[j].position;
+    EXPECT_TRUE(p[0] >= 0 && p[0] < 10 && p[1] >= 0 && p[1] < 14) << p[0] << ", " << p[1];
+    EXPECT_LT(torus_gap(p, want.centroid[j], 10, 14), 1e-9) << "site " << j;
+  }
+  // The relative radius is measured on that torus, against its area 140.
+  o.max_iterations = 1;
+  const std::vector<Point_site> pair{{{0.5, 1}, {}}, {{9.5, 13}, {}}};  // 1 x 2 apart across the corner
+  const auto r = discrete_bilateral_lloyd(items, pair, o);
+  ASSERT_EQ(r.history.size(), 1u);
+  EXPECT_NEAR(r.history[0].relative_radius, std::sqrt(5.0) / std::sqrt(2 * 140.0 / (std::sqrt(3.0) * 2)),
+              1e-12);
+  // Without the torus too: the pair 1 x 2 apart directly, against the area of the cells, 140.
+  Discrete_lloyd_options<2> plain;
+  plain.max_iterations = 1;
+  const std::vector<Point_site> near{{{0.5, 1}, {}}, {{1.5, 3}, {}}};
+  const auto q = discrete_bilateral_lloyd(items, near, plain);
+  ASSERT_EQ(q.history.size(), 1u);
+  EXPECT_NEAR(q.history[0].relative_radius, std::sqrt(5.0) / std::sqrt(2 * 140.0 / (std::sqrt(3.0) * 2)),
+              1e-12);
+}
+
+TEST(Discrete_lloyd, TorusOfAGivenPeriod) {
+  // 150 white-noise items in [0, 1)^2 on the torus of periods 1 x 1 (the noise's own), and on a larger one,
+  // 1.5 x 2: against brute force, whatever the origin (the box is centred on the items').
+  using Point_2 = test::Point_2;
+  using Point_site = Bilateral_site<Point_traits<Point_2>>;
+  const std::vector<Point_2> items = test::white_noise(150, 3);
+  double lo[2] = {1, 1}, hi[2] = {0, 0};
+  for (const auto& p : items)
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  std::mt19937_64 rng(5);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  for (const std::array<double, 2> period : {std::array<double, 2>{1, 1}, std::array<double, 2>{1.5, 2}}) {
+    std::vector<Point_site> sites(12);
+    std::vector<std::array<double, 2>> where;
+    for (auto& s : sites) {
+      s.position = {-1 + 3 * u(), -1 + 3 * u()};
+      where.push_back(s.position);
+    }
+    Discrete_lloyd_options<2> o;
+    o.periodic = true;
+    o.period = {period[0], period[1]};
+    const auto want = point_torus_brute_force(items, where, period[0], period[1]);
+    EXPECT_EQ(bilateral_voronoi_assignment(items, sites, o).site, want.site) << period[0];
+    const auto step = discrete_lloyd_step(items, sites, o);
+    for (std::size_t j = 0; j < sites.size(); ++j) {
+      const auto& p = step.sites[j].position;
+      for (int k = 0; k < 2; ++k) {
+        const double from = lo[k] - (period[k] - (hi[k] - lo[k])) / 2;
+        EXPECT_TRUE(p[k] >= from && p[k] < from + period[k]) << p[k] << " axis " << k;
+      }
+      EXPECT_LT(torus_gap(p, want.centroid[j], period[0], period[1]), 1e-9) << "site " << j;
+    }
+    // The relative radius against the torus's area.
+    o.max_iterations = 1;
+    const auto r = discrete_bilateral_lloyd(items, sites, o);
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < where.size(); ++i)
+      for (std::size_t j = i + 1; j < where.size(); ++j)
+        shortest = std::min(shortest, torus_gap(where[i], where[j], period[0], period[1]));
+    ASSERT_EQ(r.history.size(), 1u);
+    EXPECT_NEAR(r.history[0].relative_radius,
+                shortest / std::sqrt(2 * period[0] * period[1] / (std::sqrt(3.0) * 12)), 1e-12);
+  }
+  // A row of items has no extent across it; a given period wraps that axis too: a site at y = 3 is at
+  // y = 1 on the torus of period 4, which is [-2, 2) across the row at y = 0.
+  std::vector<Point_2> row;
+  for (int i = 0; i < 10; ++i) row.emplace_back(i, 0);
+  Discrete_lloyd_options<2> o;
+  o.periodic = true;
+  o.period = {10, 4};
+  const auto s = discrete_lloyd_step(row, std::vector<Point_site>{{{4.2, 3}, {}}}, o);
+  EXPECT_NEAR(s.sites[0].position[0], 4.5, 1e-12);  // the centroid of all ten, each nearest as it is
+  EXPECT_EQ(s.sites[0].position[1], 0.0);
+  EXPECT_NEAR(s.max_move, std::sqrt(0.09 + 1.0), 1e-12);  // from (4.2, -1) on the torus
+  // Refused: without periodic, of the wrong length, out of range, shorter than the items' extent.
+  auto refused = [&](std::vector<double> period, bool periodic, const std::string& message) {
+    Discrete_lloyd_options<2> b;
+    b.periodic = periodic;
+    b.period = std::move(period);
+    return test::throws_with<std::invalid_argument>(
+        [&] {
+          discrete_bilateral_lloyd(row, std::vector<std::size_t>{0, 5}, b);
+        },
+        message);
+  };
+  EXPECT_TRUE(refused({10, 4}, false, "period is given (2 values) but periodic is false"));
+  EXPECT_TRUE(refused({10}, true, "period has 1 values for positions of dimension 2"));
+  EXPECT_TRUE(refused({10, 0}, true, "period[1] must be in [1e-150, 1e150], got 0"));
+  EXPECT_TRUE(
+      refused({8.5, 4}, true,
+              "period[0] = 8.5 is shorter than the items' extent along axis 0 (9): the items must fit "
+              "in one period"));
+  EXPECT_TRUE(refused({10, 1e101}, true, "period[1] = 1e+101 puts the torus's faces beyond +-1e100"));
+  Discrete_lloyd_options<2> scale;
+  scale.periodic = true;
+  scale.period = {10, 1e100};
+  scale.sigma_position = 1e-50;
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+      [&] {
+        discrete_bilateral_lloyd(row, std::vector<std::size_t>{0, 5}, scale);
+      },
+      "sigma_position (1e-50) is too small for positions spanning 1e+100"));
+  // No items: the period is still checked.
+  Discrete_lloyd_options<2> lone;
+  lone.period = {1, 1};
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+      [&] {
+        discrete_bilateral_lloyd(std::vector<Point_2>{}, std::vector<Point_site>{{{0, 0}, {}}}, lone);
+      },
+      "period is given (2 values) but periodic is false"));
+  // A period of the extent itself: the end items (9, 0) and (0, 0) are one point of the torus [0, 9) x
+  // [-2, 2), the first one (9, 0) nearest to a site there; a site snapped to it comes back in the box, at 0.
+  const std::vector<Point_2> back(row.rbegin(), row.rend());
+  Discrete_lloyd_options<2> tight;
+  tight.periodic = true;
+  tight.period = {9, 4};
+  tight.max_iterations = 0;
+  EXPECT_EQ(discrete_bilateral_lloyd(back, std::vector<Point_site>{{{0, 0}, {}}}, tight).items,
+            std::vector<std::size_t>{0});
+  tight.update = Site_update::snap_to_item;
+  std::vector<Point_site> ends{{{8.9, 0.5}, {}}, {{3.3, -0.2}, {}}, {{5.8, 1}, {}}};
+  for (int step = 0; step < 3; ++step) {
+    ends = discrete_lloyd_step(back, ends, tight).sites;
+    for (const auto& site : ends) {
+      EXPECT_TRUE(site.position[0] >= 0 && site.position[0] < 9) << site.position[0];
+      EXPECT_EQ(site.position[1], 0.0);
+    }
+  }
+}
+
 }  // namespace

@@ -22,6 +22,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "sampling/sampling_test_utilities.h"
@@ -743,14 +744,19 @@ TEST(Kernel_relaxation, CopiesMoveApartByAHundredthOfTheKernelWidth) {
 
 // The torus energy by brute force: every pair of distinct sites through every image s = (a W, b H) with
 // |a|, |b| <= 4, the kernel minus its value at the cut-off (scales 1: no density; sigma_position 1).
-double torus_energy(const std::vector<Site>& sites, double w, double h, double tau, double cutoff,
+// Sites without features (Point_traits) take sigma_feature infinity.
+template <class S>
+double torus_energy(const std::vector<S>& sites, double w, double h, double tau, double cutoff,
                     double sigma_feature) {
   double total = 0;
   for (std::size_t i = 0; i < sites.size(); ++i)
     for (std::size_t j = 0; j < sites.size(); ++j) {
       if (j == i) continue;
-      const double df = (sites[i].feature[0] - sites[j].feature[0]) / 255.0;  // Pixel_traits' distance
-      const double f2 = std::isinf(sigma_feature) ? 0.0 : df * df / (sigma_feature * sigma_feature);
+      double f2 = 0;
+      if constexpr (std::is_same_v<S, Site>) {
+        const double df = (sites[i].feature[0] - sites[j].feature[0]) / 255.0;  // Pixel_traits' distance
+        f2 = std::isinf(sigma_feature) ? 0.0 : df * df / (sigma_feature * sigma_feature);
+      }
       for (int a = -4; a <= 4; ++a)
         for (int b = -4; b <= 4; ++b) {
           const double dx = sites[i].position[0] - sites[j].position[0] - a * w;
@@ -1030,6 +1036,77 @@ TEST(Kernel_relaxation, TorusDensityBlocksWrapOnAnyLattice) {
   EXPECT_NEAR(a.energy, b.energy, 1e-12 * a.energy);
   for (std::size_t i = 0; i < sites.size(); ++i)
     for (int k = 0; k < 2; ++k) EXPECT_NEAR(a.gradient[i][k], b.gradient[i][k], 1e-9 * a.energy) << i;
+}
+
+TEST(Kernel_relaxation, TorusOfAGivenPeriodAndOfAnAnisotropicLattice) {
+  // The 12 irregular pixels (automatic torus 12 x 9) on the torus of a given period 15 x 11: the energy is
+  // the sum over every image at those periods, whatever the origin, for kernels within and beyond a period.
+  const std::vector<Grey_pixel> px = test::irregular_pixels();
+  std::mt19937_64 rng(7);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Site> sites(10);
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    sites[i] = {{-3 + 21 * u(), -3 + 17 * u()}, {static_cast<std::uint8_t>(25 * i)}};
+  Kernel_relaxation_options<2> o;
+  o.periodic = true;
+  o.period = {15, 11};
+  for (const double sigma_feature : {std::numeric_limits<double>::infinity(), 0.3})
+    for (const double tau : {1.5, 6.0}) {
+      o.kernel_width = tau;
+      o.sigma_feature = sigma_feature;
+      const double want = torus_energy(sites, 15, 11, tau, 3, sigma_feature);
+      ASSERT_GT(want, 0);
+      EXPECT_NEAR(kernel_energy(px, sites, o).energy, want, 1e-12 * want)
+          << "tau " << tau << " sigma_feature " << sigma_feature;
+    }
+  // The box is centred on the pixels' (their centres span [0.5, 9.5] x [0.5, 6.5]), and so is the torus.
+  const sampling::internal::Kernel_engine<Grey_pixel_traits> given(px, o, Grey_pixel_traits(), 10, "test");
+  EXPECT_EQ(given.box_lo, (std::array<double, 2>{-2.5, -2.0}));
+  EXPECT_EQ(given.box_hi, (std::array<double, 2>{12.5, 9.0}));
+  EXPECT_EQ(given.torus.period, (std::array<double, 2>{15.0, 11.0}));
+  // Exactly the given periods also far from the origin, where the box's faces are rounded (1e6 + 0.1 +
+  // [0, 1)^2 in 3.3 x 2.7: the faces lie 3.300000000046566 and 2.699999999953434 apart).
+  std::vector<test::Point_2> far;
+  for (const auto& p : test::white_noise(20, 1)) far.emplace_back(1e6 + 0.1 + p.x(), 1e6 + 0.1 + p.y());
+  Kernel_relaxation_options<2> f;
+  f.periodic = true;
+  f.period = {3.3, 2.7};
+  const sampling::internal::Kernel_engine<Point_traits<test::Point_2>> away(
+      far, f, Point_traits<test::Point_2>(), 5, "test");
+  EXPECT_EQ(away.torus.period, (std::array<double, 2>{3.3, 2.7}));
+  // A 10 x 7 lattice of steps 1 x 2 at (0.5 + i, 1 + 2 j): its box is that of its cells, [0, 10] x [0, 14],
+  // in the plain box as on the torus (one spacing for both axes gave [-0.21, 10.21] x [0.29, 13.71]).
+  using Point_2 = test::Point_2;
+  using Point_site = Bilateral_site<Point_traits<Point_2>>;
+  std::vector<Point_2> lattice;
+  for (int j = 0; j < 7; ++j)
+    for (int i = 0; i < 10; ++i) lattice.emplace_back(0.5 + i, 1 + 2 * j);
+  std::vector<Point_site> points(12);
+  for (auto& p : points) p.position = {-2 + 14 * u(), -2 + 18 * u()};
+  Kernel_relaxation_options<2> a;
+  for (const bool periodic : {false, true}) {
+    a.periodic = periodic;
+    const sampling::internal::Kernel_engine<Point_traits<Point_2>> e(lattice, a, Point_traits<Point_2>(), 12,
+                                                                     "test");
+    EXPECT_EQ(e.box_lo, (std::array<double, 2>{0.0, 0.0})) << periodic;
+    EXPECT_EQ(e.box_hi, (std::array<double, 2>{10.0, 14.0})) << periodic;
+  }
+  a.kernel_width = 2.5;
+  const double want = torus_energy(points, 10, 14, 2.5, 3, std::numeric_limits<double>::infinity());
+  EXPECT_NEAR(kernel_energy(lattice, points, a).energy, want, 1e-12 * want);
+  // Refused without periodic, and shorter than the items' extent.
+  Kernel_relaxation_options<2> b;
+  b.period = {15, 11};
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_energy(px, sites, b); },
+                                                       "period is given (2 values) but periodic is false"));
+  b.periodic = true;
+  b.period = {15};
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_energy(px, sites, b); },
+                                                       "period has 1 values for positions of dimension 2"));
+  b.period = {15, 5.5};
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_relaxation(px, sites, b); },
+                                                       "period[1] = 5.5 is shorter than the items' extent "
+                                                       "along axis 1 (6): the items must fit in one period"));
 }
 
 }  // namespace

@@ -68,24 +68,34 @@ struct Discrete_lloyd_options {
   double energy_tolerance = 0;
   /// stop when no site moved farther than this (units of the positions); default 0
   double move_tolerance = 0;
-  /// Area (2D items, surfaces) or volume of the domain for the relative radius; default 0: the bounding box
-  /// of 2D items widened by one item spacing (so a W x H image of pixels has area W H), the estimated surface
-  /// area of 3D surface items, the bounding box of volume items widened by one item spacing.
+  /// Area (2D items, surfaces) or volume of the domain for the relative radius; default 0: the measure of the
+  /// box of 2D items and of volume items (their bounding box widened by the item spacing of each axis, so a
+  /// W x H image of pixels has area W H; with `period`, the torus's), the estimated surface area of 3D
+  /// surface items.
   double domain_measure = 0;
   /// 2 (images, surfaces: rho against the hexagonal packing) or 3 (volumes: against the FCC packing). Default
   /// 0: 2 for 2D items; for 3D items, 2 when most have a flat neighbourhood (as
   /// weighted_sample_elimination()).
   int intrinsic_dimension = 0;
-  /// The items fill a box that is a torus: their bounding box widened by half an item spacing on every side
-  /// (a W x H image of pixels: [0, W] x [0, H]), its widths the periods. Every item goes to the site nearest
-  /// on the torus (ties to the lowest site index), a site moves to the centroid of its items taken across
-  /// the faces (each item at its image nearest the site) and wraps into the box, and the nearest item, the
-  /// moves and the relative radius are the torus's. The sites then tile: a picture stippled on its torus can
-  /// be repeated without seams. Copies of a site (equal positions once wrapped) move apart first; a site
-  /// without items wraps too. Items all at one position give a box of no width, which does not wrap. For 2D
-  /// items, and for 3D items of intrinsic dimension 3 (volumes: intrinsic_dimension 3, or 0 and estimated);
-  /// refused for other 3D items (a surface does not fill its box). Default false.
+  /// The items fill a box that is a torus: their bounding box widened by half the item spacing of each axis
+  /// (a W x H image of pixels: [0, W] x [0, H]; items on a lattice of steps 1 x 2: the box of its cells), its
+  /// widths the periods; or the box of the widths `period` centred on that bounding box. Every item goes to
+  /// the site nearest on the torus (ties to the lowest site index), a site moves to the centroid of its items
+  /// taken across the faces (each item at its image nearest the site) and wraps into the box, and the nearest
+  /// item, the moves and the relative radius are the torus's. The sites then tile: a picture stippled on its
+  /// torus can be repeated without seams. Copies of a site (equal positions once wrapped) move apart first; a
+  /// site without items wraps too. Items all at one position give a box of no width, which does not wrap
+  /// (unless `period` is given). For
+  /// 2D items, and for 3D items of intrinsic dimension 3 (volumes: intrinsic_dimension 3, or 0 and
+  /// estimated); refused for other 3D items (a surface does not fill its box). Default false.
   bool periodic = false;
+  /// With `periodic`, the periods, one per axis, instead of the automatic ones: for items that are no full
+  /// lattice (the automatic widening is then one spacing estimated for all axes), or a torus larger than the
+  /// items' box. Each in [1e-150, 1e150] and at least the items' extent along its axis; the torus is the box
+  /// of these widths centred on the items' bounding box (sites come back wrapped into it), and its measure is
+  /// the domain's unless domain_measure is given. An axis of the items' extent 0 then wraps too. Default
+  /// empty: automatic. Given without `periodic`, refused (as the samplers' `period`).
+  std::vector<double> period;
   /// Called after each iteration with its statistics and the sites' positions after the move; returning
   /// false stops there (early stopping on rho or on an oscillation the callback computes). Default: none.
   std::function<bool(Lloyd_iteration_statistics&, const std::vector<std::array<double, Dimension>>&)>
@@ -268,11 +278,55 @@ class Item_domain {
   // The torus of a box around the items (set_torus()); the plain space unless `wraps`.
   bool wraps = false;
   Box_torus<D> torus;
+  // The periods are the box's widths, or exactly the given ones (take_period()).
   void set_torus(const Point& box_lo, const Point& box_hi) {
     wraps = true;
     torus.lo = box_lo;
     torus.hi = box_hi;
-    for (int k = 0; k < D; ++k) torus.period[k] = box_hi[k] - box_lo[k];
+    for (int k = 0; k < D; ++k) torus.period[k] = has_period ? given_period[k] : box_hi[k] - box_lo[k];
+  }
+
+  // Reads a relaxation's `period` option: refused without `periodic`, of another length than D, outside
+  // [1e-150, 1e150] (torus_period()), shorter than the items' extent along its axis (the items must fit in
+  // one period), with a box reaching beyond +-1e100 (as items and sites) or spanning more than 2^400
+  // sigma_position (check_position_scale()). Empty: the periods are automatic (relaxation_box()).
+  void take_period(const std::vector<double>& period, bool periodic, double sigma_position, const char* fn) {
+    if (period.empty()) return;
+    const std::array<double, std::size_t(D)> p = torus_period<std::size_t(D)>(period, periodic, fn);
+    double largest = 0;
+    for (int k = 0; k < D; ++k) {
+      const double e = hi[k] - lo[k], from = lo[k] - (p[std::size_t(k)] - e) / 2;
+      if (S.size() > 0 && !(p[std::size_t(k)] >= e))
+        FeatureRecon::internal::throw_invalid_argument(fn, "period[", k, "] = ", p[std::size_t(k)],
+                                                       " is shorter than the items' extent along axis ", k,
+                                                       " (", e, "): the items must fit in one period");
+      if (!(std::fabs(from) <= Sample_set<Traits>::max_coordinate &&
+            std::fabs(from + p[std::size_t(k)]) <= Sample_set<Traits>::max_coordinate))
+        FeatureRecon::internal::throw_invalid_argument(
+            fn, "period[", k, "] = ", p[std::size_t(k)],
+            " puts the torus's faces beyond +-1e100 (as items; scale the input)");
+      given_period[k] = p[std::size_t(k)];
+      largest = std::max(largest, p[std::size_t(k)]);
+    }
+    check_position_scale(largest, sigma_position, fn);
+    has_period = true;
+  }
+
+  // The box of a relaxation (the torus of `periodic`, kernel_relaxation()'s bounding box): with a period
+  // given (take_period()), the box of those widths centred on the items' bounding box; else that bounding box
+  // widened by half the item spacing of each axis (axis_spacing(); a W x H image of pixels: [0, W] x [0, H]).
+  // \pre items() > 0.
+  void relaxation_box(Point& box_lo, Point& box_hi) const {
+    const Point spacing = has_period ? Point{} : axis_spacing();
+    for (int k = 0; k < D; ++k) {
+      if (has_period) {
+        box_lo[k] = lo[k] - (given_period[k] - (hi[k] - lo[k])) / 2;
+        box_hi[k] = box_lo[k] + given_period[k];
+      } else {
+        box_lo[k] = lo[k] - spacing[k] / 2;
+        box_hi[k] = hi[k] + spacing[k] / 2;
+      }
+    }
   }
 
   // nearest_item(), on the torus when the domain wraps: x is wrapped first and its images across the faces
@@ -390,29 +444,99 @@ class Item_domain {
     return b;
   }
 
+  // The item spacing along each axis. Items on a full lattice (distinct, at every combination of n_k equally
+  // spaced coordinates along axis k, prod n_k = n) have their steps e_k / (n_k - 1) along the axes of more
+  // than one coordinate, so an anisotropic lattice (spacing 1 x 2) fills the box of its cells; every other
+  // axis (one coordinate), and items that are no lattice, take grid_spacing(), as does a lattice whose steps
+  // all lie within 1e-9 of it (relatively). O(n) once (the smallest positive offset from the box's corner
+  // along each axis is its step; each item then has a cell of the lattice, all different), then cached.
+  Point axis_spacing() const {
+    if (!spacing_known) {
+      axis_spacing_cache = lattice_steps();
+      spacing_known = true;
+    }
+    return axis_spacing_cache;
+  }
+  Point lattice_steps() const {
+    const double h = grid_spacing();
+    Point steps;
+    steps.fill(h);
+    const std::size_t n = S.size();
+    if (n < 2) return steps;
+    Point offset;
+    offset.fill(std::numeric_limits<double>::infinity());
+    for (const Point& p : S.positions)
+      for (int k = 0; k < D; ++k)
+        if (p[k] > lo[k]) offset[k] = std::min(offset[k], p[k] - lo[k]);
+    std::array<std::size_t, std::size_t(D)> count{};
+    double product = 1;
+    for (int k = 0; k < D; ++k) {
+      const double e = hi[k] - lo[k], c = e > 0 ? std::round(e / offset[k]) + 1 : 1;
+      if (!(c <= double(n))) return steps;
+      count[std::size_t(k)] = std::size_t(c);
+      product *= c;
+    }
+    if (product != double(n)) return steps;
+    Point found = steps;
+    bool isotropic = true;
+    for (int k = 0; k < D; ++k)
+      if (count[std::size_t(k)] > 1) {
+        found[k] = (hi[k] - lo[k]) / double(count[std::size_t(k)] - 1);
+        if (!(std::fabs(found[k] - h) <= 1e-9 * h)) isotropic = false;
+      }
+    if (isotropic) return steps;
+    std::vector<char> taken(n, 0);  // each item in its own cell: every cell once
+    for (const Point& p : S.positions) {
+      std::size_t cell = 0;
+      for (int k = D; k-- > 0;) {
+        const double e = hi[k] - lo[k];
+        std::size_t i = 0;
+        if (count[std::size_t(k)] > 1) {
+          const double at = std::round((p[k] - lo[k]) / found[k]);
+          if (!(std::fabs(p[k] - (lo[k] + at * found[k])) <= 1e-9 * e && at >= 0 &&
+                at <= double(count[std::size_t(k)] - 1)))
+            return steps;  // off the lattice
+          i = std::size_t(at);
+        }
+        cell = cell * count[std::size_t(k)] + i;
+      }
+      if (taken[cell]) return steps;  // a copy: some cell is empty
+      taken[cell] = 1;
+    }
+    return found;
+  }
+
   // d_hex = sqrt(2 A / (sqrt(3) n)) for n sites on the domain's area (2D, or the surface of 3D items); in a
   // volume (intrinsic 3) d_fcc = cbrt(sqrt(2) V / n).
   double packing_distance(std::size_t n) const {
     if (n == 0 || S.size() == 0) return 0;
     double m = measure;
     if ((intrinsic != 0 ? intrinsic : resolve_intrinsic_dimension(S, 0)) == 3) {
-      if (m == 0) {
-        const double spacing = grid_spacing();
-        m = 1;
-        for (int k = 0; k < D; ++k) m *= hi[k] - lo[k] + spacing;
-      }
+      if (m == 0) m = box_measure();
       return std::cbrt(std::sqrt(2.0) * m / double(n));
     }
     if (m == 0) {
       if constexpr (D == 2) {
-        const double spacing = grid_spacing();
-        m = (hi[0] - lo[0] + spacing) * (hi[1] - lo[1] + spacing);
+        m = box_measure();
       } else {
         const std::vector<std::array<double, 3>> places = distinct_positions(S.positions);
         m = estimate_surface_area(places, Knn_3(places));
       }
     }
     return std::sqrt(2 * m / (std::sqrt(3.0) * double(n)));
+  }
+
+  // The measure of relaxation_box(): the product of the given periods, else of the extents widened by the
+  // item spacing of each axis.
+  double box_measure() const {
+    double m = 1;
+    if (has_period) {
+      for (int k = 0; k < D; ++k) m *= given_period[k];
+      return m;
+    }
+    const Point spacing = axis_spacing();
+    for (int k = 0; k < D; ++k) m *= hi[k] - lo[k] + spacing[k];
+    return m;
   }
 
   // rho of the sites: minimum distance over the packing distance (0 when two coincide).
@@ -485,6 +609,10 @@ class Item_domain {
   int intrinsic = 0;
   Point lo{}, hi{};
   Ring_grid<D> item_grid;
+  bool has_period = false;  // a `period` option was given (take_period())
+  Point given_period{};
+  mutable bool spacing_known = false;  // axis_spacing()
+  mutable Point axis_spacing_cache{};
 };
 
 // The domain, its density and the metric of one discrete Lloyd run.
@@ -523,13 +651,10 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
             fn, "periodic needs items that fill their box: 2D items, or 3D items of intrinsic dimension 3 (",
             o.intrinsic_dimension == 0 ? "estimated " : "intrinsic_dimension ", this->intrinsic, ")");
     }
+    this->take_period(o.period, o.periodic, o.sigma_position, fn);
     if (o.periodic && S.size() > 0) {
-      const double spacing = this->grid_spacing();
-      Point box_lo = this->lo, box_hi = this->hi;
-      for (int k = 0; k < D; ++k) {
-        box_lo[k] -= spacing / 2;
-        box_hi[k] += spacing / 2;
-      }
+      Point box_lo, box_hi;
+      this->relaxation_box(box_lo, box_hi);
       this->set_torus(box_lo, box_hi);
     }
   }
@@ -649,7 +774,10 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       for (int k = 0; k < D; ++k) c[k] = sum[s][k] / m;
       if (this->wraps) this->torus.wrap(c);
       const std::uint32_t near = this->nearest_item_at(c);
-      if (options.update == Site_update::snap_to_item) c = S.positions[near];
+      if (options.update == Site_update::snap_to_item) {
+        c = S.positions[near];
+        if (this->wraps) this->torus.wrap(c);  // an item on the box's upper face (a period of the extent)
+      }
       const double move = distance(c, sites[s].position);
 
       r.max_move = std::max(r.max_move, move);

@@ -49,9 +49,10 @@ namespace sampling {
 
 /// Where the sites of kernel_relaxation() may go.
 enum class Kernel_constraint {
-  /// The bounding box of the items widened by half an item spacing (for a W x H image of pixels: [0, W] x
-  /// [0, H]): a site crossing a face is reflected back across it, and the sites see mirrored ghosts across
-  /// its faces. For images and volumes.
+  /// The bounding box of the items widened by half the item spacing of each axis (for a W x H image of
+  /// pixels: [0, W] x [0, H]; items on a lattice of steps 1 x 2: the box of its cells): a site crossing a
+  /// face is reflected back across it, and the sites see mirrored ghosts across its faces (with `periodic`
+  /// the box is a torus instead: see there). For images and volumes.
   bounding_box,
   /// Every site moves to the item nearest to its new position (sites stay on the items: surfaces given by
   /// point clouds, subsets of the input).
@@ -86,15 +87,21 @@ struct Kernel_relaxation_options {
   Kernel_constraint constraint =
       Dimension == 2 ? Kernel_constraint::bounding_box : Kernel_constraint::snap_to_item;
   /// The box (constraint bounding_box) is a torus, its periods the box's widths (a W x H image of pixels: W
-  /// and H): a site leaving across a face comes back across the opposite one, a site sees every image of the
-  /// others (translated by whole periods, as far as the kernel reaches; never its own), the nearest item and
-  /// the density average are taken across the faces too, and the relative radius measures torus distances.
-  /// The sites then tile: a picture stippled on its torus can be repeated without seams. Copies of a site
-  /// (equal positions once wrapped) move apart first. Items all at one position give a box of no width, which
-  /// does not wrap. Refused with snap_to_item, and when the kernel's reach r (cutoff x spatial kernel width x
-  /// the largest scale of any item) holds more than 4,096 images of a site, prod_k (2 ceil(r / P_k) + 1).
-  /// Default false.
+  /// and H) or `period`: a site leaving across a face comes back across the opposite one, a site sees every
+  /// image of the others (translated by whole periods, as far as the kernel reaches; never its own), the
+  /// nearest item and the density average are taken across the faces too, and the relative radius measures
+  /// torus distances. The sites then tile: a picture stippled on its torus can be repeated without seams.
+  /// Copies of a site (equal positions once wrapped) move apart first. Items all at one position give a box
+  /// of no width, which does not wrap (unless `period` is given). Refused with snap_to_item, and when the
+  /// kernel's reach r (cutoff x spatial kernel width x the largest scale of any item) holds more than 4,096
+  /// images of a site, prod_k (2 ceil(r / P_k) + 1). Default false.
   bool periodic = false;
+  /// With `periodic`, the periods, one per axis, instead of the box's widths: for items that are no full
+  /// lattice (the automatic widening is one spacing estimated for all axes), or a torus larger than the
+  /// items' box. Each in [1e-150, 1e150] and at least the items' extent along its axis; the box is then that
+  /// of these widths centred on the items' bounding box, and its measure the domain's unless domain_measure
+  /// is given. Default empty: the box's widths. Given without `periodic`, refused.
+  std::vector<double> period;
   std::size_t max_iterations = 100;  ///< iteration cap (accepted steps); default 100
   /// The first step length as a fraction of the distance to the neighbours (a single pair at distance d,
   /// close enough for the kernel to be ~1, moves apart by step * d); doubled or halved by the step control;
@@ -181,8 +188,9 @@ class Kernel_engine : public Item_domain<Traits> {
       FeatureRecon::internal::throw_invalid_argument(
           fn, "periodic needs constraint bounding_box (the torus is the box); snap_to_item has no torus");
     this->intrinsic = (D == 3 && o.constraint == Kernel_constraint::bounding_box) ? 3 : 2;
+    this->take_period(o.period, o.periodic, o.sigma_position, fn);
     if (S.size() == 0) return;
-    // The box: the items' bounding box widened by half the item spacing on every side.
+    // The box: the items' bounding box widened by half the item spacing of each axis, or the period's.
     box_lo = this->lo;
     box_hi = this->hi;
     if (D == 3 && o.constraint == Kernel_constraint::snap_to_item) {
@@ -195,13 +203,14 @@ class Kernel_engine : public Item_domain<Traits> {
       }
       spacing = std::sqrt(area / double(S.size()));
       packing = sites == 0 ? 0.0 : std::sqrt(2 * area / (std::sqrt(3.0) * double(sites)));
+      for (int k = 0; k < D; ++k) {
+        box_lo[k] -= spacing / 2;
+        box_hi[k] += spacing / 2;
+      }
     } else {
       spacing = this->grid_spacing();
       packing = this->packing_distance(sites);
-    }
-    for (int k = 0; k < D; ++k) {
-      box_lo[k] -= spacing / 2;
-      box_hi[k] += spacing / 2;
+      this->relaxation_box(box_lo, box_hi);
     }
     tau = o.kernel_width > 0 ? o.kernel_width : packing / (2 * o.sigma_position);
     if (!(tau > 0)) tau = std::max(spacing, 1e-300) / o.sigma_position;
