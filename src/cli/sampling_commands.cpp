@@ -323,11 +323,11 @@ int run_sample_stats(const std::vector<std::string>& argv) {
                         "spectrum", "max-frequency", "spectrum-method", "period"});
   const bool periodic = args.has("periodic") || args.has("period");  // --period: a torus of other lengths
   if (args.has("spectrum") && !periodic)
-    throw Usage_error("--spectrum needs --periodic (2D samples on the unit torus)");
+    throw Usage_error("--spectrum needs --periodic (2D samples on a torus)");
   Outputs outputs(args, {"spectrum"});
   fs::Sampling_spectrum_options spectrum_options;
   if (args.has("max-frequency")) {
-    if (!periodic) throw Usage_error("--max-frequency needs --periodic (2D samples on the unit torus)");
+    if (!periodic) throw Usage_error("--max-frequency needs --periodic (2D samples on a torus)");
     const long long f = args.get_int("max-frequency");
     if (f < 1) throw Usage_error("--max-frequency must be >= 1");
     if (f > 16384)  // the library's limit, named here as the option
@@ -338,7 +338,7 @@ int run_sample_stats(const std::vector<std::string>& argv) {
     spectrum_options.max_frequency = static_cast<std::size_t>(f);
   }
   if (args.has("spectrum-method")) {
-    if (!periodic) throw Usage_error("--spectrum-method needs --periodic (2D samples on the unit torus)");
+    if (!periodic) throw Usage_error("--spectrum-method needs --periodic (2D samples on a torus)");
     const std::string m = args.get("spectrum-method");
     if (m == "gridded")
       spectrum_options.method = fs::Spectrum_method::gridded;
@@ -392,17 +392,9 @@ int run_sample_stats(const std::vector<std::string>& argv) {
       args.has("spectrum") || args.has("max-frequency") || args.has("spectrum-method");
   if (spectrum_asked && empty) throw io::Input_error(input + ": no samples to take the spectrum of");
   if (spectrum_asked && columns != 2)
-    throw Usage_error(
-        "--spectrum, --max-frequency and --spectrum-method need 2-D samples on the unit torus; " + input +
-        " has " + std::to_string(columns) + " numbers per line");
+    throw Usage_error("--spectrum, --max-frequency and --spectrum-method need 2-D samples on a torus; " +
+                      input + " has " + std::to_string(columns) + " numbers per line");
   o.period = period_of(args, cloud ? 3 : columns);
-  // The periodogram is taken on the unit torus: a square torus is scaled to it, another has none.
-  const bool square = o.period.empty() || o.period[0] == o.period[1];
-  if (spectrum_asked && !square)
-    throw Usage_error(
-        "--spectrum, --max-frequency and --spectrum-method need a square torus (the periodogram "
-        "is taken on the unit torus, to which equal periods are scaled); --period is " +
-        args.get("period"));
   if (empty) {
     q.status = Status::degenerate_input;  // no samples: nothing to measure, and not an error
     q.domain_measure = o.domain_measure != 0 ? o.domain_measure
@@ -451,11 +443,10 @@ int run_sample_stats(const std::vector<std::string>& argv) {
         p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
       q = fs::sampling_quality(p, o);
       measuring.done(std::to_string(q.samples) + " samples");
-      if (o.periodic && square) {
+      if (o.periodic) {
         Progress progress("spectrum", args.has("quiet"));
         spectrum_options.progress = std::ref(progress);
-        if (!o.period.empty())  // the square torus scaled to the unit one
-          for (K::Point_2& x : p) x = K::Point_2(x.x() / o.period[0], x.y() / o.period[0]);
+        spectrum_options.period = o.period;  // measured as on the torus scaled to area 1
         spectrum = fs::sampling_spectrum(p, spectrum_options);
         progress.done(std::to_string(spectrum.radial_power.size()) + " annuli");
         has_spectrum = true;

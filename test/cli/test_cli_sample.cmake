@@ -237,7 +237,7 @@ expect(sample_out_extension 2 "--out writes a point cloud \\(or, for points in t
 expect(sample_image_picture_extension 2 "--picture writes a raster picture: give a file ending in .png, .jpg, .jpeg, .pgm or .ppm" sample-image --input ${WORK}/line.pgm --count 5 --picture ${WORK}/p.txt)
 # sample-stats: the spectrum of 3-D samples is refused; an empty file is degenerate, not an error; the domain
 # measure printed is the one used.
-expect(sample_stats_spectrum_3d 2 "--spectrum, --max-frequency and --spectrum-method need 2-D samples on the unit torus; .*wall_plain.xyz has 3 numbers per line" sample-stats --input ${WORK}/wall_plain.xyz --periodic --spectrum ${WORK}/s3.csv)
+expect(sample_stats_spectrum_3d 2 "--spectrum, --max-frequency and --spectrum-method need 2-D samples on a torus; .*wall_plain.xyz has 3 numbers per line" sample-stats --input ${WORK}/wall_plain.xyz --periodic --spectrum ${WORK}/s3.csv)
 file(WRITE ${WORK}/nothing.txt "# no samples\n")
 expect(sample_stats_empty 0 "\"samples\": 0,.*\"relative_radius\": null, \"average_minimum_distance\": null, \"degenerate\": true" sample-stats --input ${WORK}/nothing.txt)
 # Spacing statistics of two kept points are undefined: null (they read 0, as if maximally clumped).
@@ -353,7 +353,7 @@ expect(sample_period_darts 0 "\"method\": \"darts\", \"radius\": 0.05,.*\"period
 expect(sample_period_darts_stats 0 "\"domain_measure\": 2, \"periodic\": true, \"period\": \\[2, 1\\], .*\"minimum_distance\": 0\\.(0[5-9]|[1-9])[0-9]*, " sample-stats --input ${WORK}/wide_tile.txt --period 2,1 --quiet)
 expect(sample_period_plain 0 "\"periodic\": false, \"period\": null," sample --input ${WORK}/wide.txt --method darts --radius 0.05 --out ${WORK}/wide_plain.txt --quiet)
 expect(sample_period_plain_stats 0 "\"minimum_distance\": 0\\.0[0-4][0-9]*, " sample-stats --input ${WORK}/wide_plain.txt --period 2,1 --quiet)
-# One length stands for every axis; the spectrum needs a square torus, scaled to the unit one (period 1 gives
+# One length stands for every axis; the spectrum is measured as on the torus scaled to area 1 (period 1 gives
 # what --periodic gives); refusals name the option.
 expect(sample_stats_period_one_length 0 "\"period\": \\[2, 2\\]," sample-stats --input ${WORK}/wide_tile.txt --period 2 --quiet)
 expect(sample_stats_period_unit 0 "\"period\": \\[1, 1\\], .*\"effective_nyquist\": " sample-stats --input ${WORK}/tile.txt --period 1 --quiet)
@@ -363,7 +363,19 @@ string(REGEX MATCH "\"effective_nyquist\": [^,]*, \"oscillation\": [^,]*," perio
 if(NOT period_unit_spectrum STREQUAL periodic_unit_spectrum OR period_unit_spectrum STREQUAL "")
   message(SEND_ERROR "sample_stats_period_unit: '${period_unit_spectrum}' differs from '${periodic_unit_spectrum}'")
 endif()
-expect(sample_stats_period_spectrum_box 2 "need a square torus .*--period is 2,1" sample-stats --input ${WORK}/wide_tile.txt --period 2,1 --spectrum ${WORK}/box.csv)
+# Unequal lengths: 300 points eliminated on the torus 2 x 1 have a zero region in its spectrum (nu_eff 0.44,
+# annuli 0..104 for F = 6 sqrt(300), each 2 / sqrt(300) units wide); eliminated in the plane, the seams leave
+# none.
+expect(sample_period_elimination 0 "\"kept\": 300," sample --input ${WORK}/wide.txt --count 300 --period 2,1 --out ${WORK}/wide_300.txt --quiet)
+expect(sample_stats_period_spectrum_box 0 "\"period\": \\[2, 1\\], .*\"effective_nyquist\": 0\\.[3-5]" sample-stats --input ${WORK}/wide_300.txt --period 2,1 --spectrum ${WORK}/box.csv --quiet)
+expect_count(${WORK}/box.csv "\n" 106)
+file(STRINGS ${WORK}/box.csv box_lines LIMIT_COUNT 3)
+list(GET box_lines 2 box_first_annulus)
+if(NOT box_first_annulus MATCHES "^0\\.11547005")
+  message(SEND_ERROR "sample_stats_period_spectrum_box: annulus 1 at '${box_first_annulus}', not 2 / sqrt(300)")
+endif()
+expect(sample_period_elimination_plain 0 "\"kept\": 300," sample --input ${WORK}/wide.txt --count 300 --out ${WORK}/wide_300_plain.txt --quiet)
+expect(sample_stats_period_spectrum_plain 0 "\"effective_nyquist\": 0," sample-stats --input ${WORK}/wide_300_plain.txt --period 2,1 --quiet)
 expect(sample_period_three_for_two 2 "--period has 3 lengths for 2-D points \\(give one, or one per axis\\)" sample --input ${WORK}/wide.txt --count 5 --period 2,1,1 --out ${WORK}/x.txt)
 expect(sample_period_zero 2 "--period takes one length or one per axis, each a number in \\[1e-150, 1e150\\] separated by commas, got '2,0'" sample --input ${WORK}/wide.txt --count 5 --period 2,0 --out ${WORK}/x.txt)
 expect(sample_period_word 2 "got 'a,b'" sample-stats --input ${WORK}/wide.txt --period a,b)

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -889,6 +890,82 @@ TEST(SamplingQuality, ASingleSampleOffTheLineOrPlaneOfTheOthersRaisesTheAffineDi
     EXPECT_EQ(sampling_quality(p).status, Status::degenerate_input) << off;
   }
 }
+TEST(SamplingSpectrum, RectangularTorusIsMeasuredAsScaledToAreaOne) {
+  // 60 random points, some outside the torus [0, 3) x [0, 1.2), against a brute-force periodogram in the
+  // torus's own coordinates: the integer frequencies (k_x / 3, k_y / 1.2) at g = sqrt(3.6) (k_x / 3,
+  // k_y / 1.2) with |g_x|, |g_y| <= F, binned by round(|g|); both methods.
+  std::mt19937_64 rng(12);
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Point_2> points;
+  for (int i = 0; i < 60; ++i) points.emplace_back(-3 + 9 * u(), -1 + 3 * u());
+  const double W = 3, H = 1.2, pi = 3.141592653589793238463;
+  const long F = 10;
+  std::vector<double> sum(F + 1, 0.0);
+  std::vector<std::size_t> size(F + 1, 0);
+  for (long kx = -40; kx <= 40; ++kx)
+    for (long ky = -40; ky <= 40; ++ky) {
+      const double gx = std::sqrt(W * H) * double(kx) / W, gy = std::sqrt(W * H) * double(ky) / H;
+      if (std::abs(gx) > F || std::abs(gy) > F) continue;
+      const long b = std::lround(std::hypot(gx, gy));
+      if (b > F) continue;
+      std::complex<double> z = 0;
+      for (const Point_2& p : points)
+        z += std::polar(1.0, -2 * pi * (double(kx) * p.x() / W + double(ky) * p.y() / H));
+      sum[std::size_t(b)] += std::norm(z) / 60;
+      ++size[std::size_t(b)];
+    }
+  for (const Spectrum_method method : {Spectrum_method::direct, Spectrum_method::gridded}) {
+    Sampling_spectrum_options o;
+    o.period = {W, H};
+    o.max_frequency = F;
+    o.method = method;
+    const Sampling_spectrum s = sampling_spectrum(points, o);
+    ASSERT_EQ(s.radial_power.size(), std::size_t(F + 1));
+    EXPECT_EQ(s.annulus_size, size);
+    for (long b = 0; b <= F; ++b)
+      EXPECT_NEAR(s.radial_power[std::size_t(b)], sum[std::size_t(b)] / double(size[std::size_t(b)]), 1e-8)
+          << "annulus " << b << (method == Spectrum_method::direct ? " direct" : " gridded");
+  }
+  // A set scaled with its square torus keeps its spectrum; the unit period is the unit torus, bit for bit.
+  const std::vector<Point_2> noise = white_noise(300, 4);
+  std::vector<Point_2> scaled;
+  for (const Point_2& p : noise) scaled.emplace_back(2.5 * p.x(), 2.5 * p.y());
+  Sampling_spectrum_options unit, wide;
+  unit.period = {1, 1};
+  wide.period = {2.5, 2.5};
+  const Sampling_spectrum plain = sampling_spectrum(noise), one = sampling_spectrum(noise, unit),
+                          big = sampling_spectrum(scaled, wide);
+  EXPECT_EQ(one.radial_power, plain.radial_power);
+  EXPECT_EQ(one.effective_nyquist, plain.effective_nyquist);
+  ASSERT_EQ(big.radial_power.size(), plain.radial_power.size());
+  for (std::size_t b = 0; b < plain.radial_power.size(); ++b)
+    EXPECT_NEAR(big.radial_power[b], plain.radial_power[b], 1e-9 * (1 + plain.radial_power[b])) << b;
+  // A square lattice 1/16 apart on the torus 1 x 2 (16 x 32 points) has nu_eff 1, as on the unit torus:
+  // its spikes at |k_x| = 16 and |k_y| = 32 both lie at |g| = 16 sqrt(2), 2 units of sqrt(512)/2.
+  std::vector<Point_2> lattice;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 32; ++j) lattice.emplace_back((i + 0.5) / 16, (j + 0.5) / 16);
+  Sampling_spectrum_options tall;
+  tall.period = {1, 2};
+  const Sampling_spectrum l = sampling_spectrum(lattice, tall);
+  EXPECT_NEAR(l.effective_nyquist, 1.0, 1.0 / 32);
+  EXPECT_NEAR(l.radial_power[1], 0.0, 1e-9);
+  EXPECT_GT(l.anisotropy[23], 5.0);  // the four spikes, in annulus round(22.6) = 23
+  EXPECT_GT(l.radial_power[23], 10.0);
+  // Refused: a period of another length, out of range, or too long and thin for the frequency range.
+  Sampling_spectrum_options bad;
+  bad.period = {1};
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sampling_spectrum(noise, bad); },
+                                                 "period has 1 values for positions of dimension 2"));
+  bad.period = {1, 0};
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sampling_spectrum(white_noise(1, 1), bad); },
+                                                 "period[1] must be in [1e-150, 1e150], got 0"));
+  bad.period = {1, 1e6};
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] { sampling_spectrum(noise, bad); },
+      "period 1 x 1e+06 needs integer frequencies up to 104000 for max_frequency 104, above 16384"));
+}
+
 }  // namespace
 
 TEST(SamplingOptions, NamesOfTheStoppingReasons) {

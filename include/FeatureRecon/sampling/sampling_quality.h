@@ -272,13 +272,22 @@ struct Sampling_spectrum_options {
   /// Level of the mean power over a disc of frequencies that ends the zero region (Heck et al.: 0.1, -10 dB).
   double threshold = 0.1;
   Spectrum_method method = Spectrum_method::automatic;  ///< how the sums are evaluated
+  /// The torus [0, W) x [0, H) of the samples, {W, H} (tiles of a W x H picture), instead of the unit one:
+  /// positions modulo W and H, and frequencies (k_x / W, k_y / H) for integers k_x, k_y, measured as on the
+  /// torus scaled to area 1, g = sqrt(W H) (k_x / W, k_y / H): annuli of width 1 in g, nu_N = sqrt(N)/2 in g,
+  /// and `max_frequency` bounds |g_x| and |g_y|. A set scaled with its torus keeps its spectrum, and a square
+  /// lattice has nu_eff 1 on any torus it tiles. An aspect ratio r = max(W/H, H/W) costs r times the sums of
+  /// the square (the largest integer frequency is F sqrt(r), at most 16384). Each in [1e-150, 1e150] and
+  /// their product a finite normal number. Default empty: the unit torus.
+  std::vector<double> period;
   Progress_callback progress;  ///< fraction of the work done; returning false stops (empty result)
 };
 
-/// Fourier statistics of a 2D sample set on the unit torus (positions modulo 1), as the point-set analysis
-/// of Lagae and Dutre (2008) and Heck, Schloemer and Deussen (2013) defines them. Frequencies are in units of
-/// nu_N = sqrt(N)/2, the Nyquist frequency of a square lattice of N points (the point-set analysis tool's
-/// unit).
+/// Fourier statistics of a 2D sample set on the unit torus (positions modulo 1; or on the torus of
+/// Sampling_spectrum_options::period), as the point-set analysis of Lagae and Dutre (2008) and Heck,
+/// Schloemer and Deussen (2013) defines them. Frequencies are in units of nu_N = sqrt(N)/2, the Nyquist
+/// frequency of a square lattice of N points (the point-set analysis tool's unit), on the torus scaled to
+/// area 1.
 struct Sampling_spectrum {
   std::size_t samples = 0;           ///< N
   std::vector<double> frequency;     ///< annulus k (k = 0, 1, ...): integer radius k, in units of nu_N
@@ -414,8 +423,10 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
 /// samples at F = 1898 where the direct O(N F^2) sums take minutes; both agree to about 2e-11 N.
 /// \tparam ItemRange a forward range of `Traits::Item` with 2D positions. \tparam Traits a model of
 ///   FeaturePointTraits (the features are not used).
-/// \throws std::invalid_argument for non-finite coordinates (naming the item), a threshold outside (0, 0.5)
-///   or a max_frequency above 16384 (given, or the default for more than 7.4 million samples).
+/// \throws std::invalid_argument for non-finite coordinates (naming the item), a threshold outside (0, 0.5),
+///   a max_frequency above 16384 (given, or the default for more than 7.4 million samples), a `period` of
+///   another length than 2 or outside [1e-150, 1e150], or an aspect ratio that needs integer frequencies
+///   above 16384.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>
 Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spectrum_options& options = {},
                                     const Traits& traits = Traits()) {
@@ -428,6 +439,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
         "max_frequency must be at most 16384 (the periodogram holds (2 F "
         "+ 1)(F + 1) complex sums), got ",
         options.max_frequency);
+  const std::array<double, 2> period = internal::torus_period<2>(options.period, true, fn);
   const internal::Sample_set<Traits> S(items, traits, fn, false);
   const std::size_t n = S.size();
   Sampling_spectrum result;
@@ -437,30 +449,44 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
     return result;
   }
   const long F = internal::spectrum_frequency(n, options.max_frequency, fn);
+  // On a W x H torus the frequency (k_x / W, k_y / H) is g = (k_x a, k_y / a), a = sqrt(H / W), on the torus
+  // scaled to area 1: |g_x|, |g_y| <= F holds |k_x| <= Kx = F / a and |k_y| <= Ky = F a, all within the sums'
+  // square of side K = max(Kx, Ky) (K = F on a square torus).
+  const double aspect = std::sqrt(period[1] / period[0]);
+  const long Kx = static_cast<long>(std::floor(double(F) / aspect * (1 + 1e-12))),
+             Ky = static_cast<long>(std::floor(double(F) * aspect * (1 + 1e-12))), K = std::max(Kx, Ky);
+  if (K > 16384)
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "period ", period[0], " x ", period[1], " needs integer frequencies up to ", K,
+        " for max_frequency ", F,
+        ", above 16384 (the periodogram holds (2 K + 1)(K + 1) complex sums); lower max_frequency");
   internal::Torus_points torus(n);
   for (std::size_t k = 0; k < n; ++k)
-    for (int a = 0; a < 2; ++a) torus[k][std::size_t(a)] = internal::torus_coordinate(S.positions[k][a]);
+    for (int a = 0; a < 2; ++a)
+      torus[k][std::size_t(a)] = internal::torus_coordinate(
+          options.period.empty() ? S.positions[k][a] : S.positions[k][a] / period[a]);
   result.method = options.method != Spectrum_method::automatic    ? options.method
-                  : internal::gridded_periodogram_is_faster(n, F) ? Spectrum_method::gridded
+                  : internal::gridded_periodogram_is_faster(n, K) ? Spectrum_method::gridded
                                                                   : Spectrum_method::direct;
   internal::Periodogram_sums storage;  // the sums in its first 2F + 1 rows
   const bool finished = result.method == Spectrum_method::direct
-                            ? internal::direct_periodogram_sums(torus, F, storage, options.progress, 0, 1)
-                            : internal::gridded_periodogram_sums(torus, F, storage, options.progress, 0, 1);
+                            ? internal::direct_periodogram_sums(torus, K, storage, options.progress, 0, 1)
+                            : internal::gridded_periodogram_sums(torus, K, storage, options.progress, 0, 1);
   if (!finished) {
     result.status = Status::interrupted;
     return result;
   }
-  const auto sums = storage.topRows(2 * F + 1);
-  // Radial statistics over annuli |f| in [k - 1/2, k + 1/2).
+  const auto sums = storage.topRows(2 * K + 1);
+  // Radial statistics over annuli |g| in [k - 1/2, k + 1/2) (g = f on the unit torus: a = 1, exact).
   const std::size_t bins = std::size_t(F) + 1;
   std::vector<double> sum(bins, 0.0), sum2(bins, 0.0), count(bins, 0.0);
-  for (long fy = -F; fy <= F; ++fy)
-    for (long fx = -F; fx <= F; ++fx) {
-      const std::size_t b = std::size_t(std::lround(std::sqrt(double(fx * fx + fy * fy))));
+  for (long fy = -Ky; fy <= Ky; ++fy)
+    for (long fx = -Kx; fx <= Kx; ++fx) {
+      const double gx = double(fx) * aspect, gy = double(fy) / aspect;
+      const std::size_t b = std::size_t(std::lround(std::sqrt(gx * gx + gy * gy)));
       if (b >= bins) continue;
       const long sy = fy < 0 ? -fy : fy, sx = fy < 0 ? -fx : fx;  // P(-f) = P(f)
-      const double p = std::norm(sums(sx + F, sy)) / double(n);
+      const double p = std::norm(sums(sx + K, sy)) / double(n);
       sum[b] += p;
       sum2[b] += p * p;
       count[b] += 1;
