@@ -443,7 +443,10 @@ int run_sample_stats(const std::vector<std::string>& argv) {
         p.emplace_back(f.coordinates[2 * i], f.coordinates[2 * i + 1]);
       q = fs::sampling_quality(p, o);
       measuring.done(std::to_string(q.samples) + " samples");
-      if (o.periodic) {
+      // On a torus of aspect ratio above 4 the sums cost more than 4 times the square's: only when asked.
+      const double ratio =
+          o.period.empty() ? 1.0 : std::max(o.period[0] / o.period[1], o.period[1] / o.period[0]);
+      if (o.periodic && (spectrum_asked || ratio <= 4)) {
         Progress progress("spectrum", args.has("quiet"));
         spectrum_options.progress = std::ref(progress);
         spectrum_options.period = o.period;  // measured as on the torus scaled to area 1

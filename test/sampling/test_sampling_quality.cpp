@@ -11,6 +11,7 @@
 #include "test_utilities.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -891,40 +892,48 @@ TEST(SamplingQuality, ASingleSampleOffTheLineOrPlaneOfTheOthersRaisesTheAffineDi
   }
 }
 TEST(SamplingSpectrum, RectangularTorusIsMeasuredAsScaledToAreaOne) {
-  // 60 random points, some outside the torus [0, 3) x [0, 1.2), against a brute-force periodogram in the
-  // torus's own coordinates: the integer frequencies (k_x / 3, k_y / 1.2) at g = sqrt(3.6) (k_x / 3,
-  // k_y / 1.2) with |g_x|, |g_y| <= F, binned by round(|g|); both methods.
+  // 60 random points, some outside the torus, against a brute-force periodogram in the torus's own
+  // coordinates: the integer frequencies (k_x / W, k_y / H) at g = sqrt(W H) (k_x / W, k_y / H), binned by
+  // round(|g|) up to annulus F (complete), DC alone in annulus 0; both methods. On the torus 3 x 1.2 and on
+  // the strip 16 x 1 (aspect ratio 16: k_x = +-1 lie at |g| = 1/4, counted in annulus 1).
   std::mt19937_64 rng(12);
   auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
   std::vector<Point_2> points;
   for (int i = 0; i < 60; ++i) points.emplace_back(-3 + 9 * u(), -1 + 3 * u());
-  const double W = 3, H = 1.2, pi = 3.141592653589793238463;
+  const double pi = 3.141592653589793238463;
   const long F = 10;
-  std::vector<double> sum(F + 1, 0.0);
-  std::vector<std::size_t> size(F + 1, 0);
-  for (long kx = -40; kx <= 40; ++kx)
-    for (long ky = -40; ky <= 40; ++ky) {
-      const double gx = std::sqrt(W * H) * double(kx) / W, gy = std::sqrt(W * H) * double(ky) / H;
-      if (std::abs(gx) > F || std::abs(gy) > F) continue;
-      const long b = std::lround(std::hypot(gx, gy));
-      if (b > F) continue;
-      std::complex<double> z = 0;
-      for (const Point_2& p : points)
-        z += std::polar(1.0, -2 * pi * (double(kx) * p.x() / W + double(ky) * p.y() / H));
-      sum[std::size_t(b)] += std::norm(z) / 60;
-      ++size[std::size_t(b)];
+  for (const std::array<double, 2> torus : {std::array<double, 2>{3, 1.2}, std::array<double, 2>{16, 1}}) {
+    const double W = torus[0], H = torus[1];
+    std::vector<double> sum(F + 1, 0.0);
+    std::vector<std::size_t> size(F + 1, 0);
+    for (long kx = -200; kx <= 200; ++kx)
+      for (long ky = -200; ky <= 200; ++ky) {
+        const double gx = std::sqrt(W * H) * double(kx) / W, gy = std::sqrt(W * H) * double(ky) / H;
+        long b = std::lround(std::hypot(gx, gy));
+        if (b > F) continue;
+        if (b == 0 && (kx != 0 || ky != 0)) b = 1;
+        std::complex<double> z = 0;
+        for (const Point_2& p : points)
+          z += std::polar(1.0, -2 * pi * (double(kx) * p.x() / W + double(ky) * p.y() / H));
+        sum[std::size_t(b)] += std::norm(z) / 60;
+        ++size[std::size_t(b)];
+      }
+    EXPECT_GT(size[std::size_t(F)], 45u);  // about 2 pi F = 63 frequencies: the brute force reaches them all
+    for (const Spectrum_method method : {Spectrum_method::direct, Spectrum_method::gridded}) {
+      Sampling_spectrum_options o;
+      o.period = {W, H};
+      o.max_frequency = F;
+      o.method = method;
+      const Sampling_spectrum s = sampling_spectrum(points, o);
+      ASSERT_EQ(s.radial_power.size(), std::size_t(F + 1));
+      EXPECT_EQ(s.annulus_size, size) << W << " x " << H;
+      EXPECT_EQ(s.annulus_size[0], 1u);
+      EXPECT_NEAR(s.radial_power[0], 60.0, 1e-9);
+      for (long b = 0; b <= F; ++b)
+        EXPECT_NEAR(s.radial_power[std::size_t(b)], sum[std::size_t(b)] / double(size[std::size_t(b)]), 1e-8)
+            << W << " x " << H << ", annulus " << b
+            << (method == Spectrum_method::direct ? " direct" : " gridded");
     }
-  for (const Spectrum_method method : {Spectrum_method::direct, Spectrum_method::gridded}) {
-    Sampling_spectrum_options o;
-    o.period = {W, H};
-    o.max_frequency = F;
-    o.method = method;
-    const Sampling_spectrum s = sampling_spectrum(points, o);
-    ASSERT_EQ(s.radial_power.size(), std::size_t(F + 1));
-    EXPECT_EQ(s.annulus_size, size);
-    for (long b = 0; b <= F; ++b)
-      EXPECT_NEAR(s.radial_power[std::size_t(b)], sum[std::size_t(b)] / double(size[std::size_t(b)]), 1e-8)
-          << "annulus " << b << (method == Spectrum_method::direct ? " direct" : " gridded");
   }
   // A set scaled with its square torus keeps its spectrum; the unit period is the unit torus, bit for bit.
   const std::vector<Point_2> noise = white_noise(300, 4);
@@ -963,7 +972,24 @@ TEST(SamplingSpectrum, RectangularTorusIsMeasuredAsScaledToAreaOne) {
   bad.period = {1, 1e6};
   EXPECT_TRUE(throws_with<std::invalid_argument>(
       [&] { sampling_spectrum(noise, bad); },
-      "period 1 x 1e+06 needs integer frequencies up to 104000 for max_frequency 104, above 16384"));
+      "period 1 x 1e+06 needs integer frequencies up to 104500 for max_frequency 104, above 16384 (the "
+      "periodogram holds (2 K + 1)(K + 1) complex sums); max_frequency at most 15 on this torus"));
+  bad.max_frequency = 16;  // (16.5) 1000 > 16384 (15 would be allowed: 7.7 GB of sums, not run here)
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sampling_spectrum(white_noise(3, 1), bad); },
+                                                 "up to 16500 for max_frequency 16"));
+  bad.max_frequency = 0;
+  bad.period = {1e-20, 1e20};  // a valid torus whose frequencies overflow a long: refused, not cast
+  EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sampling_spectrum(noise, bad); },
+                                                 "max_frequency at most 0 on this torus"));
+  // Spectra of tori of other shapes have other annuli: not averaged.
+  Sampling_spectrum_options square, wide_torus;
+  square.period = {1, 1};
+  wide_torus.period = {2, 1};
+  EXPECT_TRUE(throws_with<std::invalid_argument>(
+      [&] {
+        average_sampling_spectra({sampling_spectrum(noise, square), sampling_spectrum(noise, wide_torus)});
+      },
+      "spectrum 1 has other annuli than spectrum 0 (a torus of another aspect ratio)"));
 }
 
 }  // namespace

@@ -263,22 +263,25 @@ enum class Spectrum_method {
 
 /// Options of sampling_spectrum().
 struct Sampling_spectrum_options {
-  /// Largest integer frequency per axis of the periodogram. Default 0: 6 sqrt(N) (rounded up), that is 12 in
-  /// units of sqrt(N)/2, which holds the oscillation band of Heck et al. (10 units from where the power first
-  /// reaches 1) for every set whose power reaches 1 below 2 units (any blue-noise set). At most 16384: the
-  /// periodogram holds (2 F + 1)(F + 1) complex sums (8.6 GB at 16384; the gridded method needs about
-  /// twice that).
+  /// Largest integer frequency per axis of the periodogram (on another torus than the unit one, the last
+  /// annulus: see `period`). Default 0: 6 sqrt(N) (rounded up), that is 12 in units of sqrt(N)/2, which holds
+  /// the oscillation band of Heck et al. (10 units from where the power first reaches 1) for every set whose
+  /// power reaches 1 below 2 units (any blue-noise set). At most 16384: the periodogram holds (2 F + 1)(F +
+  /// 1) complex sums (8.6 GB at 16384; the gridded method needs about twice that); on a torus of aspect ratio
+  /// r, (2 K + 1)(K + 1) with K = (F + 1/2) sqrt(r), at most 16384.
   std::size_t max_frequency = 0;
   /// Level of the mean power over a disc of frequencies that ends the zero region (Heck et al.: 0.1, -10 dB).
   double threshold = 0.1;
   Spectrum_method method = Spectrum_method::automatic;  ///< how the sums are evaluated
   /// The torus [0, W) x [0, H) of the samples, {W, H} (tiles of a W x H picture), instead of the unit one:
   /// positions modulo W and H, and frequencies (k_x / W, k_y / H) for integers k_x, k_y, measured as on the
-  /// torus scaled to area 1, g = sqrt(W H) (k_x / W, k_y / H): annuli of width 1 in g, nu_N = sqrt(N)/2 in g,
-  /// and `max_frequency` bounds |g_x| and |g_y|. A set scaled with its torus keeps its spectrum, and a square
-  /// lattice has nu_eff 1 on any torus it tiles. An aspect ratio r = max(W/H, H/W) costs r times the sums of
-  /// the square (the largest integer frequency is F sqrt(r), at most 16384). Each in [1e-150, 1e150] and
-  /// their product a finite normal number. Default empty: the unit torus.
+  /// torus scaled to area 1, g = sqrt(W H) (k_x / W, k_y / H): annuli of width 1 in g (annulus k: round(|g|)
+  /// = k), nu_N = sqrt(N)/2 in g, and annuli 0..`max_frequency` complete. Annulus 0 holds DC alone: on a
+  /// torus of aspect ratio r = max(W/H, H/W) above 4 the few other frequencies with |g| < 1/2 count in
+  /// annulus 1. A set scaled with its torus keeps its spectrum, and a square lattice has nu_eff 1 on any
+  /// torus it tiles. The sums are those of the square up to K = (F + 1/2) sqrt(r) (r times the square's work
+  /// and memory), K at most 16384. Each in [1e-150, 1e150] and their product a finite normal number. Default
+  /// empty: the unit torus.
   std::vector<double> period;
   Progress_callback progress;  ///< fraction of the work done; returning false stops (empty result)
 };
@@ -390,7 +393,8 @@ inline void finish_spectrum(Sampling_spectrum& s, double threshold) {
 /// several sets of the same size and frequency range (one periodogram is too noisy at low frequencies for the
 /// effective Nyquist frequency; the point-set analysis literature averages ten). Recomputes the effective
 /// Nyquist frequency and the oscillation from the averaged radial power.
-/// \throws std::invalid_argument when the spectra are empty or differ in size or number of annuli.
+/// \throws std::invalid_argument when the spectra are empty or differ in size, number of annuli or their
+///   sizes (tori of different aspect ratios).
 inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spectrum>& spectra,
                                                   double threshold = 0.1) {
   const char* fn = "average_sampling_spectra";
@@ -402,6 +406,9 @@ inline Sampling_spectrum average_sampling_spectra(const std::vector<Sampling_spe
       FeatureRecon::internal::throw_invalid_argument(
           fn, "spectrum ", k, " has ", spectra[k].samples, " samples and ", spectra[k].radial_power.size(),
           " annuli, spectrum 0 has ", a.samples, " and ", a.radial_power.size());
+    if (spectra[k].annulus_size != a.annulus_size)
+      FeatureRecon::internal::throw_invalid_argument(
+          fn, "spectrum ", k, " has other annuli than spectrum 0 (a torus of another aspect ratio)");
     for (std::size_t b = 0; b < a.radial_power.size(); ++b) {
       a.radial_power[b] += spectra[k].radial_power[b];
       a.anisotropy[b] += spectra[k].anisotropy[b];
@@ -449,17 +456,24 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
     return result;
   }
   const long F = internal::spectrum_frequency(n, options.max_frequency, fn);
-  // On a W x H torus the frequency (k_x / W, k_y / H) is g = (k_x a, k_y / a), a = sqrt(H / W), on the torus
-  // scaled to area 1: |g_x|, |g_y| <= F holds |k_x| <= Kx = F / a and |k_y| <= Ky = F a, all within the sums'
-  // square of side K = max(Kx, Ky) (K = F on a square torus).
   const double aspect = std::sqrt(period[1] / period[0]);
-  const long Kx = static_cast<long>(std::floor(double(F) / aspect * (1 + 1e-12))),
-             Ky = static_cast<long>(std::floor(double(F) * aspect * (1 + 1e-12))), K = std::max(Kx, Ky);
-  if (K > 16384)
+  // On a W x H torus the frequency (k_x / W, k_y / H) is g = (k_x a, k_y / a), a = sqrt(H / W), on the torus
+  // scaled to area 1. Annuli 0..F hold |g| < F + 1/2: |k_x| <= Kx = (F + 1/2) / a and |k_y| <= Ky = (F + 1/2)
+  // a, all within the sums' square of side K = max(Kx, Ky) (K = F on a square torus). Compared as doubles
+  // before any cast (a ratio of 1e40 is a valid torus).
+  const double reach_x = (double(F) + 0.5) / aspect, reach_y = (double(F) + 0.5) * aspect;
+  if (!(std::floor(std::max(reach_x, reach_y)) <= 16384)) {
+    const double stretch = std::max(aspect, 1 / aspect);  // the largest F with (F + 1/2) stretch < 16385
+    double largest = std::floor(16385 / stretch - 0.5);
+    if ((largest + 0.5) * stretch >= 16385) largest -= 1;
     FeatureRecon::internal::throw_invalid_argument(
-        fn, "period ", period[0], " x ", period[1], " needs integer frequencies up to ", K,
-        " for max_frequency ", F,
-        ", above 16384 (the periodogram holds (2 K + 1)(K + 1) complex sums); lower max_frequency");
+        fn, "period ", period[0], " x ", period[1], " needs integer frequencies up to ",
+        std::floor(std::max(reach_x, reach_y)), " for max_frequency ", F,
+        ", above 16384 (the periodogram holds (2 K + 1)(K + 1) complex sums); max_frequency at most ",
+        std::max(0.0, largest), " on this torus");
+  }
+  const long Kx = static_cast<long>(std::floor(reach_x)), Ky = static_cast<long>(std::floor(reach_y)),
+             K = std::max(Kx, Ky);
   internal::Torus_points torus(n);
   for (std::size_t k = 0; k < n; ++k)
     for (int a = 0; a < 2; ++a)
@@ -468,7 +482,7 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
   result.method = options.method != Spectrum_method::automatic    ? options.method
                   : internal::gridded_periodogram_is_faster(n, K) ? Spectrum_method::gridded
                                                                   : Spectrum_method::direct;
-  internal::Periodogram_sums storage;  // the sums in its first 2F + 1 rows
+  internal::Periodogram_sums storage;  // the sums in its first 2K + 1 rows
   const bool finished = result.method == Spectrum_method::direct
                             ? internal::direct_periodogram_sums(torus, K, storage, options.progress, 0, 1)
                             : internal::gridded_periodogram_sums(torus, K, storage, options.progress, 0, 1);
@@ -483,8 +497,9 @@ Sampling_spectrum sampling_spectrum(const ItemRange& items, const Sampling_spect
   for (long fy = -Ky; fy <= Ky; ++fy)
     for (long fx = -Kx; fx <= Kx; ++fx) {
       const double gx = double(fx) * aspect, gy = double(fy) / aspect;
-      const std::size_t b = std::size_t(std::lround(std::sqrt(gx * gx + gy * gy)));
+      std::size_t b = std::size_t(std::lround(std::sqrt(gx * gx + gy * gy)));
       if (b >= bins) continue;
+      if (b == 0 && (fx != 0 || fy != 0)) b = 1;  // annulus 0 is DC alone (|g| < 1/2 only when r > 4)
       const long sy = fy < 0 ? -fy : fy, sx = fy < 0 ? -fx : fx;  // P(-f) = P(f)
       const double p = std::norm(sums(sx + K, sy)) / double(n);
       sum[b] += p;
