@@ -971,6 +971,21 @@ Point_torus_oracle point_torus_brute_force(const std::vector<test::Point_2>& ite
   return o;
 }
 
+// n featureless sites uniform in [x0, x0 + w) x [y0, y0 + h), and their positions.
+template <class Point_site>
+std::vector<Point_site> random_point_sites(std::size_t n, double x0, double y0, double w, double h,
+                                           std::mt19937_64& rng, std::vector<std::array<double, 2>>& where) {
+  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  std::vector<Point_site> sites(n);
+  where.clear();
+  for (auto& s : sites) {
+    const double x = x0 + w * u();
+    s.position = {x, y0 + h * u()};
+    where.push_back(s.position);
+  }
+  return sites;
+}
+
 // The distance on the torus of periods p0, p1 between two positions given anywhere.
 double torus_gap(const std::array<double, 2>& a, const std::array<double, 2>& b, double p0, double p1) {
   return std::sqrt(torus_squared(a[0], a[1], b, p0, p1));
@@ -985,13 +1000,8 @@ TEST(Discrete_lloyd, TorusOfAnAnisotropicLatticeIsItsCells) {
   for (int j = 0; j < 7; ++j)
     for (int i = 0; i < 10; ++i) items.emplace_back(0.5 + i, 1 + 2 * j);
   std::mt19937_64 rng(9);
-  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
-  std::vector<Point_site> sites(9);
   std::vector<std::array<double, 2>> where;
-  for (auto& s : sites) {
-    s.position = {-3 + 16 * u(), -4 + 22 * u()};
-    where.push_back(s.position);
-  }
+  const auto sites = random_point_sites<Point_site>(9, -3, -4, 16, 22, rng, where);
   Discrete_lloyd_options<2> o;
   o.periodic = true;
   const auto want = point_torus_brute_force(items, where, 10, 14);
@@ -1032,14 +1042,9 @@ TEST(Discrete_lloyd, TorusOfAGivenPeriod) {
       hi[k] = std::max(hi[k], p[k]);
     }
   std::mt19937_64 rng(5);
-  auto u = [&] { return double(rng() >> 11) * 0x1.0p-53; };
   for (const std::array<double, 2> period : {std::array<double, 2>{1, 1}, std::array<double, 2>{1.5, 2}}) {
-    std::vector<Point_site> sites(12);
     std::vector<std::array<double, 2>> where;
-    for (auto& s : sites) {
-      s.position = {-1 + 3 * u(), -1 + 3 * u()};
-      where.push_back(s.position);
-    }
+    const auto sites = random_point_sites<Point_site>(12, -1, -1, 3, 3, rng, where);
     Discrete_lloyd_options<2> o;
     o.periodic = true;
     o.period = {period[0], period[1]};

@@ -85,9 +85,9 @@ struct Discrete_lloyd_options {
   /// item, the moves and the relative radius are the torus's. The sites then tile: a picture stippled on its
   /// torus can be repeated without seams. Copies of a site (equal positions once wrapped) move apart first; a
   /// site without items wraps too. Items all at one position give a box of no width, which does not wrap
-  /// (unless `period` is given). For
-  /// 2D items, and for 3D items of intrinsic dimension 3 (volumes: intrinsic_dimension 3, or 0 and
-  /// estimated); refused for other 3D items (a surface does not fill its box). Default false.
+  /// (unless `period` is given). For 2D items, and for 3D items of intrinsic dimension 3 (volumes:
+  /// intrinsic_dimension 3, or 0 and estimated); refused for other 3D items (a surface does not fill its
+  /// box). Default false.
   bool periodic = false;
   /// With `periodic`, the periods, one per axis, instead of the automatic ones: for items that are no full
   /// lattice (the automatic widening is then one spacing estimated for all axes), or a torus larger than the
@@ -295,7 +295,7 @@ class Item_domain {
     const std::array<double, std::size_t(D)> p = torus_period<std::size_t(D)>(period, periodic, fn);
     double largest = 0;
     for (int k = 0; k < D; ++k) {
-      const double e = hi[k] - lo[k], from = lo[k] - (p[std::size_t(k)] - e) / 2;
+      const double e = hi[k] - lo[k], from = lo[k] - (p[std::size_t(k)] - e) / 2;  // centred on the items
       if (S.size() > 0 && !(p[std::size_t(k)] >= e))
         FeatureRecon::internal::throw_invalid_argument(fn, "period[", k, "] = ", p[std::size_t(k)],
                                                        " is shorter than the items' extent along axis ", k,
@@ -306,6 +306,7 @@ class Item_domain {
             fn, "period[", k, "] = ", p[std::size_t(k)],
             " puts the torus's faces beyond +-1e100 (as items; scale the input)");
       given_period[k] = p[std::size_t(k)];
+      given_lo[k] = from;
       largest = std::max(largest, p[std::size_t(k)]);
     }
     check_position_scale(largest, sigma_position, fn);
@@ -317,15 +318,15 @@ class Item_domain {
   // widened by half the item spacing of each axis (axis_spacing(); a W x H image of pixels: [0, W] x [0, H]).
   // \pre items() > 0.
   void relaxation_box(Point& box_lo, Point& box_hi) const {
-    const Point spacing = has_period ? Point{} : axis_spacing();
+    if (has_period) {
+      box_lo = given_lo;
+      for (int k = 0; k < D; ++k) box_hi[k] = given_lo[k] + given_period[k];
+      return;
+    }
+    const Point spacing = axis_spacing();
     for (int k = 0; k < D; ++k) {
-      if (has_period) {
-        box_lo[k] = lo[k] - (given_period[k] - (hi[k] - lo[k])) / 2;
-        box_hi[k] = box_lo[k] + given_period[k];
-      } else {
-        box_lo[k] = lo[k] - spacing[k] / 2;
-        box_hi[k] = hi[k] + spacing[k] / 2;
-      }
+      box_lo[k] = lo[k] - spacing[k] / 2;
+      box_hi[k] = hi[k] + spacing[k] / 2;
     }
   }
 
@@ -609,8 +610,8 @@ class Item_domain {
   int intrinsic = 0;
   Point lo{}, hi{};
   Ring_grid<D> item_grid;
-  bool has_period = false;  // a `period` option was given (take_period())
-  Point given_period{};
+  bool has_period = false;             // a `period` option was given (take_period())
+  Point given_period{}, given_lo{};    // the periods and the torus's lower faces
   mutable bool spacing_known = false;  // axis_spacing()
   mutable Point axis_spacing_cache{};
 };
