@@ -102,6 +102,8 @@ std::string file_extension(const std::string& path);
 
 /// The whitespace-separated tokens of a text line, without its '#' comment (a trailing CR is whitespace).
 std::vector<std::string> line_tokens(const std::string& line);
+/// The same tokens written into `out` (its strings reused: no allocation per line once they are long enough).
+void line_tokens(const std::string& line, std::vector<std::string>& out);
 
 /// Reads `token` as a decimal number (what strtod takes, except hexadecimal such as 0x10); true when all of
 /// it is one. The value may be infinite or NaN ("inf", "nan"): callers that need finite numbers check.

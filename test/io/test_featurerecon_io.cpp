@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,35 @@ TEST(ExchangeFormat, ErrorsNameTheLine) {
   // An empty name is said to be one (the message began ': cannot open').
   EXPECT_EQ(thrown_message<io::Input_error>([] { io::read_complex(""); }),
             "an empty file name was given for reading");
+}
+
+// line_tokens() splits on the whitespace of `std::istream >> std::string` in the "C" locale (space, \t, \n,
+// \v, \f, \r) and drops everything from the first '#': the string stream it replaced is the oracle, on random
+// lines of those bytes, '#', letters and a byte above 127. The overload that fills a vector reuses it: a line
+// with fewer tokens leaves no stale ones.
+TEST(LineTokens, SplitAsTheStringStreamDid) {
+  auto by_stream = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::istringstream is(line.substr(0, line.find('#')));
+    std::string t;
+    while (is >> t) out.push_back(t);
+    return out;
+  };
+  EXPECT_EQ(io::line_tokens(" a\tbb\v\fc\r\n# d e"), (std::vector<std::string>{"a", "bb", "c"}));
+  EXPECT_TRUE(io::line_tokens("").empty());
+  EXPECT_TRUE(io::line_tokens(" \t\r").empty());
+  EXPECT_TRUE(io::line_tokens("#a b").empty());
+  EXPECT_EQ(io::line_tokens("x#y z"), (std::vector<std::string>{"x"}));
+  const std::string alphabet = std::string(" \t\n\v\f\r#ab\xE9") + '\0';
+  std::mt19937_64 rng(7);
+  std::vector<std::string> reused;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::string line(rng() % 12, ' ');
+    for (char& c : line) c = alphabet[rng() % alphabet.size()];
+    EXPECT_EQ(io::line_tokens(line), by_stream(line)) << "trial " << trial;
+    io::line_tokens(line, reused);
+    EXPECT_EQ(reused, by_stream(line)) << "trial " << trial;
+  }
 }
 
 TEST(PointFile, AnyDimensionWithComments) {

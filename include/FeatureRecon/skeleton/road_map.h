@@ -205,11 +205,17 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
     auto& m = g[to].members;
     m.insert(m.end(), g[from].members.begin(), g[from].members.end());
   };
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (auto e : boost::make_iterator_range(edges(g))) {
-      const auto u = source(e, g), w = target(e, g);
-      if (u == w) continue;
+  // One pass over the arcs. Removing arcs only takes candidates away (polylines never change and no arc is
+  // added), so an arc that has no thin loop never gets one: after a removal the scan goes on at the same arc
+  // (or the next one, when that arc went), which is what restarting from the first arc would find. The
+  // restart was quadratic: 0.8 s of a 3,000-intersection city's 12 s.
+  const auto last = edges(g).second;  // the arcs are a std::list: removing one leaves the others' iterators
+  for (auto it = edges(g).first; it != last;) {
+    const Arc e = *it;
+    const auto next = std::next(it);  // valid while e stays, or when e goes alone
+    const auto u = source(e, g), w = target(e, g);
+    bool changed = false, e_removed = false;
+    if (u != w) {
       for (auto f : boost::make_iterator_range(out_edges(u, g))) {
         if (f == e) continue;
         const auto v = target(f, g);
@@ -219,6 +225,7 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
           take_members(drop_e ? e : f, drop_e ? f : e);
           remove_edge(drop_e ? e : f, g);
           changed = true;
+          e_removed = drop_e;
           break;
         }
         if (v == u) continue;
@@ -230,13 +237,14 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
           if (degree(v, g) > 2 || direct >= around) {
             take_members(e, f);
             remove_edge(e, g);
+            e_removed = true;
           } else {  // v is a kink of the longer side: the side u-v-w goes, v with it
             take_members(f, e);
             take_members(h, e);
             auto& m = g[e].members;
             m.insert(m.end(), g[v].members.begin(), g[v].members.end());
             g[v].members.clear();
-            remove_edge(f, g);
+            remove_edge(f, g);  // e stays: `next` (perhaps f or h) is not read
             remove_edge(h, g);
           }
           changed = true;
@@ -244,11 +252,9 @@ inline std::size_t remove_thin_loops(Skeleton_graph& g, double d) {
         }
         if (changed) break;
       }
-      if (changed) {
-        ++removed;
-        break;
-      }
     }
+    if (changed) ++removed;
+    if (!changed || e_removed) it = next;  // else e again, with the arcs it has left
   }
   // Nodes that lost all their arcs (never an isolated node of the input: those have no loop).
   // Removing a vertex renumbers the later ones: the arcs' `lower` and `upper` follow.
