@@ -1569,12 +1569,19 @@ TEST(MergeRoadLines, ThinLoopsAreRemovedAsByRestartingTheScan) {
       }
     return removed;
   };
-  // The whole graph as text, arcs in the order of the arc list: equal texts, equal graphs.
+  // The whole graph as text, arcs in the order of the arc list and of each node's arcs: equal texts, equal
+  // graphs.
   auto text = [](const Skeleton_graph& g) {
     std::string s;
     for (auto v : boost::make_iterator_range(vertices(g))) {
       s += "v" + std::to_string(v) + ":";
       for (const Vertex_index m : g[v].members) s += " " + std::to_string(m);
+      s += " arcs";
+      for (auto e : boost::make_iterator_range(out_edges(v, g))) {
+        s += " " + std::to_string(target(e, g)) + "(";
+        for (const Vertex_index m : g[e].members) s += " " + std::to_string(m);
+        s += ")";
+      }
       s += "\n";
     }
     for (auto e : boost::make_iterator_range(edges(g))) {
@@ -1593,7 +1600,7 @@ TEST(MergeRoadLines, ThinLoopsAreRemovedAsByRestartingTheScan) {
     Skeleton_graph g(n);
     Vertex_index next_member = 0;
     for (std::size_t v = 0; v < n; ++v) {
-      // Nodes close together (within 12 of each other), so that paths u-v-w can lie beside an arc u-w.
+      // Nodes close together (less than 13 apart), so that paths u-v-w can lie beside an arc u-w.
       g[v].position = {static_cast<double>(rng() % 13), static_cast<double>(rng() % 5), 0};
       g[v].members = {next_member++};
     }
