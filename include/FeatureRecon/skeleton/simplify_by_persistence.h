@@ -54,8 +54,9 @@ struct Simplification_complex {
 ///
 /// Method: the quotient is computed as a Reeb graph. Each merging path gets a spine, a path with one vertex
 /// per function value on it, and every edge of the merging path a strip of triangles to the spine segment of
-/// its values; the level set of the resulting 2-complex at any height joins all points of the merging path at
-/// that height, so its Reeb graph, with arcs of zero height contracted, is the quotient.
+/// its values (a fan over the O(log L) segments of a segment tree over the spine's L levels, each glued to
+/// the spine below it); the level set of the resulting 2-complex at any height joins all points of the
+/// merging path at that height, so its Reeb graph, with arcs of zero height contracted, is the quotient.
 /// A branch (extreme e, fork s) is glued onto a path from s into the sibling component that holds the elder
 /// extreme, up to e's level: the fewest arcs to a node beyond e's level that lies, beyond that level, in the
 /// elder's part (else to the nearest node beyond it). The search stays between the two levels, and one
