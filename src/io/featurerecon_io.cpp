@@ -398,8 +398,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
       last = index.find(t[0]);
       if (last == index.end()) last = index.emplace(t[0], trips.size()).first;
     }
-    const auto it = last;
-    if (it->second == trips.size()) {
+    if (last->second == trips.size()) {
       trips.emplace_back();
       if (origin != nullptr) {
         origin->trip_ids.push_back(t[0]);
@@ -407,8 +406,8 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
         origin->lines.emplace_back();
       }
     }
-    if (origin != nullptr) origin->lines[it->second].push_back(number);
-    trips[it->second].push_back(fix);
+    if (origin != nullptr) origin->lines[last->second].push_back(number);
+    trips[last->second].push_back(fix);
   });
   return trips;
 }
@@ -601,8 +600,8 @@ bool parse_decimal(const std::string& token, double& value) {
 }
 
 void line_tokens(const std::string& line, std::vector<std::string>& out) {
-  // The whitespace of the "C" locale's isspace, which `std::istream >> std::string` used to split on (two
-  // million tracks lines were read three times faster without the string stream). The strings already in
+  // The whitespace of the "C" locale's isspace, which `std::istream >> std::string` used to split on (reading
+  // two million tracks lines took half the time without the string stream). The strings already in
   // `out` are reused.
   auto space = [](char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
