@@ -9,6 +9,7 @@
 // before session 39: a flat stem with a tall tooth at every vertex ("teethN") and a fan of loops ("fanN"),
 // simplified at delta 1, and joining the dead ends of a street with a stub at every other vertex ("stubsN",
 // connect_dead_ends with a bound), and a nearly flat noisy path ("noisyN", quadratic before session 64).
+// Dead ends of dashes in a square ("fieldN"), with one bound (a strip) and two (a grid; session 65).
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/geodesic_function.h>
 #include <FeatureRecon/skeleton/repair_reeb_graph.h>
@@ -17,6 +18,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <random>
 
 #ifdef FEATURERECON_WITH_VTK
@@ -120,6 +122,21 @@ const Input& input(const std::string& name) {
     }
     for (const auto& p : slot->positions) slot->f.push_back(p[0] + 1e-3 * p[1]);
     slot->complex = sk::make_simplicial_complex_2(slot->positions.size(), std::move(edges), {});
+  } else if (name.rfind("field", 0) == 0) {
+    // k x k rows of dashes in a square, k = sqrt(n): 4 points at x = 4c + 0, 1, 2, 3.1, y = 4r; each dash's
+    // right end lies 0.9 from the next dash's left end (joined at distance 1), rows 4 apart (never joined).
+    const auto k = static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(size_of(name)))));
+    std::vector<sk::Edge> edges;
+    for (std::size_t r = 0; r < k; ++r)
+      for (std::size_t c = 0; c < k; ++c)
+        for (const double dx : {0.0, 1.0, 2.0, 3.1}) {
+          if (dx > 0)
+            edges.push_back(
+                {sk::Vertex_index(slot->positions.size() - 1), sk::Vertex_index(slot->positions.size())});
+          slot->positions.push_back({4.0 * double(c) + dx, 4.0 * double(r), 0.0});
+        }
+    for (const auto& p : slot->positions) slot->f.push_back(p[0] + 1e-3 * p[1]);
+    slot->complex = sk::make_simplicial_complex_2(slot->positions.size(), std::move(edges), {});
   } else {
     const std::size_t kt = std::stoul(name.substr(5));  // "torusN": N thousand triangles
     const std::size_t nu = kt == 100   ? 250
@@ -170,13 +187,14 @@ void BM_simplify_featurerecon(benchmark::State& state, const std::string& name, 
   report(state, in, S.graph.nodes.size(), S.graph.arcs.size(), S.graph.loops());
 }
 
-/// The Reeb graph and the joining of its dead ends closer than 1 (each stub's end to the street below it,
-/// which is split there), the x coordinate as the bound.
-void BM_dead_ends_featurerecon(benchmark::State& state, const std::string& name) {
+/// The Reeb graph and the joining of its dead ends closer than 1 (stubs: each stub's end to the street below
+/// it, which is split there), the x coordinate as the bound, and with `two_bounds` y as the second one.
+void BM_dead_ends_featurerecon(benchmark::State& state, const std::string& name, bool two_bounds) {
   const Input& in = input(name);
   sk::Reeb_dead_end_result J;
   sk::Reeb_repair_options options;
   options.bound = [&in](sk::Vertex_index v) { return in.positions[v][0]; };
+  if (two_bounds) options.second_bound = [&in](sk::Vertex_index v) { return in.positions[v][1]; };
   auto distance = [&in](sk::Vertex_index a, sk::Vertex_index b) {
     return std::hypot(in.positions[a][0] - in.positions[b][0], in.positions[a][1] - in.positions[b][1]);
   };
@@ -277,7 +295,7 @@ void register_all() {
                       ? benchmark::RegisterBenchmark(("simplify/featurerecon/" + name).c_str(),
                                                      BM_simplify_featurerecon, name, 1.0)
                       : benchmark::RegisterBenchmark(("dead_ends/featurerecon/" + name).c_str(),
-                                                     BM_dead_ends_featurerecon, name);
+                                                     BM_dead_ends_featurerecon, name, false);
         b->Unit(benchmark::kMillisecond)->UseRealTime();
         if (size == "4000")
           b->MinTime(1.0);
@@ -285,6 +303,22 @@ void register_all() {
           b->Iterations(3);
       }
     }
+  }
+  // Dead ends in the plane (session 65): n dashes in a square, with x as the only bound (a strip: O(sqrt n)
+  // candidates per dead end) and with y as the second bound (a grid: O(1)), beside their Reeb graph.
+  for (const std::string size : {"40000", "160000", "640000"}) {
+    const std::string name = "field" + size;
+    benchmark::RegisterBenchmark(("reeb/featurerecon/" + name).c_str(), BM_reeb_featurerecon, name)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(3);
+    for (const bool two : {false, true})
+      benchmark::RegisterBenchmark(
+          ("dead_ends/featurerecon/" + std::string(two ? "xy/" : "x/") + name).c_str(),
+          BM_dead_ends_featurerecon, name, two)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(3);
   }
 }
 }  // namespace

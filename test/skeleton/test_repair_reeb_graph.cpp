@@ -34,11 +34,13 @@ void add_horizontal_street(Line& pts, std::vector<Edge>& edges, std::vector<doub
     if (i > 0) edges.push_back({Vertex_index(i - 1), Vertex_index(i)});
   }
 }
-/// Repair options with `bounded`: coordinate `axis` of `pts` as Reeb_repair_options::bound (1-Lipschitz, so
-/// the result must not change); else none. `pts` must outlive the options.
-Reeb_repair_options bound_option(const Planar_points& pts, bool bounded, std::size_t axis = 0) {
+/// Repair options with `bounded` bounds (0, 1 or 2): coordinate `axis` of `pts` as Reeb_repair_options::bound
+/// and with 2 the other coordinate as second_bound (1-Lipschitz, so the result must not change). `pts` must
+/// outlive the options.
+Reeb_repair_options bound_option(const Planar_points& pts, int bounded, std::size_t axis = 0) {
   Reeb_repair_options x;
-  if (bounded) x.bound = [&pts, axis](Vertex_index v) { return pts.p[v][axis]; };
+  if (bounded >= 1) x.bound = [&pts, axis](Vertex_index v) { return pts.p[v][axis]; };
+  if (bounded == 2) x.second_bound = [&pts, axis](Vertex_index v) { return pts.p[v][1 - axis]; };
   return x;
 }
 /// The street of add_horizontal_street() and a vertical segment of `length` from (5, 1.5) (vertices 11 and
@@ -543,7 +545,7 @@ TEST(ConnectDeadEnds, ADeadEndNeverClosesItsOwnStreetWhateverTheOrder) {
     }
     const Reeb_graph R = reeb_graph_of(make(pts.p.size(), edges, {}, f));
     ASSERT_EQ(R.arcs.size(), 2u);
-    for (const bool bounded : {false, true}) {
+    for (const int bounded : {0, 1, 2}) {
       const Reeb_repair_options x = bound_option(pts, bounded);
       const Reeb_dead_end_result r = connect_dead_ends(R, f, 3.5, pts, x);
       EXPECT_EQ(r.connected, 1u) << stub_f << " " << bounded;
@@ -559,24 +561,51 @@ TEST(ConnectDeadEnds, ADeadEndNeverClosesItsOwnStreetWhateverTheOrder) {
 }
 
 TEST(RepairReebGraph, ANaNBoundIsNamedNotSorted) {
-  // std::sort needs an order: a bound that is NaN somewhere (no 1-Lipschitz function is) throws, naming the
-  // vertex. repair_reeb_graph() reads the bound at the dead ends only, connect_dead_ends() at every vertex.
+  // std::sort needs an order and the window a difference: a bound that is NaN or infinite somewhere (either
+  // bound) throws, naming the bound and the vertex. repair_reeb_graph() reads the bounds at the dead ends
+  // only, connect_dead_ends() at every vertex.
   Line pts;
   const Complex_with_function c = street_and_segment(pts, 3.0);
   const Reeb_graph R = reeb_graph_of(c);
-  for (const Vertex_index nan_at : {Vertex_index(5), Vertex_index(11)}) {
-    Reeb_repair_options x;
-    x.bound = [&pts, nan_at](Vertex_index v) { return v == nan_at ? std::nan("") : pts.p[v][0]; };
-    const std::string named = "Reeb_repair_options::bound of vertex " + std::to_string(nan_at) + " is nan";
-    EXPECT_EQ(error_of([&] { connect_dead_ends(R, c.f, 2.0, pts, x); }),
-              "connect_dead_ends: " + named + " (a number needed)");
-    if (nan_at == 11) {
-      EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }),
-                "repair_reeb_graph: " + named + " (a number needed)");
-    } else {
-      EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }), "no exception");  // 5 is inside an arc
-    }
-  }
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double bad : {std::nan(""), inf, -inf})
+    for (const bool second : {false, true})
+      for (const Vertex_index bad_at : {Vertex_index(5), Vertex_index(11)}) {
+        Reeb_repair_options x;
+        auto coordinate = [&pts, bad_at, bad](std::size_t axis) -> std::function<double(std::uint32_t)> {
+          return [&pts, bad_at, bad, axis](Vertex_index v) { return v == bad_at ? bad : pts.p[v][axis]; };
+        };
+        x.bound = coordinate(0);
+        if (second) {
+          x.bound = [&pts](Vertex_index v) { return pts.p[v][0]; };
+          x.second_bound = coordinate(1);
+        }
+        const std::string named = std::string("Reeb_repair_options::") + (second ? "second_bound" : "bound") +
+                                  " of vertex " + std::to_string(bad_at) + " is " +
+                                  (bad == inf    ? "inf"
+                                   : bad == -inf ? "-inf"
+                                                 : "nan");
+        EXPECT_EQ(error_of([&] { connect_dead_ends(R, c.f, 2.0, pts, x); }),
+                  "connect_dead_ends: " + named + " (a finite number needed)");
+        if (bad_at == 11) {
+          EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }),
+                    "repair_reeb_graph: " + named + " (a finite number needed)");
+        } else {
+          EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }), "no exception");  // inside an arc
+        }
+      }
+}
+
+TEST(RepairReebGraph, ASecondBoundWithoutTheFirstIsRefused) {
+  Line pts;
+  const Complex_with_function c = street_and_segment(pts, 3.0);
+  const Reeb_graph R = reeb_graph_of(c);
+  Reeb_repair_options x;
+  x.second_bound = [&pts](Vertex_index v) { return pts.p[v][1]; };
+  const std::string why =
+      "Reeb_repair_options::second_bound is set without bound (the first bound is needed)";
+  EXPECT_EQ(error_of([&] { repair_reeb_graph(R, 2.0, pts, x); }), "repair_reeb_graph: " + why);
+  EXPECT_EQ(error_of([&] { connect_dead_ends(R, c.f, 2.0, pts, x); }), "connect_dead_ends: " + why);
 }
 
 namespace {
@@ -600,8 +629,8 @@ Point_matrix random_dashes(std::uint32_t seed) {
 
 TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
   // Random dashes in the plane (ties on a lattice in half the runs): repair and dead-end connection with the
-  // x coordinate as a 1-Lipschitz bound give exactly the graphs of the all-pairs search, and measure far
-  // fewer pairs.
+  // x coordinate as a 1-Lipschitz bound, and with y as a second one, give exactly the graphs of the all-pairs
+  // search, and measure far fewer pairs (two bounds fewer than one).
   for (std::uint32_t seed = 1; seed <= 12; ++seed) {
     const Point_matrix m = random_dashes(seed);
     const Proximity_graph g = build_rips_graph(m, 1.0);
@@ -617,6 +646,9 @@ TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
     };
     Reeb_repair_options x;
     x.bound = [&m](Vertex_index v) { return m.row(v)[0]; };
+    Reeb_repair_options xy = x;
+    xy.second_bound = [&m](Vertex_index v) { return m.row(v)[1]; };
+    std::size_t grid_pairs = 0;
     for (const double reach : {1.5, 4.0, 10.0}) {
       const Reeb_repair_result plain = repair_reeb_graph(R, reach, distance(&all_pairs));
       const Reeb_repair_result fast = repair_reeb_graph(R, reach, distance(&bounded_pairs), x);
@@ -629,8 +661,57 @@ TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
       EXPECT_GT(ends.connected, 0u) << "seed " << seed << ", reach " << reach;
       EXPECT_EQ(ends.connected, quick.connected) << "seed " << seed << ", reach " << reach;
       EXPECT_TRUE(same_graph(ends.graph, quick.graph)) << "seed " << seed << ", reach " << reach;
+      const Reeb_repair_result grid = repair_reeb_graph(R, reach, distance(&grid_pairs), xy);
+      EXPECT_EQ(plain.joined, grid.joined) << "seed " << seed << ", reach " << reach;
+      EXPECT_TRUE(same_graph(plain.graph, grid.graph)) << "seed " << seed << ", reach " << reach;
+      const Reeb_dead_end_result cells =
+          connect_dead_ends(plain.graph, geo.values, reach, distance(&grid_pairs), xy);
+      EXPECT_EQ(ends.connected, cells.connected) << "seed " << seed << ", reach " << reach;
+      EXPECT_TRUE(same_graph(ends.graph, cells.graph)) << "seed " << seed << ", reach " << reach;
     }
     EXPECT_LT(3 * bounded_pairs, all_pairs) << "seed " << seed;
+    EXPECT_LT(grid_pairs, bounded_pairs) << "seed " << seed;
+  }
+}
+
+TEST(ConnectDeadEnds, TwoBoundsMeasureAFewCandidatesPerEndOnAPlane) {
+  // k x k horizontal dashes of 3 points, 4 apart: no two within the distance 1, nothing is joined. With the x
+  // coordinate as the only bound, a dead end measures the strip of its x: the 2 points of each dash of its
+  // column that lie within 1 (about 2k); with y as the second bound too, only its own cell, where its own
+  // dash is excluded: the one distance to its dash's other end (the isolated-segment check), whatever k.
+  // repair_reeb_graph() measures the dead ends of the other rows with one bound and none with two.
+  for (const int k : {10, 20, 40}) {
+    Planar_points pts;
+    std::vector<Edge> edges;
+    std::vector<double> f;
+    for (int row = 0; row < k; ++row)
+      for (int column = 0; column < k; ++column)
+        for (int i = 0; i < 3; ++i) {
+          pts.p.push_back({4.0 * column + i, 4.0 * row});
+          f.push_back(4.0 * column + i + 1e-3 * row);
+          if (i > 0) edges.push_back({Vertex_index(pts.p.size() - 2), Vertex_index(pts.p.size() - 1)});
+        }
+    const Complex_with_function c = make(pts.p.size(), edges, {}, f);
+    const Reeb_graph R = reeb_graph_of(c);
+    const std::size_t ends = 2 * std::size_t(k) * std::size_t(k);
+    ASSERT_EQ(R.arcs.size(), ends / 2);
+    std::size_t strip = 0, cells = 0, strip_pairs = 0, cell_pairs = 0;
+    auto counting = [&pts](std::size_t& count) {
+      return [&pts, &count](Vertex_index a, Vertex_index b) {
+        ++count;
+        return pts(a, b);
+      };
+    };
+    const Reeb_dead_end_result one = connect_dead_ends(R, c.f, 1.0, counting(strip), bound_option(pts, 1));
+    const Reeb_dead_end_result two = connect_dead_ends(R, c.f, 1.0, counting(cells), bound_option(pts, 2));
+    EXPECT_EQ(one.connected, 0u) << k;
+    EXPECT_TRUE(same_graph(one.graph, two.graph)) << k;
+    EXPECT_EQ(cells, ends) << k;
+    EXPECT_EQ(strip, ends + ends * (2 * std::size_t(k) - 2)) << k;
+    EXPECT_EQ(repair_reeb_graph(R, 1.0, counting(strip_pairs), bound_option(pts, 1)).joined, 0u) << k;
+    EXPECT_EQ(repair_reeb_graph(R, 1.0, counting(cell_pairs), bound_option(pts, 2)).joined, 0u) << k;
+    EXPECT_EQ(strip_pairs, ends * (std::size_t(k) - 1) / 2) << k;
+    EXPECT_EQ(cell_pairs, 0u) << k;
   }
 }
 
@@ -649,9 +730,10 @@ TEST(RepairReebGraph, ProgressIsReportedAndAStopLeavesAValidGraph) {
   const Reeb_dead_end_result ends = connect_dead_ends(R, geo.values, 4.0, distance);
   ASSERT_GT(plain.joined, 2u);
   ASSERT_GT(ends.connected, 2u);
-  for (const bool bounded : {false, true}) {
+  for (const int bounded : {0, 1, 2}) {
     Reeb_repair_options options;
-    if (bounded) options.bound = [&m](Vertex_index v) { return m.row(v)[1]; };
+    if (bounded >= 1) options.bound = [&m](Vertex_index v) { return m.row(v)[1]; };
+    if (bounded == 2) options.second_bound = [&m](Vertex_index v) { return m.row(v)[0]; };
     std::vector<double> seen;
     options.progress = test::recording_progress(seen);
     const Reeb_repair_result watched = repair_reeb_graph(R, 4.0, distance, options);
@@ -792,7 +874,7 @@ TEST(ConnectDeadEnds, ADeadEndThatWasConnectedToIsNoLongerADeadEnd) {
   const Planar_points pts{{{-10.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {10.0, 0.0}}};
   const std::vector<double> f{-10.0, 0.0, 1.0, 10.0};
   const Reeb_graph R = hand_graph({{0, -10.0}, {1, 0.0}, {2, 1.0}, {3, 10.0}}, {{0, 1, {}}, {2, 3, {}}});
-  for (const bool bounded : {false, true}) {
+  for (const int bounded : {0, 1, 2}) {
     const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_dead_end_result r = connect_dead_ends(R, f, 1.5, pts, x);
     EXPECT_EQ(r.connected, 1u) << bounded;
@@ -832,7 +914,7 @@ TEST(ConnectDeadEnds, ADeadEndNeverJoinsTheFarEndOfItsOwnArc) {
   const std::vector<double> f{0, 1, 2, 3, 4, 5, 6, 7, 8, 1.5, 2.5, 3.5};
   const Reeb_graph R =
       hand_graph({{0, 0.0}, {11, 3.5}, {8, 8.0}}, {{0, 2, {1, 2, 3, 4, 5, 6, 7}}, {0, 1, {9, 10}}});
-  for (const bool bounded : {false, true}) {
+  for (const int bounded : {0, 1, 2}) {
     const Reeb_repair_options x = bound_option(pts, bounded, 1);
     const Reeb_dead_end_result r = connect_dead_ends(R, f, 1.2, pts, x);
     EXPECT_EQ(r.connected, 0u) << bounded;
@@ -866,7 +948,7 @@ TEST(RepairReebGraph, EachEndIsJoinedAtMostOnce) {
   const Planar_points pts{{{-20.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {20.0, 0.0}, {1.0, 1.2}, {1.0, 10.0}}};
   const Reeb_graph R = hand_graph({{0, -20.0}, {1, 0.0}, {4, 0.5}, {2, 1.0}, {5, 10.0}, {3, 20.0}},
                                   {{0, 1, {}}, {2, 4, {}}, {3, 5, {}}});
-  for (const bool bounded : {false, true}) {
+  for (const int bounded : {0, 1, 2}) {
     const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_repair_result fixed = repair_reeb_graph(R, 1.3, pts, x);
     EXPECT_EQ(fixed.joined, 1u) << bounded;
@@ -904,7 +986,7 @@ TEST(ConnectDeadEnds, ASegmentSplitByAnEarlierDeadEndIsNoLongerIsolated) {
   }
   const Reeb_graph R =
       hand_graph({{6, -10.0}, {10, -6.0}, {0, 0.0}, {5, 2.0}}, {{0, 1, {7, 8, 9}}, {2, 3, {1, 2, 3, 4}}});
-  for (const bool bounded : {false, true}) {
+  for (const int bounded : {0, 1, 2}) {
     const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_dead_end_result r = connect_dead_ends(R, f, 2.2, pts, x);
     EXPECT_EQ(r.connected, 2u) << bounded;
@@ -926,7 +1008,7 @@ TEST(RepairReebGraph, EqualDistancesGoToThePairOfSmallerNodes) {
   // c below a: nodes v0, c, b, a, v3, v5.
   const Reeb_graph c_first = hand_graph({{0, -20.0}, {4, 0.0}, {2, 1.0}, {1, 2.0}, {3, 20.0}, {5, 22.0}},
                                         {{0, 3, {}}, {2, 4, {}}, {1, 5, {}}});
-  for (const bool bounded : {false, true}) {
+  for (const int bounded : {0, 1, 2}) {
     const Reeb_repair_options x = bound_option(pts, bounded);
     const Reeb_repair_result one = repair_reeb_graph(a_first, 1.5, pts, x);
     const Reeb_repair_result two = repair_reeb_graph(c_first, 1.5, pts, x);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include "hera_bottleneck.h"
@@ -18,6 +19,18 @@ using namespace FeatureRecon::skeleton;
 using namespace FeatureRecon::test;
 
 namespace {
+/// Options whose progress callback refuses every fraction from `stop_at` on and counts in `later` the reports
+/// after the first refusal (a stopped run must ask no more).
+Simplification_options stopping_at(double stop_at, std::size_t& later) {
+  Simplification_options stopping;
+  // The state is shared: copies of the callback (stage wrappers) see one refusal.
+  stopping.progress = [stop_at, &later, refused = std::make_shared<bool>(false)](double t) {
+    if (*refused) ++later;
+    *refused = *refused || t >= stop_at;
+    return t < stop_at;
+  };
+  return stopping;
+}
 std::vector<std::pair<double, double>> diagram(const std::vector<Reeb_persistence_pair>& v) {
   std::vector<std::pair<double, double>> d;
   for (const auto& p : v)
@@ -506,14 +519,7 @@ TEST(SimplifyByPersistence, ProgressIsReportedAndAStopEndsIt) {
   EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.9; }));
   for (const double stop_at : {0.0, 0.15, 0.5, 0.95}) {
     std::size_t later = 0;
-    bool refused = false;
-    Simplification_options stopping;
-    stopping.progress = [&](double t) {
-      if (refused) ++later;
-      refused = refused || t >= stop_at;
-      return t < stop_at;
-    };
-    const Reeb_simplification_result S = simplify_by_persistence(A, 1.0, stopping);
+    const Reeb_simplification_result S = simplify_by_persistence(A, 1.0, stopping_at(stop_at, later));
     EXPECT_EQ(S.status, stop_at < 0.95 ? Status::interrupted : Status::success)
         << stop_at;  // 1.0 is not asked
     if (stop_at < 0.95) {
@@ -633,6 +639,21 @@ TEST(SimplifyByPersistence, NoisyFlatPathGluesEachEdgeToLogManySpineSegments) {
   EXPECT_EQ(S.graph.nodes[1].vertex, highest);
   EXPECT_EQ(S.graph.arcs[0].vertices.size(), n - 2);
   expect_partition(S.graph, n, "noisy flat path");
+  // The gluing reports progress between 0.2 and 0.3 and stops there: no graph and no later report.
+  std::vector<double> seen;
+  Simplification_options watching;
+  watching.progress = test::recording_progress(seen);
+  EXPECT_EQ(simplify_by_persistence(A, 1.0, watching).glued_triangles, S.glued_triangles);
+  const auto gluing = std::find_if(seen.begin(), seen.end(), [](double t) { return t > 0.2 && t < 0.3; });
+  ASSERT_NE(gluing, seen.end());
+  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.2 && t < 0.3; }), 4);
+  const double stop_at = *gluing;
+  std::size_t later = 0;
+  const Reeb_simplification_result stopped = simplify_by_persistence(A, 1.0, stopping_at(stop_at, later));
+  EXPECT_EQ(stopped.status, Status::interrupted);
+  EXPECT_TRUE(stopped.graph.nodes.empty());
+  EXPECT_EQ(stopped.glued_triangles, 0u);
+  EXPECT_EQ(later, 0u);
 }
 
 TEST(SimplifyByPersistence, FanOfLoopsGluesEachLoopOnce) {

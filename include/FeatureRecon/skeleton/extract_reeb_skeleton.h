@@ -27,6 +27,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace FeatureRecon {
@@ -576,12 +577,13 @@ inline Reeb_skeleton interrupted_skeleton(std::size_t dimension, double rips_rad
   return s;
 }
 
-/// The stages after the proximity graph; `distance` measures input space for the repair, `bound` is nullptr
-/// or 1-Lipschitz for it (repair_reeb_graph()); `first`: the first copy of each vertex, or empty (no copies).
-template <class Distance, class Bound>
+/// The stages after the proximity graph; `distance` measures input space for the repair, `bounds` is nullptr
+/// or an Axis_bounds, 1-Lipschitz for it (Reeb_repair_options); `first`: the first copy of each vertex, or
+/// empty (no copies).
+template <class Distance, class Bounds>
 Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matrix& coordinates,
                                   const Distance& distance, const Skeleton_options& options,
-                                  double progress_start, Bound bound,
+                                  double progress_start, const Bounds& bounds,
                                   const char* fn = "extract_reeb_skeleton",
                                   const std::vector<Vertex_index>& first = {},
                                   bool coordinates_are_metric = true) {
@@ -652,7 +654,10 @@ Reeb_skeleton skeleton_from_graph(const Proximity_graph& graph, const Point_matr
   result.removed_loops = S.removed_loops;
   if (options.repair_distance > 0) {
     Reeb_repair_options repair;
-    if constexpr (!std::is_same<Bound, std::nullptr_t>::value) repair.bound = bound;
+    if constexpr (!std::is_same<Bounds, std::nullptr_t>::value) {
+      repair.bound = bounds.first;
+      repair.second_bound = bounds.second;
+    }
     repair.progress = stage(0.87, 0.89);
     Reeb_repair_result fixed = repair_reeb_graph(S.graph, options.repair_distance, distance, repair);
     if (ended(fixed.status)) return result;
@@ -831,23 +836,29 @@ inline Proximity_graph rips_graph_of_distinct_points(const Point_matrix& points,
   return join_copies(build_rips_graph(distinct, radius, options), first, original);
 }
 
-/// The coordinate axis along which the points spread the most: its coordinate bounds the Euclidean distance
-/// (1-Lipschitz) and separates the most pairs for repair_reeb_graph() and connect_dead_ends().
-inline std::size_t widest_axis(const Point_matrix& points) {
-  std::size_t best = 0;
-  double widest = -1;
+/// The bounds of repair_reeb_graph() and connect_dead_ends() for Euclidean points: the coordinates of the two
+/// axes along which the points spread the most (ties: the smaller axis), each 1-Lipschitz for the distance;
+/// the second empty in dimension 1. Two bounds make the repair's search a grid instead of a strip.
+using Axis_bounds = std::pair<std::function<double(std::uint32_t)>, std::function<double(std::uint32_t)>>;
+inline Axis_bounds widest_axis_bounds(const Point_matrix& points) {
+  std::vector<std::pair<double, std::size_t>> spread;  // (-extent, axis)
   for (std::size_t c = 0; c < points.dimension; ++c) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < points.rows; ++i) {
       lo = std::min(lo, points.row(i)[c]);
       hi = std::max(hi, points.row(i)[c]);
     }
-    if (hi - lo > widest) {
-      widest = hi - lo;
-      best = c;
-    }
+    spread.emplace_back(-(hi - lo), c);  // no points: +inf for every axis, equal
   }
-  return best;
+  std::stable_sort(spread.begin(), spread.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  Axis_bounds bounds;
+  auto axis_of = [&points](std::size_t axis) {
+    return [&points, axis](std::uint32_t v) { return points.row(v)[axis]; };
+  };
+  if (!spread.empty()) bounds.first = axis_of(spread[0].second);
+  if (spread.size() > 1) bounds.second = axis_of(spread[1].second);
+  return bounds;
 }
 
 inline double euclidean_distance(const Point_matrix& points, Vertex_index a, Vertex_index b) {
@@ -897,9 +908,7 @@ Reeb_skeleton extract_reeb_skeleton(const Point_matrix& points, Radius radius,
   Reeb_skeleton s = internal::skeleton_from_graph(
       g, points,
       [&points](Vertex_index a, Vertex_index b) { return internal::euclidean_distance(points, a, b); },
-      options, 0.3,
-      [&points, axis = internal::widest_axis(points)](Vertex_index v) { return points.row(v)[axis]; },
-      "extract_reeb_skeleton", first);
+      options, 0.3, internal::widest_axis_bounds(points), "extract_reeb_skeleton", first);
   s.rips_radius = rips_radius;
   return s;
 }
@@ -979,10 +988,7 @@ inline Reeb_skeleton extract_reeb_skeleton(const Proximity_graph& graph, const P
       [&coordinates](Vertex_index a, Vertex_index b) {
         return internal::euclidean_distance(coordinates, a, b);
       },
-      options, 0.0,
-      [&coordinates, axis = internal::widest_axis(coordinates)](Vertex_index v) {
-        return coordinates.row(v)[axis];
-      });
+      options, 0.0, internal::widest_axis_bounds(coordinates));
 }
 
 /// extract_reeb_skeleton(graph, coordinates, options) with the coordinates as a range of points (one per

@@ -92,14 +92,14 @@ inline std::vector<std::size_t> node_components(const Reeb_graph& G) {
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = find(i);
   return parent;
 }
-/// The bound of input vertex v, checked: a NaN (no 1-Lipschitz function has one) throws, naming the vertex,
-/// since std::sort needs an order.
+/// The bound of input vertex v, checked: a NaN or an infinity throws, naming the bound and the vertex (no
+/// order to sort by, and no difference to compare with the distance).
 template <class Bound>
-double checked_bound(const Bound& bound, Vertex_index v, const char* fn) {
+double checked_bound(const Bound& bound, Vertex_index v, const char* fn, const char* name = "bound") {
   const double b = static_cast<double>(bound(v));
-  if (std::isnan(b))
-    FeatureRecon::internal::throw_invalid_argument(fn, "Reeb_repair_options::bound of vertex ", v, " is ", b,
-                                                   " (a number needed)");
+  if (!std::isfinite(b))
+    FeatureRecon::internal::throw_invalid_argument(fn, "Reeb_repair_options::", name, " of vertex ", v,
+                                                   " is ", b, " (a finite number needed)");
   return b;
 }
 /// The user's distance between input points a and b, checked: NaN or negative is not a distance (a NaN joined
@@ -113,21 +113,132 @@ double checked_distance(Distance& distance, Vertex_index a, Vertex_index b, cons
                                                    " (the distance callable must return a number >= 0)");
   return d;
 }
-/// The nodes `ends` (indices into G.nodes) as (bound of their vertex, node), sorted.
-template <class Bound>
-std::vector<std::pair<double, std::size_t>> sorted_by_bound(const std::vector<std::size_t>& ends,
-                                                            const Bound& bound, const Reeb_graph& G,
-                                                            const char* fn) {
-  std::vector<std::pair<double, std::size_t>> swept;
-  swept.reserve(ends.size());
-  for (const std::size_t e : ends) swept.emplace_back(checked_bound(bound, G.nodes[e].vertex, fn), e);
-  std::sort(swept.begin(), swept.end());
-  return swept;
-}
 /// The bound difference up to which a pair is measured: max_distance with room for the rounding of a computed
 /// distance (a Euclidean distance may come out an ulp below the difference of one coordinate).
 inline double bound_window(double max_distance) {
   return max_distance * (1 + 1e-12) + std::numeric_limits<double>::denorm_min();
+}
+
+/// A slot (a node, or a vertex of an arc) and the values of Reeb_repair_options' bounds at its vertex (the
+/// second equal to the first without a second bound).
+struct Bounded_slot {
+  double first, second;
+  std::size_t slot;
+};
+
+/// The candidates of a search within a distance, from Reeb_repair_options' bounds. With one bound: the slots
+/// sorted by it, a query visits those within the window of its bound (a strip; O(sqrt n) of n points of even
+/// density in the plane). With two: columns of the first bound about a window wide, each sorted by the second
+/// bound, a query visits the slots within the window in both bounds (O(1) cells of the window's side).
+/// Differences are compared with the window, never shifted bounds: rounding is monotone, so a slot whose
+/// bounds truly differ by at most the window is visited whatever the bounds' magnitude. The sorted keys,
+/// slots and (with two bounds) first bounds lie in separate arrays: a strip's scan reads 8 bytes a slot.
+class Bound_index {
+ public:
+  /// `two`: whether `slots` carry a second bound. \pre the bounds finite, window > 0.
+  Bound_index(std::vector<Bounded_slot> slots, double window, bool two) : window_(window), two_(two) {
+    auto by = [](auto key) {
+      return [key](const Bounded_slot& a, const Bounded_slot& b) {
+        return key(a) < key(b) || (!(key(b) < key(a)) && a.slot < b.slot);
+      };
+    };
+    std::sort(slots.begin(), slots.end(), by([](const Bounded_slot& s) { return s.first; }));
+    // The column of a first bound: floor((first - least) / window), capped (a tiny window overflows); both
+    // monotone, so the columns are runs of the sorted slots, in order.
+    const double least = slots.empty() ? 0.0 : slots.front().first;
+    auto column = [this, least](double first) {
+      const double t = (first - least) / window_, cap = 0x1p62;
+      return two_ ? (t < cap ? std::floor(t) : cap) : 0.0;
+    };
+    for (std::size_t b = 0; b < slots.size();) {
+      const double c = column(slots[b].first);
+      std::size_t e = b + 1;
+      while (e < slots.size() && column(slots[e].first) == c) ++e;
+      columns_.push_back({slots[b].first, slots[e - 1].first, b, e});
+      if (two_)
+        std::sort(slots.begin() + static_cast<std::ptrdiff_t>(b),
+                  slots.begin() + static_cast<std::ptrdiff_t>(e),
+                  by([](const Bounded_slot& s) { return s.second; }));
+      b = e;
+    }
+    keys_.reserve(slots.size());
+    slots_.reserve(slots.size());
+    if (two_) firsts_.reserve(slots.size());
+    for (const Bounded_slot& s : slots) {
+      keys_.push_back(two_ ? s.second : s.first);
+      slots_.push_back(s.slot);
+      if (two_) firsts_.push_back(s.first);
+    }
+  }
+  /// Calls visit(slot) for every slot whose bounds differ from (first, second) by at most the window (each
+  /// once; in no particular order).
+  template <class Visit>
+  void visit(double first, double second, Visit&& visit) const {
+    const double key = two_ ? second : first;
+    const auto c0 = std::partition_point(columns_.begin(), columns_.end(),
+                                         [&](const Column& c) { return first - c.last > window_; });
+    for (auto c = c0; c != columns_.end() && c->first - first <= window_; ++c)
+      for (std::size_t i = lowest_within(*c, key); i < c->end && keys_[i] - key <= window_; ++i)
+        if (near_first(i, first)) visit(slots_[i]);
+  }
+  /// Calls pair(s, t) once for every two slots whose bounds differ by at most the window, s before t in the
+  /// sorted order, and after(k) once the pairs of the k-th slot in that order are visited (k = 0, 1, ...);
+  /// after() returning true stops the sweep (then false is returned).
+  template <class Pair, class After>
+  bool for_each_pair(Pair&& pair, After&& after) const {
+    for (std::size_t c = 0; c < columns_.size(); ++c)
+      for (std::size_t i = columns_[c].begin; i < columns_[c].end; ++i) {
+        const double key = keys_[i], first = two_ ? firsts_[i] : key;
+        // The rest of its own column, by key; then the later columns within the window (none with one
+        // bound), where the keys lie on both sides.
+        for (std::size_t j = i + 1; j < columns_[c].end && keys_[j] - key <= window_; ++j)
+          if (near_first(j, first)) pair(slots_[i], slots_[j]);
+        for (std::size_t d = c + 1; d < columns_.size() && columns_[d].first - first <= window_; ++d)
+          for (std::size_t j = lowest_within(columns_[d], key);
+               j < columns_[d].end && keys_[j] - key <= window_; ++j)
+            if (near_first(j, first)) pair(slots_[i], slots_[j]);
+        if (after(i)) return false;
+      }
+    return true;
+  }
+
+ private:
+  struct Column {
+    double first, last;  // the least and the largest first bound of its slots
+    std::size_t begin, end;
+  };
+  /// The first index of column c whose key lies at most the window below `key` (the column's end if none).
+  std::size_t lowest_within(const Column& c, double key) const {
+    return static_cast<std::size_t>(std::partition_point(keys_.begin() + static_cast<std::ptrdiff_t>(c.begin),
+                                                         keys_.begin() + static_cast<std::ptrdiff_t>(c.end),
+                                                         [&](double k) { return key - k > window_; }) -
+                                    keys_.begin());
+  }
+  /// Whether sorted slot i's first bound is within the window of `first` (always, with one bound: the key).
+  bool near_first(std::size_t i, double first) const {
+    return !two_ || (first - firsts_[i] <= window_ && firsts_[i] - first <= window_);
+  }
+  // By column, then by (key, slot); the key is the second bound (the first with one bound).
+  std::vector<double> keys_, firsts_;
+  std::vector<std::size_t> slots_;
+  std::vector<Column> columns_;
+  double window_;
+  bool two_;
+};
+
+/// Whether the options ask for a bounded search at all (a second bound without a first throws).
+inline bool bounded_search(const Reeb_repair_options& options, const char* fn) {
+  if (options.second_bound && !options.bound)
+    FeatureRecon::internal::throw_invalid_argument(
+        fn, "Reeb_repair_options::second_bound is set without bound (the first bound is needed)");
+  return static_cast<bool>(options.bound);
+}
+/// The bounds of input vertex v as a Bounded_slot (checked).
+inline Bounded_slot bounded_slot(const Reeb_repair_options& options, Vertex_index v, std::size_t slot,
+                                 const char* fn) {
+  const double first = checked_bound(options.bound, v, fn);
+  return {first, options.second_bound ? checked_bound(options.second_bound, v, fn, "second_bound") : first,
+          slot};
 }
 }  // namespace internal
 
@@ -146,13 +257,15 @@ struct Reeb_repair_result {
 /// is left as it is (no loop of two arcs), and neither end joins anything farther. The new features are not
 /// checked: simplify_by_persistence(graph, values, delta) afterwards removes the small ones and absorbs nodes
 /// that became regular. O(k^2 log k) for k degree-1 nodes; with Reeb_repair_options::bound, only pairs whose
-/// bounds differ by at most max_distance are measured (the same result). The progress callback is asked after
-/// each end's pairs are measured; a stop adds no arc (the graph is R, status interrupted).
+/// bounds differ by at most max_distance are measured (the same result; with second_bound too, pairs within
+/// it in both, found in a grid: O(k log k + p) for p such pairs). The progress callback is asked after each
+/// end's pairs are measured; a stop adds no arc (the graph is R, status interrupted).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the distance between two input points (>= 0;
 ///   NaN or a negative value throws std::invalid_argument naming the two vertices).
 /// \pre max_distance >= 0 and finite; R's node values finite and in increasing (value, vertex) order, its
 ///   arcs going up between its nodes, as reeb_graph() and simplify_by_persistence() return them;
-///   Reeb_repair_options::bound not NaN at a degree-1 node (all checked; throws).
+///   Reeb_repair_options::bound (and second_bound) finite at every degree-1 node, second_bound only with
+///   bound (all checked; throws).
 template <class Distance>
 Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, Distance distance,
                                      const Reeb_repair_options& options = {}) {
@@ -186,22 +299,22 @@ Reeb_repair_result repair_reeb_graph(const Reeb_graph& R, double max_distance, D
     result.status = Status::interrupted;
     return true;
   };
-  if (!options.bound) {
+  if (!internal::bounded_search(options, fn)) {
     for (std::size_t a = 0; a < ends.size(); ++a) {
       for (std::size_t b = a + 1; b < ends.size(); ++b) measure(ends[a], ends[b]);
       if (stopped_after(a)) return result;
     }
   } else {
-    // A sweep over the ends sorted by their bound: a pair farther apart in bound is farther apart in
-    // distance.
-    const std::vector<std::pair<double, std::size_t>> swept =
-        internal::sorted_by_bound(ends, options.bound, G, fn);
-    const double window = internal::bound_window(max_distance);
-    for (std::size_t a = 0; a < swept.size(); ++a) {
-      for (std::size_t b = a + 1; b < swept.size() && swept[b].first - swept[a].first <= window; ++b)
-        measure(std::min(swept[a].second, swept[b].second), std::max(swept[a].second, swept[b].second));
-      if (stopped_after(a)) return result;
-    }
+    // Only the ends within the window of each other's bounds: a pair farther apart in a bound is farther
+    // apart in distance. Each pair is measured once.
+    std::vector<internal::Bounded_slot> at;
+    at.reserve(ends.size());
+    for (const std::size_t e : ends) at.push_back(internal::bounded_slot(options, G.nodes[e].vertex, e, fn));
+    const internal::Bound_index index(std::move(at), internal::bound_window(max_distance),
+                                      static_cast<bool>(options.second_bound));
+    if (!index.for_each_pair([&](std::size_t x, std::size_t y) { measure(std::min(x, y), std::max(x, y)); },
+                             stopped_after))
+      return result;
   }
   std::sort(candidates.begin(), candidates.end());
   for (const auto& [d, x, y] : candidates) {
@@ -282,15 +395,14 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
   // With a bound: every vertex of the graph as a slot (node i is slot i, vertex k of input arc a is slot
   // first_slot[a] + k) sorted by bound, and where each slot is now: a node, or the piece that holds it.
   // Splits only move vertices between pieces and into new nodes, so the sorted list stays valid.
-  const auto& bound = options.bound;
-  const bool bounded = static_cast<bool>(bound);
+  const bool bounded = bounded_search(options, fn);
   struct Place {
     std::size_t node, piece;  // node none: an interior vertex of `piece`
   };
   std::vector<std::size_t> first_slot;
   std::vector<Vertex_index> vertex_of;
   std::vector<Place> place;
-  std::vector<std::pair<double, std::size_t>> by_bound;
+  Bound_index by_bound({}, 1.0, false);
   if (bounded) {
     std::size_t slots = n0;
     first_slot.reserve(R.arcs.size());
@@ -309,9 +421,11 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
         vertex_of.push_back(v);
         place.push_back({none, a});
       }
-    by_bound.reserve(slots);
-    for (std::size_t s = 0; s < slots; ++s) by_bound.emplace_back(checked_bound(bound, vertex_of[s], fn), s);
-    std::sort(by_bound.begin(), by_bound.end());
+    std::vector<Bounded_slot> at;
+    at.reserve(slots);
+    for (std::size_t s = 0; s < slots; ++s) at.push_back(bounded_slot(options, vertex_of[s], s, fn));
+    by_bound =
+        Bound_index(std::move(at), bound_window(max_distance), static_cast<bool>(options.second_bound));
   }
   for (std::size_t e = 0; e < ends.size(); ++e) {
     if (e > 0 && !FeatureRecon::internal::report_progress(
@@ -355,17 +469,15 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
     };
     if (bounded) {
       // The candidates' order does not matter: the closest wins, ties by smallest vertex.
-      const double b = static_cast<double>(bound(end_vertex)), window = bound_window(max_distance);
-      auto it =
-          std::lower_bound(by_bound.begin(), by_bound.end(), std::make_pair(b - window, std::size_t(0)));
-      for (; it != by_bound.end() && it->first <= b + window; ++it) {
-        const Place& at = place[it->second];
+      const Bounded_slot b = bounded_slot(options, end_vertex, 0, fn);
+      by_bound.visit(b.first, b.second, [&](std::size_t s) {
+        const Place& at = place[s];
         if (at.node != none) {
-          if (!excluded_node(at.node)) consider(vertex_of[it->second], at.node, none, 0);
+          if (!excluded_node(at.node)) consider(vertex_of[s], at.node, none, 0);
         } else if (!excluded_piece(at.piece)) {
-          consider(vertex_of[it->second], none, at.piece, it->second - first_slot[pieces[at.piece].input]);
+          consider(vertex_of[s], none, at.piece, s - first_slot[pieces[at.piece].input]);
         }
-      }
+      });
     } else {
       for (std::size_t i = 0; i < nodes.size(); ++i)
         if (!excluded_node(i)) consider(nodes[i].vertex, i, none, 0);
@@ -467,13 +579,16 @@ Reeb_dead_end_result connect_dead_ends_counting(const Reeb_graph& R, const std::
 /// dead ends and n input vertices in the graph, and O(n log n) for all splits (each moves the shorter side of
 /// its arc); the arcs come back in the order of Reeb_graph::arcs, their vertex vectors no larger than they
 /// need. With Reeb_repair_options::bound, only the vertices whose bound lies within max_distance of the dead
-/// end's are measured: O(n log n + k w) for w such vertices, the same result. The progress callback is asked
-/// after each dead end; a stop keeps the arcs added so far (a valid graph, status interrupted).
+/// end's are measured: O(n log n + k w) for w such vertices, the same result; with second_bound too, those
+/// within it in both bounds (a grid; w then O(1) for points of even density in the plane). The progress
+/// callback is asked after each dead end; a stop keeps the arcs added so far (a valid graph, status
+/// interrupted).
 /// \param values f of every input vertex (for the new nodes).
 /// \tparam Distance callable `double(Vertex_index, Vertex_index)`, the input distance (>= 0; NaN or a negative
 ///   value throws std::invalid_argument naming the two vertices).
 /// \pre max_distance >= 0 and finite; R as for repair_reeb_graph(), and every vertex it uses indexes
-///   `values`; Reeb_repair_options::bound not NaN at any vertex of R (all checked; throws).
+///   `values`; Reeb_repair_options::bound (and second_bound) finite at every vertex of R, second_bound only
+///   with bound (all checked; throws).
 template <class Distance>
 Reeb_dead_end_result connect_dead_ends(const Reeb_graph& R, const std::vector<double>& values,
                                        double max_distance, Distance distance,

@@ -567,7 +567,15 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R,
   // Spines and strips.
   std::vector<double> levels;
   std::vector<char> tree_built;  // per segment-tree node of the current spine (root 1, children 2i, 2i + 1)
+  // Progress by merging edges glued (0.2 to 0.3), asked once per 1,024 of them: a nearly flat noisy path of
+  // 40,000 spends seconds here.
+  const double merging_total = static_cast<double>(merging_start.back());
+  std::size_t next_report = 1024;
   for (std::size_t j = 0; j + 1 < merging_start.size(); ++j) {
+    if (merging_start[j] >= next_report) {
+      next_report = merging_start[j] + 1024;
+      if (stopped(0.2 + 0.1 * static_cast<double>(merging_start[j]) / merging_total)) return result;
+    }
     const auto edges_begin = merging_edges.begin() + static_cast<std::ptrdiff_t>(merging_start[j]);
     auto edges_end = merging_edges.begin() + static_cast<std::ptrdiff_t>(merging_start[j + 1]);
     std::sort(edges_begin, edges_end);

@@ -89,8 +89,13 @@ struct Reeb_repair_options {
   /// Empty (default: every pair is measured), or a function of an input vertex that is 1-Lipschitz for the
   /// distance, |bound(a) - bound(b)| <= distance(a, b) (a coordinate of Euclidean points): only pairs whose
   /// bounds differ by at most the repair distance are measured. The result is the same; the work drops from
-  /// quadratic.
+  /// quadratic. Its values must be finite (a NaN or an infinity throws, naming the vertex).
   std::function<double(std::uint32_t)> bound;
+  /// Empty (default), or a second such function (another coordinate); only with `bound` (set alone, it
+  /// throws). With both, a pair is measured only when both bounds differ by at most the repair distance, and
+  /// the candidates come from a grid of cells of that side instead of a strip of the first bound: points of
+  /// even density in the plane cost O(1) candidates each instead of O(sqrt n). The result is the same.
+  std::function<double(std::uint32_t)> second_bound;
   /// Called with the fraction done; returning false stops (status interrupted; the graph holds the arcs added
   /// before the stop, see each function).
   Progress_callback progress;
