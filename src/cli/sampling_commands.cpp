@@ -76,8 +76,11 @@ double sigma_feature_of(const Arguments& args) {
   return args.get_scale("sigma-feature");
 }
 
-/// Intrinsic dimension and measure of a 3D cloud, as the elimination derives them.
-std::pair<int, double> domain_of(const std::vector<std::array<double, 3>>& p) {
+/// Intrinsic dimension and measure of a 3D cloud, as the elimination derives them: on its distinct positions
+/// (copies would be neighbours at distance 0, and a kd-tree peels one copy per level: 40,000 copies of a
+/// point overflowed the stack).
+std::pair<int, double> domain_of(const std::vector<std::array<double, 3>>& cloud) {
+  const std::vector<std::array<double, 3>> p = fs::internal::distinct_positions(cloud);
   const fs::internal::Knn_3 knn(p);
   const int dim = fs::internal::estimate_intrinsic_dimension(p, knn);
   return {dim,

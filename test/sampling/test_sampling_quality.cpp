@@ -297,6 +297,62 @@ TEST(SamplingQuality, NearestNeighboursMatchBruteForceOnClusters) {
             1.05 * euclidean.average_minimum_distance * euclidean.hexagonal_distance);  // the features count
 }
 
+TEST(SamplingQuality, ManyCopiesOfAPointAreOnePlaceOfTheTree) {
+  // 50,000 copies of one point among 200: a kd-tree peels one copy per level (O(c^2) to build; 40,000 copies
+  // overflowed the stack). The tree holds each place once; the statistics are those of all pairs: every copy
+  // 0 from the next, the others their nearest distinct point. Bilateral: copies with normals up and down,
+  // each 0 from a copy with its own normal. On a torus: copies and an image of another point at one place.
+  std::vector<Point_2> p = white_noise(200, 65);
+  const std::vector<Point_2> distinct = p;
+  p.insert(p.end(), 50000, p[0]);
+  const Sampling_quality q = sampling_quality(p);
+  ASSERT_EQ(q.status, Status::success);
+  EXPECT_EQ(q.minimum_distance, 0.0);
+  double sum = 0;
+  for (std::size_t i = 1; i < distinct.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < distinct.size(); ++j)
+      if (j != i) nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(distinct[i], distinct[j])));
+    sum += nearest;
+  }
+  EXPECT_NEAR(q.average_minimum_distance * q.hexagonal_distance, sum / double(p.size()), 1e-15);
+
+  std::mt19937_64 rng(65);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::pair<Point_3, Vector_3>> pn;
+  for (int i = 0; i < 100; ++i) pn.push_back({Point_3(u(rng), u(rng), u(rng)), Vector_3(0, 0, 1)});
+  for (int i = 0; i < 20000; ++i) pn.push_back({pn[0].first, Vector_3(0, 0, i % 2 ? 1 : -1)});
+  Sampling_quality_options o;
+  o.sigma_feature = 0.05;
+  const Sampling_quality b = sampling_quality(pn, o);
+  ASSERT_EQ(b.status, Status::success);
+  EXPECT_EQ(b.minimum_distance, 0.0);
+  sum = 0;
+  for (std::size_t i = 1; i < 100; ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < 102; ++j)  // the 100 and both normals at the copies' place
+      if (j != i)
+        nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(pn[i].first, pn[j].first) +
+                                              (pn[i].second - pn[j].second).squared_length() / 0.0025));
+    sum += nearest;
+  }
+  EXPECT_NEAR(b.average_minimum_distance * b.hexagonal_distance, sum / double(pn.size()), 1e-15);
+
+  std::vector<Point_2> t = white_noise(40, 66);
+  t.push_back(t[3]);
+  t.push_back(t[3]);
+  t.push_back(Point_2(t[5].x() + 1, t[5].y()));  // an image of point 5 on the unit torus
+  Sampling_quality_options torus;
+  torus.periodic = true;
+  torus.period = {1, 1};
+  const Sampling_quality tq = sampling_quality(t, torus);
+  const std::vector<double> nearest = torus_nearest(t, torus.period);
+  double mean = 0;
+  for (const double d : nearest) mean += d / double(t.size());
+  EXPECT_EQ(tq.minimum_distance, 0.0);
+  EXPECT_NEAR(tq.average_minimum_distance * tq.hexagonal_distance, mean, 1e-12);
+}
+
 TEST(SamplingQuality, HexagonalLatticeHasRelativeRadiusOne) {
   std::vector<Point_2> p;
   for (int r = 0; r < 30; ++r)

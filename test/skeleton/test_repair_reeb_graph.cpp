@@ -674,6 +674,59 @@ TEST(RepairReebGraph, ABoundMeasuresFewerPairsWithTheSameResult) {
   }
 }
 
+TEST(RepairReebGraph, TheBoundIndexVisitsExactlyTheSlotsWithinTheWindow) {
+  // Slots on a line with far outliers (up to 1e19, 1e300) and ties, at windows from the smallest subnormal to
+  // 10: visit() returns exactly the slots whose bounds both differ by at most the window, for_each_pair()
+  // exactly the pairs, each once (brute force). The columns stay at most a window wide: a column number
+  // floor((x - least) / window) capped at 2^62 put every slot past an outlier, or every slot at a subnormal
+  // window, into one column, which made each query a strip of the second bound.
+  using skeleton::internal::Bound_index;
+  using skeleton::internal::Bounded_slot;
+  std::mt19937_64 rng(65);
+  for (const double window : {std::numeric_limits<double>::denorm_min(), 1e-300, 0.5, 1.0, 10.0})
+    for (const bool two : {false, true}) {
+      std::vector<Bounded_slot> slots;
+      for (std::size_t i = 0; i < 300; ++i) {
+        const double x = double(rng() % 200) * 0.5, y = two ? double(rng() % 5) : x;
+        slots.push_back({x, y, i});
+      }
+      for (const double far : {-1e19, 1e300}) slots.push_back({far, two ? 0.0 : far, slots.size()});
+      const Bound_index index(slots, window, two);
+      std::vector<double> xs;
+      for (const Bounded_slot& t : slots) xs.push_back(t.first);
+      std::sort(xs.begin(), xs.end());
+      const auto distinct = static_cast<double>(std::unique(xs.begin(), xs.end()) - xs.begin());
+      if (two) {  // distinct x 0.5 apart: a run of width w holds at most 2w + 1 of them
+        EXPECT_GE(double(index.number_of_columns()), window < 0.5 ? distinct : distinct / (2 * window + 1))
+            << window;
+      } else {
+        EXPECT_EQ(index.number_of_columns(), 1u);
+      }
+      auto near = [&](const Bounded_slot& a, const Bounded_slot& b) {
+        return std::abs(a.first - b.first) <= window && std::abs(a.second - b.second) <= window;
+      };
+      std::vector<std::pair<std::size_t, std::size_t>> pairs, expected_pairs;
+      for (const Bounded_slot& q : slots) {
+        std::vector<std::size_t> seen, expected;
+        index.visit(q.first, q.second, [&](std::size_t s) { seen.push_back(s); });
+        for (const Bounded_slot& t : slots)
+          if (near(q, t)) expected.push_back(t.slot);
+        std::sort(seen.begin(), seen.end());
+        EXPECT_EQ(seen, expected) << window << " " << two << " " << q.slot;
+        for (const std::size_t t : expected)
+          if (q.slot < t) expected_pairs.emplace_back(q.slot, t);
+      }
+      std::size_t afters = 0;
+      EXPECT_TRUE(index.for_each_pair(
+          [&](std::size_t a, std::size_t b) { pairs.emplace_back(std::min(a, b), std::max(a, b)); },
+          [&](std::size_t k) { return ++afters, k + 1 > slots.size(); }));
+      EXPECT_EQ(afters, slots.size());
+      std::sort(pairs.begin(), pairs.end());
+      std::sort(expected_pairs.begin(), expected_pairs.end());
+      EXPECT_EQ(pairs, expected_pairs) << window << " " << two;
+    }
+}
+
 TEST(ConnectDeadEnds, TwoBoundsMeasureAFewCandidatesPerEndOnAPlane) {
   // k x k horizontal dashes of 3 points, 4 apart: no two within the distance 1, nothing is joined. With the x
   // coordinate as the only bound, a dead end measures the strip of its x: the 2 points of each dash of its

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -154,7 +155,7 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
       const double scale = metric.spatial_scale();
       // Nearest neighbours from a CGAL kd-tree (sliding midpoint: clusters and isolated samples alike),
       // visited by increasing spatial distance until it exceeds the best bilateral distance so far (xi >= the
-      // spatial distance), so the minimum is exact.
+      // spatial distance) or that is 0, so the minimum is exact.
       using Kd_kernel = CGAL::Simple_cartesian<double>;
       using Kd_point = std::conditional_t<D == 2, Kd_kernel::Point_2, Kd_kernel::Point_3>;
       using Base_traits =
@@ -163,15 +164,29 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
           CGAL::Search_traits_adapter<std::uint32_t, typename CGAL::Pointer_property_map<Kd_point>::type,
                                       Base_traits>;
       using Incremental = CGAL::Orthogonal_incremental_neighbor_search<Traits_with_index>;
+      // The tree holds the distinct places, each with its points (place k: at[start[k], start[k + 1])): a
+      // kd-tree peels one copy of a point per level, so c copies cost O(c^2) to build and 40,000 of them
+      // overflowed the stack.
+      std::vector<std::uint32_t> at(points.size());
+      for (std::size_t j = 0; j < at.size(); ++j) at[j] = static_cast<std::uint32_t>(j);
+      std::sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return points[a] < points[b] || (points[a] == points[b] && a < b);
+      });
+      std::vector<std::size_t> start;
       std::vector<Kd_point> kd_points;
-      kd_points.reserve(points.size());
-      for (const auto& p : points) {
-        if constexpr (D == 2)
-          kd_points.emplace_back(p[0], p[1]);
+      auto kd_point = [](const auto& p) {
+        if constexpr (std::tuple_size<std::decay_t<decltype(p)>>::value == 2)
+          return Kd_point(p[0], p[1]);
         else
-          kd_points.emplace_back(p[0], p[1], p[2]);
-      }
-      std::vector<std::uint32_t> keys(points.size());
+          return Kd_point(p[0], p[1], p[2]);
+      };
+      for (std::size_t j = 0; j < at.size(); ++j)
+        if (j == 0 || points[at[j]] != points[at[j - 1]]) {
+          start.push_back(j);
+          kd_points.push_back(kd_point(points[at[j]]));
+        }
+      start.push_back(at.size());
+      std::vector<std::uint32_t> keys(kd_points.size());
       for (std::size_t j = 0; j < keys.size(); ++j) keys[j] = static_cast<std::uint32_t>(j);
       typename Incremental::Tree tree(keys.begin(), keys.end(), typename Incremental::Tree::Splitter(),
                                       Traits_with_index(CGAL::make_property_map(kd_points)));
@@ -185,14 +200,14 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
         }
         return metric(d2, S.squared_feature_distance(i, source[j_point])) * scale;
       };
-      // Euclidean (infinite sigma_feature): the nearest other point is among the two nearest (the point
-      // itself is one of them unless two copies of it are, and then the answer is 0 either way). The tree
-      // sums the same squared coordinate differences in the same order as xi(), so it ranks the candidates as
-      // xi() does. A k-nearest search costs a quarter of the incremental one, which the bilateral distance
-      // needs. On the torus the tree also holds the point's own images, a period or more away, and at most
-      // 2^d - 1 of them (one shift per axis lies within half a period of the cell): they are skipped, and
-      // when they can be nearer than another point (a period shorter than the torus's half diagonal, which
-      // bounds every nearest distance) the search takes 2^d + 1 neighbours.
+      // Euclidean (infinite sigma_feature): the nearest other point is in one of the two nearest places (its
+      // own, at distance 0, and the next). The tree sums the same squared coordinate differences in the same
+      // order as xi(), so it ranks the candidates as xi() does. A k-nearest search costs a quarter of the
+      // incremental one, which the bilateral distance needs. On the torus the tree also holds the point's own
+      // images, a period or more away, and at most 2^d - 1 of them (one shift per axis lies within half a
+      // period of the cell): they are skipped, and when they can be nearer than another point (a period
+      // shorter than the torus's half diagonal, which bounds every nearest distance) the search takes 2^d + 1
+      // neighbours.
       double half_diagonal2 = 0, shortest = std::numeric_limits<double>::infinity();
       for (const double p : period) {
         half_diagonal2 += 0.25 * p * p;
@@ -211,16 +226,21 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
           return;
         }
         double best = std::numeric_limits<double>::infinity();
+        // The points of place k other than i (and its images) as candidates; none is nearer than 0.
+        auto measure_place = [&](std::size_t k) {
+          for (std::size_t j = start[k]; j < start[k + 1] && best > 0; ++j)
+            if (source[at[j]] != i) best = std::min(best, xi(i, at[j]));
+        };
+        const Kd_point query = kd_point(S.positions[i]);
         if (euclidean) {
-          Nearest search(tree, kd_points[i], neighbours, 0.0, true, tree_distance);
-          for (auto it = search.begin(); it != search.end(); ++it)
-            if (source[it->first] != i) best = std::min(best, xi(i, it->first));
+          Nearest search(tree, query, neighbours, 0.0, true, tree_distance);
+          for (auto it = search.begin(); it != search.end(); ++it) measure_place(it->first);
         } else {
-          Incremental search(tree, kd_points[i], 0.0, true, tree_distance);
-          for (auto it = search.begin(); it != search.end(); ++it) {
+          Incremental search(tree, query, 0.0, true, tree_distance);
+          for (auto it = search.begin(); it != search.end() && best > 0; ++it) {
             // it->second: squared spatial distance (rounded; the margin covers it)
             if (std::sqrt(it->second) > best * (1 + 1e-9)) break;
-            if (source[it->first] != i) best = std::min(best, xi(i, it->first));
+            measure_place(it->first);
           }
         }
         minimum = std::min(minimum, best);

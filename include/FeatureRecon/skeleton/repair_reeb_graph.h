@@ -143,17 +143,13 @@ class Bound_index {
       };
     };
     std::sort(slots.begin(), slots.end(), by([](const Bounded_slot& s) { return s.first; }));
-    // The column of a first bound: floor((first - least) / window), capped (a tiny window overflows); both
-    // monotone, so the columns are runs of the sorted slots, in order.
-    const double least = slots.empty() ? 0.0 : slots.front().first;
-    auto column = [this, least](double first) {
-      const double t = (first - least) / window_, cap = 0x1p62;
-      return two_ ? (t < cap ? std::floor(t) : cap) : 0.0;
-    };
+    // Columns: runs of the sorted slots whose first bounds lie within the window of the run's first one (all
+    // slots with one bound). Run starts are more than a window apart, so a query meets at most 3 columns,
+    // whatever the spread of the bound (floor((first - least) / window) capped at 2^62 put every slot past a
+    // far outlier, or every slot at max_distance 0, into one column: a strip of the second bound).
     for (std::size_t b = 0; b < slots.size();) {
-      const double c = column(slots[b].first);
       std::size_t e = b + 1;
-      while (e < slots.size() && column(slots[e].first) == c) ++e;
+      while (e < slots.size() && (!two_ || slots[e].first - slots[b].first <= window_)) ++e;
       columns_.push_back({slots[b].first, slots[e - 1].first, b, e});
       if (two_)
         std::sort(slots.begin() + static_cast<std::ptrdiff_t>(b),
@@ -181,6 +177,8 @@ class Bound_index {
       for (std::size_t i = lowest_within(*c, key); i < c->end && keys_[i] - key <= window_; ++i)
         if (near_first(i, first)) visit(slots_[i]);
   }
+  /// The number of columns (tests: each spans at most the window in the first bound, none with one bound).
+  std::size_t number_of_columns() const { return columns_.size(); }
   /// Calls pair(s, t) once for every two slots whose bounds differ by at most the window, s before t in the
   /// sorted order, and after(k) once the pairs of the k-th slot in that order are visited (k = 0, 1, ...);
   /// after() returning true stops the sweep (then false is returned).

@@ -89,7 +89,9 @@ struct Reeb_repair_options {
   /// Empty (default: every pair is measured), or a function of an input vertex that is 1-Lipschitz for the
   /// distance, |bound(a) - bound(b)| <= distance(a, b) (a coordinate of Euclidean points): only pairs whose
   /// bounds differ by at most the repair distance are measured. The result is the same; the work drops from
-  /// quadratic. Its values must be finite (a NaN or an infinity throws, naming the vertex).
+  /// quadratic. It must hold for the computed values (a coordinate plus a large offset rounds and can lose
+  /// the pairs at the distance), and the values must be finite (a NaN or an infinity throws, naming the
+  /// vertex).
   std::function<double(std::uint32_t)> bound;
   /// Empty (default), or a second such function (another coordinate); only with `bound` (set alone, it
   /// throws). With both, a pair is measured only when both bounds differ by at most the repair distance, and
