@@ -78,9 +78,12 @@ struct Sampling_quality {
 /// minimum distance, both relative to the nearest distance d_hex of the densest packing of N points in the
 /// domain (d_hex = sqrt(2 A / (sqrt(3) N)) in 2D, cbrt(sqrt(2) V / N) in 3D). With a finite sigma_feature the
 /// distances are bilateral (in units of xi times sigma_position), which measures spacing in the stacked
-/// space. Nearest neighbours are found exactly with a CGAL kd-tree: Euclidean (infinite sigma_feature), its
-/// two nearest points; bilateral, visiting samples by increasing spatial distance until it exceeds the best
-/// bilateral distance (O(n log n) in practice, also for sparse or clustered sets).
+/// space. Nearest neighbours are found exactly with a CGAL kd-tree over the distinct positions: Euclidean
+/// (infinite sigma_feature), its two nearest places; bilateral, visiting samples by increasing spatial
+/// distance until it exceeds the best bilateral distance (O(n log n) in practice, also for sparse or
+/// clustered sets, while features follow position; where they do not, e.g. random normals on a plane with a
+/// sigma_feature small against sigma_position, each sample visits every sample within its bilateral
+/// distance in space: 10,000 / 20,000 / 40,000 such samples took 4 / 14 / 58 s in session 65's audit).
 /// \tparam ItemRange a forward range of `Traits::Item`. \tparam Traits a model of FeaturePointTraits.
 /// \throws std::invalid_argument for non-finite coordinates (naming the item), sigma_position <= 0,
 ///   sigma_feature <= 0, a negative domain_measure, an intrinsic_dimension other than 0, 2 or 3 or above the
