@@ -169,12 +169,11 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
       using Incremental = CGAL::Orthogonal_incremental_neighbor_search<Traits_with_index>;
       // The tree holds the distinct places, each with its points (place k: at[start[k], start[k + 1])): a
       // kd-tree peels one copy of a point per level, so c copies cost O(c^2) to build and 40,000 of them
-      // overflowed the stack.
-      std::vector<std::uint32_t> at(points.size());
-      for (std::size_t j = 0; j < at.size(); ++j) at[j] = static_cast<std::uint32_t>(j);
-      std::sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return points[a] < points[b] || (points[a] == points[b] && a < b);
-      });
+      // overflowed the stack. Without copies the places are the points, in their order (place k is point k:
+      // the indirection cost white noise a third more time).
+      std::vector<std::uint32_t> at = internal::order_by_position(points);
+      std::size_t copies = 0;
+      for (std::size_t j = 1; j < at.size(); ++j) copies += points[at[j]] == points[at[j - 1]];
       std::vector<std::size_t> start;
       std::vector<Kd_point> kd_points;
       auto kd_point = [](const auto& p) {
@@ -183,12 +182,17 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
         else
           return Kd_point(p[0], p[1], p[2]);
       };
-      for (std::size_t j = 0; j < at.size(); ++j)
-        if (j == 0 || points[at[j]] != points[at[j - 1]]) {
-          start.push_back(j);
-          kd_points.push_back(kd_point(points[at[j]]));
-        }
-      start.push_back(at.size());
+      if (copies == 0) {
+        at.clear();
+        for (const auto& p : points) kd_points.push_back(kd_point(p));
+      } else {
+        for (std::size_t j = 0; j < at.size(); ++j)
+          if (j == 0 || points[at[j]] != points[at[j - 1]]) {
+            start.push_back(j);
+            kd_points.push_back(kd_point(points[at[j]]));
+          }
+        start.push_back(at.size());
+      }
       std::vector<std::uint32_t> keys(kd_points.size());
       for (std::size_t j = 0; j < keys.size(); ++j) keys[j] = static_cast<std::uint32_t>(j);
       typename Incremental::Tree tree(keys.begin(), keys.end(), typename Incremental::Tree::Splitter(),
@@ -231,10 +235,14 @@ Sampling_quality sampling_quality(const ItemRange& items, const Sampling_quality
         double best = std::numeric_limits<double>::infinity();
         // The points of place k other than i (and its images) as candidates; none is nearer than 0.
         auto measure_place = [&](std::size_t k) {
+          if (copies == 0) {
+            if (source[k] != i) best = std::min(best, xi(i, k));
+            return;
+          }
           for (std::size_t j = start[k]; j < start[k + 1] && best > 0; ++j)
             if (source[at[j]] != i) best = std::min(best, xi(i, at[j]));
         };
-        const Kd_point query = kd_point(S.positions[i]);
+        const Kd_point query = copies == 0 ? kd_points[i] : kd_point(S.positions[i]);
         if (euclidean) {
           Nearest search(tree, query, neighbours, 0.0, true, tree_distance);
           for (auto it = search.begin(); it != search.end(); ++it) measure_place(it->first);

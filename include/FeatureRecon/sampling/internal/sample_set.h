@@ -370,13 +370,25 @@ struct Knn_3 {
   }
 };
 
+/// The indices of `p` sorted by position (lexicographic), copies of a position consecutive and in index
+/// order.
+template <std::size_t D>
+std::vector<std::uint32_t> order_by_position(const std::vector<std::array<double, D>>& p) {
+  // The positions sorted with their indices beside them: a sort of indices through `p` took three times as
+  // long (160,000 points: 33-50 ms against 10-15 ms).
+  std::vector<std::pair<std::array<double, D>, std::uint32_t>> keyed(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) keyed[i] = {p[i], static_cast<std::uint32_t>(i)};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> order(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) order[i] = keyed[i].second;
+  return order;
+}
+
 /// The distinct positions, each where it first occurs (the estimates below take them: copies are neighbours
 /// at distance 0). Without copies, `p` itself.
 template <std::size_t D>
 std::vector<std::array<double, D>> distinct_positions(const std::vector<std::array<double, D>>& p) {
-  std::vector<std::uint32_t> order(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return p[a] < p[b]; });
+  const std::vector<std::uint32_t> order = order_by_position(p);
   std::vector<std::uint8_t> copy(p.size(), 0);
   for (std::size_t k = 1; k < order.size(); ++k) copy[order[k]] = p[order[k]] == p[order[k - 1]];
   std::vector<std::array<double, D>> out;
@@ -394,14 +406,10 @@ std::vector<std::array<double, D>> distinct_positions(const std::vector<std::arr
 template <int D, class Position>
 void separate_copies(std::size_t n, double step, Position&& position,
                      const std::array<double, D>* lo = nullptr, const std::array<double, D>* hi = nullptr) {
-  std::vector<std::uint32_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
   std::vector<std::array<double, D>> original(n);
   for (std::size_t i = 0; i < n; ++i)
     for (int k = 0; k < D; ++k) original[i][k] = position(i)[k];
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return original[a] != original[b] ? original[a] < original[b] : a < b;
-  });
+  const std::vector<std::uint32_t> order = order_by_position(original);
   for (std::size_t k = 1; k < order.size(); ++k) {
     if (original[order[k]] != original[order[k - 1]]) continue;
     const double a = 2.399963229728653 * double(order[k]);  // golden angle
