@@ -14,7 +14,9 @@
 #include <CGAL/Simple_cartesian.h>
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <vector>
@@ -28,6 +30,8 @@ constexpr std::size_t sites_n = 10000;
 struct Setup {
   std::vector<FeatureRecon::Grey_pixel> pixels;
   std::vector<Site> sites;
+  std::vector<FeatureRecon::Grey_pixel> logo;  // black square of side / 4 in the middle, on white
+  std::vector<Site> logo_sites;                // the sites shrunk into the square
 };
 
 const Setup& setup() {
@@ -52,6 +56,13 @@ const Setup& setup() {
     fs::Discrete_lloyd_options<2> o;
     o.max_iterations = 5;
     s.sites = fs::discrete_bilateral_lloyd(s.pixels, sites, o).sites;
+    std::vector<std::uint8_t> logo(std::size_t(side) * side, 255);
+    constexpr int from = side * 3 / 8, to = side * 5 / 8;
+    for (int y = from; y < to; ++y)
+      for (int x = from; x < to; ++x) logo[std::size_t(y) * side + std::size_t(x)] = 0;
+    s.logo = fs::image_pixels<FeatureRecon::Grey_pixel>(side, side, logo);
+    for (const Site& x : s.sites)
+      s.logo_sites.push_back(Site{{from + x.position[0] / 4, from + x.position[1] / 4}, {0}});
   }
   return s;
 }
@@ -79,12 +90,15 @@ void BM_Discrete_lloyd_step(benchmark::State& state) {
   const Setup& s = setup();
   fs::Discrete_lloyd_options<2> o;
   const double d_hex = std::sqrt(2.0 * side * side / (std::sqrt(3.0) * double(sites_n)));
-  if (state.range(0) == 1) {  // bilateral: positions in units of the spacing, sigma_feature 0.3
+  if (state.range(0) >= 1) {  // bilateral: positions in units of the spacing, sigma_feature 0.3
     o.sigma_position = d_hex;
     o.sigma_feature = 0.3;
   }
+  // 2: the logo, its sites on a sixteenth of the image (most pixels far from every site)
+  const bool logo = state.range(0) == 2;
+  if (logo) o.sigma_position = d_hex / 4;
   for (auto _ : state) {
-    auto step = fs::discrete_lloyd_step(s.pixels, s.sites, o);
+    auto step = fs::discrete_lloyd_step(logo ? s.logo : s.pixels, logo ? s.logo_sites : s.sites, o);
     benchmark::DoNotOptimize(step.max_move);
   }
 }
@@ -106,6 +120,7 @@ BENCHMARK(BM_Discrete_lloyd_step)
     ->Name("sampling/discrete_lloyd/step_1MP_10k")
     ->Arg(0)
     ->Arg(1)
+    ->Arg(2)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Kernel_energy)
     ->Name("sampling/kernel_relaxation/energy_gradient_1MP_10k")

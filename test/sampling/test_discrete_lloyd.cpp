@@ -109,6 +109,13 @@ TEST(Discrete_lloyd, GridOfANearlyFlatPatchStaysSmall) {
   const Grid cube({0, 0, 0}, {10, 10, 10}, 1000);
   EXPECT_LE(cube.number_of_cells(), 4u * 1000u);
   EXPECT_GE(cube.number_of_cells(), 1000u / 4);
+  // Cubes whose volume leaves the normal range: about the target too (a side 1e-110 made 1001^3 cells, 1e110
+  // one).
+  for (const double side : {1e-110, 1e-200, 1e-300, 1e110, 1e300}) {
+    const Grid scaled({0, 0, 0}, {10 * side, 10 * side, 10 * side}, 1000);
+    EXPECT_LE(scaled.number_of_cells(), 4u * 1000u) << "side " << side;
+    EXPECT_GE(scaled.number_of_cells(), 1000u / 4) << "side " << side;
+  }
 }
 
 TEST(Discrete_lloyd, TiesGoToTheLowestSiteIndex) {
@@ -679,6 +686,43 @@ TEST(Discrete_lloyd, TorusAssignmentAndStepMatchBruteForce) {
               << n << " sites, sigma_feature " << sf << ", site " << j;
       // The step's moves are the torus's: never more than half the diagonal.
       EXPECT_LE(step.max_move, 0.5 * std::sqrt(double(w * w + h * h)) + 1e-12);
+    }
+  }
+}
+
+TEST(Discrete_lloyd, SitesOnASmallPartOfThePictureMatchBruteForce) {
+  // Sites in an 8 x 6 corner of a 64 x 48 picture (a dark logo on white): most pixels lie many empty cells
+  // away from every site, where the assignment's ring search stops and its kd-tree answers. Against brute
+  // force in the plane and on the torus (the corner straddles a face there), Euclidean and bilateral, and
+  // with copies of sites (ties to the lowest index).
+  const int w = 64, h = 48;
+  const auto px = step_image(w, h, 30, 30, 8);
+  for (const std::size_t n : {1u, 9u, 40u}) {
+    auto sites = random_sites(n, 8, 6, unsigned(20 + n));
+    if (n == 40)
+      for (std::size_t j = 30; j < n; ++j) sites[j] = sites[j - 30];
+    for (const double sf : {std::numeric_limits<double>::infinity(), 0.3, 0.02}) {
+      Discrete_lloyd_options<2> o;
+      o.sigma_position = 1.5;
+      o.sigma_feature = sf;
+      for (const Bilateral_form form : {Bilateral_form::gaussian, Bilateral_form::exponential}) {
+        o.form = form;
+        const auto a = bilateral_voronoi_assignment(px, sites, o);
+        if (form == Bilateral_form::gaussian)
+          EXPECT_EQ(a.site, brute_force(px, sites, Gaussian_bilateral_metric{1.5, sf}))
+              << n << " sites, sigma_feature " << sf;
+        else
+          EXPECT_EQ(a.site, brute_force(px, sites, Exponential_bilateral_metric{1.5, sf}))
+              << n << " sites, sigma_feature " << sf;
+      }
+      o.form = Bilateral_form::gaussian;
+      o.periodic = true;
+      auto shifted = sites;  // the corner around the picture's corner: across both faces
+      for (auto& site : shifted) site.position = {site.position[0] - 4, site.position[1] - 3};
+      const auto want = torus_brute_force(px, shifted, w, h, 1.5, sf, {});
+      const auto a = bilateral_voronoi_assignment(px, shifted, o);
+      EXPECT_EQ(a.site, want.site) << n << " sites on the torus, sigma_feature " << sf;
+      EXPECT_NEAR(a.energy, want.energy, 1e-12 * want.energy);
     }
   }
 }

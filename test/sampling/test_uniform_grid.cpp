@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (c) 2026 The FeatureRecon authors.
 #include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/sampling/internal/nearest_tree.h>
 #include <FeatureRecon/sampling/internal/ring_grid.h>
 #include <FeatureRecon/sampling/internal/sample_set.h>
 
@@ -275,6 +276,22 @@ TEST(SampleSet, IntrinsicDimensionIsTwoWhenExactlyHalfTheProbesAreFlat) {
   EXPECT_EQ(dimension({solid(0), solid(1000)}), 3);
 }
 
+// The j < n of least score(j), ties to the lowest j, NaN counted as infinity; best receives the score.
+template <class Score>
+std::uint32_t brute_force_minimum(std::size_t n, Score&& score, double& best) {
+  best = std::numeric_limits<double>::infinity();
+  std::uint32_t arg = std::numeric_limits<std::uint32_t>::max();
+  for (std::uint32_t j = 0; j < n; ++j) {
+    double s = score(j);
+    if (std::isnan(s)) s = std::numeric_limits<double>::infinity();
+    if (s < best || (s == best && j < arg)) {
+      best = s;
+      arg = j;
+    }
+  }
+  return arg;
+}
+
 // From a mutation audit of ring_grid.h: Ring_grid::nearest() against a brute-force minimum of the score
 // (ties to the lowest index, NaN as infinity), for scores bounded below by distance / scale with scales far
 // from 1 either way, queries inside and outside the frame, copies of points (ties) and a frame that does not
@@ -311,16 +328,8 @@ void expect_ring_grid_matches_brute_force(unsigned seed) {
         if (with_nan && j % 7 == 0) return std::numeric_limits<double>::quiet_NaN();
         return distance(x, p[j]) / scale + extra[j];
       };
-      double best_brute = std::numeric_limits<double>::infinity();
-      std::uint32_t arg_brute = std::numeric_limits<std::uint32_t>::max();
-      for (std::uint32_t j = 0; j < p.size(); ++j) {
-        double s = score(j);
-        if (std::isnan(s)) s = std::numeric_limits<double>::infinity();
-        if (s < best_brute || (s == best_brute && j < arg_brute)) {
-          best_brute = s;
-          arg_brute = j;
-        }
-      }
+      double best_brute;
+      const std::uint32_t arg_brute = brute_force_minimum(p.size(), score, best_brute);
       double best = 0;
       EXPECT_EQ(grid.nearest(x, scale, score, best), arg_brute) << "scale " << scale << ", query " << t;
       EXPECT_EQ(best, best_brute) << "scale " << scale << ", query " << t;
@@ -346,6 +355,123 @@ void expect_ring_grid_matches_brute_force(unsigned seed) {
 TEST(RingGrid, NearestAndWithinMatchBruteForce) {
   expect_ring_grid_matches_brute_force<2>(3);
   expect_ring_grid_matches_brute_force<3>(4);
+}
+
+// Nearest_tree::nearest() against a brute-force minimum of the score (ties to the lowest index, NaN as
+// infinity), without a hint and with hints anywhere (the answer must not depend on them), for points in a
+// small cluster and a few far away (most queries far from most points), copies (ties), one point, points on
+// a line and all points at one place; each also scaled by 2^-530 with scores that are distances (squared
+// distances below the normal range: the tree then compares distances, not their squares). Also the ring
+// search cut after 0, 1 or 2 rings and finished by the tree with the rings' answer as the hint, as the
+// discrete Lloyd assignment does.
+template <int D>
+void expect_nearest_tree_matches_brute_force(unsigned seed) {
+  using Point = std::array<double, D>;
+  namespace si = FeatureRecon::sampling::internal;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  enum Layout { cluster, one, line, one_place };
+  for (const bool tiny : {false, true})
+    for (const Layout layout : {cluster, one, line, one_place}) {
+      const double unit = tiny ? 0x1p-530 : 1.0;  // 2^-530: about 3e-160
+      // The distance, its squares taken in units of `unit` (exactly): they do not underflow.
+      auto distance = [unit](const Point& a, const Point& b) {
+        double s = 0;
+        for (int k = 0; k < D; ++k) s += (a[k] - b[k]) / unit * ((a[k] - b[k]) / unit);
+        return std::sqrt(s) * unit;
+      };
+      std::vector<Point> p(layout == one ? 1 : 300);
+      for (std::size_t i = 0; i < p.size(); ++i)
+        for (int k = 0; k < D; ++k) {
+          switch (layout) {
+            case cluster:  // a cluster in [0.4, 0.5]^D, every tenth point anywhere in [0, 1]^D
+              p[i][k] = i % 10 == 0 ? u(rng) : 0.4 + 0.1 * u(rng);
+              break;
+            case line:  // on a line (the first axis), on a lattice of step 1/64
+              p[i][k] = k == 0 ? double(rng() % 64) / 64 : 0.5;
+              break;
+            default:
+              p[i][k] = 0.25;
+          }
+        }
+      for (auto& x : p)
+        for (int k = 0; k < D; ++k) x[k] *= unit;
+      if (layout == cluster)
+        for (std::size_t i = 250; i < p.size(); ++i) p[i] = p[i - 250];  // copies of the first 50
+      const si::Nearest_tree<D> tree(p);
+      Point lo{}, hi{};
+      for (int k = 0; k < D; ++k) hi[k] = unit;
+      si::Ring_grid<D> grid(lo, hi, double(p.size()));
+      grid.assign(p);
+      std::vector<double> extra(p.size());
+      for (const double scale : {0.01, 1.0, 100.0}) {
+        for (std::size_t i = 0; i < extra.size(); ++i) extra[i] = i % 3 == 0 || tiny ? 0.0 : 3 * u(rng);
+        if (layout == cluster)
+          for (std::size_t i = 250; i < p.size(); ++i) extra[i] = extra[i - 250];  // equal scores: ties
+        for (int t = 0; t < 150; ++t) {
+          Point x;
+          for (int k = 0; k < D; ++k) x[k] = (-0.5 + 2 * u(rng)) * unit;
+          if (t % 4 == 0) x = p[std::size_t(rng() % p.size())];
+          const bool with_nan = t % 5 == 0;
+          auto score = [&](std::uint32_t j) {
+            if (with_nan && j % 7 == 0) return std::numeric_limits<double>::quiet_NaN();
+            return distance(x, p[j]) / scale + extra[j];
+          };
+          double best_brute;
+          const std::uint32_t arg_brute = brute_force_minimum(p.size(), score, best_brute);
+          const std::uint32_t random_hint = std::uint32_t(rng() % p.size());
+          for (const std::uint32_t hint : {si::Nearest_tree<D>::none, random_hint, arg_brute}) {
+            double best = 0;
+            EXPECT_EQ(tree.nearest(x, scale, score, best, hint), arg_brute)
+                << "layout " << layout << (tiny ? " (tiny)" : "") << ", scale " << scale << ", query " << t
+                << ", hint " << hint;
+            EXPECT_EQ(best, best_brute)
+                << "layout " << layout << (tiny ? " (tiny)" : "") << ", scale " << scale << ", query " << t;
+          }
+          for (const std::int64_t rings : {0, 1, 2}) {
+            double best = 0;
+            bool complete = false;
+            std::uint32_t j = grid.nearest(x, scale, score, best, rings, complete);
+            if (!complete) j = tree.nearest(x, scale, score, best, j);
+            EXPECT_EQ(j, arg_brute) << "layout " << layout << (tiny ? " (tiny)" : "") << ", " << rings
+                                    << " rings, query " << t;
+            EXPECT_EQ(best, best_brute)
+                << "layout " << layout << (tiny ? " (tiny)" : "") << ", " << rings << " rings, query " << t;
+          }
+        }
+      }
+      // Every score NaN (infinite): a point is still found, the lowest index.
+      double best = 0;
+      EXPECT_EQ(tree.nearest(
+                    p[0], 1.0, [](std::uint32_t) { return std::numeric_limits<double>::quiet_NaN(); }, best),
+                0u);
+      EXPECT_EQ(best, std::numeric_limits<double>::infinity());
+    }
+  // No points: none.
+  const si::Nearest_tree<D> empty(std::vector<Point>{});
+  double best = 0;
+  EXPECT_EQ(empty.nearest(
+                Point{}, 1.0, [](std::uint32_t) { return 0.0; }, best),
+            si::Nearest_tree<D>::none);
+  EXPECT_EQ(best, std::numeric_limits<double>::infinity());
+}
+
+TEST(NearestTree, NearestMatchesBruteForceWhateverTheHint) {
+  expect_nearest_tree_matches_brute_force<2>(5);
+  expect_nearest_tree_matches_brute_force<3>(6);
+}
+
+TEST(NearestTree, LeavesHoldAtMostFourPoints) {
+  // 1000 points (also 1000 copies of one point): halving down to leaves of at most 4 gives 511 nodes
+  // (256 leaves of 3 or 4); a tree of single points would have 1999.
+  namespace si = FeatureRecon::sampling::internal;
+  std::mt19937_64 rng(7);
+  std::vector<std::array<double, 2>> p(1000), same(1000, std::array<double, 2>{3, 4});
+  for (auto& x : p) x = {double(rng() % 1000), double(rng() % 1000)};
+  EXPECT_EQ(si::Nearest_tree<2>(p).number_of_nodes(), 511u);
+  EXPECT_EQ(si::Nearest_tree<2>(same).number_of_nodes(), 511u);
+  EXPECT_EQ(si::Nearest_tree<2>(std::vector<std::array<double, 2>>(4)).number_of_nodes(), 1u);
+  EXPECT_EQ(si::Nearest_tree<2>(std::vector<std::array<double, 2>>(5)).number_of_nodes(), 3u);
 }
 
 // From a mutation audit of Uniform_grid.h. A packed frame over too many cells for a dense array (about 10^6

@@ -16,6 +16,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/sampling/internal/nearest_tree.h>
 #include <FeatureRecon/sampling/internal/ring_grid.h>
 #include <FeatureRecon/sampling/internal/sample_set.h>
 #include <FeatureRecon/sampling/sampling_options.h>
@@ -662,6 +663,9 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
 
   double density(std::size_t i) const { return options.density.empty() ? 1.0 : options.density[i]; }
 
+  // The rings of cells the assignment's grid searches before it asks the kd-tree.
+  static constexpr std::int64_t ring_limit = 2;
+
   // The assignment; on the torus also, per item, the shift from its site to the site's image nearest it
   // (`shift`, when given), each site wrapped into the box.
   Bilateral_assignment assign(const std::vector<Site>& given, std::vector<Point>* shift = nullptr) const {
@@ -710,25 +714,31 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
         }
       positions.swap(images);
     }
+    // A ring search around each item first (a few cells where the sites cover the items' box), the kd-tree
+    // where that does not settle it (items far from every site: a dark logo on white).
     Ring_grid<D> grid(flo, fhi, double(positions.size()));
     grid.assign(positions);
+    const Nearest_tree<D> tree(positions);
     auto site_of = [&](std::uint32_t t) { return this->wraps ? source[t] : t; };
     with_metric(options, [&](const auto& metric) {
       const double scale = metric.spatial_scale();
+      std::uint32_t previous = Nearest_tree<D>::none;
       for (std::size_t i = 0; i < S.size(); ++i) {
         const Point& x = S.positions[i];
+        auto score = [&](std::uint32_t u) {
+          const std::uint32_t j = site_of(u);
+          return metric(Base::squared(x, positions[u]),
+                        S.compared ? checked_feature_distance(
+                                         CGAL::to_double(S.feature_distance(S.features[i], sites[j].feature)),
+                                         S.fn, "item", i, "site", j)
+                                   : 0.0);
+        };
         double best;
-        const std::uint32_t t = grid.nearest(
-            x, scale,
-            [&](std::uint32_t u) {
-              const std::uint32_t j = site_of(u);
-              return metric(Base::squared(x, positions[u]),
-                            S.compared ? checked_feature_distance(CGAL::to_double(S.feature_distance(
-                                                                      S.features[i], sites[j].feature)),
-                                                                  S.fn, "item", i, "site", j)
-                                       : 0.0);
-            },
-            best);
+        bool complete;
+        std::uint32_t t = grid.nearest(x, scale, score, best, ring_limit, complete);
+        // The hint: the best of the rings, else the previous item's site (an image's neighbour, most often).
+        if (!complete) t = tree.nearest(x, scale, score, best, t != Nearest_tree<D>::none ? t : previous);
+        previous = t;
         const std::uint32_t s = site_of(t);
         a.site[i] = s;
         a.mass[s] += density(i);
@@ -835,8 +845,12 @@ std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const
 }
 
 /// Stage 1: the discrete bilateral Voronoi sets (dissertation Sec. 2.2.2): every item goes to the site of
-/// smallest xi (ties to the lowest site index); a grid of the sites is searched in rings until xi's spatial
-/// lower bound |dp| / sigma_position rules out the rest, so the result is that of the brute-force search.
+/// smallest xi (ties to the lowest site index). A grid of the sites is searched in rings until xi's spatial
+/// lower bound |dp| / sigma_position rules out the rest, and a kd-tree of the sites (same bound) where two
+/// rings around the item do not settle it (sites covering a small part of the items' box, as a dark logo on
+/// white), so the result is that of the brute-force search. The spatial bound prunes well when features
+/// follow position (pictures); with features that do not (random normals), the search visits the sites within
+/// about sigma_position times the feature term of the item.
 /// \param items the domain. \param sites the sites (finite positions, checked; throws).
 /// \param options metric and density (the iteration settings are not used). \param traits FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>

@@ -51,6 +51,14 @@ class Ring_grid {
         }
       if (positive == 0) break;
       m_side = std::pow(measure / std::max(1.0, target_cells), 1.0 / positive);
+      if (!(measure >= std::numeric_limits<double>::min()) || std::isinf(measure)) {
+        // The product left the normal range (extents of 1e-110 in 3-D: 0, and a side of extent / target,
+        // target^D cells): the same side from the extents relative to the largest.
+        double relative = 1;
+        for (int k = 0; k < D; ++k)
+          if (active[k]) relative *= (hi[k] - lo[k]) / extent_max;
+        m_side = extent_max * std::pow(relative / std::max(1.0, target_cells), 1.0 / positive);
+      }
       // No axis gets more than about target_cells cells, and the total stays bounded.
       m_side = std::max(m_side, extent_max / std::max(1.0, target_cells));
       bool dropped = false;
@@ -93,13 +101,29 @@ class Ring_grid {
   /// \param scale score(j) >= |x - point j| / scale for every j (scale > 0; infinity: plain scan of all).
   template <class Score>
   std::uint32_t nearest(const Point& x, double scale, Score&& score, double& best) const {
+    bool complete;
+    return nearest(x, scale, score, best, std::numeric_limits<std::int64_t>::max(), complete);
+  }
+
+  /// nearest() over the rings 0 to ring_limit around x's cell only: `complete` tells whether that settled
+  /// the answer (no unvisited cell can beat it). If not, the answer is the best of the visited points (or
+  /// max() for none), for a search that goes on elsewhere (Nearest_tree with it as the hint): where the
+  /// points cover a small part of the frame, rings of empty cells made the search O(cells).
+  template <class Score>
+  std::uint32_t nearest(const Point& x, double scale, Score&& score, double& best, std::int64_t ring_limit,
+                        bool& complete) const {
     best = std::numeric_limits<double>::infinity();
     std::uint32_t arg = std::numeric_limits<std::uint32_t>::max();
+    complete = true;
     if (m_items.empty()) return arg;
     const std::array<std::int64_t, D> c = cell(x);
     std::int64_t max_ring = 0;
     for (int k = 0; k < D; ++k) max_ring = std::max({max_ring, c[k], m_cells[k] - 1 - c[k]});
     for (std::int64_t r = 0; r <= max_ring; ++r) {
+      if (r > ring_limit) {
+        complete = false;
+        break;
+      }
       visit_ring(c, r, [&](std::size_t cell_index) {
         for (std::uint32_t t = m_offsets[cell_index]; t < m_offsets[cell_index + 1]; ++t) {
           const std::uint32_t j = m_items[t];
