@@ -6,7 +6,6 @@
 #include <FeatureRecon/sampling/bilateral_dart_throwing.h>
 #include <FeatureRecon/sampling/discrete_lloyd.h>
 #include <FeatureRecon/sampling/image_domain.h>
-#include <FeatureRecon/sampling/internal/radius_search.h>
 #include <FeatureRecon/sampling/kernel_relaxation.h>
 #include <FeatureRecon/sampling/lloyd_relaxation.h>
 #include <FeatureRecon/sampling/pixel_density.h>
@@ -147,10 +146,11 @@ std::vector<std::size_t> weighted_pixels(const std::vector<double>& density, std
   return out;
 }
 
-/// Bilateral dart throwing over the pixels of positive darkness (white ones take no dot) with radii r_i = R
+/// Bilateral dart throwing over the pixels of positive darkness (white ones take no dot) with radii r_i = t
 /// min(8, sqrt(mean / rho_i)) (mean over those pixels), on the torus of `period` when it is given (a tile:
-/// the picture's width and height), R searched so that at least `count` pixels are kept; the few extra are
-/// dropped at random (seeded). Pixels are visited in a seeded random order weighted by darkness (keys u^(1 /
+/// the picture's width and height): bilateral_dart_throwing_count() searches the factor t until a throw keeps
+/// `count` to 1 % more pixels, or the count jumps over that (as over areas of one grey), and keeps the first
+/// `count` dots of that throw. Pixels are visited in a seeded random order weighted by darkness (keys u^(1 /
 /// rho_i), largest first: Efraimidis and Spirakis): a light pixel's wide disc, visited first, would otherwise
 /// keep dark pixels around it empty.
 template <class Pixel>
@@ -168,83 +168,32 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
   double mean = 0;
   for (const std::size_t i : index) mean += density[i];
   mean /= double(index.size());
-  std::vector<double> shape(index.size());
+  fs::Dart_throwing_count_options o;
+  o.darts.radii.resize(index.size());  // the shape; the search finds the factor
   for (std::size_t k = 0; k < index.size(); ++k)
-    shape[k] = std::min(8.0, std::sqrt(mean / density[index[k]]));
-  fs::Dart_throwing_options o;
-  o.sigma_position = sigma_position;
-  o.sigma_feature = sigma_feature;
-  o.periodic = !period.empty();
-  o.period = period;
-  o.priority.resize(index.size());
+    o.darts.radii[k] = std::min(8.0, std::sqrt(mean / density[index[k]]));
+  o.darts.sigma_position = sigma_position;
+  o.darts.sigma_feature = sigma_feature;
+  o.darts.periodic = !period.empty();
+  o.darts.period = period;
+  o.darts.priority.resize(index.size());
   {
     std::mt19937_64 rng(seed);
     for (std::size_t k = 0; k < index.size(); ++k) {
       const double u = (static_cast<double>(rng() >> 11) + 0.5) * 0x1p-53;  // in (0, 1)
-      o.priority[k] = std::log(u) / density[index[k]];                      // log of u^(1 / rho)
+      o.darts.priority[k] = std::log(u) / density[index[k]];                // log of u^(1 / rho)
     }
   }
-  auto run = [&](double R) {
-    o.radii.resize(shape.size());
-    for (std::size_t k = 0; k < shape.size(); ++k) o.radii[k] = R * shape[k];
-    std::vector<std::size_t> kept;
-    fs::bilateral_dart_throwing(pixels, 1.0, std::back_inserter(kept),
-                                o);  // the radius is ignored with radii
-    for (std::size_t& k : kept) k = index[k];
-    return kept;
-  };
-  // The surplus above `count` dropped at random (seeded).
-  auto finish = [&](std::vector<std::size_t> kept) {
-    if (kept.size() > count) {
-      std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
-      for (std::size_t i = kept.size() - 1; i > 0; --i)
-        std::swap(kept[i], kept[std::size_t(rng() % (i + 1))]);
-      kept.resize(count);
-      std::sort(kept.begin(), kept.end());
-    }
-    return kept;
-  };
-  (void)progress(0.0);  // shown at once: the first throws take seconds on large pictures
-  // At a radius near 0 every inked pixel is kept (pixels are 1 apart): the fallback, without a throw.
-  std::vector<std::size_t> best = index;
-  constexpr int max_throws = 30;
-  int throws = 0;
-  // Within 1 % of the count (the surplus is dropped at random below); a single dot at R is a single dot at
-  // every larger radius too, so count 1 needs no bracket.
-  auto close_enough = [count](std::size_t c) { return c >= count && (c <= count + count / 100 || c == 1); };
-  auto keep = [&](std::vector<std::size_t>& kept) {
-    if (kept.size() >= count && kept.size() < best.size()) best = std::move(kept);
-  };
-  // Grow until a throw keeps fewer than `count` dots (in units of sigma_position: d_hex is about 1). Then the
-  // kept count, which falls about as R^-2 (one dot per disc), is interpolated between the bracket's ends
-  // (Bracketed_radius_search): about 5 throws where a bisection took about 15, each visiting every inked
-  // pixel (200 dots on a 2000 x 1000 picture took 18 s).
-  fs::internal::Bracketed_radius_search search;
-  double R = 2.0;
-  for (; throws < max_throws; R *= 2) {
-    auto kept = run(R);
-    ++throws;
-    const std::size_t c = kept.size();
-    keep(kept);
-    if (close_enough(c) || !progress(0.5 * throws / double(max_throws))) return finish(best);
-    if (c < count) {
-      search.hi = R;
-      search.kept_hi = double(c);
-      break;
-    }
-    search.lo = R;
-    search.kept_lo = double(c);
-  }
-  for (; throws < max_throws; ++throws) {
-    const double mid = search.next(double(count) + double(count / 100) / 2 + 0.5);  // the window's middle
-    if (!(mid > search.lo && mid < search.hi)) break;
-    auto kept = run(mid);
-    const std::size_t c = kept.size();
-    keep(kept);
-    if (close_enough(c) || !progress(0.5 * (throws + 1) / double(max_throws))) break;
-    search.record(mid, double(c), c >= count);
-  }
-  return finish(best);
+  o.count_tolerance = 0.01;
+  // The shape is in units of d_hex for the mean density: about count dots at 1, fewer at 2 (an upper end
+  // to interpolate from).
+  o.initial_radius = 2;
+  o.darts.progress = [&progress](double f) { return progress(f); };
+  std::vector<std::size_t> kept;
+  kept.reserve(count);
+  fs::bilateral_dart_throwing_count(pixels, count, std::back_inserter(kept), o);
+  for (std::size_t& k : kept) k = index[k];
+  return kept;
 }
 
 template <class Pixel, std::size_t C>

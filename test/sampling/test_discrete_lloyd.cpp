@@ -727,6 +727,51 @@ TEST(Discrete_lloyd, SitesOnASmallPartOfThePictureMatchBruteForce) {
   }
 }
 
+TEST(Discrete_lloyd, AFarSiteAndTinyCoordinatesMatchBruteForce) {
+  // From a review: one site far outside the picture (1e6 away) made the grid of the sites one cell for all
+  // the others (every pixel scored all of them); the rings now stop after 64 sites and the kd-tree answers.
+  const auto px = step_image(48, 40, 20, 30, 9);
+  auto sites = random_sites(60, 48, 40, 31);
+  sites[7].position = {1e6, 1e6};
+  for (const double sf : {std::numeric_limits<double>::infinity(), 0.3}) {
+    Discrete_lloyd_options<2> o;
+    o.sigma_position = 1.5;
+    o.sigma_feature = sf;
+    EXPECT_EQ(bilateral_voronoi_assignment(px, sites, o).site,
+              brute_force(px, sites, Gaussian_bilateral_metric{1.5, sf}))
+        << "sigma_feature " << sf;
+  }
+  // Items on a lattice of step 1e-160 (squared distances below the normal range: scores of 0 tie) keep the
+  // full ring search, whose answers are those of brute force with the same scores (the tree's exact box
+  // distances parted from them for 124 of these 1200 items).
+  using P2 = test::K::Point_2;
+  using Point_site = Bilateral_site<Point_traits<P2>>;
+  std::vector<P2> items;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) items.emplace_back(x * 1e-160, y * 1e-160);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point_site> tiny(50);
+  for (auto& s : tiny) s.position = {u(rng) * 4e-160, u(rng) * 3e-160};
+  Discrete_lloyd_options<2> o;
+  o.sigma_position = 1000;
+  const auto got = bilateral_voronoi_assignment(items, tiny, o).site;
+  const Gaussian_bilateral_metric metric{1000, std::numeric_limits<double>::infinity()};
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    std::uint32_t arg = 0;
+    for (std::uint32_t j = 0; j < tiny.size(); ++j) {
+      const double dx = items[i].x() - tiny[j].position[0], dy = items[i].y() - tiny[j].position[1];
+      const double xi = metric(dx * dx + dy * dy, 0.0);
+      if (xi < best) {
+        best = xi;
+        arg = j;
+      }
+    }
+    EXPECT_EQ(got[i], arg) << "item " << i;
+  }
+}
+
 TEST(Discrete_lloyd, TorusRelaxationTilesAndIsTranslationInvariant) {
   const int w = 48, h = 40;
   const auto px = step_image(w, h, 0, 0, 1);  // uniform

@@ -362,8 +362,8 @@ TEST(RingGrid, NearestAndWithinMatchBruteForce) {
 // small cluster and a few far away (most queries far from most points), copies (ties), one point, points on
 // a line and all points at one place; each also scaled by 2^-530 with scores that are distances (squared
 // distances below the normal range: the tree then compares distances, not their squares). Also the ring
-// search cut after 0, 1 or 2 rings and finished by the tree with the rings' answer as the hint, as the
-// discrete Lloyd assignment does.
+// search cut after 0, 1 or 2 rings or 0 or 5 scores and finished by the tree with the rings' answer as the
+// hint, as the discrete Lloyd assignment does.
 template <int D>
 void expect_nearest_tree_matches_brute_force(unsigned seed) {
   using Point = std::array<double, D>;
@@ -428,16 +428,17 @@ void expect_nearest_tree_matches_brute_force(unsigned seed) {
             EXPECT_EQ(best, best_brute)
                 << "layout " << layout << (tiny ? " (tiny)" : "") << ", scale " << scale << ", query " << t;
           }
-          for (const std::int64_t rings : {0, 1, 2}) {
-            double best = 0;
-            bool complete = false;
-            std::uint32_t j = grid.nearest(x, scale, score, best, rings, complete);
-            if (!complete) j = tree.nearest(x, scale, score, best, j);
-            EXPECT_EQ(j, arg_brute) << "layout " << layout << (tiny ? " (tiny)" : "") << ", " << rings
-                                    << " rings, query " << t;
-            EXPECT_EQ(best, best_brute)
-                << "layout " << layout << (tiny ? " (tiny)" : "") << ", " << rings << " rings, query " << t;
-          }
+          for (const std::int64_t rings : {0, 1, 2})
+            for (const std::size_t most : {std::size_t(0), std::size_t(5), p.size()}) {
+              double best = 0;
+              bool complete = false;
+              std::uint32_t j = grid.nearest(x, scale, score, best, rings, most, complete);
+              if (!complete) j = tree.nearest(x, scale, score, best, j);
+              EXPECT_EQ(j, arg_brute) << "layout " << layout << (tiny ? " (tiny)" : "") << ", " << rings
+                                      << " rings, " << most << " scores, query " << t;
+              EXPECT_EQ(best, best_brute) << "layout " << layout << (tiny ? " (tiny)" : "") << ", " << rings
+                                          << " rings, " << most << " scores, query " << t;
+            }
         }
       }
       // Every score NaN (infinite): a point is still found, the lowest index.

@@ -54,9 +54,11 @@ inline void check_dart_options(const Dart_throwing_options& o, std::size_t n, do
 }
 
 /// One pass of dart throwing over the items in `order`; returns the accepted items in acceptance order, or
-/// nothing with `interrupted` set. With `largest_conflict` (uniform radius only), also the largest over the
-/// rejected items of the distance to their nearest earlier accepted item (-infinity when none was rejected):
-/// every radius above it and up to `radius` rejects the same items, so throws the same set.
+/// nothing with `interrupted` set. With per-item radii `radius` is a factor: item i's radius is radius
+/// o.radii[i] (1 for the radii as given). With `largest_conflict`, also the largest over the rejected items
+/// of the distance to their nearest earlier accepted item (-infinity when none was rejected), with per-item
+/// radii divided by the larger radius of the pair: every radius (factor) above it and up to `radius` rejects
+/// the same items, so throws the same set.
 template <class Traits>
 std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radius,
                                        const Dart_throwing_options& o,
@@ -65,7 +67,8 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   constexpr int D = Traits::dimension;
   const std::size_t n = S.size();
   std::vector<std::uint32_t> accepted;
-  const double largest = o.radii.empty() ? radius : *std::max_element(o.radii.begin(), o.radii.end());
+  const double largest =
+      o.radii.empty() ? radius : radius * *std::max_element(o.radii.begin(), o.radii.end());
   interrupted = false;
   if (largest_conflict != nullptr) *largest_conflict = -std::numeric_limits<double>::infinity();
   // On the torus (o.periodic) the grid holds the positions modulo the periods; a position within the reach
@@ -100,14 +103,14 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
         return;
       }
       const std::uint32_t i = order[step];
-      const double ri = o.radii.empty() ? radius : o.radii[i];
+      const double ri = o.radii.empty() ? radius : radius * o.radii[i];
       bool conflict = false;
       if (largest_conflict == nullptr) {
         for_each_candidate(where[i], [&](std::uint32_t j) {
           if (conflict) return;
           const double d2 = squared_distance(i, j);
           if (!(d2 < reach2)) return;
-          const double rj = o.radii.empty() ? radius : o.radii[j];
+          const double rj = o.radii.empty() ? radius : radius * o.radii[j];
           conflict = metric(d2, S.squared_feature_distance(i, j)) < std::max(ri, rj);
         });
       } else {
@@ -118,9 +121,11 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
           const double d2 = squared_distance(i, j);
           if (!(d2 < reach2)) return;
           const double xi = metric(d2, S.squared_feature_distance(i, j));
-          if (xi < radius) {
+          // The pair's radius in units of the factor (max(r_i, r_j) = radius unit, as above).
+          const double unit = o.radii.empty() ? 1.0 : std::max(o.radii[i], o.radii[j]);
+          if (xi < radius * unit) {
             conflict = true;
-            nearest = std::min(nearest, xi);
+            nearest = std::min(nearest, xi / unit);
           }
         });
         if (conflict) *largest_conflict = std::max(*largest_conflict, nearest);
@@ -138,8 +143,9 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
   return accepted;
 }
 
-/// The smallest distance between two items of `kept` (a throw at a uniform radius with `o`), or `cap` when no
-/// pair lies closer: every radius from the throw's up to it accepts the same items, so throws the same set.
+/// The smallest distance between two items of `kept` (a throw with `o`; with per-item radii each distance
+/// divided by the larger radius of the pair), or `cap` when no pair lies closer: every radius (factor) from
+/// the throw's up to it accepts the same items, so throws the same set.
 /// Stops at the first distance below `stop_below` (then returns it). Pairs are searched within cap
 /// sigma_position with a relative margin of 2^-40, so that no pair closer than `cap` is missed by the
 /// rounding of the grid's cells.
@@ -156,16 +162,22 @@ double throw_separation(const Sample_set<Traits>& S, const std::vector<std::uint
                       : S.squared_distance(kept[a], kept[b]);
   };
   double smallest = cap;
+  double widest = 1;  // with per-item radii, the largest of the kept items'
+  if (!o.radii.empty() && !kept.empty()) {
+    widest = 0;
+    for (const std::uint32_t i : kept) widest = std::max(widest, o.radii[i]);
+  }
   with_metric(o, [&](const auto& metric) {
-    const double reach = cap * metric.spatial_scale() * (1 + 0x1p-40);
+    const double reach = cap * widest * metric.spatial_scale() * (1 + 0x1p-40);
     const double cell = o.periodic ? torus_search_reach(reach, largest_period(period)) : reach;
     FeatureRecon::internal::Dynamic_grid<D> grid(where, cell);
     const double reach2 = prefilter_bound(reach);
     for (std::uint32_t a = 0; a < where.size() && !(smallest < stop_below); ++a) {
       const auto visit = [&](std::uint32_t b) {
         const double d2 = squared_distance(a, b);
+        const double unit = o.radii.empty() ? 1.0 : std::max(o.radii[kept[a]], o.radii[kept[b]]);
         if (d2 < reach2)
-          smallest = std::min(smallest, metric(d2, S.squared_feature_distance(kept[a], kept[b])));
+          smallest = std::min(smallest, metric(d2, S.squared_feature_distance(kept[a], kept[b])) / unit);
       };
       if (o.periodic)
         for_each_torus_candidate(
@@ -230,8 +242,8 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
     return result;
   }
   bool interrupted = false;
-  std::vector<std::uint32_t> kept =
-      internal::throw_darts(S, radius, options, internal::dart_order(S.size(), options), interrupted);
+  std::vector<std::uint32_t> kept = internal::throw_darts(
+      S, options.radii.empty() ? radius : 1.0, options, internal::dart_order(S.size(), options), interrupted);
   if (interrupted) {
     result.status = Status::interrupted;
     return result;
@@ -251,7 +263,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
   return result;
 }
 
-/// Bilateral dart throwing with a target count: searches the uniform radius until a maximal throw (same order
+/// Bilateral dart throwing with a target count: searches the radius until a maximal throw (same order
 /// every time) keeps exactly `count` items. The kept count falls about as a power of the radius (r^-2 for
 /// points spread in the plane), so each step interpolates log count against log radius between the bracket's
 /// ends (regula falsi), with a bisection after a step that did not halve the bracket: about half the throws
@@ -267,11 +279,17 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
 /// With the exponential form, items of very different features may never conflict (their distance
 /// overflows): when no finite radius keeps as few as `count`, the throw at the largest radius tried (doubling
 /// from the largest finite distance) is cut.
+///
+/// With per-item radii (`options.darts.radii`, adaptive sampling) they give the shape: the search is on the
+/// factor t of the radii t r(s), and distances count divided by the larger r of the pair, so the jumps are
+/// found as with a uniform radius (a stippling of a picture whose density is constant over large areas: the
+/// count jumps over the goal there).
 /// \param count the number of items to keep, 0 <= count <= number of items (checked; throws).
 /// \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set (when the search
-///   ended at a jump, the largest radius known to throw the set that was cut).
-/// \throws std::invalid_argument as bilateral_dart_throwing(), when `options.darts.radii` or
-///   `options.darts.max_accepted` is set, and for max_iterations 0.
+///   ended at a jump, the largest radius known to throw the set that was cut); with per-item radii the
+///   factor t.
+/// \throws std::invalid_argument as bilateral_dart_throwing(), when `options.darts.max_accepted` is set,
+///   for max_iterations 0, count_tolerance outside [0, 1] and a negative or non-finite initial_radius.
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
 Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& items, std::size_t count,
                                                               OutputIterator selected,
@@ -282,9 +300,6 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   const std::size_t n = S.size();
   internal::check_dart_options(options.darts, n, S.extent(), fn);
   (void)internal::torus_period<Traits::dimension>(options.darts.period, options.darts.periodic, fn);
-  if (!options.darts.radii.empty())
-    FeatureRecon::internal::throw_invalid_argument(fn,
-                                                   "per-item radii cannot be combined with a target count");
   if (options.darts.max_accepted != 0)
     FeatureRecon::internal::throw_invalid_argument(
         fn, "darts.max_accepted cannot be combined with a target count");
@@ -292,6 +307,15 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   if (options.max_iterations == 0)
     FeatureRecon::internal::throw_invalid_argument(
         fn, "max_iterations must be >= 1 (bisection steps on the radius)");
+  if (!(options.count_tolerance >= 0 && options.count_tolerance <= 1))
+    FeatureRecon::internal::throw_invalid_argument(fn, "count_tolerance must be in [0, 1], got ",
+                                                   options.count_tolerance);
+  if (!(options.initial_radius >= 0 && std::isfinite(options.initial_radius)))
+    FeatureRecon::internal::throw_invalid_argument(fn, "initial_radius must be finite and >= 0, got ",
+                                                   options.initial_radius);
+  bool guessed = options.initial_radius == 0;  // the first throw at initial_radius is done
+  // A throw keeping count to count + surplus items ends the search.
+  const std::size_t surplus = static_cast<std::size_t>(std::floor(options.count_tolerance * double(count)));
   Sampling_result<OutputIterator> result{selected, 0, 0, Status::success};
   if (n == 0) {
     result.status = Status::degenerate_input;
@@ -301,6 +325,10 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   const std::vector<std::uint32_t> order = internal::dart_order(n, options.darts);
   Dart_throwing_options quiet = options.darts;
   quiet.progress = nullptr;
+  // With per-item radii the search is on their factor t (item i's radius t radii[i]): distances count in
+  // units of the radii, at most 1 / least_shape of theirs.
+  const double least_shape =
+      quiet.radii.empty() ? 1.0 : *std::min_element(quiet.radii.begin(), quiet.radii.end());
   // Bracket: at `search.lo` the throw keeps more than `count` items (or everything), at `search.hi` at most
   // `count`.
   // Twice the largest distance from item 0 bounds the radius that keeps a single item (for the Gaussian
@@ -309,7 +337,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     double r = 0;
     for (std::size_t i = 0; i < n; ++i)
       r = std::max(r, m(S.squared_distance(0, i), S.squared_feature_distance(0, i)));
-    return 2 * r;
+    return 2 * r / least_shape;
   });
   internal::Bracketed_radius_search search;
   search.hi = high_start;
@@ -335,7 +363,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
       (options.darts.periodic ? internal::largest_period(
                                     internal::torus_period<Traits::dimension>(options.darts.period, true, fn))
                               : S.magnitude()) /
-      options.darts.sigma_position;
+      options.darts.sigma_position / least_shape;
   // `best` has a pair this close (infinity: not searched yet): a lower threshold needs no new search while
   // it lies below.
   double best_has_pair_at = std::numeric_limits<double>::infinity();
@@ -363,7 +391,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
         const double v = m(S.squared_distance(0, i), S.squared_feature_distance(0, i));
         if (std::isfinite(v)) r = std::max(r, v);
       }
-      return r;
+      return r / least_shape;
     });
     // Items that never conflict (another colour at an infinite distance) can make `count` unreachable: then
     // the first `count` items of the throw at the largest finite radius tried.
@@ -416,11 +444,14 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
       return result;
     }
     // A lower end keeps more than `count` items, an upper one at most `count`: the goal lies between.
-    const double mid = search.next(double(count) + 0.5);
+    double mid = search.next(double(count) + double(surplus) / 2 + 0.5);  // the window's middle
+    if (!guessed && options.initial_radius > search.lo && options.initial_radius < search.hi)
+      mid = options.initial_radius;
+    guessed = true;
     if (!(mid > search.lo && mid < search.hi)) break;
     std::vector<std::uint32_t> kept =
         internal::throw_darts(S, mid, quiet, order, interrupted, jumps ? &conflict : nullptr);
-    if (kept.size() == count) {
+    if (kept.size() >= count && kept.size() - count <= surplus) {
       best = std::move(kept);
       best_radius = mid;
       break;

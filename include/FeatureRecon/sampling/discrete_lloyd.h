@@ -663,8 +663,9 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
 
   double density(std::size_t i) const { return options.density.empty() ? 1.0 : options.density[i]; }
 
-  // The rings of cells the assignment's grid searches before it asks the kd-tree.
+  // The rings of cells and the sites the assignment's grid searches before it asks the kd-tree.
   static constexpr std::int64_t ring_limit = 2;
+  static constexpr std::size_t score_limit = 64;
 
   // The assignment; on the torus also, per item, the shift from its site to the site's image nearest it
   // (`shift`, when given), each site wrapped into the box.
@@ -715,10 +716,16 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
       positions.swap(images);
     }
     // A ring search around each item first (a few cells where the sites cover the items' box), the kd-tree
-    // where that does not settle it (items far from every site: a dark logo on white).
+    // where that does not settle it (items far from every site: a dark logo on white; sites crowded into a
+    // few cells). Positions spanning less than 1e-100 keep the full ring search: squared distances below
+    // the normal range lose their digits in the score (a site at score 0 ties with one that is not), where
+    // the grid's bound and the tree's exact box distances would part.
+    double span = 0;
+    for (int k = 0; k < D; ++k) span = std::max(span, fhi[k] - flo[k]);
+    const bool tiny = span > 0 && span < 1e-100;
     Ring_grid<D> grid(flo, fhi, double(positions.size()));
     grid.assign(positions);
-    const Nearest_tree<D> tree(positions);
+    const Nearest_tree<D> tree(tiny ? std::vector<Point>() : positions);
     auto site_of = [&](std::uint32_t t) { return this->wraps ? source[t] : t; };
     with_metric(options, [&](const auto& metric) {
       const double scale = metric.spatial_scale();
@@ -734,8 +741,9 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
                                    : 0.0);
         };
         double best;
-        bool complete;
-        std::uint32_t t = grid.nearest(x, scale, score, best, ring_limit, complete);
+        bool complete = true;
+        std::uint32_t t = tiny ? grid.nearest(x, scale, score, best)
+                               : grid.nearest(x, scale, score, best, ring_limit, score_limit, complete);
         // The hint: the best of the rings, else the previous item's site (an image's neighbour, most often).
         if (!complete) t = tree.nearest(x, scale, score, best, t != Nearest_tree<D>::none ? t : previous);
         previous = t;
@@ -847,10 +855,14 @@ std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const
 /// Stage 1: the discrete bilateral Voronoi sets (dissertation Sec. 2.2.2): every item goes to the site of
 /// smallest xi (ties to the lowest site index). A grid of the sites is searched in rings until xi's spatial
 /// lower bound |dp| / sigma_position rules out the rest, and a kd-tree of the sites (same bound) where two
-/// rings around the item do not settle it (sites covering a small part of the items' box, as a dark logo on
-/// white), so the result is that of the brute-force search. The spatial bound prunes well when features
-/// follow position (pictures); with features that do not (random normals), the search visits the sites within
-/// about sigma_position times the feature term of the item.
+/// rings around the item or 64 sites do not settle it (sites covering a small part of the items' box, as a
+/// dark logo on white; sites crowded into a few cells), so the result is that of the brute-force search. The
+/// bound ignores features: the search visits every site whose spatial term alone is below the item's best
+/// xi. That is a few sites when the nearest one has a feature close to the item's; where every site's
+/// feature is far from it (white pixels of a logo whose sites are all black, features that do not follow
+/// position such as random normals) it is the sites within about sigma_position times the feature term, and
+/// with the exponential form, whose feature factor multiplies (exp(1 / 0.09) for sigma_feature 0.3), nearly
+/// all of them.
 /// \param items the domain. \param sites the sites (finite positions, checked; throws).
 /// \param options metric and density (the iteration settings are not used). \param traits FeaturePointTraits.
 template <class ItemRange, class Traits = Default_traits_t<ItemRange>>

@@ -199,7 +199,8 @@ struct Dart_throwing_options {
   double sigma_feature = std::numeric_limits<double>::infinity();
   Bilateral_form form = Bilateral_form::gaussian;  ///< form of the bilateral distance
   /// Per-item radius r(s) in bilateral units (adaptive sampling), aligned with the items; two items conflict
-  /// when xi < max(r(s), r(t)). Default empty: the uniform radius passed to the call.
+  /// when xi < max(r(s), r(t)). With bilateral_dart_throwing_count(), their shape: the radii are t r(s) for
+  /// the factor t that keeps the count. Default empty: the uniform radius passed to the call.
   std::vector<double> radii;
   /// Visiting order: items by decreasing priority (ties by index), aligned with the items. Default empty: a
   /// random order drawn from `seed`.
@@ -225,10 +226,20 @@ struct Dart_throwing_options {
 
 /// Options of bilateral_dart_throwing_count().
 struct Dart_throwing_count_options {
-  Dart_throwing_options darts;  ///< metric, order and seed of every throw (`radii` must be empty)
+  /// metric, order and seed of every throw; `radii`, when given, the shape of the radii (their factor is
+  /// searched); `max_accepted` must be 0
+  Dart_throwing_options darts;
   /// Search steps (interpolation or bisection) on the radius once it is bracketed (up to 64 steps that look
   /// for the bracket are not counted); default 60.
   std::size_t max_iterations = 60;
+  /// A throw that keeps from count up to count + floor(count_tolerance count) items ends the search, cut to
+  /// its first `count` accepted items (not maximal then): fewer throws where the count need not be hit by a
+  /// maximal throw (stippling takes 0.01). In [0, 1]; default 0: only exactly `count` or a jump over it.
+  double count_tolerance = 0;
+  /// The radius (with `darts.radii`, the factor) to throw first when it is known roughly, finite and >= 0:
+  /// the search then starts next to the answer instead of halving down from twice the largest distance (a
+  /// few throws of every item less). Default 0: none.
+  double initial_radius = 0;
 };
 
 /// Options of continuous_bilateral_dart_throwing().

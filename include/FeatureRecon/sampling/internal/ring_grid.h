@@ -102,19 +102,23 @@ class Ring_grid {
   template <class Score>
   std::uint32_t nearest(const Point& x, double scale, Score&& score, double& best) const {
     bool complete;
-    return nearest(x, scale, score, best, std::numeric_limits<std::int64_t>::max(), complete);
+    return nearest(x, scale, score, best, std::numeric_limits<std::int64_t>::max(),
+                   std::numeric_limits<std::size_t>::max(), complete);
   }
 
-  /// nearest() over the rings 0 to ring_limit around x's cell only: `complete` tells whether that settled
-  /// the answer (no unvisited cell can beat it). If not, the answer is the best of the visited points (or
-  /// max() for none), for a search that goes on elsewhere (Nearest_tree with it as the hint): where the
-  /// points cover a small part of the frame, rings of empty cells made the search O(cells).
+  /// nearest() over the rings 0 to ring_limit around x's cell and at most score_limit points: `complete`
+  /// tells whether that settled the answer (no unvisited cell can beat it). If not, the answer is the best of
+  /// the scored points (or max() for none), for a search that goes on elsewhere (Nearest_tree with it as the
+  /// hint): where the points cover a small part of the frame, rings of empty cells made the search O(cells),
+  /// and where they crowd into a few cells (one point far away, points on a surface in 3-D) the first rings
+  /// scored most of them.
   template <class Score>
   std::uint32_t nearest(const Point& x, double scale, Score&& score, double& best, std::int64_t ring_limit,
-                        bool& complete) const {
+                        std::size_t score_limit, bool& complete) const {
     best = std::numeric_limits<double>::infinity();
     std::uint32_t arg = std::numeric_limits<std::uint32_t>::max();
     complete = true;
+    std::size_t scored = 0;
     if (m_items.empty()) return arg;
     const std::array<std::int64_t, D> c = cell(x);
     std::int64_t max_ring = 0;
@@ -126,6 +130,11 @@ class Ring_grid {
       }
       visit_ring(c, r, [&](std::size_t cell_index) {
         for (std::uint32_t t = m_offsets[cell_index]; t < m_offsets[cell_index + 1]; ++t) {
+          if (scored == score_limit) {
+            complete = false;
+            return;
+          }
+          ++scored;
           const std::uint32_t j = m_items[t];
           double s = score(j);
           if (std::isnan(s)) s = std::numeric_limits<double>::infinity();
@@ -135,6 +144,7 @@ class Ring_grid {
           }
         }
       });
+      if (!complete) break;
       // Every unvisited cell lies beyond the faces of the block of rings 0..r that have cells behind them.
       double bound = std::numeric_limits<double>::infinity();
       for (int k = 0; k < D; ++k) {
