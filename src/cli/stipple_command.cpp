@@ -149,10 +149,10 @@ std::vector<std::size_t> weighted_pixels(const std::vector<double>& density, std
 /// Bilateral dart throwing over the pixels of positive darkness (white ones take no dot) with radii r_i = t
 /// min(8, sqrt(mean / rho_i)) (mean over those pixels), on the torus of `period` when it is given (a tile:
 /// the picture's width and height): bilateral_dart_throwing_count() searches the factor t until a throw keeps
-/// `count` to 1 % more pixels, or the count jumps over that (as over areas of one grey), and keeps the first
-/// `count` dots of that throw. Pixels are visited in a seeded random order weighted by darkness (keys u^(1 /
-/// rho_i), largest first: Efraimidis and Spirakis): a light pixel's wide disc, visited first, would otherwise
-/// keep dark pixels around it empty.
+/// `count` to 1 % more pixels, or the count jumps over that (as over areas of one grey, by up to 20 %), and
+/// the surplus of that throw is dropped at random (seeded). Pixels are visited in a seeded random order
+/// weighted by darkness (keys u^(1 / rho_i), largest first: Efraimidis and Spirakis): a light pixel's wide
+/// disc, visited first, would otherwise keep dark pixels around it empty.
 template <class Pixel>
 std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
                                         const std::vector<double>& density, std::size_t count,
@@ -188,10 +188,16 @@ std::vector<std::size_t> adaptive_darts(const std::vector<Pixel>& all_pixels,
   // The shape is in units of d_hex for the mean density: about count dots at 1, fewer at 2 (an upper end
   // to interpolate from).
   o.initial_radius = 2;
-  o.darts.progress = [&progress](double f) { return progress(f); };
+  o.darts.progress = [&progress](double f) { return progress(0.5 * f); };  // the kernel's steps take the rest
+  o.cut = false;  // the surplus is dropped at random below, not the last accepted (light) pixels
   std::vector<std::size_t> kept;
-  kept.reserve(count);
   fs::bilateral_dart_throwing_count(pixels, count, std::back_inserter(kept), o);
+  if (kept.size() > count) {
+    std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
+    for (std::size_t i = kept.size() - 1; i > 0; --i) std::swap(kept[i], kept[std::size_t(rng() % (i + 1))]);
+    kept.resize(count);
+    std::sort(kept.begin(), kept.end());
+  }
   for (std::size_t& k : kept) k = index[k];
   return kept;
 }

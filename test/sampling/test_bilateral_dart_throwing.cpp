@@ -498,84 +498,93 @@ TEST(BilateralDartThrowing, CountSearchScalesPerItemRadii) {
   // of the count as with a uniform radius. On a picture of one grey (the radii all alike, as stippling gives
   // them) the count jumps over the goal on the pixel lattice: the command line's own search, which did not
   // know the jumps, threw 30 times (26 s on a 1024 x 1024 grey picture). Also adaptive radii (1 on the dark
-  // stripes, 1.5 on the bright ones), in the plane and on the torus of the picture; a count tolerance and a
-  // first guess (the command line's 2: a few throws of every pixel less where the automatic start halves down
-  // from twice the picture's diagonal).
+  // stripes, 1.5 on the bright ones), one radius of 1e-12 among them (a tolerance and start bounds divided by
+  // the least radius took false jumps and wasted throws), in the plane and on the torus of the picture; the
+  // factor returned throws the set (a ratio rounded an ulp above a pair's distance over its radius lost the
+  // pair: 900 dots at radii 1.5); a count tolerance, the whole throw (no cut) and a first guess.
   std::vector<std::uint8_t> stripes(160 * 120), grey(160 * 120, 128);
   for (std::size_t k = 0; k < stripes.size(); ++k) stripes[k] = (k % 160) / 40 % 2 != 0 ? 200 : 30;
   std::size_t window_hits = 0;
-  for (const bool adaptive : {false, true})
-    for (const bool periodic : {false, true}) {
-      const auto pixels = image_pixels<Grey_pixel>(160, 120, adaptive ? stripes : grey);
-      std::size_t calls = 0;
-      Dart_throwing_count_options o;
-      o.darts.sigma_feature = 0.2;
-      o.darts.sigma_position = 4;
-      o.darts.periodic = periodic;
-      if (periodic) o.darts.period = {160, 120};
-      for (const auto& p : pixels) o.darts.radii.push_back(adaptive && p.value == 200 ? 1.5 : 1.0);
-      o.darts.progress = [&calls](double) { return ++calls > 0; };
-      std::vector<std::size_t> kept;
-      const auto r =
-          bilateral_dart_throwing_count(pixels, 500, std::back_inserter(kept), o, Grey_pixel_traits());
-      const std::string what = std::string(adaptive ? "stripes" : "grey") + (periodic ? ", torus" : "");
-      EXPECT_EQ(r.status, Status::success) << what;
-      ASSERT_EQ(kept.size(), 500u) << what;
-      EXPECT_LE(calls, 15u) << what;
-      // The set is (a part of) the throw at radii t r(s), the factor where the count jumps: just above,
-      // fewer.
-      const auto throw_at = [&](double t) {
-        Dart_throwing_options d = o.darts;
-        d.progress = nullptr;
-        for (double& radius : d.radii) radius *= t;
-        std::vector<std::size_t> out;
-        bilateral_dart_throwing(pixels, 1.0, std::back_inserter(out), d, Grey_pixel_traits());
-        return out;
-      };
-      const std::vector<std::size_t> at = throw_at(r.radius);
-      EXPECT_GE(at.size(), 500u) << what;
-      EXPECT_TRUE(std::includes(at.begin(), at.end(), kept.begin(), kept.end())) << what;
-      if (at.size() > 500u) EXPECT_LT(throw_at(r.radius * (1 + 1e-9)).size(), 500u) << what;
-      // With a tolerance of 5 % the search may end at a throw of 500 to 525 items, cut to 500, and never
-      // takes more throws.
-      std::size_t exact_calls = calls;
-      calls = 0;
-      o.count_tolerance = 0.05;
-      std::vector<std::size_t> loose;
-      const auto l =
-          bilateral_dart_throwing_count(pixels, 500, std::back_inserter(loose), o, Grey_pixel_traits());
-      ASSERT_EQ(loose.size(), 500u) << what;
-      EXPECT_LE(calls, exact_calls) << what;
-      const std::vector<std::size_t> loose_at = throw_at(l.radius);
-      EXPECT_TRUE(std::includes(loose_at.begin(), loose_at.end(), loose.begin(), loose.end())) << what;
-      if (loose_at.size() > 525u) EXPECT_LT(throw_at(l.radius * (1 + 1e-9)).size(), 500u) << what;
-      // A first guess that lands in the window ends the search at its first throw (one report before it, one
-      // at the end), with the same dots.
-      if (loose_at.size() <= 525u) {
-        ++window_hits;
-        o.initial_radius = l.radius;
-        calls = 0;
-        std::vector<std::size_t> guessed;
-        bilateral_dart_throwing_count(pixels, 500, std::back_inserter(guessed), o, Grey_pixel_traits());
-        EXPECT_EQ(calls, 2u) << what;
-        EXPECT_EQ(guessed, loose) << what;
+  for (const int shape : {0, 1, 2})  // 0: all 1.5; 1: stripes 1 and 1.5; 2: as 1 with radii[0] = 1e-12
+    for (const bool periodic : {false, true})
+      for (const std::size_t count : {std::size_t(500), std::size_t(900)}) {
+        const auto pixels = image_pixels<Grey_pixel>(160, 120, shape == 0 ? grey : stripes);
+        std::size_t calls = 0;
+        Dart_throwing_count_options o;
+        o.darts.sigma_feature = 0.2;
+        o.darts.sigma_position = 4;
+        o.darts.periodic = periodic;
+        if (periodic) o.darts.period = {160, 120};
+        for (const auto& p : pixels) o.darts.radii.push_back(shape != 0 && p.value == 30 ? 1.0 : 1.5);
+        if (shape == 2) o.darts.radii[0] = 1e-12;
+        o.darts.progress = [&calls](double) { return ++calls > 0; };
+        std::vector<std::size_t> kept;
+        const auto r =
+            bilateral_dart_throwing_count(pixels, count, std::back_inserter(kept), o, Grey_pixel_traits());
+        const std::string what = "shape " + std::to_string(shape) + (periodic ? ", torus, " : ", ") +
+                                 std::to_string(count) + " items";
+        EXPECT_EQ(r.status, Status::success) << what;
+        ASSERT_EQ(kept.size(), count) << what;
+        EXPECT_LE(calls, 15u) << what;
+        // The set is (a part of) the throw at radii t r(s), the factor where the count jumps: just above,
+        // fewer.
+        const auto throw_at = [&](double t) {
+          Dart_throwing_options d = o.darts;
+          d.progress = nullptr;
+          for (double& radius : d.radii) radius *= t;
+          std::vector<std::size_t> out;
+          bilateral_dart_throwing(pixels, 1.0, std::back_inserter(out), d, Grey_pixel_traits());
+          return out;
+        };
+        const std::vector<std::size_t> at = throw_at(r.radius);
+        EXPECT_GE(at.size(), count) << what;
+        EXPECT_TRUE(std::includes(at.begin(), at.end(), kept.begin(), kept.end())) << what;
+        if (at.size() > count) {
+          EXPECT_LT(throw_at(r.radius * (1 + 1e-9)).size(), count) << what;
+        }
+        // With a tolerance of 5 % the search may end at a throw of up to 5 % more, cut to `count`; without
+        // the cut, the whole of that throw.
+        o.count_tolerance = 0.05;
+        std::vector<std::size_t> loose, whole;
+        const auto l =
+            bilateral_dart_throwing_count(pixels, count, std::back_inserter(loose), o, Grey_pixel_traits());
+        ASSERT_EQ(loose.size(), count) << what;
+        const std::vector<std::size_t> loose_at = throw_at(l.radius);
+        EXPECT_TRUE(std::includes(loose_at.begin(), loose_at.end(), loose.begin(), loose.end())) << what;
+        if (loose_at.size() > count + count / 20) {
+          EXPECT_LT(throw_at(l.radius * (1 + 1e-9)).size(), count) << what;
+        }
+        o.cut = false;
+        bilateral_dart_throwing_count(pixels, count, std::back_inserter(whole), o, Grey_pixel_traits());
+        EXPECT_EQ(whole, loose_at) << what;
+        o.cut = true;
+        // A first guess that lands in the window ends the search at its first throw (one report before it,
+        // one at the end), with the same dots.
+        if (loose_at.size() <= count + count / 20) {
+          ++window_hits;
+          o.initial_radius = l.radius;
+          calls = 0;
+          std::vector<std::size_t> guessed;
+          bilateral_dart_throwing_count(pixels, count, std::back_inserter(guessed), o, Grey_pixel_traits());
+          EXPECT_EQ(calls, 2u) << what;
+          EXPECT_EQ(guessed, loose) << what;
+        }
+        o.initial_radius = -1;
+        EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+            [&] {
+              bilateral_dart_throwing_count(pixels, count, std::back_inserter(loose), o, Grey_pixel_traits());
+            },
+            "initial_radius must be finite and >= 0, got -1"))
+            << what;
+        o.initial_radius = 0;
+        o.count_tolerance = 1.5;
+        EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+            [&] {
+              bilateral_dart_throwing_count(pixels, count, std::back_inserter(loose), o, Grey_pixel_traits());
+            },
+            "bilateral_dart_throwing_count: count_tolerance must be in [0, 1], got 1.5"))
+            << what;
       }
-      o.initial_radius = -1;
-      EXPECT_TRUE(test::throws_with<std::invalid_argument>(
-          [&] {
-            bilateral_dart_throwing_count(pixels, 500, std::back_inserter(loose), o, Grey_pixel_traits());
-          },
-          "initial_radius must be finite and >= 0, got -1"))
-          << what;
-      o.initial_radius = 0;
-      o.count_tolerance = 1.5;
-      EXPECT_TRUE(test::throws_with<std::invalid_argument>(
-          [&] {
-            bilateral_dart_throwing_count(pixels, 500, std::back_inserter(loose), o, Grey_pixel_traits());
-          },
-          "bilateral_dart_throwing_count: count_tolerance must be in [0, 1], got 1.5"))
-          << what;
-    }
   EXPECT_GT(window_hits, 0u);
 }
 

@@ -53,6 +53,19 @@ inline void check_dart_options(const Dart_throwing_options& o, std::size_t n, do
       FeatureRecon::internal::throw_invalid_argument(fn, "priority[", i, "] is NaN");
 }
 
+/// The largest factor t with t m <= xi in floating point (xi >= 0, m > 0): a pair at distance xi whose larger
+/// radius is m conflicts at the factor t' exactly when t' > t. xi / m rounded can lie an ulp either side of
+/// it (a throw at a returned factor then lost a pair); with m = 1, xi itself.
+inline double largest_factor_within(double xi, double m) {
+  double t = xi / m;
+  if (!std::isfinite(t)) return t;
+  while (t > 0 && t * m > xi) t = std::nextafter(t, 0.0);
+  for (double up = std::nextafter(t, std::numeric_limits<double>::infinity()); up * m <= xi;
+       up = std::nextafter(t, std::numeric_limits<double>::infinity()))
+    t = up;
+  return t;
+}
+
 /// One pass of dart throwing over the items in `order`; returns the accepted items in acceptance order, or
 /// nothing with `interrupted` set. With per-item radii `radius` is a factor: item i's radius is radius
 /// o.radii[i] (1 for the radii as given). With `largest_conflict`, also the largest over the rejected items
@@ -125,7 +138,7 @@ std::vector<std::uint32_t> throw_darts(const Sample_set<Traits>& S, double radiu
           const double unit = o.radii.empty() ? 1.0 : std::max(o.radii[i], o.radii[j]);
           if (xi < radius * unit) {
             conflict = true;
-            nearest = std::min(nearest, xi / unit);
+            nearest = std::min(nearest, o.radii.empty() ? xi : largest_factor_within(xi, unit));
           }
         });
         if (conflict) *largest_conflict = std::max(*largest_conflict, nearest);
@@ -176,8 +189,10 @@ double throw_separation(const Sample_set<Traits>& S, const std::vector<std::uint
       const auto visit = [&](std::uint32_t b) {
         const double d2 = squared_distance(a, b);
         const double unit = o.radii.empty() ? 1.0 : std::max(o.radii[kept[a]], o.radii[kept[b]]);
-        if (d2 < reach2)
-          smallest = std::min(smallest, metric(d2, S.squared_feature_distance(kept[a], kept[b])) / unit);
+        if (d2 < reach2) {
+          const double xi = metric(d2, S.squared_feature_distance(kept[a], kept[b]));
+          smallest = std::min(smallest, o.radii.empty() ? xi : largest_factor_within(xi, unit));
+        }
       };
       if (o.periodic)
         for_each_torus_candidate(
@@ -287,7 +302,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing(const ItemRange& items, 
 /// \param count the number of items to keep, 0 <= count <= number of items (checked; throws).
 /// \returns as bilateral_dart_throwing(); `radius` is the radius of the returned set (when the search
 ///   ended at a jump, the largest radius known to throw the set that was cut); with per-item radii the
-///   factor t.
+///   factor t. With `options.cut` false the whole throw at that radius (count or more items) is written.
 /// \throws std::invalid_argument as bilateral_dart_throwing(), when `options.darts.max_accepted` is set,
 ///   for max_iterations 0, count_tolerance outside [0, 1] and a negative or non-finite initial_radius.
 template <class ItemRange, class OutputIterator, class Traits = Default_traits_t<ItemRange>>
@@ -325,10 +340,17 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   const std::vector<std::uint32_t> order = internal::dart_order(n, options.darts);
   Dart_throwing_options quiet = options.darts;
   quiet.progress = nullptr;
-  // With per-item radii the search is on their factor t (item i's radius t radii[i]): distances count in
-  // units of the radii, at most 1 / least_shape of theirs.
-  const double least_shape =
-      quiet.radii.empty() ? 1.0 : *std::min_element(quiet.radii.begin(), quiet.radii.end());
+  // With per-item radii the search is on their factor t (item i's radius t radii[i]): a pair's distance
+  // counts divided by its larger radius, at least the second smallest radius (pair_shape: the start bounds),
+  // and the rounding of a distance by the largest (widest_shape: a tolerance too wide took false jumps when
+  // one radius was tiny).
+  double pair_shape = 1, widest_shape = 1;
+  if (!quiet.radii.empty()) {
+    std::vector<double> two(2);
+    std::partial_sort_copy(quiet.radii.begin(), quiet.radii.end(), two.begin(), two.end());
+    pair_shape = quiet.radii.size() > 1 ? two[1] : two[0];
+    widest_shape = *std::max_element(quiet.radii.begin(), quiet.radii.end());
+  }
   // Bracket: at `search.lo` the throw keeps more than `count` items (or everything), at `search.hi` at most
   // `count`.
   // Twice the largest distance from item 0 bounds the radius that keeps a single item (for the Gaussian
@@ -337,7 +359,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
     double r = 0;
     for (std::size_t i = 0; i < n; ++i)
       r = std::max(r, m(S.squared_distance(0, i), S.squared_feature_distance(0, i)));
-    return 2 * r / least_shape;
+    return 2 * r / pair_shape;
   });
   internal::Bracketed_radius_search search;
   search.hi = high_start;
@@ -363,7 +385,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
       (options.darts.periodic ? internal::largest_period(
                                     internal::torus_period<Traits::dimension>(options.darts.period, true, fn))
                               : S.magnitude()) /
-      options.darts.sigma_position / least_shape;
+      options.darts.sigma_position / widest_shape;
   // `best` has a pair this close (infinity: not searched yet): a lower threshold needs no new search while
   // it lies below.
   double best_has_pair_at = std::numeric_limits<double>::infinity();
@@ -391,7 +413,7 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
         const double v = m(S.squared_distance(0, i), S.squared_feature_distance(0, i));
         if (std::isfinite(v)) r = std::max(r, v);
       }
-      return r / least_shape;
+      return r / pair_shape;
     });
     // Items that never conflict (another colour at an infinite distance) can make `count` unreachable: then
     // the first `count` items of the throw at the largest finite radius tried.
@@ -474,11 +496,11 @@ Sampling_result<OutputIterator> bilateral_dart_throwing_count(const ItemRange& i
   if (best.size() < count) {
     // No radius keeps `count` items (duplicates: a repeated position conflicts at any radius > 0; or all
     // items at one position): the first `count` items of the visiting order, at radius 0.
-    best.assign(order.begin(), order.end());
+    best.assign(order.begin(), order.begin() + std::ptrdiff_t(count));
     best_radius = 0;
     result.status = Status::degenerate_input;
   }
-  best.resize(count);  // the first `count` accepted items when the hit was not exact
+  if (options.cut) best.resize(count);  // the first `count` accepted items when the hit was not exact
   std::sort(best.begin(), best.end());
   (void)FeatureRecon::internal::report_progress(options.darts.progress, 1.0);
   for (const std::uint32_t i : best) *result.out++ = i;

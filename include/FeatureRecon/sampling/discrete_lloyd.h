@@ -856,7 +856,9 @@ std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const
 /// smallest xi (ties to the lowest site index). A grid of the sites is searched in rings until xi's spatial
 /// lower bound |dp| / sigma_position rules out the rest, and a kd-tree of the sites (same bound) where two
 /// rings around the item or 64 sites do not settle it (sites covering a small part of the items' box, as a
-/// dark logo on white; sites crowded into a few cells), so the result is that of the brute-force search. The
+/// dark logo on white; sites crowded into a few cells), so the result is that of the brute-force search
+/// (while squared distances over sigma_position^2 keep their digits: below about 1e-300 they round to 0 and
+/// tie, and which of the tied sites each search reaches first is not the lowest index). The
 /// bound ignores features: the search visits every site whose spatial term alone is below the item's best
 /// xi. That is a few sites when the nearest one has a feature close to the item's; where every site's
 /// feature is far from it (white pixels of a logo whose sites are all black, features that do not follow
