@@ -663,7 +663,10 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
 
   double density(std::size_t i) const { return options.density.empty() ? 1.0 : options.density[i]; }
 
-  // The rings of cells and the sites the assignment's grid searches before it asks the kd-tree.
+  // The rings of cells and the sites the assignment's grid searches before it asks the kd-tree; in 3-D the
+  // tree alone (200k items on a sphere, 5k sites: 141 -> 107 ms Euclidean, 661 -> 155 ms bilateral; in a
+  // cube about the same), in the plane the rings first (uniform sites: about 20 % faster than the tree).
+  static constexpr bool rings_first = D == 2;
   static constexpr std::int64_t ring_limit = 2;
   static constexpr std::size_t score_limit = 64;
 
@@ -723,8 +726,11 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
     double span = 0;
     for (int k = 0; k < D; ++k) span = std::max(span, fhi[k] - flo[k]);
     const bool tiny = span > 0 && span < 1e-100;
-    Ring_grid<D> grid(flo, fhi, double(positions.size()));
-    grid.assign(positions);
+    Ring_grid<D> grid;
+    if (tiny || rings_first) {
+      grid = Ring_grid<D>(flo, fhi, double(positions.size()));
+      grid.assign(positions);
+    }
     const Nearest_tree<D> tree(tiny ? std::vector<Point>() : positions);
     auto site_of = [&](std::uint32_t t) { return this->wraps ? source[t] : t; };
     with_metric(options, [&](const auto& metric) {
@@ -740,10 +746,15 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
                                          S.fn, "item", i, "site", j)
                                    : 0.0);
         };
-        double best;
-        bool complete = true;
-        std::uint32_t t = tiny ? grid.nearest(x, scale, score, best)
-                               : grid.nearest(x, scale, score, best, ring_limit, score_limit, complete);
+        double best = std::numeric_limits<double>::infinity();
+        bool complete = false;
+        std::uint32_t t = Nearest_tree<D>::none;
+        if (tiny) {
+          t = grid.nearest(x, scale, score, best);
+          complete = true;
+        } else if (rings_first) {
+          t = grid.nearest(x, scale, score, best, ring_limit, score_limit, complete);
+        }
         // The hint: the best of the rings, else the previous item's site (an image's neighbour, most often).
         if (!complete) t = tree.nearest(x, scale, score, best, t != Nearest_tree<D>::none ? t : previous);
         previous = t;
