@@ -292,6 +292,33 @@ std::uint32_t brute_force_minimum(std::size_t n, Score&& score, double& best) {
   return arg;
 }
 
+// A query of the brute-force tests below: query t is a random point of [-0.5, 1.5]^D times unit, every 4th
+// one a copy of a point of p; its score of point j is distance(x, p[j]) / scale + extra[j], NaN at every 7th
+// point in every 5th query.
+template <int D, class Distance>
+struct Random_query {
+  using Point = std::array<double, D>;
+  Point x;
+  bool with_nan;
+  const std::vector<Point>* p;
+  const std::vector<double>* extra;
+  const Distance* distance;
+  double scale;
+
+  template <class Rng>
+  Random_query(const std::vector<Point>& points, const std::vector<double>& extras, const Distance& d,
+               double scale_, double unit, int t, Rng& rng)
+      : with_nan(t % 5 == 0), p(&points), extra(&extras), distance(&d), scale(scale_) {
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int k = 0; k < D; ++k) x[k] = (-0.5 + 2 * u(rng)) * unit;
+    if (t % 4 == 0) x = points[std::size_t(rng() % points.size())];
+  }
+  double operator()(std::uint32_t j) const {
+    if (with_nan && j % 7 == 0) return std::numeric_limits<double>::quiet_NaN();
+    return (*distance)(x, (*p)[j]) / scale + (*extra)[j];
+  }
+};
+
 // From a mutation audit of ring_grid.h: Ring_grid::nearest() against a brute-force minimum of the score
 // (ties to the lowest index, NaN as infinity), for scores bounded below by distance / scale with scales far
 // from 1 either way, queries inside and outside the frame, copies of points (ties) and a frame that does not
@@ -320,14 +347,8 @@ void expect_ring_grid_matches_brute_force(unsigned seed) {
     for (std::size_t i = 0; i < extra.size(); ++i) extra[i] = i % 3 == 0 ? 0.0 : 3 * u(rng);
     for (std::size_t i = 300; i < p.size(); ++i) extra[i] = extra[i - 300];  // equal scores: ties
     for (int t = 0; t < 200; ++t) {
-      Point x;
-      for (int k = 0; k < D; ++k) x[k] = -0.5 + 2 * u(rng);
-      if (t % 4 == 0) x = p[std::size_t(rng() % p.size())];
-      const bool with_nan = t % 5 == 0;
-      auto score = [&](std::uint32_t j) {
-        if (with_nan && j % 7 == 0) return std::numeric_limits<double>::quiet_NaN();
-        return distance(x, p[j]) / scale + extra[j];
-      };
+      const Random_query<D, decltype(distance)> score(p, extra, distance, scale, 1.0, t, rng);
+      const Point& x = score.x;
       double best_brute;
       const std::uint32_t arg_brute = brute_force_minimum(p.size(), score, best_brute);
       double best = 0;
@@ -409,14 +430,8 @@ void expect_nearest_tree_matches_brute_force(unsigned seed) {
         if (layout == cluster)
           for (std::size_t i = 250; i < p.size(); ++i) extra[i] = extra[i - 250];  // equal scores: ties
         for (int t = 0; t < 150; ++t) {
-          Point x;
-          for (int k = 0; k < D; ++k) x[k] = (-0.5 + 2 * u(rng)) * unit;
-          if (t % 4 == 0) x = p[std::size_t(rng() % p.size())];
-          const bool with_nan = t % 5 == 0;
-          auto score = [&](std::uint32_t j) {
-            if (with_nan && j % 7 == 0) return std::numeric_limits<double>::quiet_NaN();
-            return distance(x, p[j]) / scale + extra[j];
-          };
+          const Random_query<D, decltype(distance)> score(p, extra, distance, scale, unit, t, rng);
+          const Point& x = score.x;
           double best_brute;
           const std::uint32_t arg_brute = brute_force_minimum(p.size(), score, best_brute);
           const std::uint32_t random_hint = std::uint32_t(rng() % p.size());

@@ -664,7 +664,7 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
   double density(std::size_t i) const { return options.density.empty() ? 1.0 : options.density[i]; }
 
   // The rings of cells and the sites the assignment's grid searches before it asks the kd-tree; in 3-D the
-  // tree alone (200k items on a sphere, 5k sites: 141 -> 107 ms Euclidean, 661 -> 155 ms bilateral; in a
+  // tree alone (200k items on a sphere, 5k sites: 141 -> 107 ms Euclidean, 661 -> 146 ms bilateral; in a
   // cube about the same), in the plane the rings first (uniform sites: about 20 % faster than the tree).
   static constexpr bool rings_first = D == 2;
   static constexpr std::int64_t ring_limit = 2;
@@ -864,10 +864,12 @@ std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const
 }
 
 /// Stage 1: the discrete bilateral Voronoi sets (dissertation Sec. 2.2.2): every item goes to the site of
-/// smallest xi (ties to the lowest site index). A grid of the sites is searched in rings until xi's spatial
-/// lower bound |dp| / sigma_position rules out the rest, and a kd-tree of the sites (same bound) where two
-/// rings around the item or 64 sites do not settle it (sites covering a small part of the items' box, as a
-/// dark logo on white; sites crowded into a few cells), so the result is that of the brute-force search
+/// smallest xi (ties to the lowest site index). Each item's sites are searched by xi's spatial lower bound
+/// |dp| / sigma_position: in the plane first in two rings of a grid of the sites (or until 64 sites are
+/// scored), then in a kd-tree of the sites (same bound) where the rings do not settle it (sites covering a
+/// small part of the items' box, as a dark logo on white; sites crowded into a few cells); in 3-D in the
+/// tree alone; for positions spanning less than 1e-100 in the grid's full ring search. The result is that
+/// of the brute-force search
 /// (while squared distances over sigma_position^2 keep their digits: below about 1e-300 they round to 0 and
 /// tie, and which of the tied sites each search reaches first is not the lowest index). The
 /// bound ignores features: the search visits every site whose spatial term alone is below the item's best
