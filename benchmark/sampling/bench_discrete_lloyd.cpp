@@ -94,9 +94,12 @@ void BM_Discrete_lloyd_step(benchmark::State& state) {
     o.sigma_position = d_hex;
     o.sigma_feature = 0.3;
   }
-  // 2: the logo, its sites on a sixteenth of the image (most pixels far from every site)
-  const bool logo = state.range(0) == 2;
+  // 2: the logo, its sites on a sixteenth of the image (most pixels far from every site); 3: the same with
+  // the exponential form (the feature factor exp(1 / 0.09) multiplies the white pixels' distances to every
+  // site)
+  const bool logo = state.range(0) >= 2;
   if (logo) o.sigma_position = d_hex / 4;
+  if (state.range(0) == 3) o.form = fs::Bilateral_form::exponential;
   for (auto _ : state) {
     auto step = fs::discrete_lloyd_step(logo ? s.logo : s.pixels, logo ? s.logo_sites : s.sites, o);
     benchmark::DoNotOptimize(step.max_move);
@@ -121,6 +124,7 @@ BENCHMARK(BM_Discrete_lloyd_step)
     ->Arg(0)
     ->Arg(1)
     ->Arg(2)
+    ->Arg(3)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Kernel_energy)
     ->Name("sampling/kernel_relaxation/energy_gradient_1MP_10k")

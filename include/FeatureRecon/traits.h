@@ -35,6 +35,7 @@ struct Point_traits {
   using Feature = No_feature;                                        ///< no feature
   using Item = Point;                                                ///< the input range's value type
   static constexpr int dimension = Point::Ambient_dimension::value;  ///< 2 or 3
+  static constexpr double feature_metric_error = 0;  ///< every feature distance is 0: a metric
   /// The position of an item.
   struct Construct_point {
     const Point& operator()(const Item& i) const { return i; }  ///< the item itself
@@ -73,6 +74,10 @@ struct Point_with_normal_traits {
   using Item = std::pair<Point, Feature>;                         ///< the input range's value type
   static constexpr int dimension = 3;                             ///< positions are 3D
   Normal_orientation orientation = Normal_orientation::oriented;  ///< how normals are compared
+  /// The square root of the feature distance is a metric (the chord between unit normals; unoriented: the
+  /// shorter chord to n or -n); a computed squared distance is within 1e-14 of the true one (2 - 2 cos from
+  /// a cosine of a few ulps of error).
+  static constexpr double feature_metric_error = 1e-14;
   /// The position of an item.
   struct Construct_point {
     const Point& operator()(const Item& i) const { return i.first; }  ///< `i.first`
@@ -141,6 +146,9 @@ struct Pixel_traits {
   using Item = Pixel_;                ///< Grey_pixel or Rgb_pixel
   using Feature = std::array<std::uint8_t, std::is_same<Pixel_, Rgb_pixel>::value ? 3 : 1>;  ///< channels
   static constexpr int dimension = 2;  ///< positions are 2D
+  /// The square root of the feature distance is a metric (Euclidean in the channels), computed with one
+  /// rounding (a quotient of integers).
+  static constexpr double feature_metric_error = 0;
   /// The pixel centre.
   struct Construct_point {
     Point operator()(const Item& p) const { return Point(p.column + 0.5, p.row + 0.5); }  ///< centre
@@ -175,6 +183,28 @@ using Grey_pixel_traits = Pixel_traits<Grey_pixel>;
 /// RGB pixels (Epick positions).
 using Rgb_pixel_traits = Pixel_traits<Rgb_pixel>;
 
+namespace internal {
+// A feature distance's declared metric_error, or -1.
+template <class F, class = void>
+struct Metric_error {
+  static constexpr double value = -1;
+};
+template <class F>
+struct Metric_error<F, std::void_t<decltype(F::metric_error)>> {
+  static constexpr double value = F::metric_error;
+};
+// The traits' feature_metric_error where they declare one (>= 0: the square root of the feature distance is
+// a metric, FeaturePointTraits), else -1.
+template <class T, class = void>
+struct Feature_metric_error {
+  static constexpr double value = -1;
+};
+template <class T>
+struct Feature_metric_error<T, std::void_t<decltype(T::feature_metric_error)>> {
+  static constexpr double value = T::feature_metric_error;
+};
+}  // namespace internal
+
 /// Users' own item types: the position and the feature are read through property maps (any callable
 /// `item -> value`, including CGAL/Boost property maps wrapped in a lambda) and features are compared by a
 /// user functor returning the squared feature distance.
@@ -182,7 +212,9 @@ using Rgb_pixel_traits = Pixel_traits<Rgb_pixel>;
 /// \tparam Item_ the range's value type. \tparam PointMap callable `const Item& -> Point`.
 /// \tparam FeatureMap callable `const Item& -> Feature`.
 /// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, >= 0, symmetric, 0 on equal
-///         features.
+///         features. A static member `metric_error` (a double >= 0) declares that its square root is a
+///         metric, each computed value within metric_error of the true squared distance (the traits'
+///         `feature_metric_error`, see FeaturePointTraits).
 template <class K, int Dimension, class Item_, class PointMap, class FeatureMap, class FeatureDistance>
 struct Property_map_traits {
   static_assert(Dimension == 2 || Dimension == 3, "FeatureRecon: Property_map_traits: Dimension is 2 or 3");
@@ -193,9 +225,11 @@ struct Property_map_traits {
   /// feature
   using Feature = std::decay_t<decltype(std::declval<const FeatureMap&>()(std::declval<const Item&>()))>;
   static constexpr int dimension = Dimension;  ///< 2 or 3
-  PointMap point_map;                          ///< item -> position
-  FeatureMap feature_map;                      ///< item -> feature
-  FeatureDistance feature_distance;            ///< squared feature distance
+  /// FeatureDistance::metric_error where it has one, else -1 (not declared a metric).
+  static constexpr double feature_metric_error = internal::Metric_error<FeatureDistance>::value;
+  PointMap point_map;                ///< item -> position
+  FeatureMap feature_map;            ///< item -> feature
+  FeatureDistance feature_distance;  ///< squared feature distance
   /// The position of an item, through the point map.
   struct Construct_point {
     const PointMap* map;                                                ///< the traits' map

@@ -772,6 +772,187 @@ TEST(Discrete_lloyd, AFarSiteAndTinyCoordinatesMatchBruteForce) {
   }
 }
 
+// Brute force of any metric over items with positions and features, through a traits class: every site,
+// smallest xi, ties to the lowest index; on the torus of a w x h picture (w > 0) the nearest image of each
+// site.
+template <class Traits, class ItemRange, class Metric>
+std::vector<std::uint32_t> generic_brute_force(const ItemRange& items,
+                                               const std::vector<Bilateral_site<Traits>>& sites,
+                                               const Metric& metric, const Traits& traits = Traits(),
+                                               double w = 0, double h = 0) {
+  std::vector<std::uint32_t> out;
+  const auto point = traits.construct_point_object();
+  const auto feature = traits.construct_feature_object();
+  const auto fd = traits.compute_feature_distance_object();
+  for (const auto& item : items) {
+    const auto p = point(item);
+    double best = std::numeric_limits<double>::infinity();
+    std::uint32_t arg = 0;
+    for (std::uint32_t j = 0; j < sites.size(); ++j) {
+      double sq = 0;
+      if constexpr (Traits::dimension == 2) {
+        if (w > 0) {
+          std::array<double, 2> q = sites[j].position;
+          q[0] = std::fmod(std::fmod(q[0], w) + w, w);
+          q[1] = std::fmod(std::fmod(q[1], h) + h, h);
+          sq = torus_squared(CGAL::to_double(p.x()), CGAL::to_double(p.y()), q, w, h);
+        } else {
+          const double dx = CGAL::to_double(p.x()) - sites[j].position[0],
+                       dy = CGAL::to_double(p.y()) - sites[j].position[1];
+          sq = dx * dx + dy * dy;
+        }
+      } else {
+        const double dx = CGAL::to_double(p.x()) - sites[j].position[0],
+                     dy = CGAL::to_double(p.y()) - sites[j].position[1],
+                     dz = CGAL::to_double(p.z()) - sites[j].position[2];
+        sq = dx * dx + dy * dy + dz * dz;
+      }
+      const double xi = metric(sq, CGAL::to_double(fd(feature(item), sites[j].feature)));
+      if (xi < best) {
+        best = xi;
+        arg = j;
+      }
+    }
+    out.push_back(arg);
+  }
+  return out;
+}
+
+// A scalar feature compared by its squared difference, declared a metric (Property_map_traits takes its
+// metric_error), or not.
+struct Declared_metric {
+  static constexpr double metric_error = 0;
+  double operator()(double a, double b) const { return (a - b) * (a - b); }
+};
+struct Undeclared_metric {
+  double operator()(double a, double b) const { return (a - b) * (a - b); }
+};
+
+TEST(Discrete_lloyd, FeatureBallsMatchBruteForce) {
+  // Searches that run past 64 nodes of the kd-tree start again with balls of the sites' features (traits
+  // that declare the feature distance's square root a metric): a node whose features all lie far from the
+  // item's is ruled out as a whole. Where every site's feature is far (white pixels against the sites of a
+  // dark logo), the exponential form scored every site before. The answers must stay those of brute force:
+  // pictures with a logo and sites of mixed greys, plane and torus, both forms, sharp and soft features;
+  // points with normals on two crossing sheets (oriented and unoriented); users' scalar features declared a
+  // metric or not.
+  const int w = 80, h = 64;
+  std::mt19937_64 rng(41);
+  std::vector<std::uint8_t> grey(std::size_t(w * h), 235);
+  for (int y = 20; y < 44; ++y)
+    for (int x = 24; x < 56; ++x) grey[std::size_t(y * w + x)] = std::uint8_t(10 + rng() % 20);
+  for (int x = 0; x < w; ++x) grey[std::size_t(60 * w + x)] = std::uint8_t(x * 3);  // a gradient row
+  const auto px = image_pixels<Grey_pixel>(w, h, grey);
+  std::vector<Site> sites(700);
+  for (std::size_t j = 0; j < sites.size(); ++j) {
+    const double x = 24 + double(rng() % 3200) / 100, y = 20 + double(rng() % 2400) / 100;
+    // Mostly dark sites in the logo, every 10th of any grey, every 50th a copy of the one before (ties).
+    sites[j] = Site{{x, y}, {std::uint8_t(j % 10 == 9 ? rng() % 256 : 10 + rng() % 20)}};
+    if (j % 50 == 49) sites[j] = sites[j - 1];
+  }
+  for (const double sf : {0.3, 0.05}) {
+    Discrete_lloyd_options<2> o;
+    o.sigma_position = 0.8;
+    o.sigma_feature = sf;
+    for (const Bilateral_form form : {Bilateral_form::gaussian, Bilateral_form::exponential}) {
+      o.form = form;
+      const Gaussian_bilateral_metric g{0.8, sf};
+      const Exponential_bilateral_metric e{0.8, sf};
+      for (const bool periodic : {false, true}) {
+        o.periodic = periodic;
+        const auto got = bilateral_voronoi_assignment(px, sites, o).site;
+        const auto want = form == Bilateral_form::gaussian
+                              ? generic_brute_force(px, sites, g, Grey_pixel_traits(), periodic ? w : 0, h)
+                              : generic_brute_force(px, sites, e, Grey_pixel_traits(), periodic ? w : 0, h);
+        EXPECT_EQ(got, want) << "sigma_feature " << sf
+                             << (form == Bilateral_form::gaussian ? " gaussian" : " exponential")
+                             << (periodic ? " on the torus" : "");
+      }
+    }
+  }
+  // Normals: the sheets z = 0 (normal +z) and x = 0 (normal +x, every 7th point -x), sites at 500 items.
+  using K = test::K;
+  std::vector<std::pair<K::Point_3, K::Vector_3>> items;
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 3000; ++i) {
+    const double a = u(rng), b = u(rng);
+    if (i % 2 == 0)
+      items.push_back({K::Point_3(a, b, 0), K::Vector_3(0.01 * u(rng), 0, 1)});
+    else
+      items.push_back({K::Point_3(0, a, b), K::Vector_3(i % 7 == 0 ? -1 : 1, 0.01 * u(rng), 0)});
+  }
+  std::vector<std::size_t> at;
+  for (std::size_t k = 0; k < 500; ++k) at.push_back((k * 7919) % items.size());
+  const auto normal_sites = sites_at_items(items, at);
+  for (const Normal_orientation orientation :
+       {Normal_orientation::oriented, Normal_orientation::unoriented}) {
+    Point_with_normal_traits<K> traits;
+    traits.orientation = orientation;
+    for (const double sf : {0.3, 0.05}) {
+      Discrete_lloyd_options<3> o;
+      o.sigma_position = 0.02;
+      o.sigma_feature = sf;
+      o.intrinsic_dimension = 2;
+      const Gaussian_bilateral_metric g{0.02, sf};
+      const Exponential_bilateral_metric e{0.02, sf};
+      EXPECT_EQ(bilateral_voronoi_assignment(items, normal_sites, o, traits).site,
+                generic_brute_force(items, normal_sites, g, traits))
+          << "normals, sigma_feature " << sf << ", orientation " << int(orientation);
+      o.form = Bilateral_form::exponential;
+      EXPECT_EQ(bilateral_voronoi_assignment(items, normal_sites, o, traits).site,
+                generic_brute_force(items, normal_sites, e, traits))
+          << "normals, exponential, sigma_feature " << sf << ", orientation " << int(orientation);
+    }
+  }
+  // Users' scalar features: declared a metric (balls) or not (positions only), the same answers.
+  struct Item {
+    double x, y, f;
+  };
+  std::vector<Item> user;
+  for (int i = 0; i < 4000; ++i) user.push_back({u(rng) * 50, u(rng) * 40, i % 5 == 0 ? u(rng) : 0.9});
+  auto position = [](const Item& i) { return K::Point_2(i.x, i.y); };
+  auto value = [](const Item& i) { return i.f; };
+  const auto declared = make_property_map_traits<K, 2, Item>(position, value, Declared_metric());
+  const auto undeclared = make_property_map_traits<K, 2, Item>(position, value, Undeclared_metric());
+  static_assert(decltype(declared)::feature_metric_error == 0, "declared through metric_error");
+  static_assert(decltype(undeclared)::feature_metric_error == -1, "not declared");
+  std::vector<std::size_t> user_at;
+  for (std::size_t k = 0; k < 600; ++k) user_at.push_back(k * 5);  // features all in [0, 1): far from 0.9
+  const auto s1 = sites_at_items(user, user_at, declared);
+  const auto s2 = sites_at_items(user, user_at, undeclared);
+  Discrete_lloyd_options<2> o;
+  o.sigma_feature = 0.1;
+  o.form = Bilateral_form::exponential;
+  const auto want = generic_brute_force(user, s1, Exponential_bilateral_metric{1, 0.1}, declared);
+  EXPECT_EQ(bilateral_voronoi_assignment(user, s1, o, declared).site, want);
+  EXPECT_EQ(bilateral_voronoi_assignment(user, s2, o, undeclared).site, want);
+}
+
+TEST(Discrete_lloyd, MetricsExceedOnlyWhatTheyExceed) {
+  // exceeds(a, b, slack), the bound of a node from its lower bounds a and b: true only when xi(a, b), as
+  // computed, is above slack, so that every pair at least as far is too; at slack = xi(a, b) false, a
+  // hundredth below true; over squares of 1e-300 to 1e300 (the Gaussian form compares squares while the
+  // slack's keeps its digits, else xi itself).
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-300, 300), v(0, 1);
+  for (int t = 0; t < 20000; ++t) {
+    const double a = t % 10 == 0 ? 0.0 : std::pow(10.0, u(rng)), b = t % 7 == 0 ? 0.0 : v(rng);
+    const double sp = std::pow(10.0, u(rng) / 3),
+                 sf = t % 13 == 0 ? std::numeric_limits<double>::infinity() : 0.01 + v(rng);
+    const Gaussian_bilateral_metric g{sp, sf};
+    const Exponential_bilateral_metric e{sp, sf};
+    for (const bool gaussian : {true, false}) {
+      const double xi = gaussian ? g(a, b) : e(a, b);
+      auto exceeds = [&](double slack) { return gaussian ? g.exceeds(a, b, slack) : e.exceeds(a, b, slack); };
+      if (!(xi > 0 && std::isfinite(xi))) continue;
+      const char* form = gaussian ? " gaussian" : " exponential";
+      EXPECT_FALSE(exceeds(xi)) << "a " << a << ", b " << b << form;
+      EXPECT_FALSE(exceeds(std::nextafter(xi, 2 * xi))) << "a " << a << ", b " << b << form;
+      EXPECT_TRUE(exceeds(0.99 * xi)) << "a " << a << ", b " << b << form;
+    }
+  }
+}
+
 TEST(Discrete_lloyd, TorusRelaxationTilesAndIsTranslationInvariant) {
   const int w = 48, h = 40;
   const auto px = step_image(w, h, 0, 0, 1);  // uniform

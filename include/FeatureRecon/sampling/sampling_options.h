@@ -37,6 +37,15 @@ struct Gaussian_bilateral_metric {
   }
   /// The scale s of the lower bound xi >= |dp| / s.
   double spatial_scale() const { return sigma_position; }
+  /// Whether xi(a, b) > slack for a squared spatial distance a and a squared feature distance b, and by
+  /// more than the roundings (true: xi of any larger pair exceeds slack as computed); compares squares
+  /// while slack^2 keeps its digits.
+  bool exceeds(double a, double b, double slack) const {
+    const double s2 = slack * slack;
+    if (!(s2 >= 0x1p-900 && s2 < 0x1p900)) return (*this)(a, b) > slack * (1 + 1e-15);
+    const double f = std::isinf(sigma_feature) ? 0.0 : b / (sigma_feature * sigma_feature);
+    return a / (sigma_position * sigma_position) + f > s2 * (1 + 1e-13);
+  }
 };
 
 /// Exponential bilateral distance (Eqn 2.5 as the original GPU code computes it):
@@ -56,6 +65,9 @@ struct Exponential_bilateral_metric {
   }
   /// The scale s of the lower bound xi >= |dp| / s.
   double spatial_scale() const { return sigma_position; }
+  /// Whether xi(a, b) > slack for a squared spatial distance a and a squared feature distance b, and by
+  /// more than the roundings (true: xi of any larger pair exceeds slack as computed).
+  bool exceeds(double a, double b, double slack) const { return (*this)(a, b) > slack * (1 + 1e-15); }
 };
 
 /// Result of the discrete samplers (indices into the input go to the output iterator).

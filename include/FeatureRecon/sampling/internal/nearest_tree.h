@@ -70,6 +70,12 @@ class Nearest_tree {
 
   std::size_t number_of_nodes() const { return m_nodes.size(); }
 
+  /// The points of node v (0: the root, holding all), [first, second): the first is the same for a node and
+  /// its left child.
+  std::pair<const std::uint32_t*, const std::uint32_t*> node_points(std::size_t v) const {
+    return {m_index.data() + m_nodes[v].begin, m_index.data() + m_nodes[v].end};
+  }
+
   /// The index j minimising score(j) (ties: lowest j) over the points, or none when there are none; best
   /// receives the score. A NaN score counts as infinity (a point is found whenever there are any).
   /// \param scale score(j) >= |x - point j| / scale for every j (scale > 0; infinity: every point scored).
@@ -78,7 +84,40 @@ class Nearest_tree {
   template <class Score>
   std::uint32_t nearest(const Point& x, double scale, Score&& score, double& best,
                         std::uint32_t hint = none) const {
-    best = std::numeric_limits<double>::infinity();
+    bool complete = true;
+    No_refusal refuse;
+    return search<false>(x, scale, score, best, hint, refuse, 0, complete);
+  }
+
+  /// Refuses nothing (see below).
+  struct No_refusal {
+    bool operator()(std::uint32_t, double, double) const { return false; }  ///< false
+  };
+  static constexpr std::size_t unlimited = std::numeric_limits<std::size_t>::max();
+
+  /// The same, with a further bound: refuse(v, squared_box_distance, slack) may return true when no point of
+  /// node v scores at most slack (the best score so far, widened by Ring_grid's margin), say from the
+  /// features of the node's points (node_points()); squared_box_distance is the squared distance from x to
+  /// the node's box (a lower bound of every point's, possibly 0 where its square underflows). Asked only
+  /// for nodes the spatial bound does not rule out, once a point has been scored. The search stops after
+  /// node_limit nodes that neither bound rules out (complete receives false; the answer so far is the best
+  /// of the points scored, a hint for another search); complete receives true when it ends by the bounds.
+  template <class Score, class Refuse>
+  std::uint32_t nearest(const Point& x, double scale, Score&& score, double& best_score, std::uint32_t hint,
+                        Refuse&& refuse, std::size_t node_limit, bool& complete) const {
+    return node_limit == unlimited
+               ? search<false>(x, scale, score, best_score, hint, refuse, 0, complete)
+               : search<true>(x, scale, score, best_score, hint, refuse, node_limit, complete);
+  }
+
+ private:
+  // nearest(); the node count only where limited (unlimited, it cost 9 % more instructions).
+  template <bool limited, class Score, class Refuse>
+  std::uint32_t search(const Point& x, double scale, Score& score, double& best_score, std::uint32_t hint,
+                       Refuse& refuse, std::size_t node_limit, bool& complete) const {
+    double best = std::numeric_limits<double>::infinity();
+    best_score = best;
+    complete = true;
     std::uint32_t arg = none;
     if (m_nodes.empty()) return arg;
     auto offer = [&](std::uint32_t j) {
@@ -95,26 +134,34 @@ class Nearest_tree {
     // rounding of the box's distance against the points'. Compared squared (no square root per box; a third
     // of the time of a search), unless the square of the limit leaves the normal range: squares of gaps
     // below 1e-154 lose their digits, so the distance is then taken with the gaps scaled by 2^600 (exact).
+    auto slack = [&] { return best * (1 + 1e-12) + std::numeric_limits<double>::min(); };
     auto hopeless = [&](const Node& node, double squared_bound) {
       if (arg == none) return false;
-      const double slack = best * (1 + 1e-12) + std::numeric_limits<double>::min(), limit = slack * scale;
+      const double limit = slack() * scale;
       if (limit * limit >= 0x1p-900) return squared_bound > limit * limit;  // also an infinite limit
       double s = 0;
       for (int k = 0; k < D; ++k) {
         const double gap = std::max({0.0, node.lo[k] - x[k], x[k] - node.hi[k]}) * 0x1p600;
         s += gap * gap;
       }
-      return std::sqrt(s) * 0x1p-600 / scale > slack;  // a gap above 2^-88: infinity, hopeless indeed
+      return std::sqrt(s) * 0x1p-600 / scale > slack();  // a gap above 2^-88: infinity, hopeless indeed
     };
     // Depth-first, the nearer child first. The depth is below 64 (at most 2^32 points, halved per level),
     // and the stack holds at most one pending sibling per level.
     std::array<std::pair<std::uint32_t, double>, 2 * 64> stack;
     std::size_t top = 0;
     stack[top++] = {0, squared_box_distance(m_nodes[0], x)};
+    [[maybe_unused]] std::size_t visited = 0;
     while (top > 0) {
       const auto [v, bound] = stack[--top];
       const Node& node = m_nodes[v];
-      if (hopeless(node, bound)) continue;
+      if (hopeless(node, bound) || (arg != none && refuse(v, bound, slack()))) continue;
+      if constexpr (limited) {
+        if (++visited > node_limit) {
+          complete = false;
+          break;
+        }
+      }
       if (node.left == 0) {
         for (std::uint32_t t = node.begin; t < node.end; ++t) offer(m_index[t]);
         continue;
@@ -125,10 +172,10 @@ class Nearest_tree {
       stack[top++] = left_first ? std::make_pair(node.left + 1, b) : std::make_pair(node.left, a);
       stack[top++] = left_first ? std::make_pair(node.left, a) : std::make_pair(node.left + 1, b);
     }
+    best_score = best;
     return arg;
   }
 
- private:
   struct Node {
     Point lo, hi;              // the bounding box of its points
     std::uint32_t begin, end;  // its points: m_index[begin, end)
