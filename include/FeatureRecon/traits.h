@@ -22,6 +22,20 @@
 
 namespace FeatureRecon {
 
+namespace internal {
+// Whether a number type holds a double's digits (double, long double, exact or interval types): the ready
+// traits declare their feature distance a metric only then (a float kernel rounds the distances to 24 bits:
+// the declared error would not hold).
+template <class FT>
+constexpr bool holds_double_digits() {
+  if constexpr (std::is_floating_point<FT>::value)
+    return std::numeric_limits<FT>::digits >= std::numeric_limits<double>::digits;
+  else
+    return true;
+}
+
+}  // namespace internal
+
 /// The feature of a sample without one (plain Euclidean sampling).
 struct No_feature {};
 
@@ -76,8 +90,8 @@ struct Point_with_normal_traits {
   Normal_orientation orientation = Normal_orientation::oriented;  ///< how normals are compared
   /// The square root of the feature distance is a metric (the chord between unit normals; unoriented: the
   /// shorter chord to n or -n); a computed squared distance is within 1e-14 of the true one (2 - 2 cos from
-  /// a cosine of a few ulps of error).
-  static constexpr double feature_metric_error = 1e-14;
+  /// a cosine of a few ulps of error), where FT holds a double's digits (else -1: not declared).
+  static constexpr double feature_metric_error = internal::holds_double_digits<FT>() ? 1e-14 : -1;
   /// The position of an item.
   struct Construct_point {
     const Point& operator()(const Item& i) const { return i.first; }  ///< `i.first`
@@ -147,8 +161,8 @@ struct Pixel_traits {
   using Feature = std::array<std::uint8_t, std::is_same<Pixel_, Rgb_pixel>::value ? 3 : 1>;  ///< channels
   static constexpr int dimension = 2;  ///< positions are 2D
   /// The square root of the feature distance is a metric (Euclidean in the channels), computed with one
-  /// rounding (a quotient of integers).
-  static constexpr double feature_metric_error = 0;
+  /// rounding (a quotient of integers) where FT holds a double's digits (else -1: not declared).
+  static constexpr double feature_metric_error = internal::holds_double_digits<FT>() ? 0 : -1;
   /// The pixel centre.
   struct Construct_point {
     Point operator()(const Item& p) const { return Point(p.column + 0.5, p.row + 0.5); }  ///< centre

@@ -7,6 +7,8 @@
 #include <FeatureRecon/sampling/discrete_lloyd.h>
 #include <FeatureRecon/sampling/image_domain.h>
 
+#include <CGAL/Simple_cartesian.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -926,6 +928,63 @@ TEST(Discrete_lloyd, FeatureBallsMatchBruteForce) {
   const auto want = generic_brute_force(user, s1, Exponential_bilateral_metric{1, 0.1}, declared);
   EXPECT_EQ(bilateral_voronoi_assignment(user, s1, o, declared).site, want);
   EXPECT_EQ(bilateral_voronoi_assignment(user, s2, o, undeclared).site, want);
+}
+
+TEST(Discrete_lloyd, FeatureBallsOfFloatKernelsAndSubnormalSquares) {
+  // From a review: two layouts where the ball bound exceeded a site's computed feature distance and ruled out
+  // the node of the brute-force winner (O, the last site), behind 1019 distractors so that the search runs
+  // past 64 nodes. (1) Pixels of a float kernel: FT(s) / FT(65025) rounds to 24 bits, so the ready traits do
+  // not declare a metric there. (2) Users' features whose squared differences are subnormal (sigma_feature
+  // 1e-150, differences of 1e-162): they round by an absolute amount, which the searches' 2^-1000 covers.
+  using KF = CGAL::Simple_cartesian<float>;
+  using Float_grey = Pixel_traits<Grey_pixel, KF>;
+  static_assert(Float_grey::feature_metric_error == -1, "a float kernel declares no metric");
+  static_assert(Point_with_normal_traits<KF>::feature_metric_error == -1,
+                "a float kernel declares no metric");
+  static_assert(Grey_pixel_traits::feature_metric_error == 0, "a double kernel declares one");
+  {
+    std::vector<Grey_pixel> items{{50, 0, 0}};  // centre (50.5, 0.5), grey 0
+    const Float_grey::Compute_feature_distance fd;
+    const double sf = 1e-3, d_o = CGAL::to_double(fd({0}, {1}));
+    std::vector<Bilateral_site<Float_grey>> sites;
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int j = 0; j < 1019; ++j) sites.push_back({{47.5 + 2.9 * u(rng), 30.5}, {255}});
+    const double x_w = 50.5 + std::sqrt(4.5 * 4.5 + 900 + d_o / (sf * sf) + 0.6e-6 - 900);
+    sites.push_back({{x_w, 30.5}, {0}});                               // W: a little worse than O
+    for (int c = 0; c < 3; ++c) sites.push_back({{45.9, 30.5}, {4}});  // P, the first site of O's leaf
+    sites.push_back({{46.0, 30.5}, {1}});                              // O
+    Discrete_lloyd_options<2> o;
+    o.sigma_feature = sf;
+    const auto want = generic_brute_force(items, sites, Gaussian_bilateral_metric{1, sf}, Float_grey());
+    EXPECT_EQ(want, std::vector<std::uint32_t>{1023});
+    EXPECT_EQ(bilateral_voronoi_assignment(items, sites, o, Float_grey()).site, want);
+  }
+  {
+    struct Item {
+      double x, y, z, f;
+    };
+    using K = test::K;
+    auto position = [](const Item& i) { return K::Point_3(i.x, i.y, i.z); };
+    auto value = [](const Item& i) { return i.f; };
+    const auto traits = make_property_map_traits<K, 3, Item>(position, value, Declared_metric());
+    using T = std::decay_t<decltype(traits)>;
+    std::vector<Item> items{{0, 0, 0, 0}};
+    std::vector<Bilateral_site<T>> sites;
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int j = 0; j < 1019; ++j)
+      sites.push_back({{(u(rng) - 0.5) * 5e-12, (u(rng) - 0.5) * 1e-14, (u(rng) - 0.5) * 1e-14}, 1e-150});
+    sites.push_back({{-std::sqrt(5e-24), 0, 0}, 3.85e-162});                                // W
+    for (int c = 0; c < 3; ++c) sites.push_back({{3e-12, 0, 0}, 6.5961012615241331e-162});  // P
+    sites.push_back({{3e-12 + 1e-15, 0, 0}, 3.3417273970192714e-162});                      // O
+    Discrete_lloyd_options<3> o;
+    o.sigma_feature = 1e-150;
+    o.intrinsic_dimension = 2;
+    const auto want = generic_brute_force(items, sites, Gaussian_bilateral_metric{1, 1e-150}, traits);
+    EXPECT_EQ(want, std::vector<std::uint32_t>{1023});
+    EXPECT_EQ(bilateral_voronoi_assignment(items, sites, o, traits).site, want);
+  }
 }
 
 TEST(Discrete_lloyd, MetricsExceedOnlyWhatTheyExceed) {

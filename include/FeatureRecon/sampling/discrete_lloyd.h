@@ -743,8 +743,11 @@ class Discrete_lloyd_engine : public Item_domain<Traits> {
     // inequality), and the node's bound becomes xi(|box|, that) instead of |box| / sigma_position: where
     // every site's feature is far from the item's (white pixels against the sites of a dark logo) the
     // exponential form, whose feature factor multiplies, otherwise scored nearly every site.
-    constexpr double metric_error = FeatureRecon::internal::Feature_metric_error<Traits>::value;
-    const bool balls = S.compared && metric_error >= 0 && !tiny;
+    constexpr double declared_error = FeatureRecon::internal::Feature_metric_error<Traits>::value;
+    const bool balls = S.compared && declared_error >= 0 && !tiny;
+    // The declared error, plus 2^-1000: squares below the normal range round by an absolute amount (up to
+    // 2^-1075 each), which the relative margins do not cover (features 1e-162 apart: a review's repro).
+    const double metric_error = declared_error + 0x1p-1000;
     std::vector<double> radius(balls ? tree.number_of_nodes() : 0);
     std::vector<std::uint32_t> pivot_of(radius.size());  // per node: the site of its first point
     const double infinity = std::numeric_limits<double>::infinity();
