@@ -28,8 +28,8 @@ class FeaturePointTraits {
   /// every site). Without it (or at -1) the searches bound by position alone: the same answers, slower
   /// where every site's feature is far. The ready models declare it (normals 1e-14, pixels and positions
   /// 0) where FT holds a double's digits (not for a float kernel: -1); Property_map_traits takes its
-  /// feature distance's static `metric_error`. Squared distances below 2^-1000 need not be covered (the
-  /// searches add that much). A class derived from a ready model that replaces its feature distance must
+  /// feature distance's static `feature_metric_error`. Squared distances below 2^-1000 need not be covered
+  /// (the searches add that much). A class derived from a ready model that replaces its feature distance must
   /// declare its own value (-1 if unsure): the inherited one would claim a metric it may not be.
   static constexpr double feature_metric_error = 0;
 

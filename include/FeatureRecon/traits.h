@@ -198,17 +198,8 @@ using Grey_pixel_traits = Pixel_traits<Grey_pixel>;
 using Rgb_pixel_traits = Pixel_traits<Rgb_pixel>;
 
 namespace internal {
-// A feature distance's declared metric_error, or -1.
-template <class F, class = void>
-struct Metric_error {
-  static constexpr double value = -1;
-};
-template <class F>
-struct Metric_error<F, std::void_t<decltype(F::metric_error)>> {
-  static constexpr double value = F::metric_error;
-};
-// The traits' feature_metric_error where they declare one (>= 0: the square root of the feature distance is
-// a metric, FeaturePointTraits), else -1.
+// The static feature_metric_error of traits or of a feature distance where they declare one (>= 0: the
+// square root of the feature distance is a metric, FeaturePointTraits), else -1.
 template <class T, class = void>
 struct Feature_metric_error {
   static constexpr double value = -1;
@@ -226,9 +217,9 @@ struct Feature_metric_error<T, std::void_t<decltype(T::feature_metric_error)>> {
 /// \tparam Item_ the range's value type. \tparam PointMap callable `const Item& -> Point`.
 /// \tparam FeatureMap callable `const Item& -> Feature`.
 /// \tparam FeatureDistance callable `(const Feature&, const Feature&) -> double`, >= 0, symmetric, 0 on equal
-///         features. A static member `metric_error` (a double >= 0) declares that its square root is a
-///         metric, each computed value within metric_error of the true squared distance (the traits'
-///         `feature_metric_error`, see FeaturePointTraits).
+///         features. A static member `feature_metric_error` (a double >= 0) declares that its square root
+///         is a metric, each computed value within that of the true squared distance (the traits take it:
+///         see FeaturePointTraits).
 template <class K, int Dimension, class Item_, class PointMap, class FeatureMap, class FeatureDistance>
 struct Property_map_traits {
   static_assert(Dimension == 2 || Dimension == 3, "FeatureRecon: Property_map_traits: Dimension is 2 or 3");
@@ -239,8 +230,8 @@ struct Property_map_traits {
   /// feature
   using Feature = std::decay_t<decltype(std::declval<const FeatureMap&>()(std::declval<const Item&>()))>;
   static constexpr int dimension = Dimension;  ///< 2 or 3
-  /// FeatureDistance::metric_error where it has one, else -1 (not declared a metric).
-  static constexpr double feature_metric_error = internal::Metric_error<FeatureDistance>::value;
+  /// FeatureDistance::feature_metric_error where it has one, else -1 (not declared a metric).
+  static constexpr double feature_metric_error = internal::Feature_metric_error<FeatureDistance>::value;
   PointMap point_map;                ///< item -> position
   FeatureMap feature_map;            ///< item -> feature
   FeatureDistance feature_distance;  ///< squared feature distance

@@ -821,9 +821,9 @@ std::vector<std::uint32_t> generic_brute_force(const ItemRange& items,
 }
 
 // A scalar feature compared by its squared difference, declared a metric (Property_map_traits takes its
-// metric_error), or not.
+// feature_metric_error), or not.
 struct Declared_metric {
-  static constexpr double metric_error = 0;
+  static constexpr double feature_metric_error = 0;
   double operator()(double a, double b) const { return (a - b) * (a - b); }
 };
 struct Undeclared_metric {
