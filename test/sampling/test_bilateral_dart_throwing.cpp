@@ -20,6 +20,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -52,6 +53,53 @@ TEST(BilateralDartThrowing, PoissonDiskAndMaximalByBruteForce) {
     bool covered = false;
     for (std::size_t k : kept) covered = covered || std::sqrt(CGAL::squared_distance(p[i], p[k])) < r;
     ASSERT_TRUE(covered) << "item " << i << " could have been kept: not maximal";
+  }
+}
+
+// Dart throwing in a given order (decreasing priority, ties by index) by brute force: an item is kept when
+// no kept item lies closer than r (Euclidean).
+template <class P>
+std::vector<std::size_t> darts_exactly(const std::vector<P>& p, double r,
+                                       const std::vector<double>& priority) {
+  std::vector<std::size_t> order(p.size()), kept;
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
+  for (const std::size_t i : order) {
+    bool conflict = false;
+    for (const std::size_t j : kept) {
+      double d2 = 0;
+      for (int k = 0; k < p[i].dimension(); ++k) d2 += (p[i][k] - p[j][k]) * (p[i][k] - p[j][k]);
+      conflict = conflict || std::sqrt(d2) < r;
+    }
+    if (!conflict) kept.push_back(i);
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+TEST(BilateralDartThrowing, FarOutliersMatchTheBruteForce) {
+  // Points in the unit square or cube beside far ones (one at 1e7 or 1e8, a cluster 0.01 wide, one just
+  // beyond the bulk): the grid keeps the cells of a core box around the bulk in an array and the far ones in
+  // a hash map (Uniform_grid.h). Thrown in a random order of priorities: the same items as the brute force.
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point_2> p = white_noise(3000, 43);
+  p.emplace_back(1e7, 0);
+  for (int i = 0; i < 30; ++i) p.emplace_back(5e6 + 0.01 * u(rng), -2e6 + 0.01 * u(rng));
+  p.emplace_back(1.3, 0.5);
+  std::vector<Point_3> s;
+  for (int i = 0; i < 2000; ++i) s.emplace_back(u(rng), u(rng), u(rng));
+  s.emplace_back(0, 0, 1e8);
+  for (int i = 0; i < 30; ++i) s.emplace_back(-3e5 + 0.01 * u(rng), 0.01 * u(rng), 7e6);
+  for (const double r : {0.004, 0.03}) {
+    Dart_throwing_options o;
+    o.priority.resize(p.size());
+    for (double& x : o.priority) x = u(rng);
+    EXPECT_EQ(darts(p, r, o), darts_exactly(p, r, o.priority)) << r;
+    o.priority.resize(s.size());
+    for (double& x : o.priority) x = u(rng);
+    EXPECT_EQ(darts(s, 2 * r, o), darts_exactly(s, 2 * r, o.priority)) << r;
   }
 }
 

@@ -616,3 +616,153 @@ TEST(UniformGrid, DenseDynamicGridRefusesAPointBeyondTheTopOfItsBox) {
     EXPECT_EQ(got, (std::vector<std::uint32_t>{2}));
   }
 }
+
+namespace {
+// Every point within `r` of each query is a candidate exactly once, of the grid built at once and of the one
+// filled point by point (the far points last), and no candidate lies farther than the 3^D cells around the
+// query.
+template <int D>
+void expect_candidates_at(const std::vector<std::array<double, D>>& p, double r,
+                          const std::vector<std::array<double, D>>& queries) {
+  const Uniform_grid<D> grid(p, r);
+  Dynamic_grid<D> dynamic(p, r);
+  for (std::uint32_t i = 0; i < p.size(); ++i) dynamic.insert(i);
+  for (std::size_t t = 0; t < queries.size(); ++t) {
+    const auto& q = queries[t];
+    for (int which = 0; which < 2; ++which) {
+      std::vector<std::uint32_t> candidates, near;
+      auto take = [&](std::uint32_t j) { candidates.push_back(j); };
+      if (which == 0)
+        grid.for_each_candidate(q, take);
+      else
+        dynamic.for_each_candidate(q, take);
+      std::sort(candidates.begin(), candidates.end());
+      EXPECT_TRUE(std::adjacent_find(candidates.begin(), candidates.end()) == candidates.end())
+          << "query " << t;
+      for (std::uint32_t j : candidates) {
+        double d2 = 0;
+        for (int k = 0; k < D; ++k) d2 += (p[j][k] - q[k]) * (p[j][k] - q[k]);
+        EXPECT_LT(d2, 4 * D * r * r) << "query " << t << " candidate " << j;  // within the 3^D cells
+        if (d2 <= r * r) near.push_back(j);
+      }
+      EXPECT_EQ(near, within<D>(p, q, r)) << "query " << t << (which == 0 ? " (grid)" : " (dynamic)");
+    }
+  }
+}
+
+// The points and, beside each, points a little off it in every direction (across the cells' borders).
+template <int D>
+std::vector<std::array<double, D>> queries_around(const std::vector<std::array<double, D>>& p, double r,
+                                                  std::size_t step) {
+  std::vector<std::array<double, D>> q;
+  for (std::size_t i = 0; i < p.size(); i += step) {
+    q.push_back(p[i]);
+    for (int k = 0; k < D; ++k)
+      for (const double s : {-0.9, 0.9}) {
+        q.push_back(p[i]);
+        q.back()[k] += s * r;
+      }
+  }
+  return q;
+}
+}  // namespace
+
+// A few points far from the others: the box of all points has too many cells for an array (hashed keys, or
+// packed ones over too many cells), and the grids keep the cells of a core box around the bulk in an array,
+// the others in a hash map (set_core(); before, all in the hash map: dart throwing beside an outlier at 1e7
+// ran at a third of its speed). The core holds the bulk, and every point within the cell size of a query is a
+// candidate exactly once: queries on every point of the bulk's border, inside it, among the far points (a
+// single one, a cluster of 2 % of the points, one just beyond the bulk), and just off each of them.
+TEST(UniformGrid, CoreCellsBesideFarOutliers) {
+  using FeatureRecon::internal::use_core_cells;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  // 2-D, hashed keys: 4,000 points in the unit square; 80 (2 %) in a cluster 0.01 wide at (5e6, -2e6); single
+  // ones at 1e7 and 3e6 along each axis and just beyond the square.
+  std::vector<std::array<double, 2>> p(4000);
+  for (auto& q : p) q = {u(rng), u(rng)};
+  for (int i = 0; i < 80; ++i) p.push_back({5e6 + 0.01 * u(rng), -2e6 + 0.01 * u(rng)});
+  p.push_back({1e7, 0});
+  p.push_back({0.5, 3e6});
+  p.push_back({1.3, 0.5});
+  Grid_frame<2> frame(p, 0.01);
+  ASSERT_TRUE(frame.hashed());
+  ASSERT_TRUE(use_core_cells(frame, p, p.size()));
+  ASSERT_TRUE(frame.has_core());
+  EXPECT_LE(frame.cells(), 65536.0);
+  std::size_t in_core = 0;
+  for (const auto& q : p) in_core += frame.dense_index(frame.cell_of(q)) >= 0;
+  EXPECT_EQ(in_core, 4001u);  // the square (widened by half its width, to about 1.37) and (1.3, 0.5)
+  std::vector<std::array<double, 2>> border;
+  for (const auto& q : p)
+    if (std::min({q[0], q[1], 1 - q[0], 1 - q[1]}) < 0.02 || q[0] > 1) border.push_back(q);
+  auto queries = queries_around<2>(border, 0.01, 1);
+  for (const auto& q : queries_around<2>(p, 0.01, 11)) queries.push_back(q);
+  expect_candidates_at<2>(p, 0.01, queries);
+  // 3-D, packed keys over too many cells: 20,000 points in the unit cube with cells of 0.05 (8,000 cells) and
+  // one at (50, 0, 0) (400,000 cells in the box of all).
+  std::vector<std::array<double, 3>> s(20000);
+  for (auto& q : s) q = {u(rng), u(rng), u(rng)};
+  s.push_back({50, 0, 0});
+  s.push_back({49.97, 0.01, 0.02});
+  Grid_frame<3> packed(s, 0.05);
+  ASSERT_FALSE(packed.hashed());
+  ASSERT_FALSE(FeatureRecon::internal::use_dense_cells(packed, s.size()));
+  ASSERT_TRUE(use_core_cells(packed, s, s.size()));
+  in_core = 0;
+  for (const auto& q : s) in_core += packed.dense_index(packed.cell_of(q)) >= 0;
+  EXPECT_EQ(in_core, 20000u);
+  expect_candidates_at<3>(s, 0.05, queries_around<3>(s, 0.05, 37));
+  expect_candidates_at<3>(s, 0.05, queries_around<3>({s[20000], s[20001], {1, 1, 1}, {0, 0, 0}}, 0.05, 1));
+  // No core: fewer than 64 points, or a bulk whose own box has too many cells (the hash map alone).
+  std::vector<std::array<double, 2>> few(p.begin(), p.begin() + 62);
+  few.push_back({1e7, 0});
+  Grid_frame<2> few_frame(few, 0.01);
+  EXPECT_FALSE(use_core_cells(few_frame, few, few.size()));
+  expect_candidates_at<2>(few, 0.01, queries_around<2>(few, 0.01, 1));
+  std::vector<std::array<double, 2>> fine(p.begin(), p.begin() + 500);
+  fine.push_back({1e7, 0});
+  Grid_frame<2> fine_frame(fine, 1e-4);
+  EXPECT_FALSE(use_core_cells(fine_frame, fine, fine.size()));
+  EXPECT_FALSE(fine_frame.has_core());
+  expect_candidates_at<2>(fine, 1e-4, queries_around<2>(fine, 1e-4, 3));
+}
+
+// A dynamic grid with a core box takes points beyond the core (into its hash map), and the torus look-up of a
+// grid with a core finds the pairs across the seam whose other end lies beyond the core: a torus of periods
+// (1e7, 1) whose points lie in [0, 1)^2 but for a few near x = 1e7, the nearest images of points near x = 0.
+TEST(UniformGrid, CoreCellsOnATorusAndFilledPointByPoint) {
+  namespace si = FeatureRecon::sampling::internal;
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::array<double, 2> period{1e7, 1};
+  std::vector<std::array<double, 2>> p(3000);
+  for (auto& q : p) q = {u(rng), u(rng)};
+  for (int i = 0; i < 20; ++i) p.push_back({1e7 - 0.05 * u(rng), u(rng)});
+  const double r = 0.03, look = si::torus_search_reach(r, 1e7);
+  const Uniform_grid<2> grid(p, look);
+  ASSERT_TRUE(grid.frame().has_core());
+  Dynamic_grid<2> dynamic(p, look);
+  for (std::uint32_t i = 0; i < p.size(); ++i) dynamic.insert(i);
+  std::size_t across = 0;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    std::vector<std::uint32_t> expected, got, got_dynamic;
+    for (std::uint32_t j = 0; j < p.size(); ++j)
+      if (si::torus_squared_distance(p[i], p[j], period) < r * r) expected.push_back(j);
+    auto take = [&](std::vector<std::uint32_t>& out) {
+      return [&](std::uint32_t j, int shift) {
+        if (shift == si::nearest_image_shift(p[i], p[j], period) &&
+            si::torus_squared_distance(p[i], p[j], period) < r * r)
+          out.push_back(j);
+      };
+    };
+    si::for_each_torus_candidate(grid, p[i], look, take(got), {}, period);
+    si::for_each_torus_candidate(dynamic, p[i], look, take(got_dynamic), {}, period);
+    std::sort(got.begin(), got.end());
+    std::sort(got_dynamic.begin(), got_dynamic.end());
+    EXPECT_EQ(got, expected) << i;
+    EXPECT_EQ(got_dynamic, expected) << i;
+    for (const std::uint32_t j : expected) across += (i < 3000) != (j < 3000);
+  }
+  EXPECT_GT(across, 0u);  // pairs across the seam, found from both sides
+}

@@ -174,6 +174,25 @@ TEST(WeightedSampleElimination, WeightsTieExactlyAndTheSeedBreaksTheTies) {
   EXPECT_GT(sampling_quality(subset(noise, eliminate(noise, 200, steep)), q).relative_radius, 0.65);
 }
 
+TEST(WeightedSampleElimination, FarOutliersMatchTheExactBruteForce) {
+  // White noise in the unit square beside far points (one at 1e7, a cluster of three 0.05 apart at (-4e6,
+  // 2e6)): the grid keeps the cells of a core box around the square in an array and the far ones in a hash
+  // map (Uniform_grid.h). Reduced to 10, 35 and 80 items under 4 seeds, with the square's measure given: the
+  // same items as the exact brute force.
+  std::vector<Point_2> p = white_noise(140, 31);
+  p.emplace_back(1e7, 0);
+  for (int i = 0; i < 3; ++i) p.emplace_back(-4e6 + 0.05 * i, 2e6);
+  for (const std::size_t count : {10, 35, 80})
+    for (std::uint64_t seed = 0; seed < 4; ++seed) {
+      Elimination_options o;
+      o.domain_measure = 1;
+      o.seed = seed;
+      std::vector<std::size_t> kept;
+      const auto r = weighted_sample_elimination(p, count, std::back_inserter(kept), o);
+      EXPECT_EQ(kept, eliminate_exactly(p, count, r.radius, seed)) << count << " " << seed;
+    }
+}
+
 TEST(WeightedSampleElimination, PeriodicMatchesTheExactBruteForceOnTheTorus) {
   // On the unit torus: an 8 x 8 grid of spacing 1/8 (every item has the same weight, exactly: the seed
   // decides each tie), white noise in the square and in the cube, reduced to 1..20 items under 6 seeds; the

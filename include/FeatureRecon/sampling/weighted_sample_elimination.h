@@ -344,9 +344,12 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory.
           // The result does not depend on it: within a cell the order stays the input order, the weight of an
           // item sums its neighbours in the same order, and the heap pops by (weight, priority) alone.
-          const FeatureRecon::internal::Grid_frame<D> frame(positions, cell);
+          // The frame and core box of the grid below (chosen from the positions alone, whatever their order).
+          FeatureRecon::internal::Grid_frame<D> frame(positions, cell);
+          FeatureRecon::internal::use_core_cells(frame, positions, m);
           std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m);
-          for (std::size_t i = 0; i < m; ++i) keyed[i] = {frame.key(frame.cell_of(positions[i])), active[i]};
+          for (std::size_t i = 0; i < m; ++i)
+            keyed[i] = {frame.order_key(frame.cell_of(positions[i])), active[i]};
           std::sort(keyed.begin(), keyed.end());
           for (std::size_t i = 0; i < m; ++i) {
             active[i] = keyed[i].second;
