@@ -26,11 +26,12 @@ class FeaturePointTraits {
   /// 1e-12) of the true one. The discrete Lloyd assignment then bounds the feature term of a whole group of
   /// sites from one of its features (a logo's white pixels against black sites: the exponential form scored
   /// every site). Without it (or at -1) the searches bound by position alone: the same answers, slower
-  /// where every site's feature is far. The ready models declare it (normals 1e-14, pixels and positions
-  /// 0) where FT holds a double's digits (not for a float kernel: -1); Property_map_traits takes its
-  /// feature distance's static `feature_metric_error`. Squared distances below 2^-1000 need not be covered
-  /// (the searches add that much). A class derived from a ready model that replaces its feature distance must
-  /// declare its own value (-1 if unsure): the inherited one would claim a metric it may not be.
+  /// where every site's feature is far. The ready models declare it: positions 0 (their feature distance is
+  /// always 0), normals 1e-14 and pixels 0 where FT holds a double's digits (not for a float kernel: -1);
+  /// Property_map_traits takes its feature distance's static `feature_metric_error`. Squared distances below
+  /// 2^-1000 need not be covered (the searches add that much). A class derived from a ready model that
+  /// replaces its feature distance must declare its own value (-1 if unsure): the inherited one would claim a
+  /// metric it may not be.
   static constexpr double feature_metric_error = 0;
 
   /// Functor `Point operator()(const Item&) const` (may return a reference).

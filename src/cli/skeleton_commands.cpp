@@ -311,6 +311,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                         "segment-support",
                         "segment-turn-tolerance",
                         "straight-confirmed",
+                        "min-confirmed",
                         "quiet-ends",
                         "local-support",
                         "min-local-support",
@@ -430,16 +431,19 @@ int run_skeleton(const std::vector<std::string>& argv) {
   double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
   if (spacing < 0 && !gps) throw Usage_error("--sample-spacing must be >= 0 (0: no thinning)");
   const bool quiet = args.has("quiet");
-  if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
-               args.has("min-lateral-density") || args.has("density-radius") ||
-               args.has("density-heading-tolerance") || args.has("undirected") || args.has("merge") ||
-               args.has("first-point-positions") || args.has("segment-support") ||
-               args.has("segment-turn-tolerance") || args.has("straight-confirmed") ||
-               args.has("local-support") || args.has("min-local-support") || args.has("quiet-ends")))
+  if (!gps &&
+      (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
+       args.has("min-lateral-density") || args.has("density-radius") ||
+       args.has("density-heading-tolerance") || args.has("undirected") || args.has("merge") ||
+       args.has("first-point-positions") || args.has("segment-support") ||
+       args.has("segment-turn-tolerance") || args.has("straight-confirmed") || args.has("min-confirmed") ||
+       args.has("local-support") || args.has("min-local-support") || args.has("quiet-ends")))
     throw Usage_error(
         "--link-gap, --heading-tolerance, --undirected, --min-density, --min-lateral-density, "
-        "--density-radius, --density-heading-tolerance, --first-point-positions, --segment-support, "
-        "--segment-turn-tolerance, --straight-confirmed, --quiet-ends, --local-support, --min-local-support "
+        "--density-radius, --density-heading-tolerance, --first-point-positions, --min-confirmed, "
+        "--segment-support, "
+        "--segment-turn-tolerance, --straight-confirmed, --quiet-ends, --local-support, "
+        "--min-local-support "
         "and "
         "--merge apply to --tracks only");
   if (!gps && args.has("lonlat")) throw Usage_error("--lonlat applies to --tracks only");
@@ -626,6 +630,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
       go.min_straight_confirmed_fraction = args.get_double("straight-confirmed");
     if (!(go.min_straight_confirmed_fraction >= 0 && go.min_straight_confirmed_fraction <= 1))
       throw Usage_error("--straight-confirmed must be in [0, 1] (0: the turn rule always applies)");
+    if (args.has("min-confirmed")) go.min_confirmed_fraction = args.get_double("min-confirmed");
+    if (!(go.min_confirmed_fraction >= 0 && go.min_confirmed_fraction <= 1))
+      throw Usage_error("--min-confirmed must be in [0, 1] (0: the segment check never stands down)");
     if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
     if (args.has("density-radius")) go.density_radius = args.get_positive_double("density-radius");
     if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
@@ -724,6 +731,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"straight_segments\": " + std::to_string(sample.straight_segments) +
                  ", \"linked_segments\": " + std::to_string(sample.linked_segments) +
                  ", \"all_segments_used\": " + (sample.all_segments_used ? "true" : "false") +
+                 ", \"min_confirmed_fraction\": " + json_number(go.min_confirmed_fraction) +
                  ", \"local_support\": " + std::to_string(go.local_support_fixes) +
                  ", \"min_local_support\": " + json_number(go.min_local_support) +
                  ", \"locally_checked\": " + std::to_string(sample.locally_checked) +
@@ -759,6 +767,19 @@ int run_skeleton(const std::vector<std::string>& argv) {
           ", \"merge_rips_edges\": " + std::to_string(road.merged.rips_edges) +
           ", \"merge_rips_triangles\": " + std::to_string(road.merged.rips_triangles);
     }
+    // The check of segments stood down (Gps_trace_options::min_confirmed_fraction): say so, since every
+    // segment up to the link gap is then drawn, chords across blocks where fixes lie far apart.
+    if (sample.all_segments_used && go.min_confirmed_fraction > 0 && sample.segment_support > 0 &&
+        sample.max_link_gap > 0 && sample.checked_segments > 0)
+      std::fprintf(
+          stderr,
+          "featurerecon skeleton: warning: %zu of %zu checked segments between fixes are confirmed "
+          "by other fixes, below --min-confirmed %g: the traces are taken as too sparse to judge one "
+          "another and every segment up to the link gap (%.4g m) is densified; with fixes far apart "
+          "(median step %.4g m) its lines may cut across blocks (--min-confirmed 0 keeps the check, "
+          "--link-gap bounds the segments used)\n",
+          sample.confirmed_segments + sample.locally_rejected, sample.checked_segments,
+          go.min_confirmed_fraction, sample.max_link_gap, sample.median_step);
     if (lonlat)
       input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
                     ", \"origin_latitude\": " + json_number(projection.origin_latitude);

@@ -487,16 +487,18 @@ TEST(KernelRelaxation, AnyRangeOfIndicesStartsBothRelaxations) {
     EXPECT_EQ(r.items, lr.items);
     EXPECT_EQ(r.assignment, lr.assignment);
   }
-  // A braced list is a list of indices; a bad index is named with its place, whatever the index type.
+  // A braced list is a list of indices; a bad index is named with its place, whatever the index type, by the
+  // function called (it was named by sites_at_items(), which the user did not call).
   EXPECT_EQ(kernel_relaxation(px, {start[0], start[1]}, k).sites.size(), 2u);
   EXPECT_EQ(discrete_bilateral_lloyd(px, {3, 7, 11}, l).sites.size(), 3u);
   start_int[4] = -1;
-  EXPECT_TRUE(test::throws_with<std::invalid_argument>([&] { kernel_relaxation(px, start_int, k); },
-                                                       "indices[4] = -1 is not an item index (1200 items)"));
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+      [&] { kernel_relaxation(px, start_int, k); },
+      "kernel_relaxation: indices[4] = -1 is not an item index (1200 items)"));
   start32[2] = 1200;
-  EXPECT_TRUE(
-      test::throws_with<std::invalid_argument>([&] { discrete_bilateral_lloyd(px, start32, l); },
-                                               "indices[2] = 1200 is not an item index (1200 items)"));
+  EXPECT_TRUE(test::throws_with<std::invalid_argument>(
+      [&] { discrete_bilateral_lloyd(px, start32, l); },
+      "discrete_bilateral_lloyd: indices[2] = 1200 is not an item index (1200 items)"));
 }
 
 TEST(KernelRelaxation, AllZeroDensityIsDegenerateInBothRelaxations) {

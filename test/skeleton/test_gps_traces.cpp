@@ -1314,3 +1314,50 @@ TEST(GpsTraces, WilsonUpperBound) {
     previous = u;
   }
 }
+
+// The median step counts moving vehicles only: a step whose end fix has its trip's fixes stay_duration (30 s)
+// before and after it within stay_radius (20 m) is a stay. 150 waiting taxis made their jitter the median
+// (87 m -> 5.6 m) and the map fell into pieces. Pinned: a trip moving 50 m every 10 s beside a vehicle
+// waiting (2 m jitter at 1 Hz); a stop of 59 s within a trip counts; a vehicle creeping at 1 m/s moves 30 m
+// in 30 s and counts; fixes 20 m from the window's ends stay, 20.5 m do not; a window shorter than
+// stay_duration (fixes 12.5 s apart) is no stay; every step a stay: the median of all steps.
+TEST(GpsTraces, TheMedianStepLeavesOutWaitingVehicles) {
+  auto moving = [](std::size_t n) {
+    Gps_trip t;
+    for (std::size_t i = 0; i < n; ++i) t.push_back({50.0 * double(i), 0, 10.0 * double(i)});
+    return t;
+  };
+  auto wait = [](Gps_trip& t, double x, double from, std::size_t seconds) {
+    for (std::size_t i = 0; i <= seconds; ++i)
+      t.push_back({x + (i % 2 == 0 ? 0.0 : 2.0), (i % 3 == 0 ? 0.0 : 1.5), from + double(i)});
+  };
+  Gps_trip waiting;
+  wait(waiting, 0, 0, 600);
+  EXPECT_DOUBLE_EQ(median_gps_step({moving(40)}), 50.0);
+  // 39 moving steps beside 600 waiting ones, each a stay.
+  EXPECT_DOUBLE_EQ(median_gps_step({moving(40), waiting}), 50.0);
+  // Without the exclusion (a stay_duration no window spans) the jitter is the median.
+  EXPECT_LT(median_gps_step({moving(40), waiting}, 20, 1e9), 3.0);
+  // A stop of 59 s between 20 moving steps: only its steps whose window lies within the stop on both sides
+  // (18 of 59) are stays; the others outnumber the moving ones.
+  Gps_trip stop = moving(11);  // to x = 500 at t = 100
+  wait(stop, 500, 101, 58);    // t = 101 ... 159
+  for (std::size_t i = 0; i < 10; ++i) stop.push_back({550 + 50.0 * double(i), 0, 169 + 10.0 * double(i)});
+  EXPECT_LT(median_gps_step({stop}), 3.0);
+  // Creeping at 1 m/s for 300 s: 30 m in 30 s, not a stay.
+  Gps_trip creep;
+  for (int i = 0; i <= 300; ++i) creep.push_back({double(i), 0, double(i)});
+  EXPECT_DOUBLE_EQ(median_gps_step({moving(40), creep}), 1.0);
+  // Three fixes dt apart: each step's window reaches the other fixes. At 20 m apart both steps stay, at
+  // 20.5 m not; fixes 12.5 s apart (a window of 25 s) make no stay. Beside one moving step of 50 m.
+  for (const double far : {20.0, 20.5})
+    for (const double dt : {30.0, 12.5}) {
+      const Gps_trip three{{0, 0, 0}, {far, 0, dt}, {0, 0, 2 * dt}};
+      const bool stays = far <= 20 && dt >= 15;
+      EXPECT_DOUBLE_EQ(median_gps_step({three, moving(2)}), stays ? 50.0 : far) << far << " " << dt;
+    }
+  // Every step a stay: the median of them all.
+  EXPECT_DOUBLE_EQ(median_gps_step({waiting}), median_gps_step({waiting}, 20, 1e9));
+  EXPECT_GT(median_gps_step({waiting}), 1.9);
+  EXPECT_EQ(median_gps_step({}), 0.0);
+}

@@ -902,6 +902,27 @@ struct is_index_range<R, std::void_t<decltype(*std::begin(std::declval<const R&>
 /// \endcond
 }  // namespace internal
 
+namespace internal {
+/// \cond
+/// sites_at_items() naming `fn` in its errors (the entry point the user called).
+template <class ItemRange, class IndexRange, class Traits>
+std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const IndexRange& indices,
+                                                   const Traits& traits, const char* fn) {
+  const Sample_set<Traits> S(items, traits, fn, false);  // features are only copied
+  std::vector<Bilateral_site<Traits>> sites;
+  std::size_t k = 0;
+  for (const auto i : indices) {
+    if (!is_index(i, S.size()))
+      FeatureRecon::internal::throw_invalid_argument(fn, "indices[", k, "] = ", i, " is not an item index (",
+                                                     S.size(), " items)");
+    sites.push_back({S.positions[std::size_t(i)], S.features[std::size_t(i)]});
+    ++k;
+  }
+  return sites;
+}
+/// \endcond
+}  // namespace internal
+
 /// The sites at some items: position and feature of items[indices[k]] (for starting from the output of
 /// bilateral_dart_throwing() or weighted_sample_elimination()).
 /// \param items the domain. \param indices indices into it (checked; throws naming the first bad one).
@@ -909,17 +930,7 @@ struct is_index_range<R, std::void_t<decltype(*std::begin(std::declval<const R&>
 template <class ItemRange, class IndexRange, class Traits = Default_traits_t<ItemRange>>
 std::vector<Bilateral_site<Traits>> sites_at_items(const ItemRange& items, const IndexRange& indices,
                                                    const Traits& traits = Traits()) {
-  const internal::Sample_set<Traits> S(items, traits, "sites_at_items", false);  // features are only copied
-  std::vector<Bilateral_site<Traits>> sites;
-  std::size_t k = 0;
-  for (const auto i : indices) {
-    if (!internal::is_index(i, S.size()))
-      FeatureRecon::internal::throw_invalid_argument("sites_at_items", "indices[", k, "] = ", i,
-                                                     " is not an item index (", S.size(), " items)");
-    sites.push_back({S.positions[std::size_t(i)], S.features[std::size_t(i)]});
-    ++k;
-  }
-  return sites;
+  return internal::sites_at_items(items, indices, traits, "sites_at_items");
 }
 
 /// Stage 1: the discrete bilateral Voronoi sets (dissertation Sec. 2.2.2): every item goes to the site of
@@ -1075,7 +1086,8 @@ template <class ItemRange, class Traits = Default_traits_t<ItemRange>,
 Discrete_lloyd_result<Traits> discrete_bilateral_lloyd(
     const ItemRange& items, const IndexRange& initial,
     const Discrete_lloyd_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
-  return discrete_bilateral_lloyd(items, sites_at_items(items, initial, traits), options, traits);
+  return discrete_bilateral_lloyd(
+      items, internal::sites_at_items(items, initial, traits, "discrete_bilateral_lloyd"), options, traits);
 }
 
 }  // namespace sampling

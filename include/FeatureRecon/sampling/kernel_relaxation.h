@@ -745,7 +745,8 @@ template <class ItemRange, class Traits = Default_traits_t<ItemRange>,
 Kernel_relaxation_result<Traits> kernel_relaxation(
     const ItemRange& items, const IndexRange& initial,
     const Kernel_relaxation_options<Traits::dimension>& options = {}, const Traits& traits = Traits()) {
-  return kernel_relaxation(items, sites_at_items(items, initial, traits), options, traits);
+  return kernel_relaxation(items, internal::sites_at_items(items, initial, traits, "kernel_relaxation"),
+                           options, traits);
 }
 
 }  // namespace sampling

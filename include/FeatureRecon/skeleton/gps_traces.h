@@ -380,20 +380,46 @@ inline Proximity_graph planar_graph(const Point_matrix& points, std::vector<Edge
 
 }  // namespace internal
 
-/// Median distance between consecutive fixes (by time) of the trips: the scale the automatic parameters of
-/// the GPS pipeline derive from (0 when no trip has two fixes). Non-finite values are skipped.
-inline double median_gps_step(const std::vector<Gps_trip>& trips) {
-  std::vector<double> steps;
+/// Median distance between consecutive fixes (by time) of moving vehicles: the scale the automatic parameters
+/// of the GPS pipeline derive from (0 when no trip has two fixes). Non-finite values are skipped. A step
+/// does not count while its vehicle stays (a taxi at a rank, a parked car, a long red light): when the fixes
+/// of its trip `stay_duration` before and after its end fix (the earliest at or after t - stay_duration and
+/// the latest at or before t + stay_duration, at least stay_duration apart in time) both lie within
+/// `stay_radius` of it. Waiting vehicles recorded every few seconds otherwise made the median their GPS
+/// jitter: 150 taxis waiting 25 to 67 minutes beside 400 trips every 10 s moved it from 87 m to 5.6 m, the
+/// radius and link gap with it, and the map fell into 20 pieces (F 0.90 -> 0.76; 0.89 now). A stop within a
+/// trip shorter than 2 stay_duration is never a stay, nor is a vehicle moving faster than stay_radius /
+/// stay_duration (0.67 m/s). When every step is a stay, the median of all steps.
+inline double median_gps_step(const std::vector<Gps_trip>& trips, double stay_radius = 20,
+                              double stay_duration = 30) {
+  std::vector<double> steps, moving;
   for (const Gps_trip& trip : trips) {
     const std::vector<std::size_t> o = internal::time_order(trip);
-    for (std::size_t i = 1; i < o.size(); ++i) {
-      const double d = std::hypot(trip[o[i]].x - trip[o[i - 1]].x, trip[o[i]].y - trip[o[i - 1]].y);
-      if (std::isfinite(d)) steps.push_back(d);
+    const auto distance = [&](std::size_t i, std::size_t j) {
+      return std::hypot(trip[o[i]].x - trip[o[j]].x, trip[o[i]].y - trip[o[j]].y);
+    };
+    const auto time = [&](std::size_t i) { return trip[o[i]].time; };
+    std::size_t before = 0, after = 0;  // the window's ends (indices into o), moving forward with k
+    for (std::size_t k = 1; k < o.size(); ++k) {
+      const double d = distance(k, k - 1);
+      if (!std::isfinite(d)) continue;
+      steps.push_back(d);
+      const double t = time(k);
+      bool stays = false;
+      if (std::isfinite(t)) {  // NaN times sort last: the window's fixes before k then have finite times
+        while (before < k && !(time(before) >= t - stay_duration)) ++before;
+        after = std::max(after, k);
+        while (after + 1 < o.size() && time(after + 1) <= t + stay_duration) ++after;
+        stays = time(after) - time(before) >= stay_duration && distance(before, k) <= stay_radius &&
+                distance(after, k) <= stay_radius;
+      }
+      if (!stays) moving.push_back(d);
     }
   }
-  if (steps.empty()) return 0;
-  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
-  return steps[steps.size() / 2];
+  std::vector<double>& v = moving.empty() ? steps : moving;
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
 }
 
 /// Densifies and samples GPS traces (see Gps_trace_options). Each sample carries the direction of the segment
