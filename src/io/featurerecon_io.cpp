@@ -358,6 +358,28 @@ std::vector<std::string> trip_files(const std::string& prefix) {
 }
 }  // namespace
 
+/// What a tracks file that failed to read may be instead (appended to the error): gzip-compressed (its first
+/// two bytes), comma-separated (its first line that is not a comment), or with a header line that lacks its
+/// '#' (the first line's x or y is not a number). Empty when none of these.
+std::string tracks_hint(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line)) return "";
+  if (line.size() >= 2 && static_cast<unsigned char>(line[0]) == 0x1f &&
+      static_cast<unsigned char>(line[1]) == 0x8b)
+    return " (the file is gzip-compressed: decompress it first, e.g. 'gzip -dc " + path + " > tracks.txt')";
+  while (in && (line.find_first_not_of(" \t\r") == std::string::npos ||
+                line[line.find_first_not_of(" \t\r")] == '#'))
+    if (!std::getline(in, line)) return "";
+  if (line.find(',') != std::string::npos || line.find(';') != std::string::npos)
+    return " (values are separated by spaces or tabs, not by commas or semicolons)";
+  const std::vector<std::string> t = line_tokens(line);
+  double x = 0;
+  for (std::size_t k = 1; k < t.size() && k < 3; ++k)
+    if (!parse_decimal(t[k], x)) return " (a header line must begin with '#')";
+  return "";
+}
+
 std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::string& path,
                                                                  Track_origin* origin) {
   std::vector<std::vector<std::array<double, 3>>> trips;
@@ -390,7 +412,16 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
   std::map<std::string, std::size_t> index;
   auto last = index.end();
   int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
+  bool first_row = true;
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
+    if (first_row) {  // the first row that fails says what the file may be instead
+      first_row = false;
+      try {
+        read_fix(t, 1, timed, path, number);
+      } catch (const Input_error& e) {
+        throw Input_error(e.what() + tracks_hint(path));
+      }
+    }
     const std::array<double, 3> fix = read_fix(t, 1, timed, path, number);
     // A trip's lines usually follow each other: the last one's entry is tried first, and the map is only
     // searched (and a node made) on a change.

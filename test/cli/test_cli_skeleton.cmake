@@ -566,3 +566,36 @@ expect_count(${A}/chain.svg "viewBox=\"0 0 1517\\.00 20\\.00\"" 1)
 # A radius derived from the data is held to the limit of --radius (1e300), as the message says.
 file(WRITE ${A}/far2.xyz "0 0\n1e301 0\n")
 expect(audit_estimated_radius_huge 1 "far2.xyz: the radius derived from the data, 1\\.60726e\\+301, exceeds 1e300 .*give --radius" skeleton --points ${A}/far2.xyz --out-vertices ${A}/v.txt --out-edges ${A}/e.txt)
+
+# A tracks file that fails on its first line says what it may be instead: gzip-compressed, comma-separated, or
+# with a header line that lacks its '#' (each error named only the line and the count or the token).
+expect(tracks_gzip 1 "tracks.txt.gz:1: expected 'trip_id x y \\[t\\]', got [0-9]+ values \\(the file is gzip-compressed: decompress it first" skeleton --tracks ${PROJECT_DATA}/gps/chicago/tracks.txt.gz --out-vertices ${WORK}/g_v.txt --out-edges ${WORK}/g_e.txt)
+file(WRITE ${WORK}/commas.txt "0,1,2,3\n0,4,5,6\n")
+expect(tracks_commas 1 "commas.txt:1: expected 'trip_id x y \\[t\\]', got 1 values \\(values are separated by spaces or tabs, not by commas" skeleton --tracks ${WORK}/commas.txt --out-vertices ${WORK}/g_v.txt --out-edges ${WORK}/g_e.txt)
+file(WRITE ${WORK}/header.txt "# a comment\ntrip_id x y t\n0 1 2 3\n0 4 5 6\n")
+expect(tracks_header 1 "header.txt:2: 'x' is not a number \\(x\\) \\(a header line must begin with '#'\\)" skeleton --tracks ${WORK}/header.txt --out-vertices ${WORK}/g_v.txt --out-edges ${WORK}/g_e.txt)
+file(WRITE ${WORK}/bad_later.txt "0 1 2 3\n0 4 5\n")
+expect(tracks_no_hint 1 "bad_later.txt:2: no time t, but the first line has one \\('trip_id x y t'\\)\n" skeleton --tracks ${WORK}/bad_later.txt --out-vertices ${WORK}/g_v.txt --out-edges ${WORK}/g_e.txt)
+
+# Two vehicles 500 m apart under one trip id, fixes interleaved in time: the median speed between
+# consecutive fixes is 1,000 m/s, and the command says what may be wrong (no such warning on real traces
+# above, nor on a file without times, whose times are line numbers).
+set(shared "")
+set(shared_untimed "")
+foreach(i RANGE 11)
+  math(EXPR xa "10 * ${i}")
+  math(EXPR xb "500 + 10 * ${i}")
+  string(APPEND shared "0 ${xa} 0 ${i}\n0 ${xb} 0 ${i}.5\n")
+  string(APPEND shared_untimed "0 ${xa} 0\n0 ${xb} 0\n")
+endforeach()
+file(WRITE ${WORK}/shared_id.txt "${shared}")
+expect(tracks_shared_id 0 "warning: .*shared_id.txt: the median speed between consecutive fixes of a trip is 1000 m/s \\(3600 km/h\\): do several vehicles share a trip id" skeleton --tracks ${WORK}/shared_id.txt --out-vertices ${WORK}/s_v.txt --out-edges ${WORK}/s_e.txt --quiet)
+file(WRITE ${WORK}/shared_untimed.txt "${shared_untimed}")
+expect(tracks_shared_id_untimed 0 "\"trips\": 1," skeleton --tracks ${WORK}/shared_untimed.txt --out-vertices ${WORK}/s_v.txt --out-edges ${WORK}/s_e.txt --quiet)
+if(last_error MATCHES "median speed")
+  message(SEND_ERROR "tracks_shared_id_untimed: a speed warning for a file without times:\n${last_error}")
+endif()
+expect(tracks_block_no_speed_warning 0 "\"trips\": " skeleton --tracks ${DATA}/block_tracks.txt --out-vertices ${WORK}/s_v.txt --out-edges ${WORK}/s_e.txt --quiet)
+if(last_error MATCHES "median speed")
+  message(SEND_ERROR "tracks_block_no_speed_warning: a speed warning on ordinary traces:\n${last_error}")
+endif()

@@ -714,7 +714,16 @@ TEST(UniformGrid, CoreCellsBesideFarOutliers) {
   EXPECT_EQ(in_core, 20000u);
   expect_candidates_at<3>(s, 0.05, queries_around<3>(s, 0.05, 37));
   expect_candidates_at<3>(s, 0.05, queries_around<3>({s[20000], s[20001], {1, 1, 1}, {0, 0, 0}}, 0.05, 1));
-  // No core: fewer than 64 points, or a bulk whose own box has too many cells (the hash map alone).
+  // No core: fewer than 64 points, a bulk whose own box has too many cells, or a curve that occupies fewer
+  // than 1/64 of the cells of every core that fits (20,000 points on a diagonal, cells of 0.004: about 500 of
+  // 63,000 cells), whose empty cells cost more than the hash map (the hash map alone).
+  std::vector<std::array<double, 2>> curve(20000);
+  for (std::size_t i = 0; i < curve.size(); ++i) curve[i] = {i / 20000.0, i / 20000.0 + 1e-3 * u(rng)};
+  curve.push_back({1e7, 0});
+  Grid_frame<2> curve_frame(curve, 0.004);
+  EXPECT_FALSE(use_core_cells(curve_frame, curve, curve.size()));
+  EXPECT_FALSE(curve_frame.has_core());
+  expect_candidates_at<2>(curve, 0.004, queries_around<2>(curve, 0.004, 97));
   std::vector<std::array<double, 2>> few(p.begin(), p.begin() + 62);
   few.push_back({1e7, 0});
   Grid_frame<2> few_frame(few, 0.01);

@@ -25,11 +25,12 @@ namespace internal {
 /// Keys of distinct cells may then collide: a cell's list may hold points of another cell, which callers drop
 /// by their exact distance test, and for_each_neighbor_key() visits each key once.
 ///
-/// A frame can also number the cells of a box densely (dense_index(), in key order), so that a grid keeps
-/// them in an array instead of a hash map: the bounding box when it has few cells (use_dense_cells()), else,
-/// when a few points lie far from the others (an outlier at 1e7 beside a unit square; a stray point of a
-/// scan), a core box around the bulk (use_core_cells()): the grid keeps the cells of the core in an array and
-/// the few others in a hash map (dart throwing beside such an outlier ran at a third of its speed).
+/// A frame can also number the cells of a box densely (dense_index(), nested over the axes: the order of
+/// packed keys), so that a grid keeps them in an array instead of a hash map: the bounding box when it has
+/// few cells (use_dense_cells()), else, when a few points lie far from the others (an outlier at 1e7 beside a
+/// unit square; a stray point of a scan), a core box around the bulk (use_core_cells()): the grid keeps the
+/// cells of the core in an array and the few others in a hash map (dart throwing beside such an outlier ran
+/// at a third of its speed).
 template <int D>
 class Grid_frame {
  public:
@@ -76,8 +77,9 @@ class Grid_frame {
     }
     return i;
   }
-  /// Calls f(dense index) for each cell of the 3^D around p inside the box that dense_index() numbers, in the
-  /// order of for_each_neighbor_key() (packed frames, or after set_core()).
+  /// Calls f(dense index) for each cell of the 3^D around p inside the box that dense_index() numbers (packed
+  /// frames, or after set_core()), nested over the axes (the first outermost): for packed keys the order of
+  /// for_each_neighbor_key().
   template <class F>
   void for_each_neighbor_index(const Point& p, F&& f) const {
     Cell c = cell_of(p);
@@ -94,14 +96,16 @@ class Grid_frame {
   /// cells, widened on both sides by half that width, a quarter, ... (within the bounding box), the widest
   /// that fits: a uniform or Gaussian bulk lies inside (the Gaussian but 0.2 % beyond 3 sigma), a far cluster
   /// of fewer than 1/16 of the points outside. Holds at least 1 - 2 D / 16 of the points. Returns false (the
-  /// frame unchanged) for fewer than 64 points or when even the quantiles' box has more cells.
+  /// frame unchanged) for fewer than 64 points, when even the quantiles' box has more cells, or when the
+  /// points occupy fewer than 1/64 of every such core's cells (a curve: the hash map of its cells costs
+  /// less).
   bool set_core(const std::vector<Point>& points, double max_cells) {
     const std::size_t n = points.size();
     if (n < 64) return false;
     Cell low, high, first, last;
     std::vector<std::int64_t> v(n);
     for (int k = 0; k < D; ++k) {
-      for (std::size_t i = 0; i < n; ++i) v[i] = cell_of(points[i])[k];
+      for (std::size_t i = 0; i < n; ++i) v[i] = cell_coordinate(points[i], k);
       const auto a = v.begin() + std::ptrdiff_t(n / 16), b = v.begin() + std::ptrdiff_t(n - 1 - n / 16);
       std::nth_element(v.begin(), a, v.end());
       low[k] = *a;
@@ -110,6 +114,8 @@ class Grid_frame {
       first[k] = *std::min_element(v.begin(), v.end());
       last[k] = *std::max_element(v.begin(), v.end());
     }
+    const Cell full_count = m_count;
+    const double full_cells = m_cells;
     for (const double widen : {0.5, 0.25, 0.125, 0.0625, 0.0}) {
       Cell origin, count;
       double cells = 1;
@@ -120,14 +126,29 @@ class Grid_frame {
         count[k] = std::min(last[k], high[k] + margin) - origin[k] + 1;
         cells *= double(count[k]);
       }
-      if (cells <= max_cells) {
-        m_origin = origin;
-        m_count = count;
-        m_cells = cells;
-        m_core = true;
-        return true;
+      if (cells > max_cells) continue;
+      m_origin = origin;
+      m_count = count;
+      m_cells = cells;
+      m_core = true;
+      // The bulk must fill the core: a curve beside an outlier (1M points on a diagonal, cells of 5e-4)
+      // occupies one cell in 1,400 of it, and 4 million empty cells cost a dart throwing 0.3 s where the hash
+      // map of the occupied ones cost 1 ms. At least 1/64 of the cells hold a point (else a narrower core).
+      std::vector<bool> occupied(static_cast<std::size_t>(cells), false);
+      std::size_t filled = 0;
+      for (const Point& p : points) {
+        const std::int64_t i = dense_index(cell_of(p));
+        if (i >= 0 && !occupied[std::size_t(i)]) {
+          occupied[std::size_t(i)] = true;
+          ++filled;
+        }
       }
+      if (64 * double(filled) >= cells) return true;
     }
+    m_origin = Cell{};
+    m_count = full_count;
+    m_cells = full_cells;
+    m_core = false;
     return false;
   }
   /// Whether some of the 3^D cells around p lie outside the core box (false without one).
@@ -153,25 +174,28 @@ class Grid_frame {
         std::unique(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(count)) - keys.begin());
     for (std::size_t i = 0; i < count; ++i) f(keys[i]);
   }
-  /// A key that orders cells as a grid over this frame stores them: the cells of the core box by dense index,
-  /// then the others by key; without a core, the key.
+  /// A key that orders cells as a grid over this frame stores them: the cells of the core box by dense index
+  /// (below 2^26), then the others by key with its top bit set (packed keys have 63 bits: exact; hashed keys
+  /// may share it as they may share the key); without a core, the key.
   std::uint64_t order_key(const Cell& c) const {
     if (!m_core) return key(c);
     const std::int64_t i = dense_index(c);
-    return i >= 0 ? static_cast<std::uint64_t>(i) : (std::uint64_t(1) << 63) | (key(c) >> 1);
+    return i >= 0 ? static_cast<std::uint64_t>(i) : (std::uint64_t(1) << 63) | key(c);
   }
   /// The cell of p; a query point far outside the box (more cells away than a 64-bit integer holds: a map
   /// compared at a tiny threshold with one far away, a NaN) is clamped before the conversion, which would be
   /// undefined behaviour: to a cell below the box with no neighbour in it (packed) or at most 2^62 away
   /// (hashed: its neighbours' coordinates cannot overflow).
   Cell cell_of(const Point& p) const {
-    const double lo = m_hashed ? -0x1p62 : -2.0, hi = m_hashed ? 0x1p62 : double(kLimit - 1);
     Cell c;
-    for (int k = 0; k < D; ++k) {
-      const double t = std::floor((p[k] - m_low[k]) / m_cell);
-      c[k] = static_cast<std::int64_t>(t >= lo ? (t <= hi ? t : hi) : lo);  // NaN: lo
-    }
+    for (int k = 0; k < D; ++k) c[k] = cell_coordinate(p, k);
     return c;
+  }
+  /// Coordinate k of cell_of(p).
+  std::int64_t cell_coordinate(const Point& p, int k) const {
+    const double lo = m_hashed ? -0x1p62 : -2.0, hi = m_hashed ? 0x1p62 : double(kLimit - 1);
+    const double t = std::floor((p[k] - m_low[k]) / m_cell);
+    return static_cast<std::int64_t>(t >= lo ? (t <= hi ? t : hi) : lo);  // NaN: lo
   }
   std::uint64_t key(const Cell& c) const {
     std::uint64_t k = 0;
@@ -313,7 +337,7 @@ class Uniform_grid {
   const Grid_frame<D>& frame() const { return m_frame; }
 
   /// Calls f(j) for every point j in the 3^D cells around p (a superset of the points within cell_size()):
-  /// the dense cells first, in key order, then the hashed ones.
+  /// the dense cells first (nested over the axes), then the hashed ones (by key).
   template <class F>
   void for_each_candidate(const Point& p, F&& f) const {
     if (m_dense)
@@ -372,7 +396,7 @@ class Dynamic_grid {
   }
 
   /// Calls f(j) for every inserted point j in the 3^D cells around p, in insertion order per cell: the dense
-  /// cells first, in key order, then the hashed ones.
+  /// cells first (nested over the axes), then the hashed ones (by key).
   template <class F>
   void for_each_candidate(const Point& p, F&& f) const {
     if (!m_dense.empty())

@@ -342,8 +342,8 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
         };
         {
           // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory.
-          // The result does not depend on it: within a cell the order stays the input order, the weight of an
-          // item sums its neighbours in the same order, and the heap pops by (weight, priority) alone.
+          // The result does not depend on it: weights are sums of fixed-point integers (exact in any order),
+          // and the heap pops by (weight, priority) alone.
           // The frame and core box of the grid below (chosen from the positions alone, whatever their order).
           FeatureRecon::internal::Grid_frame<D> frame(positions, cell);
           FeatureRecon::internal::use_core_cells(frame, positions, m);
