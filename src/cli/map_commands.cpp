@@ -131,7 +131,9 @@ int run_evaluate_map(const std::vector<std::string>& argv) {
   if (!lonlat)  // tracks in degrees: no truth sample lies near a fix (every sample "driven by 0 trips")
     for (const auto& [flag, input] :
          {std::make_pair("crop-to-tracks", &crop_input), std::make_pair("tracks", &track_input)})
-      if (args.has(flag)) refuse_degree_tracks(args.get(flag), input->trips, median_gps_step(input->trips));
+      if (args.has(flag))
+        refuse_degree_tracks(args.get(flag), input->trips,
+                             median_gps_step(input->trips, 0, std::numeric_limits<double>::infinity()));
   Transverse_mercator projection;
   if (lonlat) {
     projection = lonlat_projection({{p[0], &gt.positions, &gt_lines},

@@ -660,7 +660,9 @@ int run_skeleton(const std::vector<std::string>& argv) {
     }
     // Fixes a centimetre apart are not GPS in metres; in degrees they are a few metres apart. Checked before
     // the pipeline runs (it ran first, minutes on a large file, to be refused).
-    const double median_step = median_gps_step(trips);  // of the fixes as read (or projected)
+    // Of the fixes as read (or projected), every step: the stay rule's 20 m and 30 s are metres and seconds,
+    // and in degrees every fix lies within 20 of every other (tracks in degrees went unrefused).
+    const double median_step = median_gps_step(trips, 0, std::numeric_limits<double>::infinity());
     if (!lonlat) refuse_degree_tracks(args.get("tracks"), trips, median_step);
     // Fixes kilometres apart are the other mistake of units (centimetres, a projection's map units): every
     // segment is then linked and sampled every few metres (100 km steps: about 13,000 samples each), which
@@ -682,22 +684,20 @@ int run_skeleton(const std::vector<std::string>& argv) {
     // Several vehicles under one trip id: consecutive fixes by time then jump between vehicles, kilometres
     // apart within seconds, and every jump is linked and sampled (230,000 fixes of 4,000 vehicles under one
     // id: 44 s, 0.8 GB and a map of chords, without a word). Warned when the median speed between consecutive
-    // fixes of a trip, where time advances, exceeds 70 m/s (252 km/h); not for files without times (a fix's
-    // time is then its line number).
+    // fixes of a trip, where time advances, exceeds 70 m/s (252 km/h); trips read without times (a
+    // fix's time is then its line number) are left out.
     {
       std::vector<double> speeds;
-      bool timed = false;
       for (std::size_t t = 0; t < trips.size(); ++t) {
         const std::vector<std::size_t> o = skeleton::internal::time_order(trips[t]);
         for (std::size_t i = 0; i < o.size(); ++i) {
           const Gps_fix& f = trips[t][o[i]];
-          timed = timed || f.time != double(tracks.origin.lines[t][o[i]]);
-          if (i == 0) continue;
+          if (i == 0 || !tracks.origin.timed[t]) continue;
           const Gps_fix& e = trips[t][o[i - 1]];
           if (f.time > e.time) speeds.push_back(std::hypot(f.x - e.x, f.y - e.y) / (f.time - e.time));
         }
       }
-      if (timed && !speeds.empty()) {
+      if (!speeds.empty()) {
         std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
         if (const double speed = speeds[speeds.size() / 2]; speed > 70)
           std::fprintf(stderr,
@@ -799,15 +799,15 @@ int run_skeleton(const std::vector<std::string>& argv) {
     // segment up to the link gap is then drawn, chords across blocks where fixes lie far apart.
     if (sample.all_segments_used && go.min_confirmed_fraction > 0 && sample.segment_support > 0 &&
         sample.max_link_gap > 0 && sample.checked_segments > 0)
-      std::fprintf(
-          stderr,
-          "featurerecon skeleton: warning: %zu of %zu checked segments between fixes are confirmed "
-          "by other fixes, below --min-confirmed %g: the traces are taken as too sparse to judge one "
-          "another and every segment up to the link gap (%.4g m) is densified; with fixes far apart "
-          "(median step %.4g m) its lines may cut across blocks (--min-confirmed 0 keeps the check, "
-          "--link-gap bounds the segments used)\n",
-          sample.confirmed_segments + sample.locally_rejected, sample.checked_segments,
-          go.min_confirmed_fraction, sample.max_link_gap, sample.median_step);
+      std::fprintf(stderr,
+                   "featurerecon skeleton: warning: %zu of %zu checked segments between fixes are confirmed "
+                   "by other fixes at the segment support, below --min-confirmed %g: the traces are taken as "
+                   "too sparse to judge one "
+                   "another and every segment up to the link gap (%.4g m) is densified; with fixes far apart "
+                   "(median step %.4g m) its lines may cut across blocks (--min-confirmed 0 keeps the check, "
+                   "--link-gap bounds the segments used)\n",
+                   sample.confirmed_segments + sample.locally_rejected, sample.checked_segments,
+                   go.min_confirmed_fraction, sample.max_link_gap, sample.median_step);
     if (lonlat)
       input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
                     ", \"origin_latitude\": " + json_number(projection.origin_latitude);

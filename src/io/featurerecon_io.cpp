@@ -358,22 +358,17 @@ std::vector<std::string> trip_files(const std::string& prefix) {
 }
 }  // namespace
 
-/// What a tracks file that failed to read may be instead (appended to the error): gzip-compressed (its first
-/// two bytes), comma-separated (its first line that is not a comment), or with a header line that lacks its
-/// '#' (the first line's x or y is not a number). Empty when none of these.
-std::string tracks_hint(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  if (!in || !std::getline(in, line)) return "";
-  if (line.size() >= 2 && static_cast<unsigned char>(line[0]) == 0x1f &&
-      static_cast<unsigned char>(line[1]) == 0x8b)
+/// What the tracks file `path` may be instead when its first row `t` (tokens, comments cut) fails to read
+/// (appended to the error): gzip-compressed (the row starts with its two magic bytes), comma- or
+/// semicolon-separated (a token holds one), or with a header line that lacks its '#' (x or y of the row is
+/// not a number). Empty when none of these.
+std::string tracks_hint(const std::vector<std::string>& t, const std::string& path) {
+  if (!t.empty() && t[0].size() >= 2 && static_cast<unsigned char>(t[0][0]) == 0x1f &&
+      static_cast<unsigned char>(t[0][1]) == 0x8b)
     return " (the file is gzip-compressed: decompress it first, e.g. 'gzip -dc " + path + " > tracks.txt')";
-  while (in && (line.find_first_not_of(" \t\r") == std::string::npos ||
-                line[line.find_first_not_of(" \t\r")] == '#'))
-    if (!std::getline(in, line)) return "";
-  if (line.find(',') != std::string::npos || line.find(';') != std::string::npos)
-    return " (values are separated by spaces or tabs, not by commas or semicolons)";
-  const std::vector<std::string> t = line_tokens(line);
+  for (const std::string& token : t)
+    if (token.find(',') != std::string::npos || token.find(';') != std::string::npos)
+      return " (values are separated by spaces or tabs, not by commas or semicolons)";
   double x = 0;
   for (std::size_t k = 1; k < t.size() && k < 3; ++k)
     if (!parse_decimal(t[k], x)) return " (a header line must begin with '#')";
@@ -406,6 +401,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
         trip.push_back(read_fix(t, 0, timed, file, number));
         if (origin != nullptr) origin->lines.back().push_back(number);
       });
+      if (origin != nullptr) origin->timed.push_back(timed == 1);  // each file decides for itself
     }
     return trips;
   }
@@ -419,7 +415,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
       try {
         read_fix(t, 1, timed, path, number);
       } catch (const Input_error& e) {
-        throw Input_error(e.what() + tracks_hint(path));
+        throw Input_error(e.what() + tracks_hint(t, path));
       }
     }
     const std::array<double, 3> fix = read_fix(t, 1, timed, path, number);
@@ -440,6 +436,7 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
     if (origin != nullptr) origin->lines[last->second].push_back(number);
     trips[last->second].push_back(fix);
   });
+  if (origin != nullptr) origin->timed.assign(trips.size(), timed == 1);  // the first line decides for all
   return trips;
 }
 

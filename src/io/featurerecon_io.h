@@ -72,6 +72,8 @@ struct Track_origin {
   std::vector<std::string> trip_ids;
   std::vector<std::string> files;  ///< the file each trip was read from (the path given, or a file in it)
   std::vector<std::vector<std::size_t>> lines;
+  /// Per trip, whether its fixes were read with times (else a fix's time is its line number).
+  std::vector<char> timed;
   /// "file:line" of fix `fix` of trip `trip`.
   std::string where(std::size_t trip, std::size_t fix) const;
   /// Appends to a message that names "trip T, fix I" (indices as read) the file, line and trip id; else

@@ -1356,7 +1356,15 @@ TEST(GpsTraces, TheMedianStepLeavesOutWaitingVehicles) {
       const bool stays = far <= 20 && dt >= 15;
       EXPECT_DOUBLE_EQ(median_gps_step({three, moving(2)}), stays ? 50.0 : far) << far << " " << dt;
     }
-  // Every step a stay: the median of them all.
+  // A step into a stop from a fix more than 30 s earlier: its end fix's window holds only the stop, but the
+  // step starts before the window: it counts (it was a stay, and the median was the 50 m step alone). The
+  // two 2 m steps of the stop are stays. Every step counted: 2, 2, 50, 100.
+  const Gps_trip arrive{{0, 0, 0}, {100, 0, 40}, {102, 0, 55}, {100, 0, 70}, {150, 0, 110}};
+  EXPECT_DOUBLE_EQ(median_gps_step({arrive}), 100.0);
+  EXPECT_DOUBLE_EQ(median_gps_step({arrive}, 20, std::numeric_limits<double>::infinity()), 50.0);
+  // Every step a stay: the median of them all (so is an infinite stay_duration).
+  EXPECT_DOUBLE_EQ(median_gps_step({waiting}, 20, std::numeric_limits<double>::infinity()),
+                   median_gps_step({waiting}, 20, 1e9));
   EXPECT_DOUBLE_EQ(median_gps_step({waiting}), median_gps_step({waiting}, 20, 1e9));
   EXPECT_GT(median_gps_step({waiting}), 1.9);
   EXPECT_EQ(median_gps_step({}), 0.0);

@@ -382,14 +382,18 @@ inline Proximity_graph planar_graph(const Point_matrix& points, std::vector<Edge
 
 /// Median distance between consecutive fixes (by time) of moving vehicles: the scale the automatic parameters
 /// of the GPS pipeline derive from (0 when no trip has two fixes). Non-finite values are skipped. A step
-/// does not count while its vehicle stays (a taxi at a rank, a parked car, a long red light): when the fixes
-/// of its trip `stay_duration` before and after its end fix (the earliest at or after t - stay_duration and
-/// the latest at or before t + stay_duration, at least stay_duration apart in time) both lie within
-/// `stay_radius` of it. Waiting vehicles recorded every few seconds otherwise made the median their GPS
-/// jitter: 150 taxis waiting 25 to 67 minutes beside 400 trips every 10 s moved it from 87 m to 5.6 m, the
-/// radius and link gap with it, and the map fell into 20 pieces (F 0.90 -> 0.76; 0.89 now). A stop within a
-/// trip shorter than 2 stay_duration is never a stay, nor is a vehicle moving faster than stay_radius /
-/// stay_duration (0.67 m/s). When every step is a stay, the median of all steps.
+/// does not count while its vehicle stays (a taxi at a rank, a parked car, a long red light): when it starts
+/// at most `stay_duration` before its end fix (time t) and the fixes of its trip `stay_duration` before and
+/// after that fix (the earliest at or after t - stay_duration and the latest at or before t +
+/// stay_duration, at least stay_duration apart in time) both lie within `stay_radius` of it. (Not a bound on
+/// the step's own length: GPS jitter of 5 m has a tail of steps beyond 20 m, which made the median.) Waiting
+/// vehicles recorded every few seconds otherwise made the median their GPS jitter: 150 taxis waiting 25 to 67
+/// minutes beside 400 trips every 10 s moved it from 87 m to 5.6 m, the radius and link gap with it, and the
+/// map fell into 20 pieces (F 0.90 -> 0.76; 0.89 now). A vehicle moving steadily faster than 2 stay_radius /
+/// stay_duration (1.33 m/s) never stays, nor does a stop shorter than stay_duration; only the window's two
+/// ends are compared (a vehicle back at the same place after stay_duration, as on a loop, stays). When every
+/// step is a stay, or with an infinite stay_duration, the median of all steps (the command line judges the
+/// units of the coordinates by that one: in degrees every fix lies within 20 of every other).
 inline double median_gps_step(const std::vector<Gps_trip>& trips, double stay_radius = 20,
                               double stay_duration = 30) {
   std::vector<double> steps, moving;
@@ -410,8 +414,8 @@ inline double median_gps_step(const std::vector<Gps_trip>& trips, double stay_ra
         while (before < k && !(time(before) >= t - stay_duration)) ++before;
         after = std::max(after, k);
         while (after + 1 < o.size() && time(after + 1) <= t + stay_duration) ++after;
-        stays = time(after) - time(before) >= stay_duration && distance(before, k) <= stay_radius &&
-                distance(after, k) <= stay_radius;
+        stays = before < k && time(after) - time(before) >= stay_duration &&
+                distance(before, k) <= stay_radius && distance(after, k) <= stay_radius;
       }
       if (!stays) moving.push_back(d);
     }
