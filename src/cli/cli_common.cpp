@@ -451,6 +451,8 @@ std::string name_option_flags(const std::string& message) {
       {"segment_support", "--segment-support"},
       {"segment_turn_tolerance", "--segment-turn-tolerance"},
       {"min_straight_confirmed_fraction", "--straight-confirmed"},
+      {"min_confirmed_fraction", "--min-confirmed"},
+      {"stand_down_path_factor", "--stand-down-path"},
       {"quiet_end_fixes", "--quiet-ends"},
       {"local_support_fixes", "--local-support"},
       {"min_local_support", "--min-local-support"},

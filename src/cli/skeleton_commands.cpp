@@ -312,6 +312,7 @@ int run_skeleton(const std::vector<std::string>& argv) {
                         "segment-turn-tolerance",
                         "straight-confirmed",
                         "min-confirmed",
+                        "stand-down-path",
                         "quiet-ends",
                         "local-support",
                         "min-local-support",
@@ -431,18 +432,18 @@ int run_skeleton(const std::vector<std::string>& argv) {
   double spacing = args.has("sample-spacing") ? args.get_double("sample-spacing") : 0.0;
   if (spacing < 0 && !gps) throw Usage_error("--sample-spacing must be >= 0 (0: no thinning)");
   const bool quiet = args.has("quiet");
-  if (!gps &&
-      (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
-       args.has("min-lateral-density") || args.has("density-radius") ||
-       args.has("density-heading-tolerance") || args.has("undirected") || args.has("merge") ||
-       args.has("first-point-positions") || args.has("segment-support") ||
-       args.has("segment-turn-tolerance") || args.has("straight-confirmed") || args.has("min-confirmed") ||
-       args.has("local-support") || args.has("min-local-support") || args.has("quiet-ends")))
+  if (!gps && (args.has("link-gap") || args.has("heading-tolerance") || args.has("min-density") ||
+               args.has("min-lateral-density") || args.has("density-radius") ||
+               args.has("density-heading-tolerance") || args.has("undirected") || args.has("merge") ||
+               args.has("first-point-positions") || args.has("segment-support") ||
+               args.has("segment-turn-tolerance") || args.has("straight-confirmed") ||
+               args.has("min-confirmed") || args.has("stand-down-path") || args.has("local-support") ||
+               args.has("min-local-support") || args.has("quiet-ends")))
     throw Usage_error(
         "--link-gap, --heading-tolerance, --undirected, --min-density, --min-lateral-density, "
         "--density-radius, --density-heading-tolerance, --first-point-positions, --min-confirmed, "
         "--segment-support, "
-        "--segment-turn-tolerance, --straight-confirmed, --quiet-ends, --local-support, "
+        "--segment-turn-tolerance, --stand-down-path, --straight-confirmed, --quiet-ends, --local-support, "
         "--min-local-support "
         "and "
         "--merge apply to --tracks only");
@@ -633,6 +634,11 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("min-confirmed")) go.min_confirmed_fraction = args.get_double("min-confirmed");
     if (!(go.min_confirmed_fraction >= 0 && go.min_confirmed_fraction <= 1))
       throw Usage_error("--min-confirmed must be in [0, 1] (0: the segment check never stands down)");
+    if (args.has("stand-down-path")) go.stand_down_path_factor = args.get_double("stand-down-path");
+    if (!(go.stand_down_path_factor >= 0 && std::isfinite(go.stand_down_path_factor)))
+      throw Usage_error(
+          "--stand-down-path must be >= 0 and finite (a factor of a segment's length; 0: the stand-down "
+          "densifies every segment)");
     if (args.has("heading-tolerance")) go.heading_tolerance = args.get_double("heading-tolerance");
     if (args.has("density-radius")) go.density_radius = args.get_positive_double("density-radius");
     if (args.has("min-density")) go.min_relative_density = args.get_double("min-density");
@@ -766,6 +772,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
                  ", \"locally_rejected\": " + std::to_string(sample.locally_rejected) +
                  ", \"quiet_ends\": " + std::to_string(go.quiet_end_fixes) +
                  ", \"quiet_segments\": " + std::to_string(sample.quiet_segments) +
+                 ", \"stand_down_path\": " + json_number(go.stand_down_path_factor) +
+                 ", \"joined_segments\": " + std::to_string(sample.joined_segments) +
                  ", \"min_density\": " + json_number(go.min_relative_density) +
                  ", \"min_lateral_density\": " + json_number(go.min_lateral_density) +
                  ", \"density_radius\": " + json_number(sample.density_radius) +
@@ -796,18 +804,21 @@ int run_skeleton(const std::vector<std::string>& argv) {
           ", \"merge_rips_triangles\": " + std::to_string(road.merged.rips_triangles);
     }
     // The check of segments stood down (Gps_trace_options::min_confirmed_fraction): say so, since every
-    // segment up to the link gap is then drawn, chords across blocks where fixes lie far apart.
+    // segment up to the link gap is then drawn (but those whose ends the fixes join), chords across blocks
+    // where fixes lie far apart.
     if (sample.all_segments_used && go.min_confirmed_fraction > 0 && sample.segment_support > 0 &&
         sample.max_link_gap > 0 && sample.checked_segments > 0)
       std::fprintf(stderr,
                    "featurerecon skeleton: warning: %zu of %zu checked segments between fixes are confirmed "
                    "by other fixes at the segment support, below --min-confirmed %g: the traces are taken as "
                    "too sparse to judge one "
-                   "another and every segment up to the link gap (%.4g m) is densified; with fixes far apart "
-                   "(median step %.4g m) its lines may cut across blocks (--min-confirmed 0 keeps the check, "
-                   "--link-gap bounds the segments used)\n",
+                   "another and every segment up to the link gap (%.4g m) is densified, but for %zu whose "
+                   "ends the fixes alone join (--stand-down-path %g); with fixes far apart (median step %.4g "
+                   "m) its lines may cut across blocks (--min-confirmed 0 keeps the check, --link-gap bounds "
+                   "the segments used)\n",
                    sample.confirmed_segments + sample.locally_rejected, sample.checked_segments,
-                   go.min_confirmed_fraction, sample.max_link_gap, sample.median_step);
+                   go.min_confirmed_fraction, sample.max_link_gap, sample.joined_segments,
+                   go.stand_down_path_factor, sample.median_step);
     if (lonlat)
       input_json += ", \"lonlat\": true, \"central_meridian\": " + json_number(projection.central_meridian) +
                     ", \"origin_latitude\": " + json_number(projection.origin_latitude);

@@ -11,8 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -706,6 +708,27 @@ bool linked(const Gps_trace_sample& S, std::size_t fix_a, std::size_t fix_b) {
   const Edge e{std::min(a, b), std::max(a, b)};
   return std::binary_search(S.trip_links.begin(), S.trip_links.end(), e);
 }
+/// Whether the samples of two fixes are joined by a chain of trip links.
+bool chained(const Gps_trace_sample& S, std::size_t fix_a, std::size_t fix_b) {
+  std::vector<std::vector<std::uint32_t>> next(S.points.rows);
+  for (const Edge& e : S.trip_links) {
+    next[e[0]].push_back(e[1]);
+    next[e[1]].push_back(e[0]);
+  }
+  std::vector<char> seen(S.points.rows, 0);
+  std::vector<std::uint32_t> stack{S.sample_of_fix[fix_a]};
+  seen[stack.back()] = 1;
+  while (!stack.empty()) {
+    const std::uint32_t v = stack.back();
+    stack.pop_back();
+    for (const std::uint32_t w : next[v])
+      if (!seen[w]) {
+        seen[w] = 1;
+        stack.push_back(w);
+      }
+  }
+  return seen[S.sample_of_fix[fix_b]] != 0;
+}
 }  // namespace
 
 TEST(GpsTraces, SegmentsTheTracesDoNotConfirmAreNotDensified) {
@@ -784,24 +807,7 @@ TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
   EXPECT_TRUE(linked(S, first + 1, first + 2));
   // The chain goes on: the trip's first fix reaches its last through its own links (densified, link,
   // densified).
-  std::vector<std::vector<std::uint32_t>> next(S.points.rows);
-  for (const Edge& e : S.trip_links) {
-    next[e[0]].push_back(e[1]);
-    next[e[1]].push_back(e[0]);
-  }
-  std::vector<char> seen(S.points.rows, 0);
-  std::vector<std::uint32_t> stack{S.sample_of_fix[first]};
-  seen[stack.back()] = 1;
-  while (!stack.empty()) {
-    const std::uint32_t v = stack.back();
-    stack.pop_back();
-    for (const std::uint32_t w : next[v])
-      if (!seen[w]) {
-        seen[w] = 1;
-        stack.push_back(w);
-      }
-  }
-  EXPECT_TRUE(seen[S.sample_of_fix[first + 3]]);
+  EXPECT_TRUE(chained(S, first, first + 3));
   for (std::size_t i = 0; i < S.points.rows; ++i)
     EXPECT_LT(distance_to_l(S.points.row(i)[0], S.points.row(i)[1]), 8.0) << "sample " << i;
 }
@@ -833,6 +839,150 @@ TEST(GpsTraces, TracesTooSparseToConfirmOneAnotherUseEverySegment) {
   EXPECT_EQ(strict.points.rows, 4u);
 }
 
+TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
+  // Dense traffic along the L (segments of 10 m: not checked) and four sparse trips that each cut the block
+  // with one chord from the eastward street to the northward one, 382 to 424 m long, and a lone trip 2 km
+  // north turning at a corner no other trip passes. None of the six checked segments is confirmed: the check
+  // stands down. The chords' ends are joined by the fixes along the L (a path through cells of 15 m, the
+  // sample spacing, of 1.27 to 1.32 times the chord plus two cells): they keep the check's verdict (longer
+  // than 4 x 20: the trips break), and no sample lies inside the block. The lone trip's segments join no
+  // fixes and are densified as before.
+  std::vector<Gps_trip> trips = l_shaped_streets();
+  for (int k = 0; k < 4; ++k) trips.push_back({{100.0 + 10 * k, 0, 0}, {400, 300.0 - 10 * k, 40}});
+  const std::size_t lone = 20 * 41 + 8;  // index of the lone trip's first fix
+  trips.push_back({{0, 2000, 0}, {300, 2000, 30}, {300, 2300, 60}});
+  Gps_trace_options o;
+  o.mean_positions = false;  // samples where they were created
+  o.max_link_gap = 600;
+  o.segment_support = 20;
+  auto farthest_below = [](const Gps_trace_sample& S) {  // from the L, of the samples south of y = 1000
+    double d = 0;
+    for (std::size_t i = 0; i < S.points.rows; ++i)
+      if (S.points.row(i)[1] < 1000) d = std::max(d, distance_to_l(S.points.row(i)[0], S.points.row(i)[1]));
+    return d;
+  };
+  auto lone_densified = [&](const Gps_trace_sample& S) {
+    std::size_t on_it = 0;  // samples strictly between the lone trip's fixes
+    for (std::size_t i = 0; i < S.points.rows; ++i) {
+      const double x = S.points.row(i)[0], y = S.points.row(i)[1];
+      on_it += ((y == 2000 && x > 20 && x < 280) || (x == 300 && y > 2020 && y < 2280)) ? 1 : 0;
+    }
+    return on_it >= 30 && chained(S, lone, lone + 2);
+  };
+  const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
+  EXPECT_DOUBLE_EQ(S.sample_spacing, 15.0);
+  EXPECT_EQ(S.checked_segments, 6u);
+  EXPECT_EQ(S.confirmed_segments, 0u);
+  EXPECT_TRUE(S.all_segments_used);  // stood down
+  EXPECT_EQ(S.joined_segments, 4u);
+  EXPECT_LT(farthest_below(S), 5.0);
+  EXPECT_TRUE(lone_densified(S));
+  // The factor pinned on both sides of the chords' 1.27 to 1.32.
+  o.stand_down_path_factor = 1.4;
+  EXPECT_EQ(sample_gps_traces(trips, 30.0, o).joined_segments, 4u);
+  o.stand_down_path_factor = 1.2;
+  const Gps_trace_sample tight = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(tight.joined_segments, 0u);
+  EXPECT_GT(farthest_below(tight), 40.0);
+  // 0: every segment is densified, as the stand-down did before the rule; the same samples as without the
+  // check.
+  o.stand_down_path_factor = 0;
+  const Gps_trace_sample all = sample_gps_traces(trips, 30.0, o);
+  EXPECT_TRUE(all.all_segments_used);
+  EXPECT_EQ(all.joined_segments, 0u);
+  EXPECT_GT(farthest_below(all), 40.0);
+  EXPECT_TRUE(lone_densified(all));
+  Gps_trace_options unchecked = o;
+  unchecked.segment_support = 0;
+  const Gps_trace_sample plain = sample_gps_traces(trips, 30.0, unchecked);
+  EXPECT_EQ(plain.points.data, all.points.data);
+  EXPECT_EQ(plain.trip_links, all.trip_links);
+  EXPECT_EQ(tight.points.data, all.points.data);
+  // Without the stand-down the chords break too, but so does the lone trip.
+  o.stand_down_path_factor = 2.5;
+  o.min_confirmed_fraction = 0;
+  const Gps_trace_sample strict = sample_gps_traces(trips, 30.0, o);
+  EXPECT_FALSE(strict.all_segments_used);
+  EXPECT_EQ(strict.joined_segments, 0u);
+  EXPECT_FALSE(lone_densified(strict));
+  // The same bytes again; with the trips in another order (samples are made in another order) the same
+  // segments are joined.
+  const Gps_trace_sample again = sample_gps_traces(trips, 30.0, Gps_trace_options(o));
+  EXPECT_EQ(again.points.data, strict.points.data);
+  o.min_confirmed_fraction = 0.2;
+  std::reverse(trips.begin(), trips.end());
+  const Gps_trace_sample reversed = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(reversed.joined_segments, 4u);
+  EXPECT_LT(farthest_below(reversed), 5.0);
+}
+
+TEST(GpsTraces, PathsThroughTheFixesMatchADijkstraOracle) {
+  // Fix_paths against Dijkstra on the 8-connected grid of occupied cells: for random fixes (a third of the
+  // cells of a 24 x 24 box, cells of side 2.5), every pair of places is joined within its shortest length
+  // (between cell centres, times the cell) and not within 0.999 of it; places in other components or in
+  // cells without a fix are never joined.
+  const double cell = 2.5;
+  std::mt19937 rng(20261207);
+  for (int round = 0; round < 20; ++round) {
+    std::vector<std::array<double, 2>> places;
+    std::uniform_real_distribution<double> coordinate(-30.0, 30.0);  // 24 cells across
+    for (int i = 0; i < 190; ++i) places.push_back({coordinate(rng), coordinate(rng)});
+    skeleton::internal::Fix_paths paths(places, cell);
+    auto cell_of = [&](double x, double y) {
+      return std::array<long, 2>{static_cast<long>(std::floor(x / cell)),
+                                 static_cast<long>(std::floor(y / cell))};
+    };
+    std::map<std::array<long, 2>, double> occupied;
+    for (const auto& p : places) occupied[cell_of(p[0], p[1])] = 0;
+    for (int pair = 0; pair < 40; ++pair) {
+      const auto& a = places[std::uniform_int_distribution<std::size_t>(0, places.size() - 1)(rng)];
+      const auto& b = places[std::uniform_int_distribution<std::size_t>(0, places.size() - 1)(rng)];
+      // Dijkstra from a's cell
+      std::map<std::array<long, 2>, double> best;
+      std::set<std::pair<double, std::array<long, 2>>> queue{{0.0, cell_of(a[0], a[1])}};
+      best[cell_of(a[0], a[1])] = 0;
+      while (!queue.empty()) {
+        const auto [d, c] = *queue.begin();
+        queue.erase(queue.begin());
+        for (long dx = -1; dx <= 1; ++dx)
+          for (long dy = -1; dy <= 1; ++dy) {
+            const std::array<long, 2> n{c[0] + dx, c[1] + dy};
+            if ((dx == 0 && dy == 0) || occupied.count(n) == 0) continue;
+            const double nd = d + (dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
+            const auto it = best.find(n);
+            if (it != best.end() && it->second <= nd) continue;
+            if (it != best.end()) queue.erase({it->second, n});
+            best[n] = nd;
+            queue.insert({nd, n});
+          }
+      }
+      const auto it = best.find(cell_of(b[0], b[1]));
+      if (it == best.end()) {
+        EXPECT_FALSE(paths.joined(a[0], a[1], b[0], b[1], 1e9)) << round << " " << pair;
+      } else {
+        const double shortest = it->second * cell;
+        EXPECT_TRUE(paths.joined(a[0], a[1], b[0], b[1], shortest * (1 + 1e-9) + 1e-9))
+            << round << " " << pair;
+        if (shortest > 0) {
+          EXPECT_FALSE(paths.joined(a[0], a[1], b[0], b[1], shortest * 0.999)) << round << " " << pair;
+        }
+      }
+    }
+    // a cell without a fix, beside a place
+    for (double x = -40; x < 40; x += 1.25)
+      if (occupied.count(cell_of(x, 0.5)) == 0) {
+        EXPECT_FALSE(paths.joined(places[0][0], places[0][1], x, 0.5, 1e9));
+        EXPECT_FALSE(paths.joined(x, 0.5, places[0][0], places[0][1], 1e9));
+      }
+  }
+  // No places, one place (joined to its own cell at length 0).
+  skeleton::internal::Fix_paths none({}, 1.0);
+  EXPECT_FALSE(none.joined(0, 0, 0, 0, 1e9));
+  skeleton::internal::Fix_paths one({{{0.5, 0.5}}}, 1.0);
+  EXPECT_TRUE(one.joined(0.1, 0.2, 0.9, 0.9, 0));
+  EXPECT_FALSE(one.joined(0.1, 0.2, 1.1, 0.9, 1e9));
+}
+
 TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
   const std::vector<Gps_trip> trips{straight(0, 0, 1, 0, 5, 30)};
   // Each bad value of each option throws a message naming the option.
@@ -840,6 +990,7 @@ TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
       {"segment_support", {std::nan(""), std::numeric_limits<double>::infinity(), -HUGE_VAL}},
       {"min_confirmed_fraction", {-0.1, 1.5, std::nan("")}},
       {"min_straight_confirmed_fraction", {-0.1, 1.5, std::nan("")}},
+      {"stand_down_path_factor", {-0.5, std::numeric_limits<double>::infinity(), std::nan("")}},
       {"segment_turn_tolerance", {-1.0, 180.5, std::nan("")}}};
   for (const auto& [name, values] : bad)
     for (const double value : values) {
@@ -850,6 +1001,7 @@ TEST(GpsTraces, SegmentSupportOptionsAreChecked) {
       else
         (option == "min_confirmed_fraction"            ? o.min_confirmed_fraction
          : option == "min_straight_confirmed_fraction" ? o.min_straight_confirmed_fraction
+         : option == "stand_down_path_factor"          ? o.stand_down_path_factor
                                                        : o.segment_turn_tolerance) = value;
       EXPECT_TRUE(throws_with<std::invalid_argument>([&] { sample_gps_traces(trips, 20.0, o); }, option))
           << value;
