@@ -201,7 +201,7 @@ const std::vector<Command>& commands() {
        "                   When fewer than MC of the checked segments (within the link gap, longer than 2 "
        "SS)\n"
        "                   are confirmed by fixes, the check stands down (with a warning) and all are used,\n"
-       "                   but those whose ends the fixes alone join within PF times their length.\n"
+       "                   but those whose ends the fixes alone join within PF times their length + 2 S.\n"
        "                   0: no check\n"
        "  --min-confirmed MC  see --segment-support (a fraction in [0, 1], default 0.2; 0: the check never\n"
        "                   stands down)\n"

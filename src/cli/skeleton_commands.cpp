@@ -634,7 +634,8 @@ int run_skeleton(const std::vector<std::string>& argv) {
     if (args.has("min-confirmed")) go.min_confirmed_fraction = args.get_double("min-confirmed");
     if (!(go.min_confirmed_fraction >= 0 && go.min_confirmed_fraction <= 1))
       throw Usage_error("--min-confirmed must be in [0, 1] (0: the segment check never stands down)");
-    if (args.has("stand-down-path")) go.stand_down_path_factor = args.get_double("stand-down-path");
+    if (args.has("stand-down-path"))
+      go.stand_down_path_factor = args.get_double("stand-down-path") + 0.0;  // -0 prints as 0
     if (!(go.stand_down_path_factor >= 0 && std::isfinite(go.stand_down_path_factor)))
       throw Usage_error(
           "--stand-down-path must be >= 0 and finite (a factor of a segment's length; 0: the stand-down "
@@ -810,12 +811,11 @@ int run_skeleton(const std::vector<std::string>& argv) {
         sample.max_link_gap > 0 && sample.checked_segments > 0)
       std::fprintf(stderr,
                    "featurerecon skeleton: warning: %zu of %zu checked segments between fixes are confirmed "
-                   "by other fixes at the segment support, below --min-confirmed %g: the traces are taken as "
-                   "too sparse to judge one "
-                   "another and every segment up to the link gap (%.4g m) is densified, but for %zu whose "
-                   "ends the fixes alone join (--stand-down-path %g); with fixes far apart (median step %.4g "
-                   "m) its lines may cut across blocks (--min-confirmed 0 keeps the check, --link-gap bounds "
-                   "the segments used)\n",
+                   "by other fixes at the segment support, below --min-confirmed %g: the check stands down, "
+                   "taking the traces as too sparse to judge one another, and every segment up to the link "
+                   "gap (%.4g m) is densified but the %zu whose ends the fixes alone join (--stand-down-path "
+                   "%g); with fixes far apart (median step %.4g m) the densified lines may cut across blocks "
+                   "(--min-confirmed 0 keeps the check, --link-gap bounds the segments used)\n",
                    sample.confirmed_segments + sample.locally_rejected, sample.checked_segments,
                    go.min_confirmed_fraction, sample.max_link_gap, sample.joined_segments,
                    go.stand_down_path_factor, sample.median_step);

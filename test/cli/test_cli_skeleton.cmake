@@ -246,18 +246,19 @@ expect(skeleton_min_confirmed_points 2 "--min-confirmed, --segment-support, .* a
 # 150 trips every 45 s (166 fixes): no checked segment is confirmed, the check stands down and says so;
 # --min-confirmed 0 keeps it (and the warning is not given).
 expect(synthetic_city_too_sparse 0 "\"seed\": 5}" synthetic-city --trips 150 --interval 45 --seed 5 --out-tracks ${WORK}/vs_t.txt --out-vertices ${WORK}/vs_gv.txt --out-edges ${WORK}/vs_ge.txt)
-expect(skeleton_check_stands_down 0 "\"checked_segments\": 40, \"confirmed_segments\": 0,.*\"all_segments_used\": true, \"min_confirmed_fraction\": 0.2,.*\"stand_down_path\": 2.5, \"joined_segments\": 0,.*warning: 0 of 40 checked segments between fixes are confirmed by other fixes at the segment support, below --min-confirmed 0.2: .* every segment up to the link gap \\([0-9.]+ m\\) is densified" skeleton --tracks ${WORK}/vs_t.txt --out-vertices ${WORK}/vs_v.txt --out-edges ${WORK}/vs_e.txt --quiet)
+expect(skeleton_check_stands_down 0 "\"checked_segments\": 40, \"confirmed_segments\": 0,.*\"all_segments_used\": true, \"min_confirmed_fraction\": 0.2,.*\"stand_down_path\": 2.5, \"joined_segments\": 0,.*warning: 0 of 40 checked segments between fixes are confirmed by other fixes at the segment support, below --min-confirmed 0.2: the check stands down, taking the traces as too sparse to judge one another, and every segment up to the link gap \\([0-9.]+ m\\) is densified but the 0 whose ends" skeleton --tracks ${WORK}/vs_t.txt --out-vertices ${WORK}/vs_v.txt --out-edges ${WORK}/vs_e.txt --quiet)
 expect(skeleton_check_kept 0 "\"all_segments_used\": false, \"min_confirmed_fraction\": 0," skeleton --tracks ${WORK}/vs_t.txt --min-confirmed 0 --out-vertices ${WORK}/vs_v.txt --out-edges ${WORK}/vs_e.txt --quiet)
 if(last_error MATCHES "too sparse to judge")
   message(SEND_ERROR "skeleton_check_kept: the stand-down warning was given with --min-confirmed 0")
 endif()
 # The stand-down leaves the segments whose ends the fixes alone join (--stand-down-path): 2,000 trips every
-# 60 s confirm 34 of 243 checked segments, 172 of the others are chords whose ends the fixes join (F 0.612;
-# 0.493 when the stand-down densified every segment, as --stand-down-path 0 still does).
+# 60 s confirm 34 of 243 checked segments at the segment support (30 at the local distance), 172 of the others
+# are chords whose ends the fixes join (F 0.612; 0.493 when the stand-down densified every segment, as
+# --stand-down-path 0 still does; -0 prints as 0).
 expect(synthetic_city_fleet 0 "\"seed\": 3}" synthetic-city --trips 2000 --interval 60 --seed 3 --out-tracks ${WORK}/fl_t.txt --out-vertices ${WORK}/fl_gv.txt --out-edges ${WORK}/fl_ge.txt)
-expect(skeleton_stand_down_joins 0 "\"all_segments_used\": true, .*\"quiet_segments\": [0-9]+, \"stand_down_path\": 2.5, \"joined_segments\": 172,.*warning: 34 of 243 checked segments .* every segment up to the link gap \\([0-9.]+ m\\) is densified, but for 172 whose ends the fixes alone join \\(--stand-down-path 2.5\\)" skeleton --tracks ${WORK}/fl_t.txt --out-vertices ${WORK}/fl_v.txt --out-edges ${WORK}/fl_e.txt --quiet)
+expect(skeleton_stand_down_joins 0 "\"all_segments_used\": true, .*\"quiet_segments\": [0-9]+, \"stand_down_path\": 2.5, \"joined_segments\": 172,.*warning: 34 of 243 checked segments .* every segment up to the link gap \\([0-9.]+ m\\) is densified but the 172 whose ends the fixes alone join \\(--stand-down-path 2.5\\)" skeleton --tracks ${WORK}/fl_t.txt --out-vertices ${WORK}/fl_v.txt --out-edges ${WORK}/fl_e.txt --quiet)
 expect(evaluate_stand_down_joins 0 "\"f_score\": 0\\.61" evaluate-map ${WORK}/fl_gv.txt ${WORK}/fl_ge.txt ${WORK}/fl_v.txt ${WORK}/fl_e.txt --quiet)
-expect(skeleton_stand_down_every_segment 0 "\"stand_down_path\": 0, \"joined_segments\": 0,.*but for 0 whose ends" skeleton --tracks ${WORK}/fl_t.txt --stand-down-path 0 --out-vertices ${WORK}/fl_v0.txt --out-edges ${WORK}/fl_e0.txt --quiet)
+expect(skeleton_stand_down_every_segment 0 "\"stand_down_path\": 0, \"joined_segments\": 0,.*densified but the 0 whose ends the fixes alone join \\(--stand-down-path 0\\)" skeleton --tracks ${WORK}/fl_t.txt --stand-down-path -0 --out-vertices ${WORK}/fl_v0.txt --out-edges ${WORK}/fl_e0.txt --quiet)
 expect(evaluate_stand_down_every_segment 0 "\"f_score\": 0\\.49" evaluate-map ${WORK}/fl_gv.txt ${WORK}/fl_ge.txt ${WORK}/fl_v0.txt ${WORK}/fl_e0.txt --quiet)
 expect(skeleton_stand_down_path_bad 2 "--stand-down-path must be >= 0 and finite" skeleton --tracks ${DATA}/block_tracks.txt --stand-down-path -1 --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)
 expect(skeleton_stand_down_path_inf 2 "--stand-down-path must be a finite number, got .inf." skeleton --tracks ${DATA}/block_tracks.txt --stand-down-path inf --out-vertices ${WORK}/t_v.txt --out-edges ${WORK}/t_e.txt --quiet)

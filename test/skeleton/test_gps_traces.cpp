@@ -848,8 +848,9 @@ TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
   // than 4 x 20: the trips break), and no sample lies inside the block. The lone trip's segments join no
   // fixes and are densified as before.
   std::vector<Gps_trip> trips = l_shaped_streets();
+  const std::size_t chords = 20 * 41;  // index of the first chord's first fix
   for (int k = 0; k < 4; ++k) trips.push_back({{100.0 + 10 * k, 0, 0}, {400, 300.0 - 10 * k, 40}});
-  const std::size_t lone = 20 * 41 + 8;  // index of the lone trip's first fix
+  const std::size_t lone = chords + 8;  // index of the lone trip's first fix
   trips.push_back({{0, 2000, 0}, {300, 2000, 30}, {300, 2300, 60}});
   Gps_trace_options o;
   o.mean_positions = false;  // samples where they were created
@@ -877,10 +878,18 @@ TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
   EXPECT_EQ(S.joined_segments, 4u);
   EXPECT_LT(farthest_below(S), 5.0);
   EXPECT_TRUE(lone_densified(S));
-  // The factor pinned on both sides of the chords' 1.27 to 1.32.
-  o.stand_down_path_factor = 1.4;
+  for (std::size_t k = 0; k < 4; ++k)  // they break: no link between their ends
+    EXPECT_FALSE(linked(S, chords + 2 * k, chords + 2 * k + 1)) << k;
+  // The same bytes again.
+  const Gps_trace_sample again = sample_gps_traces(trips, 30.0, Gps_trace_options(o));
+  EXPECT_EQ(again.points.data, S.points.data);
+  EXPECT_EQ(again.trip_links, S.trip_links);
+  EXPECT_EQ(again.joined_segments, 4u);
+  // The factor pinned on both sides of the chords' 1.27 to 1.32 (with the two cells added; 1.34 to 1.39
+  // without them).
+  o.stand_down_path_factor = 1.33;
   EXPECT_EQ(sample_gps_traces(trips, 30.0, o).joined_segments, 4u);
-  o.stand_down_path_factor = 1.2;
+  o.stand_down_path_factor = 1.25;
   const Gps_trace_sample tight = sample_gps_traces(trips, 30.0, o);
   EXPECT_EQ(tight.joined_segments, 0u);
   EXPECT_GT(farthest_below(tight), 40.0);
@@ -905,10 +914,7 @@ TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
   EXPECT_FALSE(strict.all_segments_used);
   EXPECT_EQ(strict.joined_segments, 0u);
   EXPECT_FALSE(lone_densified(strict));
-  // The same bytes again; with the trips in another order (samples are made in another order) the same
-  // segments are joined.
-  const Gps_trace_sample again = sample_gps_traces(trips, 30.0, Gps_trace_options(o));
-  EXPECT_EQ(again.points.data, strict.points.data);
+  // With the trips in another order (samples are made in another order) the same segments are joined.
   o.min_confirmed_fraction = 0.2;
   std::reverse(trips.begin(), trips.end());
   const Gps_trace_sample reversed = sample_gps_traces(trips, 30.0, o);
@@ -917,7 +923,7 @@ TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
 }
 
 TEST(GpsTraces, PathsThroughTheFixesMatchADijkstraOracle) {
-  // Fix_paths against Dijkstra on the 8-connected grid of occupied cells: for random fixes (a third of the
+  // Fix_paths against Dijkstra on the 8-connected grid of occupied cells: for random fixes (half of the
   // cells of a 24 x 24 box, cells of side 2.5), every pair of places is joined within its shortest length
   // (between cell centres, times the cell) and not within 0.999 of it; places in other components or in
   // cells without a fix are never joined.
@@ -926,7 +932,7 @@ TEST(GpsTraces, PathsThroughTheFixesMatchADijkstraOracle) {
   for (int round = 0; round < 20; ++round) {
     std::vector<std::array<double, 2>> places;
     std::uniform_real_distribution<double> coordinate(-30.0, 30.0);  // 24 cells across
-    for (int i = 0; i < 190; ++i) places.push_back({coordinate(rng), coordinate(rng)});
+    for (int i = 0; i < 400; ++i) places.push_back({coordinate(rng), coordinate(rng)});
     skeleton::internal::Fix_paths paths(places, cell);
     auto cell_of = [&](double x, double y) {
       return std::array<long, 2>{static_cast<long>(std::floor(x / cell)),
@@ -975,12 +981,60 @@ TEST(GpsTraces, PathsThroughTheFixesMatchADijkstraOracle) {
         EXPECT_FALSE(paths.joined(x, 0.5, places[0][0], places[0][1], 1e9));
       }
   }
-  // No places, one place (joined to its own cell at length 0).
+  // No places, one place (joined to its own cell at length 0, not at a negative or NaN length).
   skeleton::internal::Fix_paths none({}, 1.0);
   EXPECT_FALSE(none.joined(0, 0, 0, 0, 1e9));
   skeleton::internal::Fix_paths one({{{0.5, 0.5}}}, 1.0);
   EXPECT_TRUE(one.joined(0.1, 0.2, 0.9, 0.9, 0));
+  EXPECT_FALSE(one.joined(0.1, 0.2, 0.9, 0.9, -1));
+  EXPECT_FALSE(one.joined(0.1, 0.2, 0.9, 0.9, std::nan("")));
   EXPECT_FALSE(one.joined(0.1, 0.2, 1.1, 0.9, 1e9));
+}
+
+TEST(GpsTraces, APathSearchGivesUpAfterItsVisits) {
+  // A filled block of 300 x 300 cells with a wall across it, open only at its top: two places 4 cells apart
+  // on either side of the wall near its foot are joined by a path of 600 cells around it. Within a length of
+  // 650 cells the ellipse of cells the bound leaves holds most of the block; the search would visit about
+  // 60,000 cells before it turned the wall's top, and gives up after 32 x 652 (no path: the stand-down
+  // densifies such a segment, as before the rule). With the wall open at its foot it finds the short path.
+  std::vector<std::array<double, 2>> places, open_foot;
+  for (int x = 0; x < 300; ++x)
+    for (int y = 0; y < 300; ++y) {
+      const bool wall = x >= 149 && x <= 151;
+      if (!wall || y >= 298) places.push_back({x + 0.5, y + 0.5});
+      if (!wall || y <= 1) open_foot.push_back({x + 0.5, y + 0.5});
+    }
+  skeleton::internal::Fix_paths around(places, 1.0), through(open_foot, 1.0);
+  EXPECT_FALSE(around.joined(147.5, 10.5, 153.5, 10.5, 650));
+  EXPECT_TRUE(through.joined(147.5, 10.5, 153.5, 10.5, 30));
+  // Within a length that leaves only a narrow ellipse, the same search ends without a path at once, and
+  // along the open top it finds one.
+  EXPECT_FALSE(around.joined(147.5, 10.5, 153.5, 10.5, 100));
+  EXPECT_TRUE(around.joined(147.5, 290.5, 153.5, 290.5, 30));
+}
+
+TEST(GpsTraces, TheStandDownAsksToStopWithinATrip) {
+  // One trip of 9,001 fixes driving back and forth along a 424 m chord: none of its segments is confirmed,
+  // the check stands down, and the search for paths runs through 9,000 segments of one trip. The callback is
+  // asked within the trip (every 4,096 fixes) at fractions between 0.25 and 0.3, and stopping there returns
+  // at once (status interrupted).
+  Gps_trip trip;
+  for (int i = 0; i <= 9000; ++i)
+    trip.push_back({i % 2 == 0 ? 0.0 : 300.0, i % 2 == 0 ? 0.0 : 300.0, 40.0 * i});
+  Gps_trace_options o;
+  std::vector<double> asked;
+  o.progress = [&](double fraction) {
+    asked.push_back(fraction);
+    return !(fraction > 0.25 && fraction < 0.3);
+  };
+  const Gps_trace_sample S = sample_gps_traces({trip}, 30.0, o);
+  EXPECT_EQ(S.status, Status::interrupted);
+  ASSERT_FALSE(asked.empty());
+  EXPECT_GT(asked.back(), 0.25);
+  EXPECT_LT(asked.back(), 0.3);
+  EXPECT_TRUE(S.all_segments_used);
+  EXPECT_EQ(S.checked_segments, 9000u);
+  EXPECT_EQ(S.confirmed_segments, 0u);
 }
 
 TEST(GpsTraces, SegmentSupportOptionsAreChecked) {

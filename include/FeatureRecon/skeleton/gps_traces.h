@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -132,11 +133,14 @@ struct Gps_trace_options {
   /// cells of side sample_spacing that hold a fix, each cell joined to its 8 neighbours, at most this many
   /// times the segment long (plus two cells; measured between cell centres). Few confirmed segments then
   /// mean chords across blocks between fixes far apart in time, not traces too sparse to judge: a fleet of
-  /// 4,000 vehicles logging every 60 to 120 s on a grid city confirmed 13 % of its segments, and densifying
-  /// all of them drew 116,000 chords across its blocks (F 0.23 in 27 s and 1.1 GB; F 0.96 in 6 s with the
+  /// 4,000 vehicles logging every 60 to 120 s on a grid city confirmed 16 % of its segments, and densifying
+  /// all of them drew 116,000 chords across its blocks (F 0.23 in 27 s and 1.1 GB; F 0.96 in 4 s with the
   /// rule). Where the fixes do not join the ends, no other trip passed there and the segment is densified as
-  /// before (small cities of 150 trips logging every 30 to 45 s: no segment was joined). Default 2.5
-  /// (benchmark/README.md, "Segment check: the stand-down"); 0: the stand-down densifies every segment.
+  /// before (small cities of 150 trips logging every 30 to 45 s: no segment was joined). The search for a
+  /// path gives up, and the segment is densified, after visiting 32 cells per cell of the length allowed
+  /// (a failing search would otherwise visit every cell within that length: quadratic; the searches that
+  /// succeeded on the cities measured visited at most 16). Default 2.5 (benchmark/README.md, "Segment check:
+  /// the stand-down"); 0: the stand-down densifies every segment.
   double stand_down_path_factor = 2.5;
   /// The turn rule is trusted only where the traces show that it tells streets: a segment the trip drives
   /// straight through must be confirmed by fixes at least this often among the checked segments (the 95 %
@@ -312,9 +316,13 @@ class Planar_grid {
 /// hold a fix, each joined to its 8 neighbours. joined() tells whether such a path leads from one place's
 /// cell to another's within a length (between cell centres). Different connected components answer at once;
 /// otherwise a best-first search bounded by the octile distance (a lower bound of the length on this grid)
-/// answers exactly.
+/// answers, exactly but for searches that give up (see joined()).
 class Fix_paths {
  public:
+  /// Searches give up after this many cells per cell of their length bound: those that succeeded on the 41
+  /// cities of benchmark/README.md ("Segment check: the stand-down") took at most 16.
+  static constexpr double kMaxVisitsPerCell = 32;
+
   Fix_paths(const std::vector<std::array<double, 2>>& places, double cell) : m_cell(cell) {
     for (const auto& p : places) m_cells.push_back(key(p[0], p[1]));
     std::sort(m_cells.begin(), m_cells.end());  // ids by position: no dependence on the order of the fixes
@@ -348,8 +356,10 @@ class Fix_paths {
   }
 
   /// Whether a path of cells holding fixes, at most `length` long, joins the cells of (ax, ay) and (bx, by)
-  /// (false when either holds no fix).
+  /// (false when either holds no fix, or `length` is negative or NaN), found within kMaxVisitsPerCell
+  /// (length / cell + 2) cells taken from the search's queue.
   bool joined(double ax, double ay, double bx, double by, double length) {
+    if (!(length >= 0)) return false;  // NaN too
     const auto ia = m_id.find(key(ax, ay)), ib = m_id.find(key(bx, by));
     if (ia == m_id.end() || ib == m_id.end()) return false;
     const std::uint32_t from = ia->second, to = ib->second;
@@ -363,35 +373,51 @@ class Fix_paths {
       return std::max(dx, dy) + (std::sqrt(2.0) - 1) * std::min(dx, dy);
     };
     if (octile(from) > limit) return false;
-    if (++m_round == 0) {  // the round counter wrapped: forget every mark
-      std::fill(m_round_of.begin(), m_round_of.end(), 0);
-      m_round = 1;
-    }
-    // Best first by cost so far + 2 x the octile distance: a path is found after few steps where one exists
-    // (most queries). Cells are pruned by the exact bound (cost + octile distance > limit) and reopened
-    // when reached more cheaply, so the answer is the exact one: any cell reached lies on a path within the
-    // limit, and when none leads to the target every cell within the bound is tried at its least cost.
-    using Entry = std::tuple<double, double, std::uint32_t>;  // (order, cost so far, cell): ties by cost, id
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-    m_round_of[from] = m_round;
-    m_cost[from] = 0;
-    open.push({2 * octile(from), 0.0, from});
-    while (!open.empty()) {
-      const auto [order, cost, i] = open.top();
-      open.pop();
-      if (cost > m_cost[i]) continue;  // reached more cheaply since it was queued
-      for (std::uint32_t k = m_first[i]; k < m_first[i + 1]; ++k) {
-        const std::uint32_t j = m_next[k];
-        const bool diagonal = m_cells[j][0] != m_cells[i][0] && m_cells[j][1] != m_cells[i][1];
-        const double g = cost + (diagonal ? std::sqrt(2.0) : 1.0), h = octile(j);
-        if ((m_round_of[j] == m_round && m_cost[j] <= g) || g + h > limit) continue;
-        if (j == to) return true;
-        m_round_of[j] = m_round;
-        m_cost[j] = g;
-        open.push({g + 2 * h, g, j});
+    // The same query again (a route driven by many trips with the same fixes): the answer found before.
+    const std::array<std::uint64_t, 3> query{from, to, bits_of(limit)};
+    const auto known = m_known.find(query);
+    if (known != m_known.end()) return known->second;
+    const bool found = [&] {
+      if (++m_round == 0) {  // the round counter wrapped: forget every mark
+        std::fill(m_round_of.begin(), m_round_of.end(), 0);
+        m_round = 1;
       }
-    }
-    return false;
+      // Best first by cost so far + 2 x the octile distance: a path is found after few steps where one exists
+      // (most queries). Cells are pruned by the exact bound (cost + octile distance > limit) and reopened
+      // when reached more cheaply, so the answer is exact unless the search gives up (below): any cell
+      // reached lies on a path within the limit, and when none leads to the target every cell within the
+      // bound is tried at its least cost.
+      using Entry =
+          std::tuple<double, double, std::uint32_t>;  // (order, cost so far, cell): ties by cost, id
+      std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+      m_round_of[from] = m_round;
+      m_cost[from] = 0;
+      open.push({2 * octile(from), 0.0, from});
+      // A search that fails within one component would visit every cell of the ellipse the bound leaves,
+      // quadratic in the length: it gives up (no path) after taking kMaxVisitsPerCell (limit + 2) cells from
+      // the queue, linear like the points a densified segment inserts.
+      const double max_visits = kMaxVisitsPerCell * (limit + 2);
+      double visits = 0;
+      while (!open.empty()) {
+        if (++visits > max_visits) return false;
+        const auto [order, cost, i] = open.top();
+        open.pop();
+        if (cost > m_cost[i]) continue;  // reached more cheaply since it was queued
+        for (std::uint32_t k = m_first[i]; k < m_first[i + 1]; ++k) {
+          const std::uint32_t j = m_next[k];
+          const bool diagonal = m_cells[j][0] != m_cells[i][0] && m_cells[j][1] != m_cells[i][1];
+          const double g = cost + (diagonal ? std::sqrt(2.0) : 1.0), h = octile(j);
+          if ((m_round_of[j] == m_round && m_cost[j] <= g) || g + h > limit) continue;
+          if (j == to) return true;
+          m_round_of[j] = m_round;
+          m_cost[j] = g;
+          open.push({g + 2 * h, g, j});
+        }
+      }
+      return false;
+    }();
+    m_known.emplace(query, found);
+    return found;
   }
 
  private:
@@ -406,6 +432,17 @@ class Fix_paths {
   std::vector<double> m_cost;
   std::vector<std::uint32_t> m_round_of;  // the search that last reached each cell
   std::uint32_t m_round = 0;
+  struct Query_hash {
+    std::size_t operator()(const std::array<std::uint64_t, 3>& q) const {
+      return static_cast<std::size_t>((q[0] * 0x9E3779B97F4A7C15ull) ^ (q[1] * 0xC2B2AE3D27D4EB4Full) ^ q[2]);
+    }
+  };
+  std::unordered_map<std::array<std::uint64_t, 3>, bool, Query_hash> m_known;  // (from, to, limit): found
+  static std::uint64_t bits_of(double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  }
 };
 
 inline std::array<double, 4> bounding_box(const Point_matrix& m) {
@@ -818,10 +855,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     std::vector<Unconfirmed> unconfirmed;
     std::size_t checked_fixes = 0;
     for (std::size_t t = 0; t < trips.size(); ++t) {
-      if (stop_at(0.0, 0.3, checked_fixes)) return S;
+      if (stop_at(0.0, 0.25, checked_fixes)) return S;
       const auto& o = order[t];
       for (std::size_t i = 0; i + 1 < o.size(); ++i) {
-        if (i % progress_stride == progress_stride - 1 && stop_at(0.0, 0.3, checked_fixes + i)) return S;
+        if (i % progress_stride == progress_stride - 1 && stop_at(0.0, 0.25, checked_fixes + i)) return S;
         const Gps_fix& a = trips[t][o[i]];
         const Gps_fix& b = trips[t][o[i + 1]];
         const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
@@ -890,9 +927,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     }
     std::size_t done = 0;
     for (std::size_t t = 0; t < trips.size(); ++t) {
-      if (stop_at(0.3, 0.0, done)) return S;
+      if (stop_at(0.25, 0.05, done)) return S;
       const auto& o = order[t];
       for (std::size_t i = 0; i + 1 < o.size(); ++i) {
+        if (i % progress_stride == progress_stride - 1 && stop_at(0.25, 0.05, done + i)) return S;
         if (use[t][i] == densify) continue;
         const Gps_fix& a = trips[t][o[i]];
         const Gps_fix& b = trips[t][o[i + 1]];
