@@ -293,9 +293,47 @@ class Uniform_grid {
   using Point = std::array<double, D>;
 
   Uniform_grid(const std::vector<Point>& points, double cell) : m_frame(points, cell) {
+    build(points, use_core_cells(m_frame, points, points.size()));
+  }
+  /// The same grid in a frame already chosen: `frame` made from the same positions (in any order: the frame
+  /// and its core depend on the positions alone), and `dense_cells` what use_core_cells(frame, those
+  /// positions, their number) returned (a caller that orders its points by the frame's cells first does not
+  /// pay for the frame twice).
+  Uniform_grid(const std::vector<Point>& points, const Grid_frame<D>& frame, bool dense_cells)
+      : m_frame(frame) {
+    build(points, dense_cells);
+  }
+
+  double cell_size() const { return m_frame.cell_size(); }
+  /// The frame (its core box, if any: Grid_frame::order_key() orders points as the grid keeps them).
+  const Grid_frame<D>& frame() const { return m_frame; }
+
+  /// Calls f(j) for every point j in the 3^D cells around p (a superset of the points within cell_size()):
+  /// the dense cells first (nested over the axes), then the hashed ones (by key).
+  template <class F>
+  void for_each_candidate(const Point& p, F&& f) const {
+    if (m_dense)
+      m_frame.for_each_neighbor_index(p, [&](std::int64_t c) {
+        for (std::uint32_t i = m_offsets[std::size_t(c)]; i < m_offsets[std::size_t(c) + 1]; ++i)
+          f(m_items[i]);
+      });
+    if (m_cells.empty()) return;
+    const auto visit = [&](std::uint64_t k) {
+      const auto it = m_cells.find(k);
+      if (it == m_cells.end()) return;
+      for (std::uint32_t i = m_key_offsets[it->second]; i < m_key_offsets[it->second + 1]; ++i) f(m_items[i]);
+    };
+    if (!m_dense)
+      m_frame.for_each_neighbor_key(p, visit);
+    else if (m_frame.reaches_beyond_core(p))
+      m_frame.for_each_key_beyond_core(p, visit);
+  }
+
+ private:
+  void build(const std::vector<Point>& points, bool dense_cells) {
     const std::size_t n = points.size();
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;  // the points in hashed cells
-    if (use_core_cells(m_frame, points, n)) {  // a counting sort into a dense array of cells
+    if (dense_cells) {  // a counting sort into a dense array of cells
       m_dense = true;
       m_offsets.assign(static_cast<std::size_t>(m_frame.cells()) + 1, 0);
       std::vector<std::int64_t> index(n);
@@ -332,32 +370,6 @@ class Uniform_grid {
     m_key_offsets.push_back(static_cast<std::uint32_t>(n));
   }
 
-  double cell_size() const { return m_frame.cell_size(); }
-  /// The frame (its core box, if any: Grid_frame::order_key() orders points as the grid keeps them).
-  const Grid_frame<D>& frame() const { return m_frame; }
-
-  /// Calls f(j) for every point j in the 3^D cells around p (a superset of the points within cell_size()):
-  /// the dense cells first (nested over the axes), then the hashed ones (by key).
-  template <class F>
-  void for_each_candidate(const Point& p, F&& f) const {
-    if (m_dense)
-      m_frame.for_each_neighbor_index(p, [&](std::int64_t c) {
-        for (std::uint32_t i = m_offsets[std::size_t(c)]; i < m_offsets[std::size_t(c) + 1]; ++i)
-          f(m_items[i]);
-      });
-    if (m_cells.empty()) return;
-    const auto visit = [&](std::uint64_t k) {
-      const auto it = m_cells.find(k);
-      if (it == m_cells.end()) return;
-      for (std::uint32_t i = m_key_offsets[it->second]; i < m_key_offsets[it->second + 1]; ++i) f(m_items[i]);
-    };
-    if (!m_dense)
-      m_frame.for_each_neighbor_key(p, visit);
-    else if (m_frame.reaches_beyond_core(p))
-      m_frame.for_each_key_beyond_core(p, visit);
-  }
-
- private:
   Grid_frame<D> m_frame;
   bool m_dense = false;                           // m_offsets per dense cell
   std::vector<std::uint32_t> m_items, m_offsets;  // the dense cells' points, then the hashed cells'

@@ -340,13 +340,13 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
           }
           return std::pow(base, options.alpha);
         };
+        // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory.
+        // The result does not depend on it: weights are sums of fixed-point integers (exact in any order),
+        // and the heap pops by (weight, priority) alone. The grid below keeps the frame and core box chosen
+        // here (from the positions alone, whatever their order).
+        FeatureRecon::internal::Grid_frame<D> frame(positions, cell);
+        const bool dense_cells = FeatureRecon::internal::use_core_cells(frame, positions, m);
         {
-          // The stage's items in grid-cell order (ties by input index): neighbours then lie close in memory.
-          // The result does not depend on it: weights are sums of fixed-point integers (exact in any order),
-          // and the heap pops by (weight, priority) alone.
-          // The frame and core box of the grid below (chosen from the positions alone, whatever their order).
-          FeatureRecon::internal::Grid_frame<D> frame(positions, cell);
-          FeatureRecon::internal::use_core_cells(frame, positions, m);
           std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m);
           for (std::size_t i = 0; i < m; ++i)
             keyed[i] = {frame.order_key(frame.cell_of(positions[i])), active[i]};
@@ -356,7 +356,7 @@ Sampling_result<OutputIterator> weighted_sample_elimination(const ItemRange& ite
             positions[i] = where[active[i]];
           }
         }
-        const FeatureRecon::internal::Uniform_grid<D> grid(positions, cell);
+        const FeatureRecon::internal::Uniform_grid<D> grid(positions, frame, dense_cells);
         // Calls f(j) for the candidates j near item i; on the torus each once, at its nearest image (with
         // 2 r_max above half a period, several images of j can lie within reach).
         auto for_each_candidate = [&](std::size_t i, const auto& f) {
