@@ -214,8 +214,8 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   EXPECT_EQ(watched.status, Status::success);
   EXPECT_EQ(watched.points.data, plain.points.data);  // watching changes nothing
   ASSERT_GE(seen.size(), 43u);  // each trip in the segment check, each trip sampled, then the density filter
-  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.3; }),
-            21);  // the segment check
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t < 0.25; }),
+            21);  // the segment check (no stand-down: nothing between 0.25 and 0.3)
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_GE(seen.front(), 0.0);
   EXPECT_LE(seen.back(), 1.0);
@@ -230,10 +230,10 @@ TEST(GpsTraces, ProgressIsReportedAndAStopEndsTheSampling) {
   seen.clear();
   o.progress = test::recording_progress(seen);
   ASSERT_EQ(sample_gps_traces(long_trip, 20.0, o).status, Status::success);
-  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0 && t < 0.3; }), 2);
+  EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0 && t < 0.25; }), 2);
   EXPECT_EQ(std::count_if(seen.begin(), seen.end(), [](double t) { return t > 0.3 && t < 0.8; }), 2);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
-  for (const auto& [stop_at, stage_end] : {std::pair{0.1, 0.3}, std::pair{0.5, 0.8}}) {
+  for (const auto& [stop_at, stage_end] : {std::pair{0.1, 0.25}, std::pair{0.5, 0.8}}) {
     double refused = -1;  // the first report answered with stop: inside the trip, and the last report
     std::size_t later = 0;
     o.progress = [&, stop_at = stop_at](double t) {
@@ -844,7 +844,7 @@ TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
   // with one chord from the eastward street to the northward one, 382 to 424 m long, and a lone trip 2 km
   // north turning at a corner no other trip passes. None of the six checked segments is confirmed: the check
   // stands down. The chords' ends are joined by the fixes along the L (a path through cells of 15 m, the
-  // sample spacing, of 1.27 to 1.32 times the chord plus two cells): they keep the check's verdict (longer
+  // sample spacing, of 1.29 to 1.34 times the chord plus two cells): they keep the check's verdict (longer
   // than 4 x 20: the trips break), and no sample lies inside the block. The lone trip's segments join no
   // fixes and are densified as before.
   std::vector<Gps_trip> trips = l_shaped_streets();
@@ -885,11 +885,11 @@ TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
   EXPECT_EQ(again.points.data, S.points.data);
   EXPECT_EQ(again.trip_links, S.trip_links);
   EXPECT_EQ(again.joined_segments, 4u);
-  // The factor pinned on both sides of the chords' 1.27 to 1.32 (with the two cells added; 1.34 to 1.39
-  // without them).
-  o.stand_down_path_factor = 1.33;
+  // The factor pinned on both sides of the chords' 1.29 to 1.34 (paths of 35.4 to 39.4 cells of 15 m, the
+  // bound rounded down to whole cells, the two cells added; 1.36 to 1.41 without them).
+  o.stand_down_path_factor = 1.35;
   EXPECT_EQ(sample_gps_traces(trips, 30.0, o).joined_segments, 4u);
-  o.stand_down_path_factor = 1.25;
+  o.stand_down_path_factor = 1.28;
   const Gps_trace_sample tight = sample_gps_traces(trips, 30.0, o);
   EXPECT_EQ(tight.joined_segments, 0u);
   EXPECT_GT(farthest_below(tight), 40.0);
@@ -925,8 +925,8 @@ TEST(GpsTraces, TheStandDownLeavesChordsWhoseEndsTheFixesJoin) {
 TEST(GpsTraces, PathsThroughTheFixesMatchADijkstraOracle) {
   // Fix_paths against Dijkstra on the 8-connected grid of occupied cells: for random fixes (half of the
   // cells of a 24 x 24 box, cells of side 2.5), every pair of places is joined within its shortest length
-  // (between cell centres, times the cell) and not within 0.999 of it; places in other components or in
-  // cells without a fix are never joined.
+  // (between cell centres, rounded up to whole cells, times the cell) and not within half a cell less, in
+  // either direction; places in other components or in cells without a fix are never joined.
   const double cell = 2.5;
   std::mt19937 rng(20261207);
   for (int round = 0; round < 20; ++round) {
@@ -966,11 +966,12 @@ TEST(GpsTraces, PathsThroughTheFixesMatchADijkstraOracle) {
       if (it == best.end()) {
         EXPECT_FALSE(paths.joined(a[0], a[1], b[0], b[1], 1e9)) << round << " " << pair;
       } else {
-        const double shortest = it->second * cell;
-        EXPECT_TRUE(paths.joined(a[0], a[1], b[0], b[1], shortest * (1 + 1e-9) + 1e-9))
-            << round << " " << pair;
-        if (shortest > 0) {
-          EXPECT_FALSE(paths.joined(a[0], a[1], b[0], b[1], shortest * 0.999)) << round << " " << pair;
+        const double whole = std::ceil(it->second - 1e-9);  // in cells
+        EXPECT_TRUE(paths.joined(a[0], a[1], b[0], b[1], whole * cell * (1 + 1e-12))) << round << " " << pair;
+        EXPECT_TRUE(paths.joined(b[0], b[1], a[0], a[1], whole * cell * (1 + 1e-12))) << round << " " << pair;
+        if (whole > 0) {
+          EXPECT_FALSE(paths.joined(a[0], a[1], b[0], b[1], (whole - 0.5) * cell)) << round << " " << pair;
+          EXPECT_FALSE(paths.joined(b[0], b[1], a[0], a[1], (whole - 0.5) * cell)) << round << " " << pair;
         }
       }
     }
@@ -992,11 +993,12 @@ TEST(GpsTraces, PathsThroughTheFixesMatchADijkstraOracle) {
 }
 
 TEST(GpsTraces, APathSearchGivesUpAfterItsVisits) {
-  // A filled block of 300 x 300 cells with a wall across it, open only at its top: two places 4 cells apart
-  // on either side of the wall near its foot are joined by a path of 600 cells around it. Within a length of
-  // 650 cells the ellipse of cells the bound leaves holds most of the block; the search would visit about
-  // 60,000 cells before it turned the wall's top, and gives up after 32 x 652 (no path: the stand-down
-  // densifies such a segment, as before the rule). With the wall open at its foot it finds the short path.
+  // A filled block of 300 x 300 cells with a wall across it, open only at its top: two places 6 cells apart
+  // on either side of the wall near its foot are joined by a path of about 580 cells around it. Within a
+  // length of 650 cells the ellipse of cells the bound leaves holds most of the block; the search would visit
+  // about 48,000 cells before it turned the wall's top, and gives up after 32 x 652 (no path: the stand-down
+  // densifies such a segment, as before the rule), the same both ways. With the wall open at its foot it
+  // finds the short path.
   std::vector<std::array<double, 2>> places, open_foot;
   for (int x = 0; x < 300; ++x)
     for (int y = 0; y < 300; ++y) {
@@ -1006,18 +1008,20 @@ TEST(GpsTraces, APathSearchGivesUpAfterItsVisits) {
     }
   skeleton::internal::Fix_paths around(places, 1.0), through(open_foot, 1.0);
   EXPECT_FALSE(around.joined(147.5, 10.5, 153.5, 10.5, 650));
+  EXPECT_FALSE(around.joined(153.5, 10.5, 147.5, 10.5, 650));
   EXPECT_TRUE(through.joined(147.5, 10.5, 153.5, 10.5, 30));
-  // Within a length that leaves only a narrow ellipse, the same search ends without a path at once, and
-  // along the open top it finds one.
+  // Within a length of 100 cells (a disc of about 50 around the two places, 2,326 cells visited, below the
+  // 3,264 allowed) no path, and along the open top the short one.
   EXPECT_FALSE(around.joined(147.5, 10.5, 153.5, 10.5, 100));
   EXPECT_TRUE(around.joined(147.5, 290.5, 153.5, 290.5, 30));
 }
 
 TEST(GpsTraces, TheStandDownAsksToStopWithinATrip) {
   // One trip of 9,001 fixes driving back and forth along a 424 m chord: none of its segments is confirmed,
-  // the check stands down, and the search for paths runs through 9,000 segments of one trip. The callback is
-  // asked within the trip (every 4,096 fixes) at fractions between 0.25 and 0.3, and stopping there returns
-  // at once (status interrupted).
+  // the check stands down, and it looks at the 9,000 segments of one trip (each answered at once: its ends
+  // lie in cells of different components). The callback is asked within the trip (every 4,096 fixes) at
+  // fractions between 0.25 and 0.3, never going back, and stopping there returns at once (status
+  // interrupted).
   Gps_trip trip;
   for (int i = 0; i <= 9000; ++i)
     trip.push_back({i % 2 == 0 ? 0.0 : 300.0, i % 2 == 0 ? 0.0 : 300.0, 40.0 * i});
@@ -1032,8 +1036,40 @@ TEST(GpsTraces, TheStandDownAsksToStopWithinATrip) {
   ASSERT_FALSE(asked.empty());
   EXPECT_GT(asked.back(), 0.25);
   EXPECT_LT(asked.back(), 0.3);
+  EXPECT_TRUE(std::is_sorted(asked.begin(), asked.end()));
   EXPECT_TRUE(S.all_segments_used);
   EXPECT_EQ(S.checked_segments, 9000u);
+  EXPECT_EQ(S.confirmed_segments, 0u);
+}
+
+TEST(GpsTraces, TheStandDownAsksToStopAfterLongSearches) {
+  // A block of 100 x 100 fixes 15 m apart (one trip each) split by a wall 6 columns wide, open only at its
+  // top row, and one trip of 600 fixes crossing the wall back and forth near its foot: 599 segments of about
+  // 1,000 m, none confirmed (the wall's middle lies 45 m from every fix). Their ends are joined only around
+  // the wall (about 200 cells, beyond the bound of 2.5 x 67 + 2 cells): each search fails after up to
+  // 32 x 170 cells, and their fixes move a cell each time, so no answer is reused. Fewer than 4,096 fixes:
+  // the callback is asked within the trip because of the cells searched (2^20), between 0.25 and 0.3.
+  Gps_trip crossing;
+  for (int i = 0; i < 600; ++i)
+    crossing.push_back(
+        {i % 2 == 0 ? 7.5 + 15.0 * (i % 7) : 1492.5 - 15.0 * (i % 5), 7.5 + 15.0 * (i % 60), 60.0 * i});
+  std::vector<Gps_trip> trips{crossing};  // first: the next ask before a trip comes after it
+  for (int x = 0; x < 100; ++x)
+    for (int y = 0; y < 100; ++y)
+      if (x < 47 || x > 52 || y == 99) trips.push_back({{15.0 * x + 7.5, 15.0 * y + 7.5, 0}});
+  Gps_trace_options o;
+  std::vector<double> asked;
+  o.progress = [&](double fraction) {
+    asked.push_back(fraction);
+    return !(fraction > 0.25 && fraction < 0.3);
+  };
+  const Gps_trace_sample S = sample_gps_traces(trips, 30.0, o);
+  EXPECT_EQ(S.status, Status::interrupted);
+  ASSERT_FALSE(asked.empty());
+  EXPECT_GT(asked.back(), 0.25);
+  EXPECT_LT(asked.back(), 0.25 + 0.05 * 599 / double(S.fixes));  // within the crossing trip
+  EXPECT_TRUE(std::is_sorted(asked.begin(), asked.end()));
+  EXPECT_TRUE(S.all_segments_used);
   EXPECT_EQ(S.confirmed_segments, 0u);
 }
 

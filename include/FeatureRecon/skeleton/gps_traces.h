@@ -18,7 +18,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -131,7 +130,8 @@ struct Gps_trace_options {
   /// Where the check stands down, a segment it did not confirm keeps the check's verdict (link its ends or
   /// break the trip) when the fixes of the traces, without it, already join its two ends: a path through the
   /// cells of side sample_spacing that hold a fix, each cell joined to its 8 neighbours, at most this many
-  /// times the segment long (plus two cells; measured between cell centres). Few confirmed segments then
+  /// times the segment long plus two cells (measured between cell centres, the bound rounded down to whole
+  /// cells). Few confirmed segments then
   /// mean chords across blocks between fixes far apart in time, not traces too sparse to judge: a fleet of
   /// 4,000 vehicles logging every 60 to 120 s on a grid city confirmed 16 % of its segments, and densifying
   /// all of them drew 116,000 chords across its blocks (F 0.23 in 27 s and 1.1 GB; F 0.96 in 4 s with the
@@ -139,8 +139,8 @@ struct Gps_trace_options {
   /// before (small cities of 150 trips logging every 30 to 45 s: no segment was joined). The search for a
   /// path gives up, and the segment is densified, after visiting 32 cells per cell of the length allowed
   /// (a failing search would otherwise visit every cell within that length: quadratic; the searches that
-  /// succeeded on the cities measured visited at most 16). Default 2.5 (benchmark/README.md, "Segment check:
-  /// the stand-down"); 0: the stand-down densifies every segment.
+  /// succeeded on the cities measured visited at most 16.3 per cell). Default 2.5 (benchmark/README.md,
+  /// "Segment check: the stand-down"); 0: the stand-down densifies every segment.
   double stand_down_path_factor = 2.5;
   /// The turn rule is trusted only where the traces show that it tells streets: a segment the trip drives
   /// straight through must be confirmed by fixes at least this often among the checked segments (the 95 %
@@ -180,8 +180,10 @@ struct Gps_trace_options {
   /// refusal can come before a stop that the progress callback would have asked for later in the sampling.
   /// Default 2^30; 0: no limit.
   std::size_t max_density_pairs = std::size_t(1) << 30;
-  /// Called with the fraction done (per trip during the segment check and while sampling, every 4096 samples
-  /// of the density filter); returning false stops the sampling (Gps_trace_sample::status interrupted).
+  /// Called with the fraction done: before each trip and every 4,096 fixes within one during the segment
+  /// check (0 to 0.25), its stand-down (0.25 to 0.3; also every 2^20 cells its searches visit) and the
+  /// sampling (0.3 to 0.8), and every 4,096 samples of the density filter; returning false stops the sampling
+  /// (Gps_trace_sample::status interrupted).
   Progress_callback progress;
 };
 
@@ -320,8 +322,11 @@ class Planar_grid {
 class Fix_paths {
  public:
   /// Searches give up after this many cells per cell of their length bound: those that succeeded on the 41
-  /// cities of benchmark/README.md ("Segment check: the stand-down") took at most 16.
+  /// cities of benchmark/README.md ("Segment check: the stand-down") took at most 16.3 (a synthetic city of
+  /// 5,000 trips every 90 s; 5.4 in the fleet, 2.4 in Chicago thinned to every 40th fix).
   static constexpr double kMaxVisitsPerCell = 32;
+  /// Cells taken from the queues of all searches so far (for the progress callback: the work done).
+  std::uint64_t visits() const { return m_visits; }
 
   Fix_paths(const std::vector<std::array<double, 2>>& places, double cell) : m_cell(cell) {
     for (const auto& p : places) m_cells.push_back(key(p[0], p[1]));
@@ -355,17 +360,22 @@ class Fix_paths {
     m_round_of.assign(m_cells.size(), 0);
   }
 
-  /// Whether a path of cells holding fixes, at most `length` long, joins the cells of (ax, ay) and (bx, by)
-  /// (false when either holds no fix, or `length` is negative or NaN), found within kMaxVisitsPerCell
-  /// (length / cell + 2) cells taken from the search's queue.
+  /// Whether a path of cells holding fixes, at most L cells long, joins the cells of (ax, ay) and (bx, by),
+  /// L = floor(length / cell) (false when either cell holds no fix, or `length` is negative or NaN), found
+  /// within kMaxVisitsPerCell (L + 2) cells taken from the search's queue. The same both ways.
   bool joined(double ax, double ay, double bx, double by, double length) {
     if (!(length >= 0)) return false;  // NaN too
     const auto ia = m_id.find(key(ax, ay)), ib = m_id.find(key(bx, by));
     if (ia == m_id.end() || ib == m_id.end()) return false;
-    const std::uint32_t from = ia->second, to = ib->second;
+    // From the lower cell id to the higher: the same answer both ways (a search that gives up depends on
+    // where it starts), and traffic in both directions shares the memo below.
+    const std::uint32_t from = std::min(ia->second, ib->second), to = std::max(ia->second, ib->second);
     if (m_component[from] != m_component[to]) return false;
     if (from == to) return true;
-    const double limit = length / m_cell;  // in cells
+    // The bound in whole cells (rounded down: fixes a few metres apart ask the same question), at most the
+    // longest path without a repeated cell (a huge length would make the give-up below never come).
+    const double limit =
+        std::floor(std::min(length / m_cell, std::sqrt(2.0) * static_cast<double>(m_cells.size())));
     const auto& target = m_cells[to];
     auto octile = [&](std::uint32_t i) {
       const double dx = std::fabs(double(m_cells[i][0] - target[0])),
@@ -373,8 +383,8 @@ class Fix_paths {
       return std::max(dx, dy) + (std::sqrt(2.0) - 1) * std::min(dx, dy);
     };
     if (octile(from) > limit) return false;
-    // The same query again (a route driven by many trips with the same fixes): the answer found before.
-    const std::array<std::uint64_t, 3> query{from, to, bits_of(limit)};
+    // The same query again (a route driven by many trips): the answer found before.
+    const std::array<std::uint64_t, 3> query{from, to, static_cast<std::uint64_t>(limit)};
     const auto known = m_known.find(query);
     if (known != m_known.end()) return known->second;
     const bool found = [&] {
@@ -400,6 +410,7 @@ class Fix_paths {
       double visits = 0;
       while (!open.empty()) {
         if (++visits > max_visits) return false;
+        ++m_visits;
         const auto [order, cost, i] = open.top();
         open.pop();
         if (cost > m_cost[i]) continue;  // reached more cheaply since it was queued
@@ -438,11 +449,7 @@ class Fix_paths {
     }
   };
   std::unordered_map<std::array<std::uint64_t, 3>, bool, Query_hash> m_known;  // (from, to, limit): found
-  static std::uint64_t bits_of(double x) {
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-  }
+  std::uint64_t m_visits = 0;
 };
 
 inline std::array<double, 4> bounding_box(const Point_matrix& m) {
@@ -925,12 +932,19 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       for (std::size_t i = 0; i < fixes.rows; ++i) places[i] = {fixes.row(i)[0], fixes.row(i)[1]};
       paths = std::make_unique<internal::Fix_paths>(places, S.sample_spacing);
     }
+    // The callback is asked before each trip, and within one every 4,096 fixes or 2^20 cells searched.
     std::size_t done = 0;
+    std::uint64_t asked_at = 0;
     for (std::size_t t = 0; t < trips.size(); ++t) {
       if (stop_at(0.25, 0.05, done)) return S;
+      asked_at = paths ? paths->visits() : 0;
       const auto& o = order[t];
       for (std::size_t i = 0; i + 1 < o.size(); ++i) {
-        if (i % progress_stride == progress_stride - 1 && stop_at(0.25, 0.05, done + i)) return S;
+        const bool searched = paths && paths->visits() - asked_at >= (std::uint64_t(1) << 20);
+        if (i % progress_stride == progress_stride - 1 || searched) {
+          if (stop_at(0.25, 0.05, done + i)) return S;
+          asked_at = paths ? paths->visits() : 0;
+        }
         if (use[t][i] == densify) continue;
         const Gps_fix& a = trips[t][o[i]];
         const Gps_fix& b = trips[t][o[i + 1]];
