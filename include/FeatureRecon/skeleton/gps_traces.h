@@ -750,11 +750,12 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
   S.segment_turn_tolerance = options.segment_turn_tolerance;
   std::vector<std::vector<char>> use(trips.size());
   for (std::size_t t = 0; t < trips.size(); ++t) use[t].assign(trips[t].size(), densify);
+  std::vector<std::array<double, 2>> places;  // the distinct fix positions, when the check runs
   if (S.segment_support > 0 && S.max_link_gap > 0) {
     const double support = S.segment_support, support2 = support * support;
     // The distinct fix positions (a parked vehicle logs one place many times) on a grid of cells at least
     // `support` wide and at most about 2^20 across the extent (a tiny support must not overflow the indices).
-    std::vector<std::array<double, 2>> places(fixes.rows);
+    places.resize(fixes.rows);
     for (std::size_t i = 0; i < fixes.rows; ++i) places[i] = {fixes.row(i)[0], fixes.row(i)[1]};
     std::sort(places.begin(), places.end());
     places.erase(std::unique(places.begin(), places.end()), places.end());
@@ -927,11 +928,8 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
     // (Gps_trace_options::stand_down_path_factor), which keep the check's verdict.
     S.all_segments_used = true;
     std::unique_ptr<internal::Fix_paths> paths;
-    if (options.stand_down_path_factor > 0) {
-      std::vector<std::array<double, 2>> places(fixes.rows);
-      for (std::size_t i = 0; i < fixes.rows; ++i) places[i] = {fixes.row(i)[0], fixes.row(i)[1]};
-      paths = std::make_unique<internal::Fix_paths>(places, S.sample_spacing);
-    }
+    if (options.stand_down_path_factor > 0)
+      paths = std::make_unique<internal::Fix_paths>(places, S.sample_spacing);  // of the check's positions
     // The callback is asked before each trip, and within one every 4,096 fixes or 2^20 cells searched.
     std::size_t done = 0;
     std::uint64_t asked_at = 0;
@@ -958,6 +956,7 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
       done += o.size();
     }
   }
+  std::vector<std::array<double, 2>>().swap(places);  // not needed by the sampling
   internal::Planar_grid grid(box[0], box[1], box[2], box[3], cell, fixes.rows);
   std::vector<bool> has_direction;  // per sample: a point of a moving trip joined it
   // The pairs the density filter will compare (every sample with the samples in the 3 x 3 cells of side
