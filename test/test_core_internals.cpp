@@ -6,6 +6,7 @@
 // alignments, the static parallel split, and the ready-made traits.
 #include <FeatureRecon/internal/Compressed_lists.h>
 #include <FeatureRecon/internal/Large_array_allocator.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/internal/parallel.h>
 #include <FeatureRecon/internal/random.h>
 #include <FeatureRecon/point_traits.h>
@@ -618,3 +619,52 @@ TEST(TestUtilities, ContainsQuotesTheTextAndThePart) {
 }
 
 }  // namespace
+
+// The shared union-find against components found by a breadth-first search: every set is named by its
+// smallest element whatever the order of the unions, unite() says whether it joined two sets, and reset()
+// starts over.
+TEST(CoreInternals, UnionFindNamesEachSetByItsSmallestElement) {
+  std::mt19937_64 rng(31);
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::size_t n = 1 + rng() % 60, m = rng() % (2 * n);
+    std::vector<std::array<std::uint32_t, 2>> edges(m);
+    for (auto& e : edges) e = {std::uint32_t(rng() % n), std::uint32_t(rng() % n)};
+    std::vector<std::vector<std::uint32_t>> adjacent(n);
+    for (const auto& e : edges) {
+      adjacent[e[0]].push_back(e[1]);
+      adjacent[e[1]].push_back(e[0]);
+    }
+    std::vector<std::uint32_t> smallest(n, std::uint32_t(n));  // by breadth-first search from 0, 1, ...
+    std::size_t components = 0;
+    for (std::uint32_t s = 0; s < n; ++s) {
+      if (smallest[s] != n) continue;
+      ++components;
+      std::vector<std::uint32_t> queue{s};
+      smallest[s] = s;
+      for (std::size_t q = 0; q < queue.size(); ++q)
+        for (const std::uint32_t w : adjacent[queue[q]])
+          if (smallest[w] == n) {
+            smallest[w] = s;
+            queue.push_back(w);
+          }
+    }
+    FeatureRecon::internal::Union_find<std::uint32_t> sets(n + 5);
+    sets.unite(0, std::uint32_t(n + 4));  // joined before the reset: forgotten
+    sets.reset(n);
+    ASSERT_EQ(sets.size(), n);
+    std::size_t joins = 0;
+    for (const auto& e : edges) joins += sets.unite(e[0], e[1]);
+    EXPECT_EQ(n - joins, components);
+    EXPECT_EQ(sets.labels(), smallest);
+    for (const auto& e : edges) EXPECT_FALSE(sets.unite(e[1], e[0]));
+    // Signed indices and the large-array allocator.
+    FeatureRecon::internal::Union_find<std::int32_t,
+                                       FeatureRecon::internal::Large_array_allocator<std::int32_t>>
+        signed_sets(n);
+    for (std::size_t k = m; k-- > 0;) signed_sets.unite(std::int32_t(edges[k][1]), std::int32_t(edges[k][0]));
+    for (std::uint32_t v = 0; v < n; ++v)
+      ASSERT_EQ(signed_sets.find(std::int32_t(v)), std::int32_t(smallest[v]));
+    signed_sets.release();
+    EXPECT_EQ(signed_sets.size(), 0u);
+  }
+}

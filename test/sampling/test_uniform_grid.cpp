@@ -737,6 +737,34 @@ TEST(UniformGrid, CoreCellsBesideFarOutliers) {
   expect_candidates_at<2>(fine, 1e-4, queries_around<2>(fine, 1e-4, 3));
 }
 
+// A grid in a ready frame (the elimination's stages order their points by the frame's cells first) finds the
+// same candidates as one that chooses its frame; with assertions on, a frame of other positions or a flag
+// that is not use_core_cells()'s is refused.
+TEST(UniformGrid, AReadyFrameMustBeTheFrameOfThePoints) {
+  using FeatureRecon::internal::Uniform_grid;
+  using FeatureRecon::internal::use_core_cells;
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::array<double, 2>> p(3000);
+  for (auto& q : p) q = {u(rng), u(rng)};
+  p.push_back({1e7, 0});
+  Grid_frame<2> frame(p, 0.01);
+  const bool dense = use_core_cells(frame, p, p.size());
+  ASSERT_TRUE(dense);
+  std::vector<std::array<double, 2>> reversed(p.rbegin(), p.rend());  // the frame depends on the set alone
+  const Uniform_grid<2> ready(reversed, frame, dense), own(reversed, 0.01);
+  for (const auto& q : queries_around<2>(p, 0.01, 13)) {
+    std::vector<std::uint32_t> a, b;
+    ready.for_each_candidate(q, [&](std::uint32_t j) { a.push_back(j); });
+    own.for_each_candidate(q, [&](std::uint32_t j) { b.push_back(j); });
+    ASSERT_EQ(a, b);
+  }
+  EXPECT_THROW(Uniform_grid<2>(p, frame, !dense), FeatureRecon::Precondition_error);
+  std::vector<std::array<double, 2>> moved = p;
+  moved[5][0] = -0.5;  // widens the bounding box
+  EXPECT_THROW(Uniform_grid<2>(moved, frame, dense), FeatureRecon::Precondition_error);
+}
+
 // A dynamic grid with a core box takes points beyond the core (into its hash map), and the torus look-up of a
 // grid with a core finds the pairs across the seam whose other end lies beyond the core: a torus of periods
 // (1e7, 1) whose points lie in [0, 1)^2 but for a few near x = 1e7, the nearest images of points near x = 0.

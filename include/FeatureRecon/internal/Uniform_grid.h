@@ -13,6 +13,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <FeatureRecon/assertions.h>
+
 namespace FeatureRecon {
 namespace internal {
 
@@ -66,6 +68,12 @@ class Grid_frame {
   double cells() const { return m_cells; }
   /// Whether set_core() chose a core box: cells outside it may hold points.
   bool has_core() const { return m_core; }
+  /// Whether `other` numbers the same cells the same way (the same origin, cell size, box and core).
+  bool same_box(const Grid_frame& other) const {
+    return m_low == other.m_low && m_cell == other.m_cell && m_hashed == other.m_hashed &&
+           m_core == other.m_core && m_origin == other.m_origin && m_count == other.m_count &&
+           m_cells == other.m_cells;
+  }
   /// Index of cell c in a dense array of cells(), or -1 when c lies outside the box (the bounding box: no
   /// point there; the core box: see has_core()).
   std::int64_t dense_index(const Cell& c) const {
@@ -299,8 +307,15 @@ class Uniform_grid {
   /// and its core depend on the positions alone), and `dense_cells` what use_core_cells(frame, those
   /// positions, their number) returned (a caller that orders its points by the frame's cells first does not
   /// pay for the frame twice).
+  /// With assertions on (FEATURERECON_DEBUG), the frame is rebuilt from `points` and both are checked.
   Uniform_grid(const std::vector<Point>& points, const Grid_frame<D>& frame, bool dense_cells)
       : m_frame(frame) {
+#if !defined(NDEBUG) || defined(FEATURERECON_DEBUG)
+    Grid_frame<D> fresh(points, frame.cell_size());
+    const bool fresh_dense = use_core_cells(fresh, points, points.size());
+    FEATURERECON_assertion(fresh_dense == dense_cells);
+    FEATURERECON_assertion(fresh.same_box(frame));
+#endif
     build(points, dense_cells);
   }
 

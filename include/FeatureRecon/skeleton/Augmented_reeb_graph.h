@@ -7,6 +7,7 @@
 #include <FeatureRecon/config.h>
 #include <FeatureRecon/internal/Compressed_lists.h>
 #include <FeatureRecon/internal/Large_array_allocator.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/internal/Link_cut_tree.h>
 #include <FeatureRecon/skeleton/skeleton_options.h>
@@ -477,20 +478,13 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
   // Union-find over the up-edges of the current vertex, joined by the lower halves born there: slot[e] is
   // the edge's index in the vertex's up_edges.
   FeatureRecon::internal::Large_vector<std::int32_t> slot(E, -1);
-  std::vector<std::int32_t> group_parent;
-  auto find = [&](std::int32_t i) {
-    while (group_parent[i] != i) i = group_parent[i] = group_parent[group_parent[i]];
-    return i;
-  };
+  FeatureRecon::internal::Union_find<std::int32_t> groups;
   // Union-find over the edges of K, joining two edges into the same vertex c by the upper halves with c on
   // top (the "fan" of c below the sweep level). At step c its classes are the down-edges of c joined by
   // triangles with c on top: the parts of the star below c that lie in one level-set component.
-  FeatureRecon::internal::Large_vector<std::uint32_t> fan_parent(E);
-  std::iota(fan_parent.begin(), fan_parent.end(), std::uint32_t(0));
-  auto fan_find = [&](std::uint32_t i) {
-    while (fan_parent[i] != i) i = fan_parent[i] = fan_parent[fan_parent[i]];
-    return i;
-  };
+  FeatureRecon::internal::Union_find<std::uint32_t,
+                                     FeatureRecon::internal::Large_array_allocator<std::uint32_t>>
+      fans(E);
 
   if (stop_here(sweep_start)) return R;
   for (std::size_t step = 0; step < n; ++step) {
@@ -505,7 +499,7 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     // 1. The level-set components just below x that x touches: each is an arc ending at x. Edges into x
     //    in one fan class are in one component: one root query per class.
     for (const std::uint32_t* e = down_edges.begin(step); e != down_edges.end(step); ++e) {
-      if (fan_find(*e) != *e) continue;
+      if (fans.find(*e) != *e) continue;
       const std::int32_t r = forest.find_root(static_cast<std::int32_t>(*e));
       FEATURERECON_assertion(static_cast<std::size_t>(r) < E);
       if (stamp[r] == below) continue;
@@ -524,16 +518,11 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     //    reject it too: it never enters the link-cut tree (in dense Rips complexes most halves are rejected).
     const std::uint32_t* const up_begin = up_edges.begin(step);
     const std::size_t k = static_cast<std::size_t>(up_edges.end(step) - up_begin);
-    group_parent.resize(k);
-    for (std::size_t i = 0; i < k; ++i) {
-      slot[up_begin[i]] = static_cast<std::int32_t>(i);
-      group_parent[i] = static_cast<std::int32_t>(i);
-    }
+    groups.reset(k);
+    for (std::size_t i = 0; i < k; ++i) slot[up_begin[i]] = static_cast<std::int32_t>(i);
     for (std::size_t t = by_min[step]; t != by_min[step + 1]; ++t) {
       const Tri& tr = tri[t];
-      const std::int32_t i = find(slot[tr.ab]), j = find(slot[tr.ac]);
-      if (i == j) continue;
-      group_parent[std::max(i, j)] = std::min(i, j);
+      if (!groups.unite(slot[tr.ab], slot[tr.ac])) continue;
       insert_level_edge(static_cast<std::int32_t>(tr.ab), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ab],
                         true);
     }
@@ -543,16 +532,14 @@ Augmented_reeb_graph compute_augmented_reeb_graph(const Simplicial_complex_2& K,
     //    the new half: the forest rejects it (a tie), and the fan union-find skips the query.
     for (const std::uint32_t* t = by_mid.begin(step); t != by_mid.end(step); ++t) {
       const Tri& tr = tri[*t];
-      const std::uint32_t i = fan_find(tr.bc), j = fan_find(tr.ac);
-      if (i == j) continue;
-      fan_parent[std::max(i, j)] = std::min(i, j);
+      if (!fans.unite(tr.bc, tr.ac)) continue;
       insert_level_edge(static_cast<std::int32_t>(tr.bc), static_cast<std::int32_t>(tr.ac), upper_rank[tr.ac],
                         false);
     }
     // 4. The components just above x that contain an edge leaving x: each starts an arc at x. Edges out
     //    of x joined by a triangle (x, b, c), one class of the Kruskal above, are in one component.
     for (std::size_t i = 0; i < k; ++i) {
-      if (find(static_cast<std::int32_t>(i)) != static_cast<std::int32_t>(i)) continue;
+      if (groups.find(static_cast<std::int32_t>(i)) != static_cast<std::int32_t>(i)) continue;
       const std::int32_t r = forest.find_root(static_cast<std::int32_t>(up_begin[i]));
       FEATURERECON_assertion(static_cast<std::size_t>(r) < E);
       if (stamp[r] == above) continue;
@@ -590,20 +577,11 @@ inline void Augmented_reeb_graph::finish() {
 namespace internal {
 /// Number of connected components of a Reeb graph (union-find over its nodes).
 inline std::size_t count_components(const Reeb_graph& G) {
-  std::vector<std::size_t> parent(G.nodes.size());
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  FeatureRecon::internal::Union_find<std::size_t> sets(G.nodes.size());
   std::size_t components = G.nodes.size();
   for (const Reeb_graph::Arc& a : G.arcs) {
     if (a.lower >= G.nodes.size() || a.upper >= G.nodes.size()) continue;  // a hand-built graph's bad arc
-    const std::size_t r = find(a.lower), s = find(a.upper);
-    if (r != s) {
-      parent[r] = s;
-      --components;
-    }
+    if (sets.unite(a.lower, a.upper)) --components;
   }
   return components;
 }

@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Union_find.h>
 
 #include <algorithm>
 #include <array>
@@ -313,21 +314,13 @@ inline Connected_components connected_components(const Proximity_graph& g) {
       FeatureRecon::internal::throw_invalid_argument("connected_components", "edge ", i, " (", g.edges[i][0],
                                                      ", ", g.edges[i][1], ") has a vertex beyond the ",
                                                      g.number_of_vertices, " vertices");
-  std::vector<std::uint32_t> parent(g.number_of_vertices);
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<std::uint32_t>(i);
-  auto find = [&](std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const Edge& e : g.edges) {
-    std::uint32_t a = find(e[0]), b = find(e[1]);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // root = smallest vertex
-  }
+  FeatureRecon::internal::Union_find<std::uint32_t> sets(g.number_of_vertices);  // root = smallest vertex
+  for (const Edge& e : g.edges) sets.unite(e[0], e[1]);
   Connected_components cc;
   cc.label.assign(g.number_of_vertices, 0);
   std::vector<std::uint32_t> id(g.number_of_vertices, std::numeric_limits<std::uint32_t>::max());
   for (std::size_t v = 0; v < g.number_of_vertices; ++v) {
-    const std::uint32_t r = find(static_cast<std::uint32_t>(v));
+    const std::uint32_t r = sets.find(static_cast<std::uint32_t>(v));
     if (id[r] == std::numeric_limits<std::uint32_t>::max()) id[r] = static_cast<std::uint32_t>(cc.count++);
     cc.label[v] = id[r];
   }

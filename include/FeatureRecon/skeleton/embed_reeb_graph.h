@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/internal/random.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
@@ -228,11 +229,6 @@ class Graph_path_finder {
   std::size_t m_search = 0;
 };
 
-inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 /// The mean of the `count` finite numbers x(0), ..., x(count - 1): their sum in that order divided by count,
 /// or, when the sum overflows (numbers near the largest double), the sum of each divided by count. 0 when
 /// count = 0; the sum starts from x(0), so that the mean of -0.0s is -0.0.
@@ -355,8 +351,9 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
   std::vector<Vertex_index> path;
   // Local index of each input vertex in the arc being drawn (stamped by arc), its run, and a union-find.
   std::vector<std::size_t> stamp(adjacency != nullptr ? P.rows : 0, static_cast<std::size_t>(-1));
-  std::vector<std::size_t> local(stamp.size()), parent, run_of, size;
-  std::vector<Vertex_index> piece;  // the points of the piece whose centroid is drawn
+  std::vector<std::size_t> local(stamp.size()), run_of, size;
+  FeatureRecon::internal::Union_find<std::size_t> pieces;  // root = smallest index: deterministic
+  std::vector<Vertex_index> piece;                         // the points of the piece whose centroid is drawn
   for (std::size_t a = 0; a < G.arcs.size(); ++a)
     if (!(G.arcs[a].lower < G.nodes.size() && G.arcs[a].upper < G.nodes.size()))
       FeatureRecon::internal::throw_invalid_argument(fn, "arc ", a, " joins nodes (", G.arcs[a].lower, ", ",
@@ -400,8 +397,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       run_of[i] = runs;
     }
     // Level-set pieces: connected components of a run in the graph (one piece per run without a graph).
-    parent.resize(vs.size());
-    for (std::size_t i = 0; i < vs.size(); ++i) parent[i] = i;
+    pieces.reset(vs.size());
     if (adjacency != nullptr) {
       for (std::size_t i = 0; i < vs.size(); ++i) {
         stamp[vs[i]] = a;
@@ -411,15 +407,14 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
         for (std::size_t k = adjacency->offsets[vs[i]]; k < adjacency->offsets[vs[i] + 1]; ++k) {
           const Vertex_index w = adjacency->targets[k];
           if (stamp[w] != a || run_of[local[w]] != run_of[i]) continue;
-          const std::size_t x = find_root(parent, i), y = find_root(parent, local[w]);
-          if (x != y) parent[std::max(x, y)] = std::min(x, y);  // root = smallest index: deterministic
+          pieces.unite(i, local[w]);
         }
     } else {
       for (std::size_t i = 1; i < vs.size(); ++i)
-        if (run_of[i] == run_of[i - 1]) parent[i] = parent[i - 1];
+        if (run_of[i] == run_of[i - 1]) pieces.unite(i - 1, i);
     }
     size.assign(vs.size(), 0);
-    for (std::size_t i = 0; i < vs.size(); ++i) ++size[find_root(parent, i)];
+    for (std::size_t i = 0; i < vs.size(); ++i) ++size[pieces.find(i)];
     std::vector<double> line(E.nodes[arc.lower]);
     std::vector<double> also_line(Q != nullptr ? E.also_nodes[arc.lower] : std::vector<double>());
     std::vector<Vertex_index> origin{
@@ -427,14 +422,14 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
     std::size_t i = 0;
     while (i < vs.size()) {
       // The largest piece of the run (ties: the one holding the earliest point) carries the polyline.
-      std::size_t j = i, best = find_root(parent, i);
+      std::size_t j = i, best = pieces.find(i);
       for (; j < vs.size() && run_of[j] == run_of[i]; ++j)
-        if (size[find_root(parent, j)] > size[best]) best = find_root(parent, j);
+        if (size[pieces.find(j)] > size[best]) best = pieces.find(j);
       const std::size_t at = line.size();
       line.resize(at + d, 0.0);
       piece.clear();
       for (std::size_t t = i; t < j; ++t)
-        if (find_root(parent, t) == best) piece.push_back(vs[t]);
+        if (pieces.find(t) == best) piece.push_back(vs[t]);
       for (std::size_t k = 0; k < d; ++k)
         line[at + k] = mean_of(piece.size(), [&](std::size_t q) { return P.row(piece[q])[k]; });
       for (std::size_t k = 0; k < dq; ++k)
@@ -443,7 +438,7 @@ inline Flat_embedding embed_flat(const Reeb_graph& G, const Adjacency* adjacency
       double closest = std::numeric_limits<double>::infinity();
       origin.push_back(vs[i]);
       for (std::size_t t = i; finder && t < j; ++t) {
-        if (find_root(parent, t) != best) continue;
+        if (pieces.find(t) != best) continue;
         // Distances scaled as point_distance() scales them: squares underflowed below about 1e-160 (every
         // point tied at 0) and overflowed above about 1e154.
         const double s = point_distance(P.row(vs[t]), line.data() + at, d);

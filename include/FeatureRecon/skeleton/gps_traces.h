@@ -9,6 +9,7 @@
 // samples of a trip.
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/rips_graph.h>
 
@@ -344,18 +345,10 @@ class Fix_paths {
         }
       m_first[i + 1] = static_cast<std::uint32_t>(m_next.size());
     }
-    m_component.resize(m_cells.size());  // union-find, the smaller id the root
-    for (std::uint32_t i = 0; i < m_cells.size(); ++i) m_component[i] = i;
-    auto root = [this](std::uint32_t i) {
-      while (m_component[i] != i) i = m_component[i] = m_component[m_component[i]];
-      return i;
-    };
+    FeatureRecon::internal::Union_find<std::uint32_t> sets(m_cells.size());  // the smaller id the root
     for (std::uint32_t i = 0; i < m_cells.size(); ++i)
-      for (std::uint32_t k = m_first[i]; k < m_first[i + 1]; ++k) {
-        const std::uint32_t a = root(i), b = root(m_next[k]);
-        if (a != b) m_component[std::max(a, b)] = std::min(a, b);
-      }
-    for (std::uint32_t i = 0; i < m_cells.size(); ++i) m_component[i] = root(i);
+      for (std::uint32_t k = m_first[i]; k < m_first[i + 1]; ++k) sets.unite(i, m_next[k]);
+    m_component = sets.labels();
     m_cost.assign(m_cells.size(), 0);
     m_round_of.assign(m_cells.size(), 0);
   }

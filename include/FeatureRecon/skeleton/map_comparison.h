@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/internal/Uniform_grid.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/skeleton/Simplicial_complex_2.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
 
@@ -549,13 +550,8 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
   const double T = options.match_distance;
   // Components: union-find over the admissible pairs (ground-truth samples 0..nh-1, then reconstruction
   // ones).
-  std::vector<std::size_t> parent(nh + ng);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  FeatureRecon::internal::Union_find<std::size_t> sets(nh + ng);
   std::vector<char> paired(nh, 0);  // a ground-truth sample with an admissible pair
-  const auto find = [&parent](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
   // The admissible pairs, enumerated once (by ground-truth sample; each component's lists are cut from them).
   Admissible_pairs all;
   all.first.assign(nh + 1, 0);
@@ -573,8 +569,7 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
           all.cost.push_back(
               std::hypot(G[g].position[0] - H[h].position[0], G[g].position[1] - H[h].position[1]));
           paired[h] = 1;
-          const std::size_t a = find(h), b = find(nh + g);
-          if (a != b) parent[std::max(a, b)] = std::min(a, b);
+          sets.unite(h, nh + g);
         }
       });
       if (all.partner.size() > max_pairs) throw_too_many_pairs(fn, max_pairs, T);
@@ -585,7 +580,7 @@ inline bool match_optimal(const std::vector<Map_sample>& H, const std::vector<Ma
   std::vector<std::size_t> slot(nh + ng, std::numeric_limits<std::size_t>::max());
   std::vector<std::vector<std::size_t>> members_h, members_g;
   for (std::size_t x = 0; x < nh + ng; ++x) {
-    const std::size_t r = find(x);
+    const std::size_t r = sets.find(x);
     if (x < nh ? !paired[x] : r == x)
       continue;  // no pair (a ground-truth sample is the root of its component)
     if (slot[r] == std::numeric_limits<std::size_t>::max()) {

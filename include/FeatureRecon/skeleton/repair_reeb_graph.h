@@ -4,6 +4,7 @@
 #define FEATURERECON_SKELETON_REPAIR_REEB_GRAPH_H
 
 #include <FeatureRecon/assertions.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/skeleton_options.h>
 
@@ -79,18 +80,9 @@ inline void check_reeb_graph(const Reeb_graph& G, const char* fn,
 
 /// Component of each node: the smallest node index in it (union-find over the arcs).
 inline std::vector<std::size_t> node_components(const Reeb_graph& G) {
-  std::vector<std::size_t> parent(G.nodes.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  auto find = [&parent](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const auto& a : G.arcs) {
-    const std::size_t x = find(a.lower), y = find(a.upper);
-    if (x != y) parent[std::max(x, y)] = std::min(x, y);
-  }
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = find(i);
-  return parent;
+  FeatureRecon::internal::Union_find<std::size_t> sets(G.nodes.size());
+  for (const auto& a : G.arcs) sets.unite(a.lower, a.upper);
+  return sets.labels();
 }
 /// The bound of input vertex v, checked: a NaN or an infinity throws, naming the bound and the vertex (no
 /// order to sort by, and no difference to compare with the distance).

@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/internal/Compressed_lists.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/reeb_graph_persistence.h>
 
@@ -664,14 +665,10 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R,
   release(K);
   if (((asked_to_stop || AY.status() == Status::interrupted) && interrupted()) || stopped(0.9)) return result;
   const std::size_t m = val.size();
-  std::vector<std::size_t> parent(m);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  FeatureRecon::internal::Union_find<std::size_t> sets(m);
   for (const auto& a : AY.arcs())
-    if (val[a.lower] == val[a.upper]) parent[find(a.lower)] = find(a.upper);
+    if (val[a.lower] == val[a.upper]) sets.unite(a.lower, a.upper);
+  const auto find = [&sets](std::size_t x) { return sets.find(x); };
   // Classes, their representative (smallest input vertex, else smallest helper) and members.
   std::vector<std::size_t> rep(m, none);
   for (std::size_t v = 0; v < m; ++v) {
@@ -691,7 +688,7 @@ inline Reeb_simplification_result simplify_by_persistence(const Reeb_graph& R,
     for (std::size_t i = 0; i < nc; ++i) class_index[classes[i]] = static_cast<Vertex_index>(i);
     for (std::size_t v = 0; v < m; ++v) class_of[v] = class_index[find(v)];
   }
-  release(parent);
+  sets.release();
   Compressed_lists<Vertex_index> up;  // the classes an arc of the glued graph reaches above, by class
   up.build(nc, [&](auto emit) {
     for (const auto& a : AY.arcs())

@@ -15,6 +15,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/internal/random.h>
 #include <FeatureRecon/skeleton/gps_traces.h>
 #include <FeatureRecon/skeleton/map_comparison.h>
@@ -104,22 +105,9 @@ inline std::vector<char> remove_keeping_connected(std::size_t n, const std::vect
                                                   const std::vector<std::size_t>& order, std::size_t count) {
   const std::size_t m = edges.size();
   std::vector<char> removed(m, 0);
-  std::vector<Vertex_index> parent(n);
-  auto reset = [&parent]() {
-    for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<Vertex_index>(v);
-  };
-  auto find = [&parent](Vertex_index v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  auto unite = [&](const Edge& e) {  // true when e joined two components
-    const Vertex_index x = find(e[0]), y = find(e[1]);
-    if (x == y) return false;
-    parent[std::max(x, y)] = std::min(x, y);
-    return true;
-  };
-  std::vector<std::size_t> components(m + 1, n);  // c(k)
-  reset();
+  FeatureRecon::internal::Union_find<Vertex_index> sets(n);
+  auto unite = [&](const Edge& e) { return sets.unite(e[0], e[1]); };  // true when e joined two components
+  std::vector<std::size_t> components(m + 1, n);                       // c(k)
   for (std::size_t k = m; k-- > 0;) components[k] = components[k + 1] - (unite(edges[order[k]]) ? 1 : 0);
   if (components[0] != 1 || count == 0) return removed;
   std::size_t looked_at = m;
@@ -128,7 +116,7 @@ inline std::vector<char> remove_keeping_connected(std::size_t n, const std::vect
       looked_at = k;
       break;
     }
-  reset();
+  sets.reset(n);
   for (std::size_t k = looked_at; k < m; ++k) unite(edges[order[k]]);
   for (std::size_t k = looked_at; k-- > 0;)
     if (!unite(edges[order[k]])) removed[order[k]] = 1;
