@@ -410,15 +410,17 @@ std::vector<std::vector<std::array<double, 3>>> read_track_trips(const std::stri
   int timed = -1;  // whether the lines carry a time: decided by the first line, the same for all
   bool first_row = true;
   for_each_token_row(path, [&](const std::vector<std::string>& t, std::size_t number) {
+    std::array<double, 3> fix;
     if (first_row) {  // the first row that fails says what the file may be instead
       first_row = false;
       try {
-        read_fix(t, 1, timed, path, number);
+        fix = read_fix(t, 1, timed, path, number);
       } catch (const Input_error& e) {
         throw Input_error(e.what() + tracks_hint(t, path));
       }
+    } else {
+      fix = read_fix(t, 1, timed, path, number);
     }
-    const std::array<double, 3> fix = read_fix(t, 1, timed, path, number);
     // A trip's lines usually follow each other: the last one's entry is tried first, and the map is only
     // searched (and a node made) on a change.
     if (last == index.end() || last->first != t[0]) {

@@ -810,6 +810,20 @@ TEST(GpsTraces, AShortUnconfirmedSegmentLinksItsEnds) {
   EXPECT_TRUE(chained(S, first, first + 3));
   for (std::size_t i = 0; i < S.points.rows; ++i)
     EXPECT_LT(distance_to_l(S.points.row(i)[0], S.points.row(i)[1]), 8.0) << "sample " << i;
+  // When the check stands down (2 of 3 confirmed, below a fraction of 0.9), the link stays: the fixes along
+  // the L join its ends. Without that rule the segment is densified and no longer counted as linked.
+  o.min_confirmed_fraction = 0.9;
+  const Gps_trace_sample stood = sample_gps_traces(trips, 20.0, o);
+  EXPECT_TRUE(stood.all_segments_used);
+  EXPECT_EQ(stood.joined_segments, 1u);
+  EXPECT_EQ(stood.linked_segments, 1u);
+  EXPECT_TRUE(linked(stood, first + 1, first + 2));
+  o.stand_down_path_factor = 0;
+  const Gps_trace_sample densified = sample_gps_traces(trips, 20.0, o);
+  EXPECT_TRUE(densified.all_segments_used);
+  EXPECT_EQ(densified.joined_segments, 0u);
+  EXPECT_EQ(densified.linked_segments, 0u);
+  EXPECT_FALSE(linked(densified, first + 1, first + 2));
 }
 
 TEST(GpsTraces, TracesTooSparseToConfirmOneAnotherUseEverySegment) {

@@ -1396,6 +1396,35 @@ TEST(RipsGraph, TheKdTreeSearchesEveryScaleAlike) {
   }
 }
 
+// The kd-tree's ball does not grow with the coordinates: clouds translated by 2^40 and 2^50 (about 1e12 and
+// 1e15; exactly, every coordinate a multiple of 1/4 in [0, 1024]) give the exact test the same number of
+// pairs as at the origin and the same graphs (a slack of 1e-9 times the coordinates had made every pair of
+// the cloud a candidate: featurerecon skeleton on GPS traces offset by 1e12 ran 15 times slower).
+TEST(RipsGraph, TheKdTreeBallDoesNotGrowWithTheCoordinates) {
+  Coords unit = random_points(500, 3, 67);
+  for (auto& x : unit)
+    for (double& c : x) c = std::round(4096 * c) / 4;
+  Proximity_graph_options kd;
+  kd.search = Neighbor_search::kd_tree;
+  skeleton::internal::Rips_search_counts rips_unit;
+  skeleton::internal::Knn_search_counts knn_unit;
+  const Proximity_graph r1 = skeleton::internal::rips_graph(make_point_matrix(unit), 102.4, kd, &rips_unit);
+  const Proximity_graph k1 = skeleton::internal::knn_graph(make_point_matrix(unit), 5, kd, &knn_unit);
+  ASSERT_LT(rips_unit.exact, 500u * 499u / 20);
+  for (const int e : {40, 50}) {
+    Coords moved = unit;
+    for (auto& x : moved)
+      for (double& c : x) c += std::ldexp(1.0, e);
+    skeleton::internal::Rips_search_counts rips;
+    skeleton::internal::Knn_search_counts knn;
+    EXPECT_EQ(skeleton::internal::rips_graph(make_point_matrix(moved), 102.4, kd, &rips).edges, r1.edges)
+        << e;
+    EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(moved), 5, kd, &knn).edges, k1.edges) << e;
+    EXPECT_EQ(rips.exact, rips_unit.exact) << e;
+    EXPECT_LE(knn.ball_queries, knn_unit.ball_queries) << e;
+  }
+}
+
 // The k-nearest-neighbour brute force leaves points "more than 2^15 times the median point's distance" from
 // the centre out of its float filter: one outlier, even at 1e300 (where the others' float coordinates would
 // underflow), adds at most its own row and column to the pairs refined in double (counted, not timed), and

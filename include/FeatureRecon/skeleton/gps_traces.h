@@ -224,7 +224,9 @@ struct Gps_trace_sample {
   /// straight unconfirmed segments kept (min_straight_confirmed_fraction); false when the segment check did
   /// not run (segment_support or max_link_gap 0), true when it ran and no segment needed it
   bool turn_rule_used = false;
-  std::size_t linked_segments = 0;  ///< ... of the rest, up to 4 segment_support: ends linked only
+  /// ... of the rest, up to 4 segment_support: ends linked only (after a stand-down, those it left to the
+  /// check's verdict)
+  std::size_t linked_segments = 0;
   /// the check was off or stood down (too few confirmed: Gps_trace_options::min_confirmed_fraction); every
   /// segment is then densified, except the joined_segments
   bool all_segments_used = false;
@@ -943,8 +945,10 @@ inline Gps_trace_sample sample_gps_traces(const std::vector<Gps_trip>& trips, do
                                    options.stand_down_path_factor * std::hypot(b.x - a.x, b.y - a.y) +
                                        2 * S.sample_spacing))
           ++S.joined_segments;
-        else
+        else {
+          if (use[t][i] == link_ends) --S.linked_segments;  // counted as linked by the check
           use[t][i] = densify;
+        }
       }
       done += o.size();
     }

@@ -134,17 +134,20 @@ struct Kd_index {
     tree->build();
   }
   /// Candidates within (slightly more than) r of point i, r in the tree's units (`unit` times the points').
-  /// The absolute 1e-150 covers coordinates that vanished in the scaling (a range beyond 2^1000).
+  /// CGAL's squared distances (to points and to the boxes of the tree's nodes, whose sides are coordinates of
+  /// points or cut values that separate them) round each difference of two coordinates relative to that
+  /// difference, whatever the coordinates' magnitude, and their squares and sums relative to the result: a
+  /// relative 1e-9 covers them. The absolute 1e-150 covers coordinates that vanished in the scaling (a range
+  /// beyond 2^1000).
   void ball(std::uint32_t i, double r, std::vector<std::uint32_t>& out) const {
     out.clear();
-    CGAL::Fuzzy_sphere<Kd_traits> query(i, ball_radius(i, r), 0.0, tree->traits());
+    CGAL::Fuzzy_sphere<Kd_traits> query(i, ball_radius(r), 0.0, tree->traits());
     tree->search(std::back_inserter(out), query);
   }
-  /// The radius ball(i, r) searches.
-  double ball_radius(std::uint32_t i, double r) const {
-    return r + 1e-9 * (r + std::abs(points[i].x()) + std::abs(points[i].y()) + std::abs(points[i].z())) +
-           1e-150;
-  }
+  /// The radius ball(i, r) searches. It does not grow with the coordinates: a slack of 1e-9 times the point's
+  /// coordinates made the ball of a point at 1e12 two kilometres wide for a radius of metres (every point of
+  /// a city a candidate of the exact test).
+  static double ball_radius(double r) { return r * (1 + 1e-9) + 1e-150; }
 };
 
 /// All-pairs squared distances with Eigen, blockwise, from a single-precision Gram matrix (twice the SIMD
@@ -800,7 +803,7 @@ inline Proximity_graph knn_graph(const Point_matrix& m, std::size_t k, const Pro
           }
           if (found >= need || K == groups) break;
         }
-        const double reach = index.ball_radius(q, std::sqrt(far));
+        const double reach = internal::Kd_index::ball_radius(std::sqrt(far));
         if (!(next > reach * reach * (1 + 0x1p-40)) || !(far >= 0x1p-900)) {
           index.ball(q, std::sqrt(far), near_groups);
           ++count.ball_queries;
