@@ -720,3 +720,34 @@ TEST(SimplifyByPersistence, ATallToothsPathGoesOnFromWhereShorterOnesStop) {
   EXPECT_EQ(S.graph.nodes[1].vertex, 2 * n - 1);
   expect_partition(S.graph, 2 * n, "merged");
 }
+
+// Vertices of equal value are one class (compared with ==, so -0 and +0 are equal); the class's node takes
+// the value of its representative, the smallest input vertex, which is also the node's vertex: the node's
+// value is bit for bit values[node.vertex] (-0 here, as the input's minimum; the class's root was once its
+// upper vertex, +0).
+TEST(SimplifyByPersistence, AClassOfEqualValuesTakesItsRepresentativesValue) {
+  Reeb_graph R;
+  const std::vector<double> values{-0.0, 0.0, 1.0};
+  Reeb_graph::Node a, b;
+  a.vertex = 0;
+  a.value = -0.0;
+  a.type = minimum;
+  b.vertex = 2;
+  b.value = 1.0;
+  b.type = maximum;
+  R.nodes = {a, b};
+  Reeb_graph::Arc arc;
+  arc.lower = 0;
+  arc.upper = 1;
+  arc.vertices = {1};
+  R.arcs = {arc};
+  R.components = 1;
+  const auto simplified = simplify_by_persistence(R, values, 0.0);
+  ASSERT_EQ(simplified.graph.nodes.size(), 2u);
+  for (const auto& node : simplified.graph.nodes) {
+    EXPECT_EQ(std::signbit(node.value), std::signbit(values[node.vertex])) << node.vertex;
+    EXPECT_EQ(node.value, values[node.vertex]);
+  }
+  EXPECT_EQ(simplified.graph.nodes[0].vertex, 0u);
+  EXPECT_TRUE(std::signbit(simplified.graph.nodes[0].value));
+}

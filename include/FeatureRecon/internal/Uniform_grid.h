@@ -307,7 +307,8 @@ class Uniform_grid {
   /// and its core depend on the positions alone), and `dense_cells` what use_core_cells(frame, those
   /// positions, their number) returned (a caller that orders its points by the frame's cells first does not
   /// pay for the frame twice).
-  /// With assertions on (FEATURERECON_DEBUG), the frame is rebuilt from `points` and both are checked.
+  /// With assertions on (FEATURERECON_assertion: unless NDEBUG, or with FEATURERECON_DEBUG), the frame is
+  /// rebuilt from `points` and both are checked (the saving of a ready frame is then lost).
   Uniform_grid(const std::vector<Point>& points, const Grid_frame<D>& frame, bool dense_cells)
       : m_frame(frame) {
 #if !defined(NDEBUG) || defined(FEATURERECON_DEBUG)

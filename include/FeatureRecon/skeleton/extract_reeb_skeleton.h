@@ -5,6 +5,7 @@
 
 #include <FeatureRecon/assertions.h>
 #include <FeatureRecon/config.h>
+#include <FeatureRecon/internal/Union_find.h>
 #include <FeatureRecon/skeleton/Augmented_reeb_graph.h>
 #include <FeatureRecon/skeleton/embed_reeb_graph.h>
 #include <FeatureRecon/skeleton/estimate_rips_radius.h>
@@ -312,12 +313,8 @@ inline Branch_node_merge_result merge_close_branch_nodes(
   // Rounds: in each, over the arcs between groups of merged nodes, contract a matching of the candidates
   // whose groups have degree >= 3 and are joined by this arc alone (a short loop stays a loop: no arc becomes
   // a self-loop).
-  std::vector<std::size_t> group(n);
-  std::iota(group.begin(), group.end(), std::size_t(0));
-  auto find = [&group](std::size_t x) {
-    while (group[x] != x) x = group[x] = group[group[x]];
-    return x;
-  };
+  FeatureRecon::internal::Union_find<std::size_t> groups(n);  // the smallest node the root
+  auto find = [&groups](std::size_t x) { return groups.find(x); };
   // The nodes of each group (by its root), and whether two groups stay within `distance` of each other once
   // merged: every node of one within `distance` of every node of the other (input space above 3D). Without
   // this bound the rounds chained the forks of a lattice (every cell a loop, every arc about the level width)
@@ -373,7 +370,7 @@ inline Branch_node_merge_result merge_close_branch_nodes(
       }
       taken[a] = taken[b] = 1;
       contracted[k] = 1;
-      group[std::max(a, b)] = std::min(a, b);
+      groups.unite(a, b);
       auto& into = group_nodes[std::min(a, b)];
       auto& from = group_nodes[std::max(a, b)];
       into.insert(into.end(), from.begin(), from.end());
