@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <random>
@@ -1368,32 +1369,46 @@ TEST(KnnGraph, AutomaticSearchIsTheKdTreeUpToThreeDimensions) {
   }
 }
 
+// Searches the kd-tree's Rips graph (radius r) and k-nearest graph (k) of `cloud` and of each of its copies
+// moved by `move(coordinate, e)` (the radius by `move_radius(r, e)`) for e in `es`: the same graphs, as many
+// pairs given to the exact test, and as many ball queries (at most as many, unless `same_ball_queries`). The
+// cloud's own search must leave all but a fraction `max_exact` of its pairs out of the exact test.
+template <class Move, class Move_radius>
+void expect_kd_search_alike(const Coords& cloud, double r, std::size_t k, std::initializer_list<int> es,
+                            Move move, Move_radius move_radius, double max_exact, bool same_ball_queries) {
+  Proximity_graph_options kd;
+  kd.search = Neighbor_search::kd_tree;
+  skeleton::internal::Rips_search_counts rips_cloud;
+  skeleton::internal::Knn_search_counts knn_cloud;
+  const Proximity_graph r1 = skeleton::internal::rips_graph(make_point_matrix(cloud), r, kd, &rips_cloud);
+  const Proximity_graph k1 = skeleton::internal::knn_graph(make_point_matrix(cloud), k, kd, &knn_cloud);
+  const double n = static_cast<double>(cloud.size());
+  ASSERT_LT(static_cast<double>(rips_cloud.exact), max_exact * n * (n - 1) / 2);  // the ball leaves most out
+  for (const int e : es) {
+    Coords moved = cloud;
+    for (auto& x : moved)
+      for (double& c : x) c = move(c, e);
+    skeleton::internal::Rips_search_counts rips;
+    skeleton::internal::Knn_search_counts knn;
+    EXPECT_EQ(skeleton::internal::rips_graph(make_point_matrix(moved), move_radius(r, e), kd, &rips).edges,
+              r1.edges)
+        << e;
+    EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(moved), k, kd, &knn).edges, k1.edges) << e;
+    EXPECT_EQ(rips.exact, rips_cloud.exact) << e;
+    if (same_ball_queries)
+      EXPECT_EQ(knn.ball_queries, knn_cloud.ball_queries) << e;
+    else
+      EXPECT_LE(knn.ball_queries, knn_cloud.ball_queries) << e;
+  }
+}
+
 // The kd-tree searches in units scaled by a power of two (Kd_index: "so that CGAL's squared distances neither
 // overflow nor sink into subnormals"): a cloud scaled by 2^-600 or 2^600 (exactly) is searched as at unit
 // scale, with the same candidates (Rips: pairs given to the exact test) and ball queries (k nearest), and the
 // same graphs.
 TEST(RipsGraph, TheKdTreeSearchesEveryScaleAlike) {
-  const Coords unit = random_points(200, 3, 61);
-  Proximity_graph_options kd;
-  kd.search = Neighbor_search::kd_tree;
-  skeleton::internal::Rips_search_counts rips_unit;
-  skeleton::internal::Knn_search_counts knn_unit;
-  const Proximity_graph r1 = skeleton::internal::rips_graph(make_point_matrix(unit), 0.15, kd, &rips_unit);
-  const Proximity_graph k1 = skeleton::internal::knn_graph(make_point_matrix(unit), 4, kd, &knn_unit);
-  EXPECT_LT(rips_unit.exact, 200u * 199u / 8);  // the ball leaves most pairs out
-  for (const int e : {-600, 600}) {
-    Coords scaled = unit;
-    for (auto& x : scaled)
-      for (double& c : x) c = std::ldexp(c, e);
-    skeleton::internal::Rips_search_counts rips;
-    skeleton::internal::Knn_search_counts knn;
-    EXPECT_EQ(skeleton::internal::rips_graph(make_point_matrix(scaled), std::ldexp(0.15, e), kd, &rips).edges,
-              r1.edges)
-        << e;
-    EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(scaled), 4, kd, &knn).edges, k1.edges) << e;
-    EXPECT_EQ(rips.exact, rips_unit.exact) << e;
-    EXPECT_EQ(knn.ball_queries, knn_unit.ball_queries) << e;
-  }
+  const auto scale = [](double x, int e) { return std::ldexp(x, e); };
+  expect_kd_search_alike(random_points(200, 3, 61), 0.15, 4, {-600, 600}, scale, scale, 0.25, true);
 }
 
 // The kd-tree's ball does not grow with the coordinates: clouds translated by 2^40 and 2^50 (about 1e12 and
@@ -1401,28 +1416,12 @@ TEST(RipsGraph, TheKdTreeSearchesEveryScaleAlike) {
 // pairs as at the origin and the same graphs (a slack of 1e-9 times the coordinates had made every pair of
 // the cloud a candidate: featurerecon skeleton on GPS traces offset by 1e12 ran 15 times slower).
 TEST(RipsGraph, TheKdTreeBallDoesNotGrowWithTheCoordinates) {
-  Coords unit = random_points(500, 3, 67);
-  for (auto& x : unit)
+  Coords cloud = random_points(500, 3, 67);
+  for (auto& x : cloud)
     for (double& c : x) c = std::round(4096 * c) / 4;
-  Proximity_graph_options kd;
-  kd.search = Neighbor_search::kd_tree;
-  skeleton::internal::Rips_search_counts rips_unit;
-  skeleton::internal::Knn_search_counts knn_unit;
-  const Proximity_graph r1 = skeleton::internal::rips_graph(make_point_matrix(unit), 102.4, kd, &rips_unit);
-  const Proximity_graph k1 = skeleton::internal::knn_graph(make_point_matrix(unit), 5, kd, &knn_unit);
-  ASSERT_LT(rips_unit.exact, 500u * 499u / 20);
-  for (const int e : {40, 50}) {
-    Coords moved = unit;
-    for (auto& x : moved)
-      for (double& c : x) c += std::ldexp(1.0, e);
-    skeleton::internal::Rips_search_counts rips;
-    skeleton::internal::Knn_search_counts knn;
-    EXPECT_EQ(skeleton::internal::rips_graph(make_point_matrix(moved), 102.4, kd, &rips).edges, r1.edges)
-        << e;
-    EXPECT_EQ(skeleton::internal::knn_graph(make_point_matrix(moved), 5, kd, &knn).edges, k1.edges) << e;
-    EXPECT_EQ(rips.exact, rips_unit.exact) << e;
-    EXPECT_LE(knn.ball_queries, knn_unit.ball_queries) << e;
-  }
+  expect_kd_search_alike(
+      cloud, 102.4, 5, {40, 50}, [](double x, int e) { return x + std::ldexp(1.0, e); },
+      [](double r, int) { return r; }, 0.1, false);
 }
 
 // The k-nearest-neighbour brute force leaves points "more than 2^15 times the median point's distance" from
